@@ -1,0 +1,201 @@
+"""Build the assembled :class:`~flexshaft.assembly.model.Model` from a validated design.
+
+Steps: mesh both members with nodes at every bearing, disk and point load; stack each kind of
+element and scatter it once (sparse COO); add lumped inertias and bearing links; constrain the
+boom root and the shaft end DOFs named in the design.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from flexshaft.assembly.dofs import BOOM_FIELDS, DofMap
+from flexshaft.assembly.model import Actuator, BearingLink, Controller, Model, ShaftProperties
+from flexshaft.assembly.sparse import scatter
+from flexshaft.elements import (
+    TubeSection,
+    boom_element_matrices,
+    cowper_shear_coefficient,
+    disk_matrices,
+    ellipse_section,
+    end_mass_matrix,
+    relative_rows,
+    shaft_element_matrices,
+)
+from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
+
+__all__ = ["build_model", "segment_mesh", "shaft_properties", "boom_semi_axes"]
+
+_RELATIVE = ("u", "v", "w", "beta", "gamma")
+
+
+def segment_mesh(breakpoints, n_elements: int) -> np.ndarray:
+    """Nodes covering sorted ``breakpoints`` with about ``n_elements`` near-equal elements.
+
+    Every breakpoint is a node; each segment gets ``max(1, round(n · L_seg / L))`` elements.
+    """
+    pts = np.unique(np.round(np.asarray(breakpoints, dtype=float), 12))
+    total = pts[-1] - pts[0]
+    nodes = [pts[:1]]
+    for a, b in zip(pts[:-1], pts[1:]):
+        n = max(1, int(round(n_elements * (b - a) / total)))
+        nodes.append(np.linspace(a, b, n + 1)[1:])
+    return np.concatenate(nodes)
+
+
+def shaft_properties(design) -> ShaftProperties:
+    """Equivalent complex moduli and density of the shaft tube (CLT for a laminate)."""
+    shaft = design.shaft
+    mat = design.materials[shaft.material]
+    Do = shaft.outer_diameter
+    Di = Do - 2 * shaft.wall_thickness
+    if mat.kind == "lamina":
+        lamina = Lamina.from_loss_factors(
+            E_L=mat.E_L, E_T=mat.E_T, G_LT=mat.G_LT, nu_LT=mat.nu_LT, density=mat.density,
+            loss_E_L=mat.loss_E_L, loss_E_T=mat.loss_E_T, loss_G_LT=mat.loss_G_LT,
+        )
+        angles = np.radians(np.asarray(shaft.ply_angles_deg, dtype=float))
+        plies = np.full(angles.size, shaft.wall_thickness / angles.size)
+        laminate = Laminate(angles=angles, thicknesses=plies, lamina=lamina)
+        E, G = equivalent_moduli(laminate)
+        return ShaftProperties(Do, Di, complex(E), complex(G), mat.density, laminate)
+    eta = mat.loss_factor
+    return ShaftProperties(Do, Di, mat.E * (1 + 1j * eta), mat.G * (1 + 1j * eta), mat.density, None)
+
+
+def boom_semi_axes(tailboom, x):
+    """Vertical and lateral mid-line semi-axes [m] of the linearly tapered boom at ``x``."""
+    s = np.asarray(x, dtype=float) / tailboom.length
+    a = (1 - s) * tailboom.root_semi_axes[0] + s * tailboom.tip_semi_axes[0]
+    b = (1 - s) * tailboom.root_semi_axes[1] + s * tailboom.tip_semi_axes[1]
+    return a, b
+
+
+def _meshes(design):
+    sh, boom = design.shaft, design.tailboom
+    loads = design.loads
+    shaft_pts = [sh.x_start, sh.x_end]
+    shaft_pts += [b.x for b in design.bearings] + [d.x for d in design.disks]
+    boom_pts = []
+    if loads is not None:
+        shaft_pts += [p.x for p in loads.point if p.on == "shaft"]
+        boom_pts += [p.x for p in loads.point if p.on == "boom"]
+    shaft_x = segment_mesh(shaft_pts, design.mesh.shaft_elements)
+    if boom is None:
+        return shaft_x, np.zeros(0)
+    boom_pts += [0.0, boom.length] + [_x_boom(b) for b in design.bearings]
+    return shaft_x, segment_mesh(boom_pts, design.mesh.boom_elements)
+
+
+def _x_boom(bearing) -> float:
+    return bearing.x if bearing.x_boom is None else bearing.x_boom
+
+
+def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
+    dm = DofMap(shaft_x, boom_x)
+    fixed = [dm.shaft(0, f) for f in design.shaft.fixed_start]
+    fixed += [dm.shaft(-1, f) for f in design.shaft.fixed_end]
+    if len(boom_x):
+        fixed += [dm.boom(0, f) for f in BOOM_FIELDS]  # cantilevered from the fuselage
+    return np.array(sorted(set(fixed)), dtype=int)
+
+
+def _bearing_link(design, dm: DofMap, bearing) -> BearingLink:
+    es, xis, Ls = dm.locate("shaft", bearing.x)
+    shaft_dofs = dm.element_dofs("shaft")[es]
+    if design.tailboom is None:
+        local, dofs, xb, h = relative_rows(xis, Ls), shaft_dofs, None, 0.0
+    else:
+        xb = _x_boom(bearing)
+        eb, xib, Lb = dm.locate("boom", xb)
+        if bearing.offset is not None:
+            h = bearing.offset
+        else:
+            h = float(boom_semi_axes(design.tailboom, xb)[0]) + design.tailboom.shaft_clearance
+        local = relative_rows(xis, Ls, xib, Lb, h)
+        dofs = np.concatenate([shaft_dofs, dm.element_dofs("boom")[eb]])
+    rows = sp.coo_matrix(
+        (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
+    ).tocsr()
+    return BearingLink(bearing.name, bearing.kind, bearing.x, xb, h, rows)
+
+
+def _coefficients(table) -> np.ndarray:
+    table = table or {}
+    return np.array([float(table.get(f, 0.0) or 0.0) for f in _RELATIVE])
+
+
+def build_model(design) -> Model:
+    """Assemble the global model of a validated :class:`~flexshaft.design.Design`."""
+    shaft_x, boom_x = _meshes(design)
+    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x))
+    n = dm.size
+
+    props = shaft_properties(design)
+    section = TubeSection(props.outer_diameter, props.inner_diameter)
+    kappa = None
+    if design.shaft.shear_deformation:
+        nu = float(np.clip(props.youngs_modulus.real / (2 * props.shear_modulus.real) - 1, 0.0, 0.5))
+        kappa = cowper_shear_coefficient(section, nu)
+    Ms, Ks, Gs = shaft_element_matrices(np.diff(shaft_x), section, props.youngs_modulus, props.shear_modulus, props.density, kappa)
+    sdofs = dm.element_dofs("shaft")
+    M = scatter(Ms, sdofs, n)
+    K = scatter(Ks, sdofs, n)
+    G = scatter(Gs, sdofs, n)
+
+    if design.tailboom is not None:
+        tb = design.tailboom
+        mat = design.materials[tb.material]
+        eta = mat.loss_factor
+
+        def section_at(x):
+            a, b = boom_semi_axes(tb, x)
+            return ellipse_section(a, b, tb.wall_thickness)
+
+        Mb, Kb = boom_element_matrices(boom_x, section_at, mat.E * (1 + 1j * eta), mat.G * (1 + 1j * eta), mat.density)
+        bdofs = dm.element_dofs("boom")
+        M = M + scatter(Mb, bdofs, n)
+        K = K + scatter(Kb, bdofs, n)
+        if tb.end_mass is not None:
+            em = tb.end_mass
+            tip = np.array([dm.boom(-1, f) for f in BOOM_FIELDS])
+            M = M + scatter(end_mass_matrix(em.mass, em.offset, em.inertia)[None], tip[None], n)
+
+    for disk in design.disks:
+        node = dm.node_at("shaft", disk.x)
+        Md, Gd = disk_matrices(disk.mass, disk.diametral_inertia, disk.polar_inertia)
+        dofs = np.array([dm.shaft(node, f) for f in ("u", "v", "w", "theta", "beta", "gamma")])
+        M = M + scatter(Md[None], dofs[None], n)
+        G = G + scatter(Gd[None], dofs[None], n)
+
+    C = sp.csr_matrix((n, n))
+    links, actuators = [], []
+    for bearing in design.bearings:
+        link = _bearing_link(design, dm, bearing)
+        links.append(link)
+        B = link.rows
+        if bearing.kind == "contact":
+            K = K + B.T @ sp.diags(_coefficients(bearing.stiffness)) @ B
+            if bearing.damping:
+                C = C + B.T @ sp.diags(_coefficients(bearing.damping)) @ B
+        else:
+            if bearing.controller is not None:
+                ctrl = Controller(tuple(bearing.controller.numerator), tuple(bearing.controller.denominator))
+            else:
+                ctrl = Controller.pd(bearing.kp, bearing.kd)
+            actuators.append(Actuator(link, ctrl))
+
+    return Model(
+        dofs=dm,
+        M=M.tocsr(),
+        K=K.astype(complex).tocsr(),
+        C=C.tocsr(),
+        G=G.tocsr(),
+        bearings=tuple(links),
+        actuators=tuple(actuators),
+        shaft=props,
+        speed=float(design.operating.speed_rad_s),
+        power=float(design.operating.power),
+        design=design,
+    )

@@ -1,0 +1,124 @@
+"""The one global DOF numbering of the package.
+
+Global vector layout::
+
+    [ shaft node 0: u v w θ β γ | shaft node 1: ... | ... | boom node 0: v w θ β γ | ... ]
+
+Shaft nodes come first, 6 DOFs each in :data:`SHAFT_FIELDS` order; boom nodes follow, 5 DOFs
+each in :data:`BOOM_FIELDS` order. Every caller asks :class:`DofMap` for an index by
+``(component, node, field)``; no index is hard-coded anywhere else.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+__all__ = ["SHAFT_FIELDS", "BOOM_FIELDS", "Component", "DofMap"]
+
+SHAFT_FIELDS: tuple[str, ...] = ("u", "v", "w", "theta", "beta", "gamma")
+BOOM_FIELDS: tuple[str, ...] = ("v", "w", "theta", "beta", "gamma")
+Component = Literal["shaft", "boom"]
+
+
+@dataclass(frozen=True)
+class DofMap:
+    """Node stations, the DOF numbering and the constrained DOFs.
+
+    Parameters
+    ----------
+    shaft_x : ndarray
+        Shaft node stations [m], increasing.
+    boom_x : ndarray
+        Tailboom node stations [m], increasing; empty without a tailboom.
+    fixed : ndarray of int
+        Global indices of constrained (zero) DOFs.
+    """
+
+    shaft_x: np.ndarray
+    boom_x: np.ndarray
+    fixed: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+
+    @property
+    def n_shaft_nodes(self) -> int:
+        return len(self.shaft_x)
+
+    @property
+    def n_boom_nodes(self) -> int:
+        return len(self.boom_x)
+
+    @property
+    def size(self) -> int:
+        """Number of global DOFs, fixed ones included."""
+        return 6 * self.n_shaft_nodes + 5 * self.n_boom_nodes
+
+    @property
+    def free(self) -> np.ndarray:
+        """Global indices of the unconstrained DOFs, increasing."""
+        mask = np.ones(self.size, dtype=bool)
+        mask[self.fixed] = False
+        return np.flatnonzero(mask)
+
+    def index(self, component: Component, node, field: str):
+        """Global index of ``field`` at ``node`` (int or int array) of ``component``."""
+        node = np.asarray(node)
+        if component == "shaft":
+            n, fields, base, per = self.n_shaft_nodes, SHAFT_FIELDS, 0, 6
+        elif component == "boom":
+            n, fields, base, per = self.n_boom_nodes, BOOM_FIELDS, 6 * self.n_shaft_nodes, 5
+        else:
+            raise ValueError(f"component must be 'shaft' or 'boom', got {component!r}")
+        if field not in fields:
+            raise ValueError(f"{component} nodes have fields {fields}, got {field!r}")
+        if np.any((node < -n) | (node >= n)):
+            raise IndexError(f"{component} node {node} out of range 0..{n - 1}")
+        idx = base + per * np.mod(node, n) + fields.index(field)
+        return int(idx) if idx.ndim == 0 else idx
+
+    def shaft(self, node, field: str):
+        """Global index of a shaft DOF."""
+        return self.index("shaft", node, field)
+
+    def boom(self, node, field: str):
+        """Global index of a tailboom DOF."""
+        return self.index("boom", node, field)
+
+    def element_dofs(self, component: Component) -> np.ndarray:
+        """Global DOFs of every element of a component: (nel, 12) shaft or (nel, 10) boom."""
+        if component == "shaft":
+            nodes, fields = np.arange(self.n_shaft_nodes), SHAFT_FIELDS
+        else:
+            nodes, fields = np.arange(self.n_boom_nodes), BOOM_FIELDS
+        per_node = np.stack([self.index(component, nodes, f) for f in fields], axis=1)
+        return np.hstack([per_node[:-1], per_node[1:]])
+
+    def locate(self, component: Component, x: float) -> tuple[int, float, float]:
+        """Element holding station ``x`` [m]: ``(element, xi, element length)``."""
+        xs = self.shaft_x if component == "shaft" else self.boom_x
+        if len(xs) < 2:
+            raise ValueError(f"no {component} elements")
+        tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
+        if x < xs[0] - tol or x > xs[-1] + tol:
+            raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
+        e = int(np.clip(np.searchsorted(xs, x, side="right") - 1, 0, len(xs) - 2))
+        length = xs[e + 1] - xs[e]
+        return e, float(np.clip((x - xs[e]) / length, 0.0, 1.0)), float(length)
+
+    def node_at(self, component: Component, x: float) -> int:
+        """Index of the node nearest to station ``x`` [m]."""
+        xs = self.shaft_x if component == "shaft" else self.boom_x
+        return int(np.argmin(np.abs(xs - x)))
+
+    def values(self, q: np.ndarray, component: Component, field: str) -> np.ndarray:
+        """``field`` at every node of ``component`` from a global vector (leading axis = DOF)."""
+        n = self.n_shaft_nodes if component == "shaft" else self.n_boom_nodes
+        return np.asarray(q)[self.index(component, np.arange(n), field)]
+
+    def expand(self, q_free: np.ndarray) -> np.ndarray:
+        """Full global vector(s) from free-DOF values (fixed DOFs set to zero)."""
+        q_free = np.asarray(q_free)
+        out = np.zeros((self.size,) + q_free.shape[1:], dtype=q_free.dtype)
+        out[self.free] = q_free
+        return out
