@@ -1,2 +1,50 @@
-"""flexshaft: high-flexibility rotorcraft tail-rotor driveline design."""
+"""flexshaft: design and analysis of high-flexibility rotorcraft tail-rotor drivelines.
+
+A flexible-matrix-composite drive shaft on a flexible tailboom, held by hanger bearings and
+actively controlled magnetic bearings (Ocalan 2002). Typical use::
+
+    import flexshaft as fs
+    design = fs.baseline_design()            # or fs.load_design("my.toml")
+    model = fs.build_model(design)
+    m = fs.modes(model, speed=design.operating.speed_rad_s)
+    m.frequencies                            # [Hz]
+
+The top level stays light: submodules load on first use.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
 __version__ = "0.1.0"
+
+_LAZY = {
+    "Design": "flexshaft.design",
+    "DesignError": "flexshaft.design",
+    "load_design": "flexshaft.design",
+    "loads_design": "flexshaft.design",
+    "baseline_design": "flexshaft.design",
+    "baseline_text": "flexshaft.design",
+    "with_overrides": "flexshaft.design",
+    "build_model": "flexshaft.assembly",
+    "Model": "flexshaft.assembly",
+    "modes": "flexshaft.analyses",
+    "Modes": "flexshaft.analyses",
+    "frequency_response": "flexshaft.analyses",
+    "SingularSystemError": "flexshaft.analyses",
+}
+
+__all__ = ["__version__", *_LAZY]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'flexshaft' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)

@@ -122,6 +122,8 @@ def _bearing_link(design, dm: DofMap, bearing) -> BearingLink:
 
 
 def _coefficients(table) -> np.ndarray:
+    if hasattr(table, "as_dict"):
+        table = table.as_dict()
     table = table or {}
     return np.array([float(table.get(f, 0.0) or 0.0) for f in _RELATIVE])
 

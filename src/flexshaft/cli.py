@@ -1,0 +1,152 @@
+"""Command-line interface: ``flexshaft run | baseline | check | modes``.
+
+User errors (bad design file, bad argument) end with a one-paragraph message naming the field,
+the value and what is allowed, and exit code 2; never a traceback.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    help="Design and analysis of high-flexibility rotorcraft tail-rotor drivelines.",
+)
+
+DesignArg = typer.Argument(None, help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False)
+
+
+def _fail(message: str) -> None:
+    typer.echo(f"error: {message}", err=True)
+    raise typer.Exit(code=2)
+
+
+def _finite(name: str, value: float | None, minimum: float | None = None) -> float | None:
+    if value is None:
+        return None
+    if not math.isfinite(value):
+        _fail(f"{name}: must be a finite number (got {value})")
+    if minimum is not None and value < minimum:
+        _fail(f"{name}: must be >= {minimum:g} (got {value:g})")
+    return value
+
+
+def _load(path: Optional[Path]):
+    from flexshaft.design import DesignError, baseline_design, load_design
+
+    try:
+        return baseline_design() if path is None else load_design(path)
+    except DesignError as exc:
+        _fail(f"invalid design {'(embedded baseline)' if path is None else str(path)}:\n{exc}")
+
+
+def _print_modes(console, title: str, rows: list[dict]) -> None:
+    from rich.table import Table
+
+    table = Table(title=title)
+    for col in ("mode", "Hz", "rpm", "ζ", "whirl", "component"):
+        table.add_column(col, justify="right" if col in ("mode", "Hz", "rpm", "ζ") else "left")
+    for r in rows:
+        table.add_row(str(r["mode"]), f"{r['frequency_Hz']:.3f}", f"{r['frequency_rpm']:.0f}",
+                      f"{r['damping_ratio']:.4f}", r["whirl"], r["component"])
+    console.print(table)
+
+
+@app.command()
+def baseline() -> None:
+    """Print the embedded thesis baseline design file (start your own from a copy)."""
+    from flexshaft.design import baseline_text
+
+    sys.stdout.write(baseline_text())
+
+
+@app.command()
+def check(design: Optional[Path] = DesignArg) -> None:
+    """Validate a design file and print a one-line summary."""
+    d = _load(design)
+    typer.echo(f"ok: {d.name}")
+
+
+@app.command("modes")
+def modes_cmd(
+    design: Optional[Path] = DesignArg,
+    speed_rpm: Optional[float] = typer.Option(None, "--speed-rpm", help="Spin speed [rpm]; default: the operating speed."),
+    n_modes: int = typer.Option(10, "--n", min=1, max=500, help="Number of modes."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+) -> None:
+    """Damped natural frequencies, whirl direction and component of the lowest modes."""
+    import numpy as np
+
+    from flexshaft.assembly import build_model
+    from flexshaft.summary import modes_at
+
+    _finite("--speed-rpm", speed_rpm, 0.0)
+    d = _load(design)
+    model = build_model(d)
+    speed = model.speed if speed_rpm is None else speed_rpm * 2 * np.pi / 60
+    rows = modes_at(model, speed, n_modes)
+    if as_json:
+        typer.echo(json.dumps({"speed_rpm": speed * 60 / (2 * np.pi), "modes": rows}, indent=2))
+        return
+    from rich.console import Console
+
+    _print_modes(Console(), f"{d.name}\nmodes at {speed * 60 / (2 * np.pi):.0f} rpm", rows)
+
+
+@app.command()
+def run(
+    design: Optional[Path] = DesignArg,
+    out: Path = typer.Option(Path("flexshaft-results"), "--out", "-o", help="Results folder."),
+    as_json: bool = typer.Option(False, "--json", help="Print the key results as JSON."),
+) -> None:
+    """Analyse a design (default: the embedded baseline) and write the results folder."""
+    import numpy as np
+
+    from flexshaft.assembly import build_model
+    from flexshaft.summary import model_summary, modes_at
+
+    d = _load(design)
+    model = build_model(d)
+    results = {
+        "design": d.name,
+        "summary": model_summary(model),
+        "modes_at_rest": modes_at(model, 0.0),
+        "modes_at_operating_speed": modes_at(model, model.speed),
+    }
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "results.json").write_text(json.dumps(results, indent=2))
+    except OSError as exc:
+        _fail(f"--out: cannot write results to {out} ({exc.strerror})")
+    if as_json:
+        typer.echo(json.dumps(results, indent=2))
+        return
+    from rich.console import Console
+
+    console = Console()
+    s = results["summary"]
+    console.print(f"[bold]{d.name}[/bold]")
+    console.print(
+        f"shaft mass {s['shaft_mass_kg']:.2f} kg, E* = {s['shaft_E_storage_Pa'] / 1e9:.2f} GPa "
+        f"(η {s['shaft_E_loss_factor']:.4f}), G* = {s['shaft_G_storage_Pa'] / 1e9:.2f} GPa "
+        f"(η {s['shaft_G_loss_factor']:.4f}), torque {s['torque_Nm']:.0f} N m, {s['free_dofs']} free DOFs"
+    )
+    _print_modes(console, "natural frequencies at rest", results["modes_at_rest"])
+    rpm = model.speed * 60 / (2 * np.pi)
+    _print_modes(console, f"natural frequencies at {rpm:.0f} rpm", results["modes_at_operating_speed"])
+    console.print(f"results written to {out / 'results.json'}")
+
+
+def main() -> None:  # pragma: no cover - console entry
+    app()
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

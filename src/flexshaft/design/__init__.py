@@ -1,0 +1,33 @@
+"""Design files: the validated input schema of flexshaft and the packaged thesis baseline.
+
+>>> from flexshaft.design import baseline_design, with_overrides
+>>> design = with_overrides(baseline_design(), {"shaft.wall_thickness": 0.002})
+>>> design.shaft.ply_angles_deg
+(55.0, -55.0, 0.0, 0.0, 0.0, 0.0, -55.0, 55.0)
+
+Only pydantic and the standard library are imported here.
+"""
+
+from flexshaft.design.io import (
+    DesignError,
+    Problem,
+    baseline_design,
+    baseline_text,
+    design_from_dict,
+    load_design,
+    loads_design,
+    with_overrides,
+)
+from flexshaft.design.schema import Design
+
+__all__ = [
+    "Design",
+    "DesignError",
+    "Problem",
+    "baseline_design",
+    "baseline_text",
+    "design_from_dict",
+    "load_design",
+    "loads_design",
+    "with_overrides",
+]

@@ -1,0 +1,397 @@
+"""Classical lamination theory with complex (hysteretic) moduli.
+
+A :class:`Lamina` (orthotropic ply, plane stress) stacked into a :class:`Laminate` gives the
+A, B, D stiffness (thesis eq. 2.1-2.3), the equivalent shaft moduli (eq. 2.4: axial with a free
+hoop, N_y = 0, and shear) and the ply strains and stresses of the strength check (eq. 2.46-2.47).
+
+Conventions
+-----------
+* x is the shaft axis, y circumferential, z the outward normal. Ply angles go from x towards y,
+  in [rad] inside the package, in degrees only in :func:`parse_layup` (the edge).
+* Plies are listed inner to outer; ``z`` is measured from the mid-surface, positive outward.
+* Shear strains are engineering strains (gamma = 2 epsilon_12); the transformation is the
+  standard one of Jones (1999, sec. 2.6) and Daniel & Ishai (2006, sec. 4.4).
+* Moduli may be complex, E* = E'(1 + i eta): A, B, D and the equivalent moduli are then complex.
+  Ply stresses for strength use the storage (real) part, as DESIGN.md section 2 prescribes.
+
+References
+----------
+Ocalan, M. (2002). MS thesis, Penn State, eq. 2.1-2.4 and 2.46-2.47.
+Jones, R. M. (1999). *Mechanics of Composite Materials*, 2nd ed., Taylor & Francis, ch. 2 and 4.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = [
+    "Lamina", "Laminate", "parse_layup", "reduced_stiffness", "strain_transformation",
+    "transformed_stiffness", "abd_matrices", "equivalent_moduli", "equivalent_density",
+    "hoop_strain_free", "ply_strains", "ply_stresses",
+]
+
+
+def _check_positive(name: str, value: complex) -> None:
+    if not np.isfinite(value) or not np.real(value) > 0.0:
+        raise ValueError(f"{name} must be finite with a positive storage part, got {value!r}")
+
+
+@dataclass(frozen=True)
+class Lamina:
+    """Orthotropic ply in plane stress, with possibly complex moduli.
+
+    Parameters
+    ----------
+    E_L : complex
+        Longitudinal (fibre-direction) Young's modulus [Pa]; E' + iE''.
+    E_T : complex
+        Transverse Young's modulus [Pa].
+    G_LT : complex
+        In-plane shear modulus [Pa].
+    nu_LT : float
+        Major Poisson ratio [-] (strain in T per strain in L under stress along L).
+    density : float
+        Mass density [kg/m^3].
+    """
+
+    E_L: complex
+    E_T: complex
+    G_LT: complex
+    nu_LT: float
+    density: float
+
+    def __post_init__(self) -> None:
+        for name in ("E_L", "E_T", "G_LT"):
+            _check_positive(name, getattr(self, name))
+        _check_positive("density", self.density)
+        nu_TL = self.nu_LT * np.real(self.E_T) / np.real(self.E_L)
+        if not np.isfinite(self.nu_LT) or not self.nu_LT * nu_TL < 1.0:
+            limit = float(np.sqrt(np.real(self.E_L) / np.real(self.E_T)))
+            raise ValueError(
+                f"nu_LT = {self.nu_LT!r} makes the ply stiffness indefinite; "
+                f"allowed |nu_LT| < sqrt(E_L/E_T) = {limit:.4g}"
+            )
+
+    @classmethod
+    def from_loss_factors(
+        cls, E_L: float, E_T: float, G_LT: float, nu_LT: float, density: float,
+        loss_E_L: float = 0.0, loss_E_T: float = 0.0, loss_G_LT: float = 0.0,
+    ) -> Lamina:
+        """Build a lamina from storage moduli [Pa] and loss factors [-], E* = E'(1 + i eta)."""
+        for name, eta in (("loss_E_L", loss_E_L), ("loss_E_T", loss_E_T), ("loss_G_LT", loss_G_LT)):
+            if not np.isfinite(eta) or eta < 0.0:
+                raise ValueError(f"{name} must be a finite loss factor >= 0, got {eta!r}")
+        return cls(E_L * (1 + 1j * loss_E_L), E_T * (1 + 1j * loss_E_T), G_LT * (1 + 1j * loss_G_LT),
+                   float(nu_LT), float(density))
+
+    @property
+    def storage(self) -> Lamina:
+        """The same lamina with its storage (real) moduli only."""
+        return Lamina(self.E_L.real, self.E_T.real, self.G_LT.real, self.nu_LT, self.density)
+
+    @classmethod
+    def isotropic(cls, E: float, G: float, density: float, loss_factor: float = 0.0) -> Lamina:
+        """Isotropic material as a lamina: E_L = E_T = E [Pa], G_LT = G [Pa], nu = E/(2G) - 1.
+
+        ``density`` [kg/m^3]; ``loss_factor`` [-] multiplies every modulus by (1 + i eta).
+        """
+        nu = E / (2.0 * G) - 1.0
+        if not -1.0 < nu < 0.5:
+            raise ValueError(f"E/(2G) - 1 = {nu:.4g} is not a Poisson ratio in (-1, 0.5); check E and G")
+        return cls.from_loss_factors(E, E, G, nu, density, loss_factor, loss_factor, loss_factor)
+
+
+def _read_only(values: ArrayLike) -> NDArray[np.float64]:
+    array = np.array(values, dtype=float, ndmin=1)
+    array.setflags(write=False)
+    return array
+
+
+@dataclass(frozen=True, eq=False)
+class Laminate:
+    """A stack of plies of one lamina.
+
+    Parameters
+    ----------
+    angles : array_like
+        Ply angles from the x axis towards y [rad], inner to outer.
+    thicknesses : array_like
+        Ply thicknesses [m], same length as ``angles``.
+    lamina : Lamina
+        The ply material.
+    """
+
+    angles: NDArray[np.float64]
+    thicknesses: NDArray[np.float64]
+    lamina: Lamina = field(repr=False)
+
+    def __post_init__(self) -> None:
+        angles = _read_only(self.angles)
+        thicknesses = _read_only(self.thicknesses)
+        if angles.ndim != 1 or angles.shape != thicknesses.shape:
+            raise ValueError(f"angles and thicknesses must be 1-D of equal length, got shapes "
+                             f"{angles.shape} and {thicknesses.shape}")
+        if not np.all(np.isfinite(angles)) or np.any(np.abs(angles) > np.pi / 2 + 1e-12):
+            raise ValueError(f"ply angles must be finite and within [-pi/2, pi/2] rad, got {angles}")
+        if not np.all(np.isfinite(thicknesses)) or np.any(thicknesses <= 0.0):
+            raise ValueError(f"ply thicknesses must be positive and finite [m], got {thicknesses}")
+        object.__setattr__(self, "angles", angles)
+        object.__setattr__(self, "thicknesses", thicknesses)
+
+    @classmethod
+    def from_layup(cls, layup: str | Sequence[float], thickness: float, lamina: Lamina) -> Laminate:
+        """Equal plies sharing the total ``thickness`` [m], from a layup in DEGREES.
+
+        ``layup`` is a string for :func:`parse_layup` (e.g. ``"(55/-55/0/0)s"``) or a sequence of
+        angles [deg], inner to outer.
+        """
+        degrees = parse_layup(layup) if isinstance(layup, str) else tuple(float(a) for a in layup)
+        _check_positive("thickness", thickness)
+        if not degrees or max(abs(a) for a in degrees) > 90.0:
+            raise ValueError(f"layup needs at least one ply with angles in [-90, 90] deg, got {degrees}")
+        n_plies = len(degrees)
+        return cls(np.radians(degrees), np.full(n_plies, thickness / n_plies), lamina)
+
+    @property
+    def storage(self) -> Laminate:
+        """The same stack with the storage (real) moduli of the lamina."""
+        return Laminate(self.angles, self.thicknesses, self.lamina.storage)
+
+    @property
+    def thickness(self) -> float:
+        """Total thickness [m]."""
+        return float(self.thicknesses.sum())
+
+    @property
+    def z_interfaces(self) -> NDArray[np.float64]:
+        """Ply interface coordinates from the mid-surface [m], inner to outer, n_plies + 1."""
+        return np.concatenate(([0.0], np.cumsum(self.thicknesses))) - 0.5 * self.thickness
+
+
+# --------------------------------------------------------------------------------------------
+# Layup strings (the only place where angles are in degrees)
+
+_ALLOWED = (
+    "allowed: ply angles in degrees within [-90, 90] separated by '/'; '±45', '+-45' "
+    "(and '∓45', '-+45') for a pair; groups in '(...)' or '[...]' followed by an optional "
+    "repeat count and/or 's' (symmetric), e.g. '(55/-55/0/0)s', '[45/-45]s', '(0/90)2s', "
+    "'[0/90]3', '55/-55/0/0', '90'"
+)
+_TOKEN = re.compile(r"\s*(±|∓|\+-|-\+|\d+(?:\.\d*)?|\.\d+|[-+/()\[\]sS])")
+_SIGNS = {"±": (1.0, -1.0), "+-": (1.0, -1.0), "∓": (-1.0, 1.0), "-+": (-1.0, 1.0), "+": (1.0,), "-": (-1.0,)}
+_CLOSING = {"(": ")", "[": "]"}
+
+
+class _LayupParser:
+    """Recursive descent: sequence := element ('/' element)*; element := angle | group suffix."""
+
+    def __init__(self, text: str) -> None:
+        self.text, self.tokens, position = text, [], 0
+        stripped = text.replace("°", "").rstrip()
+        while position < len(stripped):
+            match = _TOKEN.match(stripped, position)
+            if match is None:
+                raise self.error(f"unexpected {stripped[position:].strip()[:1]!r}")
+            self.tokens.append(match.group(1).lower())
+            position = match.end()
+
+    def error(self, what: str) -> ValueError:
+        return ValueError(f"invalid layup {self.text!r}: {what}; {_ALLOWED}")
+
+    def peek(self) -> str:
+        return self.tokens[0] if self.tokens else ""
+
+    def take(self) -> str:
+        if not self.tokens:
+            raise self.error("unexpected end")
+        return self.tokens.pop(0)
+
+    def parse(self) -> tuple[float, ...]:
+        if not self.tokens:
+            raise self.error("empty layup")
+        angles = self.sequence()
+        if self.tokens:
+            raise self.error(f"unexpected {self.peek()!r}")
+        return tuple(angles)
+
+    def sequence(self) -> list[float]:
+        angles = self.element()
+        while self.peek() == "/":
+            self.take()
+            angles += self.element()
+        return angles
+
+    def element(self) -> list[float]:
+        token = self.take()
+        if token in _CLOSING:
+            body = self.sequence()
+            if self.peek() != _CLOSING[token]:
+                raise self.error(f"group opened with {token!r} is not closed by {_CLOSING[token]!r}")
+            self.take()
+            if self.peek()[:1].isdigit():
+                count = self.take()
+                if not count.isdigit() or int(count) < 1:
+                    raise self.error(f"repeat count must be a positive integer, got {count!r}")
+                body = body * int(count)
+            if self.peek() == "s":
+                self.take()
+                body = body + body[::-1]
+            return body
+        signs = (1.0,)
+        if token in _SIGNS:
+            signs, token = _SIGNS[token], self.take()
+        if not (token[0].isdigit() or token[0] == "."):
+            raise self.error(f"expected a ply angle, got {token!r}")
+        angles = [sign * float(token) for sign in signs]
+        if float(token) > 90.0:
+            raise self.error(f"ply angle {angles[0]:g} deg is outside [-90, 90]")
+        return angles
+
+
+def parse_layup(text: str) -> tuple[float, ...]:
+    """Ply angles in DEGREES, inner to outer, from a layup string.
+
+    Parameters
+    ----------
+    text : str
+        e.g. ``"(55/-55/0/0)s"`` -> (55, -55, 0, 0, 0, 0, -55, 55); ``"(±45)s"`` and ``"+-45"``
+        expand the pair to 45/-45; ``"(0/90)2s"`` repeats then mirrors; ``"[0/90]3"`` repeats;
+        ``"55/-55/0/0"``; ``"90"``. Groups may nest.
+
+    Returns
+    -------
+    tuple of float
+        Ply angles [deg].
+
+    Raises
+    ------
+    ValueError
+        On malformed text or an angle outside [-90, 90] deg; the message lists what is allowed.
+    """
+    if not isinstance(text, str):
+        raise ValueError(f"layup must be a string, got {type(text).__name__}; {_ALLOWED}")
+    return _LayupParser(text).parse()
+
+
+# --------------------------------------------------------------------------------------------
+# Stiffness
+
+
+def reduced_stiffness(lamina: Lamina) -> NDArray[np.complex128]:
+    """Plane-stress reduced stiffness Q of a ply in its material axes (Jones eq. 2.61).
+
+    Returns
+    -------
+    ndarray, shape (3, 3), complex
+        Q [Pa] relating (sigma_1, sigma_2, tau_12) to (eps_1, eps_2, gamma_12).
+    """
+    nu_TL = lamina.nu_LT * lamina.E_T / lamina.E_L
+    denominator = 1.0 - lamina.nu_LT * nu_TL
+    Q11 = lamina.E_L / denominator
+    Q22 = lamina.E_T / denominator
+    Q12 = lamina.nu_LT * lamina.E_T / denominator
+    return np.array([[Q11, Q12, 0.0], [Q12, Q22, 0.0], [0.0, 0.0, lamina.G_LT]], dtype=complex)
+
+
+def strain_transformation(angles: ArrayLike) -> NDArray[np.float64]:
+    """Engineering-strain transformation T_eps (n, 3, 3) from laminate to ply axes.
+
+    (eps_1, eps_2, gamma_12) = T_eps(alpha) (eps_x, eps_y, gamma_xy) for ``angles`` (n,) [rad];
+    thesis eq. 2.3.2 with the Reuter matrix folded in.
+    """
+    alpha = np.atleast_1d(np.asarray(angles, dtype=float))
+    c, s = np.cos(alpha), np.sin(alpha)
+    cc, ss, cs = c * c, s * s, c * s
+    rows = ([cc, ss, cs], [ss, cc, -cs], [-2.0 * cs, 2.0 * cs, cc - ss])
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
+def transformed_stiffness(Q: ArrayLike, angles: ArrayLike) -> NDArray[np.complex128]:
+    """Transformed reduced stiffness Q_bar = T_eps^T Q T_eps of each ply (thesis eq. 2.3).
+
+    Q (3, 3) [Pa] in material axes and ``angles`` (n,) [rad] give Q_bar (n, 3, 3) [Pa] in
+    laminate axes (engineering shear strain); equal to Jones eq. 2.84 term by term.
+    """
+    T = strain_transformation(angles)
+    return np.einsum("nji,jk,nkl->nil", T, np.asarray(Q, dtype=complex), T)
+
+
+def abd_matrices(
+    laminate: Laminate,
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.complex128]]:
+    """Extensional A [N/m], coupling B [N], bending D [N m] stiffness (thesis eq. 2.1-2.3).
+
+    A = sum Q_bar_k (z_k - z_{k-1}), B = 1/2 sum Q_bar_k (z_k^2 - z_{k-1}^2),
+    D = 1/3 sum Q_bar_k (z_k^3 - z_{k-1}^3), z from the mid-surface, positive outward.
+    """
+    Q_bar = transformed_stiffness(reduced_stiffness(laminate.lamina), laminate.angles)
+    z = laminate.z_interfaces
+    weights = np.stack([np.diff(z), np.diff(z**2) / 2.0, np.diff(z**3) / 3.0])
+    A, B, D = np.einsum("pn,nij->pij", weights, Q_bar)
+    return A, B, D
+
+
+def equivalent_moduli(laminate: Laminate) -> tuple[complex, complex]:
+    """Equivalent axial and shear moduli of the shaft wall (thesis eq. 2.4).
+
+    With a = A^-1 and wall thickness t: E* = 1/(t a11) (axial, free hoop N_y = 0 and
+    N_xy = 0) and G* = 1/(t a66).
+
+    Returns
+    -------
+    E_x, G_xy : complex
+        Equivalent Young's and shear moduli [Pa]; complex when the lamina moduli are.
+    """
+    A, _, _ = abd_matrices(laminate)
+    compliance = np.linalg.inv(A)
+    t = laminate.thickness
+    return complex(1.0 / (t * compliance[0, 0])), complex(1.0 / (t * compliance[2, 2]))
+
+
+def equivalent_density(laminate: Laminate) -> float:
+    """Thickness-averaged density of the laminate [kg/m^3]."""
+    return float(laminate.lamina.density)
+
+
+# --------------------------------------------------------------------------------------------
+# Ply strains and stresses
+
+
+def hoop_strain_free(laminate: Laminate, eps_x: ArrayLike, gamma_xy: ArrayLike) -> NDArray[np.float64]:
+    """Hoop strain [-] for a zero hoop stress resultant, N_y = 0 (thesis eq. 2.46).
+
+    eps_y = -(A12 eps_x + A26 gamma_xy) / A22 with the storage A; ``eps_x`` and the engineering
+    shear strain ``gamma_xy`` [-] broadcast together.
+    """
+    A = abd_matrices(laminate.storage)[0].real
+    return -(A[0, 1] * np.asarray(eps_x, dtype=float) + A[1, 2] * np.asarray(gamma_xy, dtype=float)) / A[1, 1]
+
+
+def ply_strains(
+    laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike
+) -> NDArray[np.float64]:
+    """Strains of every ply in its material axes (thin wall: one laminate strain for all plies).
+
+    ``eps_x, eps_y, gamma_xy`` [-] (engineering shear) broadcast to a shape S; the result has
+    shape S + (n_plies, 3) holding (eps_1, eps_2, gamma_12) [-].
+    """
+    arrays = np.broadcast_arrays(*(np.asarray(e, dtype=float) for e in (eps_x, eps_y, gamma_xy)))
+    strains = np.stack(arrays, axis=-1)
+    return np.einsum("kij,...j->...ki", strain_transformation(laminate.angles), strains)
+
+
+def ply_stresses(
+    laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike
+) -> NDArray[np.float64]:
+    """Stresses of every ply in its material axes from the storage moduli (thesis eq. 2.47).
+
+    ``eps_x, eps_y, gamma_xy`` [-] (engineering shear) broadcast to a shape S; the result has
+    shape S + (n_plies, 3) holding (sigma_1, sigma_2, tau_12) [Pa].
+    """
+    Q = reduced_stiffness(laminate.lamina.storage).real
+    return np.einsum("ij,...j->...i", Q, ply_strains(laminate, eps_x, eps_y, gamma_xy))

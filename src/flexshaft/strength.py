@@ -1,0 +1,198 @@
+"""Tsai-Wu ply failure criterion solved for the safety factor (thesis eq. 2.48-2.53).
+
+The criterion in the ply material axes (Jones 1999, eq. 2.159) is
+
+    F1 s1 + F2 s2 + F11 s1^2 + F22 s2^2 + F66 t12^2 + 2 F12 s1 s2 = 1,
+
+with F1 = 1/X_t - 1/X_c, F11 = 1/(X_t X_c), F2 = 1/Y_t - 1/Y_c, F22 = 1/(Y_t Y_c),
+F66 = 1/S^2 and, unless given, F12 = -1/2 sqrt(F11 F22) (Tsai & Hahn). Scaling every stress by
+the safety factor R turns it into the quadratic a R^2 + b R - 1 = 0 (thesis eq. 2.48) with
+a = F11 s1^2 + F22 s2^2 + F66 t12^2 + 2 F12 s1 s2 and b = F1 s1 + F2 s2. R = 1 at failure.
+
+References
+----------
+Ocalan, M. (2002). MS thesis, Penn State, eq. 2.48-2.53.
+Jones, R. M. (1999). *Mechanics of Composite Materials*, 2nd ed., sec. 2.9.
+Tsai, S. W. and Hahn, H. T. (1980). *Introduction to Composite Materials*, Technomic.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = [
+    "StressLabel",
+    "Strengths",
+    "TsaiWuCoefficients",
+    "tsai_wu_coefficients",
+    "tsai_wu_quadratic",
+    "tsai_wu_safety_factor",
+    "tsai_wu_contributions",
+    "dominant_stress",
+]
+
+StressLabel = Literal["sigma1", "sigma2", "tau12"]
+_LABELS = np.array(["sigma1", "sigma2", "tau12"])
+
+
+@dataclass(frozen=True)
+class Strengths:
+    """Ply strengths, all positive magnitudes [Pa].
+
+    Parameters
+    ----------
+    X_t, X_c : float
+        Fibre-direction tensile and compressive strength [Pa].
+    Y_t, Y_c : float
+        Transverse tensile and compressive strength [Pa].
+    S : float
+        In-plane shear strength [Pa].
+    F12 : float, optional
+        Interaction coefficient [1/Pa^2]; default -1/2 sqrt(F11 F22). Must satisfy
+        F12^2 < F11 F22 so that the failure surface is closed.
+    """
+
+    X_t: float
+    X_c: float
+    Y_t: float
+    Y_c: float
+    S: float
+    F12: float | None = None
+
+    def __post_init__(self) -> None:
+        for name in ("X_t", "X_c", "Y_t", "Y_c", "S"):
+            value = getattr(self, name)
+            if not np.isfinite(value) or value <= 0.0:
+                raise ValueError(f"{name} must be a positive strength magnitude [Pa], got {value!r}")
+        if self.F12 is not None:
+            bound = np.sqrt(1.0 / (self.X_t * self.X_c * self.Y_t * self.Y_c))
+            if not np.isfinite(self.F12) or not abs(self.F12) < bound:
+                raise ValueError(
+                    f"F12 = {self.F12!r} 1/Pa^2 opens the Tsai-Wu surface; allowed |F12| < "
+                    f"sqrt(F11 F22) = {bound:.4g} 1/Pa^2"
+                )
+
+
+@dataclass(frozen=True)
+class TsaiWuCoefficients:
+    """Tsai-Wu strength tensor components (thesis eq. 2.49-2.53) [1/Pa], [1/Pa^2]."""
+
+    F1: float
+    F2: float
+    F11: float
+    F22: float
+    F66: float
+    F12: float
+
+
+def tsai_wu_coefficients(strengths: Strengths) -> TsaiWuCoefficients:
+    """Tsai-Wu coefficients from the ply strengths (thesis eq. 2.49-2.53)."""
+    F11 = 1.0 / (strengths.X_t * strengths.X_c)
+    F22 = 1.0 / (strengths.Y_t * strengths.Y_c)
+    F12 = -0.5 * np.sqrt(F11 * F22) if strengths.F12 is None else strengths.F12
+    return TsaiWuCoefficients(
+        F1=1.0 / strengths.X_t - 1.0 / strengths.X_c,
+        F2=1.0 / strengths.Y_t - 1.0 / strengths.Y_c,
+        F11=F11,
+        F22=F22,
+        F66=1.0 / strengths.S**2,
+        F12=float(F12),
+    )
+
+
+def tsai_wu_quadratic(
+    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Coefficients (a, b) of a R^2 + b R - 1 = 0 (thesis eq. 2.48), broadcast over the stresses.
+
+    Parameters
+    ----------
+    sigma1, sigma2, tau12 : array_like
+        Ply stresses in material axes [Pa].
+
+    Returns
+    -------
+    a : ndarray
+        Quadratic coefficient [-], >= 0.
+    b : ndarray
+        Linear coefficient [-].
+    """
+    F = tsai_wu_coefficients(strengths)
+    s1, s2, t12 = np.broadcast_arrays(*(np.asarray(s, dtype=float) for s in (sigma1, sigma2, tau12)))
+    a = F.F11 * s1**2 + F.F22 * s2**2 + F.F66 * t12**2 + 2.0 * F.F12 * s1 * s2
+    b = F.F1 * s1 + F.F2 * s2
+    return a, b
+
+
+def tsai_wu_safety_factor(
+    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
+) -> NDArray[np.float64]:
+    """Tsai-Wu safety factor R: the load multiplier that brings the ply to failure.
+
+    The positive root of a R^2 + b R - 1 = 0, written R = 2 / (b + sqrt(b^2 + 4a)) so that it
+    is exact when a = 0 (linear terms only) and free of cancellation. All-zero stress gives
+    R = inf, without warnings.
+
+    Parameters
+    ----------
+    sigma1, sigma2, tau12 : array_like
+        Ply stresses in material axes [Pa], broadcast together.
+    strengths : Strengths
+
+    Returns
+    -------
+    ndarray
+        R [-] of the broadcast shape (R = 1 at failure, R > 1 safe).
+    """
+    a, b = tsai_wu_quadratic(sigma1, sigma2, tau12, strengths)
+    denominator = b + np.sqrt(b * b + 4.0 * np.maximum(a, 0.0))
+    safe = denominator > 0.0
+    return np.divide(2.0, denominator, out=np.full(denominator.shape, np.inf), where=safe)
+
+
+def tsai_wu_contributions(
+    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
+) -> NDArray[np.float64]:
+    """Share of each stress in the Tsai-Wu failure index at the failure load.
+
+    With every stress scaled by R, the index equals 1 and splits into
+    H1 = F1 s1 R + F11 (s1 R)^2 + F12 s1 s2 R^2, H2 = F2 s2 R + F22 (s2 R)^2 + F12 s1 s2 R^2 and
+    H6 = F66 (t12 R)^2 (the interaction term is shared equally by sigma1 and sigma2), so
+    H1 + H2 + H6 = 1. A share may be negative (a stress that delays failure).
+
+    Returns
+    -------
+    ndarray, shape S + (3,)
+        (H1, H2, H6) [-]; zeros where the stress is zero.
+    """
+    F = tsai_wu_coefficients(strengths)
+    R = tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths)
+    scale = np.where(np.isfinite(R), R, 0.0)
+    s1, s2, t12 = (np.broadcast_to(np.asarray(s, dtype=float), R.shape) * scale for s in (sigma1, sigma2, tau12))
+    interaction = F.F12 * s1 * s2
+    return np.stack(
+        [F.F1 * s1 + F.F11 * s1**2 + interaction, F.F2 * s2 + F.F22 * s2**2 + interaction, F.F66 * t12**2],
+        axis=-1,
+    )
+
+
+def dominant_stress(
+    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
+) -> NDArray[np.str_]:
+    """Label of the stress with the largest share of the Tsai-Wu index at failure.
+
+    The criterion is the largest of H1, H2, H6 from :func:`tsai_wu_contributions`: the part of
+    the failure index, evaluated at the failure load, carried by sigma1, sigma2 or tau12.
+
+    Returns
+    -------
+    ndarray of str
+        ``"sigma1"``, ``"sigma2"`` or ``"tau12"`` per broadcast stress state (``"sigma1"`` by
+        convention where all stresses are zero).
+    """
+    shares = tsai_wu_contributions(sigma1, sigma2, tau12, strengths)
+    return _LABELS[np.argmax(shares, axis=-1)]
