@@ -36,9 +36,10 @@ the extreme eigenvalues of K a = T G a of either sign give the critical torque o
 The search runs over n until the load has clearly risen past its minimum. The number of axial
 terms defaults to a value from the axial wavenumber of the infinite-cylinder helical mode.
 
-Assumptions and limits: classical (Kirchhoff-Love) shell, no transverse shear deformation (which
-lowers the buckling load of soft-matrix FMC walls; the thesis used Bauchau's shear-deformable
-shell), linear pre-buckling state, perfect geometry (no knock-down factor).
+Assumptions and limits: classical (Kirchhoff-Love) shell, linear pre-buckling state, perfect
+geometry (no knock-down factor), no transverse shear deformation. The last is UNCONSERVATIVE for
+soft-matrix FMC (the thesis used Bauchau's shear-deformable shell): when N_xy approaches the wall's
+transverse shear stiffness k G_TT t, short-wave shear crimping governs, T ~ 2 pi R^2 k G_TT t.
 
 References
 ----------

@@ -1,6 +1,15 @@
 """Analyses: functions that take a model and return plain result objects."""
 
+from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError
 from flexshaft.analyses.modal import Modes, modes
-from flexshaft.analyses.response import SingularSystemError, dynamic_stiffness, frequency_response
+from flexshaft.analyses.response import frequency_response, imbalance_response, static_response
 
-__all__ = ["Modes", "SingularSystemError", "dynamic_stiffness", "frequency_response", "modes"]
+__all__ = [
+    "BandedHarmonicSolver",
+    "Modes",
+    "SingularSystemError",
+    "frequency_response",
+    "imbalance_response",
+    "modes",
+    "static_response",
+]

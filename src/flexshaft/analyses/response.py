@@ -1,83 +1,98 @@
-"""Direct harmonic response ``q = H(ω) Q`` without forming H (thesis eqs. 2.38-2.40).
+"""Harmonic, synchronous (imbalance) and static response (thesis §2.3–2.5).
 
-``Z(ω, Ω) = −ω² M + iω (Ω G + C) + K + Σ Bᵀ C_a(iω) B`` is factorized (sparse LU) on the free
-DOFs for each ω and solved for all load vectors at once.
+``q = H(ω) Q`` is never formed as an inverse: each frequency is one banded LU solve
+(:class:`~flexshaft.analyses.banded.BandedHarmonicSolver`) for all load cases at once.
 """
 
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
+from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.sparse import restrict
 
-__all__ = ["SingularSystemError", "dynamic_stiffness", "frequency_response"]
-
-# LU pivots below this fraction of the largest pivot mean Z is singular to working precision.
-_SINGULAR_PIVOT_RATIO = 1e-13
-
-
-class SingularSystemError(ArithmeticError):
-    """The dynamic stiffness is singular: an undamped system excited exactly at resonance."""
+__all__ = [
+    "SingularSystemError",
+    "frequency_response",
+    "imbalance_response",
+    "static_response",
+]
 
 
-def dynamic_stiffness(model: Model, omega: float, speed: float | None = None) -> sp.csc_matrix:
-    """Z(ω, Ω) on the free DOFs (complex sparse).
-
-    Parameters
-    ----------
-    omega : float
-        Excitation frequency ω [rad/s].
-    speed : float or None
-        Spin speed Ω [rad/s]; the model's operating speed when None.
-    """
-    speed = model.speed if speed is None else speed
-    Z = (-(omega**2)) * model.M + 1j * omega * (speed * model.G + model.C) + model.K
-    Z = Z + model.controller_matrix(1j * omega)
-    return sp.csc_matrix(restrict(Z.tocsr(), model.dofs.free))
+def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None = None) -> np.ndarray:
+    """Solve at (ω, Ω, load scale) points; returns (ndof, ..., npoints)."""
+    solver = solver or BandedHarmonicSolver(model)
+    Q = np.asarray(loads)
+    rhs = Q[solver.free].astype(complex)
+    out = np.zeros(Q.shape + (len(points),), dtype=complex)
+    for k, (omega, speed, scale) in enumerate(points):
+        out[solver.free, ..., k] = scale * solver.solve(omega, rhs, speed)
+    return out
 
 
 def frequency_response(model: Model, loads, omega, speed: float | None = None) -> np.ndarray:
-    """Complex amplitudes q(ω) for harmonic loads ``Q e^{iωt}``.
+    """Complex amplitudes q(ω) for harmonic loads ``Q e^{iωt}`` at spin speed Ω.
 
     Parameters
     ----------
-    model : Model
     loads : ndarray
-        Load vector(s) on the full DOF vector, (ndof,) or (ndof, nrhs) [N, N m].
+        Load vector(s) on the full DOF vector, (ndof,) or (ndof, ncases) [N, N m].
     omega : float or array_like
         Excitation frequencies [rad/s].
     speed : float or None
-        Spin speed Ω [rad/s] (model's operating speed when None).
+        Spin speed Ω [rad/s] (the model's operating speed when None).
 
     Returns
     -------
     ndarray
-        (ndof,) / (ndof, nrhs) for scalar ω, else with a trailing axis over ω.
+        Same shape as ``loads`` for scalar ω, else with a trailing axis over ω [m, rad].
 
     Raises
     ------
     SingularSystemError
-        When Z(ω) is singular (undamped resonance).
+        When Z(ω) is singular (an undamped resonance).
     """
-    Q = np.asarray(loads)
-    free = model.dofs.free
-    rhs = Q[free].astype(complex)
+    speed = model.speed if speed is None else speed
     omegas = np.atleast_1d(np.asarray(omega, dtype=float))
-    out = np.zeros(Q.shape + (omegas.size,), dtype=complex)
-    for k, w in enumerate(omegas):
-        Z = dynamic_stiffness(model, w, speed)
-        try:
-            lu = spla.splu(Z)
-        except RuntimeError as exc:  # "Factor is exactly singular"
-            raise SingularSystemError(f"dynamic stiffness is singular at ω = {w:.6g} rad/s") from exc
-        pivots = np.abs(lu.U.diagonal())
-        if pivots.min() <= _SINGULAR_PIVOT_RATIO * pivots.max():
-            raise SingularSystemError(
-                f"dynamic stiffness is singular at ω = {w:.6g} rad/s (undamped resonance); "
-                "add damping or move the frequency"
-            )
-        out[free, ..., k] = lu.solve(rhs)
+    out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
     return out[..., 0] if np.ndim(omega) == 0 else out
+
+
+def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> np.ndarray:
+    """Synchronous response to a rotating load ``Ω² Q₁ e^{iΩt}`` at each speed Ω.
+
+    Parameters
+    ----------
+    speeds : array_like
+        Spin speeds Ω [rad/s]; the excitation frequency equals the speed.
+    loads_per_speed_squared : ndarray
+        Q₁ (ndof,) or (ndof, ncases) [N s²], e.g. from
+        :func:`flexshaft.assembly.loads.imbalance_loads`.
+
+    Returns
+    -------
+    ndarray
+        (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
+    """
+    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    return _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
+
+
+def static_response(model: Model, loads) -> np.ndarray:
+    """Static displacement ``(K' + C_a(0)) q = Q`` with the storage stiffness [m, rad].
+
+    The hysteretic (imaginary) stiffness has no static meaning and is left out.
+    """
+    from flexshaft.assembly.sparse import restrict
+    import scipy.sparse.linalg as spla
+
+    free = model.dofs.free
+    K = model.K.real + model.Kp
+    Q = np.asarray(loads, dtype=float)
+    try:
+        lu = spla.splu(restrict(K.tocsr(), free).tocsc())
+    except RuntimeError as exc:
+        raise SingularSystemError("static stiffness is singular: the model has an unconstrained rigid-body motion") from exc
+    out = np.zeros(Q.shape)
+    out[free] = lu.solve(Q[free])
+    return out

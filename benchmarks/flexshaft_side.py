@@ -1,0 +1,166 @@
+"""The flexshaft half of the ROSS comparison: model building and the three timed analyses.
+
+Every flexshaft call lives in one small function here, so that when the package grows faster
+sweep functions only these functions change. Sweep functions are used when
+``flexshaft.analyses`` provides them (``imbalance_response``, ``campbell``); otherwise the
+per-point fallbacks (``frequency_response`` per speed, ``modes`` per speed) are used, and the
+result says which path ran.
+"""
+
+from __future__ import annotations
+
+import inspect
+
+import numpy as np
+
+import flexshaft
+import flexshaft.analyses as fa
+
+import shaft_case as case
+
+DESIGN_TEMPLATE = """
+name = "uniform steel tube on two end bearings (ROSS benchmark)"
+[materials.steel]
+kind = "isotropic"
+E = {E!r}
+G = {G!r}
+density = {rho!r}
+
+[shaft]
+x_start = 0.0
+x_end = {L!r}
+outer_diameter = {Do!r}
+wall_thickness = {t!r}
+material = "steel"
+fixed_start = ["u", "theta"]
+shear_deformation = false
+
+[[bearings]]
+name = "left"
+kind = "contact"
+x = 0.0
+stiffness = {{ v = {k!r}, w = {k!r} }}
+damping = {{ v = {c!r}, w = {c!r} }}
+
+[[bearings]]
+name = "right"
+kind = "contact"
+x = {L!r}
+stiffness = {{ v = {k!r}, w = {k!r} }}
+damping = {{ v = {c!r}, w = {c!r} }}
+
+[operating]
+speed_rpm = 0.0
+power = 0.0
+
+[mesh]
+shaft_elements = {n}
+"""
+
+
+def design_text(n_el: int) -> str:
+    return DESIGN_TEMPLATE.format(
+        E=case.E, G=case.G, rho=case.DENSITY, L=case.LENGTH, Do=case.OUTER_DIAMETER,
+        t=(case.OUTER_DIAMETER - case.INNER_DIAMETER) / 2, k=case.BEARING_STIFFNESS,
+        c=case.BEARING_DAMPING, n=n_el,
+    )
+
+
+def build(n_el: int):
+    """Design (TOML text) -> model; checks the mesh is the uniform n_el-element one."""
+    model = flexshaft.build_model(flexshaft.loads_design(design_text(n_el)))
+    x = np.asarray(model.dofs.shaft_x)
+    if len(x) != n_el + 1 or not np.allclose(np.diff(x), case.LENGTH / n_el):
+        raise RuntimeError(f"flexshaft mesh is not {n_el} uniform elements: {x}")
+    return model
+
+
+def mid_node(model) -> int:
+    return int(model.dofs.node_at("shaft", case.LENGTH / 2))
+
+
+def lateral_dofs(model, node: int) -> tuple[int, int]:
+    return model.dofs.shaft(node, "v"), model.dofs.shaft(node, "w")
+
+
+def has_imbalance_sweep() -> bool:
+    return hasattr(fa, "imbalance_response")
+
+
+def has_campbell_sweep() -> bool:
+    return hasattr(fa, "campbell")
+
+
+def unbalance_loads(model) -> np.ndarray:
+    """Load per Ω²: forward-rotating m·e at the mid node, Q_v = m e, Q_w = −i m e."""
+    Q = np.zeros(model.dofs.size, dtype=complex)
+    v, w = lateral_dofs(model, mid_node(model))
+    Q[v] = case.UNBALANCE
+    Q[w] = -1j * case.UNBALANCE
+    return Q
+
+
+def unbalance_response(model, speeds: np.ndarray) -> np.ndarray:
+    """Synchronous response (ndof, n_speeds) to the rotating imbalance Ω²·Q."""
+    Q = unbalance_loads(model)
+    if has_imbalance_sweep():
+        return fa.imbalance_response(model, speeds, Q)
+    out = np.empty((model.dofs.size, len(speeds)), dtype=complex)
+    for k, s in enumerate(speeds):
+        out[:, k] = flexshaft.frequency_response(model, s * s * Q, float(s), speed=float(s))
+    return out
+
+
+def frf(model, omegas: np.ndarray, speed: float) -> np.ndarray:
+    """Response (ndof, n_ω) to a unit-amplitude lateral-1 (v) force at the mid node."""
+    Q = np.zeros(model.dofs.size)
+    Q[model.dofs.shaft(mid_node(model), "v")] = case.FRF_FORCE
+    return flexshaft.frequency_response(model, Q, omegas, speed=speed)
+
+
+def _campbell_call(model, speeds, n_modes):
+    params = inspect.signature(fa.campbell).parameters
+    kwargs = {"n_modes": n_modes} if "n_modes" in params else {}
+    return fa.campbell(model, speeds, **kwargs)
+
+
+def _lateral_mask(model, shapes: np.ndarray) -> np.ndarray:
+    """True for bending modes (columns), False for axial/torsional ones (exactly uncoupled here)."""
+    d = model.dofs
+    n = np.arange(d.n_shaft_nodes)
+    lat = sum(np.sum(np.abs(shapes[d.shaft(n, f)]) ** 2, axis=0) for f in ("v", "w", "beta", "gamma"))
+    other = sum(np.sum(np.abs(shapes[d.shaft(n, f)]) ** 2, axis=0) for f in ("u", "theta"))
+    return lat > other
+
+
+def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed and the whirl labels.
+
+    Extra modes are requested because flexshaft's clamped-in-twist shaft has torsional and
+    axial modes in the band (ROSS's free-free ones sit higher); those are dropped.
+    """
+    n_req = n_freq + 6
+    if has_campbell_sweep():
+        c = _campbell_call(model, speeds, n_req)
+        freqs = np.asarray(c.frequencies)
+        whirl = np.asarray(c.whirl)
+        shapes = getattr(c, "shapes", None)
+        if shapes is None:
+            # no shapes: drop modes that carry no whirl (planar), which include axial/torsion
+            out_f, out_w = [], []
+            for f_row, w_row in zip(freqs, whirl):
+                keep = w_row != "planar"
+                out_f.append(f_row[keep][:n_freq])
+                out_w.append(w_row[keep][:n_freq])
+            return np.array(out_f), np.array(out_w)
+        masks = [_lateral_mask(model, s) for s in shapes]
+        return (np.array([f[m][:n_freq] for f, m in zip(freqs, masks)]),
+                np.array([w[m][:n_freq] for w, m in zip(whirl, masks)]))
+    out_f = np.empty((len(speeds), n_freq))
+    out_w = np.empty((len(speeds), n_freq), dtype=object)
+    for i, s in enumerate(speeds):
+        m = flexshaft.modes(model, float(s), n_modes=n_req, damped=True)
+        keep = _lateral_mask(model, m.shapes)
+        out_f[i] = m.frequencies[keep][:n_freq]
+        out_w[i] = m.whirl[keep][:n_freq]
+    return out_f, out_w

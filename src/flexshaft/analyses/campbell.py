@@ -1,0 +1,166 @@
+"""Campbell diagram: damped eigenvalues against speed with tracked modes and whirl labels.
+
+Fast path: the quadratic problem is projected once on the lowest ``basis_size`` undamped,
+non-spinning modes Φ (mass-normalised), then solved per speed on that small basis:
+``(s² I + s Φᵀ(ΩG + C + K_d)Φ + Λ) y = 0``. Modes are tracked between neighbouring speeds
+by the modal assurance criterion on y (Hungarian assignment), so a curve keeps its identity
+through veerings and crossings; each point carries its own whirl label from the orbit of the
+shaft nodes. Critical speeds are the intersections of the tracked curves with the excitation
+lines ``ω = kΩ`` (linear interpolation between speeds).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as la
+from scipy.optimize import linear_sum_assignment
+
+from flexshaft.analyses.modal import whirl_ratio
+from flexshaft.assembly.model import Model
+from flexshaft.assembly.sparse import restrict
+
+__all__ = ["Campbell", "CriticalSpeed", "campbell", "modal_basis"]
+
+_WHIRL_THRESHOLD = 0.1
+
+
+@dataclass(frozen=True)
+class CriticalSpeed:
+    """Intersection of a tracked mode with the excitation line ω = harmonic·Ω."""
+
+    speed: float  # [rad/s]
+    mode: int  # tracked-mode index
+    harmonic: float
+    whirl: str
+
+    @property
+    def speed_rpm(self) -> float:
+        return self.speed * 60 / (2 * np.pi)
+
+
+@dataclass(frozen=True)
+class Campbell:
+    """Tracked damped eigenvalues over speed.
+
+    Attributes
+    ----------
+    speeds : ndarray
+        Ω [rad/s], (n_speeds,).
+    eigenvalues : ndarray
+        s [rad/s], (n_speeds, n_modes); column k is one tracked mode.
+    whirl : ndarray of str
+        "forward", "backward" or "planar" per point.
+    whirl_ratios : ndarray
+        Whirl ratio in [−1, 1] per point.
+    """
+
+    speeds: np.ndarray
+    eigenvalues: np.ndarray
+    whirl: np.ndarray
+    whirl_ratios: np.ndarray
+    critical_speeds: tuple[CriticalSpeed, ...]
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """Damped natural frequencies [Hz], (n_speeds, n_modes)."""
+        return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def damping_ratios(self) -> np.ndarray:
+        return -self.eigenvalues.real / np.abs(self.eigenvalues)
+
+    @property
+    def log_decrements(self) -> np.ndarray:
+        """δ = 2π ζ/√(1 − ζ²)."""
+        z = self.damping_ratios
+        return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
+
+
+def modal_basis(model: Model, basis_size: int):
+    """Lowest undamped, non-spinning modes on the free DOFs: (ω², Φ) mass-normalised."""
+    free = model.dofs.free
+    M = restrict(model.M, free).toarray()
+    K = restrict(model.K.real + model.Kp, free).toarray()
+    n = min(basis_size, M.shape[0])
+    return la.eigh(K, M, subset_by_index=[0, n - 1])
+
+
+def _solve_reduced(w2, Gr, Dr, speed, n_keep):
+    nb = w2.size
+    A = np.zeros((2 * nb, 2 * nb))
+    A[:nb, nb:] = np.eye(nb)
+    A[nb:, :nb] = -np.diag(w2)
+    A[nb:, nb:] = -(speed * Gr + Dr)
+    lam, vec = la.eig(A)
+    keep = lam.imag > 1e-9 * np.max(np.abs(lam))
+    lam, vec = lam[keep], vec[:nb, keep]
+    order = np.argsort(lam.imag)[:n_keep]
+    y = vec[:, order]
+    return lam[order], y / np.linalg.norm(y, axis=0)
+
+
+def _mac(a, b):
+    return np.abs(a.conj().T @ b) ** 2
+
+
+def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = None,
+             harmonics=(1.0,), damped: bool = True) -> Campbell:
+    """Damped eigenvalues at each speed, tracked into continuous mode curves.
+
+    Parameters
+    ----------
+    speeds : array_like
+        Ω [rad/s], increasing.
+    n_modes : int
+        Number of tracked modes (the lowest at the first speed).
+    basis_size : int or None
+        Size of the modal basis (default ``max(4 n_modes, 40)``); larger is more exact.
+    harmonics : sequence of float
+        Excitation orders k for the critical speeds (ω = kΩ).
+    damped : bool
+        Include bearing damping C and actuator K_d.
+    """
+    if not model.all_pd:
+        raise ValueError("the Campbell diagram needs PD actuators (transfer functions: use the frequency response)")
+    speeds = np.asarray(speeds, dtype=float)
+    free = model.dofs.free
+    nb = basis_size or max(4 * n_modes, 40)
+    w2, Phi = modal_basis(model, nb)
+    Gr = Phi.T @ (restrict(model.G, free) @ Phi)
+    Dr = Phi.T @ (restrict(model.C + model.Kd, free) @ Phi) if damped else np.zeros_like(Gr)
+    n_extra = min(n_modes + 6, w2.size)
+    eig = np.zeros((speeds.size, n_modes), dtype=complex)
+    shapes_y = []
+    prev = None
+    for k, speed in enumerate(speeds):
+        lam, y = _solve_reduced(w2, Gr, Dr, speed, n_extra)
+        if prev is None:
+            idx = np.arange(n_modes)
+        else:
+            lam_prev, y_prev = prev
+            # cost: 1 − MAC, with a small frequency-distance term to break ties of degenerate pairs
+            scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
+            cost = 1 - _mac(y_prev, y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
+            _, idx = linear_sum_assignment(cost)
+        eig[k] = lam[idx]
+        prev = (lam[idx], y[:, idx])
+        shapes_y.append(y[:, idx])
+    # whirl labels from the physical shapes of the shaft nodes
+    ratios = np.array([whirl_ratio(model.dofs, model.dofs.expand(Phi @ y)) for y in shapes_y])
+    if speeds.size > 1 and speeds[0] == 0.0:
+        ratios[0] = ratios[1]  # at rest the pairs are degenerate: label by their continuation
+    whirl = np.where(ratios > _WHIRL_THRESHOLD, "forward", np.where(ratios < -_WHIRL_THRESHOLD, "backward", "planar"))
+    return Campbell(speeds, eig, whirl, ratios, _critical_speeds(speeds, eig, whirl, harmonics))
+
+
+def _critical_speeds(speeds, eig, whirl, harmonics):
+    out = []
+    for h in harmonics:
+        for m in range(eig.shape[1]):
+            g = eig[:, m].imag - h * speeds
+            for i in np.flatnonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0):
+                t = g[i] / (g[i] - g[i + 1])
+                out.append(CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[i, m])))
+    return tuple(sorted(out, key=lambda c: c.speed))

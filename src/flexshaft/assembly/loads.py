@@ -1,0 +1,192 @@
+"""Load vectors on the global DOF vector (thesis §2.4).
+
+* point and line loads on the shaft or boom: consistent nodal loads ``∫ Nᵀ f``;
+* point loads on the end mass: ``Bᵀ F`` through the end-mass kinematics (eq. 2.37);
+* a load factor ``n`` [g] on every mass: ``M · (n g)`` applied to the rigid translation field;
+* the torque ``T = P/Ω`` at the shaft's aft end (forward end held in twist);
+* the rotating imbalance ``F = e_c m_s Ω²`` shared among the shaft bays between bearings,
+  as complex amplitudes of a forward-rotating load: ``Q_v = F``, ``Q_w = −iF`` (the force turns
+  from +y towards +z with the spin).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS
+from flexshaft.assembly.model import Model
+from flexshaft.elements.boom import BOOM_COLUMNS
+from flexshaft.elements.inertia import end_mass_kinematics
+from flexshaft.elements.shape import beam_shape, gauss_points
+
+__all__ = [
+    "STANDARD_GRAVITY",
+    "point_load",
+    "line_load",
+    "inertial_load",
+    "torque_load",
+    "external_static_load",
+    "imbalance_bays",
+    "imbalance_loads",
+]
+
+STANDARD_GRAVITY = 9.80665  # m/s^2
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def _rows(model: Model, on: str, x):
+    """Element DOFs and shape rows (fields × element DOFs) at stations ``x`` on a member."""
+    dm = model.dofs
+    located = [dm.locate(on, float(xx)) for xx in np.atleast_1d(x)]
+    e = np.array([l[0] for l in located])
+    xi = np.array([l[1] for l in located])
+    L = np.array([l[2] for l in located])
+    s = beam_shape(xi[:, None], L)  # (n, 1, 12)
+    fields = SHAFT_FIELDS if on == "shaft" else BOOM_FIELDS
+    N = np.stack([s.N[f][:, 0] for f in fields], axis=1)  # (n, nf, 12)
+    if on == "boom":
+        N = N[..., BOOM_COLUMNS]
+    return dm.element_dofs(on)[e], N, fields
+
+
+def _scatter_vector(size: int, dofs: np.ndarray, values: np.ndarray, dtype=float) -> np.ndarray:
+    Q = np.zeros(size, dtype=dtype)
+    np.add.at(Q, dofs.ravel(), values.ravel())
+    return Q
+
+
+def _generalised(fields, force, moment) -> np.ndarray:
+    """Force (x, y, z) and moment (x, y, z) as values on a member's fields."""
+    comp = {"u": force[0], "v": force[1], "w": force[2], "theta": moment[0], "beta": moment[1], "gamma": moment[2]}
+    return np.array([comp[f] for f in fields])
+
+
+def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | None = None) -> np.ndarray:
+    """Load vector of a point force [N] and moment [N m] (x, y, z components).
+
+    Parameters
+    ----------
+    on : {"shaft", "boom", "end_mass"}
+        Where it acts; ``x`` [m] is required on the shaft or boom.
+    """
+    force = np.asarray(force, dtype=float)
+    moment = np.asarray(moment, dtype=float)
+    dm = model.dofs
+    if on == "end_mass":
+        em = model.design.tailboom.end_mass
+        tip = np.array([dm.boom(-1, f) for f in BOOM_FIELDS])
+        gen = end_mass_kinematics(em.offset).T @ force
+        gen[2:] += moment  # a couple on the rigid mass acts on the tip rotations
+        return _scatter_vector(dm.size, tip, gen)
+    dofs, N, fields = _rows(model, on, x)
+    g = _generalised(fields, force, moment)
+    return _scatter_vector(dm.size, dofs, np.einsum("nfd,f->nd", N, g))
+
+
+def line_load(model: Model, on: str, x_start: float, x_end: float, force_per_length) -> np.ndarray:
+    """Consistent load vector of a uniform line load [N/m] between two stations [m]."""
+    dm = model.dofs
+    xs = dm.shaft_x if on == "shaft" else dm.boom_x
+    q = np.asarray(force_per_length, dtype=float)
+    xi, w = gauss_points(4)
+    Q = np.zeros(dm.size)
+    for a, b in zip(xs[:-1], xs[1:]):
+        lo, hi = max(a, x_start), min(b, x_end)
+        if hi <= lo:
+            continue
+        pts = lo + (hi - lo) * xi
+        dofs, N, fields = _rows(model, on, pts)
+        g = _generalised(fields, q, np.zeros(3))
+        Q += _scatter_vector(dm.size, dofs, np.einsum("nfd,f,n->nd", N, g, w * (hi - lo)))
+    return Q
+
+
+def rigid_translation(model: Model, direction) -> np.ndarray:
+    """Global vector of a unit rigid translation along ``direction`` (x, y, z)."""
+    dm = model.dofs
+    d = np.asarray(direction, dtype=float)
+    r = np.zeros(dm.size)
+    ns = np.arange(dm.n_shaft_nodes)
+    for f, c in zip(("u", "v", "w"), d):
+        r[dm.shaft(ns, f)] = c
+    if dm.n_boom_nodes:
+        nb = np.arange(dm.n_boom_nodes)
+        r[dm.boom(nb, "v")] = d[1]
+        r[dm.boom(nb, "w")] = d[2]
+    return r
+
+
+def inertial_load(model: Model, load_factor) -> np.ndarray:
+    """Load factor [g] (x, y, z) on every mass: ``Q = M · (n g r)`` with r the rigid translation.
+
+    The boom has no axial DOF, so an x load factor acts on the shaft only.
+    """
+    n = np.asarray(load_factor, dtype=float)
+    return model.M @ rigid_translation(model, n * STANDARD_GRAVITY)
+
+
+def torque_load(model: Model, torque: float | None = None) -> np.ndarray:
+    """Transmitted torque at the shaft's aft node [N m], default ``P/Ω``.
+
+    The forward end is held in twist (the drive); the tail rotor resists the spin, so the aft
+    end carries ``−T`` about +x.
+    """
+    if torque is None:
+        torque = model.power / model.speed if model.speed > 0 else 0.0
+    Q = np.zeros(model.dofs.size)
+    Q[model.dofs.shaft(-1, "theta")] = -torque
+    return Q
+
+
+def external_static_load(model: Model) -> np.ndarray:
+    """Sum of the design's point loads, line loads and load factor (not the torque)."""
+    loads = model.design.loads
+    Q = inertial_load(model, loads.load_factor)
+    for p in loads.point:
+        Q += point_load(model, p.on, p.force, p.moment, p.x)
+    for ln in loads.line:
+        Q += line_load(model, ln.on, ln.x_start, ln.x_end, ln.force_per_length)
+    return Q
+
+
+def imbalance_bays(model: Model) -> list[tuple[float, float]]:
+    """Shaft bays: the spans between consecutive bearing stations (overhangs excluded)."""
+    xs = sorted({b.x_shaft for b in model.bearings})
+    return [(a, b) for a, b in zip(xs[:-1], xs[1:]) if b > a]
+
+
+def imbalance_loads(model: Model, placement: str | None = None, eccentricity: float | None = None) -> np.ndarray:
+    """Rotating imbalance load vectors per unit Ω² [N s²], columns = load cases.
+
+    The force ``e_c m_s Ω²`` is shared equally among the bays. ``placement``:
+
+    * ``"mid_bay"``: a point force at each bay's midpoint, all in phase (one case);
+    * ``"distributed"``: uniform over each bay (one case);
+    * ``"worst"``: every combination of in-phase/anti-phase mid-bay forces (2^(nbays−1)
+      cases); the response is taken as the worst case.
+
+    Multiply by Ω² for the amplitude at speed Ω. Complex: ``Q_v = F``, ``Q_w = −iF``.
+    """
+    loads = model.design.loads if model.design is not None else None
+    placement = placement or (loads.imbalance_placement if loads else "mid_bay")
+    ecc = eccentricity if eccentricity is not None else (loads.eccentricity if loads else 0.0)
+    bays = imbalance_bays(model)
+    if not bays:
+        bays = [(model.dofs.shaft_x[0], model.dofs.shaft_x[-1])]
+    share = ecc * model.shaft_mass / len(bays)
+    rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
+    per_bay = []
+    for a, b in bays:
+        if placement == "distributed":
+            re = line_load(model, "shaft", a, b, rotating.real * share / (b - a))
+            im = line_load(model, "shaft", a, b, rotating.imag * share / (b - a))
+        else:
+            re = point_load(model, "shaft", rotating.real * share, x=0.5 * (a + b))
+            im = point_load(model, "shaft", rotating.imag * share, x=0.5 * (a + b))
+        per_bay.append(re + 1j * im)
+    per_bay = np.array(per_bay).T  # (ndof, nbays)
+    if placement != "worst":
+        return per_bay.sum(axis=1, keepdims=True)
+    nb = per_bay.shape[1]
+    signs = [np.array([1.0] + [1.0 if (k >> j) & 1 == 0 else -1.0 for j in range(nb - 1)]) for k in range(2 ** (nb - 1))]
+    return np.stack([per_bay @ s for s in signs], axis=1)

@@ -1,0 +1,40 @@
+"""Figures and the HTML report of ``flexshaft run``.
+
+The top layer's helper: it takes plain numpy arrays and dicts (never models or analysis
+results) and imports matplotlib only when a figure is drawn, so ``import flexshaft.report``
+stays light. Typical use::
+
+    from flexshaft.report import Section, FigureRef, campbell_figure, save_figure, write_report
+
+    paths = save_figure(campbell_figure(speeds_rpm, freqs_hz, whirl), out, "campbell")
+    write_report(out, "Baseline", [Section("Modes", figures=[FigureRef(paths["png"], "Campbell")])])
+"""
+
+from __future__ import annotations
+
+from flexshaft.report.figures import (
+    actuator_figure,
+    campbell_figure,
+    deflected_shape_figure,
+    imbalance_response_figure,
+    mode_shapes_figure,
+    safety_factor_figure,
+    save_figure,
+)
+from flexshaft.report.html import FigureRef, Section, Table, format_cell, render_report, write_report
+
+__all__ = [
+    "campbell_figure",
+    "imbalance_response_figure",
+    "deflected_shape_figure",
+    "safety_factor_figure",
+    "mode_shapes_figure",
+    "actuator_figure",
+    "save_figure",
+    "Section",
+    "Table",
+    "FigureRef",
+    "format_cell",
+    "render_report",
+    "write_report",
+]
