@@ -88,7 +88,9 @@ def has_imbalance_sweep() -> bool:
 
 
 def has_campbell_sweep() -> bool:
-    return hasattr(fa, "campbell")
+    # a function, not the submodule ``flexshaft.analyses.campbell`` (an attribute once imported)
+    f = getattr(fa, "campbell", None)
+    return callable(f) and not inspect.ismodule(f)
 
 
 def unbalance_loads(model) -> np.ndarray:
@@ -133,8 +135,18 @@ def _lateral_mask(model, shapes: np.ndarray) -> np.ndarray:
     return lat > other
 
 
+def _nonlateral_frequencies(model, n_modes: int) -> np.ndarray:
+    """Frequencies [Hz] of the axial/torsional modes among the lowest ``n_modes`` at rest.
+
+    They do not depend on speed or on the (lateral) bearing damping here, so they identify the
+    sweep's tracked curves that are not bending modes. Untimed set-up.
+    """
+    m = flexshaft.modes(model, 0.0, n_modes=n_modes, damped=False)
+    return m.frequencies[~_lateral_mask(model, m.shapes)]
+
+
 def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed and the whirl labels.
+    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed (sorted) and whirl.
 
     Extra modes are requested because flexshaft's clamped-in-twist shaft has torsional and
     axial modes in the band (ROSS's free-free ones sit higher); those are dropped.
@@ -144,18 +156,12 @@ def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.nda
         c = _campbell_call(model, speeds, n_req)
         freqs = np.asarray(c.frequencies)
         whirl = np.asarray(c.whirl)
-        shapes = getattr(c, "shapes", None)
-        if shapes is None:
-            # no shapes: drop modes that carry no whirl (planar), which include axial/torsion
-            out_f, out_w = [], []
-            for f_row, w_row in zip(freqs, whirl):
-                keep = w_row != "planar"
-                out_f.append(f_row[keep][:n_freq])
-                out_w.append(w_row[keep][:n_freq])
-            return np.array(out_f), np.array(out_w)
-        masks = [_lateral_mask(model, s) for s in shapes]
-        return (np.array([f[m][:n_freq] for f, m in zip(freqs, masks)]),
-                np.array([w[m][:n_freq] for w, m in zip(whirl, masks)]))
+        other = _nonlateral_frequencies(model, n_req)
+        f0 = freqs[0]
+        lateral = np.array([not np.any(np.abs(other - f) <= 1e-6 * f) for f in f0])
+        freqs, whirl = freqs[:, lateral], whirl[:, lateral]
+        order = np.argsort(freqs, axis=1)[:, :n_freq]
+        return np.take_along_axis(freqs, order, 1), np.take_along_axis(whirl, order, 1)
     out_f = np.empty((len(speeds), n_freq))
     out_w = np.empty((len(speeds), n_freq), dtype=object)
     for i, s in enumerate(speeds):

@@ -223,6 +223,8 @@ def main(argv=None) -> int:
     out = {
         "ross_version": ross.__version__, "numpy": numpy.__version__, "scipy": scipy.__version__,
         "python": platform.python_version(), "isolated_processes": not a.no_isolate,
+        "blas_threads": {k: os.environ.get(k, "default")
+                         for k in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")},
         "parameters": case.parameters(), "runs": runs,
     }
     text = json.dumps(out)

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from chromium_probe import chromium_or_skip, image_load_title, run_chromium
 
 from flexshaft.report import (
     FigureRef,
@@ -36,25 +37,8 @@ from flexshaft.report import (
     write_report,
 )
 
-CHROMIUM_FLAGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-dev-shm-usage",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
 GAP = 0.5e-3  # auxiliary-bearing radial gap [m]
 OPERATING_RPM = 4800.0
-
-
-def _chromium() -> str | None:
-    if Path("/usr/bin/chromium").is_file():
-        return "/usr/bin/chromium"
-    return shutil.which("chromium") or shutil.which("chromium-browser")
 
 
 def _jeffcott_amplitude(speeds_rpm: np.ndarray, critical_rpm: float, damping_ratio: float, e: float) -> np.ndarray:
@@ -200,37 +184,11 @@ def test_import_does_not_load_matplotlib() -> None:
 
 
 def test_report_renders_in_headless_chromium(report: dict, tmp_path: Path) -> None:
-    chromium = _chromium()
-    if chromium is None:
-        message = "chromium not installed: run scripts/install_chromium.sh"
-        if os.environ.get("CI"):
-            pytest.fail(message)
-        pytest.skip(message)
-    page = report["path"].read_text(encoding="utf-8")
-    # A test-only copy that reports, on load, whether every <img> decoded (the report has no script).
-    probe = (
-        "<script>window.addEventListener('load', () => { const images = [...document.images];"
-        " document.title = images.length && images.every(i => i.complete && i.naturalWidth > 0)"
-        " ? 'IMAGES-OK:' + images.length : 'IMAGES-BAD:' + images.length; });</script>"
-    )
-    probed = page.replace("default-src 'none';", "default-src 'none'; script-src 'unsafe-inline';", 1)
-    probed = probed.replace("</body>", probe + "</body>", 1)
-    probe_path = report["folder"] / "report_probe.html"
-    probe_path.write_text(probed, encoding="utf-8")
-
-    def run(*args: str) -> subprocess.CompletedProcess:
-        profile = tmp_path / f"profile{len(list(tmp_path.iterdir()))}"
-        return subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", *args],
-                              capture_output=True, text=True, timeout=60)
-
-    dump = run("--virtual-time-budget=5000", "--dump-dom", probe_path.as_uri())
-    assert dump.returncode == 0, dump.stderr[-2000:]
-    title = re.search(r"<title>(.*?)</title>", dump.stdout, re.DOTALL)
-    assert title is not None, dump.stdout[:2000]
-    assert html.unescape(title.group(1)) == f"IMAGES-OK:{report['n_figures']}"
+    chromium = chromium_or_skip()
+    assert image_load_title(chromium, report["path"], tmp_path) == f"IMAGES-OK:{report['n_figures']}"
 
     screenshot = tmp_path / "report.png"
-    shot = run("--window-size=1400,3000", "--hide-scrollbars", f"--screenshot={screenshot}", report["path"].as_uri())
+    shot = run_chromium(chromium, tmp_path, "--window-size=1400,3000", "--hide-scrollbars", f"--screenshot={screenshot}", report["path"].as_uri())
     assert shot.returncode == 0, shot.stderr[-2000:]
     assert screenshot.stat().st_size > 50_000
     import matplotlib.image

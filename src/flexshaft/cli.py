@@ -106,42 +106,48 @@ def run(
     out: Path = typer.Option(Path("flexshaft-results"), "--out", "-o", help="Results folder."),
     as_json: bool = typer.Option(False, "--json", help="Print the key results as JSON."),
 ) -> None:
-    """Analyse a design (default: the embedded baseline) and write the results folder."""
-    import numpy as np
+    """Analyse a design (default: the embedded baseline) and write the report folder."""
+    from rich.console import Console
+    from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-    from flexshaft.assembly import build_model
-    from flexshaft.summary import model_summary, modes_at
+    from flexshaft.studies.run import run_analysis
 
     d = _load(design)
-    model = build_model(d)
-    results = {
-        "design": d.name,
-        "summary": model_summary(model),
-        "modes_at_rest": modes_at(model, 0.0),
-        "modes_at_operating_speed": modes_at(model, model.speed),
-    }
     try:
         out.mkdir(parents=True, exist_ok=True)
-        (out / "results.json").write_text(json.dumps(results, indent=2))
     except OSError as exc:
-        _fail(f"--out: cannot write results to {out} ({exc.strerror})")
-    if as_json:
-        typer.echo(json.dumps(results, indent=2))
-        return
-    from rich.console import Console
+        _fail(f"--out: cannot create the results folder {out} ({exc.strerror})")
+    console = Console(stderr=True)
+    with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(), console=console,
+                  transient=True, disable=as_json) as progress:
+        task = progress.add_task("flexshaft run", total=None)
+        results = run_analysis(d, progress=lambda label: progress.update(task, description=label))
+        progress.update(task, description="writing the report")
+        from flexshaft.report.driveline import results_json, write_run_report
 
+        page = write_run_report(results, out)
+    data = results_json(results)
+    if as_json:
+        typer.echo(json.dumps(data, indent=2, default=float))
+        return
     console = Console()
-    s = results["summary"]
+    s = data["summary"]
     console.print(f"[bold]{d.name}[/bold]")
     console.print(
         f"shaft mass {s['shaft_mass_kg']:.2f} kg, E* = {s['shaft_E_storage_Pa'] / 1e9:.2f} GPa "
         f"(η {s['shaft_E_loss_factor']:.4f}), G* = {s['shaft_G_storage_Pa'] / 1e9:.2f} GPa "
         f"(η {s['shaft_G_loss_factor']:.4f}), torque {s['torque_Nm']:.0f} N m, {s['free_dofs']} free DOFs"
     )
-    _print_modes(console, "natural frequencies at rest", results["modes_at_rest"])
-    rpm = model.speed * 60 / (2 * np.pi)
-    _print_modes(console, f"natural frequencies at {rpm:.0f} rpm", results["modes_at_operating_speed"])
-    console.print(f"results written to {out / 'results.json'}")
+    _print_modes(console, "natural frequencies at rest", data["modes_at_rest"])
+    _print_modes(console, f"natural frequencies at {s['operating_speed_rpm']:.0f} rpm", data["modes_at_operating_speed"])
+    if data["strength_static_plus_imbalance"]:
+        sf = data["strength_static_plus_imbalance"]
+        console.print(f"Tsai-Wu safety factor {sf['safety_factor']:.2f} at x = {sf['x_m']:.2f} m, ply {sf['ply']} "
+                      f"({sf['ply_angle_deg']:+.0f}°), {sf['dominant_stress']} dominates; "
+                      f"buckling safety factor {data['buckling']['safety_factor']:.2f}")
+    imb = data["imbalance"]
+    console.print(f"spin-up peak shaft orbit {imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm")
+    console.print(f"report written to {page}")
 
 
 def main() -> None:  # pragma: no cover - console entry

@@ -18,6 +18,7 @@ import scipy.linalg as la
 from scipy.optimize import linear_sum_assignment
 
 from flexshaft.analyses.modal import whirl_ratio
+from flexshaft._threads import single_blas_thread
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
@@ -105,6 +106,7 @@ def _mac(a, b):
     return np.abs(a.conj().T @ b) ** 2
 
 
+@single_blas_thread
 def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = None,
              harmonics=(1.0,), damped: bool = True) -> Campbell:
     """Damped eigenvalues at each speed, tracked into continuous mode curves.

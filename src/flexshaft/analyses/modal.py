@@ -21,6 +21,7 @@ import numpy as np
 import scipy.linalg as la
 
 from flexshaft.assembly.dofs import DofMap
+from flexshaft._threads import single_blas_thread
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
@@ -67,8 +68,9 @@ class Modes:
 
     @property
     def damping_ratios(self) -> np.ndarray:
-        """ζ = −Re(s)/|s|."""
-        return -self.eigenvalues.real / np.abs(self.eigenvalues)
+        """ζ = −Re(s)/|s| (round-off below 1e-12 reported as exactly 0)."""
+        zeta = -self.eigenvalues.real / np.abs(self.eigenvalues)
+        return np.where(np.abs(zeta) < 1e-12, 0.0, zeta)
 
     @property
     def component(self) -> np.ndarray:
@@ -106,6 +108,7 @@ def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
     return phi / ref
 
 
+@single_blas_thread
 def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True) -> Modes:
     """Natural frequencies and mode shapes at spin speed ``speed`` [rad/s].
 

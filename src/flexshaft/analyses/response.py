@@ -15,6 +15,7 @@ __all__ = [
     "SingularSystemError",
     "frequency_response",
     "imbalance_response",
+    "orbit_amplitude",
     "static_response",
 ]
 
@@ -96,3 +97,10 @@ def static_response(model: Model, loads) -> np.ndarray:
     out = np.zeros(Q.shape)
     out[free] = lu.solve(Q[free])
     return out
+
+
+def orbit_amplitude(a, b) -> np.ndarray:
+    """Largest excursion of the orbit ``(Re(a e^{iφ}), Re(b e^{iφ}))`` over φ: the major
+    semi-axis ``√((|a|² + |b|² + |a² + b²|)/2)`` [same unit as a, b]."""
+    a, b = np.asarray(a), np.asarray(b)
+    return np.sqrt(0.5 * (np.abs(a) ** 2 + np.abs(b) ** 2 + np.abs(a * a + b * b)))

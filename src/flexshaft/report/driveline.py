@@ -1,0 +1,210 @@
+"""Assemble the ``flexshaft run`` report from a :class:`flexshaft.studies.run.RunResults`.
+
+Duck-typed on the results' plain attributes (arrays, dicts, small dataclasses); converts SI to
+engineering units (rpm, Hz, mm) only here, at the edge.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from flexshaft.report.figures import (
+    actuator_figure,
+    campbell_figure,
+    deflected_shape_figure,
+    imbalance_response_figure,
+    mode_shapes_figure,
+    safety_factor_figure,
+    save_figure,
+)
+from flexshaft.report.html import FigureRef, Section, Table, write_report
+
+__all__ = ["results_json", "write_run_report"]
+
+_RPM = 60 / (2 * np.pi)
+
+
+def _strength_dict(r) -> dict | None:
+    if r is None:
+        return None
+    return {
+        "safety_factor": r.safety_factor,
+        "x_m": r.x,
+        "element": r.element,
+        "ply": r.ply + 1,
+        "ply_angle_deg": r.ply_angle_deg,
+        "phase_deg": r.phase_deg,
+        "bending_sign": r.bending_sign,
+        "dominant_stress": r.dominant_stress,
+        "sigma1_Pa": r.stresses[0],
+        "sigma2_Pa": r.stresses[1],
+        "tau12_Pa": r.stresses[2],
+    }
+
+
+def results_json(res) -> dict:
+    """The key numbers of a run, JSON-ready (SI units, rpm where named)."""
+    model = res.model
+    dm = model.dofs
+    qs = res.static_displacement
+    camp = res.campbell
+    op = model.speed
+    i_op = int(np.argmin(np.abs(res.speeds - op)))
+    return {
+        "design": res.summary["name"],
+        "summary": res.summary,
+        "modes_at_rest": res.modes_at_rest,
+        "modes_at_operating_speed": res.modes_at_speed,
+        "critical_speeds": [
+            {"speed_rpm": c.speed_rpm, "tracked_mode": c.mode + 1, "harmonic": c.harmonic, "whirl": c.whirl}
+            for c in camp.critical_speeds
+        ],
+        "imbalance": {
+            "max_shaft_orbit_spin_up_m": float(res.shaft_peak.max()),
+            "speed_of_max_rpm": float(res.speeds[np.argmax(res.shaft_peak)] * _RPM),
+            "max_shaft_orbit_at_operating_m": float(res.shaft_peak[i_op]),
+            "actuator_max_displacement_m": {k: float(v.max()) for k, v in res.actuator_displacement.items()},
+            "actuator_max_force_N": {k: float(v.max()) for k, v in res.actuator_force.items()},
+        },
+        "static": {
+            "boom_tip_v_m": float(qs[dm.boom(-1, "v")]) if dm.n_boom_nodes else None,
+            "boom_tip_w_m": float(qs[dm.boom(-1, "w")]) if dm.n_boom_nodes else None,
+            "max_shaft_deflection_m": float(np.max(np.hypot(dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w")))),
+        },
+        "strength_static": _strength_dict(res.strength_static),
+        "strength_static_plus_imbalance": _strength_dict(res.strength_total),
+        "buckling": res.buckling,
+        "notes": res.notes,
+    }
+
+
+def _modes_table(rows, caption) -> Table:
+    return Table(caption, ["mode", "frequency [Hz]", "[rpm]", "damping ratio", "whirl", "component"],
+                 [[r["mode"], r["frequency_Hz"], r["frequency_rpm"], r["damping_ratio"], r["whirl"], r["component"]] for r in rows])
+
+
+def write_run_report(res, folder: str | Path, generated: str | None = None) -> Path:
+    """Write ``report.html``, the figures (PNG and SVG) and ``results.json`` into ``folder``."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    model = res.model
+    dm = model.dofs
+    design = model.design
+    data = results_json(res)
+    (folder / "results.json").write_text(json.dumps(data, indent=2, default=float))
+    op_rpm = model.speed * _RPM
+    s = res.summary
+    sections = []
+
+    bearings = [[b.name, b.kind, b.x_shaft, b.x_boom if b.x_boom is not None else "ground", b.offset] for b in model.bearings]
+    sections.append(Section(
+        "Design summary",
+        paragraphs=[f"{design.name}. Shaft {design.shaft.x_start:g}–{design.shaft.x_end:g} m, "
+                    f"D_o = {design.shaft.outer_diameter * 1e3:.1f} mm, wall {design.shaft.wall_thickness * 1e3:.2f} mm, "
+                    f"layup {design.shaft.layup or 'isotropic'}; {op_rpm:.0f} rpm, {model.power / 1e3:.0f} kW."],
+        tables=[
+            Table("Key numbers", ["quantity", "value"], [
+                ["shaft mass [kg]", s["shaft_mass_kg"]],
+                ["total mass (shaft, boom, end mass) [kg]", s["total_mass_kg"]],
+                ["E* storage [GPa] / loss factor", f"{s['shaft_E_storage_Pa'] / 1e9:.3f} / {s['shaft_E_loss_factor']:.4f}"],
+                ["G* storage [GPa] / loss factor", f"{s['shaft_G_storage_Pa'] / 1e9:.3f} / {s['shaft_G_loss_factor']:.4f}"],
+                ["torque [N m]", s["torque_Nm"]],
+                ["free DOFs", s["free_dofs"]],
+            ]),
+            Table("Bearings", ["name", "kind", "x shaft [m]", "x boom [m]", "offset h [m]"], bearings),
+        ],
+    ))
+
+    camp = res.campbell
+    crit = [c for c in camp.critical_speeds if c.speed <= model.speed * 1.25]
+    p_camp = save_figure(campbell_figure(camp.speeds * _RPM, camp.frequencies, camp.whirl,
+                                         [c.speed_rpm for c in crit], op_rpm), folder, "campbell")
+    shapes = res.mode_shapes
+    ns = np.arange(dm.n_shaft_nodes)
+    shaft_shapes, boom_shapes = [], []
+    for k in range(min(6, shapes.shapes.shape[1])):
+        phi = shapes.shapes[:, k]
+        label = f"mode {k + 1}, {shapes.frequencies[k]:.2f} Hz, {shapes.whirl[k]}, {shapes.component[k]}"
+        shaft_shapes.append({"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]})
+        if dm.n_boom_nodes:
+            nb = np.arange(dm.n_boom_nodes)
+            boom_shapes.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
+    p_shapes = save_figure(mode_shapes_figure(dm.shaft_x, shaft_shapes, dm.boom_x if dm.n_boom_nodes else None,
+                                              boom_shapes or None), folder, "mode_shapes")
+    sections.append(Section(
+        "Natural frequencies and Campbell diagram",
+        paragraphs=["Damped eigenvalues of the linear model (gyroscopic terms, bearing damping and actuator K_d; "
+                    "the hysteretic loss is treated in the stability analysis). Modes are tracked across speed by "
+                    "the modal assurance criterion; whirl direction comes from the shaft orbits (forward: same "
+                    "sense as the spin)."],
+        tables=[_modes_table(res.modes_at_rest, "Natural frequencies at rest"),
+                _modes_table(res.modes_at_speed, f"Natural frequencies at {op_rpm:.0f} rpm"),
+                Table("Critical speeds (1× excitation) up to 125 % of the operating speed",
+                      ["speed [rpm]", "tracked mode", "whirl"], [[c.speed_rpm, c.mode + 1, c.whirl] for c in crit])],
+        figures=[FigureRef(p_camp["png"], "Campbell diagram"), FigureRef(p_shapes["png"], f"Mode shapes at {op_rpm:.0f} rpm")],
+    ))
+
+    rpm = res.speeds * _RPM
+    amps = {"max over shaft": res.shaft_peak}
+    amps.update({f"shaft at {a.name}": res.shaft_envelope[dm.node_at("shaft", a.link.x_shaft)] for a in model.actuators})
+    p_imb = save_figure(imbalance_response_figure(rpm, amps, op_rpm, log_y=True), folder, "imbalance_response")
+    figs = [FigureRef(p_imb["png"], "Synchronous imbalance response during spin-up (orbit major semi-axis)")]
+    if model.actuators:
+        p_act = save_figure(actuator_figure(rpm, res.actuator_displacement, res.actuator_force, operating_rpm=op_rpm), folder, "actuators")
+        figs.append(FigureRef(p_act["png"], "Actuator relative displacement and force during spin-up"))
+    imb = data["imbalance"]
+    sections.append(Section(
+        "Imbalance response over speed",
+        paragraphs=[f"Rotating imbalance e_c m_s Ω² ({design.loads.imbalance_placement} placement), "
+                    f"steady state at each speed from 2 % to 110 % of the operating speed. Peak shaft orbit "
+                    f"{imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm; "
+                    f"{imb['max_shaft_orbit_at_operating_m'] * 1e3:.4f} mm at the operating speed."],
+        tables=[Table("Actuators (spin-up maxima)", ["actuator", "max relative displacement [mm]", "max force [N]"],
+                      [[k, imb["actuator_max_displacement_m"][k] * 1e3, imb["actuator_max_force_N"][k]] for k in res.actuator_force])],
+        figures=figs,
+    ))
+
+    qs = res.static_displacement
+    p_def = save_figure(deflected_shape_figure(
+        dm.shaft_x, dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w"),
+        dm.boom_x if dm.n_boom_nodes else None,
+        dm.values(qs, "boom", "v") if dm.n_boom_nodes else None,
+        dm.values(qs, "boom", "w") if dm.n_boom_nodes else None,
+        [b.x_shaft for b in model.bearings]), folder, "static_deflection")
+    st = data["static"]
+    sections.append(Section(
+        "Deflected shape under static loads",
+        paragraphs=["External point and line loads, the manoeuvre load factor on every mass and the transmitted torque."
+                    + (f" Boom tip: v = {st['boom_tip_v_m'] * 1e3:.2f} mm, w = {st['boom_tip_w_m'] * 1e3:.2f} mm." if st["boom_tip_v_m"] is not None else "")],
+        figures=[FigureRef(p_def["png"], "Static deflection of shaft and tailboom")],
+    ))
+
+    if res.strength_total is not None:
+        r = res.strength_total
+        label = f"ply {r.ply + 1} ({r.ply_angle_deg:+.0f}°), φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates"
+        p_sf = save_figure(safety_factor_figure(r.x_along, r.along_shaft, r.x, label), folder, "safety_factor")
+        rows = []
+        for name, rr in (("static", res.strength_static), ("static + imbalance", res.strength_total)):
+            rows.append([name, rr.safety_factor, rr.x, rr.ply + 1, rr.ply_angle_deg, rr.phase_deg, rr.dominant_stress,
+                         rr.stresses[0] / 1e6, rr.stresses[1] / 1e6, rr.stresses[2] / 1e6])
+        b = res.buckling
+        sections.append(Section(
+            "Strength and torsional buckling",
+            paragraphs=["Tsai-Wu safety factor of every ply at both ends of every shaft element, for the static response "
+                        "superposed with the imbalance response at the operating speed over the phase φ ∈ [0, 2π) and "
+                        "both signs of the bending strain.",
+                        f"Torsional buckling ({b['theory']} shell, simply supported, both torque senses): "
+                        f"T_cr = {b['critical_torque_positive_Nm']:.0f} N m (positive, n = {b['wave_number_positive']}), "
+                        f"{b['critical_torque_negative_Nm']:.0f} N m (negative, n = {b['wave_number_negative']}); "
+                        f"applied {b['torque_Nm']:.0f} N m; buckling safety factor {b['safety_factor']:.2f}. "
+                        "The classical shell ignores transverse shear of the soft matrix and is unconservative for FMC walls."],
+            tables=[Table("Critical ply", ["case", "R", "x [m]", "ply", "angle [°]", "φ [°]", "dominant",
+                                           "σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]"], rows)],
+            figures=[FigureRef(p_sf["png"], "Minimum Tsai-Wu safety factor along the shaft")],
+        ))
+    if res.notes:
+        sections.append(Section("Notes", paragraphs=list(res.notes)))
+    return write_report(folder, f"flexshaft report: {design.name}", sections, design_name=design.name, generated=generated)

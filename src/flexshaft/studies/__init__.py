@@ -1,0 +1,1 @@
+"""Studies layer: analyses combined into the answers a designer asks for."""

@@ -1,0 +1,147 @@
+"""The main job: every analysis of one design at its operating point (``flexshaft run``).
+
+Returns plain data (:class:`RunResults`) that the report, the JSON output and notebooks use.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from flexshaft.analyses import imbalance_response, modes, static_response
+from flexshaft.analyses.campbell import Campbell, campbell
+from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor
+from flexshaft.assembly import build_model
+from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
+from flexshaft.assembly.model import Model
+from flexshaft.summary import model_summary, modes_table
+
+__all__ = ["RunResults", "run_analysis", "actuator_response"]
+
+
+@dataclass
+class RunResults:
+    """Everything ``flexshaft run`` computes, in SI units."""
+
+    model: Model
+    summary: dict
+    modes_at_rest: list
+    modes_at_speed: list
+    mode_shapes: object  # Modes at the operating speed
+    campbell: Campbell
+    speeds: np.ndarray  # spin-up speeds [rad/s]
+    shaft_peak: np.ndarray  # max orbit over shaft nodes at each speed [m]
+    shaft_envelope: np.ndarray  # (n_shaft_nodes, n_speeds) orbit amplitude [m]
+    actuator_displacement: dict  # name -> (n_speeds,) relative orbit [m]
+    actuator_force: dict  # name -> (n_speeds,) [N]
+    static_displacement: np.ndarray
+    strength_static: StrengthResult | None
+    strength_total: StrengthResult | None
+    imbalance_at_speed: np.ndarray
+    buckling: object = None
+    notes: list = field(default_factory=list)
+
+
+def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
+    """Relative orbit amplitude [m] and force amplitude [N] at each actuator.
+
+    ``q`` is (ndof, n) complex at frequencies ``omegas`` [rad/s]; the force is ``C(iω) d``.
+    """
+    disp, force = {}, {}
+    for a in model.actuators:
+        d = a.lateral_rows @ q  # (2, n)
+        gain = a.controller(1j * np.asarray(omegas))
+        disp[a.name] = orbit_amplitude(d[0], d[1])
+        force[a.name] = np.abs(gain) * disp[a.name]
+    return disp, force
+
+
+def _worst(q: np.ndarray, model: Model):
+    """Shaft orbit envelope (nodes × speeds), worst over load cases (axis 1)."""
+    dm = model.dofs
+    n = np.arange(dm.n_shaft_nodes)
+    amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])  # (nodes, cases, speeds)
+    case = np.argmax(amp.max(axis=0), axis=0)  # worst case per speed
+    return amp, case
+
+
+def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None) -> RunResults:
+    """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength.
+
+    Parameters
+    ----------
+    n_speeds : int
+        Spin-up speeds from 2 % to 110 % of the operating speed.
+    n_campbell : int
+        Campbell speeds from 0 to 125 % of the operating speed.
+    progress : callable or None
+        Called with a short label before each step.
+    """
+    step = progress or (lambda label: None)
+    step("assembling the model")
+    model = build_model(design)
+    speed = model.speed
+    step("natural frequencies")
+    m0 = modes(model, 0.0, 10)
+    mw = modes(model, speed, 10)
+    step("Campbell diagram")
+    top = max(speed, 1.0) * 1.25
+    camp = campbell(model, np.linspace(0.0, top, n_campbell), n_modes=12)
+    step("imbalance response over speed")
+    speeds = np.linspace(0.02, 1.10, n_speeds) * max(speed, 1.0)
+    Q1 = imbalance_loads(model)
+    q = imbalance_response(model, speeds, Q1)  # (ndof, ncases, nspeeds)
+    amp, case = _worst(q, model)
+    idx = np.arange(speeds.size)
+    q_worst = q[:, case, idx]
+    envelope = amp[:, case, idx]
+    disp, force = actuator_response(model, q_worst, speeds)
+    step("static loads and strength")
+    q_static = static_response(model, external_static_load(model) + torque_load(model))
+    q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    strength_static = strength_total = None
+    notes = []
+    buckling = None
+    if model.shaft.laminate is not None:
+        strength_static = shaft_safety_factor(model, q_static)
+        totals = [shaft_safety_factor(model, q_static, q_at_speed[:, c]) for c in range(q_at_speed.shape[1])]
+        strength_total = min(totals, key=lambda r: r.safety_factor)
+        step("torsional buckling")
+        from flexshaft.buckling import buckling_safety_factor, torsional_buckling_torque
+
+        radius = (model.shaft.outer_diameter - design.shaft.wall_thickness) / 2
+        result = torsional_buckling_torque(model.shaft.laminate, radius, design.shaft.length)
+        torque = model.power / speed if speed > 0 else 0.0
+        buckling = {
+            "critical_torque_positive_Nm": result.torque_positive,
+            "critical_torque_negative_Nm": result.torque_negative,
+            "wave_number_positive": result.n_positive,
+            "wave_number_negative": result.n_negative,
+            "theory": result.theory,
+            "torque_Nm": torque,
+            "safety_factor": buckling_safety_factor(result, torque) if torque > 0 else float("inf"),
+        }
+    else:
+        notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+    return RunResults(
+        model=model,
+        summary=model_summary(model),
+        modes_at_rest=modes_table(m0),
+        modes_at_speed=modes_table(mw),
+        mode_shapes=mw,
+        campbell=camp,
+        speeds=speeds,
+        shaft_peak=envelope.max(axis=0),
+        shaft_envelope=envelope,
+        actuator_displacement=disp,
+        actuator_force=force,
+        static_displacement=q_static,
+        strength_static=strength_static,
+        strength_total=strength_total,
+        imbalance_at_speed=q_at_speed,
+        buckling=buckling,
+        notes=notes,
+    )

@@ -1,0 +1,215 @@
+"""Forced response, loads, strength chain and Campbell: closed forms and direct-solve checks."""
+
+import numpy as np
+import pytest
+import scipy.integrate as si
+import scipy.sparse.linalg as spla
+
+from flexshaft.analyses import BandedHarmonicSolver, frequency_response, imbalance_response, modes, static_response
+from flexshaft.analyses.campbell import campbell
+from flexshaft.analyses.shaft_strength import shaft_safety_factor
+from flexshaft.assembly import build_model
+from flexshaft.assembly.loads import (
+    STANDARD_GRAVITY,
+    external_static_load,
+    imbalance_loads,
+    inertial_load,
+    point_load,
+    torque_load,
+)
+from flexshaft.assembly.sparse import restrict
+from flexshaft.design import baseline_design, loads_design, with_overrides
+from flexshaft.elements import ellipse_section
+
+E, G, RHO = 210e9, 80e9, 7850.0
+DO, DI, L = 0.10, 0.08, 1.0
+K_BRG, C_BRG, M_DISK = 2.0e5, 40.0, 10.0
+
+JEFFCOTT = f"""
+name = "Jeffcott-like rotor: heavy midspan disk, near-massless shaft, soft damped bearings"
+[materials.steel]
+kind = "isotropic"
+E = {E}
+G = {G}
+density = 1e-3
+[shaft]
+x_start = 0.0
+x_end = {L}
+outer_diameter = {DO}
+wall_thickness = {(DO - DI) / 2}
+material = "steel"
+fixed_start = ["u", "theta"]
+[[bearings]]
+name = "a"
+kind = "contact"
+x = 0.0
+stiffness = {{ v = {K_BRG}, w = {K_BRG} }}
+damping = {{ v = {C_BRG}, w = {C_BRG} }}
+[[bearings]]
+name = "b"
+kind = "contact"
+x = {L}
+stiffness = {{ v = {K_BRG}, w = {K_BRG} }}
+damping = {{ v = {C_BRG}, w = {C_BRG} }}
+[[disks]]
+name = "disk"
+x = {L / 2}
+mass = {M_DISK}
+[operating]
+speed_rpm = 0.0
+power = 0.0
+[mesh]
+shaft_elements = 8
+"""
+
+
+def jeffcott_closed_form(speed, unbalance):
+    """Disk amplitude: X = m_u e Ω² / (k_eff(Ω) − mΩ²), k_eff = [1/(2(k + iΩc)) + L³/48EI]⁻¹
+    (bearing pair in series with the massless shaft's midspan bending)."""
+    I = np.pi * (DO**4 - DI**4) / 64
+    bearings = 2 * (K_BRG + 1j * speed * C_BRG)
+    k_eff = 1 / (1 / bearings + L**3 / (48 * E * I))
+    return unbalance * speed**2 / (k_eff - M_DISK * speed**2)
+
+
+def test_jeffcott_imbalance_response_matches_closed_form():
+    """Amplitude and phase over speed to 1e-5 (the residual shaft mass, density 1e-3 kg/m³,
+    is 1e-6 of the disk), the peak at the critical speed and the phase through 90° there."""
+    model = build_model(loads_design(JEFFCOTT))
+    dm = model.dofs
+    node = dm.node_at("shaft", L / 2)
+    unbalance = 1e-4  # kg m
+    Q = np.zeros(dm.size, dtype=complex)
+    Q[dm.shaft(node, "v")] = unbalance
+    Q[dm.shaft(node, "w")] = -1j * unbalance  # force turning from +y to +z with the spin
+    I = np.pi * (DO**4 - DI**4) / 64
+    k_static = 1 / (1 / (2 * K_BRG) + L**3 / (48 * E * I))
+    wn = np.sqrt(k_static / M_DISK)
+    speeds = np.linspace(0.2 * wn, 2.5 * wn, 2001)
+    q = imbalance_response(model, speeds, Q)
+    v, w = q[dm.shaft(node, "v")], q[dm.shaft(node, "w")]
+    ref = jeffcott_closed_form(speeds, unbalance)
+    assert np.allclose(v, ref, rtol=1e-5)
+    assert np.allclose(w, -1j * ref, rtol=1e-5)  # circular forward orbit
+    peak = speeds[np.argmax(np.abs(v))]
+    assert abs(peak / wn - 1) < 0.01  # light damping (ζ ≈ 0.4 %): peak within 1 % of ω_n
+    phase = np.degrees(-np.angle(v))  # lag of the response behind the force
+    assert phase[speeds < 0.5 * wn].max() < 10 and phase[speeds > 2 * wn].min() > 170
+    assert np.interp(wn, speeds, phase) == pytest.approx(90.0, abs=3.0)
+
+
+def test_campbell_critical_speed_of_jeffcott_rotor():
+    model = build_model(loads_design(JEFFCOTT))
+    I = np.pi * (DO**4 - DI**4) / 64
+    wn = np.sqrt(1 / (1 / (2 * K_BRG) + L**3 / (48 * E * I)) / M_DISK)
+    c = campbell(model, np.linspace(0, 2 * wn, 81), n_modes=2)
+    crit = [cs.speed for cs in c.critical_speeds]
+    # the two whirl directions of the disk's translational mode cross 1x at ω_n (no gyroscopic
+    # coupling at a symmetric disk position); damped intersections within 0.1 %
+    assert len(crit) == 2 and np.allclose(crit, wn, rtol=1e-3)
+
+
+def test_banded_solver_matches_sparse_direct_solve_on_baseline():
+    model = build_model(baseline_design())
+    solver = BandedHarmonicSolver(model)
+    assert solver.bandwidth < 80  # RCM keeps the band narrow (≈ 49 for the baseline)
+    rng = np.random.default_rng(1)
+    rhs = rng.standard_normal(solver.n) + 1j * rng.standard_normal(solver.n)
+    for omega, speed in ((0.0, 0.0), (150.0, 300.0), (model.speed, model.speed)):
+        Z = (-(omega**2)) * model.M + 1j * omega * (speed * model.G + model.C) + model.K + model.controller_matrix(1j * omega)
+        direct = spla.spsolve(restrict(Z.tocsr(), model.dofs.free).tocsc(), rhs)
+        assert np.allclose(solver.solve(omega, rhs, speed), direct, rtol=1e-9, atol=1e-12 * np.abs(direct).max())
+
+
+def test_reduced_campbell_matches_direct_eigenvalues():
+    """The modal-basis fast path against the full first-order eigenproblem at three speeds."""
+    design = with_overrides(baseline_design(), {"bearings[1].kd": 500.0, "bearings[2].kd": 500.0})
+    model = build_model(design)
+    speeds = np.array([0.0, 250.0, model.speed])
+    c = campbell(model, speeds, n_modes=10)
+    for k, s in enumerate(speeds):
+        direct = modes(model, speed=s, n_modes=10).eigenvalues
+        fast = np.sort_complex(c.eigenvalues[k])
+        assert np.allclose(np.sort(fast.imag), np.sort(direct.imag), rtol=1e-5)
+        assert np.allclose(np.sort(fast.real), np.sort(direct.real), rtol=1e-3, atol=1e-6 * np.abs(direct).max())
+
+
+def test_campbell_tracks_forward_and_backward_shaft_modes():
+    model = build_model(baseline_design())
+    c = campbell(model, np.linspace(0, 1.2 * model.speed, 40), n_modes=8)
+    f = c.frequencies
+    # tracked curves are continuous: no jump larger than 3 Hz between neighbouring speeds
+    assert np.max(np.abs(np.diff(f, axis=0))) < 3.0
+    # the first shaft pair splits: one forward (rising), one backward (falling)
+    fwd = [m for m in range(8) if np.all(c.whirl[1:, m] == "forward")]
+    bwd = [m for m in range(8) if np.all(c.whirl[1:, m] == "backward")]
+    assert fwd and bwd
+    assert np.all(np.diff(f[:, fwd[0]]) > -1e-9) and np.all(np.diff(f[:, bwd[0]]) < 1e-9)
+
+
+def test_boom_tip_deflection_under_tip_load_matches_quadrature():
+    """Cantilevered tapered boom, no end mass, shaft on soft bearings (1 N/m): tip deflection
+    δ = ∫ P(L−x)²/EI_z(x) dx by quadrature; 24 elements give < 1e-4."""
+    d = with_overrides(baseline_design(), {
+        "tailboom.end_mass": None,
+        "bearings": [
+            {"name": "h1", "kind": "contact", "x": 0.79, "stiffness": {"u": 1.0, "v": 1.0, "w": 1.0}},
+            {"name": "h2", "kind": "contact", "x": 8.05, "stiffness": {"v": 1.0, "w": 1.0}},
+        ],
+        "loads.point": [],
+        "loads.load_factor": [0.0, 0.0, 0.0],
+    })
+    model = build_model(d)
+    tb = d.tailboom
+    P = 1000.0
+    q = static_response(model, point_load(model, "boom", (0.0, P, 0.0), x=tb.length))
+    sec = lambda x: ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+    ref = si.quad(lambda x: P * (tb.length - x) ** 2 / (71e9 * sec(x).I_z), 0, tb.length, epsrel=1e-12)[0]
+    assert q[model.dofs.boom(-1, "v")] == pytest.approx(ref, rel=1e-4)
+
+
+def test_load_factor_and_imbalance_totals():
+    """n g on every mass sums to n g × total mass; imbalance forces sum to e_c m_s per Ω²."""
+    model = build_model(baseline_design())
+    dm = model.dofs
+    d = model.design
+    Q = inertial_load(model, (0.0, -3.5, 0.0))
+    total_v = Q[dm.shaft(np.arange(dm.n_shaft_nodes), "v")].sum() + Q[dm.boom(np.arange(dm.n_boom_nodes), "v")].sum()
+    tb = d.tailboom
+    sec = lambda x: ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+    boom_mass = 2800.0 * si.quad(lambda x: sec(x).area, 0, tb.length)[0]
+    A = np.pi * (0.1016**2 - (0.1016 - 0.006) ** 2) / 4
+    mass = boom_mass + 1650.0 * A * (8.05 - 0.79) + 200.0
+    assert total_v == pytest.approx(-3.5 * STANDARD_GRAVITY * mass, rel=1e-9)
+    Qi = imbalance_loads(model, "mid_bay")[:, 0]
+    fy = Qi[dm.shaft(np.arange(dm.n_shaft_nodes), "v")].sum()
+    fz = Qi[dm.shaft(np.arange(dm.n_shaft_nodes), "w")].sum()
+    assert fy == pytest.approx(25e-6 * 1650.0 * A * 7.26, rel=1e-9)
+    assert fz == pytest.approx(-1j * fy, rel=1e-9)
+    assert imbalance_loads(model, "worst").shape[1] == 4  # 3 bays → 2² phase patterns
+
+
+def test_pure_torque_safety_factor_of_zero_degree_tube_is_S_J_over_T_r():
+    """A [0] laminate under torque T only: τ12 = T r/J at the outer wall, Tsai-Wu pure shear
+    gives R = S/τ12 exactly (closed form through static response, strains, CLT, Tsai-Wu)."""
+    d = with_overrides(baseline_design(), {"shaft.layup": "0", "loads.point": [], "loads.load_factor": [0.0, 0.0, 0.0]})
+    model = build_model(d)
+    T = 400.0
+    q = static_response(model, torque_load(model, T))
+    res = shaft_safety_factor(model, q)
+    Do, Di = 0.1016, 0.1016 - 0.006
+    J = np.pi * (Do**4 - Di**4) / 32
+    assert res.safety_factor == pytest.approx(20.0e6 * J / (T * Do / 2), rel=1e-9)
+    assert res.dominant_stress == "tau12"
+    # twist at the aft end: θ = −T ℓ/(G_LT J) over the shaft length (forward end held)
+    assert q[model.dofs.shaft(-1, "theta")] == pytest.approx(-T * 7.26 / (0.035e9 * J), rel=1e-9)
+
+
+def test_baseline_superposed_strength_runs_and_is_finite():
+    model = build_model(baseline_design())
+    qs = static_response(model, external_static_load(model) + torque_load(model))
+    qd = imbalance_response(model, [model.speed], imbalance_loads(model))[:, 0, 0]
+    r = shaft_safety_factor(model, qs, qd)
+    assert np.isfinite(r.safety_factor) and r.safety_factor > 0
+    assert r.along_shaft.min() == pytest.approx(r.safety_factor)
+    assert 0.79 <= r.x <= 8.05

@@ -1,0 +1,44 @@
+"""End to end: ``flexshaft run`` on the embedded baseline writes a report that renders."""
+
+import json
+
+import pytest
+from chromium_probe import chromium_or_skip, image_load_title
+from typer.testing import CliRunner
+
+from flexshaft.cli import app
+
+
+@pytest.fixture(scope="module")
+def baseline_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("run")
+    result = CliRunner().invoke(app, ["run", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    return out, result.output
+
+
+def test_run_writes_report_figures_and_numbers(baseline_run):
+    out, output = baseline_run
+    assert "report written to" in output
+    data = json.loads((out / "results.json").read_text())
+    for key in ("summary", "modes_at_rest", "modes_at_operating_speed", "critical_speeds", "imbalance",
+                "static", "strength_static_plus_imbalance", "buckling"):
+        assert key in data
+    assert len(data["modes_at_rest"]) == 10
+    assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
+    for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor"):
+        assert (out / f"{stem}.png").stat().st_size > 10_000
+        assert (out / f"{stem}.svg").is_file()
+
+
+def test_baseline_report_renders_with_every_figure(baseline_run, tmp_path):
+    out, _ = baseline_run
+    chromium = chromium_or_skip()
+    assert image_load_title(chromium, out / "report.html", tmp_path) == "IMAGES-OK:6"
+
+
+def test_run_json_option_prints_the_key_results(tmp_path):
+    result = CliRunner().invoke(app, ["run", "--out", str(tmp_path), "--json"])
+    assert result.exit_code == 0
+    data = json.loads(result.stdout)
+    assert data["summary"]["operating_speed_rpm"] == pytest.approx(4800.0)
