@@ -22,7 +22,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
-__all__ = ["Campbell", "CriticalSpeed", "campbell", "modal_basis"]
+__all__ = ["Campbell", "CriticalSpeed", "campbell", "modal_basis", "track_modes", "whirl_labels"]
 
 _WHIRL_THRESHOLD = 0.1
 
@@ -88,22 +88,60 @@ def modal_basis(model: Model, basis_size: int):
     return la.eigh(K, M, subset_by_index=[0, n - 1])
 
 
-def _solve_reduced(w2, Gr, Dr, speed, n_keep):
-    nb = w2.size
+def _solve_reduced(Kr, Dr, n_keep):
+    """Eigen-pairs of ``s² I + s Dr + Kr`` (mass-normalised modal coordinates), lowest first."""
+    nb = Kr.shape[0]
     A = np.zeros((2 * nb, 2 * nb))
     A[:nb, nb:] = np.eye(nb)
-    A[nb:, :nb] = -np.diag(w2)
-    A[nb:, nb:] = -(speed * Gr + Dr)
+    A[nb:, :nb] = -Kr
+    A[nb:, nb:] = -Dr
     lam, vec = la.eig(A)
-    keep = lam.imag > 1e-9 * np.max(np.abs(lam))
+    keep = lam.imag > 1e-6 * np.abs(lam)  # oscillatory roots only (ζ < 1 − 5e-13)
     lam, vec = lam[keep], vec[:nb, keep]
-    order = np.argsort(lam.imag)[:n_keep]
+    order = np.argsort(np.abs(lam))[:n_keep]  # by undamped natural frequency |s|
     y = vec[:, order]
     return lam[order], y / np.linalg.norm(y, axis=0)
 
 
 def _mac(a, b):
     return np.abs(a.conj().T @ b) ** 2
+
+
+def track_modes(solve, speeds, n_modes: int):
+    """Follow ``n_modes`` eigenvalue curves over ``speeds``.
+
+    ``solve(speed) -> (eigenvalues, vectors)`` returns more candidates than ``n_modes``, sorted
+    by frequency, with unit-norm vectors in one fixed (modal) coordinate system. The first
+    speed fixes the identities (lowest ``n_modes``); later speeds are matched by maximum MAC
+    with a small frequency-distance penalty (Hungarian assignment).
+
+    Returns ``(eigenvalues (n_speeds, n_modes), [vectors per speed])``.
+    """
+    eig = np.zeros((len(speeds), n_modes), dtype=complex)
+    vectors = []
+    prev = None
+    for k, speed in enumerate(speeds):
+        lam, y = solve(speed)
+        if prev is None:
+            idx = np.arange(n_modes)
+        else:
+            lam_prev, y_prev = prev
+            scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
+            cost = 1 - _mac(y_prev, y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
+            _, idx = linear_sum_assignment(cost)
+        eig[k] = lam[idx]
+        prev = (lam[idx], y[:, idx])
+        vectors.append(y[:, idx])
+    return eig, vectors
+
+
+def whirl_labels(model: Model, Phi: np.ndarray, vectors, speeds):
+    """Whirl ratios and labels of tracked modes from their modal coordinates."""
+    ratios = np.array([whirl_ratio(model.dofs, model.dofs.expand(Phi @ y)) for y in vectors])
+    if len(speeds) > 1 and speeds[0] == 0.0:
+        ratios[0] = ratios[1]  # at rest the pairs are degenerate: label by their continuation
+    labels = np.where(ratios > _WHIRL_THRESHOLD, "forward", np.where(ratios < -_WHIRL_THRESHOLD, "backward", "planar"))
+    return ratios, labels
 
 
 @single_blas_thread
@@ -133,28 +171,13 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
     Gr = Phi.T @ (restrict(model.G, free) @ Phi)
     Dr = Phi.T @ (restrict(model.C + model.Kd, free) @ Phi) if damped else np.zeros_like(Gr)
     n_extra = min(n_modes + 6, w2.size)
-    eig = np.zeros((speeds.size, n_modes), dtype=complex)
-    shapes_y = []
-    prev = None
-    for k, speed in enumerate(speeds):
-        lam, y = _solve_reduced(w2, Gr, Dr, speed, n_extra)
-        if prev is None:
-            idx = np.arange(n_modes)
-        else:
-            lam_prev, y_prev = prev
-            # cost: 1 − MAC, with a small frequency-distance term to break ties of degenerate pairs
-            scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
-            cost = 1 - _mac(y_prev, y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
-            _, idx = linear_sum_assignment(cost)
-        eig[k] = lam[idx]
-        prev = (lam[idx], y[:, idx])
-        shapes_y.append(y[:, idx])
-    # whirl labels from the physical shapes of the shaft nodes
-    ratios = np.array([whirl_ratio(model.dofs, model.dofs.expand(Phi @ y)) for y in shapes_y])
-    if speeds.size > 1 and speeds[0] == 0.0:
-        ratios[0] = ratios[1]  # at rest the pairs are degenerate: label by their continuation
-    whirl = np.where(ratios > _WHIRL_THRESHOLD, "forward", np.where(ratios < -_WHIRL_THRESHOLD, "backward", "planar"))
+    eig, vectors = track_modes(lambda sp: _solve_reduced(np.diag(w2), speed_matrix(Gr, Dr, sp), n_extra), speeds, n_modes)
+    ratios, whirl = whirl_labels(model, Phi, vectors, speeds)
     return Campbell(speeds, eig, whirl, ratios, _critical_speeds(speeds, eig, whirl, harmonics))
+
+
+def speed_matrix(Gr, Dr, speed):
+    return speed * Gr + Dr
 
 
 def _critical_speeds(speeds, eig, whirl, harmonics):

@@ -146,9 +146,9 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
         A[n:, :n] = -la.cho_solve(cho, K)
         A[n:, n:] = -la.cho_solve(cho, D)
         lam, vec = la.eig(A)
-        keep = lam.imag > 1e-9 * np.max(np.abs(lam))
+        keep = lam.imag > 1e-6 * np.abs(lam)  # oscillatory roots only (ζ < 1 − 5e-13)
         lam, vec = lam[keep], vec[:n, keep]
-        order = np.argsort(np.abs(lam.imag))[:n_modes]
+        order = np.argsort(np.abs(lam))[:n_modes]  # by undamped natural frequency |s|
         s, phi = lam[order], vec[:, order]
     shapes = _normalise(dofs, dofs.expand(phi))
     r = whirl_ratio(dofs, shapes)

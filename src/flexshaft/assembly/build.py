@@ -144,6 +144,8 @@ def build_model(design) -> Model:
     sdofs = dm.element_dofs("shaft")
     M = scatter(Ms, sdofs, n)
     K = scatter(Ks, sdofs, n)
+    shaft_loss = scatter(Ks.imag, sdofs, n)
+    boom_loss = sp.csr_matrix((n, n))
     G = scatter(Gs, sdofs, n)
 
     if design.tailboom is not None:
@@ -159,6 +161,7 @@ def build_model(design) -> Model:
         bdofs = dm.element_dofs("boom")
         M = M + scatter(Mb, bdofs, n)
         K = K + scatter(Kb, bdofs, n)
+        boom_loss = scatter(Kb.imag, bdofs, n)
         if tb.end_mass is not None:
             em = tb.end_mass
             tip = np.array([dm.boom(-1, f) for f in BOOM_FIELDS])
@@ -200,4 +203,6 @@ def build_model(design) -> Model:
         speed=float(design.operating.speed_rad_s),
         power=float(design.operating.power),
         design=design,
+        shaft_loss_stiffness=shaft_loss.tocsr(),
+        boom_loss_stiffness=boom_loss.tocsr(),
     )

@@ -132,6 +132,8 @@ class Model:
     speed: float
     power: float
     design: Any = None
+    shaft_loss_stiffness: sp.csr_matrix | None = None  # Im(K) of the shaft elements (rotating material)
+    boom_loss_stiffness: sp.csr_matrix | None = None  # Im(K) of the boom elements (fixed frame)
 
     @property
     def all_pd(self) -> bool:
