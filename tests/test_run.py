@@ -22,11 +22,15 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     assert "report written to" in output
     data = json.loads((out / "results.json").read_text())
     for key in ("summary", "modes_at_rest", "modes_at_operating_speed", "critical_speeds", "imbalance",
-                "static", "strength_static_plus_imbalance", "buckling"):
+                "static", "strength_static_plus_imbalance", "buckling", "stability"):
         assert key in data
     assert len(data["modes_at_rest"]) == 10
     assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
-    for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor"):
+    thesis = data["stability"]["thesis_shafts"]
+    # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
+    assert thesis["(45/-45/0/0)s FMC"]["viscous"] > thesis["(45/-45)s FMC"]["viscous"]
+    for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor",
+                 "stability_real_parts", "stability_map"):
         assert (out / f"{stem}.png").stat().st_size > 10_000
         assert (out / f"{stem}.svg").is_file()
 
@@ -34,7 +38,16 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
 def test_baseline_report_renders_with_every_figure(baseline_run, tmp_path):
     out, _ = baseline_run
     chromium = chromium_or_skip()
-    assert image_load_title(chromium, out / "report.html", tmp_path) == "IMAGES-OK:6"
+    n_figures = len(list(out.glob("*.png")))
+    assert n_figures >= 8  # every figure written is embedded in the page and must decode
+    assert image_load_title(chromium, out / "report.html", tmp_path) == f"IMAGES-OK:{n_figures}"
+
+
+def test_stability_command_compares_the_thesis_shafts():
+    result = CliRunner().invoke(app, ["stability", "--compare-thesis", "--n-speeds", "25", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert set(data["shafts"]) == {"design", "aluminium 6061-T6", "(45/-45)s FMC", "(45/-45/0/0)s FMC"}
 
 
 def test_run_json_option_prints_the_key_results(tmp_path):

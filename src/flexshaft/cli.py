@@ -100,6 +100,59 @@ def modes_cmd(
     _print_modes(Console(), f"{d.name}\nmodes at {speed * 60 / (2 * np.pi):.0f} rpm", rows)
 
 
+@app.command("stability")
+def stability_cmd(
+    design: Optional[Path] = DesignArg,
+    max_rpm: Optional[float] = typer.Option(None, "--max-rpm", help="Highest speed [rpm]; default 1.5 × operating."),
+    n_speeds: int = typer.Option(61, "--n-speeds", min=2, max=2000, help="Number of speeds."),
+    damping_model: str = typer.Option("viscous", "--model", help="viscous | hysteretic"),
+    reference_hz: Optional[float] = typer.Option(None, "--reference-hz", help="ω_ref of the viscous model [Hz]; default: first shaft mode."),
+    compare_thesis: bool = typer.Option(False, "--compare-thesis", help="Also the thesis's aluminium, (45/-45)s and (45/-45/0/0)s shafts."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+) -> None:
+    """Whirl stability with internal damping: onset speed of instability and the unstable mode."""
+    import numpy as np
+
+    from flexshaft.analyses.stability import stability
+    from flexshaft.assembly import build_model
+    from flexshaft.design import DesignError
+
+    _finite("--max-rpm", max_rpm, 1e-9)
+    _finite("--reference-hz", reference_hz, 1e-9)
+    if damping_model not in ("viscous", "hysteretic"):
+        _fail(f"--model: must be 'viscous' or 'hysteretic' (got {damping_model!r})")
+    d = _load(design)
+    model = build_model(d)
+    top = (max_rpm * 2 * np.pi / 60) if max_rpm else max(model.speed, 1.0) * 1.5
+    speeds = np.linspace(0.0, top, n_speeds)
+    ref = reference_hz * 2 * np.pi if reference_hz else None
+    designs = {"design": d}
+    if compare_thesis:
+        from flexshaft.studies.whirl import thesis_shaft_designs
+
+        try:
+            designs.update(thesis_shaft_designs(d))
+        except DesignError as exc:
+            _fail(f"--compare-thesis needs an isotropic material 'al6061_t6' and a lamina shaft:\n{exc}")
+    rows = {}
+    for label, dd in designs.items():
+        res = stability(build_model(dd) if label != "design" else model, speeds, 10, damping_model, ref)
+        onset = None if res.onset_speed is None else res.onset_speed * 60 / (2 * np.pi)
+        rows[label] = {
+            "onset_speed_rpm": onset,
+            "unstable_mode_whirl": None if res.unstable_mode is None else str(res.whirl[-1, res.unstable_mode]),
+            "min_damping_ratio": float(res.stability_margin.min()),
+        }
+    out = {"damping_model": damping_model, "analysed_to_rpm": top * 60 / (2 * np.pi), "shafts": rows}
+    if as_json:
+        typer.echo(json.dumps(out, indent=2))
+        return
+    for label, r in rows.items():
+        onset = f"unstable above {r['onset_speed_rpm']:.0f} rpm ({r['unstable_mode_whirl']} whirl)" if r["onset_speed_rpm"] is not None \
+            else f"stable to {out['analysed_to_rpm']:.0f} rpm"
+        typer.echo(f"{label}: {onset}")
+
+
 @app.command()
 def run(
     design: Optional[Path] = DesignArg,

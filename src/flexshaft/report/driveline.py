@@ -77,6 +77,7 @@ def results_json(res) -> dict:
         "strength_static": _strength_dict(res.strength_static),
         "strength_static_plus_imbalance": _strength_dict(res.strength_total),
         "buckling": res.buckling,
+        "stability": _stability_dict(res),
         "notes": res.notes,
     }
 
@@ -205,6 +206,73 @@ def write_run_report(res, folder: str | Path, generated: str | None = None) -> P
                                            "σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]"], rows)],
             figures=[FigureRef(p_sf["png"], "Minimum Tsai-Wu safety factor along the shaft")],
         ))
+    if res.stability is not None:
+        sections.append(_stability_section(res, folder, op_rpm))
     if res.notes:
         sections.append(Section("Notes", paragraphs=list(res.notes)))
     return write_report(folder, f"flexshaft report: {design.name}", sections, design_name=design.name, generated=generated)
+
+
+def _rpm_or_none(speed):
+    return None if speed is None or not np.isfinite(speed) else float(speed * _RPM)
+
+
+def _stability_dict(res) -> dict | None:
+    if res.stability is None:
+        return None
+    st = res.stability
+    out = {
+        "damping_model": st.damping_model,
+        "onset_speed_rpm": _rpm_or_none(st.onset_speed),
+        "analysed_to_rpm": float(st.speeds[-1] * _RPM),
+        "unstable_mode_whirl": None if st.unstable_mode is None else str(st.whirl[-1, st.unstable_mode]),
+        "thesis_shafts": {
+            label: {m: _rpm_or_none(r.onset_speed) for m, r in models.items()} for label, models in res.shaft_comparison.items()
+        },
+    }
+    if res.gain_map is not None:
+        g = res.gain_map
+        out["gain_map"] = {"kp_N_per_m": g.kp.tolist(), "kd_N_s_per_m": g.kd.tolist(),
+                           "onset_speed_rpm": [[_rpm_or_none(v) for v in row] for row in g.onset_speed],
+                           "min_damping_ratio_at_operating": g.margin_at_operating.tolist()}
+    return out
+
+
+def _onset_text(speed, top):
+    return f"stable to {top * _RPM:.0f}" if speed is None or not np.isfinite(speed) else f"{speed * _RPM:.0f}"
+
+
+def _stability_section(res, folder, op_rpm) -> Section:
+    from flexshaft.report.stability_figures import real_parts_figure, stability_map_figure
+
+    st = res.stability
+    top = st.speeds[-1]
+    figs = []
+    curves = {"this design": st.real_parts}
+    curves.update({label: models["viscous"].real_parts for label, models in res.shaft_comparison.items()})
+    p = save_figure(real_parts_figure(st.speeds * _RPM, curves, op_rpm), folder, "stability_real_parts")
+    figs.append(FigureRef(p["png"], "Real parts of the eigenvalues against speed (viscous-equivalent internal damping; "
+                                    "thesis figures 4.2-4.4 for the three reference shafts)"))
+    tables = []
+    rows = [["this design", _onset_text(st.onset_speed, top), "—"]]
+    rows += [[label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]
+             for label, m in res.shaft_comparison.items()]
+    tables.append(Table("Onset speed of whirl instability [rpm]", ["shaft", "viscous equivalent", "exact hysteretic"], rows))
+    if res.gain_map is not None:
+        g = res.gain_map
+        onset = {f"K_p = {kp:.3g} N/m": g.onset_speed[i] * _RPM for i, kp in enumerate(g.kp)}
+        p = save_figure(stability_map_figure(g.kd, onset, op_rpm, g.max_speed * _RPM), folder, "stability_map")
+        figs.append(FigureRef(p["png"], "Onset speed against the actuator gains"))
+        tables.append(Table("Smallest damping ratio at the operating speed", ["K_p [N/m]", *[f"K_d = {kd:g}" for kd in g.kd]],
+                            [[kp, *g.margin_at_operating[i]] for i, kp in enumerate(g.kp)]))
+    return Section(
+        "Whirl stability",
+        paragraphs=["The composite's hysteretic loss acts in the rotating frame: as an equivalent viscous damping "
+                    "C_i = Im(K_shaft)/ω_ref it adds C_i and the circulatory stiffness Ω C_i S in the fixed frame "
+                    "(Zorzi & Nelson 1977), destabilising forward whirl above its natural frequency unless external "
+                    "damping (actuator K_d, boom structural damping) outweighs it. ω_ref is the first shaft natural "
+                    "frequency for the viscous model; the exact hysteretic model iterates each mode to its own "
+                    "relative whirl frequency |ω − Ω|."],
+        tables=tables,
+        figures=figs,
+    )

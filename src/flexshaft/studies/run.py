@@ -42,6 +42,9 @@ class RunResults:
     strength_total: StrengthResult | None
     imbalance_at_speed: np.ndarray
     buckling: object = None
+    stability: object = None  # StabilityResult of the design (viscous equivalent)
+    shaft_comparison: dict = field(default_factory=dict)  # label -> {model: StabilityResult}
+    gain_map: object = None  # StabilityMap over (K_p, K_d)
     notes: list = field(default_factory=list)
 
 
@@ -126,6 +129,8 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         }
     else:
         notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+    step("whirl stability")
+    stab, comparison, gmap = _whirl(design, model, notes)
     return RunResults(
         model=model,
         summary=model_summary(model),
@@ -143,5 +148,31 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         strength_total=strength_total,
         imbalance_at_speed=q_at_speed,
         buckling=buckling,
+        stability=stab,
+        shaft_comparison=comparison,
+        gain_map=gmap,
         notes=notes,
     )
+
+
+def _whirl(design, model: Model, notes: list):
+    """Stability of the design, the thesis's three-shaft comparison and the (K_p, K_d) map."""
+    from flexshaft.analyses.stability import stability
+    from flexshaft.design import DesignError
+    from flexshaft.studies.whirl import compare_shafts, gain_stability_map
+
+    top = max(model.speed, 1.0) * 1.5
+    speeds = np.linspace(0.0, top, 61)
+    stab = stability(model, speeds, n_modes=10)
+    comparison = {}
+    try:
+        viscous = compare_shafts(design, speeds, "viscous", n_modes=8)
+        hysteretic = compare_shafts(design, np.linspace(0.0, top, 31), "hysteretic", n_modes=8)
+        comparison = {k: {"viscous": viscous[k], "hysteretic": hysteretic[k]} for k in viscous}
+    except (DesignError, ValueError) as exc:
+        notes.append(f"thesis shaft comparison skipped: {str(exc).splitlines()[0]}")
+    gmap = None
+    if model.actuators and model.all_pd:
+        kp0 = model.actuators[0].controller.kp
+        gmap = gain_stability_map(design, [kp0 / 30, kp0 / 5, kp0], [0.0, 300.0, 1000.0, 3000.0], speeds, n_modes=8)
+    return stab, comparison, gmap

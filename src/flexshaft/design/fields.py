@@ -1,0 +1,154 @@
+"""Building blocks shared by the design-file models: field types, messages, the problem collector.
+
+Floats are strict (no ``"3"`` -> 3.0, no ``true`` -> 1.0; integers are accepted) and finite
+(no nan, inf). Every model of the schema derives from :class:`FrozenModel` (unknown keys are
+refused, instances are immutable). Constraints involving several fields are checked in
+``model_validator(mode="after")`` hooks that collect every problem in a :class:`Problems` and
+raise them at once as one pydantic error of type :data:`PROBLEMS_ERROR_TYPE`, whose context
+carries the (sub-path, message) pairs that :mod:`flexshaft.design.io` turns into field paths.
+
+This module is internal to :mod:`flexshaft.design`; the public names are re-exported by
+:mod:`flexshaft.design.schema`.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Sequence
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field
+from pydantic_core import PydanticCustomError
+
+__all__ = [
+    "BearingDirection",
+    "Coefficients",
+    "DofName",
+    "ElementCount",
+    "FieldPath",
+    "Finite",
+    "FrozenModel",
+    "ImbalancePlacement",
+    "LAYUP_ERROR_TYPE",
+    "LossFactor",
+    "Name",
+    "NonNegative",
+    "NonNegativeVector3",
+    "PROBLEMS_ERROR_TYPE",
+    "Positive",
+    "Problems",
+    "SemiAxes",
+    "Vector3",
+    "ZERO3",
+    "check_unique",
+    "format_number",
+    "format_value",
+]
+
+# ------------------------------------------------------------------------------------------------
+# Field types
+
+Finite = Annotated[float, Field(strict=True, allow_inf_nan=False)]
+Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0)]
+NonNegative = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0)]
+LossFactor = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0)]
+Vector3 = tuple[Finite, Finite, Finite]
+NonNegativeVector3 = tuple[NonNegative, NonNegative, NonNegative]
+SemiAxes = tuple[Positive, Positive]
+Name = Annotated[str, Field(strict=True, min_length=1)]
+ElementCount = Annotated[int, Field(strict=True, ge=1, le=2000)]
+Coefficients = Annotated[tuple[Finite, ...], Field(min_length=1, max_length=21)]
+
+#: Degree-of-freedom names of a shaft node, in the order of DESIGN.md §1.
+DofName = Literal["u", "v", "w", "theta", "beta", "gamma"]
+#: Relative-displacement directions of a bearing (DESIGN.md §2.2.3); no twist (theta).
+BearingDirection = Literal["u", "v", "w", "beta", "gamma"]
+#: Where the imbalance force of each bay is applied (DESIGN.md §2.4).
+ImbalancePlacement = Literal["mid_bay", "distributed", "worst"]
+
+#: pydantic error type carrying several (sub-path, message) problems from one model validator.
+PROBLEMS_ERROR_TYPE = "flexshaft_problems"
+#: pydantic error type of an unparsable layup string.
+LAYUP_ERROR_TYPE = "flexshaft_layup"
+
+#: Path of a field below the model that reports it, e.g. ``("bearings", 2, "x")``.
+FieldPath = tuple[Union[str, int], ...]
+#: Default of optional 3-vectors (moments, load factors, inertias).
+ZERO3 = (0.0, 0.0, 0.0)
+
+
+class FrozenModel(BaseModel):
+    """Base of every design-file model: unknown keys are refused, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+# ------------------------------------------------------------------------------------------------
+# Messages
+
+
+def format_value(value: Any, limit: int = 60) -> str:
+    """Render a user value TOML-like and short, for error messages."""
+    if value is None:
+        text = "nothing"
+    elif isinstance(value, bool):
+        text = "true" if value else "false"
+    elif isinstance(value, float):
+        text = repr(value)
+    elif isinstance(value, int):
+        digits = str(abs(value)) if abs(value) < 10**40 else ""
+        text = str(value) if digits else f"an integer with {len(str(abs(value)))} digits"
+    elif isinstance(value, str):
+        shown = value if len(value) <= limit else value[: limit - 3] + "..."
+        text = '"' + shown.encode("unicode_escape").decode("ascii").replace('"', '\\"') + '"'
+    elif isinstance(value, (list, tuple)):
+        parts: list[str] = []
+        length = 2
+        for item in value:
+            part = format_value(item, limit=20)
+            if length + len(part) > limit:
+                parts.append("...")
+                break
+            parts.append(part)
+            length += len(part) + 2
+        text = "[" + ", ".join(parts) + "]"
+    elif isinstance(value, dict):
+        keys = ", ".join(format_value(str(k), limit=20) for k in list(value)[:6])
+        more = ", ..." if len(value) > 6 else ""
+        text = "a table {" + keys + more + "}" if value else "an empty table"
+    else:
+        text = f"{type(value).__name__} {value!s}"
+    return text if len(text) <= limit + 40 else text[: limit + 37] + "..."
+
+
+def format_number(value: float) -> str:
+    """Short rendering of a computed number (a bound or a limit) for error messages."""
+    return f"{value:.6g}"
+
+
+class Problems:
+    """Collects (sub-path, message) pairs and raises them as one pydantic error."""
+
+    def __init__(self) -> None:
+        self.items: list[tuple[FieldPath, str]] = []
+
+    def add(self, path: FieldPath, message: str) -> None:
+        self.items.append((path, message))
+
+    def raise_if_any(self) -> None:
+        if self.items:
+            summary = "; ".join(
+                ".".join(str(part) for part in path) + ": " + message for path, message in self.items
+            )
+            raise PydanticCustomError(
+                PROBLEMS_ERROR_TYPE, "{summary}", {"summary": summary, "problems": tuple(self.items)}
+            )
+
+
+def check_unique(problems: Problems, prefix: FieldPath, names: Sequence[str]) -> None:
+    """Report every repeated name after its first occurrence, at ``prefix + (index, "name")``."""
+    counts = Counter(names)
+    for index, name in enumerate(names):
+        if counts[name] > 1 and names.index(name) != index:
+            message = f"duplicate name (got {format_value(name)}; names must be unique)"
+            problems.add(prefix + (index, "name"), message)

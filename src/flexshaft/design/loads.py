@@ -1,0 +1,119 @@
+"""Operating point and static loads of the design file: ``[operating]`` and ``[loads]``.
+
+Speeds in [rad/s] inside; ``speed_rpm`` [rev/min] is converted by :attr:`Operating.speed_rad_s`.
+Power [W], torque [N m], eccentricity [m], forces [N], moments [N m], line loads [N/m] and load
+factors [g].
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import model_validator
+
+from flexshaft.design.fields import (
+    ZERO3,
+    Finite,
+    FrozenModel,
+    ImbalancePlacement,
+    Name,
+    NonNegative,
+    Problems,
+    Vector3,
+    format_number,
+    format_value,
+)
+from flexshaft.design.units import rpm_to_rad_s
+
+__all__ = ["LineLoad", "Loads", "Operating", "PointLoad"]
+
+
+class Operating(FrozenModel):
+    """Operating point: exactly one of ``speed_rpm`` [rev/min] or ``speed`` [rad/s]; power [W]."""
+
+    speed_rpm: NonNegative | None = None
+    speed: NonNegative | None = None
+    power: NonNegative
+
+    @model_validator(mode="after")
+    def _check(self) -> Operating:
+        problems = Problems()
+        if (self.speed_rpm is None) == (self.speed is None):
+            given = "both are given" if self.speed_rpm is not None else "neither is given"
+            problems.add(
+                ("speed_rpm",),
+                f"give exactly one of speed_rpm [rev/min] or speed [rad/s] ({given}; "
+                f"got speed_rpm = {format_value(self.speed_rpm)}, speed = {format_value(self.speed)})",
+            )
+        elif self.speed_rad_s == 0.0 and self.power > 0.0:
+            problems.add(
+                ("power",),
+                f"must be 0 when the speed is 0, the torque P/Ω would be infinite "
+                f"(got {format_value(self.power)})",
+            )
+        problems.raise_if_any()
+        return self
+
+    @property
+    def speed_rad_s(self) -> float:
+        """Shaft speed Ω [rad/s]."""
+        if self.speed is not None:
+            return self.speed
+        assert self.speed_rpm is not None
+        return rpm_to_rad_s(self.speed_rpm)
+
+    @property
+    def torque(self) -> float:
+        """Transmitted torque T = P/Ω [N m] (0 at standstill)."""
+        return 0.0 if self.speed_rad_s == 0.0 else self.power / self.speed_rad_s
+
+
+class PointLoad(FrozenModel):
+    """Static point force [N] and moment [N m] (x, y, z) on the end mass, boom or shaft at x [m]."""
+
+    name: Name
+    on: Literal["end_mass", "boom", "shaft"]
+    x: Finite | None = None
+    force: Vector3
+    moment: Vector3 = ZERO3
+
+    @model_validator(mode="after")
+    def _check(self) -> PointLoad:
+        problems = Problems()
+        if self.on == "end_mass" and self.x is not None:
+            problems.add(("x",), f'must be omitted for on = "end_mass" (got {format_value(self.x)})')
+        elif self.on != "end_mass" and self.x is None:
+            problems.add(("x",), f'required key is missing (the station [m] on the {self.on})')
+        problems.raise_if_any()
+        return self
+
+
+class LineLoad(FrozenModel):
+    """Uniform static line load [N/m] (x, y, z) on the boom or shaft between x_start and x_end [m]."""
+
+    name: Name
+    on: Literal["boom", "shaft"]
+    x_start: Finite
+    x_end: Finite
+    force_per_length: Vector3
+
+    @model_validator(mode="after")
+    def _check(self) -> LineLoad:
+        problems = Problems()
+        if not self.x_start < self.x_end:
+            problems.add(
+                ("x_end",),
+                f"must be greater than x_start = {format_number(self.x_start)} m (got {format_value(self.x_end)})",
+            )
+        problems.raise_if_any()
+        return self
+
+
+class Loads(FrozenModel):
+    """Imbalance (eccentricity [m]), manoeuvre load factor [g] and static external loads."""
+
+    eccentricity: NonNegative = 0.0
+    imbalance_placement: ImbalancePlacement = "mid_bay"
+    load_factor: Vector3 = ZERO3
+    point: tuple[PointLoad, ...] = ()
+    line: tuple[LineLoad, ...] = ()

@@ -1,0 +1,71 @@
+"""Whirl-stability studies: the thesis's three shafts (figures 4.2-4.4) and margin maps.
+
+Thesis chapter 4 compares an aluminium shaft, a (45/−45)s FMC shaft and a (45/−45/0/0)s FMC
+shaft on the same driveline; its abstract says adding 0° plies improves stability.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from flexshaft.analyses.stability import StabilityResult, stability
+from flexshaft.assembly import build_model
+from flexshaft.design import with_overrides
+
+__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "StabilityMap", "gain_stability_map"]
+
+#: (label, overrides) of the thesis figure 4.2-4.4 shafts; the wall and D_o stay the design's.
+THESIS_SHAFTS = (
+    ("aluminium 6061-T6", {"shaft.material": "al6061_t6", "shaft.layup": None}),
+    ("(45/-45)s FMC", {"shaft.layup": "(45/-45)s"}),
+    ("(45/-45/0/0)s FMC", {"shaft.layup": "(45/-45/0/0)s"}),
+)
+
+
+def thesis_shaft_designs(design) -> dict:
+    """The three thesis shafts on ``design``'s driveline. The aluminium shaft needs an
+    isotropic material named ``al6061_t6`` and the FMC shafts a lamina shaft material."""
+    return {label: with_overrides(design, ov) for label, ov in THESIS_SHAFTS}
+
+
+def compare_shafts(design, speeds, damping_model: str = "viscous", n_modes: int = 10,
+                   reference_frequency: float | None = None) -> dict[str, StabilityResult]:
+    """Stability of each thesis shaft over ``speeds`` [rad/s]."""
+    return {
+        label: stability(build_model(d), speeds, n_modes, damping_model, reference_frequency)
+        for label, d in thesis_shaft_designs(design).items()
+    }
+
+
+@dataclass(frozen=True)
+class StabilityMap:
+    """Onset speed [rad/s] (NaN: stable up to ``max_speed``) and the smallest damping ratio at
+    the operating speed over a grid of actuator gains, arrays (n_kp, n_kd)."""
+
+    kp: np.ndarray
+    kd: np.ndarray
+    onset_speed: np.ndarray
+    margin_at_operating: np.ndarray
+    max_speed: float
+
+
+def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str = "viscous", n_modes: int = 10,
+                       reference_frequency: float | None = None) -> StabilityMap:
+    """Onset speed over (K_p, K_d) applied to every active bearing (same values on each)."""
+    speeds = np.asarray(speeds, dtype=float)
+    active = [i for i, b in enumerate(design.bearings) if b.kind == "active"]
+    if not active:
+        raise ValueError("the design has no active bearing")
+    onset = np.full((len(kp_values), len(kd_values)), np.nan)
+    margin = np.full_like(onset, np.nan)
+    for i, kp in enumerate(kp_values):
+        for j, kd in enumerate(kd_values):
+            ov = {f"bearings[{a}].{k}": float(v) for a in active for k, v in (("kp", kp), ("kd", kd))}
+            model = build_model(with_overrides(design, ov))
+            res = stability(model, speeds, n_modes, damping_model, reference_frequency)
+            if res.onset_speed is not None:
+                onset[i, j] = res.onset_speed
+            margin[i, j] = res.stability_margin[int(np.argmin(np.abs(speeds - model.speed)))]
+    return StabilityMap(np.asarray(kp_values, float), np.asarray(kd_values, float), onset, margin, float(speeds[-1]))
