@@ -213,3 +213,16 @@ def test_baseline_superposed_strength_runs_and_is_finite():
     assert np.isfinite(r.safety_factor) and r.safety_factor > 0
     assert r.along_shaft.min() == pytest.approx(r.safety_factor)
     assert 0.79 <= r.x <= 8.05
+
+
+def test_bearing_reactions_balance_a_static_load():
+    """Steel shaft on two end bearings, midspan force P: each bearing carries P/2 (statics)."""
+    from flexshaft.analyses.response import bearing_forces
+    from test_model import steel_shaft
+
+    model = build_model(steel_shaft(10))
+    P = 800.0
+    q = static_response(model, point_load(model, "shaft", (0.0, P, 0.0), x=1.0))
+    forces = bearing_forces(model, q)
+    assert forces["left"][1].real == pytest.approx(P / 2, rel=1e-9)
+    assert forces["right"][1].real == pytest.approx(P / 2, rel=1e-9)

@@ -27,6 +27,24 @@ __all__ = ["results_json", "write_run_report"]
 _RPM = 60 / (2 * np.pi)
 
 
+def _bearing_dict(res) -> dict:
+    """Static lateral and axial force and the imbalance force amplitude at the operating speed."""
+    from flexshaft.analyses.response import bearing_forces, orbit_amplitude
+
+    model = res.model
+    static = bearing_forces(model, res.static_displacement)
+    dynamic = bearing_forces(model, res.imbalance_at_speed, model.speed)
+    out = {}
+    for name, f in static.items():
+        d = dynamic[name]
+        out[name] = {
+            "static_lateral_N": float(np.hypot(f[1].real, f[2].real)),
+            "static_axial_N": float(abs(f[0].real)),
+            "imbalance_lateral_amplitude_N": float(np.max(orbit_amplitude(d[1], d[2]))),
+        }
+    return out
+
+
 def _strength_dict(r) -> dict | None:
     if r is None:
         return None
@@ -74,6 +92,7 @@ def results_json(res) -> dict:
             "boom_tip_w_m": float(qs[dm.boom(-1, "w")]) if dm.n_boom_nodes else None,
             "max_shaft_deflection_m": float(np.max(np.hypot(dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w")))),
         },
+        "bearings": _bearing_dict(res),
         "strength_static": _strength_dict(res.strength_static),
         "strength_static_plus_imbalance": _strength_dict(res.strength_total),
         "buckling": res.buckling,
