@@ -28,13 +28,17 @@ def _fail(message: str) -> None:
     raise typer.Exit(code=2)
 
 
-def _finite(name: str, value: float | None, minimum: float | None = None) -> float | None:
+def _finite(
+    name: str, value: float | None, minimum: float | None = None, maximum: float | None = None
+) -> float | None:
     if value is None:
         return None
     if not math.isfinite(value):
         _fail(f"{name}: must be a finite number (got {value})")
     if minimum is not None and value < minimum:
         _fail(f"{name}: must be >= {minimum:g} (got {value:g})")
+    if maximum is not None and value > maximum:
+        _fail(f"{name}: must be <= {maximum:g} (got {value:g})")
     return value
 
 
@@ -85,9 +89,10 @@ def modes_cmd(
     import numpy as np
 
     from flexshaft.assembly import build_model
+    from flexshaft.design.schema import MAX_SPEED_RPM
     from flexshaft.summary import modes_at
 
-    _finite("--speed-rpm", speed_rpm, 0.0)
+    _finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM)
     d = _load(design)
     model = build_model(d)
     speed = model.speed if speed_rpm is None else speed_rpm * 2 * np.pi / 60
@@ -117,7 +122,9 @@ def stability_cmd(
     from flexshaft.assembly import build_model
     from flexshaft.design import DesignError
 
-    _finite("--max-rpm", max_rpm, 1e-9)
+    from flexshaft.design.schema import MAX_SPEED_RPM
+
+    _finite("--max-rpm", max_rpm, 1e-9, MAX_SPEED_RPM)
     _finite("--reference-hz", reference_hz, 1e-9)
     if damping_model not in ("viscous", "hysteretic"):
         _fail(f"--model: must be 'viscous' or 'hysteretic' (got {damping_model!r})")

@@ -308,7 +308,7 @@ class _LayupParser:
         text = self.take()
         value = float(text)
         if not value <= 90.0:  # also refuses inf from a huge exponent
-            raise self.error(f"ply angle {signs[0] * value:g} deg is outside [-90, 90] deg")
+            raise self.error(f"ply angle {'-' if signs[0] < 0 else ''}{text} deg is outside [-90, 90] deg")
         if self.peek("deg"):
             self.take()
         angles = [sign * value + 0.0 for sign in signs]  # + 0.0 turns -0.0 into 0.0
@@ -345,7 +345,7 @@ def parse_layup(text: str) -> tuple[float, ...]:
     ------
     ValueError
         On malformed text, an angle outside [-90, 90] deg, a repeat count outside [1, 100] or
-        more than 1000 plies; the message starts with the reason and lists what is allowed.
+        more than 1000 plies. The message reads ``"<reason>; allowed: <the accepted forms>"``.
     """
     if not isinstance(text, str):
         raise ValueError(f"layup must be a string, got {type(text).__name__}; {_ALLOWED}")

@@ -67,8 +67,10 @@ class Shaft(FrozenModel):
         if layup is not None:
             try:
                 parse_layup(layup)
-            except ValueError as error:  # the message starts with the reason, then what is allowed
-                raise PydanticCustomError(LAYUP_ERROR_TYPE, "{reason}", {"reason": str(error)}) from None
+            except ValueError as error:  # "<reason>; allowed: <forms>"
+                reason, _, allowed = str(error).partition("; allowed: ")
+                context = {"reason": reason, "allowed": allowed}
+                raise PydanticCustomError(LAYUP_ERROR_TYPE, "{reason}", context) from None
         return layup
 
     @model_validator(mode="after")

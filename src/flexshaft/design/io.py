@@ -484,7 +484,8 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
             return Problem(tag_path, f"required key is missing (allowed: {tags})")
         return Problem(tag_path, f"unknown kind (got {_got(value.get('kind'))}; allowed: {tags})")
     if kind == LAYUP_ERROR_TYPE:
-        return Problem(path, f"{ctx.get('reason', item['msg'])} (got {_got(value)})")
+        allowed = f"; allowed: {ctx['allowed']}" if ctx.get("allowed") else ""
+        return Problem(path, f"{ctx.get('reason', item['msg'])} (got {_got(value)}{allowed})")
     if kind == "finite_number":
         return Problem(path, f"must be a finite number (got {_got(value)})")
     if kind in ("float_type", "float_parsing"):

@@ -7,9 +7,9 @@ factors [g].
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
-from pydantic import model_validator
+from pydantic import Field, model_validator
 
 from flexshaft.design.fields import (
     ZERO3,
@@ -25,14 +25,21 @@ from flexshaft.design.fields import (
 )
 from flexshaft.design.units import rpm_to_rad_s
 
-__all__ = ["LineLoad", "Loads", "Operating", "PointLoad"]
+__all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
+
+#: Highest shaft speed a design (or the CLI ``--speed-rpm``) may ask for [rev/min]. Tail-rotor
+#: drivelines run at 3,000-8,000 rev/min and a 0.1 m shaft at 10^6 rev/min would have a surface
+#: speed of 5 km/s; far larger values only overflow the gyroscopic matrix Ω G to inf/nan.
+MAX_SPEED_RPM = 1.0e6
+SpeedRpm = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=MAX_SPEED_RPM)]
+SpeedRadS = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=rpm_to_rad_s(MAX_SPEED_RPM))]
 
 
 class Operating(FrozenModel):
     """Operating point: exactly one of ``speed_rpm`` [rev/min] or ``speed`` [rad/s]; power [W]."""
 
-    speed_rpm: NonNegative | None = None
-    speed: NonNegative | None = None
+    speed_rpm: SpeedRpm | None = None
+    speed: SpeedRadS | None = None
     power: NonNegative
 
     @model_validator(mode="after")

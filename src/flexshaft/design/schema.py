@@ -50,7 +50,7 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
-from flexshaft.design.loads import LineLoad, Loads, Operating, PointLoad
+from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
 
 __all__ = [
@@ -76,6 +76,7 @@ __all__ = [
     "Tailboom",
     "PROBLEMS_ERROR_TYPE",
     "LAYUP_ERROR_TYPE",
+    "MAX_SPEED_RPM",
     "format_value",
 ]
 

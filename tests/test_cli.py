@@ -1,0 +1,227 @@
+"""Command line: the baseline round trip, refusals that name the field, and no traceback ever.
+
+The CLI promises (``flexshaft.cli`` docstring) that a user error ends with a message and exit
+code 2, never a traceback. The property test feeds ``modes`` and ``check`` 400 malformed argument
+lists (derandomized, so CI runs the same cases every time): option values such as ``nan``,
+``-1``, ``inf``, ``abc`` and huge numbers, missing files, directories, non-UTF-8 and invalid
+design files, unknown options and stray arguments. Computations only run on a small design file
+(4 shaft elements, 2 boom elements; about 20 ms a call), so the file takes a few seconds.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from flexshaft.cli import app
+from flexshaft.design import baseline_design, baseline_text, loads_design
+
+runner = CliRunner()
+
+SMALL_DESIGN = (
+    baseline_text()
+    .replace("shaft_elements = 36", "shaft_elements = 4", 1)
+    .replace("boom_elements = 24", "boom_elements = 2", 1)
+)
+BAD_THICKNESS = baseline_text().replace("wall_thickness = 0.003 ", "wall_thickness = -0.003 ", 1)
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """Design-file arguments: valid, invalid, unreadable, absent."""
+    folder = tmp_path_factory.mktemp("cli")
+    paths = {
+        "small": folder / "small.toml",
+        "bad": folder / "bad.toml",
+        "not_toml": folder / "not_toml.toml",
+        "binary": folder / "binary.toml",
+        "empty": folder / "empty.toml",
+        "directory": folder / "a_directory",
+        "missing": folder / "missing.toml",
+        "missing_parent": folder / "no" / "such" / "dir.toml",
+    }
+    assert SMALL_DESIGN != baseline_text() and BAD_THICKNESS != baseline_text()
+    paths["small"].write_text(SMALL_DESIGN, encoding="utf-8")
+    paths["bad"].write_text(BAD_THICKNESS, encoding="utf-8")
+    paths["not_toml"].write_text("[shaft\nx_start = = 1\n", encoding="utf-8")
+    paths["binary"].write_bytes(b"\xff\xfe\x00\x81name = 1\n")
+    paths["empty"].write_bytes(b"")
+    paths["directory"].mkdir()
+    return paths
+
+
+# ------------------------------------------------------------------------------------------------
+# Examples
+
+
+def test_baseline_prints_the_embedded_design() -> None:
+    result = runner.invoke(app, ["baseline"])
+    assert result.exit_code == 0, result.output
+    assert loads_design(result.stdout) == baseline_design()
+
+
+def test_check_accepts_the_baseline_and_a_design_file(files: dict[str, Path]) -> None:
+    assert runner.invoke(app, ["check"]).stdout == f"ok: {baseline_design().name}\n"
+    result = runner.invoke(app, ["check", str(files["small"])])
+    assert (result.exit_code, result.stdout) == (0, f"ok: {baseline_design().name}\n")
+
+
+def test_check_refuses_a_bad_file_naming_the_field(files: dict[str, Path]) -> None:
+    result = runner.invoke(app, ["check", str(files["bad"])])
+    assert result.exit_code == 2
+    assert isinstance(result.exception, SystemExit)
+    assert str(files["bad"]) in result.stderr
+    assert "shaft.wall_thickness: must be > 0 (got -0.003)" in result.stderr
+    assert result.stdout == ""
+
+
+@pytest.mark.parametrize(
+    ("key", "message"),
+    [
+        ("missing", "no such design file"),
+        ("directory", "is a directory, not a design file"),
+        ("binary", "UTF-8"),
+    ],
+)
+def test_check_refuses_unreadable_files(files: dict[str, Path], key: str, message: str) -> None:
+    result = runner.invoke(app, ["check", str(files[key])])
+    assert result.exit_code == 2
+    assert message in result.stderr
+
+
+def test_modes_json_on_a_small_design(files: dict[str, Path]) -> None:
+    result = runner.invoke(app, ["modes", str(files["small"]), "--speed-rpm", "3000", "--n", "4", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert data["speed_rpm"] == pytest.approx(3000.0)
+    frequencies = [row["frequency_Hz"] for row in data["modes"]]
+    assert len(frequencies) == 4 and all(f > 0.0 for f in frequencies)
+    assert [row["mode"] for row in data["modes"]] == [1, 2, 3, 4]
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ("nan", "--speed-rpm: must be a finite number (got nan)"),
+        ("-1", "--speed-rpm: must be >= 0 (got -1)"),
+        ("1e308", "--speed-rpm: must be <= 1e+06 (got 1e+308)"),  # overflowed Ω G to nan before
+    ],
+)
+def test_modes_refuses_a_bad_speed_before_computing(files: dict[str, Path], value: str, message: str) -> None:
+    result = runner.invoke(app, ["modes", str(files["small"]), "--speed-rpm", value])
+    assert result.exit_code == 2
+    assert message in result.stderr
+
+
+def test_a_huge_design_speed_is_refused_at_the_edge(tmp_path: Path) -> None:
+    path = tmp_path / "fast.toml"
+    path.write_text(SMALL_DESIGN.replace("speed_rpm = 4800.0", "speed_rpm = 1.0e300", 1), encoding="utf-8")
+    result = runner.invoke(app, ["modes", str(path), "--n", "2"])
+    assert result.exit_code == 2
+    assert "operating.speed_rpm: must be <= 1e+06 (got 1e+300)" in result.stderr
+
+
+# ------------------------------------------------------------------------------------------------
+# Property: any argument list ends in exit 0 or 2, without a traceback
+
+NUMBER_TEXTS = [
+    "nan", "-nan", "NaN", "inf", "-inf", "Infinity", "-1", "-0", "0", "1", "0.5", "3000", "4800.0",
+    "999999", "1e6", "1000000.5", "1e308", "1e309", "-1e309", "1" * 400, "abc", "", " ", "0x10",
+    "1_000", "1,5", "١٢٣", "--json", "-", "3000rpm", "1e", "\x00", "None", "true",
+]
+UNKNOWN_OPTIONS = ["--bogus", "-x", "--speed", "--N", "--n=", "--speed-rpm=", "--json=1", "--help-me", "---", "--"]
+option_value = st.one_of(
+    st.sampled_from(NUMBER_TEXTS),
+    st.floats(min_value=0.0, max_value=2.0e6).map(repr),  # mostly valid speeds, some too high
+    st.floats(allow_nan=True, allow_infinity=True).map(repr),
+    st.integers(min_value=-(10**30), max_value=10**30).map(str),
+    st.text(max_size=6),
+)
+
+
+@st.composite
+def options(draw: st.DrawFn) -> list[str]:
+    """A few options of ``modes`` (or unknown ones) with random values, in random order.
+
+    Known options are drawn three times as often as unknown options and stray arguments, so
+    that most lists get past the option parser to the CLI's own checks.
+    """
+    parts: list[list[str]] = []
+    kinds = ["speed"] * 4 + ["n"] * 3 + ["json"] * 2 + ["equals", "unknown", "stray"]
+    for _ in range(draw(st.integers(0, 3))):
+        kind = draw(st.sampled_from(kinds))
+        if kind == "speed":
+            parts.append(["--speed-rpm", draw(option_value)])
+        elif kind == "n":
+            parts.append(["--n", draw(option_value)])
+        elif kind == "json":
+            parts.append(["--json"])
+        elif kind == "unknown":
+            parts.append([draw(st.sampled_from(UNKNOWN_OPTIONS))])
+        elif kind == "stray":
+            parts.append([draw(option_value)])
+        else:
+            parts.append([f"--{draw(st.sampled_from(['speed-rpm', 'n']))}={draw(option_value)}"])
+    if parts and draw(st.sampled_from([False, False, False, True])):
+        parts = parts[:-1] + [parts[-1][:1]]  # an option missing its value at the end
+    return [token for part in parts for token in part]
+
+
+DESIGN_KEYS = ["small", "bad", "not_toml", "binary", "empty", "directory", "missing", "missing_parent"]
+
+
+@st.composite
+def argument_lists(draw: st.DrawFn) -> tuple[str, str, list[str]]:
+    """(command, design-file key, remaining arguments); ``check`` takes no options, so it gets
+    some only now and then, and ``modes`` mostly gets the small design so that it computes."""
+    command = draw(st.sampled_from(["modes", "check"]))
+    weights = ["small"] * (4 if command == "modes" else 1)
+    design = draw(st.sampled_from(weights + DESIGN_KEYS[1:] + ["omitted", "empty_string"]))
+    rest = draw(options()) if command == "modes" or draw(st.sampled_from([False, False, True])) else []
+    return command, design, rest
+
+
+MAX_EXAMPLES = 400
+calls = {"n": 0}
+
+
+@settings(
+    max_examples=MAX_EXAMPLES,
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
+@given(arguments=argument_lists())
+def test_malformed_arguments_never_give_a_traceback(
+    files: dict[str, Path], arguments: tuple[str, str, list[str]]
+) -> None:
+    command, design, rest = arguments
+    calls["n"] += 1
+    if design == "omitted" and command == "modes":
+        design = "small"  # keep computations on the small design, never the full baseline
+    path = [] if design == "omitted" else [""] if design == "empty_string" else [str(files[design])]
+    args = [command, *path, *rest]
+
+    result = runner.invoke(app, args)
+
+    report = f"args={args!r}\nexit={result.exit_code} exception={result.exception!r}\n{result.output}"
+    assert result.exit_code in (0, 2), report
+    assert result.exception is None or isinstance(result.exception, SystemExit), report
+    assert "Traceback" not in result.output, report
+    if result.exit_code == 2:
+        assert result.output.strip(), report
+    elif command == "check":
+        assert result.stdout.startswith("ok: "), report
+
+
+def test_the_property_test_ran_its_budget() -> None:
+    """Hypothesis can stop early (e.g. on too many filtered draws); make sure it did not."""
+    if calls["n"] == 0:
+        pytest.skip("run together with test_malformed_arguments_never_give_a_traceback")
+    assert calls["n"] >= 0.9 * MAX_EXAMPLES, f"hypothesis ran only {calls['n']} of {MAX_EXAMPLES} examples"
