@@ -160,6 +160,31 @@ def stability_cmd(
         typer.echo(f"{label}: {onset}")
 
 
+@app.command("thermal")
+def thermal_cmd(
+    design: Optional[Path] = DesignArg,
+    loss_model: Optional[str] = typer.Option(None, "--loss-model", help="thesis | rotating (default: the design's)"),
+    convection: Optional[str] = typer.Option(None, "--convection", help="becker | kendoush (rotating shaft; default: the design's)"),
+    self_heat: bool = typer.Option(False, "--self-heating", help="Iterate temperature-dependent matrix properties."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+) -> None:
+    """Tailboom temperatures (hover, parked), shaft temperature rise and self-heating margin."""
+    if loss_model is not None and loss_model not in ("thesis", "rotating"):
+        _fail(f"--loss-model: must be 'thesis' or 'rotating' (got {loss_model!r})")
+    if convection is not None and convection not in ("becker", "kendoush"):
+        _fail(f"--convection: must be 'becker' or 'kendoush' (got {convection!r})")
+    d = _load(design)
+    from flexshaft.assembly import build_model
+    from flexshaft.studies.thermal import thermal_summary
+
+    out = thermal_summary(d, build_model(d), loss_model=loss_model, convection=convection, self_heat=self_heat)
+    if as_json:
+        typer.echo(json.dumps(out, indent=2, default=float))
+        return
+    for key, value in out.items():
+        typer.echo(f"{key}: {value}")
+
+
 @app.command()
 def run(
     design: Optional[Path] = DesignArg,
@@ -208,6 +233,15 @@ def run(
     imb = data["imbalance"]
     console.print(f"spin-up peak shaft orbit {imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm")
     console.print(f"report written to {page}")
+
+
+def _add_study_commands() -> None:
+    from flexshaft.sweep.cli import study_app
+
+    app.add_typer(study_app, name="study")
+
+
+_add_study_commands()
 
 
 def main() -> None:  # pragma: no cover - console entry

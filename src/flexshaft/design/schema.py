@@ -50,10 +50,12 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
+from flexshaft.design.thermal_schema import Thermal
 from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
 
 __all__ = [
+    "Thermal",
     "ActiveBearing",
     "Bearing",
     "BearingDirection",
@@ -104,6 +106,7 @@ class Design(FrozenModel):
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()
+    thermal: Thermal = Thermal()
 
     @model_validator(mode="after")
     def _check(self) -> Design:

@@ -1,0 +1,96 @@
+"""``flexshaft study ...``: the thesis design studies from the command line.
+
+Mounted in :mod:`flexshaft.cli` with ``app.add_typer(study_app, name="study")``. Every command
+writes ``OUT/results.nc`` (netCDF, units in attributes) and prints a one-line headline; the
+sweeps resume when re-run on the same ``--out`` folder.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import numpy as np
+import typer
+
+study_app = typer.Typer(no_args_is_help=True, help="Design studies of thesis chapter 3 (sweeps; resumable).")
+
+_DESIGN = typer.Argument(None, help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False)
+_OUT = typer.Option(None, "--out", "-o", help="Run folder (chunks, manifest, results.nc); re-run to resume.")
+_JOBS = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each).")
+_DASK = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786 (needs flexshaft[dask]).")
+
+
+def _design(path: Optional[Path]):
+    from flexshaft.design import DesignError, baseline_design, load_design
+
+    try:
+        return baseline_design() if path is None else load_design(path)
+    except DesignError as exc:
+        typer.echo(f"error: invalid design {path or '(embedded baseline)'}:\n{exc}", err=True)
+        raise typer.Exit(code=2)
+
+
+def _run(func, design, out, jobs, dask, **kw):
+    from flexshaft.sweep import SweepError
+
+    try:
+        return func(design=_design(design), run_dir=out, jobs=jobs, client=dask, **kw)
+    except SweepError as exc:
+        typer.echo(f"error: {exc}", err=True)
+        raise typer.Exit(code=2)
+
+
+@study_app.command("ply-angle")
+def ply_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(5.0, min=0.5, max=45.0, help="Angle step [deg]."),
+              out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+    """Safety factor vs α of (α/−α/−α/α), no imbalance (thesis: optimum ±55°)."""
+    from flexshaft.sweep.studies import ply_angle_study
+
+    ds = _run(ply_angle_study, design, out, jobs, dask, angles=np.arange(step, 90.0, step))
+    best = ds["safety_factor"].idxmax("alpha").item()
+    typer.echo(f"best α = ±{best:g}°: safety factor {ds['safety_factor'].max().item():.2f}")
+
+
+@study_app.command("wall")
+def wall(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+    """Safety factor (with/without imbalance), first frequency, spin-up peak vs wall thickness."""
+    from flexshaft.sweep.studies import wall_thickness_study
+
+    ds = _run(wall_thickness_study, design, out, jobs, dask)
+    typer.echo(ds[["safety_factor", "safety_factor_no_imbalance", "spinup_peak_deflection"]].to_dataframe().to_string())
+
+
+@study_app.command("gain")
+def gain(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+    """Safety factor and actuator displacement vs the proportional gain K_p."""
+    from flexshaft.sweep.studies import proportional_gain_study
+
+    ds = _run(proportional_gain_study, design, out, jobs, dask)
+    typer.echo(ds[["safety_factor", "actuator_displacement"]].to_dataframe().to_string())
+
+
+@study_app.command("buckling")
+def buckling(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+    """Torsional buckling safety factor vs wall thickness."""
+    from flexshaft.sweep.studies import buckling_study
+
+    ds = _run(buckling_study, design, out, jobs, dask)
+    typer.echo(ds["buckling_safety_factor"].to_dataframe().to_string())
+
+
+@study_app.command("spinup-map")
+def spinup_map_cmd(design: Optional[Path] = _DESIGN, n_gains: int = typer.Option(30, min=2, max=400),
+                   n_speeds: int = typer.Option(400, min=10, max=20000), out: Optional[Path] = _OUT) -> None:
+    """Peak shaft deflection, actuator displacement and force over a (K_p, K_d) grid."""
+    from flexshaft.sweep.run import _write_netcdf
+    from flexshaft.sweep.studies import spinup_gain_map
+
+    kd = np.concatenate([[0.0], np.logspace(1, 4.5, n_gains - 1)])
+    ds = spinup_gain_map(np.logspace(5, 8, n_gains), kd, design=_design(design), n_speeds=n_speeds)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        _write_netcdf(ds, out / "results.nc")
+    i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
+    typer.echo(f"best K_p = {ds.kp.values[i[0]]:.3e} N/m, K_d = {ds.kd.values[i[1]]:.3e} N s/m: "
+               f"peak deflection {1e3 * ds['shaft_peak'].values[i]:.2f} mm")

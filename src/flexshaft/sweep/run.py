@@ -1,0 +1,339 @@
+"""Running a study: chunks, local processes or Dask, a run folder that survives interruption.
+
+The grid is cut into fixed chunks of consecutive points. Workers compute chunks; the calling
+process writes each finished chunk to ``RUN/chunks/chunk_NNNNNN.npy`` atomically (temporary file
+then ``os.replace``), so an interrupted run (Ctrl-C, SIGTERM, SIGKILL, a lost node) leaves only
+complete chunks. ``RUN/manifest.json`` holds the study's specification and fingerprint; running
+the same study on the same folder again computes only the missing chunks and writes
+``RUN/results.nc``, identical to an uninterrupted run's (the values are stored bit for bit and
+the file carries no time stamp).
+
+Backends:
+
+* ``jobs=1``: in this process;
+* ``jobs=N``: a pool of N worker processes, one BLAS thread each;
+* ``client=``: a ``dask.distributed.Client`` or a scheduler address (``"tcp://host:8786"``).
+  On SLURM, make the client from ``dask_jobqueue.SLURMCluster``. Dask is imported only then.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import tempfile
+import threading
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
+
+__all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_dataset"]
+
+MANIFEST = "manifest.json"
+RESULTS = "results.nc"
+CHUNKS = "chunks"
+
+
+def chunk_bounds(size: int, chunk_size: int) -> list[tuple[int, int]]:
+    """``(start, stop)`` of each chunk of a grid of ``size`` points."""
+    return [(s, min(s + chunk_size, size)) for s in range(0, size, chunk_size)]
+
+
+def _chunk_path(run_dir: Path, k: int) -> Path:
+    return run_dir / CHUNKS / f"chunk_{k:06d}.npy"
+
+
+def _atomic_write(path: Path, write) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=path.suffix)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            write(fh)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def finished_chunks(run_dir: str | os.PathLike) -> list[int]:
+    """Indices of the chunks already stored in a run folder."""
+    folder = Path(run_dir) / CHUNKS
+    if not folder.is_dir():
+        return []
+    return sorted(int(p.stem.split("_")[1]) for p in folder.glob("chunk_*.npy"))
+
+
+def _open_run(run_dir: Path, study: Study, chunk_size: int | None) -> int:
+    """Create or check the run folder; returns the chunk size in force."""
+    manifest = run_dir / MANIFEST
+    fingerprint = study.fingerprint()
+    if manifest.exists():
+        stored = json.loads(manifest.read_text())
+        if stored["fingerprint"] != fingerprint:
+            raise SweepError(
+                f"run folder {run_dir} holds a different study ({stored['study']['name']!r}, "
+                f"fingerprint {stored['fingerprint'][:12]}); use a new folder to run this one"
+            )
+        if chunk_size is not None and chunk_size != stored["chunk_size"]:
+            raise SweepError(
+                f"run folder {run_dir} was started with chunk_size={stored['chunk_size']}; "
+                f"resume with the same chunk size (got {chunk_size})"
+            )
+        return int(stored["chunk_size"])
+    chunk_size = chunk_size or 1
+    (run_dir / CHUNKS).mkdir(parents=True, exist_ok=True)
+    text = json.dumps(
+        {"fingerprint": fingerprint, "chunk_size": chunk_size, "size": study.size, "study": study.spec()},
+        indent=1,
+        default=repr,
+    )
+    _atomic_write(manifest, lambda fh: fh.write(text.encode()))
+    return chunk_size
+
+
+def _default_chunk_size(size: int, workers: int) -> int:
+    """About 8 chunks per worker, at most 256 points each (a few seconds of work)."""
+    return int(max(1, min(256, -(-size // (8 * max(workers, 1))))))
+
+
+# ---------------------------------------------------------------------------------------------
+# Backends: each yields (chunk index, values) as chunks finish.
+
+
+def _run_serial(study: Study, todo, on_error) -> Iterator[tuple[int, np.ndarray]]:
+    for k, (a, b) in todo:
+        yield k, evaluate_chunk(study, a, b, on_error)
+
+
+def _worker_init() -> None:
+    for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ[var] = "1"
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and shuts the pool
+
+
+def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[int, np.ndarray]]:
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
+    pending: dict = {}
+    queue = list(todo)
+    try:
+        while queue or pending:
+            while queue and len(pending) < 2 * jobs:
+                k, (a, b) = queue.pop(0)
+                pending[pool.submit(evaluate_chunk, study, a, b, on_error)] = k
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for fut in done:
+                yield pending.pop(fut), fut.result()
+    finally:
+        interrupted = bool(pending)  # chunks still running: stop the workers now
+        processes = list((getattr(pool, "_processes", None) or {}).values())
+        pool.shutdown(wait=not interrupted, cancel_futures=True)
+        if interrupted:
+            for proc in processes:
+                if proc.is_alive():
+                    proc.terminate()
+
+
+def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.ndarray]]:
+    try:
+        from distributed import Client, as_completed
+    except ImportError as exc:  # pragma: no cover - depends on the extra
+        raise SweepError("the Dask backend needs the extra: pip install 'flexshaft[dask]'") from exc
+    own = isinstance(client, str)
+    client = Client(client) if own else client
+    try:
+        futures = {
+            client.submit(evaluate_chunk, study, a, b, on_error, pure=False, key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}"): k
+            for k, (a, b) in todo
+        }
+        for fut in as_completed(futures):
+            yield futures[fut], fut.result()
+    finally:
+        if own:
+            client.close()
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+class _Interrupted(KeyboardInterrupt):
+    """SIGTERM turned into an exception so the pool and the progress bar shut down cleanly."""
+
+
+def _sigterm_to_exception():
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    if signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
+        return None
+
+    def handler(signum, frame):
+        raise _Interrupted(f"signal {signum}")
+
+    return signal.signal(signal.SIGTERM, handler)
+
+
+def to_dataset(study: Study, values: np.ndarray):
+    """Results as an :class:`xarray.Dataset`: one variable per output over the study's dims."""
+    import xarray as xr
+
+    from flexshaft import __version__
+
+    dims = tuple(v.name for v in study.variables)
+    grid = values.reshape(study.shape + (len(study.outputs),))
+    coords = {}
+    for v in study.variables:
+        attrs = {"units": v.units, "long_name": v.long_name or v.name}
+        if v.path:
+            attrs["design_path"] = v.path
+        attrs["kind"] = "design variable" if v.is_design else "axis"
+        coords[v.name] = (v.name, np.asarray(v.values), attrs)
+    data = {
+        o.name: (dims, grid[..., i], {"units": o.units, "long_name": o.long_name or o.name})
+        for i, o in enumerate(study.outputs)
+    }
+    attrs = {
+        "title": study.name,
+        "design": str(getattr(study.base, "name", "")),
+        "fixed_overrides": json.dumps({k: v for k, v in study.fixed.items()}, default=repr),
+        "flexshaft_version": __version__,
+        "study_fingerprint": study.fingerprint(),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def run_sweep(
+    study: Study,
+    run_dir: str | os.PathLike | None = None,
+    *,
+    jobs: int = 1,
+    client: Any = None,
+    chunk_size: int | None = None,
+    progress: bool = True,
+    on_error: str = "raise",
+):
+    """Compute a study and return its results as an :class:`xarray.Dataset`.
+
+    Parameters
+    ----------
+    study : Study
+        What to compute. Validated (every design path and value) before anything runs.
+    run_dir : path, optional
+        Run folder: finished chunks are stored as they come, an interrupted run resumes from
+        them, and ``results.nc`` is written at the end. ``None`` keeps everything in memory.
+    jobs : int
+        Local worker processes (1: in this process). Each uses one BLAS thread.
+    client : dask.distributed.Client or str, optional
+        Run the chunks on a Dask cluster instead (a client or a scheduler address).
+    chunk_size : int, optional
+        Points per chunk (default: ~8 chunks per worker, at most 256 points). A resumed run
+        keeps the chunk size it was started with.
+    progress : bool
+        Show a progress bar (rich) on the terminal.
+    on_error : {"raise", "nan"}
+        What a point whose evaluation raises becomes: stop the run, or NaN outputs.
+
+    Raises
+    ------
+    SweepError
+        Bad variable path or value (naming the field), undeclared outputs, or a run folder
+        that belongs to another study.
+    """
+    if on_error not in ("raise", "nan"):
+        raise SweepError(f"on_error must be 'raise' or 'nan', got {on_error!r}")
+    if int(jobs) < 1:
+        raise SweepError(f"jobs must be >= 1, got {jobs}")
+    study.validate()
+    workers = jobs if client is None else _dask_workers(client)
+    run_path = Path(run_dir) if run_dir is not None else None
+    if run_path is not None:
+        chunk_size = _open_run(run_path, study, chunk_size)
+    chunk_size = chunk_size or _default_chunk_size(study.size, workers)
+    bounds = chunk_bounds(study.size, chunk_size)
+    values = np.full((study.size, len(study.outputs)), np.nan)
+    done = set()
+    if run_path is not None:
+        for k in finished_chunks(run_path):
+            if k < len(bounds):
+                a, b = bounds[k]
+                values[a:b] = np.load(_chunk_path(run_path, k))
+                done.add(k)
+    todo = [(k, ab) for k, ab in enumerate(bounds) if k not in done]
+    if client is not None:
+        stream = _run_dask(study, todo, on_error, client)
+    elif jobs > 1 and len(todo) > 1:
+        stream = _run_processes(study, todo, on_error, jobs)
+    else:
+        stream = _run_serial(study, todo, on_error)
+    previous = _sigterm_to_exception()
+    bar = _progress_bar(progress, study, len(bounds), len(done))
+    try:
+        for k, chunk in stream:
+            a, b = bounds[k]
+            values[a:b] = chunk
+            if run_path is not None:
+                _atomic_write(_chunk_path(run_path, k), lambda fh: np.save(fh, chunk))
+            bar.advance()
+    finally:
+        close = getattr(stream, "close", None)
+        if close is not None:
+            close()
+        bar.stop()
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+    ds = to_dataset(study, values)
+    if run_path is not None:
+        _write_netcdf(ds, run_path / RESULTS)
+    return ds
+
+
+def _write_netcdf(ds, path: Path) -> None:
+    """Write ``ds`` to ``path`` atomically (netCDF4/HDF5 when available, else netCDF3)."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=".nc")
+    os.close(fd)
+    try:
+        ds.to_netcdf(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def _dask_workers(client) -> int:
+    if isinstance(client, str):
+        return 8
+    try:
+        return max(1, sum(client.nthreads().values()))
+    except Exception:  # any client-like object without the call
+        return 8
+
+
+class _progress_bar:
+    """A rich progress bar over chunks, or nothing."""
+
+    def __init__(self, enabled: bool, study: Study, total: int, completed: int):
+        self.progress = None
+        if enabled:
+            from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+            self.progress = Progress(
+                TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TextColumn("chunks"),
+                TimeRemainingColumn(), transient=False,
+            )
+            self.task = self.progress.add_task(study.name, total=total, completed=completed)
+            self.progress.start()
+
+    def advance(self) -> None:
+        if self.progress is not None:
+            self.progress.advance(self.task)
+
+    def stop(self) -> None:
+        if self.progress is not None:
+            self.progress.stop()

@@ -1,0 +1,212 @@
+"""The design studies of thesis chapter 3 (DESIGN.md §3) on the sweep engine.
+
+Each function builds a :class:`~flexshaft.sweep.Study` and runs it with
+:func:`~flexshaft.sweep.run_sweep` (so ``run_dir``, ``jobs``, ``client`` and ``progress`` work
+the same for all), returning an :class:`xarray.Dataset`. Output functions are module-level so
+they run in worker processes and on Dask.
+
+1. :func:`ply_angle_study`: safety factor vs α of (α/−α/−α/α), no imbalance (thesis: ±55°);
+2. :func:`two_angle_study`: (α/−α/β/−β)s map (thesis: (55/−55/0/0)s);
+3. :func:`wall_thickness_study`: safety factor with and without imbalance, first natural
+   frequencies and the peak spin-up deflection vs wall thickness at fixed D_o;
+4. :func:`proportional_gain_study`: safety factor and actuator displacement vs K_p;
+5. :func:`buckling_study`: torsional buckling safety factor vs wall thickness;
+6. :func:`spinup_gain_map`: the (K_p, K_d) spin-up map (fast path of
+   :mod:`flexshaft.analyses.spinup`; the gains are vectorised, not swept point by point).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from flexshaft.sweep.run import run_sweep
+from flexshaft.sweep.study import Output, Study, Variable
+
+__all__ = [
+    "buckling_study",
+    "one_angle_layup",
+    "ply_angle_study",
+    "proportional_gain_study",
+    "spinup_gain_map",
+    "strength_outputs",
+    "two_angle_layup",
+    "two_angle_study",
+    "wall_thickness_study",
+]
+
+
+def _angle(a: float) -> str:
+    return f"{float(a):g}"
+
+
+def one_angle_layup(alpha: float) -> dict:
+    """``(α/−α/−α/α)`` [deg] as a layup override."""
+    a = _angle(alpha)
+    return {"shaft.layup": f"({a}/-{a}/-{a}/{a})".replace("--", "")}
+
+
+def two_angle_layup(angles) -> dict:
+    """``(α/−α/β/−β)s`` [deg] from a pair (α, β)."""
+    a, b = (_angle(x) for x in angles)
+    return {"shaft.layup": f"({a}/-{a}/{b}/-{b})s".replace("--", "")}
+
+
+def strength_outputs(point) -> dict:
+    """Tsai-Wu safety factor, static (external loads + torque) and with the imbalance
+    response at the operating speed (worst load case)."""
+    from flexshaft.analyses import imbalance_response, static_response
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
+    from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
+
+    model = point.model
+    q_static = static_response(model, external_static_load(model) + torque_load(model))
+    static = shaft_safety_factor(model, q_static).safety_factor
+    q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
+    total = min(shaft_safety_factor(model, q_static, q_imb[:, c]).safety_factor for c in range(q_imb.shape[1]))
+    return {"safety_factor_static": static, "safety_factor": total}
+
+
+_STRENGTH = [
+    Output("safety_factor_static", "1", "Tsai-Wu safety factor, static loads and torque"),
+    Output("safety_factor", "1", "Tsai-Wu safety factor with the imbalance at the operating speed"),
+]
+
+
+def ply_angle_study(angles=np.arange(5.0, 90.0, 5.0), design=None, **run):
+    """Safety factor vs the ply angle α of (α/−α/−α/α), no imbalance (thesis study 1)."""
+    study = Study(
+        "ply angle (a/-a/-a/a)",
+        [Variable("alpha", angles, overrides=one_angle_layup, units="deg", long_name="ply angle")],
+        _STRENGTH,
+        strength_outputs,
+        base=design,
+        fixed={"loads.eccentricity": 0.0},
+    )
+    return run_sweep(study, **run)
+
+
+def two_angle_study(alphas=np.arange(0.0, 91.0, 15.0), betas=np.arange(0.0, 91.0, 15.0), design=None, **run):
+    """Safety factor over (α/−α/β/−β)s, no imbalance (thesis study 2)."""
+    study = Study(
+        "two ply angles (a/-a/b/-b)s",
+        [Variable("alpha", alphas, units="deg"), Variable("beta", betas, units="deg")],
+        _STRENGTH,
+        _two_angle_strength,
+        base=design,
+        fixed={"loads.eccentricity": 0.0},
+    )
+    return run_sweep(study, **run)
+
+
+def _two_angle_strength(point) -> dict:
+    from flexshaft.design import with_overrides
+    from flexshaft.sweep.study import Point
+
+    design = with_overrides(point.design, two_angle_layup((point.axes["alpha"], point.axes["beta"])))
+    return strength_outputs(Point(point.index, point.values, point.axes, design))
+
+
+def _wall_outputs(point) -> dict:
+    from flexshaft.analyses import modes
+    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_speeds
+
+    out = {}
+    model = point.model
+    out["natural_frequency_1"] = float(modes(model, 0.0, 1).frequencies[0])
+    rec = actuator_receptance(model, spinup_speeds(model, point.axes.get("n_speeds", 200)))
+    out["spinup_peak_deflection"] = float(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak.max())
+    from flexshaft.design import with_overrides
+    from flexshaft.sweep.study import Point
+
+    out.update(strength_outputs(point))
+    no_imbalance = with_overrides(point.design, {"loads.eccentricity": 0.0})
+    out["safety_factor_no_imbalance"] = strength_outputs(Point(point.index, point.values, point.axes, no_imbalance))[
+        "safety_factor"
+    ]
+    return out
+
+
+def wall_thickness_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **run):
+    """Safety factor with/without imbalance, first frequency and spin-up peak vs wall (study 3)."""
+    study = Study(
+        "wall thickness at fixed outer diameter",
+        [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
+        _STRENGTH
+        + [
+            Output("safety_factor_no_imbalance", "1"),
+            Output("natural_frequency_1", "Hz", "first natural frequency at rest"),
+            Output("spinup_peak_deflection", "m", "peak shaft orbit during spin-up"),
+        ],
+        _wall_outputs,
+        base=design,
+    )
+    return run_sweep(study, **run)
+
+
+def _actuator_outputs(point) -> dict:
+    from flexshaft.analyses import imbalance_response
+    from flexshaft.assembly.loads import imbalance_loads
+    from flexshaft.studies.run import actuator_response
+
+    model = point.model
+    q = imbalance_response(model, [model.speed], imbalance_loads(model))
+    worst_disp = 0.0
+    for c in range(q.shape[1]):
+        disp, _ = actuator_response(model, q[:, c], np.array([model.speed]))
+        worst_disp = max(worst_disp, max(float(d[0]) for d in disp.values()))
+    return {**strength_outputs(point), "actuator_displacement": worst_disp}
+
+
+def _both_actuators_kp(kp: float) -> dict:
+    return {"bearings[1].kp": kp, "bearings[2].kp": kp}
+
+
+def proportional_gain_study(kps=np.logspace(5, 8, 13), design=None, **run):
+    """Safety factor and actuator displacement at the operating speed vs K_p (study 4).
+
+    ``kps`` is applied to both active bearings of the baseline (design bearings 1 and 2).
+    """
+    study = Study(
+        "proportional gain",
+        [Variable("kp", kps, overrides=_both_actuators_kp, units="N/m")],
+        _STRENGTH + [Output("actuator_displacement", "m", "relative orbit at the actuator, operating speed")],
+        _actuator_outputs,
+        base=design,
+    )
+    return run_sweep(study, **run)
+
+
+def _buckling_outputs(point) -> dict:
+    from flexshaft.buckling import buckling_safety_factor, torsional_buckling_torque
+
+    model = point.model
+    d = point.design
+    result = torsional_buckling_torque(model.shaft.laminate, (model.shaft.outer_diameter - d.shaft.wall_thickness) / 2, d.shaft.length)
+    torque = model.power / model.speed
+    return {
+        "critical_torque": float(min(result.torque_positive, result.torque_negative)),
+        "buckling_safety_factor": float(buckling_safety_factor(result, torque)),
+    }
+
+
+def buckling_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **run):
+    """Torsional buckling safety factor vs wall thickness (study 5). ~5 s per point."""
+    study = Study(
+        "torsional buckling vs wall thickness",
+        [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
+        [Output("critical_torque", "N m", "smaller of the two senses"), Output("buckling_safety_factor", "1")],
+        _buckling_outputs,
+        base=design,
+    )
+    return run_sweep(study, **run)
+
+
+def spinup_gain_map(kp=np.logspace(5, 8, 30), kd=None, design=None, n_speeds: int = 400):
+    """The (K_p, K_d) spin-up map of a design as a Dataset (study 6), same law on every AMB."""
+    from flexshaft.analyses.spinup import spinup_map, spinup_speeds
+    from flexshaft.assembly import build_model
+    from flexshaft.design import baseline_design
+
+    model = build_model(design or baseline_design())
+    kd = np.concatenate([[0.0], np.logspace(1, 4.5, 29)]) if kd is None else kd
+    return spinup_map(model, kp, kd, spinup_speeds(model, n_speeds)).to_dataset()

@@ -1,0 +1,170 @@
+"""Steady-state tailboom skin temperature (thesis §2.8.1, eqs. 2.55-2.59).
+
+Energy balance per unit boom length, for a lumped, isothermal, thin aluminium skin:
+
+    α_s G A_sun = ε σ (T⁴ − T_sky⁴) π D + h(T) (T − T_amb) π D
+
+* absorbed sun: G = S_c f cos θ_s (eq. 2.58) on ``A_sun`` per unit length: the projected width
+  D under an overhead sun (default), or πD/2 or πD (:attr:`ThermalEnvironment.solar_area`);
+  α_s = ε unless given (the thesis lists ε only);
+* sky exchange: the whole surface sees a black sky at T_sky (eq. 2.55);
+* convection: hover — forced cross-flow at the momentum-theory downwash V = √(W/(2ρπR²))
+  (eq. 2.56) with Hilpert (eq. 2.57) or Churchill-Bernstein; parked — free convection from a
+  horizontal cylinder, Churchill-Chu (eq. 2.59). Air properties at the film temperature.
+
+The elliptical boom is replaced by a circle of the same perimeter (D = P/π, Ramanujan's
+perimeter at the length-averaged semi-axes; exact average for the proportional baseline taper):
+the convective and radiating area then equals the real skin area. The shaft's heat is
+negligible against the boom's solar load and is not in this balance. The nonlinear equation is
+solved by Brent's method on [T_sky − 100 K, T_amb + 300 K].
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from scipy.optimize import brentq
+
+from flexshaft.thermal.air import air_properties
+from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
+from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment
+
+__all__ = ["BoomCondition", "BoomTemperature", "ellipse_perimeter", "boom_equivalent_diameter",
+           "boom_heat_transfer_coefficient", "tailboom_temperature", "tailboom_temperatures"]
+
+BoomCondition = Literal["hover", "parked"]
+_SOLAR_SHARE = {"projected": 1.0 / math.pi, "half_surface": 0.5, "surface": 1.0}  # A_sun / (π D)
+
+
+@dataclass(frozen=True)
+class BoomTemperature:
+    """Steady skin temperature of the tailboom and the terms of its energy balance.
+
+    Attributes
+    ----------
+    condition : str
+        "hover" or "parked".
+    temperature : float
+        Skin temperature [K].
+    heat_transfer_coefficient : float
+        h at the solution [W/(m^2 K)].
+    nusselt : Nusselt
+        Correlation, value and validity flag.
+    dimensionless : float
+        Re_D (hover) or Ra_D (parked) at the solution [-].
+    velocity : float
+        Cross-flow velocity [m/s] (0 when parked).
+    diameter : float
+        Equivalent diameter [m].
+    absorbed_solar, net_radiation, convection : float
+        Terms of the balance per unit skin area [W/m^2]: absorbed = radiation + convection.
+    """
+
+    condition: str
+    temperature: float
+    heat_transfer_coefficient: float
+    nusselt: Nusselt
+    dimensionless: float
+    velocity: float
+    diameter: float
+    absorbed_solar: float
+    net_radiation: float
+    convection: float
+
+    @property
+    def celsius(self) -> float:
+        """Skin temperature [°C]."""
+        return self.temperature - 273.15
+
+
+def ellipse_perimeter(a: float, b: float) -> float:
+    """Ramanujan's second approximation of an ellipse's perimeter [m] (error < 1e-9 relative
+    for the boom's b/a = 0.8) for semi-axes ``a``, ``b`` [m]."""
+    h = ((a - b) / (a + b)) ** 2
+    return math.pi * (a + b) * (1 + 3 * h / (10 + math.sqrt(4 - 3 * h)))
+
+
+def boom_equivalent_diameter(tailboom) -> float:
+    """Diameter [m] of the circle with the boom's mean skin perimeter.
+
+    ``tailboom`` is the design's tailboom table (``root_semi_axes``, ``tip_semi_axes`` mid-line
+    [m], ``wall_thickness`` [m]); the outer surface is the mid-line plus half the wall.
+    """
+    t = tailboom.wall_thickness
+    a = 0.5 * (tailboom.root_semi_axes[0] + tailboom.tip_semi_axes[0]) + t / 2
+    b = 0.5 * (tailboom.root_semi_axes[1] + tailboom.tip_semi_axes[1]) + t / 2
+    return ellipse_perimeter(a, b) / math.pi
+
+
+def boom_heat_transfer_coefficient(
+    temperature: float, diameter: float, condition: BoomCondition, env: ThermalEnvironment,
+    method: ForcedMethod = "churchill_bernstein",
+) -> tuple[float, Nusselt, float]:
+    """Convection coefficient h [W/(m^2 K)] of the boom at skin ``temperature`` [K].
+
+    Returns ``(h, Nusselt, Re_D or Ra_D)``; air properties at the film temperature.
+    """
+    film = air_properties(0.5 * (temperature + env.ambient_temperature), env.air_pressure)
+    if condition == "hover":
+        V = env.downwash_velocity
+        Re = V * diameter / film.kinematic_viscosity
+        nu = forced_cylinder_nusselt(Re, film.prandtl, method)
+        return nu.value * film.conductivity / diameter, nu, Re
+    if condition == "parked":
+        dT = max(abs(temperature - env.ambient_temperature), 1e-6)
+        Gr = GRAVITY * film.expansion_coefficient * dT * diameter**3 / film.kinematic_viscosity**2
+        nu = churchill_chu_nusselt(film.prandtl, Gr)
+        return nu.value * film.conductivity / diameter, nu, Gr * film.prandtl
+    raise ValueError(f"condition must be 'hover' or 'parked', got {condition!r}")
+
+
+def tailboom_temperature(
+    condition: BoomCondition, diameter: float, env: ThermalEnvironment | None = None,
+    method: ForcedMethod = "churchill_bernstein",
+) -> BoomTemperature:
+    """Steady tailboom skin temperature for ``condition`` ("hover" or "parked").
+
+    Parameters
+    ----------
+    diameter : float
+        Equivalent boom diameter [m] (:func:`boom_equivalent_diameter`).
+    env : ThermalEnvironment
+        Environment (thesis Table 2.1 defaults).
+    method : {"churchill_bernstein", "hilpert"}
+        Forced-convection correlation (hover only).
+    """
+    env = env or ThermalEnvironment()
+    if not (math.isfinite(diameter) and diameter > 0):
+        raise ValueError(f"diameter must be finite and > 0 [m], got {diameter!r}")
+    absorbed = env.absorptivity * env.solar_irradiation * _SOLAR_SHARE[env.solar_area]
+    eps_sigma = env.emissivity * STEFAN_BOLTZMANN
+
+    def residual(T: float) -> float:
+        h, _, _ = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
+        return absorbed - eps_sigma * (T**4 - env.sky_temperature**4) - h * (T - env.ambient_temperature)
+
+    lo = max(min(env.sky_temperature, env.ambient_temperature) - 100.0, 200.0)
+    T = brentq(residual, lo, env.ambient_temperature + 300.0, xtol=1e-10, rtol=1e-14)
+    h, nu, dimensionless = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
+    return BoomTemperature(
+        condition=condition, temperature=T, heat_transfer_coefficient=h, nusselt=nu,
+        dimensionless=dimensionless, velocity=env.downwash_velocity if condition == "hover" else 0.0,
+        diameter=diameter, absorbed_solar=absorbed,
+        net_radiation=eps_sigma * (T**4 - env.sky_temperature**4),
+        convection=h * (T - env.ambient_temperature),
+    )
+
+
+def tailboom_temperatures(design=None, env: ThermalEnvironment | None = None,
+                          method: ForcedMethod = "churchill_bernstein") -> dict[str, BoomTemperature]:
+    """Hover and parked boom temperatures of a design (the baseline when None)."""
+    if design is None:
+        from flexshaft.design import baseline_design
+
+        design = baseline_design()
+    if design.tailboom is None:
+        raise ValueError("the design has no tailboom; tailboom temperatures need [tailboom]")
+    D = boom_equivalent_diameter(design.tailboom)
+    return {c: tailboom_temperature(c, D, env, method) for c in ("hover", "parked")}
