@@ -22,15 +22,16 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     assert "report written to" in output
     data = json.loads((out / "results.json").read_text())
     for key in ("summary", "modes_at_rest", "modes_at_operating_speed", "critical_speeds", "imbalance",
-                "static", "strength_static_plus_imbalance", "buckling", "stability"):
+                "static", "strength_static_plus_imbalance", "buckling", "stability", "thermal", "bearings"):
         assert key in data
     assert len(data["modes_at_rest"]) == 10
     assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
+    assert data["thermal"]["self_heating"]["status"] == "converged"
     thesis = data["stability"]["thesis_shafts"]
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     assert thesis["(45/-45/0/0)s FMC"]["viscous"] > thesis["(45/-45)s FMC"]["viscous"]
     for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor",
-                 "stability_real_parts", "stability_map"):
+                 "stability_real_parts", "stability_map", "shaft_temperature"):
         assert (out / f"{stem}.png").stat().st_size > 10_000
         assert (out / f"{stem}.svg").is_file()
 

@@ -97,6 +97,7 @@ def results_json(res) -> dict:
         "strength_static_plus_imbalance": _strength_dict(res.strength_total),
         "buckling": res.buckling,
         "stability": _stability_dict(res),
+        "thermal": _thermal_dict(res),
         "notes": res.notes,
     }
 
@@ -225,6 +226,8 @@ def write_run_report(res, folder: str | Path, generated: str | None = None) -> P
                                            "σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]"], rows)],
             figures=[FigureRef(p_sf["png"], "Minimum Tsai-Wu safety factor along the shaft")],
         ))
+    if res.thermal is not None:
+        sections.append(_thermal_section(res, folder))
     if res.stability is not None:
         sections.append(_stability_section(res, folder, op_rpm))
     if res.notes:
@@ -295,3 +298,53 @@ def _stability_section(res, folder, op_rpm) -> Section:
         tables=tables,
         figures=figs,
     )
+
+
+def _thermal_dict(res) -> dict | None:
+    th = res.thermal
+    if th is None:
+        return None
+    out = {"tailboom_c": {k: v.celsius for k, v in th["tailboom"].items()}, "report_loss_model": th["loss_model"]}
+    for lm, s in th["shaft"].items():
+        out[f"shaft_{lm}"] = {"peak_rise_K": s.peak_rise, "heat_W": float(s.sources.total.sum()),
+                              "air_c": s.temperature.air_temperature - 273.15}
+    sh = th["self_heating"]
+    if sh is not None:
+        out["self_heating"] = {"status": sh.status, "iterations": sh.iterations, "margin_K": sh.margin}
+    return out
+
+
+def _thermal_section(res, folder) -> Section:
+    from flexshaft.report.thermal_figures import shaft_temperature_figure
+
+    th = res.thermal
+    env = th["environment"]
+    shafts = th["shaft"]
+    first = next(iter(shafts.values()))
+    x = first.temperature.x
+    xe = 0.5 * (x[:-1] + x[1:])
+    rise = {f"{lm} loss model": s.temperature.temperature - s.temperature.air_temperature for lm, s in shafts.items()}
+    heat = {f"{lm} loss model": s.sources.total / np.diff(x) for lm, s in shafts.items()}
+    p = save_figure(shaft_temperature_figure(x, rise, xe, heat), folder, "shaft_temperature")
+    tables = []
+    if th["tailboom"]:
+        tables.append(Table("Tailboom skin temperature (thesis: 44 °C hovering, 89 °C parked)",
+                            ["condition", "temperature [°C]", "h [W/m² K]", "correlation"],
+                            [[k, v.celsius, v.heat_transfer_coefficient, v.nusselt.method] for k, v in th["tailboom"].items()]))
+    rows = [[lm, s.temperature.air_temperature - 273.15, s.temperature.heat_transfer_coefficient,
+             float(s.sources.vibration.sum()), float(s.sources.static.sum()), s.peak_rise] for lm, s in shafts.items()]
+    tables.append(Table("Shaft self-heating at the operating speed",
+                        ["loss model", "air [°C]", "h [W/m² K]", "vibration heat [W]", "static heat [W]", "peak rise [K]"], rows))
+    paragraphs = [
+        f"Ambient {env.ambient_temperature - 273.15:.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
+        "Heat is the hysteretic loss P = (ω/2)·Re(Xᴴ K'' X) of the imbalance response and of the static deflection "
+        "seen by the rotating material. The thesis model cycles every response at Ω in the fixed frame; the "
+        "rotating-frame model (used for the self-heating check) knows that synchronous forward whirl does not cycle "
+        "the material, backward whirl is cycled at 2Ω and the static deflection at Ω.",
+    ]
+    sh = th["self_heating"]
+    if sh is not None:
+        paragraphs.append(f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
+                          f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.")
+    return Section("Thermal", paragraphs=paragraphs, tables=tables,
+                   figures=[FigureRef(p["png"], "Shaft temperature rise and heat generation along the shaft")])

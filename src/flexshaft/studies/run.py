@@ -45,6 +45,7 @@ class RunResults:
     stability: object = None  # StabilityResult of the design (viscous equivalent)
     shaft_comparison: dict = field(default_factory=dict)  # label -> {model: StabilityResult}
     gain_map: object = None  # StabilityMap over (K_p, K_d)
+    thermal: object = None  # dict from flexshaft.studies.thermal.thermal_results
     notes: list = field(default_factory=list)
 
 
@@ -129,6 +130,14 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         }
     else:
         notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+    step("thermal")
+    thermal = None
+    if model.shaft.laminate is not None:
+        from flexshaft.studies.thermal import thermal_results
+
+        thermal = thermal_results(design, model, self_heat=True)
+    else:
+        notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
     step("whirl stability")
     stab, comparison, gmap = _whirl(design, model, notes)
     return RunResults(
@@ -151,6 +160,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         stability=stab,
         shaft_comparison=comparison,
         gain_map=gmap,
+        thermal=thermal,
         notes=notes,
     )
 

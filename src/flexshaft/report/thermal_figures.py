@@ -1,0 +1,33 @@
+"""Figures of the thermal analysis (matplotlib imported lazily)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from flexshaft.report._style import new_figure, styled, vector
+
+__all__ = ["shaft_temperature_figure"]
+
+
+@styled
+def shaft_temperature_figure(x_nodes: ArrayLike, rise: Mapping[str, ArrayLike], x_elements: ArrayLike,
+                             heat_per_length: Mapping[str, ArrayLike]):
+    """Temperature rise above the air along the shaft [K] and the heat generated [W/m], one
+    curve per loss model."""
+    x = vector("x_nodes", x_nodes)
+    xe = vector("x_elements", x_elements)
+    fig, axes = new_figure(2, 1, (8.0, 6.0), sharex=True)
+    for name, values in rise.items():
+        axes[0, 0].plot(x, np.asarray(values, dtype=float), label=name)
+    axes[0, 0].set_ylabel("T − T_air [K]")
+    axes[0, 0].set_title("Shaft temperature rise")
+    axes[0, 0].legend(loc="best")
+    for name, values in heat_per_length.items():
+        axes[1, 0].step(xe, np.asarray(values, dtype=float), where="mid", label=name)
+    axes[1, 0].set_ylabel("heat generated [W/m]")
+    axes[1, 0].set_xlabel("x [m]")
+    axes[1, 0].legend(loc="best")
+    return fig
