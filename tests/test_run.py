@@ -27,6 +27,7 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     assert len(data["modes_at_rest"]) == 10
     assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
     assert data["thermal"]["self_heating"]["status"] == "converged"
+    assert data["design_studies"] is not None
     thesis = data["stability"]["thesis_shafts"]
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     assert thesis["(45/-45/0/0)s FMC"]["viscous"] > thesis["(45/-45)s FMC"]["viscous"]
@@ -52,7 +53,7 @@ def test_stability_command_compares_the_thesis_shafts():
 
 
 def test_run_json_option_prints_the_key_results(tmp_path):
-    result = CliRunner().invoke(app, ["run", "--out", str(tmp_path), "--json"])
+    result = CliRunner().invoke(app, ["run", "--out", str(tmp_path), "--json", "--studies", "none"])
     assert result.exit_code == 0
     data = json.loads(result.stdout)
     assert data["summary"]["operating_speed_rpm"] == pytest.approx(4800.0)

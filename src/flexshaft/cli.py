@@ -190,6 +190,7 @@ def run(
     design: Optional[Path] = DesignArg,
     out: Path = typer.Option(Path("flexshaft-results"), "--out", "-o", help="Results folder."),
     as_json: bool = typer.Option(False, "--json", help="Print the key results as JSON."),
+    studies: str = typer.Option("report", "--studies", help="Design studies in the report: report, full or none."),
 ) -> None:
     """Analyse a design (default: the embedded baseline) and write the report folder."""
     from rich.console import Console
@@ -197,6 +198,8 @@ def run(
 
     from flexshaft.studies.run import run_analysis
 
+    if studies not in ("report", "full", "none"):
+        _fail(f"--studies: must be report, full or none (got {studies!r})")
     d = _load(design)
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -206,7 +209,8 @@ def run(
     with Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(), console=console,
                   transient=True, disable=as_json) as progress:
         task = progress.add_task("flexshaft run", total=None)
-        results = run_analysis(d, progress=lambda label: progress.update(task, description=label))
+        results = run_analysis(d, progress=lambda label: progress.update(task, description=label),
+                               studies=None if studies == "none" else studies)
         progress.update(task, description="writing the report")
         from flexshaft.report.driveline import results_json, write_run_report
 

@@ -98,6 +98,7 @@ def results_json(res) -> dict:
         "buckling": res.buckling,
         "stability": _stability_dict(res),
         "thermal": _thermal_dict(res),
+        "design_studies": _studies_json(res),
         "notes": res.notes,
     }
 
@@ -230,6 +231,11 @@ def write_run_report(res, folder: str | Path, generated: str | None = None) -> P
         sections.append(_thermal_section(res, folder))
     if res.stability is not None:
         sections.append(_stability_section(res, folder, op_rpm))
+    if res.design_studies is not None:
+        from flexshaft.studies.chapter3 import design_studies_section, save_study_data
+
+        save_study_data(res.design_studies, folder / "studies")
+        sections.append(design_studies_section(res.design_studies, folder))
     if res.notes:
         sections.append(Section("Notes", paragraphs=list(res.notes)))
     return write_report(folder, f"flexshaft report: {design.name}", sections, design_name=design.name, generated=generated)
@@ -348,3 +354,11 @@ def _thermal_section(res, folder) -> Section:
                           f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.")
     return Section("Thermal", paragraphs=paragraphs, tables=tables,
                    figures=[FigureRef(p["png"], "Shaft temperature rise and heat generation along the shaft")])
+
+
+def _studies_json(res):
+    if res.design_studies is None:
+        return None
+    from flexshaft.studies.chapter3 import headline
+
+    return headline(res.design_studies)

@@ -46,6 +46,7 @@ class RunResults:
     shaft_comparison: dict = field(default_factory=dict)  # label -> {model: StabilityResult}
     gain_map: object = None  # StabilityMap over (K_p, K_d)
     thermal: object = None  # dict from flexshaft.studies.thermal.thermal_results
+    design_studies: object = None  # flexshaft.studies.chapter3.DesignStudies
     notes: list = field(default_factory=list)
 
 
@@ -72,7 +73,8 @@ def _worst(q: np.ndarray, model: Model):
     return amp, case
 
 
-def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None) -> RunResults:
+def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
+                 studies: str | None = "report") -> RunResults:
     """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength.
 
     Parameters
@@ -83,6 +85,8 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         Campbell speeds from 0 to 125 % of the operating speed.
     progress : callable or None
         Called with a short label before each step.
+    studies : {"report", "full"} or None
+        Resolution of the thesis chapter-3 design studies; None skips them.
     """
     step = progress or (lambda label: None)
     step("assembling the model")
@@ -140,6 +144,16 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
     step("whirl stability")
     stab, comparison, gmap = _whirl(design, model, notes)
+    design_studies_result = None
+    if studies:
+        step("design studies (thesis chapter 3)")
+        from flexshaft.studies.chapter3 import design_studies
+        from flexshaft.sweep import SweepError
+
+        try:
+            design_studies_result = design_studies(design, studies, progress=lambda label: step(f"design studies: {label}"))
+        except (SweepError, ValueError) as exc:
+            notes.append(f"design studies skipped: {str(exc).splitlines()[0]}")
     return RunResults(
         model=model,
         summary=model_summary(model),
@@ -161,6 +175,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         shaft_comparison=comparison,
         gain_map=gmap,
         thermal=thermal,
+        design_studies=design_studies_result,
         notes=notes,
     )
 

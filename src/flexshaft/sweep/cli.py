@@ -94,3 +94,25 @@ def spinup_map_cmd(design: Optional[Path] = _DESIGN, n_gains: int = typer.Option
     i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
     typer.echo(f"best K_p = {ds.kp.values[i[0]]:.3e} N/m, K_d = {ds.kd.values[i[1]]:.3e} N s/m: "
                f"peak deflection {1e3 * ds['shaft_peak'].values[i]:.2f} mm")
+
+
+@study_app.command("all")
+def all_studies(design: Optional[Path] = _DESIGN,
+                resolution: str = typer.Option("report", help="Grid resolution: report (~10 s) or full (~1 min)."),
+                out: Path = typer.Option(Path("flexshaft-studies"), "--out", "-o", help="Folder for figures, netCDF and HTML."),
+                jobs: int = _JOBS,
+                gap: Optional[float] = typer.Option(None, help="Actuator gap [m] limiting the tuned gains.")) -> None:
+    """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
+    import json
+
+    from flexshaft.report.html import write_report
+    from flexshaft.studies.chapter3 import design_studies, design_studies_section, headline, save_study_data
+
+    if resolution not in ("report", "full"):
+        typer.echo(f"error: --resolution must be 'report' or 'full', got {resolution!r}", err=True)
+        raise typer.Exit(code=2)
+    d = _design(design)
+    res = design_studies(d, resolution, progress=lambda label: typer.echo(label, err=True), jobs=jobs, actuator_gap=gap)
+    save_study_data(res, out)
+    write_report(out, f"Design studies: {d.name}", [design_studies_section(res, out)], design_name=d.name)
+    typer.echo(json.dumps(headline(res), indent=2))

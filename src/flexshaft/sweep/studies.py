@@ -23,7 +23,9 @@ from flexshaft.sweep.run import run_sweep
 from flexshaft.sweep.study import Output, Study, Variable
 
 __all__ = [
+    "DOMINANT_STRESS_CODES",
     "buckling_study",
+    "critical_ply_outputs",
     "one_angle_layup",
     "ply_angle_study",
     "proportional_gain_study",
@@ -71,14 +73,56 @@ _STRENGTH = [
     Output("safety_factor", "1", "Tsai-Wu safety factor with the imbalance at the operating speed"),
 ]
 
+#: Codes of the ``dominant_stress`` output (a float, so that it fits the results array).
+DOMINANT_STRESS_CODES = {0: "sigma1", 1: "sigma2", 2: "tau12"}
+
+_CRITICAL = [
+    Output("sigma1", "Pa", "fibre-direction stress of the critical ply (thesis Table 3.3)"),
+    Output("sigma2", "Pa", "transverse stress of the critical ply"),
+    Output("tau12", "Pa", "in-plane shear stress of the critical ply"),
+    Output("critical_ply_angle", "deg", "angle of the critical ply"),
+    Output("critical_x", "m", "axial station of the critical point"),
+    Output("dominant_stress", "1", "largest Tsai-Wu share: 0 sigma1, 1 sigma2, 2 tau12"),
+]
+
+
+def critical_ply_outputs(point) -> dict:
+    """Static Tsai-Wu safety factor and the critical ply's stresses (thesis Table 3.3).
+
+    The imbalance is not applied (study 1 runs with ``loads.eccentricity = 0``), so
+    ``safety_factor`` equals ``safety_factor_static``.
+    """
+    from flexshaft.analyses import static_response
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
+    from flexshaft.assembly.loads import external_static_load, torque_load
+
+    model = point.model
+    r = shaft_safety_factor(model, static_response(model, external_static_load(model) + torque_load(model)))
+    code = {v: k for k, v in DOMINANT_STRESS_CODES.items()}[str(r.dominant_stress)]
+    return {
+        "safety_factor_static": r.safety_factor,
+        "safety_factor": r.safety_factor,
+        "sigma1": r.stresses[0],
+        "sigma2": r.stresses[1],
+        "tau12": r.stresses[2],
+        "critical_ply_angle": r.ply_angle_deg,
+        "critical_x": r.x,
+        "dominant_stress": float(code),
+    }
+
 
 def ply_angle_study(angles=np.arange(5.0, 90.0, 5.0), design=None, **run):
-    """Safety factor vs the ply angle α of (α/−α/−α/α), no imbalance (thesis study 1)."""
+    """Safety factor vs the ply angle α of (α/−α/−α/α), no imbalance (thesis study 1), with
+    the critical ply's σ1, σ2, τ12 (Table 3.3), its angle, station and dominant stress.
+
+    The optimum on the assumed baseline is a cusp at exactly 45° (docs/studies.md): use a
+    step that hits 45° (or 1° or finer) before concluding on it.
+    """
     study = Study(
         "ply angle (a/-a/-a/a)",
         [Variable("alpha", angles, overrides=one_angle_layup, units="deg", long_name="ply angle")],
-        _STRENGTH,
-        strength_outputs,
+        _STRENGTH + _CRITICAL,
+        critical_ply_outputs,
         base=design,
         fixed={"loads.eccentricity": 0.0},
     )
@@ -107,22 +151,27 @@ def _two_angle_strength(point) -> dict:
 
 
 def _wall_outputs(point) -> dict:
+    """First frequency always; the spin-up peak when the design has actuators and the safety
+    factors when the shaft is laminated (NaN otherwise, e.g. a plain isotropic shaft)."""
     from flexshaft.analyses import modes
     from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_speeds
-
-    out = {}
-    model = point.model
-    out["natural_frequency_1"] = float(modes(model, 0.0, 1).frequencies[0])
-    rec = actuator_receptance(model, spinup_speeds(model, point.axes.get("n_speeds", 200)))
-    out["spinup_peak_deflection"] = float(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak.max())
     from flexshaft.design import with_overrides
     from flexshaft.sweep.study import Point
 
-    out.update(strength_outputs(point))
-    no_imbalance = with_overrides(point.design, {"loads.eccentricity": 0.0})
-    out["safety_factor_no_imbalance"] = strength_outputs(Point(point.index, point.values, point.axes, no_imbalance))[
-        "safety_factor"
-    ]
+    nan = float("nan")
+    out = {"spinup_peak_deflection": nan, "safety_factor_static": nan, "safety_factor": nan,
+           "safety_factor_no_imbalance": nan}
+    model = point.model
+    out["natural_frequency_1"] = float(modes(model, 0.0, 1).frequencies[0])
+    if model.actuators:
+        rec = actuator_receptance(model, spinup_speeds(model, point.axes.get("n_speeds", 200)))
+        out["spinup_peak_deflection"] = float(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak.max())
+    if model.shaft.laminate is not None:
+        out.update(strength_outputs(point))
+        no_imbalance = with_overrides(point.design, {"loads.eccentricity": 0.0})
+        out["safety_factor_no_imbalance"] = strength_outputs(
+            Point(point.index, point.values, point.axes, no_imbalance)
+        )["safety_factor"]
     return out
 
 

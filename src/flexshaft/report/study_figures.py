@@ -1,0 +1,398 @@
+"""Figures of the design studies of thesis chapter 3 (``flexshaft.studies.chapter3``).
+
+Same conventions as :mod:`flexshaft.report.figures`: inputs are plain numpy arrays (or an
+:class:`xarray.Dataset` where named) in SI units with speeds in rpm; lengths are drawn in mm;
+every function returns a :class:`matplotlib.figure.Figure`; matplotlib is imported lazily (Agg,
+no pyplot state) through :func:`flexshaft.report._style.styled`. Nothing here knows of models.
+
+Thesis figure numbers: 3.2 :func:`ply_angle_figure`, 3.3 :func:`two_angle_figure`,
+3.4 :func:`wall_thickness_figure`, 3.5 :func:`forced_response_figure`, 3.6 :func:`gain_figure`,
+3.10 :func:`buckling_figure`, 3.12/3.15/3.16 :func:`gain_map_figure`, 3.13/3.14
+:func:`response_surface_figure`, 3.17 :func:`tuned_gains_figure`; the stability margin map
+:func:`stability_margin_figure` goes beyond the thesis.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from flexshaft.report._style import MM_PER_M, mark_operating, new_figure, styled, vector
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = [
+    "ply_angle_figure",
+    "two_angle_figure",
+    "wall_thickness_figure",
+    "forced_response_figure",
+    "gain_figure",
+    "buckling_figure",
+    "gain_map_figure",
+    "response_surface_figure",
+    "tuned_gains_figure",
+    "stability_margin_figure",
+]
+
+_BEST = {"marker": "*", "ms": 15, "mfc": "gold", "mec": "k", "mew": 1.0, "ls": "none", "zorder": 5}
+
+
+def _grid(name: str, values: ArrayLike, shape: tuple[int, int]) -> np.ndarray:
+    array = np.asarray(values, dtype=float)
+    if array.shape != shape:
+        raise ValueError(f"{name}: expected shape {shape} (first axis, second axis), got {array.shape}")
+    return array
+
+
+def _log_positions(values: np.ndarray) -> tuple[np.ndarray, list[float], list[str]]:
+    """Plot positions of gains on a log axis; a zero gain sits one step below the smallest
+    positive one. Returns positions, tick positions and tick labels."""
+    values = np.asarray(values, dtype=float)
+    positive = values[values > 0]
+    if positive.size == 0:
+        return values.copy(), list(values), [f"{v:g}" for v in values]
+    logs = np.log10(positive)
+    step = float(np.median(np.diff(np.sort(logs)))) if logs.size > 1 else 1.0
+    pos = np.where(values > 0, np.log10(np.where(values > 0, values, 1.0)), logs.min() - max(step, 0.25))
+    ticks, labels = [], []
+    if values.size <= 8:  # few values: label each
+        return pos, [float(v) for v in pos], [f"{v:.3g}" for v in values]
+    if np.any(values <= 0):
+        ticks.append(float(pos[values <= 0][0]))
+        labels.append("0")
+    for decade in range(int(np.floor(logs.min())), int(np.ceil(logs.max())) + 1):
+        if logs.min() - 1e-9 <= decade <= logs.max() + 1e-9:
+            ticks.append(float(decade))
+            labels.append(f"1e{decade}")
+    return pos, ticks, labels
+
+
+def _edges(centres: np.ndarray) -> np.ndarray:
+    c = np.asarray(centres, dtype=float)
+    if c.size == 1:
+        return np.array([c[0] - 0.5, c[0] + 0.5])
+    mid = 0.5 * (c[1:] + c[:-1])
+    return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
+
+
+@styled
+def ply_angle_figure(
+    alpha_deg: ArrayLike,
+    safety_factor: ArrayLike,
+    dominant: Sequence[str] | None = None,
+    thesis_optimum_deg: float | None = 55.0,
+) -> Figure:
+    """Safety factor against the ply angle α of (α/−α/−α/α) (thesis figure 3.2).
+
+    Parameters
+    ----------
+    alpha_deg : array_like, shape (n,)
+        Ply angles [deg].
+    safety_factor : array_like, shape (n,)
+        Tsai-Wu safety factor [-].
+    dominant : sequence of str, optional
+        Dominant stress at each angle ("sigma1", "sigma2", "tau12"), drawn as marker shapes.
+    thesis_optimum_deg : float, optional
+        The thesis's optimum, drawn as a dotted line.
+    """
+    alpha = vector("alpha_deg", alpha_deg)
+    sf = vector("safety_factor", safety_factor, alpha.size)
+    fig, axes = new_figure(1, 1, (8.0, 4.5))
+    ax = axes[0, 0]
+    ax.plot(alpha, sf, color="C0", label="safety factor R")
+    if dominant is not None:
+        dom = np.asarray(dominant, dtype=str)
+        for name, marker, label in (("sigma1", "o", "σ1 dominates"), ("sigma2", "s", "σ2 dominates"),
+                                    ("tau12", "^", "τ12 dominates")):
+            sel = dom == name
+            if sel.any():
+                ax.plot(alpha[sel], sf[sel], marker, ms=4.5, color="C0", mfc="white", label=label)
+    i = int(np.nanargmax(sf))
+    ax.plot(alpha[i], sf[i], **_BEST, label=f"best ±{alpha[i]:g}°: R = {sf[i]:.3g}")
+    if thesis_optimum_deg is not None:
+        ax.axvline(thesis_optimum_deg, color="0.4", ls=":", lw=1.3, label=f"thesis optimum ±{thesis_optimum_deg:g}°")
+    ax.set_xlim(0.0, 90.0)
+    ax.set_ylim(bottom=0.0)
+    ax.set_xticks(np.arange(0, 91, 15))
+    ax.set_xlabel("ply angle α [deg], laminate (α/−α/−α/α)")
+    ax.set_ylabel("Tsai-Wu safety factor R [-]")
+    ax.set_title("Safety factor vs ply orientation (no imbalance)")
+    ax.legend(loc="best")
+    return fig
+
+
+@styled
+def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: ArrayLike,
+                     thesis_best: tuple[float, float] | None = (55.0, 0.0)) -> Figure:
+    """Safety factor map of (α/−α/β/−β)s (thesis figure 3.3), best laminate marked.
+
+    ``safety_factor`` has shape (n_alpha, n_beta).
+    """
+    a = vector("alpha_deg", alpha_deg)
+    b = vector("beta_deg", beta_deg)
+    sf = _grid("safety_factor", safety_factor, (a.size, b.size))
+    fig, axes = new_figure(1, 1, (6.8, 5.6))
+    ax = axes[0, 0]
+    mesh = ax.pcolormesh(_edges(a), _edges(b), sf.T, cmap="viridis", shading="flat")
+    if a.size > 2 and b.size > 2 and np.isfinite(sf).sum() > 4:
+        cs = ax.contour(a, b, sf.T, levels=8, colors="w", linewidths=0.7, alpha=0.8)
+        ax.clabel(cs, fontsize=7, fmt="%.3g")
+    i, j = np.unravel_index(int(np.nanargmax(sf)), sf.shape)
+    ax.plot(a[i], b[j], **_BEST, label=f"best ({a[i]:g}/−{a[i]:g}/{b[j]:g}/−{b[j]:g})s: R = {sf[i, j]:.3g}")
+    if thesis_best is not None:
+        ax.plot(*thesis_best, "X", ms=10, mfc="none", mec="tab:red", mew=1.6,
+                label=f"thesis ({thesis_best[0]:g}/−{thesis_best[0]:g}/{thesis_best[1]:g}/−{thesis_best[1]:g})s")
+    fig.colorbar(mesh, ax=ax, label="Tsai-Wu safety factor R [-]")
+    ax.set_xlabel("α [deg]")
+    ax.set_ylabel("β [deg]")
+    ax.set_title("Safety factor of (α/−α/β/−β)s (no imbalance)")
+    ax.legend(loc="upper left", fontsize=7.5)
+    ax.grid(False)
+    return fig
+
+
+@styled
+def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_imbalance: ArrayLike,
+                          frequency_hz: ArrayLike | None = None) -> Figure:
+    """Safety factor with and without imbalance vs wall thickness at fixed D_o (thesis fig.
+    3.4); optionally the first natural frequency on a second panel. ``wall`` [m]."""
+    t = vector("wall", wall)
+    nrows = 2 if frequency_hz is not None else 1
+    fig, axes = new_figure(nrows, 1, (8.0, 3.2 + 2.6 * (nrows - 1)))
+    ax = axes[0, 0]
+    ax.plot(t * MM_PER_M, vector("with_imbalance", with_imbalance, t.size), "o-", label="with imbalance")
+    ax.plot(t * MM_PER_M, vector("without_imbalance", without_imbalance, t.size), "s--", label="without imbalance")
+    ax.set_ylim(bottom=0.0)
+    ax.set_ylabel("Tsai-Wu safety factor R [-]")
+    ax.set_title("Safety factor vs wall thickness (fixed outer diameter)")
+    ax.legend(loc="best")
+    if frequency_hz is not None:
+        f = vector("frequency_hz", frequency_hz, t.size)
+        axes[1, 0].plot(t * MM_PER_M, f, "o-", color="C2", label="first natural frequency at rest")
+        axes[1, 0].set_ylabel("frequency [Hz]")
+        axes[1, 0].legend(loc="best")
+    axes[-1, 0].set_xlabel("wall thickness [mm]")
+    return fig
+
+
+@styled
+def forced_response_figure(speeds_rpm: ArrayLike, responses: Mapping[str, ArrayLike],
+                           operating_rpm: float | None = None) -> Figure:
+    """Largest shaft orbit against speed for a few designs, e.g. two walls (thesis fig. 3.5,
+    3.9, 3.11). ``responses[label]`` is (n_speeds,) [m]; logarithmic amplitude axis."""
+    speeds = vector("speeds_rpm", speeds_rpm)
+    fig, axes = new_figure(1, 1, (8.0, 4.5))
+    ax = axes[0, 0]
+    for label, values in responses.items():
+        amp = vector(f"responses[{label!r}]", values, speeds.size) * MM_PER_M
+        ax.plot(speeds, np.where(amp > 0, amp, np.nan), label=label)
+    mark_operating(ax, operating_rpm)
+    ax.set_yscale("log")
+    ax.grid(which="minor", alpha=0.12)
+    ax.set_xlim(speeds.min(), speeds.max())
+    ax.set_xlabel("spin speed Ω [rpm]")
+    ax.set_ylabel("max shaft orbit [mm]")
+    ax.set_title("Maximum shaft response to imbalance")
+    ax.legend(loc="best")
+    return fig
+
+
+@styled
+def gain_figure(kp: ArrayLike, safety_factor: ArrayLike, actuator_displacement: ArrayLike,
+                design_kp: float | None = None) -> Figure:
+    """Safety factor and largest actuator displacement at the operating speed vs K_p
+    (thesis figure 3.6). ``kp`` [N/m], displacement [m] (drawn in mm)."""
+    k = vector("kp", kp)
+    fig, axes = new_figure(2, 1, (8.0, 5.8))
+    top, bottom = axes[0, 0], axes[1, 0]
+    top.plot(k, vector("safety_factor", safety_factor, k.size), "o-")
+    top.set_ylabel("Tsai-Wu safety factor R [-]")
+    top.set_ylim(bottom=0.0)
+    bottom.plot(k, vector("actuator_displacement", actuator_displacement, k.size) * MM_PER_M, "o-", color="C1")
+    bottom.set_ylabel("max actuator displacement [mm]")
+    bottom.set_yscale("log")
+    for ax in (top, bottom):
+        ax.set_xscale("log")
+        if design_kp is not None:
+            ax.axvline(design_kp, color="0.4", ls=":", lw=1.3, label=f"design K_p = {design_kp:.3g} N/m")
+            ax.legend(loc="best")
+    bottom.set_xlabel("proportional gain K_p [N/m]")
+    top.set_title("Effect of the proportional gain (operating speed, with imbalance)")
+    return fig
+
+
+@styled
+def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike) -> Figure:
+    """Torsional buckling safety factor T_cr/T vs wall thickness (thesis figure 3.10)."""
+    t = vector("wall", wall)
+    sf = vector("safety_factor", safety_factor, t.size)
+    fig, axes = new_figure(1, 1, (8.0, 4.2))
+    ax = axes[0, 0]
+    ax.plot(t * MM_PER_M, sf, "o-")
+    ax.axhline(1.0, color="tab:red", ls="--", lw=1.3, label="buckling (T_cr = T)")
+    ax.set_yscale("log")
+    ax.grid(which="minor", alpha=0.12)
+    ax.set_xlabel("wall thickness [mm]")
+    ax.set_ylabel("buckling safety factor T_cr / T [-]")
+    ax.set_title("Torsional buckling (smaller of the two torque senses)")
+    ax.legend(loc="best")
+    return fig
+
+
+@styled
+def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str, *,
+                    scale: float = 1.0, best: tuple[float, float] | None = None,
+                    other: Mapping[str, tuple[float, float]] | None = None, log_values: bool = True,
+                    title: str = "") -> Figure:
+    """A quantity over the (K_p, K_d) grid (thesis figures 3.12, 3.15, 3.16).
+
+    Parameters
+    ----------
+    kp, kd : array_like
+        Gains [N/m], [N s/m]; log axes, a zero K_d is drawn one step below the smallest.
+    values : array_like, shape (n_kp, n_kd)
+        The quantity in SI units, multiplied by ``scale`` for display (1e3: m to mm).
+    label : str
+        Colour-bar label with its display unit.
+    best : (kp, kd), optional
+        Marked with a star. ``other``: more labelled points, e.g. ``{"before": (1e7, 0)}``.
+    log_values : bool
+        Logarithmic colour scale.
+    """
+    from matplotlib.colors import LogNorm
+
+    kp_v = vector("kp", kp)
+    kd_v = vector("kd", kd)
+    z = _grid("values", values, (kp_v.size, kd_v.size)) * scale
+    x, xt, xl = _log_positions(kp_v)
+    y, yt, yl = _log_positions(kd_v)
+    fig, axes = new_figure(1, 1, (7.0, 5.4))
+    ax = axes[0, 0]
+    finite = z[np.isfinite(z) & (z > 0)]
+    norm = LogNorm(finite.min(), finite.max()) if log_values and finite.size and finite.max() > finite.min() else None
+    mesh = ax.pcolormesh(_edges(x), _edges(y), z.T, cmap="viridis", norm=norm, shading="flat")
+    if kp_v.size > 2 and kd_v.size > 2 and finite.size > 4:
+        levels = np.geomspace(finite.min(), finite.max(), 9)[1:-1] if norm is not None else 7
+        cs = ax.contour(x, y, z.T, levels=levels, colors="w", linewidths=0.6, alpha=0.8)
+        ax.clabel(cs, fontsize=6.5, fmt="%.3g")
+    points = dict(other or {})
+    if best is not None:
+        bx = x[int(np.argmin(np.abs(kp_v - best[0])))]
+        by = y[int(np.argmin(np.abs(kd_v - best[1])))]
+        ax.plot(bx, by, **_BEST, label=f"best: K_p = {best[0]:.3g} N/m, K_d = {best[1]:.3g} N s/m")
+    for k, (name, (px, py)) in enumerate(points.items()):
+        ix, iy = int(np.argmin(np.abs(kp_v - px))), int(np.argmin(np.abs(kd_v - py)))
+        ax.plot(x[ix], y[iy], "o", ms=9, mfc="none", mec=("tab:red", "w", "tab:orange")[k % 3], mew=1.8,
+                label=f"{name}: K_p = {px:.3g}, K_d = {py:.3g}")
+    fig.colorbar(mesh, ax=ax, label=label)
+    ax.set_xticks(xt, xl)
+    ax.set_yticks(yt, yl)
+    ax.set_xlim(_edges(x)[0], _edges(x)[-1])
+    ax.set_ylim(_edges(y)[0], _edges(y)[-1])
+    ax.set_xlabel("proportional gain K_p [N/m]")
+    ax.set_ylabel("derivative gain K_d [N s/m]")
+    ax.set_title(title)
+    ax.grid(False)
+    if best is not None or points:
+        ax.legend(loc="lower left", fontsize=7.5)
+    return fig
+
+
+@styled
+def response_surface_figure(x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike],
+                            bearings_x: Sequence[float] = ()) -> Figure:
+    """Frequency-response surfaces: shaft orbit over position × speed (thesis figures 3.13,
+    3.14), one 3-D panel per labelled case. ``surfaces[label]`` is (n_nodes, n_speeds) [m];
+    ``x`` the node stations [m]. Panels share the amplitude axis."""
+    from matplotlib.figure import Figure
+
+    xs = vector("x", x)
+    speeds = vector("speeds_rpm", speeds_rpm)
+    n = len(surfaces)
+    fig = Figure(figsize=(6.2 * n, 5.0), layout="constrained")
+    top = max(float(np.nanmax(np.asarray(v))) for v in surfaces.values()) * MM_PER_M
+    X, S = np.meshgrid(xs, speeds, indexing="ij")
+    for k, (label, values) in enumerate(surfaces.items()):
+        z = _grid(f"surfaces[{label!r}]", values, (xs.size, speeds.size)) * MM_PER_M
+        ax = fig.add_subplot(1, n, k + 1, projection="3d")
+        ax.plot_surface(X, S, z, cmap="viridis", vmin=0.0, vmax=top, rstride=1, cstride=max(1, speeds.size // 60),
+                        linewidth=0, antialiased=False)
+        for xb in bearings_x:
+            ax.plot([xb, xb], [speeds.min(), speeds.max()], [0, 0], color="k", lw=1.0)
+        ax.set_zlim(0.0, top)
+        ax.set_xlabel("shaft position x [m]")
+        ax.set_ylabel("speed Ω [rpm]")
+        ax.set_zlabel("orbit [mm]")
+        ax.set_title(f"{label}\npeak {np.nanmax(z):.3g} mm", fontsize=9.5)
+        ax.view_init(elev=28, azim=-125)
+    return fig
+
+
+@styled
+def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
+                       operating_rpm: float | None = None) -> Figure:
+    """Largest shaft orbit during spin-up before and after tuning the gains (thesis figure
+    3.17). ``curves[label]`` is (n_speeds,) [m]; each peak is annotated."""
+    speeds = vector("speeds_rpm", speeds_rpm)
+    fig, axes = new_figure(1, 1, (8.0, 4.6))
+    ax = axes[0, 0]
+    for label, values in curves.items():
+        amp = vector(f"curves[{label!r}]", values, speeds.size) * MM_PER_M
+        (line,) = ax.plot(speeds, amp, label=label)
+        i = int(np.nanargmax(amp))
+        ax.annotate(f"{amp[i]:.3g} mm", (speeds[i], amp[i]), xytext=(4, 4), textcoords="offset points",
+                    color=line.get_color(), fontsize=8.5)
+    mark_operating(ax, operating_rpm)
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlim(speeds.min(), speeds.max())
+    ax.set_xlabel("spin speed Ω [rpm]")
+    ax.set_ylabel("max shaft orbit [mm]")
+    ax.set_title("Spin-up response: design gains and tuned gains")
+    ax.legend(loc="best")
+    return fig
+
+
+@styled
+def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
+                            onset_rpm: ArrayLike | None = None, best: tuple[float, float] | None = None) -> Figure:
+    """Smallest damping ratio at the operating speed over (K_p, K_d); negative (unstable)
+    cells are hatched. ``onset_rpm`` (n_kp, n_kd), NaN where stable over the analysed range,
+    is written in each cell when the grid is small."""
+    kp_v = vector("kp", kp)
+    kd_v = vector("kd", kd)
+    z = _grid("margin", margin, (kp_v.size, kd_v.size))
+    x, xt, xl = _log_positions(kp_v)
+    y, yt, yl = _log_positions(kd_v)
+    fig, axes = new_figure(1, 1, (7.0, 5.4))
+    ax = axes[0, 0]
+    lim = max(float(np.nanmax(np.abs(z))), 1e-6) if np.isfinite(z).any() else 1.0
+    mesh = ax.pcolormesh(_edges(x), _edges(y), z.T, cmap="RdBu", vmin=-lim, vmax=lim, shading="flat")
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    unstable = np.isfinite(z) & (z < 0)
+    if unstable.any():
+        ax.plot(X[unstable], Y[unstable], "x", color="k", ms=8, label="unstable at the operating speed")
+    if onset_rpm is not None and z.size <= 64:
+        onset = _grid("onset_rpm", onset_rpm, z.shape)
+        for i in range(z.shape[0]):
+            for j in range(z.shape[1]):
+                text = "stable" if not np.isfinite(onset[i, j]) else f"{onset[i, j]:.0f} rpm"
+                ax.annotate(text, (x[i], y[j]), ha="center", va="bottom", xytext=(0, 6), textcoords="offset points",
+                            fontsize=6.5)
+    if best is not None:
+        ix = int(np.argmin(np.abs(x - np.log10(max(best[0], 1e-300)))))
+        iy = int(np.argmin(np.abs(y - (np.log10(best[1]) if best[1] > 0 else y.min()))))
+        ax.plot(x[ix], y[iy], **_BEST, label=f"tuned gains {best[0]:.3g} N/m, {best[1]:.3g} N s/m (nearest cell)")
+    fig.colorbar(mesh, ax=ax, label="smallest damping ratio at the operating speed [-]")
+    ax.set_xticks(xt, xl)
+    ax.set_yticks(yt, yl)
+    ax.set_xlabel("proportional gain K_p [N/m]")
+    ax.set_ylabel("derivative gain K_d [N s/m]")
+    ax.set_title("Whirl-stability margin over the actuator gains")
+    ax.grid(False)
+    if unstable.any() or best is not None:
+        ax.legend(loc="lower left", fontsize=7.5)
+    return fig

@@ -1,0 +1,574 @@
+"""The design studies of thesis chapter 3 in one call, with their report section.
+
+:func:`design_studies` runs every study of DESIGN.md §3 (1-6 and the stability margin map of
+8) on one design at a chosen resolution and returns a :class:`DesignStudies` of labelled
+:class:`xarray.Dataset` results (units in attributes) and the headline numbers;
+:func:`design_studies_section` draws the figures and tables for the ``flexshaft run`` report;
+:func:`headline` gives the headline numbers as JSON-ready data, beside the thesis's.
+
+Resolutions (measured on the 2-core machine, baseline design, ``jobs=1``; see docs/studies.md):
+
+* ``"report"``: about 10 s of studies (ply angle every 2.5°, an 8 × 8 two-angle grid including
+  55°, 9 walls, 13 K_p, a 20 × 20 × 300 spin-up map, a 4 × 4 stability map at 16 speeds);
+* ``"full"``: the thesis-figure resolution (1°, 5° grid, 23 walls, 31 K_p, 30 × 30 × 400,
+  8 × 8 × 31); about a minute.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+__all__ = ["DesignStudies", "RESOLUTIONS", "THESIS", "design_studies", "design_studies_section", "headline",
+           "save_study_data"]
+
+_RPM = 60.0 / (2.0 * np.pi)
+
+#: Thesis chapter 3 headline results (Ocalan 2002), for comparison.
+THESIS = {
+    "optimal_angle_deg": 55.0,
+    "best_two_angle_deg": [55.0, 0.0],
+    "best_wall_m": 0.003,
+    "tuned_peak_before_m": 0.038,
+    "tuned_peak_after_m": 0.004,
+}
+
+#: Grids of each resolution. Angles [deg], walls [m], gains [N/m], [N s/m].
+RESOLUTIONS: dict[str, dict[str, Any]] = {
+    "report": {
+        "angles": np.arange(2.5, 90.0, 2.5),
+        "two_angles": np.array([0.0, 15.0, 30.0, 45.0, 55.0, 60.0, 75.0, 90.0]),
+        "walls": np.array([1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0]) * 1e-3,
+        "kp": np.logspace(5, 8, 13),
+        "map_kp": np.logspace(5, 8, 20),
+        "map_kd": np.concatenate([[0.0], np.logspace(1, 4.5, 19)]),
+        "map_speeds": 300,
+        "forced_speeds": 300,
+        "stab_kp": np.array([3e5, 2e6, 1e7, 5e7]),
+        "stab_kd": np.array([0.0, 300.0, 1170.0, 3000.0]),
+        "stab_speeds": 16,
+    },
+    "full": {
+        "angles": np.arange(0.0, 90.01, 1.0),
+        "two_angles": np.arange(0.0, 90.01, 5.0),
+        "walls": np.arange(0.5, 6.01, 0.25) * 1e-3,
+        "kp": np.logspace(5, 8, 31),
+        "map_kp": np.logspace(5, 8, 30),
+        "map_kd": np.concatenate([[0.0], np.logspace(1, 4.5, 29)]),
+        "map_speeds": 400,
+        "forced_speeds": 600,
+        "stab_kp": np.logspace(5, 8, 8),
+        "stab_kd": np.concatenate([[0.0], np.logspace(2, 4, 7)]),
+        "stab_speeds": 31,
+    },
+}
+
+#: Gain pairs of the thesis's frequency-response surfaces (figures 3.13, 3.14).
+SURFACE_GAINS = ((2e6, 1170.0), (3e5, 1170.0))
+#: Walls of the thesis's forced-response view (figure 3.5) [m].
+FORCED_WALLS = (0.001, 0.004)
+#: Ply angles listed in the critical-stress table (Table 3.3) besides the optimum [deg].
+TABLE_ANGLES = (15.0, 30.0, 45.0, 55.0, 60.0, 75.0)
+
+
+@dataclass
+class DesignStudies:
+    """Results of :func:`design_studies` (SI units; datasets carry units in attributes).
+
+    A study that does not apply to the design (no lamina shaft material, no active bearing)
+    is None, with the reason in ``notes``.
+    """
+
+    design_name: str
+    resolution: str
+    operating_speed: float  # rad/s
+    ply_angle: Any = None  # Dataset over alpha [deg]: safety factor and critical-ply stresses
+    two_angle: Any = None  # Dataset over (alpha, beta) [deg]
+    wall: Any = None  # Dataset over wall_thickness [m]
+    forced_response: Any = None  # Dataset (wall_thickness, speed): max shaft orbit [m]
+    gain: Any = None  # Dataset over kp [N/m]
+    buckling: Any = None  # Dataset over wall_thickness [m]
+    spinup_map: Any = None  # Dataset over (kp, kd)
+    surfaces: Any = None  # Dataset (case, x, speed): shaft orbit [m]
+    tuned: Any = None  # Dataset (case, speed): before/after spin-up curves
+    stability_map: Any = None  # Dataset over (kp, kd): onset speed, damping ratio
+    optimal_angle: float | None = None  # deg
+    optimal_angle_safety_factor: float | None = None
+    best_two_angle: tuple[float, float] | None = None  # (alpha, beta) deg
+    best_two_angle_safety_factor: float | None = None
+    best_wall: float | None = None  # m, largest safety factor with imbalance
+    best_wall_safety_factor: float | None = None
+    gains_before: tuple[float, float] | None = None  # (kp, kd) of the design
+    gains_after: tuple[float, float] | None = None  # tuned (kp, kd)
+    peak_before: float | None = None  # m, refined spin-up peak
+    peak_after: float | None = None  # m
+    peak_speed_before: float | None = None  # rad/s
+    peak_speed_after: float | None = None  # rad/s
+    actuator_gap: float | None = None  # m, limit used for the tuned gains
+    timings: dict = field(default_factory=dict)  # study -> seconds
+    notes: list = field(default_factory=list)
+
+    @property
+    def elapsed(self) -> float:
+        """Total time of the studies [s]."""
+        return float(sum(self.timings.values()))
+
+
+def _reporter(progress) -> Callable[[str], None]:
+    if callable(progress):
+        return progress
+    return lambda label: None
+
+
+def design_studies(design=None, resolution: str = "report", progress=None, jobs: int = 1,
+                   actuator_gap: float | None = None) -> DesignStudies:
+    """Run the thesis chapter-3 studies on ``design`` (default: the embedded baseline).
+
+    Parameters
+    ----------
+    design : Design, optional
+    resolution : {"report", "full"}
+        Grid sizes, see :data:`RESOLUTIONS`.
+    progress : callable or bool, optional
+        A callable is called with a short label before each study (like
+        :func:`flexshaft.studies.run.run_analysis`); True shows the sweeps' progress bars.
+    jobs : int
+        Local worker processes for the sweep-engine studies (1: in process; below ~5 s of
+        work the process start-up costs more than it saves).
+    actuator_gap : float, optional
+        Largest allowed actuator relative orbit during spin-up [m] when choosing the tuned
+        gains (the auxiliary-bearing gap, thesis figure 3.8); None: no limit.
+    """
+    from flexshaft.assembly import build_model
+    from flexshaft.design import baseline_design
+    from flexshaft.sweep import studies as st
+
+    if resolution not in RESOLUTIONS:
+        raise ValueError(f"resolution must be one of {sorted(RESOLUTIONS)}, got {resolution!r}")
+    grid = RESOLUTIONS[resolution]
+    design = design if design is not None else baseline_design()
+    step = _reporter(progress)
+    run = {"jobs": int(jobs), "progress": progress is True}
+    model = build_model(design)
+    res = DesignStudies(design_name=str(design.name), resolution=resolution, operating_speed=float(model.speed),
+                        actuator_gap=actuator_gap)
+    laminated = model.shaft.laminate is not None
+    active = bool(model.actuators) and model.all_pd
+
+    def timed(name, label, func, *args, **kw):
+        step(label)
+        t0 = time.perf_counter()
+        try:
+            return func(*args, **kw)
+        finally:
+            res.timings[name] = time.perf_counter() - t0
+
+    if laminated:
+        ds = timed("ply_angle", "study 1: ply angle", st.ply_angle_study, grid["angles"], design=design, **run)
+        res.ply_angle = ds
+        i = int(np.nanargmax(ds["safety_factor"].values))
+        res.optimal_angle = float(ds.alpha.values[i])
+        res.optimal_angle_safety_factor = float(ds["safety_factor"].values[i])
+        a = grid["two_angles"]
+        ds = timed("two_angle", "study 2: two-angle map", st.two_angle_study, a, a, design=design, **run)
+        res.two_angle = ds
+        i, j = np.unravel_index(int(np.nanargmax(ds["safety_factor"].values)), ds["safety_factor"].shape)
+        res.best_two_angle = (float(ds.alpha.values[i]), float(ds.beta.values[j]))
+        res.best_two_angle_safety_factor = float(ds["safety_factor"].values[i, j])
+    else:
+        res.notes.append("ply-angle studies skipped: the shaft material is not a lamina")
+
+    ds = timed("wall", "study 3: wall thickness", st.wall_thickness_study, grid["walls"], design=design, **run)
+    res.wall = ds
+    if laminated:
+        sf = ds["safety_factor"].values
+        i = int(np.nanargmax(sf))
+        res.best_wall, res.best_wall_safety_factor = float(ds.wall_thickness.values[i]), float(sf[i])
+        if i in (0, sf.size - 1):
+            res.notes.append(f"the best wall ({res.best_wall * 1e3:g} mm) is at the end of the range studied: "
+                             "the safety factor is monotonic there")
+    res.forced_response = timed("forced_response", "study 3: forced response", _forced_response, design,
+                                FORCED_WALLS, grid["forced_speeds"])
+
+    if laminated and active and _both_actuators(design):
+        res.gain = timed("gain", "study 4: proportional gain", st.proportional_gain_study, grid["kp"], design=design, **run)
+    elif laminated:
+        res.notes.append("the K_p study needs the baseline's two active bearings (design bearings 1 and 2)")
+    if laminated:
+        res.buckling = timed("buckling", "study 5: torsional buckling", st.buckling_study, grid["walls"],
+                             design=design, **run)
+
+    if active:
+        timed("spinup", "study 6: spin-up gain map", _spinup_studies, res, model, grid)
+        timed("stability", "stability margin map", _stability_map, res, design, model, grid)
+    else:
+        res.notes.append("spin-up and stability maps need PD active bearings; skipped")
+    return res
+
+
+def _both_actuators(design) -> bool:
+    kinds = [b.kind for b in design.bearings]
+    return len(kinds) > 2 and kinds[1] == "active" and kinds[2] == "active"
+
+
+def _forced_response(design, walls, n_speeds: int):
+    """Largest shaft orbit vs speed (2 %–130 % of the operating speed) for a few walls."""
+    import xarray as xr
+
+    from flexshaft.analyses import imbalance_response
+    from flexshaft.analyses.response import orbit_amplitude
+    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
+    from flexshaft.assembly import build_model
+    from flexshaft.assembly.loads import imbalance_loads
+    from flexshaft.design import with_overrides
+
+    peaks = []
+    speeds = None
+    for wall in walls:
+        model = build_model(with_overrides(design, {"shaft.wall_thickness": float(wall)}))
+        speeds = np.linspace(0.02, 1.3, n_speeds) * max(model.speed, 1.0)
+        if model.actuators:
+            rec = actuator_receptance(model, speeds)
+            peaks.append(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak)
+        else:
+            q = imbalance_response(model, speeds, imbalance_loads(model))
+            dm = model.dofs
+            n = np.arange(dm.n_shaft_nodes)
+            peaks.append(orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")]).max(axis=(0, 1)))
+    return xr.Dataset(
+        {"shaft_peak": (("wall_thickness", "speed"), np.array(peaks),
+                        {"units": "m", "long_name": "largest shaft orbit over the nodes"})},
+        coords={"wall_thickness": ("wall_thickness", np.asarray(walls, float), {"units": "m"}),
+                "speed": ("speed", speeds, {"units": "rad/s", "long_name": "spin speed"})},
+        attrs={"title": "forced response vs wall thickness (thesis figure 3.5)"},
+    )
+
+
+def _refined_peak(model, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81) -> tuple[float, float]:
+    """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak."""
+    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
+
+    i = int(np.argmax(curve))
+    lo, hi = speeds[max(i - 1, 0)], speeds[min(i + 1, speeds.size - 1)]
+    fine = np.linspace(lo, hi, n)
+    peak = spinup_curves(actuator_receptance(model, fine), controllers).shaft_peak
+    k = int(np.argmax(peak))
+    if peak[k] >= curve[i]:
+        return float(peak[k]), float(fine[k])
+    return float(curve[i]), float(speeds[i])
+
+
+def _clustered_speeds(model, controllers, speeds: np.ndarray, n_peaks: int = 3, n_fine: int = 33) -> np.ndarray:
+    """``speeds`` plus fine clusters around the largest resonance peaks of the design's own
+    spin-up curve: lightly damped modes that the gains hardly move (nodes at the actuators)
+    are otherwise sampled unevenly from one gain pair to the next."""
+    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
+
+    curve = spinup_curves(actuator_receptance(model, speeds), controllers).shaft_peak
+    inner = np.flatnonzero((curve[1:-1] >= curve[:-2]) & (curve[1:-1] >= curve[2:])) + 1
+    peaks = inner[np.argsort(curve[inner])[::-1][:n_peaks]]
+    extra = [np.linspace(speeds[k - 1], speeds[k + 1], n_fine) for k in peaks]
+    return np.unique(np.concatenate([speeds, *extra]))
+
+
+def _spinup_studies(res: DesignStudies, model, grid) -> None:
+    """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance."""
+    import xarray as xr
+
+    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map, spinup_speeds
+    from flexshaft.assembly.model import Controller
+
+    before = [a.controller for a in model.actuators]  # the design's own laws
+    speeds = _clustered_speeds(model, before, spinup_speeds(model, grid["map_speeds"]))
+    rec = actuator_receptance(model, speeds)
+    smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
+    ds = smap.to_dataset()
+    ds.attrs["title"] = "spin-up peaks over the actuator gains (thesis figures 3.12, 3.15, 3.16)"
+    res.spinup_map = ds
+    first = model.actuators[0].controller
+    res.gains_before = (float(first.kp), float(first.kd))
+    # The best pair on the sampled speeds may owe its rank to a resonance that falls between
+    # samples: refine the peak of the few best candidates and keep the best refined one.
+    ok = np.ones(smap.shaft_peak.shape, bool)
+    if res.actuator_gap is not None:
+        ok &= smap.actuator_displacement_peak.max(axis=-1) <= res.actuator_gap
+    if not ok.any():
+        raise ValueError(f"no gain pair keeps the actuator orbit within the gap {res.actuator_gap} m")
+    order = np.argsort(np.where(ok, smap.shaft_peak, np.inf), axis=None)[: min(8, int(ok.sum()))]
+    best = None
+    for flat in order:
+        i, j = np.unravel_index(int(flat), smap.shaft_peak.shape)
+        law = [Controller.pd(float(smap.kp[i]), float(smap.kd[j]))] * rec.n_actuators
+        peak, _ = _refined_peak(model, law, rec.speeds, spinup_curves(rec, law).shaft_peak)
+        if best is None or peak < best[0]:
+            best = (peak, float(smap.kp[i]), float(smap.kd[j]))
+    _, kp_a, kd_a = best
+    res.gains_after = (kp_a, kd_a)
+
+    cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]
+    orbits = [spinup_curves(rec, (kp, kd)).shaft_orbit for _, kp, kd in cases]
+    res.surfaces = xr.Dataset(
+        {"shaft_orbit": (("case", "x", "speed"), np.array(orbits), {"units": "m", "long_name": "shaft orbit major semi-axis"})},
+        coords={"case": [c[0] for c in cases], "kp": ("case", [c[1] for c in cases], {"units": "N/m"}),
+                "kd": ("case", [c[2] for c in cases], {"units": "N s/m"}),
+                "x": ("x", rec.shaft_x, {"units": "m", "long_name": "shaft station"}),
+                "speed": ("speed", rec.speeds, {"units": "rad/s"})},
+        attrs={"title": "frequency-response surfaces (thesis figures 3.13, 3.14)"},
+    )
+
+    after = [Controller.pd(kp_a, kd_a)] * rec.n_actuators
+    curves = [spinup_curves(rec, c) for c in (before, after)]
+    refined = [_refined_peak(model, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
+    (res.peak_before, res.peak_speed_before), (res.peak_after, res.peak_speed_after) = refined
+    res.tuned = xr.Dataset(
+        {
+            "shaft_peak": (("case", "speed"), np.array([c.shaft_peak for c in curves]),
+                           {"units": "m", "long_name": "largest shaft orbit over the nodes"}),
+            "actuator_displacement": (("case", "actuator", "speed"), np.array([c.actuator_displacement for c in curves]),
+                                      {"units": "m"}),
+            "actuator_force": (("case", "actuator", "speed"), np.array([c.actuator_force for c in curves]), {"units": "N"}),
+            "refined_peak": ("case", [r[0] for r in refined], {"units": "m", "long_name": "peak on a refined speed grid"}),
+        },
+        coords={"case": ["design gains", "tuned gains"],
+                "kp": ("case", [res.gains_before[0], kp_a], {"units": "N/m"}),
+                "kd": ("case", [res.gains_before[1], kd_a], {"units": "N s/m"}),
+                "actuator": list(rec.actuator_names), "speed": ("speed", rec.speeds, {"units": "rad/s"})},
+        attrs={"title": "tuned gains (thesis figure 3.17)"},
+    )
+
+
+def _stability_map(res: DesignStudies, design, model, grid) -> None:
+    import xarray as xr
+
+    from flexshaft.studies.whirl import gain_stability_map
+
+    speeds = np.linspace(0.0, 1.5 * max(model.speed, 1.0), grid["stab_speeds"])
+    smap = gain_stability_map(design, grid["stab_kp"], grid["stab_kd"], speeds, n_modes=8)
+    res.stability_map = xr.Dataset(
+        {"onset_speed": (("kp", "kd"), smap.onset_speed, {"units": "rad/s", "long_name": "whirl onset speed (NaN: stable)"}),
+         "damping_ratio": (("kp", "kd"), smap.margin_at_operating,
+                           {"units": "1", "long_name": "smallest damping ratio at the operating speed"})},
+        coords={"kp": ("kp", smap.kp, {"units": "N/m"}), "kd": ("kd", smap.kd, {"units": "N s/m"})},
+        attrs={"title": "whirl-stability margin over the actuator gains", "max_speed_rad_s": smap.max_speed},
+    )
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def _f(value) -> float | None:
+    if value is None:
+        return None
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
+def headline(results: DesignStudies) -> dict:
+    """The studies' headline numbers beside the thesis's, JSON-ready (SI units)."""
+    r = results
+    out = {
+        "design": r.design_name,
+        "resolution": r.resolution,
+        "elapsed_s": round(r.elapsed, 3),
+        "optimal_angle_deg": _f(r.optimal_angle),
+        "optimal_angle_safety_factor": _f(r.optimal_angle_safety_factor),
+        "best_two_angle_deg": list(r.best_two_angle) if r.best_two_angle else None,
+        "best_two_angle_layup": _two_angle_name(r.best_two_angle) if r.best_two_angle else None,
+        "best_two_angle_safety_factor": _f(r.best_two_angle_safety_factor),
+        "best_wall_m": _f(r.best_wall),
+        "best_wall_safety_factor": _f(r.best_wall_safety_factor),
+        "gains_before": {"kp_N_per_m": _f(r.gains_before[0]), "kd_N_s_per_m": _f(r.gains_before[1])} if r.gains_before else None,
+        "gains_after": {"kp_N_per_m": _f(r.gains_after[0]), "kd_N_s_per_m": _f(r.gains_after[1])} if r.gains_after else None,
+        "peak_deflection_before_m": _f(r.peak_before),
+        "peak_deflection_after_m": _f(r.peak_after),
+        "peak_speed_before_rpm": _f(None if r.peak_speed_before is None else r.peak_speed_before * _RPM),
+        "peak_speed_after_rpm": _f(None if r.peak_speed_after is None else r.peak_speed_after * _RPM),
+        "actuator_gap_m": _f(r.actuator_gap),
+        "thesis": dict(THESIS),
+        "timings_s": {k: round(float(v), 3) for k, v in r.timings.items()},
+        "notes": list(r.notes),
+    }
+    if r.ply_angle is not None:
+        out["ply_angle_safety_factor_at_55_deg"] = _f(_nearest(r.ply_angle, "alpha", 55.0)["safety_factor"])
+    if r.two_angle is not None:
+        out["two_angle_safety_factor_at_55_0"] = _f(r.two_angle["safety_factor"].sel(alpha=55.0, beta=0.0, method="nearest"))
+    return out
+
+
+_DATASETS = ("ply_angle", "two_angle", "wall", "forced_response", "gain", "buckling", "spinup_map", "surfaces",
+             "tuned", "stability_map")
+
+
+def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Path]:
+    """Write every study's Dataset to ``folder/study_NAME.nc`` (netCDF, units in attributes)
+    and the headline to ``folder/design_studies.json``; returns the paths by name."""
+    from flexshaft.sweep.run import _write_netcdf
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = {}
+    for name in _DATASETS:
+        ds = getattr(results, name)
+        if ds is not None:
+            paths[name] = folder / f"study_{name}.nc"
+            _write_netcdf(ds, paths[name])
+    paths["headline"] = folder / "design_studies.json"
+    paths["headline"].write_text(json.dumps(headline(results), indent=2))
+    return paths
+
+
+def _nearest(ds, dim: str, value: float):
+    return ds.sel({dim: value}, method="nearest")
+
+
+def _two_angle_name(pair) -> str:
+    a, b = (f"{v:g}" for v in pair)
+    return f"({a}/-{a}/{b}/-{b})s".replace("/-0/", "/0/").replace("/-0)", "/0)")
+
+
+_STRESS_NAMES = {0: "σ1", 1: "σ2", 2: "τ12"}
+
+
+def design_studies_section(results: DesignStudies, folder: str | Path):
+    """The "Design studies" section of the ``flexshaft run`` report: figures saved in
+    ``folder`` (PNG and SVG, names ``study_*``) and the tables of the headline numbers."""
+    from flexshaft.report import study_figures as sf
+    from flexshaft.report.figures import save_figure
+    from flexshaft.report.html import FigureRef, Section, Table
+
+    r = results
+    folder = Path(folder)
+    op_rpm = r.operating_speed * _RPM
+    figs, tables = [], []
+
+    def add(fig, stem, caption):
+        figs.append(FigureRef(save_figure(fig, folder, stem)["png"], caption))
+
+    rows = []
+    if r.optimal_angle is not None:
+        at55 = float(_nearest(r.ply_angle, "alpha", 55.0)["safety_factor"])
+        rows.append(["1. one ply angle (α/−α/−α/α), no imbalance", f"±{r.optimal_angle:g}° (R = {r.optimal_angle_safety_factor:.3g}; "
+                     f"±55°: R = {at55:.3g})", "±55°"])
+    if r.best_two_angle is not None:
+        rows.append(["2. two ply angles (α/−α/β/−β)s, no imbalance",
+                     f"{_two_angle_name(r.best_two_angle)} (R = {r.best_two_angle_safety_factor:.3g})", "(55/−55/0/0)s"])
+    if r.best_wall is not None:
+        rows.append(["3. wall thickness (largest R with imbalance)", f"{r.best_wall * 1e3:g} mm (R = {r.best_wall_safety_factor:.3g})",
+                     "~3 mm"])
+    if r.gains_after is not None:
+        rows.append(["6. tuned gains: peak spin-up deflection",
+                     f"{r.peak_before * 1e3:.3g} mm at K_p = {r.gains_before[0]:.3g}, K_d = {r.gains_before[1]:.3g} → "
+                     f"{r.peak_after * 1e3:.3g} mm at K_p = {r.gains_after[0]:.3g} N/m, K_d = {r.gains_after[1]:.3g} N s/m",
+                     "38 mm → 4 mm"])
+    tables.append(Table("Headline results beside the thesis's", ["study", "this design", "thesis"], rows))
+
+    if r.ply_angle is not None:
+        ds = r.ply_angle
+        alpha = ds.alpha.values
+        dom = [sf_name for sf_name in (_code_name(c) for c in ds["dominant_stress"].values)]
+        add(sf.ply_angle_figure(alpha, ds["safety_factor"].values, dom), "study_ply_angle",
+            "Safety factor vs ply orientation, one angle variable, no imbalance (thesis figure 3.2)")
+        wanted = sorted({r.optimal_angle, *TABLE_ANGLES})
+        trows = []
+        for a in wanted:
+            p = _nearest(ds, "alpha", a)
+            trows.append([float(p.alpha), float(p["safety_factor"]), float(p["critical_ply_angle"]), float(p["critical_x"]),
+                          float(p["sigma1"]) / 1e6, float(p["sigma2"]) / 1e6, float(p["tau12"]) / 1e6,
+                          _STRESS_NAMES.get(int(p["dominant_stress"]), "?")])
+        tables.append(Table("Most critical loading of the composite shaft (thesis Table 3.3), lamina axes",
+                            ["α [deg]", "R", "critical ply [deg]", "x [m]", "σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]", "dominant"],
+                            trows))
+    if r.two_angle is not None:
+        ds = r.two_angle
+        add(sf.two_angle_figure(ds.alpha.values, ds.beta.values, ds["safety_factor"].values), "study_two_angle",
+            "Safety factor of (α/−α/β/−β)s laminates, no imbalance (thesis figure 3.3)")
+    if r.wall is not None:
+        ds = r.wall
+        if np.isfinite(ds["safety_factor"].values).any():
+            add(sf.wall_thickness_figure(ds.wall_thickness.values, ds["safety_factor"].values,
+                                         ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values),
+                "study_wall", "Safety factor with and without imbalance and the first natural frequency vs wall "
+                              "thickness at fixed outer diameter (thesis figure 3.4, eq. 3.3)")
+    if r.forced_response is not None:
+        ds = r.forced_response
+        add(sf.forced_response_figure(ds.speed.values * _RPM,
+                                      {f"wall {w * 1e3:g} mm": ds["shaft_peak"].values[k] for k, w in enumerate(ds.wall_thickness.values)},
+                                      op_rpm), "study_forced_response",
+            "Maximum shaft response to imbalance for two walls (thesis figure 3.5)")
+    if r.gain is not None:
+        ds = r.gain
+        add(sf.gain_figure(ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values,
+                           r.gains_before[0] if r.gains_before else None), "study_gain",
+            "Safety factor and actuator displacement at the operating speed vs K_p (thesis figure 3.6)")
+    if r.buckling is not None:
+        ds = r.buckling
+        add(sf.buckling_figure(ds.wall_thickness.values, ds["buckling_safety_factor"].values), "study_buckling",
+            "Torsional buckling safety factor vs wall thickness (thesis figure 3.10)")
+    if r.spinup_map is not None:
+        ds = r.spinup_map
+        other = {"design": r.gains_before}
+        for var, scale, label, stem, caption in (
+            ("shaft_peak", 1e3, "max spin-up shaft orbit [mm]", "study_map_deflection",
+             "Maximum spin-up shaft deflection vs control gains (thesis figure 3.12)"),
+            ("actuator_displacement_peak", 1e3, "max actuator displacement [mm]", "study_map_actuator_displacement",
+             "Maximum shaft displacement at the actuators vs control gains (thesis figure 3.15)"),
+            ("actuator_force_peak", 1.0, "max actuator force [N]", "study_map_actuator_force",
+             "Maximum actuator force vs control gains (thesis figure 3.16)"),
+        ):
+            values = ds[var].values if ds[var].ndim == 2 else ds[var].values.max(axis=-1)
+            add(sf.gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=r.gains_after,
+                                   other=other, title=caption.split(" (")[0]), stem, caption)
+    if r.surfaces is not None:
+        ds = r.surfaces
+        add(sf.response_surface_figure(ds.x.values, ds.speed.values * _RPM,
+                                       {str(c): ds["shaft_orbit"].values[k] for k, c in enumerate(ds.case.values)}),
+            "study_response_surfaces", "Frequency-response surfaces during spin-up (thesis figures 3.13, 3.14)")
+    if r.tuned is not None:
+        ds = r.tuned
+        curves = {f"{c}: K_p = {float(ds.kp[k]):.3g} N/m, K_d = {float(ds.kd[k]):.3g} N s/m": ds["shaft_peak"].values[k]
+                  for k, c in enumerate(ds.case.values)}
+        add(sf.tuned_gains_figure(ds.speed.values * _RPM, curves, op_rpm), "study_tuned_gains",
+            "Spin-up response with the design gains and the tuned gains (thesis figure 3.17)")
+        trows = []
+        for k, c in enumerate(ds.case.values):
+            peak = r.peak_before if k == 0 else r.peak_after
+            speed = r.peak_speed_before if k == 0 else r.peak_speed_after
+            trows.append([str(c), float(ds.kp[k]), float(ds.kd[k]), peak * 1e3, speed * _RPM,
+                          float(ds["actuator_displacement"].values[k].max()) * 1e3, float(ds["actuator_force"].values[k].max())])
+        tables.append(Table("Spin-up with the design and the tuned gains (peaks refined on a fine speed grid)",
+                            ["gains", "K_p [N/m]", "K_d [N s/m]", "peak deflection [mm]", "at [rpm]",
+                             "max actuator displacement [mm]", "max actuator force [N]"], trows))
+    if r.stability_map is not None:
+        ds = r.stability_map
+        add(sf.stability_margin_figure(ds.kp.values, ds.kd.values, ds["damping_ratio"].values,
+                                       ds["onset_speed"].values * _RPM, r.gains_after), "study_stability_margin",
+            "Smallest damping ratio at the operating speed over the actuator gains (whirl onset speed per cell)")
+
+    paragraphs = [
+        f"Thesis chapter 3 studies at the {r.resolution!r} resolution ({r.elapsed:.1f} s). Studies 1 and 2 run without "
+        "imbalance; study 3 with and without it; the spin-up studies use the synchronous imbalance response at every "
+        "speed up to the operating speed with the same PD law on every active bearing. Peaks over speed are the "
+        "largest values at the sampled speeds; the tuned-gain peaks are refined on a fine grid around the peak.",
+        "One ply angle: on the assumed lamina (E_T = 0.10 GPa, G_LT = 0.035 GPa) a (±α) laminate with a free hoop "
+        "has a matrix-dominated axial modulus E* (about 0.1 GPa for α ≥ 45°), so the shaft sags between its bearings "
+        "under the 3.5 g manoeuvre load and the transverse ply stress σ2 against Y_t = 5.1 MPa governs. At exactly "
+        "45° the fibre scissoring is pure ply shear (σ2 from bending vanishes), hence the sharp optimum there; the "
+        "thesis's ±55° is not reproduced with these assumed properties and loads (docs/studies.md).",
+    ]
+    paragraphs += list(r.notes)
+    return Section("Design studies (thesis chapter 3)", paragraphs=paragraphs, tables=tables, figures=figs)
+
+
+def _code_name(code) -> str:
+    from flexshaft.sweep.studies import DOMINANT_STRESS_CODES
+
+    try:
+        return DOMINANT_STRESS_CODES[int(code)]
+    except (ValueError, KeyError):
+        return "?"

@@ -1,0 +1,129 @@
+"""Thesis chapter-3 studies: labelled outputs with units, a closed form (eq. 3.3), and the
+report-resolution ``design_studies`` on a reduced mesh with its report section rendered."""
+
+from __future__ import annotations
+
+import json
+import time
+
+import numpy as np
+import pytest
+
+xr = pytest.importorskip("xarray")
+pytest.importorskip("matplotlib")
+
+from flexshaft.design import baseline_design, with_overrides
+from flexshaft.sweep.studies import DOMINANT_STRESS_CODES, ply_angle_study, wall_thickness_study
+
+COARSE = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
+
+
+@pytest.fixture(scope="module")
+def coarse():
+    return with_overrides(baseline_design(), COARSE)
+
+
+def test_ply_angle_study_is_labelled_and_peaks_at_45_degrees(coarse):
+    ds = ply_angle_study([30.0, 40.0, 45.0, 50.0, 60.0], design=coarse, progress=False)
+    assert ds["safety_factor"].dims == ("alpha",)
+    assert ds.alpha.attrs["units"] == "deg"
+    for name, units in (("safety_factor", "1"), ("sigma1", "Pa"), ("sigma2", "Pa"), ("tau12", "Pa"),
+                        ("critical_ply_angle", "deg"), ("critical_x", "m")):
+        assert ds[name].attrs["units"] == units and ds[name].attrs["long_name"]
+    assert set(ds["dominant_stress"].values.astype(int)) <= set(DOMINANT_STRESS_CODES)
+    # no imbalance in study 1: the total equals the static safety factor
+    np.testing.assert_allclose(ds["safety_factor"], ds["safety_factor_static"])
+    # the critical ply is one of the laminate's (±α)
+    np.testing.assert_allclose(np.abs(ds["critical_ply_angle"].values), ds.alpha.values)
+    # the cusp at 45°: scissoring of a (±45) wall is pure ply shear, σ2 from bending vanishes
+    sf = ds["safety_factor"].values
+    assert np.argmax(sf) == 2
+    s2 = np.abs(ds["sigma2"].values)
+    assert s2[2] < 0.1 * s2[[0, 1, 3, 4]].min()
+
+
+def _plain_shaft(design):
+    """Aluminium tube on two stiff contact bearings at its ends, no tailboom, no actuators."""
+    b = design.bearings
+    return with_overrides(design, {
+        "tailboom": None, "loads.point": [], "shaft.material": "al6061_t6", "shaft.layup": None,
+        "bearings": [b[0].model_dump(exclude_none=True), b[-1].model_dump(exclude_none=True)],
+        "mesh.shaft_elements": 40,
+    })
+
+
+def test_wall_study_first_frequency_follows_eq_3_3():
+    """At fixed D_o, a pinned-pinned isotropic tube's ω_n = A_n √(E/ρ) √(D_o² + D_i²) / L²
+    (thesis eq. 3.3): the frequency falls as the wall thickens."""
+    plain = _plain_shaft(baseline_design())
+    walls = np.array([0.0015, 0.003, 0.006, 0.012])
+    ds = wall_thickness_study(walls, design=plain, progress=False)
+    f = ds["natural_frequency_1"]
+    assert f.attrs["units"] == "Hz" and ds.wall_thickness.attrs["units"] == "m"
+    assert np.isnan(ds["safety_factor"]).all()  # no ply strength for an isotropic shaft
+    do = plain.shaft.outer_diameter
+    di = do - 2 * walls
+    closed = np.sqrt(do**2 + di**2)
+    np.testing.assert_allclose(f.values / f.values[0], closed / closed[0], rtol=2e-3)
+    assert np.all(np.diff(f.values) < 0)
+    # and the absolute value: (π/L)² √(EI/ρA) / 2π, pinned-pinned Euler-Bernoulli
+    mat = plain.materials["al6061_t6"]
+    L = plain.shaft.length
+    area = np.pi / 4 * (do**2 - di**2)
+    inertia = np.pi / 64 * (do**4 - di**4)
+    exact = (np.pi / L) ** 2 * np.sqrt(mat.E * inertia / (mat.density * area)) / (2 * np.pi)
+    np.testing.assert_allclose(f.values, exact, rtol=5e-3)
+
+
+def test_design_studies_report_level_renders(coarse, tmp_path):
+    from flexshaft.report.html import render_report
+    from flexshaft.studies.chapter3 import design_studies, design_studies_section, headline, save_study_data
+
+    labels = []
+    t0 = time.perf_counter()
+    res = design_studies(coarse, "report", progress=labels.append)
+    elapsed = time.perf_counter() - t0
+    assert elapsed < 25.0
+    assert labels and labels[0].startswith("study 1")
+    # labelled datasets with units
+    assert res.ply_angle["safety_factor"].attrs["units"] == "1"
+    assert res.two_angle["safety_factor"].dims == ("alpha", "beta")
+    assert res.wall["spinup_peak_deflection"].attrs["units"] == "m"
+    assert res.forced_response["shaft_peak"].dims == ("wall_thickness", "speed")
+    assert res.gain.kp.attrs["units"] == "N/m"
+    assert res.buckling["buckling_safety_factor"].dims == ("wall_thickness",)
+    assert res.spinup_map["shaft_peak"].attrs["units"] == "m"
+    assert res.surfaces["shaft_orbit"].dims == ("case", "x", "speed")
+    assert res.stability_map["onset_speed"].attrs["units"] == "rad/s"
+    # headline numbers: consistent with the datasets
+    assert res.optimal_angle == float(res.ply_angle["safety_factor"].idxmax("alpha"))
+    assert res.best_two_angle_safety_factor == pytest.approx(float(res.two_angle["safety_factor"].max()))
+    assert res.gains_before == (1e7, 0.0)
+    assert res.peak_after <= res.peak_before
+    assert float(res.tuned["refined_peak"][0]) == pytest.approx(res.peak_before)
+    # the refined peak is at least the sampled one
+    assert res.peak_before >= float(res.tuned["shaft_peak"][0].max()) * (1 - 1e-12)
+    data = headline(res)
+    text = json.dumps(data, allow_nan=False)
+    assert data["thesis"]["optimal_angle_deg"] == 55.0 and "peak_deflection_after_m" in text
+
+    section = design_studies_section(res, tmp_path)
+    assert len(section.figures) == 12
+    for fig in section.figures:
+        assert fig.path_png.is_file() and fig.path_png.with_suffix(".svg").is_file()
+    captions = " ".join(t.caption for t in section.tables)
+    assert "Table 3.3" in captions
+    page = render_report("studies", [section])
+    assert page.count("<figure") == 12 and "Design studies" in page
+
+    paths = save_study_data(res, tmp_path / "data")
+    back = xr.load_dataset(paths["spinup_map"])
+    assert back["shaft_peak"].attrs["units"] == "m" and back.kd.attrs["units"] == "N s/m"
+    assert json.loads(paths["headline"].read_text())["optimal_angle_deg"] == res.optimal_angle
+
+
+def test_unknown_resolution_is_refused():
+    from flexshaft.studies.chapter3 import design_studies
+
+    with pytest.raises(ValueError, match="resolution"):
+        design_studies(None, "huge")
