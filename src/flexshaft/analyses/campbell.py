@@ -22,7 +22,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
-__all__ = ["Campbell", "CriticalSpeed", "campbell", "modal_basis", "track_modes", "whirl_labels"]
+__all__ = ["Campbell", "EigenvalueCurves", "CriticalSpeed", "campbell", "modal_basis", "track_modes", "whirl_labels"]
 
 _WHIRL_THRESHOLD = 0.1
 
@@ -41,8 +41,35 @@ class CriticalSpeed:
         return self.speed * 60 / (2 * np.pi)
 
 
+class EigenvalueCurves:
+    """Derived quantities of an ``eigenvalues`` array (n_speeds, n_modes) of s [rad/s]."""
+
+    eigenvalues: np.ndarray
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """Damped natural frequencies Im(s)/2π [Hz]."""
+        return self.eigenvalues.imag / (2 * np.pi)
+
+    @property
+    def real_parts(self) -> np.ndarray:
+        """Re(s) [1/s]; positive is unstable."""
+        return self.eigenvalues.real
+
+    @property
+    def damping_ratios(self) -> np.ndarray:
+        """ζ = −Re(s)/|s|."""
+        return -self.eigenvalues.real / np.abs(self.eigenvalues)
+
+    @property
+    def log_decrements(self) -> np.ndarray:
+        """δ = 2π ζ/√(1 − ζ²)."""
+        z = self.damping_ratios
+        return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
+
+
 @dataclass(frozen=True)
-class Campbell:
+class Campbell(EigenvalueCurves):
     """Tracked damped eigenvalues over speed.
 
     Attributes
@@ -63,20 +90,6 @@ class Campbell:
     whirl_ratios: np.ndarray
     critical_speeds: tuple[CriticalSpeed, ...]
 
-    @property
-    def frequencies(self) -> np.ndarray:
-        """Damped natural frequencies [Hz], (n_speeds, n_modes)."""
-        return self.eigenvalues.imag / (2 * np.pi)
-
-    @property
-    def damping_ratios(self) -> np.ndarray:
-        return -self.eigenvalues.real / np.abs(self.eigenvalues)
-
-    @property
-    def log_decrements(self) -> np.ndarray:
-        """δ = 2π ζ/√(1 − ζ²)."""
-        z = self.damping_ratios
-        return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
 
 
 def modal_basis(model: Model, basis_size: int):

@@ -35,7 +35,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.campbell import _mac, _solve_reduced, modal_basis, track_modes, whirl_labels
+from flexshaft.analyses.campbell import EigenvalueCurves, _mac, _solve_reduced, modal_basis, track_modes, whirl_labels
 from flexshaft.analyses.modal import whirl_ratio
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
@@ -59,7 +59,7 @@ def rotation_generator(model: Model) -> sp.csr_matrix:
 
 
 @dataclass(frozen=True)
-class StabilityResult:
+class StabilityResult(EigenvalueCurves):
     """Tracked eigenvalues over speed with the onset of instability.
 
     Attributes
@@ -85,23 +85,6 @@ class StabilityResult:
     onset_speed: float | None
     unstable_mode: int | None
     onset_shape: np.ndarray | None
-
-    @property
-    def real_parts(self) -> np.ndarray:
-        return self.eigenvalues.real
-
-    @property
-    def frequencies(self) -> np.ndarray:
-        return self.eigenvalues.imag / (2 * np.pi)
-
-    @property
-    def damping_ratios(self) -> np.ndarray:
-        return -self.eigenvalues.real / np.abs(self.eigenvalues)
-
-    @property
-    def log_decrements(self) -> np.ndarray:
-        z = self.damping_ratios
-        return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
 
     @property
     def stability_margin(self) -> np.ndarray:
