@@ -113,7 +113,9 @@ def run_flexshaft(elements, max_repeat: int) -> dict:
         _progress(runs[-1])
 
         cs = np.array(case.campbell_speeds())
-        t, ts, (f, w) = _best_of(lambda: fx.campbell(model, cs, case.N_CAMPBELL_FREQ), max_repeat)
+        other = fx.nonlateral_frequencies(model)  # untimed: picks out flexshaft's twist/axial modes
+        t, ts, (f, w) = _best_of(lambda: fx.campbell(model, cs, case.N_CAMPBELL_FREQ, other),
+                                 max_repeat)
         runs.append({"case": "campbell", "n_el": n_el, "time_s": t, "times_s": ts,
                      "build_s": build_s, "path": "sweep" if fx.has_campbell_sweep() else "fallback",
                      "result": {"wd_hz": f, "whirl": w}, "peak_rss_mb": _maxrss_mb()})
@@ -282,16 +284,18 @@ def _jsonable(o):
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--elements", type=int, nargs="+", default=list(case.ELEMENTS))
-    p.add_argument("--ross-json", help="reuse this ross_model.py output instead of running ROSS")
+    p.add_argument("--ross-json", help="reuse a ross_model.py --out (or this script's --save) "
+                                       "file instead of running ROSS")
     p.add_argument("--max-repeat", type=int, default=3, help="best of up to N runs (runs < 10 s)")
     p.add_argument("--save", help="write both sides' times, results and comparisons as JSON")
-    p.add_argument("--blas-threads", type=int,
-                   help="BLAS/OpenMP threads for both codes (sets OPENBLAS/OMP/MKL_NUM_THREADS; "
-                        "default: the libraries' own default, all cores)")
+    p.add_argument("--blas-threads", type=int, default=1,
+                   help="BLAS/OpenMP threads for both codes (sets OPENBLAS/OMP/MKL_NUM_THREADS); "
+                        "default 1: on a small shared machine a busy core makes multi-threaded "
+                        "OpenBLAS stall and the timings erratic; 0 = the libraries' default")
     p.add_argument("--enforce-bars", action="store_true",
                    help="exit 1 when a speed or memory bar is missed, not only on disagreement")
     a = p.parse_args(argv)
-    if a.blas_threads is not None and os.environ.get("OPENBLAS_NUM_THREADS") != str(a.blas_threads):
+    if a.blas_threads and os.environ.get("OPENBLAS_NUM_THREADS") != str(a.blas_threads):
         # thread counts are read when numpy loads: restart with them set (the ROSS child inherits)
         env = dict(os.environ, **{k: str(a.blas_threads) for k in THREAD_VARS})
         os.execve(sys.executable, [sys.executable, os.path.abspath(__file__), *sys.argv[1:]], env)
@@ -300,6 +304,7 @@ def main(argv=None) -> int:
     if a.ross_json:
         with open(a.ross_json) as f:
             ross = json.load(f)
+        ross = ross.get("ross", ross)  # a --save file holds the ROSS output under "ross"
         ross["runs"] = [r for r in ross["runs"] if r["n_el"] in a.elements]
     else:
         ross = run_ross(a.elements, a.max_repeat)

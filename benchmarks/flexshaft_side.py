@@ -135,17 +135,19 @@ def _lateral_mask(model, shapes: np.ndarray) -> np.ndarray:
     return lat > other
 
 
-def _nonlateral_frequencies(model, n_modes: int) -> np.ndarray:
+def nonlateral_frequencies(model, n_modes: int = case.N_CAMPBELL_FREQ + 6) -> np.ndarray:
     """Frequencies [Hz] of the axial/torsional modes among the lowest ``n_modes`` at rest.
 
     They do not depend on speed or on the (lateral) bearing damping here, so they identify the
-    sweep's tracked curves that are not bending modes. Untimed set-up.
+    sweep's tracked curves that are not bending modes. Benchmark set-up: call it outside the
+    timed region and pass the result to :func:`campbell`.
     """
     m = flexshaft.modes(model, 0.0, n_modes=n_modes, damped=False)
     return m.frequencies[~_lateral_mask(model, m.shapes)]
 
 
-def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.ndarray]:
+def campbell(model, speeds: np.ndarray, n_freq: int,
+             nonlateral: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed (sorted) and whirl.
 
     Extra modes are requested because flexshaft's clamped-in-twist shaft has torsional and
@@ -156,7 +158,7 @@ def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.nda
         c = _campbell_call(model, speeds, n_req)
         freqs = np.asarray(c.frequencies)
         whirl = np.asarray(c.whirl)
-        other = _nonlateral_frequencies(model, n_req)
+        other = nonlateral_frequencies(model, n_req) if nonlateral is None else nonlateral
         f0 = freqs[0]
         lateral = np.array([not np.any(np.abs(other - f) <= 1e-6 * f) for f in f0])
         freqs, whirl = freqs[:, lateral], whirl[:, lateral]
