@@ -32,7 +32,7 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     assert thesis["(45/-45/0/0)s FMC"]["viscous"] > thesis["(45/-45)s FMC"]["viscous"]
     for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor",
-                 "stability_real_parts", "stability_map", "shaft_temperature"):
+                 "stability_real_parts", "stability_map", "shaft_temperature", "shaft_temperature_sweeps"):
         assert (out / f"{stem}.png").stat().st_size > 10_000
         assert (out / f"{stem}.svg").is_file()
 
@@ -57,3 +57,15 @@ def test_run_json_option_prints_the_key_results(tmp_path):
     assert result.exit_code == 0
     data = json.loads(result.stdout)
     assert data["summary"]["operating_speed_rpm"] == pytest.approx(4800.0)
+
+
+def test_thermal_command_reports_boom_and_shaft_temperatures():
+    result = CliRunner().invoke(app, ["thermal", "--json", "--sweeps"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert set(data["tailboom_c"]) == {"hover", "parked"}
+    assert data["tailboom_c"]["parked"] > data["tailboom_c"]["hover"]  # no downwash when parked
+    rises = list(data["peak_rise_K_by_convection"].values())
+    assert rises[0] > rises[1] > rises[2]  # more convection, cooler shaft
+    bad = CliRunner().invoke(app, ["thermal", "--loss-model", "magic"])
+    assert bad.exit_code == 2 and "Traceback" not in bad.output

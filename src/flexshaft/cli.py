@@ -166,6 +166,7 @@ def thermal_cmd(
     loss_model: Optional[str] = typer.Option(None, "--loss-model", help="thesis | rotating (default: the design's)"),
     convection: Optional[str] = typer.Option(None, "--convection", help="becker | kendoush (rotating shaft; default: the design's)"),
     self_heat: bool = typer.Option(False, "--self-heating", help="Iterate temperature-dependent matrix properties."),
+    sweeps: bool = typer.Option(False, "--sweeps", help="Peak rise against wall thickness and convection (thesis figs 3.18, 3.19)."),
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
 ) -> None:
     """Tailboom temperatures (hover, parked), shaft temperature rise and self-heating margin."""
@@ -177,7 +178,7 @@ def thermal_cmd(
     from flexshaft.assembly import build_model
     from flexshaft.studies.thermal import thermal_summary
 
-    out = thermal_summary(d, build_model(d), loss_model=loss_model, convection=convection, self_heat=self_heat)
+    out = thermal_summary(d, build_model(d), loss_model=loss_model, convection=convection, self_heat=self_heat, sweeps=sweeps)
     if as_json:
         typer.echo(json.dumps(out, indent=2, default=float))
         return

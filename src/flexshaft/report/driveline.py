@@ -321,7 +321,7 @@ def _thermal_dict(res) -> dict | None:
 
 
 def _thermal_section(res, folder) -> Section:
-    from flexshaft.report.thermal_figures import shaft_temperature_figure
+    from flexshaft.report.thermal_figures import shaft_temperature_figure, temperature_profiles_figure
 
     th = res.thermal
     env = th["environment"]
@@ -352,8 +352,13 @@ def _thermal_section(res, folder) -> Section:
     if sh is not None:
         paragraphs.append(f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
                           f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.")
-    return Section("Thermal", paragraphs=paragraphs, tables=tables,
-                   figures=[FigureRef(p["png"], "Shaft temperature rise and heat generation along the shaft")])
+    figures = [FigureRef(p["png"], "Shaft temperature rise and heat generation along the shaft")]
+    prof = th.get("profiles")
+    if prof:
+        pp = save_figure(temperature_profiles_figure(prof["x"], prof["by_wall"], prof["by_h"]), folder, "shaft_temperature_sweeps")
+        figures.append(FigureRef(pp["png"], f"Shaft temperature profiles against wall thickness and convection "
+                                            f"({th['loss_model']} loss model; thesis figures 3.18, 3.19)"))
+    return Section("Thermal", paragraphs=paragraphs, tables=tables, figures=figures)
 
 
 def _studies_json(res):

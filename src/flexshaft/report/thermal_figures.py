@@ -9,7 +9,7 @@ from numpy.typing import ArrayLike
 
 from flexshaft.report._style import new_figure, styled, vector
 
-__all__ = ["shaft_temperature_figure"]
+__all__ = ["shaft_temperature_figure", "temperature_profiles_figure"]
 
 
 @styled
@@ -30,4 +30,21 @@ def shaft_temperature_figure(x_nodes: ArrayLike, rise: Mapping[str, ArrayLike], 
     axes[1, 0].set_ylabel("heat generated [W/m]")
     axes[1, 0].set_xlabel("x [m]")
     axes[1, 0].legend(loc="best")
+    return fig
+
+
+@styled
+def temperature_profiles_figure(x_nodes: ArrayLike, by_wall: Mapping[str, ArrayLike], by_h: Mapping[str, ArrayLike]):
+    """Shaft temperature rise along x [K] for several wall thicknesses and several convection
+    coefficients (thesis figures 3.18 and 3.19)."""
+    x = vector("x_nodes", x_nodes)
+    fig, axes = new_figure(1, 2, (11.0, 4.2), sharex=False)
+    for ax, curves, title in ((axes[0, 0], by_wall, "wall thickness (fixed D_o)"), (axes[0, 1], by_h, "convection coefficient")):
+        for name, values in curves.items():
+            v = np.asarray(values, dtype=float)
+            ax.plot(np.linspace(x[0], x[-1], v.size) if v.size != x.size else x, v, label=name)
+        ax.set_title(f"Temperature profile vs {title}", fontsize=10)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("T − T_air [K]")
+        ax.legend(loc="best")
     return fig
