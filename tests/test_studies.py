@@ -127,3 +127,18 @@ def test_unknown_resolution_is_refused():
 
     with pytest.raises(ValueError, match="resolution"):
         design_studies(None, "huge")
+
+
+def test_study_commands_write_results_and_figures(tmp_path):
+    """Each `flexshaft study` command writes its netCDF and its thesis-style figure."""
+    from typer.testing import CliRunner
+
+    from flexshaft.cli import app
+
+    runner = CliRunner()
+    for args, stem in ((["ply-angle", "--step", "30"], "ply_angle"), (["two-angle", "--step", "45"], "two_angle")):
+        out = tmp_path / stem
+        result = runner.invoke(app, ["study", *args, "--out", str(out)])
+        assert result.exit_code == 0, result.output
+        assert (out / "results.nc").is_file()
+        assert (out / f"{stem}.png").stat().st_size > 10_000

@@ -31,6 +31,15 @@ def _design(path: Optional[Path]):
         raise typer.Exit(code=2)
 
 
+def _figure(fig, out: Optional[Path], stem: str) -> None:
+    """Save a study figure (PNG and SVG) into ``out`` (default ``flexshaft-study-STEM``)."""
+    from flexshaft.report.figures import save_figure
+
+    folder = out if out is not None else Path(f"flexshaft-study-{stem}")
+    paths = save_figure(fig, folder, stem)
+    typer.echo(f"figure: {paths['png']}")
+
+
 def _run(func, design, out, jobs, dask, **kw):
     from flexshaft.sweep import SweepError
 
@@ -50,6 +59,27 @@ def ply_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(5.0, 
     ds = _run(ply_angle_study, design, out, jobs, dask, angles=np.arange(step, 90.0, step))
     best = ds["safety_factor"].idxmax("alpha").item()
     typer.echo(f"best α = ±{best:g}°: safety factor {ds['safety_factor'].max().item():.2f}")
+    from flexshaft.report.study_figures import ply_angle_figure
+    from flexshaft.sweep.studies import DOMINANT_STRESS_CODES
+
+    dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
+    _figure(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), out, "ply_angle")
+
+
+@study_app.command("two-angle")
+def two_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(15.0, min=1.0, max=45.0, help="Angle step [deg]."),
+              out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+    """Safety factor map of (α/−α/β/−β)s laminates, no imbalance (thesis: best (55/−55/0/0)s)."""
+    from flexshaft.report.study_figures import two_angle_figure
+    from flexshaft.sweep.studies import two_angle_study
+
+    angles = np.arange(0.0, 90.0 + 1e-9, step)
+    ds = _run(two_angle_study, design, out, jobs, dask, alphas=angles, betas=angles)
+    sf = ds["safety_factor"]
+    i = np.unravel_index(int(np.nanargmax(sf.values)), sf.shape)
+    typer.echo(f"best ({ds.alpha.values[i[0]]:g}/-{ds.alpha.values[i[0]]:g}/{ds.beta.values[i[1]]:g}/-{ds.beta.values[i[1]]:g})s: "
+               f"safety factor {sf.values[i]:.2f}")
+    _figure(two_angle_figure(ds.alpha.values, ds.beta.values, sf.values), out, "two_angle")
 
 
 @study_app.command("wall")
@@ -59,6 +89,10 @@ def wall(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int
 
     ds = _run(wall_thickness_study, design, out, jobs, dask)
     typer.echo(ds[["safety_factor", "safety_factor_no_imbalance", "spinup_peak_deflection"]].to_dataframe().to_string())
+    from flexshaft.report.study_figures import wall_thickness_figure
+
+    _figure(wall_thickness_figure(ds.wall_thickness.values, ds["safety_factor"].values,
+                                  ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values), out, "wall")
 
 
 @study_app.command("gain")
@@ -68,6 +102,9 @@ def gain(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int
 
     ds = _run(proportional_gain_study, design, out, jobs, dask)
     typer.echo(ds[["safety_factor", "actuator_displacement"]].to_dataframe().to_string())
+    from flexshaft.report.study_figures import gain_figure
+
+    _figure(gain_figure(ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values), out, "gain")
 
 
 @study_app.command("buckling")
@@ -77,6 +114,9 @@ def buckling(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs:
 
     ds = _run(buckling_study, design, out, jobs, dask)
     typer.echo(ds["buckling_safety_factor"].to_dataframe().to_string())
+    from flexshaft.report.study_figures import buckling_figure
+
+    _figure(buckling_figure(ds.wall_thickness.values, ds["buckling_safety_factor"].values), out, "buckling")
 
 
 @study_app.command("spinup-map")
@@ -92,8 +132,16 @@ def spinup_map_cmd(design: Optional[Path] = _DESIGN, n_gains: int = typer.Option
         out.mkdir(parents=True, exist_ok=True)
         _write_netcdf(ds, out / "results.nc")
     i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
-    typer.echo(f"best K_p = {ds.kp.values[i[0]]:.3e} N/m, K_d = {ds.kd.values[i[1]]:.3e} N s/m: "
+    best = (float(ds.kp.values[i[0]]), float(ds.kd.values[i[1]]))
+    typer.echo(f"best K_p = {best[0]:.3e} N/m, K_d = {best[1]:.3e} N s/m: "
                f"peak deflection {1e3 * ds['shaft_peak'].values[i]:.2f} mm")
+    from flexshaft.report.study_figures import gain_map_figure
+
+    for var, scale, label in (("shaft_peak", 1e3, "max spin-up shaft orbit [mm]"),
+                              ("actuator_displacement_peak", 1e3, "max actuator displacement [mm]"),
+                              ("actuator_force_peak", 1.0, "max actuator force [N]")):
+        values = ds[var].values if ds[var].ndim == 2 else ds[var].values.max(axis=-1)
+        _figure(gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=best), out, f"spinup_map_{var}")
 
 
 @study_app.command("all")
