@@ -23,7 +23,6 @@ from flexshaft.design import (
 )
 from flexshaft.design.schema import ActiveBearing, ContactBearing, Isotropic, Lamina
 from flexshaft.design.units import rpm_to_rad_s
-from flexshaft.laminate import parse_layup
 
 BASELINE = baseline_text()
 
@@ -462,35 +461,6 @@ def test_override_into_absent_table() -> None:
 
 # ------------------------------------------------------------------------------------------------
 # Layup notation
-
-
-@pytest.mark.parametrize(
-    ("layup", "angles"),
-    [
-        ("(55/-55/0/0)s", (55, -55, 0, 0, 0, 0, -55, 55)),
-        ("[45/-45]s", (45, -45, -45, 45)),
-        ("(±45)s", (45, -45, -45, 45)),
-        ("+-45", (45, -45)),
-        ("(0/90)2s", (0, 90, 0, 90, 90, 0, 90, 0)),
-        ("[0/90]3", (0, 90, 0, 90, 0, 90)),
-        ("55/-55/0/0", (55, -55, 0, 0)),
-        ("90", (90,)),
-        ("-90", (-90,)),
-        ("[0_2/90]s", (0, 0, 90, 90, 0, 0)),
-        (" ( 30 / -30 ) S ", (30, -30, -30, 30)),
-        ("[(0/90)2/45]s", (0, 90, 0, 90, 45, 45, 90, 0, 90, 0)),
-    ],
-)
-def test_layup_notation(layup: str, angles: tuple[float, ...]) -> None:
-    assert parse_layup(layup) == tuple(float(angle) for angle in angles)
-
-
-@pytest.mark.parametrize(
-    "layup", ["", "95", "-90.5", "(0/90", "0//90", "(0/90)0", "abc", "(0)999s", "±-45", "[0/90)", "0/90s", "nan"]
-)
-def test_bad_layups_are_refused(layup: str) -> None:
-    with pytest.raises(ValueError):
-        parse_layup(layup)
 
 
 def test_design_error_survives_pickling() -> None:

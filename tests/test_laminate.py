@@ -50,6 +50,9 @@ def one_ply(angle_deg: float, lamina: Lamina = CARBON_EPOXY) -> Laminate:
         ("-90", (-90,)),
         (" [0/(±30)2]s ", (0, 30, -30, 30, -30, -30, 30, -30, 30, 0)),
         ("22.5/-22.5", (22.5, -22.5)),
+        ("[0_2/90]s", (0, 0, 90, 90, 0, 0)),
+        (" ( 30 / -30 ) S ", (30, -30, -30, 30)),
+        ("[(0/90)2/45]s", (0, 90, 0, 90, 45, 45, 90, 0, 90, 0)),
     ],
 )
 def test_parse_layup_expands(text, expected):
@@ -61,6 +64,12 @@ def test_parse_layup_expands(text, expected):
 )
 def test_parse_layup_rejects_with_allowed_forms(text):
     with pytest.raises(ValueError, match="allowed"):
+        parse_layup(text)
+
+
+@pytest.mark.parametrize("text", ["0//90", "-90.5", "(0)999s", "±-45", "[0/90)", "0/90s", "nan"])
+def test_parse_layup_rejects(text):
+    with pytest.raises(ValueError):
         parse_layup(text)
 
 
