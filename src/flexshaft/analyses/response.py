@@ -113,19 +113,14 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0) -> dict[str,
     Contact bearings: ``(k + iωc) · rel``; active bearings: ``C(iω) · rel`` on v and w.
     ``q`` may carry trailing axes (cases); complex amplitudes give complex forces.
     """
-    design = model.design
     out = {}
     actuators = {a.name: a for a in model.actuators}
-    for link, spec in zip(model.bearings, design.bearings):
+    for link in model.bearings:
         rel = link.rows @ q
         if link.name in actuators:
             gain = np.zeros(5, dtype=complex)
             gain[1:3] = actuators[link.name].controller(1j * omega)
         else:
-            fields = ("u", "v", "w", "beta", "gamma")
-            k = np.array([spec.stiffness.get(f, 0.0) if isinstance(spec.stiffness, dict) else getattr(spec.stiffness, f) for f in fields])
-            damping = spec.damping or {}
-            c = np.array([damping.get(f, 0.0) if isinstance(damping, dict) else getattr(damping, f) for f in fields])
-            gain = k + 1j * omega * c
+            gain = link.stiffness + 1j * omega * link.damping
         out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
     return out

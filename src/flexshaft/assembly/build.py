@@ -118,6 +118,9 @@ def _bearing_link(design, dm: DofMap, bearing) -> BearingLink:
     rows = sp.coo_matrix(
         (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
     ).tocsr()
+    if bearing.kind == "contact":
+        return BearingLink(bearing.name, bearing.kind, bearing.x, xb, h, rows,
+                           _coefficients(bearing.stiffness), _coefficients(bearing.damping))
     return BearingLink(bearing.name, bearing.kind, bearing.x, xb, h, rows)
 
 
@@ -181,9 +184,9 @@ def build_model(design) -> Model:
         links.append(link)
         B = link.rows
         if bearing.kind == "contact":
-            K = K + B.T @ sp.diags(_coefficients(bearing.stiffness)) @ B
-            if bearing.damping:
-                C = C + B.T @ sp.diags(_coefficients(bearing.damping)) @ B
+            K = K + B.T @ sp.diags(link.stiffness) @ B
+            if np.any(link.damping):
+                C = C + B.T @ sp.diags(link.damping) @ B
         else:
             if bearing.controller is not None:
                 ctrl = Controller(tuple(bearing.controller.numerator), tuple(bearing.controller.denominator))

@@ -11,7 +11,7 @@ springs; ``C`` is viscous damping (bearing dampers); actuators add ``Bᵀ C(iω)
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -72,6 +72,8 @@ class BearingLink:
     x_boom: float | None
     offset: float
     rows: sp.csr_matrix
+    stiffness: np.ndarray = field(default_factory=lambda: np.zeros(5))  # per (u, v, w, β, γ), contact
+    damping: np.ndarray = field(default_factory=lambda: np.zeros(5))
 
 
 @dataclass(frozen=True)
