@@ -24,6 +24,8 @@ run only once every table validates on its own.
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import Field, model_validator
 
 from flexshaft.design.components import (
@@ -55,6 +57,8 @@ from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, Po
 from flexshaft.design.materials import Isotropic, Lamina, Material
 
 __all__ = [
+    "Analysis",
+    "InternalDamping",
     "Thermal",
     "ActiveBearing",
     "Bearing",
@@ -90,6 +94,22 @@ class Mesh(FrozenModel):
     boom_elements: ElementCount = 24
 
 
+#: How the shaft's hysteretic (internal) loss acts; one choice for every analysis of a model.
+InternalDamping = Literal["rotating", "thesis"]
+
+
+class Analysis(FrozenModel):
+    """Model-wide physics choices shared by every analysis.
+
+    ``internal_damping``: ``"rotating"`` (default) applies the shaft's hysteretic loss in the
+    rotating frame, where the material is cycled at the whirl frequency relative to the spin
+    (exact for an axisymmetric shaft: synchronous forward whirl is not damped by it);
+    ``"thesis"`` applies it as a fixed-frame complex stiffness (thesis eqs. 2.39-2.40).
+    """
+
+    internal_damping: InternalDamping = "rotating"
+
+
 # ------------------------------------------------------------------------------------------------
 # The design
 
@@ -106,6 +126,7 @@ class Design(FrozenModel):
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()
+    analysis: Analysis = Analysis()
     thermal: Thermal = Thermal()
 
     @model_validator(mode="after")
