@@ -16,50 +16,8 @@ import scipy.linalg as la
 from flexshaft.analyses.stability import rotation_generator, stability
 from flexshaft.assembly import build_model
 from flexshaft.assembly.sparse import restrict
-from flexshaft.design import baseline_design, loads_design, with_overrides
-
-E, G = 210e9, 80e9
-DO, DI, L, M_DISK = 0.05, 0.04, 1.0, 20.0
-
-
-def jeffcott(eta, c_e):
-    text = f"""
-name = "Jeffcott rotor with internal damping"
-[materials.steel]
-kind = "isotropic"
-E = {E}
-G = {G}
-density = 0.1
-loss_factor = {eta}
-[shaft]
-x_start = 0.0
-x_end = {L}
-outer_diameter = {DO}
-wall_thickness = {(DO - DI) / 2}
-material = "steel"
-fixed_start = ["u", "v", "w", "theta"]
-fixed_end = ["v", "w"]
-[[bearings]]
-name = "external_damper"
-kind = "contact"
-x = {L / 2}
-stiffness = {{}}
-damping = {{ v = {c_e}, w = {c_e} }}
-[[disks]]
-name = "disk"
-x = {L / 2}
-mass = {M_DISK}
-[operating]
-speed_rpm = 0.0
-power = 0.0
-[mesh]
-shaft_elements = 8
-"""
-    return build_model(loads_design(text))
-
-
-K_SHAFT = 48 * E * np.pi * (DO**4 - DI**4) / 64 / L**3
-WN = np.sqrt(K_SHAFT / M_DISK)
+from flexshaft.design import baseline_design, with_overrides
+from rotors import K_SHAFT, M_DISK, WN, jeffcott
 
 
 def forward_root(speed, c_e, c_i):
@@ -114,7 +72,7 @@ def test_modal_basis_matches_direct_state_space_at_speed():
     """The reduced fast path against the full first-order problem on the baseline."""
     model = build_model(baseline_design())
     speed, ref = 450.0, 300.0
-    res = stability(model, [speed], n_modes=10, reference_frequency=ref)
+    res = stability(model, [speed], n_modes=10, damping_model="viscous", reference_frequency=ref)
     f = model.dofs.free
     Ci = model.shaft_loss_stiffness / ref
     Cb = model.boom_loss_stiffness / ref
@@ -143,7 +101,7 @@ def test_onset_speed_converges_with_mesh():
     for factor in (1, 2, 4):
         d = with_overrides(base, {"mesh.shaft_elements": 12 * factor, "mesh.boom_elements": 8 * factor})
         model = build_model(d)
-        res = stability(model, np.linspace(0.3, 2.0, 86) * model.speed, n_modes=10, reference_frequency=350.0)
+        res = stability(model, np.linspace(0.3, 2.0, 86) * model.speed, n_modes=10)
         assert res.onset_speed is not None
         onsets.append(res.onset_speed)
     onsets = np.array(onsets)

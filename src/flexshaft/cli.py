@@ -55,11 +55,12 @@ def _print_modes(console, title: str, rows: list[dict]) -> None:
     from rich.table import Table
 
     table = Table(title=title)
-    for col in ("mode", "Hz", "rpm", "ζ", "whirl", "component"):
-        table.add_column(col, justify="right" if col in ("mode", "Hz", "rpm", "ζ") else "left")
+    for col in ("mode", "Hz", "rpm", "ζ", "log dec", "kind", "whirl", "component"):
+        table.add_column(col, justify="right" if col in ("mode", "Hz", "rpm", "ζ", "log dec") else "left")
     for r in rows:
         table.add_row(str(r["mode"]), f"{r['frequency_Hz']:.3f}", f"{r['frequency_rpm']:.0f}",
-                      f"{r['damping_ratio']:.4f}", r["whirl"], r["component"])
+                      f"{r['damping_ratio']:.3g}", f"{r['log_decrement']:.3g}", r["kind"],
+                      "—" if r["whirl"] == "none" else r["whirl"], r["component"])
     console.print(table)
 
 
@@ -110,7 +111,7 @@ def stability_cmd(
     design: Optional[Path] = DesignArg,
     max_rpm: Optional[float] = typer.Option(None, "--max-rpm", help="Highest speed [rpm]; default 1.5 × operating."),
     n_speeds: int = typer.Option(61, "--n-speeds", min=2, max=2000, help="Number of speeds."),
-    damping_model: str = typer.Option("viscous", "--model", help="viscous | hysteretic"),
+    damping_model: str = typer.Option("hysteretic", "--model", help="hysteretic (the design's internal-damping model, each mode at its own frequency) | viscous (thesis ch. 4: one reference frequency)"),
     reference_hz: Optional[float] = typer.Option(None, "--reference-hz", help="ω_ref of the viscous model [Hz]; default: first shaft mode."),
     compare_thesis: bool = typer.Option(False, "--compare-thesis", help="Also the thesis's aluminium, (45/-45)s and (45/-45/0/0)s shafts."),
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),

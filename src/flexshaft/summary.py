@@ -40,7 +40,7 @@ def model_summary(model: Model) -> dict:
 
 
 def modes_table(m: Modes) -> list[dict]:
-    """One row per mode: frequency [Hz], damping ratio, whirl, component."""
+    """One row per mode: frequency [Hz], damping ratio, log decrement, kind, whirl, component."""
     comp = m.component
     return [
         {
@@ -48,6 +48,8 @@ def modes_table(m: Modes) -> list[dict]:
             "frequency_Hz": float(m.frequencies[i]),
             "frequency_rpm": float(m.frequencies[i] * 60),
             "damping_ratio": float(m.damping_ratios[i]),
+            "log_decrement": float(m.log_decrements[i]),
+            "kind": str(m.kind[i]),
             "whirl": str(m.whirl[i]),
             "component": str(comp[i]),
             "shaft_energy_fraction": float(m.shaft_fractions[i]),

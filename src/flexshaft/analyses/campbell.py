@@ -1,38 +1,49 @@
-"""Campbell diagram: damped eigenvalues against speed with tracked modes and whirl labels.
+"""Campbell diagram: damped eigenvalues against speed, tracked into continuous mode curves.
 
-Fast path: the quadratic problem is projected once on the lowest ``basis_size`` undamped,
-non-spinning modes Φ (mass-normalised), then solved per speed on that small basis:
-``(s² I + s Φᵀ(ΩG + C + K_d)Φ + Λ) y = 0``. Modes are tracked between neighbouring speeds
-by the modal assurance criterion on y (Hungarian assignment), so a curve keeps its identity
-through veerings and crossings; each point carries its own whirl label from the orbit of the
-shaft nodes. Critical speeds are the intersections of the tracked curves with the excitation
-lines ``ω = kΩ`` (linear interpolation between speeds).
+At each speed the loss-free state matrix on the modal basis gives every candidate
+(:mod:`flexshaft.analyses.eigen`); candidates are matched to the curves of the previous speed
+by the modal assurance criterion (Hungarian assignment with a small frequency-distance
+penalty), so a curve keeps its identity through veerings and crossings; each tracked mode is
+then refined to its loss-consistent eigenvalue (every member's hysteretic loss at the mode's
+own frequency, the model's internal-damping model), so frequencies, damping ratios and log
+decrements are those of the forced response's physics. Each point carries its kind and whirl
+labels (:mod:`flexshaft.analyses.classify`). Critical speeds are the intersections of the
+**lateral** curves with the excitation lines ``ω = kΩ`` (linear interpolation).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
-import scipy.linalg as la
 from scipy.optimize import linear_sum_assignment
 
-from flexshaft.analyses.modal import whirl_ratio
 from flexshaft._threads import single_blas_thread
+from flexshaft.analyses.classify import label_modes
+from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.sparse import restrict
 
-__all__ = ["Campbell", "EigenvalueCurves", "CriticalSpeed", "campbell", "modal_basis", "track_modes", "whirl_labels"]
+__all__ = ["Campbell", "CriticalSpeed", "EigenvalueCurves", "TrackedModes", "campbell", "critical_speeds",
+           "default_basis_size", "mac", "track_modes"]
 
-_WHIRL_THRESHOLD = 0.1
+
+def default_basis_size(n_modes: int) -> int:
+    """Modal basis of a sweep over speed for ``n_modes`` tracked modes."""
+    return max(4 * n_modes, 40)
+
+
+def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Modal assurance criterion |aᴴb|² of unit columns (a: (n, p), b: (n, q)) → (p, q)."""
+    return np.abs(a.conj().T @ b) ** 2
 
 
 @dataclass(frozen=True)
 class CriticalSpeed:
-    """Intersection of a tracked mode with the excitation line ω = harmonic·Ω."""
+    """Intersection of a tracked lateral mode with the excitation line ω = harmonic·Ω."""
 
     speed: float  # [rad/s]
-    mode: int  # tracked-mode index
+    mode: int  # tracked-mode index (0-based)
     harmonic: float
     whirl: str
 
@@ -58,14 +69,113 @@ class EigenvalueCurves:
 
     @property
     def damping_ratios(self) -> np.ndarray:
-        """ζ = −Re(s)/|s|."""
+        """ζ = −Re(s)/|s| [-]."""
         return -self.eigenvalues.real / np.abs(self.eigenvalues)
 
     @property
     def log_decrements(self) -> np.ndarray:
-        """δ = 2π ζ/√(1 − ζ²)."""
+        """δ = 2π ζ/√(1 − ζ²) [-]."""
         z = self.damping_ratios
         return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
+
+
+@dataclass(frozen=True)
+class TrackedModes:
+    """Curves over speed: eigenvalues, modal state vectors and labels per point."""
+
+    speeds: np.ndarray
+    eigenvalues: np.ndarray  # (n_speeds, n_modes)
+    states: list  # per speed: (n_states, n_modes) refined state vectors
+    kind: np.ndarray  # (n_speeds, n_modes)
+    whirl: np.ndarray
+    whirl_ratios: np.ndarray
+    component: np.ndarray
+
+
+#: Smallest MAC between a mode's shapes at neighbouring speeds that continuation accepts.
+_CONTINUATION_MAC = 0.9
+
+
+def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
+                solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
+                refine_loss: bool = True) -> TrackedModes:
+    """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
+
+    The first speed fixes the identities (the lowest ``n_modes`` candidates by |s|). With
+    ``refine_loss`` (the default path) each later speed is first tried by continuation: every
+    mode's eigenvalue is extrapolated linearly from the previous speeds and converged by
+    Newton's method on its loss-consistent problem; the step is accepted when every mode
+    converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes landed on
+    the same eigenvalue. Otherwise (and always without ``refine_loss``) ``solve(speed) ->
+    (s, Y)`` gives all candidates (default: the loss-free state matrix), matched to the
+    previous curves by maximum MAC with a small frequency-distance penalty (Hungarian
+    assignment), then refined.
+    """
+    speeds = np.asarray(speeds, dtype=float)
+    solve = solve or (lambda speed: candidates(red, speed))
+    eig = np.zeros((speeds.size, n_modes), dtype=complex)
+    states, kinds, whirls, ratios, comps = [], [], [], [], []
+    prev = None
+    for k, speed in enumerate(speeds):
+        step = _continue(red, speeds, eig, states, k, n_modes) if refine_loss and k >= 1 else None
+        if step is None:
+            step = _match(red, solve, speed, prev, n_modes, refine_loss)
+        s_k, Y_k = step
+        prev = (s_k, Y_k)
+        eig[k] = s_k
+        states.append(Y_k)
+        labels = label_modes(model, model.dofs.expand(red.shapes(Y_k)))
+        kinds.append(labels.kind)
+        whirls.append(labels.whirl)
+        ratios.append(labels.whirl_ratio)
+        comps.append(labels.component)
+    kind, whirl, ratio = np.array(kinds), np.array(whirls), np.array(ratios)
+    if speeds.size > 1 and speeds[0] == 0.0:
+        # at rest the forward/backward pairs are degenerate: label them by their continuation
+        ratio[0], whirl[0] = ratio[1], np.where(kind[0] == "lateral", whirl[1], whirl[0])
+    return TrackedModes(speeds, eig, states, kind, whirl, ratio, np.array(comps))
+
+
+def _continue(red, speeds, eig, states, k, n_modes):
+    """Continuation step to speeds[k]; None when it cannot be trusted."""
+    speed = speeds[k]
+    if k >= 2:
+        t = (speed - speeds[k - 1]) / (speeds[k - 1] - speeds[k - 2])
+        predicted = eig[k - 1] + t * (eig[k - 1] - eig[k - 2])
+    else:
+        predicted = eig[k - 1]
+    Y_prev = states[k - 1]
+    s_k = np.empty(n_modes, complex)
+    Y_k = np.empty_like(Y_prev)
+    for m in range(n_modes):
+        s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m])
+        if not converged or abs(np.vdot(Y_prev[:, m], Y_k[:, m])) ** 2 < _CONTINUATION_MAC:
+            return None
+    gaps = np.abs(s_k[:, None] - s_k[None, :])
+    np.fill_diagonal(gaps, np.inf)
+    if np.any(gaps < 1e-7 * np.abs(s_k)[:, None]):
+        return None
+    return s_k, Y_k
+
+
+def _match(red, solve, speed, prev, n_modes, refine_loss):
+    """All candidates at ``speed`` matched to the previous curves, then refined."""
+    lam, Y = solve(speed)
+    if lam.size < n_modes:
+        raise ValueError(f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
+                         "ask for fewer modes or a larger basis")
+    if prev is None:
+        idx = np.arange(n_modes)
+    else:
+        lam_prev, Y_prev = prev
+        scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
+        cost = 1 - mac(Y_prev, Y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
+        _, idx = linear_sum_assignment(cost)
+    s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
+    if refine_loss:
+        for m in range(n_modes):
+            s_k[m], Y_k[:, m] = refine(red, speed, s_k[m], Y_k[:, m])
+    return s_k, Y_k
 
 
 @dataclass(frozen=True)
@@ -79,9 +189,17 @@ class Campbell(EigenvalueCurves):
     eigenvalues : ndarray
         s [rad/s], (n_speeds, n_modes); column k is one tracked mode.
     whirl : ndarray of str
-        "forward", "backward" or "planar" per point.
+        "forward", "backward", "planar" or "none" (not lateral) per point.
     whirl_ratios : ndarray
         Whirl ratio in [−1, 1] per point.
+    critical_speeds : tuple of CriticalSpeed
+        Lateral modes crossing the excitation lines, by speed.
+    kind : ndarray of str
+        "lateral", "torsional" or "axial" per point.
+    component : ndarray of str
+        "shaft", "boom" or "coupled" per point.
+    internal_damping : str
+        Internal-damping model of the eigenvalues.
     """
 
     speeds: np.ndarray
@@ -89,72 +207,15 @@ class Campbell(EigenvalueCurves):
     whirl: np.ndarray
     whirl_ratios: np.ndarray
     critical_speeds: tuple[CriticalSpeed, ...]
+    kind: np.ndarray | None = None
+    component: np.ndarray | None = None
+    internal_damping: str = "rotating"
 
-
-
-def modal_basis(model: Model, basis_size: int):
-    """Lowest undamped, non-spinning modes on the free DOFs: (ω², Φ) mass-normalised."""
-    free = model.dofs.free
-    M = restrict(model.M, free).toarray()
-    K = restrict(model.K.real + model.Kp, free).toarray()
-    n = min(basis_size, M.shape[0])
-    return la.eigh(K, M, subset_by_index=[0, n - 1])
-
-
-def _solve_reduced(Kr, Dr, n_keep):
-    """Eigen-pairs of ``s² I + s Dr + Kr`` (mass-normalised modal coordinates), lowest first."""
-    nb = Kr.shape[0]
-    A = np.zeros((2 * nb, 2 * nb))
-    A[:nb, nb:] = np.eye(nb)
-    A[nb:, :nb] = -Kr
-    A[nb:, nb:] = -Dr
-    lam, vec = la.eig(A)
-    keep = lam.imag > 1e-6 * np.abs(lam)  # oscillatory roots only (ζ < 1 − 5e-13)
-    lam, vec = lam[keep], vec[:nb, keep]
-    order = np.argsort(np.abs(lam))[:n_keep]  # by undamped natural frequency |s|
-    y = vec[:, order]
-    return lam[order], y / np.linalg.norm(y, axis=0)
-
-
-def _mac(a, b):
-    return np.abs(a.conj().T @ b) ** 2
-
-
-def track_modes(solve, speeds, n_modes: int):
-    """Follow ``n_modes`` eigenvalue curves over ``speeds``.
-
-    ``solve(speed) -> (eigenvalues, vectors)`` returns more candidates than ``n_modes``, sorted
-    by frequency, with unit-norm vectors in one fixed (modal) coordinate system. The first
-    speed fixes the identities (lowest ``n_modes``); later speeds are matched by maximum MAC
-    with a small frequency-distance penalty (Hungarian assignment).
-
-    Returns ``(eigenvalues (n_speeds, n_modes), [vectors per speed])``.
-    """
-    eig = np.zeros((len(speeds), n_modes), dtype=complex)
-    vectors = []
-    prev = None
-    for k, speed in enumerate(speeds):
-        lam, y = solve(speed)
-        if prev is None:
-            idx = np.arange(n_modes)
-        else:
-            lam_prev, y_prev = prev
-            scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
-            cost = 1 - _mac(y_prev, y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
-            _, idx = linear_sum_assignment(cost)
-        eig[k] = lam[idx]
-        prev = (lam[idx], y[:, idx])
-        vectors.append(y[:, idx])
-    return eig, vectors
-
-
-def whirl_labels(model: Model, Phi: np.ndarray, vectors, speeds):
-    """Whirl ratios and labels of tracked modes from their modal coordinates."""
-    ratios = np.array([whirl_ratio(model.dofs, model.dofs.expand(Phi @ y)) for y in vectors])
-    if len(speeds) > 1 and speeds[0] == 0.0:
-        ratios[0] = ratios[1]  # at rest the pairs are degenerate: label by their continuation
-    labels = np.where(ratios > _WHIRL_THRESHOLD, "forward", np.where(ratios < -_WHIRL_THRESHOLD, "backward", "planar"))
-    return ratios, labels
+    def __repr__(self) -> str:
+        ns, nm = self.eigenvalues.shape
+        top = self.speeds[-1] * 60 / (2 * np.pi) if ns else 0.0
+        return (f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
+                f"internal damping {self.internal_damping!r})")
 
 
 @single_blas_thread
@@ -165,40 +226,50 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
     Parameters
     ----------
     speeds : array_like
-        Ω [rad/s], increasing.
+        Ω [rad/s], increasing, finite, >= 0.
     n_modes : int
         Number of tracked modes (the lowest at the first speed).
     basis_size : int or None
-        Size of the modal basis (default ``max(4 n_modes, 40)``); larger is more exact.
+        Size of the modal basis (default :func:`default_basis_size`); larger is more exact.
     harmonics : sequence of float
         Excitation orders k for the critical speeds (ω = kΩ).
     damped : bool
-        Include bearing damping C and actuator K_d.
+        Include bearing dampers, actuator damping and the members' hysteretic loss.
     """
-    if not model.all_pd:
-        raise ValueError("the Campbell diagram needs PD actuators (transfer functions: use the frequency response)")
-    speeds = np.asarray(speeds, dtype=float)
-    free = model.dofs.free
-    nb = basis_size or max(4 * n_modes, 40)
-    w2, Phi = modal_basis(model, nb)
-    Gr = Phi.T @ (restrict(model.G, free) @ Phi)
-    Dr = Phi.T @ (restrict(model.C + model.Kd, free) @ Phi) if damped else np.zeros_like(Gr)
-    n_extra = min(n_modes + 6, w2.size)
-    eig, vectors = track_modes(lambda sp: _solve_reduced(np.diag(w2), speed_matrix(Gr, Dr, sp), n_extra), speeds, n_modes)
-    ratios, whirl = whirl_labels(model, Phi, vectors, speeds)
-    return Campbell(speeds, eig, whirl, ratios, _critical_speeds(speeds, eig, whirl, harmonics))
+    speeds = _check_speeds(speeds)
+    if int(n_modes) != n_modes or n_modes < 1:
+        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
+    red = reduce(model, basis_size or default_basis_size(int(n_modes)))
+    if not damped:
+        red = ReducedModel(red.Phi, red.w2, red.G, 0 * red.C, red.F, red.L, red.S, red.internal_damping,
+                           tuple(a for a in red.actuators if not a.A.size), False)
+    tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=damped)
+    crit = critical_speeds(speeds, tracked.eigenvalues, tracked.whirl, tracked.kind, harmonics)
+    return Campbell(speeds, tracked.eigenvalues, tracked.whirl, tracked.whirl_ratios, crit, tracked.kind,
+                    tracked.component, model.internal_damping)
 
 
-def speed_matrix(Gr, Dr, speed):
-    return speed * Gr + Dr
+def _check_speeds(speeds) -> np.ndarray:
+    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    if speeds.ndim != 1 or speeds.size == 0:
+        raise ValueError("speeds must be a non-empty 1-D sequence [rad/s]")
+    if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
+        raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
+    if np.any(np.diff(speeds) <= 0):
+        raise ValueError("speeds must be strictly increasing")
+    return speeds
 
 
-def _critical_speeds(speeds, eig, whirl, harmonics):
+def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple[CriticalSpeed, ...]:
+    """Crossings of the lateral curves with ω = kΩ, sorted by speed."""
     out = []
     for h in harmonics:
-        for m in range(eig.shape[1]):
-            g = eig[:, m].imag - h * speeds
+        for m in range(eigenvalues.shape[1]):
+            g = eigenvalues[:, m].imag - h * speeds
             for i in np.flatnonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0):
+                j = i if kind is None or kind[i, m] == "lateral" else i + 1
+                if kind is not None and kind[j, m] != "lateral":
+                    continue
                 t = g[i] / (g[i] - g[i + 1])
-                out.append(CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[i, m])))
+                out.append(CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[j, m])))
     return tuple(sorted(out, key=lambda c: c.speed))

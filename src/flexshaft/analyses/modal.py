@@ -1,16 +1,12 @@
-"""Natural frequencies and mode shapes at a given spin speed.
+"""Damped natural frequencies, damping and mode shapes at one spin speed.
 
-* ``damped=False, speed=0``: the symmetric problem ``(K' + K_p) φ = ω² M φ`` (storage stiffness).
-* otherwise the quadratic problem ``(s² M + s D + K' + K_p) φ = 0`` with
-  ``D = Ω G`` (undamped, spinning) or ``D = Ω G + C + K_d`` (damped), solved in first-order form.
+``(s² M + s (Ω G + C + K_d + D_eq) + K + K_p + K_eq) φ = 0`` (plus controller states), with the
+hysteretic loss of every member at each mode's own frequency
+(:mod:`flexshaft.analyses.loss`, :mod:`flexshaft.analyses.eigen`), the same physics as the
+forced response. ``damped=False`` keeps only the gyroscopic terms (and at rest gives the
+undamped natural frequencies of ``(K + K_p) φ = ω² M φ``).
 
-The hysteretic loss (imaginary stiffness) is not a viscous damping and is left out here; the
-whirl-stability analysis converts it to an equivalent viscous model.
-
-Whirl direction: with node orbits ``v = Re(V e^{iωt})``, ``w = Re(W e^{iωt})`` and spin about
-+x (y towards z), a forward orbit has ``W = −iV``. The whirl ratio
-``r = −2 Σ Im(V̄ W) / Σ(|V|² + |W|²)`` over the shaft nodes is +1 for a circular forward
-orbit and −1 for a backward one.
+Labels (kind, whirl, component) are those of :mod:`flexshaft.analyses.classify`.
 """
 
 from __future__ import annotations
@@ -18,43 +14,67 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as la
 
-from flexshaft.assembly.dofs import DofMap
 from flexshaft._threads import single_blas_thread
+from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
+from flexshaft.analyses.eigen import candidates, damped_modes, reduce
+from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.sparse import restrict
 
-__all__ = ["Modes", "modes", "whirl_ratio", "shaft_energy_fraction"]
+__all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
 
-_WHIRL_THRESHOLD = 0.1  # |r| below this: planar or mixed orbit
+
+def default_basis_size(n_modes: int) -> int:
+    """Modal basis used for ``n_modes`` wanted modes (truncation error ≲ 1e-5 on the baseline)."""
+    return max(4 * n_modes, 60)
+
+
+def _log_decrement(zeta: np.ndarray) -> np.ndarray:
+    return 2 * np.pi * zeta / np.sqrt(np.maximum(1 - zeta * zeta, 1e-300))
 
 
 @dataclass(frozen=True)
 class Modes:
-    """Eigen-solution at one speed, sorted by natural frequency.
+    """Eigen-solution at one speed, sorted by undamped natural frequency |s|.
 
     Attributes
     ----------
     speed : float
         Spin speed Ω [rad/s].
     eigenvalues : ndarray
-        s = −ζω_n ± iω_d [rad/s] (one per mode, Im s ≥ 0).
+        s = −ζω_n + iω_d [rad/s] (one per mode, Im s > 0).
     shapes : ndarray
         Mode shapes on the full DOF vector, (ndof, n_modes), unit maximum translation.
+    kind : ndarray of str
+        "lateral", "torsional" or "axial".
     whirl : ndarray of str
-        "forward", "backward" or "planar" (|whirl ratio| < 0.1).
+        "forward", "backward", "planar" (lateral modes) or "none".
+    whirl_ratios : ndarray
+        Whirl ratio in [−1, 1].
     component : ndarray of str
-        "shaft", "boom" or "coupled" from the kinetic-energy share of the shaft (> 0.9, < 0.1).
+        "shaft", "boom" or "coupled".
+    shares : EnergyShares
+        Kinetic-energy shares by DOF group.
+    internal_damping : str
+        The internal-damping model used.
     """
 
     speed: float
     eigenvalues: np.ndarray
     shapes: np.ndarray
+    kind: np.ndarray
     whirl: np.ndarray
     whirl_ratios: np.ndarray
-    shaft_fractions: np.ndarray
+    component: np.ndarray
+    shares: EnergyShares
     dofs: DofMap
+    internal_damping: str = "rotating"
+
+    def __repr__(self) -> str:
+        rpm = self.speed * 60 / (2 * np.pi)
+        freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
+        more = ", ..." if self.eigenvalues.size > 6 else ""
+        return f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, internal damping {self.internal_damping!r})"
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -68,33 +88,18 @@ class Modes:
 
     @property
     def damping_ratios(self) -> np.ndarray:
-        """ζ = −Re(s)/|s| (round-off below 1e-12 reported as exactly 0)."""
-        zeta = -self.eigenvalues.real / np.abs(self.eigenvalues)
-        return np.where(np.abs(zeta) < 1e-12, 0.0, zeta)
+        """ζ = −Re(s)/|s| [-] (negative: unstable)."""
+        return -self.eigenvalues.real / np.abs(self.eigenvalues)
 
     @property
-    def component(self) -> np.ndarray:
-        f = self.shaft_fractions
-        return np.where(f > 0.9, "shaft", np.where(f < 0.1, "boom", "coupled"))
+    def log_decrements(self) -> np.ndarray:
+        """Logarithmic decrement δ = 2πζ/√(1 − ζ²) [-]."""
+        return _log_decrement(self.damping_ratios)
 
-
-def whirl_ratio(dofs: DofMap, shapes: np.ndarray) -> np.ndarray:
-    """Whirl ratio r in [−1, 1] of each mode (column) from the shaft node orbits."""
-    n = np.arange(dofs.n_shaft_nodes)
-    V, W = shapes[dofs.shaft(n, "v")], shapes[dofs.shaft(n, "w")]
-    power = np.sum(np.abs(V) ** 2 + np.abs(W) ** 2, axis=0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        r = -2 * np.sum(np.imag(np.conj(V) * W), axis=0) / power
-    return np.where(power > 0, r, 0.0)
-
-
-def shaft_energy_fraction(model: Model, shapes: np.ndarray) -> np.ndarray:
-    """Share of each mode's kinetic energy carried by shaft DOFs."""
-    Mphi = model.M @ shapes
-    total = np.real(np.sum(np.conj(shapes) * Mphi, axis=0))
-    ns = 6 * model.dofs.n_shaft_nodes
-    shaft = np.real(np.sum(np.conj(shapes[:ns]) * Mphi[:ns], axis=0))
-    return shaft / total
+    @property
+    def shaft_fractions(self) -> np.ndarray:
+        """Share of each mode's kinetic energy carried by the shaft."""
+        return self.shares.shaft
 
 
 def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
@@ -109,48 +114,40 @@ def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
 
 
 @single_blas_thread
-def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True) -> Modes:
-    """Natural frequencies and mode shapes at spin speed ``speed`` [rad/s].
+def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True,
+          basis_size: int | None = None) -> Modes:
+    """Natural frequencies, damping and mode shapes at spin speed ``speed`` [rad/s].
 
     Parameters
     ----------
     model : Model
         Assembled model.
     speed : float
-        Ω [rad/s].
+        Ω [rad/s], finite and >= 0.
     n_modes : int
-        Number of lowest modes returned.
+        Number of lowest modes returned (>= 1).
     damped : bool
-        Include viscous damping C and the actuators' K_d (gyroscopic terms are always in).
+        Include the bearing dampers, the actuator laws' damping and controller dynamics, and
+        the hysteretic loss of every member (gyroscopic terms are always in).
+    basis_size : int or None
+        Modal basis (default :func:`default_basis_size`; the number of free DOFs gives the
+        exact solution of the full problem).
     """
-    dofs = model.dofs
-    if not model.all_pd:
-        raise ValueError("eigen-analysis needs PD actuators; transfer-function controllers are "
-                         "supported by the frequency response only")
-    free = dofs.free
-    M = restrict(model.M, free).toarray()
-    K = restrict(model.K.real + model.Kp, free).toarray()
-    D = speed * restrict(model.G, free).toarray()
+    if not (np.isfinite(speed) and speed >= 0):
+        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    if int(n_modes) != n_modes or n_modes < 1:
+        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
+    n_modes = int(n_modes)
+    red = reduce(model, basis_size or default_basis_size(n_modes))
     if damped:
-        D = D + restrict(model.C + model.Kd, free).toarray()
-    n = M.shape[0]
-    n_modes = min(n_modes, n)
-    if not np.any(D):
-        w2, phi = la.eigh(K, M, subset_by_index=[0, n_modes - 1])
-        s = 1j * np.sqrt(np.maximum(w2, 0.0))
-        phi = phi.astype(complex)
+        s, Z = damped_modes(red, speed, n_modes)
     else:
-        cho = la.cho_factor(M)
-        A = np.zeros((2 * n, 2 * n))
-        A[:n, n:] = np.eye(n)
-        A[n:, :n] = -la.cho_solve(cho, K)
-        A[n:, n:] = -la.cho_solve(cho, D)
-        lam, vec = la.eig(A)
-        keep = lam.imag > 1e-6 * np.abs(lam)  # oscillatory roots only (ζ < 1 − 5e-13)
-        lam, vec = lam[keep], vec[:n, keep]
-        order = np.argsort(np.abs(lam))[:n_modes]  # by undamped natural frequency |s|
-        s, phi = lam[order], vec[:, order]
-    shapes = _normalise(dofs, dofs.expand(phi))
-    r = whirl_ratio(dofs, shapes)
-    whirl = np.where(r > _WHIRL_THRESHOLD, "forward", np.where(r < -_WHIRL_THRESHOLD, "backward", "planar"))
-    return Modes(float(speed), s, shapes, whirl, r, shaft_energy_fraction(model, shapes), dofs)
+        bare = type(red)(red.Phi, red.w2, red.G, 0 * red.C, red.F, red.L, red.S, red.internal_damping,
+                         tuple(a for a in red.actuators if not a.A.size), False)
+        lam, Z = candidates(bare, speed)
+        s, Z = lam[:n_modes], Z[:, :n_modes]
+        red = bare
+    shapes = _normalise(model.dofs, model.dofs.expand(red.shapes(Z)))
+    labels = label_modes(model, shapes)
+    return Modes(float(speed), s, shapes, labels.kind, labels.whirl, labels.whirl_ratio, labels.component,
+                 labels.shares, model.dofs, model.internal_damping)

@@ -56,6 +56,10 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
     """
     speed = model.speed if speed is None else speed
     omegas = np.atleast_1d(np.asarray(omega, dtype=float))
+    if not np.all(np.isfinite(omegas)) or np.any(omegas < 0):
+        raise ValueError(f"excitation frequencies must be finite and >= 0 rad/s (got {omega!r})")
+    if not np.isfinite(speed) or speed < 0:
+        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
     out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
     return out[..., 0] if np.ndim(omega) == 0 else out
 
@@ -77,20 +81,42 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> np.ndar
         (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
     """
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
+        raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
     return _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
 
 
-def static_response(model: Model, loads) -> np.ndarray:
-    """Static displacement ``(K' + C_a(0)) q = Q`` with the storage stiffness [m, rad].
+def static_response(model: Model, loads, speed: float | None = None) -> np.ndarray:
+    """Static displacement of the spinning driveline under constant loads [m, rad].
 
-    The hysteretic (imaginary) stiffness has no static meaning and is left out.
+    ``(K + K_a + L(0, Ω)) q = Q`` with the storage stiffness K, the actuators' static stiffness
+    K_a and the loss at zero frequency: nothing for the fixed-frame loss, but for the
+    ``"rotating"`` internal-damping model the circulatory ``K_lat S`` of the spinning shaft,
+    whose material is cycled at Ω by a constant deflection (the deflection then turns slightly
+    sideways; :mod:`flexshaft.analyses.loss`).
+
+    Parameters
+    ----------
+    loads : ndarray
+        Load vector(s) on the full DOF vector (ndof,) or (ndof, ncases) [N, N m].
+    speed : float or None
+        Spin speed Ω [rad/s] (the model's operating speed when None).
     """
+    from flexshaft.analyses.loss import frequency_coefficients
     from flexshaft.assembly.sparse import restrict
     import scipy.sparse.linalg as spla
 
     free = model.dofs.free
-    K = model.K.real + model.Kp
+    speed = model.speed if speed is None else float(speed)
+    if not np.isfinite(speed) or speed < 0:
+        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    K = model.K + model.Kp
+    circulatory = frequency_coefficients(model.internal_damping, 0.0, speed).circulatory
+    if circulatory:
+        K = K + circulatory * model.loss_circulatory
     Q = np.asarray(loads, dtype=float)
+    if not np.all(np.isfinite(Q)):
+        raise ValueError("the load vector contains NaN or inf")
     try:
         lu = spla.splu(restrict(K.tocsr(), free).tocsc())
     except RuntimeError as exc:

@@ -146,7 +146,7 @@ def build_model(design) -> Model:
     Ms, Ks, Gs = shaft_element_matrices(np.diff(shaft_x), section, props.youngs_modulus, props.shear_modulus, props.density, kappa)
     sdofs = dm.element_dofs("shaft")
     M = scatter(Ms, sdofs, n)
-    K = scatter(Ks, sdofs, n)
+    K = scatter(Ks.real, sdofs, n)
     shaft_loss = scatter(Ks.imag, sdofs, n)
     boom_loss = sp.csr_matrix((n, n))
     G = scatter(Gs, sdofs, n)
@@ -163,7 +163,7 @@ def build_model(design) -> Model:
         Mb, Kb = boom_element_matrices(boom_x, section_at, mat.E * (1 + 1j * eta), mat.G * (1 + 1j * eta), mat.density)
         bdofs = dm.element_dofs("boom")
         M = M + scatter(Mb, bdofs, n)
-        K = K + scatter(Kb, bdofs, n)
+        K = K + scatter(Kb.real, bdofs, n)
         boom_loss = scatter(Kb.imag, bdofs, n)
         if tb.end_mass is not None:
             em = tb.end_mass
@@ -197,7 +197,7 @@ def build_model(design) -> Model:
     return Model(
         dofs=dm,
         M=M.tocsr(),
-        K=K.astype(complex).tocsr(),
+        K=K.astype(float).tocsr(),
         C=C.tocsr(),
         G=G.tocsr(),
         bearings=tuple(links),
@@ -208,4 +208,5 @@ def build_model(design) -> Model:
         design=design,
         shaft_loss_stiffness=shaft_loss.tocsr(),
         boom_loss_stiffness=boom_loss.tocsr(),
+        internal_damping=design.analysis.internal_damping,
     )

@@ -21,7 +21,7 @@ __all__ = ["MM_PER_M", "RPM_PER_HZ", "WHIRL_LINESTYLE", "STYLE", "styled", "new_
 
 MM_PER_M = 1e3
 RPM_PER_HZ = 60.0
-WHIRL_LINESTYLE = {"forward": "-", "backward": "--", "planar": ":"}
+WHIRL_LINESTYLE = {"forward": "-", "backward": "--", "planar": ":", "none": (0, (1, 4))}  # none: torsional/axial
 STYLE = {
     "font.size": 10,
     "axes.titlesize": 11,

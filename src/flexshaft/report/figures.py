@@ -109,7 +109,8 @@ def campbell_figure(
 
     f_max = np.nanmax(freqs) if np.isfinite(freqs).any() else 1.0
     span = np.array([speeds.min(), speeds.max()])
-    handles = [Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[name], label=f"{name} whirl")
+    handles = [Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[name],
+                      label="torsional / axial (no 1× critical)" if name == "none" else f"{name} whirl")
                for name in WHIRL_LINESTYLE if name in labels]
     for k, order in enumerate(harmonics):
         (line,) = ax.plot(span, order * span / RPM_PER_HZ, color="0.15", lw=1.0,

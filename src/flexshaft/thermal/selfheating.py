@@ -138,7 +138,8 @@ def model_with_shaft_moduli(model: Model, youngs_moduli, shear_moduli) -> Model:
     old = scatter(shaft_stiffness_matrices(model), sdofs, n)
     Ke = shaft_stiffness_matrices(model, youngs_moduli, shear_moduli)
     new = scatter(Ke, sdofs, n)
-    return dataclasses.replace(model, K=(model.K - old + new).tocsr(), shaft_loss_stiffness=scatter(Ke.imag, sdofs, n))
+    K = (model.K - old.real + new.real).tocsr()  # the model's K is the real storage stiffness
+    return dataclasses.replace(model, K=K, shaft_loss_stiffness=scatter(Ke.imag, sdofs, n))
 
 
 def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.ndarray):

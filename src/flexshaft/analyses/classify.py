@@ -1,0 +1,105 @@
+"""Mode labels shared by every eigen-analysis: kind, whirl direction and component.
+
+Kind. The kinetic energy ``φᴴ M φ`` of a mode is split over DOF groups by the block partition
+``E_g = Re(φ_gᴴ (M φ)_g)``: shaft axial (u), shaft torsion (θ), shaft lateral (v, w, β, γ)
+and tailboom. A mode is ``"torsional"`` when the shaft's twist holds more than
+:data:`KIND_THRESHOLD` of its kinetic energy, ``"axial"`` when the shaft's axial motion does,
+and ``"lateral"`` otherwise: bending of the shaft and/or the tailboom (whose twist belongs to
+its lateral dynamics: through the bearing offset and the end mass it moves the shaft
+laterally). Only lateral modes can be excited by the rotating imbalance, so only they make 1×
+critical speeds.
+
+Whirl (lateral modes only; others are ``"none"``). With node orbits ``v = Re(V e^{iωt})``,
+``w = Re(W e^{iωt})`` and spin about +x (y towards z), a forward orbit has ``W = −iV``. The
+whirl ratio ``r = −2 Σ Im(V̄ W) / Σ(|V|² + |W|²)`` over the shaft nodes is +1 for a circular
+forward orbit and −1 for a backward one; ``|r| <`` :data:`WHIRL_THRESHOLD` is ``"planar"``.
+
+Component: ``"shaft"`` when the shaft holds more than 90 % of the kinetic energy, ``"boom"``
+below 10 %, else ``"coupled"``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from flexshaft.assembly.dofs import DofMap
+from flexshaft.assembly.model import Model
+
+__all__ = ["KIND_THRESHOLD", "WHIRL_THRESHOLD", "EnergyShares", "energy_shares", "whirl_ratio", "ModeLabels", "label_modes"]
+
+#: Share of kinetic energy in the shaft's twist (or axial motion) that makes a mode torsional (axial).
+KIND_THRESHOLD = 0.5
+#: |whirl ratio| below which a lateral mode is planar.
+WHIRL_THRESHOLD = 0.1
+
+
+@dataclass(frozen=True)
+class EnergyShares:
+    """Kinetic-energy shares of modes (columns) by DOF group; they sum to 1."""
+
+    shaft_axial: np.ndarray
+    shaft_torsion: np.ndarray
+    shaft_lateral: np.ndarray
+    boom: np.ndarray
+
+    @property
+    def shaft(self) -> np.ndarray:
+        """Share of the shaft (all its DOFs)."""
+        return self.shaft_axial + self.shaft_torsion + self.shaft_lateral
+
+
+def energy_shares(model: Model, shapes: np.ndarray) -> EnergyShares:
+    """Kinetic-energy shares of full-DOF ``shapes`` (ndof, n_modes) by DOF group."""
+    dm = model.dofs
+    Mphi = model.M @ shapes
+    density = np.real(np.conj(shapes) * Mphi)
+    total = density.sum(axis=0)
+    total = np.where(total > 0, total, 1.0)
+    nodes = np.arange(dm.n_shaft_nodes)
+
+    def share(index) -> np.ndarray:
+        return density[np.asarray(index, dtype=int)].sum(axis=0) / total
+
+    lateral = np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")])
+    return EnergyShares(
+        shaft_axial=share(dm.shaft(nodes, "u")),
+        shaft_torsion=share(dm.shaft(nodes, "theta")),
+        shaft_lateral=share(lateral),
+        boom=share(np.arange(6 * dm.n_shaft_nodes, dm.size)),
+    )
+
+
+def whirl_ratio(dofs: DofMap, shapes: np.ndarray) -> np.ndarray:
+    """Whirl ratio r in [−1, 1] of each mode (column) from the shaft node orbits."""
+    n = np.arange(dofs.n_shaft_nodes)
+    V, W = shapes[dofs.shaft(n, "v")], shapes[dofs.shaft(n, "w")]
+    power = np.sum(np.abs(V) ** 2 + np.abs(W) ** 2, axis=0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        r = -2 * np.sum(np.imag(np.conj(V) * W), axis=0) / power
+    return np.where(power > 0, r, 0.0)
+
+
+@dataclass(frozen=True)
+class ModeLabels:
+    """Labels of modes (arrays over the modes)."""
+
+    kind: np.ndarray  # "lateral" | "torsional" | "axial"
+    whirl: np.ndarray  # "forward" | "backward" | "planar" | "none"
+    whirl_ratio: np.ndarray
+    component: np.ndarray  # "shaft" | "boom" | "coupled"
+    shares: EnergyShares
+
+
+def label_modes(model: Model, shapes: np.ndarray) -> ModeLabels:
+    """Kind, whirl and component of full-DOF mode ``shapes`` (ndof, n_modes)."""
+    shares = energy_shares(model, shapes)
+    kind = np.where(shares.shaft_torsion > KIND_THRESHOLD, "torsional",
+                    np.where(shares.shaft_axial > KIND_THRESHOLD, "axial", "lateral"))
+    r = whirl_ratio(model.dofs, shapes)
+    whirl = np.where(r > WHIRL_THRESHOLD, "forward", np.where(r < -WHIRL_THRESHOLD, "backward", "planar"))
+    whirl = np.where(kind == "lateral", whirl, "none")
+    f = shares.shaft
+    component = np.where(f > 0.9, "shaft", np.where(f < 0.1, "boom", "coupled"))
+    return ModeLabels(kind.astype(object).astype(str), whirl.astype(str), r, component.astype(str), shares)
