@@ -1,11 +1,10 @@
-"""Proposed ``[thermal]`` table of the design file (not yet attached to :class:`Design`).
+"""The ``[thermal]`` table of the design file: plain validated values, no runtime objects.
 
-To attach it, add ``thermal: Thermal = Thermal()`` to ``Design`` in
-:mod:`flexshaft.design.schema` and re-export :class:`Thermal`; the thermal analyses then take
-``design.thermal.environment()`` and ``design.thermal.matrix_law()``. Temperatures are in
-degrees Celsius in the file (the edge) and converted to kelvin by the two builders; the zenith
-angle is in degrees. Defaults are DESIGN.md §5 (thesis Table 2.1 + assumed hot day) and the
-assumed matrix law of :mod:`flexshaft.thermal.selfheating`.
+Temperatures are in degrees Celsius in the file (the edge) and the zenith angle in degrees;
+:func:`flexshaft.thermal.options.thermal_options` converts the table to the SI objects the
+thermal analyses use. The defaults are the shipped baseline's values (DESIGN.md §5: thesis
+Table 2.1, the assumed and calibrated values marked in ``baseline.toml``). The shaft's loss
+model is not a thermal choice: it is the design's ``[analysis] internal_damping``.
 """
 
 from __future__ import annotations
@@ -15,60 +14,82 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from flexshaft.design.fields import FrozenModel, Positive
+from flexshaft.design.units import ZERO_CELSIUS
 
-__all__ = ["Thermal"]
+__all__ = ["Thermal", "BoomConvection", "ShaftConvection"]
 
 Fraction = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=1.0)]
-Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-273.15, le=400.0)]
+Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0)]
 Zenith = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=-90.0, le=90.0)]
 Conductivity = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=2000.0)]
 
+#: Forced-convection correlation of the hovering tailboom (cross-flow over a cylinder).
+BoomConvection = Literal["hilpert", "churchill_bernstein"]
+#: Convection correlation of the shaft spinning in still air.
+ShaftConvection = Literal["becker", "kendoush"]
+
 
 class Thermal(FrozenModel):
-    """Thermal environment, shaft heat-transfer options and the matrix temperature law."""
+    """Thermal environment, heat-transfer correlations, ply conductivities and matrix law.
 
-    rotorcraft_mass: Positive = 6838.0          # kg, thesis Table 2.1
-    rotor_radius: Positive = 7.315              # m
+    Attributes
+    ----------
+    rotorcraft_mass : float
+        m_rc [kg]; its weight sets the hover downwash (thesis Table 2.1).
+    rotor_radius : float
+        Main-rotor radius R_r [m].
+    emissivity : float
+        Tailboom skin emissivity ε [-].
+    solar_absorptivity : float or None
+        Solar absorptivity α_s [-]; None takes α_s = ε.
+    solar_constant : float
+        S_c [W/m^2].
+    solar_fraction : float
+        Atmospheric transmission f [-] in G = S_c f cos θ_s.
+    solar_zenith_deg : float
+        Solar zenith angle θ_s [deg].
+    sky_temperature_c : float
+        Effective sky temperature [°C].
+    air_density : float
+        Air density for the momentum-theory downwash [kg/m^3].
+    ambient_temperature_c : float
+        Ambient air temperature [°C].
+    solar_area_fraction : float
+        Share of the boom skin that absorbs the solar irradiation G [-]: 1/π (0.318) is the
+        projected area of a cylinder under an overhead sun, 0.5 the sunlit half, 1 the whole skin.
+    boom_convection : {"hilpert", "churchill_bernstein"}
+        Hover cross-flow correlation of the tailboom (thesis eq. 2.57 is Hilpert's).
+    shaft_convection : {"becker", "kendoush"}
+        Rotating-shaft convection correlation (thesis eq. 2.63 cites Kendoush).
+    fibre_conductivity, transverse_conductivity : float
+        Ply thermal conductivity along and across the fibres [W/(m K)].
+    matrix_reference_temperature_c : float
+        Temperature of the lamina data [°C].
+    matrix_modulus_decay : float
+        θ_E [K]: E_T and G_LT scale by exp(−(T − T_ref)/θ_E).
+    matrix_loss_growth : float
+        θ_η [K]: the matrix loss factors scale by exp(+(T − T_ref)/θ_η).
+    allowable_temperature_c : float
+        Matrix critical temperature [°C]: the shaft must stay below it (thermal runaway when
+        the self-heating has no equilibrium below it).
+    """
+
+    rotorcraft_mass: Positive = 6838.0
+    rotor_radius: Positive = 7.315
     emissivity: Fraction = 0.97
-    solar_absorptivity: Fraction | None = None  # None: equal to the emissivity (assumed)
-    solar_constant: Positive = 1353.0           # W/m^2
+    solar_absorptivity: Fraction | None = None
+    solar_constant: Positive = 1353.0
     solar_fraction: Fraction = 1.0
     solar_zenith_deg: Zenith = 0.0
-    sky_temperature_c: Celsius = 285.0 - 273.15
-    air_density: Positive = 1.225               # kg/m^3 (assumed)
-    ambient_temperature_c: Celsius = 35.0       # assumed hot day
-    solar_area: Literal["projected", "half_surface", "surface"] = "projected"
-    boom_convection: Literal["churchill_bernstein", "hilpert"] = "churchill_bernstein"
-    shaft_convection: Literal["becker", "kendoush"] = "becker"
-    loss_model: Literal["thesis", "rotating"] = "rotating"
-    fibre_conductivity: Conductivity = 5.0      # W/(m K), along the fibres (assumed)
-    transverse_conductivity: Conductivity = 0.5 # W/(m K), across the fibres (assumed)
+    sky_temperature_c: Celsius = 11.85  # 285 K
+    air_density: Positive = 1.225
+    ambient_temperature_c: Celsius = 25.6
+    solar_area_fraction: Fraction = 0.69
+    boom_convection: BoomConvection = "hilpert"
+    shaft_convection: ShaftConvection = "becker"
+    fibre_conductivity: Conductivity = 5.0
+    transverse_conductivity: Conductivity = 0.5
     matrix_reference_temperature_c: Celsius = 20.0
-    matrix_modulus_decay: Positive = 40.0       # K
-    matrix_loss_growth: Positive = 60.0         # K
-    allowable_temperature_c: Celsius = 100.0    # matrix critical temperature (assumed)
-
-    def environment(self):
-        """The :class:`flexshaft.thermal.ThermalEnvironment` of this table (SI, kelvin)."""
-        import math
-
-        from flexshaft.thermal.environment import ZERO_CELSIUS, ThermalEnvironment
-
-        return ThermalEnvironment(
-            rotorcraft_mass=self.rotorcraft_mass, rotor_radius=self.rotor_radius, emissivity=self.emissivity,
-            solar_absorptivity=self.solar_absorptivity, solar_constant=self.solar_constant,
-            solar_fraction=self.solar_fraction, solar_zenith=math.radians(self.solar_zenith_deg),
-            sky_temperature=self.sky_temperature_c + ZERO_CELSIUS, air_density=self.air_density,
-            ambient_temperature=self.ambient_temperature_c + ZERO_CELSIUS, solar_area=self.solar_area,
-        )
-
-    def matrix_law(self):
-        """The :class:`flexshaft.thermal.selfheating.MatrixTemperatureLaw` of this table."""
-        from flexshaft.thermal.environment import ZERO_CELSIUS
-        from flexshaft.thermal.selfheating import MatrixTemperatureLaw
-
-        return MatrixTemperatureLaw(
-            reference_temperature=self.matrix_reference_temperature_c + ZERO_CELSIUS,
-            modulus_decay=self.matrix_modulus_decay, loss_growth=self.matrix_loss_growth,
-            allowable_temperature=self.allowable_temperature_c + ZERO_CELSIUS,
-        )
+    matrix_modulus_decay: Positive = 40.0
+    matrix_loss_growth: Positive = 60.0
+    allowable_temperature_c: Celsius = 100.0

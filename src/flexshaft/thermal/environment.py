@@ -1,22 +1,23 @@
-"""Thermal environment of the driveline: the thesis Table 2.1 inputs plus the assumed hot day.
+"""Thermal environment of the driveline: the thesis Table 2.1 inputs, ambient and sunlit area.
 
-These values are not yet fields of the design schema; :class:`ThermalEnvironment` carries them
-with the DESIGN.md §5 defaults until a ``[thermal]`` table exists.
+:class:`ThermalEnvironment` holds SI values; its defaults equal the design schema's
+``[thermal]`` defaults (the shipped baseline). Build one from a design with
+:func:`flexshaft.thermal.options.environment_from`.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Literal
 
-__all__ = ["ZERO_CELSIUS", "STEFAN_BOLTZMANN", "GRAVITY", "SolarArea", "ThermalEnvironment"]
+from flexshaft.design.units import celsius_to_kelvin
 
-ZERO_CELSIUS = 273.15  # K
+__all__ = ["STEFAN_BOLTZMANN", "GRAVITY", "PROJECTED_AREA_FRACTION", "ThermalEnvironment"]
+
 STEFAN_BOLTZMANN = 5.670374419e-8  # W/(m^2 K^4), CODATA 2018
 GRAVITY = 9.80665  # m/s^2
-
-SolarArea = Literal["projected", "half_surface", "surface"]
+#: Projected width over perimeter of a cylinder, D / (π D) [-]: the skin share lit by an overhead sun.
+PROJECTED_AREA_FRACTION = 1.0 / math.pi
 
 
 @dataclass(frozen=True)
@@ -44,12 +45,13 @@ class ThermalEnvironment:
     air_density : float
         ρ_air [kg/m^3] for the momentum-theory downwash (1.225, assumed).
     ambient_temperature : float
-        T_amb [K] (35 °C = 308.15 K, assumed hot day).
+        T_amb [K] (25.6 °C: Swinbank's clear sky, T_sky = 0.0552 T_amb^1.5, at T_sky = 285 K).
     air_pressure : float
         Static pressure for the air properties [Pa] (101325).
-    solar_area : {"projected", "half_surface", "surface"}
-        Area that absorbs the direct sun: the projected area D L (a cylinder under an overhead
-        sun; default), half the surface π D L / 2, or all of it π D L.
+    solar_area_fraction : float
+        Share of the skin area π D L that absorbs G [-] (0.69, calibrated to the thesis's
+        89 °C parked): :data:`PROJECTED_AREA_FRACTION` = 1/π for the direct beam of an overhead
+        sun on the projected width D, 0.5 for the sunlit half, 1 for the whole skin.
     """
 
     rotorcraft_mass: float = 6838.0
@@ -61,9 +63,9 @@ class ThermalEnvironment:
     solar_zenith: float = 0.0
     sky_temperature: float = 285.0
     air_density: float = 1.225
-    ambient_temperature: float = 35.0 + ZERO_CELSIUS
+    ambient_temperature: float = celsius_to_kelvin(25.6)
     air_pressure: float = 101325.0
-    solar_area: SolarArea = "projected"
+    solar_area_fraction: float = 0.69
 
     def __post_init__(self) -> None:
         positive = ("rotorcraft_mass", "rotor_radius", "solar_constant", "sky_temperature",
@@ -72,7 +74,7 @@ class ThermalEnvironment:
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
                 raise ValueError(f"ThermalEnvironment.{name} must be finite and > 0, got {value!r}")
-        for name in ("emissivity", "solar_fraction"):
+        for name in ("emissivity", "solar_fraction", "solar_area_fraction"):
             value = getattr(self, name)
             if not (math.isfinite(value) and 0 <= value <= 1):
                 raise ValueError(f"ThermalEnvironment.{name} must be in [0, 1], got {value!r}")
@@ -80,8 +82,6 @@ class ThermalEnvironment:
             raise ValueError(f"ThermalEnvironment.solar_absorptivity must be in [0, 1], got {self.solar_absorptivity!r}")
         if not (math.isfinite(self.solar_zenith) and abs(self.solar_zenith) <= math.pi / 2):
             raise ValueError(f"ThermalEnvironment.solar_zenith must be in [-pi/2, pi/2] rad, got {self.solar_zenith!r}")
-        if self.solar_area not in ("projected", "half_surface", "surface"):
-            raise ValueError(f"ThermalEnvironment.solar_area must be 'projected', 'half_surface' or 'surface', got {self.solar_area!r}")
 
     @property
     def absorptivity(self) -> float:

@@ -33,6 +33,10 @@ deflection becomes a circular orbit at Ω: ``P = (Ω/2) X_cᴴ K'' X_c`` with th
 the rotating shaft every fibre passes the extreme strain each revolution, whereas in a planar
 vibration of the same amplitude a fibre at angle ψ sees only |cos ψ| of it.
 Static axial and torsional strains (torque) are not cycled in either model.
+
+Which model a design uses is its ``[analysis] internal_damping`` (the same choice as every
+other analysis of the model); ``loss_model=None`` in the functions below means that choice,
+and an explicit ``"thesis"`` or ``"rotating"`` overrides it for a comparison.
 """
 
 from __future__ import annotations
@@ -47,11 +51,12 @@ from flexshaft.assembly.model import Model
 from flexshaft.elements import TubeSection, cowper_shear_coefficient, shaft_element_matrices
 
 __all__ = [
-    "LossModel", "HeatSources", "harmonic_loss_power", "split_whirl", "static_circular_amplitude",
+    "LossModel", "LOSS_MODELS", "resolve_loss_model", "HeatSources", "harmonic_loss_power", "split_whirl", "static_circular_amplitude",
     "shaft_loss_matrices", "element_amplitudes", "shaft_response_amplitudes", "heat_sources",
 ]
 
 LossModel = Literal["thesis", "rotating"]
+LOSS_MODELS: tuple[str, ...] = ("thesis", "rotating")
 
 _IDX = {f: (SHAFT_FIELDS.index(f), SHAFT_FIELDS.index(f) + 6) for f in SHAFT_FIELDS}
 
@@ -62,6 +67,26 @@ def _cols(*fields: str) -> list[int]:
 
 _BENDING = _cols("v", "w", "beta", "gamma")
 _AXIAL_TORSION = _cols("u", "theta")
+
+
+def resolve_loss_model(model: Model, loss_model: LossModel | None = None) -> LossModel:
+    """The loss model to use: ``loss_model`` when given, else the model's design choice
+    ``design.analysis.internal_damping``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown name, or ``None`` with a model that carries no design.
+    """
+    if loss_model is None:
+        design = model.design
+        if design is None:
+            raise ValueError("loss_model: the model carries no design to take [analysis] internal_damping from; "
+                             "give 'thesis' or 'rotating'")
+        loss_model = design.analysis.internal_damping
+    if loss_model not in LOSS_MODELS:
+        raise ValueError(f"loss_model must be 'thesis' or 'rotating', got {loss_model!r}")
+    return loss_model
 
 
 def harmonic_loss_power(X: np.ndarray, loss_stiffness: np.ndarray, omega: float) -> np.ndarray:
@@ -203,7 +228,7 @@ class HeatSources:
         return self.total / np.diff(self.x)
 
 
-def heat_sources(model: Model, loss_model: LossModel = "thesis", q_imbalance=None, q_static=None,
+def heat_sources(model: Model, loss_model: LossModel | None = None, q_imbalance=None, q_static=None,
                  loss_stiffness: np.ndarray | None = None) -> HeatSources:
     """Heat generated per shaft element by the imbalance response and the static deflection.
 
@@ -211,16 +236,15 @@ def heat_sources(model: Model, loss_model: LossModel = "thesis", q_imbalance=Non
     ----------
     model : Model
         Assembled model; its operating speed Ω is the cycling frequency.
-    loss_model : {"thesis", "rotating"}
-        See the module docstring.
+    loss_model : {"thesis", "rotating"} or None
+        See the module docstring; None: the design's ``[analysis] internal_damping``.
     q_imbalance, q_static : ndarray, optional
         Global response vectors (imbalance: complex, (ndof,) or (ndof, ncases); static: real
         (ndof,)); computed from the design when omitted.
     loss_stiffness : ndarray, optional
         Im(K_e), (nel, 12, 12); the model's uniform one when omitted.
     """
-    if loss_model not in ("thesis", "rotating"):
-        raise ValueError(f"loss_model must be 'thesis' or 'rotating', got {loss_model!r}")
+    loss_model = resolve_loss_model(model, loss_model)
     if q_imbalance is None or q_static is None:
         qi, qs = shaft_response_amplitudes(model)
         q_imbalance = qi if q_imbalance is None else q_imbalance

@@ -1,16 +1,7 @@
 """Self-heating equilibrium: temperature-dependent FMC properties iterated to a fixed point.
 
-The polyurethane matrix softens and gets lossier as it warms; the fibre properties (E_L, η_L)
-do not change. :class:`MatrixTemperatureLaw` is a documented, assumed shift law (no data in the
-thesis)::
-
-    E_T(T)  = E_T(T_ref)  · exp(−(T − T_ref)/θ_E),     G_LT likewise,
-    η_T(T)  = min(η_T(T_ref)  · exp(+(T − T_ref)/θ_η), η_max),   η_LT likewise,
-
-with T_ref = 20 °C (the 10 Hz lamina data), θ_E = 40 K (the rubbery-plateau modulus of a
-90A urethane roughly halves every 28 K as the hard segments soften), θ_η = 60 K and an
-allowable temperature of 100 °C (hard-segment softening; the thesis's "critical temperature of
-the matrix"). Replace it with measured master curves when available.
+The matrix properties follow the options' :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw`
+(E_T, G_LT soften and their loss factors grow with temperature; fibre properties fixed).
 
 Fixed point, per element: each element e carries its own temperature T_e (mean of its nodes),
 hence its own lamina, laminate E*_e, G*_e and element stiffness. The model variant is the
@@ -18,9 +9,9 @@ original global K with the uniform shaft elements replaced by the per-element on
 (:func:`model_with_shaft_moduli`). Then response (imbalance at Ω + static) → heat per element
 → finite-difference temperature → new T_e, until max |ΔT| < tol (Picard iteration; it converges
 when the loop gain d(heat)/dT × thermal resistance < 1, which is exactly when a stable
-equilibrium exists). **Thermal runaway**: an iterate exceeds the allowable temperature, i.e.
-there is no fixed point below it (the iteration increases monotonically when heat grows with
-temperature, so it cannot jump over a lower fixed point).
+equilibrium exists). **Thermal runaway**: an iterate exceeds the law's allowable temperature,
+i.e. there is no fixed point below it (the iteration increases monotonically when heat grows
+with temperature, so it cannot jump over a lower fixed point).
 """
 
 from __future__ import annotations
@@ -33,51 +24,17 @@ import numpy as np
 
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import scatter
-from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
+from flexshaft.design.units import kelvin_to_celsius
+from flexshaft.laminate import Laminate, equivalent_moduli
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
-from flexshaft.thermal.environment import ZERO_CELSIUS, ThermalEnvironment
-from flexshaft.thermal.heat import LossModel, heat_sources, shaft_response_amplitudes, shaft_stiffness_matrices
+from flexshaft.thermal.heat import (
+    LossModel, heat_sources, resolve_loss_model, shaft_response_amplitudes, shaft_stiffness_matrices,
+)
+from flexshaft.thermal.matrix import MatrixTemperatureLaw
+from flexshaft.thermal.options import ThermalOptions
 
 __all__ = ["MatrixTemperatureLaw", "FixedPoint", "fixed_point", "model_with_shaft_moduli",
            "SelfHeating", "self_heating", "runaway_onset"]
-
-
-@dataclass(frozen=True)
-class MatrixTemperatureLaw:
-    """Temperature dependence of the matrix-dominated lamina properties (assumed; see module).
-
-    Parameters
-    ----------
-    reference_temperature : float
-        Temperature of the lamina data [K].
-    modulus_decay : float
-        θ_E [K]: E_T and G_LT scale by exp(−ΔT/θ_E).
-    loss_growth : float
-        θ_η [K]: η_T and η_LT scale by exp(+ΔT/θ_η), capped at ``max_loss_factor``.
-    max_loss_factor : float
-        Cap on the matrix loss factors [-].
-    allowable_temperature : float
-        Matrix critical temperature [K]; no fixed point below it = thermal runaway.
-    """
-
-    reference_temperature: float = 20.0 + ZERO_CELSIUS
-    modulus_decay: float = 40.0
-    loss_growth: float = 60.0
-    max_loss_factor: float = 1.0
-    allowable_temperature: float = 100.0 + ZERO_CELSIUS
-
-    def lamina(self, lamina: Lamina, temperature: float) -> Lamina:
-        """The lamina at ``temperature`` [K] from its reference-temperature complex moduli."""
-        dT = float(temperature) - self.reference_temperature
-        soft = np.exp(-dT / self.modulus_decay)
-        lossy = np.exp(dT / self.loss_growth)
-
-        def matrix(E: complex) -> complex:
-            eta = min(E.imag / E.real * lossy, self.max_loss_factor)
-            return E.real * soft * (1 + 1j * eta)
-
-        return Lamina(complex(lamina.E_L), matrix(complex(lamina.E_T)), matrix(complex(lamina.G_LT)),
-                      lamina.nu_LT, lamina.density)
 
 
 @dataclass(frozen=True)
@@ -167,30 +124,68 @@ class SelfHeating:
     thermal : ShaftThermal
         Heat sources and temperature of the last iterate.
     iterations : int
-    margin : float
-        Allowable temperature − peak temperature [K] (negative at runaway).
+        Picard iterations done.
+    allowable_temperature : float
+        The matrix allowable temperature [K] the runaway check used.
+    history : ndarray
+        Maximum temperature of each iterate [K].
     """
 
     status: str
     element_temperature: np.ndarray
     thermal: ShaftThermal
     iterations: int
-    margin: float
+    allowable_temperature: float
     history: np.ndarray
+
+    @property
+    def max_temperature(self) -> float:
+        """Peak shaft temperature of the last iterate [K]."""
+        return self.thermal.max_temperature
+
+    @property
+    def max_temperature_c(self) -> float:
+        """Peak shaft temperature of the last iterate [°C]."""
+        return kelvin_to_celsius(self.max_temperature)
+
+    @property
+    def margin(self) -> float:
+        """Allowable temperature − peak temperature [K] (negative at runaway)."""
+        return self.allowable_temperature - self.max_temperature
 
 
 def self_heating(
-    model: Model, env: ThermalEnvironment | None = None, loss_model: LossModel = "thesis",
-    law: MatrixTemperatureLaw | None = None, *, imbalance_scale: float = 1.0, static_scale: float = 1.0,
-    air_temperature: float | None = None, tol: float = 1e-3, max_iter: int = 60, **thermal_kwargs,
+    model: Model, options: ThermalOptions | None = None, loss_model: LossModel | None = None, *,
+    imbalance_scale: float = 1.0, static_scale: float = 1.0, air_temperature: float | None = None,
+    tol: float = 1e-3, max_iter: int = 60, **thermal_kwargs,
 ) -> SelfHeating:
     """Iterate response → heat → temperature → lamina properties per element to a fixed point.
 
-    ``imbalance_scale``/``static_scale`` multiply the imbalance and static loads (to find the
-    load where runaway starts); other keywords go to :func:`shaft_thermal`.
+    Parameters
+    ----------
+    model : Model
+        Assembled model with a laminated shaft.
+    options : ThermalOptions
+        Environment, correlations, ply conductivities and the matrix temperature law with its
+        allowable temperature (default: the baseline's).
+    loss_model : {"thesis", "rotating"} or None
+        None: the design's ``[analysis] internal_damping``.
+    imbalance_scale, static_scale : float
+        Multipliers of the imbalance and static loads [-] (to find where runaway starts).
+    air_temperature : float, optional
+        T_∞ and end temperature [K]; default the boom's hover temperature.
+    tol : float
+        Converged when max |ΔT| < tol [K].
+    max_iter : int
+        Iteration limit.
+    **thermal_kwargs
+        Passed to :func:`~flexshaft.thermal.analysis.shaft_thermal`.
     """
-    law = law or MatrixTemperatureLaw()
-    T_air = shaft_air_temperature(model.design, env) if air_temperature is None else float(air_temperature)
+    options = options or ThermalOptions()
+    law = options.matrix_law
+    loss_model = resolve_loss_model(model, loss_model)
+    tailboom = None if model.design is None else model.design.tailboom
+    T_air = shaft_air_temperature(tailboom, options) if air_temperature is None else float(air_temperature)
     nel = model.dofs.n_shaft_nodes - 1
     last: dict[str, ShaftThermal] = {}
 
@@ -199,25 +194,26 @@ def self_heating(
         variant = model_with_shaft_moduli(model, E, G)
         q_imb, q_st = shaft_response_amplitudes(variant, imbalance_scale, static_scale)
         src = heat_sources(variant, loss_model, q_imb, q_st, loss_stiffness=shaft_stiffness_matrices(variant, E, G).imag)
-        res = shaft_thermal(variant, env, loss_model, air_temperature=T_air, sources=src, **thermal_kwargs)
+        res = shaft_thermal(variant, options, loss_model, air_temperature=T_air, sources=src, **thermal_kwargs)
         last["thermal"] = res
         return res.temperature.element_temperature
 
     fp = fixed_point(update, np.full(nel, T_air), law.allowable_temperature, tol, max_iter)
-    peak = float(last["thermal"].temperature.temperature.max())
-    return SelfHeating(fp.status, fp.temperature, last["thermal"], fp.iterations,
-                       law.allowable_temperature - peak, fp.history)
+    return SelfHeating(fp.status, fp.temperature, last["thermal"], fp.iterations, law.allowable_temperature,
+                       fp.history)
 
 
-def runaway_onset(model: Model, scales, env: ThermalEnvironment | None = None, loss_model: LossModel = "thesis",
-                  law: MatrixTemperatureLaw | None = None, refine: int = 0, **kwargs) -> tuple[float | None, list[SelfHeating]]:
+def runaway_onset(model: Model, scales, options: ThermalOptions | None = None, loss_model: LossModel | None = None,
+                  refine: int = 0, **kwargs) -> tuple[float | None, list[SelfHeating]]:
     """First load multiple (imbalance and static loads scaled together, increasing ``scales``)
     at which the self-heating has no fixed point below the allowable temperature; ``refine``
     bisection steps then narrow it between the last stable and the first runaway scale.
 
     Returns ``(scale or None, results)``.
     """
-    run = lambda s: self_heating(model, env, loss_model, law, imbalance_scale=float(s), static_scale=float(s), **kwargs)
+    def run(s: float) -> SelfHeating:
+        return self_heating(model, options, loss_model, imbalance_scale=float(s), static_scale=float(s), **kwargs)
+
     results, lo = [], None
     for s in scales:
         r = run(s)

@@ -4,12 +4,13 @@ Energy balance per unit boom length, for a lumped, isothermal, thin aluminium sk
 
     α_s G A_sun = ε σ (T⁴ − T_sky⁴) π D + h(T) (T − T_amb) π D
 
-* absorbed sun: G = S_c f cos θ_s (eq. 2.58) on ``A_sun`` per unit length: the projected width
-  D under an overhead sun (default), or πD/2 or πD (:attr:`ThermalEnvironment.solar_area`);
-  α_s = ε unless given (the thesis lists ε only);
+* absorbed sun: G = S_c f cos θ_s (eq. 2.58) on ``A_sun = s πD`` per unit length, with the
+  sunlit share s = :attr:`ThermalEnvironment.solar_area_fraction` (1/π: the projected width D
+  under an overhead sun; 0.5: the sunlit half; 1: the whole skin); α_s = ε unless given (the
+  thesis lists ε only);
 * sky exchange: the whole surface sees a black sky at T_sky (eq. 2.55);
 * convection: hover — forced cross-flow at the momentum-theory downwash V = √(W/(2ρπR²))
-  (eq. 2.56) with Hilpert (eq. 2.57) or Churchill-Bernstein; parked — free convection from a
+  (eq. 2.56) with Hilpert (eq. 2.57, the thesis's) or Churchill-Bernstein; parked — free convection from a
   horizontal cylinder, Churchill-Chu (eq. 2.59). Air properties at the film temperature.
 
 The elliptical boom is replaced by a circle of the same perimeter (D = P/π, Ramanujan's
@@ -27,6 +28,7 @@ from typing import Literal
 
 from scipy.optimize import brentq
 
+from flexshaft.design.units import kelvin_to_celsius
 from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
 from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment
@@ -35,7 +37,6 @@ __all__ = ["BoomCondition", "BoomTemperature", "ellipse_perimeter", "boom_equiva
            "boom_heat_transfer_coefficient", "tailboom_temperature", "tailboom_temperatures"]
 
 BoomCondition = Literal["hover", "parked"]
-_SOLAR_SHARE = {"projected": 1.0 / math.pi, "half_surface": 0.5, "surface": 1.0}  # A_sun / (π D)
 
 
 @dataclass(frozen=True)
@@ -76,7 +77,7 @@ class BoomTemperature:
     @property
     def celsius(self) -> float:
         """Skin temperature [°C]."""
-        return self.temperature - 273.15
+        return kelvin_to_celsius(self.temperature)
 
 
 def ellipse_perimeter(a: float, b: float) -> float:
@@ -100,7 +101,7 @@ def boom_equivalent_diameter(tailboom) -> float:
 
 def boom_heat_transfer_coefficient(
     temperature: float, diameter: float, condition: BoomCondition, env: ThermalEnvironment,
-    method: ForcedMethod = "churchill_bernstein",
+    method: ForcedMethod = "hilpert",
 ) -> tuple[float, Nusselt, float]:
     """Convection coefficient h [W/(m^2 K)] of the boom at skin ``temperature`` [K].
 
@@ -122,7 +123,7 @@ def boom_heat_transfer_coefficient(
 
 def tailboom_temperature(
     condition: BoomCondition, diameter: float, env: ThermalEnvironment | None = None,
-    method: ForcedMethod = "churchill_bernstein",
+    method: ForcedMethod = "hilpert",
 ) -> BoomTemperature:
     """Steady tailboom skin temperature for ``condition`` ("hover" or "parked").
 
@@ -131,14 +132,14 @@ def tailboom_temperature(
     diameter : float
         Equivalent boom diameter [m] (:func:`boom_equivalent_diameter`).
     env : ThermalEnvironment
-        Environment (thesis Table 2.1 defaults).
-    method : {"churchill_bernstein", "hilpert"}
+        Environment (default: the baseline's).
+    method : {"hilpert", "churchill_bernstein"}
         Forced-convection correlation (hover only).
     """
     env = env or ThermalEnvironment()
     if not (math.isfinite(diameter) and diameter > 0):
         raise ValueError(f"diameter must be finite and > 0 [m], got {diameter!r}")
-    absorbed = env.absorptivity * env.solar_irradiation * _SOLAR_SHARE[env.solar_area]
+    absorbed = env.absorptivity * env.solar_irradiation * env.solar_area_fraction
     eps_sigma = env.emissivity * STEFAN_BOLTZMANN
 
     def residual(T: float) -> float:
@@ -157,14 +158,8 @@ def tailboom_temperature(
     )
 
 
-def tailboom_temperatures(design=None, env: ThermalEnvironment | None = None,
-                          method: ForcedMethod = "churchill_bernstein") -> dict[str, BoomTemperature]:
-    """Hover and parked boom temperatures of a design (the baseline when None)."""
-    if design is None:
-        from flexshaft.design import baseline_design
-
-        design = baseline_design()
-    if design.tailboom is None:
-        raise ValueError("the design has no tailboom; tailboom temperatures need [tailboom]")
-    D = boom_equivalent_diameter(design.tailboom)
-    return {c: tailboom_temperature(c, D, env, method) for c in ("hover", "parked")}
+def tailboom_temperatures(diameter: float, env: ThermalEnvironment | None = None,
+                          method: ForcedMethod = "hilpert") -> dict[str, BoomTemperature]:
+    """Hover and parked skin temperatures of a boom of equivalent ``diameter`` [m]
+    (:func:`boom_equivalent_diameter` of the design's tailboom table)."""
+    return {c: tailboom_temperature(c, diameter, env, method) for c in ("hover", "parked")}
