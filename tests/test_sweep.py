@@ -164,13 +164,13 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs):
         time.sleep(0.01)
     proc.send_signal(sig)
     proc.wait(timeout=30)
-    assert proc.returncode != 0
     stored = finished_chunks(run_dir)
-    assert 3 <= len(stored) < 12 and not (run_dir / "results.nc").exists()
+    assert proc.returncode != 0, f"the sweep ended normally before the signal (chunks {stored})"
+    assert 3 <= len(stored) < 12 and not (run_dir / "results.nc").exists(), f"stored chunks {stored}"
     before = _markers_per_point(markers)
     # resume
     resumed = _run_script(tmp_path, run_dir, markers, jobs)
-    assert resumed.wait(timeout=60) == 0
+    assert resumed.wait(timeout=60) == 0, "the resumed sweep failed"
     after = _markers_per_point(markers)
     stored_points = np.concatenate([np.arange(4 * k, 4 * k + 4) for k in stored])
     assert np.all(after[stored_points] == 1), "a point of a finished chunk was recomputed"

@@ -14,13 +14,14 @@ when results are assembled; Dask only when a Dask client or address is given.
 """
 
 from flexshaft.sweep.run import chunk_bounds, finished_chunks, run_sweep, to_dataset
-from flexshaft.sweep.study import Output, Point, Study, SweepError, Variable, evaluate_chunk
+from flexshaft.sweep.study import Output, Point, Study, SweepError, SweepWarning, Variable, evaluate_chunk
 
 __all__ = [
     "Output",
     "Point",
     "Study",
     "SweepError",
+    "SweepWarning",
     "Variable",
     "chunk_bounds",
     "evaluate_chunk",

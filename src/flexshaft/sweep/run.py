@@ -1,17 +1,23 @@
 """Running a study: chunks, local processes or Dask, a run folder that survives interruption.
 
 The grid is cut into fixed chunks of consecutive points. Workers compute chunks; the calling
-process writes each finished chunk to ``RUN/chunks/chunk_NNNNNN.npy`` atomically (temporary file
-then ``os.replace``), so an interrupted run (Ctrl-C, SIGTERM, SIGKILL, a lost node) leaves only
-complete chunks. ``RUN/manifest.json`` holds the study's specification and fingerprint; running
-the same study on the same folder again computes only the missing chunks and writes
+process writes each finished chunk to ``RUN/chunks/chunk_NNNNNN.npz`` atomically (temporary file
+then ``os.replace``), with the study fingerprint, the chunk's point range and a SHA-256 checksum
+(:mod:`flexshaft.sweep.store`), so an interrupted run (Ctrl-C, SIGTERM, SIGKILL, a lost node)
+leaves only complete chunks. ``RUN/manifest.json`` holds the study's specification and
+fingerprint; running the same study on the same folder again verifies every stored chunk,
+recomputes the missing and the damaged or foreign ones (with a warning naming each) and writes
 ``RUN/results.nc``, identical to an uninterrupted run's (the values are stored bit for bit and
 the file carries no time stamp).
 
 Backends:
 
 * ``jobs=1``: in this process;
-* ``jobs=N``: a pool of N worker processes, one BLAS thread each;
+* ``jobs=N``: a pool of N worker processes, one BLAS thread each, started by fork or spawn (the
+  default start method, with spawn replacing a forkserver). The workers end with the calling
+  process even when it is killed with SIGKILL: on Linux each worker asks the kernel for SIGKILL
+  when its parent dies (``prctl(PR_SET_PDEATHSIG)``); elsewhere a thread in each worker watches
+  the parent and exits the worker within a second of its death;
 * ``client=``: a ``dask.distributed.Client`` or a scheduler address (``"tcp://host:8786"``).
   On SLURM, make the client from ``dask_jobqueue.SLURMCluster``. Dask is imported only then.
 """
@@ -21,80 +27,27 @@ from __future__ import annotations
 import json
 import os
 import signal
+import sys
 import tempfile
 import threading
+import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
 __all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_dataset"]
 
-MANIFEST = "manifest.json"
 RESULTS = "results.nc"
-CHUNKS = "chunks"
 
 
 def chunk_bounds(size: int, chunk_size: int) -> list[tuple[int, int]]:
     """``(start, stop)`` of each chunk of a grid of ``size`` points."""
     return [(s, min(s + chunk_size, size)) for s in range(0, size, chunk_size)]
-
-
-def _chunk_path(run_dir: Path, k: int) -> Path:
-    return run_dir / CHUNKS / f"chunk_{k:06d}.npy"
-
-
-def _atomic_write(path: Path, write) -> None:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=path.suffix)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            write(fh)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def finished_chunks(run_dir: str | os.PathLike) -> list[int]:
-    """Indices of the chunks already stored in a run folder."""
-    folder = Path(run_dir) / CHUNKS
-    if not folder.is_dir():
-        return []
-    return sorted(int(p.stem.split("_")[1]) for p in folder.glob("chunk_*.npy"))
-
-
-def _open_run(run_dir: Path, study: Study, chunk_size: int | None) -> int:
-    """Create or check the run folder; returns the chunk size in force."""
-    manifest = run_dir / MANIFEST
-    fingerprint = study.fingerprint()
-    if manifest.exists():
-        stored = json.loads(manifest.read_text())
-        if stored["fingerprint"] != fingerprint:
-            raise SweepError(
-                f"run folder {run_dir} holds a different study ({stored['study']['name']!r}, "
-                f"fingerprint {stored['fingerprint'][:12]}); use a new folder to run this one"
-            )
-        if chunk_size is not None and chunk_size != stored["chunk_size"]:
-            raise SweepError(
-                f"run folder {run_dir} was started with chunk_size={stored['chunk_size']}; "
-                f"resume with the same chunk size (got {chunk_size})"
-            )
-        return int(stored["chunk_size"])
-    chunk_size = chunk_size or 1
-    (run_dir / CHUNKS).mkdir(parents=True, exist_ok=True)
-    text = json.dumps(
-        {"fingerprint": fingerprint, "chunk_size": chunk_size, "size": study.size, "study": study.spec()},
-        indent=1,
-        default=repr,
-    )
-    _atomic_write(manifest, lambda fh: fh.write(text.encode()))
-    return chunk_size
 
 
 def _default_chunk_size(size: int, workers: int) -> int:
@@ -111,16 +64,78 @@ def _run_serial(study: Study, todo, on_error) -> Iterator[tuple[int, np.ndarray]
         yield k, evaluate_chunk(study, a, b, on_error)
 
 
-def _worker_init() -> None:
+# A worker must not outlive the sweep process: orphaned workers would compute forever and hold
+# its stdout. Set to False to use the portable watchdog thread on Linux too (tests use this).
+_USE_PDEATHSIG = True
+_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
+_WATCHDOG_INTERVAL = 0.5  # [s] how often the watchdog thread looks at the parent
+
+
+def _set_parent_death_signal(sig: int) -> bool:
+    """Ask Linux to send ``sig`` to this process when its parent dies; False if unavailable."""
+    if not (_USE_PDEATHSIG and sys.platform.startswith("linux")):
+        return False
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        prctl = libc.prctl
+    except (OSError, AttributeError):  # no libc symbol table (unusual builds)
+        return False
+    prctl.argtypes = [ctypes.c_int, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong]
+    prctl.restype = ctypes.c_int
+    return prctl(_PR_SET_PDEATHSIG, int(sig), 0, 0, 0) == 0
+
+
+def _watch_parent(parent_pid: int, interval: float) -> None:
+    while os.getppid() == parent_pid:
+        time.sleep(interval)
+    os._exit(1)  # the parent is gone: end the whole worker now, without cleanup
+
+
+def _die_with_parent(parent_pid: int) -> str:
+    """Make this worker end when its parent, the sweep process ``parent_pid``, ends, however.
+
+    Returns the mechanism used, ``"pdeathsig"`` (Linux) or ``"watchdog"`` (elsewhere). The
+    worker must be a direct child of the sweep process (fork or spawn, not a forkserver).
+    """
+    if _set_parent_death_signal(signal.SIGKILL):
+        # The parent may have died between the fork and the prctl call; then no signal comes.
+        if os.getppid() != parent_pid:
+            os._exit(1)
+        return "pdeathsig"
+    threading.Thread(target=_watch_parent, args=(parent_pid, _WATCHDOG_INTERVAL), daemon=True,
+                     name="flexshaft-parent-watch").start()
+    return "watchdog"
+
+
+def _pool_context():
+    """The default multiprocessing context, but spawn instead of a forkserver.
+
+    A forkserver's children are not ours: it outlives a SIGKILLed sweep with its workers
+    (seen on Python 3.11), so their deaths cannot be tied to this process.
+    """
+    import multiprocessing
+
+    context = multiprocessing.get_context()
+    if context.get_start_method() == "forkserver":
+        context = multiprocessing.get_context("spawn")
+    return context
+
+
+def _worker_init(parent_pid: int) -> None:
     for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ[var] = "1"
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and shuts the pool
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited by fork
+    _die_with_parent(parent_pid)
 
 
 def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[int, np.ndarray]]:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context(), initializer=_worker_init,
+                               initargs=(os.getpid(),))
     pending: dict = {}
     queue = list(todo)
     try:
@@ -226,7 +241,8 @@ def run_sweep(
         What to compute. Validated (every design path and value) before anything runs.
     run_dir : path, optional
         Run folder: finished chunks are stored as they come, an interrupted run resumes from
-        them, and ``results.nc`` is written at the end. ``None`` keeps everything in memory.
+        the ones that pass their checks (:mod:`flexshaft.sweep.store`), and ``results.nc`` is
+        written at the end. ``None`` keeps everything in memory.
     jobs : int
         Local worker processes (1: in this process). Each uses one BLAS thread.
     client : dask.distributed.Client or str, optional
@@ -244,26 +260,38 @@ def run_sweep(
     SweepError
         Bad variable path or value (naming the field), undeclared outputs, or a run folder
         that belongs to another study.
+
+    Warns
+    -----
+    SweepWarning
+        Stored chunks that are not reused (unreadable, edited, of another study or chunk) and
+        are recomputed, stray files in ``chunks/``, or a missing or broken manifest (the old
+        chunks are then moved to ``chunks.discarded-N/`` and everything is recomputed).
     """
     if on_error not in ("raise", "nan"):
         raise SweepError(f"on_error must be 'raise' or 'nan', got {on_error!r}")
     if int(jobs) < 1:
         raise SweepError(f"jobs must be >= 1, got {jobs}")
+    if chunk_size is not None and int(chunk_size) < 1:
+        raise SweepError(f"chunk_size must be >= 1, got {chunk_size}")
     study.validate()
     workers = jobs if client is None else _dask_workers(client)
+    default_chunk_size = _default_chunk_size(study.size, workers)
     run_path = Path(run_dir) if run_dir is not None else None
+    fingerprint = study.fingerprint() if run_path is not None else ""
     if run_path is not None:
-        chunk_size = _open_run(run_path, study, chunk_size)
-    chunk_size = chunk_size or _default_chunk_size(study.size, workers)
+        run_path.mkdir(parents=True, exist_ok=True)
+        chunk_size = open_run(run_path, study, fingerprint, chunk_size, default_chunk_size)
+    chunk_size = int(chunk_size or default_chunk_size)
     bounds = chunk_bounds(study.size, chunk_size)
     values = np.full((study.size, len(study.outputs)), np.nan)
     done = set()
     if run_path is not None:
-        for k in finished_chunks(run_path):
-            if k < len(bounds):
-                a, b = bounds[k]
-                values[a:b] = np.load(_chunk_path(run_path, k))
-                done.add(k)
+        stored = load_chunks(run_path, bounds, fingerprint=fingerprint, n_outputs=len(study.outputs))
+        for k, chunk in stored.items():
+            a, b = bounds[k]
+            values[a:b] = chunk
+            done.add(k)
     todo = [(k, ab) for k, ab in enumerate(bounds) if k not in done]
     if client is not None:
         stream = _run_dask(study, todo, on_error, client)
@@ -278,7 +306,7 @@ def run_sweep(
             a, b = bounds[k]
             values[a:b] = chunk
             if run_path is not None:
-                _atomic_write(_chunk_path(run_path, k), lambda fh: np.save(fh, chunk))
+                write_chunk(chunk_path(run_path, k), chunk, fingerprint=fingerprint, index=k, start=a, stop=b)
             bar.advance()
     finally:
         close = getattr(stream, "close", None)

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Output", "Point", "Study", "SweepError", "Variable"]
+__all__ = ["Output", "Point", "Study", "SweepError", "SweepWarning", "Variable"]
 
 # Validate every combination of design values up front when there are at most this many.
 _VALIDATE_ALL_LIMIT = 20_000
@@ -29,6 +29,10 @@ _VALIDATE_ALL_LIMIT = 20_000
 
 class SweepError(ValueError):
     """A study that cannot run: bad variable, value, output or run folder."""
+
+
+class SweepWarning(UserWarning):
+    """Stored results that were not reused (named, with the reason) and are recomputed."""
 
 
 def _plain(value: Any) -> Any:
