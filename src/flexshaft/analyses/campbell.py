@@ -20,7 +20,7 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.classify import label_modes
+from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine
 from flexshaft.assembly.model import Model
 
@@ -98,7 +98,7 @@ _CONTINUATION_MAC = 0.9
 
 def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
                 solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
-                refine_loss: bool = True) -> TrackedModes:
+                refine_loss: bool = True, viscous: Callable[[float], object] | None = None) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
     The first speed fixes the identities (the lowest ``n_modes`` candidates by |s|). With
@@ -109,22 +109,29 @@ def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
     the same eigenvalue. Otherwise (and always without ``refine_loss``) ``solve(speed) ->
     (s, Y)`` gives all candidates (default: the loss-free state matrix), matched to the
     previous curves by maximum MAC with a small frequency-distance penalty (Hungarian
-    assignment), then refined.
+    assignment), then refined. ``viscous(speed)`` gives the weights of the thesis's viscous
+    internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
+    candidates and continuation then solve that linear problem.
     """
     speeds = np.asarray(speeds, dtype=float)
+    if viscous is not None:
+        solve = lambda speed: candidates(red, speed, viscous(speed))  # noqa: E731
     solve = solve or (lambda speed: candidates(red, speed))
+    labeler = ModalLabeler(model, red.Phi)
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
     states, kinds, whirls, ratios, comps = [], [], [], [], []
     prev = None
     for k, speed in enumerate(speeds):
-        step = _continue(red, speeds, eig, states, k, n_modes) if refine_loss and k >= 1 else None
+        step = None
+        if (refine_loss or viscous is not None) and k >= 1:
+            step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))
         if step is None:
-            step = _match(red, solve, speed, prev, n_modes, refine_loss)
+            step = _match(red, solve, speed, prev, n_modes, refine_loss and viscous is None)
         s_k, Y_k = step
         prev = (s_k, Y_k)
         eig[k] = s_k
         states.append(Y_k)
-        labels = label_modes(model, model.dofs.expand(red.shapes(Y_k)))
+        labels = labeler(Y_k)
         kinds.append(labels.kind)
         whirls.append(labels.whirl)
         ratios.append(labels.whirl_ratio)
@@ -136,7 +143,7 @@ def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
     return TrackedModes(speeds, eig, states, kind, whirl, ratio, np.array(comps))
 
 
-def _continue(red, speeds, eig, states, k, n_modes):
+def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     """Continuation step to speeds[k]; None when it cannot be trusted."""
     speed = speeds[k]
     if k >= 2:
@@ -148,7 +155,7 @@ def _continue(red, speeds, eig, states, k, n_modes):
     s_k = np.empty(n_modes, complex)
     Y_k = np.empty_like(Y_prev)
     for m in range(n_modes):
-        s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m])
+        s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m], viscous=viscous)
         if not converged or abs(np.vdot(Y_prev[:, m], Y_k[:, m])) ** 2 < _CONTINUATION_MAC:
             return None
     gaps = np.abs(s_k[:, None] - s_k[None, :])

@@ -27,7 +27,8 @@ import numpy as np
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 
-__all__ = ["KIND_THRESHOLD", "WHIRL_THRESHOLD", "EnergyShares", "energy_shares", "whirl_ratio", "ModeLabels", "label_modes"]
+__all__ = ["KIND_THRESHOLD", "WHIRL_THRESHOLD", "EnergyShares", "energy_shares", "whirl_ratio", "ModeLabels", "label_modes",
+           "ModalLabeler"]
 
 #: Share of kinetic energy in the shaft's twist (or axial motion) that makes a mode torsional (axial).
 KIND_THRESHOLD = 0.5
@@ -94,10 +95,44 @@ class ModeLabels:
 
 def label_modes(model: Model, shapes: np.ndarray) -> ModeLabels:
     """Kind, whirl and component of full-DOF mode ``shapes`` (ndof, n_modes)."""
-    shares = energy_shares(model, shapes)
+    return _labels(energy_shares(model, shapes), whirl_ratio(model.dofs, shapes))
+
+
+class ModalLabeler:
+    """:func:`label_modes` for shapes ``Φ y`` given by modal coordinates y, without expanding
+    them: the group energies ``yᴴ (Φ_gᵀ (M Φ)_g) y`` and the shaft node orbits ``Φ_v y``,
+    ``Φ_w y`` come from matrices projected once."""
+
+    def __init__(self, model: Model, Phi: np.ndarray):
+        dm = model.dofs
+        full = dm.expand(Phi)
+        MPhi = model.M @ full
+        nodes = np.arange(dm.n_shaft_nodes)
+        groups = {
+            "shaft_axial": dm.shaft(nodes, "u"),
+            "shaft_torsion": dm.shaft(nodes, "theta"),
+            "shaft_lateral": np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")]),
+            "boom": np.arange(6 * dm.n_shaft_nodes, dm.size),
+        }
+        self._energy = {g: full[idx].T @ MPhi[idx] for g, idx in groups.items()}
+        self._v, self._w = full[dm.shaft(nodes, "v")], full[dm.shaft(nodes, "w")]
+
+    def __call__(self, Y: np.ndarray) -> ModeLabels:
+        """Labels of the modes with modal coordinates ``Y`` (nb, n_modes)."""
+        parts = {g: np.real(np.sum(Y.conj() * (P @ Y), axis=0)) for g, P in self._energy.items()}
+        total = sum(parts.values())
+        total = np.where(total > 0, total, 1.0)
+        shares = EnergyShares(**{g: e / total for g, e in parts.items()})
+        V, W = self._v @ Y, self._w @ Y
+        power = np.sum(np.abs(V) ** 2 + np.abs(W) ** 2, axis=0)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            r = -2 * np.sum(np.imag(np.conj(V) * W), axis=0) / power
+        return _labels(shares, np.where(power > 0, r, 0.0))
+
+
+def _labels(shares: EnergyShares, r: np.ndarray) -> ModeLabels:
     kind = np.where(shares.shaft_torsion > KIND_THRESHOLD, "torsional",
                     np.where(shares.shaft_axial > KIND_THRESHOLD, "axial", "lateral"))
-    r = whirl_ratio(model.dofs, shapes)
     whirl = np.where(r > WHIRL_THRESHOLD, "forward", np.where(r < -WHIRL_THRESHOLD, "backward", "planar"))
     whirl = np.where(kind == "lateral", whirl, "none")
     f = shares.shaft

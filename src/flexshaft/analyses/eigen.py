@@ -46,8 +46,9 @@ __all__ = ["SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "candi
 
 #: Free-DOF count above which the modal basis is computed by sparse shift-invert.
 SPARSE_BASIS_ABOVE = 900
-#: Relative convergence of the refined eigenvalue.
-_TOL = 1e-12
+#: Relative convergence of the refined eigenvalue (|Δs| / |s|; a damping ratio of 1e-4 is
+#: then resolved to 1e-6 of itself).
+_TOL = 1e-10
 _MAX_ITER = 30
 _NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
 
@@ -242,8 +243,19 @@ def refine(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
     return s, y
 
 
-def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: float = _TOL) -> tuple[complex, np.ndarray, bool]:
-    """:func:`refine` that also says whether the iteration converged."""
+def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: float = _TOL,
+           viscous: LossCoefficients | None = None) -> tuple[complex, np.ndarray, bool]:
+    """:func:`refine` that also says whether the iteration converged.
+
+    With ``viscous`` weights (:func:`~flexshaft.analyses.loss.viscous_equivalent`) the problem
+    is the thesis's linear viscous one instead of the hysteretic one.
+    """
+    if viscous is not None:
+        damping = red.C + viscous.fixed * red.F + viscous.lateral * red.L
+        stiffness = viscous.circulatory * red.S
+        red = ReducedModel(red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping,
+                           red.actuators, False)
+        red_S = stiffness
     forced_sigma = None
     previous_sigma = None
     flips = 0
@@ -259,7 +271,11 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
             if flips >= 2:  # no consistent side of the synchronous line: the mode sits on it
                 forced_sigma = sigma = 0.0
         previous_sigma = sigma
-        T, dT = red.dynamic_matrices(s, speed, eigen_coefficients(red.internal_damping, omega, speed, sigma))
+        if viscous is None:
+            T, dT = red.dynamic_matrices(s, speed, eigen_coefficients(red.internal_damping, omega, speed, sigma))
+        else:
+            T, dT = red.dynamic_matrices(s, speed, _NO_LOSS)
+            T = T + red_S
         lu, piv, info = _getrf(T)
         if info > 0:  # s is an eigenvalue to machine precision
             return s, y, True

@@ -16,7 +16,9 @@ mode at its own frequency (:mod:`flexshaft.analyses.loss`):
 
 The onset speed is the first crossing of Re(s) from stable to unstable, counting a mode as
 unstable only when its damping ratio is below ``−`` :data:`STABILITY_TOLERANCE` (round-off of
-an undamped mode is ~1e-13).
+an undamped mode is ~1e-13); the crossing found on the speed grid is then solved for the
+speed where that mode's damping ratio is zero (regula falsi on Newton solves), so the onset
+does not depend on the grid spacing.
 
 References
 ----------
@@ -33,7 +35,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, _check_speeds, default_basis_size, track_modes
-from flexshaft.analyses.eigen import ReducedModel, candidates, reduce
+from flexshaft.analyses.eigen import ReducedModel, newton, reduce
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
 
@@ -159,15 +161,57 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     ref = None
     if damping_model == "viscous":
         ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
-        tracked = track_modes(model, red, speeds, int(n_modes), solve=lambda sp: candidates(red, sp, viscous_equivalent(ref, sp)),
-                              refine_loss=False)
+        tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=False,
+                              viscous=lambda sp: viscous_equivalent(ref, sp))
     else:
         tracked = track_modes(model, red, speeds, int(n_modes))
     eig = tracked.eigenvalues
     onset, mode, k = onset_speed(speeds, eig)
+    if onset is not None and k > 0:
+        weights = None if damping_model == "hysteretic" else (lambda sp: viscous_equivalent(ref, sp))
+        onset = _refine_onset(red, speeds, tracked, mode, k, weights)
     shape = model.dofs.expand(red.shapes(tracked.states[k][:, mode])) if onset is not None else None
     return StabilityResult(speeds, eig, tracked.whirl, damping_model, onset, mode, shape, tracked.kind,
                            model.internal_damping, ref)
+
+
+def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:
+    """Speed where the tracked ``mode``'s damping ratio crosses zero between speeds[k−1] and
+    speeds[k] (Illinois regula falsi, each evaluation a Newton solve continued from the
+    bracket; converged to 1e-7 of the speed). Falls back to the linear interpolation of the
+    grid when the mode cannot be followed inside the bracket."""
+
+    def zeta(s):
+        return -s.real / abs(s)
+
+    a, b = float(speeds[k - 1]), float(speeds[k])
+    sa, sb = tracked.eigenvalues[k - 1, mode], tracked.eigenvalues[k, mode]
+    ya = tracked.states[k - 1][:, mode]
+    za, zb = zeta(sa), zeta(sb)
+    estimate = a + za / (za - zb) * (b - a) if za != zb else b
+    side = 0
+    for _ in range(40):
+        c = a + za / (za - zb) * (b - a) if za != zb else 0.5 * (a + b)
+        t = (c - float(speeds[k - 1])) / (float(speeds[k]) - float(speeds[k - 1]))
+        guess = tracked.eigenvalues[k - 1, mode] + t * (tracked.eigenvalues[k, mode] - tracked.eigenvalues[k - 1, mode])
+        sc, yc, converged = newton(red, c, guess, ya, viscous=None if viscous is None else viscous(c))
+        if not converged or abs(np.vdot(ya, yc)) ** 2 < 0.8:
+            return float(estimate)
+        zc = zeta(sc)
+        estimate = c
+        if b - a <= 1e-7 * b or zc == 0.0:
+            break
+        if zc < 0:
+            b, zb = c, zc
+            if side == -1:
+                za *= 0.5
+            side = -1
+        else:
+            a, za = c, zc
+            if side == +1:
+                zb *= 0.5
+            side = +1
+    return float(estimate)
 
 
 def _first_shaft_frequency(model: Model, red: ReducedModel) -> float:

@@ -10,6 +10,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+import dataclasses
+
+from flexshaft.analyses.campbell import default_basis_size
+from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
@@ -30,7 +34,7 @@ def thesis_shaft_designs(design) -> dict:
     return {label: with_overrides(design, ov) for label, ov in THESIS_SHAFTS}
 
 
-def compare_shafts(design, speeds, damping_model: str = "viscous", n_modes: int = 10,
+def compare_shafts(design, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
                    reference_frequency: float | None = None) -> dict[str, StabilityResult]:
     """Stability of each thesis shaft over ``speeds`` [rad/s]."""
     return {
@@ -51,9 +55,13 @@ class StabilityMap:
     max_speed: float
 
 
-def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str = "viscous", n_modes: int = 10,
+def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
                        reference_frequency: float | None = None) -> StabilityMap:
-    """Onset speed over (K_p, K_d) applied to every active bearing (same values on each)."""
+    """Onset speed over (K_p, K_d) applied to every active bearing (same values on each).
+
+    One model and modal basis per K_p (it sets the basis stiffness); each K_d only changes the
+    projected damping ``Σ K_d B̃ᵀB̃``, so the basis is reused.
+    """
     speeds = np.asarray(speeds, dtype=float)
     active = [i for i, b in enumerate(design.bearings) if b.kind == "active"]
     if not active:
@@ -61,10 +69,13 @@ def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str 
     onset = np.full((len(kp_values), len(kd_values)), np.nan)
     margin = np.full_like(onset, np.nan)
     for i, kp in enumerate(kp_values):
+        ov = {f"bearings[{a}].{k}": float(v) for a in active for k, v in (("kp", kp), ("kd", 0.0))}
+        model = build_model(with_overrides(design, ov))
+        base = reduce(model, max(default_basis_size(n_modes), 48))
+        unit = sum(act.rows.T @ act.rows for act in base.actuators)
         for j, kd in enumerate(kd_values):
-            ov = {f"bearings[{a}].{k}": float(v) for a in active for k, v in (("kp", kp), ("kd", kd))}
-            model = build_model(with_overrides(design, ov))
-            res = stability(model, speeds, n_modes, damping_model, reference_frequency)
+            red = dataclasses.replace(base, C=base.C + float(kd) * unit)
+            res = stability(model, speeds, n_modes, damping_model, reference_frequency, reduced=red)
             if res.onset_speed is not None:
                 onset[i, j] = res.onset_speed
             margin[i, j] = res.stability_margin[int(np.argmin(np.abs(speeds - model.speed)))]
