@@ -147,6 +147,17 @@ def test_af_of_a_simply_supported_tube_with_hysteretic_loss() -> None:
     assert first.amplification_factor == pytest.approx(exact, rel=5e-3)
 
 
+def test_an_undamped_peak_has_an_infinite_af_and_takes_the_capped_margin() -> None:
+    from flexshaft.assembly import build_model
+    from flexshaft.design import loads_design
+    from flexshaft.studies.verdict_evidence import lateral_critical_speeds
+
+    model = build_model(loads_design(TUBE.replace("loss_factor = 0.01", "loss_factor = 0.0", 1)))
+    (first,) = lateral_critical_speeds(model)
+    assert first.amplification_factor == math.inf and "undamped" in first.location["detail"]
+    assert api684_separation(first.speed, first.amplification_factor, model.speed).required_margin == pytest.approx(0.16)
+
+
 TUBE = """
 name = "simply supported aluminium tube, hysteretic loss 0.01, no tailboom"
 [materials.al]
@@ -238,6 +249,7 @@ def test_bad_rule_inputs_are_refused() -> None:
         required_separation_margin(3.0, "inside")  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="amplification factor"):
         required_separation_margin(float("nan"), "below")
+    assert required_separation_margin(float("inf"), "above") == pytest.approx(0.26)  # undamped: the cap
     with pytest.raises(ValueError, match="operating speed"):
         separation_margin(1000.0, 0.0)
     with pytest.raises(ValueError, match="lower < upper"):

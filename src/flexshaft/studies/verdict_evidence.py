@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from flexshaft.analyses import imbalance_response
+from flexshaft.analyses import SingularSystemError, imbalance_response
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
@@ -74,10 +74,16 @@ def lateral_critical_speeds(model: Model, campbell=None, top: float = CRITICAL_S
             q = imbalance_response(model, new_speeds, loads[:, case:case + 1])
             return _shaft_orbits(model, q)[node, 0]
 
-        peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+        station = float(model.dofs.shaft_x[node])
+        try:
+            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+        except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
+            out.append(LateralCritical(rough.speed, float("inf"), {
+                "station": station, "detail": "undamped resonance: the response is singular at the peak"}))
+            continue
         if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
             continue
-        location = {"station": float(model.dofs.shaft_x[node]), "af_method": peak.method}
+        location = {"station": station, "af_method": peak.method}
         if not peak.resolved:
             location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
         mode = _campbell_label(campbell, peak.speed)
@@ -103,7 +109,7 @@ def _campbell_label(campbell, speed: float) -> str:
 def _modes_at_operating(res, speed: float) -> tuple[ModeDamping, ...] | None:
     st = res.stability
     speeds = np.asarray(st.speeds)
-    if not speeds[0] <= speed <= speeds[-1]:
+    if speeds.size < 2 or not speeds[0] <= speed <= speeds[-1]:
         return None
     k = int(np.clip(np.searchsorted(speeds, speed, side="right") - 1, 0, speeds.size - 2))
     t = (speed - speeds[k]) / (speeds[k + 1] - speeds[k])
@@ -226,8 +232,11 @@ def evidence_from_run(res) -> Evidence:
     values.update(_buckling(res, notes))
     values.update(_whirl(res, speed, notes))
     if speed > 0.0:
-        values["critical_speeds"] = lateral_critical_speeds(model, res.campbell)
-        values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
+        try:
+            values["critical_speeds"] = lateral_critical_speeds(model, res.campbell)
+            values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
+        except SingularSystemError as exc:
+            notes["separation"] = f"the unbalance response could not be scanned: {exc}"
     else:
         notes["separation"] = "the operating speed is zero"
     values.update(_temperature(res, notes))
