@@ -78,10 +78,11 @@ def _print_verdict(console, verdict) -> None:
     table = Table(title="requirements verdict (worst case of each)")
     for col in VERDICT_COLUMNS[:-1]:
         table.add_column(col, justify="right" if col in ("value", "limit", "margin") else "left")
-    for row in verdict_rows(verdict, compact=True):
+    for check, row in zip(verdict.checks, verdict_rows(verdict, compact=True)):
         status = row[4]
         where = row[5] if status != "not evaluated" else row[6]
-        table.add_row(*map(escape, row[:4]), f"[{colour[status]}]{status}[/]", escape(where))
+        count = f" {check.n_failed}/{len(check.findings)}" if check.n_failed and len(check.findings) > 1 else ""
+        table.add_row(*map(escape, row[:4]), f"[{colour[status]}]{status}{count}[/]", escape(where))
     console.print(table)
     head = "[bold green]PASS[/]" if verdict.passed else "[bold red]FAIL[/]"
     console.print(f"verdict: {head}: {escape(verdict.summary.split(': ', 1)[1])}", highlight=False)

@@ -175,8 +175,8 @@ def inputs_section(design, design_text: str | None, source: str) -> Section:
         marked = marked_inputs(design_text)
         if marked:
             paragraphs.append(f"{len(marked)} input values are marked in the file as assumed or calibrated: they "
-                              "are not data and carry the results that depend on them; replace them with measured "
-                              "values when available.")
+                              "are not data, and every result that depends on them inherits their uncertainty; "
+                              "replace them with measured values when available.")
             tables.append(Table("Inputs marked in the design file as assumed or calibrated",
                                 ["key", "value", "marked", "comment", "line"],
                                 [[m.key, m.value, m.marker, m.comment, m.line] for m in marked]))

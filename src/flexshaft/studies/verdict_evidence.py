@@ -10,14 +10,20 @@ until its half-power bandwidth is resolved (:func:`flexshaft.analyses.separation
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from flexshaft.analyses import SingularSystemError, imbalance_response
+from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.studies.verdict import ActuatorEvidence, Evidence, LateralCritical, ModeDamping
+
+if TYPE_CHECKING:  # run.py imports this module lazily; no import loop at run time
+    from flexshaft.studies.run import RunResults
 
 __all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"]
 
@@ -39,7 +45,7 @@ def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
     return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
 
 
-def lateral_critical_speeds(model: Model, campbell=None, top: float = CRITICAL_SEARCH_TOP,
+def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top: float = CRITICAL_SEARCH_TOP,
                             n_points: int = _SCAN_POINTS) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
@@ -217,7 +223,7 @@ def _temperature(res, notes: dict) -> dict:
             "thermal_runaway": sh is not None and sh.status == "runaway"}
 
 
-def evidence_from_run(res) -> Evidence:
+def evidence_from_run(res: RunResults) -> Evidence:
     """Build the verdict's evidence from a :class:`flexshaft.studies.run.RunResults`.
 
     Computes the lateral critical speeds and their amplification factors
