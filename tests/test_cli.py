@@ -10,7 +10,9 @@ design files, unknown options and stray arguments. Computations only run on a sm
 
 from __future__ import annotations
 
+import html
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -225,3 +227,88 @@ def test_the_property_test_ran_its_budget() -> None:
     if calls["n"] == 0:
         pytest.skip("run together with test_malformed_arguments_never_give_a_traceback")
     assert calls["n"] >= 0.9 * MAX_EXAMPLES, f"hypothesis ran only {calls['n']} of {MAX_EXAMPLES} examples"
+
+
+# ------------------------------------------------------------------------------------------------
+# The requirements verdict: `run` prints it, `run --strict` exits 3 on a failure, `stability`
+# compares the onset with the operating speed. The designs are the small mesh without the
+# aluminium material (so the thesis-shaft comparison is skipped: a run takes seconds), run
+# subcritically at 1000 rpm with a relaxed whirl damping requirement, so that every check passes;
+# a Tsai-Wu requirement of 100 then makes it fail exactly one check.
+
+_ALUMINIUM = baseline_text()[baseline_text().index("[materials.al6061_t6]"):baseline_text().index("[materials.boom_aluminium]")]
+PASSING_DESIGN = (
+    SMALL_DESIGN.replace(_ALUMINIUM, "", 1)
+    .replace("speed_rpm = 4800.0", "speed_rpm = 1000.0", 1)
+    .replace("min_log_decrement = 0.1 ", "min_log_decrement = 0.001 ", 1)
+)
+FAILING_DESIGN = PASSING_DESIGN.replace("min_safety_factor = 1.5 ", "min_safety_factor = 100.0 ", 1)
+
+
+def _write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tmp_path: Path) -> None:
+    assert FAILING_DESIGN != PASSING_DESIGN != SMALL_DESIGN
+    design = _write(tmp_path, "failing.toml", FAILING_DESIGN)
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--out", str(out)])
+    assert result.exit_code == 3, result.output
+    assert "requirements verdict" in result.stdout
+    assert "verdict: FAIL: 1 of 9 requirements fail: Tsai-Wu safety factor" in " ".join(result.stdout.split())
+    data = json.loads((out / "results.json").read_text())
+    verdict = data["verdict"]
+    assert verdict["passed"] is False
+    assert [c["key"] for c in verdict["checks"] if c["status"] == "fail"] == ["tsai_wu"]
+    tsai_wu = verdict["checks"][0]
+    assert tsai_wu["limit"] == 100.0 and tsai_wu["margin"] < 0 and tsai_wu["location"]["station"] > 0
+    assert tsai_wu["value"] == pytest.approx(data["strength_static_plus_imbalance"]["safety_factor"])
+
+    page = (out / "report.html").read_text(encoding="utf-8")
+    sections = re.findall(r'<h2>\d+\. ([^<]+)</h2>', page)
+    assert sections[:3] == ["Verdict against the requirements", "Inputs and assumptions", "Design summary"]
+    assert "<h1>flexshaft report: (55/-55/0/0)s t700_adiprene shaft, Ø 101.6 mm × 3.00 mm wall, 1000 rpm" in page
+    # the design file, verbatim and escaped, in a collapsible block; the assumed values listed
+    assert f"<pre>{html.escape(FAILING_DESIGN)}</pre>" in page
+    assert "<details>" in page and "Inputs marked in the design file as assumed or calibrated" in page
+    assert "<td>bearings[amb_1].gap</td>" in page and "<td>materials.t700_adiprene.E_L</td>" in page
+
+
+def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
+    design = _write(tmp_path, "passing.toml", PASSING_DESIGN)
+    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--json",
+                                 "--out", str(tmp_path / "out")])
+    assert result.exit_code == 0, result.output
+    verdict = json.loads(result.stdout)["verdict"]
+    assert verdict["passed"] is True and verdict["summary"] == "PASS: 9 pass"
+
+
+def test_run_strict_json_exits_3_after_printing_the_results(tmp_path: Path) -> None:
+    design = _write(tmp_path, "failing.toml", FAILING_DESIGN)
+    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--json",
+                                 "--out", str(tmp_path / "out")])
+    assert result.exit_code == 3
+    assert json.loads(result.stdout)["verdict"]["passed"] is False
+
+
+def test_run_strict_keeps_exit_code_2_for_user_errors(files: dict[str, Path], tmp_path: Path) -> None:
+    bad = runner.invoke(app, ["run", str(files["bad"]), "--strict", "--out", str(tmp_path)])
+    assert bad.exit_code == 2 and "shaft.wall_thickness: must be > 0" in bad.stderr
+    option = runner.invoke(app, ["run", str(files["small"]), "--strict", "--studies", "some"])
+    assert option.exit_code == 2 and "--studies: must be report, full or none" in option.stderr
+
+
+def test_stability_states_the_onset_against_the_operating_speed(files: dict[str, Path]) -> None:
+    result = runner.invoke(app, ["stability", str(files["small"]), "--n-speeds", "25"])
+    assert result.exit_code == 0, result.output
+    assert "operating speed 4800 rpm; required: no whirl onset below 5520 rpm (15 % margin" in result.stdout
+    line = next(line for line in result.stdout.splitlines() if line.startswith("design: "))
+    assert "× the operating speed" in line and line.endswith(("PASS", "FAIL"))
+    data = json.loads(runner.invoke(app, ["stability", str(files["small"]), "--n-speeds", "25", "--json"]).stdout)
+    assert data["required_onset_rpm"] == pytest.approx(5520.0) and data["operating_speed_rpm"] == pytest.approx(4800.0)
+    design = data["shafts"]["design"]
+    expected = "pass" if design["onset_speed_rpm"] is None or design["onset_speed_rpm"] >= 5520.0 else "fail"
+    assert design["onset_check"] == expected

@@ -28,6 +28,13 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
     assert data["thermal"]["self_heating"]["status"] == "converged"
     assert data["design_studies"] is not None
+    # the embedded baseline is whirl-unstable below its own operating speed: the verdict says so
+    verdict = data["verdict"]
+    assert verdict["passed"] is False and "verdict: FAIL" in output
+    onset = next(c for c in verdict["checks"] if c["key"] == "whirl_onset")
+    assert onset["status"] == "fail"
+    assert onset["value"] == pytest.approx(data["stability"]["onset_speed_rpm"] * 2 * 3.141592653589793 / 60)
+    assert onset["value"] < data["summary"]["operating_speed_rpm"] * 2 * 3.141592653589793 / 60
     thesis = data["stability"]["thesis_shafts"]
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     assert thesis["(45/-45/0/0)s FMC"]["viscous"] > thesis["(45/-45)s FMC"]["viscous"]

@@ -1,7 +1,8 @@
-"""Command-line interface: ``flexshaft run | baseline | check | modes``.
+"""Command-line interface: ``flexshaft run | baseline | check | modes | stability | thermal | study``.
 
 User errors (bad design file, bad argument) end with a one-paragraph message naming the field,
-the value and what is allowed, and exit code 2; never a traceback.
+the value and what is allowed, and exit code 2; never a traceback. ``flexshaft run --strict``
+exits with code 3 when the design fails a requirement of its ``[requirements]`` table.
 """
 
 from __future__ import annotations
@@ -21,6 +22,10 @@ app = typer.Typer(
 )
 
 DesignArg = typer.Argument(None, help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False)
+
+
+#: Exit code of ``flexshaft run --strict`` when a requirement fails (2 is a user error).
+REQUIREMENT_FAILED = 3
 
 
 def _fail(message: str) -> None:
@@ -49,6 +54,38 @@ def _load(path: Optional[Path]):
         return baseline_design() if path is None else load_design(path)
     except DesignError as exc:
         _fail(f"invalid design {'(embedded baseline)' if path is None else str(path)}:\n{exc}")
+
+
+def _design_text(path: Optional[Path]) -> tuple[str | None, str]:
+    """The design file as read (for the report) and where it came from."""
+    from flexshaft.design import baseline_text
+
+    if path is None:
+        return baseline_text(), "embedded thesis baseline"
+    try:
+        return path.read_text(encoding="utf-8"), str(path)
+    except (OSError, UnicodeDecodeError):  # it validated a moment ago; report without the text
+        return None, str(path)
+
+
+def _print_verdict(console, verdict) -> None:
+    from rich.markup import escape
+    from rich.table import Table
+
+    from flexshaft.report.verdict import VERDICT_COLUMNS, verdict_rows
+
+    colour = {"PASS": "green", "FAIL": "bold red", "not evaluated": "yellow"}
+    table = Table(title="requirements verdict (worst case of each)")
+    for col in VERDICT_COLUMNS[:-1]:
+        table.add_column(col, justify="right" if col in ("value", "limit", "margin") else "left")
+    for check, row in zip(verdict.checks, verdict_rows(verdict, compact=True)):
+        status = row[4]
+        where = row[5] if status != "not evaluated" else row[6]
+        count = f" {check.n_failed}/{len(check.findings)}" if check.n_failed and len(check.findings) > 1 else ""
+        table.add_row(*map(escape, row[:4]), f"[{colour[status]}]{status}{count}[/]", escape(where))
+    console.print(table)
+    head = "[bold green]PASS[/]" if verdict.passed else "[bold red]FAIL[/]"
+    console.print(f"verdict: {head}: {escape(verdict.summary.split(': ', 1)[1])}", highlight=False)
 
 
 def _print_modes(console, title: str, rows: list[dict]) -> None:
@@ -142,23 +179,37 @@ def stability_cmd(
             designs.update(thesis_shaft_designs(d))
         except DesignError as exc:
             _fail(f"--compare-thesis needs an isotropic material 'al6061_t6' and a lamina shaft:\n{exc}")
+    from flexshaft.studies.verdict import whirl_onset_check
+
+    rpm = 60 / (2 * np.pi)
+    margin = d.requirements.min_onset_margin
+    required_rpm = (1 + margin) * model.speed * rpm
     rows = {}
     for label, dd in designs.items():
         res = stability(build_model(dd) if label != "design" else model, speeds, 10, damping_model, ref)
-        onset = None if res.onset_speed is None else res.onset_speed * 60 / (2 * np.pi)
+        onset = None if res.onset_speed is None else res.onset_speed * rpm
+        check = whirl_onset_check(res.onset_speed, float(speeds[-1]), model.speed, margin)
         rows[label] = {
             "onset_speed_rpm": onset,
             "unstable_mode_whirl": None if res.unstable_mode is None else str(res.whirl[-1, res.unstable_mode]),
             "min_damping_ratio": float(res.stability_margin.min()),
+            "onset_check": check.status,
         }
-    out = {"damping_model": damping_model, "analysed_to_rpm": top * 60 / (2 * np.pi), "shafts": rows}
+    out = {"damping_model": damping_model, "analysed_to_rpm": top * rpm, "operating_speed_rpm": model.speed * rpm,
+           "min_onset_margin": margin, "required_onset_rpm": required_rpm, "shafts": rows}
     if as_json:
         typer.echo(json.dumps(out, indent=2))
         return
+    typer.echo(f"operating speed {model.speed * rpm:.0f} rpm; required: no whirl onset below {required_rpm:.0f} rpm "
+               f"({margin * 100:.0f} % margin, [requirements] min_onset_margin)")
     for label, r in rows.items():
-        onset = f"unstable above {r['onset_speed_rpm']:.0f} rpm ({r['unstable_mode_whirl']} whirl)" if r["onset_speed_rpm"] is not None \
-            else f"stable to {out['analysed_to_rpm']:.0f} rpm"
-        typer.echo(f"{label}: {onset}")
+        if r["onset_speed_rpm"] is not None:
+            ratio = r["onset_speed_rpm"] / (model.speed * rpm) if model.speed > 0 else float("inf")
+            state = (f"unstable above {r['onset_speed_rpm']:.0f} rpm ({r['unstable_mode_whirl']} whirl), "
+                     f"{ratio:.2f} × the operating speed")
+        else:
+            state = f"stable to {out['analysed_to_rpm']:.0f} rpm"
+        typer.echo(f"{label}: {state}: {r['onset_check'].upper()}")
 
 
 @app.command("thermal")
@@ -193,8 +244,10 @@ def run(
     out: Path = typer.Option(Path("flexshaft-results"), "--out", "-o", help="Results folder."),
     as_json: bool = typer.Option(False, "--json", help="Print the key results as JSON."),
     studies: str = typer.Option("report", "--studies", help="Design studies in the report: report, full or none."),
+    strict: bool = typer.Option(False, "--strict", help=f"Exit with code {REQUIREMENT_FAILED} when a requirement fails."),
 ) -> None:
-    """Analyse a design (default: the embedded baseline) and write the report folder."""
+    """Analyse a design (default: the embedded baseline), check it against its requirements and
+    write the report folder."""
     from rich.console import Console
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
@@ -216,10 +269,14 @@ def run(
         progress.update(task, description="writing the report")
         from flexshaft.report.driveline import results_json, write_run_report
 
-        page = write_run_report(results, out)
+        text, source = _design_text(design)
+        page = write_run_report(results, out, design_text=text, design_source=source)
     data = results_json(results)
+    failed = strict and results.verdict is not None and not results.verdict.passed
     if as_json:
         typer.echo(json.dumps(data, indent=2, default=float))
+        if failed:
+            raise typer.Exit(code=REQUIREMENT_FAILED)
         return
     console = Console()
     s = data["summary"]
@@ -238,7 +295,11 @@ def run(
                       f"buckling safety factor {data['buckling']['safety_factor']:.2f}")
     imb = data["imbalance"]
     console.print(f"spin-up peak shaft orbit {imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm")
+    if results.verdict is not None:
+        _print_verdict(console, results.verdict)
     console.print(f"report written to {page}")
+    if failed:
+        raise typer.Exit(code=REQUIREMENT_FAILED)
 
 
 def _add_study_commands() -> None:

@@ -224,13 +224,17 @@ class ActiveBearing(_BearingBase):
     """Active magnetic bearing on the lateral relative displacement d.
 
     Either a PD law f = −kp d − kd ḋ (kp [N/m], kd [N s/m], kd defaults to 0) or a general
-    ``controller`` transfer function C(s) [N/m] replacing kp and kd.
+    ``controller`` transfer function C(s) [N/m] replacing kp and kd. Optional limits checked by
+    the requirements verdict: ``gap``, the radial clearance of the auxiliary (backup) bearing
+    [m], and ``force_capacity``, the largest force the actuator can produce [N].
     """
 
     kind: Literal["active"]
     kp: NonNegative | None = None
     kd: NonNegative | None = None
     controller: Controller | None = None
+    gap: Positive | None = None
+    force_capacity: Positive | None = None
 
     @model_validator(mode="before")
     @classmethod

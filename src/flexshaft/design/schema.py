@@ -13,6 +13,7 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.materials`: :class:`Lamina`, :class:`Isotropic`;
 * :mod:`flexshaft.design.components`: :class:`Shaft`, :class:`Tailboom`, bearings, :class:`Disk`;
 * :mod:`flexshaft.design.loads`: :class:`Operating`, :class:`Loads` and its point and line loads;
+* :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
 
 Constraints that involve several fields are checked in ``model_validator(mode="after")``
@@ -55,6 +56,7 @@ from flexshaft.design.fields import (
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
+from flexshaft.design.requirements import Requirements
 
 __all__ = [
     "Analysis",
@@ -78,6 +80,7 @@ __all__ = [
     "Mesh",
     "Operating",
     "PointLoad",
+    "Requirements",
     "Shaft",
     "Tailboom",
     "PROBLEMS_ERROR_TYPE",
@@ -128,6 +131,7 @@ class Design(FrozenModel):
     mesh: Mesh = Mesh()
     analysis: Analysis = Analysis()
     thermal: Thermal = Thermal()
+    requirements: Requirements = Requirements()
 
     @model_validator(mode="after")
     def _check(self) -> Design:

@@ -73,6 +73,7 @@ def results_json(res) -> dict:
     i_op = int(np.argmin(np.abs(res.speeds - op)))
     return {
         "design": res.summary["name"],
+        "verdict": res.verdict.to_dict() if res.verdict is not None else None,
         "summary": res.summary,
         "modes_at_rest": res.modes_at_rest,
         "modes_at_operating_speed": res.modes_at_speed,
@@ -108,8 +109,16 @@ def _modes_table(rows, caption) -> Table:
                  [[r["mode"], r["frequency_Hz"], r["frequency_rpm"], r["damping_ratio"], r["whirl"], r["component"]] for r in rows])
 
 
-def write_run_report(res, folder: str | Path, generated: str | None = None) -> Path:
-    """Write ``report.html``, the figures (PNG and SVG) and ``results.json`` into ``folder``."""
+def write_run_report(res, folder: str | Path, generated: str | None = None, design_text: str | None = None,
+                     design_source: str = "design file") -> Path:
+    """Write ``report.html``, the figures (PNG and SVG) and ``results.json`` into ``folder``.
+
+    ``design_text`` is the design file as read (embedded verbatim, with its assumed values
+    listed); ``design_source`` says where it came from. The verdict comes first.
+    """
+    from flexshaft.report.inputs import inputs_section, report_title
+    from flexshaft.report.verdict import verdict_section
+
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     model = res.model
@@ -120,6 +129,14 @@ def write_run_report(res, folder: str | Path, generated: str | None = None) -> P
     op_rpm = model.speed * _RPM
     s = res.summary
     sections = []
+    if res.verdict is not None:
+        sections.append(verdict_section(res.verdict, op_rpm))
+    if design_text is None:
+        from flexshaft.design import baseline_design, baseline_text
+
+        if design == baseline_design():
+            design_text, design_source = baseline_text(), "embedded thesis baseline"
+    sections.append(inputs_section(design, design_text, design_source))
 
     bearings = [[b.name, b.kind, b.x_shaft, b.x_boom if b.x_boom is not None else "ground", b.offset] for b in model.bearings]
     sections.append(Section(
@@ -238,7 +255,8 @@ def write_run_report(res, folder: str | Path, generated: str | None = None) -> P
         sections.append(design_studies_section(res.design_studies, folder))
     if res.notes:
         sections.append(Section("Notes", paragraphs=list(res.notes)))
-    return write_report(folder, f"flexshaft report: {design.name}", sections, design_name=design.name, generated=generated)
+    return write_report(folder, f"flexshaft report: {report_title(design)}", sections, design_name=design.name,
+                        generated=generated)
 
 
 def _rpm_or_none(speed):

@@ -23,7 +23,7 @@ import numpy as np
 
 from flexshaft import __version__
 
-__all__ = ["Table", "FigureRef", "Section", "format_cell", "render_report", "write_report"]
+__all__ = ["Table", "FigureRef", "Preformatted", "Section", "format_cell", "render_report", "write_report"]
 
 _PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 _PNG_DPI = 150.0  # save_figure writes 150 dpi; shown at 96 CSS px per inch
@@ -55,6 +55,9 @@ tbody tr:nth-child(even) { background: #fbfcfd; }
 figure { margin: 18px 0 26px; }
 figure img { display: block; max-width: 100%; height: auto; border: 1px solid var(--rule); }
 figcaption { color: var(--muted); font-size: 0.92em; margin-top: 6px; }
+details { margin: 14px 0 20px; border: 1px solid var(--rule); padding: 4px 10px; }
+details summary { cursor: pointer; font-weight: 600; }
+pre { overflow-x: auto; background: var(--band); padding: 8px; font-size: 0.85em; line-height: 1.35; }
 footer { margin-top: 40px; border-top: 1px solid var(--rule); padding-top: 8px;
          color: var(--muted); font-size: 0.85em; }
 @media print { main { max-width: none; } figure, table { break-inside: avoid; }
@@ -110,8 +113,24 @@ class FigureRef:
 
 
 @dataclass(frozen=True)
+class Preformatted:
+    """Verbatim text (a file, a listing) in a collapsible block, closed by default.
+
+    Parameters
+    ----------
+    summary : str
+        The line shown when the block is closed.
+    text : str
+        The verbatim text (escaped, shown in a monospace font).
+    """
+
+    summary: str
+    text: str
+
+
+@dataclass(frozen=True)
 class Section:
-    """A numbered section of the report: paragraphs, then tables, then figures.
+    """A numbered section of the report: paragraphs, tables, figures, then verbatim blocks.
 
     Parameters
     ----------
@@ -121,12 +140,14 @@ class Section:
         Plain-text paragraphs (escaped, not interpreted as HTML).
     tables : sequence of Table
     figures : sequence of FigureRef
+    blocks : sequence of Preformatted
     """
 
     title: str
     paragraphs: Sequence[str] = ()
     tables: Sequence[Table] = ()
     figures: Sequence[FigureRef] = ()
+    blocks: Sequence[Preformatted] = ()
 
 
 def format_cell(value: Any) -> str:
@@ -244,6 +265,8 @@ def render_report(
         for figure in section.figures:
             figure_number += 1
             parts.append(_render_figure(figure, figure_number))
+        parts.extend(f"<details>\n<summary>{e(block.summary)}</summary>\n<pre>{e(block.text)}</pre>\n</details>"
+                     for block in section.blocks)
         parts.append("</section>")
     body = "\n".join(parts)
     return f"""<!DOCTYPE html>

@@ -48,6 +48,7 @@ class RunResults:
     thermal: object = None  # dict from flexshaft.studies.thermal.thermal_results
     design_studies: object = None  # flexshaft.studies.chapter3.DesignStudies
     notes: list = field(default_factory=list)
+    verdict: object = None  # flexshaft.studies.verdict.Verdict against the design's [requirements]
 
 
 def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
@@ -75,7 +76,8 @@ def _worst(q: np.ndarray, model: Model):
 
 def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
                  studies: str | None = "report") -> RunResults:
-    """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength.
+    """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength,
+    thermal, whirl stability, and the verdict against the design's ``[requirements]``.
 
     Parameters
     ----------
@@ -154,7 +156,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
             design_studies_result = design_studies(design, studies, progress=lambda label: step(f"design studies: {label}"))
         except (SweepError, ValueError) as exc:
             notes.append(f"design studies skipped: {str(exc).splitlines()[0]}")
-    return RunResults(
+    results = RunResults(
         model=model,
         summary=model_summary(model),
         modes_at_rest=modes_table(m0),
@@ -178,6 +180,12 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         design_studies=design_studies_result,
         notes=notes,
     )
+    step("requirements verdict")
+    from flexshaft.studies.verdict import evaluate
+    from flexshaft.studies.verdict_evidence import evidence_from_run
+
+    results.verdict = evaluate(evidence_from_run(results), design.requirements)
+    return results
 
 
 def _whirl(design, model: Model, notes: list):

@@ -1,0 +1,91 @@
+"""The ``[requirements]`` table of the design file: the limits a design's results must meet.
+
+Every field has a default that a user overrides; the defaults and their sources are stated in
+``docs/requirements.md``. Quantities are SI: ``min_onset_margin`` is a fraction of the operating
+speed (0.15 = 15 % above it), ``max_spinup_deflection`` a length [m]. The limits that belong to
+a component live with it: the auxiliary-bearing gap and the force capacity on each active
+bearing (``gap`` [m], ``force_capacity`` [N]) and the matrix allowable temperature in
+``[thermal] allowable_temperature_c``.
+
+The whirl damping requirement is a minimum logarithmic decrement δ of every mode at the
+operating speed, or equivalently a minimum damping ratio ζ (δ = 2πζ/√(1 − ζ²)); give at most
+one of the two. With neither, δ ≥ 0.1 applies (API 617's acceptance level).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal
+
+from pydantic import Field, model_validator
+
+from flexshaft.design.fields import FrozenModel, Positive, Problems, format_value
+
+__all__ = ["DEFAULT_MIN_LOG_DECREMENT", "Requirements", "log_decrement_from_damping_ratio"]
+
+#: API 617 acceptance level of the logarithmic decrement, used when neither whirl damping
+#: requirement is given.
+DEFAULT_MIN_LOG_DECREMENT = 0.1
+
+Margin = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=10.0)]
+LogDecrement = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=100.0)]
+DampingRatio = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0)]
+
+
+def log_decrement_from_damping_ratio(damping_ratio: float) -> float:
+    """δ = 2πζ/√(1 − ζ²) of a damping ratio ζ in [0, 1)."""
+    return 2.0 * math.pi * damping_ratio / math.sqrt(1.0 - damping_ratio * damping_ratio)
+
+
+class Requirements(FrozenModel):
+    """Limits the results of a design must meet (``[requirements]``; see docs/requirements.md).
+
+    Attributes
+    ----------
+    min_safety_factor : float
+        Minimum ply Tsai-Wu safety factor under the static loads plus the imbalance response
+        at the operating speed [-].
+    min_buckling_safety_factor : float
+        Minimum torsional-buckling safety factor T_cr/T [-].
+    min_onset_margin : float
+        Whirl instability must not start below (1 + margin) × the operating speed [-].
+    min_log_decrement, min_damping_ratio : float or None
+        Minimum log decrement δ [-] or damping ratio ζ [-] of every mode at the operating speed;
+        at most one; neither means δ ≥ 0.1.
+    separation : {"api684", "off"}
+        Separation margin of the lateral critical speeds from the operating speed by the
+        amplification-factor rule of API 684 / API 617, or no separation requirement.
+    max_spinup_deflection : float or None
+        Largest allowed shaft orbit amplitude during spin-up to the operating speed [m]; None:
+        no limit (the check is reported as not evaluated).
+    """
+
+    min_safety_factor: Positive = 1.5
+    min_buckling_safety_factor: Positive = 2.0
+    min_onset_margin: Margin = 0.15
+    min_log_decrement: LogDecrement | None = None
+    min_damping_ratio: DampingRatio | None = None
+    separation: Literal["api684", "off"] = "api684"
+    max_spinup_deflection: Positive | None = None
+
+    @model_validator(mode="after")
+    def _check(self) -> Requirements:
+        problems = Problems()
+        if self.min_log_decrement is not None and self.min_damping_ratio is not None:
+            problems.add(
+                ("min_damping_ratio",),
+                "give at most one of min_log_decrement and min_damping_ratio "
+                f"(got min_log_decrement = {format_value(self.min_log_decrement)}, "
+                f"min_damping_ratio = {format_value(self.min_damping_ratio)})",
+            )
+        problems.raise_if_any()
+        return self
+
+    @property
+    def required_log_decrement(self) -> float:
+        """The whirl damping requirement as a log decrement δ [-]."""
+        if self.min_log_decrement is not None:
+            return self.min_log_decrement
+        if self.min_damping_ratio is not None:
+            return log_decrement_from_damping_ratio(self.min_damping_ratio)
+        return DEFAULT_MIN_LOG_DECREMENT

@@ -1,0 +1,484 @@
+"""The requirements verdict: a design's results checked against its ``[requirements]``.
+
+:func:`evaluate` takes plain :class:`Evidence` (the few numbers each requirement needs, in SI,
+with where they occur) and the design's :class:`~flexshaft.design.requirements.Requirements`,
+and returns a frozen :class:`Verdict`: one :class:`Check` per requirement with its value, limit,
+margin (signed, in the value's unit: positive means room to the limit), pass/fail and location.
+A requirement that cannot be evaluated (no limit given, no result to check) says why instead of
+passing. :func:`flexshaft.studies.verdict_evidence.evidence_from_run` builds the evidence from a
+``flexshaft run`` result.
+
+Checks, in report order (key: requirement):
+
+* ``tsai_wu``: minimum ply Tsai-Wu safety factor (static loads + imbalance at the operating speed);
+* ``buckling``: torsional-buckling safety factor;
+* ``whirl_onset``: no whirl instability below (1 + margin) × the operating speed;
+* ``whirl_damping``: log decrement of every mode at the operating speed;
+* ``separation``: API 684 separation margin of every lateral critical speed
+  (:mod:`flexshaft.analyses.separation`);
+* ``actuator_orbit``: static offset + spin-up orbit at each actuator within its auxiliary-bearing gap;
+* ``actuator_force``: static + spin-up force of each actuator within its capacity;
+* ``temperature``: maximum shaft temperature within the matrix allowable;
+* ``spinup_deflection``: peak shaft orbit during spin-up within the limit.
+
+Locations are small mappings with SI values (``station`` [m], ``speed`` [rad/s], ``frequency``
+[rad/s]) and labels (``actuator``, ``mode``, ``ply``, ``case``, ``detail``); the report
+(:mod:`flexshaft.report.verdict`) converts and prints them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from flexshaft.analyses.separation import api684_separation
+from flexshaft.design.requirements import Requirements
+
+__all__ = [
+    "ActuatorEvidence",
+    "Check",
+    "Evidence",
+    "Finding",
+    "Kind",
+    "LateralCritical",
+    "ModeDamping",
+    "Status",
+    "Verdict",
+    "evaluate",
+    "whirl_onset_check",
+]
+
+#: Outcome of one check.
+Status = Literal["pass", "fail", "not evaluated"]
+#: Physical kind of a check's value, limit and margin (sets the display unit).
+Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement"]
+#: SI unit of each kind.
+SI_UNITS: dict[str, str] = {"ratio": "-", "speed": "rad/s", "length": "m", "force": "N", "temperature": "K",
+                            "fraction": "-", "log_decrement": "-"}
+Location = Mapping[str, Any]
+
+
+# ------------------------------------------------------------------------------------------------
+# Evidence
+
+
+@dataclass(frozen=True)
+class ModeDamping:
+    """One mode at the operating speed: damped natural frequency [rad/s], log decrement [-]."""
+
+    label: str
+    frequency: float
+    log_decrement: float
+
+
+@dataclass(frozen=True)
+class LateralCritical:
+    """A lateral critical speed [rad/s] with its amplification factor [-] and where it peaks.
+
+    ``location`` names the shaft station of the peak response and the mode, if known.
+    """
+
+    speed: float
+    amplification_factor: float
+    location: Location = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class ActuatorEvidence:
+    """Peaks of one active bearing and its limits.
+
+    Attributes
+    ----------
+    name : str
+    peak_orbit : float
+        Largest relative orbit amplitude (shaft − attachment) during spin-up [m].
+    orbit_speed : float
+        Speed of that peak [rad/s].
+    peak_force : float
+        Largest force amplitude during spin-up [N].
+    force_speed : float
+        Speed of that peak [rad/s].
+    static_offset, static_force : float
+        Static relative displacement [m] and force [N] under the static loads; the checks add
+        them to the peaks (the orbit is centred on the static position).
+    gap, force_capacity : float or None
+        Auxiliary-bearing radial clearance [m] and actuator force capacity [N]; None: not given.
+    """
+
+    name: str
+    peak_orbit: float
+    orbit_speed: float
+    peak_force: float
+    force_speed: float
+    static_offset: float = 0.0
+    static_force: float = 0.0
+    gap: float | None = None
+    force_capacity: float | None = None
+
+
+@dataclass(frozen=True)
+class Evidence:
+    """The results a verdict needs, SI units; None where the result does not exist.
+
+    Attributes
+    ----------
+    operating_speed : float
+        Ω_op [rad/s].
+    safety_factor, safety_factor_location
+        Minimum Tsai-Wu safety factor [-] and where it occurs.
+    buckling_safety_factor, buckling_location
+        Torsional-buckling safety factor [-] and the governing torque sense.
+    stability_max_speed : float or None
+        Highest speed of the stability analysis [rad/s]; None: no stability analysis.
+    onset_speed, onset_location
+        Lowest whirl-instability onset speed [rad/s] (None: stable up to ``stability_max_speed``)
+        and the unstable mode.
+    modes_at_operating : tuple of ModeDamping or None
+        Every tracked mode at the operating speed.
+    critical_speeds : tuple of LateralCritical or None
+        Lateral critical speeds (peaks of the unbalance response) with their AF.
+    critical_search_max_speed : float or None
+        Highest speed searched for critical speeds [rad/s].
+    actuators : tuple of ActuatorEvidence
+    max_temperature, temperature_location, thermal_runaway
+        Maximum shaft temperature [K], where, and whether the self-heating ran away.
+    allowable_temperature : float or None
+        Matrix allowable temperature [K].
+    spinup_peak, spinup_location
+        Largest shaft orbit amplitude during spin-up [m] and where (station, speed).
+    notes : mapping
+        Check key -> why its evidence is missing (shown as "not evaluated: <note>").
+    """
+
+    operating_speed: float
+    safety_factor: float | None = None
+    safety_factor_location: Location = field(default_factory=dict)
+    buckling_safety_factor: float | None = None
+    buckling_location: Location = field(default_factory=dict)
+    stability_max_speed: float | None = None
+    onset_speed: float | None = None
+    onset_location: Location = field(default_factory=dict)
+    modes_at_operating: tuple[ModeDamping, ...] | None = None
+    critical_speeds: tuple[LateralCritical, ...] | None = None
+    critical_search_max_speed: float | None = None
+    actuators: tuple[ActuatorEvidence, ...] = ()
+    max_temperature: float | None = None
+    temperature_location: Location = field(default_factory=dict)
+    thermal_runaway: bool = False
+    allowable_temperature: float | None = None
+    spinup_peak: float | None = None
+    spinup_location: Location = field(default_factory=dict)
+    notes: Mapping[str, str] = field(default_factory=dict)
+
+
+# ------------------------------------------------------------------------------------------------
+# Checks and the verdict
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One instance of a requirement (one mode, one critical, one actuator...).
+
+    ``margin`` is in the unit of ``value``: value − limit for "at least" requirements, limit −
+    value for "at most" ones, so that a negative margin fails. ``lower_bound``: the true value
+    (and margin) is at least this large.
+    """
+
+    value: float
+    limit: float
+    margin: float
+    location: Location = field(default_factory=dict)
+    lower_bound: bool = False  # the true value is larger (e.g. no whirl onset up to the speed analysed)
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= 0.0
+
+    def to_dict(self) -> dict:
+        return {"value": self.value, "limit": self.limit, "margin": self.margin, "passed": self.passed,
+                "lower_bound": self.lower_bound, "location": dict(self.location)}
+
+
+@dataclass(frozen=True)
+class Check:
+    """One requirement: status, the governing (worst) finding and every finding.
+
+    Attributes
+    ----------
+    key, title : str
+        Identifier and human name of the requirement.
+    kind : Kind
+        Physical kind of value, limit and margin (SI unit in :data:`SI_UNITS`).
+    sense : {"at least", "at most"}
+        The value must be at least / at most the limit.
+    status : {"pass", "fail", "not evaluated"}
+    value, limit, margin : float or None
+        Of the governing finding (None when not evaluated); with ``lower_bound`` the value and
+        margin are lower bounds.
+    location : mapping
+        Where the governing finding occurs.
+    note : str
+        Why the check was not evaluated, or a remark on how it was.
+    findings : tuple of Finding
+        Every instance checked; the governing one has the smallest margin (for separation the
+        margins are fractions of the operating speed, so they compare across criticals).
+    """
+
+    key: str
+    title: str
+    kind: Kind
+    sense: Literal["at least", "at most"]
+    status: Status
+    value: float | None = None
+    limit: float | None = None
+    margin: float | None = None
+    location: Location = field(default_factory=dict)
+    note: str = ""
+    findings: tuple[Finding, ...] = ()
+    lower_bound: bool = False
+
+    @property
+    def passed(self) -> bool | None:
+        """True, False, or None when not evaluated."""
+        return None if self.status == "not evaluated" else self.status == "pass"
+
+    @property
+    def n_failed(self) -> int:
+        return sum(not f.passed for f in self.findings)
+
+    def to_dict(self) -> dict:
+        return {
+            "key": self.key, "title": self.title, "status": self.status, "sense": self.sense, "kind": self.kind,
+            "unit": SI_UNITS[self.kind], "value": self.value, "limit": self.limit, "margin": self.margin,
+            "lower_bound": self.lower_bound, "location": dict(self.location), "note": self.note,
+            "findings": [f.to_dict() for f in self.findings],
+        }
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Every requirement check of one design; ``passed`` when none fails."""
+
+    checks: tuple[Check, ...]
+
+    @property
+    def passed(self) -> bool:
+        """No check fails (checks that could not be evaluated do not fail)."""
+        return not self.failed
+
+    @property
+    def failed(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if c.status == "fail")
+
+    @property
+    def not_evaluated(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if c.status == "not evaluated")
+
+    def check(self, key: str) -> Check:
+        """The check called ``key``."""
+        for c in self.checks:
+            if c.key == key:
+                return c
+        raise KeyError(key)
+
+    @property
+    def summary(self) -> str:
+        """One line: PASS/FAIL, the failed requirements and the count not evaluated."""
+        n_pass = sum(c.status == "pass" for c in self.checks)
+        head = "PASS" if self.passed else "FAIL"
+        parts = []
+        if self.failed:
+            parts.append(f"{len(self.failed)} of {len(self.checks)} requirements fail: "
+                         + ", ".join(c.title for c in self.failed))
+        parts.append(f"{n_pass} pass")
+        if self.not_evaluated:
+            parts.append(f"{len(self.not_evaluated)} not evaluated: " + ", ".join(c.title for c in self.not_evaluated))
+        return f"{head}: " + "; ".join(parts)
+
+    def __repr__(self) -> str:
+        return f"Verdict({self.summary})"
+
+    def to_dict(self) -> dict:
+        return {"passed": self.passed, "summary": self.summary, "checks": [c.to_dict() for c in self.checks]}
+
+
+def _not_evaluated(key: str, title: str, kind: Kind, sense, note: str) -> Check:
+    return Check(key, title, kind, sense, "not evaluated", note=note)
+
+
+def _from_findings(key: str, title: str, kind: Kind, sense, findings: list[Finding], note: str = "") -> Check:
+    worst = min(findings, key=lambda f: f.margin)
+    status: Status = "pass" if worst.passed else "fail"
+    n_failed = sum(not f.passed for f in findings)
+    if len(findings) > 1:
+        count = f"{n_failed} of {len(findings)} fail" if n_failed else f"all {len(findings)} pass"
+        note = f"{count}; {note}" if note else count
+    return Check(key, title, kind, sense, status, worst.value, worst.limit, worst.margin, worst.location, note,
+                 tuple(findings), worst.lower_bound)
+
+
+def _at_least(value: float, limit: float, location: Location) -> Finding:
+    return Finding(float(value), float(limit), float(value - limit), dict(location))
+
+
+def _at_most(value: float, limit: float, location: Location) -> Finding:
+    return Finding(float(value), float(limit), float(limit - value), dict(location))
+
+
+# ------------------------------------------------------------------------------------------------
+# The requirements
+
+
+def _tsai_wu(ev: Evidence, req: Requirements) -> Check:
+    args = ("tsai_wu", "Tsai-Wu safety factor", "ratio", "at least")
+    if ev.safety_factor is None:
+        return _not_evaluated(*args, ev.notes.get("tsai_wu", "no ply strength result"))
+    return _from_findings(*args, [_at_least(ev.safety_factor, req.min_safety_factor, ev.safety_factor_location)])
+
+
+def _buckling(ev: Evidence, req: Requirements) -> Check:
+    args = ("buckling", "buckling safety factor", "ratio", "at least")
+    if ev.buckling_safety_factor is None:
+        return _not_evaluated(*args, ev.notes.get("buckling", "no torsional buckling result"))
+    finding = _at_least(ev.buckling_safety_factor, req.min_buckling_safety_factor, ev.buckling_location)
+    return _from_findings(*args, [finding])
+
+
+def whirl_onset_check(onset_speed: float | None, max_speed: float | None, operating_speed: float,
+                      min_margin: float, location: Location | None = None, note: str = "") -> Check:
+    """The whirl-onset requirement: no instability below (1 + ``min_margin``) × Ω_op.
+
+    Parameters
+    ----------
+    onset_speed : float or None
+        Lowest onset speed of whirl instability [rad/s]; None: stable up to ``max_speed``.
+    max_speed : float or None
+        Highest speed analysed [rad/s]; None: no stability analysis (``note`` says why).
+    operating_speed : float
+        Ω_op [rad/s].
+    min_margin : float
+        Required margin above the operating speed [fraction].
+    location : mapping, optional
+        The unstable mode.
+    """
+    args = ("whirl_onset", "whirl onset speed", "speed", "at least")
+    if max_speed is None:
+        return _not_evaluated(*args, note or "no whirl stability result")
+    required = (1.0 + min_margin) * operating_speed
+    if onset_speed is not None:
+        return _from_findings(*args, [_at_least(onset_speed, required, location or {})])
+    if max_speed >= required:
+        finding = Finding(float(max_speed), float(required), float(max_speed - required), {}, lower_bound=True)
+        return _from_findings(*args, [finding], "no onset up to the highest speed analysed")
+    return _not_evaluated(*args, f"stable up to {max_speed:.6g} rad/s only, the requirement needs "
+                                 f"{required:.6g} rad/s; analyse to a higher speed")
+
+
+def _whirl_damping(ev: Evidence, req: Requirements) -> Check:
+    args = ("whirl_damping", "whirl log decrement", "log_decrement", "at least")
+    if not ev.modes_at_operating:
+        return _not_evaluated(*args, ev.notes.get("whirl_damping", "no eigenvalues at the operating speed"))
+    limit = req.required_log_decrement
+    findings = [_at_least(m.log_decrement, limit, {"mode": m.label, "frequency": m.frequency})
+                for m in ev.modes_at_operating]
+    note = "every tracked mode"
+    if req.min_damping_ratio is not None:
+        note += f"; damping ratio ≥ {req.min_damping_ratio:g} as a log decrement"
+    return _from_findings(*args, findings, note)
+
+
+def _separation(ev: Evidence, req: Requirements) -> Check:
+    args = ("separation", "critical-speed separation", "fraction", "at least")
+    if req.separation == "off":
+        return _not_evaluated(*args, "separation = \"off\" in [requirements]")
+    if ev.critical_speeds is None:
+        return _not_evaluated(*args, ev.notes.get("separation", "no unbalance response to find critical speeds"))
+    if not ev.critical_speeds:
+        return Check(*args, "pass", note="no resonance peak in the unbalance response"
+                     + (f" up to {ev.critical_search_max_speed:.6g} rad/s" if ev.critical_search_max_speed else ""))
+    findings = []
+    for critical in ev.critical_speeds:
+        sep = api684_separation(critical.speed, critical.amplification_factor, ev.operating_speed)
+        location = {**critical.location, "speed": critical.speed, "amplification_factor": sep.amplification_factor,
+                    "position": sep.position}
+        findings.append(_at_least(sep.margin, sep.required_margin, location))
+    return _from_findings(*args, findings, "margin as a fraction of the operating speed")
+
+
+def _actuators(ev: Evidence, key: str) -> Check:
+    orbit = key == "actuator_orbit"
+    args = (key, "actuator excursion" if orbit else "actuator force",
+            "length" if orbit else "force", "at most")
+    if not ev.actuators:
+        return _not_evaluated(*args, ev.notes.get(key, "the design has no active bearings"))
+    limit_field = "gap" if orbit else "force_capacity"
+    findings, missing = [], []
+    for a in ev.actuators:
+        limit = getattr(a, limit_field)
+        if limit is None:
+            missing.append(a.name)
+            continue
+        value = a.static_offset + a.peak_orbit if orbit else a.static_force + a.peak_force
+        speed = a.orbit_speed if orbit else a.force_speed
+        findings.append(_at_most(value, limit, {"actuator": a.name, "speed": speed}))
+    if not findings:
+        return _not_evaluated(*args, f"no {limit_field} given on the active bearings ({', '.join(missing)})")
+    note = "static + spin-up peak"
+    if missing:
+        note += f"; not evaluated for {', '.join(missing)} (no {limit_field} given)"
+    return _from_findings(*args, findings, note)
+
+
+def _temperature(ev: Evidence, req: Requirements) -> Check:
+    args = ("temperature", "shaft temperature", "temperature", "at most")
+    if ev.max_temperature is None:
+        return _not_evaluated(*args, ev.notes.get("temperature", "no shaft thermal result"))
+    if ev.allowable_temperature is None:
+        return _not_evaluated(*args, "no allowable temperature given")
+    check = _from_findings(*args, [_at_most(ev.max_temperature, ev.allowable_temperature, ev.temperature_location)])
+    if ev.thermal_runaway:
+        return Check(*args, "fail", check.value, check.limit, check.margin, check.location,
+                     "thermal runaway: no self-heating equilibrium below the allowable temperature", check.findings)
+    return check
+
+
+def _spinup(ev: Evidence, req: Requirements) -> Check:
+    args = ("spinup_deflection", "spin-up shaft orbit", "length", "at most")
+    if req.max_spinup_deflection is None:
+        return _not_evaluated(*args, "no limit given ([requirements] max_spinup_deflection)")
+    if ev.spinup_peak is None:
+        return _not_evaluated(*args, ev.notes.get("spinup_deflection", "no spin-up response"))
+    return _from_findings(*args, [_at_most(ev.spinup_peak, req.max_spinup_deflection, ev.spinup_location)])
+
+
+def evaluate(evidence: Evidence, requirements: Requirements | None = None) -> Verdict:
+    """Check the evidence against the requirements (default: the schema defaults).
+
+    Parameters
+    ----------
+    evidence : Evidence
+        Results in SI units, see :class:`Evidence`.
+    requirements : Requirements, optional
+        The design's ``[requirements]``.
+
+    Returns
+    -------
+    Verdict
+        One check per requirement, in the order of the module docstring.
+    """
+    req = requirements if requirements is not None else Requirements()
+    ev = evidence
+    onset_location = ev.onset_location if ev.onset_speed is not None else None
+    return Verdict((
+        _tsai_wu(ev, req),
+        _buckling(ev, req),
+        whirl_onset_check(ev.onset_speed, ev.stability_max_speed, ev.operating_speed, req.min_onset_margin,
+                          onset_location, ev.notes.get("whirl_onset", "")),
+        _whirl_damping(ev, req),
+        _separation(ev, req),
+        _actuators(ev, "actuator_orbit"),
+        _actuators(ev, "actuator_force"),
+        _temperature(ev, req),
+        _spinup(ev, req),
+    ))

@@ -1,0 +1,257 @@
+"""The one adapter from a ``flexshaft run`` result to the verdict's :class:`Evidence`.
+
+:func:`evidence_from_run` reads :class:`flexshaft.studies.run.RunResults`; everything else of
+the verdict works on the plain :class:`~flexshaft.studies.verdict.Evidence`. The only new
+computation here is :func:`lateral_critical_speeds`: the unbalance response scanned up to
+:data:`CRITICAL_SEARCH_TOP` × the operating speed (beyond the largest margin API 684 can ask
+above the operating speed, 26 %), each peak refined at the shaft station where it is largest
+until its half-power bandwidth is resolved (:func:`flexshaft.analyses.separation.resolve_peak`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from flexshaft.analyses import SingularSystemError, imbalance_response
+from flexshaft.analyses.campbell import Campbell
+from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.separation import resolve_peak, response_peaks
+from flexshaft.assembly.loads import imbalance_loads
+from flexshaft.assembly.model import Model
+from flexshaft.studies.verdict import ActuatorEvidence, Evidence, LateralCritical, ModeDamping
+
+if TYPE_CHECKING:  # run.py imports this module lazily; no import loop at run time
+    from flexshaft.studies.run import RunResults
+
+__all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"]
+
+#: Highest speed searched for critical speeds, as a multiple of the operating speed.
+CRITICAL_SEARCH_TOP = 1.30
+_SCAN_BOTTOM = 0.02
+_SCAN_POINTS = 651  # 0.2 % of the operating speed apart
+_ZERO_CELSIUS = 273.15
+
+
+# ------------------------------------------------------------------------------------------------
+# Lateral critical speeds from the unbalance response
+
+
+def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
+    """Orbit amplitude [m] at every shaft node: (nodes, cases, speeds) from (ndof, cases, speeds)."""
+    dm = model.dofs
+    n = np.arange(dm.n_shaft_nodes)
+    return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
+
+
+def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top: float = CRITICAL_SEARCH_TOP,
+                            n_points: int = _SCAN_POINTS) -> tuple[LateralCritical, ...]:
+    """Peaks of the unbalance response with their amplification factors.
+
+    Parameters
+    ----------
+    model : Model
+        Assembled model (its design's imbalance placement and eccentricity).
+    campbell : Campbell, optional
+        When given, each peak is labelled with the tracked mode whose 1× critical speed is
+        nearest (within 3 %).
+    top : float
+        Highest speed scanned, as a multiple of the operating speed.
+    n_points : int
+        Samples of the initial scan (2 % to ``top`` of the operating speed).
+
+    Returns
+    -------
+    tuple of LateralCritical
+        In order of speed; AF from the half-power bandwidth of the orbit at the shaft station
+        where the peak is largest, for the worst imbalance case there.
+    """
+    speeds = np.linspace(_SCAN_BOTTOM, top, n_points) * model.speed
+    loads = imbalance_loads(model)
+    orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
+    envelope = orbits.max(axis=(0, 1))
+    out: list[LateralCritical] = []
+    for rough in response_peaks(speeds, envelope):
+        k = int(np.argmin(np.abs(speeds - rough.speed)))
+        node, case = np.unravel_index(int(np.argmax(orbits[:, :, k])), orbits.shape[:2])
+
+        def orbit_at(new_speeds, node=node, case=case):
+            q = imbalance_response(model, new_speeds, loads[:, case:case + 1])
+            return _shaft_orbits(model, q)[node, 0]
+
+        station = float(model.dofs.shaft_x[node])
+        try:
+            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+        except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
+            out.append(LateralCritical(rough.speed, float("inf"), {
+                "station": station, "detail": "undamped resonance: the response is singular at the peak"}))
+            continue
+        if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
+            continue
+        location = {"station": station, "af_method": peak.method}
+        if not peak.resolved:
+            location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
+        mode = _campbell_label(campbell, peak.speed)
+        if mode:
+            location["mode"] = mode
+        out.append(LateralCritical(peak.speed, peak.amplification_factor, location))
+    return tuple(sorted(out, key=lambda c: c.speed))
+
+
+def _campbell_label(campbell, speed: float) -> str:
+    if campbell is None or not campbell.critical_speeds:
+        return ""
+    nearest = min(campbell.critical_speeds, key=lambda c: abs(c.speed - speed))
+    if abs(nearest.speed - speed) > 0.03 * speed:
+        return ""
+    return f"{nearest.mode + 1} ({nearest.whirl})"
+
+
+# ------------------------------------------------------------------------------------------------
+# Whirl stability at the operating speed
+
+
+def _modes_at_operating(res, speed: float) -> tuple[ModeDamping, ...] | None:
+    st = res.stability
+    speeds = np.asarray(st.speeds)
+    if speeds.size < 2 or not speeds[0] <= speed <= speeds[-1]:
+        return None
+    k = int(np.clip(np.searchsorted(speeds, speed, side="right") - 1, 0, speeds.size - 2))
+    t = (speed - speeds[k]) / (speeds[k + 1] - speeds[k])
+    eig = (1 - t) * st.eigenvalues[k] + t * st.eigenvalues[k + 1]  # tracked modes: column-wise
+    nearest = k if t < 0.5 else k + 1
+    components = _components(res, eig)
+    out = []
+    for m, s in enumerate(eig):
+        zeta = -s.real / abs(s)
+        delta = 2 * np.pi * zeta / np.sqrt(max(1 - zeta * zeta, 1e-300))
+        label = f"{m + 1} ({st.whirl[nearest, m]}{', ' + components[m] if components[m] else ''})"
+        out.append(ModeDamping(label, float(abs(s.imag)), float(delta)))
+    return tuple(out)
+
+
+def _components(res, eig) -> list[str]:
+    """Shaft/boom/coupled label of each eigenvalue from the nearest mode of ``res.mode_shapes``."""
+    shapes = res.mode_shapes
+    if shapes is None:
+        return [""] * len(eig)
+    omega = 2 * np.pi * np.asarray(shapes.frequencies)
+    labels = []
+    for s in eig:
+        j = int(np.argmin(np.abs(omega - abs(s.imag))))
+        labels.append(str(shapes.component[j]) if abs(omega[j] - abs(s.imag)) <= 0.02 * abs(s.imag) else "")
+    return labels
+
+
+# ------------------------------------------------------------------------------------------------
+# The adapter
+
+
+def _strength(res, notes: dict) -> dict:
+    results = [r for r in (res.strength_static, res.strength_total) if r is not None]
+    if not results:
+        notes["tsai_wu"] = "ply strength needs a lamina shaft material"
+        return {}
+    r = min(results, key=lambda r: r.safety_factor)
+    case = "static + imbalance" if r is res.strength_total else "static"
+    return {"safety_factor": float(r.safety_factor), "safety_factor_location": {
+        "station": float(r.x), "ply": f"{r.ply + 1} ({r.ply_angle_deg:+.0f}°)", "case": case,
+        "detail": f"φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates"}}
+
+
+def _buckling(res, notes: dict) -> dict:
+    b = res.buckling
+    if b is None:
+        notes["buckling"] = "laminated-shell buckling needs a lamina shaft material"
+        return {}
+    positive = b["critical_torque_positive_Nm"] <= b["critical_torque_negative_Nm"]
+    sense, n = ("positive", b["wave_number_positive"]) if positive else ("negative", b["wave_number_negative"])
+    critical = min(b["critical_torque_positive_Nm"], b["critical_torque_negative_Nm"])
+    return {"buckling_safety_factor": float(b["safety_factor"]), "buckling_location": {
+        "case": f"{sense} torque, n = {n}",
+        "detail": f"applied {b['torque_Nm']:.0f} N m, T_cr = {critical:.0f} N m, {b['theory']} shell"}}
+
+
+def _whirl(res, speed: float, notes: dict) -> dict:
+    st = res.stability
+    if st is None:
+        notes["whirl_onset"] = notes["whirl_damping"] = "no whirl stability analysis (it needs PD actuators)"
+        return {}
+    out = {"stability_max_speed": float(st.speeds[-1]), "modes_at_operating": _modes_at_operating(res, speed)}
+    if out["modes_at_operating"] is None:
+        notes["whirl_damping"] = "the operating speed is outside the speeds of the stability analysis"
+    if st.onset_speed is not None:
+        m = st.unstable_mode
+        k = int(np.argmin(np.abs(np.asarray(st.speeds) - st.onset_speed)))
+        out["onset_speed"] = float(st.onset_speed)
+        out["onset_location"] = {"mode": f"{m + 1} ({st.whirl[k, m]})",
+                                 "frequency": float(abs(st.eigenvalues[k, m].imag)),
+                                 "detail": f"{st.damping_model} internal-damping model"}
+    return out
+
+
+def _actuators(res) -> tuple[ActuatorEvidence, ...]:
+    model = res.model
+    design = model.design
+    out = []
+    for a in model.actuators:
+        d = np.asarray(res.actuator_displacement[a.name])
+        f = np.asarray(res.actuator_force[a.name])
+        i, j = int(np.argmax(d)), int(np.argmax(f))
+        static = float(np.hypot(*np.real(a.lateral_rows @ res.static_displacement)))
+        bearing = design.bearing(a.name) if design is not None else None
+        out.append(ActuatorEvidence(
+            a.name, float(d[i]), float(res.speeds[i]), float(f[j]), float(res.speeds[j]),
+            static_offset=static, static_force=float(abs(a.controller(0j))) * static,
+            gap=getattr(bearing, "gap", None), force_capacity=getattr(bearing, "force_capacity", None)))
+    return tuple(out)
+
+
+def _temperature(res, notes: dict) -> dict:
+    th = res.thermal
+    if th is None:
+        notes["temperature"] = "no shaft thermal result (the thermal model needs a laminated shaft)"
+        return {}
+    sh = th.get("self_heating")
+    temperature = sh.thermal.temperature if sh is not None else th["shaft"][th["loss_model"]].temperature
+    i = int(np.argmax(temperature.temperature))
+    detail = (f"self-heating equilibrium ({sh.status}), {th['loss_model']} loss model" if sh is not None
+              else f"{th['loss_model']} loss model, constant properties")
+    return {"max_temperature": float(temperature.temperature[i]),
+            "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
+            "thermal_runaway": sh is not None and sh.status == "runaway"}
+
+
+def evidence_from_run(res: RunResults) -> Evidence:
+    """Build the verdict's evidence from a :class:`flexshaft.studies.run.RunResults`.
+
+    Computes the lateral critical speeds and their amplification factors
+    (:func:`lateral_critical_speeds`); every other number is read from ``res``.
+    """
+    model = res.model
+    design = model.design
+    speed = float(model.speed)
+    notes: dict[str, str] = {}
+    values: dict = {}
+    values.update(_strength(res, notes))
+    values.update(_buckling(res, notes))
+    values.update(_whirl(res, speed, notes))
+    if speed > 0.0:
+        try:
+            values["critical_speeds"] = lateral_critical_speeds(model, res.campbell)
+            values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
+        except SingularSystemError as exc:
+            notes["separation"] = f"the unbalance response could not be scanned: {exc}"
+    else:
+        notes["separation"] = "the operating speed is zero"
+    values.update(_temperature(res, notes))
+    if design is not None:
+        values["allowable_temperature"] = design.thermal.allowable_temperature_c + _ZERO_CELSIUS
+    peak = np.asarray(res.shaft_peak)
+    if peak.size:
+        k = int(np.argmax(peak))
+        node = int(np.argmax(np.asarray(res.shaft_envelope)[:, k]))
+        values["spinup_peak"] = float(peak[k])
+        values["spinup_location"] = {"station": float(model.dofs.shaft_x[node]), "speed": float(res.speeds[k])}
+    return Evidence(operating_speed=speed, actuators=_actuators(res), notes=notes, **values)
