@@ -112,36 +112,29 @@ def _campbell_label(campbell, speed: float) -> str:
 # Whirl stability at the operating speed
 
 
+#: Smallest share of a mode's kinetic energy in the shaft for the whirl-damping requirement.
+WHIRL_DAMPING_SHAFT_SHARE = 0.1
+
+
 def _modes_at_operating(res, speed: float) -> tuple[ModeDamping, ...] | None:
-    st = res.stability
-    speeds = np.asarray(st.speeds)
-    if speeds.size < 2 or not speeds[0] <= speed <= speeds[-1]:
+    """Log decrements at the operating speed of the lateral modes the shaft takes part in.
+
+    From the damped modes at the operating speed (``res.mode_shapes``, the model's damping
+    physics). Only lateral modes with at least :data:`WHIRL_DAMPING_SHAFT_SHARE` of their
+    kinetic energy in the shaft count: API 617's log-decrement criterion concerns the
+    rotor's whirl modes; boom-only modes (damped by the structure, η/2) and torsional or axial
+    modes cannot whirl and are excluded.
+    """
+    m = res.mode_shapes
+    if m is None or not np.isclose(m.speed, speed, rtol=1e-9, atol=1e-9):
         return None
-    k = int(np.clip(np.searchsorted(speeds, speed, side="right") - 1, 0, speeds.size - 2))
-    t = (speed - speeds[k]) / (speeds[k + 1] - speeds[k])
-    eig = (1 - t) * st.eigenvalues[k] + t * st.eigenvalues[k + 1]  # tracked modes: column-wise
-    nearest = k if t < 0.5 else k + 1
-    components = _components(res, eig)
     out = []
-    for m, s in enumerate(eig):
-        zeta = -s.real / abs(s)
-        delta = 2 * np.pi * zeta / np.sqrt(max(1 - zeta * zeta, 1e-300))
-        label = f"{m + 1} ({st.whirl[nearest, m]}{', ' + components[m] if components[m] else ''})"
-        out.append(ModeDamping(label, float(abs(s.imag)), float(delta)))
+    for k in range(m.eigenvalues.size):
+        if m.kind[k] != "lateral" or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE:
+            continue
+        label = f"{k + 1} ({m.whirl[k]}, {m.component[k]})"
+        out.append(ModeDamping(label, float(abs(m.eigenvalues[k].imag)), float(m.log_decrements[k])))
     return tuple(out)
-
-
-def _components(res, eig) -> list[str]:
-    """Shaft/boom/coupled label of each eigenvalue from the nearest mode of ``res.mode_shapes``."""
-    shapes = res.mode_shapes
-    if shapes is None:
-        return [""] * len(eig)
-    omega = 2 * np.pi * np.asarray(shapes.frequencies)
-    labels = []
-    for s in eig:
-        j = int(np.argmin(np.abs(omega - abs(s.imag))))
-        labels.append(str(shapes.component[j]) if abs(omega[j] - abs(s.imag)) <= 0.02 * abs(s.imag) else "")
-    return labels
 
 
 # ------------------------------------------------------------------------------------------------
@@ -180,7 +173,7 @@ def _whirl(res, speed: float, notes: dict) -> dict:
         return {}
     out = {"stability_max_speed": float(st.speeds[-1]), "modes_at_operating": _modes_at_operating(res, speed)}
     if out["modes_at_operating"] is None:
-        notes["whirl_damping"] = "the operating speed is outside the speeds of the stability analysis"
+        notes["whirl_damping"] = "no damped modes at the operating speed"
     if st.onset_speed is not None:
         m = st.unstable_mode
         k = int(np.argmin(np.abs(np.asarray(st.speeds) - st.onset_speed)))
