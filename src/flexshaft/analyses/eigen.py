@@ -202,6 +202,15 @@ class ReducedModel:
         A[nb : 2 * nb, :nb] = -stiffness
         return A
 
+    @property
+    def may_diverge(self) -> bool:
+        """False when no real root s > 0 is possible: every actuator channel collocated, without
+        states and with non-negative stiffness and damping. Then M > 0, symmetric stiffness and
+        damping ≥ 0 and skew gyroscopic and circulatory terms leave no real positive root (for a
+        real eigenvector φ: s² φᵀMφ + s φᵀDφ + φᵀKφ = 0 has no root s > 0)."""
+        return any(a.A.size or a.in_rows is not None or a.stiffness < 0 or a.damping < 0 or a.damping_in_basis < 0
+                   for a in self.actuators)
+
     def undamped(self) -> "ReducedModel":
         """The gyroscopic-only model: no viscous damping, no loss, no controller dynamics (the
         laws' static stiffness stays; actuators with states are left out)."""

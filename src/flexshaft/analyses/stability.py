@@ -193,7 +193,7 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     kind = None if onset is None else "oscillatory"
     divergence = np.zeros(speeds.size)
     first = None
-    for i, speed in enumerate(speeds):
+    for i, speed in enumerate(speeds if red.may_diverge else ()):
         viscous = viscous_equivalent(ref, speed) if damping_model == "viscous" else None
         _, _, Y_div, roots = spectrum(red, speed, viscous) if viscous is not None else spectrum(red, speed)
         if roots.size:
