@@ -1,7 +1,10 @@
 """Banded solver for repeated harmonic solves of one model.
 
-``Z(ω, Ω) = −ω² M + iω(Ω G + C) + K + L(ω, Ω) + Σ_a C_a(iω) B_aᵀB_a`` on the free DOFs, with the
-hysteretic loss ``L`` of :mod:`flexshaft.analyses.loss` (the model's internal-damping choice).
+``Z(ω, Ω) = −ω² M + iω(Ω G + C) + K + L(ω, Ω) + Σ_a [G_a(iω) B_aᵀB_s − k_s B_aᵀB_a]`` on the free
+DOFs, with the hysteretic loss ``L`` of :mod:`flexshaft.analyses.loss` (the model's
+internal-damping choice) and each magnetic bearing's feedback ``G_a = k_i A(s) C(s)`` from its
+sensing rows B_s to its actuation rows B_a (:class:`~flexshaft.assembly.model.Actuator`); a
+collocated bearing (B_s = B_a) adds ``(G_a(iω) − k_s) B_aᵀB_a`` on one symmetric pattern.
 
 The free DOFs are renumbered once by reverse Cuthill-McKee on the union sparsity of every term;
 shaft and boom nodes at the same station then sit together and the bandwidth stays small
@@ -57,6 +60,8 @@ def _term_matrices(model: Model, free: np.ndarray) -> dict[str, sp.csr_matrix]:
     for k, a in enumerate(model.actuators):
         B = a.lateral_rows
         out[f"A{k}"] = restrict((B.T @ B).tocsr(), free).tocsr()
+        if not a.collocated:  # actuation rows × sensing rows
+            out[f"S{k}"] = restrict((B.T @ a.sensing_rows).tocsr(), free).tocsr()
     for A in out.values():
         A.eliminate_zeros()  # stored zeros (e.g. exact zero couplings of an element) would widen the band
     return out
@@ -94,7 +99,7 @@ class BandedHarmonicSolver:
             values = np.zeros(keys.size, dtype=complex)
             np.add.at(values, positions, coo.data)
             self.data[name] = values
-        self.controllers = [a.controller for a in model.actuators]
+        self.actuators = model.actuators
         self.internal_damping = model.internal_damping
         self.default_speed = model.speed
 
@@ -114,8 +119,13 @@ class BandedHarmonicSolver:
         if loss.circulatory:
             z = z + loss.circulatory * d["S"]
         s = 1j * omega
-        for k, c in enumerate(self.controllers):
-            z = z + complex(c(s)) * d[f"A{k}"]
+        for k, a in enumerate(self.actuators):
+            if a.collocated:
+                z = z + complex(a.law(s)) * d[f"A{k}"]
+            else:
+                z = z + complex(a.feedback_gain(s)) * d[f"S{k}"]
+                if a.negative_stiffness:
+                    z = z - a.negative_stiffness * d[f"A{k}"]
         return z
 
     def matrix(self, omega: float, speed: float) -> np.ndarray:

@@ -248,8 +248,7 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
         raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
     red = reduce(model, basis_size or default_basis_size(int(n_modes)))
     if not damped:
-        red = ReducedModel(red.Phi, red.w2, red.G, 0 * red.C, red.F, red.L, red.S, red.internal_damping,
-                           tuple(a for a in red.actuators if not a.A.size), False)
+        red = red.undamped()
     tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=damped)
     crit = critical_speeds(speeds, tracked.eigenvalues, tracked.whirl, tracked.kind, harmonics)
     return Campbell(speeds, tracked.eigenvalues, tracked.whirl, tracked.whirl_ratios, crit, tracked.kind,

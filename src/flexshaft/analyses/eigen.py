@@ -4,23 +4,30 @@ Every eigen-analysis (modes at one speed, Campbell diagram, whirl stability) use
 so they share one damping physics (:mod:`flexshaft.analyses.loss`) and one set of mode labels.
 
 Reduction. The free DOFs are projected once on the lowest ``nb`` undamped, non-spinning modes
-Φ of ``(K + K_a) φ = ω² M φ`` (mass-normalised; K_a the actuators' basis stiffness), computed
-densely for small models and by sparse shift-invert Lanczos (ARPACK) beyond
-:data:`SPARSE_BASIS_ABOVE` free DOFs. In modal coordinates ``q = Φ y`` the first-order
-problem at spin speed Ω is, with controller states ``x`` for transfer-function actuators,
+Φ of ``(K + K_a) φ = ω² M φ`` (mass-normalised; K_a the actuators' basis stiffness, never
+negative, so the basis problem is positive semi-definite even when a magnetic bearing's
+negative stiffness makes the open-loop structure unstable), computed densely for small
+models and by sparse shift-invert Lanczos (ARPACK) beyond :data:`SPARSE_BASIS_ABOVE` free
+DOFs. In modal coordinates ``q = Φ y`` every actuator is one or two channels
+``B̃_outᵀ · L(s) · B̃_in`` (:class:`~flexshaft.assembly.model.Actuator`): the collocated law
+``G − k_s`` on the magnet's rows ``B̃_a`` (``−k_s`` alone when the sensor is elsewhere) and,
+for a non-collocated sensor, ``G(s) = k_i A(s) C(s)`` from the sensing rows ``B̃_s`` to
+``B̃_a``. Each law is realised as ``L(s) = E s + D + C_L (sI − A_L)⁻¹ B_L``
+(:meth:`~flexshaft.assembly.model.Controller.realization`, minimal, on each of the two
+lateral directions); with controller states ``x`` the first-order problem at spin speed Ω is
 
-    ÿ = −(Λ + Σ_a B̃_aᵀ(D_a − k_a)B̃_a) y − (Ω G̃ + C̃) ẏ − Σ_a B̃_aᵀ C_a x_a
-    ẋ_a = A_a x_a + B_a B̃_a y
+    ÿ = −(Λ + Σ B̃_outᵀ(D − k_a)B̃_in) y − (Ω G̃ + C̃ + Σ B̃_outᵀ E B̃_in) ẏ − Σ B̃_outᵀ C_L x
+    ẋ = A_L x + B_L B̃_in y
 
-(``B̃_a = B_a Φ`` the actuator's lateral rows, ``(A_a, B_a, C_a, D_a)`` a minimal realization
-of its law on each of the two lateral directions); this loss-free matrix, or the one of the
-thesis's viscous internal-damping model, gives the candidates.
+(k_a, and E of a collocated law, are already in Λ and C̃ = Φᵀ(C + K_d)Φ); this loss-free
+matrix, or the one of the thesis's viscous internal-damping model, gives the candidates.
+A PD bearing has no states: its K_p is in Λ and its K_d in C̃, exactly the thesis's model.
 
 Solution. A dense eigen-solve of the loss-free state matrix gives every candidate at a speed
 (:func:`candidates`). Each wanted mode is refined to the eigenvalue of its own loss-consistent
 problem by Newton's method on the nonlinear eigenproblem in modal coordinates
 
-    T(s) y = [s² I + s (Ω G̃ + C̃) + Λ + L̃(ω, Ω) + Σ_a B̃_aᵀ (C_a(s) − k_a) B̃_a] y = 0,
+    T(s) y = [s² I + s (Ω G̃ + C̃) + Λ + L̃(ω, Ω) + Σ B̃_outᵀ (L(s) − k_a − s E_basis) B̃_in] y = 0,
 
 with the hysteretic loss ``L̃`` of :mod:`flexshaft.analyses.loss` at the mode's own frequency
 ω = Im(s)
@@ -28,10 +35,16 @@ with the hysteretic loss ``L̃`` of :mod:`flexshaft.analyses.loss` at the mode's
 (``u = T(s)⁻¹ T'(s) y``, ``s ← s − yᴴy / yᴴu``, ``y ← u/‖u‖``: quadratic convergence, one
 nb × nb LU per step). A mode that sits exactly on the synchronous line, where the
 rotating-frame loss switches sign, is settled with σ = 0.
+
+Divergence. A real eigenvalue s > 0 (a non-oscillatory, aperiodic instability: a magnetic
+bearing with too little control stiffness against its k_s) is not an oscillatory candidate;
+:func:`spectrum` returns it separately, :func:`damped_modes` reports it as a mode with
+Im s = 0 and the stability analysis as divergence.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -42,10 +55,13 @@ from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients, whirl_
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
-__all__ = ["SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "candidates", "refine", "newton", "damped_modes"]
+__all__ = ["DIVERGENCE_TOLERANCE", "SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "spectrum", "candidates",
+           "divergent_roots", "refine", "newton", "damped_modes"]
 
 #: Free-DOF count above which the modal basis is computed by sparse shift-invert.
 SPARSE_BASIS_ABOVE = 900
+#: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
+DIVERGENCE_TOLERANCE = 1e-6
 #: Relative convergence of the refined eigenvalue (|Δs| / |s|; a damping ratio of 1e-4 is
 #: then resolved to 1e-6 of itself).
 _TOL = 1e-10
@@ -63,7 +79,10 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
     method : {"auto", "dense", "sparse"}
         ``"auto"``: dense ``eigh`` up to :data:`SPARSE_BASIS_ABOVE` free DOFs, else sparse
         shift-invert Lanczos with a shift of −1 rad²/s² (so a free rigid-body motion is found
-        too).
+        too). The shift lies below the lowest eigenvalue because the basis stiffness
+        ``K + K_a`` is positive semi-definite: member and contact-bearing stiffness are, and
+        each actuator adds ``k_a BᵀB`` with ``k_a >= 0`` (a magnet's negative stiffness is
+        left to the state matrix, :attr:`~flexshaft.assembly.model.Actuator.basis_stiffness`).
     """
     free = model.dofs.free
     M = restrict(model.M, free).tocsc()
@@ -84,13 +103,32 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
 
 @dataclass(frozen=True)
 class _ActuatorStates:
-    rows: np.ndarray  # B̃_a (2, nb)
+    """One actuator channel ``B̃_outᵀ · law · B̃_in`` in modal coordinates.
+
+    A collocated channel has ``in_rows is rows``. The law is ``E s + D + C (sI − A)⁻¹ B`` on
+    each lateral direction; ``stiffness`` and ``damping`` are the parts of ``D`` and ``E`` not
+    already in the basis (Λ) and in the projected damping matrix.
+    """
+
+    rows: np.ndarray  # B̃_out (2, nb): where the force acts
     A: np.ndarray  # (2 m, 2 m) block-diagonal over the two directions
     B: np.ndarray  # (2 m, 2)
     C: np.ndarray  # (2, 2 m)
-    stiffness: float  # D_a − k_a on the lateral rows
-    law: object = None  # the Controller of a transfer-function actuator (None: PD, already in Λ and C)
+    stiffness: float  # D − k_basis on B̃_outᵀ B̃_in
+    law: object = None  # the law's Controller when it has states (then T(s) uses law(s) directly)
     basis_stiffness: float = 0.0
+    in_rows: np.ndarray | None = None  # B̃_in (2, nb): what the law measures (None: = rows)
+    damping: float = 0.0  # E not already in the projected damping (non-collocated channels)
+    damping_in_basis: float = 0.0  # E already in the projected damping (collocated channels: model.Kd)
+
+    @property
+    def sensing(self) -> np.ndarray:
+        return self.rows if self.in_rows is None else self.in_rows
+
+    @property
+    def coupling(self) -> np.ndarray:
+        """``B̃_outᵀ B̃_in`` (nb, nb)."""
+        return self.rows.T @ self.sensing
 
 
 @dataclass(frozen=True)
@@ -152,16 +190,33 @@ class ReducedModel:
         start = 2 * nb
         for act in self.actuators:
             if act.stiffness:
-                stiffness = stiffness + act.stiffness * (act.rows.T @ act.rows)
+                stiffness = stiffness + act.stiffness * act.coupling
+            if act.damping:
+                A[nb : 2 * nb, nb : 2 * nb] -= act.damping * act.coupling
             m = act.A.shape[0]
             if m:
                 block = slice(start, start + m)
                 A[nb : 2 * nb, block] = -act.rows.T @ act.C
-                A[block, :nb] = act.B @ act.rows
+                A[block, :nb] = act.B @ act.sensing
                 A[block, block] = act.A
                 start += m
         A[nb : 2 * nb, :nb] = -stiffness
         return A
+
+    @property
+    def may_diverge(self) -> bool:
+        """False when no real root s > 0 is possible: every actuator channel collocated, without
+        states and with non-negative stiffness and damping. Then M > 0, symmetric stiffness and
+        damping ≥ 0 and skew gyroscopic and circulatory terms leave no real positive root (for a
+        real eigenvector φ: s² φᵀMφ + s φᵀDφ + φᵀKφ = 0 has no root s > 0)."""
+        return any(a.A.size or a.in_rows is not None or a.stiffness < 0 or a.damping < 0 or a.damping_in_basis < 0
+                   for a in self.actuators)
+
+    def undamped(self) -> "ReducedModel":
+        """The gyroscopic-only model: no viscous damping, no loss, no controller dynamics (the
+        laws' static stiffness stays; actuators with states are left out)."""
+        keep = tuple(dataclasses.replace(a, damping=0.0, damping_in_basis=0.0) for a in self.actuators if not a.A.size)
+        return ReducedModel(self.Phi, self.w2, self.G, 0 * self.C, self.F, self.L, self.S, self.internal_damping, keep, False)
 
     def shapes(self, y: np.ndarray) -> np.ndarray:
         """Free-DOF displacement shapes Φ y of modal coordinates ``y`` (columns)."""
@@ -183,11 +238,30 @@ class ReducedModel:
         dT = damping.astype(complex)
         dT.flat[:: nb + 1] += 2 * s
         for act in self.actuators:
-            if act.law is not None:
-                BtB = act.rows.T @ act.rows
-                T = T + (complex(act.law(s)) - act.basis_stiffness) * BtB
-                dT = dT + complex(act.law.derivative(s)) * BtB
+            if act.law is not None:  # the law's dynamics: C(s) minus what Λ and C̃ already hold
+                BtB = act.coupling
+                T = T + (complex(act.law(s)) - act.basis_stiffness - s * act.damping_in_basis) * BtB
+                dT = dT + (complex(act.law.derivative(s)) - act.damping_in_basis) * BtB
+            elif act.stiffness or act.damping:
+                BtB = act.coupling
+                T = T + (act.stiffness + s * act.damping) * BtB
+                dT = dT + act.damping * BtB
         return T, dT
+
+
+def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness: float) -> _ActuatorStates:
+    """The channel ``rowsᵀ · law · sensing`` (collocated when ``sensing`` is None: then
+    ``basis_stiffness`` is in Λ and the law's ideal-derivative part in the projected damping,
+    :attr:`Model.Kp` and :attr:`Model.Kd`)."""
+    Ac, Bc, Cc, Dc, Ec = law.realization()
+    I2 = np.eye(2)
+    collocated = sensing is None
+    has_states = Ac.shape[0] > 0
+    return _ActuatorStates(
+        rows, np.kron(I2, Ac), np.kron(I2, Bc), np.kron(I2, Cc), Dc - basis_stiffness,
+        law if has_states else None, basis_stiffness, sensing,
+        damping=0.0 if collocated else Ec, damping_in_basis=Ec if collocated else 0.0,
+    )
 
 
 def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
@@ -201,14 +275,10 @@ def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
     actuators = []
     for a in model.actuators:
         rows = np.asarray(a.lateral_rows.tocsr()[:, free] @ Phi)
-        ctrl = a.controller
-        if ctrl.is_pd:
-            actuators.append(_ActuatorStates(rows, np.zeros((0, 0)), np.zeros((0, 2)), np.zeros((2, 0)), 0.0))
-            continue
-        Ac, Bc, Cc, Dc = ctrl.state_space()
-        I2 = np.eye(2)
-        actuators.append(_ActuatorStates(rows, np.kron(I2, Ac), np.kron(I2, Bc), np.kron(I2, Cc),
-                                         Dc - ctrl.basis_stiffness, ctrl, ctrl.basis_stiffness))
+        actuators.append(_channel(rows, None, a.collocated_law, a.basis_stiffness))
+        if not a.collocated:
+            sensing = np.asarray(a.sensing_rows.tocsr()[:, free] @ Phi)
+            actuators.append(_channel(rows, sensing, a.sensed_law, 0.0))
     return ReducedModel(
         Phi=Phi, w2=w2, G=proj(model.G), C=proj(model.C + model.Kd), F=proj(model.loss_fixed),
         L=proj(model.loss_lateral), S=proj(model.loss_circulatory), internal_damping=model.internal_damping,
@@ -216,19 +286,47 @@ def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
     )
 
 
-def candidates(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> tuple[np.ndarray, np.ndarray]:
-    """Every oscillatory eigenpair of the (loss-free or viscous) state matrix, sorted by |s|.
+def spectrum(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Eigen-solution of the (loss-free or viscous) state matrix at one speed.
 
-    Returns ``(s, Y)``: eigenvalues with Im(s) > 0 [rad/s] and their modal coordinates y
-    (unit columns, (nb, k)).
+    Returns ``(s, Y, Y_div, s_div)``: the oscillatory eigenvalues (Im s > 0 [rad/s]) sorted
+    by |s| with their modal coordinates (unit columns, (nb, k)), and the **divergent** roots'
+    modal coordinates (real unit columns, (nb, j)) and values ``s_div``: real eigenvalues
+    s > 0 [1/s] (an aperiodic instability, e.g. a magnetic bearing whose negative stiffness
+    k_s exceeds its control stiffness), largest first. A real root counts as divergent above
+    :data:`DIVERGENCE_TOLERANCE` × the largest basis frequency (round-off of the zero roots
+    of a free rigid-body motion is far below).
     """
     lam, vec = la.eig(red.state_matrix(speed, viscous), check_finite=False)
     keep = lam.imag > 1e-6 * np.abs(lam)  # oscillatory roots only (ζ < 1 − 5e-13)
+    scale = float(np.sqrt(max(np.max(red.w2, initial=0.0), 1.0)))
+    real = (np.abs(lam.imag) <= 1e-6 * np.abs(lam)) & (lam.real > DIVERGENCE_TOLERANCE * scale)
+    div, div_vec = lam[real].real, vec[: red.size, real]
+    order = np.argsort(-div)
+    div, div_vec = div[order], div_vec[:, order]
     lam, vec = lam[keep], vec[: red.size, keep]
     order = np.argsort(np.abs(lam))
     vec = vec[:, order]
     norm = np.linalg.norm(vec, axis=0)
-    return lam[order], vec / np.where(norm > 0, norm, 1.0)
+    dnorm = np.linalg.norm(div_vec, axis=0)
+    return lam[order], vec / np.where(norm > 0, norm, 1.0), div_vec.real / np.where(dnorm > 0, dnorm, 1.0) if div.size else div_vec.real, div
+
+
+def candidates(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> tuple[np.ndarray, np.ndarray]:
+    """Every oscillatory eigenpair of the (loss-free or viscous) state matrix, sorted by |s|.
+
+    Returns ``(s, Y)``: eigenvalues with Im(s) > 0 [rad/s] and their modal coordinates y
+    (unit columns, (nb, k)). Divergent (real, unstable) roots are left out: see
+    :func:`spectrum` and :func:`divergent_roots`.
+    """
+    lam, Y, _, _ = spectrum(red, speed, viscous)
+    return lam, Y
+
+
+def divergent_roots(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> np.ndarray:
+    """Real unstable eigenvalues s > 0 [1/s] of the state matrix at one speed, largest first
+    (empty when there is none). See :func:`spectrum`."""
+    return spectrum(red, speed, viscous)[3]
 
 
 _getrf, _getrs = la.get_lapack_funcs(("getrf", "getrs"), dtype=complex)
@@ -295,12 +393,18 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
     Returns ``(s, Y)`` sorted by |s| (undamped natural frequency), Y modal coordinates.
+    Divergent roots (real s > 0, :func:`spectrum`) are modes too: they are returned with
+    Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic loss is
+    defined for harmonic motion only and cannot hold a static divergence).
     """
-    lam, Y = candidates(red, speed)
+    lam, Y, Y_div, div = spectrum(red, speed)
     n = min(n_modes, lam.size)
     out_s = np.empty(n, complex)
     out_y = np.empty((red.size, n), complex)
     for k in range(n):
         out_s[k], out_y[:, k] = refine(red, speed, lam[k], Y[:, k])
-    order = np.argsort(np.abs(out_s))
+    if div.size:
+        out_s = np.concatenate([out_s, div.astype(complex)])
+        out_y = np.hstack([out_y, Y_div.astype(complex)])
+    order = np.argsort(np.abs(out_s))[:n_modes]
     return out_s[order], out_y[:, order]

@@ -17,7 +17,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
-from flexshaft.analyses.eigen import candidates, damped_modes, reduce
+from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 
@@ -42,7 +42,8 @@ class Modes:
     speed : float
         Spin speed Ω [rad/s].
     eigenvalues : ndarray
-        s = −ζω_n + iω_d [rad/s] (one per mode, Im s > 0).
+        s = −ζω_n + iω_d [rad/s] (one per mode, Im s > 0; a divergent root, see
+        :attr:`divergent`, is real and positive).
     shapes : ndarray
         Mode shapes on the full DOF vector, (ndof, n_modes), unit maximum translation.
     kind : ndarray of str
@@ -97,6 +98,12 @@ class Modes:
         return _log_decrement(self.damping_ratios)
 
     @property
+    def divergent(self) -> np.ndarray:
+        """True for a divergent root: a real eigenvalue s > 0 (no oscillation, ζ = −1), e.g. a
+        magnetic bearing whose negative stiffness beats its control stiffness."""
+        return (self.eigenvalues.imag == 0) & (self.eigenvalues.real > 0)
+
+    @property
     def shaft_fractions(self) -> np.ndarray:
         """Share of each mode's kinetic energy carried by the shaft."""
         return self.shares.shaft
@@ -142,10 +149,11 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
     if damped:
         s, Z = damped_modes(red, speed, n_modes)
     else:
-        bare = type(red)(red.Phi, red.w2, red.G, 0 * red.C, red.F, red.L, red.S, red.internal_damping,
-                         tuple(a for a in red.actuators if not a.A.size), False)
-        lam, Z = candidates(bare, speed)
-        s, Z = lam[:n_modes], Z[:, :n_modes]
+        bare = red.undamped()
+        lam, Z, Z_div, div = spectrum(bare, speed)
+        s, Z = np.concatenate([lam, div.astype(complex)]), np.hstack([Z, Z_div.astype(complex)])
+        order = np.argsort(np.abs(s))[:n_modes]
+        s, Z = s[order], Z[:, order]
         red = bare
     shapes = _normalise(model.dofs, model.dofs.expand(red.shapes(Z)))
     labels = label_modes(model, shapes)

@@ -17,6 +17,7 @@ __all__ = [
     "imbalance_response",
     "orbit_amplitude",
     "bearing_forces",
+    "static_actuator_forces",
     "static_response",
 ]
 
@@ -86,14 +87,43 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> np.ndar
     return _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
 
 
+def _static_parts(model: Model, speed: float):
+    """Static stiffness (storage + finite actuator laws + circulatory loss at ω = 0) and the
+    integrating actuators, which instead hold their sensed displacement at zero."""
+    from flexshaft.analyses.loss import frequency_coefficients
+
+    if model.all_pd and all(a.basis_stiffness == a.collocated_law.kp for a in model.actuators):
+        K = model.K + model.Kp  # PD laws with K_p >= 0: the basis stiffness is the static one
+    else:
+        K = model.K + model.actuator_matrix([
+            0.0 if a.integrates else (a.collocated_law.static_gain if a.collocated else -a.negative_stiffness)
+            for a in model.actuators])
+        for a in model.actuators:
+            if not a.collocated and not a.integrates:
+                K = K + a.feedback.static_gain * (a.lateral_rows.T @ a.sensing_rows)
+    circulatory = frequency_coefficients(model.internal_damping, 0.0, speed).circulatory
+    if circulatory:
+        K = K + circulatory * model.loss_circulatory
+    return K.tocsr(), [a for a in model.actuators if a.integrates]
+
+
 def static_response(model: Model, loads, speed: float | None = None) -> np.ndarray:
     """Static displacement of the spinning driveline under constant loads [m, rad].
 
-    ``(K + K_a + L(0, Ω)) q = Q`` with the storage stiffness K, the actuators' static stiffness
-    K_a and the loss at zero frequency: nothing for the fixed-frame loss, but for the
+    ``(K + K_a(0) + L(0, Ω)) q = Q`` with the storage stiffness K, the actuators' static
+    stiffness and the loss at zero frequency: nothing for the fixed-frame loss, but for the
     ``"rotating"`` internal-damping model the circulatory ``K_lat S`` of the spinning shaft,
     whose material is cycled at Ω by a constant deflection (the deflection then turns slightly
     sideways; :mod:`flexshaft.analyses.loss`).
+
+    Actuators. A bearing with finite static gain adds ``B_aᵀ G(0) B_s − k_s B_aᵀ B_a`` (a PD
+    law: ``K_p``; the magnet's negative stiffness counts, so an open-loop magnet may make the
+    static problem singular, reported as such). A bearing whose controller integrates (PID:
+    C(0) infinite) is the static equilibrium of its integrator: it holds its sensed
+    displacement at zero, ``B_s q = 0``, with whatever force ``λ`` on the shaft that takes (up
+    to its saturation, not checked here); the problem is then solved with the constraint as
+    ``[[K, −B_aᵀ], [B_s, 0]] [q; λ] = [Q; 0]`` (the carried forces −λ are returned by
+    :func:`static_actuator_forces`).
 
     Parameters
     ----------
@@ -102,28 +132,53 @@ def static_response(model: Model, loads, speed: float | None = None) -> np.ndarr
     speed : float or None
         Spin speed Ω [rad/s] (the model's operating speed when None).
     """
-    from flexshaft.analyses.loss import frequency_coefficients
+    return _static_solve(model, loads, speed)[0]
+
+
+def static_actuator_forces(model: Model, loads, speed: float | None = None) -> dict[str, np.ndarray]:
+    """Static force carried by each actuator (v, w) [N] under ``loads`` (see
+    :func:`static_response`); for an integrating actuator its constraint force λ."""
+    q, forces = _static_solve(model, loads, speed)
+    out = {}
+    for a in model.actuators:
+        out[a.name] = forces[a.name] if a.name in forces else np.real(a.carried_force(q, 0.0))
+    return out
+
+
+def _static_solve(model: Model, loads, speed: float | None):
     from flexshaft.assembly.sparse import restrict
+    import scipy.sparse as sp
     import scipy.sparse.linalg as spla
 
     free = model.dofs.free
     speed = model.speed if speed is None else float(speed)
     if not np.isfinite(speed) or speed < 0:
         raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
-    K = model.K + model.Kp
-    circulatory = frequency_coefficients(model.internal_damping, 0.0, speed).circulatory
-    if circulatory:
-        K = K + circulatory * model.loss_circulatory
     Q = np.asarray(loads, dtype=float)
     if not np.all(np.isfinite(Q)):
         raise ValueError("the load vector contains NaN or inf")
+    K, holding = _static_parts(model, speed)
+    A = restrict(K, free)
+    rhs = Q[free]
+    if holding:
+        Ba = sp.vstack([a.lateral_rows.tocsr()[:, free] for a in holding]).tocsr()
+        Bs = sp.vstack([a.sensing_rows.tocsr()[:, free] for a in holding]).tocsr()
+        A = sp.bmat([[A, -Ba.T], [Bs, None]]).tocsr()
+        rhs = np.concatenate([rhs, np.zeros((Ba.shape[0],) + rhs.shape[1:])])
     try:
-        lu = spla.splu(restrict(K.tocsr(), free).tocsc())
+        lu = spla.splu(A.tocsc())
     except RuntimeError as exc:
-        raise SingularSystemError("static stiffness is singular: the model has an unconstrained rigid-body motion") from exc
+        raise SingularSystemError(
+            "static stiffness is singular: the model has an unconstrained rigid-body motion, or a magnetic "
+            "bearing's negative stiffness k_s cancels its static control stiffness") from exc
+    x = lu.solve(rhs)
+    if not np.all(np.isfinite(x)):
+        raise SingularSystemError("static stiffness is singular to working precision")
     out = np.zeros(Q.shape)
-    out[free] = lu.solve(Q[free])
-    return out
+    out[free] = x[: free.size]
+    # λ is the force on the shaft (K q = Q + B_aᵀ λ); the bearing carries −λ
+    forces = {a.name: -x[free.size + 2 * k : free.size + 2 * k + 2] for k, a in enumerate(holding)}
+    return out, forces
 
 
 def orbit_amplitude(a, b) -> np.ndarray:
@@ -133,20 +188,41 @@ def orbit_amplitude(a, b) -> np.ndarray:
     return np.sqrt(0.5 * (np.abs(a) ** 2 + np.abs(b) ** 2 + np.abs(a * a + b * b)))
 
 
-def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0) -> dict[str, np.ndarray]:
+def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, speed: float | None = None) -> dict[str, np.ndarray]:
     """Forces carried by each bearing [N, N m] over (u, v, w, β, γ) for displacement ``q``.
 
-    Contact bearings: ``(k + iωc) · rel``; active bearings: ``C(iω) · rel`` on v and w.
-    ``q`` may carry trailing axes (cases); complex amplitudes give complex forces.
+    Contact bearings: ``(k + iωc) · rel``; active bearings: ``G(iω) d_s − k_s d_a`` on v and w
+    (:meth:`~flexshaft.assembly.model.Actuator.carried_force`; ``C(iω) · rel`` for the thesis's
+    PD bearing). ``q`` may carry trailing axes (cases); complex amplitudes give complex forces.
+
+    A bearing with integral action holds ``d_s = 0`` statically with a force that is not a
+    function of ``q``: at ``omega = 0`` pass the static ``loads`` (and ``speed``) that produced
+    ``q``, and its force is the constraint force of :func:`static_actuator_forces`.
+
+    Raises
+    ------
+    ValueError
+        For an integrating actuator at ``omega = 0`` without ``loads``.
     """
     out = {}
     actuators = {a.name: a for a in model.actuators}
+    static = {}
+    if omega == 0.0 and any(a.integrates for a in model.actuators):
+        if loads is None:
+            names = ", ".join(a.name for a in model.actuators if a.integrates)
+            raise ValueError(f"actuator(s) {names} integrate (C(0) infinite): their static force is not a function "
+                             "of the displacement; pass the static loads (bearing_forces(model, q, loads=Q))")
+        static = static_actuator_forces(model, loads, speed)
     for link in model.bearings:
         rel = link.rows @ q
         if link.name in actuators:
-            gain = np.zeros(5, dtype=complex)
-            gain[1:3] = actuators[link.name].controller(1j * omega)
+            force = np.zeros(rel.shape, dtype=complex)
+            if link.name in static and actuators[link.name].integrates:
+                force[1:3] = static[link.name]
+            else:
+                force[1:3] = actuators[link.name].carried_force(q, 1j * omega)
+            out[link.name] = force
         else:
             gain = link.stiffness + 1j * omega * link.damping
-        out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
+            out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
     return out

@@ -2,18 +2,28 @@
 
 The spin-up study solves the synchronous imbalance response
 
-    Z(Ω) q = Ω² Q₁,   Z(Ω) = −Ω²M + iΩ(ΩG + C) + K + Σ_a C_a(iΩ) B_aᵀB_a        (eq. 2.40)
+    Z(Ω) q = Ω² Q₁,   Z(Ω) = Z₀(Ω) + Σ_a B_aᵀ [G_a(iΩ) B_s − k_s B_a]          (eq. 2.40)
 
-at hundreds of speeds Ω for each of hundreds of gain pairs (K_p, K_d). Only the actuator term
-changes with the gains, and it has rank 2 per actuator (the lateral relative displacement
-rows B_a). So the structure **without** the actuators, Z₀(Ω), is solved once per speed (banded
-LU, :class:`~flexshaft.analyses.banded.BandedHarmonicSolver`) for the imbalance load and for
-the unit actuator forces Bᵀ; every gain pair then costs a 2n_a × 2n_a solve per speed
-(Sherman-Morrison-Woodbury / receptance coupling):
+at hundreds of speeds Ω for each of hundreds of gain pairs (K_p, K_d), where
+``G_a = k_i A(s) C_a(s)`` is each magnetic bearing's feedback (controller C_a, current gain
+k_i, amplifier lag A) from its sensing rows B_s to its actuation rows B_a and k_s its
+negative stiffness (:class:`~flexshaft.assembly.model.Actuator`; the thesis's PD bearing is
+``G = K_p + s K_d``, ``k_s = 0``, ``B_s = B_a``). Only the actuator term changes with the
+gains, and it has rank 2 per actuator. So the structure **without** the actuators, Z₀(Ω), is
+solved once per speed (banded LU, :class:`~flexshaft.analyses.banded.BandedHarmonicSolver`)
+for the imbalance load and for the unit actuator forces B_aᵀ; every gain pair then costs a
+2n_a × 2n_a solve per speed (Sherman-Morrison-Woodbury / receptance coupling). With
+``W = Z₀⁻¹B_aᵀ``, ``q₀`` the response without actuators and the carried forces
+``e = G d_s − k_s d_a``:
 
-    d = (I + S D)⁻¹ g,    q = q₀ − W D d,
+    e = (I + G S_s − k_s S)⁻¹ (G g_s − k_s g),    q = q₀ − W e,
 
-with ``W = Z₀⁻¹Bᵀ``, ``S = B W`` (actuator receptance), ``g = B q₀`` and ``D = diag(C_a(iΩ))``.
+``S = B_a W``, ``S_s = B_s W`` (receptances at the magnets and the sensors), ``g = B_a q₀``,
+``g_s = B_s q₀``. Collocated bearings (every thesis case) take the original fast path with
+``D = diag(G − k_s)``:
+
+    d = (I + S D)⁻¹ g,    q = q₀ − W D d.
+
 This is exact, not a truncated basis: it agrees with the direct solve to round-off (the
 tests compare at sampled gains). Z₀ is regular because the hanger bearings hold the shaft and
 the composite and boom carry hysteretic loss; a singular Z₀ is reported, not bypassed.
@@ -24,7 +34,6 @@ Cost on the baseline (336 free DOFs, 2 actuators): 400 banded solves once (~0.1 
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -66,10 +75,17 @@ class ActuatorReceptance:
     actuator_free : ndarray
         Actuator relative displacement without actuators ``g``, (n_speeds, 2 n_act, n_cases) [m].
     receptance : ndarray
-        Actuator receptance ``S = B Z₀⁻¹ Bᵀ``, (n_speeds, 2 n_act, 2 n_act) [m/N].
+        Actuator receptance ``S = B_a Z₀⁻¹ B_aᵀ``, (n_speeds, 2 n_act, 2 n_act) [m/N].
     actuator_names : tuple of str
     shaft_x : ndarray
         Shaft node stations [m].
+    plant : ndarray
+        ``k_i A(iΩ)`` of each actuator, (n_speeds, n_act) [N/A] (1 for the thesis's bearing).
+    negative_stiffness : ndarray
+        k_s of each actuator, (n_act,) [N/m].
+    sensor_free, sensor_receptance : ndarray or None
+        ``g_s = B_s q₀`` (n_speeds, 2 n_act, n_cases) [m] and ``S_s = B_s Z₀⁻¹ B_aᵀ``
+        (n_speeds, 2 n_act, 2 n_act) [m/N]; None when every sensor is collocated.
     """
 
     speeds: np.ndarray
@@ -79,10 +95,25 @@ class ActuatorReceptance:
     receptance: np.ndarray
     actuator_names: tuple[str, ...]
     shaft_x: np.ndarray
+    plant: np.ndarray | None = None
+    negative_stiffness: np.ndarray | None = None
+    sensor_free: np.ndarray | None = None
+    sensor_receptance: np.ndarray | None = None
 
     @property
     def n_actuators(self) -> int:
         return len(self.actuator_names)
+
+    @property
+    def collocated(self) -> bool:
+        """True when every actuator senses at its magnet (the original fast path)."""
+        return self.sensor_receptance is None
+
+    def feedback(self, laws: np.ndarray) -> np.ndarray:
+        """``G = k_i A(iΩ) C(iΩ)`` from controller values ``laws`` (..., n_speeds, n_act)."""
+        if self.plant is None or np.all(self.plant == 1.0):
+            return laws
+        return laws * self.plant
 
 
 @single_blas_thread
@@ -92,7 +123,8 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     Parameters
     ----------
     model : Model
-        The driveline; its actuator gains are ignored here.
+        The driveline; its actuators' controllers are ignored here (their magnets' k_s, k_i,
+        amplifier lag and sensor positions are kept for the coupling).
     speeds : array_like
         Spin speeds Ω [rad/s]; the excitation is synchronous (ω = Ω).
     loads_per_speed_squared : ndarray, optional
@@ -112,12 +144,11 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     Q1 = imbalance_loads(model) if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)
     Q1 = Q1.reshape(Q1.shape[0], -1)
     n_cases = Q1.shape[1]
-    passive = dataclasses.replace(
-        model, actuators=tuple(dataclasses.replace(a, controller=Controller.pd(0.0, 0.0)) for a in model.actuators)
-    )
-    solver = BandedHarmonicSolver(passive)
+    solver = BandedHarmonicSolver(model.passive())
     free = solver.free
     B = np.vstack([a.lateral_rows.toarray() for a in model.actuators])  # (2 n_act, ndof)
+    collocated = all(a.collocated for a in model.actuators)
+    Bs = None if collocated else np.vstack([a.sensing_rows.toarray() for a in model.actuators])[:, free]
     dm = model.dofs
     nodes = np.arange(dm.n_shaft_nodes)
     rows = np.concatenate([dm.shaft(nodes, "v"), dm.shaft(nodes, "w")])
@@ -128,6 +159,8 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     shaft_per_force = np.empty((speeds.size, n_out, n_b), complex)
     actuator_free = np.empty((speeds.size, n_b, n_cases), complex)
     receptance = np.empty((speeds.size, n_b, n_b), complex)
+    sensor_free = None if collocated else np.empty((speeds.size, n_b, n_cases), complex)
+    sensor_receptance = None if collocated else np.empty((speeds.size, n_b, n_b), complex)
     full = np.zeros((dm.size, rhs.shape[1]), complex)
     Bf = B[:, free]
     for k, speed in enumerate(speeds):
@@ -138,6 +171,10 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
         shaft_per_force[k] = full[rows, n_cases:]
         actuator_free[k] = Bf @ x[:, :n_cases]
         receptance[k] = Bf @ x[:, n_cases:]
+        if Bs is not None:
+            sensor_free[k] = Bs @ x[:, :n_cases]
+            sensor_receptance[k] = Bs @ x[:, n_cases:]
+    s = 1j * speeds
     return ActuatorReceptance(
         speeds=speeds,
         shaft_free=shaft_free,
@@ -146,6 +183,10 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
         receptance=receptance,
         actuator_names=tuple(a.name for a in model.actuators),
         shaft_x=np.asarray(dm.shaft_x, dtype=float),
+        plant=np.stack([np.broadcast_to(a.plant(s), s.shape) for a in model.actuators], axis=-1),
+        negative_stiffness=np.array([a.negative_stiffness for a in model.actuators], dtype=float),
+        sensor_free=sensor_free,
+        sensor_receptance=sensor_receptance,
     )
 
 
@@ -154,21 +195,45 @@ def _orbit(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.sqrt(0.5 * (a.real**2 + a.imag**2 + b.real**2 + b.imag**2 + np.abs(a * a + b * b)))
 
 
-def _coupled(rec: ActuatorReceptance, gains: np.ndarray):
-    """Responses for dynamic actuator gains ``gains`` (n_gains, n_speeds, n_act) [N/m].
+def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
+    """Responses for the actuators' feedback values ``G = k_i A C`` (n_gains, n_speeds, n_act) [N/m].
 
     Returns shaft orbits (n_gains, n_speeds, n_nodes, n_cases) [m], actuator relative orbits
-    (n_gains, n_speeds, n_act, n_cases) [m].
+    at the magnets (n_gains, n_speeds, n_act, n_cases) [m] and the carried force orbits
+    (n_gains, n_speeds, n_act, n_cases) [N], or None for the force when every bearing is
+    collocated (then it is |G − k_s| times the relative orbit).
     """
-    D = np.repeat(gains, 2, axis=-1)  # (ng, ns, 2 n_act): the same law on v and w
-    nb = D.shape[-1]
-    system = np.eye(nb) + rec.receptance[None] * D[:, :, None, :]  # I + S D
-    d = np.linalg.solve(system, np.broadcast_to(rec.actuator_free[None], system.shape[:2] + rec.actuator_free.shape[1:]))
-    shaft = rec.shaft_free[None] - rec.shaft_per_force[None] @ (D[..., None] * d)  # (ng, ns, n_out, nc)
+    ks = rec.negative_stiffness
+    if rec.collocated:
+        gains = feedback - ks if ks is not None and np.any(ks) else feedback
+        D = np.repeat(gains, 2, axis=-1)  # (ng, ns, 2 n_act): the same law on v and w
+        nb = D.shape[-1]
+        system = np.eye(nb) + rec.receptance[None] * D[:, :, None, :]  # I + S D
+        d = np.linalg.solve(system, np.broadcast_to(rec.actuator_free[None], system.shape[:2] + rec.actuator_free.shape[1:]))
+        shaft = rec.shaft_free[None] - rec.shaft_per_force[None] @ (D[..., None] * d)  # (ng, ns, n_out, nc)
+        n_nodes = shaft.shape[2] // 2
+        shaft_orbit = _orbit(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
+        act_orbit = _orbit(d[:, :, 0::2], d[:, :, 1::2])
+        return shaft_orbit, act_orbit, None
+    G = np.repeat(feedback, 2, axis=-1)[..., None]  # (ng, ns, 2 n_act, 1)
+    K = np.repeat(ks, 2)[:, None]  # (2 n_act, 1)
+    system = np.eye(G.shape[-2]) + G * rec.sensor_receptance[None] - K * rec.receptance[None]
+    forcing = G * rec.sensor_free[None] - K * rec.actuator_free[None]
+    e = np.linalg.solve(system, forcing)  # carried forces (ng, ns, 2 n_act, nc)
+    shaft = rec.shaft_free[None] - rec.shaft_per_force[None] @ e
+    d = rec.actuator_free[None] - rec.receptance[None] @ e
     n_nodes = shaft.shape[2] // 2
-    shaft_orbit = _orbit(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
-    act_orbit = _orbit(d[:, :, 0::2], d[:, :, 1::2])
-    return shaft_orbit, act_orbit
+    return (_orbit(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:]), _orbit(d[:, :, 0::2], d[:, :, 1::2]),
+            _orbit(e[:, :, 0::2], e[:, :, 1::2]))
+
+
+def _force_orbit(rec: ActuatorReceptance, feedback: np.ndarray, act_orbit: np.ndarray, force_orbit) -> np.ndarray:
+    """Carried force orbits (ng, ns, n_act, nc) [N]: |G − k_s| × relative orbit when collocated."""
+    if force_orbit is not None:
+        return force_orbit
+    ks = rec.negative_stiffness
+    law = feedback - ks if ks is not None and np.any(ks) else feedback
+    return np.abs(law)[..., None] * act_orbit
 
 
 def _dynamic_gains(controllers, speeds: np.ndarray) -> np.ndarray:
@@ -192,7 +257,8 @@ class SpinupCurves:
     actuator_displacement : ndarray
         Relative orbit at each actuator, worst load case, (n_act, n_speeds) [m].
     actuator_force : ndarray
-        ``|C(iΩ)|`` × relative orbit, (n_act, n_speeds) [N].
+        Carried force orbit ``G d_s − k_s d_a`` at each actuator, worst load case,
+        (n_act, n_speeds) [N] (``|C(iΩ)|`` × relative orbit for the thesis's PD bearing).
     actuator_names : tuple of str
     """
 
@@ -213,25 +279,36 @@ class SpinupCurves:
 def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
     """Spin-up curves for actuator laws ``controllers`` (one per actuator, or one for all).
 
-    ``controllers`` are :class:`~flexshaft.assembly.model.Controller` objects or ``(kp, kd)``
-    pairs [N/m, N s/m]. Any transfer function is allowed (it is evaluated at s = iΩ).
+    ``controllers`` are :class:`~flexshaft.assembly.model.Controller` objects (anything with
+    ``num``/``den``, e.g. a python-control ``TransferFunction``) or ``(kp, kd)`` pairs: the
+    controller C(s) of each bearing [N/m, N s/m for the thesis's bearing; A/m, A s/m for a
+    magnet], evaluated at s = iΩ; each bearing's k_i, amplifier lag, k_s and sensor position
+    are those of the model.
     """
     if isinstance(controllers, (Controller, tuple)) and not (
         isinstance(controllers, tuple) and controllers and isinstance(controllers[0], (Controller, tuple))
     ):
         controllers = [controllers] * rec.n_actuators
-    laws = [c if isinstance(c, Controller) else Controller.pd(*c) for c in controllers]
+    laws = [c if isinstance(c, Controller) else Controller.from_transfer_function(c) if hasattr(c, "num")
+            else Controller.pd(*c) for c in controllers]
     if len(laws) != rec.n_actuators:
         raise ValueError(f"expected {rec.n_actuators} controllers (one per actuator), got {len(laws)}")
-    gains = _dynamic_gains(laws, rec.speeds)[None]
-    shaft, act = _coupled(rec, gains)
-    shaft, act = shaft[0].max(axis=-1).T, act[0].max(axis=-1).T  # worst case, (nodes|act, speeds)
+    gains = rec.feedback(_dynamic_gains(laws, rec.speeds)[None])
+    shaft, act, force = _coupled(rec, gains)
+    if force is None:
+        ks = rec.negative_stiffness
+        law = gains[0] - ks if ks is not None and np.any(ks) else gains[0]
+        act = act[0].max(axis=-1).T  # worst case, (act, speeds)
+        force = np.abs(law.T) * act
+    else:
+        force = force[0].max(axis=-1).T  # worst load case, (act, speeds)
+        act = act[0].max(axis=-1).T
     return SpinupCurves(
         speeds=rec.speeds,
-        shaft_orbit=shaft,
+        shaft_orbit=shaft[0].max(axis=-1).T,
         shaft_x=rec.shaft_x,
         actuator_displacement=act,
-        actuator_force=np.abs(gains[0].T) * act,
+        actuator_force=force,
         actuator_names=rec.actuator_names,
     )
 
@@ -351,8 +428,8 @@ def spinup_map(
     for start in range(0, n_pairs, block):
         chunk = pairs[start : start + block]
         law = chunk[:, 0:1] + s[None, :] * chunk[:, 1:2]  # (ng, ns)
-        gains = np.repeat(law[..., None], rec.n_actuators, axis=-1)
-        shaft, act = _coupled(rec, gains)
+        gains = rec.feedback(np.repeat(law[..., None], rec.n_actuators, axis=-1))
+        shaft, act, force = _coupled(rec, gains)
         per_speed = shaft.max(axis=(2, 3))  # (ng, ns)
         k = np.argmax(per_speed, axis=1)
         sl = slice(start, start + chunk.shape[0])
@@ -360,7 +437,13 @@ def spinup_map(
         peak_speed[sl] = rec.speeds[k]
         act_worst = act.max(axis=3)  # (ng, ns, n_act)
         act_disp[sl] = act_worst.max(axis=1)
-        act_force[sl] = (np.abs(law)[..., None] * act_worst).max(axis=1)
+        if force is None and rec.plant is not None and np.all(rec.plant == 1.0) and not np.any(rec.negative_stiffness):
+            act_force[sl] = (np.abs(law)[..., None] * act_worst).max(axis=1)
+        elif force is None:
+            ks = rec.negative_stiffness
+            act_force[sl] = (np.abs(gains - ks) * act_worst).max(axis=1)
+        else:
+            act_force[sl] = force.max(axis=(1, 3))
         if progress is not None:
             progress(min(start + block, n_pairs), n_pairs)
     shape = (kp.size, kd.size)

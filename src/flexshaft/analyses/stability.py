@@ -20,6 +20,13 @@ an undamped mode is ~1e-13); the crossing found on the speed grid is then solved
 speed where that mode's damping ratio is zero (regula falsi on Newton solves), so the onset
 does not depend on the grid spacing.
 
+Divergence. A real eigenvalue s > 0 (an aperiodic instability: e.g. a magnetic bearing whose
+negative stiffness k_s exceeds its control stiffness, or C = 0) is no oscillatory mode and is
+not tracked; at every speed the state matrix is also searched for such roots
+(:func:`~flexshaft.analyses.eigen.divergent_roots`). The largest is reported per speed as
+:attr:`StabilityResult.divergence` [1/s] and the first divergent speed counts as an onset
+(``onset_kind = "divergence"``), never silently dropped.
+
 References
 ----------
 Zorzi, E. S., Nelson, H. D. (1977). Finite element simulation of rotor-bearing systems with
@@ -35,7 +42,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, _check_speeds, default_basis_size, track_modes
-from flexshaft.analyses.eigen import ReducedModel, newton, reduce
+from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, spectrum
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
 
@@ -68,7 +75,7 @@ class StabilityResult(EigenvalueCurves):
     onset_speed : float or None
         Lowest speed where a tracked mode turns unstable [rad/s] (None: stable throughout).
     unstable_mode : int or None
-        Tracked index of that mode.
+        Tracked index of that mode (None for a divergence).
     onset_shape : ndarray or None
         Its shape (full DOF vector) at the first unstable speed.
     kind : ndarray of str
@@ -77,6 +84,10 @@ class StabilityResult(EigenvalueCurves):
         The model's internal-damping model.
     reference_frequency : float or None
         ω_ref of the viscous method [rad/s].
+    divergence : ndarray or None
+        Largest real unstable root per speed [1/s] (0 where there is none), (n_speeds,).
+    onset_kind : {"oscillatory", "divergence"} or None
+        Whether the onset is a tracked mode with Re(s) > 0 or a real root (None: stable).
     """
 
     speeds: np.ndarray
@@ -89,17 +100,30 @@ class StabilityResult(EigenvalueCurves):
     kind: np.ndarray | None = None
     internal_damping: str = "rotating"
     reference_frequency: float | None = None
+    divergence: np.ndarray | None = None
+    onset_kind: str | None = None
 
     def __repr__(self) -> str:
         top = self.speeds[-1] * 60 / (2 * np.pi)
         onset = "stable" if self.onset_speed is None else f"onset {self.onset_speed * 60 / (2 * np.pi):.0f} rpm"
+        if self.onset_kind == "divergence":
+            onset += " (divergence)"
         return (f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
                 f"{self.damping_model} method, internal damping {self.internal_damping!r})")
 
     @property
     def stability_margin(self) -> np.ndarray:
-        """Smallest damping ratio over the tracked modes at each speed (negative: unstable)."""
-        return self.damping_ratios.min(axis=1)
+        """Smallest damping ratio over the tracked modes at each speed (negative: unstable;
+        −1 where a divergent real root exists)."""
+        margin = self.damping_ratios.min(axis=1)
+        if self.divergence is not None:
+            margin = np.where(self.divergence > 0, -1.0, margin)
+        return margin
+
+    @property
+    def divergent(self) -> bool:
+        """True when a real unstable root exists at some analysed speed."""
+        return self.divergence is not None and bool(np.any(self.divergence > 0))
 
     def at_speed(self, speed: float) -> int:
         """Index of the analysed speed nearest ``speed`` [rad/s]."""
@@ -171,8 +195,21 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
         weights = None if damping_model == "hysteretic" else (lambda sp: viscous_equivalent(ref, sp))
         onset = _refine_onset(red, speeds, tracked, mode, k, weights)
     shape = model.dofs.expand(red.shapes(tracked.states[k][:, mode])) if onset is not None else None
+    kind = None if onset is None else "oscillatory"
+    divergence = np.zeros(speeds.size)
+    first = None
+    for i, speed in enumerate(speeds if red.may_diverge else ()):
+        viscous = viscous_equivalent(ref, speed) if damping_model == "viscous" else None
+        _, _, Y_div, roots = spectrum(red, speed, viscous) if viscous is not None else spectrum(red, speed)
+        if roots.size:
+            divergence[i] = roots[0]
+            if first is None:
+                first = (i, Y_div[:, 0])
+    if first is not None and (onset is None or speeds[first[0]] <= onset):
+        onset, mode, kind = float(speeds[first[0]]), None, "divergence"
+        shape = model.dofs.expand(red.shapes(first[1]))
     return StabilityResult(speeds, eig, tracked.whirl, damping_model, onset, mode, shape, tracked.kind,
-                           model.internal_damping, ref)
+                           model.internal_damping, ref, divergence, kind)
 
 
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:

@@ -13,6 +13,7 @@ import scipy.sparse as sp
 from flexshaft.assembly.dofs import BOOM_FIELDS, DofMap
 from flexshaft.assembly.model import Actuator, BearingLink, Controller, Model, ShaftProperties
 from flexshaft.assembly.sparse import scatter
+from flexshaft.elements import magnetic
 from flexshaft.elements import (
     TubeSection,
     boom_element_matrices,
@@ -77,6 +78,8 @@ def _meshes(design):
     loads = design.loads
     shaft_pts = [sh.x_start, sh.x_end]
     shaft_pts += [b.x for b in design.bearings] + [d.x for d in design.disks]
+    sensors = [b for b in design.bearings if b.kind == "active" and b.sensor_offset != 0.0]
+    shaft_pts += [b.sensor_x for b in sensors]
     boom_pts = []
     if loads is not None:
         shaft_pts += [p.x for p in loads.point if p.on == "shaft"]
@@ -84,7 +87,7 @@ def _meshes(design):
     shaft_x = segment_mesh(shaft_pts, design.mesh.shaft_elements)
     if boom is None:
         return shaft_x, np.zeros(0)
-    boom_pts += [0.0, boom.length] + [_x_boom(b) for b in design.bearings]
+    boom_pts += [0.0, boom.length] + [_x_boom(b) for b in design.bearings] + [b.sensor_boom_x for b in sensors]
     return shaft_x, segment_mesh(boom_pts, design.mesh.boom_elements)
 
 
@@ -101,27 +104,49 @@ def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
     return np.array(sorted(set(fixed)), dtype=int)
 
 
-def _bearing_link(design, dm: DofMap, bearing) -> BearingLink:
-    es, xis, Ls = dm.locate("shaft", bearing.x)
+def _bearing_link(design, dm: DofMap, bearing, offset: float = 0.0) -> BearingLink:
+    """Relative-displacement rows of ``bearing``; ``offset`` [m] shifts both the shaft and the
+    boom station along x (a sensor beside an active bearing) at the bearing's height h."""
+    x_shaft = bearing.x + offset
+    es, xis, Ls = dm.locate("shaft", x_shaft)
     shaft_dofs = dm.element_dofs("shaft")[es]
     if design.tailboom is None:
         local, dofs, xb, h = relative_rows(xis, Ls), shaft_dofs, None, 0.0
     else:
         xb = _x_boom(bearing)
-        eb, xib, Lb = dm.locate("boom", xb)
         if bearing.offset is not None:
             h = bearing.offset
         else:
             h = float(boom_semi_axes(design.tailboom, xb)[0]) + design.tailboom.shaft_clearance
+        xb = xb + offset
+        eb, xib, Lb = dm.locate("boom", xb)
         local = relative_rows(xis, Ls, xib, Lb, h)
         dofs = np.concatenate([shaft_dofs, dm.element_dofs("boom")[eb]])
     rows = sp.coo_matrix(
         (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
     ).tocsr()
     if bearing.kind == "contact":
-        return BearingLink(bearing.name, bearing.kind, bearing.x, xb, h, rows,
+        return BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows,
                            _coefficients(bearing.stiffness), _coefficients(bearing.damping))
-    return BearingLink(bearing.name, bearing.kind, bearing.x, xb, h, rows)
+    return BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows)
+
+
+def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
+    """The magnetic bearing of an active-bearing table (see :class:`~flexshaft.assembly.model.Actuator`)."""
+    ctrl = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
+    if bearing.uses_magnet_geometry:
+        geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
+        k_i, k_s = magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
+    else:
+        k_i = 1.0 if bearing.ki is None else float(bearing.ki)
+        k_s = 0.0 if bearing.ks is None else float(bearing.ks)
+    saturation = None
+    if bearing.saturation_flux_density is not None:
+        saturation = magnetic.saturation_force(bearing.saturation_flux_density, bearing.pole_area, bearing.pole_angle_rad)
+    sensor = _bearing_link(design, dm, bearing, bearing.sensor_offset) if bearing.sensor_offset != 0.0 else None
+    return Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
+                    amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
+                    air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
 
 
 def _coefficients(table) -> np.ndarray:
@@ -188,11 +213,7 @@ def build_model(design) -> Model:
             if np.any(link.damping):
                 C = C + B.T @ sp.diags(link.damping) @ B
         else:
-            if bearing.controller is not None:
-                ctrl = Controller(tuple(bearing.controller.numerator), tuple(bearing.controller.denominator))
-            else:
-                ctrl = Controller.pd(bearing.kp, bearing.kd)
-            actuators.append(Actuator(link, ctrl))
+            actuators.append(_actuator(design, dm, bearing, link))
 
     return Model(
         dofs=dm,

@@ -26,109 +26,10 @@ from typing import Any
 import numpy as np
 import scipy.sparse as sp
 
+from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.dofs import DofMap
 
 __all__ = ["Controller", "Actuator", "BearingLink", "ShaftProperties", "Model", "rotation_generator"]
-
-
-@dataclass(frozen=True)
-class Controller:
-    """Actuator law ``f = −C(s) d`` on the lateral relative displacement d.
-
-    ``numerator``/``denominator`` are polynomial coefficients in s, highest power first;
-    the PD law is ``numerator = (kd, kp)``, ``denominator = (1,)``.
-    """
-
-    numerator: tuple[float, ...]
-    denominator: tuple[float, ...] = (1.0,)
-
-    @classmethod
-    def pd(cls, kp: float, kd: float) -> "Controller":
-        """Proportional-derivative law ``C(s) = kp + kd s`` [N/m, N s/m]."""
-        return cls(numerator=(float(kd), float(kp)), denominator=(1.0,))
-
-    @property
-    def is_pd(self) -> bool:
-        return len(self.denominator) == 1 and len(self.numerator) <= 2
-
-    @property
-    def kp(self) -> float:
-        """Static stiffness C(0) [N/m]."""
-        return float(np.polyval(self.numerator, 0.0) / np.polyval(self.denominator, 0.0))
-
-    @property
-    def kd(self) -> float:
-        """Derivative gain of a PD law [N s/m] (0 for a pure proportional law)."""
-        if not self.is_pd:
-            raise ValueError("kd is defined for a PD controller only")
-        return float(self.numerator[0] / self.denominator[0]) if len(self.numerator) == 2 else 0.0
-
-    def __call__(self, s):
-        """C(s) for complex Laplace variable(s) ``s``."""
-        return np.polyval(self.numerator, s) / np.polyval(self.denominator, s)
-
-    @property
-    def basis_stiffness(self) -> float:
-        """Stiffness [N/m] this law contributes to the modal basis and static solutions: K_p of a
-        PD law; for a transfer function its static gain C(0) when finite and positive, else 0
-        (its dynamics then enter through the controller states)."""
-        if self.is_pd:
-            return self.kp
-        den0 = float(np.polyval(self.denominator, 0.0))
-        if den0 == 0.0:
-            return 0.0
-        k0 = float(np.polyval(self.numerator, 0.0)) / den0
-        return k0 if np.isfinite(k0) and k0 > 0 else 0.0
-
-    def derivative(self, s):
-        """dC/ds at ``s`` (for Newton-type eigenvalue refinement)."""
-        num, den = np.poly1d(self.numerator), np.poly1d(self.denominator)
-        return (num.deriv()(s) * den(s) - num(s) * den.deriv()(s)) / den(s) ** 2
-
-    def state_space(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-        """Minimal realization ``(A, B, C, D)`` of a proper C(s): ẋ = A x + B d, C(s)d = C x + D d.
-
-        Controllable canonical form of the transfer function with leading zeros dropped and
-        common roots of numerator and denominator cancelled (so the realization is minimal).
-        A PD law is improper and has no realization: use :attr:`kp` and :attr:`kd`.
-        """
-        num = np.trim_zeros(np.asarray(self.numerator, dtype=float), "f")
-        den = np.trim_zeros(np.asarray(self.denominator, dtype=float), "f")
-        if num.size == 0:
-            return np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)), 0.0
-        num, den = _cancel_common_roots(num, den)
-        if num.size > den.size:
-            raise ValueError("C(s) is improper (numerator degree above the denominator's): no state-space form")
-        num, den = num / den[0], den / den[0]
-        n = den.size - 1
-        num = np.concatenate([np.zeros(den.size - num.size), num])
-        D = float(num[0])
-        if n == 0:
-            return np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)), D
-        A = np.zeros((n, n))
-        A[:-1, 1:] = np.eye(n - 1)
-        A[-1, :] = -den[1:][::-1]
-        B = np.zeros((n, 1))
-        B[-1, 0] = 1.0
-        C = (num[1:] - D * den[1:])[::-1][None, :]
-        return A, B, C, D
-
-
-def _cancel_common_roots(num: np.ndarray, den: np.ndarray, tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
-    """Remove roots shared by numerator and denominator (pole-zero cancellation)."""
-    zeros, poles = list(np.roots(num)), list(np.roots(den))
-    kept_poles = []
-    for p in poles:
-        match = [k for k, z in enumerate(zeros) if abs(z - p) <= tol * max(1.0, abs(p))]
-        if match:
-            zeros.pop(match[0])
-        else:
-            kept_poles.append(p)
-    if len(kept_poles) == len(poles):
-        return num, den
-    new_num = num[0] * np.real_if_close(np.poly(zeros)) if zeros else np.array([num[0]])
-    new_den = den[0] * np.real_if_close(np.poly(kept_poles)) if kept_poles else np.array([den[0]])
-    return np.real(new_num), np.real(new_den)
 
 
 def rotation_generator(dofs: DofMap) -> sp.csr_matrix:
@@ -165,10 +66,65 @@ class BearingLink:
 
 @dataclass(frozen=True)
 class Actuator:
-    """An active bearing: its link and controller. Acts on rows v and w of the link."""
+    """An active magnetic bearing: magnet at ``link``, displacement sensor at ``sensor``.
+
+    Force on the shaft (lateral, each of v and w)::
+
+        f = k_s d_a + k_i i,    i = −A(s) C(s) d_s,    A(s) = 1/(1 + s/ω_a)
+
+    ``d_a = B_a q`` is the relative displacement at the magnet (:attr:`lateral_rows`, the
+    actuation rows), ``d_s = B_s q`` at the sensor (:attr:`sensing_rows`; ``B_s = B_a`` when
+    collocated). In the dynamic stiffness the bearing adds ``B_aᵀ G(s) B_s − k_s B_aᵀ B_a``
+    with the feedback law ``G(s) = k_i A(s) C(s)`` [N/m]. The thesis's ideal PD bearing is
+    ``k_s = 0``, ``k_i = 1``, no lag, collocated: then ``G = C`` is the force law [N/m].
+
+    Attributes
+    ----------
+    link : BearingLink
+        Magnet (actuation) point.
+    controller : Controller
+        C(s) from the measured displacement to the current command [A/m] (to the force [N/m]
+        when ``current_gain = 1``).
+    current_gain : float
+        k_i [N/A].
+    negative_stiffness : float
+        k_s [N/m] (>= 0: the magnet's open-loop negative stiffness).
+    amplifier_bandwidth : float or None
+        ω_a [rad/s] of the first-order amplifier lag (None: ideal amplifier).
+    sensor : BearingLink or None
+        Sensing point (None: collocated with the magnet).
+    air_gap, bias_current : float or None
+        Nominal magnetic gap g_0 [m] and bias current i_0 [A] (information).
+    saturation_force : float or None
+        Largest force of one control axis [N] from the saturation flux density
+        (:func:`flexshaft.elements.magnetic.saturation_force`), None when not given.
+    """
 
     link: BearingLink
     controller: Controller
+    current_gain: float = 1.0
+    negative_stiffness: float = 0.0
+    amplifier_bandwidth: float | None = None
+    sensor: BearingLink | None = None
+    air_gap: float | None = None
+    bias_current: float | None = None
+    saturation_force: float | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.controller, Controller):  # e.g. a python-control TransferFunction
+            object.__setattr__(self, "controller", Controller.from_transfer_function(self.controller))
+        for field_name, value, allowed in (("current_gain", self.current_gain, "a finite number > 0 N/A"),
+                                           ("negative_stiffness", self.negative_stiffness, "a finite number >= 0 N/m")):
+            ok = np.isfinite(value) and (value > 0 if field_name == "current_gain" else value >= 0)
+            if not ok:
+                raise ValueError(f"actuator {self.link.name!r}: {field_name} must be {allowed} (got {value!r})")
+        bandwidth = self.amplifier_bandwidth
+        if bandwidth is not None and not (np.isfinite(bandwidth) and bandwidth > 0):
+            raise ValueError(f"actuator {self.link.name!r}: amplifier_bandwidth must be None or a finite number > 0 rad/s "
+                             f"(got {bandwidth!r})")
+        if self.controller.relative_degree < -1:
+            raise ValueError(f"actuator {self.link.name!r}: C(s) is improper by more than one degree "
+                             "(at most an ideal derivative is allowed)")
 
     @property
     def name(self) -> str:
@@ -176,8 +132,78 @@ class Actuator:
 
     @property
     def lateral_rows(self) -> sp.csr_matrix:
-        """(2, ndof) rows of the lateral relative displacement (v, w)."""
+        """(2, ndof) actuation rows B_a: the lateral relative displacement (v, w) at the magnet."""
         return self.link.rows[1:3]
+
+    @property
+    def sensing_rows(self) -> sp.csr_matrix:
+        """(2, ndof) sensing rows B_s: the lateral relative displacement at the sensor."""
+        return self.lateral_rows if self.sensor is None else self.sensor.rows[1:3]
+
+    @property
+    def collocated(self) -> bool:
+        """True when the sensor measures at the magnet (B_s = B_a)."""
+        return self.sensor is None
+
+    def plant(self, s):
+        """``k_i A(s)`` [N/A]: current command to force at Laplace variable(s) ``s``."""
+        value = np.ones_like(np.asarray(s, dtype=complex)) if self.amplifier_bandwidth is None \
+            else 1.0 / (1.0 + np.asarray(s) / self.amplifier_bandwidth)
+        return value if self.current_gain == 1.0 else self.current_gain * value
+
+    def feedback_gain(self, s, controller: Controller | None = None):
+        """``G(s) = k_i A(s) C(s)`` [N/m] at ``s``; ``controller`` replaces C(s) when given."""
+        value = (controller or self.controller)(s)
+        if self.amplifier_bandwidth is not None:
+            value = value / (1.0 + s / self.amplifier_bandwidth)
+        return value if self.current_gain == 1.0 else self.current_gain * value
+
+    def law(self, s):
+        """Collocated-equivalent force law ``G(s) − k_s`` [N/m] at ``s`` (the whole law of a
+        collocated bearing: carried force = law · d_a)."""
+        value = self.feedback_gain(s)
+        return value - self.negative_stiffness if self.negative_stiffness else value
+
+    @cached_property
+    def feedback(self) -> Controller:
+        """G(s) = k_i A(s) C(s) as one transfer function."""
+        law = self.controller
+        if self.amplifier_bandwidth is not None:
+            law = law.series(Controller.lag(self.amplifier_bandwidth))
+        return law if self.current_gain == 1.0 else law.scaled(self.current_gain)
+
+    @cached_property
+    def collocated_law(self) -> Controller:
+        """The law on ``B_aᵀ · B_a``: ``G − k_s`` when collocated, else ``−k_s``."""
+        if self.collocated:
+            return self.feedback.shifted(-self.negative_stiffness) if self.negative_stiffness else self.feedback
+        return Controller.constant(-self.negative_stiffness)
+
+    @property
+    def sensed_law(self) -> Controller | None:
+        """The law on ``B_aᵀ · B_s`` of a non-collocated bearing (G), None when collocated."""
+        return None if self.collocated else self.feedback
+
+    @cached_property
+    def basis_stiffness(self) -> float:
+        """Stiffness [N/m] on ``B_aᵀB_a`` in the modal basis: the positive part of the
+        proportional gain of ``G − k_s`` (see :attr:`Controller.basis_stiffness`)."""
+        law = self.collocated_law if self.collocated else self.feedback.shifted(-self.negative_stiffness)
+        return law.basis_stiffness
+
+    @property
+    def integrates(self) -> bool:
+        """True when C(s) has integral action: statically the bearing holds d_s = 0."""
+        return self.feedback.integrates
+
+    def carried_force(self, q: np.ndarray, s) -> np.ndarray:
+        """Force carried by the bearing ``G(s) d_s − k_s d_a`` (v, w) for displacement ``q``
+        (the shaft receives its negative); q may have trailing axes."""
+        d_a = self.lateral_rows @ q
+        if self.collocated:
+            return np.asarray(self.law(s)) * d_a
+        out = np.asarray(self.feedback_gain(s)) * (self.sensing_rows @ q)
+        return out - self.negative_stiffness * d_a if self.negative_stiffness else out
 
 
 @dataclass(frozen=True)
@@ -268,11 +294,12 @@ class Model:
 
     @property
     def all_pd(self) -> bool:
-        """True when every actuator is a PD law (then K_p, K_d matrices describe them)."""
-        return all(a.controller.is_pd for a in self.actuators)
+        """True when every actuator is collocated with a PD force law ``G − k_s`` (its gains then
+        describe it completely: :attr:`Kp` and :attr:`Kd` when the stiffness is not negative)."""
+        return all(a.collocated and a.collocated_law.is_pd for a in self.actuators)
 
     def actuator_matrix(self, gains) -> sp.csr_matrix:
-        """``Σ Bᵀ g_a B`` over actuators for per-actuator scalar gains ``g_a``."""
+        """``Σ Bᵀ g_a B`` over actuators for per-actuator scalar gains ``g_a`` (actuation rows)."""
         out = sp.csr_matrix((self.dofs.size, self.dofs.size), dtype=np.result_type(*gains, float) if len(gains) else float)
         for act, g in zip(self.actuators, gains):
             B = act.lateral_rows
@@ -281,18 +308,33 @@ class Model:
 
     @property
     def Kp(self) -> sp.csr_matrix:
-        """Actuator stiffness matrix Σ Bᵀ k_a B [N/m], ``k_a`` = :attr:`Controller.basis_stiffness`
-        (K_p of a PD law; the finite static gain C(0) of a transfer function, else 0)."""
-        return self.actuator_matrix([a.controller.basis_stiffness for a in self.actuators])
+        """Actuator stiffness of the modal basis Σ B_aᵀ k_a B_a [N/m], ``k_a`` =
+        :attr:`Actuator.basis_stiffness` (K_p of a PD law; never negative, so that the basis
+        problem stays positive semi-definite; the rest enters the state matrix)."""
+        return self.actuator_matrix([a.basis_stiffness for a in self.actuators])
 
     @property
     def Kd(self) -> sp.csr_matrix:
-        """Actuator derivative (damping) matrix of the PD laws [N s/m] (transfer functions: 0)."""
-        return self.actuator_matrix([a.controller.kd if a.controller.is_pd else 0.0 for a in self.actuators])
+        """Ideal-derivative (damping) part of the collocated laws Σ B_aᵀ E_a B_a [N s/m]
+        (K_d of a PD law; 0 for proper transfer functions)."""
+        return self.actuator_matrix([a.collocated_law.realization()[4] for a in self.actuators])
 
     def controller_matrix(self, s) -> sp.csr_matrix:
-        """Actuator dynamic stiffness ``Σ Bᵀ C_a(s) B`` at one complex ``s``."""
-        return self.actuator_matrix([complex(a.controller(s)) for a in self.actuators])
+        """Actuator dynamic stiffness ``Σ B_aᵀ (G_a(s) B_s − k_s B_a)`` at one complex ``s``."""
+        out = self.actuator_matrix([complex(a.law(s)) if a.collocated else -a.negative_stiffness for a in self.actuators])
+        for a in self.actuators:
+            if not a.collocated:
+                out = out + complex(a.feedback_gain(s)) * (a.lateral_rows.T @ a.sensing_rows)
+        return out.tocsr()
+
+    def passive(self) -> "Model":
+        """The same model with every actuator switched off (zero law, no magnet stiffness)."""
+        import dataclasses
+
+        off = Controller.pd(0.0, 0.0)
+        return dataclasses.replace(self, actuators=tuple(
+            dataclasses.replace(a, controller=off, current_gain=1.0, negative_stiffness=0.0, amplifier_bandwidth=None)
+            for a in self.actuators))
 
     @property
     def shaft_mass(self) -> float:

@@ -8,6 +8,7 @@ package, and expanded to ply angles [deg] by :attr:`Shaft.ply_angles_deg`.
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import Field, StrictBool, field_validator, model_validator
@@ -221,20 +222,55 @@ class Controller(FrozenModel):
 
 
 class ActiveBearing(_BearingBase):
-    """Active magnetic bearing on the lateral relative displacement d.
+    """Active magnetic bearing on the lateral relative displacement d (see docs/magnetic-bearings.md).
 
-    Either a PD law f = −kp d − kd ḋ (kp [N/m], kd [N s/m], kd defaults to 0) or a general
-    ``controller`` transfer function C(s) [N/m] replacing kp and kd. Optional limits checked by
-    the requirements verdict: ``gap``, the radial clearance of the auxiliary (backup) bearing
-    [m], and ``force_capacity``, the largest force the actuator can produce [N].
+    Force on the shaft ``f = k_s d_a + k_i i`` (``d_a`` at the magnet, station ``x``), current
+    ``i = −A(s) C(s) d_s`` (``d_s`` measured at ``x + sensor_offset``), amplifier lag
+    ``A(s) = 1/(1 + s/ω_a)``. The thesis's ideal PD bearing ``f = −kp d − kd ḋ`` is the default
+    case: ``ks = 0``, ``ki = 1``, no lag, collocated sensor.
+
+    Controller C(s) (one of):
+
+    * PD / PID: ``kp`` [N/m per k_i, i.e. A/m], ``kd`` [A s/m] (default 0), ``integral_gain``
+      K_I [A/(m s)] (default 0), ``derivative_cutoff`` f_d [Hz] (default: ideal derivative):
+      ``C(s) = kp + K_I/s + kd s/(1 + s/(2π f_d))``;
+    * ``controller``: any proper transfer function (coefficients, highest power first).
+
+    Magnet (defaults give the ideal actuator):
+
+    * ``ks`` k_s [N/m] (default 0) and ``ki`` k_i [N/A] (default 1), given directly, or
+    * computed from the magnet geometry (:mod:`flexshaft.elements.magnetic`): ``coil_turns``,
+      ``pole_area`` [m²], ``bias_current`` [A], ``air_gap`` [m], ``pole_angle`` [deg]
+      (default 22.5, an 8-pole stator);
+    * ``saturation_flux_density`` B_sat [T] with ``pole_area`` gives the saturation force
+      ``B_sat² A_a cos α/μ0`` of the built actuator (``Actuator.saturation_force``).
+
+    ``amplifier_bandwidth`` [Hz] (default: ideal amplifier), ``sensor_offset`` [m] along the
+    shaft from the magnet (default 0, collocated), ``air_gap`` g_0 [m] (nominal magnetic gap).
+
+    Limits checked by the requirements verdict: ``gap``, the radial clearance of the auxiliary
+    (backup) bearing [m], and ``force_capacity``, the largest force the actuator can produce
+    [N] (when omitted, the saturation force of the magnet if its geometry is given).
     """
 
     kind: Literal["active"]
     kp: NonNegative | None = None
     kd: NonNegative | None = None
+    integral_gain: NonNegative | None = None
+    derivative_cutoff: Positive | None = None
     controller: Controller | None = None
     gap: Positive | None = None
     force_capacity: Positive | None = None
+    ks: NonNegative | None = None
+    ki: Positive | None = None
+    amplifier_bandwidth: Positive | None = None
+    sensor_offset: Finite = 0.0
+    air_gap: Positive | None = None
+    bias_current: Positive | None = None
+    coil_turns: Positive | None = None
+    pole_area: Positive | None = None
+    pole_angle: Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=90.0)] = 22.5
+    saturation_flux_density: Positive | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -247,7 +283,7 @@ class ActiveBearing(_BearingBase):
     def _check(self) -> ActiveBearing:
         problems = Problems()
         if self.controller is not None:
-            for field in ("kp", "kd"):
+            for field in ("kp", "kd", "integral_gain", "derivative_cutoff"):
                 value = getattr(self, field)
                 if value is not None:
                     problems.add(
@@ -256,15 +292,78 @@ class ActiveBearing(_BearingBase):
                     )
         elif self.kp is None:
             problems.add(("kp",), "required key is missing (give kp [N/m], or a controller)")
+        if self.uses_magnet_geometry:
+            for field in ("coil_turns", "pole_area", "bias_current", "air_gap"):
+                if getattr(self, field) is None:
+                    problems.add(
+                        (field,),
+                        "required key is missing (k_s and k_i from the magnet geometry need coil_turns, "
+                        "pole_area, bias_current and air_gap)",
+                    )
+            for field in ("ks", "ki"):
+                value = getattr(self, field)
+                if value is not None:
+                    problems.add(
+                        (field,),
+                        f"must be omitted when coil_turns/bias_current give the magnet geometry "
+                        f"(it is computed from them; got {format_value(value)})",
+                    )
+        if self.saturation_flux_density is not None and self.pole_area is None:
+            problems.add(
+                ("pole_area",),
+                "required key is missing (the saturation force B_sat² A_a cos α/μ0 needs pole_area with "
+                "saturation_flux_density)",
+            )
         problems.raise_if_any()
         return self
 
+    @property
+    def uses_magnet_geometry(self) -> bool:
+        """True when k_s and k_i are computed from the magnet (coil_turns or bias_current given)."""
+        return self.coil_turns is not None or self.bias_current is not None
+
+    @property
+    def sensor_x(self) -> float:
+        """Shaft station of the displacement sensor, ``x + sensor_offset`` [m]."""
+        return self.x + self.sensor_offset
+
+    @property
+    def sensor_boom_x(self) -> float:
+        """Boom station the sensor is referenced to, ``boom_x + sensor_offset`` [m]."""
+        return self.boom_x + self.sensor_offset
+
+    @property
+    def derivative_cutoff_rad_s(self) -> float | None:
+        """Derivative-filter corner ω_d = 2π f_d [rad/s] (None: ideal derivative)."""
+        return None if self.derivative_cutoff is None else 2.0 * math.pi * self.derivative_cutoff
+
+    @property
+    def amplifier_bandwidth_rad_s(self) -> float | None:
+        """Amplifier bandwidth ω_a = 2π f_a [rad/s] (None: ideal amplifier)."""
+        return None if self.amplifier_bandwidth is None else 2.0 * math.pi * self.amplifier_bandwidth
+
+    @property
+    def pole_angle_rad(self) -> float:
+        """Pole angle α [rad]."""
+        return math.radians(self.pole_angle)
+
     def transfer_function(self) -> tuple[tuple[float, ...], tuple[float, ...]]:
-        """(numerator, denominator) of C(s), highest power first; PD gives (kd, kp)/(1)."""
+        """(numerator, denominator) of the controller C(s), highest power first.
+
+        PD gives ``(kd, kp)/(1)``; a PID ``kp + K_I/s + kd s/(1 + s/ω_d)`` is brought to one
+        fraction over ``s (1 + s/ω_d)`` (over ``s`` without a filter, then one degree improper:
+        the ideal derivative; over ``1 + s/ω_d`` without integral action).
+        """
         if self.controller is not None:
             return self.controller.numerator, self.controller.denominator
         assert self.kp is not None and self.kd is not None
-        return (self.kd, self.kp), (1.0,)
+        kp, kd, k_int = self.kp, self.kd, self.integral_gain or 0.0
+        wd = self.derivative_cutoff_rad_s
+        if wd is None:
+            return ((kd, kp), (1.0,)) if k_int == 0.0 else ((kd, kp, k_int), (1.0, 0.0))
+        if k_int == 0.0:
+            return (kd + kp / wd, kp), (1.0 / wd, 1.0)
+        return (kd + kp / wd, kp + k_int / wd, k_int), (1.0 / wd, 1.0, 0.0)
 
 
 Bearing = Annotated[Union[ContactBearing, ActiveBearing], Field(discriminator="kind")]

@@ -215,6 +215,24 @@ class Design(FrozenModel):
                     f"boom station {format_value(bearing.boom_x)} is outside the tailboom "
                     f"{self._boom_range()}{note}",
                 )
+            if isinstance(bearing, ActiveBearing) and bearing.sensor_offset != 0.0:
+                self._check_sensor(problems, index, bearing)
+
+    def _check_sensor(self, problems: Problems, index: int, bearing: ActiveBearing) -> None:
+        """The displacement sensor at x + sensor_offset must lie on the shaft (and on the boom)."""
+        path: FieldPath = ("bearings", index, "sensor_offset")
+        if self._on_shaft(bearing.x) and not self._on_shaft(bearing.sensor_x):
+            problems.add(
+                path,
+                f"puts the sensor at x = {format_number(bearing.sensor_x)} m, outside the shaft "
+                f"{self._shaft_range()} (got {format_value(bearing.sensor_offset)})",
+            )
+        elif self.tailboom is not None and self._on_boom(bearing.boom_x) and not self._on_boom(bearing.sensor_boom_x):
+            problems.add(
+                path,
+                f"puts the sensor's boom station at {format_number(bearing.sensor_boom_x)} m, outside the "
+                f"tailboom {self._boom_range()} (got {format_value(bearing.sensor_offset)})",
+            )
 
     def _check_disks(self, problems: Problems) -> None:
         check_unique(problems, ("disks",), [disk.name for disk in self.disks])

@@ -32,7 +32,12 @@ def _bearing_dict(res) -> dict:
     from flexshaft.analyses.response import bearing_forces, orbit_amplitude
 
     model = res.model
-    static = bearing_forces(model, res.static_displacement)
+    loads = None
+    if any(a.integrates for a in model.actuators):  # integral action: static force from equilibrium
+        from flexshaft.assembly.loads import external_static_load, torque_load
+
+        loads = external_static_load(model) + torque_load(model)
+    static = bearing_forces(model, res.static_displacement, loads=loads)
     dynamic = bearing_forces(model, res.imbalance_at_speed, model.speed)
     out = {}
     for name, f in static.items():

@@ -54,14 +54,20 @@ class RunResults:
 def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
     """Relative orbit amplitude [m] and force amplitude [N] at each actuator.
 
-    ``q`` is (ndof, n) complex at frequencies ``omegas`` [rad/s]; the force is ``C(iω) d``.
+    ``q`` is (ndof, n) complex at frequencies ``omegas`` [rad/s]; the force is the carried
+    force ``G(iω) d_s − k_s d_a`` of the magnetic bearing (``C(iω) d`` for the thesis's PD
+    bearing).
     """
     disp, force = {}, {}
     for a in model.actuators:
         d = a.lateral_rows @ q  # (2, n)
-        gain = a.controller(1j * np.asarray(omegas))
+        s = 1j * np.asarray(omegas)
         disp[a.name] = orbit_amplitude(d[0], d[1])
-        force[a.name] = np.abs(gain) * disp[a.name]
+        if a.collocated:
+            force[a.name] = np.abs(a.law(s)) * disp[a.name]
+        else:
+            f = a.carried_force(q, s)
+            force[a.name] = orbit_amplitude(f[0], f[1])
     return disp, force
 
 

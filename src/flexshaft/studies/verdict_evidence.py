@@ -194,10 +194,14 @@ def _actuators(res) -> tuple[ActuatorEvidence, ...]:
         i, j = int(np.argmax(d)), int(np.argmax(f))
         static = float(np.hypot(*np.real(a.lateral_rows @ res.static_displacement)))
         bearing = design.bearing(a.name) if design is not None else None
+        capacity = getattr(bearing, "force_capacity", None)
+        if capacity is None:
+            capacity = a.saturation_force  # the magnet's saturation force when its geometry is given
+        static_force = float(abs(a.law(0j))) * static if np.isfinite(abs(a.law(0j))) else 0.0
         out.append(ActuatorEvidence(
             a.name, float(d[i]), float(res.speeds[i]), float(f[j]), float(res.speeds[j]),
-            static_offset=static, static_force=float(abs(a.controller(0j))) * static,
-            gap=getattr(bearing, "gap", None), force_capacity=getattr(bearing, "force_capacity", None)))
+            static_offset=static, static_force=static_force,
+            gap=getattr(bearing, "gap", None), force_capacity=capacity))
     return tuple(out)
 
 
