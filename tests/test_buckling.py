@@ -1,15 +1,21 @@
-"""Torsional buckling of laminated tubes against classical results (DESIGN.md section 2.7)."""
+"""Torsional buckling of laminated tubes against classical and shear-deformable shell results (DESIGN.md sec. 2.7)."""
+
+from dataclasses import replace
 
 import numpy as np
 import pytest
+import scipy.linalg
 import scipy.optimize
 
 from flexshaft.buckling import (
-    _helix_operators,
     buckling_safety_factor,
+    crimping_torques,
+    galerkin_matrices,
     infinite_cylinder_torque,
     torsional_buckling_torque,
 )
+from flexshaft.buckling.shear import shear_helix_curve
+from flexshaft.buckling.classical import helix_operators
 from flexshaft.laminate import Lamina, Laminate
 
 E, NU = 70e9, 0.3
@@ -33,7 +39,7 @@ def test_long_isotropic_tube_donnell_coefficient():
     (O(r^2/L^2)-like, +0.2 %) are below 0.5 %; the tolerance 1 % also covers the 3-digit
     coefficient."""
     r_over_t, L = 500.0, 1200.0
-    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, L, theory="donnell")
+    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, L, theory="classical", kinematics="donnell")
     tau = shear_stress(result.torque_positive, 1.0, 1.0 / r_over_t)
     classical = 0.272 * E / (1 - NU**2) ** 0.75 * (1 / r_over_t) ** 1.5
     assert result.n_positive == 2
@@ -45,7 +51,7 @@ def test_long_isotropic_tube_sanders_matches_timoshenko_gere():
     tau_cr = E/(3 sqrt 2 (1-nu^2)^(3/4)) (t/r)^(3/2) = 0.2357 ...; Sanders' relations keep the
     v/R terms that this result needs. Same corrections and 1 % tolerance as above."""
     r_over_t, L = 500.0, 1200.0
-    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, L, theory="sanders")
+    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, L, theory="classical", kinematics="sanders")
     tau = shear_stress(result.torque_positive, 1.0, 1.0 / r_over_t)
     classical = E / (3 * np.sqrt(2) * (1 - NU**2) ** 0.75) * (1 / r_over_t) ** 1.5
     assert tau == pytest.approx(classical, rel=0.01)
@@ -66,7 +72,7 @@ def test_long_isotropic_tube_approaches_donnell_helical_dispersion_relation():
 
     reference = min(scipy.optimize.minimize_scalar(tau, bounds=(-6, 2), method="bounded", args=(n,)).fun
                     for n in (2, 3))
-    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, 1200.0, theory="donnell")
+    result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, 1200.0, theory="classical", kinematics="donnell")
     ratio = shear_stress(result.torque_positive, 1.0, t) / reference
     assert 1.0 - 1e-9 <= ratio <= 1.005
 
@@ -79,7 +85,7 @@ def test_moderate_length_matches_batdorf_simply_supported(Z):
     Z ~ 100, so 3 %; r/t = 1000 keeps L/r <= 3.3, far from the long-tube branch."""
     r, t = 1.0, 1e-3
     L = np.sqrt(Z * r * t / np.sqrt(1 - NU**2))
-    result = torsional_buckling_torque(isotropic_tube(1000.0), r, L, theory="donnell")
+    result = torsional_buckling_torque(isotropic_tube(1000.0), r, L, theory="classical", kinematics="donnell")
     D = E * t**3 / (12 * (1 - NU**2))
     k_s = shear_stress(result.torque_positive, r, t) * L**2 * t / (np.pi**2 * D)
     assert k_s == pytest.approx(0.85 * Z**0.75, rel=0.03)
@@ -91,14 +97,14 @@ def test_short_tube_tends_to_flat_strip_in_shear():
     raise it, by well under 2 % at Z = 1."""
     r, t, Z = 1.0, 1e-3, 1.0
     L = np.sqrt(Z * r * t / np.sqrt(1 - NU**2))
-    result = torsional_buckling_torque(isotropic_tube(1000.0), r, L, theory="donnell")
+    result = torsional_buckling_torque(isotropic_tube(1000.0), r, L, theory="classical", kinematics="donnell")
     D = E * t**3 / (12 * (1 - NU**2))
     k_s = shear_stress(result.torque_positive, r, t) * L**2 * t / (np.pi**2 * D)
     assert 5.35 <= k_s <= 5.35 * 1.02
 
 
 def test_isotropic_result_is_independent_of_torque_sense():
-    result = torsional_buckling_torque(isotropic_tube(200.0), 1.0, 5.0)
+    result = torsional_buckling_torque(isotropic_tube(200.0), 1.0, 5.0, theory="classical")
     assert result.torque_negative == pytest.approx(result.torque_positive, rel=1e-10)
     assert result.n_positive == result.n_negative
 
@@ -108,8 +114,8 @@ def test_unbalanced_angle_ply_is_direction_dependent_and_mirror_symmetric():
     bend across the fibres (matrix-dominated D) and the tube buckles far earlier than under the
     negative torque, whose compressive diagonal runs along the fibres. Mirroring y -> -y maps
     +45 to -45 and swaps the senses exactly."""
-    plus = torsional_buckling_torque(Laminate.from_layup("45", 3e-3, FMC), 0.05, 0.6)
-    minus = torsional_buckling_torque(Laminate.from_layup("-45", 3e-3, FMC), 0.05, 0.6)
+    plus = torsional_buckling_torque(Laminate.from_layup("45", 3e-3, FMC), 0.05, 0.6, theory="classical")
+    minus = torsional_buckling_torque(Laminate.from_layup("-45", 3e-3, FMC), 0.05, 0.6, theory="classical")
     assert plus.torque_positive < 0.2 * plus.torque_negative
     assert minus.torque_positive == pytest.approx(plus.torque_negative, rel=1e-9)
     assert minus.torque_negative == pytest.approx(plus.torque_positive, rel=1e-9)
@@ -121,7 +127,7 @@ def test_convergence_in_the_number_of_galerkin_terms():
     laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, CARBON_EPOXY)
     torques = np.array([
         [r.torque_positive, r.torque_negative]
-        for r in (torsional_buckling_torque(laminate, 0.05, 2.0, n_terms=M) for M in (8, 16, 32, 64))
+        for r in (torsional_buckling_torque(laminate, 0.05, 2.0, n_terms=M, theory="classical") for M in (8, 16, 32, 64))
     ])
     assert np.all(np.diff(torques, axis=0) <= 1e-9 * torques[:-1])
     assert np.all(np.abs(torques[-1] - torques[-2]) <= 1e-3 * torques[-1])
@@ -133,8 +139,8 @@ def test_long_laminated_tube_approaches_infinite_helix():
     bounds the simply supported Ritz result from below and is within 1 % at L/r = 150."""
     laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
     radius = (0.1016 - 3e-3) / 2
-    finite = torsional_buckling_torque(laminate, radius, 150 * radius)
-    helix = infinite_cylinder_torque(laminate, radius)
+    finite = torsional_buckling_torque(laminate, radius, 150 * radius, theory="classical")
+    helix = infinite_cylinder_torque(laminate, radius, theory="classical")
     for torque, key in ((finite.torque_positive, "positive"), (finite.torque_negative, "negative")):
         assert 1.0 - 1e-9 <= torque / helix[key][0] <= 1.01
 
@@ -142,14 +148,14 @@ def test_long_laminated_tube_approaches_infinite_helix():
 def test_sanders_kinematics_vanish_for_rigid_translation():
     """w = cos(theta), v = -sin(theta) is a rigid lateral translation: Sanders' strains and
     curvature changes vanish; Donnell's kappa_y = -w,yy does not (its n = 2 error)."""
-    for theory, expected_zero in (("sanders", True), ("donnell", False)):
-        B = _helix_operators(1.0, 1, 0.0, theory)
+    for theory, expected_zero in (("sanders", True), ("donnell", False)):  # kinematics
+        B = helix_operators(1.0, 1, 0.0, theory)
         strains = B[:6] @ np.array([0.0, 1j, 1.0])
         assert np.allclose(strains, 0.0) == expected_zero
 
 
 def test_safety_factor_and_validation():
-    result = torsional_buckling_torque(Laminate.from_layup("45", 3e-3, CARBON_EPOXY), 0.05, 0.5)
+    result = torsional_buckling_torque(Laminate.from_layup("45", 3e-3, CARBON_EPOXY), 0.05, 0.5, theory="classical")
     weaker = min(result.torque_positive, result.torque_negative)
     assert result.critical_torque == weaker
     np.testing.assert_allclose(buckling_safety_factor(result, [100.0, -100.0]), weaker / 100.0)
@@ -162,3 +168,206 @@ def test_safety_factor_and_validation():
         torsional_buckling_torque(Laminate.from_layup("45", 3e-3, CARBON_EPOXY), -0.05, 0.5)
     with pytest.raises(ValueError, match="theory"):
         torsional_buckling_torque(Laminate.from_layup("45", 3e-3, CARBON_EPOXY), 0.05, 0.5, theory="flugge")
+
+
+# ------------------------------------------------------------------------------------------
+# Shear-deformable (first-order) shell
+
+BASELINE_RADIUS, BASELINE_LENGTH = (0.1016 - 3e-3) / 2, 7.26  # mid-surface radius, shaft length [m]
+
+
+def with_transverse_shear(lamina: Lamina, G_13: float, G_23: float) -> Lamina:
+    return replace(lamina, G_13=G_13, G_23=G_23)
+
+
+def crimping_closed_form(angles_deg, G_13: float, G_23: float, t: float, radius: float, k: float = 5 / 6):
+    """Short-wave limit derived independently of the package.
+
+    A wave w = exp(i(k_x x + k_y y)) much shorter than R and than the bending wavelength stores
+    only transverse shear energy, A55 k_x^2 + 2 A45 k_x k_y + A44 k_y^2 (the rotations cancel the
+    bending, u and v the membrane strain), while N_xy does the work 2 N_xy k_x k_y with
+    k_x k_y < 0 for the positive sense. With r = |k_x/k_y|: N_xy = (A55 r + A44/r)/2 -/+ A45,
+    minimal at r = sqrt(A44/A55): N_xy = sqrt(A44 A55) -/+ A45. Ply shear moduli rotate as a
+    vector: Q55 = G13 c^2 + G23 s^2, Q44 = G13 s^2 + G23 c^2, Q45 = (G13 - G23) c s.
+    """
+    a = np.radians(np.asarray(angles_deg, dtype=float))
+    c, s, h = np.cos(a), np.sin(a), t / a.size
+    A55 = k * h * np.sum(G_13 * c**2 + G_23 * s**2)
+    A44 = k * h * np.sum(G_13 * s**2 + G_23 * c**2)
+    A45 = k * h * np.sum((G_13 - G_23) * c * s)
+    scale = 2 * np.pi * radius**2
+    return scale * (np.sqrt(A44 * A55) - A45), scale * (np.sqrt(A44 * A55) + A45)
+
+
+def test_shear_theory_tends_to_the_classical_one_as_transverse_shear_stiffens():
+    """G_13, G_23 -> infinity imposes gamma_xz = gamma_yz = 0, i.e. phi = -grad w (+ v/R): the
+    classical Sanders shell, exactly representable in the Ritz space (phi_x ~ cos like w,x), so
+    no locking. The shear compliance adds in series, so the gap falls as 1/G: x10 stiffer shear,
+    10x smaller gap (to 2 %); at 1e4 times the FMC moduli the gap is below 0.1 %."""
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    classical = torsional_buckling_torque(laminate, BASELINE_RADIUS, BASELINE_LENGTH, theory="classical", n_terms=36)
+    gaps = []
+    for factor in (1e3, 1e4):
+        stiff = Laminate(laminate.angles, laminate.thicknesses,
+                         with_transverse_shear(FMC, 0.035e9 * factor, 0.10e9 / 3 * factor))
+        shear = torsional_buckling_torque(stiff, BASELINE_RADIUS, BASELINE_LENGTH, n_terms=36)
+        assert shear.governing == "global helical"
+        gaps.append([1 - shear.torque_positive / classical.torque_positive,
+                     1 - shear.torque_negative / classical.torque_negative])
+    gaps = np.array(gaps)
+    assert np.all(gaps > 0)  # shear deformation only lowers the load
+    assert np.all(gaps[1] < 1e-3)
+    np.testing.assert_allclose(gaps[0] / gaps[1], 10.0, rtol=0.02)
+
+
+def test_short_waves_tend_to_the_crimping_closed_form():
+    """The infinite shear-deformable tube at circumferential wave number n, minimised over the
+    axial wavenumber, tends to the closed form of ``crimping_closed_form`` as n -> infinity, with
+    an O(1/n^2) remainder (membrane and bending corrections ~ 1/k^2): the error falls 4-fold per
+    doubling of n (to 2 %). Balanced FMC with G_23 != G_13 (A45 = 0 by balance), approached from
+    above; and an unbalanced layup, whose A45 != 0 splits the two senses as -/+ A45."""
+    n = np.array([200, 400, 800])
+    balanced = Laminate.from_layup("(55/-55/0/0)s", 3e-3, with_transverse_shear(FMC, 0.035e9, 0.02e9))
+    torques, _ = shear_helix_curve(balanced, BASELINE_RADIUS, n)
+    limit = crimping_closed_form([55, -55, 0, 0, 0, 0, -55, 55], 0.035e9, 0.02e9, 3e-3, BASELINE_RADIUS)
+    errors = torques / np.array(limit) - 1
+    assert np.all(errors > 0)
+    np.testing.assert_allclose(errors[:-1] / errors[1:], 4.0, rtol=0.02)
+    assert crimping_torques(balanced, BASELINE_RADIUS) == pytest.approx(limit, rel=1e-12)
+
+    unbalanced = Laminate.from_layup("(55/55/0/0)s", 3e-3, with_transverse_shear(FMC, 0.035e9, 0.02e9))
+    limit = crimping_closed_form([55, 55, 0, 0, 0, 0, 55, 55], 0.035e9, 0.02e9, 3e-3, BASELINE_RADIUS)
+    assert limit[1] / limit[0] > 1.25  # A45 makes crimping direction dependent
+    torques, _ = shear_helix_curve(unbalanced, BASELINE_RADIUS, np.array([3200]))
+    np.testing.assert_allclose(torques[0], limit, rtol=1e-5)
+    assert crimping_torques(unbalanced, BASELINE_RADIUS) == pytest.approx(limit, rel=1e-12)
+
+
+def test_vanishing_transverse_shear_gives_the_crimping_torque_k_G_t():
+    """G_13 = G_23 = G -> 0: A44 = A55 = k G t, A45 = 0, so the crimping shear flow is k G t and
+    T = 2 pi R^2 k G t exactly. The long waves keep part of their membrane stiffness, so the
+    buckling torque falls with n all the way to this limit (no long-wave minimum below it)."""
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    for G in (0.035e8, 0.035e7):
+        soft = Laminate(laminate.angles, laminate.thicknesses, with_transverse_shear(FMC, G, G))
+        result = torsional_buckling_torque(soft, BASELINE_RADIUS, BASELINE_LENGTH)
+        closed_form = 2 * np.pi * BASELINE_RADIUS**2 * (5 / 6) * G * 3e-3
+        assert result.governing_positive == result.governing_negative == "shear crimping"
+        assert result.n_positive is None and result.n_negative is None
+        assert result.torque_positive == pytest.approx(closed_form, rel=1e-12)
+        assert result.torque_negative == pytest.approx(closed_form, rel=1e-12)
+        assert result.global_torque > closed_form
+        K, Gm = galerkin_matrices(soft, BASELINE_RADIUS, BASELINE_LENGTH, 2, 40)
+        mu = scipy.linalg.eigh(Gm, K, eigvals_only=True)
+        assert 1 / mu[-1] > 3 * closed_form  # the n = 2 helix is far stiffer
+
+
+def test_isotropic_infinite_tube_matches_the_mindlin_donnell_dispersion_relation():
+    """Independent closed form. Donnell's equation for a helix w = cos(k x + eta y), s = k^2 +
+    eta^2, gives tau t = [D s^2 + E t k^4/(R^2 s^2)] / (2 k eta) (Batdorf 1947). First-order shear
+    deformation of an isotropic wall replaces the plate operator D del^4 by
+    D del^4 / (1 - D del^2/(k G t)) (Mindlin 1951: D del^4 w = q - D/(kGt) del^2 q exactly), i.e.
+    D -> D / (1 + D s/(k G t)). A moderately thick tube (R/t = 10), minimised over k at each n,
+    from the global n = 2 to the shear-dominated n = 40: agreement to 1e-6 (optimiser tolerance)."""
+    r_over_t, radius = 10.0, 1.0
+    t = radius / r_over_t
+    D = E * t**3 / (12 * (1 - NU**2))
+    kGt = 5 / 6 * E / (2 * (1 + NU)) * t
+    tube = isotropic_tube(r_over_t)
+
+    def tau(log_k: float, n: int) -> float:
+        k, eta = np.exp(log_k), n / radius
+        s = k**2 + eta**2
+        D_eff = D / (1 + D * s / kGt)
+        return (D_eff * s**2 + E * t * k**4 / (radius**2 * s**2)) / (2 * k * eta * t)
+
+    for n in (2, 3, 5, 10, 40):
+        grid = np.log(n / radius) + np.linspace(-6, 3, 200)
+        start = grid[np.argmin([tau(x, n) for x in grid])]
+        reference = scipy.optimize.minimize_scalar(tau, bounds=(start - 0.1, start + 0.1), method="bounded",
+                                                   args=(n,), options={"xatol": 1e-10}).fun
+        torques, _ = shear_helix_curve(tube, radius, np.array([n]), "donnell")
+        np.testing.assert_allclose(shear_stress(torques[0], radius, t), reference, rtol=1e-6)
+
+
+def test_isotropic_moderately_thick_tube_matches_batdorf():
+    """Batdorf, Stein & Schildcrout (1947, NACA TN 1344), simply supported, k_s = 0.85 Z^(3/4)
+    (two digits, +-0.6 %, curve within ~3 % for Z >= 100; see the thin-tube test above). At
+    R/t = 20 and Z = 1000 (L/R = 7.2, n = 3) the classical shell lands within 1.1 % of it and
+    transverse shear lowers it by D s/(k G t) times the bending share: s ~ (n/R)^2 gives
+    0.06 * (n t/R)^2 ~ 1.4 % at most; the shear-deformable result must stay within 3 % of
+    Batdorf and below the classical one by less than 1.5 %."""
+    r, t, Z = 1.0, 0.05, 1000.0
+    L = np.sqrt(Z * r * t / np.sqrt(1 - NU**2))
+    D = E * t**3 / (12 * (1 - NU**2))
+    tube = isotropic_tube(r / t)
+    shear = torsional_buckling_torque(tube, r, L, kinematics="donnell")
+    classical = torsional_buckling_torque(tube, r, L, theory="classical", kinematics="donnell")
+    k_s = shear_stress(shear.torque_positive, r, t) * L**2 * t / (np.pi**2 * D)
+    assert k_s == pytest.approx(0.85 * Z**0.75, rel=0.03)
+    assert shear.governing == "global helical" and shear.n_positive == 3
+    assert 0.0 < 1 - shear.torque_positive / classical.torque_positive < 0.015
+    assert shear.torque_negative == pytest.approx(shear.torque_positive, rel=1e-9)
+
+
+def test_sign_reversed_layup_buckles_at_the_same_torque_in_the_opposite_sense():
+    """Mirroring y -> -y maps every ply angle a to -a and the torque to -T, exactly. The
+    unbalanced (55/55/0/0)s FMC tube (baseline size) buckles in a global helix at 692 N m (n = 3)
+    under the positive torque, which compresses the matrix across the 55 deg fibres, and at
+    1287 N m (n = 2) under the negative one: a factor 1.86 between the torque senses. The
+    balanced baseline (55/-55/0/0)s differs by 4.7 % in its global modes (D16, D26) but crimps
+    at the same torque in both senses (A45 = 0)."""
+    plus = torsional_buckling_torque(Laminate.from_layup("(55/55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
+    minus = torsional_buckling_torque(Laminate.from_layup("(-55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
+    assert minus.torque_positive == pytest.approx(plus.torque_negative, rel=1e-9)
+    assert minus.torque_negative == pytest.approx(plus.torque_positive, rel=1e-9)
+    assert (minus.n_positive, minus.n_negative) == (plus.n_negative, plus.n_positive)
+    assert plus.torque_negative / plus.torque_positive == pytest.approx(1.86, abs=0.02)
+    assert plus.governing_positive == "global helical"
+
+    balanced = torsional_buckling_torque(Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
+    assert balanced.torque_positive == pytest.approx(balanced.torque_negative, rel=1e-12)
+    assert balanced.global_torque_negative / balanced.global_torque_positive == pytest.approx(1.047, abs=0.005)
+
+
+def test_baseline_fmc_tube_buckles_by_shear_crimping():
+    """Baseline shaft wall (DESIGN.md sec. 5): G_13 = G_LT = 0.035 GPa, G_23 = E_T/3. The crimping
+    closed form is reached at every n -> infinity and lies below the global helix (n = 2), so
+    it governs: 2 pi R^2 sqrt(A44 A55) = 1304 N m, against 7296 N m for the classical shell."""
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    result = torsional_buckling_torque(laminate, BASELINE_RADIUS, BASELINE_LENGTH)
+    limit = crimping_closed_form([55, -55, 0, 0, 0, 0, -55, 55], 0.035e9, 0.10e9 / 3, 3e-3, BASELINE_RADIUS)
+    assert result.critical_torque == pytest.approx(limit[0], rel=1e-12)
+    assert result.governing == "shear crimping" and result.critical_n is None
+    assert result.global_n_positive == 2 and result.global_torque > 2 * result.critical_torque
+
+
+def test_finite_tube_lies_above_the_infinite_tube_and_its_ends_fade():
+    """At each n the simply supported tube is stiffer than the endless helix, by an end effect
+    that fades as the tube holds more axial half-waves: 1 % at n = 2 (~16 half-waves), below
+    1e-4 at n = 8 (~110 half-waves, M = 169 terms). This bounds the error of using the endless
+    helix where the Ritz series would need more than 140 terms (shear.py)."""
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, with_transverse_shear(FMC, 0.035e9, 0.02e9))
+    excess = []
+    for n in (2, 5, 8):
+        helix, k = shear_helix_curve(laminate, BASELINE_RADIUS, np.array([n]))
+        M = int(np.ceil(1.25 * np.abs(k).max() * BASELINE_LENGTH / np.pi)) + 16
+        K, G = galerkin_matrices(laminate, BASELINE_RADIUS, BASELINE_LENGTH, n, M)
+        mu = scipy.linalg.eigh(G, K, eigvals_only=True)
+        excess.append(np.array([1 / mu[-1], -1 / mu[0]]) / helix[0] - 1)
+    excess = np.array(excess)
+    assert np.all(excess > 0)
+    assert np.all(np.diff(excess, axis=0) < 0)
+    assert np.all(excess[-1] < 1e-4)
+
+
+def test_shear_inputs_are_checked():
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    with pytest.raises(ValueError, match="kinematics"):
+        torsional_buckling_torque(laminate, 0.05, 0.5, kinematics="flugge")
+    with pytest.raises(ValueError, match="n_max"):
+        torsional_buckling_torque(laminate, 0.05, 0.5, n_max=1)
+    with pytest.raises(ValueError, match="G_13"):
+        with_transverse_shear(FMC, -1.0, 1e7)
+    with pytest.raises(ValueError, match="shear_correction"):
+        replace(FMC, shear_correction=1.5)

@@ -326,6 +326,21 @@ REFUSALS = {
         "mesh.boom_elements: must be <= 2000",
         "got 20000",
     ),
+    "indefinite transverse shear modulus": (
+        lambda: edit("S = 20.0e6 ", "G_23 = 1.0e7\nS = 20.0e6 "),
+        "materials.t700_adiprene.G_23: must exceed E_T/(4 (1 - nu_LT nu_TL)) = 2.50027e+07 Pa",
+        "got 10000000.0",
+    ),
+    "shear correction above one": (
+        lambda: edit("S = 20.0e6 ", "shear_correction = 1.2\nS = 20.0e6 "),
+        "materials.t700_adiprene.shear_correction: must be <= 1",
+        "got 1.2",
+    ),
+    "thermal expansion in ppm": (
+        lambda: edit("S = 20.0e6 ", "alpha_T = 110.0\nS = 20.0e6 "),
+        "materials.t700_adiprene.alpha_T: must be a thermal expansion coefficient in 1/K",
+        "got 110.0",
+    ),
 }
 
 

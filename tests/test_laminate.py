@@ -16,11 +16,15 @@ from flexshaft.laminate import (
     equivalent_density,
     equivalent_moduli,
     hoop_strain_free,
+    membrane_strains,
     parse_layup,
     ply_strains,
     ply_stresses,
     reduced_stiffness,
+    spin_hoop_resultant,
+    thermal_ply_stresses,
     transformed_stiffness,
+    transverse_shear_stiffness,
 )
 
 # thesis baseline ply (DESIGN.md section 5) and a stiff-matrix carbon/epoxy for contrast
@@ -225,3 +229,102 @@ def test_ply_stresses_use_storage_moduli_uniaxial_isotropic():
     stresses = ply_stresses(laminate, 1e-3, -nu * 1e-3, 0.0)
     np.testing.assert_allclose(stresses[0], [E * 1e-3, 0.0, 0.0], atol=1e-6)
     assert stresses.dtype == np.float64
+
+
+# ------------------------------------------------------------- transverse shear, spin, thermal
+
+
+def test_transverse_shear_stiffness_of_isotropic_and_unidirectional_plies():
+    """Isotropic: A44 = A55 = k G t, A45 = 0 (Reissner-Mindlin). A 0 deg ply: the x-z plane is
+    the fibre-thickness plane (A55 = k G_13 t), the y-z plane crosses the fibres (A44 = k G_23 t);
+    a 90 deg ply swaps them. Default moduli: G_13 = G_LT, G_23 = E_T/3 (nu_23 = 0.5), k = 5/6."""
+    G = 70e9 / 2.6
+    iso = Laminate([0.3, -1.1], [1e-3, 2e-3], Lamina.isotropic(70e9, G, 2700.0))
+    np.testing.assert_allclose(transverse_shear_stiffness(iso), 5 / 6 * G * 3e-3 * np.eye(2), rtol=TIGHT, atol=1e-6)
+    ply = Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, G_13=4e9, G_23=3.5e9, shear_correction=0.9)
+    np.testing.assert_allclose(transverse_shear_stiffness(one_ply(0.0, ply)), 0.9e-3 * np.diag([4e9, 3.5e9]), rtol=TIGHT)
+    np.testing.assert_allclose(transverse_shear_stiffness(one_ply(90.0, ply)), 0.9e-3 * np.diag([3.5e9, 4e9]),
+                               rtol=TIGHT, atol=1e-3)
+    assert (CARBON_EPOXY.G_13, CARBON_EPOXY.G_23, CARBON_EPOXY.shear_correction) == (5e9, 10e9 / 3, 5 / 6)
+
+
+@given(st.floats(-90.0, 90.0))
+@settings(max_examples=50, deadline=None)
+def test_transverse_shear_of_one_ply_rotates_as_a_tensor(angle_deg):
+    """(gamma_xz, gamma_yz) rotate like a vector, so the 2x2 stiffness is a rotated
+    diag(G_13, G_23): trace and determinant are invariant and A45 = k t (G_13 - G_23) c s."""
+    ply = Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, G_13=4e9, G_23=3e9)
+    A = transverse_shear_stiffness(one_ply(angle_deg, ply)).real / (5 / 6 * 1e-3)
+    a = np.radians(angle_deg)
+    assert np.trace(A) == pytest.approx(7e9, rel=1e-12)
+    assert np.linalg.det(A) == pytest.approx(12e18, rel=1e-9)
+    assert A[0, 1] == pytest.approx(1e9 * np.cos(a) * np.sin(a), abs=1e-3)
+
+
+def test_spin_hoop_resultant_of_a_ring_through_the_laminate_path():
+    """A thin ring of density rho, radius r spinning at Omega carries sigma_hoop = rho Omega^2 r^2
+    (radial equilibrium of a ring element, Timoshenko & Goodier sec. 32). Through the laminate
+    path, N_y = rho t Omega^2 r^2, strains A^-1 (0, N_y, 0), ply stresses: an isotropic 'laminate'
+    of any ply angles gives sigma_hoop in every ply and no axial stress (free ends)."""
+    rho, r, omega, t = 2700.0, 0.05, 502.65, 3e-3
+    iso = Laminate.from_layup("(55/-55/0/0)s", t, Lamina.isotropic(70e9, 70e9 / 2.6, rho))
+    N_y = spin_hoop_resultant(rho, t, r, omega)
+    stresses = ply_stresses(iso, *membrane_strains(iso, [0.0, N_y, 0.0]))
+    c, s = np.cos(iso.angles), np.sin(iso.angles)
+    hoop = rho * omega**2 * r**2  # sigma_y; sigma_x = tau_xy = 0 -> ply axes by rotation
+    expected = np.stack([hoop * s * s, hoop * c * c, hoop * c * s], axis=-1)
+    np.testing.assert_allclose(stresses, expected, rtol=1e-12, atol=1e-9 * hoop)
+
+
+def test_thermal_residual_stresses_vanish_for_a_free_isotropic_or_single_ply_laminate():
+    iso = Laminate.from_layup("(55/-55/0/0)s", 3e-3, Lamina.isotropic(70e9, 70e9 / 2.6, 2700.0, alpha=23e-6))
+    np.testing.assert_allclose(thermal_ply_stresses(iso, -80.0), 0.0, atol=1e-6)
+    single = Laminate.from_layup("30", 3e-3, Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, alpha_L=-0.4e-6, alpha_T=30e-6))
+    np.testing.assert_allclose(thermal_ply_stresses(single, -80.0), 0.0, atol=1e-6)
+
+
+def test_thermal_residual_stresses_of_a_cross_ply_closed_form():
+    """[0/90]s, equal plies: by symmetry eps_x = eps_y = eps0, and N_x = 0 gives
+    eps0 = dT [(Q11 + Q12) alpha_L + (Q12 + Q22) alpha_T] / (Q11 + 2 Q12 + Q22); the 0 deg ply
+    then carries sigma_1 = Q11 (eps0 - alpha_L dT) + Q12 (eps0 - alpha_T dT) and sigma_2 =
+    Q12 (eps0 - alpha_L dT) + Q22 (eps0 - alpha_T dT), the 90 deg ply the same (Jones sec. 4.5)."""
+    ply = Lamina.from_loss_factors(115e9, 0.10e9, 0.035e9, 0.35, 1650.0, 0.003, 0.12, 0.12,
+                                   alpha_L=-0.4e-6, alpha_T=110e-6)
+    dT = -65.0
+    nu_TL = 0.35 * 0.10 / 115.0
+    den = 1 - 0.35 * nu_TL
+    Q11, Q22, Q12 = 115e9 / den, 0.10e9 / den, 0.35 * 0.10e9 / den
+    eps0 = dT * ((Q11 + Q12) * -0.4e-6 + (Q12 + Q22) * 110e-6) / (Q11 + 2 * Q12 + Q22)
+    m1, m2 = eps0 + 0.4e-6 * dT, eps0 - 110e-6 * dT
+    expected = [Q11 * m1 + Q12 * m2, Q12 * m1 + Q22 * m2, 0.0]
+    stresses = thermal_ply_stresses(Laminate.from_layup("(0/90)s", 3e-3, ply), dT)
+    np.testing.assert_allclose(stresses, np.tile(expected, (4, 1)), rtol=1e-10, atol=1e-6)
+    assert expected[1] > 0.5e6  # matrix in tension across the fibres after cooling: 0.71 MPa
+
+
+@pytest.mark.parametrize("layup", ["(55/-55/0/0)s", "(30/75/-20)", "(55/55/0/0)s"])
+def test_thermal_residual_stresses_are_self_equilibrated(layup):
+    """No external load: the ply stresses, rotated back to laminate axes, integrate to N = 0."""
+    ply = Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, alpha_L=-0.4e-6, alpha_T=30e-6)
+    laminate = Laminate.from_layup(layup, 3e-3, ply)
+    stresses = thermal_ply_stresses(laminate, -100.0)
+    c, s = np.cos(laminate.angles), np.sin(laminate.angles)
+    s1, s2, t12 = stresses.T
+    sx = c * c * s1 + s * s * s2 - 2 * c * s * t12
+    sy = s * s * s1 + c * c * s2 + 2 * c * s * t12
+    txy = c * s * (s1 - s2) + (c * c - s * s) * t12
+    N = np.array([sx, sy, txy]) @ laminate.thicknesses
+    np.testing.assert_allclose(N, 0.0, atol=1e-9 * np.abs(stresses).max() * 3e-3)
+
+
+def test_out_of_plane_lamina_fields_are_checked_and_kept_by_storage():
+    with pytest.raises(ValueError, match="G_23"):
+        Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, G_23=0.0)
+    with pytest.raises(ValueError, match="shear_correction"):
+        Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, shear_correction=0.0)
+    with pytest.raises(ValueError, match="alpha_T"):
+        Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, alpha_T=float("nan"))
+    ply = Lamina.from_loss_factors(115e9, 0.1e9, 0.035e9, 0.35, 1650.0, 0.0, 0.12, 0.12, G_23=0.03e9, alpha_T=1e-4)
+    assert ply.G_23 == pytest.approx(0.03e9 * (1 + 0.12j))
+    storage = ply.storage
+    assert (storage.G_13, storage.G_23, storage.alpha_T) == (0.035e9, 0.03e9, 1e-4)

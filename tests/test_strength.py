@@ -1,4 +1,5 @@
-"""Tsai-Wu safety factor (thesis eq. 2.48-2.53; DESIGN.md section 6, Tsai-Wu)."""
+"""Tsai-Wu safety factor (thesis eq. 2.48-2.53; DESIGN.md section 6, Tsai-Wu), residual stresses,
+load shares, and the shaft strength check with the centrifugal hoop and thermal residual stresses."""
 
 import warnings
 
@@ -12,8 +13,10 @@ from flexshaft.strength import (
     dominant_stress,
     tsai_wu_coefficients,
     tsai_wu_contributions,
+    tsai_wu_index,
     tsai_wu_quadratic,
     tsai_wu_safety_factor,
+    tsai_wu_shares,
 )
 
 # thesis Table 3.2 (DESIGN.md section 5)
@@ -115,3 +118,151 @@ def test_dominant_stress_labels_and_shares_sum_to_one():
     assert list(labels) == ["sigma1", "sigma2", "tau12", "tau12"]
     shares = tsai_wu_contributions(s1, s2, t12, THESIS)
     np.testing.assert_allclose(shares.sum(axis=-1), 1.0, rtol=1e-12)
+
+
+# ------------------------------------------------------------------ residual stress and shares
+
+
+def test_residual_stress_is_not_scaled_uniaxial_closed_form():
+    """F(s_r + R s) = 1 along sigma2 alone: the envelope is reached at s_r + R s = Y_t (s > 0)
+    or -Y_c (s < 0), so R = (Y_t - s_r)/s and R = (Y_c + s_r)/|s| exactly."""
+    s_r, s = 0.7e6, np.array([1e6, -1e6])
+    R = tsai_wu_safety_factor(0.0, s, 0.0, THESIS, residual=(0.0, s_r, 0.0))
+    np.testing.assert_allclose(R, [(THESIS.Y_t - s_r) / 1e6, (THESIS.Y_c + s_r) / 1e6], rtol=TIGHT)
+    # a residual that alone breaks the envelope leaves no margin; a zero residual changes nothing
+    assert tsai_wu_safety_factor(0.0, 1e6, 0.0, THESIS, residual=(0.0, 6e6, 0.0)) == 0.0
+    assert tsai_wu_safety_factor(1e8, 2e5, 3e6, THESIS, residual=(0.0, 0.0, 0.0)) == pytest.approx(
+        tsai_wu_safety_factor(1e8, 2e5, 3e6, THESIS), rel=TIGHT)
+
+
+@given(st.floats(-1e9, 1e9), st.floats(-3e6, 3e6), st.floats(-1e7, 1e7), st.floats(-1e8, 1e8), st.floats(-1e6, 1e6))
+@settings(max_examples=200, deadline=None)
+def test_R_with_residual_reaches_the_envelope(s1, s2, t12, r1, r2):
+    if max(abs(s1), abs(s2), abs(t12)) < 1.0:
+        return
+    R = float(tsai_wu_safety_factor(s1, s2, t12, THESIS, residual=(r1, r2, 0.0)))
+    if tsai_wu_index(r1, r2, 0.0, THESIS) >= 1.0:
+        assert R == 0.0
+        return
+    assert R > 0.0
+    assert tsai_wu_index(r1 + R * s1, r2 + R * s2, R * t12, THESIS) == pytest.approx(1.0, abs=1e-9)
+
+
+def test_shares_are_the_integrated_gradient_and_sum_to_the_index():
+    """Independent check of phi_j = f.s_j + s_j^T H s: integrate grad F(t s) . s_j over t in
+    [0, 1] by 2-point Gauss-Legendre (exact: the gradient is linear in t), with the gradient
+    taken by central differences of F (exact for a quadratic up to round-off)."""
+    rng = np.random.default_rng(3)
+    parts = rng.normal(0, 1, (4, 3)) * np.array([3e8, 1.5e6, 4e6])
+    total = parts.sum(axis=0)
+
+    def F(s):
+        return float(tsai_wu_index(*s, THESIS))
+
+    def gradient(s):
+        h = np.array([1e3, 1e1, 1e1])
+        return np.array([(F(s + h[i] * e) - F(s - h[i] * e)) / (2 * h[i]) for i, e in enumerate(np.eye(3))])
+
+    nodes = 0.5 + 0.5 * np.array([-1, 1]) / np.sqrt(3)
+    integrated = sum(0.5 * gradient(t * total) for t in nodes) @ parts.T
+    shares = tsai_wu_shares(parts, THESIS)
+    np.testing.assert_allclose(shares, integrated, rtol=1e-6, atol=1e-9)
+    assert shares.sum() == pytest.approx(F(total), rel=1e-12)
+    twins = tsai_wu_shares(np.array([total / 2, total / 2]), THESIS)
+    assert twins[0] == pytest.approx(twins[1], rel=1e-12)  # equal loads, equal shares
+    assert tsai_wu_shares(total[None, :], THESIS)[0] == pytest.approx(F(total), rel=1e-12)
+
+
+# ------------------------------------------------------------------- shaft: hoop, thermal, shares
+
+
+def _model(overrides):
+    from flexshaft.assembly import build_model
+    from flexshaft.design import baseline_design, with_overrides
+
+    return build_model(with_overrides(baseline_design(), overrides))
+
+
+NO_LOADS = {"loads.point": [], "loads.load_factor": [0.0, 0.0, 0.0], "operating.power": 0.0}
+
+
+def test_spinning_free_ring_hoop_stress_through_the_laminate_path():
+    """A spinning thin tube with free ends carries sigma_hoop = rho Omega^2 r^2 (ring radial
+    equilibrium, r the mid-surface radius) and no axial stress. An isotropic 'lamina' in the
+    (55/-55/0/0)s stack, no other load: the critical ply's stresses are the hoop stress rotated
+    into its axes, sigma1 = h s^2, sigma2 = h c^2, tau12 = h c s (to 1e-9; the bar is 0.1 %),
+    and R is the Tsai-Wu root of that state."""
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
+
+    G = 70e9 / 2.6
+    ply = "materials.t700_adiprene."
+    model = _model({**NO_LOADS, ply + "E_L": 70e9, ply + "E_T": 70e9, ply + "G_LT": G, ply + "nu_LT": 0.3,
+                    ply + "G_13": G, ply + "G_23": G, ply + "alpha_L": 0.0, ply + "alpha_T": 0.0})
+    result = shaft_safety_factor(model, np.zeros(model.dofs.size))
+    rho, omega, r = 1650.0, 4800 * 2 * np.pi / 60, (0.1016 - 0.003) / 2
+    hoop = rho * omega**2 * r**2
+    a = np.radians(result.ply_angle_deg)
+    expected = np.array([hoop * np.sin(a) ** 2, hoop * np.cos(a) ** 2, hoop * np.cos(a) * np.sin(a)])
+    np.testing.assert_allclose(result.stresses, expected, rtol=1e-9, atol=1e-9 * hoop)
+    assert result.hoop_resultant == pytest.approx(rho * 0.003 * omega**2 * r**2, rel=1e-12)
+    assert result.safety_factor == pytest.approx(float(tsai_wu_safety_factor(*expected, THESIS)), rel=1e-12)
+    assert result.load_shares == pytest.approx({"static": 0.0, "centrifugal": 1.0}, abs=1e-12)
+
+
+@pytest.fixture(scope="module")
+def baseline_strength():
+    from flexshaft.analyses import imbalance_response
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
+    from flexshaft.assembly import build_model
+    from flexshaft.assembly.loads import imbalance_loads
+    from flexshaft.design import baseline_design
+
+    model = build_model(baseline_design())
+    parts = static_load_parts(model)
+    q_dyn = imbalance_response(model, [model.speed], imbalance_loads(model))[:, 0, 0]
+    return model, parts, q_dyn, shaft_safety_factor(model, parts, q_dyn, leave_one_out=True)
+
+
+def test_baseline_load_shares_sum_to_one_and_leave_one_out_matches_switches(baseline_strength):
+    """Shares of the failure index at the critical ply sum to 1 (the index there). Leaving a
+    load out must equal switching it off at the source: no centrifugal = speed 0, no thermal =
+    thermal_residual False, no imbalance = static only; and splitting the static response into
+    external + torque changes no stress (linear), so R is the same as for their sum."""
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
+
+    model, parts, q_dyn, full = baseline_strength
+    assert set(full.load_shares) == {"external", "torque", "imbalance", "centrifugal", "thermal"}
+    assert sum(full.load_shares.values()) == pytest.approx(1.0, abs=1e-12)
+    assert full.safety_factor_without["centrifugal"] == pytest.approx(
+        shaft_safety_factor(model, parts, q_dyn, speed=0.0).safety_factor, rel=1e-12)
+    assert full.safety_factor_without["thermal"] == pytest.approx(
+        shaft_safety_factor(model, parts, q_dyn, thermal_residual=False).safety_factor, rel=1e-12)
+    assert full.safety_factor_without["imbalance"] == pytest.approx(shaft_safety_factor(model, parts).safety_factor,
+                                                                   rel=1e-12)
+    summed = shaft_safety_factor(model, parts["external"] + parts["torque"], q_dyn)
+    assert summed.safety_factor == pytest.approx(full.safety_factor, rel=1e-12)
+    assert summed.load_shares["static"] == pytest.approx(full.load_shares["external"] + full.load_shares["torque"],
+                                                         rel=1e-9)
+
+
+def test_baseline_failure_state_reaches_the_envelope(baseline_strength):
+    """At the critical ply, R times the mechanical stresses plus the unscaled thermal residual
+    stress lies on the Tsai-Wu envelope (independent re-evaluation of F from the parts)."""
+    _, _, _, full = baseline_strength
+    parts = full.stress_parts
+    state = sum(np.array(s) * (1.0 if name == "thermal" else full.safety_factor) for name, s in parts.items())
+    assert tsai_wu_index(*state, THESIS) == pytest.approx(1.0, abs=1e-12)
+    assert np.allclose(full.stresses, sum(np.array(s) for s in parts.values()))
+    assert full.temperature_change == pytest.approx(35.0 - 100.0)
+
+
+def test_thesis_path_unchanged_without_hoop_and_thermal(baseline_strength):
+    """Golden value: speed 0 and no thermal residual is the thesis's strength check (N_y = 0,
+    eq. 2.46); the baseline gives R = 36.9336 as before this change (regenerate: the same call
+    on ``flexshaft.baseline_design()``)."""
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
+
+    model, parts, q_dyn, _ = baseline_strength
+    old = shaft_safety_factor(model, parts["external"] + parts["torque"], q_dyn, speed=0.0, thermal_residual=False)
+    assert old.safety_factor == pytest.approx(36.933600873003506, rel=1e-12)
+    assert (old.ply_angle_deg, old.dominant_stress, old.x) == (55.0, "sigma1", pytest.approx(3.21))

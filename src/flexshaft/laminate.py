@@ -23,7 +23,7 @@ Jones, R. M. (1999). *Mechanics of Composite Materials*, 2nd ed., Taylor & Franc
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Sequence
 
 import numpy as np
@@ -32,13 +32,22 @@ from numpy.typing import ArrayLike, NDArray
 __all__ = [
     "Lamina", "Laminate", "parse_layup", "reduced_stiffness", "strain_transformation",
     "transformed_stiffness", "abd_matrices", "equivalent_moduli", "equivalent_density",
-    "hoop_strain_free", "ply_strains", "ply_stresses",
+    "hoop_strain_free", "ply_strains", "ply_stresses", "transverse_shear_stiffness",
+    "membrane_strains", "spin_hoop_resultant", "thermal_ply_stresses",
+    "DEFAULT_NU_23", "DEFAULT_SHEAR_CORRECTION",
 ]
 
 
 def _check_positive(name: str, value: complex) -> None:
     if not np.isfinite(value) or not np.real(value) > 0.0:
         raise ValueError(f"{name} must be finite with a positive storage part, got {value!r}")
+
+
+#: Transverse Poisson ratio nu_23 [-] behind the default G_23 = E_T / (2 (1 + nu_23)) = E_T / 3.
+DEFAULT_NU_23 = 0.5
+#: Default transverse shear correction factor k [-] of first-order shear deformation theory
+#: (Reissner 1945, Mindlin 1951: 5/6 is exact for the energy of a homogeneous section).
+DEFAULT_SHEAR_CORRECTION = 5.0 / 6.0
 
 
 @dataclass(frozen=True)
@@ -57,6 +66,21 @@ class Lamina:
         Major Poisson ratio [-] (strain in T per strain in L under stress along L).
     density : float
         Mass density [kg/m^3].
+    G_13 : complex, optional
+        Transverse shear modulus in the fibre-thickness plane [Pa]; default G_LT (a
+        transversely isotropic ply: the 1-3 plane is equivalent to the 1-2 plane).
+    G_23 : complex, optional
+        Transverse shear modulus across the fibres [Pa]; default E_T / (2 (1 + nu_23)) with
+        nu_23 = :data:`DEFAULT_NU_23` = 0.5, i.e. E_T / 3 (typical of polymer-matrix plies; a
+        nearly incompressible elastomer matrix pushes nu_23 towards 1, i.e. E_T / 4). The design
+        schema also requires nu_23 = E_T/(2 G_23) - 1 < 1 - 2 nu_LT nu_TL (a positive-definite
+        transversely isotropic ply); here only G_13, G_23 > 0 are checked, so that the shell
+        models can be driven to their limits.
+    shear_correction : float
+        Transverse shear correction factor k in (0, 1] [-]; default 5/6.
+    alpha_L, alpha_T : float
+        Coefficients of thermal expansion along and across the fibres [1/K]; default 0 (no
+        thermal strain).
     """
 
     E_L: complex
@@ -64,6 +88,11 @@ class Lamina:
     G_LT: complex
     nu_LT: float
     density: float
+    G_13: complex | None = None
+    G_23: complex | None = None
+    shear_correction: float = DEFAULT_SHEAR_CORRECTION
+    alpha_L: float = 0.0
+    alpha_T: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("E_L", "E_T", "G_LT"):
@@ -76,34 +105,63 @@ class Lamina:
                 f"nu_LT = {self.nu_LT!r} makes the ply stiffness indefinite; "
                 f"allowed |nu_LT| < sqrt(E_L/E_T) = {limit:.4g}"
             )
+        if self.G_13 is None:
+            object.__setattr__(self, "G_13", self.G_LT)
+        if self.G_23 is None:
+            object.__setattr__(self, "G_23", self.E_T / (2.0 * (1.0 + DEFAULT_NU_23)))
+        for name in ("G_13", "G_23"):
+            _check_positive(name, getattr(self, name))
+        if not np.isfinite(self.shear_correction) or not 0.0 < self.shear_correction <= 1.0:
+            raise ValueError(f"shear_correction must lie in (0, 1], got {self.shear_correction!r}")
+        for name in ("alpha_L", "alpha_T"):
+            if not np.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be a finite thermal expansion coefficient [1/K], got "
+                                 f"{getattr(self, name)!r}")
 
     @classmethod
     def from_loss_factors(
         cls, E_L: float, E_T: float, G_LT: float, nu_LT: float, density: float,
-        loss_E_L: float = 0.0, loss_E_T: float = 0.0, loss_G_LT: float = 0.0,
+        loss_E_L: float = 0.0, loss_E_T: float = 0.0, loss_G_LT: float = 0.0, *,
+        G_13: float | None = None, G_23: float | None = None,
+        shear_correction: float = DEFAULT_SHEAR_CORRECTION, alpha_L: float = 0.0, alpha_T: float = 0.0,
     ) -> Lamina:
-        """Build a lamina from storage moduli [Pa] and loss factors [-], E* = E'(1 + i eta)."""
+        """Build a lamina from storage moduli [Pa] and loss factors [-], E* = E'(1 + i eta).
+
+        ``G_13`` and ``G_23`` [Pa] are storage values (None: the defaults of :class:`Lamina`); they
+        take the loss factor of G_LT and E_T respectively. ``shear_correction`` [-], ``alpha_L``,
+        ``alpha_T`` [1/K] as in :class:`Lamina`.
+        """
         for name, eta in (("loss_E_L", loss_E_L), ("loss_E_T", loss_E_T), ("loss_G_LT", loss_G_LT)):
             if not np.isfinite(eta) or eta < 0.0:
                 raise ValueError(f"{name} must be a finite loss factor >= 0, got {eta!r}")
-        return cls(E_L * (1 + 1j * loss_E_L), E_T * (1 + 1j * loss_E_T), G_LT * (1 + 1j * loss_G_LT),
-                   float(nu_LT), float(density))
+        return cls(
+            E_L * (1 + 1j * loss_E_L), E_T * (1 + 1j * loss_E_T), G_LT * (1 + 1j * loss_G_LT),
+            float(nu_LT), float(density),
+            G_13=None if G_13 is None else G_13 * (1 + 1j * loss_G_LT),
+            G_23=None if G_23 is None else G_23 * (1 + 1j * loss_E_T),
+            shear_correction=float(shear_correction), alpha_L=float(alpha_L), alpha_T=float(alpha_T),
+        )
 
     @property
     def storage(self) -> Lamina:
         """The same lamina with its storage (real) moduli only."""
-        return Lamina(self.E_L.real, self.E_T.real, self.G_LT.real, self.nu_LT, self.density)
+        return replace(self, E_L=self.E_L.real, E_T=self.E_T.real, G_LT=self.G_LT.real,
+                       G_13=np.real(self.G_13), G_23=np.real(self.G_23))
 
     @classmethod
-    def isotropic(cls, E: float, G: float, density: float, loss_factor: float = 0.0) -> Lamina:
-        """Isotropic material as a lamina: E_L = E_T = E [Pa], G_LT = G [Pa], nu = E/(2G) - 1.
+    def isotropic(
+        cls, E: float, G: float, density: float, loss_factor: float = 0.0, alpha: float = 0.0
+    ) -> Lamina:
+        """Isotropic material as a lamina: E_L = E_T = E [Pa], G_LT = G_13 = G_23 = G [Pa].
 
-        ``density`` [kg/m^3]; ``loss_factor`` [-] multiplies every modulus by (1 + i eta).
+        nu = E/(2G) - 1; ``density`` [kg/m^3]; ``loss_factor`` [-] multiplies every modulus by
+        (1 + i eta); ``alpha`` [1/K] is the thermal expansion coefficient.
         """
         nu = E / (2.0 * G) - 1.0
         if not -1.0 < nu < 0.5:
             raise ValueError(f"E/(2G) - 1 = {nu:.4g} is not a Poisson ratio in (-1, 0.5); check E and G")
-        return cls.from_loss_factors(E, E, G, nu, density, loss_factor, loss_factor, loss_factor)
+        return cls.from_loss_factors(E, E, G, nu, density, loss_factor, loss_factor, loss_factor,
+                                     G_13=G, G_23=G, alpha_L=alpha, alpha_T=alpha)
 
 
 def _read_only(values: ArrayLike) -> NDArray[np.float64]:
@@ -410,6 +468,30 @@ def abd_matrices(
     return A, B, D
 
 
+def transverse_shear_stiffness(laminate: Laminate) -> NDArray[np.complex128]:
+    """Transverse shear stiffness of first-order shear deformation theory [N/m].
+
+    Each ply's shear moduli G_13 (fibre-thickness plane) and G_23 (across the fibres) rotate with
+    the ply angle alpha like a vector (Reddy 2004, eq. 3.3.9; Jones 1999, sec. 4.6):
+    Q_55 = G_13 cos^2 + G_23 sin^2, Q_44 = G_13 sin^2 + G_23 cos^2, Q_45 = (G_13 - G_23) cos sin,
+    and A_ij = k sum Q_ij,k (z_k - z_{k-1}) with the lamina's shear correction factor k.
+
+    Returns
+    -------
+    ndarray, shape (2, 2), complex
+        [[A55, A45], [A45, A44]] relating (Q_x, Q_y) to the transverse shear strains
+        (gamma_xz, gamma_yz) [-] (x axial, y circumferential, z outward).
+    """
+    lamina = laminate.lamina
+    c, s = np.cos(laminate.angles), np.sin(laminate.angles)
+    h = laminate.thicknesses
+    G13, G23 = complex(lamina.G_13), complex(lamina.G_23)
+    A55 = np.sum((G13 * c * c + G23 * s * s) * h)
+    A44 = np.sum((G13 * s * s + G23 * c * c) * h)
+    A45 = np.sum((G13 - G23) * c * s * h)
+    return lamina.shear_correction * np.array([[A55, A45], [A45, A44]], dtype=complex)
+
+
 def equivalent_moduli(laminate: Laminate) -> tuple[complex, complex]:
     """Equivalent axial and shear moduli of the shaft wall (thesis eq. 2.4).
 
@@ -456,7 +538,7 @@ def ply_strains(
     """
     arrays = np.broadcast_arrays(*(np.asarray(e, dtype=float) for e in (eps_x, eps_y, gamma_xy)))
     strains = np.stack(arrays, axis=-1)
-    return np.einsum("kij,...j->...ki", strain_transformation(laminate.angles), strains)
+    return np.tensordot(strains, strain_transformation(laminate.angles), axes=([-1], [2]))
 
 
 def ply_stresses(
@@ -468,4 +550,53 @@ def ply_stresses(
     shape S + (n_plies, 3) holding (sigma_1, sigma_2, tau_12) [Pa].
     """
     Q = reduced_stiffness(laminate.lamina.storage).real
-    return np.einsum("ij,...j->...i", Q, ply_strains(laminate, eps_x, eps_y, gamma_xy))
+    stress_per_strain = np.einsum("ij,kjl->kil", Q, strain_transformation(laminate.angles))
+    arrays = np.broadcast_arrays(*(np.asarray(e, dtype=float) for e in (eps_x, eps_y, gamma_xy)))
+    return np.tensordot(np.stack(arrays, axis=-1), stress_per_strain, axes=([-1], [2]))
+
+
+def membrane_strains(laminate: Laminate, resultants: ArrayLike) -> NDArray[np.float64]:
+    """Mid-surface strains (eps_x, eps_y, gamma_xy) [-] under membrane resultants alone.
+
+    ``resultants`` (..., 3) holds (N_x, N_y, N_xy) [N/m]; the strains are A^-1 N with the storage
+    A (no curvature: a closed thin tube wall, symmetric laminate).
+    """
+    A = abd_matrices(laminate.storage)[0].real
+    return np.linalg.solve(A, np.asarray(resultants, dtype=float)[..., None])[..., 0]
+
+
+def spin_hoop_resultant(density: float, thickness: float, radius: float, speed: ArrayLike) -> NDArray[np.float64]:
+    """Hoop stress resultant N_y [N/m] of a thin tube spinning at ``speed`` [rad/s], free ends.
+
+    Radial equilibrium of a ring element of mass rho t per unit area at radius r [m] spinning at
+    Omega: the hoop force per unit length supplies the centripetal force, N_y / r = rho t Omega^2 r,
+    so N_y = rho t Omega^2 r^2 (thin ring, Timoshenko & Goodier 1970 sec. 32 for t << r). Free ends
+    mean N_x = N_xy = 0 from the spin. ``density`` [kg/m^3], ``thickness`` [m].
+    """
+    return density * thickness * np.asarray(speed, dtype=float) ** 2 * radius**2
+
+
+def thermal_ply_stresses(laminate: Laminate, temperature_change: float) -> NDArray[np.float64]:
+    """Residual ply stresses [Pa] of a free laminate after a uniform temperature change [K].
+
+    Each ply would expand by (alpha_L, alpha_T, 0) dT in its material axes; the plies are bonded,
+    so the laminate takes the strain eps0 = A^-1 N_T with N_T = sum Q_bar_k alpha_bar_k dT t_k
+    (N = 0: no external resultant; no curvature: the closed tube wall cannot curl, and B = 0 for
+    a symmetric laminate) and each ply carries Q (T_eps eps0 - alpha dT) (Jones 1999, sec. 4.5;
+    Daniel & Ishai 2006, sec. 10.4). Storage moduli, elastic (no relaxation of the matrix).
+
+    Returns
+    -------
+    ndarray, shape (n_plies, 3)
+        (sigma_1, sigma_2, tau_12) [Pa] of each ply in its material axes.
+    """
+    storage = laminate.storage
+    lamina = storage.lamina
+    free = np.array([lamina.alpha_L, lamina.alpha_T, 0.0]) * float(temperature_change)
+    T = strain_transformation(storage.angles)
+    free_laminate_axes = np.linalg.solve(T, np.broadcast_to(free, (T.shape[0], 3))[..., None])[..., 0]
+    Q_bar = transformed_stiffness(reduced_stiffness(lamina), storage.angles).real
+    thermal_resultant = np.einsum("kij,kj,k->i", Q_bar, free_laminate_axes, storage.thicknesses)
+    eps0 = membrane_strains(storage, thermal_resultant)
+    Q = reduced_stiffness(lamina).real
+    return np.einsum("ij,kj->ki", Q, np.einsum("kij,j->ki", T, eps0) - free)

@@ -9,11 +9,24 @@ F66 = 1/S^2 and, unless given, F12 = -1/2 sqrt(F11 F22) (Tsai & Hahn). Scaling e
 the safety factor R turns it into the quadratic a R^2 + b R - 1 = 0 (thesis eq. 2.48) with
 a = F11 s1^2 + F22 s2^2 + F66 t12^2 + 2 F12 s1 s2 and b = F1 s1 + F2 s2. R = 1 at failure.
 
+A residual stress state s_r that does not grow with the load (thermal curing stresses) is
+added unscaled, F(s_r + R s) = 1, as in Tsai (1992, ch. 9): the quadratic gains the constant
+c = F(s_r) and the cross term 2 s_r^T H s in b.
+
+Load shares: the index of a state s = sum_j s_j made of several loads splits exactly as
+F(s) = sum_j (f . s_j + s_j^T H s), with f = (F1, F2, 0) and H the quadratic form; this is the
+Aumann-Shapley (integrated-gradient) attribution along the straight path from zero stress to s,
+the only additive split of a quadratic that is linear in each part and symmetric among parts
+that enter the same way. See :func:`tsai_wu_shares`.
+
 References
 ----------
 Ocalan, M. (2002). MS thesis, Penn State, eq. 2.48-2.53.
 Jones, R. M. (1999). *Mechanics of Composite Materials*, 2nd ed., sec. 2.9.
 Tsai, S. W. and Hahn, H. T. (1980). *Introduction to Composite Materials*, Technomic.
+Tsai, S. W. (1992). *Theory of Composites Design*, Think Composites, ch. 9 (strength ratio with
+residual stresses).
+Aumann, R. J. and Shapley, L. S. (1974). *Values of Non-Atomic Games*, Princeton.
 """
 
 from __future__ import annotations
@@ -32,6 +45,8 @@ __all__ = [
     "tsai_wu_quadratic",
     "tsai_wu_safety_factor",
     "tsai_wu_contributions",
+    "tsai_wu_index",
+    "tsai_wu_shares",
     "dominant_stress",
 ]
 
@@ -129,19 +144,28 @@ def tsai_wu_quadratic(
 
 
 def tsai_wu_safety_factor(
-    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
+    sigma1: ArrayLike,
+    sigma2: ArrayLike,
+    tau12: ArrayLike,
+    strengths: Strengths,
+    residual: tuple[ArrayLike, ArrayLike, ArrayLike] | None = None,
 ) -> NDArray[np.float64]:
     """Tsai-Wu safety factor R: the load multiplier that brings the ply to failure.
 
     The positive root of a R^2 + b R - 1 = 0, written R = 2 / (b + sqrt(b^2 + 4a)) so that it
     is exact when a = 0 (linear terms only) and free of cancellation. All-zero stress gives
-    R = inf, without warnings.
+    R = inf, without warnings. With a ``residual`` state s_r, F(s_r + R s) = 1 is solved:
+    R = 2 (1 - c) / (b' + sqrt(b'^2 + 4 a (1 - c))) with c = F(s_r), b' = b + 2 s_r^T H s; R = 0
+    where the residual alone reaches the envelope (c >= 1).
 
     Parameters
     ----------
     sigma1, sigma2, tau12 : array_like
-        Ply stresses in material axes [Pa], broadcast together.
+        Ply stresses in material axes [Pa] that scale with the load, broadcast together.
     strengths : Strengths
+    residual : tuple of array_like, optional
+        (sigma1, sigma2, tau12) [Pa] that do not scale with the load (e.g. thermal residual
+        stresses), broadcast with the others.
 
     Returns
     -------
@@ -149,9 +173,52 @@ def tsai_wu_safety_factor(
         R [-] of the broadcast shape (R = 1 at failure, R > 1 safe).
     """
     a, b = tsai_wu_quadratic(sigma1, sigma2, tau12, strengths)
-    denominator = b + np.sqrt(b * b + 4.0 * np.maximum(a, 0.0))
-    safe = denominator > 0.0
-    return np.divide(2.0, denominator, out=np.full(denominator.shape, np.inf), where=safe)
+    margin = np.ones_like(a)
+    if residual is not None:
+        F = tsai_wu_coefficients(strengths)
+        r1, r2, r6 = (np.asarray(s, dtype=float) for s in residual)
+        s1, s2, t12 = (np.asarray(s, dtype=float) for s in (sigma1, sigma2, tau12))
+        b = b + 2.0 * (F.F11 * r1 * s1 + F.F22 * r2 * s2 + F.F66 * r6 * t12 + F.F12 * (r1 * s2 + r2 * s1))
+        margin = 1.0 - tsai_wu_index(r1, r2, r6, strengths)
+        a, b, margin = np.broadcast_arrays(a, b, margin)
+    failed = margin <= 0.0
+    margin = np.maximum(margin, 0.0)
+    denominator = b + np.sqrt(b * b + 4.0 * np.maximum(a, 0.0) * margin)
+    safe = (denominator > 0.0) & ~failed
+    R = np.divide(2.0 * margin, denominator, out=np.full(denominator.shape, np.inf), where=safe)
+    return np.where(failed, 0.0, R)
+
+
+def tsai_wu_index(sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths) -> NDArray[np.float64]:
+    """Tsai-Wu failure index F(s) = f . s + s^T H s [-] (1 on the failure envelope)."""
+    a, b = tsai_wu_quadratic(sigma1, sigma2, tau12, strengths)
+    return a + b
+
+
+def tsai_wu_shares(parts: ArrayLike, strengths: Strengths) -> NDArray[np.float64]:
+    """Split of the Tsai-Wu index of s = sum_j s_j among the parts s_j (Aumann-Shapley).
+
+    phi_j = f . s_j + s_j^T H s, with f = (F1, F2, 0) and H = [[F11, F12, 0], [F12, F22, 0],
+    [0, 0, F66]]: the integral of the index gradient along the straight path from zero stress to
+    s, projected on part j. The shares sum to F(s) exactly (to 1 on the failure envelope); a
+    share may be negative (a load that relieves the critical ply).
+
+    Parameters
+    ----------
+    parts : array_like, shape (..., J, 3)
+        Ply stresses (sigma1, sigma2, tau12) [Pa] of each part, in material axes.
+
+    Returns
+    -------
+    ndarray, shape (..., J)
+        phi_j [-].
+    """
+    F = tsai_wu_coefficients(strengths)
+    parts = np.asarray(parts, dtype=float)
+    f = np.array([F.F1, F.F2, 0.0])
+    H = np.array([[F.F11, F.F12, 0.0], [F.F12, F.F22, 0.0], [0.0, 0.0, F.F66]])
+    total = parts.sum(axis=-2, keepdims=True)
+    return parts @ f + np.einsum("...ji,ik,...k->...j", parts, H, total[..., 0, :])
 
 
 def tsai_wu_contributions(

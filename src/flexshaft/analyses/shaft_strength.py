@@ -1,30 +1,75 @@
 """Ply-level Tsai-Wu safety factor along the shaft for the superposed response (thesis §2.5-2.6).
 
-Total response at an artificial phase φ: ``q(φ) = q_static + Re(q_dyn e^{iφ})``, φ swept over
-[0, 2π). Outer-wall strains at both ends of every shaft element (curvature is linear inside a
-cubic element, so its extremes are at the ends)::
+Loads
+-----
+* static responses (external loads, torque; :func:`static_load_parts` solves them separately)
+  and the synchronous imbalance response at an artificial phase φ swept over [0, 2π):
+  ``q(φ) = Σ q_static + Re(q_dyn e^{iφ})``;
+* the centrifugal hoop stress of the spinning wall: free thin tube, hoop resultant
+  ``N_y = ρ t Ω² r²`` (r the mid-surface radius), ``N_x = N_xy = 0``, strains ``A⁻¹ N``;
+* the thermal residual stresses of the cured laminate at the operating temperature (plies of
+  different angle and anisotropic thermal expansion, free laminate, ``ΔT = T − T_stress_free``).
+
+Free ends for both: the hangers' axial restraint of the spin's Poisson contraction (ε_x ≈ −9e-6
+on the baseline, negligible) and of the shaft's thermal strain relative to the boom are left out.
+
+Outer-wall strains of the beam loads at both ends of every shaft element (curvature is linear
+inside a cubic element, so its extremes are at the ends)::
 
     ε_x  = u' ± (D_o/2) √(κ_v² + κ_w²)      (κ_v = dγ/dx, κ_w = −dβ/dx; both signs checked,
     γ_xy = (D_o/2) θ'                          every fibre passes the extreme once per turn)
-    ε_y  from N_y = 0 (eq. 2.46)
+    ε_y  from N_y = 0 (eq. 2.46); the spin's own hoop resultant is added as above.
 
-Ply stresses from the storage moduli, Tsai-Wu solved for R per ply (eq. 2.48-2.53). The design
-value is the minimum; where it occurs (element end, ply, φ, sign) and the dominant stress are
-reported.
+Ply stresses from the storage moduli; Tsai-Wu (eq. 2.48-2.53) solved for R per ply. R multiplies
+the mechanical loads (static, imbalance, centrifugal) together, as in the thesis; the thermal
+residual stress is a fixed initial state that R does not scale (Tsai 1992), F(σ_T + R σ) = 1.
+The design value is the minimum; where it occurs (element end, ply, φ, sign) and the dominant
+stress are reported.
+
+Load shares
+-----------
+At the critical ply and instant the failure state σ* = R Σ_j σ_j + σ_T splits the Tsai-Wu index
+(= 1 there) into one share per load, φ_j = f·σ*_j + σ*_jᵀ H σ* (:func:`flexshaft.strength.
+tsai_wu_shares`, the Aumann-Shapley split: linear term of the load plus its part of the quadratic
+term, the interaction with every other load shared half and half). The shares sum to 1; a
+negative share is a load that relieves the critical ply. The bending strain of each beam load is
+taken at the critical fibre (the direction of the total curvature), so the parts add up exactly.
+Beside it, ``safety_factor_without`` gives, on request, the leave-one-out safety factor (minimum
+over the shaft with that load removed).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from flexshaft.assembly.model import Model
 from flexshaft.elements.shape import beam_shape
-from flexshaft.laminate import Lamina, Laminate, hoop_strain_free, ply_stresses
-from flexshaft.strength import Strengths, dominant_stress, tsai_wu_safety_factor
+from flexshaft.laminate import (
+    Laminate,
+    hoop_strain_free,
+    membrane_strains,
+    ply_stresses,
+    spin_hoop_resultant,
+    thermal_ply_stresses,
+)
+from flexshaft.strength import (
+    Strengths,
+    dominant_stress,
+    tsai_wu_safety_factor,
+    tsai_wu_shares,
+)
 
-__all__ = ["ShaftStrains", "StrengthResult", "shaft_strains", "shaft_safety_factor", "shaft_strengths"]
+__all__ = [
+    "ShaftStrains", "StrengthResult", "shaft_strains", "shaft_safety_factor", "shaft_strengths",
+    "static_load_parts", "LOAD_NAMES",
+]
+
+#: Names of the loads in ``load_shares`` / ``safety_factor_without``: the static parts given (by
+#: default from :func:`static_load_parts`; ``"static"`` for a single static response), then these.
+LOAD_NAMES = ("external", "torque", "imbalance", "centrifugal", "thermal")
 
 
 @dataclass(frozen=True)
@@ -69,12 +114,33 @@ def shaft_strengths(model: Model) -> tuple[Laminate, Strengths]:
     return model.shaft.laminate, Strengths(mat.X_t, mat.X_c, mat.Y_t, mat.Y_c, mat.S, getattr(mat, "F12", None))
 
 
+def static_load_parts(model: Model) -> dict[str, np.ndarray]:
+    """Static responses [m, rad] to the external loads and to the torque, solved separately.
+
+    Their sum is the static response of the thesis; keeping them apart lets
+    :func:`shaft_safety_factor` report each one's share.
+    """
+    from flexshaft.analyses.response import static_response
+    from flexshaft.assembly.loads import external_static_load, torque_load
+
+    return {
+        "external": static_response(model, external_static_load(model)),
+        "torque": static_response(model, torque_load(model)),
+    }
+
+
 @dataclass(frozen=True)
 class StrengthResult:
-    """Minimum Tsai-Wu safety factor and where it occurs.
+    """Minimum Tsai-Wu safety factor, where it occurs, and what each load contributes.
 
     ``along_shaft`` is the minimum over plies, phases and signs at each element end
-    (``x_along`` [m]).
+    (``x_along`` [m]). ``stresses`` are the critical ply's (σ1, σ2, τ12) [Pa] at the operating
+    loads (residual included); ``stress_parts`` the same per load. ``load_shares`` split the
+    failure index at the critical point among the loads (sum 1, see the module docstring);
+    ``safety_factor_without`` is the minimum safety factor with one load removed (empty unless
+    asked for with ``leave_one_out=True``).
+    ``hoop_resultant`` [N/m] is the spin's N_y at ``spin_speed`` [rad/s]; ``temperature_change``
+    [K] is T − T_stress_free of the thermal residual (0 when left out).
     """
 
     safety_factor: float
@@ -85,51 +151,161 @@ class StrengthResult:
     phase_deg: float
     bending_sign: int
     dominant_stress: str
-    stresses: tuple[float, float, float]  # σ1, σ2, τ12 of the critical ply [Pa]
+    stresses: tuple[float, float, float]
     x_along: np.ndarray
     along_shaft: np.ndarray
+    load_shares: dict[str, float] = field(default_factory=dict)
+    safety_factor_without: dict[str, float] = field(default_factory=dict)
+    stress_parts: dict[str, tuple[float, float, float]] = field(default_factory=dict)
+    spin_speed: float = 0.0
+    hoop_resultant: float = 0.0
+    temperature_change: float = 0.0
 
 
-def shaft_safety_factor(model: Model, q_static: np.ndarray, q_dynamic: np.ndarray | None = None,
-                        n_phases: int = 72) -> StrengthResult:
+def _unit_ply_stresses(laminate: Laminate) -> tuple[np.ndarray, np.ndarray]:
+    """Ply stresses (n_ply, 3) [Pa] per unit axial strain and per unit shear strain, N_y = 0."""
+    per_axial = ply_stresses(laminate, 1.0, hoop_strain_free(laminate, 1.0, 0.0), 0.0)
+    per_shear = ply_stresses(laminate, 0.0, hoop_strain_free(laminate, 0.0, 1.0), 1.0)
+    return per_axial, per_shear
+
+
+def _wall_strains(
+    strains: Mapping[str, ShaftStrains], radius: float, shape: tuple[int, ...]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Outer-wall (eps_x, gamma_xy) of the sum of the beam loads, grid ``shape`` + (2 signs,).
+
+    ``shape`` is (nel, 2, n_phase). Also returns the unit vector (e_v, e_w) (nel, 2, n_phase) of the total curvature: the
+    extreme fibres lie along it, and each load's bending strain there is r (kappa . e).
+    """
+    zero = np.zeros(shape)
+    axial = sum((s.axial for s in strains.values()), zero)
+    kv = sum((s.curvature_v for s in strains.values()), zero)
+    kw = sum((s.curvature_w for s in strains.values()), zero)
+    magnitude = np.hypot(kv, kw)
+    safe = magnitude > 0.0
+    ev = np.divide(kv, magnitude, out=np.ones_like(magnitude), where=safe)
+    ew = np.divide(kw, magnitude, out=np.zeros_like(magnitude), where=safe)
+    eps_x = axial[..., None] + _SIGNS * (radius * magnitude)[..., None]
+    gamma = np.broadcast_to((radius * sum((s.twist for s in strains.values()), zero))[..., None], eps_x.shape)
+    return eps_x, gamma, ev, ew
+
+
+_SIGNS = np.array([1.0, -1.0])  # the two extreme fibres of the bending strain
+
+
+def shaft_safety_factor(
+    model: Model,
+    q_static: np.ndarray | Mapping[str, np.ndarray],
+    q_dynamic: np.ndarray | None = None,
+    n_phases: int = 72,
+    *,
+    speed: float | None = None,
+    temperature: float | None = None,
+    thermal_residual: bool = True,
+    leave_one_out: bool = False,
+) -> StrengthResult:
     """Tsai-Wu safety factor of the superposed response.
 
     Parameters
     ----------
-    q_static : ndarray
-        Real static displacement (external loads + torque) [m, rad].
+    q_static : ndarray or mapping of str to ndarray
+        Real static displacement (external loads + torque) [m, rad], or several named static
+        responses (e.g. :func:`static_load_parts`) whose shares are reported separately.
     q_dynamic : ndarray or None
         Complex synchronous (imbalance) amplitude [m, rad]; None for static only.
     n_phases : int
         Number of phases φ in [0, 2π).
+    speed : float, optional
+        Spin speed Ω [rad/s] of the centrifugal hoop stress; default the model's operating speed,
+        0 leaves it out.
+    temperature : float, optional
+        Operating wall temperature [K] of the thermal residual stress; default the design's
+        ambient temperature (``[thermal] ambient_temperature_c``).
+    thermal_residual : bool
+        Include the thermal residual ply stresses (from the lamina's ``alpha_L``, ``alpha_T``
+        and ``stress_free_temperature_c``).
+    leave_one_out : bool
+        Also compute ``safety_factor_without`` (one more evaluation of the whole shaft per load;
+        off by default for sweeps).
     """
     laminate, strengths = shaft_strengths(model)
+    laminate = laminate.storage
+    design = model.design
+    material = design.materials[design.shaft.material]
     r = model.shaft.outer_diameter / 2
     phases = np.arange(n_phases) * 2 * np.pi / n_phases if q_dynamic is not None else np.zeros(1)
-    q = np.asarray(q_static, dtype=float)[:, None] * np.ones(phases.size)
+    statics = {"static": q_static} if isinstance(q_static, np.ndarray) else dict(q_static)
+    beam_parts = {name: np.asarray(q, dtype=float)[:, None] * np.ones(phases.size) for name, q in statics.items()}
     if q_dynamic is not None:
-        q = q + np.real(np.asarray(q_dynamic)[:, None] * np.exp(1j * phases)[None, :])
-    st = shaft_strains(model, q)  # (nel, 2, nphase)
-    bend = r * np.hypot(st.curvature_v, st.curvature_w)
-    signs = np.array([1.0, -1.0])
-    eps_x = st.axial[..., None] + signs * bend[..., None]  # (nel, 2, nphase, 2)
-    gamma = np.broadcast_to((r * st.twist)[..., None], eps_x.shape)
-    eps_y = hoop_strain_free(laminate, eps_x, gamma)
-    sig = ply_stresses(laminate, eps_x, eps_y, gamma)  # (..., nply, 3)
-    R = tsai_wu_safety_factor(sig[..., 0], sig[..., 1], sig[..., 2], strengths)
+        beam_parts["imbalance"] = np.real(np.asarray(q_dynamic)[:, None] * np.exp(1j * phases)[None, :])
+
+    spin = model.speed if speed is None else float(speed)
+    if not np.isfinite(spin) or spin < 0.0:
+        raise ValueError(f"speed must be a finite spin speed >= 0 [rad/s], got {speed!r}")
+    thickness = laminate.thickness
+    hoop = float(spin_hoop_resultant(laminate.lamina.density, thickness, r - thickness / 2, spin))
+    uniform = {}  # loads that are the same at every point of the grid: (n_ply, 3)
+    if hoop != 0.0:
+        uniform["centrifugal"] = ply_stresses(laminate, *membrane_strains(laminate, [0.0, hoop, 0.0]))
+    if temperature is None:
+        delta_T = design.thermal.ambient_temperature_c - material.stress_free_temperature_c
+    else:
+        if not np.isfinite(temperature) or temperature <= 0.0:
+            raise ValueError(f"temperature must be a positive absolute temperature [K], got {temperature!r}")
+        delta_T = float(temperature) - material.stress_free_temperature
+    residual = thermal_ply_stresses(laminate, delta_T) if thermal_residual else None
+    if residual is not None and not np.any(residual):
+        residual = None
+
+    x_ends = np.stack([model.dofs.shaft_x[:-1], model.dofs.shaft_x[1:]], axis=1)
+    per_axial, per_shear = _unit_ply_stresses(laminate)
+    strains = {name: shaft_strains(model, q) for name, q in beam_parts.items()}
+
+    def evaluate(leave_out: str | None = None) -> tuple[np.ndarray, tuple]:
+        """R over the grid (nel, 2, n_phase, 2 signs, n_ply) and the total wall strains."""
+        wall = _wall_strains({k: v for k, v in strains.items() if k != leave_out}, r, x_ends.shape + (phases.size,))
+        factored = wall[0][..., None, None] * per_axial + wall[1][..., None, None] * per_shear
+        for name, stress in uniform.items():
+            if name != leave_out:
+                factored = factored + stress
+        fixed = None if residual is None or leave_out == "thermal" else tuple(residual.T)
+        return tsai_wu_safety_factor(*np.moveaxis(factored, -1, 0), strengths, residual=fixed), wall
+
+    R, (_, _, ev, ew) = evaluate()
     k = np.unravel_index(np.argmin(R), R.shape)
     e, end, ph, sg, ply = k
-    s1, s2, t12 = (float(v) for v in sig[k])
+    parts = {}
+    for name, st in strains.items():
+        point = (e, end, ph)
+        bend = r * (st.curvature_v[point] * ev[point] + st.curvature_w[point] * ew[point])
+        eps_x, gamma = st.axial[point] + _SIGNS[sg] * bend, r * st.twist[point]
+        parts[name] = eps_x * per_axial[ply] + gamma * per_shear[ply]
+    parts.update({name: stress[ply] for name, stress in uniform.items()})
+    if residual is not None:
+        parts["thermal"] = residual[ply]
+    R_min = float(R[k])
+    scale = R_min if np.isfinite(R_min) else 0.0
+    at_failure = np.array([parts[name] * (1.0 if name == "thermal" else scale) for name in parts])
+    shares = tsai_wu_shares(at_failure, strengths) if np.isfinite(R_min) else np.zeros(len(parts))
+    total = sum(parts.values())
+    failure_state = at_failure.sum(axis=0)
+    without = {name: float(evaluate(name)[0].min()) for name in parts} if leave_one_out else {}
     return StrengthResult(
-        safety_factor=float(R[k]),
-        x=float(st.x[e, end]),
+        safety_factor=R_min,
+        x=float(x_ends[e, end]),
         element=int(e),
         ply=int(ply),
         ply_angle_deg=float(np.degrees(laminate.angles[ply])),
         phase_deg=float(np.degrees(phases[ph])),
-        bending_sign=int(signs[sg]),
-        dominant_stress=str(dominant_stress(s1, s2, t12, strengths)),
-        stresses=(s1, s2, t12),
-        x_along=st.x.ravel(),
+        bending_sign=int(_SIGNS[sg]),
+        dominant_stress=str(dominant_stress(*(failure_state if np.isfinite(R_min) else total), strengths)),
+        stresses=tuple(float(v) for v in total),
+        x_along=x_ends.ravel(),
         along_shaft=R.min(axis=(2, 3, 4)).ravel(),
+        load_shares={name: float(v) for name, v in zip(parts, shares)},
+        safety_factor_without=without,
+        stress_parts={name: tuple(float(v) for v in stress) for name, stress in parts.items()},
+        spin_speed=spin,
+        hoop_resultant=hoop,
+        temperature_change=float(delta_T) if residual is not None else 0.0,
     )

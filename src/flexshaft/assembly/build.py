@@ -55,6 +55,8 @@ def shaft_properties(design) -> ShaftProperties:
         lamina = Lamina.from_loss_factors(
             E_L=mat.E_L, E_T=mat.E_T, G_LT=mat.G_LT, nu_LT=mat.nu_LT, density=mat.density,
             loss_E_L=mat.loss_E_L, loss_E_T=mat.loss_E_T, loss_G_LT=mat.loss_G_LT,
+            G_13=mat.G_13, G_23=mat.G_23, shear_correction=mat.shear_correction,
+            alpha_L=mat.alpha_L, alpha_T=mat.alpha_T,
         )
         angles = np.radians(np.asarray(shaft.ply_angles_deg, dtype=float))
         plies = np.full(angles.size, shaft.wall_thickness / angles.size)

@@ -1,7 +1,8 @@
 """Materials of the design file: ``[materials.<name>]`` tables, an orthotropic ply or an isotropic metal.
 
-Moduli are storage values [Pa], loss factors are dimensionless, densities [kg/m³]. The ``kind``
-key selects the model (``"lamina"`` or ``"isotropic"``).
+Moduli are storage values [Pa], loss factors are dimensionless, densities [kg/m³], thermal
+expansion coefficients [1/K], temperatures [°C] (converted to kelvin by the properties that
+carry the SI name). The ``kind`` key selects the model (``"lamina"`` or ``"isotropic"``).
 """
 
 from __future__ import annotations
@@ -21,8 +22,27 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
+from flexshaft.laminate import DEFAULT_NU_23, DEFAULT_SHEAR_CORRECTION
 
-__all__ = ["Isotropic", "Lamina", "Material"]
+__all__ = ["Isotropic", "Lamina", "Material", "DEFAULT_ALPHA_L", "DEFAULT_ALPHA_T", "DEFAULT_STRESS_FREE_TEMPERATURE_C"]
+
+#: Thermal expansion along the fibres [1/K] (assumed): carbon fibre dominates, alpha_1 ~ alpha_f
+#: of T700S, -0.38e-6 1/K (Toray T700S data sheet), the soft matrix adding nothing (Schapery 1968).
+DEFAULT_ALPHA_L = -0.4e-6
+#: Thermal expansion across the fibres [1/K] (assumed): Schapery's (1968) estimate
+#: alpha_2 = (1 + nu_m) alpha_m V_m + (1 + nu_f) alpha_f2 V_f - alpha_1 nu_12 with a polyurethane
+#: matrix alpha_m ~ 180e-6 1/K, nu_m 0.48, V_m 0.4 and a carbon fibre alpha_f2 ~ 10e-6 1/K,
+#: nu_f 0.2, V_f 0.6: 114e-6 1/K, rounded to 110e-6.
+DEFAULT_ALPHA_T = 110e-6
+#: Stress-free temperature of the laminate [°C] (assumed): the cure temperature of an MDI/TDI
+#: polyurethane cured with an aromatic diamine, about 100 °C; residual ply stresses grow as the
+#: shaft cools below it.
+DEFAULT_STRESS_FREE_TEMPERATURE_C = 100.0
+#: Plausible bounds of a thermal expansion coefficient [1/K]: catches values given in ppm/K.
+_ALPHA_LIMIT = 1e-3
+
+ShearCorrection = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=1.0)]
+Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-273.15, le=400.0)]
 
 
 class Lamina(FrozenModel):
@@ -31,6 +51,23 @@ class Lamina(FrozenModel):
     Moduli are storage values [Pa]; ``loss_*`` are loss factors η, so the complex modulus is
     E' (1 + iη). Strengths are positive magnitudes [Pa]. ``F12`` is the Tsai-Wu interaction
     coefficient [1/Pa²]; when omitted the analysis uses −½·sqrt(F11·F22).
+
+    Out-of-plane and thermal properties (all optional, defaults documented here):
+
+    * ``G_13`` [Pa], transverse shear modulus in the fibre-thickness plane; default ``G_LT``
+      (transversely isotropic ply: the 1-3 plane is equivalent to the 1-2 plane).
+    * ``G_23`` [Pa], transverse shear modulus across the fibres; default
+      ``E_T / (2 (1 + nu_23))`` with nu_23 = 0.5, i.e. ``E_T / 3`` (carbon/epoxy plies measure
+      nu_23 = 0.4-0.5; a nearly incompressible elastomer matrix pushes nu_23 towards 1, where
+      ``G_23 = E_T / 4``: give ``G_23`` for such a ply). Must exceed
+      ``E_T / (4 (1 - nu_LT nu_TL))`` (nu_23 < 1 - 2 nu_LT nu_TL, a positive-definite ply).
+    * ``shear_correction`` [-], first-order shear deformation factor k in (0, 1]; default 5/6
+      (Reissner 1945; exact energy of a homogeneous section).
+    * ``alpha_L``, ``alpha_T`` [1/K], thermal expansion along and across the fibres; defaults
+      :data:`DEFAULT_ALPHA_L` = -0.4e-6 and :data:`DEFAULT_ALPHA_T` = 110e-6 (carbon/polyurethane,
+      assumed, Schapery estimate); within ±1e-3 1/K.
+    * ``stress_free_temperature_c`` [°C], where the cured laminate carries no residual stress;
+      default 100 °C (cure temperature, assumed).
     """
 
     kind: Literal["lamina"]
@@ -48,10 +85,33 @@ class Lamina(FrozenModel):
     Y_c: Positive
     S: Positive
     F12: Finite | None = None
+    G_13: Positive | None = None
+    G_23: Positive | None = None
+    shear_correction: ShearCorrection = DEFAULT_SHEAR_CORRECTION
+    alpha_L: Finite = DEFAULT_ALPHA_L
+    alpha_T: Finite = DEFAULT_ALPHA_T
+    stress_free_temperature_c: Celsius = DEFAULT_STRESS_FREE_TEMPERATURE_C
 
     @model_validator(mode="after")
     def _check(self) -> Lamina:
         problems = Problems()
+        if self.G_23 is not None:
+            lower = self.E_T / (4.0 * (1.0 - self.nu_LT * self.nu_TL))
+            if not self.G_23 > lower:
+                problems.add(
+                    ("G_23",),
+                    f"must exceed E_T/(4 (1 - nu_LT nu_TL)) = {format_number(lower)} Pa, i.e. nu_23 = "
+                    f"E_T/(2 G_23) - 1 < 1 - 2 nu_LT nu_TL, for a positive-definite transversely isotropic "
+                    f"ply (got {format_value(self.G_23)})",
+                )
+        for name in ("alpha_L", "alpha_T"):
+            value = getattr(self, name)
+            if not abs(value) <= _ALPHA_LIMIT:
+                problems.add(
+                    (name,),
+                    f"must be a thermal expansion coefficient in 1/K within [-{_ALPHA_LIMIT:g}, {_ALPHA_LIMIT:g}] "
+                    f"(got {format_value(value)}; a value in ppm/K needs the factor 1e-6)",
+                )
         limit = math.sqrt(self.E_L / self.E_T)
         if not self.nu_LT < limit:
             problems.add(
@@ -74,6 +134,17 @@ class Lamina(FrozenModel):
     def nu_TL(self) -> float:
         """Minor Poisson ratio ν_TL = ν_LT E_T / E_L [-]."""
         return self.nu_LT * self.E_T / self.E_L
+
+    @property
+    def transverse_shear_moduli(self) -> tuple[float, float]:
+        """(G_13, G_23) [Pa] with the defaults filled in (G_LT and E_T/(2 (1 + nu_23)), nu_23 = 0.5)."""
+        G_23 = self.E_T / (2.0 * (1.0 + DEFAULT_NU_23)) if self.G_23 is None else self.G_23
+        return (self.G_LT if self.G_13 is None else self.G_13, G_23)
+
+    @property
+    def stress_free_temperature(self) -> float:
+        """Stress-free temperature [K]."""
+        return self.stress_free_temperature_c + 273.15
 
 
 class Isotropic(FrozenModel):

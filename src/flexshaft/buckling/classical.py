@@ -1,0 +1,205 @@
+"""Classical (Kirchhoff-Love) laminated-shell torsional buckling: Donnell or Sanders kinematics.
+
+Strain-displacement relations (x axial, y = R theta circumferential, w outward), with the
+bracketed terms kept by Sanders (1959, 1963) and dropped by Donnell:
+
+    eps_x = u,x      eps_y = v,y + w/R      gamma_xy = u,y + v,x
+    kappa_x = -w,xx  kappa_y = -w,yy [+ v,y/R]  kappa_xy = -2 w,xy [+ (3 v,x - u,y)/(2R)]
+    beta_x = -w,x    beta_y = -w,y [+ v/R]
+
+Donnell's relations overestimate the stiffness of the n = 2 mode that governs long tubes: the
+long-tube torque is 2/sqrt(3) times the Sanders (and Timoshenko & Gere) value, so Sanders is the
+default. No transverse shear deformation: UNCONSERVATIVE for soft-matrix FMC (see
+:mod:`flexshaft.buckling.shear`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg
+import scipy.optimize
+from numpy.typing import NDArray
+
+from flexshaft.buckling._common import (
+    Kinematics,
+    axial_integrals,
+    default_terms,
+    extreme_torques,
+    shell_stiffness,
+)
+from flexshaft.laminate import Laminate
+
+__all__ = ["classical_helix_torque", "classical_galerkin_matrices", "classical_buckling", "helix_operators"]
+
+# rows of the strain operators
+_EPS_X, _EPS_Y, _GAMMA, _KAPPA_X, _KAPPA_Y, _KAPPA_XY, _BETA_X, _BETA_Y = range(8)
+
+
+# Infinite cylinder: a single helical harmonic exp(i(k x + n theta)) solves the equations exactly
+
+
+def helix_operators(radius: float, n: int, k: float, kinematics: str) -> NDArray[np.complex128]:
+    """Strain rows (8) x (U, V, W) for the harmonic exp(i(k x + n theta))."""
+    eta = n / radius
+    sanders = 1.0 if kinematics == "sanders" else 0.0
+    B = np.zeros((8, 3), dtype=complex)
+    B[_EPS_X, 0] = 1j * k
+    B[_EPS_Y, 1], B[_EPS_Y, 2] = 1j * eta, 1.0 / radius
+    B[_GAMMA, 0], B[_GAMMA, 1] = 1j * eta, 1j * k
+    B[_KAPPA_X, 2] = k * k
+    B[_KAPPA_Y, 1], B[_KAPPA_Y, 2] = sanders * 1j * eta / radius, eta * eta
+    B[_KAPPA_XY, 0] = -sanders * 1j * eta / (2.0 * radius)
+    B[_KAPPA_XY, 1] = sanders * 1.5j * k / radius
+    B[_KAPPA_XY, 2] = 2.0 * k * eta
+    B[_BETA_X, 2] = -1j * k
+    B[_BETA_Y, 1], B[_BETA_Y, 2] = sanders / radius, -1j * eta
+    return B
+
+
+def _helix_torques(C: NDArray[np.float64], radius: float, n: int, k: float, kinematics: str) -> tuple[float, float]:
+    """Positive-sense torque and negative-sense magnitude [N m] of the helix exp(i(k x + n theta))."""
+    B = helix_operators(radius, n, k, kinematics)
+    K = B[:6].conj().T @ C @ B[:6]
+    P = np.outer(B[_BETA_X].conj(), B[_BETA_Y])
+    G = -(P + P.conj().T) / (2.0 * np.pi * radius**2)
+    mu = scipy.linalg.eigvalsh(G, K)
+    return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
+
+
+def classical_helix_torque(
+    laminate: Laminate, radius: float, kinematics: Kinematics = "sanders", n_max: int = 40
+) -> dict[str, tuple[float, int, float]]:
+    """Critical torques of an infinitely long classical tube, minimised over 2 <= n <= n_max and k.
+
+    Returns ``{"positive": (T, n, k), "negative": (|T|, n, k)}`` (T [N m], k [rad/m]).
+    """
+    C = shell_stiffness(laminate)
+    best = {"positive": (np.inf, 0, 0.0), "negative": (np.inf, 0, 0.0)}
+    for n in range(2, n_max + 1):
+        for index, key in enumerate(("positive", "negative")):
+            for hand in (1.0, -1.0):
+
+                def load(log_k: float) -> float:
+                    return _helix_torques(C, radius, n, hand * np.exp(log_k), kinematics)[index]
+
+                log_grid = np.log(n / radius) + np.linspace(-8.0, 3.0, 45)
+                values = np.array([load(x) for x in log_grid])
+                i = int(np.argmin(values))
+                if not np.isfinite(values[i]):
+                    continue
+                lo, hi = log_grid[max(i - 1, 0)], log_grid[min(i + 1, log_grid.size - 1)]
+                found = scipy.optimize.minimize_scalar(
+                    load, bounds=(lo, hi), method="bounded", options={"xatol": 1e-7}
+                )
+                if found.fun < best[key][0]:
+                    best[key] = (float(found.fun), n, hand * float(np.exp(found.x)))
+        if n > max(best["positive"][1], best["negative"][1]) + 3:
+            break
+    return best
+
+
+# Finite length, simply supported: Ritz with axial sine/cosine series
+
+
+def _ritz_operators(
+    radius: float, length: float, n: int, n_terms: int, kinematics: str
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.int_]]:
+    """Strain rows (8) x dofs, split into the sin and cos parts, and the axial index of each dof.
+
+    dofs: U_0..U_M (cos), V_1..V_M (sin), W_1..W_M (sin).
+    """
+    M = n_terms
+    m_u, m_vw = np.arange(0, M + 1), np.arange(1, M + 1)
+    m = np.concatenate([m_u, m_vw, m_vw])
+    u, v, w = slice(0, M + 1), slice(M + 1, 2 * M + 1), slice(2 * M + 1, 3 * M + 1)
+    xi_u, xi = m_u * np.pi / length, m_vw * np.pi / length
+    eta = n / radius
+    sanders = 1.0 if kinematics == "sanders" else 0.0
+    Bs = np.zeros((8, m.size), dtype=complex)
+    Bc = np.zeros((8, m.size), dtype=complex)
+    Bs[_EPS_X, u] = -xi_u                                   # d/dx cos = -xi sin
+    Bs[_EPS_Y, v], Bs[_EPS_Y, w] = 1j * eta, 1.0 / radius
+    Bc[_GAMMA, u], Bc[_GAMMA, v] = 1j * eta, xi
+    Bs[_KAPPA_X, w] = xi**2
+    Bs[_KAPPA_Y, w], Bs[_KAPPA_Y, v] = eta**2, sanders * 1j * eta / radius
+    Bc[_KAPPA_XY, w] = -2j * eta * xi
+    Bc[_KAPPA_XY, v] = sanders * 1.5 * xi / radius
+    Bc[_KAPPA_XY, u] = -sanders * 0.5j * eta / radius
+    Bc[_BETA_X, w] = -xi
+    Bs[_BETA_Y, w], Bs[_BETA_Y, v] = -1j * eta, sanders / radius
+    return Bs, Bc, m
+
+
+def assemble_ritz(
+    Bs: NDArray[np.complex128], Bc: NDArray[np.complex128], m: NDArray[np.int_], C: NDArray[np.float64],
+    radius: float, length: float,
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    """K [N m] and G per unit torque [-] from sin/cos strain rows; the last two rows are beta_x, beta_y."""
+    integrals = axial_integrals(m, length)
+    n_strains = C.shape[0]
+    parts = (Bs, Bc)
+    area = 2.0 * np.pi * radius
+    K = np.zeros((m.size, m.size), dtype=complex)
+    P = np.zeros_like(K)
+    for p in (0, 1):
+        for q in (0, 1):
+            I = integrals[(p, q)]
+            K += (parts[p][:n_strains].conj().T @ C @ parts[q][:n_strains]) * I
+            P += np.outer(parts[p][-2].conj(), parts[q][-1]) * I
+    G = -(P + P.conj().T) * area / (2.0 * np.pi * radius**2)
+    return area * K, G
+
+
+def classical_galerkin_matrices(
+    laminate: Laminate, radius: float, length: float, n: int, n_terms: int, kinematics: Kinematics = "sanders"
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    """Ritz stiffness K [N m] and load matrix G per unit torque for harmonic n; K a = T G a.
+
+    dofs (U_0..U_M, V_1..V_M, W_1..W_M); both matrices complex Hermitian, K positive definite.
+    """
+    Bs, Bc, m = _ritz_operators(radius, length, n, n_terms, kinematics)
+    return assemble_ritz(Bs, Bc, m, shell_stiffness(laminate), radius, length)
+
+
+def ritz_mode(K: NDArray[np.complex128], G: NDArray[np.complex128], torque: float, w: slice) -> NDArray[np.complex128]:
+    """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque."""
+    lu = scipy.linalg.lu_factor(K - torque * (1.0 - 1e-9) * G)
+    vector = np.random.default_rng(0).standard_normal(K.shape[0]).astype(complex)
+    for _ in range(4):
+        vector = scipy.linalg.lu_solve(lu, G @ vector)
+        vector /= np.linalg.norm(vector)
+    coefficients = vector[w]
+    return coefficients / coefficients[np.argmax(np.abs(coefficients))]
+
+
+def classical_buckling(
+    laminate: Laminate, radius: float, length: float, kinematics: Kinematics, n_terms: int | None, n_max: int
+) -> dict:
+    """Ritz minimisation over n of the classical shell, both senses.
+
+    Returns a dict with, per sense key ``True`` (positive) / ``False`` (negative), the tuple
+    (torque [N m], n, W coefficients of the mode), and ``"n_terms"``.
+    """
+    if n_terms is None:
+        helix = classical_helix_torque(laminate, radius, kinematics)
+        M = default_terms(max(abs(helix["positive"][2]), abs(helix["negative"][2])), length)
+    else:
+        M = int(n_terms)
+    best = {True: (np.inf, 0), False: (np.inf, 0)}  # sense (positive?) -> (torque, n)
+    for n in range(2, n_max + 1):
+        torques = extreme_torques(*classical_galerkin_matrices(laminate, radius, length, n, M, kinematics))
+        for positive, torque in zip((True, False), torques):
+            if torque < best[positive][0]:
+                best[positive] = (torque, n)
+        if all(np.isfinite(t) and n >= n_best + 3 for t, n_best in best.values()):
+            break
+    w = slice(2 * M + 1, 3 * M + 1)
+    out: dict = {"n_terms": M}
+    for positive, (torque, n_best) in best.items():
+        if np.isfinite(torque):
+            K, G = classical_galerkin_matrices(laminate, radius, length, n_best, M, kinematics)
+            mode = ritz_mode(K, G, torque if positive else -torque, w)
+        else:
+            mode = np.full(M, np.nan, dtype=complex)
+        out[positive] = (float(torque), n_best, mode)
+    return out
