@@ -22,7 +22,7 @@ from flexshaft.design import (
     with_overrides,
 )
 from flexshaft.design.schema import ActiveBearing, ContactBearing, Isotropic, Lamina
-from flexshaft.design.units import rpm_to_rad_s
+from flexshaft.units import rpm_to_rad_s
 
 BASELINE = baseline_text()
 

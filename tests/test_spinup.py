@@ -18,7 +18,7 @@ from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.design import baseline_design, with_overrides
-from flexshaft.studies.run import actuator_response
+from flexshaft.analyses.response import actuator_response
 
 
 @pytest.fixture(scope="module")

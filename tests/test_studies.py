@@ -13,7 +13,7 @@ xr = pytest.importorskip("xarray")
 pytest.importorskip("matplotlib")
 
 from flexshaft.design import baseline_design, with_overrides
-from flexshaft.sweep.studies import DOMINANT_STRESS_CODES, ply_angle_study, wall_thickness_study
+from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES, ply_angle_study, wall_thickness_study
 
 COARSE = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
 
@@ -80,7 +80,8 @@ def test_wall_study_first_frequency_follows_eq_3_3():
 
 def test_design_studies_report_level_renders(coarse, tmp_path):
     from flexshaft.report.html import render_report
-    from flexshaft.studies.chapter3 import design_studies, design_studies_section, headline, save_study_data
+    from flexshaft.report.studies_section import design_studies_section
+    from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
 
     labels = []
     res = design_studies(coarse, "report", progress=labels.append)  # timing: benchmarks/, not tests

@@ -15,7 +15,7 @@ def peak_actuator_force(point):
     """A real (small) analysis per point: the actuator force at the operating speed."""
     from flexshaft.analyses import imbalance_response
     from flexshaft.assembly.loads import imbalance_loads
-    from flexshaft.studies.run import actuator_response
+    from flexshaft.analyses.response import actuator_response
 
     model = point.model
     speed = point.axes["speed"]

@@ -12,10 +12,11 @@ from __future__ import annotations
 import functools
 from contextlib import nullcontext
 
-__all__ = ["single_blas_thread"]
+__all__ = ["one_blas_thread", "single_blas_thread"]
 
 
-def _limits():
+def one_blas_thread():
+    """Context manager limiting BLAS to one thread (a no-op without threadpoolctl)."""
     try:
         from threadpoolctl import threadpool_limits
     except ImportError:  # pragma: no cover - threadpoolctl is a dependency
@@ -28,7 +29,7 @@ def single_blas_thread(func):
 
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
-        with _limits():
+        with one_blas_thread():
             return func(*args, **kwargs)
 
     return wrapper

@@ -23,9 +23,10 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine
 from flexshaft.assembly.model import Model
+from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Campbell", "CriticalSpeed", "EigenvalueCurves", "TrackedModes", "campbell", "critical_speeds",
-           "default_basis_size", "mac", "track_modes"]
+           "check_speeds", "default_basis_size", "mac", "track_modes"]
 
 
 def default_basis_size(n_modes: int) -> int:
@@ -49,7 +50,7 @@ class CriticalSpeed:
 
     @property
     def speed_rpm(self) -> float:
-        return self.speed * 60 / (2 * np.pi)
+        return rad_s_to_rpm(self.speed)
 
 
 class EigenvalueCurves:
@@ -60,7 +61,7 @@ class EigenvalueCurves:
     @property
     def frequencies(self) -> np.ndarray:
         """Damped natural frequencies Im(s)/2π [Hz]."""
-        return self.eigenvalues.imag / (2 * np.pi)
+        return rad_s_to_hz(self.eigenvalues.imag)
 
     @property
     def real_parts(self) -> np.ndarray:
@@ -220,7 +221,7 @@ class Campbell(EigenvalueCurves):
 
     def __repr__(self) -> str:
         ns, nm = self.eigenvalues.shape
-        top = self.speeds[-1] * 60 / (2 * np.pi) if ns else 0.0
+        top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
         return (f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
                 f"internal damping {self.internal_damping!r})")
 
@@ -243,7 +244,7 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
     damped : bool
         Include bearing dampers, actuator damping and the members' hysteretic loss.
     """
-    speeds = _check_speeds(speeds)
+    speeds = check_speeds(speeds)
     if int(n_modes) != n_modes or n_modes < 1:
         raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
     red = reduce(model, basis_size or default_basis_size(int(n_modes)))
@@ -255,7 +256,7 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
                     tracked.component, model.internal_damping)
 
 
-def _check_speeds(speeds) -> np.ndarray:
+def check_speeds(speeds) -> np.ndarray:
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
     if speeds.ndim != 1 or speeds.size == 0:
         raise ValueError("speeds must be a non-empty 1-D sequence [rad/s]")

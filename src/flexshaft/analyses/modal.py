@@ -20,6 +20,7 @@ from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
+from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
 
@@ -72,7 +73,7 @@ class Modes:
     internal_damping: str = "rotating"
 
     def __repr__(self) -> str:
-        rpm = self.speed * 60 / (2 * np.pi)
+        rpm = rad_s_to_rpm(self.speed)
         freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
         more = ", ..." if self.eigenvalues.size > 6 else ""
         return f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, internal damping {self.internal_damping!r})"
@@ -80,12 +81,12 @@ class Modes:
     @property
     def frequencies(self) -> np.ndarray:
         """Damped natural frequencies Im(s)/2π [Hz]."""
-        return self.eigenvalues.imag / (2 * np.pi)
+        return rad_s_to_hz(self.eigenvalues.imag)
 
     @property
     def undamped_frequencies(self) -> np.ndarray:
         """|s|/2π [Hz]."""
-        return np.abs(self.eigenvalues) / (2 * np.pi)
+        return rad_s_to_hz(np.abs(self.eigenvalues))
 
     @property
     def damping_ratios(self) -> np.ndarray:

@@ -17,6 +17,8 @@ __all__ = [
     "imbalance_response",
     "orbit_amplitude",
     "bearing_forces",
+    "actuator_response",
+    "worst_case_orbits",
     "static_actuator_forces",
     "static_response",
 ]
@@ -226,3 +228,33 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
             gain = link.stiffness + 1j * omega * link.damping
             out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
     return out
+
+
+def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
+    """Relative orbit amplitude [m] and force amplitude [N] at each actuator.
+
+    ``q`` is (ndof, n) complex at frequencies ``omegas`` [rad/s]; the force is the carried
+    force ``G(iω) d_s − k_s d_a`` of the magnetic bearing (``C(iω) d`` for the thesis's PD
+    bearing).
+    """
+    disp, force = {}, {}
+    for a in model.actuators:
+        d = a.lateral_rows @ q  # (2, n)
+        s = 1j * np.asarray(omegas)
+        disp[a.name] = orbit_amplitude(d[0], d[1])
+        if a.collocated:
+            force[a.name] = np.abs(a.law(s)) * disp[a.name]
+        else:
+            f = a.carried_force(q, s)
+            force[a.name] = orbit_amplitude(f[0], f[1])
+    return disp, force
+
+
+def worst_case_orbits(model: Model, q: np.ndarray):
+    """Shaft orbit amplitudes (nodes, cases, speeds) [m] of responses ``q`` (ndof, cases,
+    speeds) and the worst load case at each speed (the largest orbit over the nodes)."""
+    dm = model.dofs
+    n = np.arange(dm.n_shaft_nodes)
+    amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])  # (nodes, cases, speeds)
+    case = np.argmax(amp.max(axis=0), axis=0)  # worst case per speed
+    return amp, case

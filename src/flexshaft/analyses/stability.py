@@ -41,10 +41,11 @@ from typing import Literal
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.campbell import EigenvalueCurves, _check_speeds, default_basis_size, track_modes
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, spectrum
+from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
+from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["DampingModel", "STABILITY_TOLERANCE", "StabilityResult", "rotation_generator", "stability", "onset_speed"]
 
@@ -104,8 +105,8 @@ class StabilityResult(EigenvalueCurves):
     onset_kind: str | None = None
 
     def __repr__(self) -> str:
-        top = self.speeds[-1] * 60 / (2 * np.pi)
-        onset = "stable" if self.onset_speed is None else f"onset {self.onset_speed * 60 / (2 * np.pi):.0f} rpm"
+        top = rad_s_to_rpm(self.speeds[-1])
+        onset = "stable" if self.onset_speed is None else f"onset {rad_s_to_rpm(self.onset_speed):.0f} rpm"
         if self.onset_kind == "divergence":
             onset += " (divergence)"
         return (f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
@@ -176,7 +177,7 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     reduced : ReducedModel or None
         A precomputed reduction of ``model`` to reuse (e.g. across derivative gains).
     """
-    speeds = _check_speeds(speeds)
+    speeds = check_speeds(speeds)
     if int(n_modes) != n_modes or n_modes < 1:
         raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
     if damping_model not in ("hysteretic", "viscous"):

@@ -5,8 +5,8 @@
 >>> design.shaft.ply_angles_deg
 (55.0, -55.0, 0.0, 0.0, 0.0, 0.0, -55.0, 55.0)
 
-Only pydantic, the standard library and :mod:`flexshaft.laminate` (numpy; its
-:func:`~flexshaft.laminate.parse_layup` is the one layup parser) are imported here.
+Only pydantic and the standard library are imported here: the design package is a data leaf
+(:mod:`flexshaft.design.layup` holds the one layup parser).
 """
 
 from flexshaft.design.io import (

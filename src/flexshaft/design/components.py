@@ -2,7 +2,7 @@
 
 Geometry in [m], masses [kg], inertias [kg m²], stiffness [N/m, N m/rad], damping [N s/m,
 N m s/rad]. The shaft layup is kept as the user's string; it is parsed (and refused with the
-reason when malformed) by :func:`flexshaft.laminate.parse_layup`, the one layup parser of the
+reason when malformed) by :func:`flexshaft.design.layup.parse_layup`, the one layup parser of the
 package, and expanded to ply angles [deg] by :attr:`Shaft.ply_angles_deg`.
 """
 
@@ -32,7 +32,7 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
-from flexshaft.laminate import parse_layup
+from flexshaft.design.layup import parse_layup
 
 __all__ = [
     "ActiveBearing",

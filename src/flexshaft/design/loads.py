@@ -23,7 +23,7 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
-from flexshaft.design.units import rpm_to_rad_s
+from flexshaft.units import rpm_to_rad_s
 
 __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 

@@ -22,9 +22,16 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
-from flexshaft.laminate import DEFAULT_NU_23, DEFAULT_SHEAR_CORRECTION
+from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
-__all__ = ["Isotropic", "Lamina", "Material", "DEFAULT_ALPHA_L", "DEFAULT_ALPHA_T", "DEFAULT_STRESS_FREE_TEMPERATURE_C"]
+__all__ = ["DEFAULT_ALPHA_L", "DEFAULT_ALPHA_T", "DEFAULT_NU_23", "DEFAULT_SHEAR_CORRECTION",
+           "DEFAULT_STRESS_FREE_TEMPERATURE_C", "Isotropic", "Lamina", "Material"]
+
+#: Transverse Poisson ratio nu_23 [-] behind the default G_23 = E_T / (2 (1 + nu_23)) = E_T / 3.
+DEFAULT_NU_23 = 0.5
+#: Default transverse shear correction factor k [-] of first-order shear deformation theory
+#: (Reissner 1945, Mindlin 1951: 5/6 is exact for the energy of a homogeneous section).
+DEFAULT_SHEAR_CORRECTION = 5.0 / 6.0
 
 #: Thermal expansion along the fibres [1/K] (assumed): carbon fibre dominates, alpha_1 ~ alpha_f
 #: of T700S, -0.38e-6 1/K (Toray T700S data sheet), the soft matrix adding nothing (Schapery 1968).
@@ -42,7 +49,7 @@ DEFAULT_STRESS_FREE_TEMPERATURE_C = 100.0
 _ALPHA_LIMIT = 1e-3
 
 ShearCorrection = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=1.0)]
-Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-273.15, le=400.0)]
+Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0)]
 
 
 class Lamina(FrozenModel):
@@ -144,7 +151,7 @@ class Lamina(FrozenModel):
     @property
     def stress_free_temperature(self) -> float:
         """Stress-free temperature [K]."""
-        return self.stress_free_temperature_c + 273.15
+        return celsius_to_kelvin(self.stress_free_temperature_c)
 
 
 class Isotropic(FrozenModel):

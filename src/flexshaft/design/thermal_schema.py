@@ -14,7 +14,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from flexshaft.design.fields import FrozenModel, Positive
-from flexshaft.design.units import ZERO_CELSIUS
+from flexshaft.units import ZERO_CELSIUS
 
 __all__ = ["Thermal", "BoomConvection", "ShaftConvection"]
 

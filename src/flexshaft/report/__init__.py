@@ -1,8 +1,7 @@
-"""Figures and the HTML report of ``flexshaft run``.
+"""The HTML report of ``flexshaft run`` (figures come from :mod:`flexshaft.plot`).
 
-The top layer's helper: it takes plain numpy arrays and dicts (never models or analysis
-results) and imports matplotlib only when a figure is drawn, so ``import flexshaft.report``
-stays light. Typical use::
+It consumes results (never builds models) and imports matplotlib only when a figure is drawn,
+so ``import flexshaft.report`` stays light. Typical use::
 
     from flexshaft.report import Section, FigureRef, campbell_figure, save_figure, write_report
 
@@ -12,7 +11,7 @@ stays light. Typical use::
 
 from __future__ import annotations
 
-from flexshaft.report.figures import (
+from flexshaft.plot.driveline import (
     actuator_figure,
     campbell_figure,
     deflected_shape_figure,

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft.report.figures import (
+from flexshaft.plot.driveline import (
     actuator_figure,
     campbell_figure,
     deflected_shape_figure,
@@ -254,7 +254,8 @@ def write_run_report(res, folder: str | Path, generated: str | None = None, desi
     if res.stability is not None:
         sections.append(_stability_section(res, folder, op_rpm))
     if res.design_studies is not None:
-        from flexshaft.studies.chapter3 import design_studies_section, save_study_data
+        from flexshaft.report.studies_section import design_studies_section
+        from flexshaft.studies.chapter3 import save_study_data
 
         save_study_data(res.design_studies, folder / "studies")
         sections.append(design_studies_section(res.design_studies, folder))
@@ -294,7 +295,7 @@ def _onset_text(speed, top):
 
 
 def _stability_section(res, folder, op_rpm) -> Section:
-    from flexshaft.report.stability_figures import real_parts_figure, stability_map_figure
+    from flexshaft.plot.stability import real_parts_figure, stability_map_figure
 
     st = res.stability
     top = st.speeds[-1]
@@ -344,7 +345,7 @@ def _thermal_dict(res) -> dict | None:
 
 
 def _thermal_section(res, folder) -> Section:
-    from flexshaft.report.thermal_figures import shaft_temperature_figure, temperature_profiles_figure
+    from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
 
     th = res.thermal
     env = th["environment"]

@@ -2,7 +2,7 @@
 
 The page needs nothing but itself: inline CSS, no script, no external URL, and every figure
 embedded as a base64 PNG (the PNG and SVG files written by
-:func:`flexshaft.report.figures.save_figure` stay beside it for other uses). A
+:func:`flexshaft.plot.driveline.save_figure` stay beside it for other uses). A
 Content-Security-Policy meta tag forbids any load other than ``data:`` images, so an accidental
 external reference fails visibly instead of silently reaching the network. All text is escaped.
 """

@@ -14,7 +14,7 @@ import json
 import re
 from dataclasses import dataclass
 
-from flexshaft.design.units import rad_s_to_rpm
+from flexshaft.units import rad_s_to_rpm
 from flexshaft.report.html import Preformatted, Section, Table
 
 __all__ = ["MARKERS", "MarkedInput", "inputs_section", "marked_inputs", "report_title"]

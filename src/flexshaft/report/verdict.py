@@ -10,14 +10,13 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from flexshaft.design.units import rad_s_to_rpm
+from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
 from flexshaft.report.html import Section, Table
 
 __all__ = ["VERDICT_COLUMNS", "format_quantity", "location_text", "verdict_rows", "verdict_section"]
 
 #: Columns of the verdict table.
 VERDICT_COLUMNS = ("requirement", "value", "limit", "margin", "status", "where", "note")
-_ZERO_CELSIUS = 273.15
 _STATUS = {"pass": "PASS", "fail": "FAIL", "not evaluated": "not evaluated"}
 
 
@@ -37,7 +36,7 @@ def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> 
     if kind == "force":
         return f"{value:{sign}.4g} N"
     if kind == "temperature":
-        return f"{value:+.1f} K" if margin else f"{value - _ZERO_CELSIUS:.1f} °C"
+        return f"{value:+.1f} K" if margin else f"{kelvin_to_celsius(value):.1f} °C"
     if kind == "fraction":
         return f"{value * 100:+.1f} pts" if margin else f"{value * 100:.1f} %"
     return f"{value:{sign}.3g}"

@@ -12,14 +12,14 @@ import numpy as np
 
 from flexshaft.analyses import imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import Campbell, campbell
-from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.response import actuator_response, worst_case_orbits
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
 from flexshaft.assembly.model import Model
-from flexshaft.summary import model_summary, modes_table
+from flexshaft.analyses.summary import model_summary, modes_table
 
-__all__ = ["RunResults", "run_analysis", "actuator_response"]
+__all__ = ["RunResults", "run_analysis"]
 
 
 @dataclass
@@ -49,35 +49,6 @@ class RunResults:
     design_studies: object = None  # flexshaft.studies.chapter3.DesignStudies
     notes: list = field(default_factory=list)
     verdict: object = None  # flexshaft.studies.verdict.Verdict against the design's [requirements]
-
-
-def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
-    """Relative orbit amplitude [m] and force amplitude [N] at each actuator.
-
-    ``q`` is (ndof, n) complex at frequencies ``omegas`` [rad/s]; the force is the carried
-    force ``G(iω) d_s − k_s d_a`` of the magnetic bearing (``C(iω) d`` for the thesis's PD
-    bearing).
-    """
-    disp, force = {}, {}
-    for a in model.actuators:
-        d = a.lateral_rows @ q  # (2, n)
-        s = 1j * np.asarray(omegas)
-        disp[a.name] = orbit_amplitude(d[0], d[1])
-        if a.collocated:
-            force[a.name] = np.abs(a.law(s)) * disp[a.name]
-        else:
-            f = a.carried_force(q, s)
-            force[a.name] = orbit_amplitude(f[0], f[1])
-    return disp, force
-
-
-def _worst(q: np.ndarray, model: Model):
-    """Shaft orbit envelope (nodes × speeds), worst over load cases (axis 1)."""
-    dm = model.dofs
-    n = np.arange(dm.n_shaft_nodes)
-    amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])  # (nodes, cases, speeds)
-    case = np.argmax(amp.max(axis=0), axis=0)  # worst case per speed
-    return amp, case
 
 
 def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
@@ -110,7 +81,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
     speeds = np.linspace(0.02, 1.10, n_speeds) * max(speed, 1.0)
     Q1 = imbalance_loads(model)
     q = imbalance_response(model, speeds, Q1)  # (ndof, ncases, nspeeds)
-    amp, case = _worst(q, model)
+    amp, case = worst_case_orbits(model, q)
     idx = np.arange(speeds.size)
     q_worst = q[:, case, idx]
     envelope = amp[:, case, idx]

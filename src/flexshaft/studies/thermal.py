@@ -13,7 +13,7 @@ import dataclasses
 import numpy as np
 
 from flexshaft.assembly.model import Model
-from flexshaft.design.units import kelvin_to_celsius
+from flexshaft.units import kelvin_to_celsius
 
 __all__ = ["thermal_results", "thermal_summary", "temperature_profiles", "wall_thickness_sweep",
            "convection_sweep"]

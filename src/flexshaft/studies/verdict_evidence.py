@@ -10,8 +10,6 @@ until its half-power bandwidth is resolved (:func:`flexshaft.analyses.separation
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 
 from flexshaft.analyses import SingularSystemError, imbalance_response
@@ -20,10 +18,8 @@ from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
+from flexshaft.units import celsius_to_kelvin
 from flexshaft.studies.verdict import ActuatorEvidence, Evidence, LateralCritical, ModeDamping
-
-if TYPE_CHECKING:  # run.py imports this module lazily; no import loop at run time
-    from flexshaft.studies.run import RunResults
 
 __all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"]
 
@@ -31,7 +27,6 @@ __all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"
 CRITICAL_SEARCH_TOP = 1.30
 _SCAN_BOTTOM = 0.02
 _SCAN_POINTS = 651  # 0.2 % of the operating speed apart
-_ZERO_CELSIUS = 273.15
 
 
 # ------------------------------------------------------------------------------------------------
@@ -220,7 +215,7 @@ def _temperature(res, notes: dict) -> dict:
             "thermal_runaway": sh is not None and sh.status == "runaway"}
 
 
-def evidence_from_run(res: RunResults) -> Evidence:
+def evidence_from_run(res: object) -> Evidence:
     """Build the verdict's evidence from a :class:`flexshaft.studies.run.RunResults`.
 
     Computes the lateral critical speeds and their amplification factors
@@ -244,7 +239,7 @@ def evidence_from_run(res: RunResults) -> Evidence:
         notes["separation"] = "the operating speed is zero"
     values.update(_temperature(res, notes))
     if design is not None:
-        values["allowable_temperature"] = design.thermal.allowable_temperature_c + _ZERO_CELSIUS
+        values["allowable_temperature"] = celsius_to_kelvin(design.thermal.allowable_temperature_c)
     peak = np.asarray(res.shaft_peak)
     if peak.size:
         k = int(np.argmax(peak))

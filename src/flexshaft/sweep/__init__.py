@@ -9,7 +9,7 @@
 ... )
 >>> ds = run_sweep(study, "runs/wall", jobs=2)     # doctest: +SKIP
 
-The thesis studies of DESIGN.md §3 are in :mod:`flexshaft.sweep.studies`. xarray is imported
+The thesis studies of DESIGN.md §3 are in :mod:`flexshaft.studies.sweeps`. xarray is imported
 when results are assembled; Dask only when a Dask client or address is given.
 """
 

@@ -28,7 +28,6 @@ import json
 import os
 import signal
 import sys
-import tempfile
 import threading
 import time
 from collections.abc import Iterator
@@ -37,10 +36,11 @@ from typing import Any
 
 import numpy as np
 
+from flexshaft.netcdf import write_netcdf
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
-__all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_dataset"]
+__all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_dataset", "write_netcdf"]
 
 RESULTS = "results.nc"
 
@@ -317,21 +317,8 @@ def run_sweep(
             signal.signal(signal.SIGTERM, previous)
     ds = to_dataset(study, values)
     if run_path is not None:
-        _write_netcdf(ds, run_path / RESULTS)
+        write_netcdf(ds, run_path / RESULTS)
     return ds
-
-
-def _write_netcdf(ds, path: Path) -> None:
-    """Write ``ds`` to ``path`` atomically (netCDF4/HDF5 when available, else netCDF3)."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=".nc")
-    os.close(fd)
-    try:
-        ds.to_netcdf(tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def _dask_workers(client) -> int:

@@ -289,13 +289,13 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     Runs with one BLAS thread; the model is built once per distinct design (consecutive
     points differing only in special axes share it).
     """
-    from flexshaft._threads import _limits
+    from flexshaft._threads import one_blas_thread
 
     names = [o.name for o in study.outputs]
     out = np.full((stop - start, len(names)), np.nan)
     cache: dict = {}
     last_key, last_design = None, None
-    with _limits():
+    with one_blas_thread():
         for row, index in enumerate(range(start, stop)):
             values = study.values_at(index)
             key = tuple(values[v.name] for v in study.variables if v.is_design)

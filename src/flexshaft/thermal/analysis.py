@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.assembly.model import Model
-from flexshaft.design.units import kelvin_to_celsius
+from flexshaft.units import kelvin_to_celsius
 from flexshaft.thermal.correlations import Nusselt
 from flexshaft.thermal.heat import HeatSources, LossModel, heat_sources
 from flexshaft.thermal.options import ThermalOptions

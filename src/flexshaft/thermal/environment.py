@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from flexshaft.design.units import celsius_to_kelvin
+from flexshaft.units import celsius_to_kelvin
 
 __all__ = ["STEFAN_BOLTZMANN", "GRAVITY", "PROJECTED_AREA_FRACTION", "ThermalEnvironment"]
 

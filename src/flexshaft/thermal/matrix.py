@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.design.units import celsius_to_kelvin
+from flexshaft.units import celsius_to_kelvin
 from flexshaft.laminate import Lamina
 
 __all__ = ["MatrixTemperatureLaw"]

@@ -19,7 +19,7 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from flexshaft.design.units import celsius_to_kelvin
+from flexshaft.units import celsius_to_kelvin
 from flexshaft.thermal.correlations import ForcedMethod, RotatingMethod
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.matrix import MatrixTemperatureLaw

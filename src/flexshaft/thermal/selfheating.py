@@ -24,7 +24,7 @@ import numpy as np
 
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import scatter
-from flexshaft.design.units import kelvin_to_celsius
+from flexshaft.units import kelvin_to_celsius
 from flexshaft.laminate import Laminate, equivalent_moduli
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
 from flexshaft.thermal.heat import (

@@ -28,7 +28,7 @@ from typing import Literal
 
 from scipy.optimize import brentq
 
-from flexshaft.design.units import kelvin_to_celsius
+from flexshaft.units import kelvin_to_celsius
 from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
 from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment

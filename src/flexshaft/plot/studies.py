@@ -1,9 +1,9 @@
 """Figures of the design studies of thesis chapter 3 (``flexshaft.studies.chapter3``).
 
-Same conventions as :mod:`flexshaft.report.figures`: inputs are plain numpy arrays (or an
+Same conventions as :mod:`flexshaft.plot.driveline`: inputs are plain numpy arrays (or an
 :class:`xarray.Dataset` where named) in SI units with speeds in rpm; lengths are drawn in mm;
 every function returns a :class:`matplotlib.figure.Figure`; matplotlib is imported lazily (Agg,
-no pyplot state) through :func:`flexshaft.report._style.styled`. Nothing here knows of models.
+no pyplot state) through :func:`flexshaft.plot.style.styled`. Nothing here knows of models.
 
 Thesis figure numbers: 3.2 :func:`ply_angle_figure`, 3.3 :func:`two_angle_figure`,
 3.4 :func:`wall_thickness_figure`, 3.5 :func:`forced_response_figure`, 3.6 :func:`gain_figure`,
@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.report._style import MM_PER_M, mark_operating, new_figure, styled, vector
+from flexshaft.plot.style import MM_PER_M, mark_operating, new_figure, styled, vector
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -128,7 +128,7 @@ def modes_cmd(
 
     from flexshaft.assembly import build_model
     from flexshaft.design.schema import MAX_SPEED_RPM
-    from flexshaft.summary import modes_at
+    from flexshaft.analyses.summary import modes_at
 
     _finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM)
     d = _load(design)
@@ -303,7 +303,7 @@ def run(
 
 
 def _add_study_commands() -> None:
-    from flexshaft.sweep.cli import study_app
+    from flexshaft.cli.study import study_app
 
     app.add_typer(study_app, name="study")
 

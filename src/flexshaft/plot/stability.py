@@ -7,7 +7,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.report._style import mark_operating, new_figure, styled, vector
+from flexshaft.plot.style import mark_operating, new_figure, styled, vector
 
 __all__ = ["real_parts_figure", "stability_map_figure"]
 

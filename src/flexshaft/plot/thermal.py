@@ -7,7 +7,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.report._style import new_figure, styled, vector
+from flexshaft.plot.style import new_figure, styled, vector
 
 __all__ = ["shaft_temperature_figure", "temperature_profiles_figure"]
 

@@ -195,7 +195,7 @@ def wall_thickness_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **ru
 def _actuator_outputs(point) -> dict:
     from flexshaft.analyses import imbalance_response
     from flexshaft.assembly.loads import imbalance_loads
-    from flexshaft.studies.run import actuator_response
+    from flexshaft.analyses.response import actuator_response
 
     model = point.model
     q = imbalance_response(model, [model.speed], imbalance_loads(model))

@@ -6,6 +6,7 @@ import numpy as np
 
 from flexshaft.analyses.modal import Modes, modes
 from flexshaft.assembly.model import Model
+from flexshaft.units import hz_to_rpm, rad_s_to_rpm
 
 __all__ = ["model_summary", "modes_table"]
 
@@ -27,7 +28,7 @@ def model_summary(model: Model) -> dict:
         "shaft_E_loss_factor": sh.youngs_modulus.imag / sh.youngs_modulus.real,
         "shaft_G_storage_Pa": sh.shear_modulus.real,
         "shaft_G_loss_factor": sh.shear_modulus.imag / sh.shear_modulus.real,
-        "operating_speed_rpm": model.speed * 60 / (2 * np.pi),
+        "operating_speed_rpm": rad_s_to_rpm(model.speed),
         "torque_Nm": model.power / model.speed if model.speed > 0 else 0.0,
     }
     # total mass from a rigid vertical translation of every node
@@ -46,7 +47,7 @@ def modes_table(m: Modes) -> list[dict]:
         {
             "mode": i + 1,
             "frequency_Hz": float(m.frequencies[i]),
-            "frequency_rpm": float(m.frequencies[i] * 60),
+            "frequency_rpm": float(hz_to_rpm(m.frequencies[i])),
             "damping_ratio": float(m.damping_ratios[i]),
             "log_decrement": float(m.log_decrements[i]),
             "kind": str(m.kind[i]),

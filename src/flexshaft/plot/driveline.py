@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.report._style import (
+from flexshaft.plot.style import (
     MM_PER_M,
     RPM_PER_HZ,
     WHIRL_LINESTYLE,
@@ -27,7 +27,7 @@ from flexshaft.report._style import (
     styled,
     vector,
 )
-from flexshaft.report.shapes import deflected_shape_figure, mode_shapes_figure
+from flexshaft.plot.shapes import deflected_shape_figure, mode_shapes_figure
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -33,7 +33,7 @@ def _design(path: Optional[Path]):
 
 def _figure(fig, out: Optional[Path], stem: str) -> None:
     """Save a study figure (PNG and SVG) into ``out`` (default ``flexshaft-study-STEM``)."""
-    from flexshaft.report.figures import save_figure
+    from flexshaft.plot.driveline import save_figure
 
     folder = out if out is not None else Path(f"flexshaft-study-{stem}")
     paths = save_figure(fig, folder, stem)
@@ -54,13 +54,13 @@ def _run(func, design, out, jobs, dask, **kw):
 def ply_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(5.0, min=0.5, max=45.0, help="Angle step [deg]."),
               out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
     """Safety factor vs α of (α/−α/−α/α), no imbalance (thesis: optimum ±55°)."""
-    from flexshaft.sweep.studies import ply_angle_study
+    from flexshaft.studies.sweeps import ply_angle_study
 
     ds = _run(ply_angle_study, design, out, jobs, dask, angles=np.arange(step, 90.0, step))
     best = ds["safety_factor"].idxmax("alpha").item()
     typer.echo(f"best α = ±{best:g}°: safety factor {ds['safety_factor'].max().item():.2f}")
-    from flexshaft.report.study_figures import ply_angle_figure
-    from flexshaft.sweep.studies import DOMINANT_STRESS_CODES
+    from flexshaft.plot.studies import ply_angle_figure
+    from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES
 
     dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
     _figure(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), out, "ply_angle")
@@ -70,8 +70,8 @@ def ply_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(5.0, 
 def two_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(15.0, min=1.0, max=45.0, help="Angle step [deg]."),
               out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
     """Safety factor map of (α/−α/β/−β)s laminates, no imbalance (thesis: best (55/−55/0/0)s)."""
-    from flexshaft.report.study_figures import two_angle_figure
-    from flexshaft.sweep.studies import two_angle_study
+    from flexshaft.plot.studies import two_angle_figure
+    from flexshaft.studies.sweeps import two_angle_study
 
     angles = np.arange(0.0, 90.0 + 1e-9, step)
     ds = _run(two_angle_study, design, out, jobs, dask, alphas=angles, betas=angles)
@@ -85,11 +85,11 @@ def two_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(15.0,
 @study_app.command("wall")
 def wall(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
     """Safety factor (with/without imbalance), first frequency, spin-up peak vs wall thickness."""
-    from flexshaft.sweep.studies import wall_thickness_study
+    from flexshaft.studies.sweeps import wall_thickness_study
 
     ds = _run(wall_thickness_study, design, out, jobs, dask)
     typer.echo(ds[["safety_factor", "safety_factor_no_imbalance", "spinup_peak_deflection"]].to_dataframe().to_string())
-    from flexshaft.report.study_figures import wall_thickness_figure
+    from flexshaft.plot.studies import wall_thickness_figure
 
     _figure(wall_thickness_figure(ds.wall_thickness.values, ds["safety_factor"].values,
                                   ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values), out, "wall")
@@ -98,11 +98,11 @@ def wall(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int
 @study_app.command("gain")
 def gain(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
     """Safety factor and actuator displacement vs the proportional gain K_p."""
-    from flexshaft.sweep.studies import proportional_gain_study
+    from flexshaft.studies.sweeps import proportional_gain_study
 
     ds = _run(proportional_gain_study, design, out, jobs, dask)
     typer.echo(ds[["safety_factor", "actuator_displacement"]].to_dataframe().to_string())
-    from flexshaft.report.study_figures import gain_figure
+    from flexshaft.plot.studies import gain_figure
 
     _figure(gain_figure(ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values), out, "gain")
 
@@ -110,11 +110,11 @@ def gain(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int
 @study_app.command("buckling")
 def buckling(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
     """Torsional buckling safety factor vs wall thickness."""
-    from flexshaft.sweep.studies import buckling_study
+    from flexshaft.studies.sweeps import buckling_study
 
     ds = _run(buckling_study, design, out, jobs, dask)
     typer.echo(ds["buckling_safety_factor"].to_dataframe().to_string())
-    from flexshaft.report.study_figures import buckling_figure
+    from flexshaft.plot.studies import buckling_figure
 
     _figure(buckling_figure(ds.wall_thickness.values, ds["buckling_safety_factor"].values), out, "buckling")
 
@@ -123,19 +123,19 @@ def buckling(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs:
 def spinup_map_cmd(design: Optional[Path] = _DESIGN, n_gains: int = typer.Option(30, min=2, max=400),
                    n_speeds: int = typer.Option(400, min=10, max=20000), out: Optional[Path] = _OUT) -> None:
     """Peak shaft deflection, actuator displacement and force over a (K_p, K_d) grid."""
-    from flexshaft.sweep.run import _write_netcdf
-    from flexshaft.sweep.studies import spinup_gain_map
+    from flexshaft.netcdf import write_netcdf
+    from flexshaft.studies.sweeps import spinup_gain_map
 
     kd = np.concatenate([[0.0], np.logspace(1, 4.5, n_gains - 1)])
     ds = spinup_gain_map(np.logspace(5, 8, n_gains), kd, design=_design(design), n_speeds=n_speeds)
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
-        _write_netcdf(ds, out / "results.nc")
+        write_netcdf(ds, out / "results.nc")
     i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
     best = (float(ds.kp.values[i[0]]), float(ds.kd.values[i[1]]))
     typer.echo(f"best K_p = {best[0]:.3e} N/m, K_d = {best[1]:.3e} N s/m: "
                f"peak deflection {1e3 * ds['shaft_peak'].values[i]:.2f} mm")
-    from flexshaft.report.study_figures import gain_map_figure
+    from flexshaft.plot.studies import gain_map_figure
 
     for var, scale, label in (("shaft_peak", 1e3, "max spin-up shaft orbit [mm]"),
                               ("actuator_displacement_peak", 1e3, "max actuator displacement [mm]"),
@@ -154,7 +154,8 @@ def all_studies(design: Optional[Path] = _DESIGN,
     import json
 
     from flexshaft.report.html import write_report
-    from flexshaft.studies.chapter3 import design_studies, design_studies_section, headline, save_study_data
+    from flexshaft.report.studies_section import design_studies_section
+    from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
 
     if resolution not in ("report", "full"):
         typer.echo(f"error: --resolution must be 'report' or 'full', got {resolution!r}", err=True)

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.report._style import MM_PER_M, new_figure, styled, vector
+from flexshaft.plot.style import MM_PER_M, new_figure, styled, vector
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -1,0 +1,70 @@
+"""Unit conversions used at the edges (design file, report, CLI): the one module for them.
+
+SI floats inside, units at the edges (STYLE.md principle 5): rev/min, hertz of rotation,
+degrees Celsius, millimetres are converted here and nowhere else. The functions work on
+floats and numpy arrays alike. Layup strings (angles in degrees) are parsed by
+:func:`flexshaft.design.layup.parse_layup`, the one layup parser of the package.
+"""
+
+from __future__ import annotations
+
+import math
+
+__all__ = [
+    "MM_PER_M",
+    "ZERO_CELSIUS",
+    "celsius_to_kelvin",
+    "hz_to_rpm",
+    "kelvin_to_celsius",
+    "m_to_mm",
+    "rad_s_to_hz",
+    "rad_s_to_rpm",
+    "rpm_to_hz",
+    "rpm_to_rad_s",
+]
+
+#: Millimetres per metre.
+MM_PER_M = 1000.0
+
+#: 0 °C in kelvin [K].
+ZERO_CELSIUS = 273.15
+
+
+def rpm_to_rad_s(speed_rpm: float) -> float:
+    """Convert a rotational speed from [rev/min] to [rad/s]."""
+    return speed_rpm * 2.0 * math.pi / 60.0
+
+
+def rad_s_to_rpm(speed: float) -> float:
+    """Convert a rotational speed from [rad/s] to [rev/min]."""
+    return speed * 60.0 / (2.0 * math.pi)
+
+
+def celsius_to_kelvin(temperature_c: float) -> float:
+    """Convert a temperature from [°C] to [K]."""
+    return temperature_c + ZERO_CELSIUS
+
+
+def kelvin_to_celsius(temperature: float) -> float:
+    """Convert a temperature from [K] to [°C]."""
+    return temperature - ZERO_CELSIUS
+
+
+def rad_s_to_hz(omega):
+    """Convert an angular frequency from [rad/s] to [Hz]."""
+    return omega / (2.0 * math.pi)
+
+
+def hz_to_rpm(frequency):
+    """A frequency [Hz] as the spin speed [rev/min] whose 1× line it lies on."""
+    return frequency * 60.0
+
+
+def rpm_to_hz(speed_rpm):
+    """A spin speed [rev/min] as its rotation frequency [Hz]."""
+    return speed_rpm / 60.0
+
+
+def m_to_mm(length):
+    """Convert a length from [m] to [mm]."""
+    return length * MM_PER_M
