@@ -21,6 +21,7 @@ from scipy.optimize import linear_sum_assignment
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
@@ -187,7 +188,7 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
 
 
 @dataclass(frozen=True)
-class Campbell(EigenvalueCurves):
+class Campbell(EigenvalueCurves, ResultMixin):
     """Tracked damped eigenvalues over speed.
 
     Attributes
@@ -224,6 +225,12 @@ class Campbell(EigenvalueCurves):
         top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
         return (f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
                 f"internal damping {self.internal_damping!r})")
+
+    def to_dataset(self):
+        """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
+        from flexshaft.analyses.datasets import curves_dataset
+
+        return curves_dataset(self, "Campbell diagram")
 
 
 @single_blas_thread

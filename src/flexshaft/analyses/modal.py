@@ -17,6 +17,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -35,7 +36,7 @@ def _log_decrement(zeta: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class Modes:
+class Modes(ResultMixin):
     """Eigen-solution at one speed, sorted by undamped natural frequency |s|.
 
     Attributes
@@ -77,6 +78,12 @@ class Modes:
         freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
         more = ", ..." if self.eigenvalues.size > 6 else ""
         return f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, internal damping {self.internal_damping!r})"
+
+    def to_dataset(self):
+        """Frequencies, damping, labels and shaft/boom translations of every mode (xarray)."""
+        from flexshaft.analyses.datasets import modes_dataset
+
+        return modes_dataset(self)
 
     @property
     def frequencies(self) -> np.ndarray:

@@ -9,9 +9,13 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError
+from flexshaft.analyses.results import ResultMixin
+from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
+    "HarmonicResponse",
     "SingularSystemError",
     "frequency_response",
     "imbalance_response",
@@ -22,6 +26,60 @@ __all__ = [
     "static_actuator_forces",
     "static_response",
 ]
+
+
+class HarmonicResponse(np.ndarray, ResultMixin):
+    """Complex amplitudes on the full DOF vector [m, rad], an ndarray with its context.
+
+    Shape ``(ndof, [ncases,] nfrequencies)`` (or without the trailing axis for one scalar
+    frequency). Indexing, arithmetic and ufuncs give plain ndarrays; the object itself carries
+    ``frequencies`` (excitation ω per trailing index [rad/s]), ``spin_speeds`` (Ω [rad/s]),
+    ``dofs`` (the model's :class:`~flexshaft.assembly.dofs.DofMap`), ``excitation``
+    ("harmonic" or "imbalance") and ``internal_damping``, and offers ``.plot()`` and
+    ``.to_dataset()``.
+    """
+
+    _CONTEXT = ("frequencies", "spin_speeds", "dofs", "excitation", "internal_damping")
+
+    def __new__(cls, values, frequencies, spin_speeds, dofs: DofMap, excitation: str, internal_damping: str):
+        obj = np.asarray(values).view(cls)
+        obj.frequencies = np.atleast_1d(np.asarray(frequencies, dtype=float))
+        obj.spin_speeds = np.atleast_1d(np.asarray(spin_speeds, dtype=float))
+        obj.dofs, obj.excitation, obj.internal_damping = dofs, excitation, internal_damping
+        return obj
+
+    def __array_finalize__(self, obj) -> None:
+        for name in self._CONTEXT:
+            setattr(self, name, getattr(obj, name, None))
+
+    def __getitem__(self, key):
+        return np.asarray(self)[key]
+
+    def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):
+        inputs = tuple(np.asarray(x) if isinstance(x, HarmonicResponse) else x for x in inputs)
+        if "out" in kwargs:
+            kwargs["out"] = tuple(np.asarray(x) if isinstance(x, HarmonicResponse) else x for x in kwargs["out"])
+        return getattr(ufunc, method)(*inputs, **kwargs)
+
+    def __reduce__(self):  # pickles as a plain array
+        return np.asarray(self).__reduce__()
+
+    def __repr__(self) -> str:
+        if self.dofs is None:
+            return repr(np.asarray(self))
+        f = rad_s_to_rpm(self.frequencies) if self.excitation == "imbalance" else self.frequencies / (2 * np.pi)
+        unit = "rpm" if self.excitation == "imbalance" else "Hz"
+        span = f"{f.min():.4g}–{f.max():.4g} {unit}" if f.size > 1 else f"{f[0]:.4g} {unit}"
+        return (f"HarmonicResponse({self.excitation}, shape {self.shape}, {f.size} frequencies {span}, "
+                f"peak |q| {np.abs(np.asarray(self)).max():.3g} m or rad, internal damping {self.internal_damping!r})")
+
+    __str__ = __repr__
+
+    def to_dataset(self):
+        """Translations of every node by load case and frequency (see :mod:`flexshaft.analyses.datasets`)."""
+        from flexshaft.analyses.datasets import response_dataset
+
+        return response_dataset(self)
 
 
 def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None = None) -> np.ndarray:
@@ -35,7 +93,7 @@ def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None
     return out
 
 
-def frequency_response(model: Model, loads, omega, speed: float | None = None) -> np.ndarray:
+def frequency_response(model: Model, loads, omega, speed: float | None = None) -> HarmonicResponse:
     """Complex amplitudes q(ω) for harmonic loads ``Q e^{iωt}`` at spin speed Ω.
 
     Parameters
@@ -49,7 +107,7 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
 
     Returns
     -------
-    ndarray
+    HarmonicResponse
         Same shape as ``loads`` for scalar ω, else with a trailing axis over ω [m, rad].
 
     Raises
@@ -64,10 +122,11 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
     if not np.isfinite(speed) or speed < 0:
         raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
     out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
-    return out[..., 0] if np.ndim(omega) == 0 else out
+    out = out[..., 0] if np.ndim(omega) == 0 else out
+    return HarmonicResponse(out, omegas, np.full(omegas.size, float(speed)), model.dofs, "harmonic", model.internal_damping)
 
 
-def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> np.ndarray:
+def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> HarmonicResponse:
     """Synchronous response to a rotating load ``Ω² Q₁ e^{iΩt}`` at each speed Ω.
 
     Parameters
@@ -80,13 +139,14 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> np.ndar
 
     Returns
     -------
-    ndarray
+    HarmonicResponse
         (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
     """
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
     if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
         raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
-    return _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
+    out = _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
+    return HarmonicResponse(out, speeds, speeds, model.dofs, "imbalance", model.internal_damping)
 
 
 def _static_parts(model: Model, speed: float):

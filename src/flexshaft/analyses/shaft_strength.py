@@ -45,6 +45,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.elements.shape import beam_shape
 from flexshaft.laminate import (
@@ -130,7 +131,7 @@ def static_load_parts(model: Model) -> dict[str, np.ndarray]:
 
 
 @dataclass(frozen=True)
-class StrengthResult:
+class StrengthResult(ResultMixin):
     """Minimum Tsai-Wu safety factor, where it occurs, and what each load contributes.
 
     ``along_shaft`` is the minimum over plies, phases and signs at each element end
@@ -160,6 +161,16 @@ class StrengthResult:
     spin_speed: float = 0.0
     hoop_resultant: float = 0.0
     temperature_change: float = 0.0
+
+    def __repr__(self) -> str:
+        return (f"StrengthResult(Tsai-Wu safety factor {self.safety_factor:.3g} at x = {self.x:.3g} m, ply {self.ply + 1} "
+                f"({self.ply_angle_deg:+.0f}°), {self.dominant_stress} dominates)")
+
+    def to_dataset(self):
+        """The safety factor along the shaft, with the critical point in the attributes (xarray)."""
+        from flexshaft.analyses.datasets import strength_dataset
+
+        return strength_dataset(self)
 
 
 def _unit_ply_stresses(laminate: Laminate) -> tuple[np.ndarray, np.ndarray]:

@@ -39,6 +39,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
+from flexshaft.analyses.results import ResultMixin, new_dataset
+from flexshaft.units import rad_s_to_rpm
 from flexshaft.analyses.banded import BandedHarmonicSolver
 from flexshaft.assembly.model import Controller, Model
 
@@ -243,7 +245,7 @@ def _dynamic_gains(controllers, speeds: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class SpinupCurves:
+class SpinupCurves(ResultMixin):
     """Spin-up response of one controller setting.
 
     Attributes
@@ -273,6 +275,30 @@ class SpinupCurves:
     def shaft_peak(self) -> np.ndarray:
         """Largest shaft orbit over the nodes at each speed [m]."""
         return self.shaft_orbit.max(axis=0)
+
+    def __repr__(self) -> str:
+        k = int(np.argmax(self.shaft_peak))
+        return (f"SpinupCurves({self.speeds.size} speeds to {rad_s_to_rpm(self.speeds[-1]):.0f} rpm, peak shaft orbit "
+                f"{self.shaft_peak[k] * 1e3:.3g} mm at {rad_s_to_rpm(self.speeds[k]):.0f} rpm)")
+
+    def to_dataset(self):
+        """Shaft orbit envelope and actuator orbit/force over speed (xarray)."""
+        return new_dataset(
+            {
+                "shaft_orbit": (("x_shaft", "speed"), self.shaft_orbit,
+                                {"units": "m", "long_name": "shaft orbit major semi-axis, worst load case"}),
+                "actuator_displacement": (("actuator", "speed"), self.actuator_displacement,
+                                          {"units": "m", "long_name": "relative orbit at the actuator"}),
+                "actuator_force": (("actuator", "speed"), self.actuator_force,
+                                   {"units": "N", "long_name": "actuator force amplitude"}),
+            },
+            {
+                "speed": ("speed", self.speeds, {"units": "rad/s", "long_name": "spin speed"}),
+                "x_shaft": ("x_shaft", self.shaft_x, {"units": "m", "long_name": "shaft node station"}),
+                "actuator": ("actuator", list(self.actuator_names), {"long_name": "active bearing"}),
+            },
+            "spin-up response",
+        )
 
 
 @single_blas_thread
@@ -314,7 +340,7 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
 
 
 @dataclass(frozen=True)
-class SpinupMap:
+class SpinupMap(ResultMixin):
     """Peaks of the spin-up response over a (K_p, K_d) grid, the same law on every actuator.
 
     Every peak is the largest value over the speeds (and the load cases) of the grid point.
@@ -357,27 +383,28 @@ class SpinupMap:
         return float(self.kp[i]), float(self.kd[j]), float(self.shaft_peak[i, j])
 
     def to_dataset(self):
-        """The map as an :class:`xarray.Dataset` with units in attrs."""
-        import xarray as xr
-
+        """The map as an :class:`xarray.Dataset` with CF-style attributes."""
         dims = ("kp", "kd")
-        return xr.Dataset(
+        return new_dataset(
             {
                 "shaft_peak": (dims, self.shaft_peak, {"units": "m", "long_name": "peak shaft orbit over speed"}),
-                "shaft_peak_speed": (dims, self.shaft_peak_speed, {"units": "rad/s"}),
+                "shaft_peak_speed": (dims, self.shaft_peak_speed, {"units": "rad/s", "long_name": "speed of the peak shaft orbit"}),
                 "actuator_displacement_peak": (
                     dims + ("actuator",),
                     self.actuator_displacement_peak,
                     {"units": "m", "long_name": "peak relative orbit at the actuator"},
                 ),
-                "actuator_force_peak": (dims + ("actuator",), self.actuator_force_peak, {"units": "N"}),
+                "actuator_force_peak": (dims + ("actuator",), self.actuator_force_peak,
+                                        {"units": "N", "long_name": "peak actuator force amplitude"}),
             },
-            coords={
+            {
                 "kp": ("kp", self.kp, {"units": "N/m", "long_name": "proportional gain"}),
                 "kd": ("kd", self.kd, {"units": "N s/m", "long_name": "derivative gain"}),
-                "actuator": ("actuator", list(self.actuator_names)),
+                "actuator": ("actuator", list(self.actuator_names), {"long_name": "active bearing"}),
             },
-            attrs={"speed_min_rad_s": float(self.speeds[0]), "speed_max_rad_s": float(self.speeds[-1]), "n_speeds": self.speeds.size},
+            "spin-up map over the actuator gains",
+            speed_min=float(self.speeds[0]), speed_max=float(self.speeds[-1]), speed_units="rad/s",
+            n_speeds=int(self.speeds.size),
         )
 
 

@@ -42,6 +42,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
@@ -60,7 +61,7 @@ def rotation_generator(model: Model):
 
 
 @dataclass(frozen=True)
-class StabilityResult(EigenvalueCurves):
+class StabilityResult(EigenvalueCurves, ResultMixin):
     """Tracked eigenvalues over speed with the onset of instability.
 
     Attributes
@@ -111,6 +112,18 @@ class StabilityResult(EigenvalueCurves):
             onset += " (divergence)"
         return (f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
                 f"{self.damping_model} method, internal damping {self.internal_damping!r})")
+
+    def to_dataset(self):
+        """Tracked eigenvalues over speed with the onset speed (xarray)."""
+        from flexshaft.analyses.datasets import curves_dataset
+
+        attrs = {"method": self.damping_model, "onset_kind": getattr(self, "onset_kind", "whirl") or "none"}
+        if self.onset_speed is not None:
+            attrs.update(onset_speed=float(self.onset_speed), onset_speed_units="rad/s",
+                         unstable_mode=int(self.unstable_mode) + 1)
+        if self.reference_frequency is not None:
+            attrs.update(reference_frequency=float(self.reference_frequency), reference_frequency_units="rad/s")
+        return curves_dataset(self, "whirl stability", **attrs)
 
     @property
     def stability_margin(self) -> np.ndarray:

@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from flexshaft.analyses.separation import api684_separation
+from flexshaft.analyses.results import ResultMixin, coded, new_dataset
 from flexshaft.design.requirements import Requirements
 
 __all__ = [
@@ -257,10 +258,38 @@ class Check:
 
 
 @dataclass(frozen=True)
-class Verdict:
+class Verdict(ResultMixin):
     """Every requirement check of one design; ``passed`` when none fails."""
 
     checks: tuple[Check, ...]
+
+    def to_dataset(self):
+        """One row per check: value, limit, margin (SI, the unit of each check in ``units``),
+        status coded pass/fail/not_evaluated (xarray)."""
+        import numpy as np
+
+        def number(x):
+            return float("nan") if x is None else float(x)
+
+        status, status_attrs = coded([c.status.replace(" ", "_") for c in self.checks],
+                                     ("pass", "fail", "not_evaluated"), "requirement status")
+        units = [SI_UNITS.get(c.kind, "-").replace("-", "1") for c in self.checks]
+        return new_dataset(
+            {
+                "value": ("check", np.array([number(c.value) for c in self.checks]),
+                          {"long_name": "worst value of the check (unit per check: see check_units)"}),
+                "limit": ("check", np.array([number(c.limit) for c in self.checks]), {"long_name": "required limit"}),
+                "margin": ("check", np.array([number(c.margin) for c in self.checks]),
+                           {"long_name": "signed margin (negative: fails)"}),
+                "status": ("check", status, status_attrs),
+            },
+            {
+                "check": ("check", [c.key for c in self.checks], {"long_name": "requirement"}),
+                "check_title": ("check", [c.title for c in self.checks], {"long_name": "requirement title"}),
+                "check_units": ("check", units, {"long_name": "SI unit of value, limit and margin"}),
+            },
+            "requirements verdict", verdict="PASS" if self.passed else "FAIL", summary=self.summary,
+        )
 
     @property
     def passed(self) -> bool:
