@@ -4,7 +4,6 @@ report-resolution ``design_studies`` on a reduced mesh with its report section r
 from __future__ import annotations
 
 import json
-import time
 
 import numpy as np
 import pytest
@@ -80,10 +79,8 @@ def test_design_studies_report_level_renders(coarse, tmp_path):
     from flexshaft.studies.chapter3 import design_studies, design_studies_section, headline, save_study_data
 
     labels = []
-    t0 = time.perf_counter()
+    # its run time is measured by benchmarks/studies_timing.py, not asserted here
     res = design_studies(coarse, "report", progress=labels.append)
-    elapsed = time.perf_counter() - t0
-    assert elapsed < 25.0
     assert labels and labels[0].startswith("study 1")
     # labelled datasets with units
     assert res.ply_angle["safety_factor"].attrs["units"] == "1"
