@@ -340,7 +340,7 @@ def header_lines(data: dict) -> str:
     lines.append(f"Warm: median (min–max) of {data['repeats']} calls, each on a freshly built model, "
                  "after a first call in the same process. Cold: the first call in a fresh process "
                  "(package imported, model built, not timed).")
-    return "\n".join(lines)
+    return "\n".join("* " + line for line in lines)
 
 
 def _ratio(x: float) -> str:
