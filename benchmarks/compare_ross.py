@@ -1,7 +1,9 @@
-"""flexshaft vs ROSS on the same model: speed ratios and agreement of results.
+"""flexshaft vs ROSS on the same model: warm and cold times, peak memory, agreement of results.
 
-    .venv/bin/python benchmarks/compare_ross.py [--elements 20 50 100] [--ross-json FILE]
-                                              [--save FILE] [--enforce-bars]
+    .venv/bin/python benchmarks/compare_ross.py [--elements 20 50 100] [--repeats 3]
+                                              [--ross-python PY [PY ...]] [--save FILE]
+                                              [--reuse-ross FILE] [--enforce-bars]
+    .venv/bin/python benchmarks/compare_ross.py --table FILE [--update-readme]
 
 The model (``shaft_case.py``): a uniform steel tube, 1.5 m, D_o 50 mm, D_i 30 mm, on two
 isotropic bearings at its ends (k = 1e7 N/m, c = 1e3 N s/m), no disk, meshed with 20, 50 and
@@ -10,17 +12,38 @@ both codes. Cases: imbalance response at mid-span over 500 speeds, frequency res
 frequencies at a fixed spin speed, Campbell diagram over 50 speeds (lowest 8 lateral damped
 natural frequencies).
 
-ROSS (``ross-rotordynamics`` 2.3.0) runs in its own environment, as a subprocess:
-``$ROSS_PYTHON benchmarks/ross_model.py`` (default ``/work/ross-venv/bin/python``). When that
-interpreter is missing, this prints how to create it and runs the flexshaft side alone (exit 0).
-``--ross-json FILE`` reuses a ROSS result file written by ``ross_model.py --out FILE``.
+Protocol, identical for both codes: every (code, case, mesh) runs in its own fresh process
+(``flexshaft_side.py CASE N_EL`` with this interpreter, ``ross_model.py --single CASE N_EL``
+with each ROSS interpreter).
+
+* cold: the first model build and the first analysis call in that process (the import of the
+  package is done before and reported apart), so one-time costs (lazy imports, JIT or
+  first-touch page faults, caches) are in it;
+* warm: ``--repeats`` (>= 3) more calls, each on a freshly built model (build outside the
+  clock; ROSS caches results per rotor, so a repeat on the same rotor would be free); median
+  and min–max printed. Wall time (``perf_counter``) and process CPU time (``process_time``) are
+  both recorded; ratios are given for both, the CPU one being less sensitive to other load on
+  a shared machine;
+* memory: ``ru_maxrss`` of that process (Linux, ``getrusage(RUSAGE_SELF)`` read inside the
+  child at its end): the whole process's peak resident set, interpreter and imported
+  libraries included, not a Python-level (tracemalloc) figure.
+
+Only the analysis call is timed; the comparison of results is done afterwards from what the
+cold call returned. ROSS interpreters: ``--ross-python`` paths, else ``$ROSS_PYTHON``
+(``os.pathsep``-separated), else ``/work/ross-2.3-venv/bin/python`` and
+``/work/ross-latest-venv/bin/python``. A missing interpreter is skipped with a message saying
+how to create it; with none, the flexshaft side runs alone (exit 0).
 
 Checks (printed as PASS/FAIL lines):
 
-* agreement, every case and size: max relative difference <= 0.1 % (exit status 1 otherwise);
-* the issue's bars, on the 100-element shaft: imbalance response >= 100x faster than ROSS,
-  Campbell >= 20x faster, flexshaft peak memory < 500 MB (in the exit status only with
+* agreement, every case, size and ROSS version: max relative difference <= 0.1 % (exit
+  status 1 otherwise);
+* the project's bars, warm, on the largest mesh (in the exit status only with
   ``--enforce-bars``: timings depend on the machine).
+
+``--table FILE`` prints the README tables (markdown) from a ``--save`` file;
+``--update-readme`` also writes them between the markers in ``benchmarks/README.md`` and
+``README.md``, so those tables are regenerated, never edited by hand.
 """
 
 from __future__ import annotations
@@ -28,116 +51,95 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
+import re
 import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 
-import numpy as np  # noqa: E402
-
-import flexshaft_side as fx  # noqa: E402
+import bench_util as bu  # noqa: E402
 import shaft_case as case  # noqa: E402
 
-DEFAULT_ROSS_PYTHON = "/work/ross-venv/bin/python"
-REPEAT_BELOW_S = 10.0
-BARS = {"unbalance": 100.0, "campbell": 20.0}  # minimum speed-up on the largest mesh
+CASES = ("unbalance", "frf", "campbell")
+DEFAULT_ROSS_PYTHONS = ("/work/ross-2.3-venv/bin/python", "/work/ross-latest-venv/bin/python")
+BARS = {"unbalance": 150.0, "frf": 100.0, "campbell": 100.0}  # warm speed-up, largest mesh
 MEMORY_BAR_MB = 500.0
-THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
 
 SETUP_HINT = """\
-ROSS interpreter not found at {path}. To create it (Python 3.11):
-    python3.11 -m venv /work/ross-venv
-    /work/ross-venv/bin/pip install "ross-rotordynamics==2.3.0" "plotly<7"
-or point ROSS_PYTHON at an interpreter that has ross-rotordynamics installed."""
+ROSS interpreter not found at {path}: skipped. To create the two used here (outside the
+repository; ROSS 3.x needs Python >= 3.12, 3.1 needs >= 3.13):
+    python3.11 -m venv /work/ross-2.3-venv
+    /work/ross-2.3-venv/bin/pip install "ross-rotordynamics==2.3.0" "plotly<7"
+    python3.13 -m venv /work/ross-latest-venv
+    /work/ross-latest-venv/bin/pip install ross-rotordynamics
+or pass --ross-python / set ROSS_PYTHON to interpreters that have ross-rotordynamics."""
+
+README_FILES = {
+    "full": os.path.join(HERE, "README.md"),
+    "headline": os.path.join(ROOT, "README.md"),
+}
+MARK = "<!-- compare_ross.py --table: {} begin (generated, do not edit) -->"
+MARK_END = "<!-- compare_ross.py --table: {} end -->"
 
 
 # -------------------------------------------------------------------------------------------------
-# running the two sides
+# running the workers
 
 
-def run_ross(elements, max_repeat: int) -> dict | None:
-    py = os.environ.get("ROSS_PYTHON", DEFAULT_ROSS_PYTHON)
-    if not (os.path.isfile(py) and os.access(py, os.X_OK)):
-        print(SETUP_HINT.format(path=py))
-        return None
-    cmd = [py, os.path.join(HERE, "ross_model.py"), "--elements", *map(str, elements),
-           "--max-repeat", str(max_repeat)]
-    print("running ROSS:", " ".join(cmd), flush=True)
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, text=True)
+def _child(cmd: list[str], label: str) -> dict:
+    print(f"[{label}] {' '.join(cmd[-4:])} ...", flush=True)
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     if proc.returncode != 0:
-        raise SystemExit(f"ross_model.py failed with status {proc.returncode}")
-    return json.loads(proc.stdout)
+        sys.stderr.write(proc.stderr[-4000:])
+        raise SystemExit(f"{label} worker failed with status {proc.returncode}: {' '.join(cmd)}")
+    r = json.loads(proc.stdout)
+    print(f"[{label}] {r['case']:9s} n_el={r['n_el']:4d} cold {r['cold_s']:9.4f} s  warm "
+          f"{bu.fmt_stats(r['warm'], 4)} s  peak {r['peak_rss_mb']:6.0f} MB", flush=True)
+    return r
 
 
-def _best_of(fn, max_repeat: int):
-    times, result = [], None
-    for _ in range(max(1, max_repeat)):
-        t0 = time.perf_counter()
-        r = fn()
-        times.append(time.perf_counter() - t0)
-        result = r if result is None else result
-        if times[-1] >= REPEAT_BELOW_S:
-            break
-    return min(times), times, result
+def run_flexshaft(name: str, n_el: int, repeats: int) -> dict:
+    return _child([sys.executable, os.path.join(HERE, "flexshaft_side.py"), name, str(n_el),
+                   "--repeats", str(repeats)], "flexshaft")
 
 
-def _maxrss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+def run_ross(python: str, name: str, n_el: int, repeats: int) -> dict:
+    return _child([python, os.path.join(HERE, "ross_model.py"), "--single", name, str(n_el),
+                   "--repeats", str(repeats)], "ross")
 
 
-def run_flexshaft(elements, max_repeat: int) -> dict:
-    """The same three cases in-process; returns results in ROSS's layout (x = v, y = w)."""
-    runs = []
-    for n_el in elements:
-        t0 = time.perf_counter()
-        model = fx.build(n_el)
-        build_s = time.perf_counter() - t0
-        mid = fx.mid_node(model)
-        iv, iw = fx.lateral_dofs(model, mid)
-
-        speeds = np.array(case.unbalance_speeds())
-        t, ts, q = _best_of(lambda: fx.unbalance_response(model, speeds), max_repeat)
-        runs.append({"case": "unbalance", "n_el": n_el, "time_s": t, "times_s": ts,
-                     "build_s": build_s, "path": "sweep" if fx.has_imbalance_sweep() else "fallback",
-                     "result": {"x": q[iv], "y": q[iw]}, "peak_rss_mb": _maxrss_mb()})
-        _progress(runs[-1])
-
-        freqs = np.array(case.frf_frequencies())
-        t, ts, q = _best_of(lambda: fx.frf(model, freqs, case.FRF_SPEED), max_repeat)
-        runs.append({"case": "frf", "n_el": n_el, "time_s": t, "times_s": ts,
-                     "build_s": build_s, "path": "frequency_response",
-                     "result": {"x": q[iv], "y": q[iw]}, "peak_rss_mb": _maxrss_mb()})
-        _progress(runs[-1])
-
-        cs = np.array(case.campbell_speeds())
-        other = fx.nonlateral_frequencies(model)  # untimed: picks out flexshaft's twist/axial modes
-        t, ts, (f, w) = _best_of(lambda: fx.campbell(model, cs, case.N_CAMPBELL_FREQ, other),
-                                 max_repeat)
-        runs.append({"case": "campbell", "n_el": n_el, "time_s": t, "times_s": ts,
-                     "build_s": build_s, "path": "sweep" if fx.has_campbell_sweep() else "fallback",
-                     "result": {"wd_hz": f, "whirl": w}, "peak_rss_mb": _maxrss_mb()})
-        _progress(runs[-1])
-    return {"runs": runs, "peak_rss_mb": _maxrss_mb()}
-
-
-def _progress(r):
-    print(f"[flexshaft] {r['case']:9s} n_el={r['n_el']:4d} {r['time_s']:9.4f} s ({r['path']})",
-          flush=True)
+def ross_pythons(cli: list[str] | None) -> list[str]:
+    if cli:
+        paths = cli
+    elif os.environ.get("ROSS_PYTHON"):
+        paths = [p for p in os.environ["ROSS_PYTHON"].split(os.pathsep) if p]
+    else:
+        paths = list(DEFAULT_ROSS_PYTHONS)
+    found = []
+    for p in paths:
+        if os.path.isfile(p) and os.access(p, os.X_OK):
+            found.append(p)
+        else:
+            print(SETUP_HINT.format(path=p))
+    return found
 
 
 # -------------------------------------------------------------------------------------------------
-# comparison
+# comparison of results
 
 
-def _complex(d) -> np.ndarray:
+def _complex(d):
+    import numpy as np
+
     return np.asarray(d["re"]) + 1j * np.asarray(d["im"])
 
 
-def _rel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def _rel(a, b):
     """|a − b| / |b| where not both are zero (0/0 points, e.g. Ω = 0 imbalance, are skipped)."""
+    import numpy as np
+
     a, b = np.asarray(a), np.asarray(b)
     both_zero = (a == 0) & (b == 0)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -146,10 +148,12 @@ def _rel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def compare(case_name: str, fxr: dict, rsr: dict) -> dict:
-    """Max relative differences; ``metric`` is the one checked against the tolerance."""
+    """Max relative differences; ``max_rel`` is the one checked against the tolerance."""
+    import numpy as np
+
     if case_name in ("unbalance", "frf"):
         rx, ry = _complex(rsr["x"]), _complex(rsr["y"])
-        fxv, fxw = np.asarray(fxr["x"]), np.asarray(fxr["y"])
+        fxv, fxw = _complex(fxr["x"]), _complex(fxr["y"])
         if case_name == "unbalance":
             # orbit size at mid-span: sqrt(|lat1|^2 + |lat2|^2)
             metric = _rel(np.hypot(np.abs(fxv), np.abs(fxw)), np.hypot(np.abs(rx), np.abs(ry)))
@@ -182,6 +186,8 @@ def compare(case_name: str, fxr: dict, rsr: dict) -> dict:
 
 def _whirl_agreement(fxr, rsr) -> dict:
     """Whirl labels at Ω > 0 (ROSS whirl value 0 = forward, 1 = backward)."""
+    import numpy as np
+
     rw = np.asarray(rsr.get("whirl_values", []), dtype=float)
     if rw.size == 0:
         return {}
@@ -202,121 +208,305 @@ def _whirl_agreement(fxr, rsr) -> dict:
 
 
 # -------------------------------------------------------------------------------------------------
-# report
+# the whole run
 
 
-def _fmt_t(t):
-    return f"{t:10.4f}" if t is not None else f"{'-':>10s}"
+def run_all(elements, cases, repeats: int, pythons: list[str], reuse: dict | None) -> dict:
+    load_start = bu.machine_info()["load_average_1_5_15"]
+    reused = {}
+    if reuse:
+        for r in reuse["ross_runs"]:
+            reused[(r["python_path"], r["case"], r["n_el"])] = r
+    fx_runs, ross_runs = [], []
+    for n_el in elements:
+        for name in cases:
+            fx_runs.append(run_flexshaft(name, n_el, repeats))
+            for py in pythons:
+                r = reused.get((py, name, n_el))
+                if r is None:
+                    r = run_ross(py, name, n_el, repeats)
+                    r["python_path"] = py
+                ross_runs.append(r)
+    for r in ross_runs:
+        fr = next(f for f in fx_runs if (f["case"], f["n_el"]) == (r["case"], r["n_el"]))
+        r["comparison"] = compare(r["case"], fr["result"], r["result"])
+    return {"machine": {**bu.machine_info(), "load_average_at_start": load_start},
+            "parameters": case.parameters(), "repeats": repeats,
+            "flexshaft_runs": fx_runs, "ross_runs": ross_runs}
 
 
-def report(fxs: dict, ross: dict | None) -> tuple[bool, bool]:
-    ok_agree, ok_bars = True, True
-    rs_runs = {(r["case"], r["n_el"]): r for r in (ross or {}).get("runs", [])}
+def _versions(data: dict) -> list[str]:
+    seen = []
+    for r in data["ross_runs"]:
+        if r["version"] not in seen:
+            seen.append(r["version"])
+    return sorted(seen, key=lambda v: [int(x) for x in re.findall(r"\d+", v)])
+
+
+def _lookup(data: dict):
+    fx = {(r["case"], r["n_el"]): r for r in data["flexshaft_runs"]}
+    rs = {(r["version"], r["case"], r["n_el"]): r for r in data["ross_runs"]}
+    return fx, rs
+
+
+def report(data: dict) -> tuple[bool, bool]:
+    """The text report; returns (all agree, all bars met)."""
+    fx, rs = _lookup(data)
+    versions = _versions(data)
     print()
-    if ross:
-        print(f"ROSS {ross['ross_version']} (Python {ross['python']}, numpy {ross['numpy']}, "
-              f"scipy {ross['scipy']}); flexshaft {_flexshaft_version()}")
-    hdr = (f"{'case':10s} {'n_el':>5s} {'ROSS [s]':>10s} {'flexsh [s]':>10s} {'ratio':>9s} "
-           f"{'max rel diff':>13s} {'metric':>12s} {'ROSS MB':>8s}  agree  notes")
+    print(header_lines(data))
+    print()
+    hdr = (f"{'case':9s} {'n_el':>4s} {'code':>11s} {'cold [s]':>9s} {'warm median (min–max) [s]':>30s} "
+           f"{'x warm':>8s} {'x CPU':>7s} {'x cold':>7s} {'peak MB':>8s} {'max rel':>9s}  notes")
     print(hdr)
     print("-" * len(hdr))
-    largest = max(r["n_el"] for r in fxs["runs"])
-    for fr in fxs["runs"]:
-        key = (fr["case"], fr["n_el"])
-        rr = rs_runs.get(key)
-        notes = [] if fr["path"] in ("sweep", "frequency_response") else [f"flexshaft {fr['path']}"]
-        if rr is None:
-            print(f"{fr['case']:10s} {fr['n_el']:5d} {_fmt_t(None)} {_fmt_t(fr['time_s'])}")
-            continue
-        c = compare(fr["case"], fr["result"], rr["result"])
-        ratio = rr["time_s"] / fr["time_s"]
-        agree = c["max_rel"] <= case.TOLERANCE
-        ok_agree &= agree
-        if "complex_rel_peak" in c:
-            notes.append(f"complex/peak {c['complex_rel_peak']:.1e}")
-        if "whirl_mismatch" in c:
-            notes.append(f"whirl mismatch {c['whirl_mismatch']}")
-        if c.get("ross_non_lateral_modes"):
-            notes.append(f"ROSS non-lateral modes {c['ross_non_lateral_modes']}")
-        print(f"{fr['case']:10s} {fr['n_el']:5d} {_fmt_t(rr['time_s'])} {_fmt_t(fr['time_s'])} "
-              f"{ratio:8.1f}x {c['max_rel']:13.2e} {c['label']:>12s} {rr['peak_rss_mb']:8.0f}  "
-              f"{'yes' if agree else 'NO':5s}  {'; '.join(notes)}")
-        fr["ross_time_s"], fr["ratio"], fr["comparison"] = rr["time_s"], ratio, c
-    print()
-    print(f"flexshaft peak RSS (whole process, all cases and sizes): {fxs['peak_rss_mb']:.0f} MB")
-    if ross:
-        print(f"{'PASS' if ok_agree else 'FAIL'}: results agree to {case.TOLERANCE:.1%} "
-              f"(every case and size)")
-        for name, bar in BARS.items():
-            fr = next(r for r in fxs["runs"] if r["case"] == name and r["n_el"] == largest)
-            ratio = fr.get("ratio")
-            if ratio is None:
+    ok_agree = True
+    for (name, n_el), f in fx.items():
+        print(f"{name:9s} {n_el:4d} {'flexshaft':>11s} {f['cold_s']:9.4f} {bu.fmt_stats(f['warm'], 4):>30s} "
+              f"{'':8s} {'':7s} {'':7s} {f['peak_rss_mb']:8.0f}" + ("" if f["path"] in
+              ("sweep", "frequency_response") else f"  flexshaft {f['path']}"))
+        for v in versions:
+            r = rs.get((v, name, n_el))
+            if r is None:
                 continue
-            good = ratio >= bar
-            ok_bars &= good
-            print(f"{'PASS' if good else 'FAIL'}: {name} on {largest} elements is {ratio:.1f}x "
-                  f"faster than ROSS (bar {bar:.0f}x)")
-    good = fxs["peak_rss_mb"] < MEMORY_BAR_MB
-    ok_bars &= good
-    print(f"{'PASS' if good else 'FAIL'}: flexshaft peak memory {fxs['peak_rss_mb']:.0f} MB "
-          f"(bar {MEMORY_BAR_MB:.0f} MB)")
+            c = r["comparison"]
+            agree = c["max_rel"] <= case.TOLERANCE
+            ok_agree &= agree
+            notes = [] if agree else ["DISAGREE"]
+            if "complex_rel_peak" in c:
+                notes.append(f"complex/peak {c['complex_rel_peak']:.1e}")
+            if "whirl_mismatch" in c:
+                notes.append(f"whirl mismatch {c['whirl_mismatch']}")
+            if c.get("ross_non_lateral_modes"):
+                notes.append(f"ROSS non-lateral modes {c['ross_non_lateral_modes']}")
+            sp = speedups(f, r)
+            print(f"{'':9s} {'':4s} {'ROSS ' + v:>11s} {r['cold_s']:9.3f} {bu.fmt_stats(r['warm'], 3):>30s} "
+                  f"{sp['warm']:7.1f}x {sp['cpu']:6.1f}x {sp['cold']:6.1f}x {r['peak_rss_mb']:8.0f} "
+                  f"{c['max_rel']:9.1e}  {'; '.join(notes)}")
+    print()
+    print("x warm / x CPU: ROSS warm median / flexshaft warm median (wall / process CPU time); "
+          "x cold: first call in a fresh process")
+    print("peak MB: whole-process peak resident set (ru_maxrss) of the child that ran the case")
+    ok_bars = True
+    if versions:
+        print(f"{'PASS' if ok_agree else 'FAIL'}: results agree to {case.TOLERANCE:.1%} "
+              f"(every case, size and ROSS version)")
+        largest = max(n for _, n in fx)
+        for v in versions:
+            for name, bar in BARS.items():
+                f, r = fx.get((name, largest)), rs.get((v, name, largest))
+                if f is None or r is None:
+                    continue
+                sp = speedups(f, r)
+                s = sp["warm"]
+                ok_bars &= s >= bar
+                print(f"{'PASS' if s >= bar else 'FAIL'}: {name} on {largest} elements, warm, "
+                      f"{s:.0f}x faster than ROSS {v} (bar {bar:.0f}x; CPU-time ratio "
+                      f"{sp['cpu']:.0f}x)")
+    peak = max(f["peak_rss_mb"] for f in fx.values())
+    ok_bars &= peak < MEMORY_BAR_MB
+    print(f"{'PASS' if peak < MEMORY_BAR_MB else 'FAIL'}: flexshaft peak memory {peak:.0f} MB "
+          f"(largest over cases; bar {MEMORY_BAR_MB:.0f} MB)")
     return ok_agree, ok_bars
 
 
-def _flexshaft_version() -> str:
-    import flexshaft
+def speedups(f: dict, r: dict) -> dict:
+    return {"warm": r["warm"]["median"] / f["warm"]["median"],
+            "cpu": r["warm"]["cpu"]["median"] / f["warm"]["cpu"]["median"],
+            "cold": r["cold_s"] / f["cold_s"]}
 
-    return flexshaft.__version__
+
+# -------------------------------------------------------------------------------------------------
+# README tables
 
 
-def _jsonable(o):
-    if isinstance(o, np.ndarray):
-        if np.iscomplexobj(o):
-            return {"re": o.real.tolist(), "im": o.imag.tolist()}
-        return o.tolist()
-    if isinstance(o, (np.floating, np.integer)):
-        return o.item()
-    if isinstance(o, np.bool_):
-        return bool(o)
-    raise TypeError(type(o))
+def header_lines(data: dict) -> str:
+    m = data["machine"]
+    fx0 = data["flexshaft_runs"][0]
+    threads = m["blas_threads_env"]
+    one = all(v == "1" for v in threads.values())
+    lines = [
+        f"Measured {m['date'][:10]} on {m['cpu']}, {m['cores']} cores, {m['memory_gb']:.0f} GB "
+        f"(a machine shared with other jobs; 1-min load average "
+        f"{m.get('load_average_at_start', ['?'])[0]} at the start of the run, "
+        f"{m['load_average_1_5_15'][0]} at its end), "
+        + ("one BLAS thread (OPENBLAS/OMP/MKL/NUMBA_NUM_THREADS=1) for both codes."
+           if one else f"BLAS threads {threads}."),
+        f"flexshaft {fx0['version']} (git {m['git_commit']}), Python {m['python']}, "
+        f"numpy {fx0['numpy']}, scipy {fx0['scipy']}.",
+    ]
+    for v in _versions(data):
+        r = next(r for r in data["ross_runs"] if r["version"] == v)
+        lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, "
+                     f"scipy {r['scipy']}.")
+    lines.append(f"Warm: median (min–max) of {data['repeats']} calls, each on a freshly built model, "
+                 "after a first call in the same process. Cold: the first call in a fresh process "
+                 "(package imported, model built, not timed). Speed-ups are ratios of wall-time "
+                 "medians; in brackets, of process CPU-time medians, the steadier figure when "
+                 "other jobs load the machine (wall time then includes waiting for a core).")
+    return "\n".join("* " + line for line in lines)
+
+
+def _ratio(x: float) -> str:
+    return f"{x:.0f}×" if x >= 10 else f"{x:.1f}×"
+
+
+def tables(data: dict, elements=None) -> str:
+    """Markdown: the header lines, then warm, cold and memory/agreement tables."""
+    fx, rs = _lookup(data)
+    versions = _versions(data)
+    keys = [k for k in fx if elements is None or k[1] in elements]
+    out = [header_lines(data), ""]
+
+    def row_head(cols):
+        return "| case | n_el | " + " | ".join(cols) + " |\n|---|---:|" + "---:|" * len(cols)
+
+    for title, get_fx, get_r, key in (
+            ("Warm [s]", lambda f: bu.fmt_stats(f["warm"], 3), lambda r: bu.fmt_stats(r["warm"], 2), "warm"),
+            ("Cold [s]", lambda f: f"{f['cold_s']:.3f}", lambda r: f"{r['cold_s']:.2f}", "cold")):
+        cols = ["flexshaft"]
+        for v in versions:
+            cols += [f"ROSS {v}", "speed-up" + (" (CPU)" if key == "warm" else "")]
+        out += [f"**{title}**", "", row_head(cols)]
+        for k in keys:
+            f = fx[k]
+            cells = [get_fx(f)]
+            for v in versions:
+                r = rs.get((v, *k))
+                if r is None:
+                    cells += ["–", "–"]
+                    continue
+                s = speedups(f, r)
+                cells += [get_r(r), _ratio(s["warm"]) + f" ({_ratio(s['cpu'])})" if key == "warm"
+                          else _ratio(s["cold"])]
+            out.append(f"| {k[0]} | {k[1]} | " + " | ".join(cells) + " |")
+        out.append("")
+    cols = ["flexshaft peak MB"] + [f"ROSS {v} peak MB" for v in versions] + \
+           [f"max rel. diff vs {v}" for v in versions]
+    out += ["**Peak memory (whole process, ru_maxrss) and agreement**", "", row_head(cols)]
+    for k in keys:
+        f = fx[k]
+        cells = [f"{f['peak_rss_mb']:.0f}"]
+        rr = [rs.get((v, *k)) for v in versions]
+        cells += [f"{r['peak_rss_mb']:.0f}" if r else "–" for r in rr]
+        cells += [f"{r['comparison']['max_rel']:.1e}" if r else "–" for r in rr]
+        out.append(f"| {k[0]} | {k[1]} | " + " | ".join(cells) + " |")
+    imports = [f"flexshaft {_median([f['import_s'] for f in fx.values()]):.1f} s"]
+    for v in versions:
+        imports.append(f"ROSS {v} {_median([r['import_s'] for r in data['ross_runs'] if r['version'] == v]):.1f} s")
+    out += ["", "Import time (median over the worker processes, not in the cold times): "
+            + ", ".join(imports) + "."]
+    return "\n".join(out)
+
+
+def _median(xs):
+    xs = sorted(xs)
+    n = len(xs)
+    return (xs[n // 2] + xs[(n - 1) // 2]) / 2
+
+
+def headline(data: dict) -> str:
+    """The short table for the top-level README: warm and cold speed-ups on the largest mesh."""
+    fx, rs = _lookup(data)
+    largest = max(n for _, n in fx)
+    versions = _versions(data)
+    out = [header_lines(data), "",
+           "| case (" + str(largest) + " elements) | flexshaft warm [s] | "
+           + " | ".join(f"ROSS {v} warm [s] | speed-up warm (CPU) / cold" for v in versions) + " |",
+           "|---|---:|" + "---:|---:|" * len(versions)]
+    for name in CASES:
+        f = fx.get((name, largest))
+        if f is None:
+            continue
+        cells = [f"{f['warm']['median']:.3f}"]
+        for v in versions:
+            r = rs.get((v, name, largest))
+            if r is None:
+                cells += ["–", "–"]
+                continue
+            s = speedups(f, r)
+            cells += [f"{r['warm']['median']:.1f}",
+                      f"{_ratio(s['warm'])} ({_ratio(s['cpu'])}) / {_ratio(s['cold'])}"]
+        out.append(f"| {name} | " + " | ".join(cells) + " |")
+    peak_fx = max(f["peak_rss_mb"] for f in fx.values())
+    peaks = [f"ROSS {v} {max(r['peak_rss_mb'] for r in data['ross_runs'] if r['version'] == v):.0f} MB"
+             for v in versions]
+    out += ["", f"Peak memory (whole process, largest case): flexshaft {peak_fx:.0f} MB"
+            + ("".join(f", {p}" for p in peaks)) + "."]
+    return "\n".join(out)
+
+
+def update_readme(kind: str, text: str) -> None:
+    path = README_FILES[kind]
+    with open(path) as f:
+        doc = f.read()
+    begin, end = MARK.format(kind), MARK_END.format(kind)
+    if begin not in doc or end not in doc:
+        raise SystemExit(f"{path}: markers for the {kind!r} table not found ({begin!r})")
+    head, rest = doc.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    with open(path, "w") as f:
+        f.write(f"{head}{begin}\n{text}\n{end}{tail}")
+    print(f"updated {path}")
+
+
+# -------------------------------------------------------------------------------------------------
 
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--elements", type=int, nargs="+", default=list(case.ELEMENTS))
-    p.add_argument("--ross-json", help="reuse a ross_model.py --out (or this script's --save) "
-                                       "file instead of running ROSS")
-    p.add_argument("--max-repeat", type=int, default=3, help="best of up to N runs (runs < 10 s)")
-    p.add_argument("--save", help="write both sides' times, results and comparisons as JSON")
+    p.add_argument("--cases", nargs="+", default=list(CASES), choices=list(CASES))
+    p.add_argument("--repeats", type=int, default=3, help="warm calls after the cold one (>= 3)")
+    p.add_argument("--ross-python", nargs="+", help="ROSS interpreters (default: $ROSS_PYTHON, "
+                   "else " + ", ".join(DEFAULT_ROSS_PYTHONS) + ")")
+    p.add_argument("--no-ross", action="store_true", help="flexshaft side only")
+    p.add_argument("--reuse-ross", metavar="FILE",
+                   help="take the ROSS runs from an earlier --save file (same interpreter paths, "
+                        "cases and sizes) and re-time flexshaft only")
+    p.add_argument("--save", help="write all times, results and comparisons as JSON")
+    p.add_argument("--table", metavar="FILE", help="print the README tables from a --save file")
+    p.add_argument("--update-readme", action="store_true",
+                   help="with --table: rewrite the generated blocks of the READMEs")
     p.add_argument("--blas-threads", type=int, default=1,
-                   help="BLAS/OpenMP threads for both codes (sets OPENBLAS/OMP/MKL_NUM_THREADS); "
-                        "default 1: on a small shared machine a busy core makes multi-threaded "
-                        "OpenBLAS stall and the timings erratic; 0 = the libraries' default")
+                   help="BLAS/OpenMP/numba threads for both codes (sets OPENBLAS/OMP/MKL/"
+                        "NUMBA_NUM_THREADS); default 1: on a small shared machine a busy core "
+                        "makes multi-threaded OpenBLAS stall and the timings erratic; 0 = the "
+                        "libraries' defaults")
     p.add_argument("--enforce-bars", action="store_true",
                    help="exit 1 when a speed or memory bar is missed, not only on disagreement")
     a = p.parse_args(argv)
-    if a.blas_threads and os.environ.get("OPENBLAS_NUM_THREADS") != str(a.blas_threads):
-        # thread counts are read when numpy loads: restart with them set (the ROSS child inherits)
-        env = dict(os.environ, **{k: str(a.blas_threads) for k in THREAD_VARS})
-        os.execve(sys.executable, [sys.executable, os.path.abspath(__file__), *sys.argv[1:]], env)
-    print("BLAS threads:", {k: os.environ.get(k, "default") for k in THREAD_VARS})
 
-    if a.ross_json:
-        with open(a.ross_json) as f:
-            ross = json.load(f)
-        ross = ross.get("ross", ross)  # a --save file holds the ROSS output under "ross"
-        ross["runs"] = [r for r in ross["runs"] if r["n_el"] in a.elements]
-    else:
-        ross = run_ross(a.elements, a.max_repeat)
-    if ross is not None and ross["parameters"] != case.parameters():
-        raise SystemExit("ROSS results were made with different case parameters; rerun ross_model.py")
-    fxs = run_flexshaft(a.elements, a.max_repeat)
-    ok_agree, ok_bars = report(fxs, ross)
+    if a.table:
+        with open(a.table) as f:
+            data = json.load(f)
+        full, short = tables(data), headline(data)
+        print(full)
+        print()
+        print(short)
+        if a.update_readme:
+            update_readme("full", full)
+            update_readme("headline", short)
+        return 0
+    if a.repeats < 3:
+        p.error(f"--repeats must be at least 3 (got {a.repeats})")
+    bu.reexec_with_threads(a.blas_threads, __file__)
+    print("BLAS threads:", bu.blas_env())
+
+    pythons = [] if a.no_ross else ross_pythons(a.ross_python)
+    reuse = None
+    if a.reuse_ross:
+        with open(a.reuse_ross) as f:
+            reuse = json.load(f)
+        if reuse["parameters"] != case.parameters():
+            raise SystemExit("the reused ROSS runs were made with other case parameters")
+    data = run_all(a.elements, a.cases, a.repeats, pythons, reuse)
+    ok_agree, ok_bars = report(data)
     if a.save:
         with open(a.save, "w") as f:
-            json.dump({"parameters": case.parameters(), "ross": ross, "flexshaft": fxs}, f,
-                      default=_jsonable)
-    if ross is None:
+            json.dump(data, f)
+        print(f"saved {a.save}; README tables: {sys.argv[0]} --table {a.save} [--update-readme]")
+    if not pythons:
         print("ROSS side skipped (no ROSS interpreter): flexshaft timings only.")
         return 0
     return 0 if ok_agree and (ok_bars or not a.enforce_bars) else 1

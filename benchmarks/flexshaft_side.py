@@ -5,18 +5,28 @@ sweep functions only these functions change. Sweep functions are used when
 ``flexshaft.analyses`` provides them (``imbalance_response``, ``campbell``); otherwise the
 per-point fallbacks (``frequency_response`` per speed, ``modes`` per speed) are used, and the
 result says which path ran.
+
+Run as a script it is the worker of ``compare_ross.py``: one case on one mesh in a fresh
+process, cold (first build and call) then warm (repeats), as JSON on stdout::
+
+    .venv/bin/python benchmarks/flexshaft_side.py unbalance 100 --repeats 3
 """
 
 from __future__ import annotations
 
 import inspect
+import time
 
-import numpy as np
+_T0 = time.perf_counter()
 
-import flexshaft
-import flexshaft.analyses as fa
+import numpy as np  # noqa: E402
 
-import shaft_case as case
+import flexshaft  # noqa: E402
+import flexshaft.analyses as fa  # noqa: E402
+
+import shaft_case as case  # noqa: E402
+
+_IMPORT_S = time.perf_counter() - _T0  # numpy + flexshaft import, for the worker's cold time
 
 DESIGN_TEMPLATE = """
 name = "uniform steel tube on two end bearings (ROSS benchmark)"
@@ -139,31 +149,24 @@ def nonlateral_frequencies(model, n_modes: int = case.N_CAMPBELL_FREQ + 6) -> np
     """Frequencies [Hz] of the axial/torsional modes among the lowest ``n_modes`` at rest.
 
     They do not depend on speed or on the (lateral) bearing damping here, so they identify the
-    sweep's tracked curves that are not bending modes. Benchmark set-up: call it outside the
-    timed region and pass the result to :func:`campbell`.
+    sweep's tracked curves that are not bending modes. Post-processing: called after the timed
+    :func:`campbell_sweep`.
     """
     m = flexshaft.modes(model, 0.0, n_modes=n_modes, damped=False)
     return m.frequencies[~_lateral_mask(model, m.shapes)]
 
 
-def campbell(model, speeds: np.ndarray, n_freq: int,
-             nonlateral: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed (sorted) and whirl.
+def campbell_sweep(model, speeds: np.ndarray, n_freq: int):
+    """The timed part of the Campbell case: the analysis call only.
 
     Extra modes are requested because flexshaft's clamped-in-twist shaft has torsional and
-    axial modes in the band (ROSS's free-free ones sit higher); those are dropped.
+    axial modes in the band (ROSS's free-free ones sit higher); :func:`campbell_lateral` drops
+    them afterwards. Without the sweep function, the per-speed fallback returns its lateral
+    frequencies directly.
     """
     n_req = n_freq + 6
     if has_campbell_sweep():
-        c = _campbell_call(model, speeds, n_req)
-        freqs = np.asarray(c.frequencies)
-        whirl = np.asarray(c.whirl)
-        other = nonlateral_frequencies(model, n_req) if nonlateral is None else nonlateral
-        f0 = freqs[0]
-        lateral = np.array([not np.any(np.abs(other - f) <= 1e-6 * f) for f in f0])
-        freqs, whirl = freqs[:, lateral], whirl[:, lateral]
-        order = np.argsort(freqs, axis=1)[:, :n_freq]
-        return np.take_along_axis(freqs, order, 1), np.take_along_axis(whirl, order, 1)
+        return _campbell_call(model, speeds, n_req)
     out_f = np.empty((len(speeds), n_freq))
     out_w = np.empty((len(speeds), n_freq), dtype=object)
     for i, s in enumerate(speeds):
@@ -172,3 +175,106 @@ def campbell(model, speeds: np.ndarray, n_freq: int,
         out_f[i] = m.frequencies[keep][:n_freq]
         out_w[i] = m.whirl[keep][:n_freq]
     return out_f, out_w
+
+
+def campbell_lateral(model, raw, n_freq: int) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed (sorted) and whirl,
+    from the output of :func:`campbell_sweep` (untimed post-processing)."""
+    if isinstance(raw, tuple):
+        return raw
+    freqs = np.asarray(raw.frequencies)
+    whirl = np.asarray(raw.whirl)
+    other = nonlateral_frequencies(model, n_freq + 6)
+    f0 = freqs[0]
+    lateral = np.array([not np.any(np.abs(other - f) <= 1e-6 * f) for f in f0])
+    freqs, whirl = freqs[:, lateral], whirl[:, lateral]
+    order = np.argsort(freqs, axis=1)[:, :n_freq]
+    return np.take_along_axis(freqs, order, 1), np.take_along_axis(whirl, order, 1)
+
+
+def campbell(model, speeds: np.ndarray, n_freq: int) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest ``n_freq`` lateral damped natural frequencies [Hz] per speed and whirl labels."""
+    return campbell_lateral(model, campbell_sweep(model, speeds, n_freq), n_freq)
+
+
+# -------------------------------------------------------------------------------------------------
+# worker: one (case, mesh) in a fresh process, cold and warm, JSON on stdout
+
+
+def _c(z) -> dict:
+    z = np.asarray(z)
+    return {"re": z.real.tolist(), "im": z.imag.tolist()}
+
+
+def _case_call(name: str, model):
+    """(the timed call, post-processing of its output into ROSS's result layout)."""
+    iv, iw = lateral_dofs(model, mid_node(model))
+    if name == "unbalance":
+        speeds = np.array(case.unbalance_speeds())
+        return (lambda: unbalance_response(model, speeds),
+                lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "sweep" if has_imbalance_sweep() else "fallback"})
+    if name == "frf":
+        freqs = np.array(case.frf_frequencies())
+        return (lambda: frf(model, freqs, case.FRF_SPEED),
+                lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "frequency_response"})
+    if name == "campbell":
+        speeds = np.array(case.campbell_speeds())
+        n = case.N_CAMPBELL_FREQ
+
+        def post(raw):
+            f, w = campbell_lateral(model, raw, n)
+            return {"wd_hz": np.asarray(f, dtype=float).tolist(), "whirl": np.asarray(w).tolist(),
+                    "path": "sweep" if has_campbell_sweep() else "fallback"}
+
+        return (lambda: campbell_sweep(model, speeds, n)), post
+    raise ValueError(f"case must be unbalance, frf or campbell, got {name!r}")
+
+
+def run_single(name: str, n_el: int, repeats: int, import_s: float) -> dict:
+    """Cold: first build and first call in this fresh process. Warm: ``repeats`` calls, each on
+    a freshly built model (the build outside the clock), after the cold call has warmed up the
+    process, as on the ROSS side (whose rotors cache their results)."""
+    import bench_util as bu
+
+    rss_import = bu.current_rss_mb()
+    build_s, _, model = bu.timed(lambda: build(n_el))
+    call, post = _case_call(name, model)
+    cold_wall, cold_cpu, raw = bu.timed(call)
+    result = post(raw)
+    peak_cold = bu.maxrss_mb()
+    walls, cpus = [], []
+    for _ in range(repeats):
+        model = build(n_el)
+        call, _ = _case_call(name, model)
+        w, c, _ = bu.timed(call)
+        walls.append(w)
+        cpus.append(c)
+    return {
+        "code": "flexshaft", "version": flexshaft.__version__, "case": name, "n_el": n_el,
+        "ndof": int(model.dofs.size), "import_s": import_s, "build_s": build_s,
+        "cold_s": cold_wall, "cold_cpu_s": cold_cpu,
+        "warm": {**bu.stats(walls), "cpu": bu.stats(cpus)},
+        "rss_after_import_mb": rss_import, "peak_rss_cold_mb": peak_cold,
+        "peak_rss_mb": bu.maxrss_mb(), "path": result.pop("path"), "result": result,
+        "numpy": np.__version__, "scipy": _scipy_version(),
+    }
+
+
+def _scipy_version() -> str:
+    import scipy
+
+    return scipy.__version__
+
+
+if __name__ == "__main__":
+    import argparse
+    import json
+    import sys
+
+    p = argparse.ArgumentParser(description="flexshaft worker of compare_ross.py: one case, "
+                                            "one mesh, cold then warm; JSON on stdout")
+    p.add_argument("case", choices=["unbalance", "frf", "campbell"])
+    p.add_argument("n_el", type=int)
+    p.add_argument("--repeats", type=int, default=3)
+    a = p.parse_args()
+    json.dump(run_single(a.case, a.n_el, a.repeats, _IMPORT_S), sys.stdout)

@@ -1,0 +1,138 @@
+"""Small helpers shared by the benchmark scripts: repeat statistics, memory, machine facts.
+
+Pure Python (no numpy, no flexshaft, no ross) so that the ROSS interpreters import it too.
+"""
+
+from __future__ import annotations
+
+import datetime
+import os
+import platform
+import resource
+import statistics
+import subprocess
+import sys
+import time
+
+__all__ = ["THREAD_VARS", "timed", "stats", "fmt_stats", "maxrss_mb", "current_rss_mb", "machine_info",
+           "blas_env", "single_thread_env", "reexec_with_threads"]
+
+THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
+
+
+def timed(fn):
+    """Call ``fn()`` once; returns (wall time [s], CPU time of this process [s], result).
+
+    The CPU time (``time.process_time``, all threads of the process) is less sensitive than the
+    wall time to other processes competing for the cores of a shared machine."""
+    w0, c0 = time.perf_counter(), time.process_time()
+    result = fn()
+    return time.perf_counter() - w0, time.process_time() - c0, result
+
+
+def stats(times: list[float]) -> dict:
+    """Median, min and max of repeated timings [s]."""
+    return {"median": statistics.median(times), "min": min(times), "max": max(times),
+            "n": len(times), "all": list(times)}
+
+
+def fmt_stats(s: dict, digits: int = 3) -> str:
+    """``median (min–max)`` in seconds, for tables."""
+    f = _fmt_seconds
+    return f"{f(s['median'], digits)} ({f(s['min'], digits)}–{f(s['max'], digits)})"
+
+
+def _fmt_seconds(t: float, digits: int) -> str:
+    if t >= 10:
+        return f"{t:.1f}"
+    if t >= 1:
+        return f"{t:.2f}"
+    return f"{t:.{digits}f}"
+
+
+def maxrss_mb() -> float:
+    """Peak resident set size of this process so far [MB] (Linux ``ru_maxrss`` is in KiB)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+
+
+def current_rss_mb() -> float:
+    """Current resident set size of this process [MB] (Linux /proc; NaN elsewhere)."""
+    try:
+        with open("/proc/self/statm") as f:
+            pages = int(f.read().split()[1])
+        return pages * os.sysconf("SC_PAGE_SIZE") / 2**20
+    except (OSError, ValueError, IndexError):
+        return float("nan")
+
+
+def blas_env() -> dict:
+    return {k: os.environ.get(k, "default") for k in THREAD_VARS}
+
+
+def single_thread_env(threads: int) -> dict:
+    """The environment with every BLAS/OpenMP/numba thread count set to ``threads``."""
+    return dict(os.environ, **{k: str(threads) for k in THREAD_VARS})
+
+
+def reexec_with_threads(threads: int, script: str) -> None:
+    """Restart ``script`` with the thread variables set, unless they already are.
+
+    Thread counts are read when numpy (OpenBLAS) loads, so they must be in the environment
+    before the first import; child processes inherit them. ``threads = 0`` leaves the
+    libraries' defaults.
+    """
+    if threads and any(os.environ.get(k) != str(threads) for k in THREAD_VARS):
+        env = single_thread_env(threads)
+        os.execve(sys.executable, [sys.executable, os.path.abspath(script), *sys.argv[1:]], env)
+
+
+def _cpu_model() -> str:
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def _mem_total_gb() -> float:
+    try:
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemTotal"):
+                    return int(line.split()[1]) / 2**20
+    except OSError:
+        pass
+    return float("nan")
+
+
+def _git_commit() -> str:
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        out = subprocess.run(["git", "-C", here, "rev-parse", "--short", "HEAD"],
+                             capture_output=True, text=True, timeout=10)
+        return out.stdout.strip() or "unknown"
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def machine_info() -> dict:
+    """Facts that qualify a timing: CPU, cores, memory, load, date, Python, BLAS threads."""
+    try:
+        load = os.getloadavg()
+    except OSError:
+        load = (float("nan"),) * 3
+    return {
+        "date": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
+        "cpu": _cpu_model(),
+        "cores": os.cpu_count(),
+        "memory_gb": round(_mem_total_gb(), 1),
+        "load_average_1_5_15": [round(x, 2) for x in load],
+        "platform": platform.platform(),
+        "python": platform.python_version(),
+        "blas_threads_env": blas_env(),
+        "openblas_coretype": os.environ.get("OPENBLAS_CORETYPE", "unset"),
+        "git_commit": _git_commit(),
+    }

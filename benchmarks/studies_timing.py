@@ -1,0 +1,128 @@
+"""Wall time of the design studies and of ``flexshaft run`` (timing lives here, not in tests).
+
+    .venv/bin/python benchmarks/studies_timing.py [--cases studies-coarse run-none run-report]
+                                                  [--repeats 3] [--blas-threads 1] [--json FILE]
+
+Cases:
+
+* ``studies-coarse``: ``flexshaft.studies.chapter3.design_studies(design, "report")`` on the
+  baseline with the reduced mesh of ``tests/test_studies.py`` (18 shaft, 12 boom elements), in
+  this process: the first call (cold: lazy imports included) and ``--repeats`` more (warm).
+  The test used to assert that this takes under 25 s;
+* ``studies-report``: the same on the baseline's own mesh (what ``flexshaft run`` does);
+* ``run-none``, ``run-report``, ``run-full``: the command ``flexshaft run --studies X --out DIR``
+  as a fresh process per repeat (interpreter start, imports, every analysis and the report
+  written), timed from outside; its CPU time is the child's user + system time
+  (``getrusage(RUSAGE_CHILDREN)`` difference). ``run-full`` is not in the default set (long).
+
+Printed: median (min–max) wall time and median CPU time per case.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import bench_util as bu  # noqa: E402
+
+COARSE = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}  # as in tests/test_studies.py
+CASES = ("studies-coarse", "studies-report", "run-none", "run-report", "run-full")
+DEFAULT_CASES = ("studies-coarse", "run-none", "run-report")
+
+
+def time_studies(coarse: bool, repeats: int) -> dict:
+    from flexshaft.design import baseline_design, with_overrides
+    from flexshaft.studies.chapter3 import design_studies
+
+    design = with_overrides(baseline_design(), COARSE) if coarse else baseline_design()
+    cold_wall, cold_cpu, _ = bu.timed(lambda: design_studies(design, "report"))
+    runs = [bu.timed(lambda: design_studies(design, "report"))[:2] for _ in range(repeats)]
+    return {"cold_s": cold_wall, "cold_cpu_s": cold_cpu,
+            "warm": {**bu.stats([w for w, _ in runs]), "cpu": bu.stats([c for _, c in runs])}}
+
+
+def _flexshaft_command() -> list[str]:
+    exe = os.path.join(os.path.dirname(sys.executable), "flexshaft")
+    if os.path.isfile(exe):
+        return [exe]
+    return [sys.executable, "-c", "from flexshaft.cli import app; app()"]
+
+
+def _children_cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def time_run(studies: str, repeats: int) -> dict:
+    walls, cpus = [], []
+    for _ in range(repeats):
+        with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
+            cmd = [*_flexshaft_command(), "run", "--studies", studies, "--out", out]
+            c0, w0 = _children_cpu(), time.perf_counter()
+            proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            walls.append(time.perf_counter() - w0)
+            cpus.append(_children_cpu() - c0)
+            if proc.returncode != 0:
+                sys.stderr.write(proc.stderr[-3000:])
+                raise SystemExit(f"{' '.join(cmd)} failed with status {proc.returncode}")
+    return {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": " ".join(cmd[-5:-2])}
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--cases", nargs="+", default=list(DEFAULT_CASES), choices=list(CASES))
+    p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--blas-threads", type=int, default=1,
+                   help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)")
+    p.add_argument("--json", help="also write the measurements to this JSON file")
+    a = p.parse_args(argv)
+    if a.repeats < 1:
+        p.error(f"--repeats must be at least 1 (got {a.repeats})")
+    bu.reexec_with_threads(a.blas_threads, __file__)
+    results = {}
+    for name in a.cases:
+        print(f"[studies_timing] {name} ...", flush=True)
+        if name.startswith("studies-"):
+            results[name] = time_studies(name == "studies-coarse", a.repeats)
+        else:
+            results[name] = time_run(name.split("-", 1)[1], a.repeats)
+        r = results[name]
+        cold = f"cold {r['cold_s']:.2f} s, " if "cold_s" in r else ""
+        print(f"[studies_timing] {name}: {cold}{bu.fmt_stats(r['warm'], 2)} s "
+              f"(CPU {r['warm']['cpu']['median']:.2f} s)", flush=True)
+
+    import flexshaft
+
+    m = bu.machine_info()
+    print()
+    print(f"machine: {m['cpu']}, {m['cores']} cores, load average {m['load_average_1_5_15']} "
+          f"(shared); {m['date']}; flexshaft {flexshaft.__version__} (git {m['git_commit']}), "
+          f"Python {m['python']}; BLAS threads {m['blas_threads_env']}")
+    print()
+    print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | repeats |")
+    print("|---|---:|---:|---:|---:|")
+    for name, r in results.items():
+        cold = f"{r['cold_s']:.2f}" if "cold_s" in r else "–"
+        print(f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} "
+              f"| {r['warm']['n']} |")
+    print()
+    print("studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
+          "others after it. run-*: `flexshaft run --studies X` as a fresh process each time "
+          "(start-up, imports, analyses, report).")
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump({"machine": m, "results": results}, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
