@@ -295,3 +295,14 @@ def test_disk_gyroscopic_forward_whirl_rises_with_speed():
     fwd = (Ip * speed + np.sqrt((Ip * speed) ** 2 + 4 * Id * k)) / (2 * Id)
     bwd = (-Ip * speed + np.sqrt((Ip * speed) ** 2 + 4 * Id * k)) / (2 * Id)
     assert np.allclose(w, [bwd, fwd], rtol=1e-10)
+
+
+def test_bearing_point_rows_equal_the_element_shape_functions():
+    """The bearings' one-point rows are the Euler-Bernoulli shape functions of beam_shape."""
+    from flexshaft.elements.bearing import point_rows
+    from flexshaft.elements.shape import FIELDS, beam_shape
+
+    for xi, length in ((0.0, 0.3), (0.37, 0.21), (0.5, 2.0), (1.0, 1.7)):
+        s = beam_shape(np.array(xi), np.array(length))
+        expected = np.stack([s.N[f].reshape(12) for f in FIELDS])
+        np.testing.assert_array_equal(point_rows(xi, length), expected)

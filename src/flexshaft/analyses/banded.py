@@ -32,9 +32,8 @@ from scipy.sparse.csgraph import reverse_cuthill_mckee
 
 from flexshaft.analyses.loss import frequency_coefficients
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.sparse import restrict
 
-__all__ = ["SingularSystemError", "BandedHarmonicSolver", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT"]
+__all__ = ["SingularSystemError", "BandedHarmonicSolver", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
 
 #: Smallest/largest |pivot| of the LU below which the solution is checked by refinement.
 PIVOT_SCREEN = 1e-8
@@ -46,7 +45,9 @@ class SingularSystemError(ArithmeticError):
     """The dynamic stiffness is singular: an undamped system excited exactly at resonance."""
 
 
-def _term_matrices(model: Model, free: np.ndarray) -> dict[str, sp.csr_matrix]:
+def _term_triplets(model: Model, local: np.ndarray) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Every term of Z as (row, column, value) on the free DOFs (``local`` maps a global DOF to
+    its free index, −1 when fixed); stored zeros are dropped (they would widen the band)."""
     terms = {
         "M": model.M,
         "K": model.K,
@@ -56,14 +57,17 @@ def _term_matrices(model: Model, free: np.ndarray) -> dict[str, sp.csr_matrix]:
         "L": model.loss_lateral,
         "S": model.loss_circulatory,
     }
-    out = {name: restrict(A.tocsr(), free).tocsr() for name, A in terms.items()}
     for k, a in enumerate(model.actuators):
         B = a.lateral_rows
-        out[f"A{k}"] = restrict((B.T @ B).tocsr(), free).tocsr()
+        terms[f"A{k}"] = B.T @ B
         if not a.collocated:  # actuation rows × sensing rows
-            out[f"S{k}"] = restrict((B.T @ a.sensing_rows).tocsr(), free).tocsr()
-    for A in out.values():
-        A.eliminate_zeros()  # stored zeros (e.g. exact zero couplings of an element) would widen the band
+            terms[f"S{k}"] = B.T @ a.sensing_rows
+    out = {}
+    for name, A in terms.items():
+        coo = A.tocoo()
+        r, c = local[coo.row], local[coo.col]
+        keep = (r >= 0) & (c >= 0) & (coo.data != 0)
+        out[name] = (r[keep], c[keep], coo.data[keep])
     return out
 
 
@@ -75,29 +79,29 @@ class BandedHarmonicSolver:
         self.free = free
         n = free.size
         self.n = n
-        terms = _term_matrices(model, free)
-        rows = np.concatenate([A.tocoo().row for A in terms.values()])
-        cols = np.concatenate([A.tocoo().col for A in terms.values()])
-        pattern = sp.coo_matrix((np.ones(rows.size), (rows, cols)), shape=(n, n)).tocsr()
-        pattern = (pattern + pattern.T).tocsr()
+        local = np.full(model.dofs.size, -1, dtype=np.int64)
+        local[free] = np.arange(n)
+        terms = _term_triplets(model, local)
+        rows = np.concatenate([t[0] for t in terms.values()])
+        cols = np.concatenate([t[1] for t in terms.values()])
+        both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
+        pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
         perm = reverse_cuthill_mckee(pattern, symmetric_mode=True)
         self.perm = perm
         self.inverse = np.argsort(perm)
-        P = pattern[perm][:, perm].tocoo()
-        self.kl = int(np.max(P.row - P.col, initial=0))
-        self.ku = int(np.max(P.col - P.row, initial=0))
         # one shared pattern (the permuted union, row-major) and each term's data on it
-        keys = np.unique(P.row.astype(np.int64) * n + P.col)
+        permuted = {name: (self.inverse[r], self.inverse[c], v) for name, (r, c, v) in terms.items()}
+        keys = np.unique(np.concatenate([r * n + c for r, c, _ in permuted.values()]))
         self._rows, self._cols = keys // n, keys % n
+        self.kl = int(np.max(self._rows - self._cols, initial=0))
+        self.ku = int(np.max(self._cols - self._rows, initial=0))
         self._template = sp.csr_matrix((np.zeros(keys.size), (self._rows, self._cols)), shape=(n, n))
         self._template.sort_indices()
         self._band_index = (self.kl + self.ku + self._rows - self._cols) * n + self._cols
         self.data = {}
-        for name, A in terms.items():
-            coo = A[perm][:, perm].tocoo()
-            positions = np.searchsorted(keys, coo.row.astype(np.int64) * n + coo.col)
+        for name, (r, c, v) in permuted.items():
             values = np.zeros(keys.size, dtype=complex)
-            np.add.at(values, positions, coo.data)
+            np.add.at(values, np.searchsorted(keys, r * n + c), v)
             self.data[name] = values
         self.actuators = model.actuators
         self.internal_damping = model.internal_damping
@@ -193,3 +197,12 @@ class BandedHarmonicSolver:
             f"dynamic stiffness is singular at ω = {omega:.6g} rad/s, Ω = {speed:.6g} rad/s "
             f"(an undamped resonance{note}); add damping or move the frequency"
         )
+
+
+def solver_for(model: Model) -> BandedHarmonicSolver:
+    """The model's :class:`BandedHarmonicSolver`, built once and kept with the (immutable) model."""
+    solver = model.__dict__.get("_banded_solver")
+    if solver is None:
+        solver = BandedHarmonicSolver(model)
+        model.__dict__["_banded_solver"] = solver  # a frozen dataclass: cache like functools.cached_property
+    return solver

@@ -265,7 +265,16 @@ def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness:
 
 
 def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
-    """Project ``model`` on its lowest ``basis_size`` undamped modes."""
+    """Project ``model`` on its lowest ``basis_size`` undamped modes (kept with the immutable
+    model, so a second analysis of it reuses the basis)."""
+    cache = model.__dict__.setdefault("_reduced", {})
+    key = (int(basis_size), method)
+    if key not in cache:
+        cache[key] = _reduce(model, basis_size, method)
+    return cache[key]
+
+
+def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:
     free = model.dofs.free
     w2, Phi = modal_basis(model, basis_size, method)
 

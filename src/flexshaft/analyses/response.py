@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError
+from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError, solver_for
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -84,7 +84,7 @@ class HarmonicResponse(np.ndarray, ResultMixin):
 
 def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None = None) -> np.ndarray:
     """Solve at (ω, Ω, load scale) points; returns (ndof, ..., npoints)."""
-    solver = solver or BandedHarmonicSolver(model)
+    solver = solver or solver_for(model)
     Q = np.asarray(loads)
     rhs = Q[solver.free].astype(complex)
     out = np.zeros(Q.shape + (len(points),), dtype=complex)

@@ -12,7 +12,7 @@ import scipy.sparse as sp
 
 from flexshaft.assembly.dofs import BOOM_FIELDS, DofMap
 from flexshaft.assembly.model import Actuator, BearingLink, Controller, Model, ShaftProperties
-from flexshaft.assembly.sparse import scatter
+from flexshaft.assembly.sparse import scatter_blocks
 from flexshaft.elements import magnetic
 from flexshaft.elements import (
     TubeSection,
@@ -109,6 +109,11 @@ def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
 def _bearing_link(design, dm: DofMap, bearing, offset: float = 0.0) -> BearingLink:
     """Relative-displacement rows of ``bearing``; ``offset`` [m] shifts both the shaft and the
     boom station along x (a sensor beside an active bearing) at the bearing's height h."""
+    return _bearing_rows(design, dm, bearing, offset)[0]
+
+
+def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[BearingLink, np.ndarray, np.ndarray]:
+    """:func:`_bearing_link` with the local rows (5, n_local) and their global DOFs."""
     x_shaft = bearing.x + offset
     es, xis, Ls = dm.locate("shaft", x_shaft)
     shaft_dofs = dm.element_dofs("shaft")[es]
@@ -128,9 +133,11 @@ def _bearing_link(design, dm: DofMap, bearing, offset: float = 0.0) -> BearingLi
         (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
     ).tocsr()
     if bearing.kind == "contact":
-        return BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows,
+        link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows,
                            _coefficients(bearing.stiffness), _coefficients(bearing.damping))
-    return BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows)
+    else:
+        link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows)
+    return link, local, dofs
 
 
 def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
@@ -172,11 +179,8 @@ def build_model(design) -> Model:
         kappa = cowper_shear_coefficient(section, nu)
     Ms, Ks, Gs = shaft_element_matrices(np.diff(shaft_x), section, props.youngs_modulus, props.shear_modulus, props.density, kappa)
     sdofs = dm.element_dofs("shaft")
-    M = scatter(Ms, sdofs, n)
-    K = scatter(Ks.real, sdofs, n)
-    shaft_loss = scatter(Ks.imag, sdofs, n)
-    boom_loss = sp.csr_matrix((n, n))
-    G = scatter(Gs, sdofs, n)
+    parts: dict[str, list] = {"M": [(Ms, sdofs)], "K": [(Ks.real, sdofs)], "C": [], "G": [(Gs, sdofs)],
+                              "shaft_loss": [(Ks.imag, sdofs)], "boom_loss": []}
 
     if design.tailboom is not None:
         tb = design.tailboom
@@ -189,33 +193,32 @@ def build_model(design) -> Model:
 
         Mb, Kb = boom_element_matrices(boom_x, section_at, mat.E * (1 + 1j * eta), mat.G * (1 + 1j * eta), mat.density)
         bdofs = dm.element_dofs("boom")
-        M = M + scatter(Mb, bdofs, n)
-        K = K + scatter(Kb.real, bdofs, n)
-        boom_loss = scatter(Kb.imag, bdofs, n)
+        parts["M"].append((Mb, bdofs))
+        parts["K"].append((Kb.real, bdofs))
+        parts["boom_loss"].append((Kb.imag, bdofs))
         if tb.end_mass is not None:
             em = tb.end_mass
             tip = np.array([dm.boom(-1, f) for f in BOOM_FIELDS])
-            M = M + scatter(end_mass_matrix(em.mass, em.offset, em.inertia)[None], tip[None], n)
+            parts["M"].append((end_mass_matrix(em.mass, em.offset, em.inertia)[None], tip[None]))
 
     for disk in design.disks:
         node = dm.node_at("shaft", disk.x)
         Md, Gd = disk_matrices(disk.mass, disk.diametral_inertia, disk.polar_inertia)
         dofs = np.array([dm.shaft(node, f) for f in ("u", "v", "w", "theta", "beta", "gamma")])
-        M = M + scatter(Md[None], dofs[None], n)
-        G = G + scatter(Gd[None], dofs[None], n)
+        parts["M"].append((Md[None], dofs[None]))
+        parts["G"].append((Gd[None], dofs[None]))
 
-    C = sp.csr_matrix((n, n))
     links, actuators = [], []
     for bearing in design.bearings:
-        link = _bearing_link(design, dm, bearing)
+        link, local, dofs = _bearing_rows(design, dm, bearing)
         links.append(link)
-        B = link.rows
         if bearing.kind == "contact":
-            K = K + B.T @ sp.diags(link.stiffness) @ B
+            parts["K"].append((((local.T * link.stiffness) @ local)[None], dofs[None]))
             if np.any(link.damping):
-                C = C + B.T @ sp.diags(link.damping) @ B
+                parts["C"].append((((local.T * link.damping) @ local)[None], dofs[None]))
         else:
             actuators.append(_actuator(design, dm, bearing, link))
+    M, K, C, G, shaft_loss, boom_loss = (scatter_blocks(parts[k], n) for k in ("M", "K", "C", "G", "shaft_loss", "boom_loss"))
 
     return Model(
         dofs=dm,

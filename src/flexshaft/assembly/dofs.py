@@ -88,10 +88,11 @@ class DofMap:
     def element_dofs(self, component: Component) -> np.ndarray:
         """Global DOFs of every element of a component: (nel, 12) shaft or (nel, 10) boom."""
         if component == "shaft":
-            nodes, fields = np.arange(self.n_shaft_nodes), SHAFT_FIELDS
+            per_node = 6 * np.arange(self.n_shaft_nodes)[:, None] + np.arange(len(SHAFT_FIELDS))
+        elif component == "boom":
+            per_node = 6 * self.n_shaft_nodes + 5 * np.arange(self.n_boom_nodes)[:, None] + np.arange(len(BOOM_FIELDS))
         else:
-            nodes, fields = np.arange(self.n_boom_nodes), BOOM_FIELDS
-        per_node = np.stack([self.index(component, nodes, f) for f in fields], axis=1)
+            raise ValueError(f"component must be 'shaft' or 'boom', got {component!r}")
         return np.hstack([per_node[:-1], per_node[1:]])
 
     def locate(self, component: Component, x: float) -> tuple[int, float, float]:

@@ -17,9 +17,13 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.elements.boom import BOOM_COLUMNS
-from flexshaft.elements.shape import FIELDS, beam_shape
 
-__all__ = ["RELATIVE_FIELDS", "attachment_transform", "relative_rows", "spring_matrix"]
+
+__all__ = ["RELATIVE_FIELDS", "attachment_transform", "point_rows", "relative_rows", "spring_matrix"]
+
+_V_COLS = [1, 5, 7, 11]  # v-plane element columns [v1, γ1, v2, γ2]
+_W_COLS = [2, 4, 8, 10]  # w-plane element columns [w1, β1, w2, β2]
+_W_SIGN = (1.0, -1.0, 1.0, -1.0)
 
 #: Components of the relative displacement a bearing acts on, in row order.
 RELATIVE_FIELDS: tuple[str, ...] = ("u", "v", "w", "beta", "gamma")
@@ -37,10 +41,22 @@ def attachment_transform(h: float) -> np.ndarray:
     return T
 
 
-def _point_rows(xi: float, length: float) -> np.ndarray:
-    """Rows ``(6, 12)`` giving ``[u, v, w, θ, β, γ]`` at local coordinate ``xi``."""
-    s = beam_shape(np.array(xi), np.array(length))
-    return np.stack([s.N[f].reshape(12) for f in FIELDS])
+def point_rows(xi: float, length: float) -> np.ndarray:
+    """Rows ``(6, 12)`` giving ``[u, v, w, θ, β, γ]`` at local coordinate ``xi`` of an
+    Euler-Bernoulli element (the shape functions of :func:`~flexshaft.elements.shape.beam_shape`
+    with φ = 0, written out for one point: the bearings are evaluated at build time)."""
+    x, L = float(xi), float(length)
+    x2, x3 = x * x, x * x * x
+    Nd = (1 - 3 * x2 + 2 * x3, L * (x - 2 * x2 + x3), 3 * x2 - 2 * x3, L * (x3 - x2))
+    Nr = (6 * (x2 - x) / L, 1 - 4 * x + 3 * x2, 6 * (x - x2) / L, 3 * x2 - 2 * x)
+    rows = np.zeros((6, 12))
+    rows[0, (0, 6)] = 1 - x, x  # u
+    rows[3, (3, 9)] = 1 - x, x  # θ
+    rows[1, _V_COLS] = Nd  # v
+    rows[5, _V_COLS] = Nr  # γ = dv/dx
+    rows[2, _W_COLS] = np.multiply(Nd, _W_SIGN)  # w, with β = −dw/dx on the rotation columns
+    rows[4, _W_COLS] = -np.multiply(Nr, _W_SIGN)  # β
+    return rows
 
 
 def relative_rows(shaft_xi: float, shaft_length: float, boom_xi=None, boom_length=None, h: float = 0.0) -> np.ndarray:
@@ -61,10 +77,10 @@ def relative_rows(shaft_xi: float, shaft_length: float, boom_xi=None, boom_lengt
         ``(5, 12)`` over the shaft element DOFs, or ``(5, 22)`` over the shaft element DOFs
         followed by the boom element DOFs ``[v, w, θ, β, γ] × 2``.
     """
-    rows_s = _point_rows(shaft_xi, shaft_length)[[0, 1, 2, 4, 5]]
+    rows_s = point_rows(shaft_xi, shaft_length)[[0, 1, 2, 4, 5]]
     if boom_xi is None:
         return rows_s
-    rows_b = _point_rows(boom_xi, boom_length)[1:, :][:, BOOM_COLUMNS]  # [v, w, θ, β, γ]
+    rows_b = point_rows(boom_xi, boom_length)[1:, :][:, BOOM_COLUMNS]  # [v, w, θ, β, γ]
     return np.hstack([rows_s, -attachment_transform(h) @ rows_b])
 
 

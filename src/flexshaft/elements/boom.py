@@ -22,7 +22,7 @@ __all__ = ["BOOM_COLUMNS", "EllipseSection", "ellipse_section", "boom_element_ma
 BOOM_COLUMNS = np.array([1, 2, 3, 4, 5, 7, 8, 9, 10, 11])
 
 _N_GAUSS = 6
-_N_PERIMETER = 256  # trapezoidal rule on a periodic integrand: exponential convergence
+_N_PERIMETER = 128  # trapezoidal rule on a periodic integrand: exponential convergence (1e-12 at 6:1 axes)
 
 
 @dataclass(frozen=True)

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import functools
+
 import numpy as np
 
 __all__ = ["FIELDS", "ShapeValues", "gauss_points", "beam_shape"]
@@ -58,10 +60,18 @@ class ShapeValues:
         return self.dwdx + self.N["beta"]
 
 
-def gauss_points(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """Gauss-Legendre points and weights mapped to ``xi`` in [0, 1]."""
+@functools.lru_cache(maxsize=16)
+def _gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
     x, w = np.polynomial.legendre.leggauss(n)
-    return 0.5 * (x + 1.0), 0.5 * w
+    x, w = 0.5 * (x + 1.0), 0.5 * w
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w
+
+
+def gauss_points(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre points and weights mapped to ``xi`` in [0, 1] (read-only arrays)."""
+    return _gauss(int(n))
 
 
 def _bending(xi: np.ndarray, L: np.ndarray, phi: np.ndarray):

@@ -10,16 +10,21 @@ from typing import Callable
 
 import numpy as np
 
-from flexshaft.analyses import imbalance_response, modes, static_response
+from flexshaft.analyses import imbalance_response, modes
 from flexshaft.analyses.campbell import Campbell, campbell
 from flexshaft.analyses.response import actuator_response, worst_case_orbits
-from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor
+from flexshaft.analyses.shaft_buckling import shaft_buckling
+from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
 from flexshaft.assembly import build_model
-from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
+from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.analyses.summary import model_summary, modes_table
 
-__all__ = ["RunResults", "run_analysis"]
+__all__ = ["RunResults", "SCAN_BOTTOM", "SCAN_TOP", "run_analysis", "whirl_speeds"]
+
+#: Spin speeds of the run's imbalance response, as fractions of the operating speed: from a
+#: slow start to 30 % over it (the largest separation margin API requires above it is 26 %).
+SCAN_BOTTOM, SCAN_TOP = 0.02, 1.30
 
 
 @dataclass
@@ -49,36 +54,44 @@ class RunResults:
     design_studies: object = None  # flexshaft.studies.chapter3.DesignStudies
     notes: list = field(default_factory=list)
     verdict: object = None  # flexshaft.studies.verdict.Verdict against the design's [requirements]
+    shaft_orbits: np.ndarray | None = None  # (nodes, cases, speeds) orbit amplitude at every shaft node [m]
+
+    @property
+    def spinup(self) -> np.ndarray:
+        """Indices of ``speeds`` up to the operating speed (the spin-up proper)."""
+        return np.flatnonzero(self.speeds <= self.model.speed * (1 + 1e-9))
 
 
-def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
+def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
                  studies: str | None = "report") -> RunResults:
     """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength,
-    thermal, whirl stability, and the verdict against the design's ``[requirements]``.
+    buckling, thermal, whirl stability, and the verdict against the design's ``[requirements]``.
 
     Parameters
     ----------
     n_speeds : int
-        Spin-up speeds from 2 % to 110 % of the operating speed.
+        Spin speeds of the imbalance response from 2 % to 130 % of the operating speed (the
+        spin-up and, beyond the operating speed, the critical-speed separation of the verdict).
     n_campbell : int
-        Campbell speeds from 0 to 125 % of the operating speed.
+        Campbell speeds from 0 to 130 % of the operating speed.
     progress : callable or None
         Called with a short label before each step.
     studies : {"report", "full"} or None
-        Resolution of the thesis chapter-3 design studies; None skips them.
+        Resolution of the thesis design studies (chapter 3, and the whirl comparison of
+        chapter 4); None skips them.
     """
     step = progress or (lambda label: None)
     step("assembling the model")
     model = build_model(design)
     speed = model.speed
+    top = max(speed, 1.0)
     step("natural frequencies")
     m0 = modes(model, 0.0, 10)
     mw = modes(model, speed, 10)
     step("Campbell diagram")
-    top = max(speed, 1.0) * 1.25
-    camp = campbell(model, np.linspace(0.0, top, n_campbell), n_modes=12)
+    camp = campbell(model, np.linspace(0.0, SCAN_TOP * top, n_campbell), n_modes=12)
     step("imbalance response over speed")
-    speeds = np.linspace(0.02, 1.10, n_speeds) * max(speed, 1.0)
+    speeds = np.linspace(SCAN_BOTTOM, SCAN_TOP, n_speeds) * top
     Q1 = imbalance_loads(model)
     q = imbalance_response(model, speeds, Q1)  # (ndof, ncases, nspeeds)
     amp, case = worst_case_orbits(model, q)
@@ -87,30 +100,19 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
     envelope = amp[:, case, idx]
     disp, force = actuator_response(model, q_worst, speeds)
     step("static loads and strength")
-    q_static = static_response(model, external_static_load(model) + torque_load(model))
+    parts = static_load_parts(model)
+    q_static = parts["external"] + parts["torque"]
     q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
     strength_static = strength_total = None
     notes = []
     buckling = None
     if model.shaft.laminate is not None:
-        strength_static = shaft_safety_factor(model, q_static)
-        totals = [shaft_safety_factor(model, q_static, q_at_speed[:, c]) for c in range(q_at_speed.shape[1])]
+        strength_static = shaft_safety_factor(model, parts)
+        totals = [shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=True)
+                  for c in range(q_at_speed.shape[1])]
         strength_total = min(totals, key=lambda r: r.safety_factor)
         step("torsional buckling")
-        from flexshaft.buckling import buckling_safety_factor, torsional_buckling_torque
-
-        radius = (model.shaft.outer_diameter - design.shaft.wall_thickness) / 2
-        result = torsional_buckling_torque(model.shaft.laminate, radius, design.shaft.length)
-        torque = model.power / speed if speed > 0 else 0.0
-        buckling = {
-            "critical_torque_positive_Nm": result.torque_positive,
-            "critical_torque_negative_Nm": result.torque_negative,
-            "wave_number_positive": result.n_positive,
-            "wave_number_negative": result.n_negative,
-            "theory": result.theory,
-            "torque_Nm": torque,
-            "safety_factor": buckling_safety_factor(result, torque) if torque > 0 else float("inf"),
-        }
+        buckling = shaft_buckling(model).to_dict()
     else:
         notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
     step("thermal")
@@ -122,9 +124,14 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
     else:
         notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
     step("whirl stability")
-    stab, comparison, gmap = _whirl(design, model, notes)
+    from flexshaft.analyses.stability import stability
+
+    stab = stability(model, whirl_speeds(model), n_modes=10)
+    comparison, gmap = {}, None
     design_studies_result = None
     if studies:
+        step("whirl studies (thesis chapter 4)")
+        comparison, gmap = _whirl_studies(design, model, notes)
         step("design studies (thesis chapter 3)")
         from flexshaft.studies.chapter3 import design_studies
         from flexshaft.sweep import SweepError
@@ -156,6 +163,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         thermal=thermal,
         design_studies=design_studies_result,
         notes=notes,
+        shaft_orbits=amp,
     )
     step("requirements verdict")
     from flexshaft.studies.verdict import evaluate
@@ -165,19 +173,22 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
     return results
 
 
-def _whirl(design, model: Model, notes: list):
-    """Stability of the design, the thesis's three-shaft comparison and the (K_p, K_d) map."""
-    from flexshaft.analyses.stability import stability
+def whirl_speeds(model: Model) -> np.ndarray:
+    """Speeds of the run's stability analyses: 41 from rest to 1.5 × the operating speed [rad/s]
+    (the onset itself is solved between them)."""
+    return np.linspace(0.0, 1.5 * max(model.speed, 1.0), 41)
+
+
+def _whirl_studies(design, model: Model, notes: list):
+    """The thesis's three-shaft comparison (viscous and hysteretic) and the (K_p, K_d) onset map."""
     from flexshaft.design import DesignError
     from flexshaft.studies.whirl import compare_shafts, gain_stability_map
 
-    top = max(model.speed, 1.0) * 1.5
-    speeds = np.linspace(0.0, top, 61)
-    stab = stability(model, speeds, n_modes=10)
+    speeds = whirl_speeds(model)
     comparison = {}
     try:
         viscous = compare_shafts(design, speeds, "viscous", n_modes=8)
-        hysteretic = compare_shafts(design, np.linspace(0.0, top, 31), "hysteretic", n_modes=8)
+        hysteretic = compare_shafts(design, speeds, "hysteretic", n_modes=8)
         comparison = {k: {"viscous": viscous[k], "hysteretic": hysteretic[k]} for k in viscous}
     except (DesignError, ValueError) as exc:
         notes.append(f"thesis shaft comparison skipped: {str(exc).splitlines()[0]}")
@@ -185,4 +196,4 @@ def _whirl(design, model: Model, notes: list):
     if model.actuators and model.all_pd:
         kp0 = model.actuators[0].controller.kp
         gmap = gain_stability_map(design, [kp0 / 30, kp0 / 5, kp0], [0.0, 300.0, 1000.0, 3000.0], speeds, n_modes=8)
-    return stab, comparison, gmap
+    return comparison, gmap

@@ -41,7 +41,7 @@ def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
 
 
 def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top: float = CRITICAL_SEARCH_TOP,
-                            n_points: int = _SCAN_POINTS) -> tuple[LateralCritical, ...]:
+                            n_points: int = _SCAN_POINTS, scan=None) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
     Parameters
@@ -55,6 +55,9 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
         Highest speed scanned, as a multiple of the operating speed.
     n_points : int
         Samples of the initial scan (2 % to ``top`` of the operating speed).
+    scan : tuple of ndarray, optional
+        ``(speeds, orbits)`` of a scan already computed (orbits (nodes, cases, speeds) [m], e.g.
+        the run's spin-up response), used instead of a new one.
 
     Returns
     -------
@@ -62,9 +65,12 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
         In order of speed; AF from the half-power bandwidth of the orbit at the shaft station
         where the peak is largest, for the worst imbalance case there.
     """
-    speeds = np.linspace(_SCAN_BOTTOM, top, n_points) * model.speed
     loads = imbalance_loads(model)
-    orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
+    if scan is None:
+        speeds = np.linspace(_SCAN_BOTTOM, top, n_points) * model.speed
+        orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
+    else:
+        speeds, orbits = scan
     envelope = orbits.max(axis=(0, 1))
     out: list[LateralCritical] = []
     for rough in response_peaks(speeds, envelope):
@@ -84,7 +90,7 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
             continue
         if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
             continue
-        location = {"station": station, "af_method": peak.method}
+        location = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
         if not peak.resolved:
             location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
         mode = _campbell_label(campbell, peak.speed)
@@ -155,6 +161,7 @@ def _buckling(res, notes: dict) -> dict:
         return {}
     positive = b["critical_torque_positive_Nm"] <= b["critical_torque_negative_Nm"]
     sense, n = ("positive", b["wave_number_positive"]) if positive else ("negative", b["wave_number_negative"])
+    n = "∞ (shear crimping)" if n is None else n
     critical = min(b["critical_torque_positive_Nm"], b["critical_torque_negative_Nm"])
     return {"buckling_safety_factor": float(b["safety_factor"]), "buckling_location": {
         "case": f"{sense} torque, n = {n}",
@@ -179,14 +186,21 @@ def _whirl(res, speed: float, notes: dict) -> dict:
     return out
 
 
+def _spinup_indices(res) -> np.ndarray:
+    """Indices of the run's speeds up to the operating speed (the spin-up proper)."""
+    return np.flatnonzero(np.asarray(res.speeds) <= res.model.speed * (1 + 1e-9))
+
+
 def _actuators(res) -> tuple[ActuatorEvidence, ...]:
     model = res.model
     design = model.design
     out = []
+    up = _spinup_indices(res)
     for a in model.actuators:
-        d = np.asarray(res.actuator_displacement[a.name])
-        f = np.asarray(res.actuator_force[a.name])
-        i, j = int(np.argmax(d)), int(np.argmax(f))
+        d = np.asarray(res.actuator_displacement[a.name])[up]
+        f = np.asarray(res.actuator_force[a.name])[up]
+        i, j = int(up[np.argmax(d)]), int(up[np.argmax(f)])
+        d, f = np.asarray(res.actuator_displacement[a.name]), np.asarray(res.actuator_force[a.name])
         static = float(np.hypot(*np.real(a.lateral_rows @ res.static_displacement)))
         bearing = design.bearing(a.name) if design is not None else None
         capacity = getattr(bearing, "force_capacity", None)
@@ -231,7 +245,10 @@ def evidence_from_run(res: object) -> Evidence:
     values.update(_whirl(res, speed, notes))
     if speed > 0.0:
         try:
-            values["critical_speeds"] = lateral_critical_speeds(model, res.campbell)
+            scan = None
+            if getattr(res, "shaft_orbits", None) is not None and res.speeds[-1] >= CRITICAL_SEARCH_TOP * speed * (1 - 1e-9):
+                scan = (np.asarray(res.speeds), np.asarray(res.shaft_orbits))
+            values["critical_speeds"] = lateral_critical_speeds(model, res.campbell, scan=scan)
             values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
         except SingularSystemError as exc:
             notes["separation"] = f"the unbalance response could not be scanned: {exc}"
@@ -240,10 +257,19 @@ def evidence_from_run(res: object) -> Evidence:
     values.update(_temperature(res, notes))
     if design is not None:
         values["allowable_temperature"] = celsius_to_kelvin(design.thermal.allowable_temperature_c)
-    peak = np.asarray(res.shaft_peak)
+    up = _spinup_indices(res)
+    peak = np.asarray(res.shaft_peak)[up]
     if peak.size:
-        k = int(np.argmax(peak))
+        k = int(up[np.argmax(peak)])
+        peak = np.asarray(res.shaft_peak)
         node = int(np.argmax(np.asarray(res.shaft_envelope)[:, k]))
         values["spinup_peak"] = float(peak[k])
         values["spinup_location"] = {"station": float(model.dofs.shaft_x[node]), "speed": float(res.speeds[k])}
+        # a sharp resonance falls between grid speeds: take its refined peak when it is larger
+        for c in values.get("critical_speeds") or ():
+            refined = c.location.get("peak_orbit")
+            if refined is not None and c.speed <= speed and np.isfinite(refined) and refined > values["spinup_peak"]:
+                values["spinup_peak"] = float(refined)
+                values["spinup_location"] = {"station": c.location["station"], "speed": float(c.speed),
+                                             "detail": "peak refined between the sampled speeds"}
     return Evidence(operating_speed=speed, actuators=_actuators(res), notes=notes, **values)
