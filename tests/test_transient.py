@@ -350,3 +350,19 @@ def test_imbalance_loads_default_is_the_design_case(baseline):
     model, red = baseline
     per_bay = per_bay_imbalance_loads(model, model.design.loads.eccentricity * model.shaft_mass / 3)
     np.testing.assert_allclose(per_bay, imbalance_loads(model, "mid_bay")[:, 0], rtol=1e-12, atol=1e-20)
+
+
+def test_runup_figure_renders(baseline, tmp_path):
+    """The figure draws on a given axes (shaft panel) or as three panels; PNG written."""
+    from matplotlib.figure import Figure
+
+    from flexshaft.report.figures import save_figure
+
+    model, red = baseline
+    run = run_up(model, 2.0, start=300.0, stop=400.0, reduced=red)
+    steady = steady_state_envelope(model, np.linspace(300.0, 400.0, 50))
+    fig = run.plot(steady=steady)
+    assert len(fig.axes) == 3
+    ax = Figure().subplots()
+    assert run.plot(ax=ax, steady=steady) is ax.figure and len(ax.figure.axes) == 1
+    assert save_figure(fig, tmp_path, "runup")["png"].stat().st_size > 0

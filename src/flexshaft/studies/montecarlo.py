@@ -50,11 +50,13 @@ __all__ = [
     "ImbalanceDraws",
     "MonteCarloResult",
     "MonteCarloSampler",
+    "RunupSamples",
     "UnitResponses",
     "balance_grade_eccentricity",
     "draw_imbalance",
     "montecarlo_study",
     "run_montecarlo",
+    "runup_montecarlo",
     "sample_outputs",
     "unit_responses",
 ]
@@ -346,13 +348,14 @@ def _combination(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarra
         e = mine[np.clip(np.searchsorted(ends[:, 1], x, side="left"), 0, mine.size - 1)]
         span = units.elements[e, 1] - units.elements[e, 0]
         xi = np.where(span > 0, (x - units.elements[e, 0]) / np.where(span > 0, span, 1.0), 0.0)
-        basis = np.ones((n, 4))
-        for j in range(4):  # cubic Lagrange weights on ξ = 0, ⅓, ⅔, 1
-            for m in range(4):
-                if m != j:
-                    basis[:, j] *= (xi - _STATIONS[m]) / (_STATIONS[j] - _STATIONS[m])
-        if units.placement == "mid_bay":
-            basis = np.array([1.0, 0.0, 0.0, 0.0])[None, :].repeat(n, axis=0)
+        basis = np.zeros((n, 4))
+        basis[:, 0] = 1.0  # mid-bay: the single station
+        if units.placement == "uniform":
+            for j in range(4):  # cubic Lagrange weights on ξ = 0, ⅓, ⅔, 1
+                basis[:, j] = 1.0
+                for m in range(4):
+                    if m != j:
+                        basis[:, j] *= (xi - _STATIONS[m]) / (_STATIONS[j] - _STATIONS[m])
         unbalance = draws.eccentricity[:, b] * units.bay_mass[b] * np.exp(1j * draws.angle[:, b])
         idx[:, b] = units.element_stations[e]
         weights[:, b] = unbalance[:, None] * basis
@@ -536,3 +539,89 @@ def run_montecarlo(design, n_samples: int, *, seed: int = 0, grade_mm_s: float |
     ds.attrs.update({"seed": int(seed), "distribution": distribution.kind, "eccentricity_scale_m": distribution.scale,
                      "placement": placement})
     return MonteCarloResult(ds, gap, force_limit)
+
+
+# ---------------------------------------------------------------------------------------------
+# Monte Carlo over a run-up
+
+
+@dataclass(frozen=True)
+class RunupSamples:
+    """Peaks of each sample over a run-up transient (arrays over samples) [SI]."""
+
+    shaft_peak: np.ndarray
+    shaft_peak_speed: np.ndarray
+    actuator_orbit_max: np.ndarray
+    actuator_force_max: np.ndarray
+    draws: ImbalanceDraws
+
+    def exceedance(self, name: str, limit: float) -> tuple[float, float]:
+        """P(output > limit) and its standard error √(p(1−p)/N)."""
+        values = np.asarray(getattr(self, name), dtype=float)
+        p = float(np.mean(values > limit))
+        return p, float(np.sqrt(p * (1 - p) / values.size))
+
+
+def runup_montecarlo(model: Model, profile, n_samples: int, *, seed: int = 0,
+                     distribution: EccentricityDistribution, basis_size: int | None = None,
+                     rtol: float = 1e-5, output_step: float | None = None, block: int = 256) -> RunupSamples:
+    """Monte-Carlo imbalance over a run-up (mid-bay unbalances, random magnitude and angle).
+
+    The run-up is linear in the load, so one transient per bay
+    (:func:`flexshaft.analyses.transient.transient_response` with a unit unbalance at the
+    bay's middle, from rest or the steady state at Ω(0)) gives every sample as a weighted sum
+    of the bays' complex envelopes; each sample's peaks are those of its envelopes over the
+    run. Sample k uses the same draws as the steady study (``default_rng([seed, k])``).
+
+    Parameters
+    ----------
+    profile : SpeedProfile
+        Ω(t) of the run.
+    n_samples, seed, distribution
+        As for :func:`run_montecarlo`.
+    basis_size, rtol, output_step
+        Passed to ``transient_response`` (default output step π/(2 Ω_max): 4 samples per
+        period of the fastest envelope content).
+    """
+    from flexshaft.analyses.eigen import reduce
+    from flexshaft.analyses.transient import default_basis_size, transient_response
+    from flexshaft.assembly.loads import imbalance_bays, per_bay_imbalance_loads
+
+    bays = imbalance_bays(model) or [(float(model.dofs.shaft_x[0]), float(model.dofs.shaft_x[-1]))]
+    n_bays = len(bays)
+    lengths = np.array([b - a for a, b in bays])
+    bay_mass = model.shaft_mass * lengths / lengths.sum()
+    red = reduce(model, default_basis_size(model, profile.max_speed) if basis_size is None else int(basis_size))
+    output_step = np.pi / (2 * max(profile.max_speed, 1e-3)) if output_step is None else output_step
+    shaft, act, force = [], [], []
+    for b in range(n_bays):
+        unit = np.zeros(n_bays)
+        unit[b] = 1.0
+        run = transient_response(model, profile, loads_per_speed_squared=per_bay_imbalance_loads(model, unit),
+                                 reduced=red, rtol=rtol, output_step=output_step)
+        shaft.append(run.shaft_envelope)
+        act.append(run.actuator_envelope)
+        force.append(run.actuator_force_envelope)
+    n_t = shaft[0].shape[-1]
+    shaft = np.stack(shaft, -1).astype(np.complex64).reshape(-1, n_bays)  # (2·n_nodes·n_t, n_bays)
+    act = np.stack(act, -1).astype(np.complex64).reshape(-1, n_bays)  # (n_act·2·n_t, n_bays)
+    force = np.stack(force, -1).astype(np.complex64).reshape(-1, n_bays)
+    n_act = act.shape[0] // (2 * n_t)
+    draws = draw_imbalance(range(int(n_samples)), n_bays, distribution, "mid_bay", seed)
+    weights = (draws.eccentricity * bay_mass * np.exp(1j * draws.angle)).T.astype(np.complex64)  # (n_bays, n) [kg m]
+    n = weights.shape[1]
+    out = {k: np.zeros(n) for k in ("shaft_peak", "shaft_peak_speed", "actuator_orbit_max", "actuator_force_max")}
+    for start in range(0, n, block):
+        w = weights[:, start : start + block]
+        sl = slice(start, start + w.shape[1])
+        envelope = (shaft @ w).reshape(2, -1, n_t, w.shape[1])  # (2, n_nodes, n_t, n)
+        per_time = orbit_amplitude(envelope[0], envelope[1]).max(axis=0)  # (n_t, n)
+        k = np.argmax(per_time, axis=0)
+        out["shaft_peak"][sl] = per_time[k, np.arange(k.size)]
+        out["shaft_peak_speed"][sl] = run.speed[k]
+        if n_act:
+            d = (act @ w).reshape(n_act, 2, n_t, -1)
+            f = (force @ w).reshape(n_act, 2, n_t, -1)
+            out["actuator_orbit_max"][sl] = orbit_amplitude(d[:, 0], d[:, 1]).max(axis=(0, 1))
+            out["actuator_force_max"][sl] = orbit_amplitude(f[:, 0], f[:, 1]).max(axis=(0, 1))
+    return RunupSamples(draws=draws, **out)
