@@ -491,7 +491,8 @@ def transient_response(
     if isinstance(initial, str):
         if initial not in ("steady", "rest"):
             raise ValueError(f"initial must be 'steady', 'rest' or a state vector, got {initial!r}")
-        z = system.steady_state(profile.speed(0.0)) if initial == "steady" else np.zeros(n, complex)
+        start = profile.speed(0.0)
+        z = system.steady_state(start) if initial == "steady" and start > 0 else np.zeros(n, complex)
     else:
         z = np.asarray(initial, dtype=complex).copy()
         if z.shape != (n,):
