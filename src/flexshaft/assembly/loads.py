@@ -6,7 +6,8 @@
 * the torque ``T = P/Ω`` at the shaft's aft end (forward end held in twist);
 * the rotating imbalance ``F = e_c m_s Ω²`` shared among the shaft bays between bearings,
   as complex amplitudes of a forward-rotating load: ``Q_v = F``, ``Q_w = −iF`` (the force turns
-  from +y towards +z with the spin).
+  from +y towards +z with the spin); :func:`per_bay_imbalance_loads` takes each bay's own
+  unbalance, angle and position.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ __all__ = [
     "external_static_load",
     "imbalance_bays",
     "imbalance_loads",
+    "per_bay_imbalance_loads",
 ]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
@@ -190,3 +192,43 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     nb = per_bay.shape[1]
     signs = [np.array([1.0] + [1.0 if (k >> j) & 1 == 0 else -1.0 for j in range(nb - 1)]) for k in range(2 ** (nb - 1))]
     return np.stack([per_bay @ s for s in signs], axis=1)
+
+
+def per_bay_imbalance_loads(model: Model, unbalance, angle=0.0, position=0.5) -> np.ndarray:
+    """One rotating load vector per unit Ω² [N s²] (ndof,) from each bay's own unbalance.
+
+    Bay b (:func:`imbalance_bays`, or the whole shaft when there are none) carries a point
+    unbalance ``U_b = e_b m_b`` [kg m] at angle ``ψ_b`` [rad] ahead of the reference mark, at
+    ``x = a_b + position_b (b_b − a_b)``: ``Q_v = U_b e^{iψ_b}``, ``Q_w = −i U_b e^{iψ_b}``, so
+    the force at phase φ is ``U_b Ω² (cos(φ + ψ_b), sin(φ + ψ_b))`` in (y, z).
+
+    Parameters
+    ----------
+    unbalance : array_like
+        U_b per bay [kg m] (a scalar is used for every bay); >= 0.
+    angle : array_like
+        ψ_b per bay [rad].
+    position : array_like
+        Fraction of each bay's length in [0, 1] (0.5: mid-bay).
+    """
+    bays = imbalance_bays(model) or [(model.dofs.shaft_x[0], model.dofs.shaft_x[-1])]
+    n = len(bays)
+    values = {}
+    for name, value in (("unbalance", unbalance), ("angle", angle), ("position", position)):
+        v = np.broadcast_to(np.asarray(value, dtype=float), (n,)) if np.ndim(value) == 0 else np.asarray(value, dtype=float)
+        if v.shape != (n,):
+            raise ValueError(f"{name}: expected one value per bay ({n} bays), got shape {np.shape(value)}")
+        if not np.all(np.isfinite(v)):
+            raise ValueError(f"{name}: values must be finite, got {v.tolist()}")
+        values[name] = v
+    if np.any(values["unbalance"] < 0):
+        raise ValueError(f"unbalance: values must be >= 0 kg m, got {values['unbalance'].tolist()}")
+    if np.any((values["position"] < 0) | (values["position"] > 1)):
+        raise ValueError(f"position: fractions of the bay must lie in [0, 1], got {values['position'].tolist()}")
+    Q = np.zeros(model.dofs.size, dtype=complex)
+    for (a, b), U, psi, frac in zip(bays, values["unbalance"], values["angle"], values["position"]):
+        amplitude = U * np.exp(1j * psi)
+        rotating = amplitude * np.array([0.0, 1.0, -1j])
+        x = a + frac * (b - a)
+        Q += point_load(model, "shaft", rotating.real, x=x) + 1j * point_load(model, "shaft", rotating.imag, x=x)
+    return Q

@@ -1,0 +1,577 @@
+r"""Run-up and run-down through the criticals: the imbalance response in the time domain.
+
+Equations (DESIGN.md §2, thesis eqs. 2.38-2.40 with a time-varying speed). The shaft spins at
+Ω(t) ≥ 0 with phase φ(t) = ∫₀ᵗ Ω dτ. An unbalance U = e·m [kg m] at angle ψ on the shaft sits at
+``e (cos(φ+ψ), sin(φ+ψ))`` in the (y, z) plane; the force it puts on the shaft is minus its
+mass times its acceleration, in complex form (r = v + i w)
+
+    F_v + i F_w = U (Ω² − i Ω̇) e^{i(φ+ψ)},
+
+the centrifugal term U Ω² plus the tangential term U Ω̇ that lags it by 90° (it resists the
+angular acceleration). With the rotating load vector ``Q₁`` of
+:mod:`flexshaft.assembly.loads` (``Q_v = U e^{iψ}``, ``Q_w = −i U e^{iψ}`` per unit Ω²) the load
+is ``Q(t) = Re[Q₁ (Ω² − iΩ̇) e^{iφ}]``. The equation of motion is
+
+    M q̈ + (Ω(t) G + C) q̇ + K q + (loss) + (actuators) = Q(t),
+
+on the modal basis of :func:`flexshaft.analyses.eigen.reduce` (``q = Φ y``, the lowest
+undamped non-spinning modes with the actuators' basis stiffness; transfer-function actuators
+carry their controller states, :meth:`ReducedModel.state_matrix`). The term Ω̇ K_st of the
+gyroscopic moment (Lalanne & Ferraris) is left out: it is of order I_p Ω̇ / (EI/ℓ) ≈ 1e-5 for
+the baseline tube even at 500 rad/s².
+
+Loss (the causal equivalent). The hysteretic loss ``i K'' sgn ω`` has no exact causal time
+form. Each loss matrix becomes an equivalent viscous damping with a reference frequency per
+mode, scaled symmetrically in modal coordinates, ``D = W^{-1/2} K̃'' W^{-1/2}``:
+
+* fixed-frame loss (tailboom; shaft axial and torsion; with ``internal_damping = "thesis"``
+  also the shaft's bending): ``W = diag(ω_j)``, the basis frequencies. Each mode meets its own
+  loss ``i K̃''_jj`` at resonance, where the loss matters;
+* ``internal_damping = "rotating"``: the shaft's bending loss acts on the velocity relative to
+  the spin, ``D (ẏ + Ω S̃' y)`` (Zorzi & Nelson 1977; S the −90° rotation of the lateral pairs),
+  with ``W = diag(ω_j + Ω)``: the frequency at which the spinning material is cycled by the
+  backward whirl of mode j. The forward synchronous response meets no loss in either model;
+  the backward synchronous part meets exactly ``i K̃''`` at each resonance Ω = ω_j; free
+  forward whirl meets ``(ω_j − Ω)/(ω_j + Ω)`` of the hysteretic loss, never more (a reference
+  of ω_j alone would overstate the supercritical circulatory force up to several-fold and miss
+  the backward synchronous response by up to 2x).
+
+Away from resonance the steady state differs from the hysteretic frequency response by the
+mismatch of the damping where stiffness dominates; measured on the baseline over 150 speeds
+of the spin-up it is below 0.52 % (shaft) and 0.95 % (actuators), 0.2 % at the 55-Hz peak
+(``tests/test_transient.py``). The rotating model's whirl onset moves from 3319 rpm
+(hysteretic eigen-analysis) to 3673 rpm: the causal loss grows from zero below the spin line
+instead of switching on at full strength. The quasi-static response of the modes left out
+of the basis (:func:`residual_flexibility`) is added to every output.
+
+Integration. The response is carried as a complex envelope Z: with ``z = Z e^{iφ}`` the
+complex solution of ``ż = A(Ω) z + b (Ω² − iΩ̇) e^{iφ}`` (A real, so Re z is the physical
+state), Z obeys
+
+    Ż = (A(Ω) − iΩ) Z + b (Ω² − iΩ̇),
+
+which has no fast forcing: the forced response is slow in Z and a free vibration of mode j
+turns at ω_j − Ω. :mod:`flexshaft.analyses.envelope` integrates it by exponential time
+differencing in the eigenbasis of the system at a reference speed (every free vibration
+exact, whatever the step; ETDRK4 for the slow rest; step doubling for the error). The
+envelope ``orbit_amplitude(Z_v, Z_w)`` at a station is the largest deflection over the angular
+position of the imbalance at that instant; for an axisymmetric rotor it is the instantaneous
+whirl radius |r(t)| exactly, and in steady state it is the major semi-axis of the orbit of the
+frequency response, so run-up and spin-up curves compare directly.
+
+References
+----------
+Zorzi, E. S., Nelson, H. D. (1977). Finite element simulation of rotor-bearing systems with
+internal damping. J. Eng. Power 99, 71-76.
+Lalanne, M., Ferraris, G. (1998). *Rotordynamics Prediction in Engineering*, 2nd ed., Wiley.
+Lewis, F. M. (1932). Vibration during acceleration through a critical speed. Trans. ASME 54.
+"""
+
+from __future__ import annotations
+
+import bisect
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from flexshaft.analyses.eigen import ReducedModel, reduce
+from flexshaft.analyses.envelope import EnvelopeSystem, integrate_envelope
+from flexshaft.analyses.response import imbalance_response, orbit_amplitude
+from flexshaft.assembly.model import Model
+
+__all__ = [
+    "SpeedProfile",
+    "SteadyEnvelope",
+    "TransientResult",
+    "default_basis_size",
+    "residual_flexibility",
+    "run_up",
+    "steady_state_envelope",
+    "transient_response",
+]
+
+#: Basis modes up to this multiple of the largest speed (at least :data:`MIN_BASIS` modes).
+BASIS_FREQUENCY_RATIO = 4.0
+MIN_BASIS = 12
+#: Largest number of output samples of one run.
+MAX_OUTPUTS = 200_000
+#: Output samples per radian of the fastest envelope content (|ω_j − Ω| ≤ Ω_max): 8 per period.
+OUTPUT_SAMPLES_PER_RADIAN = 8 / (2 * np.pi)
+_SQ3 = np.sqrt(3.0)
+
+
+# ---------------------------------------------------------------------------------------------
+# Speed profiles
+
+
+@dataclass(frozen=True)
+class SpeedProfile:
+    """Spin speed Ω(t) ≥ 0 [rad/s] over ``0 ≤ t ≤ duration`` [s].
+
+    Either piecewise linear through ``(times, speeds)`` (constant acceleration on each
+    segment; the integrator lands on every breakpoint), or a callable ``speed(t)`` with its
+    derivative ``acceleration(t)`` [rad/s²] (central differences when not given).
+    Build one with :meth:`constant_acceleration`, :meth:`table` or :meth:`from_callable`.
+    """
+
+    duration: float
+    times: np.ndarray | None = None
+    speeds: np.ndarray | None = None
+    speed_function: Callable[[float], float] | None = None
+    acceleration_function: Callable[[float], float] | None = None
+
+    @classmethod
+    def table(cls, times, speeds) -> "SpeedProfile":
+        """Piecewise-linear Ω through ``speeds`` [rad/s] at ``times`` [s] (from t = 0)."""
+        t = np.asarray(times, dtype=float).ravel()
+        s = np.asarray(speeds, dtype=float).ravel()
+        if t.size < 2 or t.size != s.size:
+            raise ValueError(f"speed table: need >= 2 (time, speed) pairs of equal length, got {t.size} times and {s.size} speeds")
+        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(s))):
+            raise ValueError("speed table: times and speeds must be finite")
+        if t[0] != 0.0 or np.any(np.diff(t) <= 0):
+            raise ValueError(f"speed table: times must start at 0 s and increase strictly, got {t.tolist()}")
+        if np.any(s < 0):
+            raise ValueError(f"speed table: speeds must be >= 0 rad/s (one spin direction), got min {s.min()!r}")
+        return cls(duration=float(t[-1]), times=t, speeds=s)
+
+    @classmethod
+    def constant_acceleration(cls, start: float, stop: float, acceleration: float, dwell: float = 0.0) -> "SpeedProfile":
+        """From ``start`` to ``stop`` [rad/s] at ``|acceleration|`` [rad/s²] (run-down when
+        stop < start), then ``dwell`` [s] at ``stop``."""
+        if not (np.isfinite(acceleration) and acceleration != 0):
+            raise ValueError(f"acceleration must be finite and nonzero rad/s², got {acceleration!r}")
+        if not (np.isfinite(dwell) and dwell >= 0):
+            raise ValueError(f"dwell must be >= 0 s, got {dwell!r}")
+        ramp = abs(stop - start) / abs(acceleration)
+        if ramp <= 0:
+            raise ValueError(f"start and stop speeds are equal ({start!r} rad/s): nothing to ramp")
+        times, speeds = [0.0, ramp], [start, stop]
+        if dwell > 0:
+            times.append(ramp + dwell)
+            speeds.append(stop)
+        return cls.table(times, speeds)
+
+    @classmethod
+    def from_callable(cls, speed: Callable[[float], float], duration: float,
+                      acceleration: Callable[[float], float] | None = None) -> "SpeedProfile":
+        """Any smooth Ω(t) [rad/s] on [0, duration] [s], optionally with dΩ/dt [rad/s²]."""
+        if not (np.isfinite(duration) and duration > 0):
+            raise ValueError(f"duration must be > 0 s, got {duration!r}")
+        probe = np.array([float(speed(t)) for t in np.linspace(0.0, duration, 257)])
+        if not np.all(np.isfinite(probe)) or np.any(probe < 0):
+            raise ValueError("speed(t) must be finite and >= 0 rad/s on [0, duration]")
+        return cls(duration=float(duration), speed_function=speed, acceleration_function=acceleration)
+
+    @property
+    def breakpoints(self) -> np.ndarray:
+        """Times [s] the integrator must land on (segment ends of a table)."""
+        return self.times if self.times is not None else np.array([0.0, self.duration])
+
+    @property
+    def max_speed(self) -> float:
+        """Largest speed [rad/s] (sampled for a callable)."""
+        if self.speeds is not None:
+            return float(self.speeds.max())
+        return float(max(self.speed(t) for t in np.linspace(0.0, self.duration, 1025)))
+
+    def _segment(self, t: float) -> int:
+        return min(max(bisect.bisect_right(self._knots, t) - 1, 0), len(self._knots) - 2)
+
+    @cached_property
+    def _knots(self) -> list[float]:
+        return self.times.tolist()
+
+    @cached_property
+    def _slopes(self) -> list[float]:
+        return (np.diff(self.speeds) / np.diff(self.times)).tolist()
+
+    def speed(self, t: float) -> float:
+        """Ω(t) [rad/s]."""
+        if self.speeds is not None:
+            k = self._segment(t)
+            return float(self.speeds[k] + self._slopes[k] * (min(max(t, 0.0), self.duration) - self._knots[k]))
+        return float(self.speed_function(t))
+
+    def speeds_at(self, times) -> np.ndarray:
+        """Ω at many times [rad/s] (vectorised for a table)."""
+        t = np.asarray(times, dtype=float)
+        if self.speeds is not None:
+            return np.interp(t, self.times, self.speeds)
+        return np.array([self.speed(x) for x in t.ravel()]).reshape(t.shape)
+
+    def acceleration(self, t: float) -> float:
+        """dΩ/dt [rad/s²] (of the segment containing t; right-continuous at a breakpoint)."""
+        if self.speeds is not None:
+            return self._slopes[self._segment(t)]
+        if self.acceleration_function is not None:
+            return float(self.acceleration_function(t))
+        h = 1e-6 * self.duration
+        a, b = max(t - h, 0.0), min(t + h, self.duration)
+        return (self.speed(b) - self.speed(a)) / (b - a)
+
+
+def default_basis_size(model: Model, max_speed: float) -> int:
+    """Basis modes: every undamped mode below :data:`BASIS_FREQUENCY_RATIO` × the largest
+    speed, at least :data:`MIN_BASIS` (see the convergence study in ``benchmarks/runup.py``)."""
+    from flexshaft.analyses.eigen import modal_basis
+
+    n_free = model.dofs.free.size
+    guess = min(n_free, 60)
+    while True:
+        w2, _ = modal_basis(model, guess)
+        below = int(np.sum(w2 < (BASIS_FREQUENCY_RATIO * max(max_speed, 1.0)) ** 2))
+        if below < guess or guess >= n_free:
+            return int(min(max(below, MIN_BASIS), n_free))
+        guess = min(2 * guess, n_free)
+
+
+# ---------------------------------------------------------------------------------------------
+# Results
+
+
+@dataclass(frozen=True)
+class TransientResult:
+    """A run-up or run-down: envelopes over time (see the module docstring).
+
+    Attributes
+    ----------
+    time, speed, acceleration, phase : ndarray
+        t [s], Ω [rad/s], dΩ/dt [rad/s²], φ = ∫Ω dt [rad] at the output instants (n_t,).
+    shaft_x : ndarray
+        Shaft node stations [m].
+    shaft_orbit : ndarray
+        Envelope (largest deflection over the imbalance's angular position) at every shaft
+        node, (n_nodes, n_t) [m].
+    actuator_displacement, actuator_force : ndarray
+        Envelope of the lateral relative displacement [m] and of the force [N] at each active
+        bearing, (n_act, n_t).
+    modal_displacement, modal_velocity : ndarray
+        Complex envelopes Y, V of the modal coordinates (nb, n_t): ``q = Re(Φ Y e^{iφ})``.
+    shaft_envelope : ndarray
+        Complex envelopes of the shaft's v and w at every node, static correction included,
+        (2, n_nodes, n_t) [m]: ``v(t) = Re(shaft_envelope[0] e^{iφ})``. Linear in the load,
+        so responses to several loads superpose.
+    actuator_envelope, actuator_force_envelope : ndarray
+        Complex envelopes of each active bearing's lateral relative displacement [m] and
+        force [N], (n_act, 2, n_t).
+    basis_size : int
+    steps, rejected, refreshes : int
+        Accepted and rejected steps, eigenbasis refreshes of the integration.
+    max_growth_rate : float
+        Largest real part of the system's eigenvalues at the reference speeds of the run
+        [1/s]; positive means a whirl instability inside the run's speed range (the response
+        there grows whatever the imbalance; compare :func:`flexshaft.analyses.stability`).
+    """
+
+    time: np.ndarray
+    speed: np.ndarray
+    acceleration: np.ndarray
+    phase: np.ndarray
+    shaft_x: np.ndarray
+    shaft_orbit: np.ndarray
+    actuator_displacement: np.ndarray
+    actuator_force: np.ndarray
+    actuator_names: tuple[str, ...]
+    modal_displacement: np.ndarray
+    modal_velocity: np.ndarray
+    basis_size: int
+    internal_damping: str
+    steps: int
+    rejected: int
+    refreshes: int
+    max_growth_rate: float
+    basis: np.ndarray = field(repr=False, default=None)
+    residual: np.ndarray | None = field(repr=False, default=None)
+    force_scale: np.ndarray = field(repr=False, default=None)
+    shaft_envelope: np.ndarray = field(repr=False, default=None)
+    actuator_envelope: np.ndarray = field(repr=False, default=None)
+    actuator_force_envelope: np.ndarray = field(repr=False, default=None)
+
+    @property
+    def shaft_peak(self) -> np.ndarray:
+        """Largest envelope over the shaft nodes at each instant (n_t,) [m]."""
+        return self.shaft_orbit.max(axis=0)
+
+    def peak(self, values: np.ndarray | None = None) -> tuple[float, float, float]:
+        """(largest value, time [s], speed [rad/s]) of ``values`` (default :attr:`shaft_peak`),
+        refined by a parabola through the largest sample and its neighbours."""
+        v = self.shaft_peak if values is None else np.asarray(values)
+        k = int(np.argmax(v))
+        if 0 < k < v.size - 1:
+            t3, v3 = self.time[k - 1 : k + 2], v[k - 1 : k + 2]
+            a, b, c = np.polyfit(t3 - t3[1], v3, 2)
+            if a < 0:
+                dt = float(np.clip(-b / (2 * a), t3[0] - t3[1], t3[2] - t3[1]))
+                t = t3[1] + dt
+                return float(c + b * dt + a * dt * dt), float(t), float(np.interp(t, self.time, self.speed))
+        return float(v[k]), float(self.time[k]), float(self.speed[k])
+
+    def displacement(self, rows: np.ndarray) -> np.ndarray:
+        """Physical time signal ``Re((Φ_rows Y + r_rows f) e^{iφ})`` [m, rad] of free-DOF
+        ``rows`` at the output instants (r the residual flexibility, f = Ω² − iΩ̇)."""
+        q = self.basis[rows] @ self.modal_displacement
+        if self.residual is not None:
+            q = q + self.residual[rows][:, None] * self.force_scale
+        return np.real(q * np.exp(1j * self.phase))
+
+    def to_dataset(self):
+        """The result as an :class:`xarray.Dataset` with units in attrs."""
+        import xarray as xr
+
+        return xr.Dataset(
+            {
+                "speed": ("time", self.speed, {"units": "rad/s"}),
+                "acceleration": ("time", self.acceleration, {"units": "rad/s^2"}),
+                "shaft_orbit": (("x", "time"), self.shaft_orbit, {"units": "m", "long_name": "deflection envelope"}),
+                "shaft_peak": ("time", self.shaft_peak, {"units": "m", "long_name": "largest deflection over the shaft"}),
+                "actuator_displacement": (("actuator", "time"), self.actuator_displacement, {"units": "m"}),
+                "actuator_force": (("actuator", "time"), self.actuator_force, {"units": "N"}),
+            },
+            coords={"time": ("time", self.time, {"units": "s"}), "x": ("x", self.shaft_x, {"units": "m"}),
+                    "actuator": ("actuator", list(self.actuator_names))},
+            attrs={"basis_size": self.basis_size, "internal_damping": self.internal_damping, "steps": self.steps},
+        )
+
+    def plot(self, ax=None, steady: "SteadyEnvelope | None" = None):
+        """Shaft envelope against speed, with the steady-state spin-up curve when given
+        (:func:`flexshaft.report.transient_figures.runup_envelope_figure`)."""
+        from flexshaft.report.transient_figures import runup_envelope_figure
+
+        return runup_envelope_figure({"transient": self}, steady=steady, ax=ax)
+
+
+@dataclass(frozen=True)
+class SteadyEnvelope:
+    """Steady-state (frequency-domain, hysteretic) spin-up envelopes at constant speeds.
+
+    ``shaft_orbit`` (n_nodes, n_speeds) [m]; ``actuator_displacement`` and ``actuator_force``
+    (n_act, n_speeds) [m], [N].
+    """
+
+    speeds: np.ndarray
+    shaft_orbit: np.ndarray
+    actuator_displacement: np.ndarray
+    actuator_force: np.ndarray
+
+    @property
+    def shaft_peak(self) -> np.ndarray:
+        return self.shaft_orbit.max(axis=0)
+
+
+def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) -> SteadyEnvelope:
+    """The steady synchronous response at each speed [rad/s] (banded direct solve, exact
+    hysteretic loss), as the envelopes :class:`TransientResult` reports."""
+    from flexshaft.assembly.loads import imbalance_loads
+
+    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    Q1 = imbalance_loads(model)[:, 0] if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)
+    q = imbalance_response(model, speeds, Q1)  # (ndof, n_speeds)
+    dm = model.dofs
+    nodes = np.arange(dm.n_shaft_nodes)
+    shaft = orbit_amplitude(q[dm.shaft(nodes, "v")], q[dm.shaft(nodes, "w")])
+    disp, force = [], []
+    for a in model.actuators:
+        d = a.lateral_rows @ q
+        disp.append(orbit_amplitude(d[0], d[1]))
+        force.append(np.abs(a.controller(1j * speeds)) * disp[-1])
+    empty = np.zeros((0, speeds.size))
+    return SteadyEnvelope(speeds, shaft, np.array(disp) if disp else empty, np.array(force) if force else empty)
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def _actuator_outputs(model: Model, red: ReducedModel) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Per actuator: (2, n) maps of the state envelope to its relative displacement and its
+    force, and its (2, n_free) rows for the residual displacement."""
+    nb, n = red.size, red.n_states
+    out = []
+    start = 2 * nb
+    for act, states in zip(model.actuators, red.actuators):
+        D = np.zeros((2, n))
+        D[:, :nb] = states.rows
+        law = act.controller
+        F = np.zeros((2, n))
+        m = states.A.shape[0]
+        if law.is_pd:
+            F[:, :nb] = law.kp * states.rows
+            F[:, nb : 2 * nb] = law.kd * states.rows
+        else:
+            F[:, :nb] = (states.stiffness + states.basis_stiffness) * states.rows
+            F[:, start : start + m] = states.C
+        start += m
+        out.append((D, F, act.lateral_rows.tocsr()[:, model.dofs.free].toarray()))
+    return out
+
+
+def residual_flexibility(model: Model, red: ReducedModel, loads_per_speed_squared: np.ndarray) -> np.ndarray | None:
+    """Static response of the modes left out of the basis to Q₁ [m/(rad/s)²] on the free DOFs:
+    ``(K + K_a)⁻¹ Q₁ − Φ Λ⁻¹ Φᵀ Q₁`` (None when the basis stiffness is singular)."""
+    import scipy.sparse.linalg as spla
+
+    from flexshaft.assembly.sparse import restrict
+
+    free = model.dofs.free
+    if np.any(red.w2 <= 1e-9 * red.w2.max()):
+        return None
+    Q = np.asarray(loads_per_speed_squared)[free]
+    try:
+        lu = spla.splu(restrict((model.K + model.Kp).tocsr(), free).tocsc())
+    except RuntimeError:
+        return None
+    static = lu.solve(np.ascontiguousarray(Q.real)) + 1j * lu.solve(np.ascontiguousarray(Q.imag))
+    return static - red.Phi @ ((red.Phi.T @ Q) / red.w2)
+
+
+def transient_response(
+    model: Model,
+    profile: SpeedProfile,
+    *,
+    loads_per_speed_squared=None,
+    basis_size: int | None = None,
+    reduced: ReducedModel | None = None,
+    rtol: float = 1e-5,
+    max_step: float | None = None,
+    output_step: float | None = None,
+    initial: str | np.ndarray = "steady",
+    static_correction: bool = True,
+) -> TransientResult:
+    """Time response to the rotating imbalance while the speed follows ``profile``.
+
+    Parameters
+    ----------
+    model : Model
+        The driveline.
+    profile : SpeedProfile
+        Ω(t) [rad/s].
+    loads_per_speed_squared : ndarray, optional
+        One rotating load vector Q₁ [N s²] (ndof,), e.g. from
+        :func:`flexshaft.assembly.loads.imbalance_loads` (default: its first case) or
+        :func:`flexshaft.assembly.loads.per_bay_imbalance_loads`.
+    basis_size : int, optional
+        Modal basis size (default :func:`default_basis_size`); ignored with ``reduced``.
+    reduced : ReducedModel, optional
+        A precomputed :func:`~flexshaft.analyses.eigen.reduce` of ``model``.
+    rtol : float
+        Local error per step relative to the largest state so far (energy norm).
+    max_step : float, optional
+        Largest integration step [s] (default: duration/50).
+    output_step : float, optional
+        Spacing of the output samples [s] (default: 8 samples per period of the fastest
+        envelope content, π/(4 Ω_max)).
+    initial : {"steady", "rest"} or ndarray
+        Start from the steady response at Ω(0) (rest when Ω(0) = 0), from rest, or from a
+        given envelope state (n_states,) (with ``Z = z`` at t = 0 since φ(0) = 0).
+    static_correction : bool
+        Add the quasi-static response of the modes left out of the basis
+        (:func:`residual_flexibility` times ``Ω² − iΩ̇``) to every output: the modal
+        truncation error of the bearing relative displacements drops from ~10 % to ~0.1 % at
+        16-32 modes on the baseline. The actuators see it through ``C(iΩ)`` (quasi-static).
+    """
+    from flexshaft.assembly.loads import imbalance_loads
+
+    if not isinstance(profile, SpeedProfile):
+        raise TypeError("profile must be a SpeedProfile (SpeedProfile.constant_acceleration, .table or .from_callable)")
+    if not (0 < rtol < 1e-2):
+        raise ValueError(f"rtol must be in (0, 0.01), got {rtol!r}")
+    top = profile.max_speed
+    if reduced is None:
+        nb = default_basis_size(model, top) if basis_size is None else int(basis_size)
+        if nb < 1:
+            raise ValueError(f"basis_size must be >= 1, got {basis_size!r}")
+        reduced = reduce(model, nb)
+    red = reduced
+    Q1 = imbalance_loads(model)[:, 0] if loads_per_speed_squared is None else loads_per_speed_squared
+    system = EnvelopeSystem(model, red, Q1, top)
+    n, nb = system.n, system.nb
+
+    if isinstance(initial, str):
+        if initial not in ("steady", "rest"):
+            raise ValueError(f"initial must be 'steady', 'rest' or a state vector, got {initial!r}")
+        start = profile.speed(0.0)
+        z = system.steady_state(start) if initial == "steady" and start > 0 else np.zeros(n, complex)
+    else:
+        z = np.asarray(initial, dtype=complex).copy()
+        if z.shape != (n,):
+            raise ValueError(f"initial state must have {n} values, got shape {z.shape}")
+    duration = profile.duration
+    if output_step is None:
+        output_step = 1.0 / (OUTPUT_SAMPLES_PER_RADIAN * max(top, 1e-3))
+    if not (np.isfinite(output_step) and output_step > 0):
+        raise ValueError(f"output_step must be > 0 s, got {output_step!r}")
+    count = int(np.ceil(duration / output_step)) + 1
+    if count > MAX_OUTPUTS:
+        raise ValueError(f"{count} output samples (duration {duration:g} s / output_step {output_step:g} s) exceed "
+                         f"{MAX_OUTPUTS}; give a larger output_step")
+    T = np.linspace(0.0, duration, count)
+    run = integrate_envelope(system, profile.speed, profile.acceleration, profile.breakpoints, z, T,
+                             rtol=rtol, max_step=max_step, max_speed=top)
+    Z = run.states
+    speed = profile.speeds_at(T)
+    accel = np.array([profile.acceleration(x) for x in T])
+    # φ by the two-point Gauss rule on each interval (exact for piecewise-linear Ω)
+    centre, half = 0.5 * (T[:-1] + T[1:]), 0.5 * np.diff(T) / _SQ3
+    w = (profile.speeds_at(centre - half) + profile.speeds_at(centre + half)) * 0.5 * np.diff(T)
+    phase = np.concatenate([[0.0], np.cumsum(w)])
+
+    force_scale = speed**2 - 1j * accel  # f(t): the load is Re(Q₁ f e^{iφ})
+    force_rate = 1j * speed * force_scale + 2 * speed * accel  # envelope of d/dt (f e^{iφ})
+    residual = residual_flexibility(model, red, Q1) if static_correction else None
+    dm = model.dofs
+    pos = np.full(dm.size, -1)
+    pos[dm.free] = np.arange(dm.free.size)
+    nodes = np.arange(dm.n_shaft_nodes)
+    Y = Z[:nb]
+    shaft_rows = [_rows(red.Phi, pos[dm.shaft(nodes, f)]) @ Y for f in ("v", "w")]
+    if residual is not None:
+        res = np.concatenate([residual, [0.0]])  # index −1: a constrained DOF
+        shaft_rows = [r + res[pos[dm.shaft(nodes, f)]][:, None] * force_scale for r, f in zip(shaft_rows, ("v", "w"))]
+    shaft = orbit_amplitude(*shaft_rows)
+    act_disp, act_force = [], []
+    for (D, F, B), act in zip(_actuator_outputs(model, red), model.actuators):
+        d, f = D @ Z, F @ Z
+        if residual is not None:
+            d_res = (B @ residual)[:, None]
+            d = d + d_res * force_scale
+            law = act.controller
+            if law.is_pd:
+                f = f + d_res * (law.kp * force_scale + law.kd * force_rate)
+            else:
+                f = f + d_res * (np.asarray(law(1j * speed)) * force_scale)
+        act_disp.append(d)
+        act_force.append(f)
+    n_act = len(act_disp)
+    act_disp = np.array(act_disp).reshape(n_act, 2, T.size)
+    act_force = np.array(act_force).reshape(n_act, 2, T.size)
+    return TransientResult(
+        time=T, speed=speed, acceleration=accel, phase=phase, shaft_x=np.asarray(dm.shaft_x, dtype=float),
+        shaft_orbit=shaft, actuator_displacement=orbit_amplitude(act_disp[:, 0], act_disp[:, 1]),
+        actuator_force=orbit_amplitude(act_force[:, 0], act_force[:, 1]), actuator_names=tuple(a.name for a in model.actuators),
+        modal_displacement=Y, modal_velocity=Z[nb : 2 * nb], basis_size=nb, internal_damping=model.internal_damping,
+        steps=run.steps, rejected=run.rejected, refreshes=run.refreshes, max_growth_rate=run.max_growth_rate,
+        basis=red.Phi, residual=residual, force_scale=force_scale,
+        shaft_envelope=np.stack(shaft_rows), actuator_envelope=act_disp, actuator_force_envelope=act_force,
+    )
+
+
+def _rows(Phi: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """Basis rows of free DOFs; a constrained DOF (−1) gives a zero row."""
+    out = np.zeros((rows.size, Phi.shape[1]))
+    ok = rows >= 0
+    out[ok] = Phi[rows[ok]]
+    return out
+
+
+def run_up(model: Model, duration: float, *, start: float = 0.0, stop: float | None = None, dwell: float = 0.0,
+           **options) -> TransientResult:
+    """Constant-acceleration run-up from ``start`` to ``stop`` (default the operating speed)
+    [rad/s] in ``duration`` [s], then ``dwell`` [s] at ``stop``; a run-down when stop < start.
+    ``options`` go to :func:`transient_response`."""
+    stop = model.speed if stop is None else float(stop)
+    if not (np.isfinite(duration) and duration > 0):
+        raise ValueError(f"duration must be > 0 s, got {duration!r}")
+    profile = SpeedProfile.constant_acceleration(start, stop, (stop - start) / duration, dwell)
+    return transient_response(model, profile, **options)
