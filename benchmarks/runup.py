@@ -101,8 +101,8 @@ def runup_section(durations, figures: Path | None) -> None:
     print(f"thesis loss model, 10-s run-up: peak {run.peak()[0] * 1e3:.3f} mm at {run.peak()[2] * RPM:.0f} rpm; "
           f"steady grid peak {steady_thesis.shaft_peak.max() * 1e3:.3f} mm; growth {run.max_growth_rate:.3f} 1/s")
     if figures is not None:
-        from flexshaft.report.figures import save_figure
-        from flexshaft.report.transient_figures import runup_envelope_figure
+        from flexshaft.plot.driveline import save_figure
+        from flexshaft.plot.transient import runup_envelope_figure
 
         fig = runup_envelope_figure(runs, steady, operating_rpm=top * RPM, gap=2.5e-4, force_limit=2e3)
         print("figure:", save_figure(fig, figures, "runup_envelope")["png"])
@@ -147,8 +147,8 @@ def montecarlo_section(samples: int, jobs: int, gap: float, force_limit: float, 
         print(f"    actuator orbit p99 {np.percentile(runup.actuator_orbit_max, 99) * 1e3:.4f} mm, P(> gap) = {p_gap:.4f} ± "
               f"{e_gap:.4f}; force p99 {np.percentile(runup.actuator_force_max, 99):.0f} N, P(> limit) = {p_force:.4f} ± {e_force:.4f}")
     if figures is not None:
-        from flexshaft.report.figures import save_figure
-        from flexshaft.report.transient_figures import montecarlo_figure
+        from flexshaft.plot.driveline import save_figure
+        from flexshaft.plot.transient import montecarlo_figure
 
         fig = montecarlo_figure(results, gap=gap, force_limit=force_limit)
         print("figure:", save_figure(fig, figures, "montecarlo_imbalance")["png"])

@@ -231,7 +231,7 @@ def test_bad_arguments_are_refused(two_bay):
 
 
 def test_montecarlo_figure_renders(two_bay, tmp_path):
-    from flexshaft.report.figures import save_figure
+    from flexshaft.plot.driveline import save_figure
 
     design, _ = two_bay
     result = run_montecarlo(design, 30, seed=1, grade_mm_s=6.3, n_speeds=20, gap=1e-4, force_limit=50.0, progress=False)

@@ -337,8 +337,8 @@ class TransientResult:
 
     def plot(self, ax=None, steady: "SteadyEnvelope | None" = None):
         """Shaft envelope against speed, with the steady-state spin-up curve when given
-        (:func:`flexshaft.report.transient_figures.runup_envelope_figure`)."""
-        from flexshaft.report.transient_figures import runup_envelope_figure
+        (:func:`flexshaft.plot.transient.runup_envelope_figure`)."""
+        from flexshaft.plot.transient import runup_envelope_figure
 
         return runup_envelope_figure({"transient": self}, steady=steady, ax=ax)
 

@@ -498,8 +498,8 @@ class MonteCarloResult:
         return None if self.force_limit is None else self.exceedance("actuator_force_max", self.force_limit)
 
     def plot(self):
-        """Histograms and exceedance curves (:func:`flexshaft.report.transient_figures.montecarlo_figure`)."""
-        from flexshaft.report.transient_figures import montecarlo_figure
+        """Histograms and exceedance curves (:func:`flexshaft.plot.transient.montecarlo_figure`)."""
+        from flexshaft.plot.transient import montecarlo_figure
 
         return montecarlo_figure(self.dataset, gap=self.gap, force_limit=self.force_limit)
 

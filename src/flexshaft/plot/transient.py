@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from flexshaft.report._style import MM_PER_M, mark_operating, new_figure, styled
+from flexshaft.plot.style import MM_PER_M, mark_operating, new_figure, styled
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
