@@ -10,25 +10,35 @@ Only pydantic, the standard library and :mod:`flexshaft.laminate` (numpy; its
 """
 
 from flexshaft.design.io import (
+    DEFAULT_DESIGN,
+    EMBEDDED_DESIGNS,
     DesignError,
     Problem,
     baseline_design,
     baseline_text,
     design_from_dict,
+    embedded_design,
+    embedded_text,
     load_design,
     loads_design,
+    tuned_design,
     with_overrides,
 )
 from flexshaft.design.schema import Design
 
 __all__ = [
+    "DEFAULT_DESIGN",
+    "EMBEDDED_DESIGNS",
     "Design",
     "DesignError",
     "Problem",
     "baseline_design",
     "baseline_text",
     "design_from_dict",
+    "embedded_design",
+    "embedded_text",
     "load_design",
     "loads_design",
+    "tuned_design",
     "with_overrides",
 ]
