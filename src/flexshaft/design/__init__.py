@@ -1,4 +1,4 @@
-"""Design files: the validated input schema of flexshaft and the packaged thesis baseline.
+"""Design files: the validated input schema of flexshaft and the packaged designs (thesis baseline, tuned).
 
 >>> from flexshaft.design import baseline_design, with_overrides
 >>> design = with_overrides(baseline_design(), {"shaft.wall_thickness": 0.002})
