@@ -67,6 +67,16 @@ def test_baseline_prints_the_embedded_design() -> None:
     assert loads_design(result.stdout) == baseline_design()
 
 
+def test_baseline_prints_either_embedded_design_by_name() -> None:
+    from flexshaft.design import tuned_design
+
+    result = runner.invoke(app, ["baseline", "--name", "tuned"])
+    assert result.exit_code == 0, result.output
+    assert loads_design(result.stdout) == tuned_design()
+    result = runner.invoke(app, ["baseline", "--name", "thesis"])
+    assert result.exit_code == 2 and "--name" in result.stderr and "allowed: baseline, tuned" in result.stderr
+
+
 def test_check_accepts_the_baseline_and_a_design_file(files: dict[str, Path]) -> None:
     assert runner.invoke(app, ["check"]).stdout == f"ok: {baseline_design().name}\n"
     result = runner.invoke(app, ["check", str(files["small"])])

@@ -188,7 +188,10 @@ def test_uniform_hysteretic_beam_modes_have_damping_ratio_half_the_loss_factor()
 
 def test_boom_modes_have_damping_ratio_half_the_boom_loss_factor():
     """The baseline's boom modes (the issue: ζ ≈ 0.0009 from a shared reference frequency)."""
-    design = baseline_design()
+    # with the aft hanger axially free: when both hangers hold the shaft axially (eq. 2.29), the
+    # vertical boom modes stretch the shaft, which stores a few % of their energy at its own far
+    # smaller loss factor, and ζ = η/2 no longer holds exactly
+    design = with_overrides(baseline_design(), {"bearings[3].stiffness": {"v": 1e8, "w": 1e8}})
     eta = design.materials[design.tailboom.material].loss_factor
     m = modes(build_model(design), design.operating.speed_rad_s, n_modes=4)
     assert np.all(m.component == "boom")

@@ -211,7 +211,10 @@ def apply(data: dict[str, Any], operation: tuple[str, tuple[Any, ...], Any, str]
         old = container[key]
         if isinstance(old, (int, float)) and not isinstance(old, bool):
             factor = FACTORS[len(new_key) % len(FACTORS)]
-            scaled = (old if old != 0 else 1.0) * factor
+            try:
+                scaled = (old if old != 0 else 1.0) * factor
+            except OverflowError:  # an int beyond float range (from an earlier "replace")
+                scaled = math.inf
             container[key] = int(scaled) if isinstance(old, int) and math.isfinite(scaled) else scaled
     elif kind == "delete":
         del container[key]

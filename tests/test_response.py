@@ -197,14 +197,14 @@ def test_load_factor_and_imbalance_totals():
     total_v = Q[dm.shaft(np.arange(dm.n_shaft_nodes), "v")].sum() + Q[dm.boom(np.arange(dm.n_boom_nodes), "v")].sum()
     tb = d.tailboom
     sec = lambda x: ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
-    boom_mass = 2800.0 * si.quad(lambda x: sec(x).area, 0, tb.length)[0]
+    boom_mass = d.materials[tb.material].density * si.quad(lambda x: sec(x).area, 0, tb.length)[0]
     A = np.pi * (0.1016**2 - (0.1016 - 0.006) ** 2) / 4
-    mass = boom_mass + 1650.0 * A * (8.05 - 0.79) + 200.0
+    mass = boom_mass + 1650.0 * A * d.shaft.length + 200.0
     assert total_v == pytest.approx(-3.5 * STANDARD_GRAVITY * mass, rel=1e-9)
     Qi = imbalance_loads(model, "mid_bay")[:, 0]
     fy = Qi[dm.shaft(np.arange(dm.n_shaft_nodes), "v")].sum()
     fz = Qi[dm.shaft(np.arange(dm.n_shaft_nodes), "w")].sum()
-    assert fy == pytest.approx(25e-6 * 1650.0 * A * 7.26, rel=1e-9)
+    assert fy == pytest.approx(d.loads.eccentricity * 1650.0 * A * d.shaft.length, rel=1e-9)
     assert fz == pytest.approx(-1j * fy, rel=1e-9)
     assert imbalance_loads(model, "worst").shape[1] == 4  # 3 bays → 2² phase patterns
 
@@ -223,7 +223,8 @@ def test_pure_torque_safety_factor_of_zero_degree_tube_is_S_J_over_T_r():
     assert res.safety_factor == pytest.approx(20.0e6 * J / (T * Do / 2), rel=1e-9)
     assert res.dominant_stress == "tau12"
     # twist at the aft end: θ = −T ℓ/(G_LT J) over the shaft length (forward end held)
-    assert q[model.dofs.shaft(-1, "theta")] == pytest.approx(-T * 7.26 / (0.035e9 * J), rel=1e-9)
+    G_LT = d.materials[d.shaft.material].G_LT
+    assert q[model.dofs.shaft(-1, "theta")] == pytest.approx(-T * d.shaft.length / (G_LT * J), rel=1e-9)
 
 
 def test_baseline_superposed_strength_runs_and_is_finite():

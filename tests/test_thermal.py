@@ -301,7 +301,9 @@ def test_matrix_law_is_identity_at_reference_and_softens_when_hot(model):
 def test_baseline_self_heating_has_an_equilibrium_and_large_loads_run_away(model):
     ok = self_heating(model, loss_model="rotating")
     assert ok.status == "converged" and ok.margin > 50.0
-    hot = self_heating(model, loss_model="rotating", imbalance_scale=150.0, static_scale=150.0)
+    # loads ×500: the heat grows as the square (×2.5e5) and the matrix softens and dissipates more
+    # as it warms; no equilibrium below the allowable (the baseline converges at ×150)
+    hot = self_heating(model, loss_model="rotating", imbalance_scale=500.0, static_scale=500.0)
     assert hot.status == "runaway" and hot.margin < 0
 
 

@@ -47,21 +47,21 @@ def _finite(
     return value
 
 
-def _load(path: Optional[Path]):
-    from flexshaft.design import DesignError, baseline_design, load_design
+def _load(path: Optional[Path], embedded: str = "baseline"):
+    from flexshaft.design import DesignError, embedded_design, load_design
 
     try:
-        return baseline_design() if path is None else load_design(path)
+        return embedded_design(embedded) if path is None else load_design(path)
     except DesignError as exc:
-        _fail(f"invalid design {'(embedded baseline)' if path is None else str(path)}:\n{exc}")
+        _fail(f"invalid design {f'(embedded {embedded})' if path is None else str(path)}:\n{exc}")
 
 
-def _design_text(path: Optional[Path]) -> tuple[str | None, str]:
+def _design_text(path: Optional[Path], embedded: str = "baseline") -> tuple[str | None, str]:
     """The design file as read (for the report) and where it came from."""
-    from flexshaft.design import baseline_text
+    from flexshaft.design import EMBEDDED_DESIGNS, embedded_text
 
     if path is None:
-        return baseline_text(), "embedded thesis baseline"
+        return embedded_text(embedded), f"embedded {embedded} design ({EMBEDDED_DESIGNS[embedded][1]})"
     try:
         return path.read_text(encoding="utf-8"), str(path)
     except (OSError, UnicodeDecodeError):  # it validated a moment ago; report without the text
@@ -102,11 +102,16 @@ def _print_modes(console, title: str, rows: list[dict]) -> None:
 
 
 @app.command()
-def baseline() -> None:
-    """Print the embedded thesis baseline design file (start your own from a copy)."""
-    from flexshaft.design import baseline_text
+def baseline(
+    name: str = typer.Option("baseline", "--name", help="Embedded design: baseline (thesis Table 3.1, K_p 1e7, "
+                             "K_d 0) or tuned (the tuned final design, default of `flexshaft run`)."),
+) -> None:
+    """Print an embedded design file (start your own from a copy)."""
+    from flexshaft.design import EMBEDDED_DESIGNS, embedded_text
 
-    sys.stdout.write(baseline_text())
+    if name not in EMBEDDED_DESIGNS:
+        _fail(f"--name: no such embedded design (got {name!r}; allowed: {', '.join(EMBEDDED_DESIGNS)})")
+    sys.stdout.write(embedded_text(name))
 
 
 @app.command()
@@ -240,14 +245,15 @@ def thermal_cmd(
 
 @app.command()
 def run(
-    design: Optional[Path] = DesignArg,
+    design: Optional[Path] = typer.Argument(None, help="Design file (TOML). Default: the embedded tuned design "
+                                            "(`flexshaft baseline --name tuned`).", show_default=False),
     out: Path = typer.Option(Path("flexshaft-results"), "--out", "-o", help="Results folder."),
     as_json: bool = typer.Option(False, "--json", help="Print the key results as JSON."),
     studies: str = typer.Option("report", "--studies", help="Design studies in the report: report, full or none."),
     strict: bool = typer.Option(False, "--strict", help=f"Exit with code {REQUIREMENT_FAILED} when a requirement fails."),
 ) -> None:
-    """Analyse a design (default: the embedded baseline), check it against its requirements and
-    write the report folder."""
+    """Analyse a design (default: the embedded tuned design), check it against its requirements
+    and write the report folder."""
     from rich.console import Console
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
@@ -255,7 +261,9 @@ def run(
 
     if studies not in ("report", "full", "none"):
         _fail(f"--studies: must be report, full or none (got {studies!r})")
-    d = _load(design)
+    from flexshaft.design import DEFAULT_DESIGN
+
+    d = _load(design, DEFAULT_DESIGN)
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -269,7 +277,7 @@ def run(
         progress.update(task, description="writing the report")
         from flexshaft.report.driveline import results_json, write_run_report
 
-        text, source = _design_text(design)
+        text, source = _design_text(design, DEFAULT_DESIGN)
         page = write_run_report(results, out, design_text=text, design_source=source)
     data = results_json(results)
     failed = strict and results.verdict is not None and not results.verdict.passed

@@ -36,15 +36,29 @@ from flexshaft.design.schema import (
 )
 
 __all__ = [
+    "DEFAULT_DESIGN",
+    "EMBEDDED_DESIGNS",
     "DesignError",
     "Problem",
     "baseline_design",
     "baseline_text",
     "design_from_dict",
+    "embedded_design",
+    "embedded_text",
     "load_design",
     "loads_design",
+    "tuned_design",
     "with_overrides",
 ]
+
+#: Designs packaged with flexshaft, by name: the file in ``flexshaft/design`` and what it is
+#: (docs/thesis-reproduction.md). ``"baseline"`` is the thesis's Table 3.1 study configuration.
+EMBEDDED_DESIGNS: dict[str, tuple[str, str]] = {
+    "baseline": ("baseline.toml", "thesis Table 3.1 study configuration (K_p 1e7 N/m, K_d 0); fails its requirements"),
+    "tuned": ("tuned.toml", "tuned final design: Table 3.1 driveline with spin-up-tuned actuator gains; passes"),
+}
+#: The embedded design ``flexshaft run`` analyses when given no design file.
+DEFAULT_DESIGN = "tuned"
 
 
 @dataclass(frozen=True)
@@ -159,14 +173,45 @@ def design_from_dict(data: Any, source: str = "<dict>") -> Design:
         raise DesignError(_problems_from_validation(error, data), source) from None
 
 
+def embedded_text(name: str) -> str:
+    """The TOML text of a packaged design (a key of :data:`EMBEDDED_DESIGNS`).
+
+    Raises
+    ------
+    DesignError
+        When ``name`` is not a packaged design (the message lists the names allowed).
+    """
+    if not isinstance(name, str) or name not in EMBEDDED_DESIGNS:
+        allowed = ", ".join(EMBEDDED_DESIGNS)
+        raise DesignError([Problem("<embedded design>", f"no such embedded design (got {format_value(name)}; allowed: {allowed})")])
+    filename = EMBEDDED_DESIGNS[name][0]
+    return resources.files("flexshaft.design").joinpath(filename).read_text(encoding="utf-8")
+
+
+def embedded_design(name: str) -> Design:
+    """A packaged design by name, validated: ``"baseline"`` (thesis Table 3.1) or ``"tuned"``.
+
+    Raises
+    ------
+    DesignError
+        When ``name`` is not a packaged design.
+    """
+    return loads_design(embedded_text(name), source=EMBEDDED_DESIGNS[name][0])
+
+
 def baseline_text() -> str:
-    """The packaged thesis-baseline design file, as TOML text."""
-    return resources.files("flexshaft.design").joinpath("baseline.toml").read_text(encoding="utf-8")
+    """The packaged thesis-baseline design file (thesis Table 3.1 configuration), as TOML text."""
+    return embedded_text("baseline")
 
 
 def baseline_design() -> Design:
-    """The packaged thesis-baseline design (DESIGN.md §3 and §5), validated."""
-    return loads_design(baseline_text(), source="baseline.toml")
+    """The packaged thesis-baseline design (thesis Table 3.1, K_p 1e7, K_d 0; DESIGN.md §3 and §5)."""
+    return embedded_design("baseline")
+
+
+def tuned_design() -> Design:
+    """The packaged tuned final design (the default of ``flexshaft run``), validated."""
+    return embedded_design("tuned")
 
 
 def with_overrides(design: Design, overrides: Mapping[str, Any]) -> Design:
