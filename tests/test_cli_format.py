@@ -132,7 +132,8 @@ def test_sig_gives_significant_figures(value, text) -> None:
 def test_modes_table_has_unit_headers_and_numbers_from_one(small: Path) -> None:
     result = runner.invoke(app, ["modes", str(small), "--n-modes", "6"])
     assert result.exit_code == 0, result.output
-    for header in ("frequency [Hz]", "frequency [rpm]", "damping ratio ζ", "log decrement δ", "mode numbers start at 1"):
+    for header in ("f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "f damped frequency, ζ damping ratio, δ log decrement",
+                   "mode numbers start at 1"):
         assert header in result.stdout
     rows = [line for line in result.stdout.splitlines() if re.match(r"│\s+\d+ │", line)]
     assert [int(r.split("│")[1]) for r in rows] == [1, 2, 3, 4, 5, 6]

@@ -1,7 +1,9 @@
-"""The quick commands: ``check``, ``baseline``, ``modes``, ``stability``, ``thermal``.
+"""The analysis commands: ``check``, ``baseline``, ``modes``, ``stability``, ``thermal``.
 
 Each prints tables in engineering units (rpm, Hz, °C, mm) with the unit in every header, or
 with ``--json`` the same numbers as JSON (SI, unit-suffixed keys). Mode numbers start at 1.
+``stability`` and ``thermal`` (seconds with ``--compare-thesis`` or ``--sweeps``) show a
+transient progress line on a terminal.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from flexshaft.cli.options import (
     LossModel,
     NModesOption,
 )
+from flexshaft.cli.progress import StageProgress
 
 __all__ = ["baseline", "check", "modes", "stability", "thermal"]
 
@@ -145,9 +148,13 @@ def stability(
             fail(f"--compare-thesis needs an isotropic material 'al6061_t6' and a lamina shaft:\n{exc}")
     margin = d.requirements.min_onset_margin
     shafts = {}
-    for label, dd in designs.items():
-        result = stability_analysis(model if label == "design" else build_model(dd), speeds, n_modes,
-                                    damping_model.value, reference)
+    with StageProgress(transient=True) as progress:
+        results = {}
+        for label, dd in designs.items():
+            progress.step(f"whirl stability: {label}")
+            results[label] = stability_analysis(model if label == "design" else build_model(dd), speeds, n_modes,
+                                                damping_model.value, reference)
+    for label, result in results.items():
         onset_check = whirl_onset_check(result.onset_speed, float(speeds[-1]), model.speed, margin)
         shafts[label] = {
             "onset_speed_rpm": None if result.onset_speed is None else rad_s_to_rpm(result.onset_speed),
@@ -201,9 +208,12 @@ def thermal(
     from flexshaft.studies.thermal import thermal_summary
 
     d = loaded.design
-    out = thermal_summary(d, build_model(d), loss_model=None if loss_model is None else loss_model.value,
-                          convection=None if convection is None else convection.value, self_heat=self_heat,
-                          sweeps=sweeps)
+    with StageProgress(transient=True) as progress:
+        progress.step("tailboom and shaft temperatures" + (", self-heating" if self_heat else "")
+                      + (", sweeps" if sweeps else ""))
+        out = thermal_summary(d, build_model(d), loss_model=None if loss_model is None else loss_model.value,
+                              convection=None if convection is None else convection.value, self_heat=self_heat,
+                              sweeps=sweeps)
     if as_json:
         print_json(out)
         return

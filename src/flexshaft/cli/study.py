@@ -182,7 +182,7 @@ def buckling(
     ds = _sweep(buckling_study, loaded, folder, jobs, dask, as_json)
     sf = ds["buckling_safety_factor"].values
     thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
-    headline = (f"buckles below a {m_to_mm(float(max(thin))):.3g} mm wall" if thin
+    headline = (f"walls up to {m_to_mm(float(max(thin))):.3g} mm buckle (safety factor < 1)" if thin
                 else "no wall studied buckles (safety factor ≥ 1 everywhere)")
     figures = {"buckling": _save(buckling_figure(ds.wall_thickness.values, sf), folder, "buckling")}
     _report(loaded, "buckling", folder, ds, ["critical_torque", "buckling_safety_factor"], figures, headline, as_json)
@@ -301,7 +301,6 @@ def _print_headline(data: dict, page: Path) -> None:
 
 
 def _pair(first, second) -> str:
-    from flexshaft.cli.tables import sig
-
-    return f"{sig(first, 3)} → {sig(second, 3)}"
+    """Two gains, each with three significant figures in exponent form where needed."""
+    return " → ".join("—" if v is None else f"{v:.3g}" for v in (first, second))
 

@@ -116,11 +116,15 @@ def table(title: str | None, headers: Sequence[str], rows: Iterable[Sequence[Any
         numeric = {i for i, v in enumerate(rows[0]) if isinstance(v, (int, float)) and not isinstance(v, bool)} if rows else set()
     numeric = set(numeric)
     out = Table(title=Text(plain(title)) if title else None, caption=Text(plain(caption)) if caption else None,
-                min_width=len(title) + 4 if title else None)  # a title wider than the table is not wrapped
-    for i, header in enumerate(headers):
-        out.add_column(Text(plain(header)), justify="right" if i in numeric else "left")
-    for row in rows:
-        out.add_row(*(c if isinstance(c, Text) else Text(cell(c, digits)) for c in row))
+                min_width=max(len(title or ""), len(caption or "")) + 4)  # no wrapped title or caption
+    cells = [[c if isinstance(c, Text) else Text(cell(c, digits)) for c in row] for row in rows]
+    for i, header in enumerate(headers):  # on a narrow terminal headers and text wrap, numbers never do
+        word = max((len(w) for w in str(header).split()), default=0)
+        widest = max([word, *(r[i].cell_len for r in cells if i < len(r))]) if i in numeric else None
+        out.add_column(Text(plain(header)), justify="right" if i in numeric else "left", min_width=widest,
+                       overflow="fold")
+    for row in cells:
+        out.add_row(*row)
     return out
 
 
@@ -128,11 +132,11 @@ def modes_table(title: str, rows: Sequence[dict]):
     """Modes (rows of :func:`flexshaft.analyses.summary.modes_table`): mode numbers from 1."""
     return table(
         title,
-        ["mode", "frequency [Hz]", "frequency [rpm]", "damping ratio ζ", "log decrement δ", "kind", "whirl", "component"],
+        ["mode", "f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "kind", "whirl", "component"],
         [[r["mode"], r["frequency_Hz"], r["frequency_rpm"], r["damping_ratio"], r["log_decrement"], r["kind"],
           "—" if r["whirl"] == "none" else r["whirl"], r["component"]] for r in rows],
         numeric=range(5),
-        caption="mode numbers start at 1",
+        caption="f damped frequency, ζ damping ratio, δ log decrement; mode numbers start at 1",
     )
 
 
