@@ -1,167 +1,306 @@
 """``flexshaft study ...``: the thesis design studies from the command line.
 
-Mounted in :mod:`flexshaft.cli` with ``app.add_typer(study_app, name="study")``. Every command
-writes ``OUT/results.nc`` (netCDF, units in attributes) and prints a one-line headline; the
-sweeps resume when re-run on the same ``--out`` folder.
+Mounted in :mod:`flexshaft.cli` as ``flexshaft study``. Every command writes its ``--out``
+folder (default ``flexshaft-study-NAME``): ``results.nc`` (netCDF, units in attributes), the
+sweep's chunks (re-run on the same folder to resume) and its figures; it prints a table in
+engineering units (mm, MPa, rpm) or, with ``--json``, the data in SI with unit-suffixed keys.
 """
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
-import numpy as np
 import typer
 
-study_app = typer.Typer(no_args_is_help=True, help="Design studies of thesis chapter 3 (sweeps; resumable).")
+from flexshaft.cli.common import LoadedDesign, check_finite, guarded, load_design_argument, print_json
+from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
+from flexshaft.cli.output import prepare_output_folder
 
-_DESIGN = typer.Argument(None, help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False)
-_OUT = typer.Option(None, "--out", "-o", help="Run folder (chunks, manifest, results.nc); re-run to resume.")
-_JOBS = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each).")
-_DASK = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786 (needs flexshaft[dask]).")
+__all__ = ["study_app"]
 
+study_app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
+                        help="Design studies of thesis chapter 3 (sweeps; resumable).")
 
-def _design(path: Optional[Path]):
-    from flexshaft.design import DesignError, baseline_design, load_design
-
-    try:
-        return baseline_design() if path is None else load_design(path)
-    except DesignError as exc:
-        typer.echo(f"error: invalid design {path or '(embedded baseline)'}:\n{exc}", err=True)
-        raise typer.Exit(code=2)
+OutOption = Annotated[Path, typer.Option(
+    "--out", "-o", help="Run folder: chunks, manifest, results.nc and figures; re-run to resume. "
+                        "Default: flexshaft-study-NAME.")]
 
 
-def _figure(fig, out: Optional[Path], stem: str) -> None:
-    """Save a study figure (PNG and SVG) into ``out`` (default ``flexshaft-study-STEM``)."""
+def _show_progress(as_json: bool) -> bool:
+    """The sweep engine draws its bar on stdout: only on a terminal, never with --json."""
+    return not as_json and sys.stdout.isatty() and sys.stderr.isatty()
+
+
+def _prepare(design: Optional[Path], out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
+    loaded = load_design_argument(design)
+    return loaded, prepare_output_folder(out, loaded.design, f"study {name}", force=force)
+
+
+def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, dask: Optional[str], as_json: bool, **kw):
+    return func(design=loaded.design, run_dir=folder, jobs=jobs, client=dask, progress=_show_progress(as_json), **kw)
+
+
+def _save(fig, folder: Path, stem: str) -> dict:
     from flexshaft.plot.driveline import save_figure
 
-    folder = out if out is not None else Path(f"flexshaft-study-{stem}")
-    paths = save_figure(fig, folder, stem)
-    typer.echo(f"figure: {paths['png']}")
+    return {kind: str(path) for kind, path in save_figure(fig, folder, stem).items()}
 
 
-def _run(func, design, out, jobs, dask, **kw):
-    from flexshaft.sweep import SweepError
+def _report(loaded: LoadedDesign, name: str, folder: Path, ds, variables: list[str], figures: dict,
+            headline: str, as_json: bool, table=None) -> None:
+    """Print a study: its headline and the table of ``variables``, or the JSON of all its data."""
+    from flexshaft.cli.tables import dataset_json, dataset_table, print_line, stdout_console
 
-    try:
-        return func(design=_design(design), run_dir=out, jobs=jobs, client=dask, **kw)
-    except SweepError as exc:
-        typer.echo(f"error: {exc}", err=True)
-        raise typer.Exit(code=2)
+    if as_json:
+        results = folder / "results.nc"
+        print_json({"design": loaded.design.name, "study": name, "headline": headline,
+                    "results_file": str(results) if results.is_file() else None, "figures": figures,
+                    **dataset_json(ds)})
+        return
+    console = stdout_console()
+    print_line(console, loaded.design.name, style="bold")
+    console.print(table if table is not None else dataset_table(ds, variables, f"study {name}"))
+    print_line(console, headline)
+    for stem, paths in figures.items():
+        print_line(console, f"figure: {paths['png']}")
 
 
 @study_app.command("ply-angle")
-def ply_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(5.0, min=0.5, max=45.0, help="Angle step [deg]."),
-              out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+@guarded
+def ply_angle(
+    design: DesignArgument = None,
+    step: Annotated[float, typer.Option("--step", min=0.5, max=45.0, help="Angle step [deg].")] = 5.0,
+    out: OutOption = Path("flexshaft-study-ply-angle"),
+    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+) -> None:
     """Safety factor vs α of (α/−α/−α/α), no imbalance (thesis: optimum ±55°)."""
-    from flexshaft.studies.sweeps import ply_angle_study
+    import numpy as np
 
-    ds = _run(ply_angle_study, design, out, jobs, dask, angles=np.arange(step, 90.0, step))
-    best = ds["safety_factor"].idxmax("alpha").item()
-    typer.echo(f"best α = ±{best:g}°: safety factor {ds['safety_factor'].max().item():.2f}")
     from flexshaft.plot.studies import ply_angle_figure
-    from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES
+    from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES, ply_angle_study
 
+    loaded, folder = _prepare(design, out, "ply-angle", force)
+    ds = _sweep(ply_angle_study, loaded, folder, jobs, dask, as_json, angles=np.arange(step, 90.0, step))
+    best = float(ds["safety_factor"].idxmax("alpha").item())
+    headline = f"best α = ±{best:g}°: safety factor {float(ds['safety_factor'].max().item()):.3g}"
     dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
-    _figure(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), out, "ply_angle")
+    figures = {"ply_angle": _save(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), folder,
+                                  "ply_angle")}
+    _report(loaded, "ply-angle", folder, ds, ["safety_factor", "sigma1", "sigma2", "tau12", "critical_ply_angle"],
+            figures, headline, as_json)
 
 
 @study_app.command("two-angle")
-def two_angle(design: Optional[Path] = _DESIGN, step: float = typer.Option(15.0, min=1.0, max=45.0, help="Angle step [deg]."),
-              out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
+@guarded
+def two_angle(
+    design: DesignArgument = None,
+    step: Annotated[float, typer.Option("--step", min=1.0, max=45.0, help="Angle step [deg].")] = 15.0,
+    out: OutOption = Path("flexshaft-study-two-angle"),
+    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+) -> None:
     """Safety factor map of (α/−α/β/−β)s laminates, no imbalance (thesis: best (55/−55/0/0)s)."""
+    import numpy as np
+
+    from flexshaft.cli.tables import matrix_table
     from flexshaft.plot.studies import two_angle_figure
     from flexshaft.studies.sweeps import two_angle_study
 
+    loaded, folder = _prepare(design, out, "two-angle", force)
     angles = np.arange(0.0, 90.0 + 1e-9, step)
-    ds = _run(two_angle_study, design, out, jobs, dask, alphas=angles, betas=angles)
+    ds = _sweep(two_angle_study, loaded, folder, jobs, dask, as_json, alphas=angles, betas=angles)
     sf = ds["safety_factor"]
     i = np.unravel_index(int(np.nanargmax(sf.values)), sf.shape)
-    typer.echo(f"best ({ds.alpha.values[i[0]]:g}/-{ds.alpha.values[i[0]]:g}/{ds.beta.values[i[1]]:g}/-{ds.beta.values[i[1]]:g})s: "
-               f"safety factor {sf.values[i]:.2f}")
-    _figure(two_angle_figure(ds.alpha.values, ds.beta.values, sf.values), out, "two_angle")
+    a, b = ds.alpha.values[i[0]], ds.beta.values[i[1]]
+    headline = f"best ({a:g}/-{a:g}/{b:g}/-{b:g})s: safety factor {float(sf.values[i]):.3g}"
+    figures = {"two_angle": _save(two_angle_figure(ds.alpha.values, ds.beta.values, sf.values), folder, "two_angle")}
+    _report(loaded, "two-angle", folder, ds, ["safety_factor"], figures, headline, as_json,
+            table=None if as_json else matrix_table(sf, "study two-angle"))
 
 
 @study_app.command("wall")
-def wall(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
-    """Safety factor (with/without imbalance), first frequency, spin-up peak vs wall thickness."""
-    from flexshaft.studies.sweeps import wall_thickness_study
+@guarded
+def wall(
+    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-wall"),
+    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+) -> None:
+    """Safety factor (with/without imbalance), first frequency and spin-up peak vs wall thickness."""
+    import numpy as np
 
-    ds = _run(wall_thickness_study, design, out, jobs, dask)
-    typer.echo(ds[["safety_factor", "safety_factor_no_imbalance", "spinup_peak_deflection"]].to_dataframe().to_string())
     from flexshaft.plot.studies import wall_thickness_figure
+    from flexshaft.studies.sweeps import wall_thickness_study
+    from flexshaft.units import m_to_mm
 
-    _figure(wall_thickness_figure(ds.wall_thickness.values, ds["safety_factor"].values,
-                                  ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values), out, "wall")
+    loaded, folder = _prepare(design, out, "wall", force)
+    ds = _sweep(wall_thickness_study, loaded, folder, jobs, dask, as_json)
+    sf = ds["safety_factor"].values
+    headline = "safety factor not evaluated (the shaft is not a lamina)"
+    if np.isfinite(sf).any():
+        i = int(np.nanargmax(sf))
+        headline = f"largest safety factor {sf[i]:.3g} at a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall"
+    figures = {"wall": _save(wall_thickness_figure(ds.wall_thickness.values, sf, ds["safety_factor_no_imbalance"].values,
+                                                   ds["natural_frequency_1"].values), folder, "wall")}
+    _report(loaded, "wall", folder, ds, ["safety_factor", "safety_factor_no_imbalance", "natural_frequency_1",
+                                         "spinup_peak_deflection"], figures, headline, as_json)
 
 
 @study_app.command("gain")
-def gain(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
-    """Safety factor and actuator displacement vs the proportional gain K_p."""
+@guarded
+def gain(
+    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-gain"),
+    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+) -> None:
+    """Safety factor and actuator displacement vs the proportional gain K_p [N/m] of both AMBs."""
+    import numpy as np
+
+    from flexshaft.cli.tables import sig
+    from flexshaft.plot.studies import gain_figure
     from flexshaft.studies.sweeps import proportional_gain_study
 
-    ds = _run(proportional_gain_study, design, out, jobs, dask)
-    typer.echo(ds[["safety_factor", "actuator_displacement"]].to_dataframe().to_string())
-    from flexshaft.plot.studies import gain_figure
-
-    _figure(gain_figure(ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values), out, "gain")
+    loaded, folder = _prepare(design, out, "gain", force)
+    ds = _sweep(proportional_gain_study, loaded, folder, jobs, dask, as_json)
+    sf = ds["safety_factor"].values
+    i = int(np.nanargmax(sf))
+    headline = f"largest safety factor {sf[i]:.3g} at K_p = {sig(float(ds.kp.values[i]), 3)} N/m"
+    figures = {"gain": _save(gain_figure(ds.kp.values, sf, ds["actuator_displacement"].values), folder, "gain")}
+    _report(loaded, "gain", folder, ds, ["safety_factor", "actuator_displacement"], figures, headline, as_json)
 
 
 @study_app.command("buckling")
-def buckling(design: Optional[Path] = _DESIGN, out: Optional[Path] = _OUT, jobs: int = _JOBS, dask: Optional[str] = _DASK) -> None:
-    """Torsional buckling safety factor vs wall thickness."""
-    from flexshaft.studies.sweeps import buckling_study
-
-    ds = _run(buckling_study, design, out, jobs, dask)
-    typer.echo(ds["buckling_safety_factor"].to_dataframe().to_string())
+@guarded
+def buckling(
+    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-buckling"),
+    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+) -> None:
+    """Torsional buckling safety factor vs wall thickness (about 5 s per wall)."""
     from flexshaft.plot.studies import buckling_figure
+    from flexshaft.studies.sweeps import buckling_study
+    from flexshaft.units import m_to_mm
 
-    _figure(buckling_figure(ds.wall_thickness.values, ds["buckling_safety_factor"].values), out, "buckling")
+    loaded, folder = _prepare(design, out, "buckling", force)
+    ds = _sweep(buckling_study, loaded, folder, jobs, dask, as_json)
+    sf = ds["buckling_safety_factor"].values
+    thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
+    headline = (f"walls up to {m_to_mm(float(max(thin))):.3g} mm buckle (safety factor < 1)" if thin
+                else "no wall studied buckles (safety factor ≥ 1 everywhere)")
+    figures = {"buckling": _save(buckling_figure(ds.wall_thickness.values, sf), folder, "buckling")}
+    _report(loaded, "buckling", folder, ds, ["critical_torque", "buckling_safety_factor"], figures, headline, as_json)
 
 
 @study_app.command("spinup-map")
-def spinup_map_cmd(design: Optional[Path] = _DESIGN, n_gains: int = typer.Option(30, min=2, max=400),
-                   n_speeds: int = typer.Option(400, min=10, max=20000), out: Optional[Path] = _OUT) -> None:
-    """Peak shaft deflection, actuator displacement and force over a (K_p, K_d) grid."""
-    from flexshaft.netcdf import write_netcdf
-    from flexshaft.studies.sweeps import spinup_gain_map
+@guarded
+def spinup_map(
+    design: DesignArgument = None,
+    n_gains: Annotated[int, typer.Option("--n-gains", min=2, max=400, help="Gains per axis (K_p and K_d).")] = 30,
+    n_speeds: Annotated[int, typer.Option("--n-speeds", min=10, max=20000, help="Spin-up speeds.")] = 400,
+    out: OutOption = Path("flexshaft-study-spinup-map"), force: ForceOption = False, as_json: JsonOption = False,
+) -> None:
+    """Peak shaft orbit, actuator displacement and force over a (K_p [N/m], K_d [N s/m]) grid."""
+    import numpy as np
 
+    from flexshaft.cli.tables import sig
+    from flexshaft.netcdf import write_netcdf
+    from flexshaft.plot.studies import gain_map_figure
+    from flexshaft.studies.sweeps import spinup_gain_map
+    from flexshaft.units import m_to_mm
+
+    loaded, folder = _prepare(design, out, "spinup-map", force)
     kd = np.concatenate([[0.0], np.logspace(1, 4.5, n_gains - 1)])
-    ds = spinup_gain_map(np.logspace(5, 8, n_gains), kd, design=_design(design), n_speeds=n_speeds)
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        write_netcdf(ds, out / "results.nc")
+    ds = spinup_gain_map(np.logspace(5, 8, n_gains), kd, design=loaded.design, n_speeds=n_speeds)
+    write_netcdf(ds, folder / "results.nc")
     i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
     best = (float(ds.kp.values[i[0]]), float(ds.kd.values[i[1]]))
-    typer.echo(f"best K_p = {best[0]:.3e} N/m, K_d = {best[1]:.3e} N s/m: "
-               f"peak deflection {1e3 * ds['shaft_peak'].values[i]:.2f} mm")
-    from flexshaft.plot.studies import gain_map_figure
-
-    for var, scale, label in (("shaft_peak", 1e3, "max spin-up shaft orbit [mm]"),
-                              ("actuator_displacement_peak", 1e3, "max actuator displacement [mm]"),
-                              ("actuator_force_peak", 1.0, "max actuator force [N]")):
+    headline = (f"best K_p = {sig(best[0], 3)} N/m, K_d = {sig(best[1], 3)} N s/m: peak shaft orbit "
+                f"{sig(m_to_mm(float(ds['shaft_peak'].values[i])), 3)} mm")
+    figures = {}
+    for var, label in (("shaft_peak", "max spin-up shaft orbit [mm]"),
+                       ("actuator_displacement_peak", "max actuator displacement [mm]"),
+                       ("actuator_force_peak", "max actuator force [N]")):
         values = ds[var].values if ds[var].ndim == 2 else ds[var].values.max(axis=-1)
-        _figure(gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=best), out, f"spinup_map_{var}")
+        scale = m_to_mm(1.0) if ds[var].attrs.get("units") == "m" else 1.0
+        stem = f"spinup_map_{var}"
+        figures[stem] = _save(gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=best),
+                              folder, stem)
+    if as_json:
+        _report(loaded, "spinup-map", folder, ds, [], figures, headline, as_json)
+        return
+    from flexshaft.cli.tables import print_line, stdout_console
+
+    console = stdout_console()
+    print_line(console, loaded.design.name, style="bold")
+    print_line(console, headline)
+    print_line(console, f"data: {folder / 'results.nc'}")
+    for paths in figures.values():
+        print_line(console, f"figure: {paths['png']}")
 
 
 @study_app.command("all")
-def all_studies(design: Optional[Path] = _DESIGN,
-                resolution: str = typer.Option("report", help="Grid resolution: report (~10 s) or full (~1 min)."),
-                out: Path = typer.Option(Path("flexshaft-studies"), "--out", "-o", help="Folder for figures, netCDF and HTML."),
-                jobs: int = _JOBS,
-                gap: Optional[float] = typer.Option(None, help="Actuator gap [m] limiting the tuned gains.")) -> None:
+@guarded
+def all_studies(
+    design: DesignArgument = None,
+    resolution: Annotated[Resolution, typer.Option(
+        "--resolution", case_sensitive=False, help="Grid resolution: report (about 10 s) or full (about a minute).")
+    ] = Resolution.report,
+    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and "
+                                                          "report.html.")] = Path("flexshaft-studies"),
+    force: ForceOption = False, jobs: JobsOption = 1,
+    gap: Annotated[Optional[float], typer.Option(
+        "--gap", help="Actuator gap limiting the tuned gains [m].", show_default=False)] = None,
+    as_json: JsonOption = False,
+) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
-    import json
-
+    check_finite("--gap", gap, 1e-9)
+    loaded, folder = _prepare(design, out, "all", force)
+    from flexshaft.cli.progress import StageProgress
     from flexshaft.report.html import write_report
     from flexshaft.report.studies_section import design_studies_section
     from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
 
-    if resolution not in ("report", "full"):
-        typer.echo(f"error: --resolution must be 'report' or 'full', got {resolution!r}", err=True)
-        raise typer.Exit(code=2)
-    d = _design(design)
-    res = design_studies(d, resolution, progress=lambda label: typer.echo(label, err=True), jobs=jobs, actuator_gap=gap)
-    save_study_data(res, out)
-    write_report(out, f"Design studies: {d.name}", [design_studies_section(res, out)], design_name=d.name)
-    typer.echo(json.dumps(headline(res), indent=2))
+    d = loaded.design
+    with StageProgress(transient=as_json) as progress:
+        res = design_studies(d, resolution.value, progress=progress.step, jobs=jobs, actuator_gap=gap)
+        progress.step("writing the report")
+        save_study_data(res, folder)
+        page = write_report(folder, f"Design studies: {d.name}", [design_studies_section(res, folder)],
+                            design_name=d.name)
+    data = headline(res)
+    if as_json:
+        print_json(data)
+        return
+    _print_headline(data, page)
+
+
+def _print_headline(data: dict, page: Path) -> None:
+    from flexshaft.cli.tables import print_line, stdout_console, table
+    from flexshaft.units import m_to_mm
+
+    def mm(value):
+        return None if value is None else m_to_mm(value)
+
+    thesis = data["thesis"]
+    before, after = data["gains_before"] or {}, data["gains_after"] or {}
+    rows = [
+        ["optimal ply angle α of (α/−α/−α/α) [deg]", data["optimal_angle_deg"], thesis["optimal_angle_deg"]],
+        ["  its safety factor", data["optimal_angle_safety_factor"], None],
+        ["best (α/−α/β/−β)s", data["best_two_angle_layup"] or "—", "(55/-55/0/0)s"],
+        ["  its safety factor", data["best_two_angle_safety_factor"], None],
+        ["best wall [mm]", mm(data["best_wall_m"]), mm(thesis["best_wall_m"])],
+        ["K_p before → tuned [N/m]", _pair(before.get("kp_N_per_m"), after.get("kp_N_per_m")), None],
+        ["K_d before → tuned [N s/m]", _pair(before.get("kd_N_s_per_m"), after.get("kd_N_s_per_m")), None],
+        ["spin-up peak orbit before tuning [mm]", mm(data["peak_deflection_before_m"]), mm(thesis["tuned_peak_before_m"])],
+        ["spin-up peak orbit after tuning [mm]", mm(data["peak_deflection_after_m"]), mm(thesis["tuned_peak_after_m"])],
+    ]
+    console = stdout_console()
+    print_line(console, data["design"], style="bold")
+    console.print(table(f"design studies ({data['resolution']} resolution)", ["quantity", "this design", "thesis"],
+                        rows, numeric={1, 2}, digits=3))
+    for note in data["notes"]:
+        print_line(console, f"note: {note}")
+    print_line(console, f"report written to {page}")
+
+
+def _pair(first, second) -> str:
+    """Two gains, each with three significant figures in exponent form where needed."""
+    return " → ".join("—" if v is None else f"{v:.3g}" for v in (first, second))
+

@@ -69,14 +69,22 @@ def _strength_dict(r) -> dict | None:
 
 
 def results_json(res) -> dict:
-    """The key numbers of a run, JSON-ready (SI units, rpm where named)."""
+    """The key numbers of a run, JSON-ready: SI units, each unit in its key (``_m``, ``_N``,
+    ``_Pa``, ``_Hz``; speeds ``_rpm``, temperatures ``_c`` [°C]), non-finite numbers as None.
+
+    Nothing here depends on when or how fast the run went (no timestamp, no timings: those go
+    to ``timings.json``), so two runs of one design give byte-identical ``results.json``.
+    """
     model = res.model
     dm = model.dofs
     qs = res.static_displacement
     camp = res.campbell
     op = model.speed
     i_op = int(np.argmin(np.abs(res.speeds - op)))
-    return {
+    studies = _studies_json(res)
+    if studies is not None:
+        studies = {k: v for k, v in studies.items() if k not in ("elapsed_s", "timings_s")}
+    return _json_ready({
         "design": res.summary["name"],
         "verdict": res.verdict.to_dict() if res.verdict is not None else None,
         "summary": res.summary,
@@ -104,9 +112,25 @@ def results_json(res) -> dict:
         "buckling": res.buckling,
         "stability": _stability_dict(res),
         "thermal": _thermal_dict(res),
-        "design_studies": _studies_json(res),
+        "design_studies": studies,
         "notes": res.notes,
-    }
+    })
+
+
+def _json_ready(value):
+    """Plain JSON data of ``results_json``: numpy scalars/arrays as Python, tuples as lists,
+    NaN and infinities as None (strict JSON has neither)."""
+    if isinstance(value, dict):
+        return {str(k): _json_ready(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_json_ready(v) for v in value]
+    if value is None or isinstance(value, (bool, str, int)):
+        return value
+    if isinstance(value, float):
+        return value if np.isfinite(value) else None
+    if hasattr(value, "tolist"):
+        return _json_ready(value.tolist())
+    return _json_ready(float(value))
 
 
 def _modes_table(rows, caption) -> Table:
@@ -115,11 +139,14 @@ def _modes_table(rows, caption) -> Table:
 
 
 def write_run_report(res, folder: str | Path, generated: str | None = None, design_text: str | None = None,
-                     design_source: str = "design file") -> Path:
-    """Write ``report.html``, the figures (PNG and SVG) and ``results.json`` into ``folder``.
+                     design_source: str = "design file", timings: dict | None = None) -> Path:
+    """Write ``report.html``, the figures (PNG and SVG), ``results.json`` and ``timings.json``
+    into ``folder``.
 
     ``design_text`` is the design file as read (embedded verbatim, with its assumed values
-    listed); ``design_source`` says where it came from. The verdict comes first.
+    listed); ``design_source`` says where it came from. The verdict comes first. ``timings``
+    (stage -> seconds, e.g. from the CLI's progress display) go to ``timings.json`` with the
+    design studies' own, never to ``results.json``.
     """
     from flexshaft.report.inputs import inputs_section, report_title
     from flexshaft.report.verdict import verdict_section
@@ -131,6 +158,12 @@ def write_run_report(res, folder: str | Path, generated: str | None = None, desi
     design = model.design
     data = results_json(res)
     (folder / "results.json").write_text(json.dumps(data, indent=2, default=float))
+    studies_timings = getattr(res.design_studies, "timings", None) or {}
+    (folder / "timings.json").write_text(json.dumps({
+        "note": "wall-clock seconds of this run; they vary from run to run (results.json does not)",
+        "stages_s": {k: float(v) for k, v in (timings or {}).items()},
+        "design_studies_s": {k: float(v) for k, v in studies_timings.items()},
+    }, indent=2))
     op_rpm = model.speed * _RPM
     s = res.summary
     sections = []

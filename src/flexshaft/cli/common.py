@@ -1,0 +1,353 @@
+"""What every command shares: the error boundary, plain-text printing, design loading, JSON.
+
+The error boundary (:func:`guarded`) wraps every command. A problem the user can change (a bad
+design file, argument or output folder) ends with ``error: …`` on stderr and exit code 2; a
+failed requirement under ``run --strict`` exits 3; anything else is an internal fault: exit 4,
+a one-paragraph hint to report it, and the traceback only with ``flexshaft --debug``.
+
+User strings (design names, component names, paths) are printed as plain text: never through
+rich markup, with control characters escaped (:func:`plain`), so that ``name = "[/bold] x"``
+or a name holding terminal escape sequences prints harmlessly.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+import os
+import re
+import stat
+import sys
+import traceback
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, NoReturn, TypeVar
+
+import typer
+
+__all__ = [
+    "EXIT_INTERNAL_ERROR",
+    "EXIT_REQUIREMENT_FAILED",
+    "EXIT_USER_ERROR",
+    "MAX_DESIGN_BYTES",
+    "LoadedDesign",
+    "UserError",
+    "check_finite",
+    "default_design",
+    "design_fingerprint",
+    "fail",
+    "guarded",
+    "is_guarded",
+    "json_ready",
+    "load_design_argument",
+    "plain",
+    "print_json",
+    "settings",
+]
+
+#: Exit code of a user error (bad design, argument or output folder).
+EXIT_USER_ERROR = 2
+#: Exit code of ``flexshaft run --strict`` when a requirement fails.
+EXIT_REQUIREMENT_FAILED = 3
+#: Exit code of an internal fault (a bug in flexshaft).
+EXIT_INTERNAL_ERROR = 4
+
+#: Largest design file read [bytes]: the embedded baseline is about 9 kB.
+MAX_DESIGN_BYTES = 1 << 20
+
+#: Where an internal fault should be reported (pyproject.toml has no project URL yet).
+BUG_REPORT_TARGET = "the flexshaft issue tracker"
+
+
+@dataclass
+class Settings:
+    """Global options of the ``flexshaft`` command (set by its callback)."""
+
+    debug: bool = False
+
+
+#: The global options of the current invocation.
+settings = Settings()
+
+
+class UserError(Exception):
+    """A problem the user can change; printed as ``error: …`` with exit code 2."""
+
+
+def fail(message: str) -> NoReturn:
+    """Stop the command with a user error (exit code 2)."""
+    raise UserError(message)
+
+
+# ------------------------------------------------------------------------------------------------
+# Plain text
+
+# C0 and C1 controls, DEL, line/paragraph separators and the bidirectional overrides/isolates
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+def plain(text: Any, keep_newlines: bool = False) -> str:
+    """``text`` with control characters escaped (``\\x1b``, ``\\n``, ``\\u202e``).
+
+    The result is safe to print on a terminal; print it without markup interpretation
+    (``typer.echo``, or :class:`rich.text.Text`). ``keep_newlines`` keeps line breaks (for
+    messages of several lines) and escapes everything else.
+    """
+    text = str(text)
+    if keep_newlines:
+        return "\n".join(plain(line) for line in text.split("\n"))
+    return _CONTROL.sub(lambda match: match.group().encode("unicode_escape").decode("ascii"), text)
+
+
+def _stderr(message: str) -> None:
+    typer.echo(message, err=True)
+
+
+# ------------------------------------------------------------------------------------------------
+# The error boundary
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+_USER_OS_ERRORS = {"EACCES", "EPERM", "EROFS", "ENOSPC", "EDQUOT", "ENOTDIR", "EISDIR", "EEXIST", "ENOENT",
+                   "ENAMETOOLONG", "ELOOP", "EMFILE", "ENFILE", "EFBIG"}
+
+
+def _loaded_class(module: str, name: str) -> type | None:
+    """An exception class if its module is already imported (an error of a module never
+    loaded cannot occur, and the boundary must not import the solvers)."""
+    found = sys.modules.get(module)
+    cls = getattr(found, name, None) if found is not None else None
+    return cls if isinstance(cls, type) else None
+
+
+def _user_message(exc: BaseException) -> str | None:
+    """The message of a user error, or None for an internal fault."""
+    if isinstance(exc, UserError):
+        return str(exc)
+    design_error = _loaded_class("flexshaft.design.io", "DesignError")
+    if design_error is not None and isinstance(exc, design_error):
+        source = getattr(exc, "source", "")
+        return f"invalid design {source}:\n{exc}" if source and source != "<string>" else f"invalid design:\n{exc}"
+    sweep_error = _loaded_class("flexshaft.sweep.study", "SweepError")
+    if sweep_error is not None and isinstance(exc, sweep_error):
+        return str(exc)
+    if isinstance(exc, OSError) and exc.errno is not None:
+        import errno
+
+        if errno.errorcode.get(exc.errno) in _USER_OS_ERRORS:
+            where = f" {exc.filename}" if exc.filename is not None else ""
+            return f"cannot write or read{where}: {exc.strerror}"
+    if isinstance(exc, MemoryError):
+        return ("not enough memory for this computation; reduce mesh.shaft_elements / mesh.boom_elements, "
+                "the number of speeds or the study grid")
+    return None
+
+
+def _internal_error(exc: BaseException) -> None:
+    from flexshaft import __version__
+
+    first = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
+    what = f"{type(exc).__name__}: {first}" if first else type(exc).__name__
+    if settings.debug:
+        _stderr(plain("".join(traceback.format_exception(exc)), keep_newlines=True).rstrip("\n"))
+    _stderr(plain(f"internal error: {what}", keep_newlines=False))
+    hint = (f"This is a bug in flexshaft {__version__}, not a problem with your input. Please report it at "
+            f"{BUG_REPORT_TARGET} with the design file, the command line and its output with --debug "
+            "(flexshaft --debug COMMAND ...).")
+    if settings.debug:
+        hint = (f"This is a bug in flexshaft {__version__}. Please report it at {BUG_REPORT_TARGET} with the "
+                "design file, the command line and the traceback above.")
+    _stderr(hint)
+
+
+def _quiet_broken_pipe() -> None:
+    """Point stdout at /dev/null after the reader went away (``flexshaft baseline | head``)."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
+
+
+def _pass_through() -> tuple[type[BaseException], ...]:
+    """Exceptions that end a command on purpose (exit codes, usage errors, Ctrl-C)."""
+    kinds: list[type[BaseException]] = [typer.Exit, typer.Abort, KeyboardInterrupt]
+    if isinstance(getattr(typer, "TyperException", None), type):  # typer >= 0.2x vendors click
+        kinds.append(typer.TyperException)
+    try:
+        import click
+    except ImportError:  # pragma: no cover - typer without click
+        return tuple(kinds)
+    return (*kinds, click.exceptions.Exit, click.exceptions.Abort, click.ClickException)
+
+
+_PASS_THROUGH = _pass_through()
+
+
+def guarded(func: F) -> F:
+    """The error boundary of a command: user error → exit 2, internal fault → exit 4.
+
+    ``typer.Exit`` (e.g. exit 3 of ``run --strict``) and click's own usage errors pass through.
+    """
+
+    @functools.wraps(func)
+    def boundary(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return func(*args, **kwargs)
+        except _PASS_THROUGH:
+            raise
+        except BrokenPipeError:
+            _quiet_broken_pipe()
+            raise typer.Exit(code=0) from None
+        except Exception as exc:  # noqa: BLE001 - the one place every failure is classified
+            message = _user_message(exc)
+            if message is not None:
+                _stderr(plain(f"error: {message}", keep_newlines=True))
+                if settings.debug:
+                    _stderr(plain("".join(traceback.format_exception(exc)), keep_newlines=True).rstrip("\n"))
+                raise typer.Exit(code=EXIT_USER_ERROR) from None
+            _internal_error(exc)
+            raise typer.Exit(code=EXIT_INTERNAL_ERROR) from None
+
+    boundary.__flexshaft_guarded__ = True  # type: ignore[attr-defined]
+    return boundary  # type: ignore[return-value]
+
+
+def is_guarded(func: Callable[..., Any]) -> bool:
+    """True if ``func`` is wrapped by :func:`guarded`."""
+    return bool(getattr(func, "__flexshaft_guarded__", False))
+
+
+# ------------------------------------------------------------------------------------------------
+# Arguments
+
+
+def check_finite(option: str, value: float | None, minimum: float | None = None,
+                 maximum: float | None = None) -> float | None:
+    """``value`` if it is None or finite and within [minimum, maximum]; else a user error."""
+    if value is None:
+        return None
+    if not math.isfinite(value):
+        fail(f"{option}: must be a finite number (got {value})")
+    if minimum is not None and value < minimum:
+        fail(f"{option}: must be >= {minimum:g} (got {value:g})")
+    if maximum is not None and value > maximum:
+        fail(f"{option}: must be <= {maximum:g} (got {value:g})")
+    return value
+
+
+@dataclass(frozen=True)
+class LoadedDesign:
+    """A validated design, the text it was read from (for the report) and where it came from."""
+
+    design: Any  # flexshaft.design.Design
+    text: str | None
+    source: str
+
+
+def default_design(name: str = "baseline") -> LoadedDesign:
+    """The design of a command run without a design file: the embedded design ``name``
+    ("baseline", the thesis's Table 3.1 configuration, for the analysis commands; "tuned", the
+    tuned final design, for ``flexshaft run``)."""
+    from flexshaft.design import EMBEDDED_DESIGNS, embedded_design, embedded_text
+
+    return LoadedDesign(embedded_design(name), embedded_text(name),
+                        f"embedded {name} design ({EMBEDDED_DESIGNS[name][1]})")
+
+
+_FILE_KINDS = ((stat.S_ISDIR, "is a directory, not a design file"),
+               (stat.S_ISFIFO, "is a named pipe (FIFO), not a regular design file"),
+               (stat.S_ISCHR, "is a character device, not a regular design file"),
+               (stat.S_ISBLK, "is a block device, not a regular design file"),
+               (stat.S_ISSOCK, "is a socket, not a regular design file"))
+
+
+def _check_design_path(path: Path) -> None:
+    """Refuse, before opening it, anything but a regular file of at most MAX_DESIGN_BYTES
+    (a FIFO would block forever, /dev/zero read until memory runs out)."""
+    from flexshaft.design import DesignError, Problem
+
+    shown = os.fsdecode(path)
+
+    def refuse(message: str) -> NoReturn:
+        raise DesignError([Problem(shown, message)], shown)
+
+    try:
+        info = os.stat(path)
+    except FileNotFoundError:
+        refuse("no such design file")
+    except PermissionError:
+        refuse("permission denied")
+    except (OSError, ValueError) as exc:
+        refuse(f"cannot read the file ({getattr(exc, 'strerror', None) or exc})")
+    for is_kind, message in _FILE_KINDS:
+        if is_kind(info.st_mode):
+            refuse(message)
+    if not stat.S_ISREG(info.st_mode):
+        refuse("not a regular file")
+    if info.st_size > MAX_DESIGN_BYTES:
+        refuse(f"{info.st_size} bytes; a design file may have at most {MAX_DESIGN_BYTES} bytes")
+
+
+def load_design_argument(path: Path | None, default: str = "baseline") -> LoadedDesign:
+    """The design of a command's DESIGN argument (default: the embedded design ``default``).
+
+    Raises
+    ------
+    flexshaft.design.DesignError
+        For anything but a valid design in a regular file (exit code 2 at the boundary).
+    """
+    if path is None:
+        return default_design(default)
+    from flexshaft.design import load_design
+
+    _check_design_path(path)
+    design = load_design(path)
+    try:
+        with open(path, "rb") as file:
+            text = file.read(MAX_DESIGN_BYTES + 1).decode("utf-8-sig")
+    except (OSError, UnicodeDecodeError):  # it validated a moment ago; report without the text
+        text = None
+    return LoadedDesign(design, text, os.fsdecode(path))
+
+
+def design_fingerprint(design: Any) -> str:
+    """SHA-256 of the validated design's values (comments and layout of the file do not count)."""
+    import hashlib
+
+    data = design.model_dump(mode="json")
+    return hashlib.sha256(json.dumps(data, sort_keys=True, default=repr).encode()).hexdigest()
+
+
+# ------------------------------------------------------------------------------------------------
+# JSON
+
+
+def json_ready(value: Any) -> Any:
+    """Plain JSON data: numpy scalars and arrays as Python numbers and lists, tuples as lists,
+    non-finite floats as ``None`` (strict JSON has no NaN or infinity)."""
+    if isinstance(value, dict):
+        return {str(k): json_ready(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [json_ready(v) for v in value]
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, int):
+        return value
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if hasattr(value, "tolist"):  # numpy scalar or array
+        return json_ready(value.tolist())
+    if hasattr(value, "value") and isinstance(getattr(value, "value"), str):  # an Enum
+        return value.value
+    try:
+        return json_ready(float(value))
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def print_json(data: Any) -> None:
+    """Print ``data`` as strict JSON on stdout (ASCII only, so safe on any terminal)."""
+    sys.stdout.write(json.dumps(json_ready(data), indent=2, allow_nan=False) + "\n")
+    sys.stdout.flush()
