@@ -1,6 +1,6 @@
 """Unit conversions used at the edges (design file, report, CLI): the one module for them.
 
-SI floats inside, units at the edges (STYLE.md principle 5): rev/min, hertz of rotation,
+SI floats inside, units at the edges (docs/architecture.md): rev/min, hertz of rotation,
 degrees Celsius, millimetres are converted here and nowhere else. The functions work on
 floats and numpy arrays alike. Layup strings (angles in degrees) are parsed by
 :func:`flexshaft.design.layup.parse_layup`, the one layup parser of the package.

@@ -1,4 +1,4 @@
-"""The design studies of thesis chapter 3 (DESIGN.md §3) on the sweep engine.
+"""The design studies of thesis chapter 3 (docs/studies.md) on the sweep engine.
 
 Each function builds a :class:`~flexshaft.sweep.Study` and runs it with
 :func:`~flexshaft.sweep.run_sweep` (so ``run_dir``, ``jobs``, ``client`` and ``progress`` work
