@@ -179,17 +179,25 @@ def test_no_reference_to_a_missing_markdown_file():
     assert not missing, "\n".join(missing)
 
 
+def _anchors(path: Path) -> set[str]:
+    """Explicit ``<a id>`` anchors and GitHub's heading slugs of a Markdown file."""
+    text = path.read_text(encoding="utf-8")
+    headings = re.findall(r"^#+\s+(.+?)\s*$", text, flags=re.MULTILINE)
+    slugs = {re.sub(r"[^\w\- ]", "", heading.lower()).replace(" ", "-") for heading in headings}
+    return slugs | set(re.findall(r'<a id="([^"]+)"', text))
+
+
 def test_markdown_links_resolve():
     broken = []
     for path in [ROOT / "README.md", *sorted(DOCS.glob("*.md"))]:
         text = path.read_text(encoding="utf-8")
-        anchors = set(re.findall(r'<a id="([^"]+)"', text))
         for target in re.findall(r"\]\(([^)\s]+)\)", text):
             if re.match(r"[a-z]+://", target) or target.startswith("mailto:"):
                 continue
             file, _, anchor = target.partition("#")
-            if file and not (path.parent / file).exists():
+            linked = (path.parent / file) if file else path
+            if not linked.exists():
                 broken.append(f"{path.relative_to(ROOT)}: {target}")
-            elif not file and anchor and anchors and anchor not in anchors:
-                broken.append(f"{path.relative_to(ROOT)}: {target}")
+            elif anchor and linked.suffix == ".md" and anchor not in _anchors(linked):
+                broken.append(f"{path.relative_to(ROOT)}: {target} (no such heading)")
     assert not broken, "\n".join(broken)
