@@ -201,3 +201,22 @@ def test_markdown_links_resolve():
             elif anchor and linked.suffix == ".md" and anchor not in _anchors(linked):
                 broken.append(f"{path.relative_to(ROOT)}: {target} (no such heading)")
     assert not broken, "\n".join(broken)
+
+
+# ------------------------------------------------------------------------------------------------
+# Hand-written tables of design keys
+
+
+@pytest.mark.parametrize("page, header", [("thermal.md", "[thermal]"), ("requirements.md", "[requirements]")])
+def test_hand_written_key_tables_name_every_key(page, header):
+    """docs/thermal.md and docs/requirements.md explain their tables key by key: each key of
+    the schema appears there, and no key that the schema does not have."""
+    text = (DOCS / page).read_text(encoding="utf-8")
+    table = next(t for t in design_tables() if t.header == header)
+    keys = {field.key for field in table.fields}
+    missing = [key for key in sorted(keys) if f"`{key}`" not in text]
+    assert not missing, f"docs/{page} does not explain {missing}"
+    section = text.split(f"`{header}` table", 1)[-1].split("\n## ", 1)[0]  # the section on the table
+    rows = re.findall(r"^\| `([a-z_]+)`", section, flags=re.MULTILINE)
+    unknown = sorted(set(rows) - keys)
+    assert not unknown, f"docs/{page} lists keys the schema does not have: {unknown}"

@@ -496,7 +496,8 @@ def design_reference() -> str:
         for field in table.fields:
             description = field.description
             if field.note:
-                description += f" *Range:* {field.note}."
+                label = "Range" if "float" in field.type or "integer" in field.type else "Limit"
+                description += f" *{label}:* {field.note.rstrip('.')}."
             out.append("| " + " | ".join(_cell(text) for text in (
                 f"`{field.key}`", field.type, field.unit, field.default, field.allowed, description)) + " |")
         out.append("")
@@ -521,7 +522,7 @@ def design_json_schema() -> dict[str, Any]:
             node["description"] = table.intro
         for field in table.fields:
             prop = node["properties"][field.key]
-            text = field.description + (f" Range: {field.note}." if field.note else "")
+            text = " ".join(part for part in (field.description, field.note.rstrip(".") + "." if field.note else "") if part)
             if text:
                 prop["description"] = text
             if field.unit and "unit" not in prop:
