@@ -1,4 +1,4 @@
-"""The design studies of thesis chapter 3 (DESIGN.md §3) on the sweep engine.
+"""The design studies of thesis chapter 3 (docs/studies.md) on the sweep engine.
 
 Each function builds a :class:`~flexshaft.sweep.Study` and runs it with
 :func:`~flexshaft.sweep.run_sweep` (so ``run_dir``, ``jobs``, ``client`` and ``progress`` work
@@ -117,8 +117,8 @@ def ply_angle_study(angles=np.arange(5.0, 90.0, 5.0), design=None, **run):
     """Safety factor vs the ply angle α of (α/−α/−α/α), no imbalance (thesis study 1), with
     the critical ply's σ1, σ2, τ12 (Table 3.3), its angle, station and dominant stress.
 
-    The optimum on the assumed baseline is a cusp at exactly 45° (docs/studies.md): use a
-    step that hits 45° (or 1° or finer) before concluding on it.
+    The optimum on the assumed baseline is a narrow peak near 45° (docs/studies.md): use a
+    step of 1° or finer there before concluding on it.
     """
     study = Study(
         "ply angle (a/-a/-a/a)",
