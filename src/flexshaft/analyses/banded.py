@@ -42,8 +42,12 @@ PIVOT_SCREEN = 1e-8
 FORWARD_ERROR_LIMIT = 1e-6
 
 
-class SingularSystemError(ArithmeticError):
-    """The dynamic stiffness is singular: an undamped system excited exactly at resonance."""
+class SingularSystemError(ArithmeticError, ValueError):
+    """The dynamic stiffness is singular: an undamped system excited exactly at resonance.
+
+    Also a ``ValueError``: the cause is the design or the arguments (no damping at a resonance,
+    an unsupported rigid-body motion), so callers that report bad input report it too.
+    """
 
 
 def _term_matrices(model: Model, free: np.ndarray) -> dict[str, sp.csr_matrix]:

@@ -43,6 +43,7 @@ import numpy as np
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
+from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
 from flexshaft.units import rad_s_to_rpm
@@ -177,12 +178,16 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     reduced : ReducedModel or None
         A precomputed reduction of ``model`` to reuse (e.g. across derivative gains).
     """
+    check_model(model)
     speeds = check_speeds(speeds)
-    if int(n_modes) != n_modes or n_modes < 1:
-        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
+    n_modes = check_count(n_modes, "n_modes")
     if damping_model not in ("hysteretic", "viscous"):
         raise ValueError(f"damping_model must be 'hysteretic' or 'viscous', got {damping_model!r}")
-    red = reduced or reduce(model, basis_size or max(default_basis_size(int(n_modes)), 48))
+    if reference_frequency is not None:
+        reference_frequency = check_speed(reference_frequency, "reference_frequency", positive=True)
+    if basis_size is not None:
+        basis_size = check_count(basis_size, "basis_size")
+    red = reduced or reduce(model, basis_size or max(default_basis_size(n_modes), 48))
     ref = None
     if damping_model == "viscous":
         ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
@@ -191,6 +196,7 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     else:
         tracked = track_modes(model, red, speeds, int(n_modes))
     eig = tracked.eigenvalues
+    require_finite("stability eigenvalues", eig)
     onset, mode, k = onset_speed(speeds, eig)
     if onset is not None and k > 0:
         weights = None if damping_model == "hysteretic" else (lambda sp: viscous_equivalent(ref, sp))
