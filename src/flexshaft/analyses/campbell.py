@@ -280,6 +280,11 @@ def check_speeds(speeds) -> np.ndarray:
 
 def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple[CriticalSpeed, ...]:
     """Crossings of the lateral curves with ω = kΩ, sorted by speed."""
+    speeds = check_finite_array("speeds", speeds, "rad/s")
+    eigenvalues = check_finite_array("eigenvalues", eigenvalues, "rad/s")
+    harmonics = check_finite_array("harmonics", np.atleast_1d(np.asarray(harmonics, dtype=float)), "-")
+    if eigenvalues.ndim != 2 or eigenvalues.shape[0] != speeds.size:
+        raise ValueError(f"eigenvalues must be (speeds, modes) = ({speeds.size}, n) (got {eigenvalues.shape})")
     out = []
     for h in harmonics:
         for m in range(eigenvalues.shape[1]):

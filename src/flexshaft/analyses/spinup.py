@@ -300,8 +300,15 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
         isinstance(controllers, tuple) and controllers and isinstance(controllers[0], (Controller, tuple))
     ):
         controllers = [controllers] * rec.n_actuators
+    if not isinstance(rec, ActuatorReceptance):
+        raise ValueError(f"rec must be an ActuatorReceptance (actuator_receptance(model, speeds)), got {type(rec).__name__}")
+    for c in controllers:
+        if isinstance(c, tuple):
+            check_finite_array("controller gains (kp, kd)", c, "N/m, N s/m")
     laws = [c if isinstance(c, Controller) else Controller.from_transfer_function(c) if hasattr(c, "num")
             else Controller.pd(*c) for c in controllers]
+    for law in laws:
+        check_finite_array("controller coefficients", law.numerator + law.denominator)
     if len(laws) != rec.n_actuators:
         raise ValueError(f"expected {rec.n_actuators} controllers (one per actuator), got {len(laws)}")
     gains = rec.feedback(_dynamic_gains(laws, rec.speeds)[None])

@@ -43,7 +43,7 @@ import numpy as np
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
-from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
 from flexshaft.units import rad_s_to_rpm
@@ -138,7 +138,14 @@ def onset_speed(speeds, eigenvalues, tolerance: float = STABILITY_TOLERANCE) -> 
     A point is unstable when ζ = −Re(s)/|s| < −``tolerance``; the crossing speed is
     interpolated linearly in ζ between the last stable and the first unstable speed.
     """
-    zeta = -np.asarray(eigenvalues).real / np.abs(eigenvalues)
+    speeds = check_finite_array("speeds", speeds, "rad/s")
+    eigenvalues = check_finite_array("eigenvalues", eigenvalues, "rad/s")
+    if eigenvalues.ndim != 2 or eigenvalues.shape[0] != speeds.size:
+        raise ValueError(f"eigenvalues must be (speeds, modes) = ({speeds.size}, n) (got {eigenvalues.shape})")
+    if not (np.isfinite(tolerance) and tolerance >= 0):
+        raise ValueError(f"tolerance must be a finite number >= 0 (got {tolerance!r})")
+    with np.errstate(invalid="ignore", divide="ignore"):  # s = 0 (a rigid-body root) has ζ = NaN: never unstable
+        zeta = -eigenvalues.real / np.abs(eigenvalues)
     best = (None, None, None)
     for m in range(zeta.shape[1]):
         pos = np.flatnonzero(zeta[:, m] < -tolerance)

@@ -154,7 +154,7 @@ def build_model(design) -> Model:
     if not isinstance(design, Design):
         raise ValueError(f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
                          "use load_design, loads_design or design_from_dict")
-    check_problem_size(design, "model")
+    check_problem_size(design, "model", stacklevel=4)  # the caller of flexshaft.assembly.build_model
     shaft_x, boom_x = design_mesh(design)
     dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x))
     n = dm.size

@@ -48,6 +48,7 @@ from flexshaft.design.quantities import (
     IntegralGain,
     Mass,
     MemberLength,
+    NegativeStiffness,
     PoleArea,
     ProportionalGain,
     Station,
@@ -292,7 +293,7 @@ class ActiveBearing(_BearingBase):
     controller: Controller | None = None
     gap: BackupGap | None = None
     force_capacity: ForceCapacity | None = None
-    ks: Stiffness | None = None
+    ks: NegativeStiffness | None = None
     ki: CurrentGain | None = None
     amplifier_bandwidth: FilterFrequency | None = None
     sensor_offset: Coordinate = 0.0

@@ -1,9 +1,10 @@
 """Plausible physical ranges of the numbers of a design file, one annotated type per quantity.
 
 Every float of the schema is strict (no ``"3"``, no ``true``), finite and bounded on both sides
-by a range that contains every real driveline with a wide margin but keeps the arithmetic of
-the analyses in double precision: products such as E·I, k·L³, ω²·M or L⁴ stay far from
-overflow (1.8e308) and from underflow to zero. A value outside its range is refused with the
+by a range that contains every real driveline with a wide margin, and the usual idealisations
+(a rigid member at 1e16 Pa, a massless shaft at 1e-6 kg/m³), but keeps the arithmetic of the
+analyses in double precision: products such as E·I, k·L³, ω²·M or L⁴ stay far from overflow
+(1.8e308) and from underflow to zero. A value outside its range is refused with the
 field, the value and the range (:mod:`flexshaft.design.io`). The bounds and the reason for
 each are listed in ``docs/limits.md``; the bounds, the unit and a one-line reason are also in
 the generated JSON schema (``Design.model_json_schema()``: ``minimum``/``maximum``, ``unit``,
@@ -49,6 +50,7 @@ __all__ = [
     "Mass",
     "Inertia",
     "Stiffness",
+    "NegativeStiffness",
     "Damping",
     "ProportionalGain",
     "DerivativeGain",
@@ -148,9 +150,11 @@ TsaiWuInteraction = quantity("1/Pa^2", "Tsai-Wu F12; |F12| < sqrt(F11 F22) <= 1/
 
 Mass = quantity("kg", "lumped mass from 0 to 100 t (the heaviest helicopter weighs 56 t)", ge=0.0, le=1e5)
 Inertia = quantity("kg m^2", "mass moment of inertia from 0 to 1e7 kg m² (100 t at 10 m)", ge=0.0, le=1e7)
-Stiffness = quantity("N/m", "bearing stiffness from 0 to 1e12 N/m (N m/rad for beta, gamma): 1e12 is rigid for "
+Stiffness = quantity("N/m or N m/rad", "bearing stiffness from 0 to 1e12 N/m (N m/rad for beta, gamma): 1e12 is rigid for "
                      "any shaft; above it the eigen-solution loses digits", ge=0.0, le=1e12)
-Damping = quantity("N s/m", "viscous damping from 0 to 1e9 N s/m (N m s/rad for beta, gamma; a squeeze-film "
+NegativeStiffness = quantity("N/m", "open-loop negative stiffness k_s of a magnet from 0 to 1e12 N/m, like a "
+                             "bearing stiffness", ge=0.0, le=1e12)
+Damping = quantity("N s/m or N m s/rad", "viscous damping from 0 to 1e9 N s/m (N m s/rad for beta, gamma; a squeeze-film "
                    "damper gives 1e4-1e5)", ge=0.0, le=1e9)
 ProportionalGain = quantity("N/m", "proportional gain from 0 to 1e12 (N/m, or A/m with a current gain k_i), "
                             "like a bearing stiffness", ge=0.0, le=1e12)

@@ -35,7 +35,7 @@ MAX_NESTING = 32
 
 _QUOTED = re.compile(r'"""[\s\S]*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\n]|\\.)*"|\'[^\'\n]*\'')
 _HEADER = re.compile(r"^\s*\[\[?([^\]]*)\]")
-_KEY = re.compile(r"((?:[A-Za-z0-9_\-]+|\x00)(?:\s*\.\s*(?:[A-Za-z0-9_\-]+|\x00))*)\s*=")
+_KEY_BOUNDARY = re.compile(r"[{,=]")
 
 
 def read_design_bytes(path: str | os.PathLike[str]) -> bytes:
@@ -81,6 +81,17 @@ def read_design_bytes(path: str | os.PathLike[str]) -> bytes:
         os.close(descriptor)
 
 
+def _keys(line: str) -> list[str]:
+    """The key text before each ``=`` of a line: from the line start, a ``{`` or a ``,`` to the
+    ``=`` (one linear pass; values never end in ``=``, so their dots are not counted)."""
+    keys, start = [], 0
+    for match in _KEY_BOUNDARY.finditer(line):
+        if match.group() == "=":
+            keys.append(line[start:match.start()])
+        start = match.end()
+    return keys
+
+
 def text_problems(text: str) -> list[str]:
     """Reasons why ``text`` is refused before parsing (empty when it may be parsed).
 
@@ -98,7 +109,7 @@ def text_problems(text: str) -> list[str]:
     for number, line in enumerate(blanked.split("\n"), start=1):
         line = line.split("#", 1)[0]
         header = _HEADER.match(line) if depth == 0 else None
-        keys = [header.group(1)] if header else [match.group(1) for match in _KEY.finditer(line)]
+        keys = [header.group(1)] if header else _keys(line)
         for key in keys:
             parts = key.count(".") + 1
             if parts > MAX_KEY_DEPTH:
