@@ -29,7 +29,7 @@ from flexshaft.assembly.mesh import STATION_MERGE_FRACTION, merge_stations, segm
 from flexshaft.assembly.size import MAX_WORST_BAYS, ProblemSizeWarning, check_problem_size, problem_size
 from flexshaft.design import DesignError, baseline_design, baseline_text, design_from_dict, load_design, loads_design
 from flexshaft.design import with_overrides
-from flexshaft.design.reading import MAX_DESIGN_BYTES, MAX_KEY_DEPTH, MAX_LINE_LENGTH, MAX_NESTING
+from flexshaft.design.reading import MAX_DESIGN_BYTES, MAX_KEY_DEPTH, MAX_LINE_LENGTH, MAX_NESTING, text_problems
 
 BASELINE = baseline_design()
 
@@ -158,6 +158,13 @@ def test_a_deep_dotted_key_is_refused_before_the_toml_parser():
 def test_text_limits(text, message):
     with pytest.raises(DesignError, match=message):
         loads_design(text)
+
+
+def test_the_pre_scan_is_linear_in_the_text():
+    """A first key regex backtracked quadratically: 100 lines of 'a.a.a...' (9,999 characters,
+    no '=') took minutes; the scan is one pass per line (the watchdog only catches a hang)."""
+    line = ".".join(["a"] * 5000)
+    assert finishes(lambda: text_problems((line + "\n") * 99), seconds=60.0) == []
 
 
 def test_text_limits_ignore_quoted_and_commented_text():
