@@ -19,6 +19,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
+from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
@@ -148,11 +149,11 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
         Modal basis (default :func:`default_basis_size`; the number of free DOFs gives the
         exact solution of the full problem).
     """
-    if not (np.isfinite(speed) and speed >= 0):
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
-    if int(n_modes) != n_modes or n_modes < 1:
-        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
-    n_modes = int(n_modes)
+    check_model(model)
+    speed = check_speed(speed)
+    n_modes = check_count(n_modes, "n_modes")
+    if basis_size is not None:
+        basis_size = check_count(basis_size, "basis_size")
     red = reduce(model, basis_size or default_basis_size(n_modes))
     if damped:
         s, Z = damped_modes(red, speed, n_modes)
@@ -164,6 +165,8 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
         s, Z = s[order], Z[:, order]
         red = bare
     shapes = _normalise(model.dofs, model.dofs.expand(red.shapes(Z)))
+    require_finite("eigenvalues", s)
+    require_finite("mode shapes", shapes)
     labels = label_modes(model, shapes)
     return Modes(float(speed), s, shapes, labels.kind, labels.whirl, labels.whirl_ratio, labels.component,
                  labels.shares, model.dofs, model.internal_damping)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError, solver_for
+from flexshaft.analyses.guards import check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -115,15 +116,27 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
     SingularSystemError
         When Z(ω) is singular (an undamped resonance).
     """
-    speed = model.speed if speed is None else speed
-    omegas = np.atleast_1d(np.asarray(omega, dtype=float))
+    check_model(model)
+    speed = check_speed(model.speed if speed is None else speed)
+    try:
+        omegas = np.atleast_1d(np.asarray(omega, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"excitation frequencies must be numbers [rad/s] (got {omega!r})") from None
     if not np.all(np.isfinite(omegas)) or np.any(omegas < 0):
         raise ValueError(f"excitation frequencies must be finite and >= 0 rad/s (got {omega!r})")
-    if not np.isfinite(speed) or speed < 0:
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    _check_loads(model, loads)
     out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
+    require_finite("harmonic response", out)
     out = out[..., 0] if np.ndim(omega) == 0 else out
     return HarmonicResponse(out, omegas, np.full(omegas.size, float(speed)), model.dofs, "harmonic", model.internal_damping)
+
+
+def _check_loads(model: Model, loads) -> None:
+    """Load vector(s) on the full DOF vector: finite, (ndof,) or (ndof, ncases)."""
+    Q = check_finite_array("loads", loads, "N, N m")
+    if Q.ndim not in (1, 2) or Q.shape[0] != model.dofs.size:
+        raise ValueError(f"loads must have shape ({model.dofs.size},) or ({model.dofs.size}, ncases) "
+                         f"(got {Q.shape})")
 
 
 def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> HarmonicResponse:
@@ -142,10 +155,16 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> Harmoni
     HarmonicResponse
         (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
     """
-    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    check_model(model)
+    try:
+        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"speeds must be numbers [rad/s] (got {speeds!r})") from None
     if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
         raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
+    _check_loads(model, loads_per_speed_squared)
     out = _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
+    require_finite("imbalance response", out)
     return HarmonicResponse(out, speeds, speeds, model.dofs, "imbalance", model.internal_damping)
 
 
@@ -212,13 +231,14 @@ def _static_solve(model: Model, loads, speed: float | None):
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
 
+    check_model(model)
     free = model.dofs.free
-    speed = model.speed if speed is None else float(speed)
-    if not np.isfinite(speed) or speed < 0:
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
-    Q = np.asarray(loads, dtype=float)
-    if not np.all(np.isfinite(Q)):
-        raise ValueError("the load vector contains NaN or inf")
+    speed = check_speed(model.speed if speed is None else speed)
+    _check_loads(model, loads)
+    Q = np.asarray(loads)
+    if np.iscomplexobj(Q) and np.any(Q.imag != 0):
+        raise ValueError("static loads must be real [N, N m] (got complex values)")
+    Q = Q.real.astype(float)
     K, holding = _static_parts(model, speed)
     A = restrict(K, free)
     rhs = Q[free]
@@ -238,6 +258,7 @@ def _static_solve(model: Model, loads, speed: float | None):
         raise SingularSystemError("static stiffness is singular to working precision")
     out = np.zeros(Q.shape)
     out[free] = x[: free.size]
+    require_finite("static response", out)
     # λ is the force on the shaft (K q = Q + B_aᵀ λ); the bearing carries −λ
     forces = {a.name: -x[free.size + 2 * k : free.size + 2 * k + 2] for k, a in enumerate(holding)}
     return out, forces
@@ -266,6 +287,9 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
     ValueError
         For an integrating actuator at ``omega = 0`` without ``loads``.
     """
+    check_model(model)
+    omega = check_speed(omega, "omega")
+    check_finite_array("q", q, "m, rad")
     out = {}
     actuators = {a.name: a for a in model.actuators}
     static = {}
@@ -287,6 +311,8 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
         else:
             gain = link.stiffness + 1j * omega * link.damping
             out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
+    for name, force in out.items():
+        require_finite(f"force of bearing {name!r}", force)
     return out
 
 
@@ -297,6 +323,11 @@ def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
     force ``G(iω) d_s − k_s d_a`` of the magnetic bearing (``C(iω) d`` for the thesis's PD
     bearing).
     """
+    check_model(model)
+    q = check_finite_array("q", q, "m, rad")
+    omegas = check_finite_array("omegas", omegas, "rad/s")
+    if np.any(np.asarray(omegas) < 0):
+        raise ValueError("omegas must be >= 0 rad/s")
     disp, force = {}, {}
     for a in model.actuators:
         d = a.lateral_rows @ q  # (2, n)
@@ -307,12 +338,17 @@ def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
         else:
             f = a.carried_force(q, s)
             force[a.name] = orbit_amplitude(f[0], f[1])
+        require_finite(f"force of actuator {a.name!r}", force[a.name])
     return disp, force
 
 
 def worst_case_orbits(model: Model, q: np.ndarray):
     """Shaft orbit amplitudes (nodes, cases, speeds) [m] of responses ``q`` (ndof, cases,
     speeds) and the worst load case at each speed (the largest orbit over the nodes)."""
+    check_model(model)
+    q = check_finite_array("q", q, "m, rad")
+    if q.ndim != 3 or q.shape[0] != model.dofs.size:
+        raise ValueError(f"q must have shape ({model.dofs.size}, cases, speeds) (got {q.shape})")
     dm = model.dofs
     n = np.arange(dm.n_shaft_nodes)
     amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])  # (nodes, cases, speeds)

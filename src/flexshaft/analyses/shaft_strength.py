@@ -45,6 +45,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flexshaft.analyses.guards import NonFiniteResultError, check_count, check_finite_array, check_model
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.elements.shape import beam_shape
@@ -239,6 +240,12 @@ def shaft_safety_factor(
         Also compute ``safety_factor_without`` (one more evaluation of the whole shaft per load;
         off by default for sweeps).
     """
+    check_model(model)
+    n_phases = check_count(n_phases, "n_phases")
+    for name, value in (dict(q_static) if isinstance(q_static, Mapping) else {"q_static": q_static}).items():
+        check_finite_array(name, value, "m, rad")
+    if q_dynamic is not None:
+        check_finite_array("q_dynamic", q_dynamic, "m, rad")
     laminate, strengths = shaft_strengths(model)
     laminate = laminate.storage
     design = model.design
@@ -295,6 +302,9 @@ def shaft_safety_factor(
     if residual is not None:
         parts["thermal"] = residual[ply]
     R_min = float(R[k])
+    if np.isnan(R_min):  # inf is a result (no stress); NaN is not
+        raise NonFiniteResultError("the Tsai-Wu safety factor came out NaN: some combination of the design's "
+                                   "numbers overflows double precision (see docs/limits.md)")
     scale = R_min if np.isfinite(R_min) else 0.0
     at_failure = np.array([parts[name] * (1.0 if name == "thermal" else scale) for name in parts])
     shares = tsai_wu_shares(at_failure, strengths) if np.isfinite(R_min) else np.zeros(len(parts))

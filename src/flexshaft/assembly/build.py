@@ -1,8 +1,12 @@
 """Build the assembled :class:`~flexshaft.assembly.model.Model` from a validated design.
 
-Steps: mesh both members with nodes at every bearing, disk and point load; stack each kind of
-element and scatter it once (sparse COO); add lumped inertias and bearing links; constrain the
-boom root and the shaft end DOFs named in the design.
+Steps: estimate the problem size and refuse a design above the caps
+(:func:`~flexshaft.assembly.size.check_problem_size`); mesh both members with nodes at every
+bearing, disk and point load (:mod:`flexshaft.assembly.mesh`, close stations merged); stack
+each kind of element and scatter it once (sparse COO); add lumped inertias and bearing links;
+constrain the boom root and the shaft end DOFs named in the design; check the derived numbers
+(:mod:`flexshaft.assembly.checks`: bearing stiffness against the shaft's element stiffness,
+actuator gains, finite matrices), raising :class:`~flexshaft.design.DesignError`.
 """
 
 from __future__ import annotations
@@ -10,8 +14,11 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
+from flexshaft.assembly.checks import check_actuator_law, check_bearing_stiffness, check_finite_model, check_magnet
 from flexshaft.assembly.dofs import BOOM_FIELDS, DofMap
+from flexshaft.assembly.mesh import design_mesh, segment_mesh
 from flexshaft.assembly.model import Actuator, BearingLink, Controller, Model, ShaftProperties
+from flexshaft.assembly.size import check_problem_size
 from flexshaft.assembly.sparse import scatter_blocks
 from flexshaft.elements import magnetic
 from flexshaft.elements import (
@@ -29,20 +36,6 @@ from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
 __all__ = ["build_model", "segment_mesh", "shaft_properties", "boom_semi_axes"]
 
 _RELATIVE = ("u", "v", "w", "beta", "gamma")
-
-
-def segment_mesh(breakpoints, n_elements: int) -> np.ndarray:
-    """Nodes covering sorted ``breakpoints`` with about ``n_elements`` near-equal elements.
-
-    Every breakpoint is a node; each segment gets ``max(1, round(n · L_seg / L))`` elements.
-    """
-    pts = np.unique(np.round(np.asarray(breakpoints, dtype=float), 12))
-    total = pts[-1] - pts[0]
-    nodes = [pts[:1]]
-    for a, b in zip(pts[:-1], pts[1:]):
-        n = max(1, int(round(n_elements * (b - a) / total)))
-        nodes.append(np.linspace(a, b, n + 1)[1:])
-    return np.concatenate(nodes)
 
 
 def shaft_properties(design) -> ShaftProperties:
@@ -75,28 +68,6 @@ def boom_semi_axes(tailboom, x):
     return a, b
 
 
-def _meshes(design):
-    sh, boom = design.shaft, design.tailboom
-    loads = design.loads
-    shaft_pts = [sh.x_start, sh.x_end]
-    shaft_pts += [b.x for b in design.bearings] + [d.x for d in design.disks]
-    sensors = [b for b in design.bearings if b.kind == "active" and b.sensor_offset != 0.0]
-    shaft_pts += [b.sensor_x for b in sensors]
-    boom_pts = []
-    if loads is not None:
-        shaft_pts += [p.x for p in loads.point if p.on == "shaft"]
-        boom_pts += [p.x for p in loads.point if p.on == "boom"]
-    shaft_x = segment_mesh(shaft_pts, design.mesh.shaft_elements)
-    if boom is None:
-        return shaft_x, np.zeros(0)
-    boom_pts += [0.0, boom.length] + [_x_boom(b) for b in design.bearings] + [b.sensor_boom_x for b in sensors]
-    return shaft_x, segment_mesh(boom_pts, design.mesh.boom_elements)
-
-
-def _x_boom(bearing) -> float:
-    return bearing.x if bearing.x_boom is None else bearing.x_boom
-
-
 def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
     dm = DofMap(shaft_x, boom_x)
     fixed = [dm.shaft(0, f) for f in design.shaft.fixed_start]
@@ -120,7 +91,7 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
     if design.tailboom is None:
         local, dofs, xb, h = relative_rows(xis, Ls), shaft_dofs, None, 0.0
     else:
-        xb = _x_boom(bearing)
+        xb = bearing.boom_x
         if bearing.offset is not None:
             h = bearing.offset
         else:
@@ -142,6 +113,7 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
 
 def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     """The magnetic bearing of an active-bearing table (see :class:`~flexshaft.assembly.model.Actuator`)."""
+    index = design.bearings.index(bearing)
     ctrl = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
     if bearing.uses_magnet_geometry:
         geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
@@ -153,9 +125,12 @@ def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     if bearing.saturation_flux_density is not None:
         saturation = magnetic.saturation_force(bearing.saturation_flux_density, bearing.pole_area, bearing.pole_angle_rad)
     sensor = _bearing_link(design, dm, bearing, bearing.sensor_offset) if bearing.sensor_offset != 0.0 else None
-    return Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
-                    amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
-                    air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
+    check_magnet(design, index, k_i, k_s)
+    actuator = Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
+                        amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
+                        air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
+    check_actuator_law(design, index, actuator, design.operating.speed_rad_s)
+    return actuator
 
 
 def _coefficients(table) -> np.ndarray:
@@ -166,12 +141,33 @@ def _coefficients(table) -> np.ndarray:
 
 
 def build_model(design) -> Model:
-    """Assemble the global model of a validated :class:`~flexshaft.design.Design`."""
-    shaft_x, boom_x = _meshes(design)
+    """Assemble the global model of a validated :class:`~flexshaft.design.Design`.
+
+    Raises
+    ------
+    DesignError
+        When the problem is too large (:func:`~flexshaft.assembly.size.check_problem_size`,
+        ``"model"``) or a derived number is out of range (:mod:`flexshaft.assembly.checks`).
+    ValueError
+        When ``design`` is not a validated Design.
+
+    Warns
+    -----
+    ProblemSizeWarning
+        When the model is large (above the soft caps).
+    """
+    from flexshaft.design import Design
+
+    if not isinstance(design, Design):
+        raise ValueError(f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
+                         "use load_design, loads_design or design_from_dict")
+    check_problem_size(design, "model", stacklevel=4)  # the caller of flexshaft.assembly.build_model
+    shaft_x, boom_x = design_mesh(design)
     dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x))
     n = dm.size
 
     props = shaft_properties(design)
+    check_bearing_stiffness(design, props)
     section = TubeSection(props.outer_diameter, props.inner_diameter)
     kappa = None
     if design.shaft.shear_deformation:
@@ -220,7 +216,7 @@ def build_model(design) -> Model:
             actuators.append(_actuator(design, dm, bearing, link))
     M, K, C, G, shaft_loss, boom_loss = (scatter_blocks(parts[k], n) for k in ("M", "K", "C", "G", "shaft_loss", "boom_loss"))
 
-    return Model(
+    model = Model(
         dofs=dm,
         M=M.tocsr(),
         K=K.astype(float).tocsr(),
@@ -236,3 +232,5 @@ def build_model(design) -> Model:
         boom_loss_stiffness=boom_loss.tocsr(),
         internal_damping=design.analysis.internal_damping,
     )
+    check_finite_model(model)
+    return model

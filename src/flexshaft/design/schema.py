@@ -43,11 +43,13 @@ from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
     PROBLEMS_ERROR_TYPE,
     BearingDirection,
+    DesignName,
     DofName,
     ElementCount,
     FieldPath,
     FrozenModel,
     ImbalancePlacement,
+    Name,
     Problems,
     check_unique,
     format_number,
@@ -56,6 +58,7 @@ from flexshaft.design.fields import (
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
+from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
 
 __all__ = [
@@ -163,12 +166,12 @@ class Design(FrozenModel):
         Limits of the requirements verdict (``[requirements]``).
     """
 
-    name: str = Field(strict=True)
-    materials: dict[str, Material]
+    name: DesignName
+    materials: dict[Name, Material] = Field(max_length=MAX_MATERIALS)
     shaft: Shaft
     tailboom: Tailboom | None = None
-    bearings: tuple[Bearing, ...] = Field(min_length=1)
-    disks: tuple[Disk, ...] = ()
+    bearings: tuple[Bearing, ...] = Field(min_length=1, max_length=MAX_BEARINGS)
+    disks: tuple[Disk, ...] = Field(default=(), max_length=MAX_DISKS)
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()
