@@ -12,7 +12,7 @@ import numpy as np
 
 from flexshaft.analyses import imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import Campbell, campbell
-from flexshaft.analyses.response import actuator_response, worst_case_orbits
+from flexshaft.analyses.response import actuator_response, bearing_reactions, worst_case_orbits
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
@@ -49,6 +49,8 @@ class RunResults:
     design_studies: object = None  # flexshaft.studies.chapter3.DesignStudies
     notes: list = field(default_factory=list)
     verdict: object = None  # flexshaft.studies.verdict.Verdict against the design's [requirements]
+    bearing_reactions: dict = field(default_factory=dict)  # name -> analyses.response.BearingReaction
+    imbalance_spinup: object = None  # HarmonicResponse (ndof, ncases, n_speeds) over `speeds`
 
 
 def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
@@ -89,6 +91,7 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
     step("static loads and strength")
     q_static = static_response(model, external_static_load(model) + torque_load(model))
     q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    reactions = bearing_reactions(model, q_static, q_at_speed)
     strength_static = strength_total = None
     notes = []
     buckling = None
@@ -156,6 +159,8 @@ def run_analysis(design, n_speeds: int = 400, n_campbell: int = 60, progress: Ca
         thermal=thermal,
         design_studies=design_studies_result,
         notes=notes,
+        bearing_reactions=reactions,
+        imbalance_spinup=q,
     )
     step("requirements verdict")
     from flexshaft.studies.verdict import evaluate
