@@ -9,7 +9,6 @@ under CI (environment variable ``CI`` set), where it fails instead.
 from __future__ import annotations
 
 import datetime as dt
-import html
 import os
 import re
 import shutil

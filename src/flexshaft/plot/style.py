@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
 __all__ = ["MM_PER_M", "RPM_PER_HZ", "WHIRL_LINESTYLE", "WHIRL_MARKER", "STYLE", "styled", "new_figure",
-           "vector", "magnitude", "mark_operating", "nice_colorbar", "clipped_limits", "log_scale"]
+           "vector", "magnitude", "mark_operating", "nice_colorbar", "log_scale"]
 
 MM_PER_M = 1e3
 RPM_PER_HZ = 60.0
@@ -196,19 +196,3 @@ def nice_colorbar(fig, mappable, ax, label: str, *, log: bool = False, **kwargs)
         tol = 1e-9 * abs(hi - lo)
         bar.set_ticks(sorted({float(t) for t in ticks if lo - tol <= t <= hi + tol}))
     return bar
-
-
-def clipped_limits(values: ArrayLike, *, low_cap: float | None = None, high_cap: float | None = None,
-                   pad: float = 0.06) -> tuple[float, float]:
-    """Axis limits around the finite ``values``, clipped to ``[low_cap, high_cap]`` and padded."""
-    v = np.asarray(values, dtype=float)
-    v = v[np.isfinite(v)]
-    if v.size == 0:
-        return 0.0, 1.0
-    lo, hi = float(v.min()), float(v.max())
-    if low_cap is not None:
-        lo = max(lo, low_cap)
-    if high_cap is not None:
-        hi = min(hi, high_cap)
-    span = hi - lo if hi > lo else max(abs(hi), 1.0)
-    return lo - pad * span, hi + pad * span
