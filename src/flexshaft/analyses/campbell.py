@@ -220,6 +220,8 @@ class Campbell(EigenvalueCurves, ResultMixin):
     component: np.ndarray | None = None
     internal_damping: str = "rotating"
 
+    plots = {"campbell": "plot_campbell"}
+
     def __repr__(self) -> str:
         ns, nm = self.eigenvalues.shape
         top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
@@ -231,6 +233,20 @@ class Campbell(EigenvalueCurves, ResultMixin):
         from flexshaft.analyses.datasets import curves_dataset
 
         return curves_dataset(self, "Campbell diagram")
+
+    def plot_campbell(self, ax=None, *, operating_rpm: float | None = None, max_critical_rpm: float | None = None,
+                      damping: bool = True, **kwargs):
+        """Campbell diagram in rpm and Hz: whirl as line style and marker, the log decrement as
+        colour (``damping=False``: one colour per mode), the critical speeds (up to
+        ``max_critical_rpm``) labelled. Keywords (``main_rotor_hz``, ``harmonics``) go to
+        :func:`flexshaft.plot.campbell.campbell_figure`."""
+        from flexshaft.plot.campbell import campbell_figure
+
+        crit = [c.speed_rpm for c in self.critical_speeds if max_critical_rpm is None or c.speed_rpm <= max_critical_rpm]
+        harmonics = sorted({c.harmonic for c in self.critical_speeds} | {1.0})
+        kwargs.setdefault("harmonics", harmonics)
+        return campbell_figure(rad_s_to_rpm(self.speeds), self.frequencies, self.whirl, crit, operating_rpm,
+                               log_decrement=self.log_decrements if damping else None, kind=self.kind, ax=ax, **kwargs)
 
 
 @single_blas_thread

@@ -163,6 +163,29 @@ class StrengthResult(ResultMixin):
     hoop_resultant: float = 0.0
     temperature_change: float = 0.0
 
+    plots = {"along_shaft": "plot_along_shaft", "load_shares": "plot_load_shares"}
+
+    @property
+    def critical_description(self) -> str:
+        """E.g. "ply 3 (+55°), φ = 120°, sigma2 dominates"."""
+        return f"ply {self.ply + 1} ({self.ply_angle_deg:+.0f}°), φ = {self.phase_deg:.0f}°, {self.dominant_stress} dominates"
+
+    def plot_along_shaft(self, ax=None, **kwargs):
+        """Smallest safety factor along the shaft [m], the critical point annotated (keywords to
+        :func:`flexshaft.plot.driveline.safety_factor_figure`)."""
+        from flexshaft.plot.driveline import safety_factor_figure
+
+        return safety_factor_figure(self.x_along, self.along_shaft, self.x, self.critical_description, ax=ax, **kwargs)
+
+    def plot_load_shares(self, ax=None, **kwargs):
+        """Each load's share of the failure index at the critical point (bars)."""
+        from flexshaft.plot.driveline import load_shares_figure
+
+        if not self.load_shares:
+            raise ValueError("this result has no load shares")
+        kwargs.setdefault("title", f"Shares of the failure index at x = {self.x:.2f} m, {self.critical_description}")
+        return load_shares_figure(self.load_shares, ax=ax, **kwargs)
+
     def __repr__(self) -> str:
         return (f"StrengthResult(Tsai-Wu safety factor {self.safety_factor:.3g} at x = {self.x:.3g} m, ply {self.ply + 1} "
                 f"({self.ply_angle_deg:+.0f}°), {self.dominant_stress} dominates)")

@@ -282,6 +282,29 @@ class SpinupCurves(ResultMixin):
     actuator_force: np.ndarray
     actuator_names: tuple[str, ...]
 
+    plots = {"response": "plot_response", "actuators": "plot_actuators"}
+
+    def plot_response(self, ax=None, **kwargs):
+        """Largest shaft orbit and the actuator orbits against speed [rpm] (log amplitude);
+        keywords (``operating_rpm``, ``gap`` [m]) go to
+        :func:`flexshaft.plot.driveline.imbalance_response_figure`."""
+        from flexshaft.plot.driveline import imbalance_response_figure
+
+        curves = {"max over the shaft": self.shaft_peak}
+        curves.update({f"at {name} (relative)": d for name, d in zip(self.actuator_names, self.actuator_displacement)})
+        kwargs.setdefault("log_y", True)
+        kwargs.setdefault("title", "Spin-up response (orbit major semi-axis)")
+        return imbalance_response_figure(rad_s_to_rpm(self.speeds), curves, ax=ax, **kwargs)
+
+    def plot_actuators(self, ax=None, **kwargs):
+        """Actuator relative orbit [mm] and force [N] against speed [rpm] (two panels)."""
+        from flexshaft.plot.driveline import actuator_figure
+
+        if not self.actuator_names:
+            raise ValueError("this driveline has no actuators")
+        return actuator_figure(rad_s_to_rpm(self.speeds), dict(zip(self.actuator_names, self.actuator_displacement)),
+                               dict(zip(self.actuator_names, self.actuator_force)), ax=ax, **kwargs)
+
     @property
     def shaft_peak(self) -> np.ndarray:
         """Largest shaft orbit over the nodes at each speed [m]."""
@@ -389,6 +412,34 @@ class SpinupMap(ResultMixin):
     actuator_displacement_peak: np.ndarray
     actuator_force_peak: np.ndarray
     actuator_names: tuple[str, ...]
+
+    plots = {"shaft_peak": "plot_shaft_peak", "actuator_displacement": "plot_actuator_displacement",
+             "actuator_force": "plot_actuator_force"}
+
+    def _plot_map(self, values, label: str, scale: float, title: str, ax, kwargs):
+        from flexshaft.plot.studies import gain_map_figure
+
+        if "best" not in kwargs:
+            kp, kd, _ = self.best()
+            kwargs["best"] = (kp, kd)
+        kwargs.setdefault("title", title)
+        return gain_map_figure(self.kp, self.kd, values, label, scale=scale, ax=ax, **kwargs)
+
+    def plot_shaft_peak(self, ax=None, **kwargs):
+        """Peak spin-up shaft orbit [mm] over (K_p, K_d), the smallest marked ★ (keywords to
+        :func:`flexshaft.plot.studies.gain_map_figure`, e.g. ``other={"design": (kp, kd)}``)."""
+        return self._plot_map(self.shaft_peak, "max spin-up shaft orbit [mm]", 1e3,
+                              "Maximum spin-up shaft deflection vs control gains", ax, kwargs)
+
+    def plot_actuator_displacement(self, ax=None, **kwargs):
+        """Peak relative orbit at the actuators [mm] (largest over them) over (K_p, K_d)."""
+        return self._plot_map(self.actuator_displacement_peak.max(axis=-1), "max actuator displacement [mm]", 1e3,
+                              "Maximum shaft displacement at the actuators vs control gains", ax, kwargs)
+
+    def plot_actuator_force(self, ax=None, **kwargs):
+        """Peak actuator force [N] (largest over the actuators) over (K_p, K_d)."""
+        return self._plot_map(self.actuator_force_peak.max(axis=-1), "max actuator force [N]", 1.0,
+                              "Maximum actuator force vs control gains", ax, kwargs)
 
     def best(self, max_actuator_displacement: float | None = None, max_actuator_force: float | None = None):
         """Gains ``(kp, kd, shaft_peak)`` of the smallest peak deflection within the limits."""

@@ -106,6 +106,8 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
     divergence: np.ndarray | None = None
     onset_kind: str | None = None
 
+    plots = {"log_decrement": "plot_log_decrement", "real_part": "plot_real_parts"}
+
     def __repr__(self) -> str:
         top = rad_s_to_rpm(self.speeds[-1])
         onset = "stable" if self.onset_speed is None else f"onset {rad_s_to_rpm(self.onset_speed):.0f} rpm"
@@ -139,6 +141,34 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
     def divergent(self) -> bool:
         """True when a real unstable root exists at some analysed speed."""
         return self.divergence is not None and bool(np.any(self.divergence > 0))
+
+    def onset_description(self) -> str | None:
+        """E.g. "mode 6, forward whirl" or "divergence" (None when stable)."""
+        if self.onset_speed is None:
+            return None
+        if self.onset_kind == "divergence" or self.unstable_mode is None:
+            return "divergence (real root)"
+        k = self.at_speed(self.onset_speed)
+        k = min(k + 1, self.speeds.size - 1) if self.speeds[k] < self.onset_speed else k
+        return f"mode {self.unstable_mode + 1}, {self.whirl[k, self.unstable_mode]} whirl"
+
+    def plot_log_decrement(self, ax=None, *, label: str = "this design", **kwargs):
+        """Log decrement of every tracked mode against speed [rpm], the onset marked. Keywords
+        (``operating_rpm``, ``required``) go to :func:`flexshaft.plot.stability.log_decrement_figure`."""
+        from flexshaft.plot.stability import log_decrement_figure
+
+        onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
+        text = self.onset_description()
+        return log_decrement_figure(rad_s_to_rpm(self.speeds), {label: self.log_decrements}, {label: onset}, ax=ax,
+                                    onset_text={label: text} if text else None, whirl={label: self.whirl}, **kwargs)
+
+    def plot_real_parts(self, ax=None, *, label: str = "this design", **kwargs):
+        """Re(s) of every tracked mode against speed [rpm] (thesis figures 4.2-4.4), onset marked."""
+        from flexshaft.plot.stability import real_parts_figure
+
+        onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
+        return real_parts_figure(rad_s_to_rpm(self.speeds), {label: self.real_parts}, onset_rpm={label: onset}, ax=ax,
+                                 **kwargs)
 
     def at_speed(self, speed: float) -> int:
         """Index of the analysed speed nearest ``speed`` [rad/s]."""
