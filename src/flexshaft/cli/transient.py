@@ -61,7 +61,7 @@ def runup(
 
     write_netcdf(result.to_dataset(), folder / "runup.nc")
     figure = runup_envelope_figure({f"{duration:g} s": result}, steady, operating_rpm=rad_s_to_rpm(model.speed))
-    save_figure(figure, folder, "runup")
+    save_figure(figure, folder, "runup", svg=False)
     peak, _, at_speed = result.peak()
     at_station = float(result.shaft_x[int(np.argmax(result.shaft_orbit.max(axis=1)))])
     data = {
@@ -133,7 +133,7 @@ def montecarlo(
     result = run_montecarlo(loaded.design, samples, seed=seed, grade_mm_s=grade, gap=gap, force_limit=capacity,
                             jobs=jobs, client=dask, run_dir=folder / "sweep", progress=not as_json)
     result.dataset.to_netcdf(folder / "samples.nc")
-    save_figure(result.plot(), folder, "montecarlo")
+    save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset
     summary = {name: {"mean": float(np.nanmean(ds[name].values)), "p99": float(np.nanpercentile(ds[name].values, 99))}
                for name in ("spinup_peak", "actuator_orbit_max", "actuator_force_max") if name in ds}

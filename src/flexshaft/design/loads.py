@@ -31,6 +31,7 @@ from flexshaft.design.quantities import (
     Moment,
     Power,
     Station,
+    quantity,
 )
 from flexshaft.units import rpm_to_rad_s
 
@@ -40,6 +41,8 @@ __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 #: drivelines run at 3,000-8,000 rev/min and a 0.1 m shaft at 10^6 rev/min would have a surface
 #: speed of 5 km/s; far larger values only overflow the gyroscopic matrix Ω G to inf/nan.
 MAX_SPEED_RPM = 1.0e6
+MainRotorSpeed = quantity("rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)",
+                          gt=0.0, le=5000.0)
 SpeedRpm = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=MAX_SPEED_RPM, description=(
     "shaft speed from 0 to 1e6 rev/min (a 0.1 m shaft at 1e6 rev/min has a surface speed of 5 km/s)"),
     json_schema_extra={"unit": "rev/min"})]
@@ -60,11 +63,32 @@ class Operating(FrozenModel):
         Shaft speed at the operating point [rad/s]; give this or ``speed_rpm``.
     power : float
         Power transmitted to the tail rotor [W]; the shaft carries the torque P/Ω (0 at rest).
+    main_rotor_speed_rpm : float or None
+        Main-rotor speed at the operating point [rev/min] (it is geared to the shaft, so it
+        scales with the shaft speed); with ``main_rotor_blades`` it draws the main rotor's
+        1/rev and N/rev excitation lines on the Campbell diagram, against which the tailboom
+        modes are placed.
+    main_rotor_blades : int or None
+        Number of main-rotor blades N.
     """
 
     speed_rpm: SpeedRpm | None = None
     speed: SpeedRadS | None = None
     power: Power
+    main_rotor_speed_rpm: MainRotorSpeed | None = None
+    main_rotor_blades: Annotated[int, Field(strict=True, ge=1, le=12, description=(
+        "number of main-rotor blades N, 1 to 12"))] | None = None
+
+    def main_rotor_frequencies(self) -> dict[str, float]:
+        """The main rotor's excitation frequencies at the operating point [Hz]: 1/rev and N/rev
+        (empty when the main rotor is not given)."""
+        if self.main_rotor_speed_rpm is None:
+            return {}
+        once = self.main_rotor_speed_rpm / 60.0
+        out = {"1/rev": once}
+        if self.main_rotor_blades and self.main_rotor_blades > 1:
+            out[f"{self.main_rotor_blades}/rev"] = self.main_rotor_blades * once
+        return out
 
     @model_validator(mode="after")
     def _check(self) -> Operating:

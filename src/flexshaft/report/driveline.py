@@ -208,20 +208,25 @@ def plan_run_report(res, folder: str | Path, design_text: str | None = None,
 
     camp = res.campbell
     crit = [c for c in camp.critical_speeds if c.speed <= model.speed * 1.25]
+    main_rotor = model.design.operating.main_rotor_frequencies() if model.design is not None else {}
     bearing_x = [b.x_shaft for b in model.bearings]
     f_spin = op_rpm / 60.0
     sections.append(Section(
         "Natural frequencies and Campbell diagram",
-        paragraphs=["Damped eigenvalues of the linear model (gyroscopic terms, bearing damping and actuator K_d, and "
-                    "the hysteretic loss of every member at each mode's own frequency). Modes are tracked across speed "
+        paragraphs=[f"Damped eigenvalues of the linear model (gyroscopic terms, bearing damping and actuator K_d, and "
+                    "the hysteretic loss of every member at each mode's own frequency; the shaft's internal loss "
+                    f"{_damping_text(model.internal_damping)}). Modes are tracked across speed "
                     "by the modal assurance criterion; whirl direction comes from the shaft orbits (forward: same sense "
                     "as the spin). The colour of each point is its logarithmic decrement (red: unstable)."],
         tables=[_modes_table(res.modes_at_rest, "Natural frequencies at rest"),
                 _modes_table(res.modes_at_speed, f"Natural frequencies at {op_rpm:.0f} rpm"),
                 Table("Critical speeds (1× excitation) up to 125 % of the operating speed",
                       ["speed [rpm]", "tracked mode", "whirl"], [[c.speed_rpm, c.mode + 1, c.whirl] for c in crit])],
-        figures=[figs.result("campbell", "Campbell diagram: whirl as line style and marker, log decrement as colour",
-                             camp, "campbell", operating_rpm=op_rpm, max_critical_rpm=1.25 * op_rpm),
+        figures=[figs.result("campbell", "Campbell diagram: whirl as line style and marker, log decrement as colour"
+                             + ("; the main rotor's 1/rev and N/rev lines (geared to the shaft) for the boom modes"
+                                if main_rotor else ""),
+                             camp, "campbell", operating_rpm=op_rpm, max_critical_rpm=1.25 * op_rpm,
+                             main_rotor_hz=main_rotor or None),
                  figs.result("mode_shapes", f"Mode shapes at {op_rpm:.0f} rpm of the modes nearest the spin frequency "
                                             f"{f_spin:.1f} Hz (v vertical, w lateral; ▲ bearings)",
                              res.mode_shapes, "shapes", bearings_x=bearing_x)],
@@ -374,6 +379,15 @@ def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date |
         save_study_data(res.design_studies, folder / "studies")
     render_figures(plan.jobs, folder, svg=svg, processes=processes)
     return write_report(folder, plan.title, plan.sections, design_name=plan.design_name, generated=generated)
+
+
+def _damping_text(internal_damping: str) -> str:
+    """How the shaft's internal loss acts, in words (the report says which model it used)."""
+    if internal_damping == "rotating":
+        return ("acts in the rotating frame (internal_damping = \"rotating\"): it does not damp synchronous forward "
+                "whirl and drives forward whirl above its natural frequency unstable")
+    return ("acts as a fixed-frame complex stiffness (internal_damping = \"thesis\", thesis eqs. 2.39-2.40): it "
+            "damps every whirl and never destabilises")
 
 
 def _rpm_or_none(speed):
