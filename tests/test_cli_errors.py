@@ -121,7 +121,7 @@ def test_user_errors_exit_2_and_debug_adds_the_traceback(tmp_path: Path) -> None
     listed = runner.invoke(app, ["check", str(bad), "--json"])  # machine-readable problems, still exit 2
     assert listed.exit_code == 2
     assert json.loads(listed.stdout) == {"ok": False, "source": str(bad), "problems": [
-        {"path": "shaft.wall_thickness", "message": "must be > 0 (got -0.003)"}]}
+        {"path": "shaft.wall_thickness", "message": "must be > 0 (got -0.003); allowed: [1e-05, 1] m (see docs/limits.md)"}]}
 
 
 # ------------------------------------------------------------------------------------------------

@@ -175,6 +175,7 @@ class StrengthResult(ResultMixin):
         :func:`flexshaft.plot.driveline.safety_factor_figure`)."""
         from flexshaft.plot.driveline import safety_factor_figure
 
+        kwargs.setdefault("critical_r", self.safety_factor)
         return safety_factor_figure(self.x_along, self.along_shaft, self.x, self.critical_description, ax=ax, **kwargs)
 
     def plot_load_shares(self, ax=None, **kwargs):

@@ -119,6 +119,7 @@ def safety_factor_figure(
     critical_x: float | None = None,
     label: str | None = None,
     *,
+    critical_r: float | None = None,
     log_y: bool | None = None,
     title: str = "Shaft strength",
     ax=None,
@@ -137,6 +138,9 @@ def safety_factor_figure(
         (unloaded) are not drawn.
     critical_x : float, optional
         Station of the critical point [m]; default the minimum of ``safety_factor``.
+    critical_r : float, optional
+        Safety factor at the critical point [-] (the analysis's own minimum, which can lie between
+        the drawn stations); default interpolated from ``safety_factor``.
     label : str, optional
         What fails there, e.g. "ply 3 (+55°), φ = 120°, σ2 dominates".
     log_y : bool, optional
@@ -158,7 +162,8 @@ def safety_factor_figure(
     factor = np.where(finite, factor, np.nan)
     if critical_x is None:
         critical_x = float(xs[np.nanargmin(factor)])
-    critical_r = float(np.interp(critical_x, xs[finite], factor[finite]))
+    if critical_r is None:
+        critical_r = float(np.interp(critical_x, xs[finite], factor[finite]))
     if log_y is None:
         log_y = np.nanmax(factor) / np.nanmin(factor) > 50.0
 
