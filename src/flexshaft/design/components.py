@@ -12,10 +12,8 @@ import math
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import Field, StrictBool, field_validator, model_validator
-from pydantic_core import PydanticCustomError
 
 from flexshaft.design.fields import (
-    LAYUP_ERROR_TYPE,
     ZERO3,
     BearingDirection,
     Coefficients,
@@ -29,10 +27,12 @@ from flexshaft.design.fields import (
     Problems,
     SemiAxes,
     Vector3,
+    check_unique,
     format_number,
     format_value,
 )
 from flexshaft.design.layup import parse_layup
+from flexshaft.design.segments import ShaftSegment, Tube, check_layup
 
 __all__ = [
     "ActiveBearing",
@@ -50,7 +50,11 @@ __all__ = [
 
 
 class Shaft(FrozenModel):
-    """One-piece drive shaft: geometry [m], material reference, layup [deg], end conditions."""
+    """Drive shaft: geometry [m], material reference, layup [deg], end conditions.
+
+    One tube, or the zones of ``segments`` (:class:`~flexshaft.design.segments.ShaftSegment`)
+    whose missing values default to this table's; :attr:`tubes` gives every zone resolved.
+    """
 
     x_start: Finite
     x_end: Finite
@@ -61,18 +65,12 @@ class Shaft(FrozenModel):
     fixed_start: tuple[DofName, ...] = ()
     fixed_end: tuple[DofName, ...] = ()
     shear_deformation: StrictBool = False
+    segments: tuple[ShaftSegment, ...] = ()
 
     @field_validator("layup", mode="after")
     @classmethod
     def _parse_layup(cls, layup: str | None) -> str | None:
-        if layup is not None:
-            try:
-                parse_layup(layup)
-            except ValueError as error:  # "<reason>; allowed: <forms>"
-                reason, _, allowed = str(error).partition("; allowed: ")
-                context = {"reason": reason, "allowed": allowed}
-                raise PydanticCustomError(LAYUP_ERROR_TYPE, "{reason}", context) from None
-        return layup
+        return check_layup(layup)
 
     @model_validator(mode="after")
     def _check(self) -> Shaft:
@@ -92,8 +90,56 @@ class Shaft(FrozenModel):
             dofs: tuple[str, ...] = getattr(self, field)
             if len(set(dofs)) != len(dofs):
                 problems.add((field,), f"lists a degree of freedom twice (got {format_value(list(dofs))})")
+        if self.segments:
+            self._check_segments(problems)
         problems.raise_if_any()
         return self
+
+    def _check_segments(self, problems: Problems) -> None:
+        """The segments tile [x_start, x_end] in order, with unique names and thin walls."""
+        check_unique(problems, ("segments",), [segment.name for segment in self.segments])
+        tol = 1e-9 * max(1.0, abs(self.x_end - self.x_start))
+        expected, what = self.x_start, "shaft.x_start"
+        for index, segment in enumerate(self.segments):
+            if abs(segment.x_start - expected) > tol:
+                problems.add(
+                    ("segments", index, "x_start"),
+                    f"must equal {what} = {format_number(expected)} m: the segments tile the shaft in order, "
+                    f"without gap or overlap (got {format_value(segment.x_start)})",
+                )
+            expected, what = segment.x_end, f"the x_end of segment {format_value(segment.name)}"
+        if self.segments and abs(self.segments[-1].x_end - self.x_end) > tol:
+            problems.add(
+                ("segments", len(self.segments) - 1, "x_end"),
+                f"must equal shaft.x_end = {format_number(self.x_end)} m: the last segment ends the shaft "
+                f"(got {format_value(self.segments[-1].x_end)})",
+            )
+        for index, tube in enumerate(self.tubes):
+            if not tube.wall_thickness < tube.outer_diameter / 2.0:
+                problems.add(
+                    ("segments", index, "wall_thickness"),
+                    f"must be less than outer_diameter/2 = {format_number(tube.outer_diameter / 2.0)} m "
+                    f"(got {format_value(tube.wall_thickness)})",
+                )
+
+    @property
+    def tubes(self) -> tuple[Tube, ...]:
+        """Every zone of the shaft with the ``[shaft]`` defaults filled in (one without segments).
+
+        A segment that names its own material takes its own layup (none for a metal); one that
+        does not inherits both from ``[shaft]``.
+        """
+        if not self.segments:
+            return (Tube(name="shaft", x_start=self.x_start, x_end=self.x_end, outer_diameter=self.outer_diameter,
+                         wall_thickness=self.wall_thickness, material=self.material, layup=self.layup),)
+        return tuple(
+            Tube(name=s.name, x_start=s.x_start, x_end=s.x_end,
+                 outer_diameter=self.outer_diameter if s.outer_diameter is None else s.outer_diameter,
+                 wall_thickness=self.wall_thickness if s.wall_thickness is None else s.wall_thickness,
+                 material=self.material if s.material is None else s.material,
+                 layup=s.layup if (s.material is not None or s.layup is not None) else self.layup)
+            for s in self.segments
+        )
 
     @property
     def ply_angles_deg(self) -> tuple[float, ...]:
@@ -168,6 +214,7 @@ class _BearingBase(FrozenModel):
     x: Finite
     x_boom: Finite | None = None
     offset: NonNegative | None = None
+    mass: NonNegative = 0.0  # installed mass of the part [kg], for the mass breakdown only (not in the dynamics)
 
     @property
     def boom_x(self) -> float:
@@ -176,9 +223,18 @@ class _BearingBase(FrozenModel):
 
 
 class ContactBearing(_BearingBase):
-    """Hanger (contact) bearing: springs and dashpots between shaft point x and boom point."""
+    """Hanger (contact) bearing: springs and dashpots between shaft point x and boom point.
+
+    ``role`` says what the part is in the driveline: ``"hanger"`` (a bearing that supports the
+    shaft, the default), ``"damper"`` (a shaft damper: spring and viscous damper to the boom) or
+    ``"gearbox"`` (the input or output bearing of a gearbox that ends the driveline: not a
+    driveline part). It changes nothing in the dynamics, only the part count and mass breakdown.
+    ``mass`` [kg] is the installed mass of the part (bearing, housing, bracket), for the mass
+    breakdown only.
+    """
 
     kind: Literal["contact"]
+    role: Literal["hanger", "damper", "gearbox"] = "hanger"
     stiffness: dict[BearingDirection, NonNegative]
     damping: dict[BearingDirection, NonNegative] | None = None
 
@@ -251,6 +307,9 @@ class ActiveBearing(_BearingBase):
     Limits checked by the requirements verdict: ``gap``, the radial clearance of the auxiliary
     (backup) bearing [m], and ``force_capacity``, the largest force the actuator can produce
     [N] (when omitted, the saturation force of the magnet if its geometry is given).
+
+    ``mass`` [kg]: installed mass of the actuator (stator, rotor sleeve, sensors, and its share
+    of the amplifier and controller), for the mass breakdown only (not in the dynamics).
     """
 
     kind: Literal["active"]

@@ -155,13 +155,22 @@ class Lamina(FrozenModel):
 
 
 class Isotropic(FrozenModel):
-    """Isotropic material: moduli [Pa], density [kg/m³], structural loss factor [-]."""
+    """Isotropic material: moduli [Pa], density [kg/m³], structural loss factor [-].
+
+    Strengths [Pa], optional, for the metal strength check of a shaft segment
+    (:mod:`flexshaft.analyses.metal_strength`): ``yield_strength`` S_y, ``ultimate_strength``
+    S_ut and ``fatigue_strength`` S_e, the fully reversed (rotating-bending) fatigue strength of
+    the part at its design life, with the surface, size and reliability factors already applied.
+    """
 
     kind: Literal["isotropic"]
     E: Positive
     G: Positive
     density: Positive
     loss_factor: LossFactor = 0.0
+    yield_strength: Positive | None = None
+    ultimate_strength: Positive | None = None
+    fatigue_strength: Positive | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Isotropic:
@@ -172,6 +181,15 @@ class Isotropic(FrozenModel):
                 f"gives Poisson ratio E/(2G) - 1 = {format_number(self.poisson_ratio)}, outside (-1, 0.5] "
                 f"(got {format_value(self.G)}; allowed: G >= E/3 = {format_number(self.E / 3.0)} Pa)",
             )
+        if self.ultimate_strength is not None:
+            for name in ("yield_strength", "fatigue_strength"):
+                value = getattr(self, name)
+                if value is not None and not value <= self.ultimate_strength:
+                    problems.add(
+                        (name,),
+                        f"must not exceed ultimate_strength = {format_number(self.ultimate_strength)} Pa "
+                        f"(got {format_value(value)})",
+                    )
         problems.raise_if_any()
         return self
 
