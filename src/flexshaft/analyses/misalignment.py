@@ -127,7 +127,8 @@ def coupling_misalignment(model: Model, static: np.ndarray, dynamic: np.ndarray 
     flexible = np.isfinite(stiffness)
 
     def load(column: int, values) -> np.ndarray:
-        return np.where(flexible[:, column], stiffness[:, column] * np.asarray(values, float), np.nan)
+        finite = np.where(flexible[:, column], stiffness[:, column], 0.0)
+        return np.where(flexible[:, column], finite * np.asarray(values, float), np.nan)
 
     return CouplingMisalignment(
         names=tuple(c.name for c in model.couplings),

@@ -70,6 +70,7 @@ app.command("stability")(stability)
 app.command("thermal")(thermal)
 app.command("run")(run)
 app.add_typer(study_app, name="study")
+app.command("compare")(__import__("flexshaft.cli.compare", fromlist=["compare"]).compare)
 
 
 def main() -> None:  # pragma: no cover - console entry
