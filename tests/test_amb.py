@@ -422,7 +422,17 @@ def thesis():
     return build_model(baseline_design())
 
 
-def test_thesis_pd_bearing_gives_todays_numbers(thesis):
+@pytest.fixture(scope="module")
+def thesis_0f8aaa9():
+    """The PD baseline of commit 0f8aaa9 (tests/data): the golden values below are its numbers."""
+    from pathlib import Path
+
+    from flexshaft.design import load_design
+
+    return build_model(load_design(Path(__file__).parent / "data" / "baseline_0f8aaa9.toml"))
+
+
+def test_thesis_pd_bearing_gives_todays_numbers(thesis_0f8aaa9):
     """Golden values of the PD baseline computed before the magnetic bearing existed (commit
     0f8aaa9: ``modes(model, model.speed, 12)``, imbalance response over
     ``linspace(20, Ω, 40)``, spin-up map over K_p ∈ {1e6, 1e7}, K_d ∈ {0, 500} on
@@ -435,15 +445,15 @@ def test_thesis_pd_bearing_gives_todays_numbers(thesis):
         -0.891430820089565 + 427.6756125370866j, -0.007100337520322 + 436.39954169292463j,
         -4.285623658290947 + 478.750023039094j, -3.69572061734864 + 489.29841288256165j,
         -0.96799745063063 + 600.7307003975651j, -1.45560708371368 + 635.769607976934j])
-    np.testing.assert_allclose(modes(thesis, thesis.speed, 12).eigenvalues, before, rtol=1e-9)
-    speeds = np.linspace(20.0, thesis.speed, 40)
-    q = imbalance_response(thesis, speeds, imbalance_loads(thesis))[:, 0]
+    np.testing.assert_allclose(modes(thesis_0f8aaa9, thesis_0f8aaa9.speed, 12).eigenvalues, before, rtol=1e-9)
+    speeds = np.linspace(20.0, thesis_0f8aaa9.speed, 40)
+    q = imbalance_response(thesis_0f8aaa9, speeds, imbalance_loads(thesis_0f8aaa9))[:, 0]
     golden = {"amb_1": [2.415931611699403e-07, 1.745244351784388e-06, 4.354224282992654e-06],
               "amb_2": [2.403098089217176e-07, 1.630807810112603e-06, 5.773387531853466e-06]}
-    for a in thesis.actuators:
+    for a in thesis_0f8aaa9.actuators:
         d = a.lateral_rows @ q
         np.testing.assert_allclose(orbit_amplitude(d[0], d[1])[[10, 25, 39]], golden[a.name], rtol=1e-9)
-    smap = spinup_map(thesis, [1e6, 1e7], [0.0, 500.0], np.linspace(20.0, thesis.speed, 30))
+    smap = spinup_map(thesis_0f8aaa9, [1e6, 1e7], [0.0, 500.0], np.linspace(20.0, thesis_0f8aaa9.speed, 30))
     np.testing.assert_allclose(smap.shaft_peak, [[0.002769924875516, 0.000642217407668],
                                                  [0.001647542513463, 0.00133807422295]], rtol=1e-9)
     np.testing.assert_allclose(smap.actuator_force_peak[:, :, 0], [[1043.517125236724, 169.04227694503578],

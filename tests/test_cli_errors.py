@@ -27,13 +27,13 @@ from typer.testing import CliRunner
 
 from flexshaft.cli import app
 from flexshaft.cli.common import MAX_DESIGN_BYTES, is_guarded, plain
-from flexshaft.design import baseline_text
+from flexshaft.design import baseline_design, baseline_text
 
 runner = CliRunner()
 
 SMALL = (baseline_text().replace("shaft_elements = 36", "shaft_elements = 8", 1)
          .replace("boom_elements = 24", "boom_elements = 4", 1))
-BASELINE_NAME = "Thesis baseline: one-piece (55/-55/0/0)s FMC shaft on a flexible tailboom, 4800 rpm"
+BASELINE_NAME = baseline_design().name
 
 
 def _named(name_toml: str, bearing: str | None = None) -> str:

@@ -35,7 +35,7 @@ _ALUMINIUM = baseline_text()[baseline_text().index("[materials.al6061_t6]"):base
 RUN_DESIGN = (SMALL.replace(_ALUMINIUM, "", 1)  # no aluminium: no thesis-shaft comparison (seconds, not a minute)
               .replace('name = "amb_1"', 'name = "[bold]amb_1[/]"', 1)  # markup in names reaches the verdict table
               .replace('name = "amb_2"', 'name = "[red]amb_2"', 1))
-OTHER_DESIGN = SMALL.replace("name = \"Thesis baseline", "name = \"Another design", 1)
+OTHER_DESIGN = SMALL.replace("name = \"Thesis Table 3.1", "name = \"Another design", 1)
 
 
 @pytest.fixture(scope="module")
@@ -53,7 +53,7 @@ def first_run(tmp_path_factory: pytest.TempPathFactory) -> dict:
 def test_run_writes_results_timings_and_marker_separately(first_run: dict) -> None:
     out = first_run["out"]
     assert first_run["stderr"] == ""  # no progress display when stderr is not a terminal
-    assert json.loads(first_run["stdout"])["design"].startswith("Thesis baseline")
+    assert json.loads(first_run["stdout"])["design"].startswith("Thesis Table 3.1")
     results = first_run["results"].decode()
     for word in ("timing", "elapsed", "generated", "_s\"", "seconds"):
         assert word not in results, word
@@ -148,7 +148,7 @@ def test_force_writes_into_a_foreign_folder_and_another_designs_folder(tmp_path:
     assert again.exit_code == 0, again.output
     refused = runner.invoke(app, [*study, str(other)])
     assert refused.exit_code == 2
-    assert "another design ('Thesis baseline: one-piece" in refused.stderr and "not 'Another design" in refused.stderr
+    assert "another design ('Thesis Table 3.1 configuration: one-piece" in refused.stderr and "not 'Another design" in refused.stderr
 
 
 @pytest.fixture()

@@ -35,13 +35,10 @@ THESIS_DAMPING = {"analysis.internal_damping": "thesis"}
 
 
 def chapter3_studies():
-    """The thesis chapter-3 study functions (ply_angle_study, two_angle_study, ...).
+    """The thesis chapter-3 study functions (ply_angle_study, two_angle_study, ...)."""
+    from flexshaft.studies import sweeps
 
-    Imported here only: they are moving from ``flexshaft.sweep.studies`` to ``flexshaft.studies``.
-    """
-    from flexshaft.sweep import studies
-
-    return studies
+    return sweeps
 
 
 # ------------------------------------------------------------------------------------------------

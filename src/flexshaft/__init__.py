@@ -1,13 +1,14 @@
 """flexshaft: design and analysis of high-flexibility rotorcraft tail-rotor drivelines.
 
 A flexible-matrix-composite drive shaft on a flexible tailboom, held by hanger bearings and
-actively controlled magnetic bearings (Ocalan 2002). Typical use::
+actively controlled magnetic bearings (Ocalan 2002). Typical use:
 
-    import flexshaft as fs
-    design = fs.baseline_design()            # or fs.load_design("my.toml")
-    model = fs.build_model(design)
-    m = fs.modes(model, speed=design.operating.speed_rad_s)
-    m.frequencies                            # [Hz]
+>>> import flexshaft as fs
+>>> design = fs.baseline_design()            # or fs.load_design("my.toml")
+>>> model = fs.build_model(design)
+>>> m = fs.modes(model, speed=design.operating.speed_rad_s)
+>>> m                                        # m.frequencies [Hz], m.whirl, m.shapes, ...
+Modes(10 modes at 4800 rpm: [...] Hz, internal damping 'rotating')
 
 The top level stays light: submodules load on first use.
 """

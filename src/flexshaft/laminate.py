@@ -12,7 +12,7 @@ Conventions
 * Shear strains are engineering strains (gamma = 2 epsilon_12); the transformation is the
   standard one of Jones (1999, sec. 2.6) and Daniel & Ishai (2006, sec. 4.4).
 * Moduli may be complex, E* = E'(1 + i eta): A, B, D and the equivalent moduli are then complex.
-  Ply stresses for strength use the storage (real) part, as DESIGN.md section 2 prescribes.
+  Ply stresses for strength use the storage (real) part (docs/model.md, forced response and strength).
 
 References
 ----------

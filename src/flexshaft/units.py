@@ -1,9 +1,17 @@
 """Unit conversions used at the edges (design file, report, CLI): the one module for them.
 
-SI floats inside, units at the edges (STYLE.md principle 5): rev/min, hertz of rotation,
+SI floats inside, units at the edges (docs/architecture.md): rev/min, hertz of rotation,
 degrees Celsius, millimetres are converted here and nowhere else. The functions work on
 floats and numpy arrays alike. Layup strings (angles in degrees) are parsed by
 :func:`flexshaft.design.layup.parse_layup`, the one layup parser of the package.
+
+>>> from flexshaft.units import celsius_to_kelvin, rad_s_to_rpm, rpm_to_hz, rpm_to_rad_s
+>>> round(rpm_to_rad_s(4800.0), 4)          # the baseline's operating speed [rad/s]
+502.6548
+>>> rad_s_to_rpm(rpm_to_rad_s(4800.0)), rpm_to_hz(4800.0)
+(4800.0, 80.0)
+>>> celsius_to_kelvin(25.0)
+298.15
 """
 
 from __future__ import annotations

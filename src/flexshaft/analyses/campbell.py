@@ -22,7 +22,7 @@ from scipy.optimize import linear_sum_assignment
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.results import ResultMixin
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine
+from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
@@ -182,8 +182,7 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
         _, idx = linear_sum_assignment(cost)
     s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
     if refine_loss:
-        for m in range(n_modes):
-            s_k[m], Y_k[:, m] = refine(red, speed, s_k[m], Y_k[:, m])
+        s_k, Y_k = refine_set(red, speed, s_k, Y_k)
     return s_k, Y_k
 
 

@@ -56,7 +56,7 @@ from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
 
 __all__ = ["DIVERGENCE_TOLERANCE", "SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "spectrum", "candidates",
-           "divergent_roots", "refine", "newton", "damped_modes"]
+           "divergent_roots", "refine", "refine_set", "newton", "damped_modes"]
 
 #: Free-DOF count above which the modal basis is computed by sparse shift-invert.
 SPARSE_BASIS_ABOVE = 900
@@ -398,6 +398,44 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
     return s, y, False
 
 
+#: Two refined eigenvalues closer than this (relative) are the same root.
+_SAME_ROOT = 1e-8
+
+
+def refine_set(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`refine` every candidate, keeping the roots distinct.
+
+    Loss-free candidates can be degenerate (a forward/backward pair of an axisymmetric rotor
+    without gyroscopic coupling has one frequency): any combination of the pair is then a
+    candidate vector, and Newton's method may take both to the same loss-consistent root. A
+    candidate that lands on a root already found is restarted from the circular
+    combinations ``y_j ± i y_k`` (and ``y_j ± y_k``) with its degenerate partner, whose loss
+    separates the forward and the backward root.
+    """
+    n = s.size
+    out_s = np.empty(n, complex)
+    out_y = np.empty((red.size, n), complex)
+    for k in range(n):
+        out_s[k], out_y[:, k] = refine(red, speed, s[k], Y[:, k])
+        if not _duplicate(out_s[:k], out_s[k]):
+            continue
+        partners = [j for j in range(n) if j != k and abs(s[j] - s[k]) <= 1e-3 * abs(s[k])]  # (near-)degenerate
+        for j in partners:
+            for c in (1j, -1j, 1.0, -1.0):
+                trial_s, trial_y = refine(red, speed, s[k], (Y[:, k] + c * Y[:, j]) / np.sqrt(2))
+                if not _duplicate(out_s[:k], trial_s):
+                    out_s[k], out_y[:, k] = trial_s, trial_y
+                    break
+            else:
+                continue
+            break
+    return out_s, out_y
+
+
+def _duplicate(found: np.ndarray, s: complex) -> bool:
+    return bool(found.size) and bool(np.any(np.abs(found - s) <= _SAME_ROOT * abs(s)))
+
+
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
@@ -408,10 +446,7 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     """
     lam, Y, Y_div, div = spectrum(red, speed)
     n = min(n_modes, lam.size)
-    out_s = np.empty(n, complex)
-    out_y = np.empty((red.size, n), complex)
-    for k in range(n):
-        out_s[k], out_y[:, k] = refine(red, speed, lam[k], Y[:, k])
+    out_s, out_y = refine_set(red, speed, lam[:n], Y[:, :n])
     if div.size:
         out_s = np.concatenate([out_s, div.astype(complex)])
         out_y = np.hstack([out_y, Y_div.astype(complex)])

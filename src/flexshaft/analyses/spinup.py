@@ -1,4 +1,4 @@
-"""Fast spin-up response over many actuator gains (thesis §3, study 6; DESIGN.md §3.6).
+"""Fast spin-up response over many actuator gains (thesis §3, study 6; docs/studies.md).
 
 The spin-up study solves the synchronous imbalance response
 

@@ -1,6 +1,6 @@
 r"""Run-up and run-down through the criticals: the imbalance response in the time domain.
 
-Equations (DESIGN.md §2, thesis eqs. 2.38-2.40 with a time-varying speed). The shaft spins at
+Equations (docs/model.md, thesis eqs. 2.38-2.40 with a time-varying speed). The shaft spins at
 Ω(t) ≥ 0 with phase φ(t) = ∫₀ᵗ Ω dτ. An unbalance U = e·m [kg m] at angle ψ on the shaft sits at
 ``e (cos(φ+ψ), sin(φ+ψ))`` in the (y, z) plane; the force it puts on the shaft is minus its
 mass times its acceleration, in complex form (r = v + i w)

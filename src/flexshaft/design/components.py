@@ -54,6 +54,36 @@ class Shaft(FrozenModel):
 
     One tube, or the zones of ``segments`` (:class:`~flexshaft.design.segments.ShaftSegment`)
     whose missing values default to this table's; :attr:`tubes` gives every zone resolved.
+
+    Attributes
+    ----------
+    x_start : float
+        Station of the forward end [m] on the driveline axis (x = 0 at the boom root).
+    x_end : float
+        Station of the aft end [m]; greater than ``x_start``.
+    outer_diameter : float
+        Outer diameter D_o [m].
+    wall_thickness : float
+        Wall thickness t [m]; less than D_o/2 (a tube of inner diameter D_o − 2t).
+    material : str
+        Name of a ``[materials.<name>]`` table: a lamina (``layup`` required) or an isotropic
+        material (``layup`` omitted).
+    layup : str or None
+        Ply angles [deg] from the shaft axis, inner ply first, in stacking notation such as
+        ``"(55/-55/0/0)s"`` (groups, repeats, ``s`` for symmetric, ``±45``).
+    fixed_start : tuple of str
+        Degrees of freedom held at the forward end node: any of ``u``, ``v``, ``w``, ``theta``,
+        ``beta``, ``gamma`` (e.g. ``["theta"]``: a drive coupling that holds the twist only).
+    fixed_end : tuple of str
+        Degrees of freedom held at the aft end node.
+    shear_deformation : bool
+        Timoshenko shear deformation in the shaft elements; false gives Euler-Bernoulli
+        elements, as in the thesis.
+    segments : tuple of table
+        ``[[shaft.segments]]``: zones of a segmented shaft, each with ``name``, ``x_start`` and
+        ``x_end`` [m] (tiling the shaft in order) and optionally its own ``outer_diameter``,
+        ``wall_thickness``, ``material`` and ``layup`` (defaults: this table's); omitted: one
+        tube (docs/segmented-driveline.md).
     """
 
     x_start: Finite
@@ -158,7 +188,17 @@ class Shaft(FrozenModel):
 
 
 class EndMass(FrozenModel):
-    """Lumped tail mass [kg] at ``offset`` (x, y, z) [m] from the boom tip, own inertia [kg m²]."""
+    """Lumped tail mass [kg] at ``offset`` (x, y, z) [m] from the boom tip, own inertia [kg m²].
+
+    Attributes
+    ----------
+    mass : float
+        Mass of the tail (tail gearbox, tail rotor, fin) [kg], rigidly attached to the boom tip.
+    offset : tuple of 3 floats
+        Position (x, y, z) of its centre of mass from the boom's tip node [m].
+    inertia : tuple of 3 floats
+        Its own moments of inertia (I_xx, I_yy, I_zz) about its centre of mass [kg m²].
+    """
 
     mass: NonNegative
     offset: Vector3
@@ -169,6 +209,24 @@ class Tailboom(FrozenModel):
     """Tapered thin-walled elliptical cantilever from the fuselage (x = 0) to ``length`` [m].
 
     Semi-axes are [vertical, lateral] [m], tapering linearly from root to tip.
+
+    Attributes
+    ----------
+    length : float
+        Length of the boom from its clamped root at the fuselage (x = 0) to its tip [m].
+    root_semi_axes : tuple of 2 floats
+        Semi-axes (vertical, lateral) of the elliptical section at the root [m].
+    tip_semi_axes : tuple of 2 floats
+        Semi-axes (vertical, lateral) at the tip [m]; they vary linearly along the boom.
+    wall_thickness : float
+        Equivalent skin thickness [m]; less than the smallest semi-axis.
+    material : str
+        Name of an isotropic ``[materials.<name>]`` table.
+    shaft_clearance : float
+        Gap between the boom's top and the shaft axis [m]: a bearing's offset h defaults to the
+        vertical semi-axis at its station plus this clearance.
+    end_mass : table or None
+        The lumped tail mass at the tip (``[tailboom.end_mass]``); none when omitted.
     """
 
     length: Positive
@@ -210,11 +268,31 @@ class Tailboom(FrozenModel):
 
 
 class _BearingBase(FrozenModel):
+    """Keys shared by both kinds of bearing.
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the bearing (results and messages use it).
+    x : float
+        Shaft station of the bearing [m]; on the shaft.
+    x_boom : float or None
+        Boom station the bearing is mounted on [m]; defaults to ``x``. Only with a tailboom.
+    offset : float or None
+        Height h of the shaft axis above the boom's neutral axis at the mount [m]; defaults to
+        the boom's vertical semi-axis there plus ``[tailboom] shaft_clearance``. Only with a
+        tailboom (without one the bearing joins the shaft to the ground).
+    mass : float
+        Installed mass of the part [kg] (bearing, housing and bracket; magnet, rotor sleeve and
+        sensors), for the mass breakdown of ``flexshaft compare`` only (not in the dynamics); 0
+        when omitted.
+    """
+
     name: Name
     x: Finite
     x_boom: Finite | None = None
     offset: NonNegative | None = None
-    mass: NonNegative = 0.0  # installed mass of the part [kg], for the mass breakdown only (not in the dynamics)
+    mass: NonNegative = 0.0
 
     @property
     def boom_x(self) -> float:
@@ -225,12 +303,20 @@ class _BearingBase(FrozenModel):
 class ContactBearing(_BearingBase):
     """Hanger (contact) bearing: springs and dashpots between shaft point x and boom point.
 
-    ``role`` says what the part is in the driveline: ``"hanger"`` (a bearing that supports the
-    shaft, the default), ``"damper"`` (a shaft damper: spring and viscous damper to the boom) or
-    ``"gearbox"`` (the input or output bearing of a gearbox that ends the driveline: not a
-    driveline part). It changes nothing in the dynamics, only the part count and mass breakdown.
-    ``mass`` [kg] is the installed mass of the part (bearing, housing, bracket), for the mass
-    breakdown only.
+    Attributes
+    ----------
+    kind : {"contact"}
+        Selects this kind of bearing.
+    stiffness : dict of str to float
+        Spring stiffness per relative-displacement direction ``u``, ``v``, ``w``, ``beta``,
+        ``gamma`` [N/m; N m/rad for beta and gamma]; an omitted direction is free, e.g.
+        ``{ v = 1.0e8, w = 1.0e8 }``.
+    damping : dict of str to float or None
+        Viscous damping per direction [N s/m; N m s/rad for beta and gamma]; omitted: none.
+    role : {"hanger", "damper", "gearbox"}
+        What the part is in the driveline: a bearing that supports the shaft (default), a shaft
+        damper (spring and viscous damper to the boom), or the bearing of a gearbox that ends the
+        driveline (not a driveline part). Only the part count and mass breakdown use it.
     """
 
     kind: Literal["contact"]
@@ -248,7 +334,18 @@ class ContactBearing(_BearingBase):
 
 
 class Controller(FrozenModel):
-    """Transfer function C(s) = numerator(s)/denominator(s), coefficients highest power first."""
+    """Transfer function C(s) = numerator(s)/denominator(s), coefficients highest power first.
+
+    Attributes
+    ----------
+    numerator : tuple of float
+        Coefficients of the numerator polynomial in s (SI, s in rad/s), highest power first;
+        C(s) gives the actuator current per metre of displacement (A/m; N/m with the default
+        k_i = 1 N/A). At most 21 coefficients.
+    denominator : tuple of float
+        Coefficients of the denominator, highest power first; the leading one non-zero and the
+        degree at least the numerator's (C(s) proper).
+    """
 
     numerator: Coefficients
     denominator: Coefficients
@@ -308,8 +405,51 @@ class ActiveBearing(_BearingBase):
     (backup) bearing [m], and ``force_capacity``, the largest force the actuator can produce
     [N] (when omitted, the saturation force of the magnet if its geometry is given).
 
-    ``mass`` [kg]: installed mass of the actuator (stator, rotor sleeve, sensors, and its share
-    of the amplifier and controller), for the mass breakdown only (not in the dynamics).
+    Attributes
+    ----------
+    kind : {"active"}
+        Selects this kind of bearing.
+    kp : float or None
+        Proportional gain K_p [A/m] (N/m with the default k_i = 1); required unless
+        ``controller`` is given.
+    kd : float or None
+        Derivative gain K_d [A s/m] (N s/m with k_i = 1); 0 when omitted without a controller.
+    integral_gain : float or None
+        Integral gain K_I [A/(m s)]; omitted: 0.
+    derivative_cutoff : float or None
+        Corner f_d of the derivative filter [Hz]; omitted: an ideal derivative.
+    controller : table or None
+        Any proper transfer function C(s) (``[bearings.controller]``); replaces ``kp``, ``kd``,
+        ``integral_gain`` and ``derivative_cutoff``.
+    gap : float or None
+        Radial clearance of the auxiliary (backup) bearing [m], the limit of the actuator orbit
+        in the requirements verdict; omitted: not checked.
+    force_capacity : float or None
+        Largest force the actuator can produce [N]; omitted: the magnet's saturation force when
+        its geometry is given, else not checked.
+    ks : float or None
+        Negative (open-loop) stiffness k_s of the magnet [N/m]; omitted: 0, or computed from
+        the magnet geometry.
+    ki : float or None
+        Current gain k_i of the magnet [N/A]; omitted: 1, or computed from the magnet geometry.
+    amplifier_bandwidth : float or None
+        Bandwidth f_a of the first-order current amplifier [Hz]; omitted: an ideal amplifier.
+    sensor_offset : float
+        Position of the displacement sensor along the shaft from the magnet [m]; 0 is
+        collocated.
+    air_gap : float or None
+        Nominal magnetic air gap g_0 [m] (magnet geometry).
+    bias_current : float or None
+        Bias current i_0 [A] (magnet geometry).
+    coil_turns : float or None
+        Turns N of each coil [-] (magnet geometry).
+    pole_area : float or None
+        Pole face area A_a [m²] (magnet geometry, saturation force).
+    pole_angle : float
+        Angle α between a pole and the force axis [deg]; 22.5 is an 8-pole stator.
+    saturation_flux_density : float or None
+        Saturation flux density B_sat of the magnet iron [T]; with ``pole_area`` it gives the
+        saturation force B_sat² A_a cos α/μ0.
     """
 
     kind: Literal["active"]
@@ -429,7 +569,21 @@ Bearing = Annotated[Union[ContactBearing, ActiveBearing], Field(discriminator="k
 
 
 class Disk(FrozenModel):
-    """Rigid disk on the shaft at ``x`` [m]: mass [kg], diametral and polar inertia [kg m²]."""
+    """Rigid disk on the shaft at ``x`` [m]: mass [kg], diametral and polar inertia [kg m²].
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the disk.
+    x : float
+        Shaft station of the disk [m]; on the shaft (a node is placed there).
+    mass : float
+        Mass [kg].
+    diametral_inertia : float
+        Moment of inertia about a diameter through its centre, I_d [kg m²].
+    polar_inertia : float
+        Moment of inertia about the shaft axis, I_p [kg m²]; enters the gyroscopic matrix.
+    """
 
     name: Name
     x: Finite

@@ -59,11 +59,11 @@ Name = Annotated[str, Field(strict=True, min_length=1)]
 ElementCount = Annotated[int, Field(strict=True, ge=1, le=2000)]
 Coefficients = Annotated[tuple[Finite, ...], Field(min_length=1, max_length=21)]
 
-#: Degree-of-freedom names of a shaft node, in the order of DESIGN.md §1.
+#: Degree-of-freedom names of a shaft node, in the order of docs/model.md (coordinates and DOFs).
 DofName = Literal["u", "v", "w", "theta", "beta", "gamma"]
-#: Relative-displacement directions of a bearing (DESIGN.md §2.2.3); no twist (theta).
+#: Relative-displacement directions of a bearing (docs/model.md, elements); no twist (theta).
 BearingDirection = Literal["u", "v", "w", "beta", "gamma"]
-#: Where the imbalance force of each bay is applied (DESIGN.md §2.4).
+#: Where the imbalance force of each bay is applied (docs/model.md, forced response).
 ImbalancePlacement = Literal["mid_bay", "distributed", "worst"]
 
 #: pydantic error type carrying several (sub-path, message) problems from one model validator.

@@ -207,7 +207,7 @@ def baseline_text() -> str:
 
 
 def baseline_design() -> Design:
-    """The packaged thesis-baseline design (thesis Table 3.1, K_p 1e7, K_d 0; DESIGN.md §3 and §5)."""
+    """The packaged thesis-baseline design (thesis Table 3.1, K_p 1e7, K_d 0; docs/thesis-reproduction.md)."""
     return embedded_design("baseline")
 
 

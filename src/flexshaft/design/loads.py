@@ -36,7 +36,17 @@ SpeedRadS = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=
 
 
 class Operating(FrozenModel):
-    """Operating point: exactly one of ``speed_rpm`` [rev/min] or ``speed`` [rad/s]; power [W]."""
+    """Operating point: exactly one of ``speed_rpm`` [rev/min] or ``speed`` [rad/s]; power [W].
+
+    Attributes
+    ----------
+    speed_rpm : float or None
+        Shaft speed at the operating point [rev/min]; give this or ``speed``.
+    speed : float or None
+        Shaft speed at the operating point [rad/s]; give this or ``speed_rpm``.
+    power : float
+        Power transmitted to the tail rotor [W]; the shaft carries the torque P/Ω (0 at rest).
+    """
 
     speed_rpm: SpeedRpm | None = None
     speed: SpeedRadS | None = None
@@ -76,7 +86,21 @@ class Operating(FrozenModel):
 
 
 class PointLoad(FrozenModel):
-    """Static point force [N] and moment [N m] (x, y, z) on the end mass, boom or shaft at x [m]."""
+    """Static point force [N] and moment [N m] (x, y, z) on the end mass, boom or shaft at x [m].
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the load.
+    on : {"end_mass", "boom", "shaft"}
+        Where it acts: at the end mass's centre of mass, or on the boom or the shaft at ``x``.
+    x : float or None
+        Station [m] on the boom or shaft; omitted for ``on = "end_mass"``.
+    force : tuple of 3 floats
+        Force components (x, y, z) [N].
+    moment : tuple of 3 floats
+        Moment components about x, y, z [N m].
+    """
 
     name: Name
     on: Literal["end_mass", "boom", "shaft"]
@@ -96,7 +120,21 @@ class PointLoad(FrozenModel):
 
 
 class LineLoad(FrozenModel):
-    """Uniform static line load [N/m] (x, y, z) on the boom or shaft between x_start and x_end [m]."""
+    """Uniform static line load [N/m] (x, y, z) on the boom or shaft between x_start and x_end [m].
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the load.
+    on : {"boom", "shaft"}
+        The member it acts on.
+    x_start : float
+        Station where the load begins [m].
+    x_end : float
+        Station where it ends [m]; greater than ``x_start``.
+    force_per_length : tuple of 3 floats
+        Force per unit length (x, y, z) [N/m].
+    """
 
     name: Name
     on: Literal["boom", "shaft"]
@@ -117,7 +155,24 @@ class LineLoad(FrozenModel):
 
 
 class Loads(FrozenModel):
-    """Imbalance (eccentricity [m]), manoeuvre load factor [g] and static external loads."""
+    """Imbalance (eccentricity [m]), manoeuvre load factor [g] and static external loads.
+
+    Attributes
+    ----------
+    eccentricity : float
+        Mass eccentricity e_c of the shaft [m]: the rotating imbalance force e_c m_s Ω² (m_s
+        the shaft mass) is shared equally among the bays between bearings.
+    imbalance_placement : {"mid_bay", "distributed", "worst"}
+        Where each bay's imbalance acts: a point force at mid-bay, spread along the bay, or the
+        worst in/anti-phase pattern of the mid-bay forces at each speed.
+    load_factor : tuple of 3 floats
+        Load factor (x, y, z) [g]: every mass m carries the static inertial force m·n·g, e.g.
+        ``[0.0, -3.5, 0.0]`` loads the driveline 3.5 g downwards (gravity and manoeuvre).
+    point : tuple of tables
+        Static point loads (``[[loads.point]]``).
+    line : tuple of tables
+        Static uniform line loads (``[[loads.line]]``).
+    """
 
     eccentricity: NonNegative = 0.0
     imbalance_placement: ImbalancePlacement = "mid_bay"

@@ -75,6 +75,51 @@ class Lamina(FrozenModel):
       assumed, Schapery estimate); within ±1e-3 1/K.
     * ``stress_free_temperature_c`` [°C], where the cured laminate carries no residual stress;
       default 100 °C (cure temperature, assumed).
+
+    Attributes
+    ----------
+    kind : {"lamina"}
+        Selects the orthotropic ply.
+    density : float
+        Ply density [kg/m³].
+    E_L : float
+        Storage modulus along the fibres [Pa].
+    E_T : float
+        Storage modulus across the fibres [Pa].
+    G_LT : float
+        In-plane shear storage modulus [Pa].
+    nu_LT : float
+        Major Poisson ratio [-]; less than sqrt(E_L/E_T).
+    loss_E_L : float
+        Loss factor η of E_L [-]: the complex modulus is E_L (1 + iη).
+    loss_E_T : float
+        Loss factor η of E_T [-].
+    loss_G_LT : float
+        Loss factor η of G_LT [-].
+    X_t : float
+        Tensile strength along the fibres [Pa].
+    X_c : float
+        Compressive strength along the fibres [Pa] (a positive magnitude).
+    Y_t : float
+        Tensile strength across the fibres [Pa].
+    Y_c : float
+        Compressive strength across the fibres [Pa] (a positive magnitude).
+    S : float
+        In-plane shear strength [Pa].
+    F12 : float or None
+        Tsai-Wu interaction coefficient [1/Pa²]; omitted: −½·sqrt(F11·F22).
+    G_13 : float or None
+        Transverse shear modulus in the fibre-thickness plane [Pa]; omitted: ``G_LT``.
+    G_23 : float or None
+        Transverse shear modulus across the fibres [Pa]; omitted: E_T/3 (ν_23 = 0.5).
+    shear_correction : float
+        Transverse shear correction factor k of first-order shear deformation theory [-].
+    alpha_L : float
+        Thermal expansion coefficient along the fibres [1/K].
+    alpha_T : float
+        Thermal expansion coefficient across the fibres [1/K].
+    stress_free_temperature_c : float
+        Temperature at which the cured laminate carries no residual stress [°C].
     """
 
     kind: Literal["lamina"]
@@ -157,10 +202,23 @@ class Lamina(FrozenModel):
 class Isotropic(FrozenModel):
     """Isotropic material: moduli [Pa], density [kg/m³], structural loss factor [-].
 
-    Strengths [Pa], optional, for the metal strength check of a shaft segment
-    (:mod:`flexshaft.analyses.metal_strength`): ``yield_strength`` S_y, ``ultimate_strength``
-    S_ut and ``fatigue_strength`` S_e, the fully reversed (rotating-bending) fatigue strength of
-    the part at its design life, with the surface, size and reliability factors already applied.
+    Attributes
+    ----------
+    kind : {"isotropic"}
+        Selects the isotropic material.
+    E : float
+        Young's modulus [Pa].
+    G : float
+        Shear modulus [Pa]; at least E/3 (Poisson ratio E/(2G) − 1 at most 0.5).
+    density : float
+        Density [kg/m³].
+    loss_factor : float
+        Structural (hysteretic) loss factor η [-]: both moduli are complex, E(1 + iη).
+    yield_strength, ultimate_strength, fatigue_strength : float, optional
+        Strengths [Pa] for the metal strength check of a shaft segment
+        (:mod:`flexshaft.analyses.metal_strength`): S_y, S_ut and S_e, the fully reversed
+        (rotating-bending) fatigue strength of the part at its design life with the surface, size
+        and reliability factors already applied; yield and fatigue strengths at most the ultimate.
     """
 
     kind: Literal["isotropic"]

@@ -49,9 +49,12 @@ class Requirements(FrozenModel):
         Minimum torsional-buckling safety factor T_cr/T [-].
     min_onset_margin : float
         Whirl instability must not start below (1 + margin) × the operating speed [-].
-    min_log_decrement, min_damping_ratio : float or None
-        Minimum log decrement δ [-] or damping ratio ζ [-] of every mode at the operating speed;
-        at most one; neither means δ ≥ 0.1.
+    min_log_decrement : float or None
+        Minimum log decrement δ [-] of every whirl mode at the operating speed; give at most
+        one of this and ``min_damping_ratio``; neither means δ ≥ 0.1.
+    min_damping_ratio : float or None
+        Minimum damping ratio ζ [-], checked as δ = 2πζ/√(1 − ζ²); instead of
+        ``min_log_decrement``.
     separation : {"api684", "off"}
         Separation margin of the lateral critical speeds from the operating speed by the
         amplification-factor rule of API 684 / API 617, or no separation requirement.

@@ -96,7 +96,16 @@ __all__ = [
 
 
 class Mesh(FrozenModel):
-    """Approximate element counts; nodes are always placed at bearings and disks."""
+    """Approximate element counts; nodes are always placed at bearings and disks.
+
+    Attributes
+    ----------
+    shaft_elements : int
+        Approximate number of shaft elements, shared among the segments between nodes in
+        proportion to their length (at least one each).
+    boom_elements : int
+        Approximate number of tailboom elements, shared the same way.
+    """
 
     shaft_elements: ElementCount = 36
     boom_elements: ElementCount = 24
@@ -113,6 +122,11 @@ class Analysis(FrozenModel):
     rotating frame, where the material is cycled at the whirl frequency relative to the spin
     (exact for an axisymmetric shaft: synchronous forward whirl is not damped by it);
     ``"thesis"`` applies it as a fixed-frame complex stiffness (thesis eqs. 2.39-2.40).
+
+    Attributes
+    ----------
+    internal_damping : {"rotating", "thesis"}
+        How the shaft's hysteretic loss acts, the same in every analysis of the model.
     """
 
     internal_damping: InternalDamping = "rotating"
@@ -123,7 +137,39 @@ class Analysis(FrozenModel):
 
 
 class Design(FrozenModel):
-    """A complete driveline design, as read from a TOML design file."""
+    """A complete driveline design, as read from a TOML design file.
+
+    Attributes
+    ----------
+    name : str
+        Title of the design (reports and output folders show it).
+    materials : dict of str to table
+        Materials by name (``[materials.<name>]``), referenced by the shaft and the tailboom.
+    shaft : table
+        The drive shaft (``[shaft]``).
+    tailboom : table or None
+        The flexible tailboom the bearings are mounted on (``[tailboom]``); omitted: the
+        bearings join the shaft to the ground.
+    bearings : tuple of tables
+        Contact (hanger) and active magnetic bearings (``[[bearings]]``), at least one.
+    disks : tuple of tables
+        Rigid disks on the shaft (``[[disks]]``).
+    couplings : tuple of tables
+        Flexible couplings that cut the shaft into pieces (``[[couplings]]``;
+        docs/segmented-driveline.md).
+    operating : table
+        The operating point (``[operating]``).
+    loads : table
+        Imbalance and static loads (``[loads]``).
+    mesh : table
+        Element counts (``[mesh]``).
+    analysis : table
+        Model-wide physics choices (``[analysis]``).
+    thermal : table
+        Thermal environment and matrix temperature law (``[thermal]``).
+    requirements : table
+        Limits of the requirements verdict (``[requirements]``).
+    """
 
     name: str = Field(strict=True)
     materials: dict[str, Material]

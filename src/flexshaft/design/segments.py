@@ -64,7 +64,27 @@ def check_layup(layup: str | None) -> str | None:
 
 
 class ShaftSegment(FrozenModel):
-    """One zone of a segmented shaft, ``[[shaft.segments]]``: stations [m] and optional tube overrides."""
+    """One zone of a segmented shaft, ``[[shaft.segments]]``: stations [m] and optional tube overrides.
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the segment (results and messages use it).
+    x_start : float
+        Forward end [m]: ``shaft.x_start`` for the first segment, the previous segment's
+        ``x_end`` for the others.
+    x_end : float
+        Aft end [m]; greater than ``x_start``; the last segment ends at ``shaft.x_end``.
+    outer_diameter : float or None
+        Outer diameter D_o [m]; omitted: the ``[shaft]`` value.
+    wall_thickness : float or None
+        Wall thickness t [m], less than D_o/2; omitted: the ``[shaft]`` value.
+    material : str or None
+        Name of a ``[materials.<name>]`` table; omitted: the ``[shaft]`` material (and layup).
+    layup : str or None
+        Ply angles [deg], inner ply first, as in ``[shaft]``; required for a lamina material of
+        its own, omitted for an isotropic one; omitted with no material: the ``[shaft]`` layup.
+    """
 
     name: Name
     x_start: Finite
@@ -128,6 +148,30 @@ class Coupling(FrozenModel):
     slider). The hub (flanges, disc pack, bolts) is ``mass`` [kg] with ``diametral_inertia``
     and ``polar_inertia`` [kg m²], shared equally by the two flanges. ``allowable_angle_deg``
     [deg] is the continuous misalignment the coupling is rated for (checked by the verdict).
+
+    Attributes
+    ----------
+    name : str
+        Unique name of the coupling (results and messages use it).
+    x : float
+        Station of the joint [m], strictly inside the shaft; no bearing or disk at it.
+    angular_stiffness : float or "rigid"
+        Bending stiffness between the flanges about each bending axis [N m/rad].
+    axial_stiffness : float or "rigid"
+        Axial stiffness between the flanges [N/m].
+    torsional_stiffness : float or "rigid"
+        Torsional stiffness between the flanges [N m/rad]; greater than 0.
+    lateral_stiffness : float or "rigid"
+        Radial (lateral) stiffness between the flanges [N/m]; default rigid.
+    mass : float
+        Hub mass [kg] (flanges, disc pack, bolts), half on each flange; also its mass in the
+        mass breakdown.
+    diametral_inertia : float
+        Hub diametral moment of inertia [kg m²].
+    polar_inertia : float
+        Hub polar moment of inertia [kg m²].
+    allowable_angle_deg : float or None
+        Allowable continuous misalignment angle [deg], in (0, 90); omitted: not checked.
     """
 
     name: Name

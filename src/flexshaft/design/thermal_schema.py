@@ -2,7 +2,7 @@
 
 Temperatures are in degrees Celsius in the file (the edge) and the zenith angle in degrees;
 :func:`flexshaft.thermal.options.thermal_options` converts the table to the SI objects the
-thermal analyses use. The defaults are the shipped baseline's values (DESIGN.md §5: thesis
+thermal analyses use. The defaults are the shipped baseline's values (docs/thermal.md: thesis
 Table 2.1, the assumed and calibrated values marked in ``baseline.toml``). The shaft's loss
 model is not a thermal choice: it is the design's ``[analysis] internal_damping``.
 """
@@ -61,8 +61,10 @@ class Thermal(FrozenModel):
         Hover cross-flow correlation of the tailboom (thesis eq. 2.57 is Hilpert's).
     shaft_convection : {"becker", "kendoush"}
         Rotating-shaft convection correlation (thesis eq. 2.63 cites Kendoush).
-    fibre_conductivity, transverse_conductivity : float
-        Ply thermal conductivity along and across the fibres [W/(m K)].
+    fibre_conductivity : float
+        Ply thermal conductivity along the fibres [W/(m K)].
+    transverse_conductivity : float
+        Ply thermal conductivity across the fibres [W/(m K)].
     matrix_reference_temperature_c : float
         Temperature of the lamina data [°C].
     matrix_modulus_decay : float

@@ -3,7 +3,7 @@
 One 12-DOF layout serves every element of the package; the tailboom element uses the same
 functions with the axial columns dropped.
 
-Local DOF order of a two-node element (DESIGN.md §1)::
+Local DOF order of a two-node element (docs/model.md, coordinates and DOFs)::
 
     [u1, v1, w1, theta1, beta1, gamma1, u2, v2, w2, theta2, beta2, gamma2]
 

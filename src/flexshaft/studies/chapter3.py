@@ -1,6 +1,6 @@
 """The design studies of thesis chapter 3 in one call, with their report section.
 
-:func:`design_studies` runs every study of DESIGN.md §3 (1-6 and the stability margin map of
+:func:`design_studies` runs every study of docs/studies.md (1-6 and the stability margin map of
 8) on one design at a chosen resolution and returns a :class:`DesignStudies` of labelled
 :class:`xarray.Dataset` results (units in attributes) and the headline numbers;
 :func:`flexshaft.report.studies_section.design_studies_section` draws the figures and tables

@@ -1,4 +1,4 @@
-"""The design studies of thesis chapter 3 (DESIGN.md §3) on the sweep engine.
+"""The design studies of thesis chapter 3 (docs/studies.md) on the sweep engine.
 
 Each function builds a :class:`~flexshaft.sweep.Study` and runs it with
 :func:`~flexshaft.sweep.run_sweep` (so ``run_dir``, ``jobs``, ``client`` and ``progress`` work
@@ -63,6 +63,8 @@ def strength_outputs(point) -> dict:
     model = point.model
     q_static = static_response(model, external_static_load(model) + torque_load(model))
     static = shaft_safety_factor(model, q_static).safety_factor
+    if model.design.loads.eccentricity == 0.0 or model.speed == 0.0:  # no imbalance: the total is the static
+        return {"safety_factor_static": static, "safety_factor": static}
     q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
     total = min(shaft_safety_factor(model, q_static, q_imb[:, c]).safety_factor for c in range(q_imb.shape[1]))
     return {"safety_factor_static": static, "safety_factor": total}
@@ -115,8 +117,8 @@ def ply_angle_study(angles=np.arange(5.0, 90.0, 5.0), design=None, **run):
     """Safety factor vs the ply angle α of (α/−α/−α/α), no imbalance (thesis study 1), with
     the critical ply's σ1, σ2, τ12 (Table 3.3), its angle, station and dominant stress.
 
-    The optimum on the assumed baseline is a cusp at exactly 45° (docs/studies.md): use a
-    step that hits 45° (or 1° or finer) before concluding on it.
+    The optimum on the assumed baseline is a narrow peak near 45° (docs/studies.md): use a
+    step of 1° or finer there before concluding on it.
     """
     study = Study(
         "ply angle (a/-a/-a/a)",
@@ -155,8 +157,6 @@ def _wall_outputs(point) -> dict:
     factors when the shaft is laminated (NaN otherwise, e.g. a plain isotropic shaft)."""
     from flexshaft.analyses import modes
     from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_speeds
-    from flexshaft.design import with_overrides
-    from flexshaft.sweep.study import Point
 
     nan = float("nan")
     out = {"spinup_peak_deflection": nan, "safety_factor_static": nan, "safety_factor": nan,
@@ -168,10 +168,8 @@ def _wall_outputs(point) -> dict:
         out["spinup_peak_deflection"] = float(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak.max())
     if model.shaft.laminate is not None:
         out.update(strength_outputs(point))
-        no_imbalance = with_overrides(point.design, {"loads.eccentricity": 0.0})
-        out["safety_factor_no_imbalance"] = strength_outputs(
-            Point(point.index, point.values, point.axes, no_imbalance)
-        )["safety_factor"]
+        # without imbalance the loads are the static ones: the same model, the static result
+        out["safety_factor_no_imbalance"] = out["safety_factor_static"]
     return out
 
 
@@ -226,20 +224,17 @@ def proportional_gain_study(kps=np.logspace(5, 8, 13), design=None, **run):
 
 
 def _buckling_outputs(point) -> dict:
-    from flexshaft.buckling import buckling_safety_factor, torsional_buckling_torque
+    from flexshaft.analyses.shaft_buckling import shaft_buckling
 
-    model = point.model
-    d = point.design
-    result = torsional_buckling_torque(model.shaft.laminate, (model.shaft.outer_diameter - d.shaft.wall_thickness) / 2, d.shaft.length)
-    torque = model.power / model.speed
+    result = shaft_buckling(point.model, compare_classical=False)
     return {
-        "critical_torque": float(min(result.torque_positive, result.torque_negative)),
-        "buckling_safety_factor": float(buckling_safety_factor(result, torque)),
+        "critical_torque": float(min(result.result.torque_positive, result.result.torque_negative)),
+        "buckling_safety_factor": result.safety_factor,
     }
 
 
 def buckling_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **run):
-    """Torsional buckling safety factor vs wall thickness (study 5). ~5 s per point."""
+    """Torsional buckling safety factor vs wall thickness (study 5; shear-deformable shell)."""
     study = Study(
         "torsional buckling vs wall thickness",
         [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
