@@ -166,23 +166,26 @@ class Comparison(ResultMixin):
         out.append(self._from_checks("separation", "smallest separation margin (fraction of Ω_op)", "1", ("separation",)))
         out.append(self._from_checks("whirl_onset", "whirl onset speed", "rad/s", ("whirl_onset",)))
         out.append(self._from_checks("log_decrement", "smallest log decrement at Ω_op", "1", ("whirl_damping",)))
-        out.append(self._from_checks("spinup_peak", "spin-up peak shaft orbit", "m", ("spinup_deflection",)))
-        out.append(self._from_checks("coupling_angle", "largest coupling misalignment", "rad", ("coupling_angle",)))
+        out.append(self._from_checks("spinup_peak", "spin-up peak shaft orbit", "m", ("spinup_deflection",), largest=True))
+        out.append(self._from_checks("coupling_angle", "largest coupling misalignment", "rad", ("coupling_angle",),
+                                     largest=True))
         out.append(Metric("static_deflection", "largest static shaft deflection", "m",
                           tuple(_static_deflection(run) for run in self.runs)))
-        out.append(self._from_checks("shaft_temperature", "largest shaft temperature", "K", ("temperature",)))
+        out.append(self._from_checks("shaft_temperature", "largest shaft temperature", "K", ("temperature",),
+                                     largest=True))
         for condition in ("hover", "parked"):
             out.append(Metric(f"boom_temperature_{condition}", f"tailboom temperature, {condition}", "K",
                               tuple(t.get(condition) for t in self.boom_temperatures)))
         return out
 
-    def _from_checks(self, key: str, title: str, unit: str, checks: tuple[str, ...]) -> Metric:
+    def _from_checks(self, key: str, title: str, unit: str, checks: tuple[str, ...], largest: bool = False) -> Metric:
+        """The governing value of the first of ``checks`` each verdict evaluates (the smallest, or
+        with ``largest`` the largest, when several are evaluated)."""
         values, notes, bounds = [], [], []
         for design in (0, 1):
             found = [c for c in (self.check(k, design) for k in checks) if c is not None and c.value is not None]
             if found:
-                c = min(found, key=lambda c: c.value) if key not in ("spinup_peak", "coupling_angle", "shaft_temperature") \
-                    else max(found, key=lambda c: c.value)
+                c = (max if largest else min)(found, key=lambda c: c.value)
                 values.append(float(c.value))
                 notes.append(c.title + _where(c.location) + (f"; {c.note}" if c.lower_bound and c.note else ""))
                 bounds.append(bool(c.lower_bound))
