@@ -22,16 +22,23 @@ from __future__ import annotations
 
 import copy
 import datetime
+import json
 import math
 import re
+import resource
 import tomllib
+import tracemalloc
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+
+from flexshaft.assembly import build_model
+from flexshaft.assembly.size import check_problem_size
 
 from flexshaft.design import Design, DesignError, baseline_design, baseline_text, load_design, loads_design, with_overrides
 from flexshaft.design.schema import format_value
@@ -363,3 +370,273 @@ def test_every_table_refuses_an_unknown_key() -> None:
             loads_design(toml_document(data))
         expected = override_path(path + ("zz_extra",))
         assert str(info.value).startswith(f"{expected}: unknown key (got 1.5; allowed: "), str(info.value)
+
+
+# ------------------------------------------------------------------------------------------------
+# Extreme numbers through the analyses (project issue 12): check -> build -> modes -> run
+#
+# Every example edits the baseline (made small: 2 to 6 shaft elements, 2 to 4 boom elements) with
+# extreme values, structural edits that once broke the analyses (stations a hair apart, a
+# transfer-function controller, the "worst" placement with many bays, a tiny sensor offset) or
+# both, and goes as far as the validation lets it:
+#
+#     validation only (what `flexshaft check` runs)                             1600 examples
+#     validation, build_model and modes(n_modes=4) at the operating speed        400 examples
+#     validation, problem-size check, build_model and run_analysis(studies=None)   4 examples
+#
+# Allowed outcomes: a validated Design and finite results, or a DesignError / ValueError whose
+# message is not empty (SingularSystemError and NonFiniteResultError are ValueErrors too).
+# Anything else (a traceback) or a NaN or inf in a result fails the test. Memory: after every
+# example the process's resident peak (getrusage ru_maxrss) must stay below MEMORY_CAP_BYTES,
+# so no example went above it; every 20th analysis example is also traced (tracemalloc sees
+# every numpy array; it slows the analyses fourfold, hence not all of them) and its peak must
+# stay below TRACED_CAP_BYTES.
+#
+# Time (2 shared cores): about 12 s, 30 s and 30 s (run_analysis spends 5-10 s in the whirl
+# studies whatever the mesh). OUTCOMES collects the outcome classes (printed with -s).
+
+
+#: Largest resident peak of the test process [bytes], checked after every example.
+MEMORY_CAP_BYTES = 1024**3
+#: Largest traced allocation peak of one sampled analysis example [bytes].
+TRACED_CAP_BYTES = 256 * 1024**2
+OUTCOMES: dict[str, dict[str, Any]] = {}
+
+
+def _resident_peak() -> int:
+    """The process's resident peak [bytes] (ru_maxrss is in KiB on Linux)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+
+EXTREMES = [0.0, -0.0, 5e-324, 1e-300, 1e-12, 1e-6, 1.0, 1e6, 1e12, 1e15, 1e300, 1.7e308, float(2**63), -1.0,
+            math.nan, math.inf]
+RELATIVE = [-1.0, 1e-9, 1e-3, 0.999, 1.0 - 1e-9, 1.0 + 1e-9, 1.001, 1e3, 1e9]
+SMALL_MESH = st.tuples(st.integers(2, 6), st.integers(2, 4))
+
+
+def _bounds(path: tuple[Any, ...]) -> list[float]:
+    """The schema's bounds of the number at ``path`` (and values just inside them)."""
+    from flexshaft.design.io import _locate  # the error translator's own lookup of field metadata
+
+    loc: list[Any] = []
+    for depth, part in enumerate(path):
+        loc.append(part)
+        if depth == 1 and path[0] in ("materials", "bearings"):  # pydantic's location names the union tag
+            loc.append(value_at(BASELINE_DATA, path[:2])["kind"])
+    limits = _locate(tuple(loc)).limits
+    out = []
+    for key in ("ge", "gt", "le", "lt"):
+        if key in limits:
+            bound = float(limits[key])
+            out += [bound, bound * (1 + 1e-9) if bound > 0 else bound + 1e-12, bound * (1 - 1e-9)]
+    return out or [0.0]
+
+
+BOUND_VALUES = {path: _bounds(path) for path in NUMBER_PATHS}
+
+
+def _number_edit() -> st.SearchStrategy[tuple[str, tuple[Any, ...], Any]]:
+    absolute = st.tuples(st.just("set"), st.sampled_from(NUMBER_PATHS), st.sampled_from(EXTREMES))
+    relative = st.tuples(st.just("scale"), st.sampled_from(NUMBER_PATHS), st.sampled_from(RELATIVE))
+    at_bound = st.sampled_from(NUMBER_PATHS).flatmap(
+        lambda path: st.tuples(st.just("set"), st.just(path), st.sampled_from(BOUND_VALUES[path])))
+    return st.one_of(absolute, relative, at_bound, at_bound)
+
+
+STRUCTURAL = [
+    "amb_at_hanger", "amb_near_hanger", "two_ambs_close", "tf_controller", "pid_controller", "worst",
+    "worst_many_bays", "tiny_sensor_offset", "disk_near_bearing", "no_tailboom", "distributed", "line_load",
+]
+
+
+def _structural(data: dict[str, Any], edit: str, tiny: float) -> None:
+    bearings = data["bearings"]
+    amb = bearings[1]
+    if edit == "amb_at_hanger":
+        amb["x"] = bearings[0]["x"]
+    elif edit == "amb_near_hanger":
+        amb["x"] = bearings[0]["x"] + tiny
+    elif edit == "two_ambs_close":
+        bearings[2]["x"] = amb["x"] + tiny
+    elif edit == "tf_controller":
+        for key in ("kp", "kd"):
+            amb.pop(key, None)
+        amb["controller"] = {"numerator": [2.0e3, 1.0e7], "denominator": [1.0 / 6000.0, 1.0]}
+    elif edit == "pid_controller":
+        amb.update({"integral_gain": 1e8, "derivative_cutoff": 800.0, "amplifier_bandwidth": 2000.0, "kd": 1e3})
+    elif edit in ("worst", "worst_many_bays"):
+        data["loads"]["imbalance_placement"] = "worst"
+        if edit == "worst_many_bays":
+            start, end = data["shaft"]["x_start"], data["shaft"]["x_end"]
+            for k in range(12):
+                bearings.append({"name": f"extra_{k}", "kind": "contact", "x": start + (k + 0.5) * (end - start) / 12,
+                                 "stiffness": {"v": 1e7, "w": 1e7}})
+    elif edit == "tiny_sensor_offset":
+        amb["sensor_offset"] = tiny
+    elif edit == "disk_near_bearing":
+        data["disks"] = [{"name": "disk", "x": amb["x"] - tiny, "mass": 5.0, "diametral_inertia": 0.1,
+                          "polar_inertia": 0.2}]
+    elif edit == "no_tailboom":
+        data.pop("tailboom", None)
+        data["loads"].pop("point", None)
+    elif edit == "distributed":
+        data["loads"]["imbalance_placement"] = "distributed"
+    elif edit == "line_load":
+        data["loads"]["line"] = [{"name": "gust", "on": "shaft", "x_start": amb["x"], "x_end": amb["x"] + tiny,
+                                  "force_per_length": [0.0, 100.0, 0.0]}]
+
+
+def _edited_design_data(example: tuple[Any, ...]) -> dict[str, Any]:
+    numbers, structure, tiny, (shaft_elements, boom_elements) = example
+    data = copy.deepcopy(BASELINE_DATA)
+    data["mesh"] = {"shaft_elements": shaft_elements, "boom_elements": boom_elements}
+    for edit in structure:
+        _structural(data, edit, tiny)
+    for kind, path, value in numbers:
+        found = resolve(data, path)
+        if found is None:
+            continue
+        container, key = found
+        old = container[key]
+        container[key] = value if kind == "set" else (old if old != 0 else 1.0) * value
+        if isinstance(old, int) and not isinstance(old, bool) and math.isfinite(container[key]):
+            container[key] = int(container[key]) if abs(container[key]) < 2**62 else container[key]
+    return data
+
+
+extreme_designs = st.tuples(
+    st.lists(_number_edit(), min_size=0, max_size=3),
+    st.lists(st.sampled_from(STRUCTURAL), min_size=0, max_size=2, unique=True),
+    st.sampled_from([1e-12, 1e-9, 1e-6, 1e-3, 0.05]),
+    SMALL_MESH,
+).filter(lambda example: example[0] or example[1])
+
+
+def _count(stage: str, outcome: str) -> None:
+    OUTCOMES.setdefault(stage, {})
+    OUTCOMES[stage][outcome] = OUTCOMES[stage].get(outcome, 0) + 1
+
+
+def _refused(error: BaseException) -> str:
+    """The outcome class of an allowed refusal (the test fails on anything else)."""
+    assert isinstance(error, ValueError), f"{type(error).__name__} escaped: {error}"
+    assert str(error).strip(), f"{type(error).__name__} without a message"
+    if isinstance(error, DesignError):
+        assert error.problems and all(p.path.strip() and p.message.strip() for p in error.problems)
+    return type(error).__name__
+
+
+def _all_finite(name: str, value: Any) -> None:
+    array = np.asarray(value)
+    if array.dtype.kind in "fc":
+        assert np.all(np.isfinite(array)), f"{name} holds NaN or inf"
+
+
+def _validated(text: str) -> Design | str:
+    try:
+        return loads_design(text)
+    except Exception as error:  # noqa: BLE001 - classified, anything but a ValueError fails
+        return _refused(error)
+
+
+def _traced(body: Callable[[], Any]) -> tuple[Any, int]:
+    tracemalloc.start()
+    try:
+        return body(), tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+
+
+def test_extreme_designs_are_validated_or_refused() -> None:
+    def body(example: tuple[Any, ...]) -> None:
+        design = _validated(toml_document(_edited_design_data(example)))
+        _count("check", design if isinstance(design, str) else "valid")
+
+    run_counted(1600, extreme_designs, body)
+
+
+def _modes_outcome(design: Design) -> str:
+    from flexshaft.analyses import modes
+
+    try:
+        model = build_model(design)
+        result = modes(model, model.speed, 4)
+    except Exception as error:  # noqa: BLE001
+        return _refused(error)
+    _all_finite("eigenvalues", result.eigenvalues)
+    _all_finite("mode shapes", result.shapes)
+    _all_finite("frequencies", result.frequencies)
+    return "modes"
+
+
+def test_extreme_designs_through_build_and_modes() -> None:
+    def body(example: tuple[Any, ...]) -> None:
+        design = _validated(toml_document(_edited_design_data(example)))
+        if isinstance(design, str):
+            _count("modes", f"refused by check ({design})")
+            return
+        nonlocal examples
+        examples += 1
+        if examples % 20 == 0:
+            outcome, peak = _traced(lambda: _modes_outcome(design))
+            assert peak <= TRACED_CAP_BYTES, f"modes: traced peak {peak / 1e6:.0f} MB"
+            peaks = OUTCOMES.setdefault("traced_peak_bytes", {})
+            peaks["modes"] = max(peaks.get("modes", 0), peak)
+        else:
+            outcome = _modes_outcome(design)
+        assert _resident_peak() <= MEMORY_CAP_BYTES, f"resident peak {_resident_peak() / 1e6:.0f} MB"
+        _count("modes", outcome)
+
+    examples = 0
+
+    run_counted(400, extreme_designs, body)
+
+
+def _run_outcome(design: Design) -> str:
+    from flexshaft.studies.run import run_analysis
+
+    try:
+        check_problem_size(design, "run")
+        results = run_analysis(design, studies=None)
+    except Exception as error:  # noqa: BLE001
+        return _refused(error)
+    for name in ("speeds", "shaft_peak", "shaft_envelope", "static_displacement", "imbalance_at_speed"):
+        _all_finite(name, getattr(results, name))
+    _all_finite("Campbell eigenvalues", results.campbell.eigenvalues)
+    _all_finite("mode shapes", results.mode_shapes.shapes)
+    for name, values in {**results.actuator_displacement, **results.actuator_force}.items():
+        _all_finite(f"actuator {name}", values)
+    for row in results.modes_at_rest + results.modes_at_speed:
+        assert all(math.isfinite(value) for value in row.values() if isinstance(value, float)), row
+    for strength in (results.strength_static, results.strength_total):
+        if strength is not None:
+            assert not math.isnan(strength.safety_factor)
+    return "run"
+
+
+#: The run share: one example of each kind that reaches run_analysis (the baseline made small, a
+#: transfer-function bearing a hair from the hanger, the "worst" placement, extreme numbers).
+RUN_EXAMPLES = [
+    ([], ["amb_near_hanger", "tf_controller"], 1e-9, (4, 2)),
+    ([("scale", ("bearings", 0, "stiffness", "v"), 1e3)], ["worst", "tiny_sensor_offset"], 1e-6, (3, 2)),
+    ([("set", ("materials", "t700_adiprene", "density"), 1e-6), ("set", ("loads", "eccentricity"), 1e-12)],
+     ["no_tailboom", "disk_near_bearing"], 1e-3, (4, 2)),
+    ([("scale", ("operating", "speed_rpm"), 1e-3), ("set", ("bearings", 1, "kp"), 1e10)], ["pid_controller"],
+     1e-12, (2, 2)),
+]
+
+
+@pytest.mark.parametrize("example", RUN_EXAMPLES, ids=["tf_bearing_near_hanger", "worst", "massless_no_boom", "pid"])
+def test_extreme_designs_through_run(example: tuple[Any, ...]) -> None:
+    design = _validated(toml_document(_edited_design_data(example)))
+    assert not isinstance(design, str), design
+    outcome = _run_outcome(design)
+    assert outcome == "run", outcome
+    assert _resident_peak() <= MEMORY_CAP_BYTES, f"resident peak {_resident_peak() / 1e6:.0f} MB"
+    _count("run", outcome)
+
+
+def test_fuzz_outcomes_summary() -> None:
+    """Print the outcome classes (run with -s) and the process's resident peak."""
+    OUTCOMES["resident_peak_bytes"] = _resident_peak()
+    print("\nfuzz outcomes:", json.dumps(OUTCOMES, indent=1, default=str))
+    assert _resident_peak() <= MEMORY_CAP_BYTES

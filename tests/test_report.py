@@ -9,7 +9,6 @@ under CI (environment variable ``CI`` set), where it fails instead.
 from __future__ import annotations
 
 import datetime as dt
-import html
 import os
 import re
 import shutil
@@ -21,16 +20,20 @@ import numpy as np
 import pytest
 from chromium_probe import chromium_or_skip, image_load_title, run_chromium
 
+from flexshaft.plot.stability import log_decrement_figure
+from flexshaft.plot.verdict import margins_figure
 from flexshaft.report import (
     FigureRef,
     Section,
     Table,
     actuator_figure,
+    bode_figure,
     campbell_figure,
     deflected_shape_figure,
     format_cell,
     imbalance_response_figure,
     mode_shapes_figure,
+    orbit_figure,
     render_report,
     safety_factor_figure,
     save_figure,
@@ -60,7 +63,14 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     whirl[:, [0, 2]], whirl[:, [1, 3]], whirl[:, 4] = "forward", "backward", "planar"
     whirl[:10, :4] = "planar"  # at rest the pairs are planar
     critical = [60.0 * 20.0 / (1 - 0.08), 60.0 * 70.0 / (1 - 0.2)]  # 1x crossings of forward modes
-    yield_fig = [("campbell", campbell_figure(speeds, freqs, whirl, critical, OPERATING_RPM, harmonics=(1, 2)))]
+    # log decrement: forward modes lose damping with speed, the first one turns unstable
+    delta = np.column_stack([0.08 - 0.1 * speeds / 8000.0, np.full(161, 0.06), 0.2 - 0.1 * speeds / 8000.0,
+                             np.full(161, 0.15), np.full(161, 0.3)])
+    yield_fig = [("campbell", campbell_figure(speeds, freqs, whirl, critical, OPERATING_RPM, harmonics=(1, 2),
+                                              log_decrement=delta, main_rotor_hz={"4/rev": 17.6}))]
+    onset = 8000.0 * 0.8
+    yield_fig.append(("stability", log_decrement_figure(speeds, {"design": delta}, {"design": onset}, OPERATING_RPM,
+                                                        onset_text={"design": "mode 1, forward whirl"}, required=0.1)))
 
     amplitudes = {
         "max shaft": _jeffcott_amplitude(speeds, critical[0], 0.05, 0.2e-3),
@@ -68,6 +78,12 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
         "amb_2": 0.3 * _jeffcott_amplitude(speeds, critical[1], 0.08, 0.2e-3),
     }
     yield_fig.append(("imbalance", imbalance_response_figure(speeds, amplitudes, OPERATING_RPM, GAP, log_y=True)))
+    r = speeds / critical[0]
+    receptance = 0.2e-3 * r**2 / (1.0 - r**2 + 0.1j * r)  # Jeffcott rotor, zeta = 0.05 [m]
+    yield_fig.append(("bode", bode_figure(speeds[1:], {"disk, v": receptance[1:], "disk, w": -1j * receptance[1:]},
+                                          OPERATING_RPM, GAP)))
+    yield_fig.append(("orbits", orbit_figure({"amb_1": (0.2e-3, -0.15e-3j), "amb_2": (1e-6, 2e-6 + 1e-6j)},
+                                             {"amb_1": GAP, "amb_2": GAP})))
 
     length = 8.0  # [m]
     x = np.linspace(0.0, length, 41)
@@ -94,6 +110,8 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     displacement = {"amb_1": amplitudes["amb_1"], "amb_2": amplitudes["amb_2"]}
     force = {name: 2e6 * d for name, d in displacement.items()}  # PD stiffness 2 MN/m [N]
     yield_fig.append(("actuators", actuator_figure(speeds, displacement, force, GAP, operating_rpm=OPERATING_RPM)))
+    yield_fig.append(("verdict", margins_figure(["safety factor", "whirl onset", "temperature"], [0.8, -0.3, np.nan],
+                                                ["pass", "fail", "not evaluated"], ["+1.2", "-1440 rpm", ""])))
     return [(stem, save_figure(fig, folder, stem)) for stem, fig in yield_fig]
 
 
@@ -103,7 +121,11 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
     saved = _synthetic_figures(folder)
     captions = {
         "campbell": "Campbell diagram <forward & backward>",
+        "stability": "Log decrement and onset",
         "imbalance": "Imbalance response",
+        "bode": "Bode plot",
+        "orbits": "Orbits at the bearings",
+        "verdict": "Verdict margins",
         "deflection": "Static deflection",
         "safety": "Safety factor",
         "modes": "Mode shapes at 4800 rpm",
@@ -117,9 +139,9 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
                           [[1, 1304.3478, "forward", True], [2, 5250.0, "forward", False],
                            [3, float("nan"), None, np.bool_(True)]])],
         ),
-        Section("Dynamics", figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[:3]]),
+        Section("Dynamics", figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[:6]]),
         Section("Strength and actuators",
-                figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[3:]]),
+                figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[6:]]),
     ]
     path = write_report(folder, "flexshaft report: baseline", sections, design_name="baseline <v1>",
                         generated=dt.datetime(2024, 5, 1, 12, 30))
@@ -152,6 +174,18 @@ def test_report_is_one_self_contained_escaped_page(report: dict) -> None:
     assert '<td class="num">1304</td>' in page and "<td>forward</td>" in page
     assert "<td>yes</td>" in page and "<td>no</td>" in page and "True" not in page
     assert '<td class="num">NaN</td>' in page and "<td>—</td>" in page
+
+
+def test_images_are_shown_at_their_physical_size(tmp_path: Path) -> None:
+    # 96 CSS px per inch whatever the PNG's resolution: an 8 in × 4.8 in figure is 768 × 461 px
+    figure_paths = []
+    for dpi in (100, 120, 150):
+        fig = imbalance_response_figure([0.0, 1.0], {"a": [1e-3, 2e-3]})
+        figure_paths.append(save_figure(fig, tmp_path, f"dpi{dpi}", svg=False, dpi=dpi))
+    assert all("svg" not in p for p in figure_paths) and not list(tmp_path.glob("*.svg"))
+    page = render_report("t", [Section("s", figures=[FigureRef(p["png"], f"c{k}") for k, p in enumerate(figure_paths)])])
+    assert page.count('width="768" height="461"') == 3
+    assert "(dpi100.png)" in page and ".svg" not in page  # no SVG file, none named
 
 
 def test_format_cell() -> None:

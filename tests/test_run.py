@@ -45,10 +45,11 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     # (an onset of None: stable up to the highest speed analysed)
     onset_rpm = {k: float("inf") if v["viscous"] is None else v["viscous"] for k, v in thesis.items()}
     assert onset_rpm["(45/-45/0/0)s FMC"] > onset_rpm["(45/-45)s FMC"]
-    for stem in ("campbell", "mode_shapes", "imbalance_response", "actuators", "static_deflection", "safety_factor",
-                 "stability_real_parts", "stability_map", "shaft_temperature", "shaft_temperature_sweeps"):
+    for stem in ("verdict_margins", "campbell", "mode_shapes", "imbalance_response", "imbalance_bode", "bearing_orbits",
+                 "actuators", "static_deflection", "safety_factor", "stability_log_decrement", "stability_map",
+                 "shaft_temperature", "shaft_temperature_sweeps"):
         assert (out / f"{stem}.png").stat().st_size > 10_000
-        assert (out / f"{stem}.svg").is_file()
+        assert not (out / f"{stem}.svg").exists()  # SVG only on request
 
 
 def test_baseline_report_renders_with_every_figure(baseline_run, tmp_path):

@@ -49,8 +49,12 @@ FORWARD_ERROR_LIMIT = 1e-3
 REFINEMENT_STEPS = 12
 
 
-class SingularSystemError(ArithmeticError):
-    """The dynamic stiffness is singular: an undamped system excited exactly at resonance."""
+class SingularSystemError(ArithmeticError, ValueError):
+    """The dynamic stiffness is singular: an undamped system excited exactly at resonance.
+
+    Also a ``ValueError``: the cause is the design or the arguments (no damping at a resonance,
+    an unsupported rigid-body motion), so callers that report bad input report it too.
+    """
 
 
 def _term_triplets(model: Model, local: np.ndarray) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:

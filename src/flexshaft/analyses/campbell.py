@@ -23,6 +23,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
+from flexshaft.analyses.guards import check_count, check_finite_array, check_model, require_finite
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
@@ -219,6 +220,8 @@ class Campbell(EigenvalueCurves, ResultMixin):
     component: np.ndarray | None = None
     internal_damping: str = "rotating"
 
+    plots = {"campbell": "plot_campbell"}
+
     def __repr__(self) -> str:
         ns, nm = self.eigenvalues.shape
         top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
@@ -230,6 +233,20 @@ class Campbell(EigenvalueCurves, ResultMixin):
         from flexshaft.analyses.datasets import curves_dataset
 
         return curves_dataset(self, "Campbell diagram")
+
+    def plot_campbell(self, ax=None, *, operating_rpm: float | None = None, max_critical_rpm: float | None = None,
+                      damping: bool = True, **kwargs):
+        """Campbell diagram in rpm and Hz: whirl as line style and marker, the log decrement as
+        colour (``damping=False``: one colour per mode), the critical speeds (up to
+        ``max_critical_rpm``) labelled. Keywords (``main_rotor_hz``, ``harmonics``) go to
+        :func:`flexshaft.plot.campbell.campbell_figure`."""
+        from flexshaft.plot.campbell import campbell_figure
+
+        crit = [c.speed_rpm for c in self.critical_speeds if max_critical_rpm is None or c.speed_rpm <= max_critical_rpm]
+        harmonics = sorted({c.harmonic for c in self.critical_speeds} | {1.0})
+        kwargs.setdefault("harmonics", harmonics)
+        return campbell_figure(rad_s_to_rpm(self.speeds), self.frequencies, self.whirl, crit, operating_rpm,
+                               log_decrement=self.log_decrements if damping else None, kind=self.kind, ax=ax, **kwargs)
 
 
 @single_blas_thread
@@ -250,20 +267,30 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
     damped : bool
         Include bearing dampers, actuator damping and the members' hysteretic loss.
     """
+    check_model(model)
     speeds = check_speeds(speeds)
-    if int(n_modes) != n_modes or n_modes < 1:
-        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
-    red = reduce(model, basis_size or default_basis_size(int(n_modes)))
+    n_modes = check_count(n_modes, "n_modes")
+    if basis_size is not None:
+        basis_size = check_count(basis_size, "basis_size")
+    harmonics = check_finite_array("harmonics", np.atleast_1d(np.asarray(harmonics, dtype=float)), "-")
+    if harmonics.ndim != 1 or np.any(harmonics <= 0):
+        raise ValueError(f"harmonics must be excitation orders > 0 (got {harmonics!r})")
+    red = reduce(model, basis_size or default_basis_size(n_modes))
     if not damped:
         red = red.undamped()
-    tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=damped)
+    tracked = track_modes(model, red, speeds, n_modes, refine_loss=damped)
+    require_finite("Campbell eigenvalues", tracked.eigenvalues)
     crit = critical_speeds(speeds, tracked.eigenvalues, tracked.whirl, tracked.kind, harmonics)
     return Campbell(speeds, tracked.eigenvalues, tracked.whirl, tracked.whirl_ratios, crit, tracked.kind,
                     tracked.component, model.internal_damping)
 
 
 def check_speeds(speeds) -> np.ndarray:
-    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    """Speeds [rad/s] as a 1-D float array: finite, >= 0, strictly increasing (else ValueError)."""
+    try:
+        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"speeds must be a 1-D sequence of numbers [rad/s] (got {speeds!r})") from None
     if speeds.ndim != 1 or speeds.size == 0:
         raise ValueError("speeds must be a non-empty 1-D sequence [rad/s]")
     if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
@@ -275,6 +302,11 @@ def check_speeds(speeds) -> np.ndarray:
 
 def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple[CriticalSpeed, ...]:
     """Crossings of the lateral curves with ω = kΩ, sorted by speed."""
+    speeds = check_finite_array("speeds", speeds, "rad/s")
+    eigenvalues = check_finite_array("eigenvalues", eigenvalues, "rad/s")
+    harmonics = check_finite_array("harmonics", np.atleast_1d(np.asarray(harmonics, dtype=float)), "-")
+    if eigenvalues.ndim != 2 or eigenvalues.shape[0] != speeds.size:
+        raise ValueError(f"eigenvalues must be (speeds, modes) = ({speeds.size}, n) (got {eigenvalues.shape})")
     out = []
     for h in harmonics:
         for m in range(eigenvalues.shape[1]):

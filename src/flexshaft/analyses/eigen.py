@@ -53,13 +53,12 @@ import scipy.sparse.linalg as spla
 
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients, whirl_sign
 from flexshaft.assembly.model import Model
+from flexshaft.assembly.size import HARD_MEMORY_BYTES, SPARSE_BASIS_ABOVE  # the basis threshold lives with the size estimate
 from flexshaft.assembly.sparse import restrict
 
 __all__ = ["DIVERGENCE_TOLERANCE", "SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "spectrum", "candidates",
            "divergent_roots", "refine", "refine_set", "newton", "damped_modes"]
 
-#: Free-DOF count above which the modal basis is computed by sparse shift-invert.
-SPARSE_BASIS_ABOVE = 900
 #: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
 DIVERGENCE_TOLERANCE = 1e-6
 #: Relative convergence of the refined eigenvalue (|Δs| / |s|; a damping ratio of 1e-4 is
@@ -84,14 +83,24 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
         each actuator adds ``k_a BᵀB`` with ``k_a >= 0`` (a magnet's negative stiffness is
         left to the state matrix, :attr:`~flexshaft.assembly.model.Actuator.basis_stiffness`).
     """
+    if isinstance(basis_size, bool) or not isinstance(basis_size, (int, np.integer)) or basis_size < 1:
+        raise ValueError(f"basis_size must be an integer >= 1 (got {basis_size!r})")
+    if method not in ("auto", "dense", "sparse"):
+        raise ValueError(f"method must be 'auto', 'dense' or 'sparse' (got {method!r})")
     free = model.dofs.free
+    n = free.size
+    if n == 0:
+        raise ValueError("the model has no free degrees of freedom")
+    nb = int(min(basis_size, n))
+    sparse = method == "sparse" or (method == "auto" and n > SPARSE_BASIS_ABOVE and nb < n // 2)
+    if not sparse and 5 * 8.0 * n * n > HARD_MEMORY_BYTES:  # K, M, their copies and the vectors
+        raise ValueError(f"a dense modal basis of {nb} modes on {n:,} free DOFs needs about "
+                         f"{5 * 8.0 * n * n / 1024**3:.3g} GiB (allowed: {HARD_MEMORY_BYTES / 1024**3:g} GiB); "
+                         f"ask for fewer than {n // 2:,} basis modes (the sparse solver) or a coarser mesh")
+    if sparse and nb >= n - 1:
+        raise ValueError(f"the sparse modal basis needs basis_size < {n - 1:,} free DOFs (got {basis_size!r})")
     M = restrict(model.M, free).tocsc()
     K = restrict((model.K + model.Kp).tocsr(), free).tocsc()
-    n = M.shape[0]
-    nb = int(min(basis_size, n))
-    if nb < 1:
-        raise ValueError(f"basis_size must be >= 1 (got {basis_size})")
-    sparse = method == "sparse" or (method == "auto" and n > SPARSE_BASIS_ABOVE and nb < n // 2)
     if not sparse:
         return la.eigh(K.toarray(), M.toarray(), subset_by_index=[0, nb - 1])
     w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-1.0, which="LM")

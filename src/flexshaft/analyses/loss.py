@@ -97,8 +97,10 @@ def frequency_coefficients(internal_damping: str, omega: float, speed: float) ->
         Spin speed Ω [rad/s].
     """
     _check(internal_damping)
-    if omega < 0:
-        raise ValueError(f"excitation frequency must be >= 0 rad/s, got {omega!r}")
+    if not (np.isfinite(omega) and omega >= 0):
+        raise ValueError(f"excitation frequency must be a finite number >= 0 rad/s, got {omega!r}")
+    if not np.isfinite(speed):
+        raise ValueError(f"speed must be a finite number [rad/s], got {speed!r}")
     on = 1.0 if omega > 0 else 0.0
     if internal_damping == "thesis":
         return LossCoefficients(1j * on, 1j * on, 0.0)
@@ -114,8 +116,8 @@ def eigen_coefficients(internal_damping: str, omega: float, speed: float, sigma:
     sgn(ω − Ω) (used to settle a mode sitting on the synchronous line).
     """
     _check(internal_damping)
-    if not omega > 0:
-        raise ValueError(f"mode frequency must be > 0 rad/s, got {omega!r}")
+    if not (np.isfinite(omega) and omega > 0):
+        raise ValueError(f"mode frequency must be a finite number > 0 rad/s, got {omega!r}")
     if internal_damping == "thesis" or sigma is None:
         return frequency_coefficients(internal_damping, omega, speed)
     return LossCoefficients(1j, 0.5j * (1.0 + sigma), 0.5 * (1.0 - sigma))
@@ -128,6 +130,8 @@ def viscous_equivalent(reference_frequency: float, speed: float) -> LossCoeffici
     frame, plus the boom's) and circulatory stiffness ``(Ω/ω_ref) K_lat S`` — the thesis's
     chapter-4 model, where every mode meets the loss at the same ω_ref.
     """
-    if not reference_frequency > 0:
-        raise ValueError(f"reference_frequency must be > 0 rad/s, got {reference_frequency!r}")
+    if not (np.isfinite(reference_frequency) and reference_frequency > 0):
+        raise ValueError(f"reference_frequency must be a finite number > 0 rad/s, got {reference_frequency!r}")
+    if not np.isfinite(speed):
+        raise ValueError(f"speed must be a finite number [rad/s], got {speed!r}")
     return LossCoefficients(1.0 / reference_frequency, 1.0 / reference_frequency, speed / reference_frequency)

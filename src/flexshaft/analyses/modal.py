@@ -19,6 +19,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
+from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
@@ -73,6 +74,8 @@ class Modes(ResultMixin):
     dofs: DofMap
     internal_damping: str = "rotating"
 
+    plots = {"shapes": "plot_shapes"}
+
     def __repr__(self) -> str:
         rpm = rad_s_to_rpm(self.speed)
         freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
@@ -84,6 +87,51 @@ class Modes(ResultMixin):
         from flexshaft.analyses.datasets import modes_dataset
 
         return modes_dataset(self)
+
+    def nearest(self, frequency: float, n: int = 6) -> np.ndarray:
+        """Indices of the ``n`` modes whose damped frequency is nearest ``frequency`` [Hz], by
+        frequency."""
+        if int(n) != n or n < 1:
+            raise ValueError(f"n must be an integer >= 1 (got {n!r})")
+        order = np.argsort(np.abs(self.frequencies - frequency), kind="stable")[: int(n)]
+        return np.sort(order)
+
+    def plot_shapes(self, ax=None, *, modes=None, n: int = 6, near_rpm: float | None = None,
+                    bearings_x=(), **kwargs):
+        """Two-plane shapes (v, w) of shaft and boom of the ``n`` modes nearest the spin
+        frequency (``near_rpm`` [rpm] instead of this result's speed; the lowest ``n`` at rest), or
+        of ``modes`` (0-based indices). ``bearings_x`` [m] marks the bearings. Returns the figure."""
+        from flexshaft.plot.shapes import mode_shapes_figure
+
+        rpm = rad_s_to_rpm(self.speed) if near_rpm is None else float(near_rpm)
+        f_spin = rpm / 60.0
+        if modes is not None:
+            chosen = np.atleast_1d(np.asarray(modes, dtype=int))
+            if chosen.size == 0 or np.any((chosen < 0) | (chosen >= self.eigenvalues.size)):
+                raise ValueError(f"modes must be indices in 0..{self.eigenvalues.size - 1} (got {modes!r})")
+        elif f_spin > 0:
+            chosen = self.nearest(f_spin, min(int(n), self.eigenvalues.size))
+        else:
+            chosen = np.arange(min(int(n), self.eigenvalues.size))
+        dm = self.dofs
+        ns, nb = np.arange(dm.n_shaft_nodes), np.arange(dm.n_boom_nodes)
+        shaft, boom = [], []
+        delta = self.log_decrements
+        for k in chosen:
+            phi = self.shapes[:, k]
+            ratio = f"{self.frequencies[k] / f_spin:.2f}× spin, " if f_spin > 0 else ""
+            label = (f"mode {k + 1}: {self.frequencies[k]:.2f} Hz ({ratio}{self.whirl[k]})\n"
+                     f"{self.kind[k]}, {self.component[k]}, δ = {delta[k]:.3g}")
+            shaft.append({"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]})
+            if dm.n_boom_nodes:
+                boom.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
+        if modes is None and f_spin > 0:
+            title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm: the {chosen.size} modes nearest the spin frequency {f_spin:.1f} Hz"
+        else:
+            title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm"
+        kwargs.setdefault("title", title)
+        return mode_shapes_figure(dm.shaft_x, shaft, dm.boom_x if dm.n_boom_nodes else None, boom or None,
+                                  bearings_x=bearings_x, ax=ax, **kwargs)
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -148,11 +196,11 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
         Modal basis (default :func:`default_basis_size`; the number of free DOFs gives the
         exact solution of the full problem).
     """
-    if not (np.isfinite(speed) and speed >= 0):
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
-    if int(n_modes) != n_modes or n_modes < 1:
-        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
-    n_modes = int(n_modes)
+    check_model(model)
+    speed = check_speed(speed)
+    n_modes = check_count(n_modes, "n_modes")
+    if basis_size is not None:
+        basis_size = check_count(basis_size, "basis_size")
     red = reduce(model, basis_size or default_basis_size(n_modes))
     if damped:
         s, Z = damped_modes(red, speed, n_modes)
@@ -164,6 +212,8 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
         s, Z = s[order], Z[:, order]
         red = bare
     shapes = _normalise(model.dofs, model.dofs.expand(red.shapes(Z)))
+    require_finite("eigenvalues", s)
+    require_finite("mode shapes", shapes)
     labels = label_modes(model, shapes)
     return Modes(float(speed), s, shapes, labels.kind, labels.whirl, labels.whirl_ratio, labels.component,
                  labels.shares, model.dofs, model.internal_damping)

@@ -6,9 +6,12 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError, solver_for
+from flexshaft.analyses.guards import check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -23,6 +26,8 @@ __all__ = [
     "bearing_forces",
     "actuator_response",
     "worst_case_orbits",
+    "BearingReaction",
+    "bearing_reactions",
     "static_actuator_forces",
     "static_response",
 ]
@@ -40,6 +45,7 @@ class HarmonicResponse(np.ndarray, ResultMixin):
     """
 
     _CONTEXT = ("frequencies", "spin_speeds", "dofs", "excitation", "internal_damping")
+    plots = {"bode": "plot_bode", "orbit": "plot_orbit"}
 
     def __new__(cls, values, frequencies, spin_speeds, dofs: DofMap, excitation: str, internal_damping: str):
         obj = np.asarray(values).view(cls)
@@ -81,6 +87,95 @@ class HarmonicResponse(np.ndarray, ResultMixin):
 
         return response_dataset(self)
 
+    # -- figures ---------------------------------------------------------------------------
+
+    def _cube(self) -> np.ndarray:
+        """The amplitudes as (ndof, ncases, nfrequencies)."""
+        q = np.asarray(self)
+        if q.ndim == 3:
+            return q
+        if q.ndim == 2:
+            return q[:, None, :] if q.shape[1] == self.frequencies.size else q[:, :, None]
+        return q[:, None, None]
+
+    def _abscissa(self) -> tuple[np.ndarray, str]:
+        if self.excitation == "imbalance":
+            return rad_s_to_rpm(self.spin_speeds), "spin speed Ω [rpm]"
+        return self.frequencies / (2 * np.pi), "excitation frequency [Hz]"
+
+    def _stations(self, stations, q: np.ndarray) -> dict[str, int]:
+        """``{label: shaft node}`` of the requested stations [m] (default: the node of the
+        largest orbit)."""
+        dm = self.dofs
+        n = np.arange(dm.n_shaft_nodes)
+        if stations is None:
+            amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
+            node = int(np.unravel_index(np.argmax(amp), amp.shape)[0])
+            return {f"x = {dm.shaft_x[node]:.2f} m (largest orbit)": node}
+        if isinstance(stations, dict):
+            items = list(stations.items())
+        else:
+            xs = np.atleast_1d(np.asarray(stations, dtype=float))
+            items = [(None, x) for x in xs]
+        out = {}
+        lo, hi = dm.shaft_x[0], dm.shaft_x[-1]
+        for name, x in items:
+            if not np.isfinite(x) or not lo - 1e-9 <= x <= hi + 1e-9:
+                raise ValueError(f"station must be a shaft position within [{lo:g}, {hi:g}] m (got {x!r})")
+            node = dm.node_at("shaft", float(x))
+            out[name or f"x = {dm.shaft_x[node]:.2f} m"] = node
+        return out
+
+    def plot_bode(self, ax=None, *, station=None, direction: str = "v", case: int | None = None, **kwargs):
+        """Amplitude and phase against speed (imbalance) or frequency at shaft ``station`` [m]
+        (a float, a sequence, or ``{label: x}``; default the node of the largest orbit), for
+        ``direction`` "v" (vertical), "w" (lateral) or "both". ``case``: the load case (default
+        the one with the largest response there). Other keywords (``operating_rpm``, ``gap``
+        [m], ``title``) go to :func:`flexshaft.plot.response.bode_figure`."""
+        from flexshaft.plot.response import bode_figure
+
+        if direction not in ("v", "w", "both"):
+            raise ValueError(f"direction must be 'v', 'w' or 'both' (got {direction!r})")
+        q = self._cube()
+        if q.shape[2] < 2:
+            raise ValueError("a Bode plot needs a response at several speeds or frequencies (this one has 1)")
+        if case is not None and not (int(case) == case and 0 <= case < q.shape[1]):
+            raise ValueError(f"case must be an integer in 0..{q.shape[1] - 1} (got {case!r})")
+        dm = self.dofs
+        curves = {}
+        for label, node in self._stations(station, q).items():
+            k = case if case is not None else int(np.argmax(
+                orbit_amplitude(q[dm.shaft(node, "v")], q[dm.shaft(node, "w")]).max(axis=-1)))
+            suffix = f", case {k + 1}" if q.shape[1] > 1 else ""
+            for field in (("v", "w") if direction == "both" else (direction,)):
+                curves[f"{label}, {field}{suffix}"] = q[dm.shaft(node, field), k]
+        x, x_label = self._abscissa()
+        if self.excitation != "imbalance":
+            kwargs.setdefault("title", "Frequency response (Bode)")
+        return bode_figure(x, curves, x_label=x_label, ax=ax, **kwargs)
+
+    def plot_orbit(self, ax=None, *, station=None, speed_rpm: float | None = None, case: int | None = None,
+                   gap=None, **kwargs):
+        """Shaft orbits (v, w) at ``station`` [m] (a float, a sequence, or ``{label: x}``; default
+        the node of the largest orbit) at the analysed point nearest ``speed_rpm`` [rpm]
+        (spin speed for an imbalance response, else excitation frequency × 60; default the last).
+        ``gap`` [m] (a float or ``{label: gap}``) draws the auxiliary-bearing clearance."""
+        from flexshaft.plot.response import orbit_figure
+
+        q = self._cube()
+        x, _ = self._abscissa()
+        rpm = x if self.excitation == "imbalance" else x * 60.0
+        i = q.shape[2] - 1 if speed_rpm is None else int(np.argmin(np.abs(rpm - float(speed_rpm))))
+        dm = self.dofs
+        orbits = {}
+        for label, node in self._stations(station, q[..., i:i + 1]).items():
+            v, w = q[dm.shaft(node, "v"), :, i], q[dm.shaft(node, "w"), :, i]
+            k = case if case is not None else int(np.argmax(orbit_amplitude(v, w)))
+            orbits[label] = (v[k], w[k])
+        what = "spin speed" if self.excitation == "imbalance" else "excitation"
+        kwargs.setdefault("title", f"Shaft orbits at {what} {rpm[i]:.0f} rpm")
+        return orbit_figure(orbits, gap, ax=ax, **kwargs)
+
 
 def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None = None) -> np.ndarray:
     """Solve at (ω, Ω, load scale) points; returns (ndof, ..., npoints)."""
@@ -115,15 +210,27 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
     SingularSystemError
         When Z(ω) is singular (an undamped resonance).
     """
-    speed = model.speed if speed is None else speed
-    omegas = np.atleast_1d(np.asarray(omega, dtype=float))
+    check_model(model)
+    speed = check_speed(model.speed if speed is None else speed)
+    try:
+        omegas = np.atleast_1d(np.asarray(omega, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"excitation frequencies must be numbers [rad/s] (got {omega!r})") from None
     if not np.all(np.isfinite(omegas)) or np.any(omegas < 0):
         raise ValueError(f"excitation frequencies must be finite and >= 0 rad/s (got {omega!r})")
-    if not np.isfinite(speed) or speed < 0:
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    _check_loads(model, loads)
     out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
+    require_finite("harmonic response", out)
     out = out[..., 0] if np.ndim(omega) == 0 else out
     return HarmonicResponse(out, omegas, np.full(omegas.size, float(speed)), model.dofs, "harmonic", model.internal_damping)
+
+
+def _check_loads(model: Model, loads) -> None:
+    """Load vector(s) on the full DOF vector: finite, (ndof,) or (ndof, ncases)."""
+    Q = check_finite_array("loads", loads, "N, N m")
+    if Q.ndim not in (1, 2) or Q.shape[0] != model.dofs.size:
+        raise ValueError(f"loads must have shape ({model.dofs.size},) or ({model.dofs.size}, ncases) "
+                         f"(got {Q.shape})")
 
 
 def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> HarmonicResponse:
@@ -142,10 +249,16 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> Harmoni
     HarmonicResponse
         (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
     """
-    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    check_model(model)
+    try:
+        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"speeds must be numbers [rad/s] (got {speeds!r})") from None
     if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
         raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
+    _check_loads(model, loads_per_speed_squared)
     out = _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
+    require_finite("imbalance response", out)
     return HarmonicResponse(out, speeds, speeds, model.dofs, "imbalance", model.internal_damping)
 
 
@@ -212,13 +325,14 @@ def _static_solve(model: Model, loads, speed: float | None):
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
 
+    check_model(model)
     free = model.dofs.free
-    speed = model.speed if speed is None else float(speed)
-    if not np.isfinite(speed) or speed < 0:
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
-    Q = np.asarray(loads, dtype=float)
-    if not np.all(np.isfinite(Q)):
-        raise ValueError("the load vector contains NaN or inf")
+    speed = check_speed(model.speed if speed is None else speed)
+    _check_loads(model, loads)
+    Q = np.asarray(loads)
+    if np.iscomplexobj(Q) and np.any(Q.imag != 0):
+        raise ValueError("static loads must be real [N, N m] (got complex values)")
+    Q = Q.real.astype(float)
     K, holding = _static_parts(model, speed)
     A = restrict(K, free)
     rhs = Q[free]
@@ -238,6 +352,7 @@ def _static_solve(model: Model, loads, speed: float | None):
         raise SingularSystemError("static stiffness is singular to working precision")
     out = np.zeros(Q.shape)
     out[free] = x[: free.size]
+    require_finite("static response", out)
     # λ is the force on the shaft (K q = Q + B_aᵀ λ); the bearing carries −λ
     forces = {a.name: -x[free.size + 2 * k : free.size + 2 * k + 2] for k, a in enumerate(holding)}
     return out, forces
@@ -266,6 +381,9 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
     ValueError
         For an integrating actuator at ``omega = 0`` without ``loads``.
     """
+    check_model(model)
+    omega = check_speed(omega, "omega")
+    check_finite_array("q", q, "m, rad")
     out = {}
     actuators = {a.name: a for a in model.actuators}
     static = {}
@@ -287,6 +405,8 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
         else:
             gain = link.stiffness + 1j * omega * link.damping
             out[link.name] = gain.reshape((5,) + (1,) * (np.ndim(rel) - 1)) * rel
+    for name, force in out.items():
+        require_finite(f"force of bearing {name!r}", force)
     return out
 
 
@@ -297,6 +417,11 @@ def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
     force ``G(iω) d_s − k_s d_a`` of the magnetic bearing (``C(iω) d`` for the thesis's PD
     bearing).
     """
+    check_model(model)
+    q = check_finite_array("q", q, "m, rad")
+    omegas = check_finite_array("omegas", omegas, "rad/s")
+    if np.any(np.asarray(omegas) < 0):
+        raise ValueError("omegas must be >= 0 rad/s")
     disp, force = {}, {}
     for a in model.actuators:
         d = a.lateral_rows @ q  # (2, n)
@@ -307,14 +432,122 @@ def actuator_response(model: Model, q: np.ndarray, omegas: np.ndarray):
         else:
             f = a.carried_force(q, s)
             force[a.name] = orbit_amplitude(f[0], f[1])
+        require_finite(f"force of actuator {a.name!r}", force[a.name])
     return disp, force
 
 
 def worst_case_orbits(model: Model, q: np.ndarray):
     """Shaft orbit amplitudes (nodes, cases, speeds) [m] of responses ``q`` (ndof, cases,
     speeds) and the worst load case at each speed (the largest orbit over the nodes)."""
+    check_model(model)
+    q = check_finite_array("q", q, "m, rad")
+    if q.ndim != 3 or q.shape[0] != model.dofs.size:
+        raise ValueError(f"q must have shape ({model.dofs.size}, cases, speeds) (got {q.shape})")
     dm = model.dofs
     n = np.arange(dm.n_shaft_nodes)
     amp = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])  # (nodes, cases, speeds)
     case = np.argmax(amp.max(axis=0), axis=0)  # worst case per speed
     return amp, case
+
+
+@dataclass(frozen=True)
+class BearingReaction:
+    """Loads and relative motion of one bearing: static, and imbalance at one speed.
+
+    Attributes
+    ----------
+    name, kind : str
+        The bearing's name and kind ("contact" or "active").
+    x_shaft : float
+        Shaft station [m].
+    static_force : ndarray, shape (5,)
+        Force carried under the static loads over (u, v, w, β, γ) [N, N m].
+    imbalance_force : ndarray, shape (5, ncases)
+        Complex force amplitude carried at the imbalance speed, per load case [N, N m].
+    imbalance_motion : ndarray, shape (5, ncases)
+        Complex relative displacement (shaft minus support) at the imbalance speed [m, rad].
+    speed : float
+        The imbalance speed Ω [rad/s].
+    gap : float or None
+        Radial clearance of the auxiliary (backup) bearing from the design [m].
+    """
+
+    name: str
+    kind: str
+    x_shaft: float
+    static_force: np.ndarray
+    imbalance_force: np.ndarray
+    imbalance_motion: np.ndarray
+    speed: float
+    gap: float | None = None
+
+    @property
+    def static_lateral(self) -> float:
+        """|(F_v, F_w)| of the static force [N]."""
+        return float(np.hypot(self.static_force[1].real, self.static_force[2].real))
+
+    @property
+    def static_axial(self) -> float:
+        """|F_u| of the static force [N]."""
+        return float(abs(self.static_force[0].real))
+
+    @property
+    def imbalance_lateral_amplitude(self) -> float:
+        """Largest lateral force over the cycle and the load cases [N]."""
+        return float(np.max(orbit_amplitude(self.imbalance_force[1], self.imbalance_force[2])))
+
+    @property
+    def worst_case(self) -> int:
+        """Load case of the largest relative orbit."""
+        return int(np.argmax(orbit_amplitude(self.imbalance_motion[1], self.imbalance_motion[2])))
+
+    @property
+    def orbit(self) -> tuple[complex, complex]:
+        """Relative (v, w) amplitude of the worst load case [m]."""
+        k = self.worst_case
+        return complex(self.imbalance_motion[1, k]), complex(self.imbalance_motion[2, k])
+
+
+def bearing_reactions(model: Model, q_static: np.ndarray, q_at_speed: np.ndarray, speed: float | None = None,
+                      loads=None) -> dict[str, BearingReaction]:
+    """Static and imbalance loads and relative motion of every bearing.
+
+    Parameters
+    ----------
+    q_static : ndarray, shape (ndof,)
+        Static displacement under ``loads`` at the model's operating speed [m, rad].
+    q_at_speed : ndarray, shape (ndof,) or (ndof, ncases)
+        Complex imbalance response at ``speed`` [m, rad].
+    speed : float or None
+        Its spin speed Ω [rad/s] (the model's operating speed when None).
+    loads : ndarray or None
+        The static load vector [N, N m] that produced ``q_static``; needed only by actuators
+        with integral action (their static force is the constraint force of the equilibrium,
+        not a function of q); default the design's external loads plus the torque.
+
+    Returns
+    -------
+    dict of str to BearingReaction
+        In the model's bearing order.
+    """
+    speed = model.speed if speed is None else float(speed)
+    if not np.isfinite(speed) or speed < 0:
+        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    q_static = np.asarray(q_static)
+    q_dyn = np.asarray(q_at_speed)
+    q_dyn = q_dyn[:, None] if q_dyn.ndim == 1 else q_dyn
+    if q_static.shape != (model.dofs.size,) or q_dyn.ndim != 2 or q_dyn.shape[0] != model.dofs.size:
+        raise ValueError(f"q_static must have shape ({model.dofs.size},) and q_at_speed ({model.dofs.size}[, ncases]); "
+                         f"got {q_static.shape} and {np.shape(q_at_speed)}")
+    if loads is None and any(a.integrates for a in model.actuators):
+        from flexshaft.assembly.loads import external_static_load, torque_load
+
+        loads = external_static_load(model) + torque_load(model)
+    static = bearing_forces(model, q_static, loads=loads)  # the static response is at the operating speed
+    dynamic = bearing_forces(model, q_dyn, speed)
+    gaps = {b.name: getattr(b, "gap", None) for b in model.design.bearings} if model.design is not None else {}
+    return {
+        link.name: BearingReaction(link.name, link.kind, float(link.x_shaft), np.real(static[link.name]),
+                                   dynamic[link.name], link.rows @ q_dyn, speed, gaps.get(link.name))
+        for link in model.bearings
+    }

@@ -45,6 +45,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flexshaft.analyses.guards import NonFiniteResultError, check_count, check_finite_array, check_model
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.elements.shape import beam_shape
@@ -162,6 +163,29 @@ class StrengthResult(ResultMixin):
     hoop_resultant: float = 0.0
     temperature_change: float = 0.0
 
+    plots = {"along_shaft": "plot_along_shaft", "load_shares": "plot_load_shares"}
+
+    @property
+    def critical_description(self) -> str:
+        """E.g. "ply 3 (+55°), φ = 120°, sigma2 dominates"."""
+        return f"ply {self.ply + 1} ({self.ply_angle_deg:+.0f}°), φ = {self.phase_deg:.0f}°, {self.dominant_stress} dominates"
+
+    def plot_along_shaft(self, ax=None, **kwargs):
+        """Smallest safety factor along the shaft [m], the critical point annotated (keywords to
+        :func:`flexshaft.plot.driveline.safety_factor_figure`)."""
+        from flexshaft.plot.driveline import safety_factor_figure
+
+        return safety_factor_figure(self.x_along, self.along_shaft, self.x, self.critical_description, ax=ax, **kwargs)
+
+    def plot_load_shares(self, ax=None, **kwargs):
+        """Each load's share of the failure index at the critical point (bars)."""
+        from flexshaft.plot.driveline import load_shares_figure
+
+        if not self.load_shares:
+            raise ValueError("this result has no load shares")
+        kwargs.setdefault("title", f"Shares of the failure index at x = {self.x:.2f} m, {self.critical_description}")
+        return load_shares_figure(self.load_shares, ax=ax, **kwargs)
+
     def __repr__(self) -> str:
         return (f"StrengthResult(Tsai-Wu safety factor {self.safety_factor:.3g} at x = {self.x:.3g} m, ply {self.ply + 1} "
                 f"({self.ply_angle_deg:+.0f}°), {self.dominant_stress} dominates)")
@@ -239,6 +263,12 @@ def shaft_safety_factor(
         Also compute ``safety_factor_without`` (one more evaluation of the whole shaft per load;
         off by default for sweeps).
     """
+    check_model(model)
+    n_phases = check_count(n_phases, "n_phases")
+    for name, value in (dict(q_static) if isinstance(q_static, Mapping) else {"q_static": q_static}).items():
+        check_finite_array(name, value, "m, rad")
+    if q_dynamic is not None:
+        check_finite_array("q_dynamic", q_dynamic, "m, rad")
     laminate, strengths = shaft_strengths(model)
     laminate = laminate.storage
     design = model.design
@@ -295,6 +325,9 @@ def shaft_safety_factor(
     if residual is not None:
         parts["thermal"] = residual[ply]
     R_min = float(R[k])
+    if np.isnan(R_min):  # inf is a result (no stress); NaN is not
+        raise NonFiniteResultError("the Tsai-Wu safety factor came out NaN: some combination of the design's "
+                                   "numbers overflows double precision (see docs/limits.md)")
     scale = R_min if np.isfinite(R_min) else 0.0
     at_failure = np.array([parts[name] * (1.0 if name == "thermal" else scale) for name in parts])
     shares = tsai_wu_shares(at_failure, strengths) if np.isfinite(R_min) else np.zeros(len(parts))

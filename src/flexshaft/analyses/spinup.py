@@ -42,6 +42,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.results import ResultMixin, new_dataset
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.analyses.banded import BandedHarmonicSolver
+from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.assembly.model import Controller, Model
 
 __all__ = [
@@ -57,6 +58,11 @@ __all__ = [
 
 def spinup_speeds(model: Model, n_speeds: int = 400, start: float = 0.02, stop: float = 1.0) -> np.ndarray:
     """``n_speeds`` spin speeds from ``start`` to ``stop`` times the operating speed [rad/s]."""
+    check_model(model)
+    n_speeds = check_count(n_speeds, "n_speeds")
+    start, stop = check_speed(start, "start", "(fraction)"), check_speed(stop, "stop", "(fraction)")
+    if start > stop:
+        raise ValueError(f"start must not exceed stop (got start = {start!r}, stop = {stop!r})")
     return np.linspace(start, stop, n_speeds) * max(model.speed, 1.0)
 
 
@@ -140,9 +146,14 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     """
     from flexshaft.assembly.loads import imbalance_loads
 
+    check_model(model)
     if not model.actuators:
         raise ValueError("the model has no active bearings: nothing to tune")
-    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    speeds = check_finite_array("speeds", np.atleast_1d(np.asarray(speeds, dtype=float)), "rad/s")
+    if speeds.ndim != 1 or np.any(speeds < 0):
+        raise ValueError(f"speeds must be a 1-D sequence of finite speeds >= 0 rad/s (got {speeds!r})")
+    if loads_per_speed_squared is not None:
+        check_finite_array("loads_per_speed_squared", loads_per_speed_squared, "N s^2")
     Q1 = imbalance_loads(model) if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)
     Q1 = Q1.reshape(Q1.shape[0], -1)
     n_cases = Q1.shape[1]
@@ -271,6 +282,29 @@ class SpinupCurves(ResultMixin):
     actuator_force: np.ndarray
     actuator_names: tuple[str, ...]
 
+    plots = {"response": "plot_response", "actuators": "plot_actuators"}
+
+    def plot_response(self, ax=None, **kwargs):
+        """Largest shaft orbit and the actuator orbits against speed [rpm] (log amplitude);
+        keywords (``operating_rpm``, ``gap`` [m]) go to
+        :func:`flexshaft.plot.driveline.imbalance_response_figure`."""
+        from flexshaft.plot.driveline import imbalance_response_figure
+
+        curves = {"max over the shaft": self.shaft_peak}
+        curves.update({f"at {name} (relative)": d for name, d in zip(self.actuator_names, self.actuator_displacement)})
+        kwargs.setdefault("log_y", True)
+        kwargs.setdefault("title", "Spin-up response (orbit major semi-axis)")
+        return imbalance_response_figure(rad_s_to_rpm(self.speeds), curves, ax=ax, **kwargs)
+
+    def plot_actuators(self, ax=None, **kwargs):
+        """Actuator relative orbit [mm] and force [N] against speed [rpm] (two panels)."""
+        from flexshaft.plot.driveline import actuator_figure
+
+        if not self.actuator_names:
+            raise ValueError("this driveline has no actuators")
+        return actuator_figure(rad_s_to_rpm(self.speeds), dict(zip(self.actuator_names, self.actuator_displacement)),
+                               dict(zip(self.actuator_names, self.actuator_force)), ax=ax, **kwargs)
+
     @property
     def shaft_peak(self) -> np.ndarray:
         """Largest shaft orbit over the nodes at each speed [m]."""
@@ -315,8 +349,15 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
         isinstance(controllers, tuple) and controllers and isinstance(controllers[0], (Controller, tuple))
     ):
         controllers = [controllers] * rec.n_actuators
+    if not isinstance(rec, ActuatorReceptance):
+        raise ValueError(f"rec must be an ActuatorReceptance (actuator_receptance(model, speeds)), got {type(rec).__name__}")
+    for c in controllers:
+        if isinstance(c, tuple):
+            check_finite_array("controller gains (kp, kd)", c, "N/m, N s/m")
     laws = [c if isinstance(c, Controller) else Controller.from_transfer_function(c) if hasattr(c, "num")
             else Controller.pd(*c) for c in controllers]
+    for law in laws:
+        check_finite_array("controller coefficients", law.numerator + law.denominator)
     if len(laws) != rec.n_actuators:
         raise ValueError(f"expected {rec.n_actuators} controllers (one per actuator), got {len(laws)}")
     gains = rec.feedback(_dynamic_gains(laws, rec.speeds)[None])
@@ -329,6 +370,8 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
     else:
         force = force[0].max(axis=-1).T  # worst load case, (act, speeds)
         act = act[0].max(axis=-1).T
+    require_finite("spin-up shaft orbit", shaft)
+    require_finite("spin-up actuator force", force)
     return SpinupCurves(
         speeds=rec.speeds,
         shaft_orbit=shaft[0].max(axis=-1).T,
@@ -369,6 +412,34 @@ class SpinupMap(ResultMixin):
     actuator_displacement_peak: np.ndarray
     actuator_force_peak: np.ndarray
     actuator_names: tuple[str, ...]
+
+    plots = {"shaft_peak": "plot_shaft_peak", "actuator_displacement": "plot_actuator_displacement",
+             "actuator_force": "plot_actuator_force"}
+
+    def _plot_map(self, values, label: str, scale: float, title: str, ax, kwargs):
+        from flexshaft.plot.studies import gain_map_figure
+
+        if "best" not in kwargs:
+            kp, kd, _ = self.best()
+            kwargs["best"] = (kp, kd)
+        kwargs.setdefault("title", title)
+        return gain_map_figure(self.kp, self.kd, values, label, scale=scale, ax=ax, **kwargs)
+
+    def plot_shaft_peak(self, ax=None, **kwargs):
+        """Peak spin-up shaft orbit [mm] over (K_p, K_d), the smallest marked ★ (keywords to
+        :func:`flexshaft.plot.studies.gain_map_figure`, e.g. ``other={"design": (kp, kd)}``)."""
+        return self._plot_map(self.shaft_peak, "max spin-up shaft orbit [mm]", 1e3,
+                              "Maximum spin-up shaft deflection vs control gains", ax, kwargs)
+
+    def plot_actuator_displacement(self, ax=None, **kwargs):
+        """Peak relative orbit at the actuators [mm] (largest over them) over (K_p, K_d)."""
+        return self._plot_map(self.actuator_displacement_peak.max(axis=-1), "max actuator displacement [mm]", 1e3,
+                              "Maximum shaft displacement at the actuators vs control gains", ax, kwargs)
+
+    def plot_actuator_force(self, ax=None, **kwargs):
+        """Peak actuator force [N] (largest over the actuators) over (K_p, K_d)."""
+        return self._plot_map(self.actuator_force_peak.max(axis=-1), "max actuator force [N]", 1.0,
+                              "Maximum actuator force vs control gains", ax, kwargs)
 
     def best(self, max_actuator_displacement: float | None = None, max_actuator_force: float | None = None):
         """Gains ``(kp, kd, shaft_peak)`` of the smallest peak deflection within the limits."""
@@ -439,8 +510,12 @@ def spinup_map(
     progress : callable, optional
         Called with (done, total) gain pairs.
     """
-    kp = np.atleast_1d(np.asarray(kp, dtype=float))
-    kd = np.atleast_1d(np.asarray(kd, dtype=float))
+    check_model(model)
+    kp = check_finite_array("kp", np.atleast_1d(np.asarray(kp, dtype=float)), "N/m")
+    kd = check_finite_array("kd", np.atleast_1d(np.asarray(kd, dtype=float)), "N s/m")
+    if kp.ndim != 1 or kd.ndim != 1:
+        raise ValueError("kp and kd must be 1-D sequences of gains")
+    block = check_count(block, "block")
     if receptance is None:
         speeds = spinup_speeds(model) if speeds is None else speeds
         receptance = actuator_receptance(model, speeds, loads_per_speed_squared)
@@ -474,6 +549,8 @@ def spinup_map(
         if progress is not None:
             progress(min(start + block, n_pairs), n_pairs)
     shape = (kp.size, kd.size)
+    require_finite("spin-up map shaft peak", shaft_peak)
+    require_finite("spin-up map actuator force", act_force)
     return SpinupMap(
         kp=kp,
         kd=kd,

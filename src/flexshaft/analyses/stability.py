@@ -44,6 +44,7 @@ from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
+from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
 from flexshaft.units import rad_s_to_rpm
@@ -105,6 +106,8 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
     divergence: np.ndarray | None = None
     onset_kind: str | None = None
 
+    plots = {"log_decrement": "plot_log_decrement", "real_part": "plot_real_parts"}
+
     def __repr__(self) -> str:
         top = rad_s_to_rpm(self.speeds[-1])
         onset = "stable" if self.onset_speed is None else f"onset {rad_s_to_rpm(self.onset_speed):.0f} rpm"
@@ -139,6 +142,34 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
         """True when a real unstable root exists at some analysed speed."""
         return self.divergence is not None and bool(np.any(self.divergence > 0))
 
+    def onset_description(self) -> str | None:
+        """E.g. "mode 6, forward whirl" or "divergence" (None when stable)."""
+        if self.onset_speed is None:
+            return None
+        if self.onset_kind == "divergence" or self.unstable_mode is None:
+            return "divergence (real root)"
+        k = self.at_speed(self.onset_speed)
+        k = min(k + 1, self.speeds.size - 1) if self.speeds[k] < self.onset_speed else k
+        return f"mode {self.unstable_mode + 1}, {self.whirl[k, self.unstable_mode]} whirl"
+
+    def plot_log_decrement(self, ax=None, *, label: str = "this design", **kwargs):
+        """Log decrement of every tracked mode against speed [rpm], the onset marked. Keywords
+        (``operating_rpm``, ``required``) go to :func:`flexshaft.plot.stability.log_decrement_figure`."""
+        from flexshaft.plot.stability import log_decrement_figure
+
+        onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
+        text = self.onset_description()
+        return log_decrement_figure(rad_s_to_rpm(self.speeds), {label: self.log_decrements}, {label: onset}, ax=ax,
+                                    onset_text={label: text} if text else None, whirl={label: self.whirl}, **kwargs)
+
+    def plot_real_parts(self, ax=None, *, label: str = "this design", **kwargs):
+        """Re(s) of every tracked mode against speed [rpm] (thesis figures 4.2-4.4), onset marked."""
+        from flexshaft.plot.stability import real_parts_figure
+
+        onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
+        return real_parts_figure(rad_s_to_rpm(self.speeds), {label: self.real_parts}, onset_rpm={label: onset}, ax=ax,
+                                 **kwargs)
+
     def at_speed(self, speed: float) -> int:
         """Index of the analysed speed nearest ``speed`` [rad/s]."""
         return int(np.argmin(np.abs(self.speeds - speed)))
@@ -150,7 +181,14 @@ def onset_speed(speeds, eigenvalues, tolerance: float = STABILITY_TOLERANCE) -> 
     A point is unstable when ζ = −Re(s)/|s| < −``tolerance``; the crossing speed is
     interpolated linearly in ζ between the last stable and the first unstable speed.
     """
-    zeta = -np.asarray(eigenvalues).real / np.abs(eigenvalues)
+    speeds = check_finite_array("speeds", speeds, "rad/s")
+    eigenvalues = check_finite_array("eigenvalues", eigenvalues, "rad/s")
+    if eigenvalues.ndim != 2 or eigenvalues.shape[0] != speeds.size:
+        raise ValueError(f"eigenvalues must be (speeds, modes) = ({speeds.size}, n) (got {eigenvalues.shape})")
+    if not (np.isfinite(tolerance) and tolerance >= 0):
+        raise ValueError(f"tolerance must be a finite number >= 0 (got {tolerance!r})")
+    with np.errstate(invalid="ignore", divide="ignore"):  # s = 0 (a rigid-body root) has ζ = NaN: never unstable
+        zeta = -eigenvalues.real / np.abs(eigenvalues)
     best = (None, None, None)
     for m in range(zeta.shape[1]):
         pos = np.flatnonzero(zeta[:, m] < -tolerance)
@@ -190,12 +228,16 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     reduced : ReducedModel or None
         A precomputed reduction of ``model`` to reuse (e.g. across derivative gains).
     """
+    check_model(model)
     speeds = check_speeds(speeds)
-    if int(n_modes) != n_modes or n_modes < 1:
-        raise ValueError(f"n_modes must be an integer >= 1 (got {n_modes!r})")
+    n_modes = check_count(n_modes, "n_modes")
     if damping_model not in ("hysteretic", "viscous"):
         raise ValueError(f"damping_model must be 'hysteretic' or 'viscous', got {damping_model!r}")
-    red = reduced or reduce(model, basis_size or max(default_basis_size(int(n_modes)), 48))
+    if reference_frequency is not None:
+        reference_frequency = check_speed(reference_frequency, "reference_frequency", positive=True)
+    if basis_size is not None:
+        basis_size = check_count(basis_size, "basis_size")
+    red = reduced or reduce(model, basis_size or max(default_basis_size(n_modes), 48))
     ref = None
     if damping_model == "viscous":
         ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
@@ -204,6 +246,7 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     else:
         tracked = track_modes(model, red, speeds, int(n_modes))
     eig = tracked.eigenvalues
+    require_finite("stability eigenvalues", eig)
     onset, mode, k = onset_speed(speeds, eig)
     if onset is not None and k > 0:
         weights = None if damping_model == "hysteretic" else (lambda sp: viscous_equivalent(ref, sp))

@@ -1,11 +1,16 @@
 """Build the assembled :class:`~flexshaft.assembly.model.Model` from a validated design.
 
-Steps: mesh both members with nodes at every bearing, disk and point load; stack each kind of
-element and scatter it once (sparse COO); add lumped inertias and bearing links; constrain the
-boom root and the shaft end DOFs named in the design.
+Steps: estimate the problem size and refuse a design above the caps
+(:func:`~flexshaft.assembly.size.check_problem_size`); mesh both members with nodes at every
+bearing, disk and point load (:mod:`flexshaft.assembly.mesh`, close stations merged); stack
+each kind of element and scatter it once (sparse COO); add lumped inertias and bearing links;
+constrain the boom root and the shaft end DOFs named in the design; check the derived numbers
+(:mod:`flexshaft.assembly.checks`: bearing stiffness against the shaft's element stiffness,
+actuator gains, finite matrices), raising :class:`~flexshaft.design.DesignError`.
 
 A segmented shaft (``[[shaft.segments]]``, ``[[couplings]]``, docs/segmented-driveline.md) has
-nodes at every segment boundary; each segment's elements use its own tube; at each coupling the
+nodes at every segment boundary and coupling (kept exactly: stations closer than the merge
+tolerance move onto them); each segment's elements use its own tube; at each coupling the
 station gets two nodes (one per side) joined by the coupling element instead of a shaft element.
 A ``"rigid"`` coupling direction is an exact constraint: the aft node's DOF is tied to the
 forward node's (:attr:`~flexshaft.assembly.dofs.DofMap.tied`). A penalty spring would not do:
@@ -21,7 +26,9 @@ import dataclasses
 import numpy as np
 import scipy.sparse as sp
 
+from flexshaft.assembly.checks import check_actuator_law, check_bearing_stiffness, check_finite_model, check_magnet
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, DofMap
+from flexshaft.assembly.mesh import design_mesh, design_stations, merge_tolerance, segment_mesh
 from flexshaft.assembly.model import (
     Actuator,
     BearingLink,
@@ -31,6 +38,7 @@ from flexshaft.assembly.model import (
     SegmentProperties,
     ShaftProperties,
 )
+from flexshaft.assembly.size import check_problem_size
 from flexshaft.assembly.sparse import scatter_blocks
 from flexshaft.elements import magnetic
 from flexshaft.elements.coupling import coupling_matrices
@@ -52,20 +60,6 @@ _COUPLING_DIRECTIONS = {"u": "axial", "v": "lateral", "w": "lateral", "theta": "
                         "beta": "angular", "gamma": "angular"}
 
 _RELATIVE = ("u", "v", "w", "beta", "gamma")
-
-
-def segment_mesh(breakpoints, n_elements: int) -> np.ndarray:
-    """Nodes covering sorted ``breakpoints`` with about ``n_elements`` near-equal elements.
-
-    Every breakpoint is a node; each segment gets ``max(1, round(n · L_seg / L))`` elements.
-    """
-    pts = np.unique(np.round(np.asarray(breakpoints, dtype=float), 12))
-    total = pts[-1] - pts[0]
-    nodes = [pts[:1]]
-    for a, b in zip(pts[:-1], pts[1:]):
-        n = max(1, int(round(n_elements * (b - a) / total)))
-        nodes.append(np.linspace(a, b, n + 1)[1:])
-    return np.concatenate(nodes)
 
 
 def shaft_properties(design) -> ShaftProperties:
@@ -114,42 +108,6 @@ def boom_semi_axes(tailboom, x):
     return a, b
 
 
-def _meshes(design):
-    sh, boom = design.shaft, design.tailboom
-    loads = design.loads
-    shaft_pts = [sh.x_start, sh.x_end]
-    shaft_pts += [t.x_start for t in sh.tubes] + [c.x for c in design.couplings]  # segment boundaries, joints
-    shaft_pts += [b.x for b in design.bearings] + [d.x for d in design.disks]
-    sensors = [b for b in design.bearings if b.kind == "active" and b.sensor_offset != 0.0]
-    shaft_pts += [b.sensor_x for b in sensors]
-    boom_pts = []
-    if loads is not None:
-        shaft_pts += [p.x for p in loads.point if p.on == "shaft"]
-        boom_pts += [p.x for p in loads.point if p.on == "boom"]
-    shaft_x = segment_mesh(shaft_pts, design.mesh.shaft_elements)
-    if boom is None:
-        return shaft_x, np.zeros(0)
-    boom_pts += [0.0, boom.length] + [_x_boom(b) for b in design.bearings] + [b.sensor_boom_x for b in sensors]
-    return shaft_x, segment_mesh(boom_pts, design.mesh.boom_elements)
-
-
-def _split_at_couplings(design, shaft_x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Shaft stations with each coupling station doubled (one node per side), and the joints.
-
-    Returns the new stations and the indices j of the node pairs (j, j + 1) that are joints.
-    """
-    joints = []
-    for coupling in sorted(design.couplings, key=lambda c: c.x):
-        j = int(np.argmin(np.abs(shaft_x - coupling.x)))
-        shaft_x = np.insert(shaft_x, j + 1, shaft_x[j])
-        joints.append(j)
-    return shaft_x, np.array(joints, dtype=int)
-
-
-def _x_boom(bearing) -> float:
-    return bearing.x if bearing.x_boom is None else bearing.x_boom
-
-
 def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
     dm = DofMap(shaft_x, boom_x)
     fixed = [dm.shaft(0, f) for f in design.shaft.fixed_start]
@@ -173,7 +131,7 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
     if design.tailboom is None:
         local, dofs, xb, h = relative_rows(xis, Ls), shaft_dofs, None, 0.0
     else:
-        xb = _x_boom(bearing)
+        xb = bearing.boom_x
         if bearing.offset is not None:
             h = bearing.offset
         else:
@@ -195,6 +153,7 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
 
 def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     """The magnetic bearing of an active-bearing table (see :class:`~flexshaft.assembly.model.Actuator`)."""
+    index = design.bearings.index(bearing)
     ctrl = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
     if bearing.uses_magnet_geometry:
         geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
@@ -206,9 +165,12 @@ def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     if bearing.saturation_flux_density is not None:
         saturation = magnetic.saturation_force(bearing.saturation_flux_density, bearing.pole_area, bearing.pole_angle_rad)
     sensor = _bearing_link(design, dm, bearing, bearing.sensor_offset) if bearing.sensor_offset != 0.0 else None
-    return Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
-                    amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
-                    air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
+    check_magnet(design, index, k_i, k_s)
+    actuator = Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
+                        amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
+                        air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
+    check_actuator_law(design, index, actuator, design.operating.speed_rad_s)
+    return actuator
 
 
 def _coefficients(table) -> np.ndarray:
@@ -219,13 +181,35 @@ def _coefficients(table) -> np.ndarray:
 
 
 def build_model(design) -> Model:
-    """Assemble the global model of a validated :class:`~flexshaft.design.Design`."""
-    shaft_x, boom_x = _meshes(design)
+    """Assemble the global model of a validated :class:`~flexshaft.design.Design`.
+
+    Raises
+    ------
+    DesignError
+        When the problem is too large (:func:`~flexshaft.assembly.size.check_problem_size`,
+        ``"model"``) or a derived number is out of range (:mod:`flexshaft.assembly.checks`).
+    ValueError
+        When ``design`` is not a validated Design.
+
+    Warns
+    -----
+    ProblemSizeWarning
+        When the model is large (above the soft caps).
+    """
+    from flexshaft.design import Design
+
+    if not isinstance(design, Design):
+        raise ValueError(f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
+                         "use load_design, loads_design or design_from_dict")
+    check_problem_size(design, "model", stacklevel=4)  # the caller of flexshaft.assembly.build_model
+    shaft_x, boom_x = design_mesh(design) if not design.segmented else _segmented_mesh(design)
     shaft_x, joints = _split_at_couplings(design, shaft_x)
-    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints, _tied_dofs(design, shaft_x, boom_x, joints))
+    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints,
+                _tied_dofs(design, shaft_x, boom_x, joints))
     n = dm.size
 
     props = shaft_properties(design)
+    check_bearing_stiffness(design, props)
     segments = segment_properties(design)
     parts: dict[str, list] = {"M": [], "K": [], "C": [], "G": [], "shaft_loss": [], "boom_loss": []}
     _shaft_elements(design, dm, segments, parts)
@@ -269,7 +253,7 @@ def build_model(design) -> Model:
             actuators.append(_actuator(design, dm, bearing, link))
     M, K, C, G, shaft_loss, boom_loss = (scatter_blocks(parts[k], n) for k in ("M", "K", "C", "G", "shaft_loss", "boom_loss"))
 
-    return Model(
+    model = Model(
         dofs=dm,
         M=M.tocsr(),
         K=K.astype(float).tocsr(),
@@ -287,10 +271,46 @@ def build_model(design) -> Model:
         boom_loss_stiffness=boom_loss.tocsr(),
         internal_damping=design.analysis.internal_damping,
     )
+    check_finite_model(model)
+    return model
 
 
 # ------------------------------------------------------------------------------------------------
-# Shaft elements per segment, and the couplings
+# Segmented shafts: mesh, shaft elements per segment, couplings
+
+
+def _segmented_mesh(design) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`~flexshaft.assembly.mesh.design_mesh` with the segment boundaries and couplings
+    kept exactly: a station closer to one of them than the merge tolerance moves onto it (a
+    bearing still acts at its own station through the shape functions)."""
+    shaft_pts, _ = design_stations(design)
+    sh = design.shaft
+    hard = sorted({t.x_start for t in sh.tubes[1:]} | {c.x for c in design.couplings})
+    tol = merge_tolerance(sh.x_end - sh.x_start, design.mesh.shaft_elements)
+    ends = (sh.x_start, sh.x_end)
+    crowded = [x for x in hard if min(abs(x - e) for e in ends) < tol]
+    crowded += [b for a, b in zip(hard[:-1], hard[1:]) if b - a < tol]
+    if crowded:
+        from flexshaft.design import DesignError, Problem
+
+        raise DesignError([Problem("mesh.shaft_elements", f"the segment boundary or coupling at x = {x:.6g} m is "
+                                   f"closer than {tol:.3g} m (5 % of an element) to another one or to a shaft end; "
+                                   "raise shaft_elements or move it") for x in crowded], "<model>")
+    soft = [x for x in shaft_pts if min(abs(x - h) for h in hard) >= tol]
+    shaft_x = segment_mesh(soft + hard, design.mesh.shaft_elements)
+    boom_x = design_mesh(design)[1]
+    return shaft_x, boom_x
+
+
+def _split_at_couplings(design, shaft_x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Shaft stations with each coupling station doubled (one node per side), and the joints:
+    the indices j of the node pairs (j, j + 1) that are joints."""
+    joints = []
+    for coupling in sorted(design.couplings, key=lambda c: c.x):
+        j = int(np.argmin(np.abs(shaft_x - coupling.x)))
+        shaft_x = np.insert(shaft_x, j + 1, shaft_x[j])
+        joints.append(j)
+    return shaft_x, np.array(joints, dtype=int)
 
 
 def _shaft_elements(design, dm: DofMap, segments, parts: dict) -> None:
@@ -347,6 +367,5 @@ def _couplings(design, dm: DofMap, parts: dict) -> tuple[CouplingLink, ...]:
         parts["G"].append((G[None], dofs[None]))
         allowable = None if coupling.allowable_angle_deg is None else float(np.radians(coupling.allowable_angle_deg))
         links.append(CouplingLink(coupling.name, float(dm.shaft_x[j]), int(j), int(j + 1),
-                                  np.where(rigid, np.inf, stiffness), rigid,
-                                  float(coupling.mass), allowable))
+                                  np.where(rigid, np.inf, stiffness), rigid, float(coupling.mass), allowable))
     return tuple(links)

@@ -154,9 +154,11 @@ class DofMap:
 
         At a coupling joint the station belongs to the element after it (aft of the coupling).
         """
-        xs = self.shaft_x if component == "shaft" else self.boom_x
+        xs = self._stations(component)
         if len(xs) < 2:
             raise ValueError(f"no {component} elements")
+        if not np.isfinite(x):
+            raise ValueError(f"x must be a finite station [m] (got {x!r})")
         tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
         if x < xs[0] - tol or x > xs[-1] + tol:
             raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
@@ -170,9 +172,28 @@ class DofMap:
         return e, float(np.clip((x - xs[e]) / length, 0.0, 1.0)), float(length)
 
     def node_at(self, component: Component, x: float) -> int:
-        """Index of the node nearest to station ``x`` [m]."""
-        xs = self.shaft_x if component == "shaft" else self.boom_x
+        """Index of the node nearest to station ``x`` [m].
+
+        Raises
+        ------
+        ValueError
+            When ``x`` is not finite or lies outside the member (beyond a tolerance of 1e-9 of
+            its length), or the member has no nodes.
+        """
+        xs = self._stations(component)
+        if len(xs) == 0:
+            raise ValueError(f"the model has no {component} nodes")
+        if not np.isfinite(x):
+            raise ValueError(f"x must be a finite station [m] (got {x!r})")
+        tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
+        if x < xs[0] - tol or x > xs[-1] + tol:
+            raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
         return int(np.argmin(np.abs(xs - x)))
+
+    def _stations(self, component: Component) -> np.ndarray:
+        if component not in ("shaft", "boom"):
+            raise ValueError(f"component must be 'shaft' or 'boom', got {component!r}")
+        return self.shaft_x if component == "shaft" else self.boom_x
 
     def values(self, q: np.ndarray, component: Component, field: str) -> np.ndarray:
         """``field`` at every node of ``component`` from a global vector (leading axis = DOF)."""

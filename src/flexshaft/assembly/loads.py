@@ -15,7 +15,9 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS
+from flexshaft.assembly.mesh import merge_tolerance
 from flexshaft.assembly.model import Model
+from flexshaft.assembly.size import MAX_WORST_BAYS, bearing_bays
 from flexshaft.elements.boom import BOOM_COLUMNS
 from flexshaft.elements.inertia import end_mass_kinematics
 from flexshaft.elements.shape import beam_shape, gauss_points
@@ -30,10 +32,34 @@ __all__ = [
     "imbalance_bays",
     "imbalance_loads",
     "per_bay_imbalance_loads",
+    "IMBALANCE_PLACEMENTS",
+    "MAX_WORST_BAYS",
 ]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
 _AXES = {"x": 0, "y": 1, "z": 2}
+#: Imbalance placements :func:`imbalance_loads` knows.
+IMBALANCE_PLACEMENTS = ("mid_bay", "distributed", "worst")
+_MEMBERS = ("shaft", "boom", "end_mass")
+
+
+def _vector3(name: str, value, unit: str) -> np.ndarray:
+    """A finite (x, y, z) vector, or a ValueError naming it."""
+    try:
+        out = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be three finite numbers (x, y, z) [{unit}] (got {value!r})") from None
+    if out.shape != (3,) or not np.all(np.isfinite(out)):
+        raise ValueError(f"{name} must be three finite numbers (x, y, z) [{unit}] (got {value!r})")
+    return out
+
+
+def _member(model: Model, on: str, allowed=_MEMBERS) -> None:
+    if on not in allowed:
+        raise ValueError(f"on must be one of {', '.join(map(repr, allowed))} (got {on!r})")
+    if on != "shaft" and (model.design is None or model.design.tailboom is None or
+                          (on == "end_mass" and model.design.tailboom.end_mass is None)):
+        raise ValueError(f"the model has no {'tailboom end mass' if on == 'end_mass' else 'tailboom'} (on = {on!r})")
 
 
 def _rows(model: Model, on: str, x):
@@ -71,8 +97,9 @@ def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | 
     on : {"shaft", "boom", "end_mass"}
         Where it acts; ``x`` [m] is required on the shaft or boom.
     """
-    force = np.asarray(force, dtype=float)
-    moment = np.asarray(moment, dtype=float)
+    _member(model, on)
+    force = _vector3("force", force, "N")
+    moment = _vector3("moment", moment, "N m")
     dm = model.dofs
     if on == "end_mass":
         em = model.design.tailboom.end_mass
@@ -80,6 +107,8 @@ def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | 
         gen = end_mass_kinematics(em.offset).T @ force
         gen[2:] += moment  # a couple on the rigid mass acts on the tip rotations
         return _scatter_vector(dm.size, tip, gen)
+    if x is None or isinstance(x, bool) or not np.isfinite(x):
+        raise ValueError(f"x must be a finite station [m] on the {on} (got {x!r})")
     dofs, N, fields = _rows(model, on, x)
     g = _generalised(fields, force, moment)
     return _scatter_vector(dm.size, dofs, np.einsum("nfd,f->nd", N, g))
@@ -87,9 +116,12 @@ def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | 
 
 def line_load(model: Model, on: str, x_start: float, x_end: float, force_per_length) -> np.ndarray:
     """Consistent load vector of a uniform line load [N/m] between two stations [m]."""
+    _member(model, on, ("shaft", "boom"))
+    if not (np.isfinite(x_start) and np.isfinite(x_end) and x_start < x_end):
+        raise ValueError(f"x_start < x_end must be finite stations [m] (got x_start = {x_start!r}, x_end = {x_end!r})")
     dm = model.dofs
     xs = dm.shaft_x if on == "shaft" else dm.boom_x
-    q = np.asarray(force_per_length, dtype=float)
+    q = _vector3("force_per_length", force_per_length, "N/m")
     xi, w = gauss_points(4)
     Q = np.zeros(dm.size)
     for a, b in zip(xs[:-1], xs[1:]):
@@ -123,7 +155,7 @@ def inertial_load(model: Model, load_factor) -> np.ndarray:
 
     The boom has no axial DOF, so an x load factor acts on the shaft only.
     """
-    n = np.asarray(load_factor, dtype=float)
+    n = _vector3("load_factor", load_factor, "g")
     return model.M @ rigid_translation(model, n * STANDARD_GRAVITY)
 
 
@@ -135,6 +167,8 @@ def torque_load(model: Model, torque: float | None = None) -> np.ndarray:
     """
     if torque is None:
         torque = model.power / model.speed if model.speed > 0 else 0.0
+    if not np.isfinite(torque):
+        raise ValueError(f"torque must be a finite number [N m] (got {torque!r})")
     Q = np.zeros(model.dofs.size)
     Q[model.dofs.shaft(-1, "theta")] = -torque
     return Q
@@ -152,9 +186,15 @@ def external_static_load(model: Model) -> np.ndarray:
 
 
 def imbalance_bays(model: Model) -> list[tuple[float, float]]:
-    """Shaft bays: the spans between consecutive bearing stations (overhangs excluded)."""
-    xs = sorted({b.x_shaft for b in model.bearings})
-    return [(a, b) for a, b in zip(xs[:-1], xs[1:]) if b > a]
+    """Shaft bays: the spans between consecutive bearing stations (overhangs excluded).
+
+    Stations closer than the mesh's merge tolerance (:func:`~flexshaft.assembly.mesh.merge_tolerance`)
+    are one station, as they are one node: a bearing 1e-9 m beside another adds no bay.
+    """
+    shaft_x = model.dofs.shaft_x
+    elements = model.design.mesh.shaft_elements if model.design is not None else max(shaft_x.size - 1, 1)
+    tolerance = merge_tolerance(float(shaft_x[-1] - shaft_x[0]), elements)
+    return bearing_bays([b.x_shaft for b in model.bearings], tolerance)
 
 
 def imbalance_loads(model: Model, placement: str | None = None, eccentricity: float | None = None) -> np.ndarray:
@@ -165,16 +205,37 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     * ``"mid_bay"``: a point force at each bay's midpoint, all in phase (one case);
     * ``"distributed"``: uniform over each bay (one case);
     * ``"worst"``: every combination of in-phase/anti-phase mid-bay forces (2^(nbays−1)
-      cases); the response is taken as the worst case.
+      cases, at most :data:`MAX_WORST_BAYS` bays); the response is taken as the worst case.
 
     Multiply by Ω² for the amplitude at speed Ω. Complex: ``Q_v = F``, ``Q_w = −iF``.
+
+    Parameters
+    ----------
+    placement : {"mid_bay", "distributed", "worst"} or None
+        Default: the design's ``loads.imbalance_placement``.
+    eccentricity : float or None
+        Mass eccentricity e_c [m], finite and >= 0; default: the design's.
+
+    Raises
+    ------
+    ValueError
+        For an unknown placement, a non-finite or negative eccentricity, or ``"worst"`` with
+        more than :data:`MAX_WORST_BAYS` bays (2^(bays−1) load cases).
     """
     loads = model.design.loads if model.design is not None else None
     placement = placement or (loads.imbalance_placement if loads else "mid_bay")
+    if placement not in IMBALANCE_PLACEMENTS:
+        raise ValueError(f"placement must be one of {', '.join(map(repr, IMBALANCE_PLACEMENTS))} (got {placement!r})")
     ecc = eccentricity if eccentricity is not None else (loads.eccentricity if loads else 0.0)
+    if isinstance(ecc, bool) or not (isinstance(ecc, (int, float, np.floating, np.integer)) and np.isfinite(ecc) and ecc >= 0):
+        raise ValueError(f"eccentricity must be a finite number >= 0 [m] (got {ecc!r})")
     bays = imbalance_bays(model)
     if not bays:
         bays = [(model.dofs.shaft_x[0], model.dofs.shaft_x[-1])]
+    if placement == "worst" and len(bays) > MAX_WORST_BAYS:
+        raise ValueError(f'placement "worst" enumerates 2^(bays-1) load cases: {len(bays)} bays give '
+                         f"2^{len(bays) - 1} (allowed: at most {MAX_WORST_BAYS} bays, or placement "
+                         '"mid_bay" / "distributed")')
     share = ecc * model.shaft_mass / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
     per_bay = []

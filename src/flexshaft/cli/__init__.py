@@ -1,4 +1,5 @@
-"""Command-line interface: ``flexshaft run | baseline | check | modes | stability | thermal | study``.
+"""Command-line interface: ``flexshaft run | baseline | check | modes | stability | thermal | runup |
+montecarlo | study``.
 
 Exit codes: 0 success; 2 a user error (bad design file, argument or output folder), with a
 message naming what to change and never a traceback; 3 ``flexshaft run --strict`` on a design
@@ -27,6 +28,7 @@ from flexshaft.cli.analysis import baseline, check, modes, stability, thermal
 from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, settings
 from flexshaft.cli.run import run
 from flexshaft.cli.study import study_app
+from flexshaft.cli.transient import montecarlo, runup
 
 __all__ = ["REQUIREMENT_FAILED", "app", "main"]
 
@@ -69,6 +71,8 @@ app.command("modes")(modes)
 app.command("stability")(stability)
 app.command("thermal")(thermal)
 app.command("run")(run)
+app.command("runup")(runup)
+app.command("montecarlo")(montecarlo)
 app.add_typer(study_app, name="study")
 app.command("compare")(__import__("flexshaft.cli.compare", fromlist=["compare"]).compare)
 

@@ -58,18 +58,28 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
     """Validate a design file and print a one-line summary (with --json: every problem found)."""
     from flexshaft.design import DesignError
 
+    import warnings
+
+    from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
+
     try:
         loaded = load_design_argument(design)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", ProblemSizeWarning)
+            check_problem_size(loaded.design, "run")  # refuses what a run would refuse
     except DesignError as exc:
         if as_json:
             print_json({"ok": False, "source": exc.source,
                         "problems": [{"path": p.path, "message": p.message} for p in exc.problems]})
         raise
+    notes = [str(w.message) for w in caught if issubclass(w.category, ProblemSizeWarning)]
     if as_json:
         print_json({"ok": True, "design": loaded.design.name, "source": loaded.source,
-                    "design_fingerprint": design_fingerprint(loaded.design)})
+                    "design_fingerprint": design_fingerprint(loaded.design), "warnings": notes})
         return
     typer.echo(f"ok: {plain(loaded.design.name)}")
+    for note in notes:
+        typer.echo(f"warning: {plain(note)}", err=True)
 
 
 @guarded

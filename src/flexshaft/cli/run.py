@@ -31,6 +31,7 @@ def run(
              "none.")] = Studies.report,
     strict: Annotated[bool, typer.Option(
         "--strict", help=f"Exit with code {EXIT_REQUIREMENT_FAILED} when a requirement fails.")] = False,
+    svg: Annotated[bool, typer.Option("--svg", help="Also write every figure as SVG (PNG always).")] = False,
 ) -> None:
     """Analyse a design (default: the embedded tuned design), check it against its requirements
     and write the report folder. Shows each stage and its time on a terminal."""
@@ -46,7 +47,7 @@ def run(
                                studies=None if studies is Studies.none else studies.value)
         progress.step("writing the report")
         page = write_run_report(results, folder, design_text=loaded.text, design_source=loaded.source,
-                                timings=dict(progress.timings))
+                                timings=dict(progress.timings), svg=svg)
     failed = strict and results.verdict is not None and not results.verdict.passed
     data = results_json(results)
     if as_json:

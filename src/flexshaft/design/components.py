@@ -18,21 +18,47 @@ from flexshaft.design.fields import (
     BearingDirection,
     Coefficients,
     DofName,
-    Finite,
     FrozenModel,
     Name,
-    NonNegative,
-    NonNegativeVector3,
-    Positive,
     Problems,
     SemiAxes,
-    Vector3,
     check_unique,
     format_number,
     format_value,
 )
 from flexshaft.design.layup import parse_layup
-from flexshaft.design.segments import ShaftSegment, Tube, check_layup
+from flexshaft.design.quantities import (
+    MAX_LAYUP_LENGTH,
+    MIN_SHAFT_LENGTH,
+    AirGap,
+    BackupGap,
+    Clearance,
+    CoilTurns,
+    Coordinate,
+    Current,
+    CurrentGain,
+    Damping,
+    DerivativeGain,
+    Diameter,
+    FilterFrequency,
+    FluxDensity,
+    ForceCapacity,
+    Inertia,
+    IntegralGain,
+    Mass,
+    MemberLength,
+    NegativeStiffness,
+    PoleArea,
+    ProportionalGain,
+    Station,
+    Stiffness,
+    WallThickness,
+)
+from flexshaft.design.segments import MAX_SEGMENTS, ShaftSegment, Tube, check_layup
+
+#: The ply layup as written in the design file (parsed by :func:`~flexshaft.design.layup.parse_layup`).
+Layup = Annotated[str, Field(strict=True, max_length=MAX_LAYUP_LENGTH,
+                             description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters")]
 
 __all__ = [
     "ActiveBearing",
@@ -86,16 +112,16 @@ class Shaft(FrozenModel):
         tube (docs/segmented-driveline.md).
     """
 
-    x_start: Finite
-    x_end: Finite
-    outer_diameter: Positive
-    wall_thickness: Positive
+    x_start: Station
+    x_end: Station
+    outer_diameter: Diameter
+    wall_thickness: WallThickness
     material: Name
-    layup: str | None = None
-    fixed_start: tuple[DofName, ...] = ()
-    fixed_end: tuple[DofName, ...] = ()
+    layup: Layup | None = None
+    fixed_start: tuple[DofName, ...] = Field(default=(), max_length=6)
+    fixed_end: tuple[DofName, ...] = Field(default=(), max_length=6)
     shear_deformation: StrictBool = False
-    segments: tuple[ShaftSegment, ...] = ()
+    segments: tuple[ShaftSegment, ...] = Field(default=(), max_length=MAX_SEGMENTS)
 
     @field_validator("layup", mode="after")
     @classmethod
@@ -109,6 +135,12 @@ class Shaft(FrozenModel):
             problems.add(
                 ("x_end",),
                 f"must be greater than x_start = {format_number(self.x_start)} m (got {format_value(self.x_end)})",
+            )
+        elif not self.x_end - self.x_start >= MIN_SHAFT_LENGTH:
+            problems.add(
+                ("x_end",),
+                f"gives a shaft length x_end - x_start = {format_number(self.x_end - self.x_start)} m "
+                f"(got {format_value(self.x_end)}; allowed: at least {MIN_SHAFT_LENGTH:g} m)",
             )
         if not self.wall_thickness < self.outer_diameter / 2.0:
             problems.add(
@@ -200,9 +232,9 @@ class EndMass(FrozenModel):
         Its own moments of inertia (I_xx, I_yy, I_zz) about its centre of mass [kg m²].
     """
 
-    mass: NonNegative
-    offset: Vector3
-    inertia: NonNegativeVector3 = ZERO3
+    mass: Mass
+    offset: tuple[Coordinate, Coordinate, Coordinate]
+    inertia: tuple[Inertia, Inertia, Inertia] = ZERO3
 
 
 class Tailboom(FrozenModel):
@@ -229,12 +261,12 @@ class Tailboom(FrozenModel):
         The lumped tail mass at the tip (``[tailboom.end_mass]``); none when omitted.
     """
 
-    length: Positive
+    length: MemberLength
     root_semi_axes: SemiAxes
     tip_semi_axes: SemiAxes
-    wall_thickness: Positive
+    wall_thickness: WallThickness
     material: Name
-    shaft_clearance: NonNegative
+    shaft_clearance: Clearance
     end_mass: EndMass | None = None
 
     @model_validator(mode="after")
@@ -289,10 +321,10 @@ class _BearingBase(FrozenModel):
     """
 
     name: Name
-    x: Finite
-    x_boom: Finite | None = None
-    offset: NonNegative | None = None
-    mass: NonNegative = 0.0
+    x: Station
+    x_boom: Station | None = None
+    offset: Clearance | None = None
+    mass: Mass = 0.0
 
     @property
     def boom_x(self) -> float:
@@ -321,8 +353,8 @@ class ContactBearing(_BearingBase):
 
     kind: Literal["contact"]
     role: Literal["hanger", "damper", "gearbox"] = "hanger"
-    stiffness: dict[BearingDirection, NonNegative]
-    damping: dict[BearingDirection, NonNegative] | None = None
+    stiffness: dict[BearingDirection, Stiffness]
+    damping: dict[BearingDirection, Damping] | None = None
 
     def stiffness_of(self, direction: BearingDirection) -> float:
         """Stiffness in one direction [N/m for u, v, w; N m/rad for beta, gamma]; omitted = 0."""
@@ -453,23 +485,24 @@ class ActiveBearing(_BearingBase):
     """
 
     kind: Literal["active"]
-    kp: NonNegative | None = None
-    kd: NonNegative | None = None
-    integral_gain: NonNegative | None = None
-    derivative_cutoff: Positive | None = None
+    kp: ProportionalGain | None = None
+    kd: DerivativeGain | None = None
+    integral_gain: IntegralGain | None = None
+    derivative_cutoff: FilterFrequency | None = None
     controller: Controller | None = None
-    gap: Positive | None = None
-    force_capacity: Positive | None = None
-    ks: NonNegative | None = None
-    ki: Positive | None = None
-    amplifier_bandwidth: Positive | None = None
-    sensor_offset: Finite = 0.0
-    air_gap: Positive | None = None
-    bias_current: Positive | None = None
-    coil_turns: Positive | None = None
-    pole_area: Positive | None = None
-    pole_angle: Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=90.0)] = 22.5
-    saturation_flux_density: Positive | None = None
+    gap: BackupGap | None = None
+    force_capacity: ForceCapacity | None = None
+    ks: NegativeStiffness | None = None
+    ki: CurrentGain | None = None
+    amplifier_bandwidth: FilterFrequency | None = None
+    sensor_offset: Coordinate = 0.0
+    air_gap: AirGap | None = None
+    bias_current: Current | None = None
+    coil_turns: CoilTurns | None = None
+    pole_area: PoleArea | None = None
+    pole_angle: Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=90.0, description=(
+        "angle of the poles to the control axis, 0 to 90 deg"), json_schema_extra={"unit": "deg"})] = 22.5
+    saturation_flux_density: FluxDensity | None = None
 
     @model_validator(mode="before")
     @classmethod
@@ -586,7 +619,7 @@ class Disk(FrozenModel):
     """
 
     name: Name
-    x: Finite
-    mass: NonNegative
-    diametral_inertia: NonNegative = 0.0
-    polar_inertia: NonNegative = 0.0
+    x: Station
+    mass: Mass
+    diametral_inertia: Inertia = 0.0
+    polar_inertia: Inertia = 0.0

@@ -20,9 +20,17 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, ConfigDict, Field
 from pydantic_core import PydanticCustomError
 
+from flexshaft.design.quantities import (
+    MAX_DESIGN_NAME_LENGTH,
+    MAX_NAME_LENGTH,
+    ControllerCoefficient,
+    SemiAxis,
+)
+
 __all__ = [
     "BearingDirection",
     "Coefficients",
+    "DesignName",
     "DofName",
     "ElementCount",
     "FieldPath",
@@ -51,13 +59,18 @@ __all__ = [
 Finite = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0)]
 NonNegative = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0)]
-LossFactor = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0)]
+LossFactor = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0, description=(
+    "hysteretic loss factor η in [0, 1) (polyurethane matrices reach 0.1-0.3)"), json_schema_extra={"unit": "-"})]
 Vector3 = tuple[Finite, Finite, Finite]
 NonNegativeVector3 = tuple[NonNegative, NonNegative, NonNegative]
-SemiAxes = tuple[Positive, Positive]
-Name = Annotated[str, Field(strict=True, min_length=1)]
-ElementCount = Annotated[int, Field(strict=True, ge=1, le=2000)]
-Coefficients = Annotated[tuple[Finite, ...], Field(min_length=1, max_length=21)]
+SemiAxes = tuple[SemiAxis, SemiAxis]
+Name = Annotated[str, Field(strict=True, min_length=1, max_length=MAX_NAME_LENGTH,
+                            description=f"identifier, 1 to {MAX_NAME_LENGTH} characters")]
+DesignName = Annotated[str, Field(strict=True, max_length=MAX_DESIGN_NAME_LENGTH,
+                                  description=f"title of the design, at most {MAX_DESIGN_NAME_LENGTH} characters")]
+ElementCount = Annotated[int, Field(strict=True, ge=1, le=2000, description="approximate element count, 1 to 2000 "
+                                    "(the problem-size estimate of flexshaft.assembly.size bounds the total)")]
+Coefficients = Annotated[tuple[ControllerCoefficient, ...], Field(min_length=1, max_length=21)]
 
 #: Degree-of-freedom names of a shaft node, in the order of docs/model.md (coordinates and DOFs).
 DofName = Literal["u", "v", "w", "theta", "beta", "gamma"]

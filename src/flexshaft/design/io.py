@@ -28,6 +28,7 @@ from typing import Any, Literal, Union
 
 from pydantic import BaseModel, ValidationError
 
+from flexshaft.design.reading import read_design_bytes, text_problems
 from flexshaft.design.schema import (
     LAYUP_ERROR_TYPE,
     PROBLEMS_ERROR_TYPE,
@@ -126,6 +127,9 @@ def loads_design(text: str | bytes, source: str = "<string>") -> Design:
         text = _decode(bytes(text), source)
     if not isinstance(text, str):
         raise DesignError([Problem(source, f"expected TOML text, got {type(text).__name__}")], source)
+    refused = text_problems(text)
+    if refused:
+        raise DesignError([Problem(source, reason) for reason in refused], source)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -138,25 +142,30 @@ def loads_design(text: str | bytes, source: str = "<string>") -> Design:
 def load_design(path: str | os.PathLike[str]) -> Design:
     """Read, parse and validate a design file [TOML, UTF-8].
 
+    Only a regular file of at most 1 MB is read (:mod:`flexshaft.design.reading`: a device such
+    as ``/dev/zero`` or a FIFO is refused without reading or blocking).
+
     Raises
     ------
     DesignError
-        When the file cannot be read, is not UTF-8 text, is not valid TOML or breaks the schema.
+        When the file cannot be read, is not a regular file, is too large, is not UTF-8 text,
+        is not valid TOML or breaks the schema.
     """
     try:
         source = os.fsdecode(path)
     except TypeError:
         raise DesignError([Problem("<path>", f"expected a file path, got {format_value(path)}")]) from None
     try:
-        with open(path, "rb") as file:
-            raw = file.read()
+        raw = read_design_bytes(path)
     except FileNotFoundError:
         raise DesignError([Problem(source, "no such design file")], source) from None
     except IsADirectoryError:
         raise DesignError([Problem(source, "is a directory, not a design file")], source) from None
     except PermissionError:
         raise DesignError([Problem(source, "permission denied")], source) from None
-    except (OSError, ValueError) as error:
+    except ValueError as error:  # not a regular file, too large
+        raise DesignError([Problem(source, str(error))], source) from None
+    except OSError as error:
         raise DesignError([Problem(source, f"cannot read the file ({error})")], source) from None
     return loads_design(_decode(raw, source), source)
 
@@ -275,8 +284,21 @@ def _plain(value: Any) -> Any:
     if isinstance(value, (list, tuple)):
         return [_plain(item) for item in value]
     if type(value).__module__ == "numpy" and hasattr(value, "tolist"):
-        return _plain(value.tolist())
+        plain = value.tolist()
+        if type(plain).__module__ == "numpy":  # np.longdouble.tolist() is itself: keep its float value
+            return _numpy_scalar(plain)
+        return _plain(plain)
     return copy.deepcopy(value)
+
+
+def _numpy_scalar(value: Any) -> Any:
+    """A Python number for a numpy scalar that ``tolist`` leaves as numpy (extended precision)."""
+    kind = getattr(getattr(value, "dtype", None), "kind", "")
+    if kind == "f":
+        return float(value)
+    if kind == "c":
+        return complex(value)
+    return value  # left to the schema, which names the field and the type
 
 
 _PATH_TOKEN = re.compile(r'(?P<key>[^.\[\]"\s]+)|"(?P<quoted>[^"]*)"|\[\s*(?P<index>\d+)\s*\]|(?P<dot>\.)')
@@ -359,6 +381,7 @@ class _Located:
     parent: Any  # model class or container type holding the location
     union: Any  # tagged union of models found at the location, if any
     keys: tuple[Any, ...]  # the location in the input data (union tags dropped)
+    limits: dict[str, Any]  # bounds (ge, gt, le, lt) and unit of a number at the location
 
 
 def _strip(annotation: Any) -> Any:
@@ -400,6 +423,7 @@ def _locate(loc: tuple[Any, ...]) -> _Located:
     annotation: Any = Design
     parent: Any = None
     keys: list[Any] = []
+    field_info: Any = None  # the model field's FieldInfo when the last step was a model field
     for part in loc:
         current = _strip(annotation)
         union = _union_models(current)
@@ -413,6 +437,7 @@ def _locate(loc: tuple[Any, ...]) -> _Located:
             continue
         parent = current
         keys.append(part)
+        field_info = None
         if isinstance(part, int):
             path += f"[{part}]"
             args = typing.get_args(current)
@@ -425,14 +450,55 @@ def _locate(loc: tuple[Any, ...]) -> _Located:
         key = str(part)
         path += ("." if path else "") + _key_text(key)
         if _is_model(current):
-            field = current.model_fields.get(key)
-            annotation = None if field is None else field.annotation
+            field_info = current.model_fields.get(key)
+            annotation = None if field_info is None else field_info.annotation
         elif typing.get_origin(current) is dict:
             annotation = typing.get_args(current)[1]
         else:
             annotation = None
     final = _strip(annotation)
-    return _Located(path, final, parent, final if _union_models(final) else None, tuple(keys))
+    limits = _limits(field_info, annotation)
+    return _Located(path, final, parent, final if _union_models(final) else None, tuple(keys), limits)
+
+
+def _limits(field_info: Any, annotation: Any) -> dict[str, Any]:
+    """Bounds (``ge``, ``gt``, ``le``, ``lt``) and ``unit`` of a number field, from its FieldInfo
+    and from the Annotated metadata of its (optional) type."""
+    infos = [field_info] if field_info is not None else []
+    while True:
+        origin = typing.get_origin(annotation)
+        if origin is typing.Annotated:
+            args = typing.get_args(annotation)
+            infos += [arg for arg in args[1:] if hasattr(arg, "metadata")]
+            annotation = args[0]
+        elif origin in (Union, types.UnionType):
+            members = [arg for arg in typing.get_args(annotation) if arg is not type(None)]
+            if len(members) != 1:
+                break
+            annotation = members[0]
+        else:
+            break
+    limits: dict[str, Any] = {}
+    for info in infos:
+        for constraint in info.metadata:
+            for key in ("ge", "gt", "le", "lt"):
+                if getattr(constraint, key, None) is not None:
+                    limits[key] = getattr(constraint, key)
+        extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
+        if "unit" in extra:
+            limits["unit"] = extra["unit"]
+    return limits
+
+
+def _allowed_range(limits: dict[str, Any]) -> str:
+    """``"; allowed: [1e-05, 1] m"`` for a number bounded on both sides, else empty."""
+    low = ("[", limits["ge"]) if "ge" in limits else ("(", limits["gt"]) if "gt" in limits else None
+    high = ("]", limits["le"]) if "le" in limits else (")", limits["lt"]) if "lt" in limits else None
+    if low is None or high is None:
+        return ""
+    unit = limits.get("unit", "-")
+    unit = "" if unit == "-" else f" {unit}"
+    return f"; allowed: {low[0]}{low[1]:g}, {high[1]:g}{high[0]}{unit} (see docs/limits.md)"
 
 
 def _describe_type(annotation: Any) -> str:
@@ -546,14 +612,21 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
     if kind in comparisons:
         key, symbol = comparisons[kind]
         bound = ctx.get(key)
+        number = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if kind == "greater_than_equal" and number and isinstance(bound, (int, float)) and value <= 0 < bound:
+            symbol, bound = ">", 0  # say first that the quantity is positive; the range follows
         shown = f"{bound:g}" if isinstance(bound, (int, float)) else format_value(bound)
-        return Problem(path, f"must be {symbol} {shown} (got {_got(value)})")
+        return Problem(path, f"must be {symbol} {shown} (got {_got(value)}){_allowed_range(located.limits)}")
     if kind == "bool_type":
         return Problem(path, f"must be true or false (got {_got(value)})")
     if kind == "string_type":
         return Problem(path, f"must be a string (got {_got(value)})")
     if kind == "string_too_short":
         return Problem(path, f"must not be empty (got {_got(value)})")
+    if kind == "string_too_long":
+        length = len(value) if isinstance(value, str) else "?"
+        return Problem(path, f"is {length:,} characters long (got {_got(value)}; allowed: at most "
+                             f"{ctx.get('max_length')} characters)")
     if kind == "literal_error":
         annotation = located.annotation
         if typing.get_origin(annotation) is Literal:

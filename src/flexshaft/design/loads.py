@@ -13,15 +13,24 @@ from pydantic import Field, model_validator
 
 from flexshaft.design.fields import (
     ZERO3,
-    Finite,
     FrozenModel,
     ImbalancePlacement,
     Name,
-    NonNegative,
     Problems,
-    Vector3,
     format_number,
     format_value,
+)
+from flexshaft.design.quantities import (
+    MAX_LINE_LOADS,
+    MAX_POINT_LOADS,
+    MAX_TORQUE,
+    Eccentricity,
+    Force,
+    ForcePerLength,
+    LoadFactor,
+    Moment,
+    Power,
+    Station,
 )
 from flexshaft.units import rpm_to_rad_s
 
@@ -31,8 +40,13 @@ __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 #: drivelines run at 3,000-8,000 rev/min and a 0.1 m shaft at 10^6 rev/min would have a surface
 #: speed of 5 km/s; far larger values only overflow the gyroscopic matrix Ω G to inf/nan.
 MAX_SPEED_RPM = 1.0e6
-SpeedRpm = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=MAX_SPEED_RPM)]
-SpeedRadS = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=rpm_to_rad_s(MAX_SPEED_RPM))]
+SpeedRpm = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=MAX_SPEED_RPM, description=(
+    "shaft speed from 0 to 1e6 rev/min (a 0.1 m shaft at 1e6 rev/min has a surface speed of 5 km/s)"),
+    json_schema_extra={"unit": "rev/min"})]
+SpeedRadS = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=rpm_to_rad_s(MAX_SPEED_RPM),
+                                   description="shaft speed from 0 to 1e6 rev/min expressed in rad/s",
+                                   json_schema_extra={"unit": "rad/s"})]
+
 
 
 class Operating(FrozenModel):
@@ -50,7 +64,7 @@ class Operating(FrozenModel):
 
     speed_rpm: SpeedRpm | None = None
     speed: SpeedRadS | None = None
-    power: NonNegative
+    power: Power
 
     @model_validator(mode="after")
     def _check(self) -> Operating:
@@ -67,6 +81,13 @@ class Operating(FrozenModel):
                 ("power",),
                 f"must be 0 when the speed is 0, the torque P/Ω would be infinite "
                 f"(got {format_value(self.power)})",
+            )
+        elif self.power > MAX_TORQUE * self.speed_rad_s:
+            problems.add(
+                ("power",),
+                f"gives a torque P/Ω = {format_number(self.power / self.speed_rad_s)} N m at "
+                f"Ω = {format_number(self.speed_rad_s)} rad/s (got {format_value(self.power)}; allowed: a torque of "
+                f"at most {MAX_TORQUE:g} N m, i.e. power <= {format_number(MAX_TORQUE * self.speed_rad_s)} W)",
             )
         problems.raise_if_any()
         return self
@@ -104,9 +125,9 @@ class PointLoad(FrozenModel):
 
     name: Name
     on: Literal["end_mass", "boom", "shaft"]
-    x: Finite | None = None
-    force: Vector3
-    moment: Vector3 = ZERO3
+    x: Station | None = None
+    force: tuple[Force, Force, Force]
+    moment: tuple[Moment, Moment, Moment] = ZERO3
 
     @model_validator(mode="after")
     def _check(self) -> PointLoad:
@@ -138,9 +159,9 @@ class LineLoad(FrozenModel):
 
     name: Name
     on: Literal["boom", "shaft"]
-    x_start: Finite
-    x_end: Finite
-    force_per_length: Vector3
+    x_start: Station
+    x_end: Station
+    force_per_length: tuple[ForcePerLength, ForcePerLength, ForcePerLength]
 
     @model_validator(mode="after")
     def _check(self) -> LineLoad:
@@ -174,8 +195,8 @@ class Loads(FrozenModel):
         Static uniform line loads (``[[loads.line]]``).
     """
 
-    eccentricity: NonNegative = 0.0
+    eccentricity: Eccentricity = 0.0
     imbalance_placement: ImbalancePlacement = "mid_bay"
-    load_factor: Vector3 = ZERO3
-    point: tuple[PointLoad, ...] = ()
-    line: tuple[LineLoad, ...] = ()
+    load_factor: tuple[LoadFactor, LoadFactor, LoadFactor] = ZERO3
+    point: tuple[PointLoad, ...] = Field(default=(), max_length=MAX_POINT_LOADS)
+    line: tuple[LineLoad, ...] = Field(default=(), max_length=MAX_LINE_LOADS)

@@ -13,14 +13,18 @@ from typing import Annotated, Literal, Union
 from pydantic import Field, model_validator
 
 from flexshaft.design.fields import (
-    Finite,
     FrozenModel,
     LossFactor,
-    NonNegative,
-    Positive,
     Problems,
     format_number,
     format_value,
+)
+from flexshaft.design.quantities import (
+    Density,
+    Modulus,
+    PoissonRatio,
+    Strength,
+    TsaiWuInteraction,
 )
 from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
@@ -48,8 +52,18 @@ DEFAULT_STRESS_FREE_TEMPERATURE_C = 100.0
 #: Plausible bounds of a thermal expansion coefficient [1/K]: catches values given in ppm/K.
 _ALPHA_LIMIT = 1e-3
 
-ShearCorrection = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=1.0)]
-Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0)]
+ShearCorrection = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=1.0, description=(
+    "first-order shear correction factor k in (0, 1]"), json_schema_extra={"unit": "-"})]
+Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0, description=(
+    "temperature above absolute zero and at most 400 °C (polymer matrices decompose near 300 °C)"),
+    json_schema_extra={"unit": "degC"})]
+#: Thermal expansion [1/K]: finite here; the range (±1e-3 1/K, with a hint for values in ppm/K)
+#: is checked by :meth:`Lamina._check`. The JSON schema shows the range of
+#: :data:`~flexshaft.design.quantities.ExpansionCoefficient`.
+_Expansion = Annotated[float, Field(
+    strict=True, allow_inf_nan=False,
+    description="thermal expansion coefficient within ±1e-3 1/K (polymers 2e-4; a value in ppm/K needs the factor 1e-6)",
+    json_schema_extra={"unit": "1/K", "minimum": -_ALPHA_LIMIT, "maximum": _ALPHA_LIMIT})]
 
 
 class Lamina(FrozenModel):
@@ -123,25 +137,25 @@ class Lamina(FrozenModel):
     """
 
     kind: Literal["lamina"]
-    density: Positive
-    E_L: Positive
-    E_T: Positive
-    G_LT: Positive
-    nu_LT: NonNegative
+    density: Density
+    E_L: Modulus
+    E_T: Modulus
+    G_LT: Modulus
+    nu_LT: PoissonRatio
     loss_E_L: LossFactor = 0.0
     loss_E_T: LossFactor = 0.0
     loss_G_LT: LossFactor = 0.0
-    X_t: Positive
-    X_c: Positive
-    Y_t: Positive
-    Y_c: Positive
-    S: Positive
-    F12: Finite | None = None
-    G_13: Positive | None = None
-    G_23: Positive | None = None
+    X_t: Strength
+    X_c: Strength
+    Y_t: Strength
+    Y_c: Strength
+    S: Strength
+    F12: TsaiWuInteraction | None = None
+    G_13: Modulus | None = None
+    G_23: Modulus | None = None
     shear_correction: ShearCorrection = DEFAULT_SHEAR_CORRECTION
-    alpha_L: Finite = DEFAULT_ALPHA_L
-    alpha_T: Finite = DEFAULT_ALPHA_T
+    alpha_L: _Expansion = DEFAULT_ALPHA_L
+    alpha_T: _Expansion = DEFAULT_ALPHA_T
     stress_free_temperature_c: Celsius = DEFAULT_STRESS_FREE_TEMPERATURE_C
 
     @model_validator(mode="after")
@@ -222,13 +236,13 @@ class Isotropic(FrozenModel):
     """
 
     kind: Literal["isotropic"]
-    E: Positive
-    G: Positive
-    density: Positive
+    E: Modulus
+    G: Modulus
+    density: Density
     loss_factor: LossFactor = 0.0
-    yield_strength: Positive | None = None
-    ultimate_strength: Positive | None = None
-    fatigue_strength: Positive | None = None
+    yield_strength: Strength | None = None
+    ultimate_strength: Strength | None = None
+    fatigue_strength: Strength | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Isotropic:

@@ -19,7 +19,8 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from flexshaft.design.fields import FrozenModel, Positive, Problems, format_value
+from flexshaft.design.fields import FrozenModel, Problems, format_value
+from flexshaft.design.quantities import Deflection, SafetyFactor
 
 __all__ = ["DEFAULT_MIN_LOG_DECREMENT", "Requirements", "log_decrement_from_damping_ratio"]
 
@@ -27,9 +28,12 @@ __all__ = ["DEFAULT_MIN_LOG_DECREMENT", "Requirements", "log_decrement_from_damp
 #: requirement is given.
 DEFAULT_MIN_LOG_DECREMENT = 0.1
 
-Margin = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=10.0)]
-LogDecrement = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=100.0)]
-DampingRatio = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0)]
+Margin = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=10.0, description=(
+    "margin as a fraction of the operating speed, 0 to 10"), json_schema_extra={"unit": "-"})]
+LogDecrement = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=100.0, description=(
+    "logarithmic decrement, 0 to 100"), json_schema_extra={"unit": "-"})]
+DampingRatio = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0, description=(
+    "damping ratio in [0, 1)"), json_schema_extra={"unit": "-"})]
 
 
 def log_decrement_from_damping_ratio(damping_ratio: float) -> float:
@@ -63,13 +67,13 @@ class Requirements(FrozenModel):
         no limit (the check is reported as not evaluated).
     """
 
-    min_safety_factor: Positive = 1.5
-    min_buckling_safety_factor: Positive = 2.0
+    min_safety_factor: SafetyFactor = 1.5
+    min_buckling_safety_factor: SafetyFactor = 2.0
     min_onset_margin: Margin = 0.15
     min_log_decrement: LogDecrement | None = None
     min_damping_ratio: DampingRatio | None = None
     separation: Literal["api684", "off"] = "api684"
-    max_spinup_deflection: Positive | None = None
+    max_spinup_deflection: Deflection | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Requirements:

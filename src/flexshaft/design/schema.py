@@ -44,11 +44,13 @@ from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
     PROBLEMS_ERROR_TYPE,
     BearingDirection,
+    DesignName,
     DofName,
     ElementCount,
     FieldPath,
     FrozenModel,
     ImbalancePlacement,
+    Name,
     Problems,
     check_unique,
     format_number,
@@ -57,8 +59,9 @@ from flexshaft.design.fields import (
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
+from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
-from flexshaft.design.segments import Coupling, ShaftSegment, Tube
+from flexshaft.design.segments import MAX_COUPLINGS, Coupling, ShaftSegment, Tube
 
 __all__ = [
     "Analysis",
@@ -171,13 +174,13 @@ class Design(FrozenModel):
         Limits of the requirements verdict (``[requirements]``).
     """
 
-    name: str = Field(strict=True)
-    materials: dict[str, Material]
+    name: DesignName
+    materials: dict[Name, Material] = Field(max_length=MAX_MATERIALS)
     shaft: Shaft
     tailboom: Tailboom | None = None
-    bearings: tuple[Bearing, ...] = Field(min_length=1)
-    disks: tuple[Disk, ...] = ()
-    couplings: tuple[Coupling, ...] = ()
+    bearings: tuple[Bearing, ...] = Field(min_length=1, max_length=MAX_BEARINGS)
+    disks: tuple[Disk, ...] = Field(default=(), max_length=MAX_DISKS)
+    couplings: tuple[Coupling, ...] = Field(default=(), max_length=MAX_COUPLINGS)
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()

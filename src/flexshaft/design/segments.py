@@ -28,28 +28,45 @@ from pydantic_core import PydanticCustomError
 
 from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
-    Finite,
     FrozenModel,
     Name,
-    NonNegative,
-    Positive,
     Problems,
     format_number,
     format_value,
 )
 from flexshaft.design.layup import parse_layup
+from flexshaft.design.quantities import (
+    MAX_LAYUP_LENGTH,
+    Diameter,
+    Inertia,
+    Mass,
+    Station,
+    Stiffness,
+    WallThickness,
+    quantity,
+)
 
-__all__ = ["RIGID", "Coupling", "CouplingStiffness", "ShaftSegment", "Tube", "check_layup"]
+__all__ = ["MAX_COUPLINGS", "MAX_SEGMENTS", "RIGID", "Coupling", "CouplingStiffness", "ShaftSegment", "Tube",
+           "check_layup"]
 
 #: The value of a coupling stiffness that makes the joint rigid in that direction.
 RIGID = "rigid"
+#: Most entries of ``[[shaft.segments]]`` and of ``[[couplings]]``.
+MAX_SEGMENTS = 256
+MAX_COUPLINGS = 255
 
-#: A coupling stiffness: a number [N/m or N m/rad] >= 0, or ``"rigid"``.
-CouplingStiffness = Union[NonNegative, Literal["rigid"]]
+#: A coupling stiffness: a number [N/m or N m/rad] in [0, 1e12], or ``"rigid"``.
+CouplingStiffness = Union[Stiffness, Literal["rigid"]]
 #: A torsional stiffness must carry the torque: > 0 or ``"rigid"``.
-TorsionalStiffness = Union[Positive, Literal["rigid"]]
+TorsionalStiffness = Union[
+    quantity("N m/rad", "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)", gt=0.0, le=1e12),
+    Literal["rigid"],
+]
 #: An allowable misalignment angle [deg], in (0, 90).
-Angle = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, lt=90.0)]
+Angle = quantity("deg", "misalignment angle above 0 and below 90 deg", gt=0.0, lt=90.0)
+#: A layup string, as ``[shaft] layup``.
+Layup = Annotated[str, Field(strict=True, max_length=MAX_LAYUP_LENGTH,
+                             description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters")]
 
 
 def check_layup(layup: str | None) -> str | None:
@@ -87,12 +104,12 @@ class ShaftSegment(FrozenModel):
     """
 
     name: Name
-    x_start: Finite
-    x_end: Finite
-    outer_diameter: Positive | None = None
-    wall_thickness: Positive | None = None
+    x_start: Station
+    x_end: Station
+    outer_diameter: Diameter | None = None
+    wall_thickness: WallThickness | None = None
     material: Name | None = None
-    layup: str | None = None
+    layup: Layup | None = None
 
     @field_validator("layup", mode="after")
     @classmethod
@@ -175,12 +192,12 @@ class Coupling(FrozenModel):
     """
 
     name: Name
-    x: Finite
+    x: Station
     angular_stiffness: CouplingStiffness
     axial_stiffness: CouplingStiffness
     torsional_stiffness: TorsionalStiffness
     lateral_stiffness: CouplingStiffness = RIGID
-    mass: NonNegative = 0.0
-    diametral_inertia: NonNegative = 0.0
-    polar_inertia: NonNegative = 0.0
+    mass: Mass = 0.0
+    diametral_inertia: Inertia = 0.0
+    polar_inertia: Inertia = 0.0
     allowable_angle_deg: Angle | None = None

@@ -9,19 +9,28 @@ model is not a thermal choice: it is the design's ``[analysis] internal_damping`
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Literal
 
-from pydantic import Field
-
-from flexshaft.design.fields import FrozenModel, Positive
+from flexshaft.design.fields import FrozenModel
+from flexshaft.design.quantities import quantity
 from flexshaft.units import ZERO_CELSIUS
 
 __all__ = ["Thermal", "BoomConvection", "ShaftConvection"]
 
-Fraction = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=1.0)]
-Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0)]
-Zenith = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=-90.0, le=90.0)]
-Conductivity = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=2000.0)]
+Fraction = quantity("-", "fraction from 0 to 1", ge=0.0, le=1.0)
+Celsius = quantity("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+Zenith = quantity("deg", "solar zenith angle within ±90 deg", ge=-90.0, le=90.0)
+Conductivity = quantity("W/(m K)", "thermal conductivity from 1e-3 (below an aerogel, 0.013) to 2000 W/(m K) "
+                        "(diamond)", ge=1e-3, le=2000.0)
+RotorcraftMass = quantity("kg", "rotorcraft mass from 1 kg to 1e6 kg (the heaviest helicopter weighs 56 t)",
+                          ge=1.0, le=1e6)
+RotorRadius = quantity("m", "main-rotor radius from 0.1 m to 100 m (the largest rotor, Mi-12, is 17.5 m)",
+                       ge=0.1, le=100.0)
+SolarConstant = quantity("W/m^2", "solar irradiance above 0 and at most 1e4 W/m² (1361 at the Earth)", gt=0.0, le=1e4)
+AirDensity = quantity("kg/m^3", "air density from 1e-3 to 100 kg/m³ (1.225 at sea level)", ge=1e-3, le=100.0)
+TemperatureScale = quantity("K", "temperature scale θ of the matrix law exp(±ΔT/θ) from 5 K to 1e6 K: over the "
+                            "673 K span of allowed temperatures the factor stays below 1e59 (a glass transition "
+                            "takes about 10 K per factor e)", ge=5.0, le=1e6)
 
 #: Forced-convection correlation of the hovering tailboom (cross-flow over a cylinder).
 BoomConvection = Literal["hilpert", "churchill_bernstein"]
@@ -76,15 +85,15 @@ class Thermal(FrozenModel):
         the self-heating has no equilibrium below it).
     """
 
-    rotorcraft_mass: Positive = 6838.0
-    rotor_radius: Positive = 7.315
+    rotorcraft_mass: RotorcraftMass = 6838.0
+    rotor_radius: RotorRadius = 7.315
     emissivity: Fraction = 0.97
     solar_absorptivity: Fraction | None = None
-    solar_constant: Positive = 1353.0
+    solar_constant: SolarConstant = 1353.0
     solar_fraction: Fraction = 1.0
     solar_zenith_deg: Zenith = 0.0
     sky_temperature_c: Celsius = 11.85  # 285 K
-    air_density: Positive = 1.225
+    air_density: AirDensity = 1.225
     ambient_temperature_c: Celsius = 25.6
     solar_area_fraction: Fraction = 0.69
     boom_convection: BoomConvection = "hilpert"
@@ -92,6 +101,6 @@ class Thermal(FrozenModel):
     fibre_conductivity: Conductivity = 5.0
     transverse_conductivity: Conductivity = 0.5
     matrix_reference_temperature_c: Celsius = 20.0
-    matrix_modulus_decay: Positive = 40.0
-    matrix_loss_growth: Positive = 60.0
+    matrix_modulus_decay: TemperatureScale = 40.0
+    matrix_loss_growth: TemperatureScale = 60.0
     allowable_temperature_c: Celsius = 100.0

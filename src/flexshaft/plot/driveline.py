@@ -1,33 +1,26 @@
-"""Report figures for ``flexshaft run``: Campbell diagram, responses, shapes, safety factor.
+"""Report figures for ``flexshaft run``: responses over speed, safety factor (and, re-exported
+here, the Campbell diagram, shapes and :func:`save_figure`).
 
-Every function takes plain numpy arrays (SI units, speeds in rpm, frequencies in Hz) and
-returns a :class:`matplotlib.figure.Figure`. Lengths are given in metres and drawn in
-millimetres; this module is the edge where that conversion happens. matplotlib is imported
-inside the functions (Agg backend, no pyplot state), so importing this module stays light.
-The module knows nothing of models or analyses.
+Every function takes plain numpy arrays (SI units, speeds in rpm, frequencies in Hz) and an
+optional ``ax``, and returns a :class:`matplotlib.figure.Figure`. Lengths are given in metres
+and drawn in millimetres; this module is the edge where that conversion happens. matplotlib is
+imported inside the functions (Agg backend, no pyplot state), so importing this module stays
+light. The module knows nothing of models or analyses.
 """
 
 from __future__ import annotations
 
-import sys
-from collections.abc import Mapping, Sequence
-from pathlib import Path
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.plot.style import (
-    MM_PER_M,
-    RPM_PER_HZ,
-    WHIRL_LINESTYLE,
-    magnitude,
-    mark_operating,
-    new_figure,
-    styled,
-    vector,
-)
+from flexshaft.plot.campbell import campbell_figure
+from flexshaft.plot.output import save_figure
+from flexshaft.plot.response import bode_figure, orbit_figure
 from flexshaft.plot.shapes import deflected_shape_figure, mode_shapes_figure
+from flexshaft.plot.style import MM_PER_M, log_scale, magnitude, mark_operating, new_figure, styled, vector
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -39,101 +32,11 @@ __all__ = [
     "safety_factor_figure",
     "mode_shapes_figure",
     "actuator_figure",
+    "bode_figure",
+    "orbit_figure",
+    "load_shares_figure",
     "save_figure",
 ]
-
-
-@styled
-def campbell_figure(
-    speeds_rpm: ArrayLike,
-    frequencies_hz: ArrayLike,
-    whirl: ArrayLike,
-    critical_speeds_rpm: Sequence[float] = (),
-    operating_rpm: float | None = None,
-    harmonics: Sequence[float] = (1,),
-) -> Figure:
-    """Campbell diagram: tracked natural frequencies against spin speed.
-
-    Parameters
-    ----------
-    speeds_rpm : array_like, shape (n_speeds,)
-        Spin speeds [rpm].
-    frequencies_hz : array_like, shape (n_speeds, n_modes)
-        Damped natural frequency of each tracked mode [Hz]; NaN where a mode is not found.
-    whirl : array_like of str, shape (n_speeds, n_modes)
-        "forward" (solid line), "backward" (dashed) or "planar" (dotted) at each point.
-    critical_speeds_rpm : sequence of float
-        Critical speeds [rpm], marked on the 1x excitation line (f = Omega / 60).
-    operating_rpm : float, optional
-        Operating speed [rpm], drawn as a vertical line.
-    harmonics : sequence of float
-        Orders k of the excitation lines f = k Omega / 60 [Hz].
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-    """
-    from matplotlib.lines import Line2D
-
-    speeds = vector("speeds_rpm", speeds_rpm)
-    freqs = np.asarray(frequencies_hz, dtype=float)
-    freqs = freqs.reshape(-1, 1) if freqs.ndim == 1 else freqs
-    labels = np.asarray(whirl, dtype=str).reshape(freqs.shape) if np.size(whirl) == freqs.size else None
-    if freqs.ndim != 2 or freqs.shape[0] != speeds.size or labels is None:
-        raise ValueError(
-            f"frequencies_hz and whirl must both have shape (n_speeds={speeds.size}, n_modes); "
-            f"got {np.shape(frequencies_hz)} and {np.shape(whirl)}"
-        )
-    unknown = set(np.unique(labels)) - set(WHIRL_LINESTYLE)
-    if unknown:
-        raise ValueError(f"whirl: unknown labels {sorted(unknown)}; allowed {sorted(WHIRL_LINESTYLE)}")
-
-    fig, axes = new_figure(1, 1, (8.0, 5.5))
-    ax = axes[0, 0]
-    import matplotlib
-
-    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]  # tab10, set by styled()
-    for mode in range(freqs.shape[1]):
-        color = colors[mode % len(colors)]
-        f, w = freqs[:, mode], labels[:, mode]
-        start = 0
-        for stop in range(1, speeds.size + 1):
-            if stop == speeds.size or w[stop] != w[start]:
-                end = min(stop + 1, speeds.size)  # one point of overlap keeps the curve continuous
-                ax.plot(speeds[start:end], f[start:end], color=color, ls=WHIRL_LINESTYLE[w[start]])
-                start = stop
-        finite = np.flatnonzero(np.isfinite(f))
-        if finite.size:
-            ax.annotate(str(mode + 1), (speeds[finite[-1]], f[finite[-1]]), xytext=(3, 0),
-                        textcoords="offset points", color=color, fontsize=7.5, va="center")
-
-    f_max = np.nanmax(freqs) if np.isfinite(freqs).any() else 1.0
-    span = np.array([speeds.min(), speeds.max()])
-    handles = [Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[name],
-                      label="torsional / axial (no 1× critical)" if name == "none" else f"{name} whirl")
-               for name in WHIRL_LINESTYLE if name in labels]
-    for k, order in enumerate(harmonics):
-        (line,) = ax.plot(span, order * span / RPM_PER_HZ, color="0.15", lw=1.0,
-                          ls=(0, (6, 2, 1, 2)) if k else "-", alpha=0.8, label=f"{order:g}× excitation")
-        handles.append(line)
-    critical = vector("critical_speeds_rpm", critical_speeds_rpm)
-    if critical.size:
-        (marker,) = ax.plot(critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.4, ms=8,
-                            label="critical speed")
-        handles.append(marker)
-        for rpm in critical:
-            ax.annotate(f"{rpm:.0f} rpm", (rpm, rpm / RPM_PER_HZ), xytext=(5, -12),
-                        textcoords="offset points", fontsize=8)
-    mark_operating(ax, operating_rpm)
-    if operating_rpm is not None:
-        handles.append(ax.get_lines()[-1])
-    ax.set_xlim(span[0], span[1])
-    ax.set_ylim(0.0, 1.08 * max(f_max, critical.max(initial=0.0) / RPM_PER_HZ))
-    ax.set_xlabel("spin speed Ω [rpm]")
-    ax.set_ylabel("natural frequency [Hz]")
-    ax.set_title("Campbell diagram")
-    ax.legend(handles=handles, loc="upper left")
-    return fig
 
 
 @styled
@@ -144,6 +47,8 @@ def imbalance_response_figure(
     gap: float | None = None,
     *,
     log_y: bool = False,
+    title: str = "Imbalance response",
+    ax=None,
 ) -> Figure:
     """Imbalance response amplitude against spin speed, one curve per named output.
 
@@ -160,13 +65,17 @@ def imbalance_response_figure(
         Auxiliary (touchdown) bearing radial gap [m], drawn as a horizontal line.
     log_y : bool
         Logarithmic amplitude axis.
+    title : str
+        Axes title.
+    ax : matplotlib Axes, optional
+        Draw into this axes.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
     speeds = vector("speeds_rpm", speeds_rpm)
-    fig, axes = new_figure(1, 1, (8.0, 4.8))
+    fig, axes = new_figure(1, 1, (8.0, 4.8), ax=ax)
     ax = axes[0, 0]
     for name, values in amplitudes.items():
         amplitude_mm = magnitude(f"amplitudes[{name!r}]", values, speeds.size) * MM_PER_M
@@ -178,16 +87,29 @@ def imbalance_response_figure(
                    label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm")
     mark_operating(ax, operating_rpm)
     if log_y:
-        ax.set_yscale("log")
-        ax.grid(which="minor", alpha=0.12)
+        log_scale(ax)
     else:
         ax.set_ylim(bottom=0.0)
     ax.set_xlim(speeds.min(), speeds.max())
     ax.set_xlabel("spin speed Ω [rpm]")
     ax.set_ylabel("amplitude [mm]")
-    ax.set_title("Imbalance response")
+    ax.set_title(title)
     ax.legend(loc="best")
     return fig
+
+
+def _free_band(ax, xs: np.ndarray, values: np.ndarray) -> tuple[float, str]:
+    """Axes-fraction height and vertical alignment of the emptiest horizontal band for a text
+    box: below the curve when there is room there, else above it."""
+    scaled = (ax.transScale + ax.transLimits).transform(np.column_stack([xs, values]))[:, 1]
+    scaled = scaled[np.isfinite(scaled)]
+    low, high = (float(scaled.min()), float(scaled.max())) if scaled.size else (0.5, 0.5)
+    room_below, room_above = low - 0.12, 0.97 - high  # the failure line R = 1 sits near the bottom
+    if room_below >= max(room_above, 0.22):
+        return 0.12 + 0.5 * room_below, "center"
+    if room_above >= 0.22:
+        return high + 0.5 * room_above, "center"
+    return 0.5, "center"
 
 
 @styled
@@ -198,8 +120,13 @@ def safety_factor_figure(
     label: str | None = None,
     *,
     log_y: bool | None = None,
+    title: str = "Shaft strength",
+    ax=None,
 ) -> Figure:
     """Minimum Tsai-Wu safety factor along the shaft with the critical point annotated.
+
+    The annotation sits inside the axes in the emptiest band (below the curve when there is
+    room), so it covers neither the curve nor the title.
 
     Parameters
     ----------
@@ -214,6 +141,10 @@ def safety_factor_figure(
         What fails there, e.g. "ply 3 (+55°), φ = 120°, σ2 dominates".
     log_y : bool, optional
         Logarithmic axis; by default chosen when the finite values span more than 50:1.
+    title : str
+        Axes title.
+    ax : matplotlib Axes, optional
+        Draw into this axes.
 
     Returns
     -------
@@ -231,28 +162,30 @@ def safety_factor_figure(
     if log_y is None:
         log_y = np.nanmax(factor) / np.nanmin(factor) > 50.0
 
-    fig, axes = new_figure(1, 1, (8.0, 4.5))
+    fig, axes = new_figure(1, 1, (8.0, 4.5), ax=ax)
     ax = axes[0, 0]
     ax.plot(xs, factor, color="C0", label="minimum safety factor R")
     ax.axhline(1.0, color="tab:red", ls="--", lw=1.3, label="failure (R = 1)")
     ax.plot(critical_x, critical_r, "o", color="tab:red", ms=7, label="critical point")
-    text = f"R = {critical_r:.3g} at x = {critical_x:.3g} m"
-    text = f"{label}\n{text}" if label else text
-    right_half = critical_x > 0.5 * (xs.min() + xs.max())
-    ax.annotate(text, (critical_x, critical_r), xytext=(-25 if right_half else 25, 35),
-                textcoords="offset points", ha="right" if right_half else "left", fontsize=9,
-                bbox={"boxstyle": "round", "fc": "white", "ec": "0.6"},
-                arrowprops={"arrowstyle": "->", "color": "0.3"})
     if log_y:
-        ax.set_yscale("log")
-        ax.grid(which="minor", alpha=0.12)
+        log_scale(ax)
+        ax.set_ylim(min(0.7, 0.8 * np.nanmin(factor)), 2.0 * np.nanmax(factor))
     else:
         ax.set_ylim(0.0, max(1.15 * np.nanmax(factor), 1.3))
     ax.set_xlim(xs.min(), xs.max())
+    text = f"R = {critical_r:.3g} at x = {critical_x:.3g} m"
+    text = f"{label}\n{text}" if label else text
+    y_text, va = _free_band(ax, xs, factor)
+    x_frac = (critical_x - xs.min()) / max(xs.max() - xs.min(), 1e-12)
+    right_half = x_frac > 0.5
+    ax.annotate(text, (critical_x, critical_r), xytext=(x_frac - 0.04 if right_half else x_frac + 0.04, y_text),
+                textcoords="axes fraction", ha="right" if right_half else "left", va=va, fontsize=9,
+                bbox={"boxstyle": "round", "fc": "white", "ec": "0.6"},
+                arrowprops={"arrowstyle": "->", "color": "0.3"})
     ax.set_xlabel("axial position x [m]")
     ax.set_ylabel("Tsai-Wu safety factor R [-]")
-    ax.set_title("Shaft strength")
-    ax.legend(loc="best")
+    ax.set_title(title)
+    ax.legend(loc="lower right" if not right_half else "lower left", fontsize=8)
     return fig
 
 
@@ -264,6 +197,8 @@ def actuator_figure(
     gap: float | None = None,
     *,
     operating_rpm: float | None = None,
+    force_capacity: float | None = None,
+    ax=None,
 ) -> Figure:
     """Actuator (magnetic bearing) relative displacement and force against spin speed.
 
@@ -279,13 +214,17 @@ def actuator_figure(
         Actuator air gap or auxiliary-bearing clearance [m], drawn on the displacement panel.
     operating_rpm : float, optional
         Operating speed [rpm].
+    force_capacity : float, optional
+        Largest force the actuators can produce [N], drawn on the force panel.
+    ax : sequence of two matplotlib Axes, optional
+        Displacement and force panels.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
     speeds = vector("speeds_rpm", speeds_rpm)
-    fig, axes = new_figure(2, 1, (8.0, 6.5))
+    fig, axes = new_figure(2, 1, (8.0, 6.5), ax=ax, hspace=0.3)
     top, bottom = axes[0, 0], axes[1, 0]
     for name, values in displacement.items():
         top.plot(speeds, magnitude(f"displacement[{name!r}]", values, speeds.size) * MM_PER_M, label=name)
@@ -293,10 +232,12 @@ def actuator_figure(
         bottom.plot(speeds, magnitude(f"force[{name!r}]", values, speeds.size), label=name)
     if gap is not None:
         top.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"gap {gap * MM_PER_M:.3g} mm")
+    if force_capacity is not None:
+        bottom.axhline(force_capacity, color="k", ls="--", lw=1.2, label=f"force capacity {force_capacity:.4g} N")
     for ax in (top, bottom):
         mark_operating(ax, operating_rpm)
         ax.set_ylim(bottom=0.0)
-        ax.legend(loc="best")
+        ax.legend(loc="best", fontsize=8)
     top.set_xlim(speeds.min(), speeds.max())
     top.set_ylabel("relative displacement [mm]")
     bottom.set_ylabel("actuator force [N]")
@@ -305,30 +246,27 @@ def actuator_figure(
     return fig
 
 
-def save_figure(fig: Figure, folder: str | Path, stem: str) -> dict[str, Path]:
-    """Write ``stem.png`` (150 dpi) and ``stem.svg`` into ``folder`` and release the figure.
-
-    Parameters
-    ----------
-    fig : matplotlib.figure.Figure
-        The figure to save.
-    folder : str or Path
-        Output folder, created if missing.
-    stem : str
-        File name without extension; no path separators.
-
-    Returns
-    -------
-    dict
-        ``{"png": Path, "svg": Path}``.
-    """
-    if not stem or Path(stem).name != stem or stem in (".", ".."):
-        raise ValueError(f"stem: expected a plain file name without folders, got {stem!r}")
-    out = Path(folder)
-    out.mkdir(parents=True, exist_ok=True)
-    paths = {"png": out / f"{stem}.png", "svg": out / f"{stem}.svg"}
-    fig.savefig(paths["png"], dpi=150, format="png")
-    fig.savefig(paths["svg"], format="svg", metadata={"Date": None})  # reproducible files
-    if "matplotlib.pyplot" in sys.modules:  # only pyplot keeps a reference to figures
-        sys.modules["matplotlib.pyplot"].close(fig)
-    return paths
+@styled
+def load_shares_figure(shares: Mapping[str, float], title: str = "What loads the critical ply", *, ax=None) -> Figure:
+    """Horizontal bars of each load's share of the Tsai-Wu failure index at the critical
+    point [-] (they sum to 1; a negative share relieves the ply)."""
+    if not shares:
+        raise ValueError("shares: at least one load share is required")
+    names = list(shares)
+    values = vector("shares", [shares[k] for k in names])
+    fig, axes = new_figure(1, 1, (7.0, 0.45 * len(names) + 1.4), ax=ax, left=1.2, bottom=0.6)
+    ax = axes[0, 0]
+    colors = np.where(values >= 0, "C0", "C2")
+    y = np.arange(len(names))[::-1]
+    ax.barh(y, values, color=colors, height=0.6)
+    for yi, v in zip(y, values):
+        ax.annotate(f"{v:+.1%}", (v, yi), xytext=(4 if v >= 0 else -4, 0), textcoords="offset points",
+                    ha="left" if v >= 0 else "right", va="center", fontsize=8)
+    ax.set_yticks(y, names)
+    ax.axvline(0.0, color="k", lw=0.8)
+    lo, hi = min(0.0, float(values.min())), max(0.0, float(values.max()))
+    ax.set_xlim(lo - 0.2 * (hi - lo) - 1e-9, hi + 0.2 * (hi - lo) + 1e-9)
+    ax.set_xlabel("share of the failure index at the critical point [-]")
+    ax.set_title(title)
+    ax.grid(axis="y", visible=False)
+    return fig

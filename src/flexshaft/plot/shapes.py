@@ -28,6 +28,8 @@ def deflected_shape_figure(
     boom_v: ArrayLike | None = None,
     boom_w: ArrayLike | None = None,
     bearings_x: Sequence[float] = (),
+    *,
+    ax=None,
 ) -> Figure:
     """Static deflected shape of shaft and tailboom: vertical (v) and lateral (w) panels.
 
@@ -41,6 +43,8 @@ def deflected_shape_figure(
         Tailboom node positions and deflections [m]; omitted when ``boom_x`` is None.
     bearings_x : sequence of float
         Bearing stations [m], marked by vertical lines and a marker on the shaft.
+    ax : sequence of two matplotlib Axes, optional
+        Draw the v and w panels into these axes.
 
     Returns
     -------
@@ -55,7 +59,7 @@ def deflected_shape_figure(
                 "w": vector("boom_w", boom_w if boom_w is not None else np.zeros(bx.size), bx.size)}
     stations = vector("bearings_x", bearings_x)
 
-    fig, axes = new_figure(2, 1, (8.0, 6.0))
+    fig, axes = new_figure(2, 1, (8.0, 6.0), ax=ax, hspace=0.35)
     names = {"v": "vertical deflection v [mm]", "w": "lateral deflection w [mm]"}
     for ax, component in zip(axes[:, 0], ("v", "w")):
         ax.plot(x, shaft[component] * MM_PER_M, color="C0", label="shaft")
@@ -91,11 +95,17 @@ def mode_shapes_figure(
     shapes: Sequence[Mapping[str, Any]],
     boom_x: ArrayLike | None = None,
     boom_shapes: Sequence[Mapping[str, Any]] | None = None,
+    *,
+    bearings_x: Sequence[float] = (),
+    title: str | None = None,
+    ax=None,
 ) -> Figure:
-    """Small multiples of mode shapes: real parts of v and w and the orbit size |(v, w)|.
+    """Small multiples of mode shapes in the two planes: v and w along shaft and boom.
 
     Each shape is scaled so that its largest orbit radius is 1 and its largest component is
-    real (complex shapes of rotating systems are drawn at that phase).
+    real (complex shapes of rotating systems are drawn at that phase); the grey envelope is
+    the orbit size |(v, w)| of the shaft, so a whirling mode shows its full amplitude whatever
+    its phase.
 
     Parameters
     ----------
@@ -108,6 +118,12 @@ def mode_shapes_figure(
         Tailboom node positions [m].
     boom_shapes : sequence of mapping, optional
         Tailboom "v", "w" for each entry of ``shapes``, on the same scale as the shaft.
+    bearings_x : sequence of float
+        Bearing stations [m], marked ▲ on the axis.
+    title : str, optional
+        Figure title (when the figure is made here).
+    ax : sequence of matplotlib Axes, optional
+        One axes per shape.
 
     Returns
     -------
@@ -119,11 +135,16 @@ def mode_shapes_figure(
     if boom_shapes is not None and (boom_x is None or len(boom_shapes) != len(shapes)):
         raise ValueError(f"boom_shapes: need boom_x and one entry per shape ({len(shapes)}), got {len(boom_shapes)}")
     bx = vector("boom_x", boom_x) if boom_x is not None else None
-    ncols = min(3, len(shapes))
-    nrows = -(-len(shapes) // ncols)
-    fig, axes = new_figure(nrows, ncols, (4.2 * ncols, 2.9 * nrows + 0.6))
+    stations = vector("bearings_x", bearings_x)
+    own = ax is None
+    ncols = min(3, len(shapes)) if own else 1
+    nrows = -(-len(shapes) // ncols) if own else len(shapes)
+    top_band = 0.75 if title else 0.4
+    fig, axes = new_figure(nrows, ncols, (4.1 * ncols, 2.5 * nrows + top_band + 0.95), ax=ax, left=0.75,
+                           bottom=0.95, top=top_band, hspace=0.55, wspace=0.45)
+    handles = {}
     for k, shape in enumerate(shapes):
-        ax = axes.flat[k]
+        ax_k = axes.flat[k]
         parts = [np.asarray(shape["v"], dtype=complex).ravel(), np.asarray(shape["w"], dtype=complex).ravel()]
         if parts[0].size != x.size or parts[1].size != x.size:
             raise ValueError(f"shapes[{k}]: v and w need {x.size} values like shaft_x")
@@ -131,20 +152,34 @@ def mode_shapes_figure(
             parts += [np.asarray(boom_shapes[k]["v"], dtype=complex).ravel(),
                       np.asarray(boom_shapes[k]["w"], dtype=complex).ravel()]
         parts = _normalise(parts)
-        ax.plot(x, parts[0].real, color="C0", label="shaft v")
-        ax.plot(x, parts[1].real, color="C1", label="shaft w")
-        ax.plot(x, np.hypot(np.abs(parts[0]), np.abs(parts[1])), color="0.55", lw=1.0, label="shaft |(v, w)|")
+        envelope = np.hypot(np.abs(parts[0]), np.abs(parts[1]))
+        ax_k.fill_between(x, -envelope, envelope, color="0.88", lw=0, label="shaft orbit size ±|(v, w)|")
+        ax_k.plot(x, parts[0].real, color="C0", label="shaft v (vertical)")
+        ax_k.plot(x, parts[1].real, color="C1", label="shaft w (lateral)")
         if boom_shapes is not None:
-            ax.plot(bx, parts[2].real, color="C0", ls="--", lw=1.2, label="boom v")
-            ax.plot(bx, parts[3].real, color="C1", ls="--", lw=1.2, label="boom w")
-        ax.set_ylim(-1.1, 1.1)
-        ax.set_title(str(shape.get("label", f"mode {k + 1}")), fontsize=9.5)
-    for ax in axes.flat[len(shapes):]:
-        ax.set_visible(False)
-    for ax in axes[-1, :]:
-        ax.set_xlabel("x [m]")
-    for ax in axes[:, 0]:
-        ax.set_ylabel("normalised [-]")
-    handles, names = axes.flat[0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="outside lower center", ncols=len(names))
+            ax_k.plot(bx, parts[2].real, color="C0", ls="--", lw=1.1, label="boom v")
+            ax_k.plot(bx, parts[3].real, color="C1", ls="--", lw=1.1, label="boom w")
+        if stations.size:
+            ax_k.plot(stations, np.full(stations.size, -1.12), "^", color="k", ms=6, clip_on=False, label="bearing")
+        ax_k.axhline(0.0, color="0.3", lw=0.6)
+        ax_k.set_ylim(-1.15, 1.15)
+        ax_k.set_title(str(shape.get("label", f"mode {k + 1}")), fontsize=9)
+        for handle, name in zip(*ax_k.get_legend_handles_labels()):
+            handles.setdefault(name, handle)
+    for ax_k in axes.flat[len(shapes):]:
+        ax_k.set_visible(False)
+    for ax_k in axes[-1, :]:
+        ax_k.set_xlabel("axial position x [m]")
+    for ax_k in axes[:, 0]:
+        ax_k.set_ylabel("normalised [-]")
+    if own:
+        for ax_k in axes.flat[len(shapes) - ncols: len(shapes)]:  # bottom panel of each column shows x
+            ax_k.xaxis.set_tick_params(labelbottom=True)
+            ax_k.set_xlabel("axial position x [m]")
+        if title:
+            fig.suptitle(title, fontsize=11, y=1 - 0.12 / fig.get_figheight())
+        fig.legend(list(handles.values()), list(handles), loc="lower center", ncols=min(6, len(handles)),
+                   bbox_to_anchor=(0.5, 0.0), fontsize=8)
+    else:
+        axes.flat[0].legend(loc="best", fontsize=7)
     return fig

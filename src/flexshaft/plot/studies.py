@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.plot.style import MM_PER_M, mark_operating, new_figure, styled, vector
+from flexshaft.plot.style import MM_PER_M, log_scale, mark_operating, new_figure, nice_colorbar, styled, vector
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -85,6 +85,8 @@ def ply_angle_figure(
     safety_factor: ArrayLike,
     dominant: Sequence[str] | None = None,
     thesis_optimum_deg: float | None = 55.0,
+    *,
+    ax=None,
 ) -> Figure:
     """Safety factor against the ply angle α of (α/−α/−α/α) (thesis figure 3.2).
 
@@ -101,7 +103,7 @@ def ply_angle_figure(
     """
     alpha = vector("alpha_deg", alpha_deg)
     sf = vector("safety_factor", safety_factor, alpha.size)
-    fig, axes = new_figure(1, 1, (8.0, 4.5))
+    fig, axes = new_figure(1, 1, (8.0, 4.5), ax=ax)
     ax = axes[0, 0]
     ax.plot(alpha, sf, color="C0", label="safety factor R")
     if dominant is not None:
@@ -127,7 +129,7 @@ def ply_angle_figure(
 
 @styled
 def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: ArrayLike,
-                     thesis_best: tuple[float, float] | None = (55.0, 0.0)) -> Figure:
+                     thesis_best: tuple[float, float] | None = (55.0, 0.0), *, ax=None) -> Figure:
     """Safety factor map of (α/−α/β/−β)s (thesis figure 3.3), best laminate marked.
 
     ``safety_factor`` has shape (n_alpha, n_beta).
@@ -135,7 +137,8 @@ def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: A
     a = vector("alpha_deg", alpha_deg)
     b = vector("beta_deg", beta_deg)
     sf = _grid("safety_factor", safety_factor, (a.size, b.size))
-    fig, axes = new_figure(1, 1, (6.8, 5.6))
+    own = ax is None
+    fig, axes = new_figure(1, 1, (6.8, 6.0), ax=ax, bottom=1.05)
     ax = axes[0, 0]
     mesh = ax.pcolormesh(_edges(a), _edges(b), sf.T, cmap="viridis", shading="flat")
     if a.size > 2 and b.size > 2 and np.isfinite(sf).sum() > 4:
@@ -146,23 +149,26 @@ def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: A
     if thesis_best is not None:
         ax.plot(*thesis_best, "X", ms=10, mfc="none", mec="tab:red", mew=1.6,
                 label=f"thesis ({thesis_best[0]:g}/−{thesis_best[0]:g}/{thesis_best[1]:g}/−{thesis_best[1]:g})s")
-    fig.colorbar(mesh, ax=ax, label="Tsai-Wu safety factor R [-]")
+    nice_colorbar(fig, mesh, ax, "Tsai-Wu safety factor R [-]", pad=0.03)
     ax.set_xlabel("α [deg]")
     ax.set_ylabel("β [deg]")
     ax.set_title("Safety factor of (α/−α/β/−β)s (no imbalance)")
-    ax.legend(loc="upper left", fontsize=7.5)
+    if own:  # below the map: it hides no cell
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncols=2, fontsize=7.5)
+    else:
+        ax.legend(loc="upper left", fontsize=7.5)
     ax.grid(False)
     return fig
 
 
 @styled
 def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_imbalance: ArrayLike,
-                          frequency_hz: ArrayLike | None = None) -> Figure:
+                          frequency_hz: ArrayLike | None = None, *, ax=None) -> Figure:
     """Safety factor with and without imbalance vs wall thickness at fixed D_o (thesis fig.
     3.4); optionally the first natural frequency on a second panel. ``wall`` [m]."""
     t = vector("wall", wall)
     nrows = 2 if frequency_hz is not None else 1
-    fig, axes = new_figure(nrows, 1, (8.0, 3.2 + 2.6 * (nrows - 1)))
+    fig, axes = new_figure(nrows, 1, (8.0, 3.4 + 2.6 * (nrows - 1)), ax=ax, hspace=0.3)
     ax = axes[0, 0]
     ax.plot(t * MM_PER_M, vector("with_imbalance", with_imbalance, t.size), "o-", label="with imbalance")
     ax.plot(t * MM_PER_M, vector("without_imbalance", without_imbalance, t.size), "s--", label="without imbalance")
@@ -181,18 +187,17 @@ def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_im
 
 @styled
 def forced_response_figure(speeds_rpm: ArrayLike, responses: Mapping[str, ArrayLike],
-                           operating_rpm: float | None = None) -> Figure:
+                           operating_rpm: float | None = None, *, ax=None) -> Figure:
     """Largest shaft orbit against speed for a few designs, e.g. two walls (thesis fig. 3.5,
     3.9, 3.11). ``responses[label]`` is (n_speeds,) [m]; logarithmic amplitude axis."""
     speeds = vector("speeds_rpm", speeds_rpm)
-    fig, axes = new_figure(1, 1, (8.0, 4.5))
+    fig, axes = new_figure(1, 1, (8.0, 4.5), ax=ax)
     ax = axes[0, 0]
     for label, values in responses.items():
         amp = vector(f"responses[{label!r}]", values, speeds.size) * MM_PER_M
         ax.plot(speeds, np.where(amp > 0, amp, np.nan), label=label)
     mark_operating(ax, operating_rpm)
-    ax.set_yscale("log")
-    ax.grid(which="minor", alpha=0.12)
+    log_scale(ax)
     ax.set_xlim(speeds.min(), speeds.max())
     ax.set_xlabel("spin speed Ω [rpm]")
     ax.set_ylabel("max shaft orbit [mm]")
@@ -203,20 +208,20 @@ def forced_response_figure(speeds_rpm: ArrayLike, responses: Mapping[str, ArrayL
 
 @styled
 def gain_figure(kp: ArrayLike, safety_factor: ArrayLike, actuator_displacement: ArrayLike,
-                design_kp: float | None = None) -> Figure:
+                design_kp: float | None = None, *, ax=None) -> Figure:
     """Safety factor and largest actuator displacement at the operating speed vs K_p
     (thesis figure 3.6). ``kp`` [N/m], displacement [m] (drawn in mm)."""
     k = vector("kp", kp)
-    fig, axes = new_figure(2, 1, (8.0, 5.8))
+    fig, axes = new_figure(2, 1, (8.0, 5.8), ax=ax, hspace=0.3)
     top, bottom = axes[0, 0], axes[1, 0]
     top.plot(k, vector("safety_factor", safety_factor, k.size), "o-")
     top.set_ylabel("Tsai-Wu safety factor R [-]")
     top.set_ylim(bottom=0.0)
     bottom.plot(k, vector("actuator_displacement", actuator_displacement, k.size) * MM_PER_M, "o-", color="C1")
     bottom.set_ylabel("max actuator displacement [mm]")
-    bottom.set_yscale("log")
+    log_scale(bottom, minor_grid=False)
     for ax in (top, bottom):
-        ax.set_xscale("log")
+        log_scale(ax, "x", minor_grid=False)
         if design_kp is not None:
             ax.axvline(design_kp, color="0.4", ls=":", lw=1.3, label=f"design K_p = {design_kp:.3g} N/m")
             ax.legend(loc="best")
@@ -226,16 +231,15 @@ def gain_figure(kp: ArrayLike, safety_factor: ArrayLike, actuator_displacement: 
 
 
 @styled
-def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike) -> Figure:
+def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike, *, ax=None) -> Figure:
     """Torsional buckling safety factor T_cr/T vs wall thickness (thesis figure 3.10)."""
     t = vector("wall", wall)
     sf = vector("safety_factor", safety_factor, t.size)
-    fig, axes = new_figure(1, 1, (8.0, 4.2))
+    fig, axes = new_figure(1, 1, (8.0, 4.2), ax=ax)
     ax = axes[0, 0]
     ax.plot(t * MM_PER_M, sf, "o-")
     ax.axhline(1.0, color="tab:red", ls="--", lw=1.3, label="buckling (T_cr = T)")
-    ax.set_yscale("log")
-    ax.grid(which="minor", alpha=0.12)
+    log_scale(ax)
     ax.set_xlabel("wall thickness [mm]")
     ax.set_ylabel("buckling safety factor T_cr / T [-]")
     ax.set_title("Torsional buckling (smaller of the two torque senses)")
@@ -247,7 +251,7 @@ def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike) -> Figure:
 def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str, *,
                     scale: float = 1.0, best: tuple[float, float] | None = None,
                     other: Mapping[str, tuple[float, float]] | None = None, log_values: bool = True,
-                    title: str = "") -> Figure:
+                    title: str = "", ax=None) -> Figure:
     """A quantity over the (K_p, K_d) grid (thesis figures 3.12, 3.15, 3.16).
 
     Parameters
@@ -270,7 +274,8 @@ def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str,
     z = _grid("values", values, (kp_v.size, kd_v.size)) * scale
     x, xt, xl = _log_positions(kp_v)
     y, yt, yl = _log_positions(kd_v)
-    fig, axes = new_figure(1, 1, (7.0, 5.4))
+    own = ax is None
+    fig, axes = new_figure(1, 1, (7.0, 6.1), ax=ax, bottom=1.2, right=0.2)
     ax = axes[0, 0]
     finite = z[np.isfinite(z) & (z > 0)]
     norm = LogNorm(finite.min(), finite.max()) if log_values and finite.size and finite.max() > finite.min() else None
@@ -288,7 +293,7 @@ def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str,
         ix, iy = int(np.argmin(np.abs(kp_v - px))), int(np.argmin(np.abs(kd_v - py)))
         ax.plot(x[ix], y[iy], "o", ms=9, mfc="none", mec=("tab:red", "w", "tab:orange")[k % 3], mew=1.8,
                 label=f"{name}: K_p = {px:.3g}, K_d = {py:.3g}")
-    fig.colorbar(mesh, ax=ax, label=label)
+    nice_colorbar(fig, mesh, ax, label, log=norm is not None, pad=0.03)
     ax.set_xticks(xt, xl)
     ax.set_yticks(yt, yl)
     ax.set_xlim(_edges(x)[0], _edges(x)[-1])
@@ -298,27 +303,29 @@ def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str,
     ax.set_title(title)
     ax.grid(False)
     if best is not None or points:
-        ax.legend(loc="lower left", fontsize=7.5)
+        if own:  # below the map: it hides neither the optimum nor a cell
+            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncols=1, fontsize=7.5)
+        else:
+            ax.legend(loc="lower left", fontsize=7.5)
     return fig
 
 
 @styled
 def response_surface_figure(x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike],
-                            bearings_x: Sequence[float] = ()) -> Figure:
+                            bearings_x: Sequence[float] = (), *, ax=None) -> Figure:
     """Frequency-response surfaces: shaft orbit over position × speed (thesis figures 3.13,
     3.14), one 3-D panel per labelled case. ``surfaces[label]`` is (n_nodes, n_speeds) [m];
     ``x`` the node stations [m]. Panels share the amplitude axis."""
-    from matplotlib.figure import Figure
-
     xs = vector("x", x)
     speeds = vector("speeds_rpm", speeds_rpm)
     n = len(surfaces)
-    fig = Figure(figsize=(6.2 * n, 5.0), layout="constrained")
+    fig, axes = new_figure(1, n, (6.2 * n, 5.0), ax=ax, left=0.25, right=0.25, bottom=0.2, top=0.45, wspace=0.5,
+                           projection="3d")
     top = max(float(np.nanmax(np.asarray(v))) for v in surfaces.values()) * MM_PER_M
     X, S = np.meshgrid(xs, speeds, indexing="ij")
     for k, (label, values) in enumerate(surfaces.items()):
         z = _grid(f"surfaces[{label!r}]", values, (xs.size, speeds.size)) * MM_PER_M
-        ax = fig.add_subplot(1, n, k + 1, projection="3d")
+        ax = axes[0, k]
         ax.plot_surface(X, S, z, cmap="viridis", vmin=0.0, vmax=top, rstride=1, cstride=max(1, speeds.size // 60),
                         linewidth=0, antialiased=False)
         for xb in bearings_x:
@@ -334,11 +341,11 @@ def response_surface_figure(x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mappi
 
 @styled
 def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
-                       operating_rpm: float | None = None) -> Figure:
+                       operating_rpm: float | None = None, *, ax=None) -> Figure:
     """Largest shaft orbit during spin-up before and after tuning the gains (thesis figure
     3.17). ``curves[label]`` is (n_speeds,) [m]; each peak is annotated."""
     speeds = vector("speeds_rpm", speeds_rpm)
-    fig, axes = new_figure(1, 1, (8.0, 4.6))
+    fig, axes = new_figure(1, 1, (8.0, 4.6), ax=ax)
     ax = axes[0, 0]
     for label, values in curves.items():
         amp = vector(f"curves[{label!r}]", values, speeds.size) * MM_PER_M
@@ -358,7 +365,8 @@ def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
 
 @styled
 def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
-                            onset_rpm: ArrayLike | None = None, best: tuple[float, float] | None = None) -> Figure:
+                            onset_rpm: ArrayLike | None = None, best: tuple[float, float] | None = None, *,
+                            ax=None) -> Figure:
     """Smallest damping ratio at the operating speed over (K_p, K_d); negative (unstable)
     cells are hatched. ``onset_rpm`` (n_kp, n_kd), NaN where stable over the analysed range,
     is written in each cell when the grid is small."""
@@ -367,7 +375,8 @@ def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
     z = _grid("margin", margin, (kp_v.size, kd_v.size))
     x, xt, xl = _log_positions(kp_v)
     y, yt, yl = _log_positions(kd_v)
-    fig, axes = new_figure(1, 1, (7.0, 5.4))
+    own = ax is None
+    fig, axes = new_figure(1, 1, (7.0, 6.1), ax=ax, bottom=1.2, right=0.2)
     ax = axes[0, 0]
     lim = max(float(np.nanmax(np.abs(z))), 1e-6) if np.isfinite(z).any() else 1.0
     mesh = ax.pcolormesh(_edges(x), _edges(y), z.T, cmap="RdBu", vmin=-lim, vmax=lim, shading="flat")
@@ -386,7 +395,7 @@ def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
         ix = int(np.argmin(np.abs(x - np.log10(max(best[0], 1e-300)))))
         iy = int(np.argmin(np.abs(y - (np.log10(best[1]) if best[1] > 0 else y.min()))))
         ax.plot(x[ix], y[iy], **_BEST, label=f"tuned gains {best[0]:.3g} N/m, {best[1]:.3g} N s/m (nearest cell)")
-    fig.colorbar(mesh, ax=ax, label="smallest damping ratio at the operating speed [-]")
+    nice_colorbar(fig, mesh, ax, "smallest damping ratio at the operating speed [-]", pad=0.03)
     ax.set_xticks(xt, xl)
     ax.set_yticks(yt, yl)
     ax.set_xlabel("proportional gain K_p [N/m]")
@@ -394,5 +403,8 @@ def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
     ax.set_title("Whirl-stability margin over the actuator gains")
     ax.grid(False)
     if unstable.any() or best is not None:
-        ax.legend(loc="lower left", fontsize=7.5)
+        if own:  # below the map: it hides neither the optimum nor a cell
+            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncols=1, fontsize=7.5)
+        else:
+            ax.legend(loc="lower left", fontsize=7.5)
     return fig

@@ -1,13 +1,20 @@
-"""Shared helpers of the report figures: lazy matplotlib with the Agg backend, one style.
+"""Shared helpers of the figures: lazy matplotlib with the Agg backend, one style, one layout.
 
 Nothing here imports matplotlib at module level.
+
+Layout. Figures are laid out with fixed margins in inches (:func:`new_figure`), not with
+matplotlib's constrained or tight layout: a layout engine costs as much as drawing the figure
+again (measured: 35-45 % of a report figure's save time), and every figure here has a known
+structure. Text that might be long (legends, annotations) is placed inside the axes or in a
+reserved band. When the caller passes ``ax``, the figure is drawn into those axes and its
+layout is left alone.
 """
 
 from __future__ import annotations
 
 import functools
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
@@ -16,12 +23,14 @@ from numpy.typing import ArrayLike, NDArray
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["MM_PER_M", "RPM_PER_HZ", "WHIRL_LINESTYLE", "STYLE", "styled", "new_figure", "vector",
-           "magnitude", "mark_operating"]
+__all__ = ["MM_PER_M", "RPM_PER_HZ", "WHIRL_LINESTYLE", "WHIRL_MARKER", "STYLE", "styled", "new_figure",
+           "vector", "magnitude", "mark_operating", "nice_colorbar", "log_scale"]
 
 MM_PER_M = 1e3
 RPM_PER_HZ = 60.0
 WHIRL_LINESTYLE = {"forward": "-", "backward": "--", "planar": ":", "none": (0, (1, 4))}  # none: torsional/axial
+#: Marker of each whirl label (the ROSS convention: ▲ forward, ▼ backward); torsional ■, axial ◆.
+WHIRL_MARKER = {"forward": "^", "backward": "v", "planar": "o", "torsional": "s", "axial": "D", "none": "s"}
 STYLE = {
     "font.size": 10,
     "axes.titlesize": 11,
@@ -33,6 +42,9 @@ STYLE = {
     "grid.alpha": 0.35,
     "grid.linewidth": 0.6,
     "lines.linewidth": 1.6,
+    # a fixed title position: matplotlib otherwise measures every tick label of the axes at
+    # draw time to lift the title over top-side labels (none here), 20 % of a figure's draw
+    "axes.titley": 1.0,
 }
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -54,13 +66,52 @@ def styled(func: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def new_figure(nrows: int, ncols: int, figsize: tuple[float, float], sharex: bool = True):
-    """A constrained-layout Figure (no pyplot state) and its (nrows, ncols) array of axes; figsize [in]."""
+def new_figure(nrows: int, ncols: int, figsize: tuple[float, float], sharex: bool = True, *, ax=None,
+               left: float = 0.85, right: float = 0.25, bottom: float = 0.6, top: float = 0.4,
+               hspace: float = 0.55, wspace: float = 0.7, **subplot_kw):
+    """A Figure (no pyplot state, no layout engine) and its (nrows, ncols) array of axes.
+
+    Parameters
+    ----------
+    nrows, ncols : int
+        Panels.
+    figsize : (float, float)
+        Figure size [in].
+    sharex : bool
+        Panels share the x axis.
+    ax : Axes or sequence of Axes, optional
+        Draw into these axes instead (exactly ``nrows * ncols`` of them, row-major); the figure
+        is theirs and its layout is left alone.
+    left, right, bottom, top : float
+        Margins [in] between the figure edge and the panels.
+    hspace, wspace : float
+        Gaps between panels [in].
+    **subplot_kw
+        Passed to ``add_subplot`` (e.g. ``projection="3d"``).
+
+    Returns
+    -------
+    (Figure, ndarray of Axes)
+    """
+    n = nrows * ncols
+    if ax is not None:
+        axes = np.asarray(ax if isinstance(ax, (Sequence, np.ndarray)) else [ax], dtype=object).ravel()
+        if axes.size != n or not all(hasattr(a, "plot") for a in axes):
+            raise ValueError(f"ax: this figure draws {n} panel(s) ({nrows} × {ncols}); pass {'one Axes' if n == 1 else f'{n} Axes'} "
+                             f"(got {axes.size} object(s))")
+        return axes[0].figure, axes.reshape(nrows, ncols)
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=figsize, layout="constrained")
-    axes = fig.subplots(nrows, ncols, sharex=sharex, squeeze=False)
-    return fig, axes
+    width, height = figsize
+    fig = Figure(figsize=figsize)
+    panel_h = (height - top - bottom - (nrows - 1) * hspace) / nrows
+    panel_w = (width - left - right - (ncols - 1) * wspace) / ncols
+    fig.subplots_adjust(left=left / width, right=1 - right / width, bottom=bottom / height, top=1 - top / height,
+                        hspace=hspace / max(panel_h, 1e-3), wspace=wspace / max(panel_w, 1e-3))
+    if subplot_kw:
+        axes = np.array([fig.add_subplot(nrows, ncols, k + 1, **subplot_kw) for k in range(n)], dtype=object)
+        return fig, axes.reshape(nrows, ncols)
+    return fig, fig.subplots(nrows, ncols, sharex=sharex, squeeze=False)
 
 
 def vector(name: str, values: ArrayLike, size: int | None = None) -> NDArray[np.float64]:
@@ -84,3 +135,64 @@ def mark_operating(ax: Axes, operating_rpm: float | None, label: bool = True) ->
     if operating_rpm is not None:
         ax.axvline(operating_rpm, color="tab:red", ls="-.", lw=1.2,
                    label=f"operating speed {operating_rpm:.0f} rpm" if label else None)
+
+
+def log_scale(ax: Axes, axis: str = "y", minor_grid: bool = True) -> None:
+    """Logarithmic ``axis`` ("x" or "y") with minor ticks at 2 and 5 of each decade only
+    (matplotlib's default eight per decade cost a tick object each at draw time, a third of
+    the drawing of a log-scale figure, and add no reading accuracy)."""
+    from matplotlib.ticker import LogLocator
+
+    (ax.set_xscale if axis == "x" else ax.set_yscale)("log")
+    target = ax.xaxis if axis == "x" else ax.yaxis
+    target.set_minor_locator(LogLocator(subs=(2.0, 5.0)))
+    if minor_grid:
+        ax.grid(which="minor", axis=axis, alpha=0.12)
+
+
+def _log_ticks(lo: float, hi: float) -> list[float]:
+    """At least four 1-2-5 ticks inside [lo, hi] (lo > 0), fewer per decade on wide ranges."""
+    decades = np.arange(np.floor(np.log10(lo)), np.ceil(np.log10(hi)) + 1)
+    for mantissas in ((1.0,), (1.0, 3.0), (1.0, 2.0, 5.0), (1.0, 1.5, 2.0, 3.0, 5.0, 7.0),
+                      tuple(np.arange(1.0, 10.0))):
+        ticks = [m * 10.0 ** d for d in decades for m in mantissas if lo * (1 - 1e-9) <= m * 10.0 ** d <= hi * (1 + 1e-9)]
+        if len(ticks) >= 4:
+            return ticks
+    return ticks
+
+
+def nice_colorbar(fig, mappable, ax, label: str, *, log: bool = False, **kwargs):
+    """A colour bar with at least four labelled ticks (plain numbers, also on a log scale).
+
+    Parameters
+    ----------
+    fig : Figure
+    mappable : ScalarMappable
+        The mesh or collection whose colours the bar explains.
+    ax : Axes
+        The axes the bar steals its space from.
+    label : str
+        Quantity and unit, e.g. "max shaft orbit [mm]".
+    log : bool
+        The norm is logarithmic: ticks on a 1-2-5 sequence, labelled in plain numbers.
+    **kwargs
+        Passed to :meth:`Figure.colorbar` (``extend``, ``pad``, ...).
+    """
+    from matplotlib.ticker import FixedLocator, MaxNLocator, NullLocator
+
+    bar = fig.colorbar(mappable, ax=ax, label=label, **kwargs)
+    lo, hi = mappable.norm.vmin, mappable.norm.vmax
+    if log and lo is not None and hi is not None and 0 < lo < hi:
+        ticks = _log_ticks(lo, hi)
+        bar.ax.yaxis.set_major_locator(FixedLocator(ticks))
+        bar.ax.yaxis.set_minor_locator(NullLocator())
+        bar.ax.set_yticklabels([f"{t:.3g}" for t in ticks])
+    elif lo is not None and hi is not None and hi > lo:
+        center = getattr(mappable.norm, "vcenter", None)
+        if center is not None and lo < center < hi:  # two halves of equal length: ticks on each
+            ticks = np.concatenate([MaxNLocator(3).tick_values(lo, center), MaxNLocator(5).tick_values(center, hi)])
+        else:
+            ticks = MaxNLocator(7).tick_values(lo, hi)
+        tol = 1e-9 * abs(hi - lo)
+        bar.set_ticks(sorted({float(t) for t in ticks if lo - tol <= t <= hi + tol}))
+    return bar

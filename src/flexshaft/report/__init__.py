@@ -13,13 +13,16 @@ from __future__ import annotations
 
 from flexshaft.plot.driveline import (
     actuator_figure,
+    bode_figure,
     campbell_figure,
     deflected_shape_figure,
     imbalance_response_figure,
     mode_shapes_figure,
+    orbit_figure,
     safety_factor_figure,
     save_figure,
 )
+from flexshaft.plot.output import FigureJob, render_figures
 from flexshaft.report.html import FigureRef, Section, Table, format_cell, render_report, write_report
 
 __all__ = [
@@ -29,7 +32,11 @@ __all__ = [
     "safety_factor_figure",
     "mode_shapes_figure",
     "actuator_figure",
+    "bode_figure",
+    "orbit_figure",
     "save_figure",
+    "FigureJob",
+    "render_figures",
     "Section",
     "Table",
     "FigureRef",

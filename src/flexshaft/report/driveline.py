@@ -1,53 +1,41 @@
 """Assemble the ``flexshaft run`` report from a :class:`flexshaft.studies.run.RunResults`.
 
 Duck-typed on the results' plain attributes (arrays, dicts, small dataclasses); converts SI to
-engineering units (rpm, Hz, mm) only here, at the edge.
+engineering units (rpm, Hz, mm) only here, at the edge. The report computes nothing: every
+number and curve comes from the results (bearing reactions included).
+
+Writing is in two steps: :func:`plan_run_report` builds the sections and a list of
+:class:`~flexshaft.plot.output.FigureJob` (figure functions and their plain-array arguments,
+or a result and its ``.plot`` kind), then :func:`write_run_report` renders the figures
+(serially, or in forked worker processes) and writes the page.
 """
 
 from __future__ import annotations
 
+import datetime as dt
 import json
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
-from flexshaft.plot.driveline import (
-    actuator_figure,
-    campbell_figure,
-    deflected_shape_figure,
-    imbalance_response_figure,
-    mode_shapes_figure,
-    safety_factor_figure,
-    save_figure,
-)
+from flexshaft.plot.output import FigureJob, render_figures
 from flexshaft.report.html import FigureRef, Section, Table, write_report
 
-__all__ = ["results_json", "write_run_report"]
+__all__ = ["RunReportPlan", "plan_run_report", "results_json", "write_run_report"]
 
 _RPM = 60 / (2 * np.pi)
 
 
-def _bearing_dict(res) -> dict:
-    """Static lateral and axial force and the imbalance force amplitude at the operating speed."""
-    from flexshaft.analyses.response import bearing_forces, orbit_amplitude
-
-    model = res.model
-    loads = None
-    if any(a.integrates for a in model.actuators):  # integral action: static force from equilibrium
-        from flexshaft.assembly.loads import external_static_load, torque_load
-
-        loads = external_static_load(model) + torque_load(model)
-    static = bearing_forces(model, res.static_displacement, loads=loads)
-    dynamic = bearing_forces(model, res.imbalance_at_speed, model.speed)
-    out = {}
-    for name, f in static.items():
-        d = dynamic[name]
-        out[name] = {
-            "static_lateral_N": float(np.hypot(f[1].real, f[2].real)),
-            "static_axial_N": float(abs(f[0].real)),
-            "imbalance_lateral_amplitude_N": float(np.max(orbit_amplitude(d[1], d[2]))),
-        }
-    return out
+def _bearing_dict(res) -> dict | None:
+    """Static lateral and axial force and the imbalance force amplitude at the operating speed
+    (from ``res.bearing_reactions``, computed by the run)."""
+    reactions = getattr(res, "bearing_reactions", None)
+    if not reactions:
+        return None
+    return {name: {"static_lateral_N": r.static_lateral, "static_axial_N": r.static_axial,
+                   "imbalance_lateral_amplitude_N": r.imbalance_lateral_amplitude}
+            for name, r in reactions.items()}
 
 
 def _strength_dict(r) -> dict | None:
@@ -138,37 +126,60 @@ def _modes_table(rows, caption) -> Table:
                  [[r["mode"], r["frequency_Hz"], r["frequency_rpm"], r["damping_ratio"], r["whirl"], r["component"]] for r in rows])
 
 
-def write_run_report(res, folder: str | Path, generated: str | None = None, design_text: str | None = None,
-                     design_source: str = "design file", timings: dict | None = None) -> Path:
-    """Write ``report.html``, the figures (PNG and SVG), ``results.json`` and ``timings.json``
-    into ``folder``.
+def plot_result(result, kind: str | None = None, **kwargs):
+    """``result.plot(kind, **kwargs)``: a picklable figure function for :class:`FigureJob`."""
+    return result.plot(kind, **kwargs)
 
-    ``design_text`` is the design file as read (embedded verbatim, with its assumed values
-    listed); ``design_source`` says where it came from. The verdict comes first. ``timings``
-    (stage -> seconds, e.g. from the CLI's progress display) go to ``timings.json`` with the
-    design studies' own, never to ``results.json``.
-    """
+
+@dataclass(frozen=True)
+class RunReportPlan:
+    """The report's sections (figures referenced by their future PNG paths), the figures to
+    draw, and the key numbers (``results.json``)."""
+
+    sections: list
+    jobs: list
+    data: dict
+    title: str
+    design_name: str
+
+
+class _Figures:
+    """Collects figure jobs and hands out their :class:`FigureRef`."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+        self.jobs: list[FigureJob] = []
+
+    def add(self, stem: str, caption: str, function, *args, **kwargs) -> FigureRef:
+        self.jobs.append(FigureJob(stem, function, args, kwargs))
+        return FigureRef(self.folder / f"{stem}.png", caption)
+
+    def result(self, stem: str, caption: str, result, kind: str | None = None, **kwargs) -> FigureRef:
+        return self.add(stem, caption, plot_result, result, kind, **kwargs)
+
+
+def plan_run_report(res, folder: str | Path, design_text: str | None = None,
+                    design_source: str = "design file") -> RunReportPlan:
+    """Sections, figure jobs and key numbers of the report of ``res`` (nothing is drawn or
+    written; see :func:`write_run_report`)."""
+    from flexshaft.plot.driveline import deflected_shape_figure
     from flexshaft.report.inputs import inputs_section, report_title
     from flexshaft.report.verdict import verdict_section
 
     folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
+    figs = _Figures(folder)
     model = res.model
     dm = model.dofs
     design = model.design
     data = results_json(res)
-    (folder / "results.json").write_text(json.dumps(data, indent=2, default=float))
-    studies_timings = getattr(res.design_studies, "timings", None) or {}
-    (folder / "timings.json").write_text(json.dumps({
-        "note": "wall-clock seconds of this run; they vary from run to run (results.json does not)",
-        "stages_s": {k: float(v) for k, v in (timings or {}).items()},
-        "design_studies_s": {k: float(v) for k, v in studies_timings.items()},
-    }, indent=2))
     op_rpm = model.speed * _RPM
     s = res.summary
     sections = []
     if res.verdict is not None:
-        sections.append(verdict_section(res.verdict, op_rpm))
+        section = verdict_section(res.verdict, op_rpm)
+        ref = figs.result("verdict_margins", "Margin of each requirement divided by its limit (green pass, red fail)",
+                          res.verdict, "margins")
+        sections.append(replace(section, figures=[*section.figures, ref]))
     if design_text is None:
         from flexshaft.design import baseline_design, baseline_text
 
@@ -197,72 +208,42 @@ def write_run_report(res, folder: str | Path, generated: str | None = None, desi
 
     camp = res.campbell
     crit = [c for c in camp.critical_speeds if c.speed <= model.speed * 1.25]
-    p_camp = save_figure(campbell_figure(camp.speeds * _RPM, camp.frequencies, camp.whirl,
-                                         [c.speed_rpm for c in crit], op_rpm), folder, "campbell")
-    shapes = res.mode_shapes
-    ns = np.arange(dm.n_shaft_nodes)
-    shaft_shapes, boom_shapes = [], []
-    for k in range(min(6, shapes.shapes.shape[1])):
-        phi = shapes.shapes[:, k]
-        label = f"mode {k + 1}, {shapes.frequencies[k]:.2f} Hz, {shapes.whirl[k]}, {shapes.component[k]}"
-        shaft_shapes.append({"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]})
-        if dm.n_boom_nodes:
-            nb = np.arange(dm.n_boom_nodes)
-            boom_shapes.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
-    p_shapes = save_figure(mode_shapes_figure(dm.shaft_x, shaft_shapes, dm.boom_x if dm.n_boom_nodes else None,
-                                              boom_shapes or None), folder, "mode_shapes")
+    bearing_x = [b.x_shaft for b in model.bearings]
+    f_spin = op_rpm / 60.0
     sections.append(Section(
         "Natural frequencies and Campbell diagram",
-        paragraphs=["Damped eigenvalues of the linear model (gyroscopic terms, bearing damping and actuator K_d; "
-                    "the hysteretic loss is treated in the stability analysis). Modes are tracked across speed by "
-                    "the modal assurance criterion; whirl direction comes from the shaft orbits (forward: same "
-                    "sense as the spin)."],
+        paragraphs=["Damped eigenvalues of the linear model (gyroscopic terms, bearing damping and actuator K_d, and "
+                    "the hysteretic loss of every member at each mode's own frequency). Modes are tracked across speed "
+                    "by the modal assurance criterion; whirl direction comes from the shaft orbits (forward: same sense "
+                    "as the spin). The colour of each point is its logarithmic decrement (red: unstable)."],
         tables=[_modes_table(res.modes_at_rest, "Natural frequencies at rest"),
                 _modes_table(res.modes_at_speed, f"Natural frequencies at {op_rpm:.0f} rpm"),
                 Table("Critical speeds (1× excitation) up to 125 % of the operating speed",
                       ["speed [rpm]", "tracked mode", "whirl"], [[c.speed_rpm, c.mode + 1, c.whirl] for c in crit])],
-        figures=[FigureRef(p_camp["png"], "Campbell diagram"), FigureRef(p_shapes["png"], f"Mode shapes at {op_rpm:.0f} rpm")],
+        figures=[figs.result("campbell", "Campbell diagram: whirl as line style and marker, log decrement as colour",
+                             camp, "campbell", operating_rpm=op_rpm, max_critical_rpm=1.25 * op_rpm),
+                 figs.result("mode_shapes", f"Mode shapes at {op_rpm:.0f} rpm of the modes nearest the spin frequency "
+                                            f"{f_spin:.1f} Hz (v vertical, w lateral; ▲ bearings)",
+                             res.mode_shapes, "shapes", bearings_x=bearing_x)],
     ))
 
-    rpm = res.speeds * _RPM
-    amps = {"max over shaft": res.shaft_peak}
-    amps.update({f"shaft at {a.name}": res.shaft_envelope[dm.node_at("shaft", a.link.x_shaft)] for a in model.actuators})
-    p_imb = save_figure(imbalance_response_figure(rpm, amps, op_rpm, log_y=True), folder, "imbalance_response")
-    figs = [FigureRef(p_imb["png"], "Synchronous imbalance response during spin-up (orbit major semi-axis)")]
-    if model.actuators:
-        p_act = save_figure(actuator_figure(rpm, res.actuator_displacement, res.actuator_force, operating_rpm=op_rpm), folder, "actuators")
-        figs.append(FigureRef(p_act["png"], "Actuator relative displacement and force during spin-up"))
-    imb = data["imbalance"]
-    sections.append(Section(
-        "Imbalance response over speed",
-        paragraphs=[f"Rotating imbalance e_c m_s Ω² ({design.loads.imbalance_placement} placement), "
-                    f"steady state at each speed from 2 % to 110 % of the operating speed. Peak shaft orbit "
-                    f"{imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm; "
-                    f"{imb['max_shaft_orbit_at_operating_m'] * 1e3:.4f} mm at the operating speed."],
-        tables=[Table("Actuators (spin-up maxima)", ["actuator", "max relative displacement [mm]", "max force [N]"],
-                      [[k, imb["actuator_max_displacement_m"][k] * 1e3, imb["actuator_max_force_N"][k]] for k in res.actuator_force])],
-        figures=figs,
-    ))
+    sections.append(_imbalance_section(res, figs, data, op_rpm))
 
     qs = res.static_displacement
-    p_def = save_figure(deflected_shape_figure(
-        dm.shaft_x, dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w"),
-        dm.boom_x if dm.n_boom_nodes else None,
-        dm.values(qs, "boom", "v") if dm.n_boom_nodes else None,
-        dm.values(qs, "boom", "w") if dm.n_boom_nodes else None,
-        [b.x_shaft for b in model.bearings]), folder, "static_deflection")
     st = data["static"]
+    deflection = figs.add("static_deflection", "Static deflection of shaft and tailboom", deflected_shape_figure,
+                          dm.shaft_x, dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w"),
+                          dm.boom_x if dm.n_boom_nodes else None,
+                          dm.values(qs, "boom", "v") if dm.n_boom_nodes else None,
+                          dm.values(qs, "boom", "w") if dm.n_boom_nodes else None, bearing_x)
     sections.append(Section(
         "Deflected shape under static loads",
         paragraphs=["External point and line loads, the manoeuvre load factor on every mass and the transmitted torque."
                     + (f" Boom tip: v = {st['boom_tip_v_m'] * 1e3:.2f} mm, w = {st['boom_tip_w_m'] * 1e3:.2f} mm." if st["boom_tip_v_m"] is not None else "")],
-        figures=[FigureRef(p_def["png"], "Static deflection of shaft and tailboom")],
+        figures=[deflection],
     ))
 
     if res.strength_total is not None:
-        r = res.strength_total
-        label = f"ply {r.ply + 1} ({r.ply_angle_deg:+.0f}°), φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates"
-        p_sf = save_figure(safety_factor_figure(r.x_along, r.along_shaft, r.x, label), folder, "safety_factor")
         rows = []
         for name, rr in (("static", res.strength_static), ("static + imbalance", res.strength_total)):
             rows.append([name, rr.safety_factor, rr.x, rr.ply + 1, rr.ply_angle_deg, rr.phase_deg, rr.dominant_stress,
@@ -280,22 +261,119 @@ def write_run_report(res, folder: str | Path, generated: str | None = None, desi
                         "The classical shell ignores transverse shear of the soft matrix and is unconservative for FMC walls."],
             tables=[Table("Critical ply", ["case", "R", "x [m]", "ply", "angle [°]", "φ [°]", "dominant",
                                            "σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]"], rows)],
-            figures=[FigureRef(p_sf["png"], "Minimum Tsai-Wu safety factor along the shaft")],
+            figures=[figs.result("safety_factor", "Minimum Tsai-Wu safety factor along the shaft", res.strength_total,
+                                 "along_shaft")],
         ))
     if res.thermal is not None:
-        sections.append(_thermal_section(res, folder))
+        sections.append(_thermal_section(res, figs))
     if res.stability is not None:
-        sections.append(_stability_section(res, folder, op_rpm))
+        sections.append(_stability_section(res, figs, op_rpm))
     if res.design_studies is not None:
-        from flexshaft.report.studies_section import design_studies_section
+        from flexshaft.report.studies_section import studies_section_and_jobs
+
+        section, jobs = studies_section_and_jobs(res.design_studies, folder)
+        figs.jobs.extend(jobs)
+        sections.append(section)
+    if res.notes:
+        sections.append(Section("Notes", paragraphs=list(res.notes)))
+    return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(design)}", design.name)
+
+
+def _imbalance_section(res, figs: _Figures, data: dict, op_rpm: float) -> Section:
+    from flexshaft.plot.driveline import actuator_figure, bode_figure, imbalance_response_figure, orbit_figure
+
+    model = res.model
+    dm = model.dofs
+    design = model.design
+    rpm = res.speeds * _RPM
+    gaps = {b.name: getattr(b, "gap", None) for b in design.bearings}
+    act_gaps = [g for a in model.actuators if (g := gaps.get(a.name)) is not None]
+    amps = {"max over shaft": res.shaft_peak}
+    amps.update({f"shaft at {a.name}": res.shaft_envelope[dm.node_at("shaft", a.link.x_shaft)] for a in model.actuators})
+    figures = [figs.add("imbalance_response", "Synchronous imbalance response during spin-up (orbit major semi-axis)",
+                        imbalance_response_figure, rpm, amps, op_rpm, log_y=True)]
+    q = getattr(res, "imbalance_spinup", None)
+    if q is not None and np.ndim(q) == 3 and q.shape[2] == rpm.size:
+        i_op = int(np.argmin(np.abs(res.speeds - model.speed)))
+        stations = {f"{a.name} (x = {a.link.x_shaft:.2f} m)": dm.node_at("shaft", a.link.x_shaft) for a in model.actuators}
+        peak = int(np.argmax(res.shaft_envelope[:, i_op]))
+        stations.setdefault(f"largest orbit at {op_rpm:.0f} rpm (x = {dm.shaft_x[peak]:.2f} m)", peak)
+        curves = {}
+        for label, node in stations.items():
+            v = np.asarray(q[dm.shaft(node, "v")])  # (ncases, n_speeds)
+            case = int(np.argmax(np.abs(v[:, i_op])))
+            curves[f"{label}, v" + (f", case {case + 1}" if v.shape[0] > 1 else "")] = v[case]
+        figures.append(figs.add("imbalance_bode", "Bode plot of the vertical imbalance response (phase relative to the "
+                                                  "imbalance force)", bode_figure, rpm, curves, op_rpm,
+                                min(act_gaps) if act_gaps else None, title="Imbalance response at the actuators (Bode)"))
+    reactions = getattr(res, "bearing_reactions", None) or {}
+    if reactions:
+        orbits = {f"{name} (x = {r.x_shaft:.2f} m)": r.orbit for name, r in reactions.items()}
+        orbit_gaps = {f"{name} (x = {r.x_shaft:.2f} m)": r.gap for name, r in reactions.items() if r.gap is not None}
+        figures.append(figs.add("bearing_orbits", f"Shaft orbits relative to each bearing at {op_rpm:.0f} rpm (worst load "
+                                                  "case; dashed: auxiliary-bearing gap; viewed along +x, forward whirl "
+                                                  "clockwise)", orbit_figure, orbits, orbit_gaps,
+                                title=f"Orbits at the bearings, {op_rpm:.0f} rpm"))
+    if model.actuators:
+        caps = [c for a in design.bearings if (c := getattr(a, "force_capacity", None)) is not None]
+        figures.append(figs.add("actuators", "Actuator relative displacement and force during spin-up", actuator_figure,
+                                rpm, res.actuator_displacement, res.actuator_force, min(act_gaps) if act_gaps else None,
+                                operating_rpm=op_rpm, force_capacity=min(caps) if caps else None))
+    imb = data["imbalance"]
+    tables = [Table("Actuators (spin-up maxima)", ["actuator", "max relative displacement [mm]", "max force [N]"],
+                    [[k, imb["actuator_max_displacement_m"][k] * 1e3, imb["actuator_max_force_N"][k]] for k in res.actuator_force])]
+    if reactions:
+        tables.append(Table(f"Bearing loads: static, and imbalance at {op_rpm:.0f} rpm (worst load case)",
+                            ["bearing", "kind", "x shaft [m]", "static lateral [N]", "static axial [N]",
+                             "imbalance force amplitude [N]", "relative orbit [mm]", "gap [mm]"],
+                            [[n, r.kind, r.x_shaft, r.static_lateral, r.static_axial, r.imbalance_lateral_amplitude,
+                              _orbit_mm(r.orbit),
+                              None if r.gap is None else r.gap * 1e3] for n, r in reactions.items()]))
+    return Section(
+        "Imbalance response over speed",
+        paragraphs=[f"Rotating imbalance e_c m_s Ω² ({design.loads.imbalance_placement} placement), "
+                    f"steady state at each speed from 2 % to 110 % of the operating speed. Peak shaft orbit "
+                    f"{imb['max_shaft_orbit_spin_up_m'] * 1e3:.3f} mm at {imb['speed_of_max_rpm']:.0f} rpm; "
+                    f"{imb['max_shaft_orbit_at_operating_m'] * 1e3:.4f} mm at the operating speed."],
+        tables=tables,
+        figures=figures,
+    )
+
+
+def _orbit_mm(pair) -> float:
+    """Major semi-axis of the orbit of a (v, w) amplitude pair [m], in mm."""
+    v, w = pair
+    return float(np.sqrt(0.5 * (abs(v) ** 2 + abs(w) ** 2 + abs(v * v + w * w)))) * 1e3
+
+
+def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date | None = None, design_text: str | None = None,
+                     design_source: str = "design file", timings: dict | None = None, *, svg: bool = False,
+                     processes: int = 1) -> Path:
+    """Write ``report.html``, the PNG figures (and SVG when ``svg``), ``results.json`` and
+    ``timings.json`` into ``folder``; returns the page's path.
+
+    ``design_text`` is the design file as read (embedded verbatim, with its assumed values
+    listed); ``design_source`` says where it came from. The verdict comes first. ``timings``
+    (stage -> seconds, e.g. from the CLI's progress display) go to ``timings.json`` with the
+    design studies' own, never to ``results.json``. ``processes`` > 1 draws the figures in
+    that many forked worker processes.
+    """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    plan = plan_run_report(res, folder, design_text, design_source)
+    (folder / "results.json").write_text(json.dumps(plan.data, indent=2, default=float))
+    studies_timings = getattr(res.design_studies, "timings", None) or {}
+    (folder / "timings.json").write_text(json.dumps({
+        "note": "wall-clock seconds of this run; they vary from run to run (results.json does not)",
+        "stages_s": {k: float(v) for k, v in (timings or {}).items()},
+        "design_studies_s": {k: float(v) for k, v in studies_timings.items()},
+    }, indent=2))
+    if res.design_studies is not None:
         from flexshaft.studies.chapter3 import save_study_data
 
         save_study_data(res.design_studies, folder / "studies")
-        sections.append(design_studies_section(res.design_studies, folder))
-    if res.notes:
-        sections.append(Section("Notes", paragraphs=list(res.notes)))
-    return write_report(folder, f"flexshaft report: {report_title(design)}", sections, design_name=design.name,
-                        generated=generated)
+    render_figures(plan.jobs, folder, svg=svg, processes=processes)
+    return write_report(folder, plan.title, plan.sections, design_name=plan.design_name, generated=generated)
 
 
 def _rpm_or_none(speed):
@@ -327,17 +405,32 @@ def _onset_text(speed, top):
     return f"stable to {top * _RPM:.0f}" if speed is None or not np.isfinite(speed) else f"{speed * _RPM:.0f}"
 
 
-def _stability_section(res, folder, op_rpm) -> Section:
-    from flexshaft.plot.stability import real_parts_figure, stability_map_figure
+def _stability_section(res, figs: _Figures, op_rpm: float) -> Section:
+    from flexshaft.plot.stability import log_decrement_figure, stability_map_figure
 
     st = res.stability
     top = st.speeds[-1]
-    figs = []
-    curves = {"this design": st.real_parts}
-    curves.update({label: models["viscous"].real_parts for label, models in res.shaft_comparison.items()})
-    p = save_figure(real_parts_figure(st.speeds * _RPM, curves, op_rpm), folder, "stability_real_parts")
-    figs.append(FigureRef(p["png"], "Real parts of the eigenvalues against speed (viscous-equivalent internal damping; "
-                                    "thesis figures 4.2-4.4 for the three reference shafts)"))
+    figures = []
+    curves = {"this design (exact hysteretic loss)": st.log_decrements}
+    onsets = {"this design (exact hysteretic loss)": _rpm_or_none(st.onset_speed)}
+    texts = {"this design (exact hysteretic loss)": st.onset_description()}
+    whirl = {"this design (exact hysteretic loss)": st.whirl}
+    same_speeds = True
+    for label, models in res.shaft_comparison.items():
+        r = models["viscous"]
+        same_speeds &= r.speeds.shape == st.speeds.shape and bool(np.allclose(r.speeds, st.speeds))
+        name = f"{label} (viscous equivalent)"
+        curves[name], onsets[name], texts[name], whirl[name] = (r.log_decrements, _rpm_or_none(r.onset_speed),
+                                                                 r.onset_description(), r.whirl)
+    if not same_speeds:  # the comparison was run on other speeds: draw the design alone
+        curves, onsets, texts, whirl = ({k: v[k] for k in list(v)[:1]} for v in (curves, onsets, texts, whirl))
+    requirements = getattr(res.model.design, "requirements", None)
+    required = requirements.required_log_decrement if requirements is not None else None
+    figures.append(figs.add("stability_log_decrement", "Log decrement of the tracked modes against speed, the onset of "
+                                                       "whirl instability marked ✕ (the thesis's three reference shafts "
+                                                       "with the viscous-equivalent internal damping, figures 4.2-4.4)",
+                            log_decrement_figure, st.speeds * _RPM, curves, onsets, op_rpm,
+                            onset_text={k: v for k, v in texts.items() if v}, whirl=whirl, required=required))
     tables = []
     rows = [["this design", _onset_text(st.onset_speed, top), "—"]]
     rows += [[label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]
@@ -346,8 +439,8 @@ def _stability_section(res, folder, op_rpm) -> Section:
     if res.gain_map is not None:
         g = res.gain_map
         onset = {f"K_p = {kp:.3g} N/m": g.onset_speed[i] * _RPM for i, kp in enumerate(g.kp)}
-        p = save_figure(stability_map_figure(g.kd, onset, op_rpm, g.max_speed * _RPM), folder, "stability_map")
-        figs.append(FigureRef(p["png"], "Onset speed against the actuator gains"))
+        figures.append(figs.add("stability_map", "Onset speed against the actuator gains", stability_map_figure,
+                                g.kd, onset, op_rpm, g.max_speed * _RPM))
         tables.append(Table("Smallest damping ratio at the operating speed", ["K_p [N/m]", *[f"K_d = {kd:g}" for kd in g.kd]],
                             [[kp, *g.margin_at_operating[i]] for i, kp in enumerate(g.kp)]))
     return Section(
@@ -359,7 +452,7 @@ def _stability_section(res, folder, op_rpm) -> Section:
                     "frequency for the viscous model; the exact hysteretic model iterates each mode to its own "
                     "relative whirl frequency |ω − Ω|."],
         tables=tables,
-        figures=figs,
+        figures=figures,
     )
 
 
@@ -377,7 +470,7 @@ def _thermal_dict(res) -> dict | None:
     return out
 
 
-def _thermal_section(res, folder) -> Section:
+def _thermal_section(res, figs: _Figures) -> Section:
     from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
 
     th = res.thermal
@@ -388,7 +481,6 @@ def _thermal_section(res, folder) -> Section:
     xe = 0.5 * (x[:-1] + x[1:])
     rise = {f"{lm} loss model": s.temperature.temperature - s.temperature.air_temperature for lm, s in shafts.items()}
     heat = {f"{lm} loss model": s.sources.total / np.diff(x) for lm, s in shafts.items()}
-    p = save_figure(shaft_temperature_figure(x, rise, xe, heat), folder, "shaft_temperature")
     tables = []
     if th["tailboom"]:
         tables.append(Table("Tailboom skin temperature (thesis: 44 °C hovering, 89 °C parked)",
@@ -409,12 +501,14 @@ def _thermal_section(res, folder) -> Section:
     if sh is not None:
         paragraphs.append(f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
                           f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.")
-    figures = [FigureRef(p["png"], "Shaft temperature rise and heat generation along the shaft")]
+    figures = [figs.add("shaft_temperature", "Shaft temperature rise and heat generation along the shaft",
+                        shaft_temperature_figure, x, rise, xe, heat)]
     prof = th.get("profiles")
     if prof:
-        pp = save_figure(temperature_profiles_figure(prof["x"], prof["by_wall"], prof["by_h"]), folder, "shaft_temperature_sweeps")
-        figures.append(FigureRef(pp["png"], f"Shaft temperature profiles against wall thickness and convection "
-                                            f"({th['loss_model']} loss model; thesis figures 3.18, 3.19)"))
+        figures.append(figs.add("shaft_temperature_sweeps", f"Shaft temperature profiles against wall thickness and "
+                                                            f"convection ({th['loss_model']} loss model; thesis figures "
+                                                            "3.18, 3.19)", temperature_profiles_figure, prof["x"],
+                                prof["by_wall"], prof["by_h"]))
     return Section("Thermal", paragraphs=paragraphs, tables=tables, figures=figures)
 
 

@@ -14,26 +14,42 @@ from flexshaft.studies.chapter3 import TABLE_ANGLES, DesignStudies, nearest, two
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES
 
-__all__ = ["design_studies_section"]
+__all__ = ["design_studies_section", "studies_section_and_jobs"]
 
 
 _STRESS_NAMES = {0: "σ1", 1: "σ2", 2: "τ12"}
 
 
-def design_studies_section(results: DesignStudies, folder: str | Path):
-    """The "Design studies" section of the ``flexshaft run`` report: figures saved in
-    ``folder`` (PNG and SVG, names ``study_*``) and the tables of the headline numbers."""
+def design_studies_section(results: DesignStudies, folder: str | Path, *, svg: bool = True, processes: int = 1):
+    """The "Design studies" section of the ``flexshaft run`` report with its figures drawn and
+    saved in ``folder`` (PNG, and SVG when ``svg``; names ``study_*``)."""
+    from flexshaft.plot.output import render_figures
+
+    section, jobs = studies_section_and_jobs(results, folder)
+    render_figures(jobs, folder, svg=svg, processes=processes)
+    return section
+
+
+def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
+    """The "Design studies" section (figures referenced as ``folder/study_*.png``, tables of
+    the headline numbers) and the :class:`~flexshaft.plot.output.FigureJob` that draw its
+    figures (not drawn here)."""
     from flexshaft.plot import studies as sf
-    from flexshaft.plot.driveline import save_figure
+    from flexshaft.plot.output import FigureJob
     from flexshaft.report.html import FigureRef, Section, Table
 
     r = results
     folder = Path(folder)
     op_rpm = rad_s_to_rpm(r.operating_speed)
-    figs, tables = [], []
+    figs, tables, jobs = [], [], []
 
-    def add(fig, stem, caption):
-        figs.append(FigureRef(save_figure(fig, folder, stem)["png"], caption))
+    def add(call, stem, caption):
+        function, args, kwargs = call
+        jobs.append(FigureJob(stem, function, args, kwargs))
+        figs.append(FigureRef(folder / f"{stem}.png", caption))
+
+    def job(function, *args, **kwargs):
+        return function, args, kwargs
 
     rows = []
     if r.optimal_angle is not None:
@@ -57,7 +73,7 @@ def design_studies_section(results: DesignStudies, folder: str | Path):
         ds = r.ply_angle
         alpha = ds.alpha.values
         dom = [sf_name for sf_name in (_code_name(c) for c in ds["dominant_stress"].values)]
-        add(sf.ply_angle_figure(alpha, ds["safety_factor"].values, dom), "study_ply_angle",
+        add(job(sf.ply_angle_figure, alpha, ds["safety_factor"].values, dom), "study_ply_angle",
             "Safety factor vs ply orientation, one angle variable, no imbalance (thesis figure 3.2)")
         wanted = sorted({r.optimal_angle, *TABLE_ANGLES})
         trows = []
@@ -71,29 +87,29 @@ def design_studies_section(results: DesignStudies, folder: str | Path):
                             trows))
     if r.two_angle is not None:
         ds = r.two_angle
-        add(sf.two_angle_figure(ds.alpha.values, ds.beta.values, ds["safety_factor"].values), "study_two_angle",
+        add(job(sf.two_angle_figure, ds.alpha.values, ds.beta.values, ds["safety_factor"].values), "study_two_angle",
             "Safety factor of (α/−α/β/−β)s laminates, no imbalance (thesis figure 3.3)")
     if r.wall is not None:
         ds = r.wall
         if np.isfinite(ds["safety_factor"].values).any():
-            add(sf.wall_thickness_figure(ds.wall_thickness.values, ds["safety_factor"].values,
+            add(job(sf.wall_thickness_figure, ds.wall_thickness.values, ds["safety_factor"].values,
                                          ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values),
                 "study_wall", "Safety factor with and without imbalance and the first natural frequency vs wall "
                               "thickness at fixed outer diameter (thesis figure 3.4, eq. 3.3)")
     if r.forced_response is not None:
         ds = r.forced_response
-        add(sf.forced_response_figure(rad_s_to_rpm(ds.speed.values),
+        add(job(sf.forced_response_figure, rad_s_to_rpm(ds.speed.values),
                                       {f"wall {w * 1e3:g} mm": ds["shaft_peak"].values[k] for k, w in enumerate(ds.wall_thickness.values)},
                                       op_rpm), "study_forced_response",
             "Maximum shaft response to imbalance for two walls (thesis figure 3.5)")
     if r.gain is not None:
         ds = r.gain
-        add(sf.gain_figure(ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values,
+        add(job(sf.gain_figure, ds.kp.values, ds["safety_factor"].values, ds["actuator_displacement"].values,
                            r.gains_before[0] if r.gains_before else None), "study_gain",
             "Safety factor and actuator displacement at the operating speed vs K_p (thesis figure 3.6)")
     if r.buckling is not None:
         ds = r.buckling
-        add(sf.buckling_figure(ds.wall_thickness.values, ds["buckling_safety_factor"].values), "study_buckling",
+        add(job(sf.buckling_figure, ds.wall_thickness.values, ds["buckling_safety_factor"].values), "study_buckling",
             "Torsional buckling safety factor vs wall thickness (thesis figure 3.10)")
     if r.spinup_map is not None:
         ds = r.spinup_map
@@ -107,18 +123,18 @@ def design_studies_section(results: DesignStudies, folder: str | Path):
              "Maximum actuator force vs control gains (thesis figure 3.16)"),
         ):
             values = ds[var].values if ds[var].ndim == 2 else ds[var].values.max(axis=-1)
-            add(sf.gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=r.gains_after,
+            add(job(sf.gain_map_figure, ds.kp.values, ds.kd.values, values, label, scale=scale, best=r.gains_after,
                                    other=other, title=caption.split(" (")[0]), stem, caption)
     if r.surfaces is not None:
         ds = r.surfaces
-        add(sf.response_surface_figure(ds.x.values, rad_s_to_rpm(ds.speed.values),
+        add(job(sf.response_surface_figure, ds.x.values, rad_s_to_rpm(ds.speed.values),
                                        {str(c): ds["shaft_orbit"].values[k] for k, c in enumerate(ds.case.values)}),
             "study_response_surfaces", "Frequency-response surfaces during spin-up (thesis figures 3.13, 3.14)")
     if r.tuned is not None:
         ds = r.tuned
         curves = {f"{c}: K_p = {float(ds.kp[k]):.3g} N/m, K_d = {float(ds.kd[k]):.3g} N s/m": ds["shaft_peak"].values[k]
                   for k, c in enumerate(ds.case.values)}
-        add(sf.tuned_gains_figure(rad_s_to_rpm(ds.speed.values), curves, op_rpm), "study_tuned_gains",
+        add(job(sf.tuned_gains_figure, rad_s_to_rpm(ds.speed.values), curves, op_rpm), "study_tuned_gains",
             "Spin-up response with the design gains and the tuned gains (thesis figure 3.17)")
         trows = []
         for k, c in enumerate(ds.case.values):
@@ -131,7 +147,7 @@ def design_studies_section(results: DesignStudies, folder: str | Path):
                              "max actuator displacement [mm]", "max actuator force [N]"], trows))
     if r.stability_map is not None:
         ds = r.stability_map
-        add(sf.stability_margin_figure(ds.kp.values, ds.kd.values, ds["damping_ratio"].values,
+        add(job(sf.stability_margin_figure, ds.kp.values, ds.kd.values, ds["damping_ratio"].values,
                                        rad_s_to_rpm(ds["onset_speed"].values), r.gains_after), "study_stability_margin",
             "Smallest damping ratio at the operating speed over the actuator gains (whirl onset speed per cell)")
 
@@ -147,7 +163,7 @@ def design_studies_section(results: DesignStudies, folder: str | Path):
         "thesis's ±55° is not reproduced with these assumed properties and loads (docs/studies.md).",
     ]
     paragraphs += list(r.notes)
-    return Section("Design studies (thesis chapter 3)", paragraphs=paragraphs, tables=tables, figures=figs)
+    return Section("Design studies (thesis chapter 3)", paragraphs=paragraphs, tables=tables, figures=figs), jobs
 
 
 def _code_name(code) -> str:

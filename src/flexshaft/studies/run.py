@@ -14,7 +14,7 @@ from flexshaft.analyses import imbalance_response, modes
 from flexshaft.analyses.campbell import Campbell, campbell
 from flexshaft.analyses.metal_strength import metal_strength
 from flexshaft.analyses.misalignment import coupling_misalignment
-from flexshaft.analyses.response import actuator_response, worst_case_orbits
+from flexshaft.analyses.response import actuator_response, bearing_reactions, worst_case_orbits
 from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
 from flexshaft.assembly import build_model
@@ -57,6 +57,8 @@ class RunResults:
     notes: list = field(default_factory=list)
     verdict: object = None  # flexshaft.studies.verdict.Verdict against the design's [requirements]
     shaft_orbits: np.ndarray | None = None  # (nodes, cases, speeds) orbit amplitude at every shaft node [m]
+    bearing_reactions: dict = field(default_factory=dict)  # name -> analyses.response.BearingReaction
+    imbalance_spinup: object = None  # HarmonicResponse (ndof, ncases, n_speeds) over `speeds`
     metal_strength: object = None  # MetalStrength of the isotropic segments (None: no isotropic segment)
     coupling_misalignment: object = None  # CouplingMisalignment (None: no couplings)
 
@@ -84,7 +86,10 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         Resolution of the thesis design studies (chapter 3, and the whirl comparison of
         chapter 4); None skips them.
     """
+    from flexshaft.assembly.size import check_problem_size
+
     step = progress or (lambda label: None)
+    check_problem_size(design, "run", n_speeds=n_speeds, stacklevel=3)  # refuses what cannot finish; warns when large
     step("assembling the model")
     model = build_model(design)
     speed = model.speed
@@ -107,6 +112,7 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
     parts = static_load_parts(model)
     q_static = parts["external"] + parts["torque"]
     q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    reactions = bearing_reactions(model, q_static, q_at_speed)
     strength_static = strength_total = None
     notes = []
     buckling = None
@@ -176,6 +182,8 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         design_studies=design_studies_result,
         notes=notes,
         shaft_orbits=amp,
+        bearing_reactions=reactions,
+        imbalance_spinup=q,
         metal_strength=metal,
         coupling_misalignment=misalignment,
     )

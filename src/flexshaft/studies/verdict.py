@@ -304,6 +304,20 @@ class Verdict(ResultMixin):
 
     checks: tuple[Check, ...]
 
+    plots = {"margins": "plot_margins"}
+
+    def plot_margins(self, ax=None, **kwargs):
+        """Bar chart of every check's margin divided by its limit, green pass, red fail, grey
+        not evaluated, with the margin in engineering units beside each bar (keywords to
+        :func:`flexshaft.plot.verdict.margins_figure`)."""
+        from flexshaft.plot.verdict import margins_figure
+
+        normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
+        return margins_figure([c.title for c in self.checks], normalised, [c.status for c in self.checks],
+                              [_margin_text(c.kind, c.margin) for c in self.checks], [c.lower_bound for c in self.checks],
+                              ax=ax, **{"title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} "
+                                                 "(margin / limit of each)", **kwargs})
+
     def to_dataset(self):
         """One row per check: value, limit, margin (SI, the unit of each check in ``units``),
         status coded pass/fail/not_evaluated (xarray)."""
@@ -371,6 +385,25 @@ class Verdict(ResultMixin):
 
     def to_dict(self) -> dict:
         return {"passed": self.passed, "summary": self.summary, "checks": [c.to_dict() for c in self.checks]}
+
+
+def _margin_text(kind: str, margin: float | None) -> str:
+    """A signed margin in engineering units (rpm, mm, N, K, percentage points), for figures."""
+    if margin is None:
+        return ""
+    from flexshaft.units import rad_s_to_rpm
+
+    if kind == "speed":
+        return f"{rad_s_to_rpm(margin):+.0f} rpm"
+    if kind == "length":
+        return f"{margin * 1e3:+.3g} mm"
+    if kind == "force":
+        return f"{margin:+.4g} N"
+    if kind == "temperature":
+        return f"{margin:+.1f} K"
+    if kind == "fraction":
+        return f"{margin * 100:+.1f} pts"
+    return f"{margin:+.3g}"
 
 
 def _not_evaluated(key: str, title: str, kind: Kind, sense, note: str) -> Check:

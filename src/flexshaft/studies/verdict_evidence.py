@@ -98,13 +98,31 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
         if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
             continue
         location = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
+        amplification = peak.amplification_factor
         if not peak.resolved:
-            location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
+            if _undamped_at(model, peak.speed):
+                amplification = float("inf")
+                location["detail"] = "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+            else:
+                location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
         mode = _campbell_label(campbell, peak.speed)
         if mode:
             location["mode"] = mode
-        out.append(LateralCritical(peak.speed, peak.amplification_factor, location))
+        out.append(LateralCritical(peak.speed, amplification, location))
     return tuple(sorted(out, key=lambda c: c.speed))
+
+
+def _undamped_at(model: Model, speed: float) -> bool:
+    """True when the synchronous mode at ``speed`` [rad/s] has no damping (|ζ| < 1e-9): its
+    peak is infinite however finely the speed is sampled."""
+    from flexshaft.analyses import modes
+
+    m = modes(model, speed, n_modes=12)
+    lateral = m.kind == "lateral"
+    if not np.any(lateral):
+        return False
+    k = int(np.argmin(np.where(lateral, np.abs(m.eigenvalues.imag - speed), np.inf)))
+    return bool(abs(m.damping_ratios[k]) < 1e-9)
 
 
 def _campbell_label(campbell, speed: float) -> str:

@@ -1,0 +1,156 @@
+"""Checks of derived numbers while a model is built; each refuses with a DesignError naming fields.
+
+The schema bounds each number on its own (:mod:`flexshaft.design.quantities`); these checks
+cover what only combinations of numbers decide:
+
+* **Support stiffness against the shaft's element stiffness.** A bearing much stiffer than one
+  shaft element is rigid to the model but makes ``K`` ill-conditioned, and the lowest
+  eigenvalues lose digits as ``ε · k/k_element``. Measured on the baseline (36 elements,
+  ``k_element = E I / h³ = 7.9e6 N/m`` with ``h`` = shaft length / ``mesh.shaft_elements``):
+  a hanger stiffness of 1e12 N/m (1.3e5 ``k_element``) moves f1 by 4e-7, 1e14 N/m (1.3e7) by
+  3e-5 and 1e16 N/m (1.3e9) by 0.8 %, about 3e-12 per ``k_element``. A support is refused
+  above :data:`RIGID_RATIO` = 1e8 ``k_element`` (error about 3e-4): a stiffer support is no
+  more rigid, it only costs digits. The same holds
+  for the rotational directions (``E I / h``), the axial one (``E A / h``) and for an actuator's
+  proportional gain ``k_i K_p`` and negative stiffness ``k_s``.
+* **Actuator gains from the magnet geometry** (``k_i ∝ N² A i₀ / g²``) must stay within the
+  ranges the schema allows for given gains.
+* **The controller law** ``k_i A(s) C(s)``: its state-space realization and its value at
+  ``s = iω`` over the frequencies of the analyses must be finite (coefficients beyond
+  ~1e100 or corner frequencies near zero overflow).
+* **Every assembled matrix is finite.**
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from flexshaft.design import DesignError, Problem
+from flexshaft.design.quantities import MAX_CONTROLLER_COEFFICIENT
+
+__all__ = ["RIGID_RATIO", "check_actuator_law", "check_bearing_stiffness", "check_finite_model", "check_magnet",
+           "element_stiffness"]
+
+#: Largest support stiffness in units of one shaft element's stiffness (see the module docstring).
+RIGID_RATIO = 1e8
+#: Largest |k_i| [N/A] and k_s [N/m] (the schema's ranges for given gains).
+_MAX_CURRENT_GAIN = 1e6
+_MAX_NEGATIVE_STIFFNESS = 1e12
+_DIRECTIONS = ("u", "v", "w", "beta", "gamma")
+_SOURCE = "<design>"
+
+
+def element_stiffness(design, shaft) -> dict[str, float]:
+    """Stiffness of one nominal shaft element by direction: axial ``E A / h`` [N/m], lateral
+    ``E I / h³`` [N/m] and rotational ``E I / h`` [N m/rad], with the storage modulus of the
+    equivalent shaft ``shaft`` (:class:`~flexshaft.assembly.model.ShaftProperties`) and
+    ``h`` = shaft length / ``mesh.shaft_elements`` [m]."""
+    h = (design.shaft.x_end - design.shaft.x_start) / design.mesh.shaft_elements
+    E = float(np.real(shaft.youngs_modulus))
+    do, di = shaft.outer_diameter, shaft.inner_diameter
+    area = np.pi * (do * do - di * di) / 4.0
+    inertia = np.pi * (do**4 - di**4) / 64.0
+    lateral, rotational = E * inertia / h**3, E * inertia / h
+    return {"u": E * area / h, "v": lateral, "w": lateral, "beta": rotational, "gamma": rotational}
+
+
+def _too_stiff(path: str, value: float, reference: float, unit: str, what: str) -> Problem:
+    return Problem(path, f"{value:g} {unit} is {value / reference:.3g} times the {what} of one shaft element "
+                         f"({reference:.3g} {unit}); a support stiffer than {RIGID_RATIO:g} times it is no more rigid "
+                         f"but costs the eigen-solution its digits (got {value!r}; allowed: at most "
+                         f"{RIGID_RATIO * reference:.3g} {unit} for this shaft and mesh.shaft_elements = "
+                         f"{{elements}}, see docs/limits.md)")
+
+
+def check_bearing_stiffness(design, shaft) -> None:
+    """Refuse supports stiffer than :data:`RIGID_RATIO` shaft elements (module docstring)."""
+    reference = element_stiffness(design, shaft)
+    what = {"u": "axial stiffness E A/h", "v": "bending stiffness E I/h³", "w": "bending stiffness E I/h³",
+            "beta": "rotational stiffness E I/h", "gamma": "rotational stiffness E I/h"}
+    problems = []
+    for index, bearing in enumerate(design.bearings):
+        if bearing.kind == "contact":
+            for direction, value in bearing.stiffness.items():
+                unit = "N m/rad" if direction in ("beta", "gamma") else "N/m"
+                if value > RIGID_RATIO * reference[direction]:
+                    problems.append(_too_stiff(f"bearings[{index}].stiffness.{direction}", value,
+                                               reference[direction], unit, what[direction]))
+        else:
+            gains = {"kp": (bearing.kp or 0.0) * (1.0 if bearing.ki is None else bearing.ki), "ks": bearing.ks or 0.0}
+            for name, value in gains.items():
+                if value > RIGID_RATIO * reference["v"]:
+                    problems.append(_too_stiff(f"bearings[{index}].{name}", value, reference["v"], "N/m",
+                                               what["v"] + (" (k_i kp)" if name == "kp" else "")))
+    if problems:
+        elements = design.mesh.shaft_elements
+        raise DesignError([Problem(p.path, p.message.replace("{elements}", str(elements))) for p in problems], _SOURCE)
+
+
+def check_magnet(design, index: int, current_gain: float, negative_stiffness: float) -> None:
+    """Refuse magnet gains outside the ranges allowed for given gains (k_i in (0, 1e6] N/A,
+    k_s in [0, 1e12] N/m), naming the geometry fields they come from."""
+    bearing = design.bearings[index]
+    fields = "coil_turns, pole_area, bias_current, air_gap" if bearing.uses_magnet_geometry else None
+    problems = []
+    for name, value, low_ok, high in (("ki", current_gain, lambda v: v > 0, _MAX_CURRENT_GAIN),
+                                      ("ks", negative_stiffness, lambda v: v >= 0, _MAX_NEGATIVE_STIFFNESS)):
+        if not (np.isfinite(value) and low_ok(value) and value <= high):
+            unit = "N/A" if name == "ki" else "N/m"
+            if fields is None:
+                path, origin = f"bearings[{index}].{name}", f"got {value!r}"
+            else:
+                path, origin = f"bearings[{index}].coil_turns", f"{name} = {value:.6g} {unit} from {fields}"
+            allowed = "in (0, 1e6] N/A" if name == "ki" else "in [0, 1e12] N/m"
+            problems.append(Problem(path, f"gives the magnet gain {name} = {value:.6g} {unit} ({origin}; allowed: "
+                                          f"{name} {allowed})"))
+    if problems:
+        raise DesignError(problems, _SOURCE)
+
+
+def check_actuator_law(design, index: int, actuator, speed: float) -> None:
+    """Refuse a feedback law ``k_i A(s) C(s)`` whose realization or frequency values overflow.
+
+    The law is evaluated at ``s = iω`` for ω from 1 rad/s to 100 × the largest of the operating
+    speed and 1e3 rad/s (and at ω = 0 unless it integrates); the realization's entries must
+    stay below :data:`~flexshaft.design.quantities.MAX_CONTROLLER_COEFFICIENT`.
+    """
+    bearing = design.bearings[index]
+    laws = [actuator.feedback, actuator.collocated_law]
+    omegas = np.geomspace(1.0, 100.0 * max(speed, 1e3), 7)
+    reason = None
+    with np.errstate(all="ignore"):
+        for law in laws:
+            try:
+                parts = law.realization()
+            except (ValueError, np.linalg.LinAlgError, ZeroDivisionError) as error:
+                reason = f"has no state-space realization ({error})"
+                break
+            largest = max((float(np.max(np.abs(part), initial=0.0)) for part in parts), default=0.0)
+            if not np.isfinite(largest) or largest > MAX_CONTROLLER_COEFFICIENT:
+                reason = f"has a state-space realization with entries up to {largest:.3g}"
+                break
+            values = np.concatenate([law(1j * omegas), law.derivative(1j * omegas)])
+            if not law.integrates:
+                values = np.append(values, law(0.0))
+            if not np.all(np.isfinite(values)):
+                reason = "is not finite at some frequency s = iω, 1 to " f"{omegas[-1]:.3g} rad/s"
+                break
+    if reason is not None:
+        path = f"bearings[{index}].controller" if bearing.controller is not None else f"bearings[{index}]"
+        fields = ("controller coefficients" if bearing.controller is not None else
+                  "kp, kd, integral_gain, derivative_cutoff")
+        raise DesignError([Problem(path, f"the feedback law k_i A(s) C(s) {reason} (allowed: a law finite over the "
+                                         f"analysed frequencies with realization entries below "
+                                         f"{MAX_CONTROLLER_COEFFICIENT:g}: rescale the {fields}, "
+                                         "amplifier_bandwidth or ki)")], _SOURCE)
+
+
+def check_finite_model(model) -> None:
+    """Refuse a model with a non-finite matrix entry (a last guard behind the bounds above)."""
+    matrices = {"mass": model.M, "stiffness": model.K, "damping": model.C, "gyroscopic": model.G,
+                "shaft loss stiffness": model.shaft_loss_stiffness, "boom loss stiffness": model.boom_loss_stiffness}
+    bad = [name for name, matrix in matrices.items() if matrix is not None and not np.all(np.isfinite(matrix.data))]
+    if bad:
+        raise DesignError([Problem("design", f"the assembled {', '.join(bad)} matrix has non-finite entries: some "
+                                             "combination of the design's numbers overflows double precision "
+                                             "(see docs/limits.md)")], _SOURCE)

@@ -1,0 +1,307 @@
+"""Problem-size estimate: memory and time of a design's analyses, before computing them.
+
+:func:`problem_size` counts what the analyses will hold from the design alone (no matrices are
+built): the mesh nodes and DOFs, bearings, actuators and their controller states, imbalance
+bays and load cases. From them it estimates the largest arrays and the run time:
+
+* modal basis: a dense generalised eigen-solve (``8 n²`` bytes per matrix, about five such
+  arrays) up to :data:`SPARSE_BASIS_ABOVE` free DOFs, else sparse shift-invert Lanczos (a
+  banded factor and the Lanczos vectors, ``O(n)``);
+* banded harmonic solves: ``16 n (3 k + 1)`` bytes for a half-bandwidth ``k``;
+* first-order eigen-problems of ``2 nb + s`` states (``nb`` modal coordinates, ``s``
+  controller states): ``16 (2 nb + s)²`` bytes and ``~5e-9 (2 nb + s)³`` s each;
+* the spin-up responses of ``flexshaft run``: ``16 · DOFs · load cases · speeds`` bytes.
+
+:func:`check_problem_size` raises a :class:`~flexshaft.design.DesignError` naming the fields to
+change when an estimate exceeds its hard cap (:data:`HARD_MEMORY_BYTES`,
+:data:`HARD_TIME_SECONDS`) and warns with :class:`ProblemSizeWarning` above the soft caps.
+:func:`~flexshaft.assembly.build.build_model` checks the model-level estimate; the ``run``
+estimate adds the spin-up responses and every step of ``flexshaft run``.
+
+The time constants were measured on the development machine (2 shared cores, one BLAS
+thread): they give the order of magnitude, not a promise. The baseline estimates 0.03 GB and
+about 20 s for ``run`` (measured: 22 s).
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from flexshaft.assembly.mesh import design_mesh, merge_stations, merge_tolerance
+from flexshaft.design import DesignError, Problem
+
+__all__ = [
+    "HARD_MEMORY_BYTES",
+    "HARD_TIME_SECONDS",
+    "MAX_WORST_BAYS",
+    "RUN_SPEEDS",
+    "SOFT_DOFS",
+    "SOFT_MEMORY_BYTES",
+    "SOFT_TIME_SECONDS",
+    "SPARSE_BASIS_ABOVE",
+    "ProblemSize",
+    "ProblemSizeWarning",
+    "bearing_bays",
+    "check_problem_size",
+    "problem_size",
+]
+
+#: Free-DOF count above which the modal basis is computed by sparse shift-invert
+#: (:func:`flexshaft.analyses.eigen.modal_basis`).
+SPARSE_BASIS_ABOVE = 900
+#: Spin-up speeds of ``flexshaft run`` (:func:`flexshaft.studies.run.run_analysis`).
+RUN_SPEEDS = 400
+#: Modal basis of the run's eigen-analyses (10 to 12 modes: ``max(4 n_modes, 60)``).
+RUN_BASIS = 60
+#: Most imbalance bays the ``"worst"`` placement enumerates (2^(bays−1) = 512 load cases).
+MAX_WORST_BAYS = 10
+#: Estimated memory above which a design is refused / warned about [bytes].
+HARD_MEMORY_BYTES = 2 * 1024**3
+SOFT_MEMORY_BYTES = 512 * 1024**2
+#: Estimated time above which a design is refused / warned about [s].
+HARD_TIME_SECONDS = 4 * 3600.0
+SOFT_TIME_SECONDS = 600.0
+#: DOF count above which a warning says that a finer mesh is no more accurate: the dynamic
+#: stiffness's condition number grows as (elements per member)⁴ and, near 400 elements per
+#: member, the harmonic solver starts to report false singular systems.
+SOFT_DOFS = 3000
+
+# Time constants [s] (development machine, one BLAS thread).
+_EIG_CUBIC = 5e-9  # dense nonsymmetric eigen-solve, per state³
+_EIG_FIXED = 0.01  # Newton refinement and tracking per speed
+_DENSE_BASIS_CUBIC = 5e-10  # dense generalised symmetric eigen-solve, per DOF³
+_SPARSE_BASIS_LINEAR = 1.6e-7  # shift-invert Lanczos, per DOF
+_BANDED_SOLVE = 2e-8  # banded LU, per DOF × half-bandwidth²
+_BANDED_FIXED = 2e-4
+
+
+class ProblemSizeWarning(UserWarning):
+    """The design's analyses will be large or slow (between the soft and the hard cap).
+
+    A UserWarning (shown by default; a ResourceWarning would be hidden outside ``__main__``).
+    """
+
+
+@dataclass(frozen=True)
+class ProblemSize:
+    """What a design's analyses hold and how long they take (estimates).
+
+    Attributes
+    ----------
+    analysis : {"model", "run"}
+        ``"model"``: building the model and its modes; ``"run"``: all of ``flexshaft run``.
+    shaft_nodes, boom_nodes, dofs, free_dofs : int
+        Mesh size (after merging close stations).
+    bearings, actuators, disks : int
+    controller_states : int
+        States added by the actuators' controllers (both lateral directions).
+    bays, load_cases : int
+        Imbalance bays and the load cases of the imbalance placement.
+    n_speeds : int
+        Spin-up speeds of the run.
+    dense_basis : bool
+        Whether the modal basis is a dense eigen-solve.
+    memory : dict of str to float
+        Largest arrays by part [bytes].
+    time : dict of str to float
+        Time by part [s].
+    """
+
+    analysis: str
+    shaft_nodes: int
+    boom_nodes: int
+    dofs: int
+    free_dofs: int
+    bearings: int
+    actuators: int
+    disks: int
+    controller_states: int
+    bays: int
+    load_cases: int
+    n_speeds: int
+    dense_basis: bool
+    memory: dict = field(default_factory=dict)
+    time: dict = field(default_factory=dict)
+
+    @property
+    def memory_bytes(self) -> float:
+        """Estimated peak memory [bytes] (the parts added up: an upper estimate)."""
+        return float(sum(self.memory.values()))
+
+    @property
+    def time_seconds(self) -> float:
+        """Estimated time [s]."""
+        return float(sum(self.time.values()))
+
+    @property
+    def largest_memory(self) -> str:
+        return max(self.memory, key=self.memory.get)
+
+    @property
+    def largest_time(self) -> str:
+        return max(self.time, key=self.time.get)
+
+    def summary(self) -> str:
+        """One line: the counts and the estimates."""
+        return (f"{self.dofs:,} DOFs ({self.shaft_nodes:,} shaft and {self.boom_nodes:,} boom nodes), "
+                f"{self.bearings} bearings ({self.actuators} active, {self.controller_states} controller states), "
+                f"{self.disks} disks, {self.load_cases:,} imbalance load case(s): about "
+                f"{_gigabytes(self.memory_bytes)} and {_duration(self.time_seconds)} for {self.analysis!r}")
+
+
+def bearing_bays(stations, tolerance: float) -> list[tuple[float, float]]:
+    """Bays between consecutive bearing stations [m], stations closer than ``tolerance`` [m]
+    counted as one (the mesh merges them too, :func:`~flexshaft.assembly.mesh.merge_stations`)."""
+    xs = merge_stations(list(stations), tolerance) if len(stations) else np.zeros(0)
+    return [(float(a), float(b)) for a, b in zip(xs[:-1], xs[1:]) if b > a]
+
+
+def _controller_order(bearing) -> int:
+    numerator, denominator = bearing.transfer_function()
+    den = np.trim_zeros(np.asarray(denominator, dtype=float), "f")
+    return max(den.size - 1, 0) + (1 if bearing.amplifier_bandwidth is not None else 0)
+
+
+def problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: int = RUN_SPEEDS) -> ProblemSize:
+    """Estimate the size of the analyses of ``design`` (see the module docstring).
+
+    Parameters
+    ----------
+    design : Design
+        A validated design.
+    analysis : {"model", "run"}
+        Building the model and computing its modes, or the whole of ``flexshaft run``.
+    n_speeds : int
+        Spin-up speeds of the run (>= 1).
+    """
+    if analysis not in ("model", "run"):
+        raise ValueError(f"analysis must be 'model' or 'run' (got {analysis!r})")
+    if int(n_speeds) != n_speeds or n_speeds < 1:
+        raise ValueError(f"n_speeds must be an integer >= 1 (got {n_speeds!r})")
+    shaft_x, boom_x = design_mesh(design)
+    dofs = 6 * shaft_x.size + 5 * boom_x.size
+    fixed = len(design.shaft.fixed_start) + len(design.shaft.fixed_end) + (5 if boom_x.size else 0)
+    free = dofs - fixed
+    active = [b for b in design.bearings if b.kind == "active"]
+    states = sum(2 * _controller_order(b) * (1 if b.sensor_offset == 0.0 else 2) for b in active)
+    span = design.shaft.x_end - design.shaft.x_start
+    bays = len(bearing_bays([b.x for b in design.bearings], merge_tolerance(span, design.mesh.shaft_elements))) or 1
+    worst = design.loads.imbalance_placement == "worst"
+    cases = 2 ** (min(bays, MAX_WORST_BAYS + 1) - 1) if worst else 1
+    nb = min(RUN_BASIS, free)
+    dense = free <= SPARSE_BASIS_ABOVE or nb >= free // 2
+    half_band = 24 if boom_x.size else 12
+    n_states = 2 * nb + states
+
+    memory = {"matrices": 8 * 12.0 * 40 * dofs}
+    time = {"assembly": 1e-4 * dofs + 0.05}
+    if dense:
+        memory["modal basis (dense)"] = 5 * 8.0 * free**2
+        basis_time = _DENSE_BASIS_CUBIC * free**3 + 0.01
+    else:
+        memory["modal basis (sparse)"] = 8.0 * free * (6 * half_band + 2 * nb + 2)
+        basis_time = _SPARSE_BASIS_LINEAR * free + 0.05
+    memory["state matrices"] = 4 * 16.0 * n_states**2
+    speed_time = _EIG_FIXED + _EIG_CUBIC * n_states**3
+    solve_time = _BANDED_FIXED + _BANDED_SOLVE * free * half_band**2
+    if analysis == "model":
+        time["modal basis"] = basis_time
+        time["eigen-solutions"] = 2 * speed_time
+    else:
+        pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
+        eigen_speeds = 2 + 60 + 61 + 3 * (61 + 31) + (12 * 61 if active and pd_only else 0)
+        memory["banded harmonic solver"] = 16.0 * free * (3 * half_band + 1) * 2
+        memory["spin-up responses"] = 16.0 * dofs * cases * n_speeds * 2
+        time["modal bases"] = 10 * basis_time
+        time["eigen-solutions"] = eigen_speeds * speed_time
+        time["harmonic solves"] = (n_speeds + 600) * solve_time + 16e-9 * dofs * cases * n_speeds
+    return ProblemSize(analysis, int(shaft_x.size), int(boom_x.size), int(dofs), int(free), len(design.bearings),
+                       len(active), len(design.disks), int(states), int(bays), int(cases), int(n_speeds), bool(dense),
+                       memory, time)
+
+
+def _gigabytes(size: float) -> str:
+    return f"{size / 1024**3:.2g} GiB" if size >= 0.1 * 1024**3 else f"{size / 1024**2:.3g} MiB"
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 120:
+        return f"{seconds:.2g} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.2g} min"
+    return f"{seconds / 3600:.2g} h"
+
+
+def _what_to_change(size: ProblemSize, design) -> list[tuple[str, str]]:
+    """(field path, advice) pairs that reduce the largest estimates."""
+    advice = []
+    if size.load_cases > 1:
+        advice.append(("loads.imbalance_placement",
+                       f'"worst" enumerates 2^(bays-1) = {size.load_cases:,} load cases over {size.bays} bays: use '
+                       '"mid_bay" or "distributed", or fewer bearings'))
+    if size.controller_states > 2 * RUN_BASIS:
+        advice.append(("bearings", f"{size.actuators} active bearings add {size.controller_states:,} controller "
+                                   "states: use fewer active bearings or lower-order controllers"))
+    if size.dofs > SOFT_DOFS or advice == []:
+        advice.append(("mesh.shaft_elements", f"{design.mesh.shaft_elements} shaft and {design.mesh.boom_elements} "
+                                              f"boom elements give {size.dofs:,} DOFs: use fewer (36 and 24 converge "
+                                              "the baseline's lowest frequencies within 3e-8)"))
+    return advice
+
+
+def check_problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: int = RUN_SPEEDS, *,
+                       hard_memory: float = HARD_MEMORY_BYTES, soft_memory: float = SOFT_MEMORY_BYTES,
+                       hard_time: float = HARD_TIME_SECONDS, soft_time: float = SOFT_TIME_SECONDS,
+                       stacklevel: int = 2) -> ProblemSize:
+    """:func:`problem_size`, refused above the hard caps and warned about above the soft ones.
+
+    Raises
+    ------
+    DesignError
+        When the ``"worst"`` placement has more than :data:`MAX_WORST_BAYS` bays (``run``), or
+        an estimate exceeds ``hard_memory`` [bytes] or ``hard_time`` [s]; the message gives the
+        numbers and the fields to change.
+
+    Warns
+    -----
+    ProblemSizeWarning
+        Above ``soft_memory``, ``soft_time`` or :data:`SOFT_DOFS` DOFs (``stacklevel`` as for
+        :func:`warnings.warn`: 2 points at the caller).
+    """
+    size = problem_size(design, analysis, n_speeds)
+    problems: list[Problem] = []
+    if analysis == "run" and design.loads.imbalance_placement == "worst" and size.bays > MAX_WORST_BAYS:
+        problems.append(Problem("loads.imbalance_placement",
+                                f'"worst" would enumerate 2^(bays-1) = 2^{size.bays - 1} load cases over {size.bays} '
+                                f'bays (got "worst"; allowed: at most {MAX_WORST_BAYS} bays, i.e. '
+                                f'{2 ** (MAX_WORST_BAYS - 1)} cases, or "mid_bay" / "distributed")'))
+    over = []
+    if size.memory_bytes > hard_memory:
+        over.append(f"needs about {_gigabytes(size.memory_bytes)} (mostly {size.largest_memory}; allowed: "
+                    f"{_gigabytes(hard_memory)})")
+    if size.time_seconds > hard_time:
+        over.append(f"takes about {_duration(size.time_seconds)} (mostly {size.largest_time}; allowed: "
+                    f"{_duration(hard_time)})")
+    if over:
+        for path, advice in _what_to_change(size, design):
+            problems.append(Problem(path, f"{advice}; {analysis!r} of {size.dofs:,} DOFs, {size.load_cases:,} "
+                                          f"load case(s) and {size.controller_states:,} controller states "
+                                          + " and ".join(over)))
+    if problems:
+        raise DesignError(problems, "<problem size>")
+    notes = []
+    if size.memory_bytes > soft_memory:
+        notes.append(f"needs about {_gigabytes(size.memory_bytes)} (mostly {size.largest_memory})")
+    if size.time_seconds > soft_time:
+        notes.append(f"takes about {_duration(size.time_seconds)} (mostly {size.largest_time})")
+    if size.dofs > SOFT_DOFS:
+        notes.append(f"has {size.dofs:,} DOFs: a finer mesh is no more accurate and its harmonic solves lose digits")
+    if notes:
+        advice = "; ".join(f"{path}: {text}" for path, text in _what_to_change(size, design))
+        warnings.warn(f"{size.summary()}; the analysis {' and '.join(notes)}. To reduce it: {advice}",
+                      ProblemSizeWarning, stacklevel=stacklevel)
+    return size

@@ -1,0 +1,162 @@
+"""``flexshaft runup`` and ``flexshaft montecarlo``: the transient run-up through the criticals
+and the Monte-Carlo imbalance study (:mod:`flexshaft.analyses.transient`,
+:mod:`flexshaft.studies.montecarlo`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from flexshaft.cli.common import check_finite, guarded, load_design_argument, print_json
+from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption
+from flexshaft.cli.output import prepare_output_folder
+
+__all__ = ["montecarlo", "runup"]
+
+
+def _limits(design) -> tuple[float | None, float | None]:
+    """The smallest auxiliary-bearing gap [m] and force capacity [N] of the active bearings."""
+    gaps = [b.gap for b in design.bearings if b.kind == "active" and getattr(b, "gap", None)]
+    forces = [b.force_capacity for b in design.bearings if b.kind == "active" and getattr(b, "force_capacity", None)]
+    return (min(gaps) if gaps else None), (min(forces) if forces else None)
+
+
+@guarded
+def runup(
+    design: DesignArgument = None,
+    duration: Annotated[float, typer.Option("--duration", help="Run-up time from --start-rpm to --stop-rpm [s].")] = 10.0,
+    start_rpm: Annotated[float, typer.Option("--start-rpm", help="Start speed [rpm].")] = 0.0,
+    stop_rpm: Annotated[Optional[float], typer.Option(
+        "--stop-rpm", help="End speed [rpm]; default the operating speed (below --start-rpm: a run-down).")] = None,
+    dwell: Annotated[float, typer.Option("--dwell", help="Time held at the end speed [s].")] = 0.0,
+    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for runup.nc and runup.png.")] = Path("flexshaft-runup"),
+    force: ForceOption = False,
+    as_json: JsonOption = False,
+) -> None:
+    """Run-up (or run-down) transient at constant acceleration: shaft and actuator envelopes
+    against the steady-state spin-up curve."""
+    from flexshaft.units import rad_s_to_rpm, rpm_to_rad_s
+
+    check_finite("--duration", duration, 1e-3, 3600.0)
+    check_finite("--start-rpm", start_rpm, 0.0, 1e6)
+    check_finite("--stop-rpm", stop_rpm, 0.0, 1e6)
+    check_finite("--dwell", dwell, 0.0, 3600.0)
+    loaded = load_design_argument(design)
+    folder = prepare_output_folder(out, loaded.design, "runup", force=force)
+    from flexshaft.analyses.transient import run_up, steady_state_envelope
+    from flexshaft.assembly import build_model
+    from flexshaft.plot.driveline import save_figure
+    from flexshaft.plot.transient import runup_envelope_figure
+
+    model = build_model(loaded.design)
+    stop = model.speed if stop_rpm is None else rpm_to_rad_s(stop_rpm)
+    result = run_up(model, duration, start=rpm_to_rad_s(start_rpm), stop=stop, dwell=dwell)
+    lo, hi = sorted((rpm_to_rad_s(start_rpm), stop))
+    import numpy as np
+
+    steady = steady_state_envelope(model, np.linspace(max(lo, 1e-3 * max(hi, 1.0)), hi, 400))
+    from flexshaft.netcdf import write_netcdf
+
+    write_netcdf(result.to_dataset(), folder / "runup.nc")
+    figure = runup_envelope_figure({f"{duration:g} s": result}, steady, operating_rpm=rad_s_to_rpm(model.speed))
+    save_figure(figure, folder, "runup")
+    peak, _, at_speed = result.peak()
+    at_station = float(result.shaft_x[int(np.argmax(result.shaft_orbit.max(axis=1)))])
+    data = {
+        "design": loaded.design.name, "duration_s": duration, "start_rpm": start_rpm, "stop_rpm": rad_s_to_rpm(stop),
+        "peak_shaft_orbit_m": peak, "peak_speed_rpm": rad_s_to_rpm(at_speed), "peak_station_m": at_station,
+        "steady_peak_shaft_orbit_m": float(np.max(steady.shaft_orbit)),
+        "actuator_orbit_max_m": {n: float(np.max(result.actuator_displacement[k]))
+                                 for k, n in enumerate(result.actuator_names)},
+        "actuator_force_max_N": {n: float(np.max(result.actuator_force[k])) for k, n in enumerate(result.actuator_names)},
+        "max_growth_rate_per_s": result.max_growth_rate, "basis_size": result.basis_size,
+        "internal_damping": result.internal_damping,
+    }
+    if as_json:
+        print_json(data)
+        return
+    from flexshaft.cli.tables import print_line, sig, stdout_console, table
+    from flexshaft.units import m_to_mm
+
+    console = stdout_console()
+    print_line(console, loaded.design.name, style="bold")
+    print_line(console, f"run-up {sig(start_rpm)} → {sig(rad_s_to_rpm(stop))} rpm in {sig(duration)} s "
+                        f"({result.basis_size} modes, {result.internal_damping} internal damping)")
+    print_line(console, f"peak shaft orbit {sig(m_to_mm(peak))} mm at {sig(rad_s_to_rpm(at_speed))} rpm, "
+                        f"x = {sig(at_station)} m (steady-state spin-up peak {sig(m_to_mm(data['steady_peak_shaft_orbit_m']))} mm)")
+    rows = [[n, m_to_mm(data["actuator_orbit_max_m"][n]), data["actuator_force_max_N"][n]] for n in result.actuator_names]
+    if rows:
+        console.print(table("actuators during the run-up", ["actuator", "orbit [mm]", "force [N]"], rows))
+    if result.max_growth_rate > 0:
+        print_line(console, f"free whirl grows at {sig(result.max_growth_rate)} 1/s at the end speed: unstable there",
+                   style="bold red")
+    print_line(console, f"written to {folder}")
+
+
+@guarded
+def montecarlo(
+    design: DesignArgument = None,
+    samples: Annotated[int, typer.Option("--samples", min=10, max=1_000_000, help="Number of imbalance samples.")] = 500,
+    seed: Annotated[int, typer.Option("--seed", min=0, help="Random seed (the same seed gives the same samples).")] = 0,
+    grade: Annotated[float, typer.Option(
+        "--grade", help="Balance quality grade G [mm/s] (ISO 21940-11), e.g. 6.3 or 16.")] = 6.3,
+    gap_mm: Annotated[Optional[float], typer.Option(
+        "--gap-mm", help="Actuator gap [mm]; default the smallest active-bearing gap of the design.")] = None,
+    force_limit: Annotated[Optional[float], typer.Option(
+        "--force-limit", help="Actuator force limit [N]; default the smallest force capacity of the design.")] = None,
+    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for samples.nc and montecarlo.png (resumable).")]
+    = Path("flexshaft-montecarlo"),
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
+) -> None:
+    """Monte-Carlo imbalance: random eccentricity (balance grade), phase and place per bay;
+    distributions of the spin-up peak, actuator orbit and force and the Tsai-Wu safety factor,
+    and the probability of exceeding the gap and the force limit."""
+    import numpy as np
+
+    check_finite("--grade", grade, 1e-3, 4000.0)
+    check_finite("--gap-mm", gap_mm, 1e-6, 1e3)
+    check_finite("--force-limit", force_limit, 1e-6, 1e9)
+    loaded = load_design_argument(design)
+    folder = prepare_output_folder(out, loaded.design, "montecarlo", force=force)
+    from flexshaft.plot.driveline import save_figure
+    from flexshaft.studies.montecarlo import run_montecarlo
+    from flexshaft.units import m_to_mm
+
+    gap, capacity = _limits(loaded.design)
+    gap = gap if gap_mm is None else gap_mm / 1000.0
+    capacity = capacity if force_limit is None else force_limit
+    result = run_montecarlo(loaded.design, samples, seed=seed, grade_mm_s=grade, gap=gap, force_limit=capacity,
+                            jobs=jobs, client=dask, run_dir=folder / "sweep", progress=not as_json)
+    result.dataset.to_netcdf(folder / "samples.nc")
+    save_figure(result.plot(), folder, "montecarlo")
+    ds = result.dataset
+    summary = {name: {"mean": float(np.nanmean(ds[name].values)), "p99": float(np.nanpercentile(ds[name].values, 99))}
+               for name in ("spinup_peak", "actuator_orbit_max", "actuator_force_max") if name in ds}
+    data = {"design": loaded.design.name, "samples": samples, "seed": seed, "grade_mm_s": grade,
+            "gap_m": gap, "force_limit_N": capacity, "summary": summary,
+            "p_gap_exceeded": None if result.gap_exceedance is None else result.gap_exceedance[0],
+            "p_force_exceeded": None if result.force_exceedance is None else result.force_exceedance[0]}
+    if as_json:
+        print_json(data)
+        return
+    from flexshaft.cli.tables import print_line, sig, stdout_console
+
+    console = stdout_console()
+    print_line(console, loaded.design.name, style="bold")
+    print_line(console, f"{samples} samples, balance grade G {sig(grade)} mm/s, seed {seed}")
+    for key, label, scale, unit in (("spinup_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
+                                    ("actuator_orbit_max", "largest actuator orbit", m_to_mm, "mm"),
+                                    ("actuator_force_max", "largest actuator force", float, "N")):
+        if key in summary:
+            print_line(console, f"{label}: mean {sig(scale(summary[key]['mean']))} {unit}, "
+                                f"99th percentile {sig(scale(summary[key]['p99']))} {unit}")
+    for name, value, limit in (("gap", result.gap_exceedance, gap and m_to_mm(gap)),
+                               ("force limit", result.force_exceedance, capacity)):
+        if value is not None:
+            print_line(console, f"P({name} {sig(limit)} exceeded) = {sig(value[0], 3)} ± {sig(value[1], 2)}")
+    print_line(console, f"written to {folder}")

@@ -1,0 +1,259 @@
+"""Campbell diagram from plain arrays: frequencies against speed, damping as colour.
+
+matplotlib is imported lazily (through :func:`flexshaft.plot.style.styled`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from flexshaft.plot.labels import place_point_labels, spread
+from flexshaft.plot.style import (
+    RPM_PER_HZ,
+    WHIRL_LINESTYLE,
+    WHIRL_MARKER,
+    mark_operating,
+    new_figure,
+    nice_colorbar,
+    styled,
+    vector,
+)
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = ["campbell_figure", "damping_colormap"]
+
+#: Colour range of the log decrement [-]: beyond these the colour saturates (colour bar arrows).
+LOG_DECREMENT_RANGE = (-0.5, 1.0)
+
+
+def damping_colormap(vmin: float, vmax: float):
+    """Colour map and norm for the log decrement: reds below zero (unstable), viridis from
+    dark (barely damped) to green (well damped) above; the colour jumps at zero."""
+    from matplotlib import colormaps
+    from matplotlib.colors import ListedColormap, Normalize, TwoSlopeNorm
+
+    upper = colormaps["viridis"](np.linspace(0.0, 0.85, 128))
+    if vmin < 0.0 < vmax:
+        lower = colormaps["Reds"](np.linspace(0.95, 0.45, 128))
+        return ListedColormap(np.vstack([lower, upper])), TwoSlopeNorm(0.0, vmin, vmax)
+    if vmax <= 0.0:
+        return ListedColormap(colormaps["Reds"](np.linspace(0.95, 0.45, 128))), Normalize(vmin, min(vmax, -1e-12) if vmax == vmin else vmax)
+    return ListedColormap(upper), Normalize(0.0, vmax)
+
+
+def _runs(labels: np.ndarray):
+    """(start, stop) of runs of equal labels; stop is exclusive."""
+    start = 0
+    for stop in range(1, labels.size + 1):
+        if stop == labels.size or labels[stop] != labels[start]:
+            yield start, stop
+            start = stop
+
+
+@styled
+def campbell_figure(
+    speeds_rpm: ArrayLike,
+    frequencies_hz: ArrayLike,
+    whirl: ArrayLike,
+    critical_speeds_rpm: Sequence[float] = (),
+    operating_rpm: float | None = None,
+    harmonics: Sequence[float] = (1,),
+    *,
+    log_decrement: ArrayLike | None = None,
+    kind: ArrayLike | None = None,
+    main_rotor_hz: Mapping[str, float] | None = None,
+    ax=None,
+) -> Figure:
+    """Campbell diagram: tracked natural frequencies against spin speed.
+
+    Parameters
+    ----------
+    speeds_rpm : array_like, shape (n_speeds,)
+        Spin speeds [rpm].
+    frequencies_hz : array_like, shape (n_speeds, n_modes)
+        Damped natural frequency of each tracked mode [Hz]; NaN where a mode is not found.
+    whirl : array_like of str, shape (n_speeds, n_modes)
+        "forward" (solid line, ▲), "backward" (dashed, ▼), "planar" (dotted, ●) or "none"
+        (torsional/axial: sparse dots, ■ torsional, ◆ axial) at each point.
+    critical_speeds_rpm : sequence of float
+        Critical speeds [rpm], marked on the 1× excitation line (f = Ω/60) and labelled
+        without overprinting (coincident ones share a label).
+    operating_rpm : float, optional
+        Operating speed [rpm], drawn as a vertical line.
+    harmonics : sequence of float
+        Orders k of the shaft's excitation lines f = kΩ/60 [Hz].
+    log_decrement : array_like, shape (n_speeds, n_modes), optional
+        Logarithmic decrement of each point [-]: the points are coloured by it (red below
+        zero: unstable) with a colour bar; without it, each mode has its own line colour.
+    kind : array_like of str, shape (n_speeds, n_modes), optional
+        "lateral", "torsional" or "axial"; names the non-lateral modes in the legend.
+    main_rotor_hz : mapping of str to float, optional
+        Main-rotor excitation frequencies at the operating speed [Hz], e.g.
+        ``{"1/rev": 4.3, "4/rev": 17.3}`` (the boom modes' forcing). The main rotor is geared to
+        the shaft, so each is drawn as a ray from the origin through (operating speed,
+        frequency); without ``operating_rpm`` as a horizontal line.
+    ax : matplotlib Axes, optional
+        Draw into this axes (its figure is returned).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from matplotlib.lines import Line2D
+
+    speeds = vector("speeds_rpm", speeds_rpm)
+    freqs = np.asarray(frequencies_hz, dtype=float)
+    freqs = freqs.reshape(-1, 1) if freqs.ndim == 1 else freqs
+    labels = np.asarray(whirl, dtype=str).reshape(freqs.shape) if np.size(whirl) == freqs.size else None
+    if freqs.ndim != 2 or freqs.shape[0] != speeds.size or labels is None:
+        raise ValueError(
+            f"frequencies_hz and whirl must both have shape (n_speeds={speeds.size}, n_modes); "
+            f"got {np.shape(frequencies_hz)} and {np.shape(whirl)}"
+        )
+    unknown = set(np.unique(labels)) - set(WHIRL_LINESTYLE)
+    if unknown:
+        raise ValueError(f"whirl: unknown labels {sorted(unknown)}; allowed {sorted(WHIRL_LINESTYLE)}")
+    kinds = None
+    if kind is not None:
+        if np.size(kind) != freqs.size:
+            raise ValueError(f"kind: expected shape {freqs.shape} like frequencies_hz, got {np.shape(kind)}")
+        kinds = np.asarray(kind, dtype=str).reshape(freqs.shape)
+    delta = None
+    if log_decrement is not None:
+        delta = np.asarray(log_decrement, dtype=float)
+        if delta.shape != freqs.shape:
+            raise ValueError(f"log_decrement: expected shape {freqs.shape} like frequencies_hz, got {delta.shape}")
+    rotor = dict(main_rotor_hz or {})
+    bad = {k: v for k, v in rotor.items() if not (np.isfinite(v) and v > 0)}
+    if bad:
+        raise ValueError(f"main_rotor_hz: frequencies must be finite and > 0 Hz, got {bad}")
+
+    own = ax is None
+    fig, axes = new_figure(1, 1, (8.6, 6.3), ax=ax, bottom=1.25, right=1.05, top=0.4)
+    ax = axes[0, 0]
+    import matplotlib
+
+    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
+    # marker of each point: whirl for lateral points, kind for the others
+    markers = labels.astype(object)
+    if kinds is not None:
+        markers = np.where(labels == "none", np.where(kinds == "axial", "axial", "torsional"), labels)
+    for mode in range(freqs.shape[1]):
+        color = "0.45" if delta is not None else colors[mode % len(colors)]
+        f, w = freqs[:, mode], labels[:, mode]
+        for start, stop in _runs(w):
+            end = min(stop + 1, speeds.size)  # one point of overlap keeps the curve continuous
+            ax.plot(speeds[start:end], f[start:end], color=color, ls=WHIRL_LINESTYLE[w[start]],
+                    lw=1.0 if delta is not None else 1.6, zorder=2)
+
+    f_max = np.nanmax(freqs) if np.isfinite(freqs).any() else 1.0
+    critical = vector("critical_speeds_rpm", critical_speeds_rpm)
+    top = 1.08 * max(f_max, critical.max(initial=0.0) / RPM_PER_HZ)
+    span = np.array([speeds.min(), speeds.max()])
+    ax.set_xlim(span[0], span[1])
+    ax.set_ylim(0.0, top)
+
+    handles = []
+    present = [name for name in ("forward", "backward", "planar") if name in labels]
+    for name in present:
+        handles.append(Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[name], marker=WHIRL_MARKER[name] if delta is not None else None,
+                              ms=5, label=f"{name} whirl"))
+    if "none" in labels:
+        names = sorted(set(kinds[labels == "none"])) if kinds is not None else ["torsional / axial"]
+        for name in names:
+            handles.append(Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE["none"],
+                                  marker=WHIRL_MARKER.get(name, "s") if delta is not None else None, ms=5,
+                                  label=f"{name} (no 1× critical)"))
+    if delta is not None:
+        finite = delta[np.isfinite(delta) & np.isfinite(freqs)]
+        lo = max(float(finite.min()), LOG_DECREMENT_RANGE[0]) if finite.size else 0.0
+        hi = min(float(finite.max()), LOG_DECREMENT_RANGE[1]) if finite.size else 1.0
+        hi = hi if hi > max(lo, 0.0) else max(lo, 0.0) + 1e-3
+        cmap, norm = damping_colormap(lo, hi)
+        speeds2d = np.broadcast_to(speeds[:, None], freqs.shape)
+        step = max(1, int(np.ceil(speeds.size / 40)))  # at most ~40 markers per curve
+        thin = np.zeros(freqs.shape, bool)
+        thin[::step] = True
+        mappable = None
+        for name in np.unique(markers.astype(str)):
+            sel = (markers == name) & np.isfinite(freqs) & thin
+            if sel.any():
+                mappable = ax.scatter(speeds2d[sel], freqs[sel], c=np.clip(delta[sel], lo, hi), cmap=cmap, norm=norm,
+                                      marker=WHIRL_MARKER.get(name, "o"), s=15, linewidths=0, zorder=3)
+        extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
+            (bool(finite.size and finite.min() < lo), bool(finite.size and finite.max() > hi))]
+        nice_colorbar(fig, mappable, ax, "log decrement δ [-]", extend=extend, pad=0.045, fraction=0.045)
+
+    for k, order in enumerate(harmonics):
+        (line,) = ax.plot(span, order * span / RPM_PER_HZ, color="0.15", lw=1.0,
+                          ls=(0, (6, 2, 1, 2)) if k else "-", alpha=0.8, label=f"{order:g}× shaft speed", zorder=1)
+        handles.append(line)
+    for k, (name, f_op) in enumerate(rotor.items()):
+        if operating_rpm:
+            (line,) = ax.plot(span, f_op * span / operating_rpm, color="tab:purple", lw=1.1, ls=(0, (5, 2, 1, 2)),
+                              zorder=1, label=f"main rotor {name}")
+        else:
+            line = ax.axhline(f_op, color="tab:purple", lw=1.1, ls=(0, (5, 2, 1, 2)), zorder=1, label=f"main rotor {name}")
+        handles.append(line)
+        x_end = span[1] if not operating_rpm else min(span[1], top * operating_rpm / f_op)
+        y_end = f_op if not operating_rpm else f_op * x_end / operating_rpm
+        ax.annotate(f"MR {name}", (x_end, y_end), xytext=(-3, 3), textcoords="offset points", ha="right",
+                    va="bottom", fontsize=7.5, color="tab:purple")
+    if critical.size:
+        (marker,) = ax.plot(critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.3, ms=8,
+                            label="critical speed", zorder=4)
+        handles.append(marker)
+        _label_criticals(ax, critical)
+    mark_operating(ax, operating_rpm)
+    if operating_rpm is not None:
+        handles.append(ax.get_lines()[-1])
+    _mode_numbers(ax, speeds, freqs)
+    ax.set_xlabel("spin speed Ω [rpm]")
+    ax.set_ylabel("natural frequency [Hz]")
+    ax.set_title("Campbell diagram" + (" (colour: log decrement δ, red = unstable)" if delta is not None else ""))
+    if own:  # a band below the axes: the legend hides no curve
+        fig.legend(handles=handles, loc="lower center", ncols=4, bbox_to_anchor=(0.5, 0.005), fontsize=8)
+    else:
+        ax.legend(handles=handles, loc="best", fontsize=7.5)
+    return fig
+
+
+def _label_criticals(ax, critical: np.ndarray) -> None:
+    """One label per cluster of coincident critical speeds (markers closer than 10 px)."""
+    px = ax.transData.transform(np.column_stack([critical, critical / RPM_PER_HZ]))
+    order = np.argsort(critical)
+    clusters: list[list[int]] = []
+    for i in order:
+        if clusters and np.hypot(*(px[i] - px[clusters[-1][-1]])) < 10.0 * ax.figure.dpi / 72.0:
+            clusters[-1].append(i)
+        else:
+            clusters.append([i])
+    xs = [float(np.mean(critical[c])) for c in clusters]
+    texts = [" / ".join(f"{critical[i]:.0f}" for i in c) + " rpm" for c in clusters]
+    place_point_labels(ax, xs, [x / RPM_PER_HZ for x in xs], texts, fontsize=7.5,
+                       bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
+
+
+def _mode_numbers(ax, speeds: np.ndarray, freqs: np.ndarray) -> None:
+    """Mode numbers just right of the last point of each curve, spread so none overprint."""
+    ends = []
+    for mode in range(freqs.shape[1]):
+        finite = np.flatnonzero(np.isfinite(freqs[:, mode]))
+        if finite.size:
+            ends.append((mode, speeds[finite[-1]], freqs[finite[-1], mode]))
+    if not ends:
+        return
+    to_px = ax.transData.transform
+    px = to_px(np.array([[x, y] for _, x, y in ends]))
+    scale = ax.figure.dpi / 72.0
+    y_new = spread(px[:, 1], 7.5 * scale, ax.bbox.y0, ax.bbox.y1)
+    inverse = ax.transData.inverted()
+    for (mode, x, _), (xp, _), yn in zip(ends, px, y_new):
+        ax.annotate(str(mode + 1), (x, inverse.transform((xp, yn))[1]), xytext=(3, 0), textcoords="offset points",
+                    fontsize=7, va="center", ha="left", annotation_clip=False)

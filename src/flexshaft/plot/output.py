@@ -1,0 +1,147 @@
+"""Writing figures to files: one at a time (:func:`save_figure`) or a batch, serially or in
+worker processes (:func:`render_figures`).
+
+A batch is a list of :class:`FigureJob` (a figure function of :mod:`flexshaft.plot` and its
+plain-array arguments), so a worker process receives only picklable data and draws the figure
+itself. PNG is always written; SVG only on request (it costs about as much as the PNG again).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_figure"]
+
+#: Resolution of the PNG files [dots per inch]. An 8 in wide report figure is 960 px, shown at
+#: 768 CSS px (96 px per inch): text of 8.5 pt is 14 px high, sharp on ordinary and on 1.25×
+#: screens; files are 35 % smaller than at 150 dpi (rendering time hardly depends on it).
+PNG_DPI = 120
+
+
+def _check_stem(stem: str) -> None:
+    if not isinstance(stem, str) or not stem or Path(stem).name != stem or stem in (".", ".."):
+        raise ValueError(f"stem: expected a plain file name without folders, got {stem!r}")
+
+
+def save_figure(fig: Figure, folder: str | Path, stem: str, *, svg: bool = True, dpi: float = PNG_DPI) -> dict[str, Path]:
+    """Write ``stem.png`` (and ``stem.svg`` when ``svg``) into ``folder``; release the figure.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure to save.
+    folder : str or Path
+        Output folder, created if missing.
+    stem : str
+        File name without extension; no path separators.
+    svg : bool
+        Also write the SVG file (reproducible: no date in it).
+    dpi : float
+        PNG resolution [dots per inch].
+
+    Returns
+    -------
+    dict
+        ``{"png": Path}`` plus ``"svg"`` when written.
+    """
+    _check_stem(stem)
+    out = Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = {"png": out / f"{stem}.png"}
+    fig.savefig(paths["png"], dpi=dpi, format="png")
+    if svg:
+        paths["svg"] = out / f"{stem}.svg"
+        fig.savefig(paths["svg"], format="svg", metadata={"Date": None})
+    if "matplotlib.pyplot" in sys.modules:  # only pyplot keeps a reference to figures
+        sys.modules["matplotlib.pyplot"].close(fig)
+    return paths
+
+
+@dataclass(frozen=True)
+class FigureJob:
+    """One figure to draw and save: ``function(*args, **kwargs)`` returns the Figure.
+
+    ``function`` must be importable by name (a figure function of :mod:`flexshaft.plot`, or a
+    result class's ``plot``) and the arguments picklable, so that a worker process can draw it.
+    """
+
+    stem: str
+    function: Callable[..., Any]
+    args: tuple = ()
+    kwargs: dict = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        _check_stem(self.stem)
+
+
+@dataclass(frozen=True)
+class RenderedFigure:
+    """Files written for one :class:`FigureJob` and the time it took [s] (draw and save, wall)."""
+
+    stem: str
+    paths: dict
+    seconds: float
+
+
+def _render(job: FigureJob, folder: Path, svg: bool, dpi: float) -> RenderedFigure:
+    start = time.perf_counter()
+    fig = job.function(*job.args, **job.kwargs)
+    paths = save_figure(fig, folder, job.stem, svg=svg, dpi=dpi)
+    return RenderedFigure(job.stem, paths, time.perf_counter() - start)
+
+
+def _render_packed(packed) -> RenderedFigure:
+    return _render(*packed)
+
+
+def render_figures(jobs: Sequence[FigureJob], folder: str | Path, *, svg: bool = False, dpi: float = PNG_DPI,
+                   processes: int = 1) -> dict[str, RenderedFigure]:
+    """Draw and save every job into ``folder``; returns ``{stem: RenderedFigure}`` in job order.
+
+    Parameters
+    ----------
+    jobs : sequence of FigureJob
+        Stems must be unique.
+    folder : str or Path
+        Output folder, created if missing.
+    svg : bool
+        Also write SVG files.
+    dpi : float
+        PNG resolution [dots per inch].
+    processes : int
+        1 draws in this process; more uses that many forked worker processes (POSIX only;
+        elsewhere, or for fewer than two jobs, it falls back to drawing here).
+    """
+    if int(processes) != processes or processes < 1:
+        raise ValueError(f"processes must be an integer >= 1 (got {processes!r})")
+    stems = [job.stem for job in jobs]
+    duplicated = sorted({s for s in stems if stems.count(s) > 1})
+    if duplicated:
+        raise ValueError(f"jobs: figure stems must be unique, repeated: {duplicated}")
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    packed = [(job, folder, bool(svg), float(dpi)) for job in jobs]
+    if processes == 1 or len(jobs) < 2 or not hasattr(os, "fork"):
+        done = [_render(*p) for p in packed]
+    else:
+        import multiprocessing
+
+        import matplotlib
+
+        if "matplotlib.pyplot" not in sys.modules:
+            matplotlib.use("Agg")
+        import matplotlib.backends.backend_agg  # noqa: F401  loaded once, shared by the forked workers
+        import matplotlib.figure  # noqa: F401
+
+        with multiprocessing.get_context("fork").Pool(min(int(processes), len(jobs))) as pool:
+            done = pool.map(_render_packed, packed, chunksize=1)
+    return {r.stem: r for r in done}
