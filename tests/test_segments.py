@@ -289,6 +289,26 @@ def test_metal_buckling_is_the_classical_isotropic_shell():
     assert b.critical_torque == pytest.approx(2 * math.pi * r**2 * t * tau, rel=0.10)
 
 
+def test_joints_are_kept_exactly_by_the_mesh():
+    """A bearing 2 mm ahead of a coupling (inside the 5 %-of-an-element merge tolerance) does not
+    move the joint: the joint's two nodes sit at the coupling station and the bearing acts at its
+    own station, on the forward piece; boundaries closer than the tolerance are refused."""
+    data = tube_design(couplings=[rigid_coupling("j", 1.0)],
+                       bearings=[{"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}},
+                                 {"name": "near", "kind": "contact", "x": 0.998, "stiffness": {"v": 1e6, "w": 1e6}}])
+    model = build_model(design_from_dict(data))
+    (j,) = model.dofs.shaft_joints
+    assert model.dofs.shaft_x[j] == model.dofs.shaft_x[j + 1] == 1.0
+    near = next(b for b in model.bearings if b.name == "near")
+    assert near.x_shaft == 0.998
+    element, xi, length = model.dofs.locate("shaft", 0.998)
+    assert model.dofs.shaft_element_x[element, 1] == 1.0 and 0.0 < xi < 1.0
+    crowded = tube_design(couplings=[rigid_coupling("j", 1.0)],
+                          segments=[{"name": "a", "x_start": 0.0, "x_end": 1.001}, {"name": "b", "x_start": 1.001, "x_end": 2.0}])
+    with pytest.raises(DesignError, match="mesh.shaft_elements: the segment boundary or coupling at x = 1"):
+        build_model(design_from_dict(crowded))
+
+
 # ------------------------------------------------------------------------------------------------
 # Schema
 

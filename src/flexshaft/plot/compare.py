@@ -79,6 +79,8 @@ def campbell_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike, Arr
     handles += [Line2D([], [], color="0.35", ls=WHIRL_LINESTYLE[name], label=f"{name} whirl")
                 for name in ("forward", "backward", "planar")]
     mark_operating(ax, operating_rpm)
+    if operating_rpm is not None:
+        handles.append(ax.get_lines()[-1])
     ax.set_xlim(0.0, top)
     ax.set_ylim(0.0, 1.08 * max(f_max, top / RPM_PER_HZ))
     ax.set_xlabel("spin speed Ω [rpm]")
