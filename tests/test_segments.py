@@ -289,6 +289,23 @@ def test_metal_buckling_is_the_classical_isotropic_shell():
     assert b.critical_torque == pytest.approx(2 * math.pi * r**2 * t * tau, rel=0.10)
 
 
+def test_an_active_bearing_on_a_segmented_shaft_acts_like_its_spring():
+    """The actuators work on either driveline: a PD magnetic bearing (K_p = k, K_d = 0, ideal)
+    on the aft piece of a coupled tube gives the frequencies of a contact bearing of lateral
+    stiffness k at the same station (two code paths: the actuator law in the eigenproblem, the
+    spring in K; tolerance 1e-8, the eigen-refinement's)."""
+    coupling = {"name": "j", "x": 0.9, "angular_stiffness": 500.0, "axial_stiffness": "rigid",
+                "torsional_stiffness": "rigid"}
+    far = {"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}}
+    spring = tube_design(couplings=[coupling], bearings=[far, {"name": "mid", "kind": "contact", "x": 1.4,
+                                                                 "stiffness": {"v": 2e5, "w": 2e5}}])
+    active = tube_design(couplings=[coupling], bearings=[far, {"name": "mid", "kind": "active", "x": 1.4,
+                                                                 "kp": 2e5, "kd": 0.0}])
+    f_spring = modes(build_model(design_from_dict(spring)), 0.0, 6).eigenvalues
+    f_active = modes(build_model(design_from_dict(active)), 0.0, 6).eigenvalues
+    np.testing.assert_allclose(np.abs(f_active), np.abs(f_spring), rtol=1e-8)
+
+
 def test_joints_are_kept_exactly_by_the_mesh():
     """A bearing 2 mm ahead of a coupling (inside the 5 %-of-an-element merge tolerance) does not
     move the joint: the joint's two nodes sit at the coupling station and the bearing acts at its
