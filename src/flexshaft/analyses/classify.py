@@ -61,7 +61,8 @@ def energy_shares(model: Model, shapes: np.ndarray) -> EnergyShares:
     nodes = np.arange(dm.n_shaft_nodes)
 
     def share(index) -> np.ndarray:
-        return density[np.asarray(index, dtype=int)].sum(axis=0) / total
+        index = dm.unique(index) if len(dm.tied) else np.asarray(index, dtype=int)  # a tied DOF counts once
+        return density[index].sum(axis=0) / total
 
     lateral = np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")])
     return EnergyShares(
@@ -114,6 +115,8 @@ class ModalLabeler:
             "shaft_lateral": np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")]),
             "boom": np.arange(6 * dm.n_shaft_nodes, dm.size),
         }
+        if len(dm.tied):  # a tied DOF (rigid coupling direction) counts once
+            groups = {g: dm.unique(idx) for g, idx in groups.items()}
         self._energy = {g: full[idx].T @ MPhi[idx] for g, idx in groups.items()}
         self._v, self._w = full[dm.shaft(nodes, "v")], full[dm.shaft(nodes, "w")]
 

@@ -91,8 +91,8 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
     ``q`` may carry trailing axes (load cases, phases); they are kept.
     """
     dm = model.dofs
-    x = dm.shaft_x
-    L = np.diff(x)
+    x = dm.shaft_element_x  # (nel, 2): a coupling joint is not an element
+    L = x[:, 1] - x[:, 0]
     s = beam_shape(np.array([0.0, 1.0]), L)  # rows (nel, 2, 12)
     qe = np.asarray(q)[dm.element_dofs("shaft")]  # (nel, 12, ...)
 
@@ -100,7 +100,7 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
         return np.einsum("epi,ei...->ep...", rows, qe)
 
     return ShaftStrains(
-        x=np.stack([x[:-1], x[1:]], axis=1),
+        x=x,
         axial=apply(s.dudx),
         curvature_v=apply(s.dgammadx),
         curvature_w=-apply(s.dbetadx),
@@ -299,7 +299,7 @@ def shaft_safety_factor(
     if residual is not None and not np.any(residual):
         residual = None
 
-    x_ends = np.stack([model.dofs.shaft_x[:-1], model.dofs.shaft_x[1:]], axis=1)
+    x_ends = model.dofs.shaft_element_x
     per_axial, per_shear = _unit_ply_stresses(laminate)
     strains = {name: shaft_strains(model, q) for name, q in beam_parts.items()}
 

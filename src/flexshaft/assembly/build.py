@@ -7,20 +7,41 @@ each kind of element and scatter it once (sparse COO); add lumped inertias and b
 constrain the boom root and the shaft end DOFs named in the design; check the derived numbers
 (:mod:`flexshaft.assembly.checks`: bearing stiffness against the shaft's element stiffness,
 actuator gains, finite matrices), raising :class:`~flexshaft.design.DesignError`.
+
+A segmented shaft (``[[shaft.segments]]``, ``[[couplings]]``, docs/segmented-driveline.md) has
+nodes at every segment boundary and coupling (kept exactly: stations closer than the merge
+tolerance move onto them); each segment's elements use its own tube; at each coupling the
+station gets two nodes (one per side) joined by the coupling element instead of a shaft element.
+A ``"rigid"`` coupling direction is an exact constraint: the aft node's DOF is tied to the
+forward node's (:attr:`~flexshaft.assembly.dofs.DofMap.tied`). A penalty spring would not do:
+the dense modal basis loses about ``eps · k_penalty / (I_node ω²)`` of relative accuracy, which
+meets the penalty's own compliance error (``k_shaft / k_penalty``) near 1e-6 at best
+(docs/segmented-driveline.md gives the measurements).
 """
 
 from __future__ import annotations
+
+import dataclasses
 
 import numpy as np
 import scipy.sparse as sp
 
 from flexshaft.assembly.checks import check_actuator_law, check_bearing_stiffness, check_finite_model, check_magnet
-from flexshaft.assembly.dofs import BOOM_FIELDS, DofMap
-from flexshaft.assembly.mesh import design_mesh, segment_mesh
-from flexshaft.assembly.model import Actuator, BearingLink, Controller, Model, ShaftProperties
+from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, DofMap
+from flexshaft.assembly.mesh import design_mesh, design_stations, merge_tolerance, segment_mesh
+from flexshaft.assembly.model import (
+    Actuator,
+    BearingLink,
+    Controller,
+    CouplingLink,
+    Model,
+    SegmentProperties,
+    ShaftProperties,
+)
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.assembly.sparse import scatter_blocks
 from flexshaft.elements import magnetic
+from flexshaft.elements.coupling import coupling_matrices
 from flexshaft.elements import (
     TubeSection,
     boom_element_matrices,
@@ -33,15 +54,34 @@ from flexshaft.elements import (
 )
 from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
 
-__all__ = ["build_model", "segment_mesh", "shaft_properties", "boom_semi_axes"]
+__all__ = ["build_model", "segment_mesh", "shaft_properties", "segment_properties", "boom_semi_axes"]
+
+_COUPLING_DIRECTIONS = {"u": "axial", "v": "lateral", "w": "lateral", "theta": "torsional",
+                        "beta": "angular", "gamma": "angular"}
 
 _RELATIVE = ("u", "v", "w", "beta", "gamma")
 
 
 def shaft_properties(design) -> ShaftProperties:
-    """Equivalent complex moduli and density of the shaft tube (CLT for a laminate)."""
-    shaft = design.shaft
-    mat = design.materials[shaft.material]
+    """Equivalent complex moduli and density of the ``[shaft]`` tube (CLT for a laminate).
+
+    For a segmented shaft this is the nominal tube of the ``[shaft]`` table; each segment's own
+    tube is in :func:`segment_properties`.
+    """
+    return _tube_properties(design.shaft, design.materials[design.shaft.material])
+
+
+def segment_properties(design) -> tuple[SegmentProperties, ...]:
+    """Every zone of the shaft (:attr:`~flexshaft.design.components.Shaft.tubes`) with its tube."""
+    return tuple(
+        SegmentProperties(tube.name, float(tube.x_start), float(tube.x_end), tube.material,
+                          _tube_properties(tube, design.materials[tube.material]))
+        for tube in design.shaft.tubes
+    )
+
+
+def _tube_properties(shaft, mat) -> ShaftProperties:
+    """Properties of one tube (``[shaft]`` or a resolved segment) of material ``mat``."""
     Do = shaft.outer_diameter
     Di = Do - 2 * shaft.wall_thickness
     if mat.kind == "lamina":
@@ -162,21 +202,18 @@ def build_model(design) -> Model:
         raise ValueError(f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
                          "use load_design, loads_design or design_from_dict")
     check_problem_size(design, "model", stacklevel=4)  # the caller of flexshaft.assembly.build_model
-    shaft_x, boom_x = design_mesh(design)
-    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x))
+    shaft_x, boom_x = design_mesh(design) if not design.segmented else _segmented_mesh(design)
+    shaft_x, joints = _split_at_couplings(design, shaft_x)
+    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints,
+                _tied_dofs(design, shaft_x, boom_x, joints))
     n = dm.size
 
     props = shaft_properties(design)
     check_bearing_stiffness(design, props)
-    section = TubeSection(props.outer_diameter, props.inner_diameter)
-    kappa = None
-    if design.shaft.shear_deformation:
-        nu = float(np.clip(props.youngs_modulus.real / (2 * props.shear_modulus.real) - 1, 0.0, 0.5))
-        kappa = cowper_shear_coefficient(section, nu)
-    Ms, Ks, Gs = shaft_element_matrices(np.diff(shaft_x), section, props.youngs_modulus, props.shear_modulus, props.density, kappa)
-    sdofs = dm.element_dofs("shaft")
-    parts: dict[str, list] = {"M": [(Ms, sdofs)], "K": [(Ks.real, sdofs)], "C": [], "G": [(Gs, sdofs)],
-                              "shaft_loss": [(Ks.imag, sdofs)], "boom_loss": []}
+    segments = segment_properties(design)
+    parts: dict[str, list] = {"M": [], "K": [], "C": [], "G": [], "shaft_loss": [], "boom_loss": []}
+    _shaft_elements(design, dm, segments, parts)
+    couplings = _couplings(design, dm, parts)
 
     if design.tailboom is not None:
         tb = design.tailboom
@@ -224,7 +261,9 @@ def build_model(design) -> Model:
         G=G.tocsr(),
         bearings=tuple(links),
         actuators=tuple(actuators),
-        shaft=props,
+        shaft=props if not design.segmented else dataclasses.replace(props, laminate=None),
+        segments=segments,
+        couplings=couplings,
         speed=float(design.operating.speed_rad_s),
         power=float(design.operating.power),
         design=design,
@@ -234,3 +273,99 @@ def build_model(design) -> Model:
     )
     check_finite_model(model)
     return model
+
+
+# ------------------------------------------------------------------------------------------------
+# Segmented shafts: mesh, shaft elements per segment, couplings
+
+
+def _segmented_mesh(design) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`~flexshaft.assembly.mesh.design_mesh` with the segment boundaries and couplings
+    kept exactly: a station closer to one of them than the merge tolerance moves onto it (a
+    bearing still acts at its own station through the shape functions)."""
+    shaft_pts, _ = design_stations(design)
+    sh = design.shaft
+    hard = sorted({t.x_start for t in sh.tubes[1:]} | {c.x for c in design.couplings})
+    tol = merge_tolerance(sh.x_end - sh.x_start, design.mesh.shaft_elements)
+    ends = (sh.x_start, sh.x_end)
+    crowded = [x for x in hard if min(abs(x - e) for e in ends) < tol]
+    crowded += [b for a, b in zip(hard[:-1], hard[1:]) if b - a < tol]
+    if crowded:
+        from flexshaft.design import DesignError, Problem
+
+        raise DesignError([Problem("mesh.shaft_elements", f"the segment boundary or coupling at x = {x:.6g} m is "
+                                   f"closer than {tol:.3g} m (5 % of an element) to another one or to a shaft end; "
+                                   "raise shaft_elements or move it") for x in crowded], "<model>")
+    soft = [x for x in shaft_pts if min(abs(x - h) for h in hard) >= tol]
+    shaft_x = segment_mesh(soft + hard, design.mesh.shaft_elements)
+    boom_x = design_mesh(design)[1]
+    return shaft_x, boom_x
+
+
+def _split_at_couplings(design, shaft_x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Shaft stations with each coupling station doubled (one node per side), and the joints:
+    the indices j of the node pairs (j, j + 1) that are joints."""
+    joints = []
+    for coupling in sorted(design.couplings, key=lambda c: c.x):
+        j = int(np.argmin(np.abs(shaft_x - coupling.x)))
+        shaft_x = np.insert(shaft_x, j + 1, shaft_x[j])
+        joints.append(j)
+    return shaft_x, np.array(joints, dtype=int)
+
+
+def _shaft_elements(design, dm: DofMap, segments, parts: dict) -> None:
+    """Shaft element matrices, each segment's elements with its own tube."""
+    ends = dm.shaft_element_x
+    lengths = ends[:, 1] - ends[:, 0]
+    zone = np.searchsorted([seg.x_end for seg in segments[:-1]], 0.5 * (ends[:, 0] + ends[:, 1]))
+    sdofs = dm.element_dofs("shaft")
+    for index, seg in enumerate(segments):
+        mine = np.flatnonzero(zone == index)
+        if not mine.size:
+            continue
+        props = seg.properties
+        section = TubeSection(props.outer_diameter, props.inner_diameter)
+        kappa = None
+        if design.shaft.shear_deformation:
+            nu = float(np.clip(props.youngs_modulus.real / (2 * props.shear_modulus.real) - 1, 0.0, 0.5))
+            kappa = cowper_shear_coefficient(section, nu)
+        Ms, Ks, Gs = shaft_element_matrices(lengths[mine], section, props.youngs_modulus, props.shear_modulus,
+                                            props.density, kappa)
+        dofs = sdofs[mine]
+        parts["M"].append((Ms, dofs))
+        parts["K"].append((Ks.real, dofs))
+        parts["G"].append((Gs, dofs))
+        parts["shaft_loss"].append((Ks.imag, dofs))
+
+
+def _coupling_values(coupling) -> list:
+    """The coupling's stiffness per shaft field (a number or "rigid"), in SHAFT_FIELDS order."""
+    return [getattr(coupling, f"{_COUPLING_DIRECTIONS[f]}_stiffness") for f in SHAFT_FIELDS]
+
+
+def _tied_dofs(design, shaft_x, boom_x, joints) -> np.ndarray:
+    """(tied, equals) raw DOF pairs of the rigid coupling directions: aft node = forward node."""
+    raw = DofMap(shaft_x, boom_x)
+    pairs = [(raw.shaft(j + 1, f), raw.shaft(j, f))
+             for coupling, j in zip(sorted(design.couplings, key=lambda c: c.x), joints)
+             for f, value in zip(SHAFT_FIELDS, _coupling_values(coupling)) if value == "rigid"]
+    return np.array(pairs, dtype=int).reshape(-1, 2)
+
+
+def _couplings(design, dm: DofMap, parts: dict) -> tuple[CouplingLink, ...]:
+    """Coupling elements on the node pairs of the joints (in order of station); a rigid
+    direction is tied (:func:`_tied_dofs`) and gets no spring."""
+    links = []
+    for coupling, j in zip(sorted(design.couplings, key=lambda c: c.x), dm.shaft_joints):
+        values = _coupling_values(coupling)
+        rigid = np.array([v == "rigid" for v in values])
+        stiffness = np.array([0.0 if r else float(v) for v, r in zip(values, rigid)])
+        K, M, G = coupling_matrices(stiffness, coupling.mass, coupling.diametral_inertia, coupling.polar_inertia)
+        dofs = np.array([dm.shaft(node, f) for node in (j, j + 1) for f in SHAFT_FIELDS])
+        parts["K"].append((K[None], dofs[None]))
+        parts["M"].append((M[None], dofs[None]))
+        parts["G"].append((G[None], dofs[None]))
+        allowable = None if coupling.allowable_angle_deg is None else float(np.radians(coupling.allowable_angle_deg))
+        links.append(CouplingLink(coupling.name, float(dm.shaft_x[j]), int(j), int(j + 1),
+                                  np.where(rigid, np.inf, stiffness), rigid, float(coupling.mass), allowable))
+    return tuple(links)

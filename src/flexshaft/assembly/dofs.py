@@ -7,11 +7,25 @@ Global vector layout::
 Shaft nodes come first, 6 DOFs each in :data:`SHAFT_FIELDS` order; boom nodes follow, 5 DOFs
 each in :data:`BOOM_FIELDS` order. Every caller asks :class:`DofMap` for an index by
 ``(component, node, field)``; no index is hard-coded anywhere else.
+
+Shaft nodes are in order of station. Consecutive nodes form a shaft element, except at a
+coupling joint (:attr:`DofMap.shaft_joints`): there two nodes share the station, one on each
+side of the coupling, and no shaft element joins them (the coupling element does). Ask for the
+elements with :meth:`DofMap.element_dofs`, :attr:`DofMap.shaft_element_nodes` and
+:attr:`DofMap.shaft_element_x`, never by pairing consecutive nodes.
+
+A rigid direction of a coupling is an exact constraint: the aft node's DOF is *tied* to the
+forward node's (:attr:`DofMap.tied`). :meth:`DofMap.index` (and so every lookup by node and
+field, and :meth:`DofMap.element_dofs`) returns the forward node's index for a tied DOF, so the
+aft side's elements assemble onto it and reading the aft node gives its value; the tied DOF's
+own slot stays empty and is not free. Sum a quantity over nodes with :meth:`DofMap.unique`
+so that a tied DOF counts once.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -35,11 +49,42 @@ class DofMap:
         Tailboom node stations [m], increasing; empty without a tailboom.
     fixed : ndarray of int
         Global indices of constrained (zero) DOFs.
+    shaft_joints : ndarray of int
+        Shaft node indices j whose pair (j, j + 1) is a coupling joint (same station, no
+        shaft element between them); empty for a one-piece shaft.
+    tied : ndarray of int, shape (n, 2)
+        Pairs (tied DOF, DOF it equals) of raw global indices: the rigid directions of the
+        couplings (the aft node's DOF equals the forward node's).
     """
 
     shaft_x: np.ndarray
     boom_x: np.ndarray
     fixed: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    shaft_joints: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    tied: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=int))
+
+    @cached_property
+    def _alias(self) -> np.ndarray | None:
+        if not len(self.tied):
+            return None
+        alias = np.arange(self.size)
+        alias[np.asarray(self.tied)[:, 0]] = np.asarray(self.tied)[:, 1]
+        return alias
+
+    def unique(self, index) -> np.ndarray:
+        """The distinct global indices of ``index`` (a tied DOF appears once), sorted."""
+        return np.unique(np.asarray(index, dtype=int))
+
+    @property
+    def shaft_element_nodes(self) -> np.ndarray:
+        """(n_elements, 2) node indices of every shaft element (coupling joints excluded)."""
+        start = np.setdiff1d(np.arange(max(self.n_shaft_nodes - 1, 0)), np.asarray(self.shaft_joints, dtype=int))
+        return np.stack([start, start + 1], axis=1)
+
+    @property
+    def shaft_element_x(self) -> np.ndarray:
+        """(n_elements, 2) stations [m] of both ends of every shaft element."""
+        return np.asarray(self.shaft_x, dtype=float)[self.shaft_element_nodes]
 
     @property
     def n_shaft_nodes(self) -> int:
@@ -59,6 +104,8 @@ class DofMap:
         """Global indices of the unconstrained DOFs, increasing."""
         mask = np.ones(self.size, dtype=bool)
         mask[self.fixed] = False
+        if len(self.tied):
+            mask[np.asarray(self.tied)[:, 0]] = False  # a tied DOF's own slot is empty
         return np.flatnonzero(mask)
 
     def index(self, component: Component, node, field: str):
@@ -75,6 +122,8 @@ class DofMap:
         if np.any((node < -n) | (node >= n)):
             raise IndexError(f"{component} node {node} out of range 0..{n - 1}")
         idx = base + per * np.mod(node, n) + fields.index(field)
+        if self._alias is not None:
+            idx = self._alias[idx]
         return int(idx) if idx.ndim == 0 else idx
 
     def shaft(self, node, field: str):
@@ -89,6 +138,11 @@ class DofMap:
         """Global DOFs of every element of a component: (nel, 12) shaft or (nel, 10) boom."""
         if component == "shaft":
             per_node = 6 * np.arange(self.n_shaft_nodes)[:, None] + np.arange(len(SHAFT_FIELDS))
+            if self._alias is not None:
+                per_node = self._alias[per_node]
+            if len(self.shaft_joints):
+                ends = self.shaft_element_nodes
+                return np.hstack([per_node[ends[:, 0]], per_node[ends[:, 1]]])
         elif component == "boom":
             per_node = 6 * self.n_shaft_nodes + 5 * np.arange(self.n_boom_nodes)[:, None] + np.arange(len(BOOM_FIELDS))
         else:
@@ -96,7 +150,10 @@ class DofMap:
         return np.hstack([per_node[:-1], per_node[1:]])
 
     def locate(self, component: Component, x: float) -> tuple[int, float, float]:
-        """Element holding station ``x`` [m]: ``(element, xi, element length)``."""
+        """Element holding station ``x`` [m]: ``(element, xi, element length)``.
+
+        At a coupling joint the station belongs to the element after it (aft of the coupling).
+        """
         xs = self._stations(component)
         if len(xs) < 2:
             raise ValueError(f"no {component} elements")
@@ -105,6 +162,11 @@ class DofMap:
         tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
         if x < xs[0] - tol or x > xs[-1] + tol:
             raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
+        if component == "shaft" and len(self.shaft_joints):
+            ends = self.shaft_element_x
+            e = int(np.clip(np.searchsorted(ends[:, 0], x, side="right") - 1, 0, len(ends) - 1))
+            start, length = ends[e, 0], ends[e, 1] - ends[e, 0]
+            return e, float(np.clip((x - start) / length, 0.0, 1.0)), float(length)
         e = int(np.clip(np.searchsorted(xs, x, side="right") - 1, 0, len(xs) - 2))
         length = xs[e + 1] - xs[e]
         return e, float(np.clip((x - xs[e]) / length, 0.0, 1.0)), float(length)

@@ -29,7 +29,8 @@ import scipy.sparse as sp
 from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.dofs import DofMap
 
-__all__ = ["Controller", "Actuator", "BearingLink", "ShaftProperties", "Model", "rotation_generator"]
+__all__ = ["Controller", "Actuator", "BearingLink", "CouplingLink", "SegmentProperties", "ShaftProperties", "Model",
+           "rotation_generator"]
 
 
 def rotation_generator(dofs: DofMap) -> sp.csr_matrix:
@@ -44,6 +45,9 @@ def rotation_generator(dofs: DofMap) -> sp.csr_matrix:
     rows = np.concatenate([v, w, b, g])
     cols = np.concatenate([w, v, g, b])
     vals = np.concatenate([np.ones_like(v), -np.ones_like(v), np.ones_like(v), -np.ones_like(v)]).astype(float)
+    if len(dofs.tied):  # a node tied to its neighbour at a rigid coupling lists the same pair twice
+        rows, first = np.unique(rows, return_index=True)
+        cols, vals = cols[first], vals[first]
     return sp.csr_matrix((vals, (rows, cols)), shape=(dofs.size, dofs.size))
 
 
@@ -219,6 +223,52 @@ class ShaftProperties:
 
 
 @dataclass(frozen=True)
+class SegmentProperties:
+    """One zone of the shaft, ``[x_start, x_end]`` [m], and its tube (a segmented shaft has several)."""
+
+    name: str
+    x_start: float
+    x_end: float
+    material: str  # name in the design's [materials]
+    properties: ShaftProperties
+
+    @property
+    def length(self) -> float:
+        """[m]."""
+        return self.x_end - self.x_start
+
+    @property
+    def mass(self) -> float:
+        """Tube mass ρ A L [kg]."""
+        p = self.properties
+        return float(p.density * np.pi * (p.outer_diameter**2 - p.inner_diameter**2) / 4 * self.length)
+
+
+@dataclass(frozen=True)
+class CouplingLink:
+    """A coupling element between shaft nodes ``node_a`` (forward side) and ``node_b`` (aft side).
+
+    ``stiffness`` per (u, v, w, θ, β, γ) [N/m, N m/rad]; a rigid direction (``rigid``) is an
+    exact constraint (:attr:`~flexshaft.assembly.dofs.DofMap.tied`) and shows ``inf``.
+    ``allowable_angle`` [rad] or None.
+    """
+
+    name: str
+    x: float
+    node_a: int
+    node_b: int
+    stiffness: np.ndarray
+    rigid: np.ndarray
+    mass: float = 0.0
+    allowable_angle: float | None = None
+
+    @property
+    def angular_stiffness(self) -> float:
+        """Bending stiffness about each axis [N m/rad] (inf when rigid)."""
+        return float(self.stiffness[4])
+
+
+@dataclass(frozen=True)
 class Model:
     """Assembled global matrices (full size; restrict to ``dofs.free`` to solve).
 
@@ -238,6 +288,14 @@ class Model:
         Loss stiffness K'' = Im(K*) of the shaft and tailboom elements [N/m, N m/rad].
     internal_damping : {"rotating", "thesis"}
         How the shaft's loss acts (see :mod:`flexshaft.analyses.loss`).
+    shaft : ShaftProperties
+        The ``[shaft]`` tube. For a segmented shaft (several zones or any coupling) it is the
+        nominal tube without its laminate: the analyses that assume one laminated tube
+        (ply strength, laminated-shell buckling, shaft thermal) are then not evaluated.
+    segments : tuple of SegmentProperties
+        Every zone of the shaft with its tube (one for a one-piece shaft).
+    couplings : tuple of CouplingLink
+        Coupling elements, in order of station.
     """
 
     dofs: DofMap
@@ -254,6 +312,8 @@ class Model:
     shaft_loss_stiffness: sp.csr_matrix | None = None  # Im(K*) of the shaft elements (rotating material)
     boom_loss_stiffness: sp.csr_matrix | None = None  # Im(K*) of the boom elements (fixed frame)
     internal_damping: str = "rotating"
+    segments: tuple[SegmentProperties, ...] = ()
+    couplings: tuple[CouplingLink, ...] = ()
 
     @cached_property
     def _loss_split(self) -> tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]:
@@ -338,7 +398,9 @@ class Model:
 
     @property
     def shaft_mass(self) -> float:
-        """Mass of the shaft tube [kg] (disks excluded)."""
+        """Mass of the shaft tubes [kg] (disks and coupling hubs excluded)."""
+        if len(self.segments) > 1:
+            return float(sum(seg.mass for seg in self.segments))
         sh = self.shaft
         area = np.pi * (sh.outer_diameter**2 - sh.inner_diameter**2) / 4
         return float(sh.density * area * (self.dofs.shaft_x[-1] - self.dofs.shaft_x[0]))

@@ -74,6 +74,7 @@ app.command("run")(run)
 app.command("runup")(runup)
 app.command("montecarlo")(montecarlo)
 app.add_typer(study_app, name="study")
+app.command("compare")(__import__("flexshaft.cli.compare", fromlist=["compare"]).compare)
 
 
 def main() -> None:  # pragma: no cover - console entry

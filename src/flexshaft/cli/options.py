@@ -63,6 +63,7 @@ class Embedded(str, Enum):
 
     baseline = "baseline"
     tuned = "tuned"
+    current = "current"
 
 
 class Resolution(str, Enum):

@@ -12,10 +12,8 @@ import math
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import Field, StrictBool, field_validator, model_validator
-from pydantic_core import PydanticCustomError
 
 from flexshaft.design.fields import (
-    LAYUP_ERROR_TYPE,
     ZERO3,
     BearingDirection,
     Coefficients,
@@ -24,6 +22,7 @@ from flexshaft.design.fields import (
     Name,
     Problems,
     SemiAxes,
+    check_unique,
     format_number,
     format_value,
 )
@@ -55,6 +54,7 @@ from flexshaft.design.quantities import (
     Stiffness,
     WallThickness,
 )
+from flexshaft.design.segments import MAX_SEGMENTS, ShaftSegment, Tube, check_layup
 
 #: The ply layup as written in the design file (parsed by :func:`~flexshaft.design.layup.parse_layup`).
 Layup = Annotated[str, Field(strict=True, max_length=MAX_LAYUP_LENGTH,
@@ -76,7 +76,10 @@ __all__ = [
 
 
 class Shaft(FrozenModel):
-    """One-piece drive shaft: geometry [m], material reference, layup [deg], end conditions.
+    """Drive shaft: geometry [m], material reference, layup [deg], end conditions.
+
+    One tube, or the zones of ``segments`` (:class:`~flexshaft.design.segments.ShaftSegment`)
+    whose missing values default to this table's; :attr:`tubes` gives every zone resolved.
 
     Attributes
     ----------
@@ -102,6 +105,11 @@ class Shaft(FrozenModel):
     shear_deformation : bool
         Timoshenko shear deformation in the shaft elements; false gives Euler-Bernoulli
         elements, as in the thesis.
+    segments : tuple of table
+        ``[[shaft.segments]]``: zones of a segmented shaft, each with ``name``, ``x_start`` and
+        ``x_end`` [m] (tiling the shaft in order) and optionally its own ``outer_diameter``,
+        ``wall_thickness``, ``material`` and ``layup`` (defaults: this table's); omitted: one
+        tube (docs/segmented-driveline.md).
     """
 
     x_start: Station
@@ -113,18 +121,12 @@ class Shaft(FrozenModel):
     fixed_start: tuple[DofName, ...] = Field(default=(), max_length=6)
     fixed_end: tuple[DofName, ...] = Field(default=(), max_length=6)
     shear_deformation: StrictBool = False
+    segments: tuple[ShaftSegment, ...] = Field(default=(), max_length=MAX_SEGMENTS)
 
     @field_validator("layup", mode="after")
     @classmethod
     def _parse_layup(cls, layup: str | None) -> str | None:
-        if layup is not None:
-            try:
-                parse_layup(layup)
-            except ValueError as error:  # "<reason>; allowed: <forms>"
-                reason, _, allowed = str(error).partition("; allowed: ")
-                context = {"reason": reason, "allowed": allowed}
-                raise PydanticCustomError(LAYUP_ERROR_TYPE, "{reason}", context) from None
-        return layup
+        return check_layup(layup)
 
     @model_validator(mode="after")
     def _check(self) -> Shaft:
@@ -150,8 +152,56 @@ class Shaft(FrozenModel):
             dofs: tuple[str, ...] = getattr(self, field)
             if len(set(dofs)) != len(dofs):
                 problems.add((field,), f"lists a degree of freedom twice (got {format_value(list(dofs))})")
+        if self.segments:
+            self._check_segments(problems)
         problems.raise_if_any()
         return self
+
+    def _check_segments(self, problems: Problems) -> None:
+        """The segments tile [x_start, x_end] in order, with unique names and thin walls."""
+        check_unique(problems, ("segments",), [segment.name for segment in self.segments])
+        tol = 1e-9 * max(1.0, abs(self.x_end - self.x_start))
+        expected, what = self.x_start, "shaft.x_start"
+        for index, segment in enumerate(self.segments):
+            if abs(segment.x_start - expected) > tol:
+                problems.add(
+                    ("segments", index, "x_start"),
+                    f"must equal {what} = {format_number(expected)} m: the segments tile the shaft in order, "
+                    f"without gap or overlap (got {format_value(segment.x_start)})",
+                )
+            expected, what = segment.x_end, f"the x_end of segment {format_value(segment.name)}"
+        if self.segments and abs(self.segments[-1].x_end - self.x_end) > tol:
+            problems.add(
+                ("segments", len(self.segments) - 1, "x_end"),
+                f"must equal shaft.x_end = {format_number(self.x_end)} m: the last segment ends the shaft "
+                f"(got {format_value(self.segments[-1].x_end)})",
+            )
+        for index, tube in enumerate(self.tubes):
+            if not tube.wall_thickness < tube.outer_diameter / 2.0:
+                problems.add(
+                    ("segments", index, "wall_thickness"),
+                    f"must be less than outer_diameter/2 = {format_number(tube.outer_diameter / 2.0)} m "
+                    f"(got {format_value(tube.wall_thickness)})",
+                )
+
+    @property
+    def tubes(self) -> tuple[Tube, ...]:
+        """Every zone of the shaft with the ``[shaft]`` defaults filled in (one without segments).
+
+        A segment that names its own material takes its own layup (none for a metal); one that
+        does not inherits both from ``[shaft]``.
+        """
+        if not self.segments:
+            return (Tube(name="shaft", x_start=self.x_start, x_end=self.x_end, outer_diameter=self.outer_diameter,
+                         wall_thickness=self.wall_thickness, material=self.material, layup=self.layup),)
+        return tuple(
+            Tube(name=s.name, x_start=s.x_start, x_end=s.x_end,
+                 outer_diameter=self.outer_diameter if s.outer_diameter is None else s.outer_diameter,
+                 wall_thickness=self.wall_thickness if s.wall_thickness is None else s.wall_thickness,
+                 material=self.material if s.material is None else s.material,
+                 layup=s.layup if (s.material is not None or s.layup is not None) else self.layup)
+            for s in self.segments
+        )
 
     @property
     def ply_angles_deg(self) -> tuple[float, ...]:
@@ -264,12 +314,17 @@ class _BearingBase(FrozenModel):
         Height h of the shaft axis above the boom's neutral axis at the mount [m]; defaults to
         the boom's vertical semi-axis there plus ``[tailboom] shaft_clearance``. Only with a
         tailboom (without one the bearing joins the shaft to the ground).
+    mass : float
+        Installed mass of the part [kg] (bearing, housing and bracket; magnet, rotor sleeve and
+        sensors), for the mass breakdown of ``flexshaft compare`` only (not in the dynamics); 0
+        when omitted.
     """
 
     name: Name
     x: Station
     x_boom: Station | None = None
     offset: Clearance | None = None
+    mass: Mass = 0.0
 
     @property
     def boom_x(self) -> float:
@@ -290,9 +345,14 @@ class ContactBearing(_BearingBase):
         ``{ v = 1.0e8, w = 1.0e8 }``.
     damping : dict of str to float or None
         Viscous damping per direction [N s/m; N m s/rad for beta and gamma]; omitted: none.
+    role : {"hanger", "damper", "gearbox"}
+        What the part is in the driveline: a bearing that supports the shaft (default), a shaft
+        damper (spring and viscous damper to the boom), or the bearing of a gearbox that ends the
+        driveline (not a driveline part). Only the part count and mass breakdown use it.
     """
 
     kind: Literal["contact"]
+    role: Literal["hanger", "damper", "gearbox"] = "hanger"
     stiffness: dict[BearingDirection, Stiffness]
     damping: dict[BearingDirection, Damping] | None = None
 

@@ -57,6 +57,8 @@ __all__ = [
 EMBEDDED_DESIGNS: dict[str, tuple[str, str]] = {
     "baseline": ("baseline.toml", "thesis Table 3.1 study configuration (K_p 1e7 N/m, K_d 0); fails its requirements"),
     "tuned": ("tuned.toml", "tuned final design: Table 3.1 driveline with spin-up-tuned actuator gains; passes"),
+    "current": ("current_driveline.toml", "today's segmented aluminium driveline of the same boom, power and speed "
+                                          "(five tubes, four disc couplings, four hangers, a damper); passes"),
 }
 #: The embedded design ``flexshaft run`` analyses when given no design file.
 DEFAULT_DESIGN = "tuned"

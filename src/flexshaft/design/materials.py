@@ -228,6 +228,11 @@ class Isotropic(FrozenModel):
         Density [kg/m³].
     loss_factor : float
         Structural (hysteretic) loss factor η [-]: both moduli are complex, E(1 + iη).
+    yield_strength, ultimate_strength, fatigue_strength : float, optional
+        Strengths [Pa] for the metal strength check of a shaft segment
+        (:mod:`flexshaft.analyses.metal_strength`): S_y, S_ut and S_e, the fully reversed
+        (rotating-bending) fatigue strength of the part at its design life with the surface, size
+        and reliability factors already applied; yield and fatigue strengths at most the ultimate.
     """
 
     kind: Literal["isotropic"]
@@ -235,6 +240,9 @@ class Isotropic(FrozenModel):
     G: Modulus
     density: Density
     loss_factor: LossFactor = 0.0
+    yield_strength: Strength | None = None
+    ultimate_strength: Strength | None = None
+    fatigue_strength: Strength | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Isotropic:
@@ -245,6 +253,15 @@ class Isotropic(FrozenModel):
                 f"gives Poisson ratio E/(2G) - 1 = {format_number(self.poisson_ratio)}, outside (-1, 0.5] "
                 f"(got {format_value(self.G)}; allowed: G >= E/3 = {format_number(self.E / 3.0)} Pa)",
             )
+        if self.ultimate_strength is not None:
+            for name in ("yield_strength", "fatigue_strength"):
+                value = getattr(self, name)
+                if value is not None and not value <= self.ultimate_strength:
+                    problems.add(
+                        (name,),
+                        f"must not exceed ultimate_strength = {format_number(self.ultimate_strength)} Pa "
+                        f"(got {format_value(value)})",
+                    )
         problems.raise_if_any()
         return self
 

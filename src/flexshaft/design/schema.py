@@ -12,6 +12,7 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.fields`: shared field types, message formatting, the problem collector;
 * :mod:`flexshaft.design.materials`: :class:`Lamina`, :class:`Isotropic`;
 * :mod:`flexshaft.design.components`: :class:`Shaft`, :class:`Tailboom`, bearings, :class:`Disk`;
+* :mod:`flexshaft.design.segments`: :class:`ShaftSegment`, :class:`Coupling` (segmented shafts);
 * :mod:`flexshaft.design.loads`: :class:`Operating`, :class:`Loads` and its point and line loads;
 * :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
@@ -60,6 +61,7 @@ from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, Po
 from flexshaft.design.materials import Isotropic, Lamina, Material
 from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
+from flexshaft.design.segments import MAX_COUPLINGS, Coupling, ShaftSegment, Tube
 
 __all__ = [
     "Analysis",
@@ -70,6 +72,7 @@ __all__ = [
     "BearingDirection",
     "ContactBearing",
     "Controller",
+    "Coupling",
     "Design",
     "Disk",
     "DofName",
@@ -85,7 +88,9 @@ __all__ = [
     "PointLoad",
     "Requirements",
     "Shaft",
+    "ShaftSegment",
     "Tailboom",
+    "Tube",
     "PROBLEMS_ERROR_TYPE",
     "LAYUP_ERROR_TYPE",
     "MAX_SPEED_RPM",
@@ -152,6 +157,9 @@ class Design(FrozenModel):
         Contact (hanger) and active magnetic bearings (``[[bearings]]``), at least one.
     disks : tuple of tables
         Rigid disks on the shaft (``[[disks]]``).
+    couplings : tuple of tables
+        Flexible couplings that cut the shaft into pieces (``[[couplings]]``;
+        docs/segmented-driveline.md).
     operating : table
         The operating point (``[operating]``).
     loads : table
@@ -172,6 +180,7 @@ class Design(FrozenModel):
     tailboom: Tailboom | None = None
     bearings: tuple[Bearing, ...] = Field(min_length=1, max_length=MAX_BEARINGS)
     disks: tuple[Disk, ...] = Field(default=(), max_length=MAX_DISKS)
+    couplings: tuple[Coupling, ...] = Field(default=(), max_length=MAX_COUPLINGS)
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()
@@ -183,6 +192,8 @@ class Design(FrozenModel):
     def _check(self) -> Design:
         problems = Problems()
         self._check_materials(problems)
+        self._check_segment_materials(problems)
+        self._check_couplings(problems)
         self._check_bearings(problems)
         self._check_disks(problems)
         self._check_loads(problems)
@@ -221,6 +232,51 @@ class Design(FrozenModel):
                     ("tailboom", "material"),
                     f'must name an isotropic material (got {format_value(self.tailboom.material)}, kind = "lamina")',
                 )
+
+    def _check_segment_materials(self, problems: Problems) -> None:
+        """Each segment's material exists; a lamina needs a layup, a metal refuses one."""
+        for index, (segment, tube) in enumerate(zip(self.shaft.segments, self.shaft.tubes)):
+            if segment.material is None:
+                continue  # inherits [shaft] material and layup, checked above
+            path: FieldPath = ("shaft", "segments", index)
+            material = self._material_reference(problems, path + ("material",), segment.material)
+            if isinstance(material, Lamina) and tube.layup is None:
+                problems.add(path + ("layup",), f"required key is missing (the segment material "
+                                                f"{format_value(segment.material)} is a lamina)")
+            elif isinstance(material, Isotropic) and tube.layup is not None:
+                problems.add(path + ("layup",), f"must be omitted for the isotropic material "
+                                                f"{format_value(segment.material)} (got {format_value(tube.layup)})")
+        for index, segment in enumerate(self.shaft.segments):
+            inherited = self.materials.get(self.shaft.material)
+            if segment.material is None and segment.layup is not None and isinstance(inherited, Isotropic):
+                problems.add(("shaft", "segments", index, "layup"),
+                             f"must be omitted for the isotropic material {format_value(self.shaft.material)} "
+                             f"(got {format_value(segment.layup)})")
+
+    def _check_couplings(self, problems: Problems) -> None:
+        """Couplings strictly inside the shaft, at distinct stations."""
+        check_unique(problems, ("couplings",), [coupling.name for coupling in self.couplings])
+        tol = self._station_tolerance()
+        seen: list[float] = []
+        for index, coupling in enumerate(self.couplings):
+            if not self.shaft.x_start + tol < coupling.x < self.shaft.x_end - tol:
+                problems.add(("couplings", index, "x"), f"{format_value(coupling.x)} is not strictly inside the "
+                                                        f"shaft {self._shaft_range()} (a coupling joins two pieces)")
+            elif any(abs(coupling.x - other) <= tol for other in seen):
+                problems.add(("couplings", index, "x"), f"{format_value(coupling.x)} repeats the station of "
+                                                        "another coupling")
+            seen.append(coupling.x)
+
+    def _station_tolerance(self) -> float:
+        return 1e-9 * max(1.0, abs(self.shaft.x_end - self.shaft.x_start))
+
+    def _at_coupling(self, problems: Problems, path: FieldPath, x: float) -> None:
+        """A bearing, sensor or disk must sit on one side of a coupling, not at its station."""
+        tol = self._station_tolerance()
+        for coupling in self.couplings:
+            if abs(x - coupling.x) <= tol:
+                problems.add(path, f"{format_value(x)} is the station of coupling {format_value(coupling.name)}; "
+                                   "put it on one side of the joint")
 
     def _shaft_range(self) -> str:
         return f"[{format_number(self.shaft.x_start)}, {format_number(self.shaft.x_end)}] m"
@@ -263,6 +319,8 @@ class Design(FrozenModel):
                 )
             if isinstance(bearing, ActiveBearing) and bearing.sensor_offset != 0.0:
                 self._check_sensor(problems, index, bearing)
+                self._at_coupling(problems, ("bearings", index, "sensor_offset"), bearing.sensor_x)
+            self._at_coupling(problems, ("bearings", index, "x"), bearing.x)
 
     def _check_sensor(self, problems: Problems, index: int, bearing: ActiveBearing) -> None:
         """The displacement sensor at x + sensor_offset must lie on the shaft (and on the boom)."""
@@ -287,6 +345,7 @@ class Design(FrozenModel):
                 problems.add(
                     ("disks", index, "x"), f"{format_value(disk.x)} is outside the shaft {self._shaft_range()}"
                 )
+            self._at_coupling(problems, ("disks", index, "x"), disk.x)
 
     def _check_station(self, problems: Problems, path: FieldPath, on: str, x: float) -> None:
         if on == "shaft" and not self._on_shaft(x):
@@ -319,6 +378,15 @@ class Design(FrozenModel):
     def shaft_material(self) -> Lamina | Isotropic:
         """The material the shaft is made of."""
         return self.materials[self.shaft.material]
+
+    @property
+    def segmented(self) -> bool:
+        """True when the shaft has more than one zone or any coupling (not one uniform tube)."""
+        return len(self.shaft.tubes) > 1 or bool(self.couplings)
+
+    def tube_material(self, tube: Tube) -> Lamina | Isotropic:
+        """The material of one resolved shaft zone (:attr:`Shaft.tubes`)."""
+        return self.materials[tube.material]
 
     @property
     def tailboom_material(self) -> Isotropic | None:

@@ -12,6 +12,8 @@ import numpy as np
 
 from flexshaft.analyses import imbalance_response, modes
 from flexshaft.analyses.campbell import Campbell, campbell
+from flexshaft.analyses.metal_strength import metal_strength
+from flexshaft.analyses.misalignment import coupling_misalignment
 from flexshaft.analyses.response import actuator_response, bearing_reactions, worst_case_orbits
 from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
@@ -57,6 +59,8 @@ class RunResults:
     shaft_orbits: np.ndarray | None = None  # (nodes, cases, speeds) orbit amplitude at every shaft node [m]
     bearing_reactions: dict = field(default_factory=dict)  # name -> analyses.response.BearingReaction
     imbalance_spinup: object = None  # HarmonicResponse (ndof, ncases, n_speeds) over `speeds`
+    metal_strength: object = None  # MetalStrength of the isotropic segments (None: no isotropic segment)
+    coupling_misalignment: object = None  # CouplingMisalignment (None: no couplings)
 
     @property
     def spinup(self) -> np.ndarray:
@@ -119,8 +123,16 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         strength_total = min(totals, key=lambda r: r.safety_factor)
         step("torsional buckling")
         buckling = shaft_buckling(model).to_dict()
+    elif design.segmented:
+        notes.append("ply strength and laminated-shell buckling assume one laminated tube; the shaft is segmented")
     else:
         notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+    metal = misalignment = None
+    if any(design.materials[seg.material].kind == "isotropic" for seg in model.segments):
+        step("metal strength")
+        metal = metal_strength(model, q_static, q_at_speed)
+    if model.couplings:
+        misalignment = coupling_misalignment(model, q_static, q_at_speed)
     step("thermal")
     thermal = None
     if model.shaft.laminate is not None:
@@ -172,6 +184,8 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         shaft_orbits=amp,
         bearing_reactions=reactions,
         imbalance_spinup=q,
+        metal_strength=metal,
+        coupling_misalignment=misalignment,
     )
     step("requirements verdict")
     from flexshaft.studies.verdict import evaluate

@@ -21,6 +21,14 @@ Checks, in report order (key: requirement):
 * ``temperature``: maximum shaft temperature within the matrix allowable;
 * ``spinup_deflection``: peak shaft orbit during spin-up within the limit.
 
+Two checks appear only where the driveline has the parts they concern:
+
+* ``metal_strength`` (after ``tsai_wu``; when the shaft has an isotropic segment): the smaller of
+  the von Mises yield and modified-Goodman fatigue safety factors of the metal segments
+  (:mod:`flexshaft.analyses.metal_strength`) against ``min_safety_factor``;
+* ``coupling_angle`` (last; when the design has couplings): the static plus whirling
+  misalignment angle of each coupling within its ``allowable_angle_deg``.
+
 Locations are small mappings with SI values (``station`` [m], ``speed`` [rad/s], ``frequency``
 [rad/s]) and labels (``actuator``, ``mode``, ``ply``, ``case``, ``detail``); the report
 (:mod:`flexshaft.report.verdict`) converts and prints them.
@@ -28,6 +36,7 @@ Locations are small mappings with SI values (``station`` [m], ``speed`` [rad/s],
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
@@ -39,10 +48,12 @@ from flexshaft.design.requirements import Requirements
 __all__ = [
     "ActuatorEvidence",
     "Check",
+    "CouplingEvidence",
     "Evidence",
     "Finding",
     "Kind",
     "LateralCritical",
+    "MetalEvidence",
     "ModeDamping",
     "Status",
     "Verdict",
@@ -53,10 +64,10 @@ __all__ = [
 #: Outcome of one check.
 Status = Literal["pass", "fail", "not evaluated"]
 #: Physical kind of a check's value, limit and margin (sets the display unit).
-Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement"]
+Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement", "angle"]
 #: SI unit of each kind.
 SI_UNITS: dict[str, str] = {"ratio": "-", "speed": "rad/s", "length": "m", "force": "N", "temperature": "K",
-                            "fraction": "-", "log_decrement": "-"}
+                            "fraction": "-", "log_decrement": "-", "angle": "rad"}
 Location = Mapping[str, Any]
 
 
@@ -119,6 +130,30 @@ class ActuatorEvidence:
 
 
 @dataclass(frozen=True)
+class MetalEvidence:
+    """The smallest safety factor [-] of one criterion in one metal segment, and its station [m].
+
+    ``criterion`` names it, e.g. "fatigue (modified Goodman)" or "yield (von Mises)".
+    """
+
+    segment: str
+    criterion: str
+    safety_factor: float
+    station: float
+
+
+@dataclass(frozen=True)
+class CouplingEvidence:
+    """Misalignment of one coupling: static and whirling angle [rad], allowable [rad] or None."""
+
+    name: str
+    station: float
+    static_angle: float
+    dynamic_angle: float
+    allowable_angle: float | None = None
+
+
+@dataclass(frozen=True)
 class Evidence:
     """The results a verdict needs, SI units; None where the result does not exist.
 
@@ -148,6 +183,10 @@ class Evidence:
         Matrix allowable temperature [K].
     spinup_peak, spinup_location
         Largest shaft orbit amplitude during spin-up [m] and where (station, speed).
+    metal_strength : tuple of MetalEvidence or None
+        Safety factors of the isotropic segments; None: the shaft has none (no check).
+    coupling_angles : tuple of CouplingEvidence or None
+        Misalignment of every coupling; None: the design has no couplings (no check).
     notes : mapping
         Check key -> why its evidence is missing (shown as "not evaluated: <note>").
     """
@@ -170,6 +209,8 @@ class Evidence:
     allowable_temperature: float | None = None
     spinup_peak: float | None = None
     spinup_location: Location = field(default_factory=dict)
+    metal_strength: tuple[MetalEvidence, ...] | None = None
+    coupling_angles: tuple[CouplingEvidence, ...] | None = None
     notes: Mapping[str, str] = field(default_factory=dict)
 
 
@@ -514,6 +555,37 @@ def _spinup(ev: Evidence, req: Requirements) -> Check:
     return _from_findings(*args, [_at_most(ev.spinup_peak, req.max_spinup_deflection, ev.spinup_location)])
 
 
+def _metal_strength(ev: Evidence, req: Requirements) -> Check:
+    args = ("metal_strength", "metal safety factor", "ratio", "at least")
+    if not ev.metal_strength:
+        return _not_evaluated(*args, ev.notes.get("metal_strength", "no isotropic segment gives its strengths"))
+    findings = [_at_least(m.safety_factor, req.min_safety_factor,
+                          {"station": m.station, "case": f"segment {m.segment}, {m.criterion}"})
+                for m in ev.metal_strength]
+    return _from_findings(*args, findings, "isotropic segments, yield and fatigue (Shigley DE-Goodman); "
+                                           "limit min_safety_factor")
+
+
+def _coupling_angle(ev: Evidence) -> Check:
+    args = ("coupling_angle", "coupling misalignment", "angle", "at most")
+    findings, missing = [], []
+    for c in ev.coupling_angles or ():
+        if c.allowable_angle is None:
+            missing.append(c.name)
+            continue
+        findings.append(_at_most(c.static_angle + c.dynamic_angle, c.allowable_angle,
+                                 {"station": c.station, "case": f"coupling {c.name}",
+                                  "detail": f"static {math.degrees(c.static_angle):.3g}° + whirl "
+                                            f"{math.degrees(c.dynamic_angle):.3g}°"}))
+    if not findings:
+        return _not_evaluated(*args, f"no allowable_angle_deg given on the couplings ({', '.join(missing)})"
+                              if missing else "the design has no couplings")
+    note = "static + whirling angle at the operating speed"
+    if missing:
+        note += f"; not evaluated for {', '.join(missing)} (no allowable_angle_deg given)"
+    return _from_findings(*args, findings, note)
+
+
 def evaluate(evidence: Evidence, requirements: Requirements | None = None) -> Verdict:
     """Check the evidence against the requirements (default: the schema defaults).
 
@@ -532,8 +604,11 @@ def evaluate(evidence: Evidence, requirements: Requirements | None = None) -> Ve
     req = requirements if requirements is not None else Requirements()
     ev = evidence
     onset_location = ev.onset_location if ev.onset_speed is not None else None
+    metal = (_metal_strength(ev, req),) if ev.metal_strength is not None else ()
+    couplings = (_coupling_angle(ev),) if ev.coupling_angles is not None else ()
     return Verdict((
         _tsai_wu(ev, req),
+        *metal,
         _buckling(ev, req),
         whirl_onset_check(ev.onset_speed, ev.stability_max_speed, ev.operating_speed, req.min_onset_margin,
                           onset_location, ev.notes.get("whirl_onset", "")),
@@ -543,4 +618,5 @@ def evaluate(evidence: Evidence, requirements: Requirements | None = None) -> Ve
         _actuators(ev, "actuator_force"),
         _temperature(ev, req),
         _spinup(ev, req),
+        *couplings,
     ))

@@ -19,7 +19,14 @@ from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.units import celsius_to_kelvin
-from flexshaft.studies.verdict import ActuatorEvidence, Evidence, LateralCritical, ModeDamping
+from flexshaft.studies.verdict import (
+    ActuatorEvidence,
+    CouplingEvidence,
+    Evidence,
+    LateralCritical,
+    MetalEvidence,
+    ModeDamping,
+)
 
 __all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"]
 
@@ -172,11 +179,49 @@ def _strength(res, notes: dict) -> dict:
         "detail": f"φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates"}}
 
 
+def _metal(res, notes: dict) -> dict:
+    """Fatigue and yield safety factors of each isotropic segment (no check without one)."""
+    metal = getattr(res, "metal_strength", None)
+    if metal is None:
+        return {}
+    if not metal.evaluated:
+        notes["metal_strength"] = "; ".join(metal.notes) or "no isotropic segment gives its strengths"
+        return {"metal_strength": ()}
+    findings = []
+    for segment in metal.segments:
+        for criterion, label in (("fatigue", "fatigue (modified Goodman)"), ("yield", "yield (von Mises)")):
+            worst = metal.worst(criterion, segment)
+            findings.append(MetalEvidence(segment, label, worst["safety_factor"], worst["station"]))
+    return {"metal_strength": tuple(findings)}
+
+
+def _couplings(res) -> dict:
+    angles = getattr(res, "coupling_misalignment", None)
+    if angles is None:
+        return {}
+    return {"coupling_angles": tuple(
+        CouplingEvidence(name, float(x), float(a), float(d), None if np.isnan(limit) else float(limit))
+        for name, x, a, d, limit in zip(angles.names, angles.stations, angles.static_angle, angles.dynamic_angle,
+                                        angles.allowable_angle))}
+
+
+def _metal_buckling(res, notes: dict) -> dict:
+    """Torsional buckling of the metal segments (isotropic classical shell), the weakest one."""
+    metal = getattr(res, "metal_strength", None)
+    if metal is None or not metal.buckling:
+        notes["buckling"] = "laminated-shell buckling needs a lamina shaft material"
+        return {}
+    b = min(metal.buckling, key=lambda b: b.safety_factor)
+    return {"buckling_safety_factor": float(b.safety_factor), "buckling_location": {
+        "case": f"segment {b.segment}, n = {b.wave_number}",
+        "detail": f"applied {b.torque:.0f} N m, T_cr = {b.critical_torque:.0f} N m, isotropic classical (Sanders) "
+                  f"shell over {b.length:.2f} m"}}
+
+
 def _buckling(res, notes: dict) -> dict:
     b = res.buckling
     if b is None:
-        notes["buckling"] = "laminated-shell buckling needs a lamina shaft material"
-        return {}
+        return _metal_buckling(res, notes)
     positive = b["critical_torque_positive_Nm"] <= b["critical_torque_negative_Nm"]
     sense, n = ("positive", b["wave_number_positive"]) if positive else ("negative", b["wave_number_negative"])
     n = "∞ (shear crimping)" if n is None else n
@@ -259,6 +304,8 @@ def evidence_from_run(res: object) -> Evidence:
     notes: dict[str, str] = {}
     values: dict = {}
     values.update(_strength(res, notes))
+    values.update(_metal(res, notes))
+    values.update(_couplings(res))
     values.update(_buckling(res, notes))
     values.update(_whirl(res, speed, notes))
     if speed > 0.0:
