@@ -317,6 +317,7 @@ def _add_study_commands() -> None:
 
 
 _add_study_commands()
+from flexshaft.cli.optimize import register_optimize; register_optimize(app)  # noqa: E402,E702 (flexshaft optimize)
 
 
 def main() -> None:  # pragma: no cover - console entry
