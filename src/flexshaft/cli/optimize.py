@@ -75,6 +75,12 @@ def _load_design(path: Optional[Path], embedded: str):
         _fail(f"invalid design {path if path is not None else f'(embedded {embedded})'}:\n{exc}")
 
 
+def _base_label(path: Optional[Path]) -> str:
+    if path is None:
+        return "base (Table 3.1 baseline)"
+    return f"base ({path.stem if path.suffix == '.toml' else path.name})"
+
+
 def optimize(
     design: Optional[Path] = typer.Argument(None, help="Base design file (TOML). Default: the embedded Table 3.1 "
                                             "baseline (`flexshaft baseline`).", show_default=False),
@@ -134,7 +140,7 @@ def optimize(
         from flexshaft.studies.optimize import optimize as run_optimization
 
         result = run_optimization(problem, budget, out, pop_size=pop_size, seed=seed, jobs=jobs, client=dask,
-                                  references=refs, progress=typer.echo)
+                                  references=refs, base_label=_base_label(design), progress=typer.echo)
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
     _report(result, out, designs, verify, jobs, dask)
@@ -156,7 +162,7 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
     if verify:
         ds = result.verify(files, jobs=jobs, client=dask)
         failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
-        result.save(out)
+    result.save(out)
     _print_table(result)
     typer.echo(f"design files: {out / 'designs'} ({len(files)})")
     if failed:
@@ -169,11 +175,10 @@ def _print_table(result) -> None:
     from rich.table import Table
 
     pareto = result.pareto
-    table = Table(title="Pareto designs and references (verdict at the search fidelity; verified: full run)")
-    columns = ["design", "shaft mass [kg]", "Tsai-Wu SF", "buckling SF", "actuator force [N]", "spin-up orbit [mm]",
-               "verdict"]
+    table = Table(title="Pareto designs and references (search verdict; 'run': re-verified by the full run)")
+    columns = ["design", "mass kg", "Tsai-Wu", "buckling", "force N", "orbit mm", "verdict"]
     for c in columns:
-        table.add_column(c, justify="left" if c in ("design", "verdict") else "right")
+        table.add_column(c, justify="left" if c in ("design", "verdict") else "right", no_wrap=True)
 
     def row(label, outputs, verdict):
         table.add_row(label, f"{outputs['shaft_mass']:.3f}", f"{outputs['safety_factor']:.2f}",
@@ -189,8 +194,9 @@ def _print_table(result) -> None:
         name = str(pareto["file"].values[k]) if "file" in pareto else ""
         if not name:
             continue
-        verified = {1.0: "PASS (verified)", 0.0: "FAIL (full run)"}.get(
-            float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS (search)")
+        verified = {1.0: "PASS run", 0.0: "FAIL run"}.get(
+            float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS")
+        name = name.removesuffix(".toml")
         row(name, {n: float(pareto[n].values[k]) for n in ("shaft_mass", "safety_factor", "buckling_safety_factor",
                                                             "actuator_force", "spinup_deflection")}, verified)
     Console().print(table)

@@ -7,6 +7,7 @@ given; returns the figure. Nothing here knows about designs or analyses.
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -22,6 +23,7 @@ if TYPE_CHECKING:
 __all__ = ["pareto_front"]
 
 _REFERENCE_MARKERS = ("*", "D", "P", "X", "s", "^", "v")
+_LABEL_OFFSETS = ((9, 7), (9, -15), (-9, 7), (-9, -15))
 _REFERENCE_COLOURS = ("black", "tab:green", "tab:purple", "tab:brown", "tab:olive", "tab:cyan", "tab:pink")
 
 
@@ -90,18 +92,20 @@ def pareto_front(
     if fx.size:
         order = np.argsort(fx)
         ax.plot(fx[order], fy[order], "-o", color="tab:red", ms=6, mfc="tab:red", mec="k", mew=0.6, lw=1.4,
-                drawstyle="steps-post" if fx.size > 1 else "default", label=f"Pareto front ({fx.size})", zorder=4)
+                drawstyle=("steps-post" if senses[0] == "min" else "steps-pre") if fx.size > 1 else "default", label=f"Pareto front ({fx.size})", zorder=4)
     for k, (label, (rx, ry, passes)) in enumerate((references or {}).items()):
         if not (np.isfinite(rx) and np.isfinite(ry)):
             continue
         colour = _REFERENCE_COLOURS[k % len(_REFERENCE_COLOURS)]
         marker = _REFERENCE_MARKERS[k % len(_REFERENCE_MARKERS)]
-        ax.plot([rx], [ry], marker, ms=15 if marker == "*" else 10, mfc=colour if passes else "white", mec=colour,
-                mew=1.6, ls="none", label=f"{label}{'' if passes else ' (fails)'}", zorder=6)
-        ax.annotate(label, (rx, ry), textcoords="offset points", xytext=(8, 6), fontsize=8.5, color=colour)
+        # the first reference (the base) largest and underneath: the others may sit on it
+        ax.plot([rx], [ry], marker, ms=20 if k == 0 else 9, mfc=colour if passes else "white",
+                mec=colour, mew=1.6, ls="none", label=f"{label}{'' if passes else ' (fails)'}", zorder=6 if k == 0 else 7)
+        ax.annotate(label, (rx, ry), textcoords="offset points", xytext=_LABEL_OFFSETS[k % len(_LABEL_OFFSETS)],
+                    fontsize=8.5, color=colour, ha="left" if _LABEL_OFFSETS[k % len(_LABEL_OFFSETS)][0] >= 0 else "right")
     arrows = {"min": "lower is better", "max": "higher is better"}
     ax.set_xlabel(f"{x_label} ({arrows.get(senses[0], '')})")
     ax.set_ylabel(f"{y_label} ({arrows.get(senses[1], '')})")
-    ax.set_title(title or "Pareto front")
+    ax.set_title(textwrap.fill(title or "Pareto front", 80), fontsize=10)
     ax.legend(loc="best", fontsize=8)
     return fig

@@ -101,7 +101,7 @@ class OptimizationResult:
         The feasible non-dominated candidates (dimension ``design``, sorted by the first
         objective), the same variables, and ``evaluation`` (index into ``evaluations``).
     references : dict
-        Label -> outputs of the reference designs (``"base"`` first), evaluated the same way.
+        Label -> outputs of the reference designs (the base first), evaluated the same way.
     run_dir : Path or None
     n_computed : int
         Evaluations computed by this call (the rest came from the run folder).
@@ -301,6 +301,7 @@ def optimize(
     client: Any = None,
     method: str = "nsga2",
     references: Mapping[str, Any] | None = None,
+    base_label: str = "base",
     progress: Callable[[str], None] | None = None,
 ) -> OptimizationResult:
     """Search the Pareto set of ``problem`` with at most ``budget`` design evaluations.
@@ -322,7 +323,9 @@ def optimize(
     method : {"nsga2", "random"}
         NSGA-II, or uniform random sampling of the bounds (the benchmark's reference).
     references : mapping, optional
-        Label -> Design evaluated too and marked on the figure (the base is always, as "base").
+        Label -> Design evaluated too and marked on the figure (the base always is).
+    base_label : str
+        The base design's label in ``references`` and on the figure.
     progress : callable, optional
         Called with one line per generation.
     """
@@ -363,7 +366,7 @@ def optimize(
         evaluate(X, 0)
     else:
         _nsga2(problem, budget, pop_size, seed, evaluate)
-    refs = {"base": problem.base, **dict(references or {})}
+    refs = {base_label: problem.base, **dict(references or {})}
     reference_outputs = {}
     for label, design in refs.items():
         ref_problem = replace(problem, base=design, fixed={})

@@ -82,6 +82,9 @@ class DesignVariable:
         Name in the results (default: the first path with non-identifier characters as ``_``).
     units : str
         Unit of the value for the results' attributes.
+    significant_digits : int or None
+        Values are rounded to this many significant digits (clean design files, and candidates
+        that differ below it are one design); None: exact.
     """
 
     path: str | tuple[str, ...]
@@ -91,6 +94,7 @@ class DesignVariable:
     log: bool = False
     name: str | None = None
     units: str = ""
+    significant_digits: int | None = 4
 
     def __post_init__(self) -> None:
         paths = (self.path,) if isinstance(self.path, str) else tuple(self.path)
@@ -110,6 +114,10 @@ class DesignVariable:
             raise OptimizeError(f"{where}: an integer variable needs integer bounds (got {self.lower!r}, {self.upper!r})")
         if self.integer and self.log:
             raise OptimizeError(f"{where}: a variable is either integer or log-scale, not both")
+        if self.significant_digits is not None and not (isinstance(self.significant_digits, int)
+                                                        and 1 <= self.significant_digits <= 17):
+            raise OptimizeError(f"{where}: significant_digits must be an integer from 1 to 17 or None "
+                                f"(got {self.significant_digits!r})")
         if any(p.startswith(LAYUP_PREFIX) for p in paths) and len(paths) > 1:
             raise OptimizeError(f"{where}: a layup placeholder cannot share a variable with other paths")
         name = self.name if self.name is not None else _name_of(paths[0])
@@ -138,7 +146,12 @@ class DesignVariable:
         """The value of search coordinate ``x`` (clipped to the bounds, rounded if integer)."""
         value = 10.0 ** float(x) if self.log else float(x)
         value = min(max(value, float(self.lower)), float(self.upper))
-        return int(round(value)) if self.integer else value
+        if self.integer:
+            return int(round(value))
+        if self.significant_digits is not None and value != 0.0:
+            value = float(f"{value:.{self.significant_digits}g}")
+            value = min(max(value, float(self.lower)), float(self.upper))
+        return value
 
     def encode(self, value: float) -> float:
         """The search coordinate of ``value``."""
@@ -146,7 +159,7 @@ class DesignVariable:
 
     def spec(self) -> dict:
         return {"path": list(self.paths), "lower": self.lower, "upper": self.upper, "integer": self.integer,
-                "log": self.log, "name": self.name, "units": self.units}
+                "log": self.log, "name": self.name, "units": self.units, "significant_digits": self.significant_digits}
 
 
 @dataclass(frozen=True)
@@ -510,7 +523,7 @@ def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
 
     * ply angles of a ``(a/−a/b/−b)s`` laminate: a in [30, 75]°, b in [0, 30]° (the thesis's
       two-angle family, optimum (55/−55/0/0)s);
-    * wall thickness from 1.5 mm to 4 mm at the design's outer diameter;
+    * wall thickness from 1 mm to 4 mm at the design's outer diameter;
     * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m) and K_d (shared, 0 to
       3000 N s/m);
     * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
@@ -521,7 +534,7 @@ def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
         template = "({a}/{-a}/{b}/{-b})s"
         variables += [DesignVariable("layup.a", 30.0, 75.0, name="ply_angle_a", units="degree"),
                       DesignVariable("layup.b", 0.0, 30.0, name="ply_angle_b", units="degree")]
-    variables.append(DesignVariable("shaft.wall_thickness", 0.0015, 0.004, name="wall_thickness", units="m"))
+    variables.append(DesignVariable("shaft.wall_thickness", 0.001, 0.004, name="wall_thickness", units="m"))
     bearings = list(design.bearings)
     active = [i for i, b in enumerate(bearings) if b.kind == "active"]
     if active:
