@@ -25,6 +25,8 @@ from typing import Annotated
 import typer
 
 from flexshaft.cli.analysis import baseline, check, modes, stability, thermal
+from flexshaft.cli.compare import compare
+from flexshaft.cli.optimize import optimize
 from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, settings
 from flexshaft.cli.run import run
 from flexshaft.cli.study import study_app
@@ -74,7 +76,8 @@ app.command("run")(run)
 app.command("runup")(runup)
 app.command("montecarlo")(montecarlo)
 app.add_typer(study_app, name="study")
-app.command("compare")(__import__("flexshaft.cli.compare", fromlist=["compare"]).compare)
+app.command("compare")(compare)
+app.command("optimize")(optimize)
 
 
 def main() -> None:  # pragma: no cover - console entry

@@ -1,0 +1,207 @@
+"""``flexshaft optimize``: multi-objective design search with the requirements verdict as constraints.
+
+Mounted in :mod:`flexshaft.cli` by :func:`register_optimize`. Exit codes: 0 when at least one
+design passes every requirement (and, unless ``--no-verify``, every written design re-verifies
+with the full run), 2 for a user error (bad option, unknown path, missing extra, a run folder of
+another search), 3 when no design passes or a written design fails its re-verification.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+__all__ = ["NO_DESIGN_PASSES", "optimize", "parse_variable", "register_optimize"]
+
+#: Exit code when no evaluated design passes every requirement (or one fails re-verification).
+NO_DESIGN_PASSES = 3
+
+
+def _fail(message: str) -> None:
+    typer.echo(f"error: {message}", err=True)
+    raise typer.Exit(code=2)
+
+
+def parse_variable(spec: str):
+    """``PATH[,PATH...]=LOWER:UPPER[:int|:log]`` -> DesignVariable (values in the design
+    file's units: SI, ply angles in degrees)."""
+    from flexshaft.studies.optimize_problem import DesignVariable, OptimizeError
+
+    paths, sep, rest = spec.partition("=")
+    parts = rest.split(":")
+    if not sep or len(parts) not in (2, 3) or not paths.strip():
+        raise OptimizeError(f"--var {spec!r}: expected PATH[,PATH...]=LOWER:UPPER[:int|:log], "
+                            "e.g. shaft.wall_thickness=0.0015:0.004 or bearings[1].kp,bearings[2].kp=1e5:1e7:log")
+    flag = parts[2].strip() if len(parts) == 3 else ""
+    if flag not in ("", "int", "log"):
+        raise OptimizeError(f"--var {spec!r}: the flag must be 'int' or 'log' (got {flag!r})")
+    try:
+        lower, upper = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise OptimizeError(f"--var {spec!r}: bounds must be numbers (got {parts[0]!r}, {parts[1]!r})") from None
+    if flag == "int":
+        if not (math.isfinite(lower) and math.isfinite(upper)) or lower != int(lower) or upper != int(upper):
+            raise OptimizeError(f"--var {spec!r}: an integer variable needs integer bounds")
+        lower, upper = int(lower), int(upper)
+    names = tuple(p.strip() for p in paths.split(","))
+    return DesignVariable(names if len(names) > 1 else names[0], lower, upper, integer=flag == "int", log=flag == "log")
+
+
+def _parse_set(spec: str) -> tuple[str, object]:
+    path, sep, text = spec.partition("=")
+    if not sep or not path.strip():
+        _fail(f"--set {spec!r}: expected PATH=VALUE, e.g. bearings[1].gap=0.0005")
+    try:
+        value = json.loads(text)
+    except ValueError:
+        value = text
+    return path.strip(), value
+
+
+def _load_design(path: Optional[Path], embedded: str):
+    from flexshaft.design import EMBEDDED_DESIGNS, DesignError, embedded_design, load_design
+
+    try:
+        if path is None:
+            return embedded_design(embedded)
+        if not path.exists() and str(path) in EMBEDDED_DESIGNS:
+            return embedded_design(str(path))
+        return load_design(path)
+    except DesignError as exc:
+        _fail(f"invalid design {path if path is not None else f'(embedded {embedded})'}:\n{exc}")
+
+
+def _base_label(path: Optional[Path]) -> str:
+    if path is None:
+        return "base (Table 3.1 baseline)"
+    return f"base ({path.stem if path.suffix == '.toml' else path.name})"
+
+
+def optimize(
+    design: Optional[Path] = typer.Argument(None, help="Base design file (TOML). Default: the embedded Table 3.1 "
+                                            "baseline (`flexshaft baseline`).", show_default=False),
+    budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
+    out: Path = typer.Option(Path("flexshaft-optimize"), "--out", "-o",
+                             help="Run folder: every evaluation is kept there; run again to resume or extend."),
+    jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
+    dask: Optional[str] = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
+    var: Optional[list[str]] = typer.Option(
+        None, "--var", help="Variable PATH[,PATH...]=LOWER:UPPER[:int|:log] in the design file's units (SI, "
+        "ply angles in degrees); layup.NAME fills {NAME} of --layup. Default: ply angles (a/-a/b/-b)s, wall "
+        "thickness, shared K_p and K_d of the active bearings, their stations."),
+    layup: Optional[str] = typer.Option(None, "--layup", help="Layup template, e.g. '({a}/{-a}/0_{n})s'."),
+    ply_thickness_mm: Optional[float] = typer.Option(None, "--ply-thickness-mm",
+                                                     help="Ply thickness in mm: the wall thickness is plies x this."),
+    objective: Optional[list[str]] = typer.Option(
+        None, "--objective", help="shaft_mass, safety_factor, buckling_safety_factor, actuator_force, actuator_orbit, "
+        "spinup_deflection, max_temperature, min_log_decrement. Default: shaft_mass and safety_factor."),
+    ignore_check: Optional[list[str]] = typer.Option(None, "--ignore-check",
+                                                     help="Verdict check not used as a constraint (default: all)."),
+    set_value: Optional[list[str]] = typer.Option(None, "--set", help="Fixed override PATH=VALUE on every candidate."),
+    fidelity: str = typer.Option("verdict", "--fidelity", help="verdict (the run's resolution) or screening."),
+    pop_size: Optional[int] = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
+    seed: int = typer.Option(1, "--seed", help="Seed of the search."),
+    reference: Optional[list[str]] = typer.Option(None, "--reference",
+                                                  help="Design marked on the figure: embedded name or file."),
+    designs: int = typer.Option(8, "--designs", min=1, help="Pareto designs written as design files (at most)."),
+    verify: bool = typer.Option(True, "--verify/--no-verify", help="Re-verify the written designs with the full run."),
+) -> None:
+    """Search the designs that pass every requirement for the best trade-off of the objectives
+    (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
+    from flexshaft.studies.optimize_evaluate import CHECK_KEYS
+    from flexshaft.studies.optimize_problem import DesignProblem, OptimizeError, default_variables
+    from flexshaft.sweep import SweepError
+
+    base = _load_design(design, "baseline")
+    refs = {}
+    for item in reference or []:
+        refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)
+    for key in ignore_check or []:
+        if key not in CHECK_KEYS:
+            _fail(f"--ignore-check: unknown check {key!r} (allowed: {', '.join(CHECK_KEYS)})")
+    if ply_thickness_mm is not None and not (math.isfinite(ply_thickness_mm) and ply_thickness_mm > 0):
+        _fail(f"--ply-thickness-mm: must be a positive thickness (got {ply_thickness_mm})")
+    try:
+        if var:
+            variables, template = tuple(parse_variable(s) for s in var), layup
+        else:
+            variables, template = default_variables(base)
+            template = layup or template
+        problem = DesignProblem(
+            variables, base=base, objectives=tuple(objective or ("shaft_mass", "safety_factor")),
+            constraints=tuple(k for k in CHECK_KEYS if k not in (ignore_check or [])), layup=template,
+            ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
+            fixed=dict(_parse_set(s) for s in set_value or []), fidelity=fidelity,
+            name=f"flexshaft optimize: {base.name}")
+        from flexshaft.studies.optimize import optimize as run_optimization
+
+        result = run_optimization(problem, budget, out, pop_size=pop_size, seed=seed, jobs=jobs, client=dask,
+                                  references=refs, base_label=_base_label(design), progress=typer.echo)
+    except (OptimizeError, SweepError) as exc:
+        _fail(str(exc))
+    _report(result, out, designs, verify, jobs, dask)
+
+
+def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: Optional[str]) -> None:
+    from flexshaft.plot.driveline import save_figure
+
+    paths = result.save(out)
+    figure = save_figure(result.plot(), out, "pareto")
+    typer.echo(f"{result!r}; {result.n_computed} computed in {result.elapsed:.0f} s")
+    typer.echo(f"written: {paths['evaluations']}, {paths['pareto']}, {figure['png']}")
+    if result.pareto.sizes.get("design", 0) == 0:
+        typer.echo("no evaluated design passes every requirement: raise the budget, widen the bounds or "
+                   "see the margins in evaluations.nc", err=True)
+        raise typer.Exit(code=NO_DESIGN_PASSES)
+    files = result.write_designs(out / "designs", max_designs)
+    failed = []
+    if verify:
+        ds = result.verify(files, jobs=jobs, client=dask)
+        failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
+    result.save(out)
+    _print_table(result)
+    typer.echo(f"design files: {out / 'designs'} ({len(files)})")
+    if failed:
+        typer.echo(f"re-verification with the full run FAILS for: {', '.join(failed)}", err=True)
+        raise typer.Exit(code=NO_DESIGN_PASSES)
+
+
+def _print_table(result) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    pareto = result.pareto
+    table = Table(title="Pareto designs and references (search verdict; 'run': re-verified by the full run)")
+    columns = ["design", "mass kg", "Tsai-Wu", "buckling", "force N", "orbit mm", "verdict"]
+    for c in columns:
+        table.add_column(c, justify="left" if c in ("design", "verdict") else "right", no_wrap=True)
+
+    def row(label, outputs, verdict):
+        table.add_row(label, f"{outputs['shaft_mass']:.3f}", f"{outputs['safety_factor']:.2f}",
+                      f"{outputs['buckling_safety_factor']:.2f}", f"{outputs['actuator_force']:.0f}",
+                      f"{outputs['spinup_deflection'] * 1e3:.3f}", verdict)
+
+    if "shaft_mass" not in pareto:  # a custom evaluation: print the objectives only
+        Console().print(pareto[[o.output for o in result.problem.objectives]].to_dataframe())
+        return
+    for label, outputs in result.references.items():
+        row(label, outputs, "PASS" if outputs["feasible"] else "FAIL")
+    for k in range(pareto.sizes["design"]):
+        name = str(pareto["file"].values[k]) if "file" in pareto else ""
+        if not name:
+            continue
+        verified = {1.0: "PASS run", 0.0: "FAIL run"}.get(
+            float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS")
+        name = name.removesuffix(".toml")
+        row(name, {n: float(pareto[n].values[k]) for n in ("shaft_mass", "safety_factor", "buckling_safety_factor",
+                                                            "actuator_force", "spinup_deflection")}, verified)
+    Console().print(table)
+
+
+def register_optimize(app: typer.Typer) -> None:
+    """Add ``flexshaft optimize`` to the CLI ``app``."""
+    app.command("optimize")(optimize)

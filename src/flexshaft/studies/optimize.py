@@ -1,0 +1,523 @@
+"""Multi-objective design optimization of the driveline with the verdict as constraints.
+
+>>> from flexshaft.design import baseline_design
+>>> from flexshaft.studies.optimize import optimize
+>>> from flexshaft.studies.optimize_problem import DesignProblem, default_variables
+>>> variables, layup = default_variables(baseline_design())
+>>> problem = DesignProblem(variables, layup=layup)       # mass and Tsai-Wu safety factor
+>>> result = optimize(problem, budget=400, run_dir="opt", jobs=2)   # doctest: +SKIP
+>>> result.pareto                                          # doctest: +SKIP
+>>> files = result.write_designs()                         # doctest: +SKIP
+>>> result.verify(files)                                   # doctest: +SKIP
+
+The search is NSGA-II (Deb et al. 2002) from pymoo (the optional extra ``flexshaft[optimize]``)
+driven ask-and-tell: pymoo proposes a generation, :func:`~flexshaft.studies.optimize_store.
+evaluate_candidates` evaluates it on the sweep engine (local processes or Dask), every
+evaluation is stored in the run folder, and pymoo is told the objectives and constraints
+(:func:`~flexshaft.studies.optimize_problem.objectives_and_constraints`: constrained domination,
+feasible designs first). The first generation is a Latin hypercube from ``seed`` with the base
+design's own values as its first member when they lie within the bounds; integer variables are
+rounded by a repair operator. Given the seed, the search is deterministic, so a run started again
+on its folder asks for the same candidates and reads them back instead of evaluating them: an
+interrupted run resumes, and a larger budget continues a finished one.
+
+``method="random"`` evaluates ``budget`` uniformly random candidates through the same engine
+(the benchmark's reference).
+"""
+
+from __future__ import annotations
+
+import json
+import time
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from flexshaft.studies.optimize_problem import DesignProblem, OptimizeError, objectives_and_constraints
+from flexshaft.studies.optimize_store import EVALUATIONS, EvaluationCache, evaluate_candidates
+
+__all__ = ["OptimizationResult", "hypervolume", "optimize", "pareto_mask"]
+
+MANIFEST = "problem.json"
+
+
+# ------------------------------------------------------------------------------------------------
+# Pareto set and hypervolume
+
+
+def pareto_mask(F: np.ndarray) -> np.ndarray:
+    """True for the rows of ``F`` (n, m; minimised) that no other row dominates (duplicates
+    of a non-dominated row are all kept)."""
+    F = np.asarray(F, dtype=float)
+    n = F.shape[0]
+    keep = np.ones(n, dtype=bool)
+    for i in range(n):
+        dominates_i = np.all(F <= F[i], axis=1) & np.any(F < F[i], axis=1)
+        keep[i] = not dominates_i.any()
+    return keep
+
+
+def hypervolume(F: np.ndarray, reference: Sequence[float]) -> float:
+    """Hypervolume dominated by the rows of ``F`` (minimised) up to the ``reference`` point.
+
+    Exact sweep for two objectives; pymoo's indicator for more.
+    """
+    F = np.asarray(F, dtype=float).reshape(-1, len(reference))
+    ref = np.asarray(reference, dtype=float)
+    F = F[np.all(F < ref, axis=1)]
+    if F.size == 0:
+        return 0.0
+    if F.shape[1] == 1:
+        return float(ref[0] - F[:, 0].min())
+    if F.shape[1] == 2:
+        F = F[pareto_mask(F)]
+        F = F[np.argsort(F[:, 0])]
+        widths = np.diff(np.append(F[:, 0], ref[0]))
+        return float(np.sum(widths * (ref[1] - F[:, 1])))
+    from pymoo.indicators.hv import HV
+
+    return float(HV(ref_point=ref)(F))
+
+
+# ------------------------------------------------------------------------------------------------
+# The result
+
+
+@dataclass
+class OptimizationResult:
+    """What :func:`optimize` found.
+
+    Attributes
+    ----------
+    problem : DesignProblem
+    evaluations : xarray.Dataset
+        Every candidate evaluated (dimension ``evaluation``): variable values, outputs,
+        ``feasible``, ``constraint_violation``, ``generation``, ``overrides`` (JSON), ``error``.
+    pareto : xarray.Dataset
+        The feasible non-dominated candidates (dimension ``design``, sorted by the first
+        objective), the same variables, and ``evaluation`` (index into ``evaluations``).
+    references : dict
+        Label -> outputs of the reference designs (the base first), evaluated the same way.
+    run_dir : Path or None
+    n_computed : int
+        Evaluations computed by this call (the rest came from the run folder).
+    elapsed : float
+        Wall time of this call [s].
+    """
+
+    problem: DesignProblem
+    evaluations: Any
+    pareto: Any
+    references: dict = field(default_factory=dict)
+    run_dir: Path | None = None
+    n_computed: int = 0
+    elapsed: float = 0.0
+
+    @property
+    def objective_names(self) -> tuple[str, ...]:
+        return tuple(o.output for o in self.problem.objectives)
+
+    def __repr__(self) -> str:
+        n = self.evaluations.sizes.get("evaluation", 0)
+        feasible = int(self.evaluations["feasible"].sum()) if n else 0
+        return (f"OptimizationResult({n} evaluations, {feasible} feasible, {self.pareto.sizes.get('design', 0)} "
+                f"on the Pareto front; objectives {', '.join(self.objective_names)})")
+
+    def minimised(self, ds=None) -> np.ndarray:
+        """Objectives of ``ds`` (default: the Pareto set) as minimised values (n, m)."""
+        ds = self.pareto if ds is None else ds
+        return np.column_stack([np.asarray(ds[o.output].values, dtype=float) * (-1.0 if o.sense == "max" else 1.0)
+                                for o in self.problem.objectives]) if ds.sizes.get(_dim(ds), 0) else np.zeros((0, len(self.problem.objectives)))
+
+    def hypervolume(self, reference: Sequence[float]) -> float:
+        """Hypervolume of the Pareto front in minimised objectives (maximised ones negated)."""
+        return hypervolume(self.minimised(), reference)
+
+    def plot(self, ax=None, x: str | None = None, y: str | None = None):
+        """Pareto-front figure of two objectives (default the first two), every evaluation shown,
+        the base and reference designs marked. Returns the matplotlib axes."""
+        from flexshaft.plot.optimize import pareto_front
+
+        names = self.objective_names
+        x = x or names[0]
+        y = y or (names[1] if len(names) > 1 else names[0])
+        objectives = {o.output: o for o in self.problem.objectives}
+        ev, pa = self.evaluations, self.pareto
+
+        def label(name: str) -> str:
+            o = objectives.get(name)
+            if o is not None and o.label:
+                return o.label
+            units = ev[name].attrs.get("units", "") if name in ev else ""
+            return f"{name} [{units}]" if units else name
+
+        refs = {k: (v.get(x, np.nan), v.get(y, np.nan), bool(v.get("feasible", False))) for k, v in self.references.items()}
+        sense = (objectives[x].sense if x in objectives else "min", objectives[y].sense if y in objectives else "min")
+        return pareto_front(
+            np.asarray(ev[x].values, float), np.asarray(ev[y].values, float), np.asarray(ev["feasible"].values, bool),
+            np.asarray(pa[x].values, float), np.asarray(pa[y].values, float), references=refs,
+            x_label=label(x), y_label=label(y), senses=sense, title=self.problem.name, ax=ax)
+
+    def write_designs(self, folder: str | Path | None = None, max_designs: int = 8) -> list[Path]:
+        """Write Pareto designs as design files ``pareto_NN.toml`` (all of them, or
+        ``max_designs`` spread evenly along the front, its ends included).
+
+        Returns the paths, in Pareto order; the Pareto dataset gets their names (``file``).
+        """
+        from flexshaft.design import with_overrides
+        from flexshaft.studies.optimize_files import write_design_file
+
+        if folder is None:
+            if self.run_dir is None:
+                raise OptimizeError("write_designs needs a folder (the optimization had no run folder)")
+            folder = self.run_dir / "designs"
+        folder = Path(folder)
+        folder.mkdir(parents=True, exist_ok=True)
+        n = self.pareto.sizes.get("design", 0)
+        picks = sorted(set(np.round(np.linspace(0, n - 1, min(n, max(int(max_designs), 1)))).astype(int))) if n else []
+        paths = []
+        files = [""] * n
+        for rank, k in enumerate(picks, start=1):
+            overrides = json.loads(str(self.pareto["overrides"].values[k]))
+            summary = ", ".join(f"{o.output} {float(self.pareto[o.output].values[k]):.6g}" for o in self.problem.objectives)
+            name = f"flexshaft optimize: Pareto design {rank} of {len(picks)} ({summary}); from: {self.problem.base.name}"
+            design = with_overrides(self.problem.base, {**overrides, "name": name})
+            comments = [
+                f"flexshaft design file written by `flexshaft optimize` ({self.problem.name}).",
+                f"Pareto design {rank} of {len(picks)} written ({n} on the front): {summary}.",
+                f"Base design: {self.problem.base.name}",
+                "Changed from the base (design paths, SI units, ply angles in degrees):",
+                *[f"  {k} = {json.dumps(v)}" for k, v in overrides.items()],
+                f"Evaluated at the {self.problem.fidelity!r} fidelity; re-verify with `flexshaft run --strict`.",
+                "",
+            ]
+            path = write_design_file(design, folder / f"pareto_{rank:02d}.toml", comments)
+            paths.append(path)
+            files[k] = path.name
+        self.pareto["file"] = ("design", np.array(files, dtype=str), {"long_name": "design file written"})
+        return paths
+
+    def verify(self, paths: Sequence[str | Path], *, jobs: int = 1, client: Any = None):
+        """Full ``flexshaft run`` verdict of written design files (see
+        :func:`~flexshaft.studies.optimize_files.verify_design_files`); the Pareto dataset gets
+        ``verified`` (1 pass, 0 fail, −1 not written)."""
+        from flexshaft.studies.optimize_files import verify_design_files
+
+        ds = verify_design_files(paths, jobs=jobs, client=client)
+        if "file" in self.pareto:
+            passed = {Path(p).name: float(v) for p, v in zip(ds["design_file"].values, ds["passed"].values)}
+            verified = np.array([passed.get(str(f), -1.0) for f in self.pareto["file"].values])
+            self.pareto["verified"] = ("design", verified, {"long_name": "full-run verdict: 1 pass, 0 fail, -1 not verified"})
+        return ds
+
+    def save(self, folder: str | Path | None = None) -> dict[str, Path]:
+        """Write ``evaluations.nc`` and ``pareto.nc`` (default: into the run folder)."""
+        from flexshaft.netcdf import write_netcdf
+
+        folder = Path(folder) if folder is not None else self.run_dir
+        if folder is None:
+            raise OptimizeError("save needs a folder (the optimization had no run folder)")
+        folder.mkdir(parents=True, exist_ok=True)
+        return {"evaluations": write_netcdf(self.evaluations, folder / "evaluations.nc"),
+                "pareto": write_netcdf(self.pareto, folder / "pareto.nc")}
+
+
+def _dim(ds) -> str:
+    return "design" if "design" in ds.dims else "evaluation"
+
+
+# ------------------------------------------------------------------------------------------------
+# The search
+
+
+def _import_pymoo():
+    try:
+        import pymoo  # noqa: F401
+    except ImportError as exc:
+        raise OptimizeError("the optimizer needs pymoo, an optional extra: pip install 'flexshaft[optimize]'") from exc
+    try:  # pymoo 0.6.1 prints a hint about its compiled modules
+        from pymoo.config import Config
+
+        Config.warnings["not_compiled"] = False
+        Config.show_compile_hint = False
+    except (ImportError, AttributeError, TypeError):
+        pass
+
+
+def _open_run(run_dir: Path | None, spec: dict) -> EvaluationCache:
+    if run_dir is None:
+        return EvaluationCache(None)
+    run_dir.mkdir(parents=True, exist_ok=True)
+    manifest = run_dir / MANIFEST
+    if manifest.exists():
+        try:
+            stored = json.loads(manifest.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            raise OptimizeError(f"{manifest}: unreadable ({exc}); use another run folder or delete it") from None
+        if stored != spec:
+            differ = sorted(k for k in set(stored) | set(spec) if stored.get(k) != spec.get(k))
+            raise OptimizeError(f"run folder {run_dir} belongs to another optimization (it differs in "
+                                f"{', '.join(differ)}); use another folder (a larger budget alone may reuse it)")
+    else:
+        manifest.write_text(json.dumps(spec, indent=2, sort_keys=True, default=repr) + "\n", encoding="utf-8")
+    return EvaluationCache(run_dir / EVALUATIONS)
+
+
+def _latin_hypercube(rng: np.random.Generator, n: int, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    d = lower.size
+    u = (np.argsort(rng.random((n, d)), axis=0) + rng.random((n, d))) / n
+    return lower + u * (upper - lower)
+
+
+def _round_integers(problem: DesignProblem, X: np.ndarray) -> np.ndarray:
+    X = np.array(X, dtype=float)
+    mask = problem.integer_mask
+    if mask.any():
+        X[:, mask] = np.round(X[:, mask])
+    return X
+
+
+def _initial_population(problem: DesignProblem, n: int, seed: int) -> np.ndarray:
+    lower, upper = problem.bounds
+    X = _latin_hypercube(np.random.default_rng(seed), n, lower, upper)
+    base = problem.base_values()
+    if base is not None:
+        X[0] = [v.encode(base[v.name]) for v in problem.variables]
+    return _round_integers(problem, X)
+
+
+def optimize(
+    problem: DesignProblem,
+    budget: int,
+    run_dir: str | Path | None = None,
+    *,
+    pop_size: int | None = None,
+    seed: int = 1,
+    jobs: int = 1,
+    client: Any = None,
+    method: str = "nsga2",
+    references: Mapping[str, Any] | None = None,
+    base_label: str = "base",
+    progress: Callable[[str], None] | None = None,
+) -> OptimizationResult:
+    """Search the Pareto set of ``problem`` with at most ``budget`` design evaluations.
+
+    Parameters
+    ----------
+    problem : DesignProblem
+        Variables, objectives, constraints; validated against the design schema first.
+    budget : int
+        Evaluations the search may ask for (cached ones count too: a resumed run replays them).
+    run_dir : path, optional
+        Run folder (:mod:`flexshaft.studies.optimize_store`); None keeps everything in memory.
+    pop_size : int, optional
+        NSGA-II population (default ``max(16, 4 × variables)``, at most a third of the budget).
+    seed : int
+        Seed of the initial population and of the search.
+    jobs, client
+        Local worker processes, or a Dask client / scheduler address (the sweep engine's).
+    method : {"nsga2", "random"}
+        NSGA-II, or uniform random sampling of the bounds (the benchmark's reference).
+    references : mapping, optional
+        Label -> Design evaluated too and marked on the figure (the base always is).
+    base_label : str
+        The base design's label in ``references`` and on the figure.
+    progress : callable, optional
+        Called with one line per generation.
+    """
+    if isinstance(budget, bool) or not isinstance(budget, (int, np.integer)) or budget < 1:
+        raise OptimizeError(f"budget: must be a whole number of evaluations >= 1 (got {budget!r})")
+    if method not in ("nsga2", "random"):
+        raise OptimizeError(f"method: must be 'nsga2' or 'random' (got {method!r})")
+    if isinstance(jobs, bool) or int(jobs) < 1:
+        raise OptimizeError(f"jobs: must be >= 1 (got {jobs!r})")
+    n_var = len(problem.variables)
+    if pop_size is None:
+        pop_size = int(max(4, min(max(16, 4 * n_var), budget // 3)))
+    if isinstance(pop_size, bool) or int(pop_size) < 2:
+        raise OptimizeError(f"pop_size: must be >= 2 (got {pop_size!r})")
+    pop_size = int(pop_size)
+    problem.validate()
+    if method == "nsga2":
+        _import_pymoo()
+    start = time.perf_counter()
+    run_path = Path(run_dir) if run_dir is not None else None
+    spec = {**problem.spec(), "method": method, "seed": int(seed), "pop_size": pop_size if method == "nsga2" else None}
+    cache = _open_run(run_path, spec)
+    say = progress or (lambda line: None)
+    log = _Log(problem)
+
+    def evaluate(X: np.ndarray, generation: int) -> tuple[np.ndarray, np.ndarray]:
+        values = [problem.values(x) for x in X]
+        records, computed = evaluate_candidates(problem, [problem.overrides(v) for v in values], cache, run_path,
+                                                jobs=jobs, client=client)
+        log.add(records, values, generation, computed)
+        F, G = log.last_FG
+        say(log.line(generation, time.perf_counter() - start))
+        return F, G
+
+    if method == "random":
+        lower, upper = problem.bounds
+        X = _round_integers(problem, np.random.default_rng(seed).uniform(lower, upper, (budget, n_var)))
+        evaluate(X, 0)
+    else:
+        _nsga2(problem, budget, pop_size, seed, evaluate)
+    refs = {base_label: problem.base, **dict(references or {})}
+    reference_outputs = {}
+    for label, design in refs.items():
+        ref_problem = replace(problem, base=design, fixed={})
+        records, computed = evaluate_candidates(ref_problem, [{}], cache, run_path, jobs=1, client=client)
+        log.computed += computed
+        outputs = dict(records[0]["outputs"])
+        F, G = objectives_and_constraints(ref_problem, [[outputs[n] for n in problem.output_names]], [records[0]["error"] is None])
+        outputs["feasible"] = bool(np.all(G <= 0.0))
+        reference_outputs[label] = outputs
+    evaluations = log.dataset()
+    pareto = _pareto_dataset(problem, evaluations)
+    return OptimizationResult(problem, evaluations, pareto, reference_outputs, run_path, log.computed,
+                              time.perf_counter() - start)
+
+
+def _nsga2(problem: DesignProblem, budget: int, pop_size: int, seed: int, evaluate) -> None:
+    from pymoo.algorithms.moo.nsga2 import NSGA2
+    from pymoo.core.evaluator import Evaluator
+    from pymoo.core.problem import Problem
+    from pymoo.core.repair import Repair
+    from pymoo.problems.static import StaticProblem
+
+    mask = problem.integer_mask
+
+    class RoundIntegers(Repair):
+        def _do(self, _problem, X, **kwargs):
+            X = np.array(X, dtype=float)
+            X[:, mask] = np.round(X[:, mask])
+            return X
+
+    lower, upper = problem.bounds
+    search = Problem(n_var=lower.size, n_obj=len(problem.objectives), n_ieq_constr=len(problem.constraints) + 1,
+                     xl=lower, xu=upper)
+    algorithm = NSGA2(pop_size=pop_size, sampling=_initial_population(problem, pop_size, seed),
+                      repair=RoundIntegers(), eliminate_duplicates=True)
+    with warnings.catch_warnings():  # pymoo 0.6.1 warns about its own deprecated properties
+        warnings.simplefilter("ignore", DeprecationWarning)
+        algorithm.setup(search, seed=int(seed), verbose=False)
+    done, generation = 0, 0
+    while done < budget:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            pop = algorithm.ask()
+        if pop is None or len(pop) == 0:
+            break
+        if done + len(pop) > budget:
+            pop = pop[: budget - done]
+        state = np.random.get_state()  # pymoo 0.6.1 draws from the global generator
+        F, G = evaluate(pop.get("X"), generation)
+        np.random.set_state(state)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            Evaluator().eval(StaticProblem(search, F=F, G=G), pop)
+            algorithm.tell(infills=pop)
+        done += len(pop)
+        generation += 1
+
+
+class _Log:
+    """Every evaluated candidate in order, with its generation."""
+
+    def __init__(self, problem: DesignProblem) -> None:
+        self.problem = problem
+        self.records: list[dict] = []
+        self.values: list[dict] = []
+        self.generations: list[int] = []
+        self.seen: set[str] = set()
+        self.computed = 0
+        self.last_FG = (np.zeros((0, 0)), np.zeros((0, 0)))
+        self.best: dict[str, float] = {}
+
+    def add(self, records, values, generation: int, computed: int) -> None:
+        names = self.problem.output_names
+        outputs = np.array([[r["outputs"][n] for n in names] for r in records], dtype=float).reshape(len(records), len(names))
+        F, G = objectives_and_constraints(self.problem, outputs, [r["error"] is None for r in records])
+        self.last_FG = (F, G)
+        self.computed += computed
+        for r, v, f, g in zip(records, values, F, G):
+            if r["key"] in self.seen:
+                continue
+            self.seen.add(r["key"])
+            self.records.append(r)
+            self.values.append(v)
+            self.generations.append(generation)
+            if np.all(g <= 0):
+                for o, fi in zip(self.problem.objectives, f):
+                    best = self.best.get(o.output)
+                    self.best[o.output] = fi if best is None else min(best, fi)
+
+    def line(self, generation: int, elapsed: float) -> str:
+        n_feasible = sum(1 for r in self.records if _feasible(self.problem, r))
+        best = ", ".join(f"{'max' if o.sense == 'max' else 'min'} {o.output} "
+                         f"{(-1 if o.sense == 'max' else 1) * self.best[o.output]:.5g}"
+                         for o in self.problem.objectives if o.output in self.best)
+        return (f"generation {generation}: {len(self.records)} designs evaluated ({self.computed} computed), "
+                f"{n_feasible} feasible{'; ' + best if best else ''}; {elapsed:.0f} s")
+
+    def dataset(self):
+        import xarray as xr
+
+        problem = self.problem
+        names = problem.output_names
+        n = len(self.records)
+        outputs = np.array([[r["outputs"][k] for k in names] for r in self.records], dtype=float).reshape(n, len(names))
+        valid = np.array([r["error"] is None for r in self.records], dtype=bool)
+        F, G = objectives_and_constraints(problem, outputs, valid)
+        violation = np.clip(G, 0.0, None).sum(axis=1) if n else np.zeros(0)
+        data = {}
+        for v in problem.variables:
+            attrs = {"units": v.units, "long_name": v.name, "design_path": ", ".join(v.paths),
+                     "lower_bound": v.lower, "upper_bound": v.upper, "scale": "log" if v.log else "linear",
+                     "integer": int(v.integer)}
+            dtype = np.int64 if v.integer else float
+            data[v.name] = ("evaluation", np.array([val[v.name] for val in self.values], dtype=dtype), attrs)
+        for i, (name, units, long_name) in enumerate(problem.outputs):
+            data[name] = ("evaluation", outputs[:, i], {"units": units, "long_name": long_name})
+        data["feasible"] = ("evaluation", (violation <= 0).astype(np.int8),
+                            {"long_name": "1: valid design, every constraint met (not evaluated counts as violated)"})
+        data["constraint_violation"] = ("evaluation", violation,
+                                        {"long_name": "sum of the constraint violations (normalised margins)"})
+        data["generation"] = ("evaluation", np.array(self.generations, dtype=np.int64), {"long_name": "generation"})
+        data["overrides"] = ("evaluation", np.array([json.dumps(r["overrides"], sort_keys=True) for r in self.records], dtype=str),
+                             {"long_name": "design overrides of the base (JSON)"})
+        data["error"] = ("evaluation", np.array([r["error"] or "" for r in self.records], dtype=str),
+                         {"long_name": "why the design is invalid (empty: valid)"})
+        from flexshaft import __version__
+
+        attrs = {"title": problem.name, "base_design": str(problem.base.name),
+                 "objectives": json.dumps([[o.output, o.sense] for o in problem.objectives]),
+                 "constraints": json.dumps(list(problem.constraints)), "layup_template": problem.layup or "",
+                 "fidelity": problem.fidelity, "flexshaft_version": __version__}
+        return xr.Dataset(data, coords={"evaluation": np.arange(n)}, attrs=attrs)
+
+
+def _feasible(problem: DesignProblem, record: dict) -> bool:
+    outputs = [[record["outputs"][n] for n in problem.output_names]]
+    _, G = objectives_and_constraints(problem, outputs, [record["error"] is None])
+    return bool(np.all(G <= 0))
+
+
+def _pareto_dataset(problem: DesignProblem, evaluations):
+    feasible = np.flatnonzero(np.asarray(evaluations["feasible"].values, dtype=bool))
+    F = np.column_stack([np.asarray(evaluations[o.output].values, float)[feasible] * (-1.0 if o.sense == "max" else 1.0)
+                         for o in problem.objectives]) if feasible.size else np.zeros((0, len(problem.objectives)))
+    members = feasible[pareto_mask(F)] if feasible.size else feasible
+    first = problem.objectives[0]
+    order = np.argsort(np.asarray(evaluations[first.output].values, float)[members] * (-1.0 if first.sense == "max" else 1.0),
+                       kind="stable")
+    members = members[order]
+    pareto = evaluations.isel(evaluation=members).rename({"evaluation": "design"})
+    pareto = pareto.assign_coords(design=np.arange(members.size))
+    pareto["evaluation"] = ("design", members.astype(np.int64), {"long_name": "index in the evaluations"})
+    pareto.attrs["title"] = f"{problem.name}: Pareto set"
+    return pareto

@@ -1,0 +1,555 @@
+"""What the optimizer searches: design variables with bounds, objectives, constraints.
+
+A :class:`DesignVariable` names one or more design-file paths (``"shaft.wall_thickness"``,
+``"bearings[1].kp"``; several paths share one value, e.g. the gain of both active bearings) or a
+placeholder of the problem's **layup template** (``"layup.a"`` fills ``{a}`` and ``{-a}`` in
+``"({a}/{-a}/{b}/{-b})s"``). Values are in the design file's units: SI, ply angles in degrees.
+``integer=True`` rounds the value (ply counts: a placeholder used as a repeat count, e.g.
+``"(55/-55/0_{n})s"``; with ``ply_thickness`` the wall thickness then follows the ply count);
+``log=True`` searches the logarithm (gains spanning decades).
+
+Objectives are outputs of the evaluation with a sense: for the driveline
+(:data:`DESIGN_OBJECTIVES`) ``shaft_mass`` is minimised and ``safety_factor`` (the minimum
+Tsai-Wu safety factor) maximised, and so on. Constraints are outputs that must be ``>= 0``: the
+verdict checks' normalised margins (:func:`~flexshaft.studies.optimize_evaluate.normalised_margin`).
+
+A check that is **not evaluated** (its margin is NaN) is a violated constraint, never a
+satisfied one: it counts as a violation of :data:`NOT_EVALUATED_VIOLATION` (the margin of a
+design that fails by its whole limit). A requirement the design never evaluates (e.g. no
+``max_spinup_deflection``) must be left out of ``constraints`` explicitly. A design the schema
+refuses (a bearing moved past its neighbour) or whose evaluation fails is infeasible through one
+more constraint, ``valid``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import re
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import numpy as np
+
+from flexshaft.studies.optimize_evaluate import CHECK_KEYS, METRICS, design_outputs, metric_outputs
+
+__all__ = [
+    "DESIGN_OBJECTIVES",
+    "DesignProblem",
+    "DesignVariable",
+    "LAYUP_PREFIX",
+    "NOT_EVALUATED_VIOLATION",
+    "Objective",
+    "OptimizeError",
+    "default_variables",
+    "objectives_and_constraints",
+]
+
+#: Constraint violation of a check that was not evaluated (a failure by the whole limit).
+NOT_EVALUATED_VIOLATION = 1.0
+#: Prefix of a variable that fills a placeholder of the layup template.
+LAYUP_PREFIX = "layup."
+#: Objective value given to a design without a result (never compared: it is infeasible).
+_NO_RESULT = 1e30
+_PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
+
+
+class OptimizeError(ValueError):
+    """An optimization that cannot run: bad variable, objective, constraint or run folder."""
+
+
+def _name_of(path: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_]+", "_", path).strip("_")
+
+
+@dataclass(frozen=True)
+class DesignVariable:
+    """One search variable.
+
+    Parameters
+    ----------
+    path : str or sequence of str
+        Design path(s) set to the value, or ``"layup.<placeholder>"``.
+    lower, upper : float
+        Bounds, in the design file's unit of the path (SI; degrees for ply angles).
+    integer : bool
+        Round to integers (bounds must be integers).
+    log : bool
+        Search log10 of the value (bounds must be positive).
+    name : str, optional
+        Name in the results (default: the first path with non-identifier characters as ``_``).
+    units : str
+        Unit of the value for the results' attributes.
+    significant_digits : int or None
+        Values are rounded to this many significant digits (clean design files, and candidates
+        that differ below it are one design); None: exact.
+    """
+
+    path: str | tuple[str, ...]
+    lower: float
+    upper: float
+    integer: bool = False
+    log: bool = False
+    name: str | None = None
+    units: str = ""
+    significant_digits: int | None = 4
+
+    def __post_init__(self) -> None:
+        paths = (self.path,) if isinstance(self.path, str) else tuple(self.path)
+        if not paths or not all(isinstance(p, str) and p.strip() for p in paths):
+            raise OptimizeError(f"variable path: give one or more design paths (got {self.path!r})")
+        paths = tuple(p.strip() for p in paths)
+        object.__setattr__(self, "path", paths if len(paths) > 1 else paths[0])
+        where = f"variable {paths[0]!r}"
+        for label, value in (("lower", self.lower), ("upper", self.upper)):
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+                raise OptimizeError(f"{where}: {label} bound must be a finite number (got {value!r})")
+        if not self.lower < self.upper:
+            raise OptimizeError(f"{where}: lower bound {self.lower!r} must be less than upper bound {self.upper!r}")
+        if self.log and self.lower <= 0:
+            raise OptimizeError(f"{where}: a log-scale variable needs a positive lower bound (got {self.lower!r})")
+        if self.integer and (self.lower != int(self.lower) or self.upper != int(self.upper)):
+            raise OptimizeError(f"{where}: an integer variable needs integer bounds (got {self.lower!r}, {self.upper!r})")
+        if self.integer and self.log:
+            raise OptimizeError(f"{where}: a variable is either integer or log-scale, not both")
+        if self.significant_digits is not None and not (isinstance(self.significant_digits, int)
+                                                        and 1 <= self.significant_digits <= 17):
+            raise OptimizeError(f"{where}: significant_digits must be an integer from 1 to 17 or None "
+                                f"(got {self.significant_digits!r})")
+        if any(p.startswith(LAYUP_PREFIX) for p in paths) and len(paths) > 1:
+            raise OptimizeError(f"{where}: a layup placeholder cannot share a variable with other paths")
+        name = self.name if self.name is not None else _name_of(paths[0])
+        if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name or ""):
+            raise OptimizeError(f"{where}: name must be an identifier (letters, digits, _), got {name!r}")
+        object.__setattr__(self, "name", name)
+
+    @property
+    def paths(self) -> tuple[str, ...]:
+        return (self.path,) if isinstance(self.path, str) else tuple(self.path)
+
+    @property
+    def placeholder(self) -> str | None:
+        """The layup placeholder this variable fills, or None."""
+        p = self.paths[0]
+        return p[len(LAYUP_PREFIX):] if p.startswith(LAYUP_PREFIX) else None
+
+    @property
+    def search_bounds(self) -> tuple[float, float]:
+        """Bounds in the search space (log10 for log-scale variables)."""
+        if self.log:
+            return math.log10(self.lower), math.log10(self.upper)
+        return float(self.lower), float(self.upper)
+
+    def decode(self, x: float) -> float | int:
+        """The value of search coordinate ``x`` (clipped to the bounds, rounded if integer)."""
+        value = 10.0 ** float(x) if self.log else float(x)
+        value = min(max(value, float(self.lower)), float(self.upper))
+        if self.integer:
+            return int(round(value))
+        if self.significant_digits is not None and value != 0.0:
+            value = float(f"{value:.{self.significant_digits}g}")
+            value = min(max(value, float(self.lower)), float(self.upper))
+        return value
+
+    def encode(self, value: float) -> float:
+        """The search coordinate of ``value``."""
+        return math.log10(value) if self.log else float(value)
+
+    def spec(self) -> dict:
+        return {"path": list(self.paths), "lower": self.lower, "upper": self.upper, "integer": self.integer,
+                "log": self.log, "name": self.name, "units": self.units, "significant_digits": self.significant_digits}
+
+
+@dataclass(frozen=True)
+class Objective:
+    """An output to minimise (``sense="min"``) or maximise (``"max"``), with a label for figures."""
+
+    output: str
+    sense: Literal["min", "max"] = "min"
+    label: str = ""
+
+    def __post_init__(self) -> None:
+        if self.sense not in ("min", "max"):
+            raise OptimizeError(f"objective {self.output!r}: sense must be 'min' or 'max' (got {self.sense!r})")
+
+
+#: The driveline's objectives by name (outputs of :func:`~flexshaft.studies.optimize_evaluate.design_metrics`).
+DESIGN_OBJECTIVES = {
+    "shaft_mass": Objective("shaft_mass", "min", "shaft mass [kg]"),
+    "safety_factor": Objective("safety_factor", "max", "minimum Tsai-Wu safety factor [-]"),
+    "buckling_safety_factor": Objective("buckling_safety_factor", "max", "torsional-buckling safety factor [-]"),
+    "actuator_force": Objective("actuator_force", "min", "peak actuator force [N]"),
+    "actuator_orbit": Objective("actuator_orbit", "min", "peak actuator excursion [m]"),
+    "spinup_deflection": Objective("spinup_deflection", "min", "peak spin-up shaft orbit [m]"),
+    "max_temperature": Objective("max_temperature", "min", "maximum shaft temperature [K]"),
+    "min_log_decrement": Objective("min_log_decrement", "max", "smallest whirl log decrement [-]"),
+}
+
+
+def _qualname(func: Callable) -> str:
+    return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', repr(func))}"
+
+
+def _format_angle(value: float) -> str:
+    text = f"{round(float(value), 2):g}"
+    return "0" if text == "-0" else text
+
+
+@dataclass(frozen=True)
+class DesignProblem:
+    """A design optimization: variables, objectives and constraints on a base design.
+
+    Parameters
+    ----------
+    variables : sequence of DesignVariable
+    base : Design, optional
+        The design every candidate starts from (default: the embedded Table 3.1 baseline).
+    objectives : sequence of str or Objective
+        Names of :data:`DESIGN_OBJECTIVES` or :class:`Objective` on any output.
+    constraints : sequence of str, optional
+        Outputs that must be >= 0; a verdict check key (``"tsai_wu"``) stands for its margin
+        output ``margin_<key>``. Default: every verdict check.
+    layup : str, optional
+        Layup template with ``{name}`` / ``{-name}`` placeholders filled by ``layup.<name>``
+        variables, e.g. ``"({a}/{-a}/{b}/{-b})s"`` (degrees; a placeholder after ``_`` is a ply
+        repeat count and its variable must be integer).
+    ply_thickness : float, optional
+        Cured ply thickness [m]: the wall thickness becomes plies × ply_thickness.
+    fixed : mapping, optional
+        Design overrides applied to every candidate.
+    fidelity : {"verdict", "screening"}
+        Resolution of the evaluation (:data:`~flexshaft.studies.optimize_evaluate.FIDELITIES`).
+    evaluate : callable, optional
+        Sweep output function ``evaluate(point) -> {output: float}`` (module level, for worker
+        processes); default the driveline evaluation.
+    outputs : sequence of (name, unit, long name), optional
+        What ``evaluate`` returns (default: the driveline metrics and checks).
+    name : str
+        Title of the results.
+    """
+
+    variables: tuple[DesignVariable, ...]
+    base: Any = None
+    objectives: tuple[str | Objective, ...] = ("shaft_mass", "safety_factor")
+    constraints: tuple[str, ...] | None = None
+    layup: str | None = None
+    ply_thickness: float | None = None
+    fixed: Mapping[str, Any] = field(default_factory=dict)
+    fidelity: str = "verdict"
+    evaluate: Callable = design_outputs
+    outputs: tuple[tuple[str, str, str], ...] | None = None
+    name: str = "design optimization"
+
+    def __post_init__(self) -> None:
+        from flexshaft.studies.optimize_evaluate import FIDELITIES
+
+        if self.base is None:
+            from flexshaft.design import baseline_design
+
+            object.__setattr__(self, "base", baseline_design())
+        variables = tuple(self.variables)
+        if not variables:
+            raise OptimizeError("an optimization needs at least one variable")
+        if not all(isinstance(v, DesignVariable) for v in variables):
+            raise OptimizeError("variables must be DesignVariable objects")
+        object.__setattr__(self, "variables", variables)
+        names = [v.name for v in variables]
+        if len(set(names)) != len(names):
+            raise OptimizeError(f"variable names must be unique, got {names}")
+        paths = [p for v in variables for p in v.paths]
+        if len(set(paths)) != len(paths):
+            raise OptimizeError(f"a design path may belong to one variable only, got {paths}")
+        object.__setattr__(self, "fixed", dict(self.fixed))
+        if self.fidelity not in FIDELITIES:
+            raise OptimizeError(f"fidelity: must be one of {', '.join(FIDELITIES)} (got {self.fidelity!r})")
+        outputs = tuple(tuple(o) for o in (self.outputs if self.outputs is not None else metric_outputs()))
+        object.__setattr__(self, "outputs", outputs)
+        object.__setattr__(self, "objectives", self._resolve_objectives())
+        object.__setattr__(self, "constraints", self._resolve_constraints())
+        if self.ply_thickness is not None and not (math.isfinite(self.ply_thickness) and self.ply_thickness > 0):
+            raise OptimizeError(f"ply_thickness: must be a positive thickness [m] (got {self.ply_thickness!r})")
+        self._check_layup()
+
+    # -- resolution and checks -----------------------------------------------------------------
+    @property
+    def output_names(self) -> tuple[str, ...]:
+        return tuple(o[0] for o in self.outputs)
+
+    def _resolve_objectives(self) -> tuple[Objective, ...]:
+        out = []
+        for item in self.objectives:
+            if isinstance(item, Objective):
+                objective = item
+            elif isinstance(item, str) and item in DESIGN_OBJECTIVES:
+                objective = DESIGN_OBJECTIVES[item]
+            else:
+                raise OptimizeError(f"objective: unknown name {item!r} (allowed: {', '.join(DESIGN_OBJECTIVES)}, "
+                                    "or an Objective on an output)")
+            if objective.output not in self.output_names:
+                raise OptimizeError(f"objective {objective.output!r}: not an output of the evaluation "
+                                    f"(outputs: {', '.join(self.output_names)})")
+            out.append(objective)
+        if not out:
+            raise OptimizeError("an optimization needs at least one objective")
+        if len({o.output for o in out}) != len(out):
+            raise OptimizeError(f"objectives must differ, got {[o.output for o in out]}")
+        return tuple(out)
+
+    def _resolve_constraints(self) -> tuple[str, ...]:
+        given = CHECK_KEYS if self.constraints is None and "margin_tsai_wu" in self.output_names else (self.constraints or ())
+        out = []
+        for name in given:
+            output = f"margin_{name}" if name in CHECK_KEYS else name
+            if output not in self.output_names:
+                allowed = ", ".join(k for k in CHECK_KEYS if f"margin_{k}" in self.output_names) or ", ".join(self.output_names)
+                raise OptimizeError(f"constraint: unknown check or output {name!r} (allowed: {allowed})")
+            out.append(output)
+        if len(set(out)) != len(out):
+            raise OptimizeError(f"constraints must differ, got {out}")
+        return tuple(out)
+
+    def _check_layup(self) -> None:
+        layup_vars = {v.placeholder: v for v in self.variables if v.placeholder is not None}
+        if self.layup is None:
+            if layup_vars:
+                raise OptimizeError(f"variables {sorted('layup.' + k for k in layup_vars)} need a layup template "
+                                    "(e.g. layup = \"({a}/{-a}/{b}/{-b})s\")")
+            if self.ply_thickness is not None:
+                raise OptimizeError("ply_thickness needs a layup template (the ply count comes from it)")
+            return
+        used = {m.group(2) for m in _PLACEHOLDER.finditer(self.layup)}
+        if used != set(layup_vars):
+            raise OptimizeError(f"layup template {self.layup!r}: placeholders {sorted(used)} must match the layup "
+                                f"variables {sorted(layup_vars)} (paths layup.<name>)")
+        for m in _PLACEHOLDER.finditer(self.layup):
+            if self.layup[:m.start()].endswith("_") and not layup_vars[m.group(2)].integer:
+                raise OptimizeError(f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable "
+                                    "must be integer")
+        if "shaft.layup" in self.fixed or any("shaft.layup" in v.paths for v in self.variables):
+            raise OptimizeError("give the layup either as a template or through shaft.layup, not both")
+        if self.ply_thickness is not None and ("shaft.wall_thickness" in self.fixed
+                                               or any("shaft.wall_thickness" in v.paths for v in self.variables)):
+            raise OptimizeError("with ply_thickness the wall thickness follows the ply count; do not set "
+                                "shaft.wall_thickness too")
+
+    def validate(self) -> None:
+        """Check every path and both bounds of every variable against the design schema.
+
+        Each variable is set to its lower and its upper bound with the others at the middle of
+        their range; raises :class:`OptimizeError` naming the variable and the schema's message.
+        """
+        from flexshaft.design import DesignError, with_overrides
+
+        middle = {v.name: v.decode(sum(v.search_bounds) / 2) for v in self.variables}
+        for v in self.variables:
+            for bound in (v.lower, v.upper):
+                values = {**middle, v.name: int(bound) if v.integer else float(bound)}
+                try:
+                    with_overrides(self.base, self.overrides(values))
+                except DesignError as exc:
+                    raise OptimizeError(f"variable {v.name!r} = {bound!r} (others mid-range) gives an invalid "
+                                        f"design:\n{exc}") from None
+
+    # -- candidates ----------------------------------------------------------------------------
+    @property
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper bounds of the search space (log10 for log-scale variables)."""
+        b = np.array([v.search_bounds for v in self.variables], dtype=float)
+        return b[:, 0], b[:, 1]
+
+    @property
+    def integer_mask(self) -> np.ndarray:
+        return np.array([v.integer for v in self.variables])
+
+    def values(self, x: Sequence[float]) -> dict[str, float | int]:
+        """Variable values by name of one search point."""
+        return {v.name: v.decode(xi) for v, xi in zip(self.variables, x)}
+
+    def overrides(self, values: Mapping[str, float | int]) -> dict[str, Any]:
+        """Design overrides (``fixed`` first) of a candidate's variable values."""
+        out = dict(self.fixed)
+        for v in self.variables:
+            if v.placeholder is None:
+                out.update({p: values[v.name] for p in v.paths})
+        if self.layup is not None:
+            layup = self.layup_of(values)
+            out["shaft.layup"] = layup
+            if self.ply_thickness is not None:
+                from flexshaft.design.layup import parse_layup
+
+                out["shaft.wall_thickness"] = len(parse_layup(layup)) * float(self.ply_thickness)
+        return out
+
+    def layup_of(self, values: Mapping[str, float | int]) -> str:
+        """The layup string of a candidate (placeholders filled, degrees)."""
+        by_placeholder = {v.placeholder: values[v.name] for v in self.variables if v.placeholder is not None}
+
+        def fill(m: re.Match) -> str:
+            value = by_placeholder[m.group(2)]
+            if isinstance(value, int):
+                return str(-value if m.group(1) else value)
+            return _format_angle(-value if m.group(1) else value)
+
+        return _PLACEHOLDER.sub(fill, self.layup or "")
+
+    def base_values(self) -> dict[str, float | int] | None:
+        """The base design's variable values (to seed the search), or None when a variable
+        cannot be read back from it or lies outside its bounds."""
+        data = json.loads(self.base.model_dump_json())
+        values: dict[str, float | int] = {}
+        for v in self.variables:
+            if v.placeholder is not None:
+                continue
+            found = {_read_path(data, p) for p in v.paths}
+            if len(found) != 1 or None in found:
+                return None
+            values[v.name] = found.pop()
+        if self.layup is not None:
+            from_layup = _match_layup(self.layup, self.base.shaft.layup or "")
+            if from_layup is None:
+                return None
+            for v in self.variables:
+                if v.placeholder is not None:
+                    values[v.name] = from_layup[v.placeholder]
+        for v in self.variables:
+            value = values[v.name]
+            if not isinstance(value, (int, float)) or not v.lower <= value <= v.upper:
+                return None
+            if v.integer and value != int(value):
+                return None
+            values[v.name] = int(value) if v.integer else float(value)
+        return values
+
+    # -- identity ------------------------------------------------------------------------------
+    def evaluation_spec(self) -> dict:
+        """What an evaluation's result depends on besides the design itself (keys the cache)."""
+        from flexshaft import __version__
+
+        return {"evaluate": _qualname(self.evaluate), "outputs": [list(o) for o in self.outputs],
+                "fidelity": self.fidelity, "flexshaft": __version__}
+
+    def evaluation_fingerprint(self) -> str:
+        text = json.dumps(self.evaluation_spec(), sort_keys=True, default=repr)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def spec(self) -> dict:
+        """JSON-able description of the search (what the run folder belongs to)."""
+        return {
+            "name": self.name,
+            "variables": [v.spec() for v in self.variables],
+            "objectives": [[o.output, o.sense] for o in self.objectives],
+            "constraints": list(self.constraints),
+            "layup": self.layup,
+            "ply_thickness": self.ply_thickness,
+            "fixed": {k: v for k, v in self.fixed.items()},
+            "base": json.loads(self.base.model_dump_json()),
+            "evaluation": self.evaluation_fingerprint(),
+        }
+
+
+def _read_path(data: Any, path: str) -> Any:
+    """The value at a design path (``a.b[2].c``) of a model dump, or None."""
+    for key, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
+        if index:
+            if not isinstance(data, list) or int(index) >= len(data):
+                return None
+            data = data[int(index)]
+        else:
+            if not isinstance(data, dict) or key not in data:
+                return None
+            data = data[key]
+    return data
+
+
+def _match_layup(template: str, layup: str) -> dict[str, float] | None:
+    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
+    pattern, groups, position = "", [], 0
+    for m in _PLACEHOLDER.finditer(template):
+        pattern += re.escape(template[position:m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
+        groups.append((m.group(1) == "-", m.group(2)))
+        position = m.end()
+    pattern += re.escape(template[position:])
+    found = re.fullmatch(pattern.replace(r"\ ", r"\s*"), layup.replace(" ", ""))
+    if found is None:
+        return None
+    out: dict[str, float] = {}
+    for (negated, name), text in zip(groups, found.groups()):
+        value = -float(text) if negated else float(text)
+        if name in out and not math.isclose(out[name], value, abs_tol=1e-9):
+            return None
+        out[name] = value + 0.0  # -0.0 -> 0.0
+    return out
+
+
+def objectives_and_constraints(problem: DesignProblem, outputs: np.ndarray,
+                               valid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The minimisation objectives F and constraints G (<= 0 feasible) of evaluated candidates.
+
+    Parameters
+    ----------
+    outputs : ndarray
+        (n, n_outputs) in the order of ``problem.outputs``.
+    valid : ndarray of bool
+        (n,) False for a design the schema refused.
+
+    Returns
+    -------
+    F : ndarray
+        (n, n_objectives): the objective, negated when maximised.
+    G : ndarray
+        (n, n_constraints + 1): −margin of each constraint (:data:`NOT_EVALUATED_VIOLATION`
+        where the margin is NaN, i.e. not evaluated), then 0 for a valid design with a finite
+        value of every objective and 1 otherwise.
+    """
+    outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
+    index = {name: i for i, name in enumerate(problem.output_names)}
+    F = np.column_stack([outputs[:, index[o.output]] * (-1.0 if o.sense == "max" else 1.0) for o in problem.objectives])
+    ok = np.asarray(valid, dtype=bool) & np.all(np.isfinite(F), axis=1)
+    F[~ok] = _NO_RESULT
+    columns = []
+    for name in problem.constraints:
+        margin = outputs[:, index[name]]
+        columns.append(np.where(np.isnan(margin), NOT_EVALUATED_VIOLATION, -margin))
+    columns.append(np.where(ok, 0.0, 1.0))
+    G = np.column_stack(columns)
+    G[~ok, :-1] = np.where(np.isnan(G[~ok, :-1]), NOT_EVALUATED_VIOLATION, G[~ok, :-1])
+    return F, G
+
+
+def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
+    """The default search of ``flexshaft optimize`` on a design, and its layup template.
+
+    * ply angles of a ``(a/−a/b/−b)s`` laminate: a in [30, 75]°, b in [0, 30]° (the thesis's
+      two-angle family, optimum (55/−55/0/0)s);
+    * wall thickness from 1 mm to 4 mm at the design's outer diameter;
+    * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m) and K_d (shared, 0 to
+      3000 N s/m);
+    * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
+    """
+    variables = []
+    template = None
+    if design.shaft.layup is not None:
+        template = "({a}/{-a}/{b}/{-b})s"
+        variables += [DesignVariable("layup.a", 30.0, 75.0, name="ply_angle_a", units="degree"),
+                      DesignVariable("layup.b", 0.0, 30.0, name="ply_angle_b", units="degree")]
+    variables.append(DesignVariable("shaft.wall_thickness", 0.001, 0.004, name="wall_thickness", units="m"))
+    bearings = list(design.bearings)
+    active = [i for i, b in enumerate(bearings) if b.kind == "active"]
+    if active:
+        variables.append(DesignVariable(tuple(f"bearings[{i}].kp" for i in active), 1e5, 1e7, log=True,
+                                        name="kp", units="N m-1"))
+        variables.append(DesignVariable(tuple(f"bearings[{i}].kd" for i in active), 0.0, 3000.0,
+                                        name="kd", units="N s m-1"))
+        stations = sorted(b.x for b in bearings)
+        for i in active:
+            x = bearings[i].x
+            k = stations.index(x)
+            below = stations[k - 1] + 0.3 if k > 0 else design.shaft.x_start + 0.3
+            above = stations[k + 1] - 0.3 if k + 1 < len(stations) else design.shaft.x_end - 0.3
+            lower, upper = max(x - 1.0, below), min(x + 1.0, above)
+            if lower < upper:
+                variables.append(DesignVariable(f"bearings[{i}].x", round(lower, 3), round(upper, 3),
+                                                name=_name_of(f"{bearings[i].name}_x"), units="m"))
+    return tuple(variables), template
