@@ -1,6 +1,6 @@
 """``flexshaft optimize``: multi-objective design search with the requirements verdict as constraints.
 
-Mounted in :mod:`flexshaft.cli` by :func:`register_optimize`. Exit codes: 0 when at least one
+Mounted in :mod:`flexshaft.cli`. Exit codes: 0 when at least one
 design passes every requirement (and, unless ``--no-verify``, every written design re-verifies
 with the full run), 2 for a user error (bad option, unknown path, missing extra, a run folder of
 another search), 3 when no design passes or a written design fails its re-verification.
@@ -15,6 +15,8 @@ from typing import Optional
 
 import typer
 
+from flexshaft.cli.common import fail, guarded
+
 __all__ = ["NO_DESIGN_PASSES", "optimize", "parse_variable", "register_optimize"]
 
 #: Exit code when no evaluated design passes every requirement (or one fails re-verification).
@@ -22,8 +24,7 @@ NO_DESIGN_PASSES = 3
 
 
 def _fail(message: str) -> None:
-    typer.echo(f"error: {message}", err=True)
-    raise typer.Exit(code=2)
+    fail(message)  # exit 2 through the error boundary of every command
 
 
 def parse_variable(spec: str):
@@ -81,6 +82,7 @@ def _base_label(path: Optional[Path]) -> str:
     return f"base ({path.stem if path.suffix == '.toml' else path.name})"
 
 
+@guarded
 def optimize(
     design: Optional[Path] = typer.Argument(None, help="Base design file (TOML). Default: the embedded Table 3.1 "
                                             "baseline (`flexshaft baseline`).", show_default=False),
