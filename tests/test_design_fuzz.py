@@ -415,7 +415,7 @@ SMALL_MESH = st.tuples(st.integers(2, 6), st.integers(2, 4))
 
 def _bounds(path: tuple[Any, ...]) -> list[float]:
     """The schema's bounds of the number at ``path`` (and values just inside them)."""
-    from flexshaft.design.io import _locate  # the error translator's own lookup of field metadata
+    from flexshaft.design.messages import _locate  # the error translator's own lookup of field metadata
 
     loc: list[Any] = []
     for depth, part in enumerate(path):

@@ -19,7 +19,7 @@ from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.units import celsius_to_kelvin
-from flexshaft.studies.verdict import (
+from flexshaft.studies.evidence import (
     ActuatorEvidence,
     CouplingEvidence,
     Evidence,
