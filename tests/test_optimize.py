@@ -25,7 +25,7 @@ from typer.testing import CliRunner
 from flexshaft.cli import app
 from flexshaft.design import baseline_design, embedded_design, load_design, loads_design, tuned_design, with_overrides
 from flexshaft.studies.optimize import hypervolume, optimize, pareto_mask
-from flexshaft.studies.optimize_evaluate import CHECK_KEYS, normalised_margin, verdict_run
+from flexshaft.studies.optimize_evaluate import CHECK_KEYS, applicable_checks, normalised_margin, verdict_run
 from flexshaft.studies.optimize_files import design_toml
 from flexshaft.studies.optimize_problem import (
     NOT_EVALUATED_VIOLATION,
@@ -139,7 +139,7 @@ def test_design_file_round_trip():
 
 
 def _margins(res) -> np.ndarray:
-    return np.array([normalised_margin(res.verdict.check(k), res.model.speed) for k in CHECK_KEYS])
+    return np.array([normalised_margin(c, res.model.speed) for c in res.verdict.checks])
 
 
 def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
@@ -153,7 +153,8 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
     tuned = tuned_design()
     designs = [tuned, baseline_design(),
                with_overrides(tuned, {"shaft.wall_thickness": 0.002, "shaft.layup": "(45/-45/10/-10)s",
-                                      "bearings[1].kp": 1e6, "bearings[2].kd": 1500.0})]
+                                      "bearings[1].kp": 1e6, "bearings[2].kd": 1500.0}),
+               embedded_design("current")]  # segmented aluminium: metal strength and coupling angles too
     for design in designs:
         full = run_analysis(design, studies=None)
         lean = verdict_run(design, "verdict")
@@ -162,6 +163,7 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
         assert [c.status for c in lean.verdict.checks] == [c.status for c in full.verdict.checks]
         assert [c.status for c in screen.verdict.checks] == [c.status for c in full.verdict.checks]
         np.testing.assert_allclose(_margins(screen), _margins(full), atol=0.05)
+        assert applicable_checks(design) == tuple(c.key for c in full.verdict.checks)
 
 
 # ------------------------------------------------------------------------------------------------
@@ -196,6 +198,20 @@ def test_nsga2_converges_to_the_known_zdt1_front(tmp_path):
     # margin_probe is not evaluated (NaN) above u3 = 0.9: such designs are never feasible
     assert int((ev["kd_2"] > 1800).sum()) > 0
     assert int(((ev["kd_2"] > 1800) & (ev["feasible"] == 1)).sum()) == 0
+
+
+def test_a_larger_budget_extends_a_run_with_the_default_population(tmp_path):
+    """The default population depends on the budget; a second call with a larger budget on the
+    same folder keeps the stored one (resume, not 'another optimization'), and a negative seed
+    is refused before anything is written."""
+    problem = zdt1_problem()
+    short = optimize(problem, 12, tmp_path / "run", seed=2)
+    longer = optimize(problem, 30, tmp_path / "run", seed=2)
+    assert longer.evaluations.sizes["evaluation"] >= short.evaluations.sizes["evaluation"]
+    assert json.loads((tmp_path / "run" / "problem.json").read_text())["pop_size"] == 4  # budget 12 // 3
+    with pytest.raises(OptimizeError, match="seed: must be a whole number >= 0"):
+        optimize(problem, 12, tmp_path / "other", seed=-1)
+    assert not (tmp_path / "other").exists()
 
 
 FINISHED: list[int] = []

@@ -172,7 +172,8 @@ class DofMap:
         return e, float(np.clip((x - xs[e]) / length, 0.0, 1.0)), float(length)
 
     def node_at(self, component: Component, x: float) -> int:
-        """Index of the node nearest to station ``x`` [m].
+        """Index of the node nearest to station ``x`` [m]; at a coupling (two nodes at one
+        station) the forward flange's node for x at or before the station, the aft one after it.
 
         Raises
         ------
@@ -188,7 +189,10 @@ class DofMap:
         tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
         if x < xs[0] - tol or x > xs[-1] + tol:
             raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
-        return int(np.argmin(np.abs(xs - x)))
+        j = int(np.argmin(np.abs(xs - x)))
+        if j + 1 < len(xs) and xs[j + 1] == xs[j] and x > xs[j]:
+            return j + 1  # a coupling's two nodes share the station: aft of it is the aft flange's node
+        return j
 
     def _stations(self, component: Component) -> np.ndarray:
         if component not in ("shaft", "boom"):

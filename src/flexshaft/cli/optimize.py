@@ -13,9 +13,19 @@ import math
 from pathlib import Path
 from typing import Optional
 
+from enum import Enum
+
 import typer
 
-from flexshaft.cli.common import fail, guarded
+from flexshaft.cli.common import fail, guarded, plain
+
+
+class Fidelity(str, Enum):
+    """Resolution of an optimizer evaluation (``flexshaft.studies.optimize_evaluate.FIDELITIES``)."""
+
+    verdict = "verdict"
+    screening = "screening"
+
 
 __all__ = ["NO_DESIGN_PASSES", "optimize", "parse_variable", "register_optimize"]
 
@@ -104,9 +114,10 @@ def optimize(
     ignore_check: Optional[list[str]] = typer.Option(None, "--ignore-check",
                                                      help="Verdict check not used as a constraint (default: all)."),
     set_value: Optional[list[str]] = typer.Option(None, "--set", help="Fixed override PATH=VALUE on every candidate."),
-    fidelity: str = typer.Option("verdict", "--fidelity", help="verdict (the run's resolution) or screening."),
+    fidelity: Fidelity = typer.Option(Fidelity.verdict, "--fidelity",
+                                      help="verdict (the run's resolution) or screening (coarser, for ranking)."),
     pop_size: Optional[int] = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
-    seed: int = typer.Option(1, "--seed", help="Seed of the search."),
+    seed: int = typer.Option(1, "--seed", min=0, help="Seed of the search (>= 0)."),
     reference: Optional[list[str]] = typer.Option(None, "--reference",
                                                   help="Design marked on the figure: embedded name or file."),
     designs: int = typer.Option(8, "--designs", min=1, help="Pareto designs written as design files (at most)."),
@@ -114,7 +125,7 @@ def optimize(
 ) -> None:
     """Search the designs that pass every requirement for the best trade-off of the objectives
     (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
-    from flexshaft.studies.optimize_evaluate import CHECK_KEYS
+    from flexshaft.studies.optimize_evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.studies.optimize_problem import DesignProblem, OptimizeError, default_variables
     from flexshaft.sweep import SweepError
 
@@ -135,14 +146,15 @@ def optimize(
             template = layup or template
         problem = DesignProblem(
             variables, base=base, objectives=tuple(objective or ("shaft_mass", "safety_factor")),
-            constraints=tuple(k for k in CHECK_KEYS if k not in (ignore_check or [])), layup=template,
+            constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])), layup=template,
             ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
-            fixed=dict(_parse_set(s) for s in set_value or []), fidelity=fidelity,
+            fixed=dict(_parse_set(s) for s in set_value or []), fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}")
         from flexshaft.studies.optimize import optimize as run_optimization
 
         result = run_optimization(problem, budget, out, pop_size=pop_size, seed=seed, jobs=jobs, client=dask,
-                                  references=refs, base_label=_base_label(design), progress=typer.echo)
+                                  references=refs, base_label=_base_label(design),
+                                  progress=lambda line: typer.echo(plain(line), err=True))  # stdout: results
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
     _report(result, out, designs, verify, jobs, dask)
@@ -175,15 +187,16 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
 def _print_table(result) -> None:
     from rich.console import Console
     from rich.table import Table
+    from rich.text import Text
 
     pareto = result.pareto
     table = Table(title="Pareto designs and references (search verdict; 'run': re-verified by the full run)")
-    columns = ["design", "mass kg", "Tsai-Wu", "buckling", "force N", "orbit mm", "verdict"]
+    columns = ["design", "mass kg", "strength SF", "buckling", "force N", "orbit mm", "verdict"]
     for c in columns:
         table.add_column(c, justify="left" if c in ("design", "verdict") else "right", no_wrap=True)
 
     def row(label, outputs, verdict):
-        table.add_row(label, f"{outputs['shaft_mass']:.3f}", f"{outputs['safety_factor']:.2f}",
+        table.add_row(Text(plain(label)), f"{outputs['shaft_mass']:.3f}", f"{outputs['safety_factor']:.2f}",
                       f"{outputs['buckling_safety_factor']:.2f}", f"{outputs['actuator_force']:.0f}",
                       f"{outputs['spinup_deflection'] * 1e3:.3f}", verdict)
 

@@ -223,7 +223,7 @@ class Isotropic(FrozenModel):
     E : float
         Young's modulus [Pa].
     G : float
-        Shear modulus [Pa]; at least E/3 (Poisson ratio E/(2G) − 1 at most 0.5).
+        Shear modulus [Pa]; above E/3 (Poisson ratio E/(2G) − 1 below 0.5).
     density : float
         Density [kg/m³].
     loss_factor : float
@@ -247,11 +247,11 @@ class Isotropic(FrozenModel):
     @model_validator(mode="after")
     def _check(self) -> Isotropic:
         problems = Problems()
-        if not self.poisson_ratio <= 0.5:
+        if not self.poisson_ratio < 0.5:  # the laminate and shell formulas divide by 1 - 2ν (or need ν < 0.5)
             problems.add(
                 ("G",),
-                f"gives Poisson ratio E/(2G) - 1 = {format_number(self.poisson_ratio)}, outside (-1, 0.5] "
-                f"(got {format_value(self.G)}; allowed: G >= E/3 = {format_number(self.E / 3.0)} Pa)",
+                f"gives Poisson ratio E/(2G) - 1 = {format_number(self.poisson_ratio)}, outside (-1, 0.5) "
+                f"(got {format_value(self.G)}; allowed: G > E/3 = {format_number(self.E / 3.0)} Pa)",
             )
         if self.ultimate_strength is not None:
             for name in ("yield_strength", "fatigue_strength"):

@@ -22,6 +22,7 @@ from flexshaft.plot.compare import (
     static_deflection_overlay_figure,
 )
 from flexshaft.plot.driveline import save_figure
+from flexshaft.report.driveline import json_ready
 from flexshaft.report.html import FigureRef, Section, Table, write_report
 from flexshaft.report.verdict import format_quantity, location_text
 from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
@@ -268,7 +269,7 @@ def write_compare_report(comparison, folder: str | Path, generated=None) -> Path
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / "results.json").write_text(json.dumps(comparison_json(comparison), indent=2, default=float))
+    (folder / "results.json").write_text(json.dumps(json_ready(comparison_json(comparison)), indent=2, allow_nan=False))
     comparison.save(folder / "comparison.nc")
     sections = [
         _summary_section(comparison),

@@ -22,7 +22,7 @@ import numpy as np
 from flexshaft.plot.output import FigureJob, render_figures
 from flexshaft.report.html import FigureRef, Section, Table, write_report
 
-__all__ = ["RunReportPlan", "plan_run_report", "results_json", "write_run_report"]
+__all__ = ["RunReportPlan", "json_ready", "plan_run_report", "results_json", "write_run_report"]
 
 _RPM = 60 / (2 * np.pi)
 
@@ -72,7 +72,7 @@ def results_json(res) -> dict:
     studies = _studies_json(res)
     if studies is not None:
         studies = {k: v for k, v in studies.items() if k not in ("elapsed_s", "timings_s")}
-    return _json_ready({
+    return json_ready({
         "design": res.summary["name"],
         "verdict": res.verdict.to_dict() if res.verdict is not None else None,
         "summary": res.summary,
@@ -105,20 +105,20 @@ def results_json(res) -> dict:
     })
 
 
-def _json_ready(value):
+def json_ready(value):
     """Plain JSON data of ``results_json``: numpy scalars/arrays as Python, tuples as lists,
     NaN and infinities as None (strict JSON has neither)."""
     if isinstance(value, dict):
-        return {str(k): _json_ready(v) for k, v in value.items()}
+        return {str(k): json_ready(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return [_json_ready(v) for v in value]
+        return [json_ready(v) for v in value]
     if value is None or isinstance(value, (bool, str, int)):
         return value
     if isinstance(value, float):
         return value if np.isfinite(value) else None
     if hasattr(value, "tolist"):
-        return _json_ready(value.tolist())
-    return _json_ready(float(value))
+        return json_ready(value.tolist())
+    return json_ready(float(value))
 
 
 def _modes_table(rows, caption) -> Table:
@@ -366,7 +366,7 @@ def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date |
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     plan = plan_run_report(res, folder, design_text, design_source)
-    (folder / "results.json").write_text(json.dumps(plan.data, indent=2, default=float))
+    (folder / "results.json").write_text(json.dumps(json_ready(plan.data), indent=2, allow_nan=False))
     studies_timings = getattr(res.design_studies, "timings", None) or {}
     (folder / "timings.json").write_text(json.dumps({
         "note": "wall-clock seconds of this run; they vary from run to run (results.json does not)",

@@ -177,6 +177,8 @@ class OptimizationResult:
             folder = self.run_dir / "designs"
         folder = Path(folder)
         folder.mkdir(parents=True, exist_ok=True)
+        for stale in folder.glob("pareto_*.toml"):  # an earlier, longer front's files must not linger
+            stale.unlink()
         n = self.pareto.sizes.get("design", 0)
         picks = sorted(set(np.round(np.linspace(0, n - 1, min(n, max(int(max_designs), 1)))).astype(int))) if n else []
         paths = []
@@ -267,6 +269,16 @@ def _open_run(run_dir: Path | None, spec: dict) -> EvaluationCache:
     return EvaluationCache(run_dir / EVALUATIONS)
 
 
+def _stored_pop_size(run_dir: Path) -> int | None:
+    """The population of the run already in ``run_dir`` (None if there is none or it is unreadable:
+    :func:`_open_run` then reports the folder)."""
+    try:
+        stored = json.loads((run_dir / MANIFEST).read_text(encoding="utf-8")).get("pop_size")
+    except (OSError, ValueError, AttributeError):
+        return None
+    return stored if isinstance(stored, int) and not isinstance(stored, bool) and stored >= 2 else None
+
+
 def _latin_hypercube(rng: np.random.Generator, n: int, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
     d = lower.size
     u = (np.argsort(rng.random((n, d)), axis=0) + rng.random((n, d))) / n
@@ -335,7 +347,12 @@ def optimize(
         raise OptimizeError(f"method: must be 'nsga2' or 'random' (got {method!r})")
     if isinstance(jobs, bool) or int(jobs) < 1:
         raise OptimizeError(f"jobs: must be >= 1 (got {jobs!r})")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise OptimizeError(f"seed: must be a whole number >= 0 (got {seed!r})")
     n_var = len(problem.variables)
+    if pop_size is None:
+        # a resumed or extended run keeps the population it started with (the default depends on the budget)
+        pop_size = _stored_pop_size(Path(run_dir)) if run_dir is not None and method == "nsga2" else None
     if pop_size is None:
         pop_size = int(max(4, min(max(16, 4 * n_var), budget // 3)))
     if isinstance(pop_size, bool) or int(pop_size) < 2:

@@ -41,6 +41,7 @@ __all__ = [
     "FIDELITIES",
     "Fidelity",
     "METRICS",
+    "applicable_checks",
     "check_outputs",
     "design_metrics",
     "design_outputs",
@@ -50,15 +51,18 @@ __all__ = [
 ]
 
 #: The verdict's checks, in report order (:mod:`flexshaft.studies.verdict`).
-CHECK_KEYS = ("tsai_wu", "buckling", "whirl_onset", "whirl_damping", "separation", "actuator_orbit",
-              "actuator_force", "temperature", "spinup_deflection")
-#: Status of a check as a float output: pass, fail, not evaluated.
-CHECK_STATUS_CODES = {"pass": 1.0, "fail": 0.0, "not evaluated": -1.0}
+CHECK_KEYS = ("tsai_wu", "metal_strength", "buckling", "whirl_onset", "whirl_damping", "separation", "actuator_orbit",
+              "actuator_force", "temperature", "spinup_deflection", "coupling_angle")
+#: Status of a check as a float output: pass, fail, not evaluated, and not applicable (the design
+#: has no part the check concerns: ``metal_strength`` without an isotropic segment,
+#: ``coupling_angle`` without couplings).
+CHECK_STATUS_CODES = {"pass": 1.0, "fail": 0.0, "not evaluated": -1.0, "not applicable": -2.0}
 
 #: Metrics every evaluation returns besides the checks: name -> (SI unit, description).
 METRICS = {
     "shaft_mass": ("kg", "shaft mass"),
-    "safety_factor": ("1", "minimum ply Tsai-Wu safety factor (static + imbalance at the operating speed)"),
+    "safety_factor": ("1", "minimum strength safety factor (static + imbalance at the operating speed): ply "
+                           "Tsai-Wu of a laminated shaft, the smaller of it and the metal segments' fatigue/yield"),
     "buckling_safety_factor": ("1", "torsional-buckling safety factor"),
     "actuator_force": ("N", "largest static + spin-up actuator force over the active bearings"),
     "actuator_orbit": ("m", "largest static offset + spin-up orbit over the active bearings"),
@@ -119,6 +123,8 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
         left empty; ``verdict`` set.
     """
     from flexshaft.analyses import imbalance_response, modes
+    from flexshaft.analyses.metal_strength import metal_strength
+    from flexshaft.analyses.misalignment import coupling_misalignment
     from flexshaft.analyses.response import actuator_response, worst_case_orbits
     from flexshaft.analyses.shaft_buckling import shaft_buckling
     from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
@@ -152,13 +158,20 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
                              key=lambda r: r.safety_factor)
         buckling = shaft_buckling(model, compare_classical=False).to_dict()  # the verdict reads the shear shell only
         thermal = _self_heating(design, model)
+    q_static = parts["external"] + parts["torque"]
+    metal = misalignment = None
+    if any(design.materials[seg.material].kind == "isotropic" for seg in model.segments):
+        metal = metal_strength(model, q_static, q_at_speed)
+    if model.couplings:
+        misalignment = coupling_misalignment(model, q_static, q_at_speed)
     whirl = np.linspace(0.0, 1.5 * top, fid.n_whirl_speeds)
     results = RunResults(
         model=model, summary=model_summary(model), modes_at_rest=[], modes_at_speed=[], mode_shapes=at_speed,
         campbell=None, speeds=speeds, shaft_peak=envelope.max(axis=0), shaft_envelope=envelope,
-        actuator_displacement=disp, actuator_force=force, static_displacement=parts["external"] + parts["torque"],
+        actuator_displacement=disp, actuator_force=force, static_displacement=q_static,
         strength_static=strength_static, strength_total=strength_total, imbalance_at_speed=q_at_speed,
         buckling=buckling, stability=stability(model, whirl, n_modes=10), thermal=thermal, shaft_orbits=amp,
+        metal_strength=metal, coupling_misalignment=misalignment,
     )
     results.verdict = evaluate(evidence_from_run(results), design.requirements)
     return results
@@ -197,7 +210,8 @@ def check_outputs() -> list[tuple[str, str, str]]:
     out = []
     for key in CHECK_KEYS:
         out.append((f"margin_{key}", "1", f"normalised margin of the {key} check (negative: fails; NaN: not evaluated)"))
-        out.append((f"status_{key}", "1", f"status of the {key} check: 1 pass, 0 fail, -1 not evaluated"))
+        out.append((f"status_{key}", "1",
+                    f"status of the {key} check: 1 pass, 0 fail, -1 not evaluated, -2 not applicable"))
     return out
 
 
@@ -219,13 +233,16 @@ def design_metrics(design, fidelity: str | Fidelity = "screening") -> dict[str, 
     verdict = res.verdict
     speed = float(res.model.speed)
 
-    def value(key: str) -> float:
-        c = verdict.check(key)
-        return float("nan") if c.value is None else float(c.value)
+    present = {c.key: c for c in verdict.checks}
 
+    def value(key: str) -> float:
+        c = present.get(key)
+        return float("nan") if c is None or c.value is None else float(c.value)
+
+    strength = [v for v in (value("tsai_wu"), value("metal_strength")) if np.isfinite(v)]
     out = {
         "shaft_mass": float(res.model.shaft_mass),
-        "safety_factor": value("tsai_wu"),
+        "safety_factor": min(strength) if strength else float("nan"),
         "buckling_safety_factor": value("buckling"),
         "actuator_force": value("actuator_force"),
         "actuator_orbit": value("actuator_orbit"),
@@ -234,10 +251,24 @@ def design_metrics(design, fidelity: str | Fidelity = "screening") -> dict[str, 
         "min_log_decrement": value("whirl_damping"),
     }
     for key in CHECK_KEYS:
-        c = verdict.check(key)
-        out[f"margin_{key}"] = normalised_margin(c, speed)
-        out[f"status_{key}"] = CHECK_STATUS_CODES[c.status]
+        c = present.get(key)
+        out[f"margin_{key}"] = float("nan") if c is None else normalised_margin(c, speed)
+        out[f"status_{key}"] = CHECK_STATUS_CODES["not applicable" if c is None else c.status]
     return out
+
+
+def applicable_checks(design) -> tuple[str, ...]:
+    """The verdict's checks for ``design``: every key of :data:`CHECK_KEYS` but
+    ``metal_strength`` when no shaft segment is isotropic and ``coupling_angle`` without
+    couplings (as :func:`flexshaft.studies.run.run_analysis` decides)."""
+    from flexshaft.assembly import build_model
+
+    model = build_model(design)
+    metal = any(design.materials[seg.material].kind == "isotropic" for seg in model.segments)
+    skip = {"metal_strength"} if not metal else set()
+    if not model.couplings:
+        skip.add("coupling_angle")
+    return tuple(k for k in CHECK_KEYS if k not in skip)
 
 
 def design_outputs(point) -> dict[str, float]:

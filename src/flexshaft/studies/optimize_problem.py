@@ -33,7 +33,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from flexshaft.studies.optimize_evaluate import CHECK_KEYS, METRICS, design_outputs, metric_outputs
+from flexshaft.studies.optimize_evaluate import CHECK_KEYS, METRICS, applicable_checks, design_outputs, metric_outputs
 
 __all__ = [
     "DESIGN_OBJECTIVES",
@@ -193,7 +193,8 @@ def _qualname(func: Callable) -> str:
 
 
 def _format_angle(value: float) -> str:
-    text = f"{round(float(value), 2):g}"
+    # the decoded value as is (4 significant digits by default): the layup written is the design evaluated
+    text = f"{float(value):.6g}"
     return "0" if text == "-0" else text
 
 
@@ -298,7 +299,10 @@ class DesignProblem:
         return tuple(out)
 
     def _resolve_constraints(self) -> tuple[str, ...]:
-        given = CHECK_KEYS if self.constraints is None and "margin_tsai_wu" in self.output_names else (self.constraints or ())
+        if self.constraints is None and "margin_tsai_wu" in self.output_names:
+            given = applicable_checks(self.base)  # the base design's verdict: its parts decide which checks apply
+        else:
+            given = self.constraints or ()
         out = []
         for name in given:
             output = f"margin_{name}" if name in CHECK_KEYS else name

@@ -42,6 +42,11 @@ def _canonical(overrides: Mapping[str, Any]) -> str:
     return json.dumps(dict(overrides), sort_keys=True, separators=(",", ":"), allow_nan=False)
 
 
+#: Error text of a candidate whose evaluation raised (every output NaN): infeasible in this run,
+#: evaluated again when the run is resumed.
+FAILED = "the evaluation raised an error (every output NaN); evaluated again on resume"
+
+
 def candidate_key(fingerprint: str, design_json: str) -> str:
     """Cache key of a candidate: SHA-256 of the evaluation fingerprint and its design (canonical
     JSON), so candidates that make the same design share one evaluation."""
@@ -95,6 +100,8 @@ class EvaluationCache:
             except (ValueError, KeyError, TypeError, AttributeError):
                 bad += 1
                 continue
+            if record.get("error") == FAILED:
+                continue  # an evaluation that raised (possibly a transient fault) is tried again on resume
             self.records[record["key"]] = record
         if bad:
             warnings.warn(f"{self.path}: {bad} damaged evaluation record(s) skipped; those candidates are "
@@ -195,7 +202,8 @@ def evaluate_candidates(problem: DesignProblem, candidates: Sequence[Mapping[str
         values = np.stack([np.asarray(ds[n].values, dtype=float).reshape(len(order)) for n in names], axis=1)
         if not any(np.isfinite(list(r["outputs"].values())).any() for r in cache.records.values()):
             _raise_if_all_failed(study, values)
-        cache.add([{"key": k, "overrides": dict(new[k]), "outputs": dict(zip(names, map(float, row))), "error": None}
+        cache.add([{"key": k, "overrides": dict(new[k]), "outputs": dict(zip(names, map(float, row))),
+                    "error": FAILED if np.all(np.isnan(row)) else None}
                    for k, row in zip(order, values)])
         if batch_dir is not None:
             shutil.rmtree(batch_dir, ignore_errors=True)

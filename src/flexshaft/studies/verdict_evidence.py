@@ -211,6 +211,12 @@ def _metal_buckling(res, notes: dict) -> dict:
     if metal is None or not metal.buckling:
         notes["buckling"] = "laminated-shell buckling needs a lamina shaft material"
         return {}
+    covered = {b.segment for b in metal.buckling}
+    uncovered = [seg.name for seg in getattr(res.model, "segments", ()) if seg.name not in covered]
+    if uncovered:  # the metal tubes alone must not pass the check for the whole shaft
+        notes["buckling"] = (f"segment(s) {', '.join(uncovered)} are laminated: the buckling of a laminated segment of "
+                             "a segmented shaft is not modelled")
+        return {}
     b = min(metal.buckling, key=lambda b: b.safety_factor)
     return {"buckling_safety_factor": float(b.safety_factor), "buckling_location": {
         "case": f"segment {b.segment}, n = {b.wave_number}",
