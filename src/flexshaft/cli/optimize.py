@@ -27,7 +27,7 @@ class Fidelity(str, Enum):
     screening = "screening"
 
 
-__all__ = ["NO_DESIGN_PASSES", "optimize", "parse_variable", "register_optimize"]
+__all__ = ["NO_DESIGN_PASSES", "Fidelity", "optimize", "parse_variable"]
 
 #: Exit code when no evaluated design passes every requirement (or one fails re-verification).
 NO_DESIGN_PASSES = 3
@@ -185,38 +185,28 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
 
 
 def _print_table(result) -> None:
-    from rich.console import Console
-    from rich.table import Table
-    from rich.text import Text
+    from flexshaft.cli.tables import print_line, stdout_console, table
 
     pareto = result.pareto
-    table = Table(title="Pareto designs and references (search verdict; 'run': re-verified by the full run)")
-    columns = ["design", "mass kg", "strength SF", "buckling", "force N", "orbit mm", "verdict"]
-    for c in columns:
-        table.add_column(c, justify="left" if c in ("design", "verdict") else "right", no_wrap=True)
+    console = stdout_console()
+    if "shaft_mass" not in pareto:  # a custom evaluation: print the objectives only
+        print_line(console, str(pareto[[o.output for o in result.problem.objectives]].to_dataframe()))
+        return
+    names = ("shaft_mass", "safety_factor", "buckling_safety_factor", "actuator_force", "spinup_deflection")
 
     def row(label, outputs, verdict):
-        table.add_row(Text(plain(label)), f"{outputs['shaft_mass']:.3f}", f"{outputs['safety_factor']:.2f}",
-                      f"{outputs['buckling_safety_factor']:.2f}", f"{outputs['actuator_force']:.0f}",
-                      f"{outputs['spinup_deflection'] * 1e3:.3f}", verdict)
+        return [label, outputs["shaft_mass"], outputs["safety_factor"], outputs["buckling_safety_factor"],
+                outputs["actuator_force"], outputs["spinup_deflection"] * 1e3, verdict]
 
-    if "shaft_mass" not in pareto:  # a custom evaluation: print the objectives only
-        Console().print(pareto[[o.output for o in result.problem.objectives]].to_dataframe())
-        return
-    for label, outputs in result.references.items():
-        row(label, outputs, "PASS" if outputs["feasible"] else "FAIL")
+    rows = [row(label, outputs, "PASS" if outputs["feasible"] else "FAIL")
+            for label, outputs in result.references.items()]
     for k in range(pareto.sizes["design"]):
         name = str(pareto["file"].values[k]) if "file" in pareto else ""
         if not name:
             continue
         verified = {1.0: "PASS run", 0.0: "FAIL run"}.get(
             float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS")
-        name = name.removesuffix(".toml")
-        row(name, {n: float(pareto[n].values[k]) for n in ("shaft_mass", "safety_factor", "buckling_safety_factor",
-                                                            "actuator_force", "spinup_deflection")}, verified)
-    Console().print(table)
-
-
-def register_optimize(app: typer.Typer) -> None:
-    """Add ``flexshaft optimize`` to the CLI ``app``."""
-    app.command("optimize")(optimize)
+        rows.append(row(name.removesuffix(".toml"), {n: float(pareto[n].values[k]) for n in names}, verified))
+    console.print(table("Pareto designs and references (search verdict; 'run': re-verified by the full run)",
+                        ["design", "mass [kg]", "strength SF", "buckling SF", "force [N]", "orbit [mm]", "verdict"],
+                        rows, numeric=range(1, 6)))
