@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.plot.style import MM_PER_M, RPM_PER_HZ, WHIRL_LINESTYLE, mark_operating, new_figure, styled, vector
+from flexshaft.plot.style import MM_PER_M, RPM_PER_HZ, WHIRL_LINESTYLE, log_scale, mark_operating, new_figure, styled, vector
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -152,14 +152,16 @@ def safety_factor_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike
             ax.annotate(f"{values[k]:.3g} at {xs[k]:.2f} m", (xs[k], values[k]), xytext=(6, -14),
                         textcoords="offset points", color=color, fontsize=8.5)
             lo, hi = min(lo, np.nanmin(values)), max(hi, np.nanmax(values))
-        hi = max(hi, xs.max())
     if required is not None:
         ax.axhline(required, color="tab:red", ls="--", lw=1.2, label=f"required {required:g}")
         lo = min(lo, required)
-    ax.set_yscale("log")
-    ax.grid(which="minor", alpha=0.12)
+    log_scale(ax)
     if np.isfinite(lo):
-        ax.set_ylim(0.7 * lo, None)
+        ax.set_ylim(0.7 * lo, 1.4 * hi if np.isfinite(hi) else None)
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))  # 1, 10, 100: no 10^n on a factor
+    ax.yaxis.set_minor_formatter(FuncFormatter(lambda v, _: f"{v:g}") if hi / lo < 30 else NullFormatter())
     ax.set_xlabel("axial position x [m]")
     ax.set_ylabel("safety factor [-]")
     ax.set_title("Strength safety factor along the driveline (static + imbalance at Ω_op)")
@@ -223,8 +225,8 @@ def mass_breakdown_figure(masses: Mapping[str, Mapping[str, float]]) -> Figure:
     for i, total in enumerate(bottoms):
         ax.annotate(f"{total:.1f} kg", (i, total), xytext=(0, 4), textcoords="offset points", ha="center")
     ax.set_xticks(np.arange(len(items)), [label for label, _ in items])
-    ax.set_ylim(0.0, 1.15 * max(bottoms.max(), 1.0))
+    ax.set_ylim(0.0, 1.35 * max(bottoms.max(), 1.0))  # room for the legend above the bars
     ax.set_ylabel("mass [kg]")
     ax.set_title("Driveline mass by part kind")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    ax.legend(loc="upper center", ncol=min(len(kinds), 5), fontsize=8.5, frameon=False)
     return fig
