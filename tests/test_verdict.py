@@ -289,3 +289,29 @@ def test_adapter_on_a_run_reports_what_it_cannot_evaluate() -> None:
     assert critical.value == pytest.approx(1 - critical.location["speed"] / design.operating.speed_rad_s)
     assert verdict.check("tsai_wu").note == "ply strength needs a lamina shaft material"
     assert verdict.check("actuator_orbit").note == "the design has no active bearings"
+
+
+def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
+    """Was: a PID bearing (C(0) infinite) entered the force check with a static force of 0 (the
+    collocated law times the offset was not finite and was dropped). Now the static force is the
+    run's static bearing reaction (the integrator's constraint force); for a PD bearing that
+    reaction equals the law C(0) − k_s times the static offset at the magnet (another path)."""
+    import numpy as np
+
+    from flexshaft.design import tuned_design, with_overrides
+    from flexshaft.studies.run import run_analysis
+    from flexshaft.studies.verdict_evidence import evidence_from_run
+
+    tuned = tuned_design()
+    pd = run_analysis(tuned, studies=None)
+    for a, ev in zip(pd.model.actuators, evidence_from_run(pd).actuators):
+        offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))
+        assert ev.static_force == pytest.approx(abs(a.law(0j)) * offset, rel=1e-9)
+    pid = with_overrides(tuned, {"bearings[1].integral_gain": 2.0e6, "bearings[2].integral_gain": 2.0e6})
+    res = run_analysis(pid, studies=None)
+    evidence = evidence_from_run(res).actuators
+    for ev in evidence:
+        reaction = res.bearing_reactions[ev.name].static_lateral
+        assert reaction > 10.0 and ev.static_force == reaction  # 3.5 g on the shaft: tens of newtons at least
+    check = res.verdict.check("actuator_force")
+    assert check.value >= max(ev.static_force for ev in evidence)

@@ -125,7 +125,7 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
     from flexshaft.analyses import imbalance_response, modes
     from flexshaft.analyses.metal_strength import metal_strength
     from flexshaft.analyses.misalignment import coupling_misalignment
-    from flexshaft.analyses.response import actuator_response, worst_case_orbits
+    from flexshaft.analyses.response import actuator_response, bearing_reactions, worst_case_orbits
     from flexshaft.analyses.shaft_buckling import shaft_buckling
     from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
     from flexshaft.analyses.stability import stability
@@ -172,6 +172,7 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
         strength_static=strength_static, strength_total=strength_total, imbalance_at_speed=q_at_speed,
         buckling=buckling, stability=stability(model, whirl, n_modes=10), thermal=thermal, shaft_orbits=amp,
         metal_strength=metal, coupling_misalignment=misalignment,
+        bearing_reactions=bearing_reactions(model, q_static, q_at_speed),
     )
     results.verdict = evaluate(evidence_from_run(results), design.requirements)
     return results

@@ -275,7 +275,13 @@ def _actuators(res) -> tuple[ActuatorEvidence, ...]:
         capacity = getattr(bearing, "force_capacity", None)
         if capacity is None:
             capacity = a.saturation_force  # the magnet's saturation force when its geometry is given
-        static_force = float(abs(a.law(0j))) * static if np.isfinite(abs(a.law(0j))) else 0.0
+        reactions = getattr(res, "bearing_reactions", None) or {}
+        if a.name in reactions:  # the run's static reaction: the constraint force of an integrating law too
+            static_force = float(reactions[a.name].static_lateral)
+        elif a.integrates:  # C(0) infinite: the static force is not law × offset; left to the dynamic part
+            static_force = 0.0
+        else:
+            static_force = float(abs(a.law(0j))) * static
         out.append(ActuatorEvidence(
             a.name, float(d[i]), float(res.speeds[i]), float(f[j]), float(res.speeds[j]),
             static_offset=static, static_force=static_force,
