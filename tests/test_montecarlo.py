@@ -258,3 +258,28 @@ def test_runup_samples_superpose_the_bay_transients(two_bay):
         assert samples.shaft_peak[k] == pytest.approx(run.shaft_peak.max(), rel=1e-4)
         assert samples.actuator_orbit_max[k] == pytest.approx(run.actuator_displacement.max(), rel=1e-4)
         assert samples.actuator_force_max[k] == pytest.approx(run.actuator_force.max(), rel=1e-4)
+
+
+def test_exceedances_add_the_static_offset_and_force_as_the_verdict_does():
+    """Was: P(gap exceeded) compared the dynamic orbit alone with the gap while the verdict's
+    excursion check adds the static offset. Now each sample's excursion is the static offset
+    at the magnet (from the static solve, computed here independently) plus the peak orbit,
+    and its force the static reaction plus the peak dynamic force."""
+    from flexshaft.analyses.response import static_response
+    from flexshaft.assembly.loads import external_static_load, torque_load
+    from flexshaft.design import with_overrides
+
+    design = with_overrides(loads_design(two_bay_text()), {"loads.load_factor": [0.0, 3.5, 0.0]})
+    model = build_model(design)
+    static = static_response(model, external_static_load(model) + torque_load(model))
+    (amb,) = model.actuators
+    offset = float(np.hypot(*np.real(amb.lateral_rows @ static)))
+    force = abs(amb.law(0j)) * offset  # PD, collocated: the static force is the law times the offset
+    assert offset > 1e-6
+    result = run_montecarlo(design, 8, seed=3, grade_mm_s=6.3, n_speeds=20, gap=1e-4, force_limit=10.0,
+                            strength=False, progress=False)
+    ds = result.dataset
+    np.testing.assert_allclose(ds["actuator_excursion_max"].values, ds["actuator_orbit_max"].values + offset, rtol=1e-6)
+    np.testing.assert_allclose(ds["actuator_load_max"].values, ds["actuator_force_max"].values + force, rtol=1e-6)
+    p, _ = result.gap_exceedance
+    assert p == np.mean(ds["actuator_excursion_max"].values > 1e-4)

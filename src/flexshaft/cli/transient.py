@@ -136,7 +136,8 @@ def montecarlo(
     save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset
     summary = {name: {"mean": float(np.nanmean(ds[name].values)), "p99": float(np.nanpercentile(ds[name].values, 99))}
-               for name in ("spinup_peak", "actuator_orbit_max", "actuator_force_max") if name in ds}
+               for name in ("shaft_peak", "actuator_orbit_max", "actuator_excursion_max", "actuator_force_max",
+                            "actuator_load_max") if name in ds}
     data = {"design": loaded.design.name, "samples": samples, "seed": seed, "grade_mm_s": grade,
             "gap_m": gap, "force_limit_N": capacity, "summary": summary,
             "p_gap_exceeded": None if result.gap_exceedance is None else result.gap_exceedance[0],
@@ -149,14 +150,18 @@ def montecarlo(
     console = stdout_console()
     print_line(console, loaded.design.name, style="bold")
     print_line(console, f"{samples} samples, balance grade G {sig(grade)} mm/s, seed {seed}")
-    for key, label, scale, unit in (("spinup_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
+    for key, label, scale, unit in (("shaft_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
                                     ("actuator_orbit_max", "largest actuator orbit", m_to_mm, "mm"),
-                                    ("actuator_force_max", "largest actuator force", float, "N")):
+                                    ("actuator_excursion_max", "largest actuator excursion (static + orbit)", m_to_mm, "mm"),
+                                    ("actuator_force_max", "largest actuator dynamic force", float, "N"),
+                                    ("actuator_load_max", "largest actuator force (static + dynamic)", float, "N")):
         if key in summary:
             print_line(console, f"{label}: mean {sig(scale(summary[key]['mean']))} {unit}, "
                                 f"99th percentile {sig(scale(summary[key]['p99']))} {unit}")
     for name, value, limit in (("gap", result.gap_exceedance, gap and m_to_mm(gap)),
                                ("force limit", result.force_exceedance, capacity)):
         if value is not None:
-            print_line(console, f"P({name} {sig(limit)} exceeded) = {sig(value[0], 3)} ± {sig(value[1], 2)}")
+            unit = "mm" if name == "gap" else "N"
+            print_line(console, f"P({name} {sig(limit)} {unit} exceeded, static + dynamic) = {sig(value[0], 3)} "
+                                f"± {sig(value[1], 2)}")
     print_line(console, f"written to {folder}")

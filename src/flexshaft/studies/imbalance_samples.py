@@ -9,7 +9,7 @@ shaft element (solved once per speed), the draws of one sample and its outputs.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
@@ -111,6 +111,10 @@ class UnitResponses:
         (ndof, n_st) complex response at the operating speed [m/(kg m)].
     static : ndarray
         Static response to the external loads and torque (ndof,) [m, rad].
+    static_offset, static_force : ndarray
+        Static lateral offset [m] at each active bearing's magnet and its static force [N] (the
+        bearing's static reaction; an integrator's constraint force too), (n_act,): the verdict's
+        actuator checks add them to the spin-up peaks, and so do the exceedances.
     """
 
     speeds: np.ndarray
@@ -127,6 +131,8 @@ class UnitResponses:
     static: np.ndarray
     actuator_names: tuple[str, ...]
     placement: str
+    static_offset: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    static_force: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def n_bays(self) -> int:
@@ -218,6 +224,7 @@ def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", 
         Add speeds around every local peak of the response (golden-section search).
     """
     from flexshaft.analyses import static_response
+    from flexshaft.analyses.response import bearing_reactions
     from flexshaft.analyses.banded import BandedHarmonicSolver
     from flexshaft.assembly.loads import external_static_load, torque_load
 
@@ -267,12 +274,17 @@ def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", 
     gain = np.array([[abs(complex(a.controller(1j * s))) for a in model.actuators] for s in speeds]).reshape(speeds.size, n_act)
     operating = np.zeros((dm.size, stations.size), complex)
     operating[free] = solver.solve(model.speed, rhs, model.speed) * model.speed**2
-    static = static_response(model, external_static_load(model) + torque_load(model))
+    static_loads = external_static_load(model) + torque_load(model)
+    static = static_response(model, static_loads)
+    reactions = bearing_reactions(model, static, np.zeros((dm.size, 1), complex), loads=static_loads)
+    static_offset = np.array([float(np.hypot(*np.real(a.lateral_rows @ static))) for a in model.actuators])
+    static_force = np.array([float(reactions[a.name].static_lateral) for a in model.actuators])
     return UnitResponses(
         speeds=speeds, bays=bays, bay_mass=model.shaft_mass * lengths / lengths.sum(), stations=stations,
         elements=elements, element_stations=element_stations, element_bay=element_bay, shaft=shaft,
         actuator=actuator, actuator_gain=gain, operating=operating, static=static,
         actuator_names=tuple(a.name for a in model.actuators), placement=placement,
+        static_offset=static_offset, static_force=static_force,
     )
 
 
@@ -331,14 +343,17 @@ def combine(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarray, np
 
 
 #: Names of the per-sample outputs besides the per-actuator and per-bay ones.
-BASE_OUTPUTS = ("shaft_peak", "shaft_peak_speed", "actuator_orbit_max", "actuator_force_max", "safety_factor")
+BASE_OUTPUTS = ("shaft_peak", "shaft_peak_speed", "actuator_orbit_max", "actuator_force_max", "actuator_excursion_max",
+                "actuator_load_max", "safety_factor")
 
 
 def sample_outputs(model: Model, units: UnitResponses, draws: ImbalanceDraws, *, strength: bool = True,
                    n_phases: int = 36, memory: float = 5e7) -> dict[str, np.ndarray]:
     """Outputs of each sample (arrays over samples) [SI]: ``shaft_peak`` [m] and
     ``shaft_peak_speed`` [rad/s], ``actuator_orbit_<name>`` [m] and ``actuator_force_<name>``
-    [N] (peaks over speed), their largest over the actuators, and ``safety_factor`` (Tsai-Wu at
+    [N] (peaks over speed), their largest over the actuators, ``actuator_excursion_max`` [m] and
+    ``actuator_load_max`` [N] (static offset / force plus the peak, largest over the actuators,
+    as the verdict's actuator checks), and ``safety_factor`` (Tsai-Wu at
     the operating speed; NaN when ``strength`` is False or the shaft is not laminated).
     Samples are combined in blocks of about ``memory`` bytes."""
     from flexshaft.analyses.shaft_strength import shaft_safety_factor
@@ -366,6 +381,9 @@ def sample_outputs(model: Model, units: UnitResponses, draws: ImbalanceDraws, *,
                 out[f"actuator_force_{name}"][sl] = force[..., a].max(axis=1)
             out["actuator_orbit_max"][sl] = orbit.max(axis=(1, 2))
             out["actuator_force_max"][sl] = force.max(axis=(1, 2))
+            # static + peak dynamic, per actuator, as the verdict's actuator checks
+            out["actuator_excursion_max"][sl] = (orbit.max(axis=1) + units.static_offset).max(axis=1)
+            out["actuator_load_max"][sl] = (force.max(axis=1) + units.static_force).max(axis=1)
     if laminated:
         for s in range(n):
             q = units.operating[:, idx[s]] @ weights[s]
