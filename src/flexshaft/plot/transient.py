@@ -147,9 +147,11 @@ def montecarlo_figure(samples: Any, *, gap: float | None = None, force_limit: fl
         ax.grid(which="minor", alpha=0.12)
         if limit is not None:
             ax.axvline(limit, color="tab:red", ls=":", lw=1.4, label=name.format(limit))
-    c.set_title("Actuator orbit exceedance")
+    c.set_title("Actuator excursion exceedance")
     d.set_title("Actuator force exceedance")
     for ax in (a, b, c, d):
         if ax.has_data():
             ax.legend(fontsize=8)
+    if axes is None:
+        fig.subplots_adjust(hspace=0.42)  # the lower titles clear the upper x labels
     return fig
