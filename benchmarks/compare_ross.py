@@ -230,9 +230,20 @@ def run_all(elements, cases, repeats: int, pythons: list[str], reuse: dict | Non
     for r in ross_runs:
         fr = next(f for f in fx_runs if (f["case"], f["n_el"]) == (r["case"], r["n_el"]))
         r["comparison"] = compare(r["case"], fr["result"], r["result"])
-    return {"machine": {**bu.machine_info(), "load_average_at_start": load_start},
+    data = {"machine": {**bu.machine_info(), "load_average_at_start": load_start},
             "parameters": case.parameters(), "repeats": repeats,
             "flexshaft_runs": fx_runs, "ross_runs": ross_runs}
+    if reuse and reused:
+        data["ross_reused"] = ross_reuse_note(reuse)
+    return data
+
+
+def ross_reuse_note(reuse: dict) -> dict:
+    """Where the reused ROSS timings come from: their run's date, commit and machine load."""
+    m = reuse["machine"]
+    return {"date": m["date"], "git_commit": m.get("git_commit"),
+            "load_average_at_start": m.get("load_average_at_start", ["?"])[0],
+            "load_average_at_end": m["load_average_1_5_15"][0]}
 
 
 def _versions(data: dict) -> list[str]:
@@ -335,6 +346,12 @@ def header_lines(data: dict) -> str:
         f"flexshaft {fx0['version']} (git {m['git_commit']}), Python {m['python']}, "
         f"numpy {fx0['numpy']}, scipy {fx0['scipy']}.",
     ]
+    if "ross_reused" in data:
+        old = data["ross_reused"]
+        lines.append(f"The ROSS timings are reused from the run of {old['date'][:16]} (`--reuse-ross`; ROSS takes "
+                     f"most of the hour), when the 1-min load average was {old['load_average_at_start']} to "
+                     f"{old['load_average_at_end']}: on a busier machine, so the wall-time ratios favour flexshaft; "
+                     "the CPU-time ratios in brackets are the fairer figure.")
     for v in _versions(data):
         r = next(r for r in data["ross_runs"] if r["version"] == v)
         lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, "
