@@ -259,14 +259,22 @@ def design_metrics(design, fidelity: str | Fidelity = "screening") -> dict[str, 
 
 
 def applicable_checks(design) -> tuple[str, ...]:
-    """The verdict's checks for ``design``: every key of :data:`CHECK_KEYS` but
-    ``metal_strength`` when no shaft segment is isotropic and ``coupling_angle`` without
-    couplings (as :func:`flexshaft.studies.run.run_analysis` decides)."""
+    """The verdict's checks that can apply to ``design``'s kind of driveline: every key of
+    :data:`CHECK_KEYS` but those its parts rule out (as :func:`flexshaft.studies.run.run_analysis`
+    decides): ``tsai_wu`` and ``temperature`` without a one-piece laminated shaft,
+    ``metal_strength`` without an isotropic segment, the actuator checks without active
+    bearings, ``coupling_angle`` without couplings. A check that applies but cannot be
+    evaluated for a candidate stays a violated constraint."""
     from flexshaft.assembly import build_model
 
     model = build_model(design)
-    metal = any(design.materials[seg.material].kind == "isotropic" for seg in model.segments)
-    skip = {"metal_strength"} if not metal else set()
+    skip = set()
+    if model.shaft.laminate is None:
+        skip |= {"tsai_wu", "temperature"}
+    if not any(design.materials[seg.material].kind == "isotropic" for seg in model.segments):
+        skip.add("metal_strength")
+    if not model.actuators:
+        skip |= {"actuator_orbit", "actuator_force"}
     if not model.couplings:
         skip.add("coupling_angle")
     return tuple(k for k in CHECK_KEYS if k not in skip)
