@@ -40,6 +40,12 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
         assert check["status"] != "not evaluated", check["key"]
         failed = [f for f in check["findings"] if not f["passed"]]
         assert all(check["key"] == "whirl_damping" and "boom)" in f["location"]["mode"] for f in failed), check
+    # one spin-up peak: results.json and the terminal state the verdict's (to the operating speed,
+    # refined), and the whole scan's largest (to 1.3 x) apart; it cannot be smaller
+    spinup = next(c for c in verdict["checks"] if c["key"] == "spinup_deflection")
+    assert data["imbalance"]["max_shaft_orbit_spin_up_m"] == spinup["value"]
+    assert data["imbalance"]["speed_of_max_rpm"] <= data["summary"]["operating_speed_rpm"] * (1 + 1e-9)
+    assert data["imbalance"]["max_shaft_orbit_scan_m"] >= 0.99 * spinup["value"]  # the refined peak may exceed a sample
     thesis = data["stability"]["thesis_shafts"]
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     # (an onset of None: stable up to the highest speed analysed)
