@@ -25,6 +25,8 @@ __all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_fig
 #: 768 CSS px (96 px per inch): text of 8.5 pt is 14 px high, sharp on ordinary and on 1.25×
 #: screens; files are 35 % smaller than at 150 dpi (rendering time hardly depends on it).
 PNG_DPI = 120
+#: zlib compression level of the PNG figures (1: fastest; the default 6 costs ~70 ms a figure).
+PNG_COMPRESSION = 1
 
 
 def _check_stem(stem: str) -> None:
@@ -57,7 +59,8 @@ def save_figure(fig: Figure, folder: str | Path, stem: str, *, svg: bool = True,
     out = Path(folder)
     out.mkdir(parents=True, exist_ok=True)
     paths = {"png": out / f"{stem}.png"}
-    fig.savefig(paths["png"], dpi=dpi, format="png")
+    # zlib level 1: a third less time per figure than the default 6, files about 5 % larger
+    fig.savefig(paths["png"], dpi=dpi, format="png", pil_kwargs={"compress_level": PNG_COMPRESSION})
     if svg:
         paths["svg"] = out / f"{stem}.svg"
         fig.savefig(paths["svg"], format="svg", metadata={"Date": None})
