@@ -22,6 +22,7 @@ __all__ = [
     "MM_PER_M",
     "ZERO_CELSIUS",
     "celsius_to_kelvin",
+    "format_quantity",
     "hz_to_rpm",
     "kelvin_to_celsius",
     "m_to_mm",
@@ -76,3 +77,27 @@ def rpm_to_hz(speed_rpm):
 def m_to_mm(length):
     """Convert a length from [m] to [mm]."""
     return length * MM_PER_M
+
+
+def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> str:
+    """A value (or a signed margin) of a check's ``kind`` in display units.
+
+    Speeds in rpm, lengths in mm, forces in N, temperatures in °C (margins in K), fractions
+    in % (margins in percentage points), angles in degrees, safety factors and log decrements plain.
+    """
+    if value is None:
+        return "—"
+    sign = "+" if margin else ""
+    if kind == "speed":
+        return f"{rad_s_to_rpm(value):{sign}.0f} rpm"
+    if kind == "length":
+        return f"{value * 1e3:{sign}.3g} mm"
+    if kind == "force":
+        return f"{value:{sign}.4g} N"
+    if kind == "temperature":
+        return f"{value:+.1f} K" if margin else f"{kelvin_to_celsius(value):.1f} °C"
+    if kind == "fraction":
+        return f"{value * 100:+.1f} pts" if margin else f"{value * 100:.1f} %"
+    if kind == "angle":
+        return f"{math.degrees(value):{sign}.3g}°"
+    return f"{value:{sign}.3g}"

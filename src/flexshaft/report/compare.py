@@ -24,12 +24,16 @@ from flexshaft.plot.compare import (
 from flexshaft.plot.driveline import save_figure
 from flexshaft.report.driveline import json_ready
 from flexshaft.report.html import FigureRef, Section, Table, write_report
-from flexshaft.report.verdict import format_quantity, location_text
-from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
+from flexshaft.report.verdict import location_text
+from flexshaft.units import format_quantity, rad_s_to_rpm
 
 __all__ = ["comparison_json", "format_metric", "write_compare_report"]
 
 _STATUS = {"pass": "PASS", "fail": "FAIL", "not evaluated": "not evaluated"}
+
+
+#: Display kind (:func:`flexshaft.units.format_quantity`) of a compared quantity's SI unit.
+_KIND_OF_UNIT = {"rad/s": "speed", "m": "length", "K": "temperature", "rad": "angle"}
 
 
 def format_metric(key: str, unit: str, value: float | None, lower_bound: bool = False) -> str:
@@ -38,16 +42,9 @@ def format_metric(key: str, unit: str, value: float | None, lower_bound: bool = 
         return "—"
     if lower_bound:
         return "> " + format_metric(key, unit, value)
-    if unit == "rad/s":
-        return f"{rad_s_to_rpm(value):.0f} rpm"
-    if unit == "m":
-        return f"{value * 1e3:.3g} mm"
-    if unit == "K":
-        return f"{kelvin_to_celsius(value):.1f} °C"
-    if unit == "rad":
-        return f"{math.degrees(value):.3g}°"
-    if key == "separation":
-        return f"{100 * value:.1f} %"
+    kind = "fraction" if key == "separation" else _KIND_OF_UNIT.get(unit)
+    if kind is not None:
+        return format_quantity(kind, value)
     if unit == "kg":
         return f"{value:.2f} kg"
     if key.startswith("count"):

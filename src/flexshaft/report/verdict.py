@@ -10,7 +10,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
+from flexshaft.units import format_quantity, rad_s_to_rpm  # format_quantity re-exported
 from flexshaft.report.html import Section, Table
 
 __all__ = ["VERDICT_COLUMNS", "format_quantity", "location_text", "verdict_rows", "verdict_section"]
@@ -18,30 +18,6 @@ __all__ = ["VERDICT_COLUMNS", "format_quantity", "location_text", "verdict_rows"
 #: Columns of the verdict table.
 VERDICT_COLUMNS = ("requirement", "value", "limit", "margin", "status", "where", "note")
 _STATUS = {"pass": "PASS", "fail": "FAIL", "not evaluated": "not evaluated"}
-
-
-def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> str:
-    """A value (or a signed margin) of a check's ``kind`` in display units.
-
-    Speeds in rpm, lengths in mm, forces in N, temperatures in °C (margins in K), fractions
-    in % (margins in percentage points), angles in degrees, safety factors and log decrements plain.
-    """
-    if value is None:
-        return "—"
-    sign = "+" if margin else ""
-    if kind == "speed":
-        return f"{rad_s_to_rpm(value):{sign}.0f} rpm"
-    if kind == "length":
-        return f"{value * 1e3:{sign}.3g} mm"
-    if kind == "force":
-        return f"{value:{sign}.4g} N"
-    if kind == "temperature":
-        return f"{value:+.1f} K" if margin else f"{kelvin_to_celsius(value):.1f} °C"
-    if kind == "fraction":
-        return f"{value * 100:+.1f} pts" if margin else f"{value * 100:.1f} %"
-    if kind == "angle":
-        return f"{math.degrees(value):{sign}.3g}°"
-    return f"{value:{sign}.3g}"
 
 
 def location_text(location: Mapping[str, Any], compact: bool = False) -> str:

@@ -43,6 +43,7 @@ from typing import Literal
 from flexshaft.analyses.separation import api684_separation
 from flexshaft.analyses.results import ResultMixin, coded, new_dataset
 from flexshaft.design.requirements import Requirements
+from flexshaft.units import format_quantity
 from flexshaft.studies.evidence import (  # re-exported: the verdict's input types
     ActuatorEvidence,
     CouplingEvidence,
@@ -178,7 +179,7 @@ class Verdict(ResultMixin):
 
         normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
         return margins_figure([c.title for c in self.checks], normalised, [c.status for c in self.checks],
-                              [_margin_text(c.kind, c.margin) for c in self.checks], [c.lower_bound for c in self.checks],
+                              ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True) for c in self.checks], [c.lower_bound for c in self.checks],
                               ax=ax, **{"title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} "
                                                  "(margin / limit of each)", **kwargs})
 
@@ -249,25 +250,6 @@ class Verdict(ResultMixin):
 
     def to_dict(self) -> dict:
         return {"passed": self.passed, "summary": self.summary, "checks": [c.to_dict() for c in self.checks]}
-
-
-def _margin_text(kind: str, margin: float | None) -> str:
-    """A signed margin in engineering units (rpm, mm, N, K, percentage points), for figures."""
-    if margin is None:
-        return ""
-    from flexshaft.units import rad_s_to_rpm
-
-    if kind == "speed":
-        return f"{rad_s_to_rpm(margin):+.0f} rpm"
-    if kind == "length":
-        return f"{margin * 1e3:+.3g} mm"
-    if kind == "force":
-        return f"{margin:+.4g} N"
-    if kind == "temperature":
-        return f"{margin:+.1f} K"
-    if kind == "fraction":
-        return f"{margin * 100:+.1f} pts"
-    return f"{margin:+.3g}"
 
 
 def _not_evaluated(key: str, title: str, kind: Kind, sense, note: str) -> Check:
