@@ -192,3 +192,19 @@ def test_an_oversized_design_file_is_refused_before_reading(tmp_path: Path) -> N
     result = runner.invoke(app, ["check", str(big)])
     assert result.exit_code == 2
     assert f"{MAX_DESIGN_BYTES + 1} bytes; a design file may have at most {MAX_DESIGN_BYTES} bytes" in result.stderr
+
+
+def test_ply_studies_of_a_metal_shaft_are_not_internal_errors(tmp_path: Path) -> None:
+    """Was: `study gain` and `study buckling` on an aluminium shaft ended in 'internal error'
+    (ply strength / laminated-shell buckling asked of an isotropic tube). Now the gain study
+    reports the safety factor as not evaluated and the buckling study refuses the design (exit 2)."""
+    text = "\n".join(line for line in baseline_text().splitlines() if not line.startswith("layup"))
+    text = text.replace('material = "t700_adiprene"', 'material = "al6061_t6"', 1)
+    text = text.replace("shaft_elements = 36", "shaft_elements = 12", 1).replace("boom_elements = 24", "boom_elements = 8", 1)
+    metal = _write(tmp_path, "metal.toml", text)
+    gain = runner.invoke(app, ["study", "gain", str(metal), "--out", str(tmp_path / "g")])
+    assert gain.exit_code == 0, gain.output
+    assert "safety factor not evaluated (the shaft is not a lamina)" in gain.output
+    buckling = runner.invoke(app, ["study", "buckling", str(metal), "--out", str(tmp_path / "b")])
+    assert buckling.exit_code == 2 and "is not one laminated tube" in buckling.stderr
+    assert "internal error" not in gain.output + buckling.output

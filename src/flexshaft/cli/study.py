@@ -161,8 +161,10 @@ def gain(
     loaded, folder = _prepare(design, out, "gain", force)
     ds = _sweep(proportional_gain_study, loaded, folder, jobs, dask, as_json)
     sf = ds["safety_factor"].values
-    i = int(np.nanargmax(sf))
-    headline = f"largest safety factor {sf[i]:.3g} at K_p = {sig(float(ds.kp.values[i]), 3)} N/m"
+    headline = "safety factor not evaluated (the shaft is not a lamina)"
+    if np.isfinite(sf).any():
+        i = int(np.nanargmax(sf))
+        headline = f"largest safety factor {sf[i]:.3g} at K_p = {sig(float(ds.kp.values[i]), 3)} N/m"
     figures = {"gain": _save(gain_figure(ds.kp.values, sf, ds["actuator_displacement"].values), folder, "gain")}
     _report(loaded, "gain", folder, ds, ["safety_factor", "actuator_displacement"], figures, headline, as_json)
 

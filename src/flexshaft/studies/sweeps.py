@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.sweep.run import run_sweep
-from flexshaft.sweep.study import Output, Study, Variable
+from flexshaft.sweep.study import Output, Study, SweepError, Variable
 
 __all__ = [
     "DOMINANT_STRESS_CODES",
@@ -201,7 +201,9 @@ def _actuator_outputs(point) -> dict:
     for c in range(q.shape[1]):
         disp, _ = actuator_response(model, q[:, c], np.array([model.speed]))
         worst_disp = max(worst_disp, max(float(d[0]) for d in disp.values()))
-    return {**strength_outputs(point), "actuator_displacement": worst_disp}
+    nan = float("nan")  # ply strength needs a laminated shaft (as in the wall study)
+    strength = strength_outputs(point) if model.shaft.laminate is not None else {o.name: nan for o in _STRENGTH}
+    return {**strength, "actuator_displacement": worst_disp}
 
 
 def _both_actuators_kp(kp: float) -> dict:
@@ -234,7 +236,21 @@ def _buckling_outputs(point) -> dict:
 
 
 def buckling_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **run):
-    """Torsional buckling safety factor vs wall thickness (study 5; shear-deformable shell)."""
+    """Torsional buckling safety factor vs wall thickness (study 5; shear-deformable shell).
+
+    Raises
+    ------
+    SweepError
+        When the design's shaft is not one laminated tube (the laminated-shell model's domain;
+        a metal segment's buckling is part of the run's metal strength check).
+    """
+    from flexshaft.design import baseline_design
+
+    base = design if design is not None else baseline_design()
+    if base.segmented or base.materials[base.shaft.material].kind != "lamina":
+        raise SweepError(f"study 'torsional buckling vs wall thickness': the shaft of {base.name!r} is not one "
+                         "laminated tube; the laminated-shell buckling model does not apply (a metal segment's "
+                         "buckling is checked by `flexshaft run`)")
     study = Study(
         "torsional buckling vs wall thickness",
         [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
