@@ -20,6 +20,7 @@ from flexshaft.design.fields import (
     Name,
     Problems,
     SemiAxes,
+    check_interval,
     check_unique,
     format_number,
     format_value,
@@ -115,12 +116,7 @@ class Shaft(FrozenModel):
     @model_validator(mode="after")
     def _check(self) -> Shaft:
         problems = Problems()
-        if not self.x_start < self.x_end:
-            problems.add(
-                ("x_end",),
-                f"must be greater than x_start = {format_number(self.x_start)} m (got {format_value(self.x_end)})",
-            )
-        elif not self.x_end - self.x_start >= MIN_SHAFT_LENGTH:
+        if check_interval(problems, self.x_start, self.x_end) and not self.x_end - self.x_start >= MIN_SHAFT_LENGTH:
             problems.add(
                 ("x_end",),
                 f"gives a shaft length x_end - x_start = {format_number(self.x_end - self.x_start)} m "

@@ -48,6 +48,7 @@ __all__ = [
     "SemiAxes",
     "Vector3",
     "ZERO3",
+    "check_interval",
     "check_unique",
     "format_number",
     "format_value",
@@ -156,6 +157,14 @@ class Problems:
             raise PydanticCustomError(
                 PROBLEMS_ERROR_TYPE, "{summary}", {"summary": summary, "problems": tuple(self.items)}
             )
+
+
+def check_interval(problems: Problems, x_start: float, x_end: float) -> bool:
+    """Report ``x_end`` unless it lies above ``x_start`` [m]; True when the interval is valid."""
+    if x_start < x_end:
+        return True
+    problems.add(("x_end",), f"must be greater than x_start = {format_number(x_start)} m (got {format_value(x_end)})")
+    return False
 
 
 def check_unique(problems: Problems, prefix: FieldPath, names: Sequence[str]) -> None:

@@ -17,6 +17,7 @@ from flexshaft.design.fields import (
     ImbalancePlacement,
     Name,
     Problems,
+    check_interval,
     format_number,
     format_value,
 )
@@ -190,11 +191,7 @@ class LineLoad(FrozenModel):
     @model_validator(mode="after")
     def _check(self) -> LineLoad:
         problems = Problems()
-        if not self.x_start < self.x_end:
-            problems.add(
-                ("x_end",),
-                f"must be greater than x_start = {format_number(self.x_start)} m (got {format_value(self.x_end)})",
-            )
+        check_interval(problems, self.x_start, self.x_end)
         problems.raise_if_any()
         return self
 

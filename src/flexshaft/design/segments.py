@@ -31,8 +31,7 @@ from flexshaft.design.fields import (
     FrozenModel,
     Name,
     Problems,
-    format_number,
-    format_value,
+    check_interval,
 )
 from flexshaft.design.layup import parse_layup
 from flexshaft.design.quantities import (
@@ -119,11 +118,7 @@ class ShaftSegment(FrozenModel):
     @model_validator(mode="after")
     def _check(self) -> ShaftSegment:
         problems = Problems()
-        if not self.x_start < self.x_end:
-            problems.add(
-                ("x_end",),
-                f"must be greater than x_start = {format_number(self.x_start)} m (got {format_value(self.x_end)})",
-            )
+        check_interval(problems, self.x_start, self.x_end)
         problems.raise_if_any()
         return self
 

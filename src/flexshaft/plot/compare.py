@@ -115,8 +115,7 @@ def spinup_overlay_figure(responses: Mapping[str, tuple[ArrayLike, ArrayLike]], 
     if limit is not None:
         ax.axhline(limit * MM_PER_M, color="k", ls="--", lw=1.2, label=f"limit {limit * MM_PER_M:.3g} mm")
     mark_operating(ax, operating_rpm)
-    ax.set_yscale("log")
-    ax.grid(which="minor", alpha=0.12)
+    log_scale(ax)
     ax.set_xlim(0.0, top)
     ax.set_xlabel("spin speed Ω [rpm]")
     ax.set_ylabel("largest shaft orbit [mm]")
