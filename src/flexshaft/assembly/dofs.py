@@ -157,11 +157,7 @@ class DofMap:
         xs = self._stations(component)
         if len(xs) < 2:
             raise ValueError(f"no {component} elements")
-        if not np.isfinite(x):
-            raise ValueError(f"x must be a finite station [m] (got {x!r})")
-        tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
-        if x < xs[0] - tol or x > xs[-1] + tol:
-            raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
+        self._check_station(component, xs, x)
         if component == "shaft" and len(self.shaft_joints):
             ends = self.shaft_element_x
             e = int(np.clip(np.searchsorted(ends[:, 0], x, side="right") - 1, 0, len(ends) - 1))
@@ -184,15 +180,20 @@ class DofMap:
         xs = self._stations(component)
         if len(xs) == 0:
             raise ValueError(f"the model has no {component} nodes")
+        self._check_station(component, xs, x)
+        j = int(np.argmin(np.abs(xs - x)))
+        if j + 1 < len(xs) and xs[j + 1] == xs[j] and x > xs[j]:
+            return j + 1  # a coupling's two nodes share the station: aft of it is the aft flange's node
+        return j
+
+    @staticmethod
+    def _check_station(component: Component, xs: np.ndarray, x: float) -> None:
+        """``x`` must be finite and on the member (within 1e-9 of its length)."""
         if not np.isfinite(x):
             raise ValueError(f"x must be a finite station [m] (got {x!r})")
         tol = 1e-9 * max(1.0, abs(xs[-1] - xs[0]))
         if x < xs[0] - tol or x > xs[-1] + tol:
             raise ValueError(f"x = {x} m is outside the {component} [{xs[0]}, {xs[-1]}] m")
-        j = int(np.argmin(np.abs(xs - x)))
-        if j + 1 < len(xs) and xs[j + 1] == xs[j] and x > xs[j]:
-            return j + 1  # a coupling's two nodes share the station: aft of it is the aft flange's node
-        return j
 
     def _stations(self, component: Component) -> np.ndarray:
         if component not in ("shaft", "boom"):

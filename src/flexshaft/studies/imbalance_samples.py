@@ -343,8 +343,15 @@ def combine(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarray, np
 
 
 #: Names of the per-sample outputs besides the per-actuator and per-bay ones.
-BASE_OUTPUTS = ("shaft_peak", "shaft_peak_speed", "actuator_orbit_max", "actuator_force_max", "actuator_excursion_max",
-                "actuator_load_max", "safety_factor")
+BASE_OUTPUTS: dict[str, tuple[str, str]] = {  # name -> (SI unit, long name)
+    "shaft_peak": ("m", "peak steady-state spin-up deflection over the shaft"),
+    "shaft_peak_speed": ("rad/s", "speed of the peak deflection"),
+    "actuator_orbit_max": ("m", "largest peak lateral relative orbit over the active bearings"),
+    "actuator_force_max": ("N", "largest peak force over the active bearings"),
+    "actuator_excursion_max": ("m", "largest static offset + peak orbit over the active bearings"),
+    "actuator_load_max": ("N", "largest static + peak force over the active bearings"),
+    "safety_factor": ("1", "Tsai-Wu safety factor at the operating speed"),
+}
 
 
 def sample_outputs(model: Model, units: UnitResponses, draws: ImbalanceDraws, *, strength: bool = True,

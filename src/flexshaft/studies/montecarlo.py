@@ -43,6 +43,7 @@ import numpy as np
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.assembly.model import Model
 from flexshaft.studies.imbalance_samples import (  # re-exported here
+    BASE_OUTPUTS,
     EccentricityDistribution,
     ImbalanceDraws,
     Placement,
@@ -120,15 +121,7 @@ def montecarlo_study(design, n_samples: int, sampler: MonteCarloSampler):
         raise ValueError(f"n_samples must be >= 1, got {n_samples!r}")
     model = build_model(design)
     n_bays = max(len(imbalance_bays(model)), 1)
-    outputs = [
-        Output("shaft_peak", "m", "peak steady-state spin-up deflection over the shaft"),
-        Output("shaft_peak_speed", "rad/s", "speed of the peak deflection"),
-        Output("actuator_orbit_max", "m", "largest peak lateral relative orbit over the active bearings"),
-        Output("actuator_force_max", "N", "largest peak force over the active bearings"),
-        Output("actuator_excursion_max", "m", "largest static offset + peak orbit over the active bearings"),
-        Output("actuator_load_max", "N", "largest static + peak force over the active bearings"),
-        Output("safety_factor", "1", "Tsai-Wu safety factor at the operating speed"),
-    ]
+    outputs = [Output(name, unit, text) for name, (unit, text) in BASE_OUTPUTS.items()]
     for a in model.actuators:
         outputs += [Output(f"actuator_orbit_{a.name}", "m", f"peak lateral relative orbit at {a.name}"),
                     Output(f"actuator_force_{a.name}", "N", f"peak force at {a.name}")]
