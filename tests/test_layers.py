@@ -3,7 +3,7 @@
 Layers, bottom to top (a module may import only from its own layer or below; see
 docs/architecture.md):
 
-    0  units, _threads, netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
+    0  units, _threads, _pool, netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
     1  design (schema and I/O: a data leaf)
     2  laminate, strength, buckling, elements (physics on plain numbers)
     3  assembly
@@ -29,7 +29,7 @@ import flexshaft
 ROOT = Path(flexshaft.__file__).parent
 
 LAYERS = {
-    "units": 0, "_threads": 0, "netcdf": 0, "plot": 0,
+    "units": 0, "_threads": 0, "_pool": 0, "netcdf": 0, "plot": 0,
     "design": 1,
     "laminate": 2, "strength": 2, "buckling": 2, "elements": 2,
     "assembly": 3,

@@ -81,14 +81,42 @@ def test_wall_study_first_frequency_follows_eq_3_3():
     np.testing.assert_allclose(f.values, exact, rtol=5e-3)
 
 
-def test_design_studies_report_level_renders(coarse, tmp_path):
-    from flexshaft.report.html import render_report
-    from flexshaft.report.studies_section import design_studies_section
-    from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
+@pytest.fixture(scope="module")
+def coarse_studies(coarse):
+    from flexshaft.studies.chapter3 import design_studies
 
     labels = []
     # its run time is measured by benchmarks/studies_timing.py, not asserted here
-    res = design_studies(coarse, "report", progress=labels.append)
+    return design_studies(coarse, "report", progress=labels.append), labels
+
+
+def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, coarse_studies):
+    """The studies as independent tasks on two forked workers (how `flexshaft run` computes
+    them) give exactly the datasets and headline numbers computed in this process."""
+    from flexshaft._pool import worker_pool
+    from flexshaft.studies.chapter3 import _DATASETS, design_studies, headline
+
+    serial, _ = coarse_studies
+    with worker_pool(2, ("xarray",)) as pool:
+        if pool is None:
+            pytest.skip("no fork on this platform")
+        pooled = design_studies(coarse, "report", executor=pool)
+    for name in _DATASETS:
+        a, b = getattr(serial, name), getattr(pooled, name)
+        assert (a is None and b is None) or a.identical(b), name
+    ha, hb = headline(serial), headline(pooled)
+    for h in (ha, hb):
+        h.pop("timings_s"), h.pop("elapsed_s")
+    assert ha == hb
+    assert set(pooled.timings) == set(serial.timings)
+
+
+def test_design_studies_report_level_renders(coarse_studies, tmp_path):
+    from flexshaft.report.html import render_report
+    from flexshaft.report.studies_section import design_studies_section
+    from flexshaft.studies.chapter3 import headline, save_study_data
+
+    res, labels = coarse_studies
     assert labels and labels[0].startswith("study 1")
     # labelled datasets with units
     assert res.ply_angle["safety_factor"].attrs["units"] == "1"

@@ -65,6 +65,26 @@ def _options(
 ) -> None:
     """Global options (the app's help text is set on the Typer)."""
     settings.debug = debug
+    _one_blas_thread_per_process()
+
+
+#: BLAS libraries' thread-count variables, read when they load (with numpy).
+_BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def _one_blas_thread_per_process() -> None:
+    """One BLAS thread in the command's process and its workers, unless the user set the
+    variables: the analyses' dense solves are small (a second BLAS thread slows them on a busy
+    2-core machine, see flexshaft._threads) and the commands parallelise over processes; a
+    threaded BLAS that spins while worker processes hold the cores cost a third more CPU
+    time in ``flexshaft run`` (benchmarks/studies_timing.py). Only effective before numpy
+    loads, which the commands do lazily."""
+    import os
+    import sys
+
+    if "numpy" not in sys.modules:
+        for name in _BLAS_THREAD_VARIABLES:
+            os.environ.setdefault(name, "1")
 
 
 app.command("baseline")(baseline)

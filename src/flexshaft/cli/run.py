@@ -15,16 +15,17 @@ from flexshaft.cli.progress import StageProgress
 __all__ = ["run"]
 
 
-def _figure_processes() -> int:
-    """Worker processes that draw the report's figures: the CPUs this process may use, at most 4
-    (benchmarks/report_timing.py: 12 figures 3.9 s serial, 1.7 s on 2 processes)."""
-    import os
+#: What the worker processes import when they start, while this process computes: the
+#: figure machinery, and xarray for the studies' labelled results.
+_WARM = ("matplotlib.figure", "matplotlib.backends.backend_agg", "flexshaft.plot.driveline")
 
-    try:
-        cpus = len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        cpus = os.cpu_count() or 1
-    return max(1, min(4, cpus))
+
+def _worker_processes() -> int:
+    """Worker processes of the run: the CPUs this process may use, at most 4
+    (benchmarks/studies_timing.py measures the run with them)."""
+    from flexshaft._pool import available_cpus
+
+    return max(1, min(4, available_cpus()))
 
 
 @guarded
@@ -51,15 +52,17 @@ def run(
 
     loaded = load_design_argument(design, DEFAULT_DESIGN)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
+    from flexshaft._pool import worker_pool
     from flexshaft.report.driveline import results_json, write_run_report
     from flexshaft.studies.run import run_analysis
 
-    with StageProgress(transient=as_json) as progress:
+    warm = _WARM + (() if studies is Studies.none else ("xarray",))
+    with worker_pool(_worker_processes(), warm) as pool, StageProgress(transient=as_json) as progress:
         results = run_analysis(loaded.design, progress=progress.step,
-                               studies=None if studies is Studies.none else studies.value)
+                               studies=None if studies is Studies.none else studies.value, executor=pool)
         progress.step("writing the report")
         page = write_run_report(results, folder, design_text=loaded.text, design_source=loaded.source,
-                                timings=dict(progress.timings), svg=svg, processes=_figure_processes())
+                                timings=dict(progress.timings), svg=svg, executor=pool)
     failed = strict and results.verdict is not None and not results.verdict.passed
     data = results_json(results)
     if as_json:

@@ -17,9 +17,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from concurrent.futures import Executor
+
     from matplotlib.figure import Figure
 
-__all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_figure"]
+__all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_figure", "start_figures"]
 
 #: Resolution of the PNG files [dots per inch]. An 8 in wide report figure is 960 px, shown at
 #: 768 CSS px (96 px per inch): text of 8.5 pt is 14 px high, sharp on ordinary and on 1.25×
@@ -106,8 +108,31 @@ def _render_packed(packed) -> RenderedFigure:
     return _render(*packed)
 
 
+def _check_jobs(jobs: Sequence[FigureJob]) -> None:
+    stems = [job.stem for job in jobs]
+    duplicated = sorted({s for s in stems if stems.count(s) > 1})
+    if duplicated:
+        raise ValueError(f"jobs: figure stems must be unique, repeated: {duplicated}")
+
+
+def start_figures(jobs: Sequence[FigureJob], folder: str | Path, executor: Executor, *, svg: bool = False,
+                  dpi: float = PNG_DPI) -> Callable[[], dict[str, RenderedFigure]]:
+    """Submit every job to ``executor`` (e.g. :func:`flexshaft._pool.worker_pool`) and return
+    a function that waits for them and returns ``{stem: RenderedFigure}`` in job order: the
+    caller writes its other files while the workers draw."""
+    _check_jobs(jobs)
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    futures = [executor.submit(_render, job, folder, bool(svg), float(dpi)) for job in jobs]
+
+    def collect() -> dict[str, RenderedFigure]:
+        return {r.stem: r for r in (f.result() for f in futures)}
+
+    return collect
+
+
 def render_figures(jobs: Sequence[FigureJob], folder: str | Path, *, svg: bool = False, dpi: float = PNG_DPI,
-                   processes: int = 1) -> dict[str, RenderedFigure]:
+                   processes: int = 1, executor: Executor | None = None) -> dict[str, RenderedFigure]:
     """Draw and save every job into ``folder``; returns ``{stem: RenderedFigure}`` in job order.
 
     Parameters
@@ -123,13 +148,14 @@ def render_figures(jobs: Sequence[FigureJob], folder: str | Path, *, svg: bool =
     processes : int
         1 draws in this process; more uses that many forked worker processes (POSIX only;
         elsewhere, or for fewer than two jobs, it falls back to drawing here).
+    executor : concurrent.futures.Executor, optional
+        Draw in this pool's workers instead (``processes`` is then ignored).
     """
     if int(processes) != processes or processes < 1:
         raise ValueError(f"processes must be an integer >= 1 (got {processes!r})")
-    stems = [job.stem for job in jobs]
-    duplicated = sorted({s for s in stems if stems.count(s) > 1})
-    if duplicated:
-        raise ValueError(f"jobs: figure stems must be unique, repeated: {duplicated}")
+    if executor is not None:
+        return start_figures(jobs, folder, executor, svg=svg, dpi=dpi)()
+    _check_jobs(jobs)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     packed = [(job, folder, bool(svg), float(dpi)) for job in jobs]

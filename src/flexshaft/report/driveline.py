@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft.plot.output import FigureJob, render_figures
+from flexshaft.plot.output import FigureJob, render_figures, start_figures
 from flexshaft.report.html import FigureRef, Section, Table, write_report
 
 __all__ = ["RunReportPlan", "json_ready", "plan_run_report", "results_json", "write_run_report"]
@@ -371,7 +371,7 @@ def _orbit_mm(pair) -> float:
 
 def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date | None = None, design_text: str | None = None,
                      design_source: str = "design file", timings: dict | None = None, *, svg: bool = False,
-                     processes: int = 1) -> Path:
+                     processes: int = 1, executor=None) -> Path:
     """Write ``report.html``, the PNG figures (and SVG when ``svg``), ``results.json`` and
     ``timings.json`` into ``folder``; returns the page's path.
 
@@ -379,11 +379,18 @@ def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date |
     listed); ``design_source`` says where it came from. The verdict comes first. ``timings``
     (stage -> seconds, e.g. from the CLI's progress display) go to ``timings.json`` with the
     design studies' own, never to ``results.json``. ``processes`` > 1 draws the figures in
-    that many forked worker processes.
+    that many forked worker processes; an ``executor`` (e.g.
+    :func:`flexshaft._pool.worker_pool`) draws them in its workers while the data files are
+    written here.
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     plan = plan_run_report(res, folder, design_text, design_source)
+    if executor is not None:
+        figures_done = start_figures(plan.jobs, folder, executor, svg=svg)
+    else:
+        def figures_done():
+            return render_figures(plan.jobs, folder, svg=svg, processes=processes)
     (folder / "results.json").write_text(json.dumps(json_ready(plan.data), indent=2, allow_nan=False))
     studies_timings = getattr(res.design_studies, "timings", None) or {}
     (folder / "timings.json").write_text(json.dumps({
@@ -395,7 +402,7 @@ def write_run_report(res, folder: str | Path, generated: dt.datetime | dt.date |
         from flexshaft.studies.chapter3 import save_study_data
 
         save_study_data(res.design_studies, folder / "studies")
-    render_figures(plan.jobs, folder, svg=svg, processes=processes)
+    figures_done()
     return write_report(folder, plan.title, plan.sections, design_name=plan.design_name, generated=generated)
 
 

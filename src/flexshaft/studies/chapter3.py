@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import json
 import math
-import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
@@ -28,7 +27,8 @@ import numpy as np
 
 from flexshaft.units import rad_s_to_rpm
 
-__all__ = ["DesignStudies", "RESOLUTIONS", "THESIS", "design_studies", "headline", "nearest", "two_angle_name",
+__all__ = ["COSTS", "DesignStudies", "RESOLUTIONS", "THESIS", "design_studies", "finish_design_studies",
+           "plan_design_studies", "start_design_studies", "headline", "nearest", "two_angle_name",
            "save_study_data"]
 
 
@@ -128,8 +128,15 @@ def _reporter(progress) -> Callable[[str], None]:
     return lambda label: None
 
 
+#: Relative cost of each study (seconds measured at the "report" resolution on the tuned
+#: design, one K_p row for the stability map); it only orders the tasks on a worker pool,
+#: longest first, so that the workers finish at about the same time.
+COSTS = {"ply_angle": 1.2, "two_angle": 1.5, "wall": 2.9, "forced_response": 0.45, "gain": 0.65,
+         "buckling": 1.7, "spinup": 2.0, "stability": 0.2}
+
+
 def design_studies(design=None, resolution: str = "report", progress=None, jobs: int = 1,
-                   actuator_gap: float | None = None) -> DesignStudies:
+                   actuator_gap: float | None = None, executor=None) -> DesignStudies:
     """Run the thesis chapter-3 studies on ``design`` (default: the embedded baseline).
 
     Parameters
@@ -141,77 +148,173 @@ def design_studies(design=None, resolution: str = "report", progress=None, jobs:
         A callable is called with a short label before each study (like
         :func:`flexshaft.studies.run.run_analysis`); True shows the sweeps' progress bars.
     jobs : int
-        Local worker processes for the sweep-engine studies (1: in process; below ~5 s of
+        Local worker processes for each sweep-engine study (1: in process; below ~5 s of
         work the process start-up costs more than it saves).
     actuator_gap : float, optional
         Largest allowed actuator relative orbit during spin-up [m] when choosing the tuned
         gains (the auxiliary-bearing gap, thesis figure 3.8); None: no limit.
+    executor : concurrent.futures.Executor, optional
+        Run the studies as independent tasks on this pool (e.g.
+        :func:`flexshaft._pool.worker_pool`); the results are the same as in this process.
     """
+    res, run = start_design_studies(design, resolution, actuator_gap, executor, jobs=jobs, progress_bars=progress is True)
+    return finish_design_studies(res, run, progress)
+
+
+def start_design_studies(design=None, resolution: str = "report", actuator_gap: float | None = None, executor=None,
+                         *, jobs: int = 1, progress_bars: bool = False):
+    """Start the studies of :func:`design_studies` (on ``executor`` when given) and return
+    ``(DesignStudies, TaskRun)`` for :func:`finish_design_studies`: the caller can compute
+    something else while a pool works on them."""
+    from flexshaft.studies.tasks import start_tasks
+    from flexshaft.sweep import SweepError
+
+    res, tasks = plan_design_studies(design, resolution, actuator_gap, jobs=jobs, progress_bars=progress_bars)
+    return res, start_tasks(tasks, executor, errors=(SweepError, ValueError))
+
+
+def plan_design_studies(design=None, resolution: str = "report", actuator_gap: float | None = None, *, jobs: int = 1,
+                        progress_bars: bool = False):
+    """``(DesignStudies, tasks)``: the empty results (with the notes of the studies that do
+    not apply) and the :class:`~flexshaft.studies.tasks.Task` of each study, to start
+    together with other tasks (:func:`flexshaft.studies.tasks.start_tasks`)."""
     from flexshaft.assembly import build_model
     from flexshaft.design import baseline_design
-    from flexshaft.studies import sweeps as st
+    from flexshaft.studies.tasks import Task
 
     if resolution not in RESOLUTIONS:
         raise ValueError(f"resolution must be one of {sorted(RESOLUTIONS)}, got {resolution!r}")
     grid = RESOLUTIONS[resolution]
     design = design if design is not None else baseline_design()
-    step = _reporter(progress)
-    run = {"jobs": int(jobs), "progress": progress is True}
+    run = {"jobs": int(jobs), "progress": bool(progress_bars)}
     model = build_model(design)
     res = DesignStudies(design_name=str(design.name), resolution=resolution, operating_speed=float(model.speed),
                         actuator_gap=actuator_gap)
     laminated = model.shaft.laminate is not None
     active = bool(model.actuators) and model.all_pd
+    tasks = []
 
-    def timed(name, label, func, *args, **kw):
-        step(label)
-        t0 = time.perf_counter()
-        try:
-            return func(*args, **kw)
-        finally:
-            res.timings[name] = time.perf_counter() - t0
+    def task(key, label, function, *args):
+        tasks.append(Task(key, label, function, args, cost=COSTS[key.partition(":")[0]]))
 
     if laminated:
-        ds = timed("ply_angle", "study 1: ply angle", st.ply_angle_study, grid["angles"], design=design, **run)
-        res.ply_angle = ds
-        i = int(np.nanargmax(ds["safety_factor"].values))
-        res.optimal_angle = float(ds.alpha.values[i])
-        res.optimal_angle_safety_factor = float(ds["safety_factor"].values[i])
-        a = grid["two_angles"]
-        ds = timed("two_angle", "study 2: two-angle map", st.two_angle_study, a, a, design=design, **run)
-        res.two_angle = ds
-        i, j = np.unravel_index(int(np.nanargmax(ds["safety_factor"].values)), ds["safety_factor"].shape)
-        res.best_two_angle = (float(ds.alpha.values[i]), float(ds.beta.values[j]))
-        res.best_two_angle_safety_factor = float(ds["safety_factor"].values[i, j])
+        task("ply_angle", "study 1: ply angle", _ply_angle_task, design, grid["angles"], run)
+        task("two_angle", "study 2: two-angle map", _two_angle_task, design, grid["two_angles"], run)
     else:
         res.notes.append("ply-angle studies skipped: the shaft material is not a lamina")
-
-    ds = timed("wall", "study 3: wall thickness", st.wall_thickness_study, grid["walls"], design=design, **run)
-    res.wall = ds
-    if laminated:
-        sf = ds["safety_factor"].values
-        i = int(np.nanargmax(sf))
-        res.best_wall, res.best_wall_safety_factor = float(ds.wall_thickness.values[i]), float(sf[i])
-        if i in (0, sf.size - 1):
-            res.notes.append(f"the best wall ({res.best_wall * 1e3:g} mm) is at the end of the range studied: "
-                             "the safety factor is monotonic there")
-    res.forced_response = timed("forced_response", "study 3: forced response", _forced_response, design,
-                                FORCED_WALLS, grid["forced_speeds"])
-
+    task("wall", "study 3: wall thickness", _wall_task, design, grid["walls"], run, laminated)
+    task("forced_response", "study 3: forced response", _forced_response_task, design, FORCED_WALLS,
+         grid["forced_speeds"])
     if laminated and active and _both_actuators(design):
-        res.gain = timed("gain", "study 4: proportional gain", st.proportional_gain_study, grid["kp"], design=design, **run)
+        task("gain", "study 4: proportional gain", _gain_task, design, grid["kp"], run)
     elif laminated:
         res.notes.append("the K_p study needs the baseline's two active bearings (design bearings 1 and 2)")
     if laminated:
-        res.buckling = timed("buckling", "study 5: torsional buckling", st.buckling_study, grid["walls"],
-                             design=design, **run)
-
+        task("buckling", "study 5: torsional buckling", _buckling_task, design, grid["walls"], run)
     if active:
-        timed("spinup", "study 6: spin-up gain map", _spinup_studies, res, model, grid)
-        timed("stability", "stability margin map", _stability_map, res, design, model, grid)
+        task("spinup", "study 6: spin-up gain map", _spinup_task, design, grid, actuator_gap)
+        for i, kp in enumerate(grid["stab_kp"]):  # one task per K_p row: the pool balances better
+            task(f"stability:{i}", "stability margin map", _stability_row_task, design, grid, kp)
     else:
         res.notes.append("spin-up and stability maps need PD active bearings; skipped")
+    return res, tasks
+
+
+def finish_design_studies(res: DesignStudies, run, progress=None) -> DesignStudies:
+    """Wait for the studies started by :func:`start_design_studies` and fill ``res``.
+
+    A study that cannot run on the design (a :class:`~flexshaft.sweep.SweepError` or
+    ``ValueError``) is left None with the reason in ``res.notes``.
+    """
+    outcomes = run.results(_reporter(progress))
+    rows, failed = [], set()
+    for task in run.tasks:
+        outcome = outcomes[task.key]
+        name = task.key.partition(":")[0]
+        res.timings[name] = res.timings.get(name, 0.0) + outcome.seconds
+        if outcome.error is not None:
+            if task.label not in failed:
+                res.notes.append(f"{task.label} skipped: {str(outcome.error).splitlines()[0]}")
+            failed.add(task.label)
+            continue
+        fields = dict(outcome.value)
+        res.notes.extend(fields.pop("notes", []))
+        rows.extend(fields.pop("stability_rows", []))
+        for field_name, value in fields.items():
+            setattr(res, field_name, value)
+    if rows and "stability margin map" not in failed:
+        from flexshaft.studies.whirl import stack_maps
+
+        res.stability_map = _stability_dataset(stack_maps(rows))
     return res
+
+
+def _ply_angle_task(design, angles, run) -> dict:
+    from flexshaft.studies.sweeps import ply_angle_study
+
+    ds = ply_angle_study(angles, design=design, **run)
+    i = int(np.nanargmax(ds["safety_factor"].values))
+    return {"ply_angle": ds, "optimal_angle": float(ds.alpha.values[i]),
+            "optimal_angle_safety_factor": float(ds["safety_factor"].values[i])}
+
+
+def _two_angle_task(design, angles, run) -> dict:
+    from flexshaft.studies.sweeps import two_angle_study
+
+    ds = two_angle_study(angles, angles, design=design, **run)
+    i, j = np.unravel_index(int(np.nanargmax(ds["safety_factor"].values)), ds["safety_factor"].shape)
+    return {"two_angle": ds, "best_two_angle": (float(ds.alpha.values[i]), float(ds.beta.values[j])),
+            "best_two_angle_safety_factor": float(ds["safety_factor"].values[i, j])}
+
+
+def _wall_task(design, walls, run, laminated: bool) -> dict:
+    from flexshaft.studies.sweeps import wall_thickness_study
+
+    ds = wall_thickness_study(walls, design=design, **run)
+    out = {"wall": ds}
+    if laminated:
+        sf = ds["safety_factor"].values
+        i = int(np.nanargmax(sf))
+        out["best_wall"], out["best_wall_safety_factor"] = float(ds.wall_thickness.values[i]), float(sf[i])
+        if i in (0, sf.size - 1):
+            out["notes"] = [f"the best wall ({out['best_wall'] * 1e3:g} mm) is at the end of the range studied: "
+                            "the safety factor is monotonic there"]
+    return out
+
+
+def _forced_response_task(design, walls, n_speeds) -> dict:
+    return {"forced_response": _forced_response(design, walls, n_speeds)}
+
+
+def _gain_task(design, kps, run) -> dict:
+    from flexshaft.studies.sweeps import proportional_gain_study
+
+    return {"gain": proportional_gain_study(kps, design=design, **run)}
+
+
+def _buckling_task(design, walls, run) -> dict:
+    from flexshaft.studies.sweeps import buckling_study
+
+    return {"buckling": buckling_study(walls, design=design, **run)}
+
+
+def _spinup_task(design, grid, actuator_gap) -> dict:
+    from flexshaft.assembly import build_model
+
+    model = build_model(design)
+    res = DesignStudies(design_name=str(design.name), resolution="", operating_speed=float(model.speed),
+                        actuator_gap=actuator_gap)
+    _spinup_studies(res, model, grid)
+    names = ("spinup_map", "gains_before", "gains_after", "surfaces", "tuned", "peak_before", "peak_after",
+             "peak_speed_before", "peak_speed_after")
+    return {name: getattr(res, name) for name in names}
+
+
+def _stability_row_task(design, grid, kp: float) -> dict:
+    from flexshaft.studies.whirl import gain_stability_map
+
+    speeds = np.linspace(0.0, 1.5 * max(design.operating.speed_rad_s, 1.0), grid["stab_speeds"])
+    return {"stability_rows": [gain_stability_map(design, [kp], grid["stab_kd"], speeds, n_modes=8)]}
 
 
 def _both_actuators(design) -> bool:
@@ -345,14 +448,11 @@ def _spinup_studies(res: DesignStudies, model, grid) -> None:
     )
 
 
-def _stability_map(res: DesignStudies, design, model, grid) -> None:
+def _stability_dataset(smap) -> Any:
+    """The stability margin map (a :class:`~flexshaft.studies.whirl.StabilityMap`) as a Dataset."""
     import xarray as xr
 
-    from flexshaft.studies.whirl import gain_stability_map
-
-    speeds = np.linspace(0.0, 1.5 * max(model.speed, 1.0), grid["stab_speeds"])
-    smap = gain_stability_map(design, grid["stab_kp"], grid["stab_kd"], speeds, n_modes=8)
-    res.stability_map = xr.Dataset(
+    return xr.Dataset(
         {"onset_speed": (("kp", "kd"), smap.onset_speed, {"units": "rad/s", "long_name": "whirl onset speed (NaN: stable)"}),
          "damping_ratio": (("kp", "kd"), smap.margin_at_operating,
                            {"units": "1", "long_name": "smallest damping ratio at the operating speed"})},

@@ -69,7 +69,7 @@ class RunResults:
 
 
 def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
-                 studies: str | None = "report") -> RunResults:
+                 studies: str | None = "report", executor=None) -> RunResults:
     """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength,
     buckling, thermal, whirl stability, and the verdict against the design's ``[requirements]``.
 
@@ -85,6 +85,9 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
     studies : {"report", "full"} or None
         Resolution of the thesis design studies (chapter 3, and the whirl comparison of
         chapter 4); None skips them.
+    executor : concurrent.futures.Executor, optional
+        A pool (e.g. :func:`flexshaft._pool.worker_pool`) that computes the studies while
+        this process computes the design's own analyses; the results do not depend on it.
     """
     from flexshaft.assembly.size import check_problem_size
 
@@ -94,35 +97,27 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
     model = build_model(design)
     speed = model.speed
     top = max(speed, 1.0)
+    speeds = np.linspace(SCAN_BOTTOM, SCAN_TOP, n_speeds) * top
+    # The design's own analyses that do not need each other, as tasks: on a pool they run in
+    # its workers while this process computes the rest (the results do not depend on where).
+    own = _start_own_analyses(design, model, speeds, n_campbell, executor)
+    started = _start_studies(design, model, studies, executor) if studies else None
     step("natural frequencies")
     m0 = modes(model, 0.0, 10)
     mw = modes(model, speed, 10)
-    step("Campbell diagram")
-    camp = campbell(model, np.linspace(0.0, SCAN_TOP * top, n_campbell), n_modes=12)
-    step("imbalance response over speed")
-    speeds = np.linspace(SCAN_BOTTOM, SCAN_TOP, n_speeds) * top
-    Q1 = imbalance_loads(model)
-    q = imbalance_response(model, speeds, Q1)  # (ndof, ncases, nspeeds)
-    amp, case = worst_case_orbits(model, q)
-    idx = np.arange(speeds.size)
-    q_worst = q[:, case, idx]
-    envelope = amp[:, case, idx]
-    disp, force = actuator_response(model, q_worst, speeds)
     step("static loads and strength")
+    Q1 = imbalance_loads(model)
     parts = static_load_parts(model)
     q_static = parts["external"] + parts["torque"]
     q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
     reactions = bearing_reactions(model, q_static, q_at_speed)
     strength_static = strength_total = None
     notes = []
-    buckling = None
     if model.shaft.laminate is not None:
         strength_static = shaft_safety_factor(model, parts)
         totals = [shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=True)
                   for c in range(q_at_speed.shape[1])]
         strength_total = min(totals, key=lambda r: r.safety_factor)
-        step("torsional buckling")
-        buckling = shaft_buckling(model).to_dict()
     elif design.segmented:
         notes.append("ply strength and laminated-shell buckling assume one laminated tube; the shaft is segmented")
     else:
@@ -133,31 +128,14 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         metal = metal_strength(model, q_static, q_at_speed)
     if model.couplings:
         misalignment = coupling_misalignment(model, q_static, q_at_speed)
-    step("thermal")
-    thermal = None
-    if model.shaft.laminate is not None:
-        from flexshaft.studies.thermal import thermal_results
-
-        thermal = thermal_results(design, model, self_heat=True)
-    else:
+    if model.shaft.laminate is None:
         notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
-    step("whirl stability")
-    from flexshaft.analyses.stability import stability
-
-    stab = stability(model, whirl_speeds(model), n_modes=10)
-    comparison, gmap = {}, None
-    design_studies_result = None
-    if studies:
-        step("whirl studies (thesis chapter 4)")
-        comparison, gmap = _whirl_studies(design, model, notes)
-        step("design studies (thesis chapter 3)")
-        from flexshaft.studies.chapter3 import design_studies
-        from flexshaft.sweep import SweepError
-
-        try:
-            design_studies_result = design_studies(design, studies, progress=lambda label: step(f"design studies: {label}"))
-        except (SweepError, ValueError) as exc:
-            notes.append(f"design studies skipped: {str(exc).splitlines()[0]}")
+    done = {key: outcome.value for key, outcome in own.results(step).items()}
+    camp, buckling, thermal, stab = done["campbell"], done.get("buckling"), done.get("thermal"), done["stability"]
+    q, amp, envelope, disp, force = done["imbalance"]
+    comparison, gmap, design_studies_result = {}, None, None
+    if started is not None:
+        comparison, gmap, design_studies_result = _finish_studies(started, notes, step)
     results = RunResults(
         model=model,
         summary=model_summary(model),
@@ -201,21 +179,120 @@ def whirl_speeds(model: Model) -> np.ndarray:
     return np.linspace(0.0, 1.5 * max(model.speed, 1.0), 41)
 
 
-def _whirl_studies(design, model: Model, notes: list):
-    """The thesis's three-shaft comparison (viscous and hysteretic) and the (K_p, K_d) onset map."""
+def _start_own_analyses(design, model: Model, speeds: np.ndarray, n_campbell: int, executor):
+    """Campbell diagram, spin-up imbalance response, torsional buckling, thermal and whirl
+    stability of the design, as tasks (on ``executor`` when given)."""
+    from flexshaft.studies.tasks import Task, start_tasks
+
+    top = max(model.speed, 1.0)
+    tasks = [Task("imbalance", "imbalance response over speed", _spinup_response, (design, speeds), cost=0.4),
+             Task("campbell", "Campbell diagram", _campbell, (design, np.linspace(0.0, SCAN_TOP * top, n_campbell)),
+                  cost=0.15)]
+    if model.shaft.laminate is not None:
+        tasks.append(Task("buckling", "torsional buckling", _buckling, (design,), cost=0.3))
+        tasks.append(Task("thermal", "thermal", _thermal, (design,), cost=0.25))
+    tasks.append(Task("stability", "whirl stability", _stability, (design,), cost=0.2))
+    return start_tasks(tasks, executor)
+
+
+def _spinup_response(design, speeds):
+    """Worst-case imbalance response over ``speeds``: (q, orbits, worst envelope, actuator
+    displacement and force)."""
+    model = build_model(design)
+    q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
+    amp, case = worst_case_orbits(model, q)
+    idx = np.arange(speeds.size)
+    envelope = amp[:, case, idx]
+    disp, force = actuator_response(model, q[:, case, idx], speeds)
+    return q, amp, envelope, disp, force
+
+
+def _campbell(design, speeds):
+    return campbell(build_model(design), speeds, n_modes=12)
+
+
+def _buckling(design):
+    return shaft_buckling(build_model(design)).to_dict()
+
+
+def _thermal(design):
+    from flexshaft.studies.thermal import thermal_results
+
+    return thermal_results(design, build_model(design), self_heat=True)
+
+
+def _stability(design):
+    from flexshaft.analyses.stability import stability
+
+    model = build_model(design)
+    return stability(model, whirl_speeds(model), n_modes=10)
+
+
+def _start_studies(design, model: Model, resolution: str, executor):
+    """Start the thesis studies as tasks (on ``executor`` when given): the three-shaft whirl
+    comparison (viscous and hysteretic), the (K_p, K_d) onset map and the chapter-3 studies."""
     from flexshaft.design import DesignError
-    from flexshaft.studies.whirl import compare_shafts, gain_stability_map
+    from flexshaft.studies.chapter3 import plan_design_studies
+    from flexshaft.studies.tasks import Task, start_tasks
+    from flexshaft.studies.whirl import gain_stability_map, shaft_stability, thesis_shaft_designs
+    from flexshaft.sweep import SweepError
 
     speeds = whirl_speeds(model)
-    comparison = {}
+    notes, tasks = [], []
     try:
-        viscous = compare_shafts(design, speeds, "viscous", n_modes=8)
-        hysteretic = compare_shafts(design, speeds, "hysteretic", n_modes=8)
-        comparison = {k: {"viscous": viscous[k], "hysteretic": hysteretic[k]} for k in viscous}
+        shafts = thesis_shaft_designs(design)
     except (DesignError, ValueError) as exc:
         notes.append(f"thesis shaft comparison skipped: {str(exc).splitlines()[0]}")
-    gmap = None
+        shafts = {}
+    for damping in ("viscous", "hysteretic"):
+        for label, shaft in shafts.items():
+            tasks.append(Task(f"whirl/{damping}:{label}", f"whirl of the {label} shaft ({damping})", shaft_stability,
+                              (shaft, speeds, damping, 8), cost=0.16))
     if model.actuators and model.all_pd:
         kp0 = model.actuators[0].controller.kp
-        gmap = gain_stability_map(design, [kp0 / 30, kp0 / 5, kp0], [0.0, 300.0, 1000.0, 3000.0], speeds, n_modes=8)
-    return comparison, gmap
+        for i, kp in enumerate((kp0 / 30, kp0 / 5, kp0)):
+            tasks.append(Task(f"whirl/gain_map:{i}", "whirl onset over the actuator gains", gain_stability_map,
+                              (design, [kp], [0.0, 300.0, 1000.0, 3000.0], speeds), {"n_modes": 8}, cost=0.45))
+    whirl_keys = [t.key for t in tasks]
+    chapter3 = None
+    try:
+        chapter3, chapter3_tasks = plan_design_studies(design, resolution)
+        tasks += chapter3_tasks
+    except (SweepError, ValueError) as exc:
+        notes.append(f"design studies skipped: {str(exc).splitlines()[0]}")
+    # one submission, the longest tasks first, so that the workers finish together
+    run = start_tasks(tasks, executor, errors=(DesignError, ValueError))
+    whirl = run.part(whirl_keys)
+    if chapter3 is not None:
+        chapter3 = (chapter3, run.part(set(t.key for t in tasks) - set(whirl_keys)))
+    return whirl, chapter3, notes
+
+
+def _finish_studies(started, notes: list, step):
+    """Wait for the studies of :func:`_start_studies`: (shaft comparison, gain map, chapter 3)."""
+    from flexshaft.studies.chapter3 import finish_design_studies
+    from flexshaft.studies.whirl import stack_maps
+
+    whirl, chapter3, start_notes = started
+    notes.extend(start_notes)
+    step("whirl studies (thesis chapter 4)")
+    outcomes = whirl.results()
+    failed = [o.error for o in outcomes.values() if o.error is not None and not o.key.startswith("whirl/gain_map")]
+    comparison = {}
+    if failed:
+        notes.append(f"thesis shaft comparison skipped: {str(failed[0]).splitlines()[0]}")
+    else:
+        for key, outcome in outcomes.items():
+            damping, _, label = key.removeprefix("whirl/").partition(":")
+            if damping in ("viscous", "hysteretic"):
+                comparison.setdefault(label, {})[damping] = outcome.value
+    rows = [o for k, o in outcomes.items() if k.startswith("whirl/gain_map")]
+    for o in rows:
+        if o.error is not None:
+            raise o.error
+    gmap = stack_maps([o.value for o in rows]) if rows else None
+    design_studies_result = None
+    if chapter3 is not None:
+        step("design studies (thesis chapter 3)")
+        design_studies_result = finish_design_studies(*chapter3, progress=lambda label: step(f"design studies: {label}"))
+    return comparison, gmap, design_studies_result

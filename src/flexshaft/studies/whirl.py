@@ -18,7 +18,8 @@ from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
 
-__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "StabilityMap", "gain_stability_map"]
+__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "shaft_stability", "StabilityMap",
+           "gain_stability_map", "stack_maps"]
 
 #: (label, overrides) of the thesis figure 4.2-4.4 shafts; the wall and D_o stay the design's.
 THESIS_SHAFTS = (
@@ -38,9 +39,15 @@ def compare_shafts(design, speeds, damping_model: str = "hysteretic", n_modes: i
                    reference_frequency: float | None = None) -> dict[str, StabilityResult]:
     """Stability of each thesis shaft over ``speeds`` [rad/s]."""
     return {
-        label: stability(build_model(d), speeds, n_modes, damping_model, reference_frequency)
+        label: shaft_stability(d, speeds, damping_model, n_modes, reference_frequency)
         for label, d in thesis_shaft_designs(design).items()
     }
+
+
+def shaft_stability(design, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
+                    reference_frequency: float | None = None) -> StabilityResult:
+    """Stability of one design over ``speeds`` [rad/s] (one task of :func:`compare_shafts`)."""
+    return stability(build_model(design), speeds, n_modes, damping_model, reference_frequency)
 
 
 @dataclass(frozen=True)
@@ -80,3 +87,17 @@ def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str 
                 onset[i, j] = res.onset_speed
             margin[i, j] = res.stability_margin[int(np.argmin(np.abs(speeds - model.speed)))]
     return StabilityMap(np.asarray(kp_values, float), np.asarray(kd_values, float), onset, margin, float(speeds[-1]))
+
+
+def stack_maps(rows) -> StabilityMap:
+    """One map from maps over the same K_d values and speeds, each over its own K_p values
+    (e.g. one :func:`gain_stability_map` per K_p, computed in parallel), in the given order."""
+    rows = list(rows)
+    if not rows:
+        raise ValueError("stack_maps: no map given")
+    kd, top = rows[0].kd, rows[0].max_speed
+    for row in rows[1:]:
+        if row.kd.shape != kd.shape or not np.array_equal(row.kd, kd) or row.max_speed != top:
+            raise ValueError("stack_maps: the maps must share their K_d values and top speed")
+    return StabilityMap(np.concatenate([r.kp for r in rows]), kd.copy(), np.vstack([r.onset_speed for r in rows]),
+                        np.vstack([r.margin_at_operating for r in rows]), top)

@@ -1,0 +1,127 @@
+"""Independent tasks on a pool of forked workers (``flexshaft run``'s parallel stages): the same
+results as in this process, errors kept or raised as declared, and the pool's own contract."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from flexshaft._pool import worker_pool
+from flexshaft.studies.tasks import Task, start_tasks
+
+needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="the pool needs fork")
+
+
+def _square(x):
+    return x * x, os.getpid()
+
+
+def _refuse(x):
+    raise ValueError(f"refused {x}")
+
+
+def _broken(x):
+    raise KeyError(x)
+
+
+def test_one_process_gives_no_pool():
+    with worker_pool(1) as pool:
+        assert pool is None
+    with pytest.raises(ValueError, match="processes"):
+        with worker_pool(0):
+            pass
+
+
+@needs_fork
+def test_tasks_run_in_workers_and_come_back_in_task_order():
+    tasks = [Task(f"t{k}", f"task {k}", _square, (k,), cost=float(k)) for k in range(6)]
+    with worker_pool(2) as pool:
+        outcomes = start_tasks(tasks, pool).results()
+    assert list(outcomes) == [t.key for t in tasks]  # task order, although submitted longest first
+    assert [o.value[0] for o in outcomes.values()] == [k * k for k in range(6)]
+    assert {o.value[1] for o in outcomes.values()} - {os.getpid()}, "nothing ran in a worker"
+    assert all(o.error is None and o.seconds >= 0 for o in outcomes.values())
+
+
+@pytest.mark.parametrize("pooled", [False, pytest.param(True, marks=needs_fork)])
+def test_declared_errors_are_kept_and_others_raised(pooled):
+    with worker_pool(2 if pooled else 1) as pool:
+        out = start_tasks([Task("a", "a", _square, (3,)), Task("b", "b", _refuse, (4,))], pool,
+                          errors=(ValueError,)).results()
+        assert out["a"].value[0] == 9 and out["a"].error is None
+        assert isinstance(out["b"].error, ValueError) and "refused 4" in str(out["b"].error)
+        with pytest.raises(KeyError):
+            start_tasks([Task("c", "c", _broken, (1,))], pool, errors=(ValueError,)).results()
+
+
+def test_task_keys_must_be_unique():
+    with pytest.raises(ValueError, match="unique"):
+        start_tasks([Task("a", "a", _square, (1,)), Task("a", "b", _square, (2,))])
+
+
+@needs_fork
+def test_a_design_error_crosses_the_process_boundary_intact():
+    from flexshaft.design import DesignError, baseline_design, with_overrides
+
+    bad = {"bearings[1].kp": -1.0}
+    with worker_pool(2) as pool:
+        out = start_tasks([Task("d", "d", with_overrides, (baseline_design(), bad))], pool,
+                          errors=(DesignError,)).results()
+    err = out["d"].error
+    assert isinstance(err, DesignError) and err.problems and err.problems[0].path.startswith("bearings[1]")
+
+
+def test_stacked_single_row_maps_equal_the_map_in_one_call():
+    """The run computes the (K_p, K_d) onset map one K_p row per task: stacking the rows gives
+    the map computed in one call (each row is an independent model and modal basis)."""
+    from flexshaft.design import baseline_design, with_overrides
+    from flexshaft.studies.whirl import gain_stability_map, stack_maps
+
+    design = with_overrides(baseline_design(), {"mesh.shaft_elements": 18, "mesh.boom_elements": 12})
+    speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, 9)
+    kp, kd = [3e5, 1e7], [0.0, 1170.0]
+    whole = gain_stability_map(design, kp, kd, speeds, n_modes=6)
+    rows = stack_maps([gain_stability_map(design, [k], kd, speeds, n_modes=6) for k in kp])
+    np.testing.assert_array_equal(rows.kp, whole.kp)
+    np.testing.assert_array_equal(rows.onset_speed, whole.onset_speed)
+    np.testing.assert_array_equal(rows.margin_at_operating, whole.margin_at_operating)
+    with pytest.raises(ValueError, match="K_d"):
+        stack_maps([whole, gain_stability_map(design, [1e6], [0.0], speeds, n_modes=6)])
+
+
+@needs_fork
+def test_run_analysis_on_a_pool_equals_the_run_in_process():
+    """`flexshaft run` computes the design's analyses as tasks on its worker pool: the numbers
+    (results.json) are exactly those of the run in one process."""
+    from flexshaft.design import baseline_design, with_overrides
+    from flexshaft.report.driveline import json_ready, results_json
+    from flexshaft.studies.run import run_analysis
+
+    design = with_overrides(baseline_design(), {"mesh.shaft_elements": 18, "mesh.boom_elements": 12})
+    serial = run_analysis(design, n_speeds=101, n_campbell=11, studies=None)
+    with worker_pool(2) as pool:
+        pooled = run_analysis(design, n_speeds=101, n_campbell=11, studies=None, executor=pool)
+
+    def text(res):
+        return json.dumps(json_ready(results_json(res)), sort_keys=True)
+
+    assert text(serial) == text(pooled)
+    np.testing.assert_array_equal(np.asarray(serial.imbalance_spinup), np.asarray(pooled.imbalance_spinup))
+
+
+def test_cli_sets_one_blas_thread_unless_the_user_chose():
+    """The CLI limits BLAS to one thread per process (it parallelises over processes) but
+    keeps a value the user set."""
+    code = ("import os, sys; from flexshaft.cli import _one_blas_thread_per_process as f; f(); "
+            "print(os.environ['OPENBLAS_NUM_THREADS'], os.environ['MKL_NUM_THREADS'])")
+    env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["1", "1"]
+    out = subprocess.run([sys.executable, "-c", code], env={**env, "OPENBLAS_NUM_THREADS": "2"},
+                         capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["2", "1"]
