@@ -118,10 +118,22 @@ class BandedHarmonicSolver:
         self.actuators = model.actuators
         self.internal_damping = model.internal_damping
         self.default_speed = model.speed
-        self._buffer = np.zeros((2 * self.kl + self.ku + 1, n), dtype=complex, order="F")
+        ldab = 2 * self.kl + self.ku + 1
+        self._buffer = np.zeros((ldab, n), dtype=complex, order="F")
+        # the buffer's memory as one vector (a view: it is Fortran-contiguous) and each pattern
+        # entry's place in it: a scatter into contiguous memory, not through a strided iterator
+        self._buffer_memory = self._buffer.reshape(-1, order="F")
+        self._memory_index = (self.kl + self.ku + self._rows - self._cols) + self._cols * ldab
         self._names = list(self.data)
         self._stack = np.array([self.data[name] for name in self._names])  # (n_terms, nnz)
         self._slot = {name: k for k, name in enumerate(self._names)}
+        # Every stored term is real (mass, stiffness, damping, loss and feedback patterns; the
+        # complex weights carry the frequency dependence): Z's values are then one real
+        # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
+        # half the bytes of a complex stack.
+        self._real_stack = None
+        if not np.any(self._stack.imag):
+            self._real_stack = np.ascontiguousarray(self._stack.real.T)  # (nnz, n_terms)
 
     @property
     def bandwidth(self) -> int:
@@ -150,7 +162,12 @@ class BandedHarmonicSolver:
 
     def matrix_data(self, omega: float, speed: float) -> np.ndarray:
         """Values of Z(ω, Ω) on the shared pattern (permuted ordering)."""
-        return self.coefficients(omega, speed) @ self._stack
+        w = self.coefficients(omega, speed)
+        if self._real_stack is None:
+            return w @ self._stack
+        out = np.empty(self._real_stack.shape[0], dtype=complex)
+        np.matmul(self._real_stack, np.stack([w.real, w.imag], axis=1), out=out.view(np.float64).reshape(-1, 2))
+        return out
 
     def matrix(self, omega: float, speed: float) -> np.ndarray:
         """Band storage of Z(ω, Ω) in the ``zgbtrf`` layout (2 kl + ku + 1, n)."""
@@ -183,7 +200,7 @@ class BandedHarmonicSolver:
         data = self.matrix_data(omega, speed)
         ab = self._buffer
         ab.fill(0.0)
-        ab.flat[self._band_index] = data
+        self._buffer_memory[self._memory_index] = data
         lu, piv, info = lapack.zgbtrf(ab, self.kl, self.ku, overwrite_ab=True)
         if info > 0:
             self._singular(omega, speed, None)
