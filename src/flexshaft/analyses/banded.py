@@ -9,8 +9,8 @@ collocated bearing (B_s = B_a) adds ``(G_a(iω) − k_s) B_aᵀB_a`` on one symm
 The free DOFs are renumbered once by reverse Cuthill-McKee on the union sparsity of every term;
 shaft and boom nodes at the same station then sit together and the bandwidth stays small
 (≈ 20 for the baseline). Every term is stored once as the data of one shared sparse pattern,
-so ``Z`` at a new (ω, Ω) is a few vector operations on ``nnz`` numbers, scattered into LAPACK
-band storage, factorised by ``zgbtrf`` and solved by ``zgbtrs``: O(n b²) per point.
+so ``Z`` at a new (ω, Ω) is one real product over ``nnz`` numbers, scattered into LAPACK band
+storage, factorised and solved by ``zgbsv``: O(n b²) per point.
 
 Singularity (an undamped system excited at one of its resonances) is detected without a
 per-point condition estimate: when the factor's pivots span more than :data:`PIVOT_SCREEN`,
@@ -166,7 +166,8 @@ class BandedHarmonicSolver:
         if self._real_stack is None:
             return w @ self._stack
         out = np.empty(self._real_stack.shape[0], dtype=complex)
-        np.matmul(self._real_stack, np.stack([w.real, w.imag], axis=1), out=out.view(np.float64).reshape(-1, 2))
+        # a complex vector's memory is its (real, imaginary) pairs: w as (n_terms, 2) reals, and out
+        np.matmul(self._real_stack, w.view(np.float64).reshape(-1, 2), out=out.view(np.float64).reshape(-1, 2))
         return out
 
     def matrix(self, omega: float, speed: float) -> np.ndarray:
@@ -192,24 +193,33 @@ class BandedHarmonicSolver:
             When ω, Ω or the right-hand side is not finite, or ω < 0.
         """
         speed = self.default_speed if speed is None else speed
-        if not (np.isfinite(omega) and np.isfinite(speed)):
-            raise ValueError(f"frequency and speed must be finite (got ω = {omega!r}, Ω = {speed!r})")
+        return next(self.sweep([(omega, speed)], rhs))
+
+    def sweep(self, points, rhs: np.ndarray):
+        """Yield the free-DOF solution at each (ω, Ω) of ``points`` for one right-hand side
+        ``rhs`` (n_free,) or (n_free, k), checked and reordered once (see :meth:`solve`)."""
         b = np.asarray(rhs, dtype=complex)
         if not np.all(np.isfinite(b)):
             raise ValueError("the load vector contains NaN or inf")
+        bp = np.asfortranarray(b[self.perm])
+        for omega, speed in points:
+            if not (np.isfinite(omega) and np.isfinite(speed)):
+                raise ValueError(f"frequency and speed must be finite (got ω = {omega!r}, Ω = {speed!r})")
+            yield self._solve_permuted(omega, speed, bp)[self.inverse]
+
+    def _solve_permuted(self, omega: float, speed: float, bp: np.ndarray) -> np.ndarray:
+        """Z(ω, Ω) x = bp in the solver's ordering: one ``zgbsv`` (band LU and solve)."""
         data = self.matrix_data(omega, speed)
         ab = self._buffer
         ab.fill(0.0)
         self._buffer_memory[self._memory_index] = data
-        lu, piv, info = lapack.zgbtrf(ab, self.kl, self.ku, overwrite_ab=True)
+        lu, piv, x, info = lapack.zgbsv(self.kl, self.ku, ab, bp, overwrite_ab=True, overwrite_b=False)
         if info > 0:
             self._singular(omega, speed, None)
-        bp = b[self.perm]
-        x, _ = lapack.zgbtrs(lu, self.kl, self.ku, bp, piv)
         pivots = np.abs(lu[self.kl + self.ku])
         if not np.all(np.isfinite(x)) or pivots.min() < PIVOT_SCREEN * pivots.max():
             x = self._refine(data, lu, piv, bp, x, omega, speed)
-        return x[self.inverse]
+        return x
 
     def _refine(self, data, lu, piv, b, x, omega, speed):
         """Iterative refinement (at most :data:`REFINEMENT_STEPS` steps): returns the refined

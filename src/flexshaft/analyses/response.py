@@ -182,9 +182,16 @@ def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None
     solver = solver or solver_for(model)
     Q = np.asarray(loads)
     rhs = Q[solver.free].astype(complex)
+    points = list(points)
+    # solutions side by side in contiguous memory, one point after the other, then moved to
+    # the trailing point axis at once: writing each point's column into (ndof, ..., npoints)
+    # touches one cache line per DOF and cost 0.35 ms a point at 800 elements
+    solutions = np.empty((len(points),) + rhs.shape, dtype=complex)
+    for k, x in enumerate(solver.sweep([(omega, speed) for omega, speed, _ in points], rhs)):
+        solutions[k] = x
+    solutions *= np.array([scale for _, _, scale in points], dtype=float).reshape((-1,) + (1,) * rhs.ndim)
     out = np.zeros(Q.shape + (len(points),), dtype=complex)
-    for k, (omega, speed, scale) in enumerate(points):
-        out[solver.free, ..., k] = scale * solver.solve(omega, rhs, speed)
+    out[solver.free] = np.moveaxis(solutions, 0, -1)
     return out
 
 

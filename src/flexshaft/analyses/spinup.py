@@ -176,8 +176,7 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     sensor_receptance = None if collocated else np.empty((speeds.size, n_b, n_b), complex)
     full = np.zeros((dm.size, rhs.shape[1]), complex)
     Bf = B[:, free]
-    for k, speed in enumerate(speeds):
-        x = solver.solve(speed, rhs, speed)
+    for k, (speed, x) in enumerate(zip(speeds, solver.sweep([(s, s) for s in speeds], rhs))):
         x[:, :n_cases] *= speed * speed
         full[free] = x
         shaft_free[k] = full[rows, :n_cases]
