@@ -26,12 +26,14 @@ is regular but has rcond ≈ 5e-14 from its mesh alone.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import scipy.sparse as sp
 from scipy.linalg import lapack
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
-from flexshaft.analyses.loss import frequency_coefficients
+from flexshaft.analyses.loss import frequency_coefficient_arrays, frequency_coefficients
 from flexshaft.assembly.model import Model
 
 __all__ = ["SingularSystemError", "BandedHarmonicSolver", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
@@ -160,9 +162,34 @@ class BandedHarmonicSolver:
                 w[slot[f"A{k}"]] = -a.negative_stiffness
         return w
 
-    def matrix_data(self, omega: float, speed: float) -> np.ndarray:
-        """Values of Z(ω, Ω) on the shared pattern (permuted ordering)."""
-        w = self.coefficients(omega, speed)
+    def coefficient_table(self, omegas, speeds) -> np.ndarray:
+        """:meth:`coefficients` at many points: (n_points, n_terms), the same numbers, computed
+        array-wise once per sweep instead of term by term at every point."""
+        omegas = np.asarray(omegas, dtype=float)
+        speeds = np.asarray(speeds, dtype=float)
+        fixed, lateral, circulatory = frequency_coefficient_arrays(self.internal_damping, omegas, speeds)
+        slot = self._slot
+        w = np.zeros((omegas.size, len(self._names)), dtype=complex)
+        w[:, slot["K"]] = 1.0
+        w[:, slot["M"]] = -omegas * omegas
+        w[:, slot["G"]] = 1j * omegas * speeds
+        w[:, slot["C"]] = 1j * omegas
+        w[:, slot["F"]] = fixed
+        w[:, slot["L"]] = lateral
+        w[:, slot["S"]] = circulatory
+        s = 1j * omegas
+        for k, a in enumerate(self.actuators):
+            if a.collocated:
+                w[:, slot[f"A{k}"]] = a.law(s)
+            else:
+                w[:, slot[f"S{k}"]] = a.feedback_gain(s)
+                w[:, slot[f"A{k}"]] = -a.negative_stiffness
+        return w
+
+    def matrix_data(self, omega: float, speed: float, weights: np.ndarray | None = None) -> np.ndarray:
+        """Values of Z(ω, Ω) on the shared pattern (permuted ordering); ``weights``: its row
+        of :meth:`coefficient_table`, when already computed."""
+        w = self.coefficients(omega, speed) if weights is None else weights
         if self._real_stack is None:
             return w @ self._stack
         out = np.empty(self._real_stack.shape[0], dtype=complex)
@@ -202,14 +229,17 @@ class BandedHarmonicSolver:
         if not np.all(np.isfinite(b)):
             raise ValueError("the load vector contains NaN or inf")
         bp = np.asfortranarray(b[self.perm])
+        points = [(float(omega), float(speed)) for omega, speed in points]
         for omega, speed in points:
-            if not (np.isfinite(omega) and np.isfinite(speed)):
+            if not (math.isfinite(omega) and math.isfinite(speed)):
                 raise ValueError(f"frequency and speed must be finite (got ω = {omega!r}, Ω = {speed!r})")
-            yield self._solve_permuted(omega, speed, bp)[self.inverse]
+        table = self.coefficient_table([p[0] for p in points], [p[1] for p in points])
+        for (omega, speed), weights in zip(points, table):
+            yield self._solve_permuted(omega, speed, bp, weights)[self.inverse]
 
-    def _solve_permuted(self, omega: float, speed: float, bp: np.ndarray) -> np.ndarray:
+    def _solve_permuted(self, omega: float, speed: float, bp: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
         """Z(ω, Ω) x = bp in the solver's ordering: one ``zgbsv`` (band LU and solve)."""
-        data = self.matrix_data(omega, speed)
+        data = self.matrix_data(omega, speed, weights)
         ab = self._buffer
         ab.fill(0.0)
         self._buffer_memory[self._memory_index] = data
@@ -217,7 +247,7 @@ class BandedHarmonicSolver:
         if info > 0:
             self._singular(omega, speed, None)
         pivots = np.abs(lu[self.kl + self.ku])
-        if not np.all(np.isfinite(x)) or pivots.min() < PIVOT_SCREEN * pivots.max():
+        if not np.isfinite(x).all() or pivots.min() < PIVOT_SCREEN * pivots.max():
             x = self._refine(data, lu, piv, bp, x, omega, speed)
         return x
 

@@ -51,7 +51,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["LossCoefficients", "frequency_coefficients", "eigen_coefficients", "viscous_equivalent", "whirl_sign"]
+__all__ = ["LossCoefficients", "frequency_coefficients", "frequency_coefficient_arrays", "eigen_coefficients",
+           "viscous_equivalent", "whirl_sign"]
 
 #: Relative band around ω = Ω inside which σ = sgn(ω − Ω) counts as 0 (the synchronous line).
 SYNCHRONOUS_TOLERANCE = 1e-9
@@ -107,6 +108,27 @@ def frequency_coefficients(internal_damping: str, omega: float, speed: float) ->
     sigma = whirl_sign(omega, speed)
     sigma_backward = 1.0 if omega + speed > 0 else 0.0
     return LossCoefficients(1j * on, 0.5j * (sigma_backward + sigma), 0.5 * (sigma_backward - sigma))
+
+
+def frequency_coefficient_arrays(internal_damping: str, omega, speed) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`frequency_coefficients` at many points at once: arrays (fixed, lateral,
+    circulatory) over ``omega`` [rad/s], ``speed`` [rad/s] (broadcast together); the same
+    arithmetic element by element, so the same numbers."""
+    _check(internal_damping)
+    omega, speed = np.broadcast_arrays(np.asarray(omega, dtype=float), np.asarray(speed, dtype=float))
+    bad = ~(np.isfinite(omega) & (omega >= 0))
+    if bad.any():
+        raise ValueError(f"excitation frequency must be a finite number >= 0 rad/s, got {omega[bad][0]!r}")
+    if not np.isfinite(speed).all():
+        raise ValueError(f"speed must be a finite number [rad/s], got {speed[~np.isfinite(speed)][0]!r}")
+    on = (omega > 0).astype(float)
+    if internal_damping == "thesis":
+        return 1j * on, 1j * on, np.zeros_like(on)
+    difference = omega - speed
+    band = SYNCHRONOUS_TOLERANCE * np.maximum(np.maximum(np.abs(omega), np.abs(speed)), 1.0)
+    sigma = np.where(np.abs(difference) <= band, 0.0, np.sign(difference))
+    sigma_backward = (omega + speed > 0).astype(float)
+    return 1j * on, 0.5j * (sigma_backward + sigma), 0.5 * (sigma_backward - sigma)
 
 
 def eigen_coefficients(internal_damping: str, omega: float, speed: float, sigma: float | None = None) -> LossCoefficients:
