@@ -61,6 +61,7 @@ class RunResults:
     imbalance_spinup: object = None  # HarmonicResponse (ndof, ncases, n_speeds) over `speeds`
     metal_strength: object = None  # MetalStrength of the isotropic segments (None: no isotropic segment)
     coupling_misalignment: object = None  # CouplingMisalignment (None: no couplings)
+    critical_speeds: object = None  # (criticals without mode labels, note) of verdict_evidence.scan_critical_speeds
 
     @property
     def spinup(self) -> np.ndarray:
@@ -132,7 +133,7 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
     done = {key: outcome.value for key, outcome in own.results(step).items()}
     camp, buckling, thermal, stab = done["campbell"], done.get("buckling"), done.get("thermal"), done["stability"]
-    q, amp, envelope, disp, force = done["imbalance"]
+    q, amp, envelope, disp, force, criticals = done["imbalance"]
     comparison, gmap, design_studies_result = {}, None, None
     if started is not None:
         comparison, gmap, design_studies_result = _finish_studies(started, notes, step)
@@ -164,6 +165,7 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
         imbalance_spinup=q,
         metal_strength=metal,
         coupling_misalignment=misalignment,
+        critical_speeds=criticals,
     )
     step("requirements verdict")
     from flexshaft.studies.verdict import evaluate
@@ -197,14 +199,16 @@ def _start_own_analyses(design, model: Model, speeds: np.ndarray, n_campbell: in
 
 def _spinup_response(design, speeds):
     """Worst-case imbalance response over ``speeds``: (q, orbits, worst envelope, actuator
-    displacement and force)."""
+    displacement and force, the lateral critical speeds found on it)."""
+    from flexshaft.studies.verdict_evidence import scan_critical_speeds
+
     model = build_model(design)
     q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
     amp, case = worst_case_orbits(model, q)
     idx = np.arange(speeds.size)
     envelope = amp[:, case, idx]
     disp, force = actuator_response(model, q[:, case, idx], speeds)
-    return q, amp, envelope, disp, force
+    return q, amp, envelope, disp, force, scan_critical_speeds(model, speeds, amp)
 
 
 def _campbell(design, speeds):

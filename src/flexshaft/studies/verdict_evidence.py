@@ -28,7 +28,8 @@ from flexshaft.studies.evidence import (
     ModeDamping,
 )
 
-__all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "lateral_critical_speeds"]
+__all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "label_critical_speeds", "lateral_critical_speeds",
+           "scan_critical_speeds"]
 
 #: Highest speed searched for critical speeds, as a multiple of the operating speed.
 CRITICAL_SEARCH_TOP = 1.30
@@ -105,11 +106,35 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
                 location["detail"] = "undamped resonance: the mode at the peak has no damping, the response is unbounded"
             else:
                 location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
-        mode = _campbell_label(campbell, peak.speed)
-        if mode:
-            location["mode"] = mode
         out.append(LateralCritical(peak.speed, amplification, location))
-    return tuple(sorted(out, key=lambda c: c.speed))
+    return label_critical_speeds(tuple(sorted(out, key=lambda c: c.speed)), campbell)
+
+
+def label_critical_speeds(criticals, campbell: Campbell | None):
+    """The resolved peaks of :func:`lateral_critical_speeds` labelled with the tracked mode of
+    ``campbell`` whose 1× critical speed is within 3 % (the run computes the peaks and the
+    Campbell diagram in parallel and labels them here)."""
+    out = []
+    for c in criticals:
+        mode = _campbell_label(campbell, c.speed) if "af_method" in c.location else ""
+        out.append(LateralCritical(c.speed, c.amplification_factor, {**c.location, "mode": mode}) if mode else c)
+    return tuple(out)
+
+
+def scan_critical_speeds(model: Model, speeds: np.ndarray, orbits: np.ndarray, campbell: Campbell | None = None):
+    """The run's lateral critical speeds from its spin-up scan (speeds [rad/s], orbits (nodes,
+    cases, speeds) [m]): ``(criticals, note)``, criticals None with a note when the unbalance
+    response is singular or the operating speed is zero."""
+    speed = float(model.speed)
+    if speed <= 0.0:
+        return None, "the operating speed is zero"
+    scan = None
+    if orbits is not None and speeds[-1] >= CRITICAL_SEARCH_TOP * speed * (1 - 1e-9):
+        scan = (np.asarray(speeds), np.asarray(orbits))
+    try:
+        return lateral_critical_speeds(model, campbell, scan=scan), None
+    except SingularSystemError as exc:
+        return None, f"the unbalance response could not be scanned: {exc}"
 
 
 def _undamped_at(model: Model, speed: float) -> bool:
@@ -308,7 +333,8 @@ def evidence_from_run(res: object) -> Evidence:
     """Build the verdict's evidence from a :class:`flexshaft.studies.run.RunResults`.
 
     Computes the lateral critical speeds and their amplification factors
-    (:func:`lateral_critical_speeds`); every other number is read from ``res``.
+    (:func:`lateral_critical_speeds`) unless ``res.critical_speeds`` holds them; every other
+    number is read from ``res``.
     """
     model = res.model
     design = model.design
@@ -320,17 +346,18 @@ def evidence_from_run(res: object) -> Evidence:
     values.update(_couplings(res))
     values.update(_buckling(res, notes))
     values.update(_whirl(res, speed, notes))
-    if speed > 0.0:
-        try:
-            scan = None
-            if getattr(res, "shaft_orbits", None) is not None and res.speeds[-1] >= CRITICAL_SEARCH_TOP * speed * (1 - 1e-9):
-                scan = (np.asarray(res.speeds), np.asarray(res.shaft_orbits))
-            values["critical_speeds"] = lateral_critical_speeds(model, res.campbell, scan=scan)
-            values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
-        except SingularSystemError as exc:
-            notes["separation"] = f"the unbalance response could not be scanned: {exc}"
+    found = getattr(res, "critical_speeds", None)  # (criticals, note) computed with the spin-up scan
+    if found is not None:
+        criticals, note = found
+        criticals = None if criticals is None else label_critical_speeds(criticals, res.campbell)
     else:
-        notes["separation"] = "the operating speed is zero"
+        criticals, note = scan_critical_speeds(model, np.asarray(res.speeds), getattr(res, "shaft_orbits", None),
+                                               res.campbell)
+    if criticals is not None:
+        values["critical_speeds"] = criticals
+        values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
+    else:
+        notes["separation"] = note
     values.update(_temperature(res, notes))
     if design is not None:
         values["allowable_temperature"] = celsius_to_kelvin(design.thermal.allowable_temperature_c)
