@@ -2,6 +2,7 @@
 
     .venv/bin/python benchmarks/studies_timing.py [--cases studies-coarse run-none run-report]
                                                   [--repeats 3] [--blas-threads 1] [--json FILE]
+                                                  [--reference OTHER_CHECKOUT/src]
 
 Cases:
 
@@ -15,6 +16,10 @@ Cases:
   written), timed from outside; its CPU time is the child's user + system time
   (``getrusage(RUSAGE_CHILDREN)`` difference). ``run-full`` is not in the default set (long).
 
+With ``--reference``, each ``run-*`` repeat also runs the same command on another checkout's
+code (``PYTHONPATH=OTHER/src``, e.g. ``git worktree add --detach /tmp/old <commit>``) right
+after, and the table gives the median of the pairs' ratios (reference / now).
+
 Printed: median (min–max) wall time and median CPU time per case.
 """
 
@@ -24,6 +29,7 @@ import argparse
 import json
 import os
 import resource
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -62,19 +68,36 @@ def _children_cpu() -> float:
     return r.ru_utime + r.ru_stime
 
 
-def time_run(studies: str, repeats: int) -> dict:
-    walls, cpus = [], []
+def _time_command(cmd: list[str], env: dict | None) -> tuple[float, float]:
+    c0, w0 = _children_cpu(), time.perf_counter()
+    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    wall, cpu = time.perf_counter() - w0, _children_cpu() - c0
+    if proc.returncode != 0:
+        sys.stderr.write(proc.stderr[-3000:])
+        raise SystemExit(f"{' '.join(cmd)} failed with status {proc.returncode}")
+    return wall, cpu
+
+
+def time_run(studies: str, repeats: int, reference: str | None = None) -> dict:
+    """``flexshaft run --studies X`` as a fresh process, ``repeats`` times; with a
+    ``reference`` source folder (another checkout's ``src``), each repeat also runs the same
+    command on that code right after (PYTHONPATH), so that both see the same machine load."""
+    codes = {"now": None} if reference is None else {"now": None, "reference": os.path.abspath(reference)}
+    times = {name: ([], []) for name in codes}
     for _ in range(repeats):
-        with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
-            cmd = [*_flexshaft_command(), "run", "--studies", studies, "--out", out]
-            c0, w0 = _children_cpu(), time.perf_counter()
-            proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-            walls.append(time.perf_counter() - w0)
-            cpus.append(_children_cpu() - c0)
-            if proc.returncode != 0:
-                sys.stderr.write(proc.stderr[-3000:])
-                raise SystemExit(f"{' '.join(cmd)} failed with status {proc.returncode}")
-    return {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": " ".join(cmd[-5:-2])}
+        for name, src in codes.items():
+            env = None if src is None else {**os.environ, "PYTHONPATH": src}
+            with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
+                wall, cpu = _time_command([*_flexshaft_command(), "run", "--studies", studies, "--out", out], env)
+            times[name][0].append(wall)
+            times[name][1].append(cpu)
+    walls, cpus = times["now"]
+    result = {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": f"flexshaft run --studies {studies}"}
+    if reference is not None:
+        ref_walls, ref_cpus = times["reference"]
+        result["reference"] = {**bu.stats(ref_walls), "cpu": bu.stats(ref_cpus), "source": codes["reference"]}
+        result["speedup"] = statistics.median(r / w for r, w in zip(ref_walls, walls))
+    return result
 
 
 def main(argv=None) -> int:
@@ -84,6 +107,8 @@ def main(argv=None) -> int:
     p.add_argument("--blas-threads", type=int, default=1,
                    help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)")
     p.add_argument("--json", help="also write the measurements to this JSON file")
+    p.add_argument("--reference", metavar="SRC",
+                   help="another checkout's src folder: each run-* repeat also runs it (PYTHONPATH), back to back")
     a = p.parse_args(argv)
     if a.repeats < 1:
         p.error(f"--repeats must be at least 1 (got {a.repeats})")
@@ -94,11 +119,13 @@ def main(argv=None) -> int:
         if name.startswith("studies-"):
             results[name] = time_studies(name == "studies-coarse", a.repeats)
         else:
-            results[name] = time_run(name.split("-", 1)[1], a.repeats)
+            results[name] = time_run(name.split("-", 1)[1], a.repeats, a.reference)
         r = results[name]
         cold = f"cold {r['cold_s']:.2f} s, " if "cold_s" in r else ""
+        ref = (f"; reference {bu.fmt_stats(r['reference'], 2)} s, {r['speedup']:.2f}x faster now"
+               if "reference" in r else "")
         print(f"[studies_timing] {name}: {cold}{bu.fmt_stats(r['warm'], 2)} s "
-              f"(CPU {r['warm']['cpu']['median']:.2f} s)", flush=True)
+              f"(CPU {r['warm']['cpu']['median']:.2f} s){ref}", flush=True)
 
     import flexshaft
 
@@ -108,11 +135,14 @@ def main(argv=None) -> int:
           f"(shared); {m['date']}; flexshaft {flexshaft.__version__} (git {m['git_commit']}), "
           f"Python {m['python']}; BLAS threads {m['blas_threads_env']}")
     print()
-    print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | repeats |")
-    print("|---|---:|---:|---:|---:|")
+    print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | reference wall [s] (CPU) "
+          "| reference / now | repeats |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for name, r in results.items():
         cold = f"{r['cold_s']:.2f}" if "cold_s" in r else "–"
-        print(f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} "
+        ref = (f"{bu.fmt_stats(r['reference'], 2)} ({r['reference']['cpu']['median']:.2f}) | {r['speedup']:.2f}×"
+               if "reference" in r else "– | –")
+        print(f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} | {ref} "
               f"| {r['warm']['n']} |")
     print()
     print("studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
