@@ -259,9 +259,12 @@ def all_studies(
     from flexshaft.report.studies_section import design_studies_section
     from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
 
+    from flexshaft._pool import worker_pool
+
     d = loaded.design
-    with StageProgress(transient=as_json) as progress:
-        res = design_studies(d, resolution.value, progress=progress.step, jobs=jobs, actuator_gap=gap)
+    # the studies as independent tasks on one pool of `jobs` workers (each sweep in its worker)
+    with worker_pool(jobs, ("xarray",)) as pool, StageProgress(transient=as_json) as progress:
+        res = design_studies(d, resolution.value, progress=progress.step, actuator_gap=gap, executor=pool)
         progress.step("writing the report")
         save_study_data(res, folder)
         page = write_report(folder, f"Design studies: {d.name}", [design_studies_section(res, folder)],

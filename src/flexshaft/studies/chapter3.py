@@ -156,7 +156,10 @@ def design_studies(design=None, resolution: str = "report", progress=None, jobs:
     executor : concurrent.futures.Executor, optional
         Run the studies as independent tasks on this pool (e.g.
         :func:`flexshaft._pool.worker_pool`); the results are the same as in this process.
+        Each study then runs in one worker: ``jobs`` must be 1.
     """
+    if executor is not None and jobs != 1:
+        raise ValueError(f"jobs must be 1 when the studies run on an executor (got jobs={jobs})")
     res, run = start_design_studies(design, resolution, actuator_gap, executor, jobs=jobs, progress_bars=progress is True)
     return finish_design_studies(res, run, progress)
 
