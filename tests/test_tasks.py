@@ -125,3 +125,56 @@ def test_cli_sets_one_blas_thread_unless_the_user_chose():
     out = subprocess.run([sys.executable, "-c", code], env={**env, "OPENBLAS_NUM_THREADS": "2"},
                          capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["2", "1"]
+
+
+_LIFETIME = """
+import os, signal, sys, time
+from flexshaft._pool import worker_pool
+
+def sleep(seconds):
+    time.sleep(seconds)
+    return os.getpid()
+
+if __name__ == "__main__":
+    with worker_pool(2) as pool:
+        futures = [pool.submit(sleep, 30.0) for _ in range(4)]
+        time.sleep(1.0)  # both workers are in a task now
+        print(" ".join(str(p.pid) for p in pool._processes.values()), flush=True)
+        if sys.argv[1] == "kill":
+            os.kill(os.getpid(), signal.SIGKILL)
+        os.kill(os.getpid(), signal.SIGINT)  # Ctrl-C
+        time.sleep(30)
+"""
+
+
+def _gone(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/status") as f:
+            return f.read().split("State:")[1].split()[0] == "Z"  # dead, not yet reaped by init
+    except FileNotFoundError:
+        return True
+
+
+@needs_fork
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc")
+@pytest.mark.parametrize("how", ["interrupt", "kill"])
+def test_workers_end_with_the_command(tmp_path, how):
+    """Ctrl-C ends the pool at once (queued work cancelled, running tasks killed: 30 s tasks,
+    the command ends within seconds); a SIGKILL of the command ends its workers too
+    (PR_SET_PDEATHSIG), so no worker outlives it either way."""
+    import time
+
+    script = tmp_path / "lifetime.py"
+    script.write_text(_LIFETIME)
+    start = time.monotonic()
+    proc = subprocess.run([sys.executable, str(script), how], capture_output=True, text=True, timeout=25)
+    elapsed = time.monotonic() - start
+    # an uncaught KeyboardInterrupt ends Python by SIGINT (-2); SIGKILL is -9
+    assert proc.returncode == (-9 if how == "kill" else -2), proc.stderr[-2000:]
+    pids = [int(p) for p in proc.stdout.split()]
+    assert len(pids) == 2
+    deadline = time.monotonic() + 5
+    while not all(_gone(p) for p in pids) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert all(_gone(p) for p in pids), "a worker outlived its command"
+    assert elapsed < 15, f"the command took {elapsed:.1f} s to end"

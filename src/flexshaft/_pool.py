@@ -9,17 +9,28 @@ and the studies overlap the parent's work instead of following it
 
 Without ``fork`` (Windows), or for one process, :func:`worker_pool` gives ``None`` and the
 callers work in this process, with the same results.
+
+A worker never outlives the command: it ignores Ctrl-C (the parent handles it and ends the
+pool at once), and :func:`die_with_parent` ends it when the parent dies, even by SIGKILL.
 """
 
 from __future__ import annotations
 
 import importlib
 import os
+import signal
+import sys
+import threading
+import time
 from collections.abc import Iterator, Sequence
 from concurrent.futures import Executor
 from contextlib import contextmanager
 
-__all__ = ["available_cpus", "worker_pool"]
+__all__ = ["available_cpus", "die_with_parent", "worker_pool"]
+
+_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
+#: How often the portable watchdog thread looks at the parent [s].
+WATCHDOG_INTERVAL = 0.5
 
 
 def available_cpus() -> int:
@@ -30,8 +41,53 @@ def available_cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _warm(modules: tuple[str, ...]) -> None:
-    """Worker initializer: import ``modules`` once (matplotlib with the Agg backend)."""
+def _set_parent_death_signal(sig: int) -> bool:
+    """Ask Linux to send ``sig`` to this process when its parent dies; False if unavailable."""
+    if not sys.platform.startswith("linux"):
+        return False
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        prctl = libc.prctl
+    except (OSError, AttributeError):  # no libc symbol table (unusual builds)
+        return False
+    prctl.argtypes = [ctypes.c_int, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong]
+    prctl.restype = ctypes.c_int
+    return prctl(_PR_SET_PDEATHSIG, int(sig), 0, 0, 0) == 0
+
+
+def _watch_parent(parent_pid: int, interval: float) -> None:
+    while os.getppid() == parent_pid:
+        time.sleep(interval)
+    os._exit(1)  # the parent is gone: end the whole worker now, without cleanup
+
+
+def die_with_parent(parent_pid: int, pdeathsig: bool = True) -> str:
+    """Make this worker process end when its parent ``parent_pid`` ends, however.
+
+    Returns the mechanism used: ``"pdeathsig"`` (Linux: the kernel sends SIGKILL when the
+    parent dies, ``prctl(PR_SET_PDEATHSIG)``) or ``"watchdog"`` (elsewhere, or ``pdeathsig``
+    False: a daemon thread that exits the process within :data:`WATCHDOG_INTERVAL` of the
+    parent's death). The worker must be a direct child of ``parent_pid`` (fork or spawn, not
+    a forkserver).
+    """
+    if pdeathsig and _set_parent_death_signal(signal.SIGKILL):
+        # The parent may have died between the fork and the prctl call; then no signal comes.
+        if os.getppid() != parent_pid:
+            os._exit(1)
+        return "pdeathsig"
+    threading.Thread(target=_watch_parent, args=(parent_pid, WATCHDOG_INTERVAL), daemon=True,
+                     name="flexshaft-parent-watch").start()
+    return "watchdog"
+
+
+def _warm(parent_pid: int, modules: tuple[str, ...]) -> None:
+    """Worker initializer: end with the parent, leave Ctrl-C to it, import ``modules`` once
+    (matplotlib with the Agg backend)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and ends the pool
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited by fork
+    die_with_parent(parent_pid)
     for name in modules:
         if name.startswith("matplotlib"):
             import matplotlib
@@ -60,11 +116,23 @@ def worker_pool(processes: int, warm: Sequence[str] = ()) -> Iterator[Executor |
     from concurrent.futures import ProcessPoolExecutor
 
     pool = ProcessPoolExecutor(max_workers=int(processes), mp_context=multiprocessing.get_context("fork"),
-                               initializer=_warm, initargs=(tuple(warm),))
+                               initializer=_warm, initargs=(os.getpid(), tuple(warm)))
     pool.submit(_ready)  # the first submission forks every worker: they warm up while we go on
     try:
         yield pool
-    except BaseException:
-        pool.shutdown(wait=False, cancel_futures=True)
+    except BaseException:  # Ctrl-C or an error: the queued work is not wanted, stop the workers now
+        _terminate(pool)
         raise
     pool.shutdown(wait=True)
+
+
+def _terminate(pool) -> None:
+    """Cancel the queued work and end the workers without waiting for their current task
+    (an interrupted run writes no report; a figure being drawn is lost with it)."""
+    workers = dict(getattr(pool, "_processes", None) or {})  # the stdlib's record of them (no public API before 3.14)
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in workers.values():  # SIGKILL: a task's own SIGTERM handler (a sweep's) must not delay it
+        if process.is_alive():
+            process.kill()
+    for process in workers.values():
+        process.join(timeout=5)

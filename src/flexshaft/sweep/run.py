@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.netcdf import write_netcdf
+from flexshaft._pool import die_with_parent
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -67,46 +68,12 @@ def _run_serial(study: Study, todo, on_error) -> Iterator[tuple[int, np.ndarray]
 # A worker must not outlive the sweep process: orphaned workers would compute forever and hold
 # its stdout. Set to False to use the portable watchdog thread on Linux too (tests use this).
 _USE_PDEATHSIG = True
-_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
-_WATCHDOG_INTERVAL = 0.5  # [s] how often the watchdog thread looks at the parent
-
-
-def _set_parent_death_signal(sig: int) -> bool:
-    """Ask Linux to send ``sig`` to this process when its parent dies; False if unavailable."""
-    if not (_USE_PDEATHSIG and sys.platform.startswith("linux")):
-        return False
-    try:
-        import ctypes
-
-        libc = ctypes.CDLL(None, use_errno=True)
-        prctl = libc.prctl
-    except (OSError, AttributeError):  # no libc symbol table (unusual builds)
-        return False
-    prctl.argtypes = [ctypes.c_int, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong, ctypes.c_ulong]
-    prctl.restype = ctypes.c_int
-    return prctl(_PR_SET_PDEATHSIG, int(sig), 0, 0, 0) == 0
-
-
-def _watch_parent(parent_pid: int, interval: float) -> None:
-    while os.getppid() == parent_pid:
-        time.sleep(interval)
-    os._exit(1)  # the parent is gone: end the whole worker now, without cleanup
 
 
 def _die_with_parent(parent_pid: int) -> str:
-    """Make this worker end when its parent, the sweep process ``parent_pid``, ends, however.
-
-    Returns the mechanism used, ``"pdeathsig"`` (Linux) or ``"watchdog"`` (elsewhere). The
-    worker must be a direct child of the sweep process (fork or spawn, not a forkserver).
-    """
-    if _set_parent_death_signal(signal.SIGKILL):
-        # The parent may have died between the fork and the prctl call; then no signal comes.
-        if os.getppid() != parent_pid:
-            os._exit(1)
-        return "pdeathsig"
-    threading.Thread(target=_watch_parent, args=(parent_pid, _WATCHDOG_INTERVAL), daemon=True,
-                     name="flexshaft-parent-watch").start()
-    return "watchdog"
+    """Make this worker end when its parent, the sweep process ``parent_pid``, ends, however
+    (:func:`flexshaft._pool.die_with_parent`); returns ``"pdeathsig"`` or ``"watchdog"``."""
+    return die_with_parent(parent_pid, pdeathsig=_USE_PDEATHSIG)
 
 
 def _pool_context():
