@@ -136,6 +136,8 @@ def sleep(seconds):
     return os.getpid()
 
 if __name__ == "__main__":
+    # a terminal's Ctrl-C raises KeyboardInterrupt; the test runner may have left SIGINT ignored
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     with worker_pool(2) as pool:
         futures = [pool.submit(sleep, 30.0) for _ in range(4)]
         time.sleep(1.0)  # both workers are in a task now
