@@ -242,7 +242,8 @@ def spinup_map(
 def all_studies(
     design: DesignArgument = None,
     resolution: Annotated[Resolution, typer.Option(
-        "--resolution", case_sensitive=False, help="Grid resolution: report (about 10 s) or full (about a minute).")
+        "--resolution", case_sensitive=False, help="Grid resolution: report (about 10 s of computation) or full (about 25 s); "
+                                              "--jobs divides it.")
     ] = Resolution.report,
     out: Annotated[Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and "
                                                           "report.html.")] = Path("flexshaft-studies"),

@@ -7,12 +7,13 @@
 for the ``flexshaft run`` report;
 :func:`headline` gives the headline numbers as JSON-ready data, beside the thesis's.
 
-Resolutions (measured on the 2-core machine, baseline design, ``jobs=1``; see docs/studies.md):
+Resolutions (CPU time on the 2-core machine, tuned design; ``flexshaft run`` divides it
+among its worker processes, benchmarks/studies_timing.py; see docs/studies.md):
 
 * ``"report"``: about 10 s of studies (ply angle every 2.5°, an 8 × 8 two-angle grid including
   55°, 9 walls, 13 K_p, a 20 × 20 × 300 spin-up map, a 4 × 4 stability map at 16 speeds);
 * ``"full"``: the thesis-figure resolution (1°, 5° grid, 23 walls, 31 K_p, 30 × 30 × 400,
-  8 × 8 × 31); about a minute.
+  8 × 8 × 31); about 25 s.
 """
 
 from __future__ import annotations
