@@ -60,8 +60,11 @@ def run(
     warm = _WARM
     if studies is not Studies.none:
         # xarray once, here, before the workers fork: both workers and this process need it
-        # (the studies' results are Datasets), and its import is 0.5 s of CPU each time
-        import xarray  # noqa: F401
+        # (the studies' results are Datasets). Its import and its first Dataset, which loads
+        # the optional array backends (dask when installed), cost 0.5-0.9 s of CPU each time.
+        import xarray
+
+        xarray.Dataset({"warm": ("x", [0.0])})
     with worker_pool(_worker_processes(), warm) as pool, StageProgress(transient=as_json) as progress:
         results = run_analysis(loaded.design, progress=progress.step,
                                studies=None if studies is Studies.none else studies.value, executor=pool)
