@@ -20,7 +20,7 @@ Euler-Bernoulli mesh (exact for the static midspan stiffness) leave relative err
 import numpy as np
 import pytest
 
-from flexshaft.analyses import SingularSystemError, frequency_response, imbalance_response, modes, static_response
+from flexshaft.analyses import frequency_response, imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import campbell
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design, loads_design, with_overrides

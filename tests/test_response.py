@@ -3,9 +3,8 @@
 import numpy as np
 import pytest
 import scipy.integrate as si
-import scipy.sparse.linalg as spla
 
-from flexshaft.analyses import BandedHarmonicSolver, frequency_response, imbalance_response, modes, static_response
+from flexshaft.analyses import BandedHarmonicSolver, imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import campbell
 from flexshaft.analyses.shaft_strength import shaft_safety_factor
 from flexshaft.assembly import build_model
@@ -17,7 +16,6 @@ from flexshaft.assembly.loads import (
     point_load,
     torque_load,
 )
-from flexshaft.assembly.sparse import restrict
 from flexshaft.design import baseline_design, loads_design, with_overrides
 from flexshaft.elements import ellipse_section
 

@@ -26,7 +26,7 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import Executor
 from contextlib import contextmanager
 
-__all__ = ["available_cpus", "die_with_parent", "worker_pool"]
+__all__ = ["available_cpus", "die_with_parent", "prepare_worker", "worker_pool"]
 
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 #: How often the portable watchdog thread looks at the parent [s].
@@ -82,12 +82,19 @@ def die_with_parent(parent_pid: int, pdeathsig: bool = True) -> str:
     return "watchdog"
 
 
+def prepare_worker(parent_pid: int, pdeathsig: bool = True) -> str:
+    """Set up a worker process of ``parent_pid``: Ctrl-C is left to the parent (which ends
+    the pool), SIGTERM gets its default action (not the parent's handler, inherited by fork),
+    and the worker ends with the parent (:func:`die_with_parent`, whose result is returned)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    return die_with_parent(parent_pid, pdeathsig)
+
+
 def _warm(parent_pid: int, modules: tuple[str, ...]) -> None:
-    """Worker initializer: end with the parent, leave Ctrl-C to it, import ``modules`` once
-    (matplotlib with the Agg backend)."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and ends the pool
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited by fork
-    die_with_parent(parent_pid)
+    """Worker initializer: :func:`prepare_worker`, then import ``modules`` once (matplotlib
+    with the Agg backend)."""
+    prepare_worker(parent_pid)
     for name in modules:
         if name.startswith("matplotlib"):
             import matplotlib

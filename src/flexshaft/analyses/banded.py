@@ -33,7 +33,7 @@ import scipy.sparse as sp
 from scipy.linalg import lapack
 from scipy.sparse.csgraph import reverse_cuthill_mckee
 
-from flexshaft.analyses.loss import frequency_coefficient_arrays, frequency_coefficients
+from flexshaft.analyses.loss import frequency_coefficient_arrays
 from flexshaft.assembly.model import Model
 
 __all__ = ["SingularSystemError", "BandedHarmonicSolver", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
@@ -143,28 +143,11 @@ class BandedHarmonicSolver:
 
     def coefficients(self, omega: float, speed: float) -> np.ndarray:
         """Weights of the stored terms in Z(ω, Ω) (one per row of the term stack)."""
-        w = np.zeros(len(self._names), dtype=complex)
-        slot = self._slot
-        loss = frequency_coefficients(self.internal_damping, omega, speed)
-        w[slot["K"]] = 1.0
-        w[slot["M"]] = -omega * omega
-        w[slot["G"]] = 1j * omega * speed
-        w[slot["C"]] = 1j * omega
-        w[slot["F"]] = loss.fixed
-        w[slot["L"]] = loss.lateral
-        w[slot["S"]] = loss.circulatory
-        s = 1j * omega
-        for k, a in enumerate(self.actuators):
-            if a.collocated:
-                w[slot[f"A{k}"]] = complex(a.law(s))
-            else:
-                w[slot[f"S{k}"]] = complex(a.feedback_gain(s))
-                w[slot[f"A{k}"]] = -a.negative_stiffness
-        return w
+        return self.coefficient_table([omega], [speed])[0]
 
     def coefficient_table(self, omegas, speeds) -> np.ndarray:
-        """:meth:`coefficients` at many points: (n_points, n_terms), the same numbers, computed
-        array-wise once per sweep instead of term by term at every point."""
+        """Weights of the stored terms at many points (ω, Ω): (n_points, n_terms), computed
+        array-wise once per sweep."""
         omegas = np.asarray(omegas, dtype=float)
         speeds = np.asarray(speeds, dtype=float)
         fixed, lateral, circulatory = frequency_coefficient_arrays(self.internal_damping, omegas, speeds)

@@ -118,9 +118,9 @@ def frequency_coefficient_arrays(internal_damping: str, omega, speed) -> tuple[n
     omega, speed = np.broadcast_arrays(np.asarray(omega, dtype=float), np.asarray(speed, dtype=float))
     bad = ~(np.isfinite(omega) & (omega >= 0))
     if bad.any():
-        raise ValueError(f"excitation frequency must be a finite number >= 0 rad/s, got {omega[bad][0]!r}")
+        raise ValueError(f"excitation frequency must be a finite number >= 0 rad/s, got {float(omega[bad][0])!r}")
     if not np.isfinite(speed).all():
-        raise ValueError(f"speed must be a finite number [rad/s], got {speed[~np.isfinite(speed)][0]!r}")
+        raise ValueError(f"speed must be a finite number [rad/s], got {float(speed[~np.isfinite(speed)][0])!r}")
     on = (omega > 0).astype(float)
     if internal_damping == "thesis":
         return 1j * on, 1j * on, np.zeros_like(on)

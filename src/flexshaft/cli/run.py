@@ -15,11 +15,6 @@ from flexshaft.cli.progress import StageProgress
 __all__ = ["run"]
 
 
-#: What the worker processes import when they start, while this process computes: the
-#: figure machinery, and xarray for the studies' labelled results.
-_WARM = ("matplotlib.figure", "matplotlib.backends.backend_agg", "flexshaft.plot.driveline")
-
-
 def _worker_processes() -> int:
     """Worker processes of the run: the CPUs this process may use, at most 4
     (benchmarks/studies_timing.py measures the run with them)."""
@@ -57,7 +52,8 @@ def run(
     from flexshaft.report.driveline import results_json, write_run_report
     from flexshaft.studies.run import run_analysis
 
-    warm = _WARM
+    from flexshaft.plot.output import FIGURE_MODULES
+
     if studies is not Studies.none:
         # xarray once, here, before the workers fork: both workers and this process need it
         # (the studies' results are Datasets). Its import and its first Dataset, which loads
@@ -65,7 +61,7 @@ def run(
         import xarray
 
         xarray.Dataset({"warm": ("x", [0.0])})
-    with worker_pool(_worker_processes(), warm) as pool, StageProgress(transient=as_json) as progress:
+    with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, StageProgress(transient=as_json) as progress:
         results = run_analysis(loaded.design, progress=progress.step,
                                studies=None if studies is Studies.none else studies.value, executor=pool)
         progress.step("writing the report")

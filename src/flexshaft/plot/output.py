@@ -8,7 +8,6 @@ itself. PNG is always written; SVG only on request (it costs about as much as th
 
 from __future__ import annotations
 
-import os
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -21,7 +20,7 @@ if TYPE_CHECKING:
 
     from matplotlib.figure import Figure
 
-__all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_figure", "start_figures"]
+__all__ = ["FIGURE_MODULES", "PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_figure", "start_figures"]
 
 #: Resolution of the PNG files [dots per inch]. An 8 in wide report figure is 960 px, shown at
 #: 768 CSS px (96 px per inch): text of 8.5 pt is 14 px high, sharp on ordinary and on 1.25×
@@ -29,6 +28,8 @@ __all__ = ["PNG_DPI", "FigureJob", "RenderedFigure", "render_figures", "save_fig
 PNG_DPI = 120
 #: zlib compression level of the PNG figures (1: fastest; the default 6 costs ~70 ms a figure).
 PNG_COMPRESSION = 1
+#: What a process that draws figures imports once (a worker of :func:`flexshaft._pool.worker_pool`).
+FIGURE_MODULES = ("matplotlib.figure", "matplotlib.backends.backend_agg", "flexshaft.plot.driveline")
 
 
 def _check_stem(stem: str) -> None:
@@ -104,10 +105,6 @@ def _render(job: FigureJob, folder: Path, svg: bool, dpi: float) -> RenderedFigu
     return RenderedFigure(job.stem, paths, time.perf_counter() - start)
 
 
-def _render_packed(packed) -> RenderedFigure:
-    return _render(*packed)
-
-
 def _check_jobs(jobs: Sequence[FigureJob]) -> None:
     stems = [job.stem for job in jobs]
     duplicated = sorted({s for s in stems if stems.count(s) > 1})
@@ -155,22 +152,13 @@ def render_figures(jobs: Sequence[FigureJob], folder: str | Path, *, svg: bool =
         raise ValueError(f"processes must be an integer >= 1 (got {processes!r})")
     if executor is not None:
         return start_figures(jobs, folder, executor, svg=svg, dpi=dpi)()
+    from flexshaft._pool import worker_pool
+
+    with worker_pool(max(1, min(int(processes), len(jobs))), FIGURE_MODULES) as pool:
+        if pool is not None:
+            return start_figures(jobs, folder, pool, svg=svg, dpi=dpi)()
     _check_jobs(jobs)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    packed = [(job, folder, bool(svg), float(dpi)) for job in jobs]
-    if processes == 1 or len(jobs) < 2 or not hasattr(os, "fork"):
-        done = [_render(*p) for p in packed]
-    else:
-        import multiprocessing
-
-        import matplotlib
-
-        if "matplotlib.pyplot" not in sys.modules:
-            matplotlib.use("Agg")
-        import matplotlib.backends.backend_agg  # noqa: F401  loaded once, shared by the forked workers
-        import matplotlib.figure  # noqa: F401
-
-        with multiprocessing.get_context("fork").Pool(min(int(processes), len(jobs))) as pool:
-            done = pool.map(_render_packed, packed, chunksize=1)
+    done = [_render(job, folder, bool(svg), float(dpi)) for job in jobs]
     return {r.stem: r for r in done}

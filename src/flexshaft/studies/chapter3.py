@@ -305,13 +305,7 @@ def _buckling_task(design, walls, run) -> dict:
 def _spinup_task(design, grid, actuator_gap) -> dict:
     from flexshaft.assembly import build_model
 
-    model = build_model(design)
-    res = DesignStudies(design_name=str(design.name), resolution="", operating_speed=float(model.speed),
-                        actuator_gap=actuator_gap)
-    _spinup_studies(res, model, grid)
-    names = ("spinup_map", "gains_before", "gains_after", "surfaces", "tuned", "peak_before", "peak_after",
-             "peak_speed_before", "peak_speed_after")
-    return {name: getattr(res, name) for name in names}
+    return _spinup_studies(build_model(design), grid, actuator_gap)
 
 
 def _stability_row_task(design, grid, kp: float) -> dict:
@@ -386,8 +380,9 @@ def _clustered_speeds(model, controllers, speeds: np.ndarray, n_peaks: int = 3, 
     return np.unique(np.concatenate([speeds, *extra]))
 
 
-def _spinup_studies(res: DesignStudies, model, grid) -> None:
-    """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance."""
+def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
+    """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance: the
+    :class:`DesignStudies` fields they fill."""
     import xarray as xr
 
     from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map, spinup_speeds
@@ -399,16 +394,15 @@ def _spinup_studies(res: DesignStudies, model, grid) -> None:
     smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
     ds = smap.to_dataset()
     ds.attrs["title"] = "spin-up peaks over the actuator gains (thesis figures 3.12, 3.15, 3.16)"
-    res.spinup_map = ds
     first = model.actuators[0].controller
-    res.gains_before = (float(first.kp), float(first.kd))
+    gains_before = (float(first.kp), float(first.kd))
     # The best pair on the sampled speeds may owe its rank to a resonance that falls between
     # samples: refine the peak of the few best candidates and keep the best refined one.
     ok = np.ones(smap.shaft_peak.shape, bool)
-    if res.actuator_gap is not None:
-        ok &= smap.actuator_displacement_peak.max(axis=-1) <= res.actuator_gap
+    if actuator_gap is not None:
+        ok &= smap.actuator_displacement_peak.max(axis=-1) <= actuator_gap
     if not ok.any():
-        raise ValueError(f"no gain pair keeps the actuator orbit within the gap {res.actuator_gap} m")
+        raise ValueError(f"no gain pair keeps the actuator orbit within the gap {actuator_gap} m")
     order = np.argsort(np.where(ok, smap.shaft_peak, np.inf), axis=None)[: min(8, int(ok.sum()))]
     best = None
     for flat in order:
@@ -418,11 +412,10 @@ def _spinup_studies(res: DesignStudies, model, grid) -> None:
         if best is None or peak < best[0]:
             best = (peak, float(smap.kp[i]), float(smap.kd[j]))
     _, kp_a, kd_a = best
-    res.gains_after = (kp_a, kd_a)
 
     cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]
     orbits = [spinup_curves(rec, (kp, kd)).shaft_orbit for _, kp, kd in cases]
-    res.surfaces = xr.Dataset(
+    surfaces = xr.Dataset(
         {"shaft_orbit": (("case", "x", "speed"), np.array(orbits), {"units": "m", "long_name": "shaft orbit major semi-axis"})},
         coords={"case": [c[0] for c in cases], "kp": ("case", [c[1] for c in cases], {"units": "N/m"}),
                 "kd": ("case", [c[2] for c in cases], {"units": "N s/m"}),
@@ -434,8 +427,8 @@ def _spinup_studies(res: DesignStudies, model, grid) -> None:
     after = [Controller.pd(kp_a, kd_a)] * rec.n_actuators
     curves = [spinup_curves(rec, c) for c in (before, after)]
     refined = [_refined_peak(model, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
-    (res.peak_before, res.peak_speed_before), (res.peak_after, res.peak_speed_after) = refined
-    res.tuned = xr.Dataset(
+    (peak_before, speed_before), (peak_after, speed_after) = refined
+    tuned = xr.Dataset(
         {
             "shaft_peak": (("case", "speed"), np.array([c.shaft_peak for c in curves]),
                            {"units": "m", "long_name": "largest shaft orbit over the nodes"}),
@@ -445,11 +438,14 @@ def _spinup_studies(res: DesignStudies, model, grid) -> None:
             "refined_peak": ("case", [r[0] for r in refined], {"units": "m", "long_name": "peak on a refined speed grid"}),
         },
         coords={"case": ["design gains", "tuned gains"],
-                "kp": ("case", [res.gains_before[0], kp_a], {"units": "N/m"}),
-                "kd": ("case", [res.gains_before[1], kd_a], {"units": "N s/m"}),
+                "kp": ("case", [gains_before[0], kp_a], {"units": "N/m"}),
+                "kd": ("case", [gains_before[1], kd_a], {"units": "N s/m"}),
                 "actuator": list(rec.actuator_names), "speed": ("speed", rec.speeds, {"units": "rad/s"})},
         attrs={"title": "tuned gains (thesis figure 3.17)"},
     )
+    return {"spinup_map": ds, "gains_before": gains_before, "gains_after": (kp_a, kd_a), "surfaces": surfaces,
+            "tuned": tuned, "peak_before": peak_before, "peak_speed_before": speed_before, "peak_after": peak_after,
+            "peak_speed_after": speed_after}
 
 
 def _stability_dataset(smap) -> Any:

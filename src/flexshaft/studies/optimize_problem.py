@@ -33,7 +33,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from flexshaft.studies.optimize_evaluate import CHECK_KEYS, METRICS, applicable_checks, design_outputs, metric_outputs
+from flexshaft.studies.optimize_evaluate import CHECK_KEYS, applicable_checks, design_outputs, metric_outputs
 
 __all__ = [
     "DESIGN_OBJECTIVES",

@@ -79,11 +79,6 @@ class TaskRun:
         keys = set(keys)
         return TaskRun([t for t in self.tasks if t.key in keys], self._futures, self._errors)
 
-    def cancel(self) -> None:
-        """Cancel the tasks that have not started."""
-        for future in (self._futures or {}).values():
-            future.cancel()
-
 
 def start_tasks(tasks: Sequence[Task], executor: Executor | None = None,
                 errors: tuple[type[BaseException], ...] = ()) -> TaskRun:

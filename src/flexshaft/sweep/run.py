@@ -27,9 +27,7 @@ from __future__ import annotations
 import json
 import os
 import signal
-import sys
 import threading
-import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -37,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.netcdf import write_netcdf
-from flexshaft._pool import die_with_parent
+from flexshaft._pool import die_with_parent, prepare_worker
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -93,9 +91,7 @@ def _pool_context():
 def _worker_init(parent_pid: int) -> None:
     for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ[var] = "1"
-    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and shuts the pool
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited by fork
-    _die_with_parent(parent_pid)
+    prepare_worker(parent_pid, pdeathsig=_USE_PDEATHSIG)  # Ctrl-C left to the parent, ends with it
 
 
 def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[int, np.ndarray]]:
