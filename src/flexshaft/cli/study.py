@@ -119,6 +119,17 @@ def two_angle(
             table=None if as_json else matrix_table(sf, "study two-angle"))
 
 
+def _largest_safety_factor(sf, where) -> str:
+    """Headline of a study's safety factors ``sf``: the largest and ``where(i)`` it is, or why
+    there is none (NaN everywhere: the shaft is not a lamina)."""
+    import numpy as np
+
+    if not np.isfinite(sf).any():
+        return "safety factor not evaluated (the shaft is not a lamina)"
+    i = int(np.nanargmax(sf))
+    return f"largest safety factor {sf[i]:.3g} at {where(i)}"
+
+
 @study_app.command("wall")
 @guarded
 def wall(
@@ -126,8 +137,6 @@ def wall(
     force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
 ) -> None:
     """Safety factor (with/without imbalance), first frequency and spin-up peak vs wall thickness."""
-    import numpy as np
-
     from flexshaft.plot.studies import wall_thickness_figure
     from flexshaft.studies.sweeps import wall_thickness_study
     from flexshaft.units import m_to_mm
@@ -135,10 +144,7 @@ def wall(
     loaded, folder = _prepare(design, out, "wall", force)
     ds = _sweep(wall_thickness_study, loaded, folder, jobs, dask, as_json)
     sf = ds["safety_factor"].values
-    headline = "safety factor not evaluated (the shaft is not a lamina)"
-    if np.isfinite(sf).any():
-        i = int(np.nanargmax(sf))
-        headline = f"largest safety factor {sf[i]:.3g} at a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall"
+    headline = _largest_safety_factor(sf, lambda i: f"a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall")
     figures = {"wall": _save(wall_thickness_figure(ds.wall_thickness.values, sf, ds["safety_factor_no_imbalance"].values,
                                                    ds["natural_frequency_1"].values), folder, "wall")}
     _report(loaded, "wall", folder, ds, ["safety_factor", "safety_factor_no_imbalance", "natural_frequency_1",
@@ -152,8 +158,6 @@ def gain(
     force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
 ) -> None:
     """Safety factor and actuator displacement vs the proportional gain K_p [N/m] of both AMBs."""
-    import numpy as np
-
     from flexshaft.cli.tables import sig
     from flexshaft.plot.studies import gain_figure
     from flexshaft.studies.sweeps import proportional_gain_study
@@ -161,10 +165,7 @@ def gain(
     loaded, folder = _prepare(design, out, "gain", force)
     ds = _sweep(proportional_gain_study, loaded, folder, jobs, dask, as_json)
     sf = ds["safety_factor"].values
-    headline = "safety factor not evaluated (the shaft is not a lamina)"
-    if np.isfinite(sf).any():
-        i = int(np.nanargmax(sf))
-        headline = f"largest safety factor {sf[i]:.3g} at K_p = {sig(float(ds.kp.values[i]), 3)} N/m"
+    headline = _largest_safety_factor(sf, lambda i: f"K_p = {sig(float(ds.kp.values[i]), 3)} N/m")
     figures = {"gain": _save(gain_figure(ds.kp.values, sf, ds["actuator_displacement"].values), folder, "gain")}
     _report(loaded, "gain", folder, ds, ["safety_factor", "actuator_displacement"], figures, headline, as_json)
 
