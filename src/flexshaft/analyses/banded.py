@@ -6,9 +6,9 @@ internal-damping choice) and each magnetic bearing's feedback ``G_a = k_i A(s) C
 sensing rows B_s to its actuation rows B_a (:class:`~flexshaft.assembly.model.Actuator`); a
 collocated bearing (B_s = B_a) adds ``(G_a(iω) − k_s) B_aᵀB_a`` on one symmetric pattern.
 
-The free DOFs are renumbered once by reverse Cuthill-McKee on the union sparsity of every term;
-shaft and boom nodes at the same station then sit together and the bandwidth stays small
-(≈ 20 for the baseline). Every term is stored once as the data of one shared sparse pattern,
+The free DOFs are renumbered once on the union sparsity of every term (:func:`band_ordering`:
+each uncoupled block on its own, shaft and boom nodes interleaved by station, or reverse
+Cuthill-McKee where that is narrower); the half band of the baseline is 19. Every term is stored once as the data of one shared sparse pattern,
 so ``Z`` at a new (ω, Ω) is one real product over ``nnz`` numbers, scattered into LAPACK band
 storage, factorised and solved by ``zgbsv``: O(n b²) per point.
 
@@ -31,12 +31,12 @@ import math
 import numpy as np
 import scipy.sparse as sp
 from scipy.linalg import lapack
-from scipy.sparse.csgraph import reverse_cuthill_mckee
+from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
 
 from flexshaft.analyses.loss import frequency_coefficient_arrays
 from flexshaft.assembly.model import Model
 
-__all__ = ["SingularSystemError", "BandedHarmonicSolver", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
+__all__ = ["SingularSystemError", "BandedHarmonicSolver", "band_ordering", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
 
 #: Smallest/largest |pivot| of the LU below which the solution is checked by refinement.
 PIVOT_SCREEN = 1e-8
@@ -85,6 +85,36 @@ def _term_triplets(model: Model, local: np.ndarray) -> dict[str, tuple[np.ndarra
     return out
 
 
+def _half_bandwidth(pattern: sp.csr_matrix, order: np.ndarray) -> int:
+    """Largest |i − j| of the pattern's entries with its rows and columns in ``order``."""
+    coo = pattern[order][:, order].tocoo()
+    return int(np.max(np.abs(coo.row - coo.col), initial=0))
+
+
+def band_ordering(pattern: sp.csr_matrix, stations: np.ndarray | None = None) -> np.ndarray:
+    """An ordering of a symmetric pattern's rows for a small band.
+
+    Each connected block of the pattern is ordered on its own and the blocks follow one another,
+    so that an uncoupled block (the shaft's torsion) does not widen the others' band. A block
+    takes the narrower of two orderings: reverse Cuthill-McKee, and, when ``stations`` (rows ×
+    keys, the first key most significant: station, component, field) are given, the order along
+    the driveline. On the baseline the latter interleaves the shaft and tailboom nodes by station
+    and gives a half band of 19 where reverse Cuthill-McKee gives 24: the band LU costs
+    ∝ kl (kl + ku), 40 % less.
+    """
+    n_blocks, label = connected_components(pattern, directed=False)
+    blocks = [np.flatnonzero(label == b) for b in range(n_blocks)]
+    order = []
+    for rows in blocks:
+        sub = pattern[rows][:, rows].tocsr()
+        candidates = [rows[reverse_cuthill_mckee(sub, symmetric_mode=True)]]
+        if stations is not None:
+            keys = np.asarray(stations)[rows]
+            candidates.append(rows[np.lexsort(keys.T[::-1])])
+        order.append(min(candidates, key=lambda o: _half_bandwidth(pattern, o)))
+    return np.concatenate(order) if order else np.zeros(0, dtype=np.int64)
+
+
 class BandedHarmonicSolver:
     """Solve ``Z(ω, Ω) q = Q`` repeatedly for one model (see the module docstring)."""
 
@@ -100,7 +130,7 @@ class BandedHarmonicSolver:
         cols = np.concatenate([t[1] for t in terms.values()])
         both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
         pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
-        perm = reverse_cuthill_mckee(pattern, symmetric_mode=True)
+        perm = band_ordering(pattern, model.dofs.stations[free])
         self.perm = perm
         self.inverse = np.argsort(perm)
         # one shared pattern (the permuted union, row-major) and each term's data on it
