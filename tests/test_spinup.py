@@ -113,3 +113,18 @@ def test_no_actuators_is_refused():
 
     with pytest.raises(ValueError, match="no active bearings"):
         actuator_receptance(dataclasses.replace(model, actuators=()), [10.0])
+
+
+def test_merged_receptance_equals_the_receptance_solved_on_the_union(baseline):
+    """Reference: one actuator_receptance call on the union of the speeds. Each speed is an
+    independent solve, so the merge must give the same numbers (rtol 1e-13: a few round-offs, in
+    case the vectorised weights of a longer sweep round differently)."""
+    model = baseline[1]
+    a, b = np.linspace(100.0, 400.0, 7), np.array([150.0, 250.0, 300.0, 420.0])  # 300 in both
+    merged = actuator_receptance(model, a).merged(actuator_receptance(model, b))
+    union = actuator_receptance(model, np.union1d(a, b))
+    np.testing.assert_array_equal(merged.speeds, np.union1d(a, b))
+    for name in ("shaft_free", "shaft_per_force", "actuator_free", "receptance", "plant"):
+        np.testing.assert_allclose(getattr(merged, name), getattr(union, name), rtol=1e-13, atol=0, err_msg=name)
+    with pytest.raises(ValueError, match="different models"):
+        merged.merged(actuator_receptance(build_model(with_overrides(baseline_design(), {"mesh.shaft_elements": 20})), b))

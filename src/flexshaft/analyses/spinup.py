@@ -34,7 +34,7 @@ Cost on the baseline (336 free DOFs, 2 actuators): 400 banded solves once (~0.1 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -111,6 +111,26 @@ class ActuatorReceptance:
     @property
     def n_actuators(self) -> int:
         return len(self.actuator_names)
+
+    def merged(self, other: ActuatorReceptance) -> ActuatorReceptance:
+        """This receptance and ``other`` (the same model at other speeds) on the union of
+        their speeds, in increasing order; a speed in both is taken from ``self``."""
+        if other.actuator_names != self.actuator_names or not np.array_equal(other.shaft_x, self.shaft_x):
+            raise ValueError("merged: the receptances belong to different models")
+        extra = ~np.isin(other.speeds, self.speeds)
+        order = np.argsort(np.concatenate([self.speeds, other.speeds[extra]]), kind="stable")
+
+        def join(name):
+            mine, theirs = getattr(self, name), getattr(other, name)
+            if mine is None or theirs is None:
+                if (mine is None) != (theirs is None):
+                    raise ValueError(f"merged: {name} is given for one receptance only")
+                return None
+            return np.concatenate([mine, theirs[extra]])[order]
+
+        per_speed = ("speeds", "shaft_free", "shaft_per_force", "actuator_free", "receptance", "plant",
+                     "sensor_free", "sensor_receptance")
+        return replace(self, **{name: join(name) for name in per_speed})
 
     @property
     def collocated(self) -> bool:

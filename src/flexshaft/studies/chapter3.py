@@ -353,31 +353,51 @@ def _forced_response(design, walls, n_speeds: int):
     )
 
 
-def _refined_peak(model, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81) -> tuple[float, float]:
-    """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak."""
-    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
+def _refined_peak(receptance_at, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81) -> tuple[float, float]:
+    """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak;
+    ``receptance_at(fine_speeds)`` gives the actuator receptance there."""
+    from flexshaft.analyses.spinup import spinup_curves
 
     i = int(np.argmax(curve))
     lo, hi = speeds[max(i - 1, 0)], speeds[min(i + 1, speeds.size - 1)]
     fine = np.linspace(lo, hi, n)
-    peak = spinup_curves(actuator_receptance(model, fine), controllers).shaft_peak
+    peak = spinup_curves(receptance_at(fine), controllers).shaft_peak
     k = int(np.argmax(peak))
     if peak[k] >= curve[i]:
         return float(peak[k]), float(fine[k])
     return float(curve[i]), float(speeds[i])
 
 
-def _clustered_speeds(model, controllers, speeds: np.ndarray, n_peaks: int = 3, n_fine: int = 33) -> np.ndarray:
-    """``speeds`` plus fine clusters around the largest resonance peaks of the design's own
-    spin-up curve: lightly damped modes that the gains hardly move (nodes at the actuators)
-    are otherwise sampled unevenly from one gain pair to the next."""
+def _receptance_cache(model):
+    """``receptance_at(speeds)``: the actuator receptance of ``model``, each grid solved once
+    (several gain pairs often refine the same resonance)."""
+    from flexshaft.analyses.spinup import actuator_receptance
+
+    cache = {}
+
+    def receptance_at(speeds: np.ndarray):
+        key = np.asarray(speeds, dtype=float).tobytes()
+        if key not in cache:
+            cache[key] = actuator_receptance(model, speeds)
+        return cache[key]
+
+    return receptance_at
+
+
+def _clustered_receptance(model, controllers, speeds: np.ndarray, n_peaks: int = 3, n_fine: int = 33):
+    """The actuator receptance on ``speeds`` plus fine clusters around the largest resonance
+    peaks of the design's own spin-up curve: lightly damped modes that the gains hardly move
+    (nodes at the actuators) are otherwise sampled unevenly from one gain pair to the next.
+    Each speed is solved once."""
     from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
 
-    curve = spinup_curves(actuator_receptance(model, speeds), controllers).shaft_peak
+    rec = actuator_receptance(model, speeds)
+    curve = spinup_curves(rec, controllers).shaft_peak
     inner = np.flatnonzero((curve[1:-1] >= curve[:-2]) & (curve[1:-1] >= curve[2:])) + 1
     peaks = inner[np.argsort(curve[inner])[::-1][:n_peaks]]
     extra = [np.linspace(speeds[k - 1], speeds[k + 1], n_fine) for k in peaks]
-    return np.unique(np.concatenate([speeds, *extra]))
+    new = np.setdiff1d(np.concatenate([speeds, *extra]), speeds)
+    return rec.merged(actuator_receptance(model, new)) if new.size else rec
 
 
 def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
@@ -385,12 +405,12 @@ def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     :class:`DesignStudies` fields they fill."""
     import xarray as xr
 
-    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map, spinup_speeds
+    from flexshaft.analyses.spinup import spinup_curves, spinup_map, spinup_speeds
     from flexshaft.assembly.model import Controller
 
     before = [a.controller for a in model.actuators]  # the design's own laws
-    speeds = _clustered_speeds(model, before, spinup_speeds(model, grid["map_speeds"]))
-    rec = actuator_receptance(model, speeds)
+    rec = _clustered_receptance(model, before, spinup_speeds(model, grid["map_speeds"]))
+    receptance_at = _receptance_cache(model)
     smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
     ds = smap.to_dataset()
     ds.attrs["title"] = "spin-up peaks over the actuator gains (thesis figures 3.12, 3.15, 3.16)"
@@ -408,7 +428,7 @@ def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     for flat in order:
         i, j = np.unravel_index(int(flat), smap.shaft_peak.shape)
         law = [Controller.pd(float(smap.kp[i]), float(smap.kd[j]))] * rec.n_actuators
-        peak, _ = _refined_peak(model, law, rec.speeds, spinup_curves(rec, law).shaft_peak)
+        peak, _ = _refined_peak(receptance_at, law, rec.speeds, spinup_curves(rec, law).shaft_peak)
         if best is None or peak < best[0]:
             best = (peak, float(smap.kp[i]), float(smap.kd[j]))
     _, kp_a, kd_a = best
@@ -426,7 +446,7 @@ def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
 
     after = [Controller.pd(kp_a, kd_a)] * rec.n_actuators
     curves = [spinup_curves(rec, c) for c in (before, after)]
-    refined = [_refined_peak(model, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
+    refined = [_refined_peak(receptance_at, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
     (peak_before, speed_before), (peak_after, speed_after) = refined
     tuned = xr.Dataset(
         {
