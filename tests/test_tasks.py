@@ -180,3 +180,20 @@ def test_workers_end_with_the_command(tmp_path, how):
         time.sleep(0.1)
     assert all(_gone(p) for p in pids), "a worker outlived its command"
     assert elapsed < 15, f"the command took {elapsed:.1f} s to end"
+
+
+def test_one_blas_thread_limits_and_restores_every_blas_library():
+    """Reference: threadpoolctl's own report of the loaded BLAS libraries (a fresh process with
+    two BLAS threads, so that the limit is visible)."""
+    code = ("import numpy, scipy.linalg; from threadpoolctl import threadpool_info as info; "
+            "from flexshaft._threads import one_blas_thread\n"
+            "before = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+            "for _ in range(3):\n"
+            "    with one_blas_thread(): inside = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+            "after = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+            "import json; print(json.dumps([before, inside, after]))")
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "2", "OMP_NUM_THREADS": "2", "MKL_NUM_THREADS": "2"}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True).stdout
+    before, inside, after = json.loads(out)
+    assert before and all(n == 2 for n in before)
+    assert inside == [1] * len(before) and after == before
