@@ -378,3 +378,29 @@ def test_bearing_reactions_balance_the_static_shaft_loads(model):
     assert v == node_rows[1, amb.worst_case] and w == node_rows[2, amb.worst_case]
     with pytest.raises(ValueError, match="q_static must have shape"):
         bearing_reactions(model, q_static[:-1], q_speed)
+
+
+def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
+    """Reference: matplotlib's default log formatter (LogFormatterSciNotation) on the same axis;
+    flexshaft's labels say the same in plain text (no mathtext to parse)."""
+    from matplotlib.ticker import LogFormatterSciNotation
+
+    from flexshaft.plot.style import log_scale, new_figure, plain_log_label
+
+    fig, axes = new_figure(1, 1, (4.0, 3.0))
+    ax = axes[0, 0]
+    ax.plot([1e-4, 3e2], [1.0, 2.0])
+    log_scale(ax, "x")
+    fig.canvas.draw()
+    ticks = [t for t in ax.xaxis.get_majorticklocs() if 1e-4 <= t <= 3e2]
+    ours = [ax.xaxis.get_major_formatter()(t) for t in ticks]
+    reference = LogFormatterSciNotation(10.0)
+    reference.set_axis(ax.xaxis)
+    theirs = [reference(t) for t in ticks]
+    exponents = [round(np.log10(t)) for t in ticks]
+    superscript = dict(zip("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    assert len(ticks) >= 3 and -4 in exponents and 2 in exponents
+    assert theirs == [f"$\\mathdefault{{10^{{{e}}}}}$" for e in exponents]
+    assert ours == ["10" + "".join(superscript[c] for c in str(e)) for e in exponents]
+    assert plain_log_label("$\\mathdefault{2\\times10^{-3}}$") == "2×10⁻³"
+    assert plain_log_label("$\\mathdefault{10^{2.30}}$") == "$\\mathdefault{10^{2.30}}$"  # left to mathtext
