@@ -16,6 +16,7 @@ pool at once), and :func:`die_with_parent` ends it when the parent dies, even by
 
 from __future__ import annotations
 
+import gc
 import importlib
 import os
 import signal
@@ -124,7 +125,15 @@ def worker_pool(processes: int, warm: Sequence[str] = ()) -> Iterator[Executor |
 
     pool = ProcessPoolExecutor(max_workers=int(processes), mp_context=multiprocessing.get_context("fork"),
                                initializer=_warm, initargs=(os.getpid(), tuple(warm)))
-    pool.submit(_ready)  # the first submission forks every worker: they warm up while we go on
+    # The first submission forks every worker: they warm up while we go on. The objects this
+    # process holds by then (the imported modules: ~150,000) are frozen for the fork, so that the
+    # workers' full garbage collections skip them (a figure worker spent 0.45 s of CPU in the
+    # collector, 0.23 s without them) and do not copy their pages by touching them.
+    gc.freeze()
+    try:
+        pool.submit(_ready)
+    finally:
+        gc.unfreeze()  # this process collects them as before
     try:
         yield pool
     except BaseException:  # Ctrl-C or an error: the queued work is not wanted, stop the workers now
