@@ -157,8 +157,11 @@ class BandedHarmonicSolver:
         self._buffer_memory = self._buffer.reshape(-1, order="F")
         self._memory_index = (self.kl + self.ku + self._rows - self._cols) + self._cols * ldab
         self._names = list(self.data)
-        self._stack = np.array([self.data[name] for name in self._names])  # (n_terms, nnz)
         self._slot = {name: k for k, name in enumerate(self._names)}
+        # the terms with a non-zero entry: a model without material loss (or without dampers)
+        # has all-zero loss terms, which need not be multiplied and added at every point
+        self._used = np.array([k for k, name in enumerate(self._names) if np.any(self.data[name])], dtype=np.intp)
+        self._stack = np.array([self.data[self._names[k]] for k in self._used]).reshape(self._used.size, keys.size)
         # Every stored term is real (mass, stiffness, damping, loss and feedback patterns; the
         # complex weights carry the frequency dependence): Z's values are then one real
         # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
@@ -203,10 +206,11 @@ class BandedHarmonicSolver:
         """Values of Z(ω, Ω) on the shared pattern (permuted ordering); ``weights``: its row
         of :meth:`coefficient_table`, when already computed."""
         w = self.coefficients(omega, speed) if weights is None else weights
+        w = w[self._used]
         if self._real_stack is None:
             return w @ self._stack
         out = np.empty(self._real_stack.shape[0], dtype=complex)
-        # a complex vector's memory is its (real, imaginary) pairs: w as (n_terms, 2) reals, and out
+        # a complex vector's memory is its (real, imaginary) pairs: w as (n_used, 2) reals, and out
         np.matmul(self._real_stack, w.view(np.float64).reshape(-1, 2), out=out.view(np.float64).reshape(-1, 2))
         return out
 
