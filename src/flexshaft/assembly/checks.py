@@ -135,6 +135,10 @@ def _law_problem(actuator, speed: float) -> str | None:
     """Why the actuator's law fails :func:`check_actuator_law` at ``speed``, or None."""
     key = (actuator.controller, actuator.amplifier_bandwidth, actuator.current_gain, actuator.negative_stiffness,
            actuator.collocated, float(speed))
+    try:
+        hash(key)
+    except TypeError:  # a controller built by hand with array coefficients: not remembered
+        return _check_laws(actuator, speed)
     if key not in _LAW_PROBLEMS:
         if len(_LAW_PROBLEMS) > 1024:
             _LAW_PROBLEMS.clear()
