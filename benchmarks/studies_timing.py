@@ -78,13 +78,26 @@ def _time_command(cmd: list[str], env: dict | None) -> tuple[float, float]:
     return wall, cpu
 
 
+def speed_probe() -> float:
+    """Seconds of a fixed pure-Python loop (2.5 million additions): the shared VM's speed drifts
+    by up to 1.7x from one minute to the next, and this says how fast it ran beside a repeat
+    (compare runs by it: a run at a probe 1.5x longer is about 1.5x slower for that reason)."""
+    start = time.process_time()
+    total = 0
+    for i in range(2_500_000):
+        total += i
+    return time.process_time() - start
+
+
 def time_run(studies: str, repeats: int, reference: str | None = None) -> dict:
     """``flexshaft run --studies X`` as a fresh process, ``repeats`` times; with a
     ``reference`` source folder (another checkout's ``src``), each repeat also runs the same
     command on that code right after (PYTHONPATH), so that both see the same machine load."""
     codes = {"now": None} if reference is None else {"now": None, "reference": os.path.abspath(reference)}
     times = {name: ([], []) for name in codes}
+    probes = []
     for _ in range(repeats):
+        probes.append(speed_probe())
         for name, src in codes.items():
             env = None if src is None else {**os.environ, "PYTHONPATH": src}
             with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
@@ -92,7 +105,9 @@ def time_run(studies: str, repeats: int, reference: str | None = None) -> dict:
             times[name][0].append(wall)
             times[name][1].append(cpu)
     walls, cpus = times["now"]
-    result = {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": f"flexshaft run --studies {studies}"}
+    probes.append(speed_probe())
+    result = {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": f"flexshaft run --studies {studies}",
+              "probe": bu.stats(probes)}
     if reference is not None:
         ref_walls, ref_cpus = times["reference"]
         result["reference"] = {**bu.stats(ref_walls), "cpu": bu.stats(ref_cpus), "source": codes["reference"]}
@@ -136,18 +151,20 @@ def main(argv=None) -> int:
           f"Python {m['python']}; BLAS threads {m['blas_threads_env']}")
     print()
     print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | reference wall [s] (CPU) "
-          "| reference / now | repeats |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+          "| reference / now | repeats | speed probe [s] |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for name, r in results.items():
         cold = f"{r['cold_s']:.2f}" if "cold_s" in r else "–"
         ref = (f"{bu.fmt_stats(r['reference'], 2)} ({r['reference']['cpu']['median']:.2f}) | {r['speedup']:.2f}×"
                if "reference" in r else "– | –")
+        probe = bu.fmt_stats(r["probe"], 3) if "probe" in r else "–"
         print(f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} | {ref} "
-              f"| {r['warm']['n']} |")
+              f"| {r['warm']['n']} | {probe} |")
     print()
     print("studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
           "others after it. run-*: `flexshaft run --studies X` as a fresh process each time "
-          "(start-up, imports, analyses, report).")
+          "(start-up, imports, analyses, report). Speed probe: a fixed pure-Python loop timed before "
+          "each repeat and after the last (wall times scale with it on the shared VM).")
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"machine": m, "results": results}, f, indent=1)
