@@ -2,9 +2,9 @@
 
 The run's independent pieces of work (the thesis studies, then the report's figures) go to the
 same few workers, started once at the beginning. The workers fork from a parent that has
-already imported numpy, scipy and flexshaft, and import what they will need (matplotlib,
-xarray) themselves at start, while the parent computes the main analyses: that import time
-and the studies overlap the parent's work instead of following it
+already imported numpy, scipy, xarray and flexshaft, and import what else they will need
+(matplotlib, for the figures) themselves at start, while the parent computes the main
+analyses: that import time and the studies overlap the parent's work instead of following it
 (benchmarks/studies_timing.py).
 
 Without ``fork`` (Windows), or for one process, :func:`worker_pool` gives ``None`` and the

@@ -91,7 +91,7 @@ def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> 
     if kind == "speed":
         return f"{rad_s_to_rpm(value):{sign}.0f} rpm"
     if kind == "length":
-        return f"{value * 1e3:{sign}.3g} mm"
+        return f"{m_to_mm(value):{sign}.3g} mm"
     if kind == "force":
         return f"{value:{sign}.4g} N"
     if kind == "temperature":

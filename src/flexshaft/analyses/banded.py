@@ -8,9 +8,10 @@ collocated bearing (B_s = B_a) adds ``(G_a(iω) − k_s) B_aᵀB_a`` on one symm
 
 The free DOFs are renumbered once on the union sparsity of every term (:func:`band_ordering`:
 each uncoupled block on its own, shaft and boom nodes interleaved by station, or reverse
-Cuthill-McKee where that is narrower); the half band of the baseline is 19. Every term is stored once as the data of one shared sparse pattern,
-so ``Z`` at a new (ω, Ω) is one real product over ``nnz`` numbers, scattered into LAPACK band
-storage, factorised and solved by ``zgbsv``: O(n b²) per point.
+Cuthill-McKee where that is narrower); the half band of the baseline is 19. Every term is
+stored once as the data of one shared sparse pattern, so ``Z`` at a new (ω, Ω) is one real
+product over ``nnz`` numbers, scattered into LAPACK band storage, factorised and solved by
+``zgbsv``: O(n b²) per point.
 
 Singularity (an undamped system excited at one of its resonances) is detected without a
 per-point condition estimate: when the factor's pivots span more than :data:`PIVOT_SCREEN`,
@@ -141,7 +142,6 @@ class BandedHarmonicSolver:
         self.ku = int(np.max(self._cols - self._rows, initial=0))
         self._template = sp.csr_matrix((np.zeros(keys.size), (self._rows, self._cols)), shape=(n, n))
         self._template.sort_indices()
-        self._band_index = (self.kl + self.ku + self._rows - self._cols) * n + self._cols
         self.data = {}
         for name, (r, c, v) in permuted.items():
             values = np.zeros(keys.size, dtype=complex)
@@ -216,8 +216,8 @@ class BandedHarmonicSolver:
 
     def matrix(self, omega: float, speed: float) -> np.ndarray:
         """Band storage of Z(ω, Ω) in the ``zgbtrf`` layout (2 kl + ku + 1, n)."""
-        ab = np.zeros((2 * self.kl + self.ku + 1, self.n), dtype=complex)
-        ab.flat[self._band_index] = self.matrix_data(omega, speed)
+        ab = np.zeros((2 * self.kl + self.ku + 1, self.n), dtype=complex, order="F")
+        ab.reshape(-1, order="F")[self._memory_index] = self.matrix_data(omega, speed)  # a view: F-contiguous
         return ab
 
     def sparse_matrix(self, omega: float, speed: float) -> sp.csr_matrix:

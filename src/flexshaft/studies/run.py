@@ -187,22 +187,30 @@ def _start_own_analyses(design, model: Model, speeds: np.ndarray, n_campbell: in
     from flexshaft.studies.tasks import Task, start_tasks
 
     top = max(model.speed, 1.0)
-    tasks = [Task("imbalance", "imbalance response over speed", _spinup_response, (design, speeds), cost=0.4),
-             Task("campbell", "Campbell diagram", _campbell, (design, np.linspace(0.0, SCAN_TOP * top, n_campbell)),
+    # a worker rebuilds the model from the design (a few ms; the design pickles in a few kB);
+    # in this process the tasks share the model already built
+    source = design if executor is not None else model
+    tasks = [Task("imbalance", "imbalance response over speed", _spinup_response, (source, speeds), cost=0.4),
+             Task("campbell", "Campbell diagram", _campbell, (source, np.linspace(0.0, SCAN_TOP * top, n_campbell)),
                   cost=0.15)]
     if model.shaft.laminate is not None:
-        tasks.append(Task("buckling", "torsional buckling", _buckling, (design,), cost=0.3))
-        tasks.append(Task("thermal", "thermal", _thermal, (design,), cost=0.25))
-    tasks.append(Task("stability", "whirl stability", _stability, (design,), cost=0.2))
+        tasks.append(Task("buckling", "torsional buckling", _buckling, (source,), cost=0.3))
+        tasks.append(Task("thermal", "thermal", _thermal, (source,), cost=0.25))
+    tasks.append(Task("stability", "whirl stability", _stability, (source,), cost=0.2))
     return start_tasks(tasks, executor)
 
 
-def _spinup_response(design, speeds):
+def _model_of(source) -> Model:
+    """The model of an own-analysis task's ``source``: a Model, or a design to build it from."""
+    return source if isinstance(source, Model) else build_model(source)
+
+
+def _spinup_response(source, speeds):
     """Worst-case imbalance response over ``speeds``: (q, orbits, worst envelope, actuator
     displacement and force, the lateral critical speeds found on it)."""
     from flexshaft.studies.verdict_evidence import scan_critical_speeds
 
-    model = build_model(design)
+    model = _model_of(source)
     q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
     amp, case = worst_case_orbits(model, q)
     idx = np.arange(speeds.size)
@@ -211,24 +219,25 @@ def _spinup_response(design, speeds):
     return q, amp, envelope, disp, force, scan_critical_speeds(model, speeds, amp)
 
 
-def _campbell(design, speeds):
-    return campbell(build_model(design), speeds, n_modes=12)
+def _campbell(source, speeds):
+    return campbell(_model_of(source), speeds, n_modes=12)
 
 
-def _buckling(design):
-    return shaft_buckling(build_model(design)).to_dict()
+def _buckling(source):
+    return shaft_buckling(_model_of(source)).to_dict()
 
 
-def _thermal(design):
+def _thermal(source):
     from flexshaft.studies.thermal import thermal_results
 
-    return thermal_results(design, build_model(design), self_heat=True)
+    model = _model_of(source)
+    return thermal_results(model.design, model, self_heat=True)
 
 
-def _stability(design):
+def _stability(source):
     from flexshaft.analyses.stability import stability
 
-    model = build_model(design)
+    model = _model_of(source)
     return stability(model, whirl_speeds(model), n_modes=10)
 
 

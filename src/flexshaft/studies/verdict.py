@@ -179,7 +179,9 @@ class Verdict(ResultMixin):
 
         normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
         return margins_figure([c.title for c in self.checks], normalised, [c.status for c in self.checks],
-                              ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True) for c in self.checks], [c.lower_bound for c in self.checks],
+                              ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True)
+                               for c in self.checks],
+                              [c.lower_bound for c in self.checks],
                               ax=ax, **{"title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} "
                                                  "(margin / limit of each)", **kwargs})
 
