@@ -404,3 +404,39 @@ def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
     assert ours == ["10" + "".join(superscript[c] for c in str(e)) for e in exponents]
     assert plain_log_label("$\\mathdefault{2\\times10^{-3}}$") == "2×10⁻³"
     assert plain_log_label("$\\mathdefault{10^{2.30}}$") == "$\\mathdefault{10^{2.30}}$"  # left to mathtext
+
+
+@pytest.mark.parametrize("facecolor", ["white", "none"])
+def test_png_files_hold_the_pixels_pillow_writes(tmp_path, facecolor):
+    """Reference: matplotlib's own PNG path (Agg buffer through Pillow's encoder), decoded by
+    Pillow. flexshaft's zlib writer (flexshaft.plot.png) must give the same pixels exactly, the
+    same resolution and Software text; an opaque figure as RGB, a transparent one as RGBA."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    from flexshaft.plot.output import save_figure
+    from flexshaft.plot.style import new_figure
+
+    fig, axes = new_figure(1, 2, (5.0, 2.5))
+    fig.set_facecolor(facecolor)
+    axes[0, 0].plot([0.0, 1.0, 2.0], [0.0, 1.0, 0.5], label="a")
+    axes[0, 1].contourf(np.random.default_rng(0).random((8, 8)), cmap="viridis")
+    axes[0, 0].legend()
+    ours = save_figure(fig, tmp_path, "ours", svg=False, dpi=97.0)["png"]
+    FigureCanvasAgg(fig)  # matplotlib's own canvas again
+    fig.savefig(tmp_path / "pillow.png", dpi=97.0, pil_kwargs={"compress_level": 1})
+    with Image.open(ours) as mine, Image.open(tmp_path / "pillow.png") as reference:
+        assert mine.size == reference.size
+        assert mine.mode == ("RGB" if facecolor == "white" else "RGBA")
+        np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), np.asarray(reference.convert("RGBA")))
+        assert mine.info["dpi"] == pytest.approx(reference.info["dpi"], abs=1e-3)  # pixels per metre, rounded
+        assert mine.info["Software"] == reference.info["Software"]
+
+
+def test_png_writer_rejects_what_is_not_an_rgba_image(tmp_path):
+    from flexshaft.plot.png import write_png
+
+    with pytest.raises(ValueError, match="rgba: expected a non-empty"):
+        write_png(tmp_path / "x.png", np.zeros((4, 4, 3), dtype=np.uint8))
+    with pytest.raises(ValueError, match="rgba: expected a non-empty"):
+        write_png(tmp_path / "x.png", np.zeros((4, 4, 4), dtype=float))
