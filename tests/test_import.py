@@ -57,3 +57,21 @@ def test_import_flexshaft_is_fast() -> None:
 def test_import_loads_no_heavy_package(module: str) -> None:
     _, heavy = fresh_import(module)
     assert heavy == [], f"import {module} loaded {heavy}"
+
+
+def test_the_run_needs_no_scipy_optimize() -> None:
+    """scipy.optimize (with scipy.special and scipy.fft, which it imports) costs about 0.35 s to
+    import with scipy 1.17, most of it parsing 281 docstrings, and every process of a run would
+    pay it before its first computation. The run's solvers do without it: mode tracking
+    assigns with scipy.sparse.csgraph's bipartite matching, the tailboom energy balance uses
+    fluids' Brent root finder and the endless-tube buckling searches zoom on a grid. Reference:
+    sys.modules after the design's own analyses, in a fresh interpreter."""
+    code = (
+        "import json, sys\n"
+        "from flexshaft.design import embedded_design\n"
+        "from flexshaft.studies.run import run_analysis\n"
+        "run_analysis(embedded_design('tuned'), studies=None)\n"
+        "print(json.dumps(sorted(m for m in ('scipy.optimize', 'scipy.special', 'scipy.fft') if m in sys.modules)))\n"
+    )
+    completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=True)
+    assert json.loads(completed.stdout.strip().splitlines()[-1]) == []

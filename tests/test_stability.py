@@ -107,3 +107,25 @@ def test_onset_speed_converges_with_mesh():
     onsets = np.array(onsets)
     assert abs(onsets[1] / onsets[2] - 1) < 2e-3
     assert abs(onsets[1] - onsets[2]) <= abs(onsets[0] - onsets[2]) + 1e-9 * onsets[2]
+
+
+def test_mode_assignment_is_scipys_linear_sum_assignment():
+    """Reference: scipy.optimize.linear_sum_assignment (the Hungarian/LAPJV solver the tracking
+    used before). ``assignment`` must give the same columns on random rectangular costs, on
+    costs whose row minima collide (the matching path) and where they do not (the shortcut)."""
+    import importlib
+
+    from scipy.optimize import linear_sum_assignment
+
+    assignment = importlib.import_module("flexshaft.analyses.campbell").assignment
+    rng = np.random.default_rng(7)
+    shortcut = matching = 0
+    for _ in range(400):
+        p = int(rng.integers(1, 25))
+        cost = rng.random((p, p + int(rng.integers(0, 12)))) * 10.0 ** rng.integers(-3, 4)
+        if rng.random() < 0.3:  # a near-permutation: each row's own minimum is distinct
+            cost[np.arange(p), rng.permutation(cost.shape[1])[:p]] -= cost.max()
+        distinct = np.unique(cost.argmin(axis=1)).size == p
+        shortcut, matching = shortcut + distinct, matching + (not distinct)
+        np.testing.assert_array_equal(assignment(cost), linear_sum_assignment(cost)[1])
+    assert shortcut > 50 and matching > 50

@@ -2,13 +2,14 @@
 
 At each speed the loss-free state matrix on the modal basis gives every candidate
 (:mod:`flexshaft.analyses.eigen`); candidates are matched to the curves of the previous speed
-by the modal assurance criterion (Hungarian assignment with a small frequency-distance
-penalty), so a curve keeps its identity through veerings and crossings; each tracked mode is
-then refined to its loss-consistent eigenvalue (every member's hysteretic loss at the mode's
-own frequency, the model's internal-damping model), so frequencies, damping ratios and log
-decrements are those of the forced response's physics. Each point carries its kind and whirl
-labels (:mod:`flexshaft.analyses.classify`). Critical speeds are the intersections of the
-**lateral** curves with the excitation lines ``ω = kΩ`` (linear interpolation).
+by the modal assurance criterion (an optimal assignment, :func:`assignment`, with a small
+frequency-distance penalty), so a curve keeps its identity through veerings and crossings;
+each tracked mode is then refined to its loss-consistent eigenvalue (every member's hysteretic
+loss at the mode's own frequency, the model's internal-damping model), so frequencies, damping
+ratios and log decrements are those of the forced response's physics. Each point carries its
+kind and whirl labels (:mod:`flexshaft.analyses.classify`). Critical speeds are the
+intersections of the **lateral** curves with the excitation lines ``ω = kΩ`` (linear
+interpolation).
 """
 
 from __future__ import annotations
@@ -17,7 +18,6 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
@@ -28,7 +28,7 @@ from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Campbell", "CriticalSpeed", "EigenvalueCurves", "TrackedModes", "campbell", "critical_speeds",
-           "check_speeds", "default_basis_size", "mac", "track_modes"]
+           "assignment", "check_speeds", "default_basis_size", "mac", "track_modes"]
 
 
 def default_basis_size(n_modes: int) -> int:
@@ -39,6 +39,27 @@ def default_basis_size(n_modes: int) -> int:
 def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Modal assurance criterion |aᴴb|² of unit columns (a: (n, p), b: (n, q)) → (p, q)."""
     return np.abs(a.conj().T @ b) ** 2
+
+
+def assignment(cost: np.ndarray) -> np.ndarray:
+    """Column of each row of a finite (p, q) ``cost`` (p ≤ q), distinct columns, least total cost.
+
+    When the rows' own cheapest columns are distinct they are the answer (no assignment costs
+    less than the sum of the row minima); this is the usual case between close speeds. Otherwise
+    the linear assignment problem is solved exactly by scipy.sparse.csgraph's minimum-weight
+    full bipartite matching on the complete graph (costs shifted to >= 1: a stored zero would be
+    a missing edge; the shift adds the same p times it to every assignment).
+    """
+    best = np.argmin(cost, axis=1)
+    if np.unique(best).size == best.size:
+        return best
+    import scipy.sparse as sp
+    from scipy.sparse.csgraph import min_weight_full_bipartite_matching
+
+    rows, cols = min_weight_full_bipartite_matching(sp.csr_array(cost - cost.min() + 1.0))
+    idx = np.empty(cost.shape[0], dtype=int)
+    idx[rows] = cols
+    return idx
 
 
 @dataclass(frozen=True)
@@ -111,7 +132,7 @@ def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
     converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes landed on
     the same eigenvalue. Otherwise (and always without ``refine_loss``) ``solve(speed) ->
     (s, Y)`` gives all candidates (default: the loss-free state matrix), matched to the
-    previous curves by maximum MAC with a small frequency-distance penalty (Hungarian
+    previous curves by maximum MAC with a small frequency-distance penalty (optimal
     assignment), then refined. ``viscous(speed)`` gives the weights of the thesis's viscous
     internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
     candidates and continuation then solve that linear problem.
@@ -180,7 +201,7 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
         lam_prev, Y_prev = prev
         scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
         cost = 1 - mac(Y_prev, Y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
-        _, idx = linear_sum_assignment(cost)
+        idx = assignment(cost)
     s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
     if refine_loss:
         s_k, Y_k = refine_set(red, speed, s_k, Y_k)

@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.linalg
-import scipy.optimize
 from numpy.typing import NDArray
 
 from flexshaft.buckling._common import (
@@ -25,11 +24,16 @@ from flexshaft.buckling._common import (
     axial_integrals,
     default_terms,
     extreme_torques,
+    helix_minima,
+    rank_two_torques,
     shell_stiffness,
 )
 from flexshaft.laminate import Laminate
 
 __all__ = ["classical_helix_torque", "classical_galerkin_matrices", "classical_buckling", "helix_operators"]
+
+#: log-spaced axial wavenumbers around eta = n/R searched on the infinite tube
+_LOG_K_OFFSETS = np.linspace(-8.0, 3.0, 45)
 
 # rows of the strain operators
 _EPS_X, _EPS_Y, _GAMMA, _KAPPA_X, _KAPPA_Y, _KAPPA_XY, _BETA_X, _BETA_Y = range(8)
@@ -38,32 +42,33 @@ _EPS_X, _EPS_Y, _GAMMA, _KAPPA_X, _KAPPA_Y, _KAPPA_XY, _BETA_X, _BETA_Y = range(
 # Infinite cylinder: a single helical harmonic exp(i(k x + n theta)) solves the equations exactly
 
 
-def helix_operators(radius: float, n: int, k: float, kinematics: str) -> NDArray[np.complex128]:
-    """Strain rows (8) x (U, V, W) for the harmonic exp(i(k x + n theta))."""
+def helix_operators(radius: float, n, k, kinematics: str) -> NDArray[np.complex128]:
+    """Strain rows (8) x (U, V, W) for the harmonics exp(i(k x + n theta)); shape
+    ``broadcast(n, k).shape + (8, 3)`` ((8, 3) for scalars)."""
+    n, k = np.broadcast_arrays(np.asarray(n, dtype=float), np.asarray(k, dtype=float))
     eta = n / radius
     sanders = 1.0 if kinematics == "sanders" else 0.0
-    B = np.zeros((8, 3), dtype=complex)
-    B[_EPS_X, 0] = 1j * k
-    B[_EPS_Y, 1], B[_EPS_Y, 2] = 1j * eta, 1.0 / radius
-    B[_GAMMA, 0], B[_GAMMA, 1] = 1j * eta, 1j * k
-    B[_KAPPA_X, 2] = k * k
-    B[_KAPPA_Y, 1], B[_KAPPA_Y, 2] = sanders * 1j * eta / radius, eta * eta
-    B[_KAPPA_XY, 0] = -sanders * 1j * eta / (2.0 * radius)
-    B[_KAPPA_XY, 1] = sanders * 1.5j * k / radius
-    B[_KAPPA_XY, 2] = 2.0 * k * eta
-    B[_BETA_X, 2] = -1j * k
-    B[_BETA_Y, 1], B[_BETA_Y, 2] = sanders / radius, -1j * eta
+    B = np.zeros(n.shape + (8, 3), dtype=complex)
+    B[..., _EPS_X, 0] = 1j * k
+    B[..., _EPS_Y, 1], B[..., _EPS_Y, 2] = 1j * eta, 1.0 / radius
+    B[..., _GAMMA, 0], B[..., _GAMMA, 1] = 1j * eta, 1j * k
+    B[..., _KAPPA_X, 2] = k * k
+    B[..., _KAPPA_Y, 1], B[..., _KAPPA_Y, 2] = sanders * 1j * eta / radius, eta * eta
+    B[..., _KAPPA_XY, 0] = -sanders * 1j * eta / (2.0 * radius)
+    B[..., _KAPPA_XY, 1] = sanders * 1.5j * k / radius
+    B[..., _KAPPA_XY, 2] = 2.0 * k * eta
+    B[..., _BETA_X, 2] = -1j * k
+    B[..., _BETA_Y, 1], B[..., _BETA_Y, 2] = sanders / radius, -1j * eta
     return B
 
 
-def _helix_torques(C: NDArray[np.float64], radius: float, n: int, k: float, kinematics: str) -> tuple[float, float]:
-    """Positive-sense torque and negative-sense magnitude [N m] of the helix exp(i(k x + n theta))."""
+def _helix_torques(C: NDArray[np.float64], radius: float, n, k, kinematics: str) -> NDArray[np.float64]:
+    """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix
+    exp(i(k x + n theta)) (inf: none); :func:`~flexshaft.buckling._common.rank_two_torques`."""
     B = helix_operators(radius, n, k, kinematics)
-    K = B[:6].conj().T @ C @ B[:6]
-    P = np.outer(B[_BETA_X].conj(), B[_BETA_Y])
-    G = -(P + P.conj().T) / (2.0 * np.pi * radius**2)
-    mu = scipy.linalg.eigvalsh(G, K)
-    return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
+    strains = B[..., :6, :]
+    K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
+    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
 
 
 def classical_helix_torque(
@@ -71,30 +76,22 @@ def classical_helix_torque(
 ) -> dict[str, tuple[float, int, float]]:
     """Critical torques of an infinitely long classical tube, minimised over 2 <= n <= n_max and k.
 
+    The minimum over k is found for every n at once on a log grid (45 points over
+    k = n/R e^[-8, 3], either sign), zoomed four times by a factor 8 around the best point
+    (:func:`~flexshaft.buckling._common.helix_minima`: final spacing 6e-5 in log k, relative
+    error of order 1e-9).
+
     Returns ``{"positive": (T, n, k), "negative": (|T|, n, k)}`` (T [N m], k [rad/m]).
     """
     C = shell_stiffness(laminate)
-    best = {"positive": (np.inf, 0, 0.0), "negative": (np.inf, 0, 0.0)}
-    for n in range(2, n_max + 1):
-        for index, key in enumerate(("positive", "negative")):
-            for hand in (1.0, -1.0):
-
-                def load(log_k: float) -> float:
-                    return _helix_torques(C, radius, n, hand * np.exp(log_k), kinematics)[index]
-
-                log_grid = np.log(n / radius) + np.linspace(-8.0, 3.0, 45)
-                values = np.array([load(x) for x in log_grid])
-                i = int(np.argmin(values))
-                if not np.isfinite(values[i]):
-                    continue
-                lo, hi = log_grid[max(i - 1, 0)], log_grid[min(i + 1, log_grid.size - 1)]
-                found = scipy.optimize.minimize_scalar(
-                    load, bounds=(lo, hi), method="bounded", options={"xatol": 1e-7}
-                )
-                if found.fun < best[key][0]:
-                    best[key] = (float(found.fun), n, hand * float(np.exp(found.x)))
-        if n > max(best["positive"][1], best["negative"][1]) + 3:
-            break
+    n = np.arange(2, int(n_max) + 1)
+    torques, wavenumbers = helix_minima(lambda n_, k_: _helix_torques(C, radius, n_, k_, kinematics), radius, n,
+                                        _LOG_K_OFFSETS)
+    best = {}
+    for sense, key in enumerate(("positive", "negative")):
+        i = int(np.argmin(torques[:, sense]))
+        found = np.isfinite(torques[i, sense])
+        best[key] = (float(torques[i, sense]), int(n[i]) if found else 0, float(wavenumbers[i, sense]) if found else 0.0)
     return best
 
 

@@ -69,7 +69,7 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
-from flexshaft.buckling._common import Kinematics, default_terms, shell_stiffness
+from flexshaft.buckling._common import Kinematics, default_terms, helix_minima, rank_two_torques, shell_stiffness
 from flexshaft.buckling.classical import assemble_ritz, ritz_mode
 from flexshaft.laminate import Laminate, transverse_shear_stiffness
 
@@ -124,26 +124,12 @@ def _helix_operators(radius: float, n: NDArray, k: NDArray, kinematics: str) -> 
 
 
 def _helix_torques(C: NDArray[np.float64], radius: float, n: NDArray, k: NDArray, kinematics: str) -> NDArray:
-    """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix (inf: none).
-
-    The load matrix has rank 2: G = -c (x y^H + y x^H) with x = conj(beta_x), y = conj(beta_y),
-    c = 1/(2 pi R^2). The nonzero eigenvalues mu = 1/T of K^-1 G are those of the 2x2 matrix
-    -c J S, S = W^H K^-1 W, W = [x, y], J = [[0, 1], [1, 0]]:
-    mu = -c (rho -/+ sqrt(rho^2 + det S)) with rho = Re S_01. So T+ = 1/(c (sqrt(rho^2 + d) - rho))
-    and T- = 1/(c (sqrt(rho^2 + d) + rho)), one 5x5 solve with two right-hand sides per helix.
-    """
+    """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix (inf: none);
+    one 5x5 solve with two right-hand sides per helix (:func:`~flexshaft.buckling._common.rank_two_torques`)."""
     B = _helix_operators(radius, n, k, kinematics)
     strains = B[..., :8, :]
     K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
-    W = np.stack([B[..., _BETA_X, :].conj(), B[..., _BETA_Y, :].conj()], axis=-1)  # (..., 5, 2)
-    S = np.swapaxes(W.conj(), -1, -2) @ np.linalg.solve(K, W)
-    rho = S[..., 0, 1].real
-    root = np.sqrt(rho**2 + np.maximum((S[..., 0, 0] * S[..., 1, 1]).real - np.abs(S[..., 0, 1]) ** 2, 0.0))
-    c = 1.0 / (2.0 * np.pi * radius**2)
-    with np.errstate(divide="ignore"):
-        positive = np.where(root - rho > 0.0, 1.0 / (c * (root - rho)), np.inf)
-        negative = np.where(root + rho > 0.0, 1.0 / (c * (root + rho)), np.inf)
-    return np.stack([positive, negative], axis=-1)
+    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
 
 
 def shear_helix_curve(
@@ -154,8 +140,8 @@ def shear_helix_curve(
 
     The minimum over k is found on a log grid (57 points over k = n/R e^[-8, 6], either sign)
     and, with ``refine``, zoomed four times by a factor 8 around the best point (17 points each):
-    the final spacing of 6e-5 in log k leaves a relative error of order 1e-9 at a smooth minimum.
-    Batched over all n.
+    the final spacing of 6e-5 in log k leaves a relative error of order 1e-9 at a smooth minimum
+    (:func:`~flexshaft.buckling._common.helix_minima`). Batched over all n.
 
     Parameters
     ----------
@@ -172,31 +158,8 @@ def shear_helix_curve(
         Signed axial wavenumber [rad/m] of each minimum.
     """
     C = shell_stiffness(laminate, "shear")
-    n = np.atleast_1d(np.asarray(n, dtype=int))
-    rows = np.arange(n.size)[:, None]
-    senses = np.arange(2)[None, :]
-    torques = np.full((n.size, 2), np.inf)
-    wavenumbers = np.zeros((n.size, 2))
-    for hand in (1.0, -1.0):
-        log_k = np.log(n / radius)[:, None] + _LOG_K_OFFSETS[None, :]
-        values = _helix_torques(C, radius, n[:, None], hand * np.exp(log_k), kinematics)  # (n, k, 2)
-        best = np.argmin(values, axis=1)  # (n, 2)
-        centre, value = log_k[rows, best], values[rows, best, senses]
-        step = _LOG_K_OFFSETS[1] - _LOG_K_OFFSETS[0]
-        for _ in range(4 if refine else 0):
-            local = centre[..., None] + np.linspace(-step, step, 17)  # (n, 2, 17)
-            zoomed = _helix_torques(C, radius, n[:, None, None], hand * np.exp(local), kinematics)
-            zoomed = np.take_along_axis(zoomed, np.broadcast_to(senses[..., None, None], local.shape + (1,)),
-                                        axis=-1)[..., 0]  # each sense's own torque, (n, 2, 17)
-            i = np.argmin(zoomed, axis=-1)
-            better = zoomed[rows, senses, i] < value
-            centre = np.where(better, local[rows, senses, i], centre)
-            value = np.where(better, zoomed[rows, senses, i], value)
-            step /= 8.0
-        improved = value < torques
-        torques = np.where(improved, value, torques)
-        wavenumbers = np.where(improved, hand * np.exp(centre), wavenumbers)
-    return torques, wavenumbers
+    return helix_minima(lambda n_, k_: _helix_torques(C, radius, n_, k_, kinematics), radius, n, _LOG_K_OFFSETS,
+                        refine)
 
 
 def shear_helix_torque(
