@@ -50,6 +50,7 @@ __all__ = [
     "SpinupCurves",
     "SpinupMap",
     "actuator_receptance",
+    "clustered_receptance",
     "spinup_curves",
     "spinup_map",
     "spinup_speeds",
@@ -399,6 +400,27 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
         actuator_force=force,
         actuator_names=rec.actuator_names,
     )
+
+
+def clustered_receptance(model: Model, controllers, speeds, n_peaks: int = 3, n_fine: int = 33) -> ActuatorReceptance:
+    """:func:`actuator_receptance` on ``speeds`` plus ``n_fine`` speeds between the neighbours
+    of each of the ``n_peaks`` largest resonance peaks of the spin-up curve under
+    ``controllers`` (each speed solved once).
+
+    A lightly damped resonance falls between evenly spaced samples, so their largest value is
+    below the true peak (by 11 % on the tuned design's 1 mm wall with 201 speeds); the clusters
+    resolve it (within 0.5 % with 100 speeds, 3 peaks and 17 fine speeds each,
+    tests/test_spinup.py).
+    """
+    n_peaks, n_fine = check_count(n_peaks, "n_peaks"), check_count(n_fine, "n_fine")
+    rec = actuator_receptance(model, speeds)
+    curve = spinup_curves(rec, controllers).shaft_peak
+    inner = np.flatnonzero((curve[1:-1] >= curve[:-2]) & (curve[1:-1] >= curve[2:])) + 1
+    peaks = inner[np.argsort(curve[inner])[::-1][:n_peaks]]
+    grid = rec.speeds
+    extra = [np.linspace(grid[k - 1], grid[k + 1], n_fine) for k in peaks]
+    new = np.setdiff1d(np.concatenate([grid, *extra]), grid)
+    return rec.merged(actuator_receptance(model, new)) if new.size else rec
 
 
 @dataclass(frozen=True)

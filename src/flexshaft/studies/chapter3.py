@@ -384,32 +384,16 @@ def _receptance_cache(model):
     return receptance_at
 
 
-def _clustered_receptance(model, controllers, speeds: np.ndarray, n_peaks: int = 3, n_fine: int = 33):
-    """The actuator receptance on ``speeds`` plus fine clusters around the largest resonance
-    peaks of the design's own spin-up curve: lightly damped modes that the gains hardly move
-    (nodes at the actuators) are otherwise sampled unevenly from one gain pair to the next.
-    Each speed is solved once."""
-    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
-
-    rec = actuator_receptance(model, speeds)
-    curve = spinup_curves(rec, controllers).shaft_peak
-    inner = np.flatnonzero((curve[1:-1] >= curve[:-2]) & (curve[1:-1] >= curve[2:])) + 1
-    peaks = inner[np.argsort(curve[inner])[::-1][:n_peaks]]
-    extra = [np.linspace(speeds[k - 1], speeds[k + 1], n_fine) for k in peaks]
-    new = np.setdiff1d(np.concatenate([speeds, *extra]), speeds)
-    return rec.merged(actuator_receptance(model, new)) if new.size else rec
-
-
 def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance: the
     :class:`DesignStudies` fields they fill."""
     import xarray as xr
 
-    from flexshaft.analyses.spinup import spinup_curves, spinup_map, spinup_speeds
+    from flexshaft.analyses.spinup import clustered_receptance, spinup_curves, spinup_map, spinup_speeds
     from flexshaft.assembly.model import Controller
 
     before = [a.controller for a in model.actuators]  # the design's own laws
-    rec = _clustered_receptance(model, before, spinup_speeds(model, grid["map_speeds"]))
+    rec = clustered_receptance(model, before, spinup_speeds(model, grid["map_speeds"]))
     receptance_at = _receptance_cache(model)
     smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
     ds = smap.to_dataset()

