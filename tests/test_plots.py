@@ -440,3 +440,17 @@ def test_png_writer_rejects_what_is_not_an_rgba_image(tmp_path):
         write_png(tmp_path / "x.png", np.zeros((4, 4, 3), dtype=np.uint8))
     with pytest.raises(ValueError, match="rgba: expected a non-empty"):
         write_png(tmp_path / "x.png", np.zeros((4, 4, 4), dtype=float))
+
+
+def test_wall_figure_shows_the_spinup_peak_panel_only_with_actuators():
+    """The wall study's spin-up peak gets its own panel with its smallest value marked; a
+    design without actuators (all NaN) keeps the two panels."""
+    from flexshaft.plot.studies import wall_thickness_figure
+
+    walls = np.array([1.0, 2.0, 3.0, 4.0]) * 1e-3
+    sf, f1 = np.array([10.0, 20.0, 30.0, 40.0]), np.array([5.0, 4.9, 4.8, 4.7])
+    fig = wall_thickness_figure(walls, sf, sf, f1, np.array([3.0, 0.9, 0.4, 0.7]) * 1e-3)
+    assert len(fig.axes) == 3
+    labels = [t.get_text() for t in fig.axes[2].get_legend().get_texts()]
+    assert labels[1] == "smallest: 0.4 mm at 3 mm wall"
+    assert len(wall_thickness_figure(walls, sf, sf, f1, np.full(4, np.nan)).axes) == 2

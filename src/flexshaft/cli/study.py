@@ -146,7 +146,8 @@ def wall(
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall")
     figures = {"wall": _save(wall_thickness_figure(ds.wall_thickness.values, sf, ds["safety_factor_no_imbalance"].values,
-                                                   ds["natural_frequency_1"].values), folder, "wall")}
+                                                   ds["natural_frequency_1"].values, ds["spinup_peak_deflection"].values),
+                             folder, "wall")}
     _report(loaded, "wall", folder, ds, ["safety_factor", "safety_factor_no_imbalance", "natural_frequency_1",
                                          "spinup_peak_deflection"], figures, headline, as_json)
 

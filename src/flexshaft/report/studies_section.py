@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft.studies.chapter3 import TABLE_ANGLES, DesignStudies, nearest, two_angle_name
+from flexshaft.studies.chapter3 import TABLE_ANGLES, DesignStudies, nearest, quietest_spinup_wall, two_angle_name
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES
 
@@ -62,6 +62,10 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
     if r.best_wall is not None:
         rows.append(["3. wall thickness (largest R with imbalance)", f"{r.best_wall * 1e3:g} mm (R = {r.best_wall_safety_factor:.3g})",
                      "~3 mm"])
+    quietest = quietest_spinup_wall(r.wall) if r.wall is not None else None
+    if quietest is not None:
+        rows.append(["3. wall thickness (smallest spin-up peak under the design's gains)",
+                     f"{quietest[0] * 1e3:g} mm ({quietest[1] * 1e3:.3g} mm orbit)", "not studied (3 mm chosen)"])
     if r.gains_after is not None:
         rows.append(["6. tuned gains: peak spin-up deflection",
                      f"{r.peak_before * 1e3:.3g} mm at K_p = {r.gains_before[0]:.3g}, K_d = {r.gains_before[1]:.3g} → "
@@ -93,9 +97,11 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
         ds = r.wall
         if np.isfinite(ds["safety_factor"].values).any():
             add(job(sf.wall_thickness_figure, ds.wall_thickness.values, ds["safety_factor"].values,
-                                         ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values),
-                "study_wall", "Safety factor with and without imbalance and the first natural frequency vs wall "
-                              "thickness at fixed outer diameter (thesis figure 3.4, eq. 3.3)")
+                    ds["safety_factor_no_imbalance"].values, ds["natural_frequency_1"].values,
+                    ds["spinup_peak_deflection"].values),
+                "study_wall", "Safety factor with and without imbalance, the first natural frequency and the peak "
+                              "shaft orbit during spin-up (the design's gains, speeds clustered at the resonance "
+                              "peaks) vs wall thickness at fixed outer diameter (thesis figure 3.4, eq. 3.3)")
     if r.forced_response is not None:
         ds = r.forced_response
         add(job(sf.forced_response_figure, rad_s_to_rpm(ds.speed.values),

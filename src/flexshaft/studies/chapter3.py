@@ -286,6 +286,16 @@ def _wall_task(design, walls, run, laminated: bool) -> dict:
     return out
 
 
+def quietest_spinup_wall(wall) -> tuple[float, float] | None:
+    """(wall [m], peak shaft orbit [m]) of the wall study's smallest spin-up peak under the
+    design's gains; None without actuators (all NaN)."""
+    peaks = np.asarray(wall["spinup_peak_deflection"].values, dtype=float)
+    if not np.isfinite(peaks).any():
+        return None
+    i = int(np.nanargmin(peaks))
+    return float(wall.wall_thickness.values[i]), float(peaks[i])
+
+
 def _forced_response_task(design, walls, n_speeds) -> dict:
     return {"forced_response": _forced_response(design, walls, n_speeds)}
 
@@ -500,6 +510,9 @@ def headline(results: DesignStudies) -> dict:
         "timings_s": {k: round(float(v), 3) for k, v in r.timings.items()},
         "notes": list(r.notes),
     }
+    quietest = quietest_spinup_wall(r.wall) if r.wall is not None else None
+    out["quietest_spinup_wall_m"] = _f(quietest[0]) if quietest else None
+    out["quietest_spinup_peak_m"] = _f(quietest[1]) if quietest else None
     if r.ply_angle is not None:
         out["ply_angle_safety_factor_at_55_deg"] = _f(nearest(r.ply_angle, "alpha", 55.0)["safety_factor"])
     if r.two_angle is not None:
