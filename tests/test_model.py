@@ -192,3 +192,33 @@ def test_baseline_first_ten_frequencies_converge_with_mesh():
     change_mid = np.abs(freqs[1] / freqs[2] - 1)
     assert np.all(change_mid < 1e-3)
     assert np.max(change_mid) < np.max(change_coarse)
+
+
+def test_geometry_caches_give_the_models_of_a_cold_build():
+    """Reference: build_model with its geometry caches emptied (boom blocks, bearing rows,
+    tubes). A warm build of the same design must give identical matrices, and a design that
+    differs in the boom, a bearing station or the layup must not get the cached pieces."""
+    import importlib
+
+    build = importlib.import_module("flexshaft.assembly.build")
+
+    def same(a, b):
+        return a.shape == b.shape and (a != b).nnz == 0
+
+    def cold(design):
+        build._boom_blocks.cache_clear()
+        build._tube_of.cache_clear()
+        build._rows_cache.clear()
+        return build_model(design)
+
+    base = baseline_design()
+    variants = [base, with_overrides(base, {"tailboom.wall_thickness": 0.005}),
+                with_overrides(base, {"bearings[0].x": 2.0}), with_overrides(base, {"shaft.layup": "(45/-45/-45/45)"})]
+    warm = [build_model(d) for d in variants]  # in this order: each reuses what the one before cached
+    for design, model in zip(variants, warm):
+        reference = cold(design)
+        for name in ("M", "K", "C", "G", "shaft_loss_stiffness", "boom_loss_stiffness"):
+            assert same(getattr(model, name), getattr(reference, name)), name
+        for link, ref in zip(model.bearings, reference.bearings):
+            assert same(link.rows, ref.rows)
+    assert not any(same(warm[0].K, other.K) for other in warm[1:])

@@ -22,6 +22,7 @@ meets the penalty's own compliance error (``k_shaft / k_penalty``) near 1e-6 at 
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 import scipy.sparse as sp
@@ -82,8 +83,15 @@ def segment_properties(design) -> tuple[SegmentProperties, ...]:
 
 def _tube_properties(shaft, mat) -> ShaftProperties:
     """Properties of one tube (``[shaft]`` or a resolved segment) of material ``mat``."""
-    Do = shaft.outer_diameter
-    Di = Do - 2 * shaft.wall_thickness
+    angles = tuple(float(a) for a in shaft.ply_angles_deg) if mat.kind == "lamina" else ()
+    return _tube_of(float(shaft.outer_diameter), float(shaft.wall_thickness), angles, mat)
+
+
+@functools.lru_cache(maxsize=256)
+def _tube_of(Do: float, wall: float, ply_angles_deg: tuple, mat) -> ShaftProperties:
+    """:func:`_tube_properties` by value, cached: a one-piece shaft's ``[shaft]`` table and its one
+    tube are the same tube (the laminate's arrays are read-only, shared by the models)."""
+    Di = Do - 2 * wall
     if mat.kind == "lamina":
         lamina = Lamina.from_loss_factors(
             E_L=mat.E_L, E_T=mat.E_T, G_LT=mat.G_LT, nu_LT=mat.nu_LT, density=mat.density,
@@ -91,8 +99,9 @@ def _tube_properties(shaft, mat) -> ShaftProperties:
             G_13=mat.G_13, G_23=mat.G_23, shear_correction=mat.shear_correction,
             alpha_L=mat.alpha_L, alpha_T=mat.alpha_T,
         )
-        angles = np.radians(np.asarray(shaft.ply_angles_deg, dtype=float))
-        plies = np.full(angles.size, shaft.wall_thickness / angles.size)
+        angles = np.radians(np.asarray(ply_angles_deg, dtype=float))
+        plies = np.full(angles.size, wall / angles.size)
+        angles.flags.writeable = plies.flags.writeable = False
         laminate = Laminate(angles=angles, thicknesses=plies, lamina=lamina)
         E, G = equivalent_moduli(laminate)
         return ShaftProperties(Do, Di, complex(E), complex(G), mat.density, laminate)
@@ -126,10 +135,8 @@ def _bearing_link(design, dm: DofMap, bearing, offset: float = 0.0) -> BearingLi
 def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[BearingLink, np.ndarray, np.ndarray]:
     """:func:`_bearing_link` with the local rows (5, n_local) and their global DOFs."""
     x_shaft = bearing.x + offset
-    es, xis, Ls = dm.locate("shaft", x_shaft)
-    shaft_dofs = dm.element_dofs("shaft")[es]
     if design.tailboom is None:
-        local, dofs, xb, h = relative_rows(xis, Ls), shaft_dofs, None, 0.0
+        xb, h = None, 0.0
     else:
         xb = bearing.boom_x
         if bearing.offset is not None:
@@ -137,18 +144,65 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
         else:
             h = float(boom_semi_axes(design.tailboom, xb)[0]) + design.tailboom.shaft_clearance
         xb = xb + offset
-        eb, xib, Lb = dm.locate("boom", xb)
-        local = relative_rows(xis, Ls, xib, Lb, h)
-        dofs = np.concatenate([shaft_dofs, dm.element_dofs("boom")[eb]])
-    rows = sp.coo_matrix(
-        (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
-    ).tocsr()
+    local, dofs, rows = _relative_rows(dm, float(x_shaft), None if xb is None else float(xb), float(h))
     if bearing.kind == "contact":
         link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows,
                            _coefficients(bearing.stiffness), _coefficients(bearing.damping))
     else:
         link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows)
     return link, local, dofs
+
+
+#: Pieces of a model that depend on the geometry only, kept for the next build of the same
+#: geometry: a report's ply-angle, gain and wall sweeps build about 150 models, most of them on one
+#: mesh, and the boom's element matrices and the bearings' rows were a third of each build.
+#: Entries are read-only; keys hold the stations' bytes.
+_GEOMETRY_CACHE = 64
+_rows_cache: dict = {}
+
+
+def _relative_rows(dm: DofMap, x_shaft: float, x_boom: float | None, h: float):
+    """(local rows (5, n_local), their global DOFs, sparse (5, ndof) rows) of a link between the
+    shaft at ``x_shaft`` and the boom at ``x_boom`` (None: ground) at height ``h``, cached."""
+    key = (dm.shaft_x.tobytes(), dm.boom_x.tobytes(), np.asarray(dm.shaft_joints).tobytes(), x_shaft, x_boom, h)
+    hit = _rows_cache.get(key)
+    if hit is not None:
+        return hit
+    es, xis, Ls = dm.locate("shaft", x_shaft)
+    shaft_dofs = dm.element_dofs("shaft")[es]
+    if x_boom is None:
+        local, dofs = relative_rows(xis, Ls), shaft_dofs
+    else:
+        eb, xib, Lb = dm.locate("boom", x_boom)
+        local = relative_rows(xis, Ls, xib, Lb, h)
+        dofs = np.concatenate([shaft_dofs, dm.element_dofs("boom")[eb]])
+    rows = sp.coo_matrix(
+        (local.ravel(), (np.repeat(np.arange(5), dofs.size), np.tile(dofs, 5))), shape=(5, dm.size)
+    ).tocsr()
+    for array in (local, dofs, rows.data, rows.indices, rows.indptr):  # shared by the models of one mesh
+        array.flags.writeable = False
+    if len(_rows_cache) >= 4 * _GEOMETRY_CACHE:
+        _rows_cache.clear()
+    _rows_cache[key] = (local, dofs, rows)
+    return local, dofs, rows
+
+
+@functools.lru_cache(maxsize=_GEOMETRY_CACHE)
+def _boom_blocks(boom_x: bytes, tailboom, material) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Mass, stiffness and loss stiffness (imaginary part) of the boom elements on stations
+    ``boom_x`` (float64 bytes), cached (read-only arrays)."""
+    eta = material.loss_factor
+
+    def section_at(x):
+        a, b = boom_semi_axes(tailboom, x)
+        return ellipse_section(a, b, tailboom.wall_thickness)
+
+    Mb, Kb = boom_element_matrices(np.frombuffer(boom_x), section_at, material.E * (1 + 1j * eta),
+                                   material.G * (1 + 1j * eta), material.density)
+    blocks = (Mb, np.ascontiguousarray(Kb.real), np.ascontiguousarray(Kb.imag))
+    for block in blocks:
+        block.flags.writeable = False
+    return blocks
 
 
 def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
@@ -217,18 +271,11 @@ def build_model(design) -> Model:
 
     if design.tailboom is not None:
         tb = design.tailboom
-        mat = design.materials[tb.material]
-        eta = mat.loss_factor
-
-        def section_at(x):
-            a, b = boom_semi_axes(tb, x)
-            return ellipse_section(a, b, tb.wall_thickness)
-
-        Mb, Kb = boom_element_matrices(boom_x, section_at, mat.E * (1 + 1j * eta), mat.G * (1 + 1j * eta), mat.density)
+        Mb, Kb, Kb_loss = _boom_blocks(np.asarray(boom_x, dtype=float).tobytes(), tb, design.materials[tb.material])
         bdofs = dm.element_dofs("boom")
         parts["M"].append((Mb, bdofs))
-        parts["K"].append((Kb.real, bdofs))
-        parts["boom_loss"].append((Kb.imag, bdofs))
+        parts["K"].append((Kb, bdofs))
+        parts["boom_loss"].append((Kb_loss, bdofs))
         if tb.end_mass is not None:
             em = tb.end_mass
             tip = np.array([dm.boom(-1, f) for f in BOOM_FIELDS])
