@@ -134,15 +134,20 @@ class Actuator:
     def name(self) -> str:
         return self.link.name
 
-    @property
+    @cached_property
     def lateral_rows(self) -> sp.csr_matrix:
         """(2, ndof) actuation rows B_a: the lateral relative displacement (v, w) at the magnet."""
         return self.link.rows[1:3]
 
-    @property
+    @cached_property
     def sensing_rows(self) -> sp.csr_matrix:
         """(2, ndof) sensing rows B_s: the lateral relative displacement at the sensor."""
         return self.lateral_rows if self.sensor is None else self.sensor.rows[1:3]
+
+    @cached_property
+    def lateral_gram(self) -> sp.csr_matrix:
+        """``B_aᵀ B_a`` (ndof, ndof): the actuation rows' stiffness pattern for a unit gain."""
+        return (self.lateral_rows.T @ self.lateral_rows).tocsr()
 
     @property
     def collocated(self) -> bool:
@@ -321,11 +326,12 @@ class Model:
         shaft = self.shaft_loss_stiffness if self.shaft_loss_stiffness is not None else sp.csr_matrix((n, n))
         boom = self.boom_loss_stiffness if self.boom_loss_stiffness is not None else sp.csr_matrix((n, n))
         nodes = np.arange(self.dofs.n_shaft_nodes)
-        lateral = np.zeros(n)
+        lateral = np.zeros(n, dtype=bool)
         for f in ("v", "w", "beta", "gamma"):
-            lateral[self.dofs.shaft(nodes, f)] = 1.0
-        P = sp.diags(lateral)
-        K_lat = (P @ shaft @ P).tocsr()
+            lateral[self.dofs.shaft(nodes, f)] = True
+        entries = shaft.tocoo()
+        keep = lateral[entries.row] & lateral[entries.col]  # P K P with P the lateral 0/1 diagonal
+        K_lat = sp.csr_matrix((entries.data[keep], (entries.row[keep], entries.col[keep])), shape=(n, n))
         K_fix = (boom + shaft - K_lat).tocsr()
         K_circ = (K_lat @ rotation_generator(self.dofs)).tocsr()
         for A in (K_lat, K_fix, K_circ):
@@ -362,8 +368,7 @@ class Model:
         """``Σ Bᵀ g_a B`` over actuators for per-actuator scalar gains ``g_a`` (actuation rows)."""
         out = sp.csr_matrix((self.dofs.size, self.dofs.size), dtype=np.result_type(*gains, float) if len(gains) else float)
         for act, g in zip(self.actuators, gains):
-            B = act.lateral_rows
-            out = out + g * (B.T @ B)
+            out = out + g * act.lateral_gram
         return out.tocsr()
 
     @property
