@@ -62,7 +62,8 @@ def save_figure(fig: Figure, folder: str | Path, stem: str, *, svg: bool = True,
     out = Path(folder)
     out.mkdir(parents=True, exist_ok=True)
     paths = {"png": out / f"{stem}.png"}
-    # zlib level 1: a third less time per figure than the default 6, files about 5 % larger
+    # zlib level 1: the figures of new_figure are written by flexshaft.plot.png (one pass, no row
+    # filters: 15 ms a report figure); any other canvas goes through Pillow (44 ms at level 1)
     fig.savefig(paths["png"], dpi=dpi, format="png", pil_kwargs={"compress_level": PNG_COMPRESSION})
     if svg:
         paths["svg"] = out / f"{stem}.svg"
