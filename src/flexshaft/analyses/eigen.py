@@ -231,11 +231,11 @@ class ReducedModel:
         """Free-DOF displacement shapes Φ y of modal coordinates ``y`` (columns)."""
         return self.Phi @ y[: self.size]
 
-    def _speed_parts(self, speed: float, loss: LossCoefficients) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _speed_parts(self, speed: float, loss: LossCoefficients) -> tuple[np.ndarray, np.ndarray]:
         """The parts of ``T(s)`` that do not depend on s, for one speed and loss weights: the
-        damping ``ΩG + C``, the stiffness ``Λ + Σ loss`` and the damping as complex. Kept on the
-        instance for the next call: Newton's method calls with the same speed and weights for
-        every mode and step (two weights per speed with the rotating loss model)."""
+        damping ``ΩG + C`` (complex, as dT/ds needs it) and the stiffness ``Λ + Σ loss``. Kept on
+        the instance for the next call: Newton's method calls with the same speed and weights
+        for every mode and step (two weights per speed with the rotating loss model)."""
         key = (float(speed), complex(loss.fixed), complex(loss.lateral), complex(loss.circulatory))
         cache = self.__dict__.setdefault("_parts", {})
         parts = cache.get(key)
@@ -250,17 +250,17 @@ class ReducedModel:
                 stiffness = stiffness + loss.circulatory * self.S
             if len(cache) >= 64:
                 cache.clear()
-            parts = cache[key] = (damping, stiffness, damping.astype(complex))
+            parts = cache[key] = (damping.astype(complex), stiffness)
         return parts
 
     def dynamic_matrices(self, s: complex, speed: float, loss: LossCoefficients) -> tuple[np.ndarray, np.ndarray]:
         """``T(s)`` and ``dT/ds`` of the second-order problem with the complex loss weights
         ``loss`` (controller laws as C(s))."""
-        damping, stiffness, dT = self._speed_parts(speed, loss)
+        damping, stiffness = self._speed_parts(speed, loss)
         nb = self.size
         T = s * damping + stiffness
         T.flat[:: nb + 1] += s * s
-        dT = dT.copy()
+        dT = damping.copy()
         dT.flat[:: nb + 1] += 2 * s
         for act in self.actuators:
             if act.law is not None:  # the law's dynamics: C(s) minus what Λ and C̃ already hold

@@ -166,13 +166,15 @@ def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_im
                           frequency_hz: ArrayLike | None = None, spinup_peak: ArrayLike | None = None, *,
                           ax=None) -> Figure:
     """Safety factor with and without imbalance vs wall thickness at fixed D_o (thesis fig.
-    3.4); optionally the first natural frequency and the spin-up peak shaft orbit [m] (NaN
-    entries, e.g. without actuators, are left out), each on a panel of its own. ``wall`` [m]."""
+    3.4); optionally the first natural frequency and the spin-up peak shaft orbit [m], each on
+    a panel of its own (the orbit's NaN entries are left out, and its panel when all are NaN:
+    a design without actuators). ``wall`` [m]."""
     t = vector("wall", wall)
-    extra = [("frequency_hz", frequency_hz), ("spinup_peak", spinup_peak)]
-    extra = [(name, vector(name, values, t.size)) for name, values in extra
-             if values is not None and np.isfinite(np.asarray(values, dtype=float)).any()]
-    nrows = 1 + len(extra)
+    f = None if frequency_hz is None else vector("frequency_hz", frequency_hz, t.size)
+    peak = None if spinup_peak is None else vector("spinup_peak", spinup_peak, t.size)
+    if peak is not None and not np.isfinite(peak).any():
+        peak = None
+    nrows = 1 + (f is not None) + (peak is not None)
     fig, axes = new_figure(nrows, 1, (8.0, 3.4 + 2.6 * (nrows - 1)), ax=ax, hspace=0.3)
     ax = axes[0, 0]
     ax.plot(t * MM_PER_M, vector("with_imbalance", with_imbalance, t.size), "o-", label="with imbalance")
@@ -181,20 +183,18 @@ def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_im
     ax.set_ylabel("Tsai-Wu safety factor R [-]")
     ax.set_title("Safety factor vs wall thickness (fixed outer diameter)")
     ax.legend(loc="best")
-    for row, (name, values) in enumerate(extra, start=1):
-        panel = axes[row, 0]
-        if name == "frequency_hz":
-            panel.plot(t * MM_PER_M, values, "o-", color="C2", label="first natural frequency at rest")
-            panel.set_ylabel("frequency [Hz]")
-        else:
-            finite = np.isfinite(values)
-            panel.plot(t[finite] * MM_PER_M, values[finite] * MM_PER_M, "D-", color="C4",
-                       label="spin-up peak shaft orbit (design gains)")
-            k = int(np.nanargmin(values))
-            panel.plot([t[k] * MM_PER_M], [values[k] * MM_PER_M], "*", ms=13, color="gold", mec="k",
-                       label=f"smallest: {values[k] * MM_PER_M:.3g} mm at {t[k] * MM_PER_M:g} mm wall")
-            panel.set_ylim(bottom=0.0)
-            panel.set_ylabel("orbit [mm]")
+    if f is not None:
+        axes[1, 0].plot(t * MM_PER_M, f, "o-", color="C2", label="first natural frequency at rest")
+        axes[1, 0].set_ylabel("frequency [Hz]")
+        axes[1, 0].legend(loc="best")
+    if peak is not None:
+        panel, finite, k = axes[-1, 0], np.isfinite(peak), int(np.nanargmin(peak))
+        panel.plot(t[finite] * MM_PER_M, peak[finite] * MM_PER_M, "D-", color="C4",
+                   label="spin-up peak shaft orbit (design gains)")
+        panel.plot([t[k] * MM_PER_M], [peak[k] * MM_PER_M], "*", ms=13, color="gold", mec="k",
+                   label=f"smallest: {peak[k] * MM_PER_M:.3g} mm at {t[k] * MM_PER_M:g} mm wall")
+        panel.set_ylim(bottom=0.0)
+        panel.set_ylabel("orbit [mm]")
         panel.legend(loc="best")
     axes[-1, 0].set_xlabel("wall thickness [mm]")
     return fig

@@ -161,7 +161,6 @@ def log_scale(ax: Axes, axis: str = "y", minor_grid: bool = True) -> None:
 
 
 _SUPERSCRIPT = str.maketrans("-−0123456789", "⁻⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
-_FORMATTER: list = []
 
 
 def plain_log_label(label: str) -> str:
@@ -177,19 +176,18 @@ def plain_log_label(label: str) -> str:
     return label if ("\\" in text or "{" in text or "^" in text) else text
 
 
-def _unicode_log_formatter():
+@functools.cache
+def _unicode_log_formatter() -> type:
     """matplotlib's ``LogFormatterSciNotation`` (the log scale's default) with plain-text
     labels: mathtext would parse them with pyparsing, whose grammar costs 0.17 s to build in
     every process that draws (and 5 ms a label); the glyphs are DejaVu Sans's own superscripts."""
-    if not _FORMATTER:
-        from matplotlib.ticker import LogFormatterSciNotation
+    from matplotlib.ticker import LogFormatterSciNotation
 
-        class UnicodeLogFormatter(LogFormatterSciNotation):
-            def __call__(self, x, pos=None):
-                return plain_log_label(super().__call__(x, pos))
+    class UnicodeLogFormatter(LogFormatterSciNotation):
+        def __call__(self, x, pos=None):
+            return plain_log_label(super().__call__(x, pos))
 
-        _FORMATTER.append(UnicodeLogFormatter)
-    return _FORMATTER[0]
+    return UnicodeLogFormatter
 
 
 def _log_ticks(lo: float, hi: float) -> list[float]:
