@@ -394,3 +394,76 @@ def test_rank_two_helix_torques_equal_the_generalized_eigenvalues():
         P = np.outer(B[6].conj(), B[7])
         mu = scipy.linalg.eigvalsh(-(P + P.conj().T) / (2.0 * np.pi * radius**2), K)
         np.testing.assert_allclose(batched[i], [1.0 / mu[-1], -1.0 / mu[0]], rtol=1e-10)
+
+
+def test_schur_extreme_torques_equal_the_full_pencils_eigenvalues():
+    """Reference: scipy.linalg.eigvalsh of the full Ritz pencil (G, K) of the shear-deformable
+    and the classical shell (n = 2, 3, 5; Sanders and Donnell), its extreme eigenvalues mu = 1/T.
+    ``extreme_torques`` eliminates the dofs the load does not reach (Schur complement) and must
+    give the same torques (rtol 1e-10: two dense Hermitian eigen-solves at round-off)."""
+    from flexshaft.buckling._common import extreme_torques
+    from flexshaft.buckling.classical import classical_galerkin_matrices
+    from flexshaft.buckling.shear import shear_galerkin_matrices
+
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    for build in (shear_galerkin_matrices, classical_galerkin_matrices):
+        for kinematics in ("sanders", "donnell"):
+            for n in (2, 3, 5):
+                K, G = build(laminate, BASELINE_RADIUS, 1.2, n, 30, kinematics)
+                assert np.any(np.all(G == 0.0, axis=0))  # some dofs unloaded: the Schur path is taken
+                mu = scipy.linalg.eigvalsh(G, K)
+                np.testing.assert_allclose(extreme_torques(K, G), [1.0 / mu[-1], -1.0 / mu[0]], rtol=1e-10)
+
+
+def test_ritz_assembly_equals_the_four_term_definition():
+    """Reference: the Ritz matrices written as their definition, K = sum over (p, q) in
+    {sin, cos}^2 of (B_p^H C B_q) * I_pq and P likewise from the rotation rows, with full
+    matrix products for all four terms. ``assemble_ritz`` sums the same-parity terms on the
+    pairs of equal axial index only and must agree to round-off (atol 1e-14 of the largest
+    entry) for a random symmetric C."""
+    from flexshaft.buckling._common import axial_integrals
+    from flexshaft.buckling.classical import _ritz_operators as classical_operators, assemble_ritz
+    from flexshaft.buckling.shear import _ritz_operators as shear_operators
+
+    rng = np.random.default_rng(5)
+    for operators, n_strains in ((shear_operators, 8), (classical_operators, 6)):
+        for kinematics in ("sanders", "donnell"):
+            Bs, Bc, m = operators(0.05, 1.3, 3, 25, kinematics)
+            A = rng.standard_normal((n_strains, n_strains))
+            C = A @ A.T
+            integrals = axial_integrals(m, 1.3)
+            parts = (Bs, Bc)
+            K = sum((parts[p][:n_strains].conj().T @ C @ parts[q][:n_strains]) * integrals[(p, q)]
+                    for p in (0, 1) for q in (0, 1))
+            P = sum(np.outer(parts[p][-2].conj(), parts[q][-1]) * integrals[(p, q)] for p in (0, 1) for q in (0, 1))
+            area = 2.0 * np.pi * 0.05
+            K_ref, G_ref = area * K, -(P + P.conj().T) * area / (2.0 * np.pi * 0.05**2)
+            K_new, G_new = assemble_ritz(Bs, Bc, m, C, 0.05, 1.3)
+            np.testing.assert_allclose(K_new, K_ref, rtol=0, atol=1e-14 * np.abs(K_ref).max())
+            np.testing.assert_allclose(G_new, G_ref, rtol=0, atol=1e-14 * np.abs(G_ref).max())
+
+
+def test_helix_minima_equal_a_fine_scan_of_the_wavenumber():
+    """Reference: the endless tube's torques on a fine scan of log k (4001 points over two grid
+    steps around the minimum found, spacing 1.25e-4, then 4001 over 5e-4 around the scan's best
+    point, spacing 1.25e-7) for the baseline FMC wall, both senses, n = 2..40. The golden-section
+    refinement must give the scan's minimum to rtol 1e-8 (its bracket ends at 2.8e-5 in log k:
+    a relative error of order 1e-9 at these minima) and never fall below it."""
+    from flexshaft.buckling._common import shell_stiffness
+    from flexshaft.buckling.shear import _LOG_K_OFFSETS, _helix_torques
+
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    C = shell_stiffness(laminate, "shear")
+    n = np.arange(2, 41)
+    torques, wavenumbers = shear_helix_curve(laminate, BASELINE_RADIUS, n)
+    step = _LOG_K_OFFSETS[1] - _LOG_K_OFFSETS[0]
+    for sense in (0, 1):
+        centre = np.log(np.abs(wavenumbers[:, sense]))
+        hand = np.sign(wavenumbers[:, sense])
+        for width in (2 * step, 5e-4):
+            x = centre[:, None] + np.linspace(-width / 2, width / 2, 4001)[None, :]
+            values = _helix_torques(C, BASELINE_RADIUS, n[:, None], hand[:, None] * np.exp(x), "sanders")[..., sense]
+            centre = x[np.arange(n.size), np.argmin(values, axis=1)]
+        scan = values.min(axis=1)
+        np.testing.assert_allclose(torques[:, sense], scan, rtol=1e-8)
+        assert np.all(torques[:, sense] >= scan * (1 - 1e-12))  # a sampled value, not below the minimum

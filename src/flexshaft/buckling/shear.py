@@ -65,11 +65,14 @@ Technomic, sec. 7 (shear crimping).
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
-import scipy.linalg
 from numpy.typing import NDArray
 
-from flexshaft.buckling._common import Kinematics, default_terms, helix_minima, rank_two_torques, shell_stiffness
+from flexshaft.buckling._common import (
+    Kinematics, default_terms, extreme_torques, helix_grid, helix_minima, rank_two_torques, shell_stiffness,
+)
 from flexshaft.buckling.classical import assemble_ritz, ritz_mode
 from flexshaft.laminate import Laminate, transverse_shear_stiffness
 
@@ -139,8 +142,8 @@ def shear_helix_curve(
     """Infinite shear-deformable tube: critical torques and axial wavenumbers per n.
 
     The minimum over k is found on a log grid (57 points over k = n/R e^[-8, 6], either sign)
-    and, with ``refine``, zoomed four times by a factor 8 around the best point (17 points each):
-    the final spacing of 6e-5 in log k leaves a relative error of order 1e-9 at a smooth minimum
+    and, with ``refine``, by golden-section search within one grid step of the best point, to
+    2.8e-5 in log k: a relative error of order 1e-9 at a smooth minimum
     (:func:`~flexshaft.buckling._common.helix_minima`). Batched over all n.
 
     Parameters
@@ -223,13 +226,6 @@ def shear_galerkin_matrices(
     return assemble_ritz(Bs, Bc, m, shell_stiffness(laminate, "shear"), radius, length)
 
 
-def _equilibrated_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tuple[float, float]:
-    """Extreme torques of K a = T G a after symmetric diagonal scaling of K to unit diagonal."""
-    scale = 1.0 / np.sqrt(np.diag(K).real)
-    mu = scipy.linalg.eigh(G * np.outer(scale, scale), K * np.outer(scale, scale), eigvals_only=True, driver="gvd")
-    return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
-
-
 def shear_buckling(
     laminate: Laminate, radius: float, length: float, kinematics: Kinematics, n_terms: int | None, n_max: int | None
 ) -> dict:
@@ -246,7 +242,13 @@ def shear_buckling(
     n_all = np.arange(2, n_max + 1)
     # grid minima over k for every n: an upper estimate of the endless tube's minimum (within ~2 %;
     # the screen allows 5 %), refined on first use for every n at once
-    coarse, wavenumbers = shear_helix_curve(laminate, radius, n_all, kinematics, refine=False)
+    C = shell_stiffness(laminate, "shear")
+
+    def helix_torques(n_, k_):
+        return _helix_torques(C, radius, n_, k_, kinematics)
+
+    grid = helix_grid(helix_torques, radius, n_all, _LOG_K_OFFSETS)
+    coarse, wavenumbers = helix_minima(helix_torques, radius, n_all, _LOG_K_OFFSETS, refine=False, grid=grid)
     curve: dict[int, tuple[float, float]] = {}  # n -> (T+, T-) [N m]
     used_terms: dict[int, int] = {}  # n -> M, for the n solved by Ritz
     refined: list[NDArray[np.float64]] = []
@@ -254,9 +256,13 @@ def shear_buckling(
     def helix(n: int) -> NDArray[np.float64]:
         """Refined endless-tube torques (T+, T-) at n; refines the wavenumbers too."""
         if not refined:
-            torques, wavenumbers[:] = shear_helix_curve(laminate, radius, n_all, kinematics)
+            torques, wavenumbers[:] = helix_minima(helix_torques, radius, n_all, _LOG_K_OFFSETS, grid=grid)
             refined.append(torques)
         return refined[0][n - 2]
+
+    @functools.lru_cache(maxsize=2)  # the governing n's matrices again for its mode, both senses
+    def ritz(n: int, M: int) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+        return shear_galerkin_matrices(laminate, radius, length, n, M, kinematics)
 
     def terms(n: int) -> int:
         if n_terms is not None:
@@ -268,8 +274,7 @@ def shear_buckling(
         if n not in curve:
             M = terms(n)
             if M <= _MAX_RITZ_TERMS or n_terms is not None:
-                K, G = shear_galerkin_matrices(laminate, radius, length, n, M, kinematics)
-                curve[n], used_terms[n] = _equilibrated_torques(K, G), M
+                curve[n], used_terms[n] = extreme_torques(*ritz(n, M)), M
             else:
                 curve[n] = (float(helix(n)[0]), float(helix(n)[1]))
         return curve[n]
@@ -308,7 +313,7 @@ def shear_buckling(
         mode, half_waves = np.full(1, np.nan, dtype=complex), None
         if n_best in used_terms and np.isfinite(torque):
             M = used_terms[n_best]
-            K, G = shear_galerkin_matrices(laminate, radius, length, n_best, M, kinematics)
+            K, G = ritz(n_best, M)
             mode = ritz_mode(K, G, torque if positive else -torque, slice(2 * M + 1, 3 * M + 1))
             half_waves = int(np.argmax(np.abs(mode))) + 1
         elif n_best is not None:
