@@ -45,6 +45,7 @@ Im s = 0 and the stability analysis as divergence.
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -363,7 +364,13 @@ def divergent_roots(red: ReducedModel, speed: float, viscous: LossCoefficients =
     return spectrum(red, speed, viscous)[3]
 
 
-_getrf, _getrs = la.get_lapack_funcs(("getrf", "getrs"), dtype=complex)
+_gesv = la.get_lapack_funcs("gesv", dtype=complex)
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    """``v / ‖v‖`` (the 2-norm as numpy.linalg.norm computes it, without its dispatch)."""
+    re, im = v.real, v.imag
+    return v / np.sqrt(re.dot(re) + im.dot(im))
 
 
 def refine(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: float = _TOL) -> tuple[complex, np.ndarray]:
@@ -391,8 +398,8 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
     forced_sigma = None
     previous_sigma = None
     flips = 0
-    y = np.asarray(y, dtype=complex)
-    y = y / np.linalg.norm(y)
+    weights = {}  # σ -> the loss weights: at one speed they depend on the mode only through σ
+    y = _unit(np.asarray(y, dtype=complex))
     for _ in range(_MAX_ITER):
         omega = abs(s.imag)
         if omega <= 0:
@@ -404,19 +411,21 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
                 forced_sigma = sigma = 0.0
         previous_sigma = sigma
         if viscous is None:
-            T, dT = red.dynamic_matrices(s, speed, eigen_coefficients(red.internal_damping, omega, speed, sigma))
+            loss = weights.get(sigma) if math.isfinite(omega) else None
+            if loss is None:  # (a non-finite ω is refused here)
+                loss = weights[sigma] = eigen_coefficients(red.internal_damping, omega, speed, sigma)
+            T, dT = red.dynamic_matrices(s, speed, loss)
         else:
             T, dT = red.dynamic_matrices(s, speed, _NO_LOSS)
             T = T + red_S
-        lu, piv, info = _getrf(T)
+        _, _, u, info = _gesv(T, dT @ y, overwrite_a=True, overwrite_b=True)
         if info > 0:  # s is an eigenvalue to machine precision
             return s, y, True
-        u, _ = _getrs(lu, piv, dT @ y)
         denominator = np.vdot(y, u)
         if not np.isfinite(denominator) or denominator == 0:
             return s, y, True
         s_new = s - np.vdot(y, y) / denominator
-        y = u / np.linalg.norm(u)
+        y = _unit(u)
         if abs(s_new - s) <= tol * abs(s_new):
             return s_new, y, True
         s = s_new
