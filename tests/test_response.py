@@ -304,3 +304,27 @@ def test_banded_solver_without_material_loss_matches_a_direct_solve():
     Z = (model.K - omega**2 * model.M + 1j * omega * (speed * model.G + model.C)).tocsc()[free][:, free]
     reference = spla.spsolve(Z, rhs)
     np.testing.assert_allclose(solver.solve(omega, rhs, speed), reference, rtol=1e-10, atol=1e-10 * np.abs(reference).max())
+
+
+def test_banded_solvers_sharing_a_sparsity_equal_solvers_set_up_cold():
+    """Reference: solvers set up with the band-structure cache emptied before each. Solvers of
+    models on one mesh share the ordering and the union pattern (layup, wall and gain sweeps;
+    a layup may store fewer entries in one term); their band data and solutions must equal a
+    cold set-up's exactly, and a model on another mesh must get its own structure."""
+    from flexshaft.analyses import banded
+
+    base = baseline_design()
+    variants = [base, with_overrides(base, {"shaft.layup": "(30/-30)s"}), with_overrides(base, {"bearings[1].kp": 2e6}),
+                with_overrides(base, {"shaft.wall_thickness": 0.002}), with_overrides(base, {"mesh.shaft_elements": 24})]
+    warm = []
+    for design in variants:  # the cache fills as a sweep's would
+        warm.append(BandedHarmonicSolver(build_model(design)))
+    assert all(w._template is warm[0]._template for w in warm[:4])  # one mesh: one structure
+    assert warm[4]._template is not warm[0]._template
+    for design, solver in zip(variants, warm):
+        banded._STRUCTURES.clear()
+        cold = BandedHarmonicSolver(build_model(design))
+        assert np.array_equal(solver.perm, cold.perm) and (solver.kl, solver.ku) == (cold.kl, cold.ku)
+        assert all(np.array_equal(solver.data[k], cold.data[k]) for k in cold.data)
+        rhs = np.linspace(1.0, 2.0, cold.n)
+        assert np.array_equal(solver.solve(300.0, rhs, 400.0), cold.solve(300.0, rhs, 400.0))

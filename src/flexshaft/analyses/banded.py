@@ -27,7 +27,9 @@ is regular but has rcond ≈ 5e-14 from its mesh alone.
 
 from __future__ import annotations
 
+import hashlib
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
@@ -116,6 +118,53 @@ def band_ordering(pattern: sp.csr_matrix, stations: np.ndarray | None = None) ->
     return np.concatenate(order) if order else np.zeros(0, dtype=np.int64)
 
 
+@dataclass(frozen=True)
+class _BandStructure:
+    """What a solver's set-up derives from the union sparsity of the terms alone: the band
+    ordering and the permuted union pattern (row-major, its entries as keys ``row · n + col``)
+    with its half bands."""
+
+    perm: np.ndarray
+    inverse: np.ndarray
+    keys: np.ndarray
+    rows: np.ndarray
+    cols: np.ndarray
+    kl: int
+    ku: int
+    template: sp.csr_matrix
+
+
+#: Band structures by union sparsity. A sweep over materials, gains or walls builds many models
+#: on one mesh: their terms' union pattern, so the ordering, is the same (a term's own entries
+#: may differ: an exactly zero coupling of one layup is not stored).
+_STRUCTURES: dict = {}
+
+
+def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure:
+    """The :class:`_BandStructure` of ``terms`` (name -> (rows, cols, values) on n free DOFs)."""
+    union = np.unique(np.concatenate([r * n + c for r, c, _ in terms.values()]))
+    key = (n, hashlib.blake2b(union.tobytes() + np.ascontiguousarray(stations).tobytes(), digest_size=20).digest())
+    shape = _STRUCTURES.get(key)
+    if shape is None:
+        rows, cols = union // n, union % n
+        both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
+        pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
+        perm = band_ordering(pattern, stations)
+        inverse = np.argsort(perm)
+        keys = np.sort(inverse[rows] * n + inverse[cols])  # the permuted pattern, row-major
+        rows, cols = keys // n, keys % n
+        template = sp.csr_matrix((np.zeros(keys.size), (rows, cols)), shape=(n, n))
+        template.sort_indices()
+        for array in (perm, inverse, keys, rows, cols):
+            array.setflags(write=False)
+        shape = _BandStructure(perm, inverse, keys, rows, cols, int(np.max(rows - cols, initial=0)),
+                               int(np.max(cols - rows, initial=0)), template)
+        if len(_STRUCTURES) >= 16:
+            _STRUCTURES.clear()
+        _STRUCTURES[key] = shape
+    return shape
+
+
 class BandedHarmonicSolver:
     """Solve ``Z(ω, Ω) q = Q`` repeatedly for one model (see the module docstring)."""
 
@@ -127,25 +176,14 @@ class BandedHarmonicSolver:
         local = np.full(model.dofs.size, -1, dtype=np.int64)
         local[free] = np.arange(n)
         terms = _term_triplets(model, local)
-        rows = np.concatenate([t[0] for t in terms.values()])
-        cols = np.concatenate([t[1] for t in terms.values()])
-        both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
-        pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
-        perm = band_ordering(pattern, model.dofs.stations[free])
-        self.perm = perm
-        self.inverse = np.argsort(perm)
-        # one shared pattern (the permuted union, row-major) and each term's data on it
-        permuted = {name: (self.inverse[r], self.inverse[c], v) for name, (r, c, v) in terms.items()}
-        keys = np.unique(np.concatenate([r * n + c for r, c, _ in permuted.values()]))
-        self._rows, self._cols = keys // n, keys % n
-        self.kl = int(np.max(self._rows - self._cols, initial=0))
-        self.ku = int(np.max(self._cols - self._rows, initial=0))
-        self._template = sp.csr_matrix((np.zeros(keys.size), (self._rows, self._cols)), shape=(n, n))
-        self._template.sort_indices()
+        shape = _band_structure(n, terms, model.dofs.stations[free])
+        self.perm, self.inverse = shape.perm, shape.inverse
+        self._rows, self._cols, self.kl, self.ku = shape.rows, shape.cols, shape.kl, shape.ku
+        self._template = shape.template  # shared: copied before use
         self.data = {}
-        for name, (r, c, v) in permuted.items():
-            values = np.zeros(keys.size, dtype=complex)
-            np.add.at(values, np.searchsorted(keys, r * n + c), v)
+        for name, (r, c, v) in terms.items():  # each term's data on the shared pattern
+            values = np.zeros(shape.keys.size, dtype=complex)
+            np.add.at(values, np.searchsorted(shape.keys, shape.inverse[r] * n + shape.inverse[c]), v)
             self.data[name] = values
         self.actuators = model.actuators
         self.internal_damping = model.internal_damping
@@ -161,7 +199,7 @@ class BandedHarmonicSolver:
         # the terms with a non-zero entry: a model without material loss (or without dampers)
         # has all-zero loss terms, which need not be multiplied and added at every point
         self._used = np.array([k for k, name in enumerate(self._names) if np.any(self.data[name])], dtype=np.intp)
-        self._stack = np.array([self.data[self._names[k]] for k in self._used]).reshape(self._used.size, keys.size)
+        self._stack = np.array([self.data[self._names[k]] for k in self._used]).reshape(self._used.size, self._rows.size)
         # Every stored term is real (mass, stiffness, damping, loss and feedback patterns; the
         # complex weights carry the frequency dependence): Z's values are then one real
         # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
