@@ -238,16 +238,19 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
                          '"mid_bay" / "distributed")')
     share = ecc * model.shaft_mass / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
-    per_bay = []
-    for a, b in bays:
-        if placement == "distributed":
+    if placement == "distributed":
+        per_bay = []
+        for a, b in bays:
             re = line_load(model, "shaft", a, b, rotating.real * share / (b - a))
             im = line_load(model, "shaft", a, b, rotating.imag * share / (b - a))
-        else:
-            re = point_load(model, "shaft", rotating.real * share, x=0.5 * (a + b))
-            im = point_load(model, "shaft", rotating.imag * share, x=0.5 * (a + b))
-        per_bay.append(re + 1j * im)
-    per_bay = np.array(per_bay).T  # (ndof, nbays)
+            per_bay.append(re + 1j * im)
+        per_bay = np.array(per_bay).T  # (ndof, nbays)
+    else:  # the point loads of every bay midpoint from one evaluation of the shape functions
+        dofs, N, fields = _rows(model, "shaft", [0.5 * (a + b) for a, b in bays])
+        g = _generalised(fields, rotating * share, np.zeros(3))
+        per_bay = np.zeros((model.dofs.size, len(bays)), dtype=complex)
+        for k, values in enumerate(np.einsum("nfd,f->nd", N, g)):
+            np.add.at(per_bay[:, k], dofs[k], values)
     if placement != "worst":
         return per_bay.sum(axis=1, keepdims=True)
     nb = per_bay.shape[1]
