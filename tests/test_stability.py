@@ -129,3 +129,20 @@ def test_mode_assignment_is_scipys_linear_sum_assignment():
         shortcut, matching = shortcut + distinct, matching + (not distinct)
         np.testing.assert_array_equal(assignment(cost), linear_sum_assignment(cost)[1])
     assert shortcut > 50 and matching > 50
+
+
+def test_shaft_whirl_on_one_model_equals_separate_analyses():
+    """Reference: each damping model's stability on its own freshly built model (its own modal
+    basis), as the thesis-shaft comparison ran before. One model and one basis for both damping
+    models must give the same eigenvalues and onsets exactly (the basis does not depend on the
+    damping, and no analysis may leave state behind for the other)."""
+    from flexshaft.studies.whirl import shaft_stability, shaft_whirl
+
+    design = baseline_design()
+    speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, 13)
+    both = shaft_whirl(design, speeds, n_modes=6)
+    assert list(both) == ["viscous", "hysteretic"]
+    for damping, result in both.items():
+        alone = shaft_stability(design, speeds, damping, 6)
+        assert np.array_equal(result.eigenvalues, alone.eigenvalues)
+        assert result.onset_speed == alone.onset_speed

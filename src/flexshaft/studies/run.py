@@ -247,7 +247,7 @@ def _start_studies(design, model: Model, resolution: str, executor):
     from flexshaft.design import DesignError
     from flexshaft.studies.chapter3 import plan_design_studies
     from flexshaft.studies.tasks import Task, start_tasks
-    from flexshaft.studies.whirl import gain_stability_map, shaft_stability, thesis_shaft_designs
+    from flexshaft.studies.whirl import gain_stability_map, shaft_whirl, thesis_shaft_designs
     from flexshaft.sweep import SweepError
 
     speeds = whirl_speeds(model)
@@ -257,10 +257,9 @@ def _start_studies(design, model: Model, resolution: str, executor):
     except (DesignError, ValueError) as exc:
         notes.append(f"thesis shaft comparison skipped: {str(exc).splitlines()[0]}")
         shafts = {}
-    for damping in ("viscous", "hysteretic"):
-        for label, shaft in shafts.items():
-            tasks.append(Task(f"whirl/{damping}:{label}", f"whirl of the {label} shaft ({damping})", shaft_stability,
-                              (shaft, speeds, damping, 8), cost=0.16))
+    for label, shaft in shafts.items():  # viscous and hysteretic on one model and modal basis
+        tasks.append(Task(f"whirl/shaft:{label}", f"whirl of the {label} shaft", shaft_whirl, (shaft, speeds),
+                          {"n_modes": 8}, cost=0.3))
     if model.actuators and model.all_pd:
         kp0 = model.actuators[0].controller.kp
         for i, kp in enumerate((kp0 / 30, kp0 / 5, kp0)):
@@ -296,9 +295,8 @@ def _finish_studies(started, notes: list, step):
         notes.append(f"thesis shaft comparison skipped: {str(failed[0]).splitlines()[0]}")
     else:
         for key, outcome in outcomes.items():
-            damping, _, label = key.removeprefix("whirl/").partition(":")
-            if damping in ("viscous", "hysteretic"):
-                comparison.setdefault(label, {})[damping] = outcome.value
+            if key.startswith("whirl/shaft:"):
+                comparison[key.partition(":")[2]] = outcome.value
     rows = [o for k, o in outcomes.items() if k.startswith("whirl/gain_map")]
     for o in rows:
         if o.error is not None:

@@ -18,7 +18,7 @@ from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
 
-__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "shaft_stability", "StabilityMap",
+__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "shaft_stability", "shaft_whirl", "StabilityMap",
            "gain_stability_map", "stack_maps"]
 
 #: (label, overrides) of the thesis figure 4.2-4.4 shafts; the wall and D_o stay the design's.
@@ -48,6 +48,13 @@ def shaft_stability(design, speeds, damping_model: str = "hysteretic", n_modes: 
                     reference_frequency: float | None = None) -> StabilityResult:
     """Stability of one design over ``speeds`` [rad/s] (one task of :func:`compare_shafts`)."""
     return stability(build_model(design), speeds, n_modes, damping_model, reference_frequency)
+
+
+def shaft_whirl(design, speeds, damping_models=("viscous", "hysteretic"), n_modes: int = 10) -> dict[str, StabilityResult]:
+    """:func:`shaft_stability` of one design with each damping model, ``{model: result}``: one
+    model and one modal basis for all of them (the basis does not depend on the damping)."""
+    model = build_model(design)
+    return {damping: stability(model, speeds, n_modes, damping) for damping in damping_models}
 
 
 @dataclass(frozen=True)
