@@ -252,3 +252,28 @@ def test_stage_progress_draws_nothing_off_a_terminal() -> None:
     with StageProgress(console=Console(file=buffer, force_terminal=False)) as progress:
         progress.step("natural frequencies")
     assert buffer.getvalue() == "" and list(progress.timings) == ["natural frequencies"]
+
+
+def test_verdict_table_shows_a_checks_note_where_it_has_no_location() -> None:
+    """A check evaluated without a location (a whirl onset beyond the speeds analysed) prints
+    its note in the "where" column instead of an empty cell; a located check prints its place,
+    an unevaluated one its reason."""
+    from flexshaft.cli.tables import verdict_table
+    from flexshaft.studies.verdict import Check, Verdict
+
+    checks = (
+        Check("whirl_onset", "whirl onset speed", "speed", "at least", "pass", 754.0, 578.0, 176.0,
+              note="no onset up to the highest speed analysed", lower_bound=True),
+        Check("shaft_temperature", "shaft temperature", "temperature", "at most", "pass", 317.0, 373.0, 56.0,
+              location={"station": 3.21}, note="a remark"),
+        Check("actuator_force", "actuator force", "force", "at most", "not evaluated",
+              note="the design has no actuator"),
+    )
+    console = stdout_console()
+    with console.capture() as captured:
+        console.print(verdict_table(Verdict(checks)))
+    lines = {line.split("│")[1].strip(): line.split("│")[-2].strip() for line in captured.get().splitlines()
+             if line.count("│") >= 7}
+    assert lines["whirl onset speed"] == "no onset up to the highest speed analysed"
+    assert lines["shaft temperature"].startswith("x = 3.21")
+    assert lines["actuator force"] == "the design has no actuator"

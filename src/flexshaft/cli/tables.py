@@ -152,7 +152,7 @@ def verdict_table(verdict):
     rows = []
     for check, row in zip(verdict.checks, verdict_rows(verdict, compact=True)):
         status = row[4]
-        where = row[5] if status != "not evaluated" else row[6]
+        where = row[5] if status != "not evaluated" and row[5] else row[6]  # a check with no location: its note
         count = f" {check.n_failed}/{len(check.findings)}" if check.n_failed and len(check.findings) > 1 else ""
         rows.append([*row[:4], Text(plain(status + count), style=_STATUS_STYLE[status]), where])
     return table("requirements verdict (worst case of each)", VERDICT_COLUMNS[:-1], rows, numeric={1, 2, 3})
