@@ -75,10 +75,9 @@ def _term_triplets(model: Model, local: np.ndarray) -> dict[str, tuple[np.ndarra
         "S": model.loss_circulatory,
     }
     for k, a in enumerate(model.actuators):
-        B = a.lateral_rows
-        terms[f"A{k}"] = B.T @ B
+        terms[f"A{k}"] = a.lateral_gram  # B_aᵀ B_a, kept by the actuator
         if not a.collocated:  # actuation rows × sensing rows
-            terms[f"S{k}"] = B.T @ a.sensing_rows
+            terms[f"S{k}"] = a.lateral_rows.T @ a.sensing_rows
     out = {}
     for name, A in terms.items():
         coo = A.tocoo()
