@@ -35,9 +35,8 @@ def run(
     as_json: JsonOption = False,
     studies: Annotated[Studies, typer.Option(
         "--studies", case_sensitive=False,
-        help="Thesis chapter-3 design studies in the report: report (the whole run about 12 s on 2 cores), full "
-             "(about 20 s) or "
-             "none.")] = Studies.report,
+        help="Thesis chapter-3 design studies in the report: report (the whole run about 8 s on 2 cores), full "
+             "(about 15 s) or none (about 4 s).")] = Studies.report,
     strict: Annotated[bool, typer.Option(
         "--strict", help=f"Exit with code {EXIT_REQUIREMENT_FAILED} when a requirement fails.")] = False,
     svg: Annotated[bool, typer.Option("--svg", help="Also write every figure as SVG (PNG always).")] = False,
