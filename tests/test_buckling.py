@@ -447,7 +447,7 @@ def test_helix_minima_equal_a_fine_scan_of_the_wavenumber():
     """Reference: the endless tube's torques on a fine scan of log k (4001 points over two grid
     steps around the minimum found, spacing 1.25e-4, then 4001 over 5e-4 around the scan's best
     point, spacing 1.25e-7) for the baseline FMC wall, both senses, n = 2..40. The golden-section
-    refinement must give the scan's minimum to rtol 1e-8 (its bracket ends at 2.8e-5 in log k:
+    refinement must give the scan's minimum to rtol 1e-8 (its bracket ends at 5.5e-5 in log k:
     a relative error of order 1e-9 at these minima) and never fall below it."""
     from flexshaft.buckling._common import shell_stiffness
     from flexshaft.buckling.shear import _LOG_K_OFFSETS, _helix_torques

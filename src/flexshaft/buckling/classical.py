@@ -78,7 +78,7 @@ def classical_helix_torque(
 
     The minimum over k is found for every n at once on a log grid (45 points over
     k = n/R e^[-8, 3], either sign), refined by golden-section search within one grid step of
-    the best point (:func:`~flexshaft.buckling._common.helix_minima`: to 2.8e-5 in log k,
+    the best point (:func:`~flexshaft.buckling._common.helix_minima`: to 5.5e-5 in log k,
     relative error of order 1e-9).
 
     Returns ``{"positive": (T, n, k), "negative": (|T|, n, k)}`` (T [N m], k [rad/m]).

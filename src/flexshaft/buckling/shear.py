@@ -143,7 +143,7 @@ def shear_helix_curve(
 
     The minimum over k is found on a log grid (57 points over k = n/R e^[-8, 6], either sign)
     and, with ``refine``, by golden-section search within one grid step of the best point, to
-    2.8e-5 in log k: a relative error of order 1e-9 at a smooth minimum
+    5.5e-5 in log k: a relative error of order 1e-9 at a smooth minimum
     (:func:`~flexshaft.buckling._common.helix_minima`). Batched over all n.
 
     Parameters
