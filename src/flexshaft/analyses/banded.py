@@ -143,8 +143,8 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
     """The :class:`_BandStructure` of ``terms`` (name -> (rows, cols, values) on n free DOFs)."""
     union = np.unique(np.concatenate([r * n + c for r, c, _ in terms.values()]))
     key = (n, hashlib.blake2b(union.tobytes() + np.ascontiguousarray(stations).tobytes(), digest_size=20).digest())
-    shape = _STRUCTURES.get(key)
-    if shape is None:
+    band = _STRUCTURES.get(key)
+    if band is None:
         rows, cols = union // n, union % n
         both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
         pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
@@ -156,12 +156,12 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
         template.sort_indices()
         for array in (perm, inverse, keys, rows, cols):
             array.setflags(write=False)
-        shape = _BandStructure(perm, inverse, keys, rows, cols, int(np.max(rows - cols, initial=0)),
+        band = _BandStructure(perm, inverse, keys, rows, cols, int(np.max(rows - cols, initial=0)),
                                int(np.max(cols - rows, initial=0)), template)
         if len(_STRUCTURES) >= 16:
             _STRUCTURES.clear()
-        _STRUCTURES[key] = shape
-    return shape
+        _STRUCTURES[key] = band
+    return band
 
 
 class BandedHarmonicSolver:
@@ -175,14 +175,14 @@ class BandedHarmonicSolver:
         local = np.full(model.dofs.size, -1, dtype=np.int64)
         local[free] = np.arange(n)
         terms = _term_triplets(model, local)
-        shape = _band_structure(n, terms, model.dofs.stations[free])
-        self.perm, self.inverse = shape.perm, shape.inverse
-        self._rows, self._cols, self.kl, self.ku = shape.rows, shape.cols, shape.kl, shape.ku
-        self._template = shape.template  # shared: copied before use
+        band = _band_structure(n, terms, model.dofs.stations[free])
+        self.perm, self.inverse = band.perm, band.inverse
+        self._rows, self._cols, self.kl, self.ku = band.rows, band.cols, band.kl, band.ku
+        self._template = band.template  # shared: copied before use
         self.data = {}
         for name, (r, c, v) in terms.items():  # each term's data on the shared pattern
-            values = np.zeros(shape.keys.size, dtype=complex)
-            np.add.at(values, np.searchsorted(shape.keys, shape.inverse[r] * n + shape.inverse[c]), v)
+            values = np.zeros(band.keys.size, dtype=complex)
+            np.add.at(values, np.searchsorted(band.keys, band.inverse[r] * n + band.inverse[c]), v)
             self.data[name] = values
         self.actuators = model.actuators
         self.internal_damping = model.internal_damping
