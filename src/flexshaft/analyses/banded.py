@@ -157,7 +157,7 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
         for array in (perm, inverse, keys, rows, cols):
             array.setflags(write=False)
         band = _BandStructure(perm, inverse, keys, rows, cols, int(np.max(rows - cols, initial=0)),
-                               int(np.max(cols - rows, initial=0)), template)
+                              int(np.max(cols - rows, initial=0)), template)
         if len(_STRUCTURES) >= 16:
             _STRUCTURES.clear()
         _STRUCTURES[key] = band
