@@ -339,10 +339,13 @@ class BandedHarmonicSolver:
         )
 
 
-def solver_for(model: Model) -> BandedHarmonicSolver:
-    """The model's :class:`BandedHarmonicSolver`, built once and kept with the (immutable) model."""
-    solver = model.__dict__.get("_banded_solver")
+def solver_for(model: Model, passive: bool = False) -> BandedHarmonicSolver:
+    """The model's :class:`BandedHarmonicSolver`, built once and kept with the (immutable) model;
+    ``passive``: the solver of the model without its actuators (:meth:`Model.passive`), which
+    the spin-up studies solve on several speed grids."""
+    key = "_passive_banded_solver" if passive else "_banded_solver"
+    solver = model.__dict__.get(key)
     if solver is None:
-        solver = BandedHarmonicSolver(model)
-        model.__dict__["_banded_solver"] = solver  # a frozen dataclass: cache like functools.cached_property
+        solver = BandedHarmonicSolver(model.passive() if passive else model)
+        model.__dict__[key] = solver  # a frozen dataclass: cache like functools.cached_property
     return solver

@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.banded import BandedHarmonicSolver
+from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_finite_array, check_model
 from flexshaft.assembly.model import Model
 
@@ -98,17 +98,6 @@ class ActuatorReceptance:
         return laws * self.plant
 
 
-def _passive_solver(model: Model) -> BandedHarmonicSolver:
-    """The banded solver of ``model`` without its actuators, built once per model and kept on
-    the model instance (as functools.cached_property keeps its values; the model is immutable):
-    the spin-up studies solve one model on several speed grids (a base grid, clusters at its
-    peaks, refinements), and a set-up costs about 30 solves."""
-    solver = model.__dict__.get("_passive_banded_solver")
-    if solver is None:
-        solver = model.__dict__["_passive_banded_solver"] = BandedHarmonicSolver(model.passive())
-    return solver
-
-
 @single_blas_thread
 def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> ActuatorReceptance:
     """Solve the structure without its actuators once per speed (banded LU).
@@ -142,7 +131,7 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     Q1 = imbalance_loads(model) if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)
     Q1 = Q1.reshape(Q1.shape[0], -1)
     n_cases = Q1.shape[1]
-    solver = _passive_solver(model)
+    solver = solver_for(model, passive=True)  # kept with the model: one set-up for all its speed grids
     free = solver.free
     B = np.vstack([a.lateral_rows.toarray() for a in model.actuators])  # (2 n_act, ndof)
     collocated = all(a.collocated for a in model.actuators)
