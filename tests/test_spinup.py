@@ -156,11 +156,9 @@ def test_clustered_receptance_finds_the_sharp_peak_that_even_speeds_miss():
 def test_orbit_major_semi_axis_equals_the_largest_excursion_over_the_cycle():
     """Reference: the orbit (Re(a e^{iφ}), Re(b e^{iφ})) sampled at 20,001 phases, its largest
     distance from the centre, for 200 random complex amplitude pairs (circles, lines and
-    ellipses in between). The spin-up map's forward/backward-circle form (|a + ib| + |a − ib|)/2
-    must agree to the sampling error (rtol 1e-7: the phase step 3.1e-4 rad leaves a relative
+    ellipses in between). orbit_amplitude's forward/backward-circle form (|a + ib| + |a − ib|)/2,
+    which the spin-up map uses, must agree to the sampling error (rtol 1e-7: the phase step 3.1e-4 rad leaves a relative
     error of at most (1.6e-4)²/2 = 1.2e-8 at a cosine-like peak)."""
-    from flexshaft.analyses.spinup import _orbit
-
     rng = np.random.default_rng(11)
     a = rng.standard_normal(200) + 1j * rng.standard_normal(200)
     b = rng.standard_normal(200) + 1j * rng.standard_normal(200)
@@ -168,4 +166,4 @@ def test_orbit_major_semi_axis_equals_the_largest_excursion_over_the_cycle():
     b[20:40] = 2.5 * a[20:40]  # straight lines
     phase = np.exp(1j * np.linspace(0.0, 2.0 * np.pi, 20001))
     excursion = np.hypot((a[:, None] * phase).real, (b[:, None] * phase).real).max(axis=1)
-    np.testing.assert_allclose(_orbit(a, b), excursion, rtol=1e-7)
+    np.testing.assert_allclose(orbit_amplitude(a, b), excursion, rtol=1e-7)

@@ -375,9 +375,12 @@ def _static_solve(model: Model, loads, speed: float | None):
 
 def orbit_amplitude(a, b) -> np.ndarray:
     """Largest excursion of the orbit ``(Re(a e^{iφ}), Re(b e^{iφ}))`` over φ: the major
-    semi-axis ``√((|a|² + |b|² + |a² + b²|)/2)`` [same unit as a, b]."""
+    semi-axis ``√((|a|² + |b|² + |a² + b²|)/2)`` [same unit as a, b], computed as the mean
+    radius of the orbit's forward and backward circles, ``(|a + ib| + |a − ib|)/2`` (squared it
+    is the same: ``|a ± ib|²`` sum to ``2(|a|² + |b|²)`` and their product is ``|a² + b²|``)."""
     a, b = np.asarray(a), np.asarray(b)
-    return np.sqrt(0.5 * (np.abs(a) ** 2 + np.abs(b) ** 2 + np.abs(a * a + b * b)))
+    ib = b * 1j
+    return 0.5 * (np.abs(a + ib) + np.abs(a - ib))
 
 
 def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, speed: float | None = None) -> dict[str, np.ndarray]:

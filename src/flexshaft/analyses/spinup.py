@@ -43,6 +43,7 @@ from flexshaft.analyses.results import ResultMixin, new_dataset
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptance
+from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.assembly.model import Controller, Model
 
 __all__ = [
@@ -65,14 +66,6 @@ def spinup_speeds(model: Model, n_speeds: int = 400, start: float = 0.02, stop: 
     if start > stop:
         raise ValueError(f"start must not exceed stop (got start = {start!r}, stop = {stop!r})")
     return np.linspace(start, stop, n_speeds) * max(model.speed, 1.0)
-
-
-def _orbit(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Major semi-axis of the orbit of complex amplitudes a, b (``orbit_amplitude``), as the
-    mean radius of its forward and backward circles: (|a + ib| + |a − ib|)/2, which squared
-    is (|a|² + |b|² + |a² + b²|)/2 (|a ± ib|² sum to 2(|a|² + |b|²), their product is |a² + b²|)."""
-    ib = b * 1j
-    return 0.5 * (np.abs(a + ib) + np.abs(a - ib))
 
 
 def _per_speed_product(A: np.ndarray, X: np.ndarray) -> np.ndarray:
@@ -101,8 +94,8 @@ def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
         d = np.linalg.solve(system, np.broadcast_to(rec.actuator_free[None], system.shape[:2] + rec.actuator_free.shape[1:]))
         shaft = rec.shaft_free[None] - _per_speed_product(rec.shaft_per_force, D[..., None] * d)  # (ng, ns, n_out, nc)
         n_nodes = shaft.shape[2] // 2
-        shaft_orbit = _orbit(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
-        act_orbit = _orbit(d[:, :, 0::2], d[:, :, 1::2])
+        shaft_orbit = orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
+        act_orbit = orbit_amplitude(d[:, :, 0::2], d[:, :, 1::2])
         return shaft_orbit, act_orbit, None
     G = np.repeat(feedback, 2, axis=-1)[..., None]  # (ng, ns, 2 n_act, 1)
     K = np.repeat(ks, 2)[:, None]  # (2 n_act, 1)
@@ -112,17 +105,8 @@ def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
     shaft = rec.shaft_free[None] - _per_speed_product(rec.shaft_per_force, e)
     d = rec.actuator_free[None] - rec.receptance[None] @ e
     n_nodes = shaft.shape[2] // 2
-    return (_orbit(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:]), _orbit(d[:, :, 0::2], d[:, :, 1::2]),
-            _orbit(e[:, :, 0::2], e[:, :, 1::2]))
-
-
-def _force_orbit(rec: ActuatorReceptance, feedback: np.ndarray, act_orbit: np.ndarray, force_orbit) -> np.ndarray:
-    """Carried force orbits (ng, ns, n_act, nc) [N]: |G − k_s| × relative orbit when collocated."""
-    if force_orbit is not None:
-        return force_orbit
-    ks = rec.negative_stiffness
-    law = feedback - ks if ks is not None and np.any(ks) else feedback
-    return np.abs(law)[..., None] * act_orbit
+    return (orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:]),
+            orbit_amplitude(d[:, :, 0::2], d[:, :, 1::2]), orbit_amplitude(e[:, :, 0::2], e[:, :, 1::2]))
 
 
 def _dynamic_gains(controllers, speeds: np.ndarray) -> np.ndarray:
