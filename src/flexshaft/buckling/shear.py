@@ -135,6 +135,12 @@ def _helix_torques(C: NDArray[np.float64], radius: float, n: NDArray, k: NDArray
     return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
 
 
+def _helix_function(laminate: Laminate, radius: float, kinematics: str):
+    """``torques(n, k)`` of the endless shear-deformable tube, as :func:`helix_minima` takes it."""
+    C = shell_stiffness(laminate, "shear")
+    return lambda n, k: _helix_torques(C, radius, n, k, kinematics)
+
+
 def shear_helix_curve(
     laminate: Laminate, radius: float, n: NDArray[np.int_], kinematics: Kinematics = "sanders",
     refine: bool = True,
@@ -160,9 +166,7 @@ def shear_helix_curve(
     wavenumbers : ndarray, shape (len(n), 2)
         Signed axial wavenumber [rad/m] of each minimum.
     """
-    C = shell_stiffness(laminate, "shear")
-    return helix_minima(lambda n_, k_: _helix_torques(C, radius, n_, k_, kinematics), radius, n, _LOG_K_OFFSETS,
-                        refine)
+    return helix_minima(_helix_function(laminate, radius, kinematics), radius, n, _LOG_K_OFFSETS, refine)
 
 
 def shear_helix_torque(
@@ -242,11 +246,7 @@ def shear_buckling(
     n_all = np.arange(2, n_max + 1)
     # grid minima over k for every n: an upper estimate of the endless tube's minimum (within ~2 %;
     # the screen allows 5 %), refined on first use for every n at once
-    C = shell_stiffness(laminate, "shear")
-
-    def helix_torques(n_, k_):
-        return _helix_torques(C, radius, n_, k_, kinematics)
-
+    helix_torques = _helix_function(laminate, radius, kinematics)
     grid = helix_grid(helix_torques, radius, n_all, _LOG_K_OFFSETS)
     coarse, wavenumbers = helix_minima(helix_torques, radius, n_all, _LOG_K_OFFSETS, refine=False, grid=grid)
     curve: dict[int, tuple[float, float]] = {}  # n -> (T+, T-) [N m]
