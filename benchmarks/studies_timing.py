@@ -20,14 +20,24 @@ With ``--reference``, each ``run-*`` repeat also runs the same command on anothe
 code (``PYTHONPATH=OTHER/src``, e.g. ``git worktree add --detach /tmp/old <commit>``) right
 after, and the table gives the median of the pairs' ratios (reference / now).
 
+Bytecode (``--bytecode``): every code's modules are byte-compiled before the ``run-*`` repeats
+(``cached``, the default), as Python does on a first run and ``pip install .`` at install time,
+so the repeats time a user's every run. ``source`` times the first run after an editable install
+instead: the checkouts' ``__pycache__`` folders are removed before each repeat and the runs do
+not write them (``PYTHONDONTWRITEBYTECODE=1``), so every process compiles flexshaft's ~140
+modules from source (the workers compile again what they import themselves). A machine that sets
+``PYTHONDONTWRITEBYTECODE`` (this VM does) runs an editable install like ``source`` every time.
+
 Printed: median (min–max) wall time and median CPU time per case.
 """
 
 from __future__ import annotations
 
 import argparse
+import compileall
 import json
 import os
+import shutil
 import resource
 import statistics
 import subprocess
@@ -101,17 +111,47 @@ def wait_for_speed(fastest: float | None, patience: float = 120.0) -> float:
         time.sleep(5.0)
 
 
-def time_run(studies: str, repeats: int, reference: str | None = None, fastest: float | None = None) -> dict:
+def _package_folder(src: str | None) -> str:
+    """The flexshaft package a run imports: ``src/flexshaft`` of a checkout, or this one's."""
+    if src is not None:
+        return os.path.join(src, "flexshaft")
+    import flexshaft
+
+    return os.path.dirname(os.path.abspath(flexshaft.__file__))
+
+
+def _prepare_bytecode(package: str, bytecode: str) -> None:
+    """``cached``: byte-compile the package (no-op when up to date); ``source``: remove its
+    ``__pycache__`` folders (a checkout only: an installed package keeps its bytecode)."""
+    if bytecode == "cached":
+        compileall.compile_dir(package, quiet=1)
+        return
+    if os.path.basename(os.path.dirname(package)) != "src":
+        raise SystemExit(f"--bytecode source needs a source checkout (src/flexshaft), not {package}")
+    for root, dirs, _ in os.walk(package):
+        if "__pycache__" in dirs:
+            shutil.rmtree(os.path.join(root, "__pycache__"))
+            dirs.remove("__pycache__")
+
+
+def time_run(studies: str, repeats: int, reference: str | None = None, fastest: float | None = None,
+             bytecode: str = "cached") -> dict:
     """``flexshaft run --studies X`` as a fresh process, ``repeats`` times; with a
     ``reference`` source folder (another checkout's ``src``), each repeat also runs the same
-    command on that code right after (PYTHONPATH), so that both see the same machine load."""
+    command on that code right after (PYTHONPATH), so that both see the same machine load.
+    ``bytecode``: see the module docstring."""
     codes = {"now": None} if reference is None else {"now": None, "reference": os.path.abspath(reference)}
     times = {name: ([], []) for name in codes}
     probes = []
     for _ in range(repeats):
         probes.append(wait_for_speed(fastest))
         for name, src in codes.items():
-            env = None if src is None else {**os.environ, "PYTHONPATH": src}
+            _prepare_bytecode(_package_folder(src), bytecode)
+            env = dict(os.environ)
+            if src is not None:
+                env["PYTHONPATH"] = src
+            if bytecode == "source":
+                env["PYTHONDONTWRITEBYTECODE"] = "1"
             with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
                 wall, cpu = _time_command([*_flexshaft_command(), "run", "--studies", studies, "--out", out], env)
             times[name][0].append(wall)
@@ -119,7 +159,7 @@ def time_run(studies: str, repeats: int, reference: str | None = None, fastest: 
     walls, cpus = times["now"]
     probes.append(speed_probe())
     result = {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": f"flexshaft run --studies {studies}",
-              "probe": bu.stats(probes)}
+              "probe": bu.stats(probes), "bytecode": bytecode}
     if reference is not None:
         ref_walls, ref_cpus = times["reference"]
         result["reference"] = {**bu.stats(ref_walls), "cpu": bu.stats(ref_cpus), "source": codes["reference"]}
@@ -139,6 +179,9 @@ def main(argv=None) -> int:
     p.add_argument("--fast-probe", type=float, metavar="SECONDS",
                    help="run each run-* repeat only once the speed probe is at most SECONDS (waits up to 2 min): "
                         "compares codes at the shared VM's fast moments")
+    p.add_argument("--bytecode", choices=("cached", "source"), default="cached",
+                   help="run-* cases: modules byte-compiled beforehand (cached: every run but the first after an "
+                        "editable install) or compiled from source by every run (source: the first run)")
     a = p.parse_args(argv)
     if a.repeats < 1:
         p.error(f"--repeats must be at least 1 (got {a.repeats})")
@@ -149,7 +192,7 @@ def main(argv=None) -> int:
         if name.startswith("studies-"):
             results[name] = time_studies(name == "studies-coarse", a.repeats)
         else:
-            results[name] = time_run(name.split("-", 1)[1], a.repeats, a.reference, a.fast_probe)
+            results[name] = time_run(name.split("-", 1)[1], a.repeats, a.reference, a.fast_probe, a.bytecode)
         r = results[name]
         cold = f"cold {r['cold_s']:.2f} s, " if "cold_s" in r else ""
         ref = (f"; reference {bu.fmt_stats(r['reference'], 2)} s, {r['speedup']:.2f}x faster now"
@@ -163,7 +206,7 @@ def main(argv=None) -> int:
     print()
     print(f"machine: {m['cpu']}, {m['cores']} cores, load average {m['load_average_1_5_15']} "
           f"(shared); {m['date']}; flexshaft {flexshaft.__version__} (git {m['git_commit']}), "
-          f"Python {m['python']}; BLAS threads {m['blas_threads_env']}")
+          f"Python {m['python']}; BLAS threads {m['blas_threads_env']}; run-* bytecode: {a.bytecode}")
     print()
     print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | reference wall [s] (CPU) "
           "| reference / now | repeats | speed probe [s] |")
