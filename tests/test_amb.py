@@ -606,3 +606,43 @@ def test_magnetic_bearing_keys_are_validated_with_the_field_value_and_allowed_ra
     with pytest.raises(DesignError) as error:
         with_overrides(baseline_design(), overrides)
     assert message in str(error.value)
+
+
+def test_newton_terms_vanish_at_the_state_matrix_roots_and_give_the_derivative_of_T():
+    """``ReducedModel.newton_terms`` of a lagged, non-collocated magnet pair (PID with states,
+    sensor offsets, negative stiffness) and of PD bearings with and without sensor offsets, against two independent references:
+    T(s) is singular at every eigenvalue of the first-order state matrix (which realises the
+    laws with controller states), smallest singular value below 1e-9 of the largest (round-off
+    of the eigen-solve); and dT/ds · y is the central difference of T(s) y, step 1e-5 |s|, to
+    1e-7 (truncation ~1e-10, round-off ~1e-11 of |dT/ds · y|)."""
+    from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
+
+    lagged = {}
+    for i, offset in ((1, 0.04), (2, -0.03)):
+        lagged.update({f"bearings[{i}].{k}": v for k, v in (
+            ("ks", 8.5e5), ("ki", 177.0), ("kp", 1.6e4), ("kd", 11.0), ("integral_gain", 1e5),
+            ("derivative_cutoff", 500.0), ("amplifier_bandwidth", 1000.0), ("sensor_offset", offset))})
+    pd = {"bearings[1].kd": 300.0, "bearings[2].kd": 300.0}
+    offset_pd = {**pd, "bearings[1].sensor_offset": 0.04, "bearings[2].sensor_offset": -0.03}
+    rng = np.random.default_rng(7)
+    for overrides in (lagged, pd, offset_pd):
+        model = build_model(with_overrides(baseline_design(), overrides))
+        red = reduce(model, 24)
+        speed = model.speed
+        lam = la.eigvals(red.state_matrix(speed))
+        lam = lam[lam.imag > 1.0]
+        lam = lam[np.argsort(np.abs(lam))][:10]
+        none = LossCoefficients(0.0, 0.0, 0.0)
+        y = rng.standard_normal(red.size) + 1j * rng.standard_normal(red.size)
+        for s in lam:
+            T, _ = red.newton_terms(s, speed, none, y)
+            sv = la.svdvals(T)
+            assert sv[-1] <= 1e-9 * sv[0]
+        for s in (lam[0], lam[-1], 3.0 + 400.0j):
+            loss = eigen_coefficients(model.internal_damping, abs(s.imag), speed, 1.0)
+            for weights in (none, loss):
+                _, dTy = red.newton_terms(s, speed, weights, y)
+                h = 1e-5 * abs(s)
+                ahead, _ = red.newton_terms(s + h, speed, weights, y)
+                behind, _ = red.newton_terms(s - h, speed, weights, y)
+                np.testing.assert_allclose(dTy, (ahead - behind) @ y / (2 * h), rtol=0, atol=1e-7 * np.abs(dTy).max())

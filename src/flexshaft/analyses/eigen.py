@@ -45,6 +45,7 @@ Im s = 0 and the stability analysis as divergence.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 
@@ -135,9 +136,9 @@ class _ActuatorStates:
     def sensing(self) -> np.ndarray:
         return self.rows if self.in_rows is None else self.in_rows
 
-    @property
+    @functools.cached_property
     def coupling(self) -> np.ndarray:
-        """``B̃_outᵀ B̃_in`` (nb, nb)."""
+        """``B̃_outᵀ B̃_in`` (nb, nb), computed once."""
         return self.rows.T @ self.sensing
 
 
@@ -254,25 +255,27 @@ class ReducedModel:
             parts = cache[key] = (damping.astype(complex), stiffness)
         return parts
 
-    def dynamic_matrices(self, s: complex, speed: float, loss: LossCoefficients) -> tuple[np.ndarray, np.ndarray]:
-        """``T(s)`` and ``dT/ds`` of the second-order problem with the complex loss weights
-        ``loss`` (controller laws as C(s))."""
+    def newton_terms(self, s: complex, speed: float, loss: LossCoefficients, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``T(s)`` and ``dT/ds · y`` of the second-order problem with the complex loss weights
+        ``loss`` (controller laws as C(s)): what a Newton step needs. dT/ds is not formed: its
+        product with ``y`` is the damping's, ``2 s y`` and each channel's rank-two term."""
         damping, stiffness = self._speed_parts(speed, loss)
-        nb = self.size
-        T = s * damping + stiffness
-        T.flat[:: nb + 1] += s * s
-        dT = damping.copy()
-        dT.flat[:: nb + 1] += 2 * s
+        T = damping * s
+        T += stiffness
+        T.ravel()[:: self.size + 1] += s * s  # a view: T is a new contiguous array
+        dTy = damping @ y
+        dTy += (2 * s) * y
         for act in self.actuators:
             if act.law is not None:  # the law's dynamics: C(s) minus what Λ and C̃ already hold
-                BtB = act.coupling
-                T = T + (complex(act.law(s)) - act.basis_stiffness - s * act.damping_in_basis) * BtB
-                dT = dT + (complex(act.law.derivative(s)) - act.damping_in_basis) * BtB
+                gain = complex(act.law(s)) - act.basis_stiffness - s * act.damping_in_basis
+                slope = complex(act.law.derivative(s)) - act.damping_in_basis
             elif act.stiffness or act.damping:
-                BtB = act.coupling
-                T = T + (act.stiffness + s * act.damping) * BtB
-                dT = dT + act.damping * BtB
-        return T, dT
+                gain, slope = act.stiffness + s * act.damping, act.damping
+            else:
+                continue
+            T += gain * act.coupling
+            dTy += slope * (act.rows.T @ (act.sensing @ y))
+        return T, dTy
 
 
 def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness: float) -> _ActuatorStates:
@@ -414,11 +417,11 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
             loss = weights.get(sigma) if math.isfinite(omega) else None
             if loss is None:  # (a non-finite ω is refused here)
                 loss = weights[sigma] = eigen_coefficients(red.internal_damping, omega, speed, sigma)
-            T, dT = red.dynamic_matrices(s, speed, loss)
+            T, dTy = red.newton_terms(s, speed, loss, y)
         else:
-            T, dT = red.dynamic_matrices(s, speed, _NO_LOSS)
-            T = T + red_S
-        _, _, u, info = _gesv(T, dT @ y, overwrite_a=True, overwrite_b=True)
+            T, dTy = red.newton_terms(s, speed, _NO_LOSS, y)
+            T += red_S
+        _, _, u, info = _gesv(T, dTy, overwrite_a=True, overwrite_b=True)
         if info > 0:  # s is an eigenvalue to machine precision
             return s, y, True
         denominator = np.vdot(y, u)
