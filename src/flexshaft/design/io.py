@@ -232,8 +232,17 @@ def _decode(raw: bytes, source: str) -> str:
         raise DesignError([Problem(source, message)], source) from None
 
 
+#: Immutable leaf types, returned as they are (``copy.deepcopy`` would return them unchanged).
+_ATOMS = frozenset({str, int, float, bool, complex, type(None)})
+
+
 def _plain(value: Any) -> Any:
     """Deep copy into plain dicts/lists/scalars (numpy scalars and arrays become Python)."""
+    kind = type(value)
+    if kind in _ATOMS:  # most of a design's values (a sweep copies the whole design per point)
+        return value
+    if kind is dict:
+        return {key: _plain(item) for key, item in value.items()}
     if isinstance(value, BaseModel):
         return _plain(value.model_dump(mode="python"))
     if isinstance(value, Mapping):
