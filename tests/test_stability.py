@@ -13,6 +13,8 @@ import numpy as np
 import pytest
 import scipy.linalg as la
 
+from flexshaft.analyses.eigen import reduce
+from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
 from flexshaft.analyses.stability import rotation_generator, stability
 from flexshaft.assembly import build_model
 from flexshaft.assembly.sparse import restrict
@@ -146,3 +148,42 @@ def test_shaft_whirl_on_one_model_equals_separate_analyses():
         alone = shaft_stability(design, speeds, damping, 6)
         assert np.array_equal(result.eigenvalues, alone.eigenvalues)
         assert result.onset_speed == alone.onset_speed
+
+
+def test_newton_terms_vanish_at_the_state_matrix_roots_and_give_the_derivative_of_T():
+    """``ReducedModel.newton_terms`` (what Newton's method of the hysteretic stability solves)
+    for a lagged, non-collocated magnet pair (PID with states, sensor offsets, negative
+    stiffness) and for PD bearings with and without sensor offsets, against two independent
+    references: T(s) is singular at every eigenvalue of the first-order state matrix (which
+    realises the laws with controller states), smallest singular value below 1e-9 of the
+    largest (round-off of the eigen-solve); and dT/ds · y is the central difference of T(s) y,
+    step 1e-5 |s|, to 1e-7 (truncation ~1e-10, round-off ~1e-11 of |dT/ds · y|)."""
+    lagged = {}
+    for i, offset in ((1, 0.04), (2, -0.03)):
+        lagged.update({f"bearings[{i}].{k}": v for k, v in (
+            ("ks", 8.5e5), ("ki", 177.0), ("kp", 1.6e4), ("kd", 11.0), ("integral_gain", 1e5),
+            ("derivative_cutoff", 500.0), ("amplifier_bandwidth", 1000.0), ("sensor_offset", offset))})
+    pd = {"bearings[1].kd": 300.0, "bearings[2].kd": 300.0}
+    offset_pd = {**pd, "bearings[1].sensor_offset": 0.04, "bearings[2].sensor_offset": -0.03}
+    rng = np.random.default_rng(7)
+    for overrides in (lagged, pd, offset_pd):
+        model = build_model(with_overrides(baseline_design(), overrides))
+        red = reduce(model, 24)
+        speed = model.speed
+        lam = la.eigvals(red.state_matrix(speed))
+        lam = lam[lam.imag > 1.0]
+        lam = lam[np.argsort(np.abs(lam))][:10]
+        none = LossCoefficients(0.0, 0.0, 0.0)
+        y = rng.standard_normal(red.size) + 1j * rng.standard_normal(red.size)
+        for s in lam:
+            T, _ = red.newton_terms(s, speed, none, y)
+            sv = la.svdvals(T)
+            assert sv[-1] <= 1e-9 * sv[0]
+        for s in (lam[0], lam[-1], 3.0 + 400.0j):
+            loss = eigen_coefficients(model.internal_damping, abs(s.imag), speed, 1.0)
+            for weights in (none, loss):
+                _, dTy = red.newton_terms(s, speed, weights, y)
+                h = 1e-5 * abs(s)
+                ahead, _ = red.newton_terms(s + h, speed, weights, y)
+                behind, _ = red.newton_terms(s - h, speed, weights, y)
+                np.testing.assert_allclose(dTy, (ahead - behind) @ y / (2 * h), rtol=0, atol=1e-7 * np.abs(dTy).max())
