@@ -6,6 +6,7 @@ Pure Python (no numpy, no flexshaft, no ross) so that the ROSS interpreters impo
 from __future__ import annotations
 
 import datetime
+import json
 import os
 import platform
 import resource
@@ -72,6 +73,17 @@ def blas_env() -> dict:
 def single_thread_env(threads: int) -> dict:
     """The environment with every BLAS/OpenMP/numba thread count set to ``threads``."""
     return dict(os.environ, **{k: str(threads) for k in THREAD_VARS})
+
+
+def run_in_tree(source, job: str, *args) -> dict:
+    """Run the Python code ``job`` (with ``args`` as its ``sys.argv[1:]``) in a fresh process
+    on the flexshaft source tree ``source`` (its ``src`` first on PYTHONPATH) with one BLAS
+    thread; returns the JSON object of its last line of output."""
+    env = dict(single_thread_env(1), PYTHONPATH=os.path.join(str(source), "src"))
+    out = subprocess.run([sys.executable, "-c", job, *map(str, args)], env=env, capture_output=True, text=True)
+    if out.returncode:
+        raise SystemExit(f"the job failed in {source}:\n{out.stderr}")
+    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def reexec_with_threads(threads: int, script: str) -> None:

@@ -16,14 +16,15 @@ The reference is any flexshaft source tree (e.g. ``git worktree add /tmp/old <co
 from __future__ import annotations
 
 import argparse
-import json
-import os
 import statistics
-import subprocess
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import bench_util as bu  # noqa: E402
+
 JOB = r"""
 import json, sys, time
 from flexshaft.analyses.shaft_buckling import shaft_buckling
@@ -53,12 +54,7 @@ print(json.dumps({"times": times, "torques": torques}))
 
 
 def run(source: Path, repeats: int) -> dict:
-    env = dict(os.environ, PYTHONPATH=str(source / "src"), OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
-               MKL_NUM_THREADS="1")
-    out = subprocess.run([sys.executable, "-c", JOB, str(repeats)], env=env, capture_output=True, text=True)
-    if out.returncode:
-        raise SystemExit(f"the job failed in {source}:\n{out.stderr}")
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return bu.run_in_tree(source, JOB, repeats)
 
 
 def main() -> None:

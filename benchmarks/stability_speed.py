@@ -15,14 +15,15 @@ The reference is any flexshaft source tree (e.g. ``git worktree add /tmp/old <co
 from __future__ import annotations
 
 import argparse
-import json
-import os
 import statistics
-import subprocess
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import bench_util as bu  # noqa: E402
+
 JOB = r"""
 import json, sys, time
 import numpy as np
@@ -43,11 +44,7 @@ print(json.dumps({"times": times, "onsets_rpm": onsets}))
 
 
 def run(source: Path, method: str, n_speeds: int, repeats: int) -> dict:
-    env = dict(os.environ, PYTHONPATH=str(source / "src"), OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1",
-               MKL_NUM_THREADS="1")
-    out = subprocess.run([sys.executable, "-c", JOB, method, str(n_speeds), str(repeats)], env=env,
-                         capture_output=True, text=True, check=True)
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return bu.run_in_tree(source, JOB, method, n_speeds, repeats)
 
 
 def main() -> None:
