@@ -15,8 +15,18 @@ import subprocess
 import sys
 import time
 
-__all__ = ["THREAD_VARS", "timed", "stats", "fmt_stats", "maxrss_mb", "current_rss_mb", "machine_info",
-           "blas_env", "single_thread_env", "reexec_with_threads"]
+__all__ = [
+    "THREAD_VARS",
+    "timed",
+    "stats",
+    "fmt_stats",
+    "maxrss_mb",
+    "current_rss_mb",
+    "machine_info",
+    "blas_env",
+    "single_thread_env",
+    "reexec_with_threads",
+]
 
 THREAD_VARS = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
 
@@ -33,8 +43,13 @@ def timed(fn):
 
 def stats(times: list[float]) -> dict:
     """Median, min and max of repeated timings [s]."""
-    return {"median": statistics.median(times), "min": min(times), "max": max(times),
-            "n": len(times), "all": list(times)}
+    return {
+        "median": statistics.median(times),
+        "min": min(times),
+        "max": max(times),
+        "n": len(times),
+        "all": list(times),
+    }
 
 
 def fmt_stats(s: dict, digits: int = 3) -> str:
@@ -123,8 +138,9 @@ def _mem_total_gb() -> float:
 def _git_commit() -> str:
     here = os.path.dirname(os.path.abspath(__file__))
     try:
-        out = subprocess.run(["git", "-C", here, "rev-parse", "--short", "HEAD"],
-                             capture_output=True, text=True, timeout=10)
+        out = subprocess.run(
+            ["git", "-C", here, "rev-parse", "--short", "HEAD"], capture_output=True, text=True, timeout=10
+        )
         return out.stdout.strip() or "unknown"
     except (OSError, subprocess.SubprocessError):
         return "unknown"

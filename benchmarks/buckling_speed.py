@@ -66,8 +66,10 @@ def main() -> None:
     if args.reference:
         trees["reference"] = args.reference.resolve()
     results = {name: run(path, args.repeats) for name, path in trees.items()}
-    print(f"shear-deformable torsional buckling at the report's 9 walls + the design's own analysis, "
-          f"{args.repeats} warm repeats")
+    print(
+        f"shear-deformable torsional buckling at the report's 9 walls + the design's own analysis, "
+        f"{args.repeats} warm repeats"
+    )
     for name, r in results.items():
         t = r["times"]
         print(f"  {name:14s} median {statistics.median(t):7.3f} s  (min {min(t):.3f}, max {max(t):.3f})")

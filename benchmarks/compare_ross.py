@@ -76,10 +76,7 @@ repository; ROSS 3.x needs Python >= 3.12, 3.1 needs >= 3.13):
     /work/ross-latest-venv/bin/pip install ross-rotordynamics
 or pass --ross-python / set ROSS_PYTHON to interpreters that have ross-rotordynamics."""
 
-README_FILES = {
-    "full": os.path.join(HERE, "README.md"),
-    "headline": os.path.join(ROOT, "README.md"),
-}
+README_FILES = {"full": os.path.join(HERE, "README.md"), "headline": os.path.join(ROOT, "README.md")}
 MARK = "<!-- compare_ross.py --table: {} begin (generated, do not edit) -->"
 MARK_END = "<!-- compare_ross.py --table: {} end -->"
 
@@ -90,24 +87,30 @@ MARK_END = "<!-- compare_ross.py --table: {} end -->"
 
 def _child(cmd: list[str], label: str) -> dict:
     print(f"[{label}] {' '.join(cmd[-4:])} ...", flush=True)
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
         sys.stderr.write(proc.stderr[-4000:])
         raise SystemExit(f"{label} worker failed with status {proc.returncode}: {' '.join(cmd)}")
     r = json.loads(proc.stdout)
-    print(f"[{label}] {r['case']:9s} n_el={r['n_el']:4d} cold {r['cold_s']:9.4f} s  warm "
-          f"{bu.fmt_stats(r['warm'], 4)} s  peak {r['peak_rss_mb']:6.0f} MB", flush=True)
+    print(
+        f"[{label}] {r['case']:9s} n_el={r['n_el']:4d} cold {r['cold_s']:9.4f} s  warm "
+        f"{bu.fmt_stats(r['warm'], 4)} s  peak {r['peak_rss_mb']:6.0f} MB",
+        flush=True,
+    )
     return r
 
 
 def run_flexshaft(name: str, n_el: int, repeats: int) -> dict:
-    return _child([sys.executable, os.path.join(HERE, "flexshaft_side.py"), name, str(n_el),
-                   "--repeats", str(repeats)], "flexshaft")
+    return _child(
+        [sys.executable, os.path.join(HERE, "flexshaft_side.py"), name, str(n_el), "--repeats", str(repeats)],
+        "flexshaft",
+    )
 
 
 def run_ross(python: str, name: str, n_el: int, repeats: int) -> dict:
-    return _child([python, os.path.join(HERE, "ross_model.py"), "--single", name, str(n_el),
-                   "--repeats", str(repeats)], "ross")
+    return _child(
+        [python, os.path.join(HERE, "ross_model.py"), "--single", name, str(n_el), "--repeats", str(repeats)], "ross"
+    )
 
 
 def ross_pythons(cli: list[str] | None) -> list[str]:
@@ -163,8 +166,9 @@ def compare(case_name: str, fxr: dict, rsr: dict) -> dict:
             metric = _rel(np.abs(fxv), np.abs(rx))
             label = "|v| mid"
         # extra (not checked): complex amplitude incl. phase, relative to that component's peak
-        cplx = max(np.max(np.abs(fxv - rx)) / np.max(np.abs(rx)),
-                   np.max(np.abs(fxw - ry)) / max(np.max(np.abs(ry)), 1e-300))
+        cplx = max(
+            np.max(np.abs(fxv - rx)) / np.max(np.abs(rx)), np.max(np.abs(fxw - ry)) / max(np.max(np.abs(ry)), 1e-300)
+        )
         return {"max_rel": float(np.max(metric)), "label": label, "complex_rel_peak": float(cplx)}
     # Campbell: both sides give the lowest lateral frequencies per speed; sorted, compared
     # one-to-one (falls back to nearest-value matching if the counts differ)
@@ -230,9 +234,13 @@ def run_all(elements, cases, repeats: int, pythons: list[str], reuse: dict | Non
     for r in ross_runs:
         fr = next(f for f in fx_runs if (f["case"], f["n_el"]) == (r["case"], r["n_el"]))
         r["comparison"] = compare(r["case"], fr["result"], r["result"])
-    data = {"machine": {**bu.machine_info(), "load_average_at_start": load_start},
-            "parameters": case.parameters(), "repeats": repeats,
-            "flexshaft_runs": fx_runs, "ross_runs": ross_runs}
+    data = {
+        "machine": {**bu.machine_info(), "load_average_at_start": load_start},
+        "parameters": case.parameters(),
+        "repeats": repeats,
+        "flexshaft_runs": fx_runs,
+        "ross_runs": ross_runs,
+    }
     if reuse and reused:
         data["ross_reused"] = ross_reuse_note(reuse)
     return data
@@ -241,9 +249,12 @@ def run_all(elements, cases, repeats: int, pythons: list[str], reuse: dict | Non
 def ross_reuse_note(reuse: dict) -> dict:
     """Where the reused ROSS timings come from: their run's date, commit and machine load."""
     m = reuse["machine"]
-    return {"date": m["date"], "git_commit": m.get("git_commit"),
-            "load_average_at_start": m.get("load_average_at_start", ["?"])[0],
-            "load_average_at_end": m["load_average_1_5_15"][0]}
+    return {
+        "date": m["date"],
+        "git_commit": m.get("git_commit"),
+        "load_average_at_start": m.get("load_average_at_start", ["?"])[0],
+        "load_average_at_end": m["load_average_1_5_15"][0],
+    }
 
 
 def _versions(data: dict) -> list[str]:
@@ -267,15 +278,19 @@ def report(data: dict) -> tuple[bool, bool]:
     print()
     print(header_lines(data))
     print()
-    hdr = (f"{'case':9s} {'n_el':>4s} {'code':>11s} {'cold [s]':>9s} {'warm median (min–max) [s]':>30s} "
-           f"{'x warm':>8s} {'x CPU':>7s} {'x cold':>7s} {'peak MB':>8s} {'max rel':>9s}  notes")
+    hdr = (
+        f"{'case':9s} {'n_el':>4s} {'code':>11s} {'cold [s]':>9s} {'warm median (min–max) [s]':>30s} "
+        f"{'x warm':>8s} {'x CPU':>7s} {'x cold':>7s} {'peak MB':>8s} {'max rel':>9s}  notes"
+    )
     print(hdr)
     print("-" * len(hdr))
     ok_agree = True
     for (name, n_el), f in fx.items():
-        print(f"{name:9s} {n_el:4d} {'flexshaft':>11s} {f['cold_s']:9.4f} {bu.fmt_stats(f['warm'], 4):>30s} "
-              f"{'':8s} {'':7s} {'':7s} {f['peak_rss_mb']:8.0f}" + ("" if f["path"] in
-              ("sweep", "frequency_response") else f"  flexshaft {f['path']}"))
+        print(
+            f"{name:9s} {n_el:4d} {'flexshaft':>11s} {f['cold_s']:9.4f} {bu.fmt_stats(f['warm'], 4):>30s} "
+            f"{'':8s} {'':7s} {'':7s} {f['peak_rss_mb']:8.0f}"
+            + ("" if f["path"] in ("sweep", "frequency_response") else f"  flexshaft {f['path']}")
+        )
         for v in versions:
             r = rs.get((v, name, n_el))
             if r is None:
@@ -291,17 +306,23 @@ def report(data: dict) -> tuple[bool, bool]:
             if c.get("ross_non_lateral_modes"):
                 notes.append(f"ROSS non-lateral modes {c['ross_non_lateral_modes']}")
             sp = speedups(f, r)
-            print(f"{'':9s} {'':4s} {'ROSS ' + v:>11s} {r['cold_s']:9.3f} {bu.fmt_stats(r['warm'], 3):>30s} "
-                  f"{sp['warm']:7.1f}x {sp['cpu']:6.1f}x {sp['cold']:6.1f}x {r['peak_rss_mb']:8.0f} "
-                  f"{c['max_rel']:9.1e}  {'; '.join(notes)}")
+            print(
+                f"{'':9s} {'':4s} {'ROSS ' + v:>11s} {r['cold_s']:9.3f} {bu.fmt_stats(r['warm'], 3):>30s} "
+                f"{sp['warm']:7.1f}x {sp['cpu']:6.1f}x {sp['cold']:6.1f}x {r['peak_rss_mb']:8.0f} "
+                f"{c['max_rel']:9.1e}  {'; '.join(notes)}"
+            )
     print()
-    print("x warm / x CPU: ROSS warm median / flexshaft warm median (wall / process CPU time); "
-          "x cold: first call in a fresh process")
+    print(
+        "x warm / x CPU: ROSS warm median / flexshaft warm median (wall / process CPU time); "
+        "x cold: first call in a fresh process"
+    )
     print("peak MB: whole-process peak resident set (ru_maxrss) of the child that ran the case")
     ok_bars = True
     if versions:
-        print(f"{'PASS' if ok_agree else 'FAIL'}: results agree to {case.TOLERANCE:.1%} "
-              f"(every case, size and ROSS version)")
+        print(
+            f"{'PASS' if ok_agree else 'FAIL'}: results agree to {case.TOLERANCE:.1%} "
+            f"(every case, size and ROSS version)"
+        )
         largest = max(n for _, n in fx)
         for v in versions:
             for name, bar in BARS.items():
@@ -311,20 +332,26 @@ def report(data: dict) -> tuple[bool, bool]:
                 sp = speedups(f, r)
                 s = sp["warm"]
                 ok_bars &= s >= bar
-                print(f"{'PASS' if s >= bar else 'FAIL'}: {name} on {largest} elements, warm, "
-                      f"{s:.0f}x faster than ROSS {v} (bar {bar:.0f}x; CPU-time ratio "
-                      f"{sp['cpu']:.0f}x)")
+                print(
+                    f"{'PASS' if s >= bar else 'FAIL'}: {name} on {largest} elements, warm, "
+                    f"{s:.0f}x faster than ROSS {v} (bar {bar:.0f}x; CPU-time ratio "
+                    f"{sp['cpu']:.0f}x)"
+                )
     peak = max(f["peak_rss_mb"] for f in fx.values())
     ok_bars &= peak < MEMORY_BAR_MB
-    print(f"{'PASS' if peak < MEMORY_BAR_MB else 'FAIL'}: flexshaft peak memory {peak:.0f} MB "
-          f"(largest over cases; bar {MEMORY_BAR_MB:.0f} MB)")
+    print(
+        f"{'PASS' if peak < MEMORY_BAR_MB else 'FAIL'}: flexshaft peak memory {peak:.0f} MB "
+        f"(largest over cases; bar {MEMORY_BAR_MB:.0f} MB)"
+    )
     return ok_agree, ok_bars
 
 
 def speedups(f: dict, r: dict) -> dict:
-    return {"warm": r["warm"]["median"] / f["warm"]["median"],
-            "cpu": r["warm"]["cpu"]["median"] / f["warm"]["cpu"]["median"],
-            "cold": r["cold_s"] / f["cold_s"]}
+    return {
+        "warm": r["warm"]["median"] / f["warm"]["median"],
+        "cpu": r["warm"]["cpu"]["median"] / f["warm"]["cpu"]["median"],
+        "cold": r["cold_s"] / f["cold_s"],
+    }
 
 
 # -------------------------------------------------------------------------------------------------
@@ -341,26 +368,32 @@ def header_lines(data: dict) -> str:
         f"(a machine shared with other jobs; 1-min load average "
         f"{m.get('load_average_at_start', ['?'])[0]} at the start of the run, "
         f"{m['load_average_1_5_15'][0]} at its end), "
-        + ("one BLAS thread (OPENBLAS/OMP/MKL/NUMBA_NUM_THREADS=1) for both codes."
-           if one else f"BLAS threads {threads}."),
+        + (
+            "one BLAS thread (OPENBLAS/OMP/MKL/NUMBA_NUM_THREADS=1) for both codes."
+            if one
+            else f"BLAS threads {threads}."
+        ),
         f"flexshaft {fx0['version']} (git {m['git_commit']}), Python {m['python']}, "
         f"numpy {fx0['numpy']}, scipy {fx0['scipy']}.",
     ]
     if "ross_reused" in data:
         old = data["ross_reused"]
-        lines.append(f"The ROSS timings are reused from the run of {old['date'][:16]} (`--reuse-ross`; ROSS takes "
-                     f"most of the hour), when the 1-min load average was {old['load_average_at_start']} to "
-                     f"{old['load_average_at_end']}: on a busier machine, so the wall-time ratios favour flexshaft; "
-                     "the CPU-time ratios in brackets are the fairer figure.")
+        lines.append(
+            f"The ROSS timings are reused from the run of {old['date'][:16]} (`--reuse-ross`; ROSS takes "
+            f"most of the hour), when the 1-min load average was {old['load_average_at_start']} to "
+            f"{old['load_average_at_end']}: on a busier machine, so the wall-time ratios favour flexshaft; "
+            "the CPU-time ratios in brackets are the fairer figure."
+        )
     for v in _versions(data):
         r = next(r for r in data["ross_runs"] if r["version"] == v)
-        lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, "
-                     f"scipy {r['scipy']}.")
-    lines.append(f"Warm: median (min–max) of {data['repeats']} calls, each on a freshly built model, "
-                 "after a first call in the same process. Cold: the first call in a fresh process "
-                 "(package imported, model built, not timed). Speed-ups are ratios of wall-time "
-                 "medians; in brackets, of process CPU-time medians, the steadier figure when "
-                 "other jobs load the machine (wall time then includes waiting for a core).")
+        lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, scipy {r['scipy']}.")
+    lines.append(
+        f"Warm: median (min–max) of {data['repeats']} calls, each on a freshly built model, "
+        "after a first call in the same process. Cold: the first call in a fresh process "
+        "(package imported, model built, not timed). Speed-ups are ratios of wall-time "
+        "medians; in brackets, of process CPU-time medians, the steadier figure when "
+        "other jobs load the machine (wall time then includes waiting for a core)."
+    )
     return "\n".join("* " + line for line in lines)
 
 
@@ -379,8 +412,9 @@ def tables(data: dict, elements=None) -> str:
         return "| case | n_el | " + " | ".join(cols) + " |\n|---|---:|" + "---:|" * len(cols)
 
     for title, get_fx, get_r, key in (
-            ("Warm [s]", lambda f: bu.fmt_stats(f["warm"], 3), lambda r: bu.fmt_stats(r["warm"], 2), "warm"),
-            ("Cold [s]", lambda f: f"{f['cold_s']:.3f}", lambda r: f"{r['cold_s']:.2f}", "cold")):
+        ("Warm [s]", lambda f: bu.fmt_stats(f["warm"], 3), lambda r: bu.fmt_stats(r["warm"], 2), "warm"),
+        ("Cold [s]", lambda f: f"{f['cold_s']:.3f}", lambda r: f"{r['cold_s']:.2f}", "cold"),
+    ):
         cols = ["flexshaft"]
         for v in versions:
             cols += [f"ROSS {v}", "speed-up" + (" (CPU)" if key == "warm" else "")]
@@ -394,12 +428,13 @@ def tables(data: dict, elements=None) -> str:
                     cells += ["–", "–"]
                     continue
                 s = speedups(f, r)
-                cells += [get_r(r), _ratio(s["warm"]) + f" ({_ratio(s['cpu'])})" if key == "warm"
-                          else _ratio(s["cold"])]
+                cells += [
+                    get_r(r),
+                    _ratio(s["warm"]) + f" ({_ratio(s['cpu'])})" if key == "warm" else _ratio(s["cold"]),
+                ]
             out.append(f"| {k[0]} | {k[1]} | " + " | ".join(cells) + " |")
         out.append("")
-    cols = ["flexshaft peak MB"] + [f"ROSS {v} peak MB" for v in versions] + \
-           [f"max rel. diff vs {v}" for v in versions]
+    cols = ["flexshaft peak MB"] + [f"ROSS {v} peak MB" for v in versions] + [f"max rel. diff vs {v}" for v in versions]
     out += ["**Peak memory (whole process, ru_maxrss) and agreement**", "", row_head(cols)]
     for k in keys:
         f = fx[k]
@@ -411,8 +446,7 @@ def tables(data: dict, elements=None) -> str:
     imports = [f"flexshaft {_median([f['import_s'] for f in fx.values()]):.1f} s"]
     for v in versions:
         imports.append(f"ROSS {v} {_median([r['import_s'] for r in data['ross_runs'] if r['version'] == v]):.1f} s")
-    out += ["", "Import time (median over the worker processes, not in the cold times): "
-            + ", ".join(imports) + "."]
+    out += ["", "Import time (median over the worker processes, not in the cold times): " + ", ".join(imports) + "."]
     return "\n".join(out)
 
 
@@ -427,10 +461,16 @@ def headline(data: dict) -> str:
     fx, rs = _lookup(data)
     largest = max(n for _, n in fx)
     versions = _versions(data)
-    out = [header_lines(data), "",
-           "| case (" + str(largest) + " elements) | flexshaft warm [s] | "
-           + " | ".join(f"ROSS {v} warm [s] | speed-up warm (CPU) / cold" for v in versions) + " |",
-           "|---|---:|" + "---:|---:|" * len(versions)]
+    out = [
+        header_lines(data),
+        "",
+        "| case ("
+        + str(largest)
+        + " elements) | flexshaft warm [s] | "
+        + " | ".join(f"ROSS {v} warm [s] | speed-up warm (CPU) / cold" for v in versions)
+        + " |",
+        "|---|---:|" + "---:|---:|" * len(versions),
+    ]
     for name in CASES:
         f = fx.get((name, largest))
         if f is None:
@@ -442,14 +482,18 @@ def headline(data: dict) -> str:
                 cells += ["–", "–"]
                 continue
             s = speedups(f, r)
-            cells += [f"{r['warm']['median']:.1f}",
-                      f"{_ratio(s['warm'])} ({_ratio(s['cpu'])}) / {_ratio(s['cold'])}"]
+            cells += [f"{r['warm']['median']:.1f}", f"{_ratio(s['warm'])} ({_ratio(s['cpu'])}) / {_ratio(s['cold'])}"]
         out.append(f"| {name} | " + " | ".join(cells) + " |")
     peak_fx = max(f["peak_rss_mb"] for f in fx.values())
-    peaks = [f"ROSS {v} {max(r['peak_rss_mb'] for r in data['ross_runs'] if r['version'] == v):.0f} MB"
-             for v in versions]
-    out += ["", f"Peak memory (whole process, largest case): flexshaft {peak_fx:.0f} MB"
-            + ("".join(f", {p}" for p in peaks)) + "."]
+    peaks = [
+        f"ROSS {v} {max(r['peak_rss_mb'] for r in data['ross_runs'] if r['version'] == v):.0f} MB" for v in versions
+    ]
+    out += [
+        "",
+        f"Peak memory (whole process, largest case): flexshaft {peak_fx:.0f} MB"
+        + ("".join(f", {p}" for p in peaks))
+        + ".",
+    ]
     return "\n".join(out)
 
 
@@ -475,23 +519,37 @@ def main(argv=None) -> int:
     p.add_argument("--elements", type=int, nargs="+", default=list(case.ELEMENTS))
     p.add_argument("--cases", nargs="+", default=list(CASES), choices=list(CASES))
     p.add_argument("--repeats", type=int, default=3, help="warm calls after the cold one (>= 3)")
-    p.add_argument("--ross-python", nargs="+", help="ROSS interpreters (default: $ROSS_PYTHON, "
-                   "else " + ", ".join(DEFAULT_ROSS_PYTHONS) + ")")
+    p.add_argument(
+        "--ross-python",
+        nargs="+",
+        help="ROSS interpreters (default: $ROSS_PYTHON, else " + ", ".join(DEFAULT_ROSS_PYTHONS) + ")",
+    )
     p.add_argument("--no-ross", action="store_true", help="flexshaft side only")
-    p.add_argument("--reuse-ross", metavar="FILE",
-                   help="take the ROSS runs from an earlier --save file (same interpreter paths, "
-                        "cases and sizes) and re-time flexshaft only")
+    p.add_argument(
+        "--reuse-ross",
+        metavar="FILE",
+        help="take the ROSS runs from an earlier --save file (same interpreter paths, "
+        "cases and sizes) and re-time flexshaft only",
+    )
     p.add_argument("--save", help="write all times, results and comparisons as JSON")
     p.add_argument("--table", metavar="FILE", help="print the README tables from a --save file")
-    p.add_argument("--update-readme", action="store_true",
-                   help="with --table: rewrite the generated blocks of the READMEs")
-    p.add_argument("--blas-threads", type=int, default=1,
-                   help="BLAS/OpenMP/numba threads for both codes (sets OPENBLAS/OMP/MKL/"
-                        "NUMBA_NUM_THREADS); default 1: on a small shared machine a busy core "
-                        "makes multi-threaded OpenBLAS stall and the timings erratic; 0 = the "
-                        "libraries' defaults")
-    p.add_argument("--enforce-bars", action="store_true",
-                   help="exit 1 when a speed or memory bar is missed, not only on disagreement")
+    p.add_argument(
+        "--update-readme", action="store_true", help="with --table: rewrite the generated blocks of the READMEs"
+    )
+    p.add_argument(
+        "--blas-threads",
+        type=int,
+        default=1,
+        help="BLAS/OpenMP/numba threads for both codes (sets OPENBLAS/OMP/MKL/"
+        "NUMBA_NUM_THREADS); default 1: on a small shared machine a busy core "
+        "makes multi-threaded OpenBLAS stall and the timings erratic; 0 = the "
+        "libraries' defaults",
+    )
+    p.add_argument(
+        "--enforce-bars",
+        action="store_true",
+        help="exit 1 when a speed or memory bar is missed, not only on disagreement",
+    )
     a = p.parse_args(argv)
 
     if a.table:

@@ -20,11 +20,10 @@ import time
 _T0 = time.perf_counter()
 
 import numpy as np  # noqa: E402
+import shaft_case as case  # noqa: E402
 
 import flexshaft  # noqa: E402
 import flexshaft.analyses as fa  # noqa: E402
-
-import shaft_case as case  # noqa: E402
 
 _IMPORT_S = time.perf_counter() - _T0  # numpy + flexshaft import, for the worker's cold time
 
@@ -70,9 +69,15 @@ shaft_elements = {n}
 
 def design_text(n_el: int) -> str:
     return DESIGN_TEMPLATE.format(
-        E=case.E, G=case.G, rho=case.DENSITY, L=case.LENGTH, Do=case.OUTER_DIAMETER,
-        t=(case.OUTER_DIAMETER - case.INNER_DIAMETER) / 2, k=case.BEARING_STIFFNESS,
-        c=case.BEARING_DAMPING, n=n_el,
+        E=case.E,
+        G=case.G,
+        rho=case.DENSITY,
+        L=case.LENGTH,
+        Do=case.OUTER_DIAMETER,
+        t=(case.OUTER_DIAMETER - case.INNER_DIAMETER) / 2,
+        k=case.BEARING_STIFFNESS,
+        c=case.BEARING_DAMPING,
+        n=n_el,
     )
 
 
@@ -211,20 +216,27 @@ def _case_call(name: str, model):
     iv, iw = lateral_dofs(model, mid_node(model))
     if name == "unbalance":
         speeds = np.array(case.unbalance_speeds())
-        return (lambda: unbalance_response(model, speeds),
-                lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "sweep" if has_imbalance_sweep() else "fallback"})
+        return (
+            lambda: unbalance_response(model, speeds),
+            lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "sweep" if has_imbalance_sweep() else "fallback"},
+        )
     if name == "frf":
         freqs = np.array(case.frf_frequencies())
-        return (lambda: frf(model, freqs, case.FRF_SPEED),
-                lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "frequency_response"})
+        return (
+            lambda: frf(model, freqs, case.FRF_SPEED),
+            lambda q: {"x": _c(q[iv]), "y": _c(q[iw]), "path": "frequency_response"},
+        )
     if name == "campbell":
         speeds = np.array(case.campbell_speeds())
         n = case.N_CAMPBELL_FREQ
 
         def post(raw):
             f, w = campbell_lateral(model, raw, n)
-            return {"wd_hz": np.asarray(f, dtype=float).tolist(), "whirl": np.asarray(w).tolist(),
-                    "path": "sweep" if has_campbell_sweep() else "fallback"}
+            return {
+                "wd_hz": np.asarray(f, dtype=float).tolist(),
+                "whirl": np.asarray(w).tolist(),
+                "path": "sweep" if has_campbell_sweep() else "fallback",
+            }
 
         return (lambda: campbell_sweep(model, speeds, n)), post
     raise ValueError(f"case must be unbalance, frf or campbell, got {name!r}")
@@ -250,13 +262,23 @@ def run_single(name: str, n_el: int, repeats: int, import_s: float) -> dict:
         walls.append(w)
         cpus.append(c)
     return {
-        "code": "flexshaft", "version": flexshaft.__version__, "case": name, "n_el": n_el,
-        "ndof": int(model.dofs.size), "import_s": import_s, "build_s": build_s,
-        "cold_s": cold_wall, "cold_cpu_s": cold_cpu,
+        "code": "flexshaft",
+        "version": flexshaft.__version__,
+        "case": name,
+        "n_el": n_el,
+        "ndof": int(model.dofs.size),
+        "import_s": import_s,
+        "build_s": build_s,
+        "cold_s": cold_wall,
+        "cold_cpu_s": cold_cpu,
         "warm": {**bu.stats(walls), "cpu": bu.stats(cpus)},
-        "rss_after_import_mb": rss_import, "peak_rss_cold_mb": peak_cold,
-        "peak_rss_mb": bu.maxrss_mb(), "path": result.pop("path"), "result": result,
-        "numpy": np.__version__, "scipy": _scipy_version(),
+        "rss_after_import_mb": rss_import,
+        "peak_rss_cold_mb": peak_cold,
+        "peak_rss_mb": bu.maxrss_mb(),
+        "path": result.pop("path"),
+        "result": result,
+        "numpy": np.__version__,
+        "scipy": _scipy_version(),
     }
 
 
@@ -271,8 +293,9 @@ if __name__ == "__main__":
     import json
     import sys
 
-    p = argparse.ArgumentParser(description="flexshaft worker of compare_ross.py: one case, "
-                                            "one mesh, cold then warm; JSON on stdout")
+    p = argparse.ArgumentParser(
+        description="flexshaft worker of compare_ross.py: one case, one mesh, cold then warm; JSON on stdout"
+    )
     p.add_argument("case", choices=["unbalance", "frf", "campbell"])
     p.add_argument("n_el", type=int)
     p.add_argument("--repeats", type=int, default=3)

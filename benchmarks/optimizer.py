@@ -51,8 +51,10 @@ def zdt1(seeds, budgets) -> None:
             nsga = optimize(problem, budget, None, pop_size=40, seed=seed).hypervolume(ZDT1_REFERENCE)
             rand = optimize(problem, budget, None, seed=seed, method="random").hypervolume(ZDT1_REFERENCE)
             ratio = nsga / rand if rand > 0 else float("inf")
-            print(f"{budget:>7} {seed:>5} {nsga:>11.4f} {1 - nsga / ZDT1_HYPERVOLUME:>7.2%} {rand:>10.4f} "
-                  f"{1 - rand / ZDT1_HYPERVOLUME:>7.2%} {ratio:>6.2f}")
+            print(
+                f"{budget:>7} {seed:>5} {nsga:>11.4f} {1 - nsga / ZDT1_HYPERVOLUME:>7.2%} {rand:>10.4f} "
+                f"{1 - rand / ZDT1_HYPERVOLUME:>7.2%} {ratio:>6.2f}"
+            )
 
 
 def evaluation(repeats: int = 3) -> None:
@@ -61,9 +63,11 @@ def evaluation(repeats: int = 3) -> None:
     from flexshaft.studies.run import run_analysis
 
     design = tuned_design()
-    cases = {"run_analysis(studies=None)": lambda: run_analysis(design, studies=None),
-             "verdict fidelity": lambda: verdict_run(design, "verdict"),
-             "screening fidelity": lambda: verdict_run(design, "screening")}
+    cases = {
+        "run_analysis(studies=None)": lambda: run_analysis(design, studies=None),
+        "verdict fidelity": lambda: verdict_run(design, "verdict"),
+        "screening fidelity": lambda: verdict_run(design, "screening"),
+    }
     for fn in cases.values():
         fn()  # warm: imports and caches
     cpu = {}
@@ -84,8 +88,10 @@ def driveline(budget: int, jobs: int, out: Path, seed: int = 1) -> None:
 
     variables, layup = default_variables(baseline_design())
     problem = DesignProblem(variables, layup=layup, name="Table 3.1 baseline: mass and Tsai-Wu safety factor")
-    print(f"driveline: Table 3.1 baseline, {len(variables)} variables, budget {budget}, {jobs} jobs, "
-          f"hypervolume up to {DRIVELINE_REFERENCE} (kg, -safety factor)")
+    print(
+        f"driveline: Table 3.1 baseline, {len(variables)} variables, budget {budget}, {jobs} jobs, "
+        f"hypervolume up to {DRIVELINE_REFERENCE} (kg, -safety factor)"
+    )
     for method in ("nsga2", "random"):
         start = time.perf_counter()
         res = optimize(problem, budget, out / method, seed=seed, jobs=jobs, method=method)
@@ -94,14 +100,18 @@ def driveline(budget: int, jobs: int, out: Path, seed: int = 1) -> None:
         feasible = ev["feasible"].values == 1
         lightest = float(np.min(ev["shaft_mass"].values[feasible])) if feasible.any() else float("nan")
         best_sf = float(np.max(ev["safety_factor"].values[feasible])) if feasible.any() else float("nan")
-        print(f"  {method:<7} {int(feasible.sum()):>4} feasible of {ev.sizes['evaluation']}, front "
-              f"{res.pareto.sizes['design']:>3}, HV {res.hypervolume(DRIVELINE_REFERENCE):8.2f}, lightest "
-              f"{lightest:6.3f} kg, best safety factor {best_sf:6.2f}; {res.n_computed} computed in {wall:.0f} s")
+        print(
+            f"  {method:<7} {int(feasible.sum()):>4} feasible of {ev.sizes['evaluation']}, front "
+            f"{res.pareto.sizes['design']:>3}, HV {res.hypervolume(DRIVELINE_REFERENCE):8.2f}, lightest "
+            f"{lightest:6.3f} kg, best safety factor {best_sf:6.2f}; {res.n_computed} computed in {wall:.0f} s"
+        )
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--parts", nargs="+", default=["zdt1", "evaluation"], choices=["zdt1", "evaluation", "driveline"])
+    parser.add_argument(
+        "--parts", nargs="+", default=["zdt1", "evaluation"], choices=["zdt1", "evaluation", "driveline"]
+    )
     parser.add_argument("--seeds", nargs="+", type=int, default=[1, 2, 3])
     parser.add_argument("--zdt1-budgets", nargs="+", type=int, default=[400, 1200, 2400])
     parser.add_argument("--driveline-budget", type=int, default=200)
@@ -109,8 +119,10 @@ def main() -> None:
     parser.add_argument("--out", type=Path, default=Path("optimizer-benchmark"))
     args = parser.parse_args()
     info = bu.machine_info()
-    print(f"{info['cpu']}, {info['cores']} cores, load average {info['load_average_1_5_15']}, "
-          f"Python {info['python']}, commit {info['git_commit']}")
+    print(
+        f"{info['cpu']}, {info['cores']} cores, load average {info['load_average_1_5_15']}, "
+        f"Python {info['python']}, commit {info['git_commit']}"
+    )
     if "zdt1" in args.parts:
         zdt1(args.seeds, args.zdt1_budgets)
     if "evaluation" in args.parts:

@@ -82,8 +82,12 @@ def figure_times(res, repeats: int) -> dict[str, float]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--studies", choices=("report", "none"), default="report",
-                        help="design studies in the RunResults (default: report)")
+    parser.add_argument(
+        "--studies",
+        choices=("report", "none"),
+        default="report",
+        help="design studies in the RunResults (default: report)",
+    )
     parser.add_argument("--cache", type=Path, default=None, help="pickle of the RunResults, reused or written")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--processes", type=int, default=2, help="workers of the parallel runs (default 2)")
@@ -96,22 +100,34 @@ def main(argv: list[str] | None = None) -> int:
 
     with tempfile.TemporaryDirectory() as folder:  # warm-up: imports, font cache, first figures
         write_run_report(res, folder, generated=GENERATED)
-    configs = [("serial, PNG", 1, False), (f"{args.processes} processes, PNG", args.processes, False),
-               ("serial, PNG + SVG", 1, True), (f"{args.processes} processes, PNG + SVG", args.processes, True)]
-    print(f"write_run_report, studies={args.studies}, {args.repeats} repeats, {os.cpu_count()} CPUs, "
-          f"load average {os.getloadavg()[0]:.1f}")
-    print(f"{'configuration':28s} {'median wall [s]':>15s} {'min-max [s]':>14s} {'CPU here [s]':>12s} "
-          f"{'CPU workers [s]':>15s} {'wall / serial PNG':>17s}")
+    configs = [
+        ("serial, PNG", 1, False),
+        (f"{args.processes} processes, PNG", args.processes, False),
+        ("serial, PNG + SVG", 1, True),
+        (f"{args.processes} processes, PNG + SVG", args.processes, True),
+    ]
+    print(
+        f"write_run_report, studies={args.studies}, {args.repeats} repeats, {os.cpu_count()} CPUs, "
+        f"load average {os.getloadavg()[0]:.1f}"
+    )
+    print(
+        f"{'configuration':28s} {'median wall [s]':>15s} {'min-max [s]':>14s} {'CPU here [s]':>12s} "
+        f"{'CPU workers [s]':>15s} {'wall / serial PNG':>17s}"
+    )
     base = None
     for name, processes, svg in configs:
         r = time_report(res, processes, svg, args.repeats)
         wall = statistics.median(r["wall"])
         base = base or wall
-        print(f"{name:28s} {wall:15.2f} {min(r['wall']):6.2f}-{max(r['wall']):<7.2f} "
-              f"{statistics.median(r['cpu']):12.2f} {statistics.median(r['workers']):15.2f} {wall / base:17.2f}")
+        print(
+            f"{name:28s} {wall:15.2f} {min(r['wall']):6.2f}-{max(r['wall']):<7.2f} "
+            f"{statistics.median(r['cpu']):12.2f} {statistics.median(r['workers']):15.2f} {wall / base:17.2f}"
+        )
     times = figure_times(res, args.repeats)
-    print(f"\nper figure (serial, PNG only, draw + save, median of {args.repeats}); {len(times)} figures, "
-          f"sum {sum(times.values()):.2f} s")
+    print(
+        f"\nper figure (serial, PNG only, draw + save, median of {args.repeats}); {len(times)} figures, "
+        f"sum {sum(times.values()):.2f} s"
+    )
     for stem, seconds in sorted(times.items(), key=lambda item: -item[1]):
         print(f"  {stem:36s} {seconds:6.3f} s")
     return 0

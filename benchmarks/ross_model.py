@@ -82,14 +82,25 @@ def build_rotor(n_el: int):
     le = case.LENGTH / n_el
     shaft = [
         rs.ShaftElement(
-            L=le, idl=case.INNER_DIAMETER, odl=case.OUTER_DIAMETER, material=steel, n=i,
-            shear_effects=False, rotary_inertia=True, gyroscopic=True,
+            L=le,
+            idl=case.INNER_DIAMETER,
+            odl=case.OUTER_DIAMETER,
+            material=steel,
+            n=i,
+            shear_effects=False,
+            rotary_inertia=True,
+            gyroscopic=True,
         )
         for i in range(n_el)
     ]
     bearings = [
-        rs.BearingElement(n=node, kxx=case.BEARING_STIFFNESS, kyy=case.BEARING_STIFFNESS,
-                          cxx=case.BEARING_DAMPING, cyy=case.BEARING_DAMPING)
+        rs.BearingElement(
+            n=node,
+            kxx=case.BEARING_STIFFNESS,
+            kyy=case.BEARING_STIFFNESS,
+            cxx=case.BEARING_DAMPING,
+            cyy=case.BEARING_DAMPING,
+        )
         for node in (0, n_el)
     ]
     return rs.Rotor(shaft_elements=shaft, bearing_elements=bearings)
@@ -113,8 +124,11 @@ def run_unbalance(rotor, np):
     mid = len(rotor.nodes) // 2
     speeds = np.array(case.unbalance_speeds())
     kwargs = unbalance_kwargs(rotor, speeds)
-    wall, cpu, res = bu.timed(lambda: rotor.run_unbalance_response(
-        node=mid, unbalance_magnitude=case.UNBALANCE, unbalance_phase=0.0, **kwargs))
+    wall, cpu, res = bu.timed(
+        lambda: rotor.run_unbalance_response(
+            node=mid, unbalance_magnitude=case.UNBALANCE, unbalance_phase=0.0, **kwargs
+        )
+    )
     x = res.forced_resp[_dof(rotor, mid, 0)]
     y = res.forced_resp[_dof(rotor, mid, 1)]
     return (wall, cpu), {"speeds_rad_s": speeds.tolist(), "x": _c(x), "y": _c(y)}
@@ -132,8 +146,12 @@ def run_frf(rotor, np):
             out[:, k] = H[:, inp] * case.FRF_FORCE
 
     wall, cpu, _ = bu.timed(sweep)
-    return (wall, cpu), {"frequencies_rad_s": freqs.tolist(), "speed_rad_s": case.FRF_SPEED,
-                "x": _c(out[_dof(rotor, mid, 0)]), "y": _c(out[_dof(rotor, mid, 1)])}
+    return (wall, cpu), {
+        "frequencies_rad_s": freqs.tolist(),
+        "speed_rad_s": case.FRF_SPEED,
+        "x": _c(out[_dof(rotor, mid, 0)]),
+        "y": _c(out[_dof(rotor, mid, 1)]),
+    }
 
 
 def run_campbell(rotor, np):
@@ -145,13 +163,15 @@ def run_campbell(rotor, np):
     lateral = []
     for w in speeds:
         vec = camp.modal_results[w].evectors[:n, :nf]
-        lat = sum(np.sum(np.abs(vec[j::rotor.number_dof]) ** 2, axis=0) for j in (0, 1, 3, 4))
-        oth = sum(np.sum(np.abs(vec[j::rotor.number_dof]) ** 2, axis=0) for j in (2, 5))
+        lat = sum(np.sum(np.abs(vec[j :: rotor.number_dof]) ** 2, axis=0) for j in (0, 1, 3, 4))
+        oth = sum(np.sum(np.abs(vec[j :: rotor.number_dof]) ** 2, axis=0) for j in (2, 5))
         lateral.append((lat > oth).tolist())
-    return (wall, cpu), {"speeds_rad_s": speeds.tolist(),
-                "wd_hz": (np.asarray(camp.wd) / (2 * np.pi)).tolist(),
-                "whirl_values": np.asarray(camp.whirl_values).tolist(),
-                "lateral": lateral}
+    return (wall, cpu), {
+        "speeds_rad_s": speeds.tolist(),
+        "wd_hz": (np.asarray(camp.wd) / (2 * np.pi)).tolist(),
+        "whirl_values": np.asarray(camp.whirl_values).tolist(),
+        "lateral": lateral,
+    }
 
 
 CASES = {"unbalance": run_unbalance, "frf": run_frf, "campbell": run_campbell}
@@ -185,14 +205,23 @@ def run_single(name: str, n_el: int, repeats: int) -> dict:
     import scipy
 
     return {
-        "code": "ross", "version": ross.__version__, "case": name, "n_el": n_el,
-        "ndof": 6 * (n_el + 1), "import_s": import_s, "build_s": build_s,
+        "code": "ross",
+        "version": ross.__version__,
+        "case": name,
+        "n_el": n_el,
+        "ndof": 6 * (n_el + 1),
+        "import_s": import_s,
+        "build_s": build_s,
         "warm_build_s": bu.stats(builds) if builds else None,
-        "cold_s": cold_wall, "cold_cpu_s": cold_cpu,
+        "cold_s": cold_wall,
+        "cold_cpu_s": cold_cpu,
         "warm": {**bu.stats(walls), "cpu": bu.stats(cpus)} if walls else None,
-        "rss_after_import_mb": rss_import, "peak_rss_cold_mb": peak_cold,
-        "peak_rss_mb": bu.maxrss_mb(), "result": data,
-        "numpy": np.__version__, "scipy": scipy.__version__,
+        "rss_after_import_mb": rss_import,
+        "peak_rss_cold_mb": peak_cold,
+        "peak_rss_mb": bu.maxrss_mb(),
+        "result": data,
+        "numpy": np.__version__,
+        "scipy": scipy.__version__,
         "python": sys.version.split()[0],
     }
 
@@ -200,8 +229,7 @@ def run_single(name: str, n_el: int, repeats: int) -> dict:
 def run_isolated(name: str, n_el: int, repeats: int, python: str = sys.executable) -> dict:
     """:func:`run_single` in a fresh child process of ``python``; raises on failure."""
     proc = subprocess.run(
-        [python, os.path.abspath(__file__), "--single", name, str(n_el), "--repeats", str(repeats)],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        [python, os.path.abspath(__file__), "--single", name, str(n_el), "--repeats", str(repeats)], capture_output=True
     )
     if proc.returncode != 0:  # show the child's stderr only when it failed
         sys.stderr.write(proc.stderr.decode(errors="replace")[-4000:])
@@ -215,8 +243,9 @@ def main(argv=None) -> int:
     p.add_argument("--elements", type=int, nargs="+", default=list(case.ELEMENTS))
     p.add_argument("--cases", nargs="+", default=list(CASES), choices=list(CASES))
     p.add_argument("--repeats", type=int, default=3, help="warm calls after the cold one")
-    p.add_argument("--single", nargs=2, metavar=("CASE", "N_EL"),
-                   help="run one case in this process and print its JSON")
+    p.add_argument(
+        "--single", nargs=2, metavar=("CASE", "N_EL"), help="run one case in this process and print its JSON"
+    )
     a = p.parse_args(argv)
 
     if a.single:
@@ -230,12 +259,19 @@ def main(argv=None) -> int:
         for name in a.cases:
             print(f"[ross] {name:9s} n_el={n_el:4d} ...", file=sys.stderr, flush=True)
             r = run_isolated(name, n_el, a.repeats)
-            print(f"[ross] {name:9s} n_el={n_el:4d} cold {r['cold_s']:8.3f} s  warm median "
-                  f"{r['warm']['median']:8.3f} s  peak {r['peak_rss_mb']:7.0f} MB",
-                  file=sys.stderr, flush=True)
+            print(
+                f"[ross] {name:9s} n_el={n_el:4d} cold {r['cold_s']:8.3f} s  warm median "
+                f"{r['warm']['median']:8.3f} s  peak {r['peak_rss_mb']:7.0f} MB",
+                file=sys.stderr,
+                flush=True,
+            )
             runs.append(r)
-    out = {"ross_version": runs[0]["version"] if runs else None, "machine": bu.machine_info(),
-           "parameters": case.parameters(), "runs": runs}
+    out = {
+        "ross_version": runs[0]["version"] if runs else None,
+        "machine": bu.machine_info(),
+        "parameters": case.parameters(),
+        "runs": runs,
+    }
     text = json.dumps(out)
     if a.out:
         with open(a.out, "w") as f:

@@ -106,8 +106,7 @@ def zgbsv_floor(model, speeds, Q):
     for k, s in enumerate(speeds):
         ab = np.array(matrix(s, s), dtype=complex, order="F")  # formed outside the clock
         b = (s * s) * rhs
-        dw, dc, (_, _, x, info) = bu.timed(
-            lambda: lapack.zgbsv(kl, ku, ab, b, overwrite_ab=True, overwrite_b=True))
+        dw, dc, (_, _, x, info) = bu.timed(lambda: lapack.zgbsv(kl, ku, ab, b, overwrite_ab=True, overwrite_b=True))
         wall, cpu = wall + dw, cpu + dc
         if info != 0:
             raise RuntimeError(f"zgbsv info = {info} at Ω = {s} rad/s")
@@ -134,12 +133,12 @@ def _ok(s) -> bool:
 
 
 def run(elements, repeats: int, n_speeds: int, n_campbell: int) -> dict:
+    import flexshaft_side as fx
     import numpy as np
+    import shaft_case as case
 
     import flexshaft
     import flexshaft.analyses as fa
-    import flexshaft_side as fx
-    import shaft_case as case
 
     speeds = np.linspace(0.0, case.SPEED_MAX, n_speeds)
     cspeeds = np.linspace(0.0, case.SPEED_MAX, n_campbell)
@@ -165,7 +164,8 @@ def run(elements, repeats: int, n_speeds: int, n_campbell: int) -> dict:
             q_lapack, facts = first[2], first[3]
             row.update(facts)
             row["zgbsv_vs_imbalance_max_rel"] = float(
-                np.max(np.abs(np.asarray(q) - q_lapack)) / np.max(np.abs(q_lapack)))
+                np.max(np.abs(np.asarray(q) - q_lapack)) / np.max(np.abs(q_lapack))
+            )
             # the median of the pairs' ratios (each pair timed back to back)
             row["imbalance_over_zgbsv"] = statistics.median(i[0] / f[0] for i, f in pairs)
             row["imbalance_over_zgbsv_cpu"] = statistics.median(i[1] / f[1] for i, f in pairs)
@@ -176,13 +176,24 @@ def run(elements, repeats: int, n_speeds: int, n_campbell: int) -> dict:
             row["campbell_lowest_hz"] = float(np.min(np.asarray(c.frequencies)[0]))
         row.update({"imbalance": imb, "zgbsv": floor, "campbell": camp})
         rows.append(row)
-        print(f"[scaling] n_el={n_el:4d} ndof={row['ndof']:5d} kl/ku={row.get('kl')}/{row.get('ku')}  "
-              + "  ".join(f"{k} {_cell(row[k], 4)}" for k in ("imbalance", "zgbsv", "campbell"))
-              + f"  (build {build_s:.2f} s)", flush=True)
-    return {"machine": bu.machine_info(), "flexshaft": flexshaft.__version__,
-            "numpy": np.__version__, "scipy": _scipy_version(), "blas": _blas_info(),
-            "repeats": repeats, "n_speeds": n_speeds, "n_campbell_speeds": n_campbell,
-            "campbell_modes": n_modes, "rows": rows}
+        print(
+            f"[scaling] n_el={n_el:4d} ndof={row['ndof']:5d} kl/ku={row.get('kl')}/{row.get('ku')}  "
+            + "  ".join(f"{k} {_cell(row[k], 4)}" for k in ("imbalance", "zgbsv", "campbell"))
+            + f"  (build {build_s:.2f} s)",
+            flush=True,
+        )
+    return {
+        "machine": bu.machine_info(),
+        "flexshaft": flexshaft.__version__,
+        "numpy": np.__version__,
+        "scipy": _scipy_version(),
+        "blas": _blas_info(),
+        "repeats": repeats,
+        "n_speeds": n_speeds,
+        "n_campbell_speeds": n_campbell,
+        "campbell_modes": n_modes,
+        "rows": rows,
+    }
 
 
 def _cell(s, digits: int) -> str:
@@ -202,8 +213,11 @@ def _blas_info():
         from threadpoolctl import threadpool_info
     except ImportError:
         return []
-    return [{k: i.get(k) for k in ("internal_api", "num_threads", "version", "architecture")}
-            for i in threadpool_info() if i.get("user_api") == "blas"]
+    return [
+        {k: i.get(k) for k in ("internal_api", "num_threads", "version", "architecture")}
+        for i in threadpool_info()
+        if i.get("user_api") == "blas"
+    ]
 
 
 def slope(ns, ts) -> float:
@@ -227,43 +241,61 @@ def report(data: dict) -> None:
     rows = data["rows"]
     m = data["machine"]
     print()
-    print(f"machine: {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB; load average "
-          f"{m['load_average_1_5_15']} (shared machine); {m['date']}")
-    print(f"flexshaft {data['flexshaft']} (git {m['git_commit']}), Python {m['python']}, "
-          f"numpy {data['numpy']}, scipy {data['scipy']}; BLAS {data['blas']}")
-    print(f"warm timings, median (min–max) of {data['repeats']} calls after one untimed call; "
-          f"imbalance {data['n_speeds']} speeds, Campbell {data['n_campbell_speeds']} speeds "
-          f"({data['campbell_modes']} modes)")
+    print(
+        f"machine: {m['cpu']}, {m['cores']} cores, {m['memory_gb']} GB; load average "
+        f"{m['load_average_1_5_15']} (shared machine); {m['date']}"
+    )
+    print(
+        f"flexshaft {data['flexshaft']} (git {m['git_commit']}), Python {m['python']}, "
+        f"numpy {data['numpy']}, scipy {data['scipy']}; BLAS {data['blas']}"
+    )
+    print(
+        f"warm timings, median (min–max) of {data['repeats']} calls after one untimed call; "
+        f"imbalance {data['n_speeds']} speeds, Campbell {data['n_campbell_speeds']} speeds "
+        f"({data['campbell_modes']} modes)"
+    )
     print()
-    print("| n_el | free DOFs | band kl/ku | imbalance [s] | zgbsv floor [s] | imbalance / zgbsv "
-          "(CPU) | zgbsv vs flexshaft | Campbell [s] | Campbell CPU [s] |")
+    print(
+        "| n_el | free DOFs | band kl/ku | imbalance [s] | zgbsv floor [s] | imbalance / zgbsv "
+        "(CPU) | zgbsv vs flexshaft | Campbell [s] | Campbell CPU [s] |"
+    )
     print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
-        ratio = (f"{r['imbalance_over_zgbsv']:.2f}× ({r['imbalance_over_zgbsv_cpu']:.2f}×)"
-                 if "imbalance_over_zgbsv" in r else "–")
+        ratio = (
+            f"{r['imbalance_over_zgbsv']:.2f}× ({r['imbalance_over_zgbsv_cpu']:.2f}×)"
+            if "imbalance_over_zgbsv" in r
+            else "–"
+        )
         check = f"{r['zgbsv_vs_imbalance_max_rel']:.1e}" if "zgbsv_vs_imbalance_max_rel" in r else "–"
         ccpu = f"{r['campbell']['cpu']['median']:.4f}" if _ok(r["campbell"]) else "–"
-        print(f"| {r['n_el']} | {r.get('n_free', '–')} | {r.get('kl', '–')}/{r.get('ku', '–')} "
-              f"| {_cell(r['imbalance'], 4)} | {_cell(r['zgbsv'], 4)} | {ratio} | {check} "
-              f"| {_cell(r['campbell'], 4)} | {ccpu} |")
+        print(
+            f"| {r['n_el']} | {r.get('n_free', '–')} | {r.get('kl', '–')}/{r.get('ku', '–')} "
+            f"| {_cell(r['imbalance'], 4)} | {_cell(r['zgbsv'], 4)} | {ratio} | {check} "
+            f"| {_cell(r['campbell'], 4)} | {ccpu} |"
+        )
     print()
     for name, key in (("imbalance", "imbalance"), ("zgbsv floor", "zgbsv"), ("Campbell", "campbell")):
         for clock in ("wall", "cpu"):
             ns, ts = _fits(rows, key, clock)
             if len(ns) < 2:
                 continue
-            local = ", ".join(f"{a}→{b}: {slope([a, b], [ta, tb]):.2f}"
-                              for a, b, ta, tb in zip(ns, ns[1:], ts, ts[1:]))
-            print(f"exponent p (t ∝ n_el^p), {name:11s} {clock:4s}: {slope(ns, ts):.2f} over "
-                  f"{ns[0]}–{ns[-1]} (local {local})")
+            local = ", ".join(f"{a}→{b}: {slope([a, b], [ta, tb]):.2f}" for a, b, ta, tb in zip(ns, ns[1:], ts, ts[1:]))
+            print(
+                f"exponent p (t ∝ n_el^p), {name:11s} {clock:4s}: {slope(ns, ts):.2f} over "
+                f"{ns[0]}–{ns[-1]} (local {local})"
+            )
     for r in rows:
         for key in ("imbalance", "zgbsv", "campbell"):
             if not _ok(r[key]):
                 print(f"FAILED: {key} at {r['n_el']} elements: {r[key]['error']}")
-    print("time columns: wall time, median (min–max); CPU: median process CPU time, less "
-          "sensitive to other load on a shared machine")
-    print("'zgbsv vs flexshaft': max |q_flexshaft − q_zgbsv| / max |q_zgbsv| (a check that the "
-          "floor solves the same problem)")
+    print(
+        "time columns: wall time, median (min–max); CPU: median process CPU time, less "
+        "sensitive to other load on a shared machine"
+    )
+    print(
+        "'zgbsv vs flexshaft': max |q_flexshaft − q_zgbsv| / max |q_zgbsv| (a check that the "
+        "floor solves the same problem)"
+    )
     print(f"bands: {next((r['bands'] for r in rows if 'bands' in r), '–')}")
     _bars(data)
 
@@ -274,13 +306,17 @@ def _bars(data: dict) -> None:
     print("project bars (information only):")
     for r in rows:
         if "imbalance_over_zgbsv" not in r:
-            print(f"  MISS imbalance / zgbsv at {r['n_el']} elements: not measured "
-                  f"({_cell(r['imbalance'], 4)}; zgbsv {_cell(r['zgbsv'], 4)})")
+            print(
+                f"  MISS imbalance / zgbsv at {r['n_el']} elements: not measured "
+                f"({_cell(r['imbalance'], 4)}; zgbsv {_cell(r['zgbsv'], 4)})"
+            )
             continue
         v = r["imbalance_over_zgbsv"]
-        print(f"  {'met ' if v <= BARS['imbalance_over_zgbsv'] else 'MISS'} imbalance / zgbsv at "
-              f"{r['n_el']} elements = {v:.2f} wall, {r['imbalance_over_zgbsv_cpu']:.2f} CPU "
-              f"(bar <= {BARS['imbalance_over_zgbsv']}, on wall)")
+        print(
+            f"  {'met ' if v <= BARS['imbalance_over_zgbsv'] else 'MISS'} imbalance / zgbsv at "
+            f"{r['n_el']} elements = {v:.2f} wall, {r['imbalance_over_zgbsv_cpu']:.2f} CPU "
+            f"(bar <= {BARS['imbalance_over_zgbsv']}, on wall)"
+        )
     all_ns = [r["n_el"] for r in rows]
     for key, bar in (("imbalance", BARS["exponent_imbalance"]), ("campbell", BARS["exponent_campbell"])):
         ns, ts = _fits(rows, key, "wall")
@@ -290,8 +326,10 @@ def _bars(data: dict) -> None:
                 continue
         p = slope(ns, ts)
         pc = slope(*_fits(rows, key, "cpu"))
-        print(f"  {'met ' if p <= bar else 'MISS'} exponent {key} {ns[0]}–{ns[-1]} = {p:.2f} wall, "
-              f"{pc:.2f} CPU (bar <= {bar}, on wall)")
+        print(
+            f"  {'met ' if p <= bar else 'MISS'} exponent {key} {ns[0]}–{ns[-1]} = {p:.2f} wall, "
+            f"{pc:.2f} CPU (bar <= {bar}, on wall)"
+        )
 
 
 def main(argv=None) -> int:
@@ -300,8 +338,9 @@ def main(argv=None) -> int:
     p.add_argument("--repeats", type=int, default=5, help="timed calls per case after one warm-up (>= 3)")
     p.add_argument("--n-speeds", type=int, default=500)
     p.add_argument("--n-campbell", type=int, default=50)
-    p.add_argument("--blas-threads", type=int, default=1,
-                   help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)")
+    p.add_argument(
+        "--blas-threads", type=int, default=1, help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)"
+    )
     p.add_argument("--json", help="also write the measurements to this JSON file")
     a = p.parse_args(argv)
     if a.repeats < 3:

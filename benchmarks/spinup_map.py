@@ -58,7 +58,9 @@ def main() -> None:
     design = baseline_design()
     t0 = time.perf_counter()
     model = build_model(design)
-    print(f"model: {model.dofs.free.size} free DOFs, {len(model.actuators)} actuators, built in {time.perf_counter() - t0:.2f} s")
+    print(
+        f"model: {model.dofs.free.size} free DOFs, {len(model.actuators)} actuators, built in {time.perf_counter() - t0:.2f} s"
+    )
     speeds = spinup_speeds(model, args.n_speeds)
     kp = np.logspace(5, 8, args.n_gains)  # [N/m]
     kd = np.concatenate([[0.0], np.logspace(1, 4.5, args.n_gains - 1)])  # [N s/m]
@@ -74,7 +76,9 @@ def main() -> None:
             if best is None or total < best[0]:
                 best = (total, t_rec, t_map)
         timings[label] = best
-        print(f"  {label:16s}: {best[0]:.2f} s  (structure solves {best[1]:.2f} s + {kp.size * kd.size} gain pairs {best[2]:.2f} s; best of 3)")
+        print(
+            f"  {label:16s}: {best[0]:.2f} s  (structure solves {best[1]:.2f} s + {kp.size * kd.size} gain pairs {best[2]:.2f} s; best of 3)"
+        )
 
     # direct estimate: a few full spin-ups with a banded solve per speed
     sample = [(kp[0], kd[0]), (kp[kp.size // 2], kd[kd.size // 3]), (kp[-1], kd[-1])]
@@ -83,8 +87,10 @@ def main() -> None:
         direct_peak(design, speeds, a, b)
     per_pair = (time.perf_counter() - t0) / len(sample)
     estimate = per_pair * kp.size * kd.size
-    print(f"direct banded solve: {per_pair:.3f} s per gain pair → {estimate:.0f} s for the map "
-          f"({estimate / timings['1 BLAS thread'][0]:.0f}× the fast path)")
+    print(
+        f"direct banded solve: {per_pair:.3f} s per gain pair → {estimate:.0f} s for the map "
+        f"({estimate / timings['1 BLAS thread'][0]:.0f}× the fast path)"
+    )
 
     # agreement at sampled gain pairs
     rng = np.random.default_rng(6)
@@ -93,19 +99,25 @@ def main() -> None:
     for i, j in picks:
         ref = direct_peak(design, speeds, kp[i], kd[j])
         errors.append(abs(result.shaft_peak[i, j] - ref) / ref)
-        print(f"  K_p = {kp[i]:9.3e} N/m, K_d = {kd[j]:9.3e} N s/m: map {1e3 * result.shaft_peak[i, j]:.4f} mm, "
-              f"direct {1e3 * ref:.4f} mm, rel. diff {errors[-1]:.1e}")
+        print(
+            f"  K_p = {kp[i]:9.3e} N/m, K_d = {kd[j]:9.3e} N s/m: map {1e3 * result.shaft_peak[i, j]:.4f} mm, "
+            f"direct {1e3 * ref:.4f} mm, rel. diff {errors[-1]:.1e}"
+        )
     print(f"largest relative difference of the peaks over {len(picks)} sampled pairs: {max(errors):.1e} (bar: 1e-2)")
 
     before = spinup_curves(rec, (1e7, 0.0))
     kp_best, kd_best, peak_best = result.best()
     i, j = int(np.argmin(np.abs(kp - kp_best))), int(np.argmin(np.abs(kd - kd_best)))
-    print(f"baseline gains K_p = 1e7 N/m, K_d = 0: peak shaft orbit {1e3 * before.shaft_peak.max():.2f} mm "
-          f"at {before.speeds[np.argmax(before.shaft_peak)] * 60 / (2 * np.pi):.0f} rpm, "
-          f"actuator {1e3 * before.actuator_displacement.max():.3f} mm / {before.actuator_force.max():.0f} N")
-    print(f"best gains on the grid K_p = {kp_best:.3e} N/m, K_d = {kd_best:.3e} N s/m: peak {1e3 * peak_best:.2f} mm "
-          f"at {result.shaft_peak_speed[i, j] * 60 / (2 * np.pi):.0f} rpm, actuator "
-          f"{1e3 * result.actuator_displacement_peak[i, j].max():.3f} mm / {result.actuator_force_peak[i, j].max():.0f} N")
+    print(
+        f"baseline gains K_p = 1e7 N/m, K_d = 0: peak shaft orbit {1e3 * before.shaft_peak.max():.2f} mm "
+        f"at {before.speeds[np.argmax(before.shaft_peak)] * 60 / (2 * np.pi):.0f} rpm, "
+        f"actuator {1e3 * before.actuator_displacement.max():.3f} mm / {before.actuator_force.max():.0f} N"
+    )
+    print(
+        f"best gains on the grid K_p = {kp_best:.3e} N/m, K_d = {kd_best:.3e} N s/m: peak {1e3 * peak_best:.2f} mm "
+        f"at {result.shaft_peak_speed[i, j] * 60 / (2 * np.pi):.0f} rpm, actuator "
+        f"{1e3 * result.actuator_displacement_peak[i, j].max():.3f} mm / {result.actuator_force_peak[i, j].max():.0f} N"
+    )
     print("thesis: 38 mm → 4 mm")
 
 

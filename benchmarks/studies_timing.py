@@ -37,8 +37,8 @@ import argparse
 import compileall
 import json
 import os
-import shutil
 import resource
+import shutil
 import statistics
 import subprocess
 import sys
@@ -62,8 +62,11 @@ def time_studies(coarse: bool, repeats: int) -> dict:
     design = with_overrides(baseline_design(), COARSE) if coarse else baseline_design()
     cold_wall, cold_cpu, _ = bu.timed(lambda: design_studies(design, "report"))
     runs = [bu.timed(lambda: design_studies(design, "report"))[:2] for _ in range(repeats)]
-    return {"cold_s": cold_wall, "cold_cpu_s": cold_cpu,
-            "warm": {**bu.stats([w for w, _ in runs]), "cpu": bu.stats([c for _, c in runs])}}
+    return {
+        "cold_s": cold_wall,
+        "cold_cpu_s": cold_cpu,
+        "warm": {**bu.stats([w for w, _ in runs]), "cpu": bu.stats([c for _, c in runs])},
+    }
 
 
 def _flexshaft_command() -> list[str]:
@@ -80,7 +83,7 @@ def _children_cpu() -> float:
 
 def _time_command(cmd: list[str], env: dict | None) -> tuple[float, float]:
     c0, w0 = _children_cpu(), time.perf_counter()
-    proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
     wall, cpu = time.perf_counter() - w0, _children_cpu() - c0
     if proc.returncode != 0:
         sys.stderr.write(proc.stderr[-3000:])
@@ -134,8 +137,9 @@ def _prepare_bytecode(package: str, bytecode: str) -> None:
             dirs.remove("__pycache__")
 
 
-def time_run(studies: str, repeats: int, reference: str | None = None, fastest: float | None = None,
-             bytecode: str = "cached") -> dict:
+def time_run(
+    studies: str, repeats: int, reference: str | None = None, fastest: float | None = None, bytecode: str = "cached"
+) -> dict:
     """``flexshaft run --studies X`` as a fresh process, ``repeats`` times; with a
     ``reference`` source folder (another checkout's ``src``), each repeat also runs the same
     command on that code right after (PYTHONPATH), so that both see the same machine load.
@@ -158,8 +162,12 @@ def time_run(studies: str, repeats: int, reference: str | None = None, fastest: 
             times[name][1].append(cpu)
     walls, cpus = times["now"]
     probes.append(speed_probe())
-    result = {"warm": {**bu.stats(walls), "cpu": bu.stats(cpus)}, "command": f"flexshaft run --studies {studies}",
-              "probe": bu.stats(probes), "bytecode": bytecode}
+    result = {
+        "warm": {**bu.stats(walls), "cpu": bu.stats(cpus)},
+        "command": f"flexshaft run --studies {studies}",
+        "probe": bu.stats(probes),
+        "bytecode": bytecode,
+    }
     if reference is not None:
         ref_walls, ref_cpus = times["reference"]
         result["reference"] = {**bu.stats(ref_walls), "cpu": bu.stats(ref_cpus), "source": codes["reference"]}
@@ -171,17 +179,29 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--cases", nargs="+", default=list(DEFAULT_CASES), choices=list(CASES))
     p.add_argument("--repeats", type=int, default=3)
-    p.add_argument("--blas-threads", type=int, default=1,
-                   help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)")
+    p.add_argument(
+        "--blas-threads", type=int, default=1, help="BLAS/OpenMP threads (default 1; 0 = the libraries' defaults)"
+    )
     p.add_argument("--json", help="also write the measurements to this JSON file")
-    p.add_argument("--reference", metavar="SRC",
-                   help="another checkout's src folder: each run-* repeat also runs it (PYTHONPATH), back to back")
-    p.add_argument("--fast-probe", type=float, metavar="SECONDS",
-                   help="run each run-* repeat only once the speed probe is at most SECONDS (waits up to 2 min): "
-                        "compares codes at the shared VM's fast moments")
-    p.add_argument("--bytecode", choices=("cached", "source"), default="cached",
-                   help="run-* cases: modules byte-compiled beforehand (cached: every run but the first after an "
-                        "editable install) or compiled from source by every run (source: the first run)")
+    p.add_argument(
+        "--reference",
+        metavar="SRC",
+        help="another checkout's src folder: each run-* repeat also runs it (PYTHONPATH), back to back",
+    )
+    p.add_argument(
+        "--fast-probe",
+        type=float,
+        metavar="SECONDS",
+        help="run each run-* repeat only once the speed probe is at most SECONDS (waits up to 2 min): "
+        "compares codes at the shared VM's fast moments",
+    )
+    p.add_argument(
+        "--bytecode",
+        choices=("cached", "source"),
+        default="cached",
+        help="run-* cases: modules byte-compiled beforehand (cached: every run but the first after an "
+        "editable install) or compiled from source by every run (source: the first run)",
+    )
     a = p.parse_args(argv)
     if a.repeats < 1:
         p.error(f"--repeats must be at least 1 (got {a.repeats})")
@@ -195,34 +215,51 @@ def main(argv=None) -> int:
             results[name] = time_run(name.split("-", 1)[1], a.repeats, a.reference, a.fast_probe, a.bytecode)
         r = results[name]
         cold = f"cold {r['cold_s']:.2f} s, " if "cold_s" in r else ""
-        ref = (f"; reference {bu.fmt_stats(r['reference'], 2)} s, {r['speedup']:.2f}x faster now"
-               if "reference" in r else "")
-        print(f"[studies_timing] {name}: {cold}{bu.fmt_stats(r['warm'], 2)} s "
-              f"(CPU {r['warm']['cpu']['median']:.2f} s){ref}", flush=True)
+        ref = (
+            f"; reference {bu.fmt_stats(r['reference'], 2)} s, {r['speedup']:.2f}x faster now"
+            if "reference" in r
+            else ""
+        )
+        print(
+            f"[studies_timing] {name}: {cold}{bu.fmt_stats(r['warm'], 2)} s "
+            f"(CPU {r['warm']['cpu']['median']:.2f} s){ref}",
+            flush=True,
+        )
 
     import flexshaft
 
     m = bu.machine_info()
     print()
-    print(f"machine: {m['cpu']}, {m['cores']} cores, load average {m['load_average_1_5_15']} "
-          f"(shared); {m['date']}; flexshaft {flexshaft.__version__} (git {m['git_commit']}), "
-          f"Python {m['python']}; BLAS threads {m['blas_threads_env']}; run-* bytecode: {a.bytecode}")
+    print(
+        f"machine: {m['cpu']}, {m['cores']} cores, load average {m['load_average_1_5_15']} "
+        f"(shared); {m['date']}; flexshaft {flexshaft.__version__} (git {m['git_commit']}), "
+        f"Python {m['python']}; BLAS threads {m['blas_threads_env']}; run-* bytecode: {a.bytecode}"
+    )
     print()
-    print("| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | reference wall [s] (CPU) "
-          "| reference / now | repeats | speed probe [s] |")
+    print(
+        "| case | cold [s] | wall, median (min–max) [s] | CPU median [s] | reference wall [s] (CPU) "
+        "| reference / now | repeats | speed probe [s] |"
+    )
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
     for name, r in results.items():
         cold = f"{r['cold_s']:.2f}" if "cold_s" in r else "–"
-        ref = (f"{bu.fmt_stats(r['reference'], 2)} ({r['reference']['cpu']['median']:.2f}) | {r['speedup']:.2f}×"
-               if "reference" in r else "– | –")
+        ref = (
+            f"{bu.fmt_stats(r['reference'], 2)} ({r['reference']['cpu']['median']:.2f}) | {r['speedup']:.2f}×"
+            if "reference" in r
+            else "– | –"
+        )
         probe = bu.fmt_stats(r["probe"], 3) if "probe" in r else "–"
-        print(f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} | {ref} "
-              f"| {r['warm']['n']} | {probe} |")
+        print(
+            f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} | {ref} "
+            f"| {r['warm']['n']} | {probe} |"
+        )
     print()
-    print("studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
-          "others after it. run-*: `flexshaft run --studies X` as a fresh process each time "
-          "(start-up, imports, analyses, report). Speed probe: a fixed pure-Python loop timed before "
-          "each repeat and after the last (wall times scale with it on the shared VM).")
+    print(
+        "studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
+        "others after it. run-*: `flexshaft run --studies X` as a fresh process each time "
+        "(start-up, imports, analyses, report). Speed probe: a fixed pure-Python loop timed before "
+        "each repeat and after the last (wall times scale with it on the shared VM)."
+    )
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"machine": m, "results": results}, f, indent=1)

@@ -50,26 +50,33 @@ def main(argv: list[str] | None = None) -> int:
     sizes = {"n_speeds": 80, "n_campbell": 12} if args.quick else {"n_speeds": 301, "n_campbell": 40}
 
     print(f"starting point: {design.name}")
-    header = (f"{'layup':>15} {'wall [mm]':>9} {'mass [kg]':>9} {'Tsai-Wu':>8} {'buckling':>8} "
-              f"{'onset [rpm]':>11} {'spin-up [mm]':>12}  verdict")
+    header = (
+        f"{'layup':>15} {'wall [mm]':>9} {'mass [kg]':>9} {'Tsai-Wu':>8} {'buckling':>8} "
+        f"{'onset [rpm]':>11} {'spin-up [mm]':>12}  verdict"
+    )
     print(header)
     for angle in angles:
         for wall_mm in walls_mm:
             layup = f"({angle}/-{angle}/0/0)s"
-            variant = with_overrides(design, {
-                "name": f"{design.name}; {layup}, {wall_mm} mm wall",
-                "shaft.layup": layup,
-                "shaft.wall_thickness": wall_mm / 1000.0,
-            })
+            variant = with_overrides(
+                design,
+                {
+                    "name": f"{design.name}; {layup}, {wall_mm} mm wall",
+                    "shaft.layup": layup,
+                    "shaft.wall_thickness": wall_mm / 1000.0,
+                },
+            )
             results = run_analysis(variant, studies=None, **sizes)
             verdict = results.verdict
             onset = results.stability.onset_speed
             onset_rpm = "stable" if onset is None else f"{rad_s_to_rpm(onset):.0f}"  # in the scanned range
             failed = ", ".join(check.key for check in verdict.failed)
-            print(f"{layup:>15} {wall_mm:9.1f} {results.model.shaft_mass:9.2f} "
-                  f"{check_value(verdict, 'tsai_wu'):8.1f} {check_value(verdict, 'buckling'):8.2f} "
-                  f"{onset_rpm:>11} {check_value(verdict, 'spinup_deflection') * 1e3:12.2f}  "
-                  f"{'PASS' if verdict.passed else 'FAIL: ' + failed}")
+            print(
+                f"{layup:>15} {wall_mm:9.1f} {results.model.shaft_mass:9.2f} "
+                f"{check_value(verdict, 'tsai_wu'):8.1f} {check_value(verdict, 'buckling'):8.2f} "
+                f"{onset_rpm:>11} {check_value(verdict, 'spinup_deflection') * 1e3:12.2f}  "
+                f"{'PASS' if verdict.passed else 'FAIL: ' + failed}"
+            )
     return 0
 
 

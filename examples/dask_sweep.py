@@ -64,8 +64,10 @@ def make_study(quick: bool) -> Study:
             Variable(path="shaft.wall_thickness", name="wall", values=walls, units="m"),
             Variable(name="kp", values=gains, units="N/m", overrides=both_actuators),
         ],
-        outputs=[Output("shaft_frequency", "Hz", "lowest shaft-dominated lateral frequency"),
-                 Output("min_log_decrement", "1", "smallest whirl-mode log decrement")],
+        outputs=[
+            Output("shaft_frequency", "Hz", "lowest shaft-dominated lateral frequency"),
+            Output("min_log_decrement", "1", "smallest whirl-mode log decrement"),
+        ],
         evaluate=whirl_modes,
         base=embedded_design("tuned"),
     )
@@ -85,8 +87,10 @@ def main(argv: list[str] | None = None) -> int:
     study = make_study(args.quick)
     run_dir = args.out / "run"
     shutil.rmtree(run_dir, ignore_errors=True)  # start afresh (an existing folder would resume)
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=not args.quick,
-                      dashboard_address=None) as cluster, Client(cluster) as client:
+    with (
+        LocalCluster(n_workers=2, threads_per_worker=1, processes=not args.quick, dashboard_address=None) as cluster,
+        Client(cluster) as client,
+    ):
         results = run_sweep(study, run_dir, client=client, progress=False)
 
     for name in ("shaft_frequency", "min_log_decrement"):

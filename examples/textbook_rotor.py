@@ -63,8 +63,10 @@ def design_text(elements: int = 6) -> str:
     disks = ""
     for name, x, diameter in (("left", 0.5, 0.28), ("right", 1.0, 0.35)):
         mass, diametral, polar = disk_properties(diameter)
-        disks += (f'[[disks]]\nname = "{name}"\nx = {x}\nmass = {mass!r}\n'
-                  f"diametral_inertia = {diametral!r}\npolar_inertia = {polar!r}\n")
+        disks += (
+            f'[[disks]]\nname = "{name}"\nx = {x}\nmass = {mass!r}\n'
+            f"diametral_inertia = {diametral!r}\npolar_inertia = {polar!r}\n"
+        )
     return f"""
 name = "Friswell et al. (2010), Example 5.9.1"
 

@@ -53,10 +53,13 @@ def main(argv: list[str] | None = None) -> int:
 
     print(design.name)
     print(f"shaft mass {results.model.shaft_mass:.2f} kg, operating speed {operating_rpm:.0f} rpm")
-    print("natural frequencies at rest [Hz]:",
-          ", ".join(f"{row['frequency_Hz']:.2f}" for row in results.modes_at_rest[:6]))
-    print("critical speeds [rpm]:",
-          ", ".join(f"{c.speed_rpm:.0f} ({c.whirl})" for c in results.campbell.critical_speeds))
+    print(
+        "natural frequencies at rest [Hz]:",
+        ", ".join(f"{row['frequency_Hz']:.2f}" for row in results.modes_at_rest[:6]),
+    )
+    print(
+        "critical speeds [rpm]:", ", ".join(f"{c.speed_rpm:.0f} ({c.whirl})" for c in results.campbell.critical_speeds)
+    )
     print()
     print(results.verdict.summary)
     for check in results.verdict.checks:

@@ -26,7 +26,11 @@ CHROMIUM_FLAGS = [
 
 def chromium_or_skip() -> str:
     """Path of chromium; fail under CI (it must always run there), skip elsewhere."""
-    path = "/usr/bin/chromium" if Path("/usr/bin/chromium").is_file() else (shutil.which("chromium") or shutil.which("chromium-browser"))
+    path = (
+        "/usr/bin/chromium"
+        if Path("/usr/bin/chromium").is_file()
+        else (shutil.which("chromium") or shutil.which("chromium-browser"))
+    )
     if path is None:
         message = "chromium not installed: run scripts/install_chromium.sh"
         if os.environ.get("CI"):
@@ -37,8 +41,9 @@ def chromium_or_skip() -> str:
 
 def run_chromium(chromium: str, workdir: Path, *args: str) -> subprocess.CompletedProcess:
     profile = workdir / f"chromium-profile-{len(list(workdir.iterdir()))}"
-    return subprocess.run([chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", *args],
-                          capture_output=True, text=True, timeout=90)
+    return subprocess.run(
+        [chromium, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", *args], capture_output=True, text=True, timeout=90
+    )
 
 
 def image_load_title(chromium: str, page: Path, workdir: Path) -> str:

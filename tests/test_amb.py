@@ -88,8 +88,10 @@ def rotor(keys, speed_rpm: float = 0.0, modulus: float = E_RIGID):
     return build_model(loads_design(rotor_text(keys, speed_rpm, modulus)))
 
 
-PID_KEYS = (f"kp = {KP}\nkd = {KD}\nintegral_gain = {K_INT}\nderivative_cutoff = {F_D}\n"
-            f"amplifier_bandwidth = {F_A}\nks = {KS}\nki = {KI}")
+PID_KEYS = (
+    f"kp = {KP}\nkd = {KD}\nintegral_gain = {K_INT}\nderivative_cutoff = {F_D}\n"
+    f"amplifier_bandwidth = {F_A}\nks = {KS}\nki = {KI}"
+)
 
 
 def by_magnitude(s: np.ndarray) -> np.ndarray:
@@ -163,10 +165,14 @@ def test_saturation_force_is_one_magnet_at_the_saturation_flux_density():
     one_magnet = magnetic.magnet_constant(turns, area, alpha) * i_sat**2 / g0**2
     assert magnetic.saturation_force(b_sat, area, alpha) == pytest.approx(one_magnet, rel=1e-12)
     per_pole = magnetic.saturation_force(1.0, 1e-4) / 2
-    assert per_pole == pytest.approx(1.0 / (2 * 4e-7 * np.pi) * 1e-4, rel=1e-12) and per_pole == pytest.approx(39.79, abs=0.01)
+    assert per_pole == pytest.approx(1.0 / (2 * 4e-7 * np.pi) * 1e-4, rel=1e-12) and per_pole == pytest.approx(
+        39.79, abs=0.01
+    )
     i0 = i_sat / 2
     assert magnetic.bias_flux_density(turns, i0, g0) == pytest.approx(b_sat / 2, rel=1e-12)
-    assert magnetic.saturation_force(b_sat, area, alpha) == pytest.approx(magnetic.force_slope(turns, area, i0, g0, alpha) * g0, rel=1e-12)
+    assert magnetic.saturation_force(b_sat, area, alpha) == pytest.approx(
+        magnetic.force_slope(turns, area, i0, g0, alpha) * g0, rel=1e-12
+    )
     with pytest.raises(ValueError, match="air_gap must be a finite number > 0"):
         magnetic.force_slope(turns, area, i0, 0.0)
 
@@ -180,8 +186,13 @@ def test_magnet_constant_matches_the_measured_value_of_a_laboratory_bearing():
 
 
 def test_magnet_geometry_keys_build_the_actuator_of_its_gains():
-    geometry = {"coil_turns": 200.0, "pole_area": 8e-4, "bias_current": 4.775, "air_gap": 1e-3,
-                "saturation_flux_density": 1.2}
+    geometry = {
+        "coil_turns": 200.0,
+        "pole_area": 8e-4,
+        "bias_current": 4.775,
+        "air_gap": 1e-3,
+        "saturation_flux_density": 1.2,
+    }
     keys = "kp = 1.0e4\n" + "\n".join(f"{k} = {v}" for k, v in geometry.items())
     act = rotor(keys).actuators[0]
     alpha = np.radians(22.5)  # default pole angle (8-pole stator)
@@ -273,8 +284,9 @@ def test_noncollocated_sensors_match_the_hand_built_model():
     # harmonic response (banded solver, B_aᵀ G B_s term) against a dense solve of the same
     # matrices with the law written out here. A steel tube (E = 210 GPa): the near-rigid one
     # makes Z too ill-conditioned (1e12) for a 1e-6 forward error.
-    model = rotor([PID_KEYS + f"\nsensor_offset = {offsets[0]}", PID_KEYS + f"\nsensor_offset = {offsets[1]}"],
-                  modulus=2.1e11)
+    model = rotor(
+        [PID_KEYS + f"\nsensor_offset = {offsets[0]}", PID_KEYS + f"\nsensor_offset = {offsets[1]}"], modulus=2.1e11
+    )
     dm, free = model.dofs, model.dofs.free
     load = np.zeros(dm.size)
     load[dm.shaft(dm.node_at("shaft", 0.5), "v")] = 1.0
@@ -288,8 +300,9 @@ def test_noncollocated_sensors_match_the_hand_built_model():
             B_a, B_s = a.lateral_rows.toarray(), a.sensing_rows.toarray()
             Z += law * B_a.T @ B_s - KS * B_a.T @ B_a
         direct = np.linalg.solve(Z[np.ix_(free, free)], load[free])
-        np.testing.assert_allclose(frequency_response(model, load, omega)[free], direct, rtol=1e-8,
-                                   atol=1e-10 * np.abs(direct).max())
+        np.testing.assert_allclose(
+            frequency_response(model, load, omega)[free], direct, rtol=1e-8, atol=1e-10 * np.abs(direct).max()
+        )
 
 
 def test_noncollocated_pd_bearings_match_the_hand_built_second_order_model():
@@ -381,7 +394,9 @@ def test_campbell_and_stability_with_a_transfer_function_controller_agree_with_f
     camp = campbell(model, speeds, n_modes=4, basis_size=exact)
     stab = stability(model, speeds, n_modes=4, basis_size=exact)
     assert stab.onset_speed is None and stab.onset_kind is None and not stab.divergent
-    np.testing.assert_allclose(np.sort_complex(stab.eigenvalues.ravel()), np.sort_complex(camp.eigenvalues.ravel()), rtol=1e-9)
+    np.testing.assert_allclose(
+        np.sort_complex(stab.eigenvalues.ravel()), np.sort_complex(camp.eigenvalues.ravel()), rtol=1e-9
+    )
     dm = model.dofs
     node = dm.node_at("shaft", 0.5)
     v, w, beta, gamma = (dm.shaft(node, f) for f in ("v", "w", "beta", "gamma"))
@@ -404,8 +419,12 @@ def test_campbell_and_stability_with_a_transfer_function_controller_agree_with_f
                 continue
             kind = "translation" if s.imag < 300.0 else "tilt"
             omega_n, zeta = abs(s), -s.real / abs(s)
-            peak = minimize_scalar(lambda om: -receptance(kind, om, speed), bounds=(0.8 * s.imag, 1.2 * s.imag),
-                                   method="bounded", options={"xatol": 1e-7}).x
+            peak = minimize_scalar(
+                lambda om: -receptance(kind, om, speed),
+                bounds=(0.8 * s.imag, 1.2 * s.imag),
+                method="bounded",
+                options={"xatol": 1e-7},
+            ).x
             bandwidth = 2 * zeta * omega_n
             assert abs(peak - s.imag) < 0.05 * bandwidth
             assert abs(peak - omega_n * np.sqrt(1 - 2 * zeta**2)) < 0.01 * bandwidth
@@ -438,37 +457,61 @@ def test_thesis_pd_bearing_gives_todays_numbers(thesis_0f8aaa9):
     ``linspace(20, Ω, 40)``, spin-up map over K_p ∈ {1e6, 1e7}, K_d ∈ {0, 500} on
     ``linspace(20, Ω, 30)``). The new code reproduces them bit for bit on the machine that made
     them; 1e-9 allows for another BLAS."""
-    before = np.array([
-        -0.309076055943982 + 30.954169709513554j, -0.370431513855267 + 37.08775850866149j,
-        -1.969876118780085 + 197.60261381749663j, -2.202852962506732 + 221.87238874641298j,
-        -0.534397173454168 + 345.4754212130772j, 0.505347009993271 + 347.59063579455153j,
-        -0.891430820089565 + 427.6756125370866j, -0.007100337520322 + 436.39954169292463j,
-        -4.285623658290947 + 478.750023039094j, -3.69572061734864 + 489.29841288256165j,
-        -0.96799745063063 + 600.7307003975651j, -1.45560708371368 + 635.769607976934j])
+    before = np.array(
+        [
+            -0.309076055943982 + 30.954169709513554j,
+            -0.370431513855267 + 37.08775850866149j,
+            -1.969876118780085 + 197.60261381749663j,
+            -2.202852962506732 + 221.87238874641298j,
+            -0.534397173454168 + 345.4754212130772j,
+            0.505347009993271 + 347.59063579455153j,
+            -0.891430820089565 + 427.6756125370866j,
+            -0.007100337520322 + 436.39954169292463j,
+            -4.285623658290947 + 478.750023039094j,
+            -3.69572061734864 + 489.29841288256165j,
+            -0.96799745063063 + 600.7307003975651j,
+            -1.45560708371368 + 635.769607976934j,
+        ]
+    )
     np.testing.assert_allclose(modes(thesis_0f8aaa9, thesis_0f8aaa9.speed, 12).eigenvalues, before, rtol=1e-9)
     speeds = np.linspace(20.0, thesis_0f8aaa9.speed, 40)
     q = imbalance_response(thesis_0f8aaa9, speeds, imbalance_loads(thesis_0f8aaa9))[:, 0]
-    golden = {"amb_1": [2.415931611699403e-07, 1.745244351784388e-06, 4.354224282992654e-06],
-              "amb_2": [2.403098089217176e-07, 1.630807810112603e-06, 5.773387531853466e-06]}
+    golden = {
+        "amb_1": [2.415931611699403e-07, 1.745244351784388e-06, 4.354224282992654e-06],
+        "amb_2": [2.403098089217176e-07, 1.630807810112603e-06, 5.773387531853466e-06],
+    }
     for a in thesis_0f8aaa9.actuators:
         d = a.lateral_rows @ q
         np.testing.assert_allclose(orbit_amplitude(d[0], d[1])[[10, 25, 39]], golden[a.name], rtol=1e-9)
     smap = spinup_map(thesis_0f8aaa9, [1e6, 1e7], [0.0, 500.0], np.linspace(20.0, thesis_0f8aaa9.speed, 30))
-    np.testing.assert_allclose(smap.shaft_peak, [[0.002769924875516, 0.000642217407668],
-                                                 [0.001647542513463, 0.00133807422295]], rtol=1e-9)
-    np.testing.assert_allclose(smap.actuator_force_peak[:, :, 0], [[1043.517125236724, 169.04227694503578],
-                                                                   [593.2176485589958, 479.71342026479107]], rtol=1e-9)
+    np.testing.assert_allclose(
+        smap.shaft_peak, [[0.002769924875516, 0.000642217407668], [0.001647542513463, 0.00133807422295]], rtol=1e-9
+    )
+    np.testing.assert_allclose(
+        smap.actuator_force_peak[:, :, 0],
+        [[1043.517125236724, 169.04227694503578], [593.2176485589958, 479.71342026479107]],
+        rtol=1e-9,
+    )
 
 
 def _magnet_overrides(ks: float, ki: float, kp: float, kd: float) -> dict:
-    return {f"bearings[{i}].{key}": value for i in (1, 2)
-            for key, value in (("ks", ks), ("ki", ki), ("kp", kp), ("kd", kd))}
+    return {
+        f"bearings[{i}].{key}": value for i in (1, 2) for key, value in (("ks", ks), ("ki", ki), ("kp", kp), ("kd", kd))
+    }
 
 
 def test_explicit_ideal_magnet_keys_are_the_thesis_bearing_bit_for_bit(thesis):
     """k_s = 0, k_i = 1, collocated, no lag, spelled out: the same model, the same numbers."""
-    ideal = build_model(with_overrides(baseline_design(), {
-        **_magnet_overrides(0.0, 1.0, 1e7, 0.0), "bearings[1].sensor_offset": 0.0, "bearings[2].sensor_offset": 0.0}))
+    ideal = build_model(
+        with_overrides(
+            baseline_design(),
+            {
+                **_magnet_overrides(0.0, 1.0, 1e7, 0.0),
+                "bearings[1].sensor_offset": 0.0,
+                "bearings[2].sensor_offset": 0.0,
+            },
+        )
+    )
     assert np.array_equal(modes(ideal, ideal.speed, 8).eigenvalues, modes(thesis, thesis.speed, 8).eigenvalues)
     speeds = np.linspace(20.0, thesis.speed, 12)
     a = imbalance_response(ideal, speeds, imbalance_loads(ideal))
@@ -483,10 +526,16 @@ def test_equivalent_magnet_reproduces_the_pd_baseline(thesis):
     ks, ki = 2.0e6, 2.0
     pd = build_model(with_overrides(baseline_design(), {"bearings[1].kd": 300.0, "bearings[2].kd": 300.0}))
     magnet = build_model(with_overrides(baseline_design(), _magnet_overrides(ks, ki, (1e7 + ks) / ki, 300.0 / ki)))
-    np.testing.assert_allclose(modes(magnet, magnet.speed, 10).eigenvalues, modes(pd, pd.speed, 10).eigenvalues, rtol=1e-10)
+    np.testing.assert_allclose(
+        modes(magnet, magnet.speed, 10).eigenvalues, modes(pd, pd.speed, 10).eigenvalues, rtol=1e-10
+    )
     speeds = np.linspace(20.0, pd.speed, 25)
-    np.testing.assert_allclose(imbalance_response(magnet, speeds, imbalance_loads(magnet)),
-                               imbalance_response(pd, speeds, imbalance_loads(pd)), rtol=1e-8, atol=1e-18)
+    np.testing.assert_allclose(
+        imbalance_response(magnet, speeds, imbalance_loads(magnet)),
+        imbalance_response(pd, speeds, imbalance_loads(pd)),
+        rtol=1e-8,
+        atol=1e-18,
+    )
     kp, kd = np.array([1e6, 3e6, 1e7]), np.array([0.0, 200.0, 800.0])
     map_pd = spinup_map(pd, kp, kd, speeds)
     map_magnet = spinup_map(magnet, (kp + ks) / ki, kd / ki, speeds)
@@ -500,9 +549,21 @@ def test_spinup_coupling_of_a_lagged_noncollocated_magnet_matches_the_direct_sol
     test_spinup.py), for the design's own PID controllers and for PD controllers of the map."""
     overrides = {}
     for i, offset in ((1, 0.04), (2, -0.03)):
-        overrides.update({f"bearings[{i}].{k}": v for k, v in (
-            ("ks", 8.5e5), ("ki", 177.0), ("kp", 1.6e4), ("kd", 11.0), ("integral_gain", 1e5),
-            ("derivative_cutoff", 500.0), ("amplifier_bandwidth", 1000.0), ("sensor_offset", offset))})
+        overrides.update(
+            {
+                f"bearings[{i}].{k}": v
+                for k, v in (
+                    ("ks", 8.5e5),
+                    ("ki", 177.0),
+                    ("kp", 1.6e4),
+                    ("kd", 11.0),
+                    ("integral_gain", 1e5),
+                    ("derivative_cutoff", 500.0),
+                    ("amplifier_bandwidth", 1000.0),
+                    ("sensor_offset", offset),
+                )
+            }
+        )
     model = build_model(with_overrides(baseline_design(), overrides))
     speeds = np.linspace(30.0, model.speed, 40)
     rec = actuator_receptance(model, speeds)
@@ -554,8 +615,15 @@ def test_pid_controller_and_duck_typed_transfer_functions_evaluate_the_pid_law()
     assert pid.proportional_gain == pytest.approx(KP, rel=1e-12) and pid.basis_stiffness == pytest.approx(KP, rel=1e-12)
     duck = Controller.from_transfer_function(_SisoLikePythonControl(pid.numerator, pid.denominator))
     assert duck == pid
-    design_pid = with_overrides(baseline_design(), {"bearings[1].integral_gain": K_INT, "bearings[1].kp": KP,
-                                                    "bearings[1].kd": KD, "bearings[1].derivative_cutoff": F_D})
+    design_pid = with_overrides(
+        baseline_design(),
+        {
+            "bearings[1].integral_gain": K_INT,
+            "bearings[1].kp": KP,
+            "bearings[1].kd": KD,
+            "bearings[1].derivative_cutoff": F_D,
+        },
+    )
     num, den = design_pid.bearings[1].transfer_function()
     np.testing.assert_allclose(num, pid.numerator, rtol=1e-15)
     np.testing.assert_allclose(den, pid.denominator, rtol=1e-15)
@@ -588,20 +656,43 @@ def test_modal_basis_stays_positive_semidefinite_under_negative_magnet_stiffness
     np.testing.assert_allclose(w2_sparse, w2_dense, rtol=1e-8, atol=1e-8 * w2_dense.max())
 
 
-@pytest.mark.parametrize("overrides, message", [
-    ({"bearings[1].coil_turns": 200.0}, "bearings[1].pole_area: required key is missing"),
-    ({"bearings[1].coil_turns": 200.0, "bearings[1].pole_area": 8e-4, "bearings[1].bias_current": 4.0,
-      "bearings[1].air_gap": 1e-3, "bearings[1].ks": 1e5}, "bearings[1].ks: must be omitted when coil_turns/bias_current"),
-    ({"bearings[1].saturation_flux_density": 1.2}, "bearings[1].pole_area: required key is missing (the saturation force"),
-    ({"bearings[1].sensor_offset": 9.0}, "bearings[1].sensor_offset: puts the sensor at x = 12.21 m, outside the shaft"),
-    ({"bearings[1].ki": 0.0}, "bearings[1].ki: must be > 0 (got 0.0)"),
-    ({"bearings[1].ks": -1.0}, "bearings[1].ks: must be >= 0 (got -1.0)"),
-    ({"bearings[1].amplifier_bandwidth": 0.0}, "bearings[1].amplifier_bandwidth: must be > 0 (got 0.0)"),
-    ({"bearings[1].pole_angle": 90.0}, "bearings[1].pole_angle: must be < 90 (got 90.0)"),
-    ({"bearings[1].controller": {"numerator": [1.0], "denominator": [1.0, 1.0]}, "bearings[1].kp": None,
-      "bearings[1].kd": None, "bearings[1].derivative_cutoff": 100.0},
-     "bearings[1].derivative_cutoff: must be omitted when a controller is given"),
-])
+@pytest.mark.parametrize(
+    "overrides, message",
+    [
+        ({"bearings[1].coil_turns": 200.0}, "bearings[1].pole_area: required key is missing"),
+        (
+            {
+                "bearings[1].coil_turns": 200.0,
+                "bearings[1].pole_area": 8e-4,
+                "bearings[1].bias_current": 4.0,
+                "bearings[1].air_gap": 1e-3,
+                "bearings[1].ks": 1e5,
+            },
+            "bearings[1].ks: must be omitted when coil_turns/bias_current",
+        ),
+        (
+            {"bearings[1].saturation_flux_density": 1.2},
+            "bearings[1].pole_area: required key is missing (the saturation force",
+        ),
+        (
+            {"bearings[1].sensor_offset": 9.0},
+            "bearings[1].sensor_offset: puts the sensor at x = 12.21 m, outside the shaft",
+        ),
+        ({"bearings[1].ki": 0.0}, "bearings[1].ki: must be > 0 (got 0.0)"),
+        ({"bearings[1].ks": -1.0}, "bearings[1].ks: must be >= 0 (got -1.0)"),
+        ({"bearings[1].amplifier_bandwidth": 0.0}, "bearings[1].amplifier_bandwidth: must be > 0 (got 0.0)"),
+        ({"bearings[1].pole_angle": 90.0}, "bearings[1].pole_angle: must be < 90 (got 90.0)"),
+        (
+            {
+                "bearings[1].controller": {"numerator": [1.0], "denominator": [1.0, 1.0]},
+                "bearings[1].kp": None,
+                "bearings[1].kd": None,
+                "bearings[1].derivative_cutoff": 100.0,
+            },
+            "bearings[1].derivative_cutoff: must be omitted when a controller is given",
+        ),
+    ],
+)
 def test_magnetic_bearing_keys_are_validated_with_the_field_value_and_allowed_range(overrides, message):
     with pytest.raises(DesignError) as error:
         with_overrides(baseline_design(), overrides)

@@ -14,8 +14,8 @@ from flexshaft.buckling import (
     infinite_cylinder_torque,
     torsional_buckling_torque,
 )
-from flexshaft.buckling.shear import shear_helix_curve
 from flexshaft.buckling.classical import helix_operators
+from flexshaft.buckling.shear import shear_helix_curve
 from flexshaft.laminate import Lamina, Laminate
 
 E, NU = 70e9, 0.3
@@ -70,8 +70,9 @@ def test_long_isotropic_tube_approaches_donnell_helical_dispersion_relation():
         s = k**2 + eta**2
         return (D * s**4 + E * t * k**4) / (2 * k * eta * s**2 * t)
 
-    reference = min(scipy.optimize.minimize_scalar(tau, bounds=(-6, 2), method="bounded", args=(n,)).fun
-                    for n in (2, 3))
+    reference = min(
+        scipy.optimize.minimize_scalar(tau, bounds=(-6, 2), method="bounded", args=(n,)).fun for n in (2, 3)
+    )
     result = torsional_buckling_torque(isotropic_tube(r_over_t), 1.0, 1200.0, theory="classical", kinematics="donnell")
     ratio = shear_stress(result.torque_positive, 1.0, t) / reference
     assert 1.0 - 1e-9 <= ratio <= 1.005
@@ -125,10 +126,14 @@ def test_convergence_in_the_number_of_galerkin_terms():
     """Nested Ritz spaces give non-increasing critical torques that settle: (55/-55/0/0)s
     carbon/epoxy, which has D16, D26 != 0 (the slowest case for the sine series)."""
     laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, CARBON_EPOXY)
-    torques = np.array([
-        [r.torque_positive, r.torque_negative]
-        for r in (torsional_buckling_torque(laminate, 0.05, 2.0, n_terms=M, theory="classical") for M in (8, 16, 32, 64))
-    ])
+    torques = np.array(
+        [
+            [r.torque_positive, r.torque_negative]
+            for r in (
+                torsional_buckling_torque(laminate, 0.05, 2.0, n_terms=M, theory="classical") for M in (8, 16, 32, 64)
+            )
+        ]
+    )
     assert np.all(np.diff(torques, axis=0) <= 1e-9 * torques[:-1])
     assert np.all(np.abs(torques[-1] - torques[-2]) <= 1e-3 * torques[-1])
     assert torques[-1, 0] != pytest.approx(torques[-1, 1], rel=0.05)  # 16/26 terms: direction dependent
@@ -208,12 +213,17 @@ def test_shear_theory_tends_to_the_classical_one_as_transverse_shear_stiffens():
     classical = torsional_buckling_torque(laminate, BASELINE_RADIUS, BASELINE_LENGTH, theory="classical", n_terms=36)
     gaps = []
     for factor in (1e3, 1e4):
-        stiff = Laminate(laminate.angles, laminate.thicknesses,
-                         with_transverse_shear(FMC, 0.035e9 * factor, 0.10e9 / 3 * factor))
+        stiff = Laminate(
+            laminate.angles, laminate.thicknesses, with_transverse_shear(FMC, 0.035e9 * factor, 0.10e9 / 3 * factor)
+        )
         shear = torsional_buckling_torque(stiff, BASELINE_RADIUS, BASELINE_LENGTH, n_terms=36)
         assert shear.governing == "global helical"
-        gaps.append([1 - shear.torque_positive / classical.torque_positive,
-                     1 - shear.torque_negative / classical.torque_negative])
+        gaps.append(
+            [
+                1 - shear.torque_positive / classical.torque_positive,
+                1 - shear.torque_negative / classical.torque_negative,
+            ]
+        )
     gaps = np.array(gaps)
     assert np.all(gaps > 0)  # shear deformation only lowers the load
     assert np.all(gaps[1] < 1e-3)
@@ -284,8 +294,9 @@ def test_isotropic_infinite_tube_matches_the_mindlin_donnell_dispersion_relation
     for n in (2, 3, 5, 10, 40):
         grid = np.log(n / radius) + np.linspace(-6, 3, 200)
         start = grid[np.argmin([tau(x, n) for x in grid])]
-        reference = scipy.optimize.minimize_scalar(tau, bounds=(start - 0.1, start + 0.1), method="bounded",
-                                                   args=(n,), options={"xatol": 1e-10}).fun
+        reference = scipy.optimize.minimize_scalar(
+            tau, bounds=(start - 0.1, start + 0.1), method="bounded", args=(n,), options={"xatol": 1e-10}
+        ).fun
         torques, _ = shear_helix_curve(tube, radius, np.array([n]), "donnell")
         np.testing.assert_allclose(shear_stress(torques[0], radius, t), reference, rtol=1e-6)
 
@@ -318,14 +329,18 @@ def test_sign_reversed_layup_buckles_at_the_same_torque_in_the_opposite_sense():
     balanced baseline (55/-55/0/0)s differs by 4.7 % in its global modes (D16, D26) but crimps
     at the same torque in both senses (A45 = 0)."""
     plus = torsional_buckling_torque(Laminate.from_layup("(55/55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
-    minus = torsional_buckling_torque(Laminate.from_layup("(-55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
+    minus = torsional_buckling_torque(
+        Laminate.from_layup("(-55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH
+    )
     assert minus.torque_positive == pytest.approx(plus.torque_negative, rel=1e-9)
     assert minus.torque_negative == pytest.approx(plus.torque_positive, rel=1e-9)
     assert (minus.n_positive, minus.n_negative) == (plus.n_negative, plus.n_positive)
     assert plus.torque_negative / plus.torque_positive == pytest.approx(1.86, abs=0.02)
     assert plus.governing_positive == "global helical"
 
-    balanced = torsional_buckling_torque(Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH)
+    balanced = torsional_buckling_torque(
+        Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC), BASELINE_RADIUS, BASELINE_LENGTH
+    )
     assert balanced.torque_positive == pytest.approx(balanced.torque_negative, rel=1e-12)
     assert balanced.global_torque_negative / balanced.global_torque_positive == pytest.approx(1.047, abs=0.005)
 
@@ -422,7 +437,8 @@ def test_ritz_assembly_equals_the_four_term_definition():
     pairs of equal axial index only and must agree to round-off (atol 1e-14 of the largest
     entry) for a random symmetric C."""
     from flexshaft.buckling._common import axial_integrals
-    from flexshaft.buckling.classical import _ritz_operators as classical_operators, assemble_ritz
+    from flexshaft.buckling.classical import _ritz_operators as classical_operators
+    from flexshaft.buckling.classical import assemble_ritz
     from flexshaft.buckling.shear import _ritz_operators as shear_operators
 
     rng = np.random.default_rng(5)
@@ -433,8 +449,11 @@ def test_ritz_assembly_equals_the_four_term_definition():
             C = A @ A.T
             integrals = axial_integrals(m, 1.3)
             parts = (Bs, Bc)
-            K = sum((parts[p][:n_strains].conj().T @ C @ parts[q][:n_strains]) * integrals[(p, q)]
-                    for p in (0, 1) for q in (0, 1))
+            K = sum(
+                (parts[p][:n_strains].conj().T @ C @ parts[q][:n_strains]) * integrals[(p, q)]
+                for p in (0, 1)
+                for q in (0, 1)
+            )
             P = sum(np.outer(parts[p][-2].conj(), parts[q][-1]) * integrals[(p, q)] for p in (0, 1) for q in (0, 1))
             area = 2.0 * np.pi * 0.05
             K_ref, G_ref = area * K, -(P + P.conj().T) * area / (2.0 * np.pi * 0.05**2)

@@ -95,11 +95,7 @@ def test_check_refuses_a_bad_file_naming_the_field(files: dict[str, Path]) -> No
 
 @pytest.mark.parametrize(
     ("key", "message"),
-    [
-        ("missing", "no such design file"),
-        ("directory", "is a directory, not a design file"),
-        ("binary", "UTF-8"),
-    ],
+    [("missing", "no such design file"), ("directory", "is a directory, not a design file"), ("binary", "UTF-8")],
 )
 def test_check_refuses_unreadable_files(files: dict[str, Path], key: str, message: str) -> None:
     result = runner.invoke(app, ["check", str(files[key])])
@@ -143,11 +139,54 @@ def test_a_huge_design_speed_is_refused_at_the_edge(tmp_path: Path) -> None:
 # Property: any argument list ends in exit 0 or 2, without a traceback
 
 NUMBER_TEXTS = [
-    "nan", "-nan", "NaN", "inf", "-inf", "Infinity", "-1", "-0", "0", "1", "0.5", "3000", "4800.0",
-    "999999", "1e6", "1000000.5", "1e308", "1e309", "-1e309", "1" * 400, "abc", "", " ", "0x10",
-    "1_000", "1,5", "١٢٣", "--json", "-", "3000rpm", "1e", "\x00", "None", "true",
+    "nan",
+    "-nan",
+    "NaN",
+    "inf",
+    "-inf",
+    "Infinity",
+    "-1",
+    "-0",
+    "0",
+    "1",
+    "0.5",
+    "3000",
+    "4800.0",
+    "999999",
+    "1e6",
+    "1000000.5",
+    "1e308",
+    "1e309",
+    "-1e309",
+    "1" * 400,
+    "abc",
+    "",
+    " ",
+    "0x10",
+    "1_000",
+    "1,5",
+    "١٢٣",
+    "--json",
+    "-",
+    "3000rpm",
+    "1e",
+    "\x00",
+    "None",
+    "true",
 ]
-UNKNOWN_OPTIONS = ["--bogus", "-x", "--speed", "--N", "--n", "--n-modes=", "--speed-rpm=", "--json=1", "--help-me", "---", "--"]
+UNKNOWN_OPTIONS = [
+    "--bogus",
+    "-x",
+    "--speed",
+    "--N",
+    "--n",
+    "--n-modes=",
+    "--speed-rpm=",
+    "--json=1",
+    "--help-me",
+    "---",
+    "--",
+]
 option_value = st.one_of(
     st.sampled_from(NUMBER_TEXTS),
     st.floats(min_value=0.0, max_value=2.0e6).map(repr),  # mostly valid speeds, some too high
@@ -249,7 +288,9 @@ def test_the_property_test_ran_its_budget() -> None:
 # subcritically at 1000 rpm and 50 kW with a relaxed whirl damping requirement, so that every check passes;
 # a Tsai-Wu requirement of 100 then makes it fail exactly one check.
 
-_ALUMINIUM = baseline_text()[baseline_text().index("[materials.al6061_t6]"):baseline_text().index("[materials.boom_aluminium]")]
+_ALUMINIUM = baseline_text()[
+    baseline_text().index("[materials.al6061_t6]") : baseline_text().index("[materials.boom_aluminium]")
+]
 PASSING_DESIGN = (
     SMALL_DESIGN.replace(_ALUMINIUM, "", 1)
     .replace("speed_rpm = 4800.0", "speed_rpm = 1000.0", 1)
@@ -282,7 +323,7 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
     assert tsai_wu["value"] == pytest.approx(data["strength_static_plus_imbalance"]["safety_factor"])
 
     page = (out / "report.html").read_text(encoding="utf-8")
-    sections = re.findall(r'<h2>\d+\. ([^<]+)</h2>', page)
+    sections = re.findall(r"<h2>\d+\. ([^<]+)</h2>", page)
     assert sections[:3] == ["Verdict against the requirements", "Inputs and assumptions", "Design summary"]
     assert "<h1>flexshaft report: (55/-55/0/0)s t700_adiprene shaft, Ø 101.6 mm × 3.00 mm wall, 1000 rpm" in page
     # the design file, verbatim and escaped, in a collapsible block; the assumed values listed
@@ -293,8 +334,9 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
 
 def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
     design = _write(tmp_path, "passing.toml", PASSING_DESIGN)
-    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--json",
-                                 "--out", str(tmp_path / "out")])
+    result = runner.invoke(
+        app, ["run", str(design), "--studies", "none", "--strict", "--json", "--out", str(tmp_path / "out")]
+    )
     assert result.exit_code == 0, result.output
     verdict = json.loads(result.stdout)["verdict"]
     assert verdict["passed"] is True and verdict["summary"] == "PASS: 9 pass"
@@ -302,8 +344,9 @@ def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
 
 def test_run_strict_json_exits_3_after_printing_the_results(tmp_path: Path) -> None:
     design = _write(tmp_path, "failing.toml", FAILING_DESIGN)
-    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--json",
-                                 "--out", str(tmp_path / "out")])
+    result = runner.invoke(
+        app, ["run", str(design), "--studies", "none", "--strict", "--json", "--out", str(tmp_path / "out")]
+    )
     assert result.exit_code == 3
     assert json.loads(result.stdout)["verdict"]["passed"] is False
 

@@ -31,8 +31,11 @@ from flexshaft.design import baseline_design, baseline_text
 
 runner = CliRunner()
 
-SMALL = (baseline_text().replace("shaft_elements = 36", "shaft_elements = 8", 1)
-         .replace("boom_elements = 24", "boom_elements = 4", 1))
+SMALL = (
+    baseline_text()
+    .replace("shaft_elements = 36", "shaft_elements = 8", 1)
+    .replace("boom_elements = 24", "boom_elements = 4", 1)
+)
 BASELINE_NAME = baseline_design().name
 
 
@@ -120,8 +123,16 @@ def test_user_errors_exit_2_and_debug_adds_the_traceback(tmp_path: Path) -> None
     assert debug.exit_code == 2 and "Traceback" in debug.stderr
     listed = runner.invoke(app, ["check", str(bad), "--json"])  # machine-readable problems, still exit 2
     assert listed.exit_code == 2
-    assert json.loads(listed.stdout) == {"ok": False, "source": str(bad), "problems": [
-        {"path": "shaft.wall_thickness", "message": "must be > 0 (got -0.003); allowed: [1e-05, 1] m (see docs/limits.md)"}]}
+    assert json.loads(listed.stdout) == {
+        "ok": False,
+        "source": str(bad),
+        "problems": [
+            {
+                "path": "shaft.wall_thickness",
+                "message": "must be > 0 (got -0.003); allowed: [1e-05, 1] m (see docs/limits.md)",
+            }
+        ],
+    }
 
 
 # ------------------------------------------------------------------------------------------------
@@ -200,7 +211,9 @@ def test_ply_studies_of_a_metal_shaft_are_not_internal_errors(tmp_path: Path) ->
     reports the safety factor as not evaluated and the buckling study refuses the design (exit 2)."""
     text = "\n".join(line for line in baseline_text().splitlines() if not line.startswith("layup"))
     text = text.replace('material = "t700_adiprene"', 'material = "al6061_t6"', 1)
-    text = text.replace("shaft_elements = 36", "shaft_elements = 12", 1).replace("boom_elements = 24", "boom_elements = 8", 1)
+    text = text.replace("shaft_elements = 36", "shaft_elements = 12", 1).replace(
+        "boom_elements = 24", "boom_elements = 8", 1
+    )
     metal = _write(tmp_path, "metal.toml", text)
     gain = runner.invoke(app, ["study", "gain", str(metal), "--out", str(tmp_path / "g")])
     assert gain.exit_code == 0, gain.output

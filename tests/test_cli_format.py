@@ -25,8 +25,11 @@ from flexshaft.design import baseline_text
 
 runner = CliRunner()
 
-SMALL = (baseline_text().replace("shaft_elements = 36", "shaft_elements = 8", 1)
-         .replace("boom_elements = 24", "boom_elements = 4", 1))
+SMALL = (
+    baseline_text()
+    .replace("shaft_elements = 36", "shaft_elements = 8", 1)
+    .replace("boom_elements = 24", "boom_elements = 4", 1)
+)
 
 
 @pytest.fixture(scope="module")
@@ -46,15 +49,18 @@ def _help(*command: str) -> str:
 # help texts, choices, version
 
 
-@pytest.mark.parametrize(("command", "texts"), [
-    (["modes"], ["--speed-rpm", "Spin speed [rpm]", "--n-modes", "numbered from 1", "counts from 0"]),
-    (["stability"], ["Highest speed analysed [rpm]", "model [Hz]", "<hysteretic|viscous>"]),
-    (["thermal"], ["<thesis|rotating>", "<becker|kendoush>"]),
-    (["run"], ["<report|full|none>", "--force", "--strict", "Exit with code 3"]),
-    (["study", "ply-angle"], ["Angle step [deg]", "--jobs", "--dask", "--json", "--force"]),
-    (["study", "all"], ["Actuator gap limiting the tuned gains [m]", "<report|full>"]),
-    (["study", "spinup-map"], ["K_p [N/m]", "K_d [N s/m]"]),
-])
+@pytest.mark.parametrize(
+    ("command", "texts"),
+    [
+        (["modes"], ["--speed-rpm", "Spin speed [rpm]", "--n-modes", "numbered from 1", "counts from 0"]),
+        (["stability"], ["Highest speed analysed [rpm]", "model [Hz]", "<hysteretic|viscous>"]),
+        (["thermal"], ["<thesis|rotating>", "<becker|kendoush>"]),
+        (["run"], ["<report|full|none>", "--force", "--strict", "Exit with code 3"]),
+        (["study", "ply-angle"], ["Angle step [deg]", "--jobs", "--dask", "--json", "--force"]),
+        (["study", "all"], ["Actuator gap limiting the tuned gains [m]", "<report|full>"]),
+        (["study", "spinup-map"], ["K_p [N/m]", "K_d [N s/m]"]),
+    ],
+)
 def test_help_texts_show_units_and_choices(command: list[str], texts: list[str]) -> None:
     shown = _help(*command)
     for text in texts:
@@ -120,11 +126,27 @@ def test_choices_are_case_insensitive(small: Path) -> None:
 # numbers for people
 
 
-@pytest.mark.parametrize(("value", "text"), [
-    (4e-7, "4e-07"), (3.1e-6, "3.1e-06"), (-0.00145, "-0.00145"), (0.0099841, "0.009984"), (0.5, "0.5"),
-    (55.3214, "55.32"), (4800.0, "4800"), (4799.6, "4800"), (123456.7, "123457"), (1.2345e7, "1.234e+07"),
-    (0.0, "0"), (-0.0, "0"), (None, "—"), (float("inf"), "inf"), (float("nan"), "nan"), (9.99996, "10"),
-])
+@pytest.mark.parametrize(
+    ("value", "text"),
+    [
+        (4e-7, "4e-07"),
+        (3.1e-6, "3.1e-06"),
+        (-0.00145, "-0.00145"),
+        (0.0099841, "0.009984"),
+        (0.5, "0.5"),
+        (55.3214, "55.32"),
+        (4800.0, "4800"),
+        (4799.6, "4800"),
+        (123456.7, "123457"),
+        (1.2345e7, "1.234e+07"),
+        (0.0, "0"),
+        (-0.0, "0"),
+        (None, "—"),
+        (float("inf"), "inf"),
+        (float("nan"), "nan"),
+        (9.99996, "10"),
+    ],
+)
 def test_sig_gives_significant_figures(value, text) -> None:
     assert sig(value) == text
 
@@ -132,8 +154,14 @@ def test_sig_gives_significant_figures(value, text) -> None:
 def test_modes_table_has_unit_headers_and_numbers_from_one(small: Path) -> None:
     result = runner.invoke(app, ["modes", str(small), "--n-modes", "6"])
     assert result.exit_code == 0, result.output
-    for header in ("f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "f damped frequency, ζ damping ratio, δ log decrement",
-                   "mode numbers start at 1"):
+    for header in (
+        "f [Hz]",
+        "f [rpm]",
+        "ζ [-]",
+        "δ [-]",
+        "f damped frequency, ζ damping ratio, δ log decrement",
+        "mode numbers start at 1",
+    ):
         assert header in result.stdout
     rows = [line for line in result.stdout.splitlines() if re.match(r"│\s+\d+ │", line)]
     assert [int(r.split("│")[1]) for r in rows] == [1, 2, 3, 4, 5, 6]
@@ -159,8 +187,12 @@ def test_json_is_strict(small: Path) -> None:
     def refuse(constant):
         raise AssertionError(f"non-standard JSON constant {constant}")
 
-    for args in (["modes", str(small), "--n-modes", "3", "--json"], ["check", str(small), "--json"],
-                 ["stability", str(small), "--n-speeds", "5", "--json"], ["baseline", "--json"]):
+    for args in (
+        ["modes", str(small), "--n-modes", "3", "--json"],
+        ["check", str(small), "--json"],
+        ["stability", str(small), "--n-speeds", "5", "--json"],
+        ["baseline", "--json"],
+    ):
         result = runner.invoke(app, args)
         assert result.exit_code == 0, result.output
         json.loads(result.stdout, parse_constant=refuse)
@@ -176,10 +208,12 @@ def _wall_dataset():
 
     walls = np.array([0.0015, 0.003])
     return xr.Dataset(
-        {"safety_factor": ("wall_thickness", [2.5, 4.0], {"units": "1"}),
-         "spinup_peak_deflection": ("wall_thickness", [1.2e-3, 4.0e-4], {"units": "m"}),
-         "sigma1": ("wall_thickness", [25.9e6, 12.0e6], {"units": "Pa"}),
-         "natural_frequency_1": ("wall_thickness", [50.5, 55.3], {"units": "Hz"})},
+        {
+            "safety_factor": ("wall_thickness", [2.5, 4.0], {"units": "1"}),
+            "spinup_peak_deflection": ("wall_thickness", [1.2e-3, 4.0e-4], {"units": "m"}),
+            "sigma1": ("wall_thickness", [25.9e6, 12.0e6], {"units": "Pa"}),
+            "natural_frequency_1": ("wall_thickness", [50.5, 55.3], {"units": "Hz"}),
+        },
         coords={"wall_thickness": ("wall_thickness", walls, {"units": "m"})},
     )
 
@@ -188,10 +222,17 @@ def test_study_tables_use_mm_and_mpa_with_unit_headers() -> None:
     ds = _wall_dataset()
     console = stdout_console()
     with console.capture() as captured:
-        console.print(dataset_table(ds, ["safety_factor", "spinup_peak_deflection", "sigma1", "natural_frequency_1"], "t"))
+        console.print(
+            dataset_table(ds, ["safety_factor", "spinup_peak_deflection", "sigma1", "natural_frequency_1"], "t")
+        )
     text = captured.get()
-    for header in ("wall_thickness [mm]", "safety_factor", "spinup_peak_deflection [mm]", "sigma1 [MPa]",
-                   "natural_frequency_1 [Hz]"):
+    for header in (
+        "wall_thickness [mm]",
+        "safety_factor",
+        "spinup_peak_deflection [mm]",
+        "sigma1 [MPa]",
+        "natural_frequency_1 [Hz]",
+    ):
         assert header in text
     assert re.search(r"│\s+1\.5 │\s+2\.5 │\s+1\.2 │\s+25\.9 │\s+50\.5 │", text), text  # 1.5 mm, 1.2 mm, 25.9 MPa
 
@@ -199,7 +240,12 @@ def test_study_tables_use_mm_and_mpa_with_unit_headers() -> None:
 def test_study_json_is_si_with_unit_suffixed_keys() -> None:
     data = dataset_json(_wall_dataset())
     assert data["coords"] == {"wall_thickness_m": [0.0015, 0.003]}
-    assert set(data["variables"]) == {"safety_factor", "spinup_peak_deflection_m", "sigma1_Pa", "natural_frequency_1_Hz"}
+    assert set(data["variables"]) == {
+        "safety_factor",
+        "spinup_peak_deflection_m",
+        "sigma1_Pa",
+        "natural_frequency_1_Hz",
+    }
     assert data["variables"]["sigma1_Pa"] == [25.9e6, 12.0e6]
     assert data["dims"]["sigma1_Pa"] == ["wall_thickness_m"]
 
@@ -209,8 +255,9 @@ def test_a_study_command_prints_units_and_json(tmp_path: Path, small: Path) -> N
     human = runner.invoke(app, ["study", "ply-angle", str(small), "--step", "30", "--out", str(out)])
     assert human.exit_code == 0, human.output
     assert "alpha [deg]" in human.stdout and "sigma1 [MPa]" in human.stdout and "best α = ±" in human.stdout
-    data = json.loads(runner.invoke(app, ["study", "ply-angle", str(small), "--step", "30", "--out", str(out),
-                                          "--json"]).stdout)
+    data = json.loads(
+        runner.invoke(app, ["study", "ply-angle", str(small), "--step", "30", "--out", str(out), "--json"]).stdout
+    )
     assert data["coords"]["alpha_deg"] == [30.0, 60.0]
     assert {"safety_factor", "sigma1_Pa", "critical_x_m"} <= set(data["variables"])
     assert Path(data["figures"]["ply_angle"]["png"]).is_file() and Path(data["results_file"]).is_file()
@@ -234,13 +281,24 @@ def test_stage_progress_shows_stages_sub_steps_and_times() -> None:
         progress.step("design studies: study 2: [bold]two-angle map")
         progress.step("requirements verdict")
     text = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", buffer.getvalue())
-    for label in ("natural frequencies", "design studies (thesis chapter 3)", "  · study 1: ply angle",
-                  "  · study 2: [bold]two-angle map", "requirements verdict"):
+    for label in (
+        "natural frequencies",
+        "design studies (thesis chapter 3)",
+        "  · study 1: ply angle",
+        "  · study 2: [bold]two-angle map",
+        "requirements verdict",
+    ):
         assert label in text
     assert re.search(r"✓ requirements verdict\s+\d+\.\d s", text), text
-    assert list(progress.timings) == ["natural frequencies", "design studies (thesis chapter 3)", "requirements verdict"]
-    assert list(progress.sub_timings["design studies (thesis chapter 3)"]) == ["study 1: ply angle",
-                                                                               "study 2: [bold]two-angle map"]
+    assert list(progress.timings) == [
+        "natural frequencies",
+        "design studies (thesis chapter 3)",
+        "requirements verdict",
+    ]
+    assert list(progress.sub_timings["design studies (thesis chapter 3)"]) == [
+        "study 1: ply angle",
+        "study 2: [bold]two-angle map",
+    ]
 
 
 def test_stage_progress_draws_nothing_off_a_terminal() -> None:
@@ -262,18 +320,42 @@ def test_verdict_table_shows_a_checks_note_where_it_has_no_location() -> None:
     from flexshaft.studies.verdict import Check, Verdict
 
     checks = (
-        Check("whirl_onset", "whirl onset speed", "speed", "at least", "pass", 754.0, 578.0, 176.0,
-              note="no onset up to the highest speed analysed", lower_bound=True),
-        Check("shaft_temperature", "shaft temperature", "temperature", "at most", "pass", 317.0, 373.0, 56.0,
-              location={"station": 3.21}, note="a remark"),
-        Check("actuator_force", "actuator force", "force", "at most", "not evaluated",
-              note="the design has no actuator"),
+        Check(
+            "whirl_onset",
+            "whirl onset speed",
+            "speed",
+            "at least",
+            "pass",
+            754.0,
+            578.0,
+            176.0,
+            note="no onset up to the highest speed analysed",
+            lower_bound=True,
+        ),
+        Check(
+            "shaft_temperature",
+            "shaft temperature",
+            "temperature",
+            "at most",
+            "pass",
+            317.0,
+            373.0,
+            56.0,
+            location={"station": 3.21},
+            note="a remark",
+        ),
+        Check(
+            "actuator_force", "actuator force", "force", "at most", "not evaluated", note="the design has no actuator"
+        ),
     )
     console = stdout_console()
     with console.capture() as captured:
         console.print(verdict_table(Verdict(checks)))
-    lines = {line.split("│")[1].strip(): line.split("│")[-2].strip() for line in captured.get().splitlines()
-             if line.count("│") >= 7}
+    lines = {
+        line.split("│")[1].strip(): line.split("│")[-2].strip()
+        for line in captured.get().splitlines()
+        if line.count("│") >= 7
+    }
     assert lines["whirl onset speed"] == "no onset up to the highest speed analysed"
     assert lines["shaft temperature"].startswith("x = 3.21")
     assert lines["actuator force"] == "the design has no actuator"

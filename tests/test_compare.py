@@ -73,14 +73,28 @@ def test_inventory_roles_and_missing_masses():
     data = {
         "name": "t",
         "materials": {"al": {"kind": "isotropic", "E": 70e9, "G": 26e9, "density": 2700.0}},
-        "shaft": {"x_start": 0.0, "x_end": 2.0, "outer_diameter": 0.05, "wall_thickness": 0.002, "material": "al",
-                  "fixed_start": ["u", "v", "w", "theta"]},
-        "bearings": [{"name": "g", "kind": "contact", "role": "gearbox", "x": 2.0, "stiffness": {"v": 1e8, "w": 1e8}},
-                     {"name": "h", "kind": "contact", "x": 0.9, "stiffness": {"v": 1e8, "w": 1e8}, "mass": 2.0},
-                     {"name": "d", "kind": "contact", "role": "damper", "x": 1.5, "damping": {"v": 10.0},
-                      "stiffness": {}}],
-        "couplings": [{"name": "c", "x": 1.0, "angular_stiffness": 10.0, "axial_stiffness": "rigid",
-                       "torsional_stiffness": "rigid"}],
+        "shaft": {
+            "x_start": 0.0,
+            "x_end": 2.0,
+            "outer_diameter": 0.05,
+            "wall_thickness": 0.002,
+            "material": "al",
+            "fixed_start": ["u", "v", "w", "theta"],
+        },
+        "bearings": [
+            {"name": "g", "kind": "contact", "role": "gearbox", "x": 2.0, "stiffness": {"v": 1e8, "w": 1e8}},
+            {"name": "h", "kind": "contact", "x": 0.9, "stiffness": {"v": 1e8, "w": 1e8}, "mass": 2.0},
+            {"name": "d", "kind": "contact", "role": "damper", "x": 1.5, "damping": {"v": 10.0}, "stiffness": {}},
+        ],
+        "couplings": [
+            {
+                "name": "c",
+                "x": 1.0,
+                "angular_stiffness": 10.0,
+                "axial_stiffness": "rigid",
+                "torsional_stiffness": "rigid",
+            }
+        ],
         "operating": {"speed_rpm": 3000.0, "power": 1e3},
     }
     inventory = driveline_inventory(build_model(design_from_dict(data)))
@@ -118,8 +132,13 @@ def test_report_is_one_page_whose_figures_decode(report, comparison):
     data = json.loads((report.parent / "results.json").read_text())
     assert set(data["designs"]) == {"tuned", "current"}
     assert (report.parent / "comparison.nc").is_file()
-    for stem in ("compare_campbell", "compare_spinup", "compare_safety_factor", "compare_static_deflection",
-                 "compare_mass"):
+    for stem in (
+        "compare_campbell",
+        "compare_spinup",
+        "compare_safety_factor",
+        "compare_static_deflection",
+        "compare_mass",
+    ):
         assert (report.parent / f"{stem}.png").is_file() and (report.parent / f"{stem}.svg").is_file()
 
 

@@ -19,12 +19,12 @@ Euler-Bernoulli mesh (exact for the static midspan stiffness) leave relative err
 
 import numpy as np
 import pytest
+from rotors import K_SHAFT, M_DISK, WN, disk_dofs, jeffcott
 
 from flexshaft.analyses import frequency_response, imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import campbell
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design, loads_design, with_overrides
-from rotors import K_SHAFT, M_DISK, WN, disk_dofs, jeffcott
 
 ETA = 0.02
 REL = 1e-4

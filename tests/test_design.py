@@ -130,9 +130,7 @@ def test_design_without_tailboom_validates() -> None:
 
 
 def test_aluminium_shaft_without_layup_validates() -> None:
-    text = edit('material = "t700_adiprene"', 'material = "al6061_t6"').replace(
-        'layup = "(55/-55/0/0)s"', ""
-    )
+    text = edit('material = "t700_adiprene"', 'material = "al6061_t6"').replace('layup = "(55/-55/0/0)s"', "")
     design = loads_design(text)
     assert design.shaft.ply_angles_deg == ()
     assert isinstance(design.shaft_material, Isotropic)
@@ -167,11 +165,7 @@ def test_optional_tables_take_defaults() -> None:
 # Refusals: each names the field path and the offending value
 
 REFUSALS = {
-    "unknown top-level key": (
-        lambda: 'colour = "red"\n' + BASELINE,
-        "colour: unknown key",
-        '"red"',
-    ),
+    "unknown top-level key": (lambda: 'colour = "red"\n' + BASELINE, "colour: unknown key", '"red"'),
     "unknown nested key": (
         lambda: edit("fixed_end = []", "fixed_end = []\ncolour = 7"),
         "shaft.colour: unknown key",
@@ -243,10 +237,7 @@ REFUSALS = {
         '"t700_adiprene"',
     ),
     "controller with kp": (
-        lambda: edit(
-            "kd = 0.0                  # N s/m",
-            "controller = { numerator = [1.0e7], denominator = [1.0] }",
-        ),
+        lambda: edit("kd = 0.0                  # N s/m", "controller = { numerator = [1.0e7], denominator = [1.0] }"),
         "bearings[1].kp: must be omitted when a controller is given",
         "got 10000000.0",
     ),
@@ -438,8 +429,11 @@ def test_with_overrides_accepts_numpy_values() -> None:
     numpy = pytest.importorskip("numpy")
     changed = with_overrides(
         baseline_design(),
-        {"shaft.wall_thickness": numpy.float64(0.004), "mesh.shaft_elements": numpy.int64(40),
-         "loads.load_factor": numpy.array([0.0, -1.0, 0.0])},
+        {
+            "shaft.wall_thickness": numpy.float64(0.004),
+            "mesh.shaft_elements": numpy.int64(40),
+            "loads.load_factor": numpy.array([0.0, -1.0, 0.0]),
+        },
     )
     assert (changed.shaft.wall_thickness, changed.mesh.shaft_elements) == (0.004, 40)
     assert changed.loads.load_factor == (0.0, -1.0, 0.0)

@@ -39,8 +39,15 @@ from hypothesis import strategies as st
 
 from flexshaft.assembly import build_model
 from flexshaft.assembly.size import check_problem_size
-
-from flexshaft.design import Design, DesignError, baseline_design, baseline_text, load_design, loads_design, with_overrides
+from flexshaft.design import (
+    Design,
+    DesignError,
+    baseline_design,
+    baseline_text,
+    load_design,
+    loads_design,
+    with_overrides,
+)
 from flexshaft.design.schema import format_value
 
 BASELINE_TEXT = baseline_text()
@@ -139,13 +146,53 @@ def check(thunk: Callable[[], Any], *, schema_only: bool = False) -> None:
 # Strategies
 
 NAMES = [
-    "3", "", " ", "nan", "inf", "-1", "(95)s", "(55/-55)s", "t700_adiprene", "al6061_t6",
-    "boom_aluminium", "lamina", "isotropic", "contact", "active", "mid_bay", "worst", "end_mass",
-    "boom", "shaft", "theta", "u", "kp", "kind", "x",
+    "3",
+    "",
+    " ",
+    "nan",
+    "inf",
+    "-1",
+    "(95)s",
+    "(55/-55)s",
+    "t700_adiprene",
+    "al6061_t6",
+    "boom_aluminium",
+    "lamina",
+    "isotropic",
+    "contact",
+    "active",
+    "mid_bay",
+    "worst",
+    "end_mass",
+    "boom",
+    "shaft",
+    "theta",
+    "u",
+    "kp",
+    "kind",
+    "x",
 ]
 FIELD_NAMES = [
-    "kind", "x", "x_boom", "kp", "kd", "controller", "stiffness", "damping", "offset", "layup",
-    "speed", "speed_rpm", "F12", "end_mass", "name", "tailboom", "disks", "point", "line", "theta",
+    "kind",
+    "x",
+    "x_boom",
+    "kp",
+    "kd",
+    "controller",
+    "stiffness",
+    "damping",
+    "offset",
+    "layup",
+    "speed",
+    "speed_rpm",
+    "F12",
+    "end_mass",
+    "name",
+    "tailboom",
+    "disks",
+    "point",
+    "line",
+    "theta",
 ]
 scalars = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True),
@@ -277,7 +324,9 @@ def test_random_text_files() -> None:
     texts = st.one_of(
         st.text(max_size=300),
         st.text(alphabet=st.sampled_from('[]{}="\n .,abxyz0123456789-+einf'), max_size=200),
-        st.builds(lambda cut, tail: BASELINE_TEXT[:cut] + tail, st.integers(0, len(BASELINE_TEXT)), st.text(max_size=20)),
+        st.builds(
+            lambda cut, tail: BASELINE_TEXT[:cut] + tail, st.integers(0, len(BASELINE_TEXT)), st.text(max_size=20)
+        ),
     )
     run_counted(300, texts, lambda text: check(lambda: loads_design(text)))
 
@@ -334,7 +383,6 @@ def test_random_overrides() -> None:
 # Exhaustive companions: every number and every table of the baseline, one at a time
 
 
-
 def value_at(data: Any, path: tuple[Any, ...]) -> Any:
     for part in path:
         data = data[part]
@@ -342,13 +390,16 @@ def value_at(data: Any, path: tuple[Any, ...]) -> Any:
 
 
 NUMBER_PATHS = [
-    path for path in MUTABLE_PATHS
+    path
+    for path in MUTABLE_PATHS
     if isinstance(value_at(BASELINE_DATA, path), (int, float)) and not isinstance(value_at(BASELINE_DATA, path), bool)
 ]
 TABLE_PATHS = [path for path in PATHS if isinstance(value_at(BASELINE_DATA, path), dict) and path != ("materials",)]
 
 
-@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, "3", True], ids=["nan", "inf", "-inf", "string", "bool"])
+@pytest.mark.parametrize(
+    "bad", [math.nan, math.inf, -math.inf, "3", True], ids=["nan", "inf", "-inf", "string", "bool"]
+)
 def test_every_number_refuses_non_numbers(bad: Any) -> None:
     assert len(NUMBER_PATHS) > 50
     for path in NUMBER_PATHS:
@@ -407,8 +458,25 @@ def _resident_peak() -> int:
     """The process's resident peak [bytes] (ru_maxrss is in KiB on Linux)."""
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
 
-EXTREMES = [0.0, -0.0, 5e-324, 1e-300, 1e-12, 1e-6, 1.0, 1e6, 1e12, 1e15, 1e300, 1.7e308, float(2**63), -1.0,
-            math.nan, math.inf]
+
+EXTREMES = [
+    0.0,
+    -0.0,
+    5e-324,
+    1e-300,
+    1e-12,
+    1e-6,
+    1.0,
+    1e6,
+    1e12,
+    1e15,
+    1e300,
+    1.7e308,
+    float(2**63),
+    -1.0,
+    math.nan,
+    math.inf,
+]
 RELATIVE = [-1.0, 1e-9, 1e-3, 0.999, 1.0 - 1e-9, 1.0 + 1e-9, 1.001, 1e3, 1e9]
 SMALL_MESH = st.tuples(st.integers(2, 6), st.integers(2, 4))
 
@@ -438,13 +506,24 @@ def _number_edit() -> st.SearchStrategy[tuple[str, tuple[Any, ...], Any]]:
     absolute = st.tuples(st.just("set"), st.sampled_from(NUMBER_PATHS), st.sampled_from(EXTREMES))
     relative = st.tuples(st.just("scale"), st.sampled_from(NUMBER_PATHS), st.sampled_from(RELATIVE))
     at_bound = st.sampled_from(NUMBER_PATHS).flatmap(
-        lambda path: st.tuples(st.just("set"), st.just(path), st.sampled_from(BOUND_VALUES[path])))
+        lambda path: st.tuples(st.just("set"), st.just(path), st.sampled_from(BOUND_VALUES[path]))
+    )
     return st.one_of(absolute, relative, at_bound, at_bound)
 
 
 STRUCTURAL = [
-    "amb_at_hanger", "amb_near_hanger", "two_ambs_close", "tf_controller", "pid_controller", "worst",
-    "worst_many_bays", "tiny_sensor_offset", "disk_near_bearing", "no_tailboom", "distributed", "line_load",
+    "amb_at_hanger",
+    "amb_near_hanger",
+    "two_ambs_close",
+    "tf_controller",
+    "pid_controller",
+    "worst",
+    "worst_many_bays",
+    "tiny_sensor_offset",
+    "disk_near_bearing",
+    "no_tailboom",
+    "distributed",
+    "line_load",
 ]
 
 
@@ -468,21 +547,35 @@ def _structural(data: dict[str, Any], edit: str, tiny: float) -> None:
         if edit == "worst_many_bays":
             start, end = data["shaft"]["x_start"], data["shaft"]["x_end"]
             for k in range(12):
-                bearings.append({"name": f"extra_{k}", "kind": "contact", "x": start + (k + 0.5) * (end - start) / 12,
-                                 "stiffness": {"v": 1e7, "w": 1e7}})
+                bearings.append(
+                    {
+                        "name": f"extra_{k}",
+                        "kind": "contact",
+                        "x": start + (k + 0.5) * (end - start) / 12,
+                        "stiffness": {"v": 1e7, "w": 1e7},
+                    }
+                )
     elif edit == "tiny_sensor_offset":
         amb["sensor_offset"] = tiny
     elif edit == "disk_near_bearing":
-        data["disks"] = [{"name": "disk", "x": amb["x"] - tiny, "mass": 5.0, "diametral_inertia": 0.1,
-                          "polar_inertia": 0.2}]
+        data["disks"] = [
+            {"name": "disk", "x": amb["x"] - tiny, "mass": 5.0, "diametral_inertia": 0.1, "polar_inertia": 0.2}
+        ]
     elif edit == "no_tailboom":
         data.pop("tailboom", None)
         data["loads"].pop("point", None)
     elif edit == "distributed":
         data["loads"]["imbalance_placement"] = "distributed"
     elif edit == "line_load":
-        data["loads"]["line"] = [{"name": "gust", "on": "shaft", "x_start": amb["x"], "x_end": amb["x"] + tiny,
-                                  "force_per_length": [0.0, 100.0, 0.0]}]
+        data["loads"]["line"] = [
+            {
+                "name": "gust",
+                "on": "shaft",
+                "x_start": amb["x"],
+                "x_end": amb["x"] + tiny,
+                "force_per_length": [0.0, 100.0, 0.0],
+            }
+        ]
 
 
 def _edited_design_data(example: tuple[Any, ...]) -> dict[str, Any]:
@@ -618,10 +711,18 @@ def _run_outcome(design: Design) -> str:
 RUN_EXAMPLES = [
     ([], ["amb_near_hanger", "tf_controller"], 1e-9, (4, 2)),
     ([("scale", ("bearings", 0, "stiffness", "v"), 1e3)], ["worst", "tiny_sensor_offset"], 1e-6, (3, 2)),
-    ([("set", ("materials", "t700_adiprene", "density"), 1e-6), ("set", ("loads", "eccentricity"), 1e-12)],
-     ["no_tailboom", "disk_near_bearing"], 1e-3, (4, 2)),
-    ([("scale", ("operating", "speed_rpm"), 1e-3), ("set", ("bearings", 1, "kp"), 1e10)], ["pid_controller"],
-     1e-12, (2, 2)),
+    (
+        [("set", ("materials", "t700_adiprene", "density"), 1e-6), ("set", ("loads", "eccentricity"), 1e-12)],
+        ["no_tailboom", "disk_near_bearing"],
+        1e-3,
+        (4, 2),
+    ),
+    (
+        [("scale", ("operating", "speed_rpm"), 1e-3), ("set", ("bearings", 1, "kp"), 1e10)],
+        ["pid_controller"],
+        1e-12,
+        (2, 2),
+    ),
 ]
 
 

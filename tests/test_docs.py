@@ -69,9 +69,13 @@ def test_reference_covers_every_table_and_key():
 
 
 def test_every_number_has_a_unit():
-    missing = [f"{table.title} {field.key}" for table in design_tables() for field in table.fields
-               if field.type.split(",")[0] in ("float", "array of 2 floats", "array of 3 floats",
-                                               "inline table of floats") and not field.unit]
+    missing = [
+        f"{table.title} {field.key}"
+        for table in design_tables()
+        for field in table.fields
+        if field.type.split(",")[0] in ("float", "array of 2 floats", "array of 3 floats", "inline table of floats")
+        and not field.unit
+    ]
     assert not missing, missing
 
 
@@ -112,14 +116,17 @@ def test_json_schema_accepts_the_packaged_designs(validator, name):
     assert list(validator.iter_errors(tomllib.loads(embedded_text(name)))) == []
 
 
-@pytest.mark.parametrize("change", [
-    lambda d: d["shaft"].update(bogus=1.0),                  # unknown key
-    lambda d: d["shaft"].update(outer_diameter=-0.1),        # out of range
-    lambda d: d["operating"].update(speed_rpm="4800"),       # a string for a number
-    lambda d: d["bearings"][0].update(kind="hanger"),        # unknown kind
-    lambda d: d["analysis"].update(internal_damping="none"), # not a choice
-    lambda d: d.pop("shaft"),                                # required table missing
-])
+@pytest.mark.parametrize(
+    "change",
+    [
+        lambda d: d["shaft"].update(bogus=1.0),  # unknown key
+        lambda d: d["shaft"].update(outer_diameter=-0.1),  # out of range
+        lambda d: d["operating"].update(speed_rpm="4800"),  # a string for a number
+        lambda d: d["bearings"][0].update(kind="hanger"),  # unknown kind
+        lambda d: d["analysis"].update(internal_damping="none"),  # not a choice
+        lambda d: d.pop("shaft"),  # required table missing
+    ],
+)
 def test_json_schema_refuses_what_the_schema_refuses(validator, change):
     data = copy.deepcopy(tomllib.loads(baseline_text()))
     change(data)
@@ -160,8 +167,13 @@ def test_docstring_examples_run(name, tmp_path, monkeypatch):
 
 
 def _documents() -> list[Path]:
-    files = [ROOT / "README.md", *sorted(DOCS.glob("*.md")), *sorted(PACKAGE.rglob("*.py")),
-             *sorted(PACKAGE.rglob("*.toml")), *sorted((ROOT / "examples").glob("*.py"))]
+    files = [
+        ROOT / "README.md",
+        *sorted(DOCS.glob("*.md")),
+        *sorted(PACKAGE.rglob("*.py")),
+        *sorted(PACKAGE.rglob("*.toml")),
+        *sorted((ROOT / "examples").glob("*.py")),
+    ]
     return [path for path in files if path.exists()]
 
 

@@ -36,8 +36,12 @@ def tube_system(n_el, length, section, fixed_fields_start, fixed_fields_end=(), 
     Me, Ke, Ge = shaft_element_matrices(np.diff(x), section, E_, G_STEEL, RHO, kappa)
     d = dm.element_dofs("shaft")
     f = dm.free
-    return (restrict(scatter(Me, d, dm.size), f).toarray(), restrict(scatter(Ke, d, dm.size), f).toarray().real,
-            restrict(scatter(Ge, d, dm.size), f).toarray(), dm)
+    return (
+        restrict(scatter(Me, d, dm.size), f).toarray(),
+        restrict(scatter(Ke, d, dm.size), f).toarray().real,
+        restrict(scatter(Ge, d, dm.size), f).toarray(),
+        dm,
+    )
 
 
 SECTION = TubeSection(0.10, 0.09)
@@ -51,8 +55,12 @@ def test_element_matrices_symmetry():
     # complex modulus scales the bending stiffness: Im K / Re K = loss factor on bending rows
     assert K[0, 1, 1].imag / K[0, 1, 1].real == pytest.approx(0.01, rel=1e-12)
     # rigid-body translation and rotation carry no strain energy
-    rigid_v = np.zeros(12); rigid_v[[1, 7]] = 1.0
-    rigid_rot = np.zeros(12); L = 0.3; rigid_rot[[5, 11]] = 1.0; rigid_rot[7] = L  # v = x, γ = 1
+    rigid_v = np.zeros(12)
+    rigid_v[[1, 7]] = 1.0
+    rigid_rot = np.zeros(12)
+    L = 0.3
+    rigid_rot[[5, 11]] = 1.0
+    rigid_rot[7] = L  # v = x, γ = 1
     assert np.abs(K[0] @ rigid_v).max() < 1e-6 * np.abs(K[0]).max()
     assert np.abs(K[0] @ rigid_rot).max() < 1e-6 * np.abs(K[0]).max()
     # mass of a rigid translation equals ρ A L exactly
@@ -149,7 +157,8 @@ def test_cantilever_static_tip_deflection_exact():
     """Hermite elements are nodally exact for a tip load: δ = PL³/3EI, tip slope PL²/2EI."""
     L, P = 3.0, 1000.0
     M, K, _, dm = tube_system(5, L, SECTION, ("u", "v", "w", "theta", "beta", "gamma"))
-    f = np.zeros(dm.size); f[dm.shaft(-1, "w")] = P
+    f = np.zeros(dm.size)
+    f[dm.shaft(-1, "w")] = P
     q = dm.expand(la.solve(K, f[dm.free]))
     EI = E * SECTION.second_moment
     assert q[dm.shaft(-1, "w")] == pytest.approx(P * L**3 / (3 * EI), rel=1e-10)
@@ -215,7 +224,8 @@ def test_tapered_cantilever_static_deflection_and_twist_against_quadrature():
 def test_tapered_boom_mass_integrates_exactly():
     """Rigid vertical translation: Σ mass = ρ ∫ A(x) dx (quadrature)."""
     Mg, _, dm, sec = _tapered_boom(10)
-    rigid = np.zeros(dm.size); rigid[dm.boom(np.arange(dm.n_boom_nodes), "v")] = 1.0
+    rigid = np.zeros(dm.size)
+    rigid[dm.boom(np.arange(dm.n_boom_nodes), "v")] = 1.0
     mass = rigid @ (Mg @ rigid)
     ref = 2800.0 * si.quad(lambda x: sec(np.array([x])).area[0], 0, 8.0, epsrel=1e-12)[0]
     assert mass == pytest.approx(ref, rel=1e-10)
@@ -232,7 +242,8 @@ def test_bearing_at_node_equals_node_spring_and_interior_point_interpolates():
     assert np.allclose(rows_end, np.roll(expected, 6, axis=1), atol=1e-15)
     # mid-element: a rigid lateral translation of the element moves the point by the same amount
     mid = relative_rows(0.37, 0.5)
-    q = np.zeros(12); q[[1, 7]] = 2e-3
+    q = np.zeros(12)
+    q[[1, 7]] = 2e-3
     assert np.allclose(mid @ q, [0, 2e-3, 0, 0, 0])
 
 
@@ -273,7 +284,8 @@ def test_end_mass_matrix_is_m_BtB_and_matches_cross_product_kinematics():
         elif dof == 1:
             r[2] = 1.0
         else:
-            rot = np.zeros(3); rot[dof - 2] = 1.0
+            rot = np.zeros(3)
+            rot[dof - 2] = 1.0
             r = np.cross(rot, e)
         cols.append(r)
     B = np.array(cols).T
@@ -288,7 +300,9 @@ def test_disk_gyroscopic_forward_whirl_rises_with_speed():
     """Rigid disk on tilt springs k: I_d ω² ∓ I_p Ω ω − k = 0 (forward root rises)."""
     Md, Gd = disk_matrices(10.0, 0.2, 0.4)
     k, speed = 1e4, 300.0
-    M = Md[4:, 4:]; G = Gd[4:, 4:]; K = k * np.eye(2)
+    M = Md[4:, 4:]
+    G = Gd[4:, 4:]
+    K = k * np.eye(2)
     A = np.block([[np.zeros((2, 2)), np.eye(2)], [-la.solve(M, K), -la.solve(M, speed * G)]])
     w = np.sort(la.eigvals(A).imag)[2:]
     Id, Ip = 0.2, 0.4

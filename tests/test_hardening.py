@@ -27,8 +27,15 @@ from flexshaft.assembly.checks import RIGID_RATIO, check_finite_model
 from flexshaft.assembly.loads import imbalance_bays, imbalance_loads
 from flexshaft.assembly.mesh import STATION_MERGE_FRACTION, merge_stations, segment_mesh
 from flexshaft.assembly.size import MAX_WORST_BAYS, ProblemSizeWarning, check_problem_size, problem_size
-from flexshaft.design import DesignError, baseline_design, baseline_text, design_from_dict, load_design, loads_design
-from flexshaft.design import with_overrides
+from flexshaft.design import (
+    DesignError,
+    baseline_design,
+    baseline_text,
+    design_from_dict,
+    load_design,
+    loads_design,
+    with_overrides,
+)
 from flexshaft.design.reading import MAX_DESIGN_BYTES, MAX_KEY_DEPTH, MAX_LINE_LENGTH, MAX_NESTING, text_problems
 
 BASELINE = baseline_design()
@@ -86,19 +93,29 @@ def test_a_transfer_function_controller_passes_check_modes_and_stability():
     damped = modes(model, model.speed, 6)
     assert damped.eigenvalues.size == 6 and np.all(np.isfinite(damped.eigenvalues))
     bare = modes(model, 0.0, 6, damped=False)
-    pd = modes(build_model(with_overrides(BASELINE, {"bearings[1].kp": 1.0e7, "bearings[1].kd": 0.0})), 0.0, 6,
-               damped=False)
+    pd = modes(
+        build_model(with_overrides(BASELINE, {"bearings[1].kp": 1.0e7, "bearings[1].kd": 0.0})), 0.0, 6, damped=False
+    )
     np.testing.assert_allclose(bare.frequencies, pd.frequencies, rtol=1e-9)
     result = stability(model, np.linspace(0.0, model.speed, 4), n_modes=4)
     assert np.all(np.isfinite(result.eigenvalues))
 
 
-@pytest.mark.parametrize("path, value", [
-    ("bearings[0].stiffness.u", 1e308), ("bearings[1].kp", 1e308), ("bearings[1].kd", 1e308),
-    ("tailboom.root_semi_axes[0]", 1e308), ("materials.t700_adiprene.density", 5e-324),
-    ("shaft.wall_thickness", 5e-324), ("shaft.x_end", 1e308), ("materials.t700_adiprene.density", 1e308),
-    ("shaft.x_end", float(2**63)), ("tailboom.length", float(2**63)),
-])
+@pytest.mark.parametrize(
+    "path, value",
+    [
+        ("bearings[0].stiffness.u", 1e308),
+        ("bearings[1].kp", 1e308),
+        ("bearings[1].kd", 1e308),
+        ("tailboom.root_semi_axes[0]", 1e308),
+        ("materials.t700_adiprene.density", 5e-324),
+        ("shaft.wall_thickness", 5e-324),
+        ("shaft.x_end", 1e308),
+        ("materials.t700_adiprene.density", 1e308),
+        ("shaft.x_end", float(2**63)),
+        ("tailboom.length", float(2**63)),
+    ],
+)
 def test_absurd_numbers_are_refused_with_the_field_and_the_range(path, value):
     """Was: 1e308 gave scipy's "array must not contain infs or NaNs", 5e-324 "not positive
     definite", x_end = 1e308 "cannot convert float NaN to integer", density 1e308 or a 2^63 m
@@ -148,13 +165,16 @@ def test_a_deep_dotted_key_is_refused_before_the_toml_parser():
     assert peak < 20e6  # the 400 KB text and its blanked copy, not the parser's nested tables
 
 
-@pytest.mark.parametrize("text, message", [
-    ("x = 1\n" + ".".join(["a"] * (MAX_KEY_DEPTH + 1)) + " = 1\n", f"dotted key with {MAX_KEY_DEPTH + 1} parts"),
-    ("[" + ".".join(["a"] * (MAX_KEY_DEPTH + 1)) + "]\n", f"dotted key with {MAX_KEY_DEPTH + 1} parts"),
-    ("x = " + "[" * (MAX_NESTING + 1) + "]" * (MAX_NESTING + 1) + "\n", f"nested more than {MAX_NESTING} deep"),
-    ("x = [\n" + "[\n" * MAX_NESTING + "]\n" * (MAX_NESTING + 1), f"nested more than {MAX_NESTING} deep"),
-    ('name = "' + "x" * MAX_LINE_LENGTH + '"\n', f"allowed: at most {MAX_LINE_LENGTH:,}"),
-])
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("x = 1\n" + ".".join(["a"] * (MAX_KEY_DEPTH + 1)) + " = 1\n", f"dotted key with {MAX_KEY_DEPTH + 1} parts"),
+        ("[" + ".".join(["a"] * (MAX_KEY_DEPTH + 1)) + "]\n", f"dotted key with {MAX_KEY_DEPTH + 1} parts"),
+        ("x = " + "[" * (MAX_NESTING + 1) + "]" * (MAX_NESTING + 1) + "\n", f"nested more than {MAX_NESTING} deep"),
+        ("x = [\n" + "[\n" * MAX_NESTING + "]\n" * (MAX_NESTING + 1), f"nested more than {MAX_NESTING} deep"),
+        ('name = "' + "x" * MAX_LINE_LENGTH + '"\n', f"allowed: at most {MAX_LINE_LENGTH:,}"),
+    ],
+)
 def test_text_limits(text, message):
     with pytest.raises(DesignError, match=message):
         loads_design(text)
@@ -170,7 +190,9 @@ def test_the_pre_scan_is_linear_in_the_text():
 def test_text_limits_ignore_quoted_and_commented_text():
     """Dots, brackets and '=' inside strings or comments are not keys or nesting."""
     dots = ".".join(["a"] * (2 * MAX_KEY_DEPTH))
-    text = baseline_text().replace('name = "', f'# {dots} = [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[\nname = "{dots} = [[[[[[[', 1)
+    text = baseline_text().replace(
+        'name = "', f'# {dots} = [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[\nname = "{dots} = [[[[[[[', 1
+    )
     assert loads_design(text).name.startswith(dots)
 
 
@@ -210,8 +232,9 @@ def test_a_dense_basis_that_would_not_fit_is_refused(model):
         modal_basis(model, 4, "qr")
 
 
-@pytest.mark.parametrize("table, count, allowed", [("bearings", 1000, 64), ("disks", 10_000, 256),
-                                                   ("bearings", 300, 64)])
+@pytest.mark.parametrize(
+    "table, count, allowed", [("bearings", 1000, 64), ("disks", 10_000, 256), ("bearings", 300, 64)]
+)
 def test_counts_are_capped(table, count, allowed):
     """Was: 1,000 bearings or 10,000 disks raised MemoryError, 300 bearings ran for minutes."""
     data = BASELINE.model_dump()
@@ -235,7 +258,9 @@ def test_the_worst_placement_is_bounded():
     Now at most MAX_WORST_BAYS bays are enumerated; more are refused by the problem-size check
     (at `check`/`run` time) and by imbalance_loads."""
     design = worst_with_bearings(24)
-    with pytest.raises(DesignError, match=r"loads.imbalance_placement: \"worst\" would enumerate 2\^\(bays-1\) = 2\^22"):
+    with pytest.raises(
+        DesignError, match=r"loads.imbalance_placement: \"worst\" would enumerate 2\^\(bays-1\) = 2\^22"
+    ):
         check_problem_size(design, "run")
     model = build_model(design)
     with pytest.raises(ValueError, match="23 bays give 2\\^22"):
@@ -268,7 +293,8 @@ def test_a_slow_design_is_refused_with_the_numbers_and_what_to_change():
     data = BASELINE.model_dump()
     controller = {"numerator": [1.0] * 21, "denominator": [1.0] + [2.0] * 20}
     data["bearings"] = [data["bearings"][0]] + [
-        {"name": f"amb{k}", "kind": "active", "x": 1.0 + 0.1 * k, "controller": controller} for k in range(63)]
+        {"name": f"amb{k}", "kind": "active", "x": 1.0 + 0.1 * k, "controller": controller} for k in range(63)
+    ]
     design = design_from_dict(data)
     with pytest.raises(DesignError, match=r"bearings: 63 active bearings add 2,520 controller states"):
         check_problem_size(design, "run")
@@ -335,11 +361,16 @@ def test_too_stiff_a_support_for_the_mesh_is_refused():
 
 def test_derived_overflow_checks():
     controller = {"numerator": [1e99, 1e99], "denominator": [1e-99, 1.0]}
-    message = refused({"bearings[1].kp": None, "bearings[1].kd": None, "bearings[1].controller": controller},
-                      "bearings[1].controller")
+    message = refused(
+        {"bearings[1].kp": None, "bearings[1].kd": None, "bearings[1].controller": controller}, "bearings[1].controller"
+    )
     assert "realization with entries up to 1e+297" in message
-    magnet = {"bearings[1].coil_turns": 1e5, "bearings[1].pole_area": 10.0, "bearings[1].bias_current": 1e4,
-              "bearings[1].air_gap": 1e-6}
+    magnet = {
+        "bearings[1].coil_turns": 1e5,
+        "bearings[1].pole_area": 10.0,
+        "bearings[1].bias_current": 1e4,
+        "bearings[1].air_gap": 1e-6,
+    }
     assert "gives the magnet gain ki" in refused(magnet, "bearings[1].coil_turns")
     torque = refused({"operating.speed_rpm": 1e-6}, "operating.power")
     assert "a torque of at most 1e+09 N m" in torque

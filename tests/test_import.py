@@ -41,9 +41,7 @@ def fresh_import(module: str) -> tuple[float, list[str]]:
         f"heavy = sorted(name for name in {HEAVY!r} if name in sys.modules)\n"
         "print(json.dumps([seconds, heavy]))\n"
     )
-    completed = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True
-    )
+    completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True)
     seconds, heavy = json.loads(completed.stdout.strip().splitlines()[-1])
     return seconds, heavy
 

@@ -94,11 +94,16 @@ def test_transformed_stiffness_matches_jones_explicit_formulas(angle_deg):
     c, s = np.cos(np.radians(angle_deg)), np.sin(np.radians(angle_deg))
     expected = np.array(
         [
-            [Q11 * c**4 + 2 * (Q12 + 2 * Q66) * s**2 * c**2 + Q22 * s**4,
-             (Q11 + Q22 - 4 * Q66) * s**2 * c**2 + Q12 * (s**4 + c**4),
-             (Q11 - Q12 - 2 * Q66) * s * c**3 + (Q12 - Q22 + 2 * Q66) * s**3 * c],
-            [0, Q11 * s**4 + 2 * (Q12 + 2 * Q66) * s**2 * c**2 + Q22 * c**4,
-             (Q11 - Q12 - 2 * Q66) * s**3 * c + (Q12 - Q22 + 2 * Q66) * s * c**3],
+            [
+                Q11 * c**4 + 2 * (Q12 + 2 * Q66) * s**2 * c**2 + Q22 * s**4,
+                (Q11 + Q22 - 4 * Q66) * s**2 * c**2 + Q12 * (s**4 + c**4),
+                (Q11 - Q12 - 2 * Q66) * s * c**3 + (Q12 - Q22 + 2 * Q66) * s**3 * c,
+            ],
+            [
+                0,
+                Q11 * s**4 + 2 * (Q12 + 2 * Q66) * s**2 * c**2 + Q22 * c**4,
+                (Q11 - Q12 - 2 * Q66) * s**3 * c + (Q12 - Q22 + 2 * Q66) * s * c**3,
+            ],
             [0, 0, (Q11 + Q22 - 2 * Q12 - 2 * Q66) * s**2 * c**2 + Q66 * (s**4 + c**4)],
         ]
     )
@@ -242,9 +247,12 @@ def test_transverse_shear_stiffness_of_isotropic_and_unidirectional_plies():
     iso = Laminate([0.3, -1.1], [1e-3, 2e-3], Lamina.isotropic(70e9, G, 2700.0))
     np.testing.assert_allclose(transverse_shear_stiffness(iso), 5 / 6 * G * 3e-3 * np.eye(2), rtol=TIGHT, atol=1e-6)
     ply = Lamina(140e9, 10e9, 5e9, 0.3, 1600.0, G_13=4e9, G_23=3.5e9, shear_correction=0.9)
-    np.testing.assert_allclose(transverse_shear_stiffness(one_ply(0.0, ply)), 0.9e-3 * np.diag([4e9, 3.5e9]), rtol=TIGHT)
-    np.testing.assert_allclose(transverse_shear_stiffness(one_ply(90.0, ply)), 0.9e-3 * np.diag([3.5e9, 4e9]),
-                               rtol=TIGHT, atol=1e-3)
+    np.testing.assert_allclose(
+        transverse_shear_stiffness(one_ply(0.0, ply)), 0.9e-3 * np.diag([4e9, 3.5e9]), rtol=TIGHT
+    )
+    np.testing.assert_allclose(
+        transverse_shear_stiffness(one_ply(90.0, ply)), 0.9e-3 * np.diag([3.5e9, 4e9]), rtol=TIGHT, atol=1e-3
+    )
     assert (CARBON_EPOXY.G_13, CARBON_EPOXY.G_23, CARBON_EPOXY.shear_correction) == (5e9, 10e9 / 3, 5 / 6)
 
 
@@ -288,8 +296,9 @@ def test_thermal_residual_stresses_of_a_cross_ply_closed_form():
     eps0 = dT [(Q11 + Q12) alpha_L + (Q12 + Q22) alpha_T] / (Q11 + 2 Q12 + Q22); the 0 deg ply
     then carries sigma_1 = Q11 (eps0 - alpha_L dT) + Q12 (eps0 - alpha_T dT) and sigma_2 =
     Q12 (eps0 - alpha_L dT) + Q22 (eps0 - alpha_T dT), the 90 deg ply the same (Jones sec. 4.5)."""
-    ply = Lamina.from_loss_factors(115e9, 0.10e9, 0.035e9, 0.35, 1650.0, 0.003, 0.12, 0.12,
-                                   alpha_L=-0.4e-6, alpha_T=110e-6)
+    ply = Lamina.from_loss_factors(
+        115e9, 0.10e9, 0.035e9, 0.35, 1650.0, 0.003, 0.12, 0.12, alpha_L=-0.4e-6, alpha_T=110e-6
+    )
     dT = -65.0
     nu_TL = 0.35 * 0.10 / 115.0
     den = 1 - 0.35 * nu_TL

@@ -29,9 +29,16 @@ import flexshaft
 ROOT = Path(flexshaft.__file__).parent
 
 LAYERS = {
-    "units": 0, "_threads": 0, "_pool": 0, "netcdf": 0, "plot": 0,
+    "units": 0,
+    "_threads": 0,
+    "_pool": 0,
+    "netcdf": 0,
+    "plot": 0,
     "design": 1,
-    "laminate": 2, "strength": 2, "buckling": 2, "elements": 2,
+    "laminate": 2,
+    "strength": 2,
+    "buckling": 2,
+    "elements": 2,
     "assembly": 3,
     "analyses": 4,
     "thermal": 5,
@@ -75,8 +82,11 @@ def layer(module: str) -> int | None:
 
 
 def test_every_subpackage_has_a_layer():
-    top = {p.stem if p.is_file() else p.name for p in ROOT.iterdir()
-           if (p.suffix == ".py" or (p.is_dir() and (p / "__init__.py").exists())) and p.name != "__init__.py"}
+    top = {
+        p.stem if p.is_file() else p.name
+        for p in ROOT.iterdir()
+        if (p.suffix == ".py" or (p.is_dir() and (p / "__init__.py").exists())) and p.name != "__init__.py"
+    }
     assert top - set(LAYERS) == set(), "a new top-level module needs a layer in this test and in the docs"
 
 
@@ -108,7 +118,7 @@ def test_import_graph_has_no_cycle():
             if nxt == node or nxt.startswith(node + "."):  # a package importing its own submodules
                 continue
             if state.get(nxt) == 1:
-                cycles.append(" -> ".join(stack[stack.index(nxt):] + [nxt]) if nxt in stack else f"{node} -> {nxt}")
+                cycles.append(" -> ".join(stack[stack.index(nxt) :] + [nxt]) if nxt in stack else f"{node} -> {nxt}")
             elif state.get(nxt) is None:
                 visit(nxt, stack + [nxt])
         state[node] = 2

@@ -79,20 +79,19 @@ def exact_frequencies(speed, whirl, n_roots, k=KB):
 
         def funcs(x):  # rows: v, v', v'', v''' for the 4 basis functions
             ch, sh, c, sn = np.cosh(s1 * x), np.sinh(s1 * x), np.cos(s2 * x), np.sin(s2 * x)
-            return np.array([
-                [ch, sh, c, sn],
-                [s1 * sh, s1 * ch, -s2 * sn, s2 * c],
-                [s1**2 * ch, s1**2 * sh, -s2**2 * c, -s2**2 * sn],
-                [s1**3 * sh, s1**3 * ch, s2**3 * sn, -s2**3 * c],
-            ])
+            return np.array(
+                [
+                    [ch, sh, c, sn],
+                    [s1 * sh, s1 * ch, -s2 * sn, s2 * c],
+                    [s1**2 * ch, s1**2 * sh, -(s2**2) * c, -(s2**2) * sn],
+                    [s1**3 * sh, s1**3 * ch, s2**3 * sn, -(s2**3) * c],
+                ]
+            )
 
         f0, fL = funcs(0.0), funcs(L)
-        rows = np.array([
-            EI * f0[2],
-            EI * f0[3] + a * f0[1] + k * f0[0],
-            EI * fL[2],
-            -EI * fL[3] - a * fL[1] + k * fL[0],
-        ])
+        rows = np.array(
+            [EI * f0[2], EI * f0[3] + a * f0[1] + k * f0[0], EI * fL[2], -EI * fL[3] - a * fL[1] + k * fL[0]]
+        )
         scale = np.linalg.norm(rows, axis=0)
         return np.linalg.det(rows / scale)
 
@@ -212,8 +211,12 @@ def test_geometry_caches_give_the_models_of_a_cold_build():
         return build_model(design)
 
     base = baseline_design()
-    variants = [base, with_overrides(base, {"tailboom.wall_thickness": 0.005}),
-                with_overrides(base, {"bearings[0].x": 2.0}), with_overrides(base, {"shaft.layup": "(45/-45/-45/45)"})]
+    variants = [
+        base,
+        with_overrides(base, {"tailboom.wall_thickness": 0.005}),
+        with_overrides(base, {"bearings[0].x": 2.0}),
+        with_overrides(base, {"shaft.layup": "(45/-45/-45/45)"}),
+    ]
     warm = [build_model(d) for d in variants]  # in this order: each reuses what the one before cached
     for design, model in zip(variants, warm):
         reference = cold(design)

@@ -98,7 +98,9 @@ def test_balance_grade_relation():
         balance_grade_eccentricity(-1.0, 100.0)
 
 
-@pytest.mark.parametrize("kind, mean", [("fixed", 1.0), ("disk", 2 / 3), ("uniform", 0.5), ("rayleigh", np.sqrt(np.pi / 2))])
+@pytest.mark.parametrize(
+    "kind, mean", [("fixed", 1.0), ("disk", 2 / 3), ("uniform", 0.5), ("rayleigh", np.sqrt(np.pi / 2))]
+)
 def test_eccentricity_distributions(kind, mean):
     """Means: disk (e = s√u) 2s/3, uniform s/2, Rayleigh σ√(π/2); 200 000 draws, 5 σ bound."""
     draws = EccentricityDistribution(kind, 1.0).sample(np.random.default_rng(3), 200_000)
@@ -138,8 +140,9 @@ def test_design_imbalance_is_one_sample(two_bay):
     draws = draw_imbalance([0], units.n_bays, EccentricityDistribution("fixed", e), "mid_bay", seed=0)
     draws.angle[:] = 0.0
     out = sample_outputs(model, units, draws, strength=False)
-    curves = spinup_curves(actuator_receptance(model, speeds, imbalance_loads(model, "mid_bay")),
-                           [a.controller for a in model.actuators])
+    curves = spinup_curves(
+        actuator_receptance(model, speeds, imbalance_loads(model, "mid_bay")), [a.controller for a in model.actuators]
+    )
     assert out["shaft_peak"][0] == pytest.approx(curves.shaft_peak.max(), rel=1e-6)
     assert out["actuator_orbit_max"][0] == pytest.approx(curves.actuator_displacement.max(), rel=1e-6)
     assert out["actuator_force_max"][0] == pytest.approx(curves.actuator_force.max(), rel=1e-6)
@@ -204,11 +207,20 @@ def test_same_seed_same_results_locally_and_on_dask(two_bay, tmp_path):
     xr = pytest.importorskip("xarray")
     distributed = pytest.importorskip("distributed")
     design, _ = two_bay
-    options = dict(seed=42, distribution=EccentricityDistribution("disk", 2e-5), placement="uniform", gap=2e-4,
-                   force_limit=100.0, n_speeds=30, strength=False)
+    options = {
+        "seed": 42,
+        "distribution": EccentricityDistribution("disk", 2e-5),
+        "placement": "uniform",
+        "gap": 2e-4,
+        "force_limit": 100.0,
+        "n_speeds": 30,
+        "strength": False,
+    }
     one = run_montecarlo(design, 12, jobs=1, chunk_size=5, **options)
     two = run_montecarlo(design, 12, jobs=2, chunk_size=3, **options)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
+    ) as cluster:
         with distributed.Client(cluster) as client:
             remote = run_montecarlo(design, 12, client=client, chunk_size=4, run_dir=tmp_path / "mc", **options)
     xr.testing.assert_identical(one.dataset, two.dataset)
@@ -253,8 +265,13 @@ def test_runup_samples_superpose_the_bay_transients(two_bay):
     samples = runup_montecarlo(model, profile, 3, seed=9, distribution=dist, rtol=1e-7, output_step=1e-3)
     for k in range(3):
         U = samples.draws.eccentricity[k] * model.shaft_mass / 2
-        run = transient_response(model, profile, loads_per_speed_squared=per_bay_imbalance_loads(model, U, samples.draws.angle[k]),
-                                 rtol=1e-7, output_step=1e-3)
+        run = transient_response(
+            model,
+            profile,
+            loads_per_speed_squared=per_bay_imbalance_loads(model, U, samples.draws.angle[k]),
+            rtol=1e-7,
+            output_step=1e-3,
+        )
         assert samples.shaft_peak[k] == pytest.approx(run.shaft_peak.max(), rel=1e-4)
         assert samples.actuator_orbit_max[k] == pytest.approx(run.actuator_displacement.max(), rel=1e-4)
         assert samples.actuator_force_max[k] == pytest.approx(run.actuator_force.max(), rel=1e-4)
@@ -276,8 +293,9 @@ def test_exceedances_add_the_static_offset_and_force_as_the_verdict_does():
     offset = float(np.hypot(*np.real(amb.lateral_rows @ static)))
     force = abs(amb.law(0j)) * offset  # PD, collocated: the static force is the law times the offset
     assert offset > 1e-6
-    result = run_montecarlo(design, 8, seed=3, grade_mm_s=6.3, n_speeds=20, gap=1e-4, force_limit=10.0,
-                            strength=False, progress=False)
+    result = run_montecarlo(
+        design, 8, seed=3, grade_mm_s=6.3, n_speeds=20, gap=1e-4, force_limit=10.0, strength=False, progress=False
+    )
     ds = result.dataset
     np.testing.assert_allclose(ds["actuator_excursion_max"].values, ds["actuator_orbit_max"].values + offset, rtol=1e-6)
     np.testing.assert_allclose(ds["actuator_load_max"].values, ds["actuator_force_max"].values + force, rtol=1e-6)

@@ -84,8 +84,11 @@ def test_problem_refuses_unknown_paths_objectives_checks_and_templates():
 
 
 def test_layup_template_ply_count_and_base_values():
-    problem = DesignProblem((DesignVariable("layup.a", 30, 70), DesignVariable("layup.n", 1, 4, integer=True)),
-                            layup="({a}/{-a}/0_{n})s", ply_thickness=0.375e-3)
+    problem = DesignProblem(
+        (DesignVariable("layup.a", 30, 70), DesignVariable("layup.n", 1, 4, integer=True)),
+        layup="({a}/{-a}/0_{n})s",
+        ply_thickness=0.375e-3,
+    )
     overrides = problem.overrides(problem.values([52.4, 2.6]))
     assert overrides["shaft.layup"] == "(52.4/-52.4/0_3)s"
     # 2 × (2 angle plies + 3 zero plies) = 10 plies of 0.375 mm
@@ -102,10 +105,14 @@ def test_layup_template_ply_count_and_base_values():
 def test_not_evaluated_counts_as_violated():
     problem = zdt1_problem()
     names = problem.output_names
-    rows = np.array([[0.5, 0.4, 0.4, 1.0],        # feasible
-                     [0.5, 0.4, 0.4, np.nan],     # margin_probe not evaluated
-                     [0.5, 0.4, -0.2, 1.0],       # margin_lower fails
-                     [np.nan, np.nan, np.nan, np.nan]])  # the evaluation failed
+    rows = np.array(
+        [
+            [0.5, 0.4, 0.4, 1.0],  # feasible
+            [0.5, 0.4, 0.4, np.nan],  # margin_probe not evaluated
+            [0.5, 0.4, -0.2, 1.0],  # margin_lower fails
+            [np.nan, np.nan, np.nan, np.nan],
+        ]
+    )  # the evaluation failed
     assert names == ("f1", "f2", "margin_lower", "margin_probe")
     F, G = objectives_and_constraints(problem, rows, [True, True, True, True])
     assert np.all(G[0] <= 0)
@@ -151,10 +158,20 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
     designs; the bound 5 % says the screening ranks designs, the final ones are re-verified
     with the full run), and every status is the same."""
     tuned = tuned_design()
-    designs = [tuned, baseline_design(),
-               with_overrides(tuned, {"shaft.wall_thickness": 0.002, "shaft.layup": "(45/-45/10/-10)s",
-                                      "bearings[1].kp": 1e6, "bearings[2].kd": 1500.0}),
-               embedded_design("current")]  # segmented aluminium: metal strength and coupling angles too
+    designs = [
+        tuned,
+        baseline_design(),
+        with_overrides(
+            tuned,
+            {
+                "shaft.wall_thickness": 0.002,
+                "shaft.layup": "(45/-45/10/-10)s",
+                "bearings[1].kp": 1e6,
+                "bearings[2].kd": 1500.0,
+            },
+        ),
+        embedded_design("current"),
+    ]  # segmented aluminium: metal strength and coupling angles too
     for design in designs:
         full = run_analysis(design, studies=None)
         lean = verdict_run(design, "verdict")
@@ -322,11 +339,33 @@ def test_cli_optimizes_writes_verified_design_files(tmp_path):
     base = tmp_path / "tuned.toml"
     base.write_text(design_toml(tuned_design()))
     out = tmp_path / "opt"
-    result = runner.invoke(app, [
-        "optimize", str(base), "--budget", "6", "--pop-size", "3", "--out", str(out), "--seed", "4",
-        "--var", "bearings[1].kd,bearings[2].kd=300:1500", "--var", "bearings[1].kp,bearings[2].kp=3e5:1e6:log",
-        "--objective", "actuator_force", "--objective", "safety_factor", "--reference", "baseline", "--designs", "2",
-    ])
+    result = runner.invoke(
+        app,
+        [
+            "optimize",
+            str(base),
+            "--budget",
+            "6",
+            "--pop-size",
+            "3",
+            "--out",
+            str(out),
+            "--seed",
+            "4",
+            "--var",
+            "bearings[1].kd,bearings[2].kd=300:1500",
+            "--var",
+            "bearings[1].kp,bearings[2].kp=3e5:1e6:log",
+            "--objective",
+            "actuator_force",
+            "--objective",
+            "safety_factor",
+            "--reference",
+            "baseline",
+            "--designs",
+            "2",
+        ],
+    )
     assert result.exit_code == 0, result.output
     pareto = xr.load_dataset(out / "pareto.nc")
     assert pareto.sizes["design"] >= 1 and np.all(pareto["verified"].values[pareto["file"].values != ""] == 1)
@@ -339,15 +378,39 @@ def test_cli_optimizes_writes_verified_design_files(tmp_path):
     assert strict.exit_code == 0, strict.output
     evaluations = xr.load_dataset(out / "evaluations.nc")
     assert evaluations.sizes["evaluation"] == 6 and set(CHECK_KEYS) <= {
-        k[len("margin_"):] for k in evaluations.data_vars if k.startswith("margin_")}
+        k[len("margin_") :] for k in evaluations.data_vars if k.startswith("margin_")
+    }
     from flexshaft.sweep import SweepWarning
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        again = runner.invoke(app, ["optimize", str(base), "--budget", "6", "--pop-size", "3", "--out", str(out),
-                                    "--seed", "4", "--var", "bearings[1].kd,bearings[2].kd=300:1500", "--var",
-                                    "bearings[1].kp,bearings[2].kp=3e5:1e6:log", "--objective", "actuator_force",
-                                    "--objective", "safety_factor", "--reference", "baseline", "--designs", "2",
-                                    "--no-verify"])
+        again = runner.invoke(
+            app,
+            [
+                "optimize",
+                str(base),
+                "--budget",
+                "6",
+                "--pop-size",
+                "3",
+                "--out",
+                str(out),
+                "--seed",
+                "4",
+                "--var",
+                "bearings[1].kd,bearings[2].kd=300:1500",
+                "--var",
+                "bearings[1].kp,bearings[2].kp=3e5:1e6:log",
+                "--objective",
+                "actuator_force",
+                "--objective",
+                "safety_factor",
+                "--reference",
+                "baseline",
+                "--designs",
+                "2",
+                "--no-verify",
+            ],
+        )
     assert again.exit_code == 0 and "(0 computed)" in again.output  # everything from the run folder
     assert not [w for w in caught if issubclass(w.category, SweepWarning) or "damaged" in str(w.message)]

@@ -10,10 +10,9 @@ equilibrium checks the bearing reactions the report shows.
 
 from __future__ import annotations
 
+import matplotlib
 import numpy as np
 import pytest
-
-import matplotlib
 
 matplotlib.use("Agg")
 
@@ -234,8 +233,10 @@ def test_stability_plot_marks_the_onset(model):
     assert len(onset) == 1
     assert onset[0].get_xdata()[0] == pytest.approx(rad_s_to_rpm(s.onset_speed))
     assert onset[0].get_ydata()[0] == 0.0
-    assert any(t.get_text().startswith(f"onset {rad_s_to_rpm(s.onset_speed):.0f} rpm\nmode {s.unstable_mode + 1}")
-               for t in ax.texts)
+    assert any(
+        t.get_text().startswith(f"onset {rad_s_to_rpm(s.onset_speed):.0f} rpm\nmode {s.unstable_mode + 1}")
+        for t in ax.texts
+    )
     assert any(ln.get_label() == "required δ ≥ 0.1" for ln in ax.get_lines())
     re = s.plot("real_part")
     assert re.axes[0].get_ylabel() == "Re(s) [1/s]"
@@ -303,7 +304,7 @@ def test_verdict_plot_margin_bars():
     )
     fig = Verdict(checks).plot()
     ax = fig.axes[0]
-    bars = [p for p in ax.patches]
+    bars = list(ax.patches)
     assert len(bars) == 4
     widths = [b.get_width() for b in bars]
     assert widths[0] == pytest.approx(1.0) and widths[1] == pytest.approx(-278.0 / 578.0)
@@ -325,8 +326,10 @@ def test_render_figures_serial_and_in_worker_processes(tmp_path, model):
     m = modes(model, model.speed, n_modes=6)
     from flexshaft.report.driveline import plot_result
 
-    jobs = [FigureJob("shapes", plot_result, (m, "shapes")),
-            FigureJob("bode", bode_figure, (np.arange(3.0), {"a": np.array([1e-4, 2e-4j, -1e-4])}))]
+    jobs = [
+        FigureJob("shapes", plot_result, (m, "shapes")),
+        FigureJob("bode", bode_figure, (np.arange(3.0), {"a": np.array([1e-4, 2e-4j, -1e-4])})),
+    ]
     serial = render_figures(jobs, tmp_path / "serial")
     forked = render_figures(jobs, tmp_path / "forked", processes=2, svg=True)
     for done in (serial, forked):

@@ -13,7 +13,7 @@ def test_readme_api_snippet_runs(tmp_path, monkeypatch):
     from matplotlib.figure import Figure
 
     text = (Path(__file__).parents[1] / "README.md").read_text(encoding="utf-8")
-    section = text[text.index("## Python API"):]
+    section = text[text.index("## Python API") :]
     code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     monkeypatch.chdir(tmp_path)
     namespace: dict = {}

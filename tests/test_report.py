@@ -64,13 +64,44 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     whirl[:10, :4] = "planar"  # at rest the pairs are planar
     critical = [60.0 * 20.0 / (1 - 0.08), 60.0 * 70.0 / (1 - 0.2)]  # 1x crossings of forward modes
     # log decrement: forward modes lose damping with speed, the first one turns unstable
-    delta = np.column_stack([0.08 - 0.1 * speeds / 8000.0, np.full(161, 0.06), 0.2 - 0.1 * speeds / 8000.0,
-                             np.full(161, 0.15), np.full(161, 0.3)])
-    yield_fig = [("campbell", campbell_figure(speeds, freqs, whirl, critical, OPERATING_RPM, harmonics=(1, 2),
-                                              log_decrement=delta, main_rotor_hz={"4/rev": 17.6}))]
+    delta = np.column_stack(
+        [
+            0.08 - 0.1 * speeds / 8000.0,
+            np.full(161, 0.06),
+            0.2 - 0.1 * speeds / 8000.0,
+            np.full(161, 0.15),
+            np.full(161, 0.3),
+        ]
+    )
+    yield_fig = [
+        (
+            "campbell",
+            campbell_figure(
+                speeds,
+                freqs,
+                whirl,
+                critical,
+                OPERATING_RPM,
+                harmonics=(1, 2),
+                log_decrement=delta,
+                main_rotor_hz={"4/rev": 17.6},
+            ),
+        )
+    ]
     onset = 8000.0 * 0.8
-    yield_fig.append(("stability", log_decrement_figure(speeds, {"design": delta}, {"design": onset}, OPERATING_RPM,
-                                                        onset_text={"design": "mode 1, forward whirl"}, required=0.1)))
+    yield_fig.append(
+        (
+            "stability",
+            log_decrement_figure(
+                speeds,
+                {"design": delta},
+                {"design": onset},
+                OPERATING_RPM,
+                onset_text={"design": "mode 1, forward whirl"},
+                required=0.1,
+            ),
+        )
+    )
 
     amplitudes = {
         "max shaft": _jeffcott_amplitude(speeds, critical[0], 0.05, 0.2e-3),
@@ -80,10 +111,18 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     yield_fig.append(("imbalance", imbalance_response_figure(speeds, amplitudes, OPERATING_RPM, GAP, log_y=True)))
     r = speeds / critical[0]
     receptance = 0.2e-3 * r**2 / (1.0 - r**2 + 0.1j * r)  # Jeffcott rotor, zeta = 0.05 [m]
-    yield_fig.append(("bode", bode_figure(speeds[1:], {"disk, v": receptance[1:], "disk, w": -1j * receptance[1:]},
-                                          OPERATING_RPM, GAP)))
-    yield_fig.append(("orbits", orbit_figure({"amb_1": (0.2e-3, -0.15e-3j), "amb_2": (1e-6, 2e-6 + 1e-6j)},
-                                             {"amb_1": GAP, "amb_2": GAP})))
+    yield_fig.append(
+        (
+            "bode",
+            bode_figure(speeds[1:], {"disk, v": receptance[1:], "disk, w": -1j * receptance[1:]}, OPERATING_RPM, GAP),
+        )
+    )
+    yield_fig.append(
+        (
+            "orbits",
+            orbit_figure({"amb_1": (0.2e-3, -0.15e-3j), "amb_2": (1e-6, 2e-6 + 1e-6j)}, {"amb_1": GAP, "amb_2": GAP}),
+        )
+    )
 
     length = 8.0  # [m]
     x = np.linspace(0.0, length, 41)
@@ -91,16 +130,26 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     boom_v = -2e-3 * (boom_x / length) ** 2 * (3 - boom_x / length)  # cantilever tip load shape [m]
     shaft_v = np.interp(x, boom_x, boom_v) - 0.4e-3 * np.sin(np.pi * x / 2.0) ** 2
     shaft_w = 0.2e-3 * np.sin(np.pi * x / length)
-    yield_fig.append(("deflection", deflected_shape_figure(
-        x, shaft_v, shaft_w, boom_x, boom_v, 0.5 * boom_v, bearings_x=(0.0, 2.0, 4.0, 6.0, 8.0))))
+    yield_fig.append(
+        (
+            "deflection",
+            deflected_shape_figure(
+                x, shaft_v, shaft_w, boom_x, boom_v, 0.5 * boom_v, bearings_x=(0.0, 2.0, 4.0, 6.0, 8.0)
+            ),
+        )
+    )
 
     safety = 3.0 + 1.5 * np.cos(2 * np.pi * x / 4.0) + 0.2 * x
-    yield_fig.append(("safety", safety_factor_figure(
-        x, safety, label="ply 3 (+55°), φ = 120°, σ2 dominates <check escaping>")))
+    yield_fig.append(
+        ("safety", safety_factor_figure(x, safety, label="ply 3 (+55°), φ = 120°, σ2 dominates <check escaping>"))
+    )
 
     shapes = [
-        {"label": f"mode {k}, {20.0 * k**2:.1f} Hz, forward", "v": np.sin(k * np.pi * x / length),
-         "w": -1j * np.sin(k * np.pi * x / length)}
+        {
+            "label": f"mode {k}, {20.0 * k**2:.1f} Hz, forward",
+            "v": np.sin(k * np.pi * x / length),
+            "w": -1j * np.sin(k * np.pi * x / length),
+        }
         for k in (1, 2, 3)
     ]
     shapes.append({"label": "mode 4, planar", "v": np.zeros_like(x), "w": np.sin(4 * np.pi * x / length)})
@@ -110,8 +159,17 @@ def _synthetic_figures(folder: Path) -> list[tuple[str, dict[str, Path]]]:
     displacement = {"amb_1": amplitudes["amb_1"], "amb_2": amplitudes["amb_2"]}
     force = {name: 2e6 * d for name, d in displacement.items()}  # PD stiffness 2 MN/m [N]
     yield_fig.append(("actuators", actuator_figure(speeds, displacement, force, GAP, operating_rpm=OPERATING_RPM)))
-    yield_fig.append(("verdict", margins_figure(["safety factor", "whirl onset", "temperature"], [0.8, -0.3, np.nan],
-                                                ["pass", "fail", "not evaluated"], ["+1.2", "-1440 rpm", ""])))
+    yield_fig.append(
+        (
+            "verdict",
+            margins_figure(
+                ["safety factor", "whirl onset", "temperature"],
+                [0.8, -0.3, np.nan],
+                ["pass", "fail", "not evaluated"],
+                ["+1.2", "-1440 rpm", ""],
+            ),
+        )
+    )
     return [(stem, save_figure(fig, folder, stem)) for stem, fig in yield_fig]
 
 
@@ -135,16 +193,30 @@ def report(tmp_path_factory: pytest.TempPathFactory) -> dict:
         Section(
             "Design summary",
             paragraphs=["Baseline FMC shaft on a flexible tailboom. Escaping check: a < b & c > d."],
-            tables=[Table("Critical speeds", ["mode", "speed [rpm]", "whirl", "passed"],
-                          [[1, 1304.3478, "forward", True], [2, 5250.0, "forward", False],
-                           [3, float("nan"), None, np.bool_(True)]])],
+            tables=[
+                Table(
+                    "Critical speeds",
+                    ["mode", "speed [rpm]", "whirl", "passed"],
+                    [
+                        [1, 1304.3478, "forward", True],
+                        [2, 5250.0, "forward", False],
+                        [3, float("nan"), None, np.bool_(True)],
+                    ],
+                )
+            ],
         ),
         Section("Dynamics", figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[:6]]),
-        Section("Strength and actuators",
-                figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[6:]]),
+        Section(
+            "Strength and actuators", figures=[FigureRef(paths["png"], captions[stem]) for stem, paths in saved[6:]]
+        ),
     ]
-    path = write_report(folder, "flexshaft report: baseline", sections, design_name="baseline <v1>",
-                        generated=dt.datetime(2024, 5, 1, 12, 30))
+    path = write_report(
+        folder,
+        "flexshaft report: baseline",
+        sections,
+        design_name="baseline <v1>",
+        generated=dt.datetime(2024, 5, 1, 12, 30),
+    )
     return {"folder": folder, "saved": saved, "path": path, "n_figures": len(saved)}
 
 
@@ -183,7 +255,9 @@ def test_images_are_shown_at_their_physical_size(tmp_path: Path) -> None:
         fig = imbalance_response_figure([0.0, 1.0], {"a": [1e-3, 2e-3]})
         figure_paths.append(save_figure(fig, tmp_path, f"dpi{dpi}", svg=False, dpi=dpi))
     assert all("svg" not in p for p in figure_paths) and not list(tmp_path.glob("*.svg"))
-    page = render_report("t", [Section("s", figures=[FigureRef(p["png"], f"c{k}") for k, p in enumerate(figure_paths)])])
+    page = render_report(
+        "t", [Section("s", figures=[FigureRef(p["png"], f"c{k}") for k, p in enumerate(figure_paths)])]
+    )
     assert page.count('width="768" height="461"') == 3
     assert "(dpi100.png)" in page and ".svg" not in page  # no SVG file, none named
 
@@ -222,7 +296,14 @@ def test_report_renders_in_headless_chromium(report: dict, tmp_path: Path) -> No
     assert image_load_title(chromium, report["path"], tmp_path) == f"IMAGES-OK:{report['n_figures']}"
 
     screenshot = tmp_path / "report.png"
-    shot = run_chromium(chromium, tmp_path, "--window-size=1400,3000", "--hide-scrollbars", f"--screenshot={screenshot}", report["path"].as_uri())
+    shot = run_chromium(
+        chromium,
+        tmp_path,
+        "--window-size=1400,3000",
+        "--hide-scrollbars",
+        f"--screenshot={screenshot}",
+        report["path"].as_uri(),
+    )
     assert shot.returncode == 0, shot.stderr[-2000:]
     assert screenshot.stat().st_size > 50_000
     import matplotlib.image

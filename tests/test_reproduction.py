@@ -161,8 +161,10 @@ def strength_row() -> dict:
         model = build_model(design)
         q_static = static_response(model, external_static_load(model) + torque_load(model))
         q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
-        out[name] = min((shaft_safety_factor(model, q_static, q_imb[:, c]) for c in range(q_imb.shape[1])),
-                        key=lambda r: r.safety_factor)
+        out[name] = min(
+            (shaft_safety_factor(model, q_static, q_imb[:, c]) for c in range(q_imb.shape[1])),
+            key=lambda r: r.safety_factor,
+        )
     return out
 
 
@@ -184,8 +186,12 @@ WALLS = np.array([1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0]) * 1e-3
 def wall_frequency_row() -> np.ndarray:
     """First four lateral shaft-mode frequencies at rest [Hz] for each wall of WALLS, Table 3.1."""
     design = baseline_design()
-    return np.array([lateral_shaft_frequencies(build_model(with_overrides(design, {"shaft.wall_thickness": float(w)})))[:4]
-                     for w in WALLS])
+    return np.array(
+        [
+            lateral_shaft_frequencies(build_model(with_overrides(design, {"shaft.wall_thickness": float(w)})))[:4]
+            for w in WALLS
+        ]
+    )
 
 
 @functools.cache
@@ -233,10 +239,12 @@ def surfaces_row(damping: str = "thesis") -> dict:
     k = int(np.argmax(high.shaft_peak))
     band = np.abs(speeds / speeds[k] - 1.0) <= 0.1
     return {
-        "peak_high": float(high.shaft_peak[k]), "speed": float(speeds[k]),
+        "peak_high": float(high.shaft_peak[k]),
+        "speed": float(speeds[k]),
         "station": float(rec.shaft_x[np.argmax(high.shaft_orbit[:, k])]),
         "median_high": float(np.median(high.shaft_peak)),
-        "band_low": float(low.shaft_peak[band].max()), "peak_low": float(low.shaft_peak.max()),
+        "band_low": float(low.shaft_peak[band].max()),
+        "peak_low": float(low.shaft_peak.max()),
     }
 
 
@@ -301,8 +309,9 @@ def test_embedded_designs_differ_only_in_the_tuned_actuators() -> None:
     changes = {"name": tuned.name}
     for i in actuator_paths(base):
         bearing = tuned.bearings[i]
-        changes.update({f"bearings[{i}].kp": bearing.kp, f"bearings[{i}].kd": bearing.kd,
-                        f"bearings[{i}].gap": bearing.gap})
+        changes.update(
+            {f"bearings[{i}].kp": bearing.kp, f"bearings[{i}].kd": bearing.kd, f"bearings[{i}].gap": bearing.gap}
+        )
     assert with_overrides(base, changes) == tuned
     # every tuned value is marked in its comment, every calibrated value names its finding
     for line in embedded_text("baseline").splitlines() + embedded_text("tuned").splitlines():
@@ -428,8 +437,11 @@ def forward_end_row(end: str) -> tuple:
 
     design = with_overrides(baseline_design(), {**THESIS_DAMPING, "shaft.fixed_start": FORWARD_ENDS[end]})
     model = build_model(design)
-    near = tuple((c.speed, c.amplification_factor) for c in lateral_critical_speeds(model, top=1.25, n_points=300)
-                 if c.speed >= 0.8 * model.speed)
+    near = tuple(
+        (c.speed, c.amplification_factor)
+        for c in lateral_critical_speeds(model, top=1.25, n_points=300)
+        if c.speed >= 0.8 * model.speed
+    )
     q = imbalance_response(model, [model.speed], imbalance_loads(model))
     dm = model.dofs
     n = np.arange(dm.n_shaft_nodes)
@@ -450,8 +462,11 @@ def test_only_a_laterally_free_forward_end_keeps_table31_non_critical() -> None:
 
 def test_no_boom_mode_near_the_tail_drive_speed() -> None:
     design = baseline_design()
-    detached = {f"bearings[{i}].stiffness": {"u": 0.0, "v": 0.0, "w": 0.0} for i, b in enumerate(design.bearings)
-                if b.kind == "contact"}
+    detached = {
+        f"bearings[{i}].stiffness": {"u": 0.0, "v": 0.0, "w": 0.0}
+        for i, b in enumerate(design.bearings)
+        if b.kind == "contact"
+    }
     detached.update({f"bearings[{i}].kp": 0.0 for i in actuator_paths(design)})
     m = modes(build_model(with_overrides(design, detached)), 0.0, 30)
     boom = np.asarray(m.frequencies)[np.asarray(m.shaft_fractions) < 0.5]
@@ -504,8 +519,12 @@ def test_centrifugal_hoop_stress_does_not_explain_3_5() -> None:
     free, spinning = safety_factor(0.0), safety_factor(hoop)
     assert hoop / t == pytest.approx(1.0e6, rel=0.05)  # ρ Ω² r² ≈ 1.0 MPa
     # the hand-built free-hoop check is the package's thesis path (no hoop, no thermal residual)
-    thesis_path = shaft_safety_factor(model, static_response(model, external_static_load(model) + torque_load(model)),
-                                      speed=0.0, thermal_residual=False)
+    thesis_path = shaft_safety_factor(
+        model,
+        static_response(model, external_static_load(model) + torque_load(model)),
+        speed=0.0,
+        thermal_residual=False,
+    )
     assert free == pytest.approx(thesis_path.safety_factor, rel=1e-6)
     assert abs(spinning / free - 1.0) < 0.05
 
@@ -573,33 +592,68 @@ def reproduction_table() -> list[tuple[str, str, str]]:
     """(finding, flexshaft's number, status) of each row, numbers formatted for the doc."""
     rows = []
     sf = strength_row()
-    rows.append(("safety factor ≈ 3.5", f"R = {sf['baseline'].safety_factor:.1f} (Table 3.1), "
-                 f"{sf['tuned'].safety_factor:.1f} (tuned); {sf['tuned'].dominant_stress} of the "
-                 f"{sf['tuned'].ply_angle_deg:+.0f}° ply at x = {sf['tuned'].x:.2f} m", "not reproduced"))
+    rows.append(
+        (
+            "safety factor ≈ 3.5",
+            f"R = {sf['baseline'].safety_factor:.1f} (Table 3.1), "
+            f"{sf['tuned'].safety_factor:.1f} (tuned); {sf['tuned'].dominant_stress} of the "
+            f"{sf['tuned'].ply_angle_deg:+.0f}° ply at x = {sf['tuned'].x:.2f} m",
+            "not reproduced",
+        )
+    )
     ds = ply_angle_row()
     alpha, r = ds["alpha"].values, ds["safety_factor"].values
-    rows.append(("±55° best single angle", f"{alpha[np.argmax(r)]:.1f}° (R = {r.max():.1f}); ±55°: R = "
-                 f"{r[alpha == 55.0][0]:.1f}", "not reproduced"))
+    rows.append(
+        (
+            "±55° best single angle",
+            f"{alpha[np.argmax(r)]:.1f}° (R = {r.max():.1f}); ±55°: R = {r[alpha == 55.0][0]:.1f}",
+            "not reproduced",
+        )
+    )
     ds2 = two_angle_row()["safety_factor"]
     i, j = np.unravel_index(int(np.nanargmax(ds2.values)), ds2.shape)
-    rows.append(("(55/−55/0/0)s best two-angle", f"({ds2.alpha.values[i]:.0f}/−{ds2.alpha.values[i]:.0f}/"
-                 f"{ds2.beta.values[j]:.0f}/−{ds2.beta.values[j]:.0f})s R = {float(ds2.max()):.1f}; (55/−55/0/0)s "
-                 f"R = {float(ds2.sel(alpha=55.0, beta=0.0)):.1f}", "not reproduced"))
+    rows.append(
+        (
+            "(55/−55/0/0)s best two-angle",
+            f"({ds2.alpha.values[i]:.0f}/−{ds2.alpha.values[i]:.0f}/"
+            f"{ds2.beta.values[j]:.0f}/−{ds2.beta.values[j]:.0f})s R = {float(ds2.max()):.1f}; (55/−55/0/0)s "
+            f"R = {float(ds2.sel(alpha=55.0, beta=0.0)):.1f}",
+            "not reproduced",
+        )
+    )
     f = wall_frequency_row()
     d_o = baseline_design().shaft.outer_diameter
     d_i = d_o - 2.0 * WALLS
     closed = math.sqrt((d_o**2 + d_i[-1] ** 2) / (d_o**2 + d_i[0] ** 2))
-    rows.append(("frequencies fall with wall at fixed D_o", f"first shaft mode {f[0, 0]:.2f} → {f[-1, 0]:.2f} Hz "
-                 f"(1 → 6 mm), ratio {f[-1, 0] / f[0, 0]:.4f} vs eq. 3.3 {closed:.4f}", "reproduced"))
+    rows.append(
+        (
+            "frequencies fall with wall at fixed D_o",
+            f"first shaft mode {f[0, 0]:.2f} → {f[-1, 0]:.2f} Hz "
+            f"(1 → 6 mm), ratio {f[-1, 0] / f[0, 0]:.4f} vs eq. 3.3 {closed:.4f}",
+            "reproduced",
+        )
+    )
     w = wall_strength_row()
-    rows.append(("SF dip near 1.7 mm, falls above 3 mm", f"R rises {w['safety_factor'].values[0]:.1f} → "
-                 f"{w['safety_factor'].values[-1]:.1f} (1 → 6 mm), imbalance < 1 %", "not reproduced"))
+    rows.append(
+        (
+            "SF dip near 1.7 mm, falls above 3 mm",
+            f"R rises {w['safety_factor'].values[0]:.1f} → "
+            f"{w['safety_factor'].values[-1]:.1f} (1 → 6 mm), imbalance < 1 %",
+            "not reproduced",
+        )
+    )
     g = gain_row()
     kp, disp, gsf = g["kp"].values, g["actuator_displacement"].values, g["safety_factor"].values
     k10 = int(np.argmin(np.abs(kp - 1e7)))
-    rows.append(("K_p: SF falls from low K_p; resonance at 6.5e5 critical, 1e7 not", f"R {gsf[0]:.2f} → "
-                 f"{gsf[kp <= 1e6][-1]:.2f} (1e5 → 1e6); critical K_p {kp[np.argmax(disp)]:.3g} N/m (R {gsf.min():.1f}, "
-                 f"actuator {_mm(disp.max())}); at 1e7 {disp[k10] * 1e6:.1f} µm", "reproduced (K_p ×2.7)"))
+    rows.append(
+        (
+            "K_p: SF falls from low K_p; resonance at 6.5e5 critical, 1e7 not",
+            f"R {gsf[0]:.2f} → "
+            f"{gsf[kp <= 1e6][-1]:.2f} (1e5 → 1e6); critical K_p {kp[np.argmax(disp)]:.3g} N/m (R {gsf.min():.1f}, "
+            f"actuator {_mm(disp.max())}); at 1e7 {disp[k10] * 1e6:.1f} µm",
+            "reproduced (K_p ×2.7)",
+        )
+    )
     smap = gain_map_row("thesis")
 
     def reduction(value):
@@ -607,46 +661,93 @@ def reproduction_table() -> list[tuple[str, str, str]]:
         return row[0] / row.min()
 
     best = smap.shaft_peak.min(axis=1)
-    rows.append(("K_d damps at low K_p only; optimum K_d per K_p", f"best K_d cuts the peak ×{reduction(1e6):.1f} at "
-                 f"1e6, ×{reduction(5e7):.2f} at 5e7; best peak {_mm(best[np.argmin(np.abs(smap.kp - 1e7))])} (1e7) → "
-                 f"{_mm(best.min())} ({smap.kp[np.argmin(best)]:.2g})", "reproduced"))
+    rows.append(
+        (
+            "K_d damps at low K_p only; optimum K_d per K_p",
+            f"best K_d cuts the peak ×{reduction(1e6):.1f} at "
+            f"1e6, ×{reduction(5e7):.2f} at 5e7; best peak {_mm(best[np.argmin(np.abs(smap.kp - 1e7))])} (1e7) → "
+            f"{_mm(best.min())} ({smap.kp[np.argmin(best)]:.2g})",
+            "reproduced",
+        )
+    )
     for damping in ("thesis", "rotating"):
         peak, speed = table31_peak(damping)
-        rows.append((f"spin-up peak 38 mm at Table 3.1 gains [{damping}]", f"{_mm(peak)} at {speed * RPM:.0f} rpm",
-                     "calibrated" if damping == "thesis" else "model difference"))
+        rows.append(
+            (
+                f"spin-up peak 38 mm at Table 3.1 gains [{damping}]",
+                f"{_mm(peak)} at {speed * RPM:.0f} rpm",
+                "calibrated" if damping == "thesis" else "model difference",
+            )
+        )
     gap = baseline_design().bearings[1].gap
     for damping in ("thesis", "rotating"):
         t = tuning_row(damping, gap)
-        rows.append((f"tuned gains: 38 → 4 mm [{damping}]", f"{_mm(t.peak)} at K_p {t.kp:.3g}, K_d {t.kd:.3g} "
-                     f"(gap {gap * 1e3:g} mm, excursion {_mm(t.excursion)})",
-                     "reproduced (×2)" if 0.002 <= t.peak <= 0.008 else "not reproduced"))
+        rows.append(
+            (
+                f"tuned gains: 38 → 4 mm [{damping}]",
+                f"{_mm(t.peak)} at K_p {t.kp:.3g}, K_d {t.kd:.3g} (gap {gap * 1e3:g} mm, excursion {_mm(t.excursion)})",
+                "reproduced (×2)" if 0.002 <= t.peak <= 0.008 else "not reproduced",
+            )
+        )
     tuned_gap = tuned_design().bearings[1].gap
     t = tuning_row("rotating", tuned_gap)
-    rows.append(("tuned design's gains [rotating]", f"{_mm(t.peak)} at K_p {t.kp:.3g}, K_d {t.kd:.3g} (gap "
-                 f"{tuned_gap * 1e3:g} mm, excursion {_mm(t.excursion)})", "design"))
+    rows.append(
+        (
+            "tuned design's gains [rotating]",
+            f"{_mm(t.peak)} at K_p {t.kp:.3g}, K_d {t.kd:.3g} (gap "
+            f"{tuned_gap * 1e3:g} mm, excursion {_mm(t.excursion)})",
+            "design",
+        )
+    )
     s = surfaces_row("thesis")
-    rows.append(("Fig. 3.13/3.14: resonance excited at 2e6, damped at 3e5", f"{_mm(s['peak_high'])} at "
-                 f"{s['speed'] * RPM:.0f} rpm, x = {s['station']:.2f} m ({s['peak_high'] / s['median_high']:.0f}× the "
-                 f"median); 3e5: {_mm(s['band_low'])} (×{s['peak_high'] / s['band_low']:.1f} lower)", "reproduced"))
+    rows.append(
+        (
+            "Fig. 3.13/3.14: resonance excited at 2e6, damped at 3e5",
+            f"{_mm(s['peak_high'])} at "
+            f"{s['speed'] * RPM:.0f} rpm, x = {s['station']:.2f} m ({s['peak_high'] / s['median_high']:.0f}× the "
+            f"median); 3e5: {_mm(s['band_low'])} (×{s['peak_high'] / s['band_low']:.1f} lower)",
+            "reproduced",
+        )
+    )
     b = buckling_row()
     bw, bsf = b["wall_thickness"].values, b["buckling_safety_factor"].values
-    rows.append(("buckling safe above 1 mm wall", ", ".join(f"{x * 1e3:g} mm: {v:.2f}" for x, v in zip(bw, bsf))
-                 + f"; crossing {float(np.interp(1.0, bsf, bw)) * 1e3:.2f} mm", "reproduced"))
+    rows.append(
+        (
+            "buckling safe above 1 mm wall",
+            ", ".join(f"{x * 1e3:g} mm: {v:.2f}" for x, v in zip(bw, bsf))
+            + f"; crossing {float(np.interp(1.0, bsf, bw)) * 1e3:.2f} mm",
+            "reproduced",
+        )
+    )
     th = thermal_row()
-    rows.append(("boom 44 °C hover / 89 °C parked", f"{th['tailboom_c']['hover']:.1f} / {th['tailboom_c']['parked']:.1f} °C",
-                 "reproduced (parked calibrated)"))
-    rows.append(("shaft ≈ 8 °C above ambient", f"+{th['shaft_thesis_loss_model']['peak_rise_K']:.2g} K (thesis loss) / "
-                 f"+{th['shaft_rotating_loss_model']['peak_rise_K']:.2g} K (rotating) above the 44.1 °C boom air",
-                 "not reproduced"))
+    rows.append(
+        (
+            "boom 44 °C hover / 89 °C parked",
+            f"{th['tailboom_c']['hover']:.1f} / {th['tailboom_c']['parked']:.1f} °C",
+            "reproduced (parked calibrated)",
+        )
+    )
+    rows.append(
+        (
+            "shaft ≈ 8 °C above ambient",
+            f"+{th['shaft_thesis_loss_model']['peak_rise_K']:.2g} K (thesis loss) / "
+            f"+{th['shaft_rotating_loss_model']['peak_rise_K']:.2g} K (rotating) above the 44.1 °C boom air",
+            "not reproduced",
+        )
+    )
     for method in ("viscous", "hysteretic"):
         onset = whirl_row(method)
-        text = ", ".join(f"{k.replace(' FMC', '')}: " + ("stable" if v is None else f"{v * RPM:.0f} rpm") for k, v in onset.items())
+        text = ", ".join(
+            f"{k.replace(' FMC', '')}: " + ("stable" if v is None else f"{v * RPM:.0f} rpm") for k, v in onset.items()
+        )
         rows.append((f"0° plies improve whirl stability [{method}]", text, "reproduced"))
     for name in ("baseline", "tuned"):
         res = verdict_row(name)
         failed = [c.key for c in res.verdict.checks if c.status == "fail"]
         logdec = min(shaft_mode_log_decrements(res).values())
-        rows.append((f"verdict of {name}", f"fails: {', '.join(failed) or 'none'}; shaft-mode log dec {logdec:.3f}", "-"))
+        rows.append(
+            (f"verdict of {name}", f"fails: {', '.join(failed) or 'none'}; shaft-mode log dec {logdec:.3f}", "-")
+        )
     return rows
 
 

@@ -121,8 +121,9 @@ def test_band_ordering_is_no_wider_than_reverse_cuthill_mckee_and_keeps_blocks_a
 
     model = build_model(baseline_design())
     solver = BandedHarmonicSolver(model)
-    pattern = sp.csr_matrix((np.ones(solver._rows.size), (solver.perm[solver._rows], solver.perm[solver._cols])),
-                            shape=(solver.n, solver.n))
+    pattern = sp.csr_matrix(
+        (np.ones(solver._rows.size), (solver.perm[solver._rows], solver.perm[solver._cols])), shape=(solver.n, solver.n)
+    )
     pattern = pattern + pattern.T
     rcm = half_band(pattern, reverse_cuthill_mckee(pattern.tocsr(), symmetric_mode=True))
     assert rcm == 24 and solver.kl == 19  # 0.40 less band-LU work (∝ kl (kl + ku))
@@ -170,8 +171,15 @@ def test_banded_solver_matches_sparse_direct_solve_on_baseline():
     eye = np.eye(dm.size)
     for omega, speed in ((0.0, 0.0), (150.0, 300.0), (model.speed, model.speed), (400.0, 300.0)):
         forward = np.sign(omega - speed) if abs(omega - speed) > 1e-9 * omega else 0.0
-        loss = 1j * np.sign(omega) * fixed + 1j * K_lat @ (np.sign(omega + speed) * (eye - 1j * S) / 2 + forward * (eye + 1j * S) / 2)
-        Z = (-(omega**2)) * model.M + 1j * omega * (speed * model.G + model.C) + model.K + model.controller_matrix(1j * omega)
+        loss = 1j * np.sign(omega) * fixed + 1j * K_lat @ (
+            np.sign(omega + speed) * (eye - 1j * S) / 2 + forward * (eye + 1j * S) / 2
+        )
+        Z = (
+            (-(omega**2)) * model.M
+            + 1j * omega * (speed * model.G + model.C)
+            + model.K
+            + model.controller_matrix(1j * omega)
+        )
         Z = Z.toarray() + loss
         f = dm.free
         direct = np.linalg.solve(Z[np.ix_(f, f)], rhs)
@@ -207,15 +215,18 @@ def test_campbell_tracks_forward_and_backward_shaft_modes():
 def test_boom_tip_deflection_under_tip_load_matches_quadrature():
     """Cantilevered tapered boom, no end mass, shaft on soft bearings (1 N/m): tip deflection
     δ = ∫ P(L−x)²/EI_z(x) dx by quadrature; 24 elements give < 1e-4."""
-    d = with_overrides(baseline_design(), {
-        "tailboom.end_mass": None,
-        "bearings": [
-            {"name": "h1", "kind": "contact", "x": 0.79, "stiffness": {"u": 1.0, "v": 1.0, "w": 1.0}},
-            {"name": "h2", "kind": "contact", "x": 8.05, "stiffness": {"v": 1.0, "w": 1.0}},
-        ],
-        "loads.point": [],
-        "loads.load_factor": [0.0, 0.0, 0.0],
-    })
+    d = with_overrides(
+        baseline_design(),
+        {
+            "tailboom.end_mass": None,
+            "bearings": [
+                {"name": "h1", "kind": "contact", "x": 0.79, "stiffness": {"u": 1.0, "v": 1.0, "w": 1.0}},
+                {"name": "h2", "kind": "contact", "x": 8.05, "stiffness": {"v": 1.0, "w": 1.0}},
+            ],
+            "loads.point": [],
+            "loads.load_factor": [0.0, 0.0, 0.0],
+        },
+    )
     model = build_model(d)
     tb = d.tailboom
     P = 1000.0
@@ -276,8 +287,9 @@ def test_baseline_superposed_strength_runs_and_is_finite():
 
 def test_bearing_reactions_balance_a_static_load():
     """Steel shaft on two end bearings, midspan force P: each bearing carries P/2 (statics)."""
-    from flexshaft.analyses.response import bearing_forces
     from test_model import steel_shaft
+
+    from flexshaft.analyses.response import bearing_forces
 
     model = build_model(steel_shaft(10))
     P = 800.0
@@ -303,7 +315,9 @@ def test_banded_solver_without_material_loss_matches_a_direct_solve():
     omega = speed = 123.4
     Z = (model.K - omega**2 * model.M + 1j * omega * (speed * model.G + model.C)).tocsc()[free][:, free]
     reference = spla.spsolve(Z, rhs)
-    np.testing.assert_allclose(solver.solve(omega, rhs, speed), reference, rtol=1e-10, atol=1e-10 * np.abs(reference).max())
+    np.testing.assert_allclose(
+        solver.solve(omega, rhs, speed), reference, rtol=1e-10, atol=1e-10 * np.abs(reference).max()
+    )
 
 
 def test_banded_solvers_sharing_a_sparsity_equal_solvers_set_up_cold():
@@ -314,8 +328,13 @@ def test_banded_solvers_sharing_a_sparsity_equal_solvers_set_up_cold():
     from flexshaft.analyses import banded
 
     base = baseline_design()
-    variants = [base, with_overrides(base, {"shaft.layup": "(30/-30)s"}), with_overrides(base, {"bearings[1].kp": 2e6}),
-                with_overrides(base, {"shaft.wall_thickness": 0.002}), with_overrides(base, {"mesh.shaft_elements": 24})]
+    variants = [
+        base,
+        with_overrides(base, {"shaft.layup": "(30/-30)s"}),
+        with_overrides(base, {"bearings[1].kp": 2e6}),
+        with_overrides(base, {"shaft.wall_thickness": 0.002}),
+        with_overrides(base, {"mesh.shaft_elements": 24}),
+    ]
     warm = []
     for design in variants:  # the cache fills as a sweep's would
         warm.append(BandedHarmonicSolver(build_model(design)))

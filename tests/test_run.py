@@ -21,8 +21,19 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     out, output = baseline_run
     assert "report written to" in output
     data = json.loads((out / "results.json").read_text())
-    for key in ("summary", "modes_at_rest", "modes_at_operating_speed", "critical_speeds", "imbalance",
-                "static", "strength_static_plus_imbalance", "buckling", "stability", "thermal", "bearings"):
+    for key in (
+        "summary",
+        "modes_at_rest",
+        "modes_at_operating_speed",
+        "critical_speeds",
+        "imbalance",
+        "static",
+        "strength_static_plus_imbalance",
+        "buckling",
+        "stability",
+        "thermal",
+        "bearings",
+    ):
         assert key in data
     assert len(data["modes_at_rest"]) == 10
     assert data["strength_static_plus_imbalance"]["safety_factor"] > 0
@@ -51,9 +62,21 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     # (an onset of None: stable up to the highest speed analysed)
     onset_rpm = {k: float("inf") if v["viscous"] is None else v["viscous"] for k, v in thesis.items()}
     assert onset_rpm["(45/-45/0/0)s FMC"] > onset_rpm["(45/-45)s FMC"]
-    for stem in ("verdict_margins", "campbell", "mode_shapes", "imbalance_response", "imbalance_bode", "bearing_orbits",
-                 "actuators", "static_deflection", "safety_factor", "stability_log_decrement", "stability_map",
-                 "shaft_temperature", "shaft_temperature_sweeps"):
+    for stem in (
+        "verdict_margins",
+        "campbell",
+        "mode_shapes",
+        "imbalance_response",
+        "imbalance_bode",
+        "bearing_orbits",
+        "actuators",
+        "static_deflection",
+        "safety_factor",
+        "stability_log_decrement",
+        "stability_map",
+        "shaft_temperature",
+        "shaft_temperature_sweeps",
+    ):
         assert (out / f"{stem}.png").stat().st_size > 10_000
         assert not (out / f"{stem}.svg").exists()  # SVG only on request
 

@@ -30,12 +30,30 @@ AL = {"kind": "isotropic", "E": 70.0e9, "G": 26.0e9, "density": 2700.0, "loss_fa
 D_O, WALL = 0.05, 0.002
 
 
-def tube_design(length=2.0, couplings=(), segments=None, materials=None, bearings=None, disks=(), loads=None,
-                speed_rpm=3000.0, power=0.0, elements=40, fixed_start=("u", "v", "w", "theta"),
-                fixed_end=("v", "w")) -> dict:
+def tube_design(
+    length=2.0,
+    couplings=(),
+    segments=None,
+    materials=None,
+    bearings=None,
+    disks=(),
+    loads=None,
+    speed_rpm=3000.0,
+    power=0.0,
+    elements=40,
+    fixed_start=("u", "v", "w", "theta"),
+    fixed_end=("v", "w"),
+) -> dict:
     """A tube on pinned ends (no tailboom), as a design-file dict."""
-    shaft = {"x_start": 0.0, "x_end": length, "outer_diameter": D_O, "wall_thickness": WALL, "material": "al",
-             "fixed_start": list(fixed_start), "fixed_end": list(fixed_end)}
+    shaft = {
+        "x_start": 0.0,
+        "x_end": length,
+        "outer_diameter": D_O,
+        "wall_thickness": WALL,
+        "material": "al",
+        "fixed_start": list(fixed_start),
+        "fixed_end": list(fixed_end),
+    }
     if segments is not None:
         shaft["segments"] = segments
     data = {
@@ -53,8 +71,14 @@ def tube_design(length=2.0, couplings=(), segments=None, materials=None, bearing
 
 
 def rigid_coupling(name, x, **values):
-    return {"name": name, "x": x, "angular_stiffness": "rigid", "axial_stiffness": "rigid",
-            "torsional_stiffness": "rigid", **values}
+    return {
+        "name": name,
+        "x": x,
+        "angular_stiffness": "rigid",
+        "axial_stiffness": "rigid",
+        "torsional_stiffness": "rigid",
+        **values,
+    }
 
 
 def section():
@@ -70,11 +94,18 @@ def section():
 def test_rigid_couplings_give_the_continuous_shaft():
     """Same mesh (segment boundaries at the joints), bonded vs rigidly coupled: a rigid direction is
     an exact constraint, so frequencies at rest and at speed agree to round-off (asked: 1e-6)."""
-    segments = [{"name": "a", "x_start": 0.0, "x_end": 0.7}, {"name": "b", "x_start": 0.7, "x_end": 1.3},
-                {"name": "c", "x_start": 1.3, "x_end": 2.0}]
+    segments = [
+        {"name": "a", "x_start": 0.0, "x_end": 0.7},
+        {"name": "b", "x_start": 0.7, "x_end": 1.3},
+        {"name": "c", "x_start": 1.3, "x_end": 2.0},
+    ]
     bonded = design_from_dict(tube_design(segments=segments))
-    coupled = design_from_dict(tube_design(segments=segments, couplings=[rigid_coupling("j1", 0.7),
-                                                                         rigid_coupling("j2", 1.3, lateral_stiffness="rigid")]))
+    coupled = design_from_dict(
+        tube_design(
+            segments=segments,
+            couplings=[rigid_coupling("j1", 0.7), rigid_coupling("j2", 1.3, lateral_stiffness="rigid")],
+        )
+    )
     m_bonded, m_coupled = build_model(bonded), build_model(coupled)
     assert m_coupled.dofs.n_shaft_nodes == m_bonded.dofs.n_shaft_nodes + 2  # one node per side of each joint
     assert m_coupled.dofs.free.size == m_bonded.dofs.free.size  # every direction tied
@@ -97,9 +128,21 @@ def test_rigid_couplings_give_the_continuous_shaft():
 def hinge_frequency(stiffening: float, a=0.8, b=1.2, k=100.0, m_c=0.3, I_c=2e-4, elements=10) -> float:
     """Lowest lateral frequency [rad/s] of tubes (E, G times ``stiffening``) hinged at x = a."""
     stiff = {**AL, "E": AL["E"] * stiffening, "G": AL["G"] * stiffening}
-    data = tube_design(materials={"al": stiff}, elements=elements, couplings=[{
-        "name": "hinge", "x": a, "angular_stiffness": k, "axial_stiffness": "rigid", "torsional_stiffness": "rigid",
-        "mass": m_c, "diametral_inertia": I_c}])
+    data = tube_design(
+        materials={"al": stiff},
+        elements=elements,
+        couplings=[
+            {
+                "name": "hinge",
+                "x": a,
+                "angular_stiffness": k,
+                "axial_stiffness": "rigid",
+                "torsional_stiffness": "rigid",
+                "mass": m_c,
+                "diametral_inertia": I_c,
+            }
+        ],
+    )
     m = modes(build_model(design_from_dict(data)), 0.0, 4)
     lateral = np.abs(m.eigenvalues[m.kind == "lateral"])
     assert lateral[1] == pytest.approx(lateral[0], rel=1e-9)  # both bending planes
@@ -142,9 +185,18 @@ def test_coupling_moment_at_a_loaded_hinge_is_the_statics_moment(xi):
     x = a, M = P ξ b / L (ξ < a) or P a (L − ξ) / L (ξ > a), independent of k and of the tubes'
     stiffness, as the angle M/k between the two tubes (tolerance: round-off, 1e-8)."""
     a, b, k, P = 0.8, 1.2, 100.0, 40.0
-    data = tube_design(couplings=[{
-        "name": "hinge", "x": a, "angular_stiffness": k, "axial_stiffness": "rigid", "torsional_stiffness": "rigid"}],
-        loads={"eccentricity": 0.0, "point": [{"name": "P", "on": "shaft", "x": xi, "force": [0.0, P, 0.0]}]})
+    data = tube_design(
+        couplings=[
+            {
+                "name": "hinge",
+                "x": a,
+                "angular_stiffness": k,
+                "axial_stiffness": "rigid",
+                "torsional_stiffness": "rigid",
+            }
+        ],
+        loads={"eccentricity": 0.0, "point": [{"name": "P", "on": "shaft", "x": xi, "force": [0.0, P, 0.0]}]},
+    )
     model = build_model(design_from_dict(data))
     from flexshaft.assembly.loads import external_static_load
 
@@ -166,19 +218,33 @@ def test_twist_of_the_chain_is_the_sum_of_tube_and_coupling_twists():
     θ_end = T (Σ L_i/(G_i J_i) + Σ 1/k_t) (linear twist interpolation is exact for uniform
     torsion: tolerance 1e-9); each coupling carries T."""
     steel = {"kind": "isotropic", "E": 200e9, "G": 79e9, "density": 7850.0}
-    segments = [{"name": "a", "x_start": 0.0, "x_end": 0.6},
-                {"name": "b", "x_start": 0.6, "x_end": 1.5, "outer_diameter": 0.06, "wall_thickness": 0.003},
-                {"name": "c", "x_start": 1.5, "x_end": 2.0, "material": "steel", "wall_thickness": 0.0015}]
+    segments = [
+        {"name": "a", "x_start": 0.0, "x_end": 0.6},
+        {"name": "b", "x_start": 0.6, "x_end": 1.5, "outer_diameter": 0.06, "wall_thickness": 0.003},
+        {"name": "c", "x_start": 1.5, "x_end": 2.0, "material": "steel", "wall_thickness": 0.0015},
+    ]
     k_t = (4.0e4, 9.0e4)
-    couplings = [{"name": f"c{i}", "x": x, "angular_stiffness": 500.0, "axial_stiffness": "rigid",
-                  "torsional_stiffness": k} for i, (x, k) in enumerate(zip((0.6, 1.5), k_t))]
-    data = tube_design(segments=segments, couplings=couplings, materials={"al": AL, "steel": steel},
-                       power=20e3, speed_rpm=3000.0, fixed_start=("u", "v", "w", "theta"))
+    couplings = [
+        {"name": f"c{i}", "x": x, "angular_stiffness": 500.0, "axial_stiffness": "rigid", "torsional_stiffness": k}
+        for i, (x, k) in enumerate(zip((0.6, 1.5), k_t))
+    ]
+    data = tube_design(
+        segments=segments,
+        couplings=couplings,
+        materials={"al": AL, "steel": steel},
+        power=20e3,
+        speed_rpm=3000.0,
+        fixed_start=("u", "v", "w", "theta"),
+    )
     design = design_from_dict(data)
     model = build_model(design)
     torque = design.operating.power / design.operating.speed_rad_s
     compliance = sum(1 / k for k in k_t)
-    for length, d_o, wall, g in ((0.6, D_O, WALL, AL["G"]), (0.9, 0.06, 0.003, AL["G"]), (0.5, D_O, 0.0015, steel["G"])):
+    for length, d_o, wall, g in (
+        (0.6, D_O, WALL, AL["G"]),
+        (0.9, 0.06, 0.003, AL["G"]),
+        (0.5, D_O, 0.0015, steel["G"]),
+    ):
         polar = math.pi * (d_o**4 - (d_o - 2 * wall) ** 4) / 32
         compliance += length / (g * polar)
     q = static_response(model, torque_load(model))
@@ -198,16 +264,29 @@ def test_damper_on_a_jeffcott_rotor_gives_the_closed_form_response_at_the_critic
     The tube's 1e-3 kg/m line mass shifts this by ~1e-4: tolerance 1e-3."""
     length, m_disk, k_d, c, U = 2.0, 10.0, 2.0e4, 150.0, 1e-4
     light = {**AL, "density": 1.0}
-    data = tube_design(materials={"al": light}, disks=[{"name": "disk", "x": length / 2, "mass": m_disk}],
-                       bearings=[{"name": "far", "kind": "contact", "x": length, "stiffness": {"u": 0.0}},
-                                 {"name": "damper", "kind": "contact", "role": "damper", "x": length / 2,
-                                  "stiffness": {"v": k_d, "w": k_d}, "damping": {"v": c, "w": c}}])
+    data = tube_design(
+        materials={"al": light},
+        disks=[{"name": "disk", "x": length / 2, "mass": m_disk}],
+        bearings=[
+            {"name": "far", "kind": "contact", "x": length, "stiffness": {"u": 0.0}},
+            {
+                "name": "damper",
+                "kind": "contact",
+                "role": "damper",
+                "x": length / 2,
+                "stiffness": {"v": k_d, "w": k_d},
+                "damping": {"v": c, "w": c},
+            },
+        ],
+    )
     model = build_model(design_from_dict(data))
     _, inertia = section()
     k = 48 * AL["E"] * inertia / length**3 + k_d
     omega_n = math.sqrt(k / m_disk)
     rotating = U * np.array([0.0, 1.0, -1j])
-    Q = point_load(model, "shaft", rotating.real, x=length / 2) + 1j * point_load(model, "shaft", rotating.imag, x=length / 2)
+    Q = point_load(model, "shaft", rotating.real, x=length / 2) + 1j * point_load(
+        model, "shaft", rotating.imag, x=length / 2
+    )
     q = imbalance_response(model, [omega_n], Q[:, None])[:, 0, 0]
     node = model.dofs.node_at("shaft", length / 2)
     amplitude = abs(q[model.dofs.shaft(node, "v")])
@@ -232,7 +311,8 @@ def test_goodman_and_von_mises_against_a_hand_worked_case():
     # a mean hoop stress adds to the mean von Mises stress with the worst sign of σ_m:
     # σ_m = 10, σ_θ = 5, τ_m = 0: √(100 + 50 + 25) = 13.229 MPa
     assert goodman_safety_factor(0.0, 10 * MPa, 0.0, 0.0, 100 * MPa, 310 * MPa, 5 * MPa) == pytest.approx(
-        310 / math.sqrt(175), rel=1e-9)
+        310 / math.sqrt(175), rel=1e-9
+    )
 
 
 def test_metal_strength_of_a_loaded_tube_through_the_model():
@@ -242,11 +322,14 @@ def test_metal_strength_of_a_loaded_tube_through_the_model():
     ρ Ω² r_m²: worked by hand from beam theory (the FE is exact at a loaded node; tolerance 1e-8)."""
     P, L, power, rpm = 200.0, 2.0, 10e3, 3000.0
     strengths = {"yield_strength": 276e6, "ultimate_strength": 310e6, "fatigue_strength": 100e6}
-    data = tube_design(materials={"al": {**AL, **strengths}}, power=power, speed_rpm=rpm,
-                       segments=[{"name": "a", "x_start": 0.0, "x_end": 0.7}, {"name": "b", "x_start": 0.7, "x_end": L}],
-                       couplings=[rigid_coupling("j", 0.7)],
-                       loads={"eccentricity": 0.0, "point": [{"name": "P", "on": "shaft", "x": L / 2,
-                                                               "force": [0.0, 0.0, P]}]})
+    data = tube_design(
+        materials={"al": {**AL, **strengths}},
+        power=power,
+        speed_rpm=rpm,
+        segments=[{"name": "a", "x_start": 0.0, "x_end": 0.7}, {"name": "b", "x_start": 0.7, "x_end": L}],
+        couplings=[rigid_coupling("j", 0.7)],
+        loads={"eccentricity": 0.0, "point": [{"name": "P", "on": "shaft", "x": L / 2, "force": [0.0, 0.0, P]}]},
+    )
     design = design_from_dict(data)
     model = build_model(design)
     from flexshaft.assembly.loads import external_static_load
@@ -294,13 +377,21 @@ def test_an_active_bearing_on_a_segmented_shaft_acts_like_its_spring():
     on the aft piece of a coupled tube gives the frequencies of a contact bearing of lateral
     stiffness k at the same station (two code paths: the actuator law in the eigenproblem, the
     spring in K; tolerance 1e-8, the eigen-refinement's)."""
-    coupling = {"name": "j", "x": 0.9, "angular_stiffness": 500.0, "axial_stiffness": "rigid",
-                "torsional_stiffness": "rigid"}
+    coupling = {
+        "name": "j",
+        "x": 0.9,
+        "angular_stiffness": 500.0,
+        "axial_stiffness": "rigid",
+        "torsional_stiffness": "rigid",
+    }
     far = {"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}}
-    spring = tube_design(couplings=[coupling], bearings=[far, {"name": "mid", "kind": "contact", "x": 1.4,
-                                                                 "stiffness": {"v": 2e5, "w": 2e5}}])
-    active = tube_design(couplings=[coupling], bearings=[far, {"name": "mid", "kind": "active", "x": 1.4,
-                                                                 "kp": 2e5, "kd": 0.0}])
+    spring = tube_design(
+        couplings=[coupling],
+        bearings=[far, {"name": "mid", "kind": "contact", "x": 1.4, "stiffness": {"v": 2e5, "w": 2e5}}],
+    )
+    active = tube_design(
+        couplings=[coupling], bearings=[far, {"name": "mid", "kind": "active", "x": 1.4, "kp": 2e5, "kd": 0.0}]
+    )
     f_spring = modes(build_model(design_from_dict(spring)), 0.0, 6).eigenvalues
     f_active = modes(build_model(design_from_dict(active)), 0.0, 6).eigenvalues
     np.testing.assert_allclose(np.abs(f_active), np.abs(f_spring), rtol=1e-8)
@@ -310,9 +401,13 @@ def test_joints_are_kept_exactly_by_the_mesh():
     """A bearing 2 mm ahead of a coupling (inside the 5 %-of-an-element merge tolerance) does not
     move the joint: the joint's two nodes sit at the coupling station and the bearing acts at its
     own station, on the forward piece; boundaries closer than the tolerance are refused."""
-    data = tube_design(couplings=[rigid_coupling("j", 1.0)],
-                       bearings=[{"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}},
-                                 {"name": "near", "kind": "contact", "x": 0.998, "stiffness": {"v": 1e6, "w": 1e6}}])
+    data = tube_design(
+        couplings=[rigid_coupling("j", 1.0)],
+        bearings=[
+            {"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}},
+            {"name": "near", "kind": "contact", "x": 0.998, "stiffness": {"v": 1e6, "w": 1e6}},
+        ],
+    )
     model = build_model(design_from_dict(data))
     (j,) = model.dofs.shaft_joints
     assert model.dofs.shaft_x[j] == model.dofs.shaft_x[j + 1] == 1.0
@@ -320,8 +415,10 @@ def test_joints_are_kept_exactly_by_the_mesh():
     assert near.x_shaft == 0.998
     element, xi, length = model.dofs.locate("shaft", 0.998)
     assert model.dofs.shaft_element_x[element, 1] == 1.0 and 0.0 < xi < 1.0
-    crowded = tube_design(couplings=[rigid_coupling("j", 1.0)],
-                          segments=[{"name": "a", "x_start": 0.0, "x_end": 1.001}, {"name": "b", "x_start": 1.001, "x_end": 2.0}])
+    crowded = tube_design(
+        couplings=[rigid_coupling("j", 1.0)],
+        segments=[{"name": "a", "x_start": 0.0, "x_end": 1.001}, {"name": "b", "x_start": 1.001, "x_end": 2.0}],
+    )
     with pytest.raises(DesignError, match="mesh.shaft_elements: the segment boundary or coupling at x = 1"):
         build_model(design_from_dict(crowded))
 
@@ -330,8 +427,10 @@ def test_a_disk_just_aft_of_a_coupling_sits_on_the_aft_flange():
     """A disk 2 mm aft of a coupling merges onto the joint's station; its mass must load the aft
     flange's node (the forward one belongs to the other tube), and 2 mm ahead the forward one."""
     for x, side in ((1.002, 1), (0.998, 0)):
-        data = tube_design(couplings=[rigid_coupling("j", 1.0, angular_stiffness=50.0)],
-                           disks=[{"name": "d", "x": x, "mass": 5.0, "diametral_inertia": 0.1}])
+        data = tube_design(
+            couplings=[rigid_coupling("j", 1.0, angular_stiffness=50.0)],
+            disks=[{"name": "d", "x": x, "mass": 5.0, "diametral_inertia": 0.1}],
+        )
         model = build_model(design_from_dict(data))
         (j,) = model.dofs.shaft_joints
         assert model.dofs.node_at("shaft", x) == j + side
@@ -361,40 +460,81 @@ def test_one_tube_written_as_one_segment_builds_the_same_model():
 @pytest.mark.parametrize(
     "change, message",
     [
-        (lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 0.9},
-                                               {"name": "b", "x_start": 1.0, "x_end": 2.0}]),
-         "shaft.segments[1].x_start: must equal the x_end of segment \"a\" = 0.9 m"),
-        (lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 1.5}]),
-         "shaft.segments[0].x_end: must equal shaft.x_end = 2 m"),
-        (lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 1.0, "material": "cf"},
-                                               {"name": "b", "x_start": 1.0, "x_end": 2.0}]),
-         "shaft.segments[0].layup: required key is missing (the segment material \"cf\" is a lamina)"),
-        (lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 1.0, "layup": "[0]"},
-                                               {"name": "b", "x_start": 1.0, "x_end": 2.0}]),
-         "shaft.segments[0].layup: must be omitted for the isotropic material \"al\""),
-        (lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 1.0, "material": "tin"},
-                                               {"name": "b", "x_start": 1.0, "x_end": 2.0}]),
-         "shaft.segments[0].material: names no material in [materials]"),
+        (
+            lambda d: d["shaft"].update(
+                segments=[{"name": "a", "x_start": 0.0, "x_end": 0.9}, {"name": "b", "x_start": 1.0, "x_end": 2.0}]
+            ),
+            'shaft.segments[1].x_start: must equal the x_end of segment "a" = 0.9 m',
+        ),
+        (
+            lambda d: d["shaft"].update(segments=[{"name": "a", "x_start": 0.0, "x_end": 1.5}]),
+            "shaft.segments[0].x_end: must equal shaft.x_end = 2 m",
+        ),
+        (
+            lambda d: d["shaft"].update(
+                segments=[
+                    {"name": "a", "x_start": 0.0, "x_end": 1.0, "material": "cf"},
+                    {"name": "b", "x_start": 1.0, "x_end": 2.0},
+                ]
+            ),
+            'shaft.segments[0].layup: required key is missing (the segment material "cf" is a lamina)',
+        ),
+        (
+            lambda d: d["shaft"].update(
+                segments=[
+                    {"name": "a", "x_start": 0.0, "x_end": 1.0, "layup": "[0]"},
+                    {"name": "b", "x_start": 1.0, "x_end": 2.0},
+                ]
+            ),
+            'shaft.segments[0].layup: must be omitted for the isotropic material "al"',
+        ),
+        (
+            lambda d: d["shaft"].update(
+                segments=[
+                    {"name": "a", "x_start": 0.0, "x_end": 1.0, "material": "tin"},
+                    {"name": "b", "x_start": 1.0, "x_end": 2.0},
+                ]
+            ),
+            "shaft.segments[0].material: names no material in [materials]",
+        ),
         (lambda d: d.update(couplings=[rigid_coupling("j", 2.0)]), "couplings[0].x: 2.0 is not strictly inside"),
-        (lambda d: d.update(couplings=[rigid_coupling("j", 1.0), rigid_coupling("k", 1.0)]),
-         "couplings[1].x: 1.0 repeats the station of another coupling"),
-        (lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "torsional_stiffness": 0.0}]),
-         "couplings[0].torsional_stiffness"),
-        (lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "angular_stiffness": "stiff"}]),
-         "couplings[0].angular_stiffness"),
-        (lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "allowable_angle_deg": 95.0}]),
-         "couplings[0].allowable_angle_deg"),
-        (lambda d: (d.update(couplings=[rigid_coupling("j", 1.0)]),
-                    d["bearings"].append({"name": "mid", "kind": "contact", "x": 1.0, "stiffness": {"v": 1e6}})),
-         "bearings[1].x: 1.0 is the station of coupling \"j\"; put it on one side of the joint"),
-        (lambda d: d["bearings"].append({"name": "mid", "kind": "contact", "x": 1.0, "role": "spare"}),
-         "bearings[1].role"),
-        (lambda d: d["materials"]["al"].update(yield_strength=400e6, ultimate_strength=310e6),
-         "materials.al.yield_strength: must not exceed ultimate_strength"),
+        (
+            lambda d: d.update(couplings=[rigid_coupling("j", 1.0), rigid_coupling("k", 1.0)]),
+            "couplings[1].x: 1.0 repeats the station of another coupling",
+        ),
+        (
+            lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "torsional_stiffness": 0.0}]),
+            "couplings[0].torsional_stiffness",
+        ),
+        (
+            lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "angular_stiffness": "stiff"}]),
+            "couplings[0].angular_stiffness",
+        ),
+        (
+            lambda d: d.update(couplings=[{**rigid_coupling("j", 1.0), "allowable_angle_deg": 95.0}]),
+            "couplings[0].allowable_angle_deg",
+        ),
+        (
+            lambda d: (
+                d.update(couplings=[rigid_coupling("j", 1.0)]),
+                d["bearings"].append({"name": "mid", "kind": "contact", "x": 1.0, "stiffness": {"v": 1e6}}),
+            ),
+            'bearings[1].x: 1.0 is the station of coupling "j"; put it on one side of the joint',
+        ),
+        (
+            lambda d: d["bearings"].append({"name": "mid", "kind": "contact", "x": 1.0, "role": "spare"}),
+            "bearings[1].role",
+        ),
+        (
+            lambda d: d["materials"]["al"].update(yield_strength=400e6, ultimate_strength=310e6),
+            "materials.al.yield_strength: must not exceed ultimate_strength",
+        ),
     ],
 )
 def test_bad_segmented_designs_are_refused_naming_the_field(change, message):
-    data = tube_design(materials={"al": dict(AL), "cf": dict(tuned_design().model_dump()["materials"]["t700_adiprene"])})
+    data = tube_design(
+        materials={"al": dict(AL), "cf": dict(tuned_design().model_dump()["materials"]["t700_adiprene"])}
+    )
     change(data)
     with pytest.raises(DesignError) as info:
         design_from_dict(data)
@@ -422,9 +562,14 @@ def test_buckling_of_a_shaft_with_a_laminated_segment_is_not_evaluated():
     tuned = tuned_design()
     fmc = json.loads(tuned.materials[tuned.shaft.material].model_dump_json())
     al = {**AL, "yield_strength": 276e6, "ultimate_strength": 310e6, "fatigue_strength": 100e6}
-    data = tube_design(segments=[{"name": "metal", "x_start": 0.0, "x_end": 1.0},
-                                 {"name": "fmc", "x_start": 1.0, "x_end": 2.0, "material": "fmc",
-                                  "layup": "(45/-45)s"}],
-                       materials={"al": al, "fmc": fmc}, power=20e3, elements=12)
+    data = tube_design(
+        segments=[
+            {"name": "metal", "x_start": 0.0, "x_end": 1.0},
+            {"name": "fmc", "x_start": 1.0, "x_end": 2.0, "material": "fmc", "layup": "(45/-45)s"},
+        ],
+        materials={"al": al, "fmc": fmc},
+        power=20e3,
+        elements=12,
+    )
     check = run_analysis(design_from_dict(data), studies=None).verdict.check("buckling")
     assert check.status == "not evaluated" and "fmc" in check.note

@@ -155,7 +155,9 @@ def test_an_undamped_peak_has_an_infinite_af_and_takes_the_capped_margin() -> No
     model = build_model(loads_design(TUBE.replace("loss_factor = 0.01", "loss_factor = 0.0", 1)))
     (first,) = lateral_critical_speeds(model)
     assert first.amplification_factor == math.inf and "undamped" in first.location["detail"]
-    assert api684_separation(first.speed, first.amplification_factor, model.speed).required_margin == pytest.approx(0.16)
+    assert api684_separation(first.speed, first.amplification_factor, model.speed).required_margin == pytest.approx(
+        0.16
+    )
 
 
 TUBE = """

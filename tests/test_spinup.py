@@ -13,12 +13,11 @@ import numpy as np
 import pytest
 
 from flexshaft.analyses import imbalance_response
-from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.response import actuator_response, orbit_amplitude
 from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map, spinup_speeds
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.design import baseline_design, with_overrides
-from flexshaft.analyses.response import actuator_response
 
 
 @pytest.fixture(scope="module")
@@ -38,8 +37,12 @@ def _direct(design, speeds, kp, kd, placement=None):
     dm = model.dofs
     n = np.arange(dm.n_shaft_nodes)
     shaft = orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")]).max(axis=1)  # worst case
-    disp = np.stack([orbit_amplitude(*(a.lateral_rows @ q.reshape(dm.size, -1)).reshape(2, *q.shape[1:])).max(axis=0)
-                     for a in model.actuators])
+    disp = np.stack(
+        [
+            orbit_amplitude(*(a.lateral_rows @ q.reshape(dm.size, -1)).reshape(2, *q.shape[1:])).max(axis=0)
+            for a in model.actuators
+        ]
+    )
     gain = np.abs(kp + 1j * speeds * kd)
     return shaft, disp, gain * disp
 
@@ -127,7 +130,9 @@ def test_merged_receptance_equals_the_receptance_solved_on_the_union(baseline):
     for name in ("shaft_free", "shaft_per_force", "actuator_free", "receptance", "plant"):
         np.testing.assert_allclose(getattr(merged, name), getattr(union, name), rtol=1e-13, atol=0, err_msg=name)
     with pytest.raises(ValueError, match="different models"):
-        merged.merged(actuator_receptance(build_model(with_overrides(baseline_design(), {"mesh.shaft_elements": 20})), b))
+        merged.merged(
+            actuator_receptance(build_model(with_overrides(baseline_design(), {"mesh.shaft_elements": 20})), b)
+        )
 
 
 def test_clustered_receptance_finds_the_sharp_peak_that_even_speeds_miss():

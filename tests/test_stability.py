@@ -12,6 +12,7 @@ in complex coordinates r = v + iw the forward mode obeys
 import numpy as np
 import pytest
 import scipy.linalg as la
+from rotors import K_SHAFT, M_DISK, WN, jeffcott
 
 from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
@@ -19,7 +20,6 @@ from flexshaft.analyses.stability import rotation_generator, stability
 from flexshaft.assembly import build_model
 from flexshaft.assembly.sparse import restrict
 from flexshaft.design import baseline_design, with_overrides
-from rotors import K_SHAFT, M_DISK, WN, jeffcott
 
 
 def forward_root(speed, c_e, c_i):
@@ -160,9 +160,21 @@ def test_newton_terms_vanish_at_the_state_matrix_roots_and_give_the_derivative_o
     step 1e-5 |s|, to 1e-7 (truncation ~1e-10, round-off ~1e-11 of |dT/ds · y|)."""
     lagged = {}
     for i, offset in ((1, 0.04), (2, -0.03)):
-        lagged.update({f"bearings[{i}].{k}": v for k, v in (
-            ("ks", 8.5e5), ("ki", 177.0), ("kp", 1.6e4), ("kd", 11.0), ("integral_gain", 1e5),
-            ("derivative_cutoff", 500.0), ("amplifier_bandwidth", 1000.0), ("sensor_offset", offset))})
+        lagged.update(
+            {
+                f"bearings[{i}].{k}": v
+                for k, v in (
+                    ("ks", 8.5e5),
+                    ("ki", 177.0),
+                    ("kp", 1.6e4),
+                    ("kd", 11.0),
+                    ("integral_gain", 1e5),
+                    ("derivative_cutoff", 500.0),
+                    ("amplifier_bandwidth", 1000.0),
+                    ("sensor_offset", offset),
+                )
+            }
+        )
     pd = {"bearings[1].kd": 300.0, "bearings[2].kd": 300.0}
     offset_pd = {**pd, "bearings[1].sensor_offset": 0.04, "bearings[2].sensor_offset": -0.03}
     rng = np.random.default_rng(7)

@@ -42,9 +42,7 @@ def test_uniaxial_fibre_tension_closed_form():
     np.testing.assert_allclose(tsai_wu_safety_factor(-sigma, 0, 0, THESIS), THESIS.X_c / sigma, rtol=TIGHT)
 
 
-@given(
-    st.floats(-3e9, 3e9), st.floats(-3e7, 3e7), st.floats(-5e7, 5e7), st.floats(1e-3, 1e3),
-)
+@given(st.floats(-3e9, 3e9), st.floats(-3e7, 3e7), st.floats(-5e7, 5e7), st.floats(1e-3, 1e3))
 @settings(max_examples=200, deadline=None)
 def test_R_scales_as_inverse_load_with_only_quadratic_terms(s1, s2, t12, factor):
     """X_t = X_c and Y_t = Y_c make F1 = F2 = 0, so a R^2 = 1 and R(lambda sigma) = R(sigma)/lambda."""
@@ -132,7 +130,8 @@ def test_residual_stress_is_not_scaled_uniaxial_closed_form():
     # a residual that alone breaks the envelope leaves no margin; a zero residual changes nothing
     assert tsai_wu_safety_factor(0.0, 1e6, 0.0, THESIS, residual=(0.0, 6e6, 0.0)) == 0.0
     assert tsai_wu_safety_factor(1e8, 2e5, 3e6, THESIS, residual=(0.0, 0.0, 0.0)) == pytest.approx(
-        tsai_wu_safety_factor(1e8, 2e5, 3e6, THESIS), rel=TIGHT)
+        tsai_wu_safety_factor(1e8, 2e5, 3e6, THESIS), rel=TIGHT
+    )
 
 
 @given(st.floats(-1e9, 1e9), st.floats(-3e6, 3e6), st.floats(-1e7, 1e7), st.floats(-1e8, 1e8), st.floats(-1e6, 1e6))
@@ -196,8 +195,19 @@ def test_spinning_free_ring_hoop_stress_through_the_laminate_path():
 
     G = 70e9 / 2.6
     ply = "materials.t700_adiprene."
-    model = _model({**NO_LOADS, ply + "E_L": 70e9, ply + "E_T": 70e9, ply + "G_LT": G, ply + "nu_LT": 0.3,
-                    ply + "G_13": G, ply + "G_23": G, ply + "alpha_L": 0.0, ply + "alpha_T": 0.0})
+    model = _model(
+        {
+            **NO_LOADS,
+            ply + "E_L": 70e9,
+            ply + "E_T": 70e9,
+            ply + "G_LT": G,
+            ply + "nu_LT": 0.3,
+            ply + "G_13": G,
+            ply + "G_23": G,
+            ply + "alpha_L": 0.0,
+            ply + "alpha_T": 0.0,
+        }
+    )
     result = shaft_safety_factor(model, np.zeros(model.dofs.size))
     rho, omega, r = 1650.0, 4800 * 2 * np.pi / 60, (0.1016 - 0.003) / 2
     hoop = rho * omega**2 * r**2
@@ -234,15 +244,19 @@ def test_baseline_load_shares_sum_to_one_and_leave_one_out_matches_switches(base
     assert set(full.load_shares) == {"external", "torque", "imbalance", "centrifugal", "thermal"}
     assert sum(full.load_shares.values()) == pytest.approx(1.0, abs=1e-12)
     assert full.safety_factor_without["centrifugal"] == pytest.approx(
-        shaft_safety_factor(model, parts, q_dyn, speed=0.0).safety_factor, rel=1e-12)
+        shaft_safety_factor(model, parts, q_dyn, speed=0.0).safety_factor, rel=1e-12
+    )
     assert full.safety_factor_without["thermal"] == pytest.approx(
-        shaft_safety_factor(model, parts, q_dyn, thermal_residual=False).safety_factor, rel=1e-12)
-    assert full.safety_factor_without["imbalance"] == pytest.approx(shaft_safety_factor(model, parts).safety_factor,
-                                                                   rel=1e-12)
+        shaft_safety_factor(model, parts, q_dyn, thermal_residual=False).safety_factor, rel=1e-12
+    )
+    assert full.safety_factor_without["imbalance"] == pytest.approx(
+        shaft_safety_factor(model, parts).safety_factor, rel=1e-12
+    )
     summed = shaft_safety_factor(model, parts["external"] + parts["torque"], q_dyn)
     assert summed.safety_factor == pytest.approx(full.safety_factor, rel=1e-12)
-    assert summed.load_shares["static"] == pytest.approx(full.load_shares["external"] + full.load_shares["torque"],
-                                                         rel=1e-9)
+    assert summed.load_shares["static"] == pytest.approx(
+        full.load_shares["external"] + full.load_shares["torque"], rel=1e-9
+    )
 
 
 def test_baseline_failure_state_reaches_the_envelope(baseline_strength):

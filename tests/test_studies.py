@@ -27,13 +27,18 @@ def test_ply_angle_study_is_labelled_and_peaks_at_45_degrees(coarse):
     # the vanishing bending sigma2 checked below; G_LT ≪ E_L: the σ2 left at 45° scales with
     # 1 − ν_xy ≈ 8 G_LT/E_L (0.24 % here; 5 % of the neighbouring angles' σ2, 12 % with the
     # baseline's G_LT = 0.1 GPa)
-    soft = with_overrides(coarse, {"materials.t700_adiprene.alpha_T": -0.4e-6,
-                                   "materials.t700_adiprene.G_LT": 0.035e9})
+    soft = with_overrides(coarse, {"materials.t700_adiprene.alpha_T": -0.4e-6, "materials.t700_adiprene.G_LT": 0.035e9})
     ds = ply_angle_study([30.0, 40.0, 45.0, 50.0, 60.0], design=soft, progress=False)
     assert ds["safety_factor"].dims == ("alpha",)
     assert ds.alpha.attrs["units"] == "deg"
-    for name, units in (("safety_factor", "1"), ("sigma1", "Pa"), ("sigma2", "Pa"), ("tau12", "Pa"),
-                        ("critical_ply_angle", "deg"), ("critical_x", "m")):
+    for name, units in (
+        ("safety_factor", "1"),
+        ("sigma1", "Pa"),
+        ("sigma2", "Pa"),
+        ("tau12", "Pa"),
+        ("critical_ply_angle", "deg"),
+        ("critical_x", "m"),
+    ):
         assert ds[name].attrs["units"] == units and ds[name].attrs["long_name"]
     assert set(ds["dominant_stress"].values.astype(int)) <= set(DOMINANT_STRESS_CODES)
     # no imbalance in study 1: the total equals the static safety factor
@@ -50,12 +55,19 @@ def test_ply_angle_study_is_labelled_and_peaks_at_45_degrees(coarse):
 def _plain_shaft(design):
     """Aluminium tube on two stiff contact bearings at its ends, no tailboom, no actuators."""
     b = design.bearings
-    return with_overrides(design, {
-        "shaft.x_start": b[0].x, "shaft.x_end": b[-1].x,
-        "tailboom": None, "loads.point": [], "shaft.material": "al6061_t6", "shaft.layup": None,
-        "bearings": [b[0].model_dump(exclude_none=True), b[-1].model_dump(exclude_none=True)],
-        "mesh.shaft_elements": 40,
-    })
+    return with_overrides(
+        design,
+        {
+            "shaft.x_start": b[0].x,
+            "shaft.x_end": b[-1].x,
+            "tailboom": None,
+            "loads.point": [],
+            "shaft.material": "al6061_t6",
+            "shaft.layup": None,
+            "bearings": [b[0].model_dump(exclude_none=True), b[-1].model_dump(exclude_none=True)],
+            "mesh.shaft_elements": 40,
+        },
+    )
 
 
 def test_wall_study_first_frequency_follows_eq_3_3():

@@ -71,8 +71,11 @@ def test_model_built_per_design_and_processes_match_serial():
     parallel = run_sweep(study, jobs=2, chunk_size=1, progress=False)
     xr.testing.assert_identical(serial, parallel)
     mass = serial["shaft_mass"].values
-    np.testing.assert_allclose(mass / mass[0], [1.0, (0.1016**2 - 0.0956**2) / (0.1016**2 - 0.0976**2),
-                                                (0.1016**2 - 0.0936**2) / (0.1016**2 - 0.0976**2)], rtol=1e-12)
+    np.testing.assert_allclose(
+        mass / mass[0],
+        [1.0, (0.1016**2 - 0.0956**2) / (0.1016**2 - 0.0976**2), (0.1016**2 - 0.0936**2) / (0.1016**2 - 0.0976**2)],
+        rtol=1e-12,
+    )
 
 
 @pytest.mark.parametrize(

@@ -14,8 +14,8 @@ from flexshaft.sweep import Output, Study, Variable, run_sweep
 def peak_actuator_force(point):
     """A real (small) analysis per point: the actuator force at the operating speed."""
     from flexshaft.analyses import imbalance_response
-    from flexshaft.assembly.loads import imbalance_loads
     from flexshaft.analyses.response import actuator_response
+    from flexshaft.assembly.loads import imbalance_loads
 
     model = point.model
     speed = point.axes["speed"]
@@ -35,7 +35,9 @@ def test_local_cluster_matches_local_run(tmp_path):
         peak_actuator_force,
     )
     local = run_sweep(study, progress=False, chunk_size=2)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
+    ) as cluster:
         with distributed.Client(cluster) as client:
             remote = run_sweep(study, tmp_path / "run", client=client, progress=False, chunk_size=2)
     xr.testing.assert_identical(local, remote)

@@ -56,10 +56,7 @@ def _study(wall: float = 0.003) -> Study:
 
 
 def _closed_form(wall: float = 0.003) -> dict[str, np.ndarray]:
-    return {
-        "stiffness_speed": KP[:, None] * 1e-6 + SPEED[None, :] ** 2,
-        "wall_mm": np.full((3, 4), 1e3 * wall),
-    }
+    return {"stiffness_speed": KP[:, None] * 1e-6 + SPEED[None, :] ** 2, "wall_mm": np.full((3, 4), 1e3 * wall)}
 
 
 @pytest.fixture()
@@ -244,8 +241,11 @@ def test_clean_resume_is_silent_and_keeps_nan_of_failed_points(tmp_path):
     """on_error='nan' chunks are reused as stored: their NaN are results, not damage."""
     study = Study(
         "failing",
-        [Variable(path="bearings[1].kp", name="kp", values=KP, units="N/m"), Variable("speed", SPEED, units="rad/s"),
-         Variable("fail", [True])],
+        [
+            Variable(path="bearings[1].kp", name="kp", values=KP, units="N/m"),
+            Variable("speed", SPEED, units="rad/s"),
+            Variable("fail", [True]),
+        ],
         [Output("stiffness_speed"), Output("wall_mm", "mm")],
         analytic,
     )

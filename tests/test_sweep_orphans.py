@@ -158,8 +158,9 @@ def test_worker_whose_parent_died_before_setup_exits(use_pdeathsig):
     """The race the PID check closes: the parent died between the fork and the prctl call."""
     import multiprocessing
 
-    child = multiprocessing.get_context("fork").Process(target=_start_worker_whose_parent_is_gone,
-                                                        args=(use_pdeathsig,))
+    child = multiprocessing.get_context("fork").Process(
+        target=_start_worker_whose_parent_is_gone, args=(use_pdeathsig,)
+    )
     child.start()
     child.join(timeout=5)
     if child.is_alive():

@@ -51,8 +51,9 @@ def test_tasks_run_in_workers_and_come_back_in_task_order():
 @pytest.mark.parametrize("pooled", [False, pytest.param(True, marks=needs_fork)])
 def test_declared_errors_are_kept_and_others_raised(pooled):
     with worker_pool(2 if pooled else 1) as pool:
-        out = start_tasks([Task("a", "a", _square, (3,)), Task("b", "b", _refuse, (4,))], pool,
-                          errors=(ValueError,)).results()
+        out = start_tasks(
+            [Task("a", "a", _square, (3,)), Task("b", "b", _refuse, (4,))], pool, errors=(ValueError,)
+        ).results()
         assert out["a"].value[0] == 9 and out["a"].error is None
         assert isinstance(out["b"].error, ValueError) and "refused 4" in str(out["b"].error)
         with pytest.raises(KeyError):
@@ -70,8 +71,9 @@ def test_a_design_error_crosses_the_process_boundary_intact():
 
     bad = {"bearings[1].kp": -1.0}
     with worker_pool(2) as pool:
-        out = start_tasks([Task("d", "d", with_overrides, (baseline_design(), bad))], pool,
-                          errors=(DesignError,)).results()
+        out = start_tasks(
+            [Task("d", "d", with_overrides, (baseline_design(), bad))], pool, errors=(DesignError,)
+        ).results()
     err = out["d"].error
     assert isinstance(err, DesignError) and err.problems and err.problems[0].path.startswith("bearings[1]")
 
@@ -117,13 +119,22 @@ def test_run_analysis_on_a_pool_equals_the_run_in_process():
 def test_cli_sets_one_blas_thread_unless_the_user_chose():
     """The CLI limits BLAS to one thread per process (it parallelises over processes) but
     keeps a value the user set."""
-    code = ("import os, sys; from flexshaft.cli import _one_blas_thread_per_process as f; f(); "
-            "print(os.environ['OPENBLAS_NUM_THREADS'], os.environ['MKL_NUM_THREADS'])")
-    env = {k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")}
+    code = (
+        "import os, sys; from flexshaft.cli import _one_blas_thread_per_process as f; f(); "
+        "print(os.environ['OPENBLAS_NUM_THREADS'], os.environ['MKL_NUM_THREADS'])"
+    )
+    env = {
+        k: v for k, v in os.environ.items() if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")
+    }
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert out.stdout.split() == ["1", "1"]
-    out = subprocess.run([sys.executable, "-c", code], env={**env, "OPENBLAS_NUM_THREADS": "2"},
-                         capture_output=True, text=True, check=True)
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        env={**env, "OPENBLAS_NUM_THREADS": "2"},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     assert out.stdout.split() == ["2", "1"]
 
 
@@ -185,13 +196,15 @@ def test_workers_end_with_the_command(tmp_path, how):
 def test_one_blas_thread_limits_and_restores_every_blas_library():
     """Reference: threadpoolctl's own report of the loaded BLAS libraries (a fresh process with
     two BLAS threads, so that the limit is visible)."""
-    code = ("import numpy, scipy.linalg; from threadpoolctl import threadpool_info as info; "
-            "from flexshaft._threads import one_blas_thread\n"
-            "before = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
-            "for _ in range(3):\n"
-            "    with one_blas_thread(): inside = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
-            "after = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
-            "import json; print(json.dumps([before, inside, after]))")
+    code = (
+        "import numpy, scipy.linalg; from threadpoolctl import threadpool_info as info; "
+        "from flexshaft._threads import one_blas_thread\n"
+        "before = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+        "for _ in range(3):\n"
+        "    with one_blas_thread(): inside = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+        "after = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
+        "import json; print(json.dumps([before, inside, after]))"
+    )
     env = {**os.environ, "OPENBLAS_NUM_THREADS": "2", "OMP_NUM_THREADS": "2", "MKL_NUM_THREADS": "2"}
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True).stdout
     before, inside, after = json.loads(out)

@@ -12,12 +12,20 @@ import flexshaft as fs
 from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.analysis import shaft_thermal
 from flexshaft.thermal.correlations import (
-    HILPERT_TABLE, churchill_bernstein_nusselt, churchill_chu_nusselt, hilpert_nusselt,
-    rotating_cylinder_nusselt, rotating_cylinder_nusselt_becker,
+    HILPERT_TABLE,
+    churchill_bernstein_nusselt,
+    churchill_chu_nusselt,
+    hilpert_nusselt,
+    rotating_cylinder_nusselt,
+    rotating_cylinder_nusselt_becker,
 )
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.heat import (
-    harmonic_loss_power, heat_sources, shaft_loss_matrices, split_whirl, static_circular_amplitude,
+    harmonic_loss_power,
+    heat_sources,
+    shaft_loss_matrices,
+    split_whirl,
+    static_circular_amplitude,
 )
 from flexshaft.thermal.selfheating import MatrixTemperatureLaw, fixed_point, self_heating
 from flexshaft.thermal.shaft import solve_shaft_temperature
@@ -30,7 +38,16 @@ def model():
 
 
 # ------------------------------------------------------------------ finite-difference shaft
-FIN = dict(k=167.0, A=9.3e-4, P=math.pi * 0.1016, h=5.0, L=2.0, q=2.0, T_inf=316.0, T_end=320.0)  # m L = 6.4
+FIN = {
+    "k": 167.0,
+    "A": 9.3e-4,
+    "P": math.pi * 0.1016,
+    "h": 5.0,
+    "L": 2.0,
+    "q": 2.0,
+    "T_inf": 316.0,
+    "T_end": 320.0,
+}  # m L = 6.4
 
 
 def _fin_exact(x):
@@ -43,8 +60,9 @@ def _fin_exact(x):
 
 def _fin_fd(n):
     x = np.linspace(0.0, FIN["L"], n + 1)
-    r = solve_shaft_temperature(x, FIN["q"] * np.diff(x), FIN["k"], FIN["A"], FIN["P"], FIN["h"], FIN["T_inf"],
-                                (FIN["T_end"], FIN["T_end"]))
+    r = solve_shaft_temperature(
+        x, FIN["q"] * np.diff(x), FIN["k"], FIN["A"], FIN["P"], FIN["h"], FIN["T_inf"], (FIN["T_end"], FIN["T_end"])
+    )
     return x, r
 
 
@@ -82,9 +100,14 @@ def test_energy_balance_closes_on_the_baseline(model):
 
 def test_zero_loss_factor_stays_at_the_boom_temperature():
     # A shaft with no hysteretic loss generates no heat, so it sits at its air/end temperature.
-    design = fs.with_overrides(fs.baseline_design(), {
-        "materials.t700_adiprene.loss_E_L": 0.0, "materials.t700_adiprene.loss_E_T": 0.0,
-        "materials.t700_adiprene.loss_G_LT": 0.0})
+    design = fs.with_overrides(
+        fs.baseline_design(),
+        {
+            "materials.t700_adiprene.loss_E_L": 0.0,
+            "materials.t700_adiprene.loss_E_T": 0.0,
+            "materials.t700_adiprene.loss_G_LT": 0.0,
+        },
+    )
     lossless = fs.build_model(design)
     for loss in ("thesis", "rotating"):
         r = shaft_thermal(lossless, loss_model=loss, air_temperature=317.0)
@@ -137,8 +160,11 @@ def test_rotating_frame_loss_matches_a_direct_rotating_frame_analysis(model):
     Omega = model.speed
     axial, fwd, bwd = split_whirl(X)
     assert np.allclose(axial + fwd + bwd, X)
-    ours = (harmonic_loss_power(axial[None], Kpp[None], Omega) + harmonic_loss_power(bwd[None], Kpp[None], 2 * Omega)
-            + harmonic_loss_power(static_circular_amplitude(Xs)[None], Kpp[None], Omega))[0]
+    ours = (
+        harmonic_loss_power(axial[None], Kpp[None], Omega)
+        + harmonic_loss_power(bwd[None], Kpp[None], 2 * Omega)
+        + harmonic_loss_power(static_circular_amplitude(Xs)[None], Kpp[None], Omega)
+    )[0]
     assert ours == pytest.approx(_rotating_frame_power(Kpp, X, Xs, Omega), rel=1e-9)
     # forward synchronous whirl does not cycle the material
     assert harmonic_loss_power(split_whirl(fwd)[2][None], Kpp[None], 2 * Omega)[0] == pytest.approx(0.0, abs=1e-18)
@@ -202,12 +228,15 @@ def test_rotating_cylinder_correlations():
         rotating_cylinder_nusselt(1e5, 0.7, "nope")
 
 
-@pytest.mark.parametrize("T, mu, k, nu, Pr", [
-    (250.0, 159.6e-7, 22.3e-3, 11.44e-6, 0.720),
-    (300.0, 184.6e-7, 26.3e-3, 15.89e-6, 0.707),
-    (350.0, 208.2e-7, 30.0e-3, 20.92e-6, 0.700),
-    (400.0, 230.1e-7, 33.8e-3, 26.41e-6, 0.690),
-])
+@pytest.mark.parametrize(
+    "T, mu, k, nu, Pr",
+    [
+        (250.0, 159.6e-7, 22.3e-3, 11.44e-6, 0.720),
+        (300.0, 184.6e-7, 26.3e-3, 15.89e-6, 0.707),
+        (350.0, 208.2e-7, 30.0e-3, 20.92e-6, 0.700),
+        (400.0, 230.1e-7, 33.8e-3, 26.41e-6, 0.690),
+    ],
+)
 def test_air_properties_against_incropera_table_a4(T, mu, k, nu, Pr):
     # μ, k, Pr within 1 %; ν within 2.5 % because the table's density sits 1.3-1.9 % below the
     # ideal gas at 1 atm used here.
@@ -223,7 +252,9 @@ def test_ellipse_perimeter_against_quadrature():
     from scipy.integrate import quad
 
     a, b = 0.375, 0.3
-    exact = 4 * a * quad(lambda t: math.sqrt(1 - (1 - (b / a) ** 2) * math.sin(t) ** 2), 0, math.pi / 2, epsabs=1e-14)[0]
+    exact = (
+        4 * a * quad(lambda t: math.sqrt(1 - (1 - (b / a) ** 2) * math.sin(t) ** 2), 0, math.pi / 2, epsabs=1e-14)[0]
+    )
     assert ellipse_perimeter(a, b) == pytest.approx(exact, rel=1e-9)
 
 

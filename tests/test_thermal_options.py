@@ -14,10 +14,10 @@ from typer.testing import CliRunner
 import flexshaft as fs
 from flexshaft.design import DesignError, baseline_text, loads_design
 from flexshaft.design.thermal_schema import Thermal
-from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin, kelvin_to_celsius
 from flexshaft.studies.thermal import thermal_results
 from flexshaft.thermal.heat import heat_sources
 from flexshaft.thermal.options import ThermalOptions, environment_from, matrix_law_from, thermal_options
+from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin, kelvin_to_celsius
 
 SRC = Path(fs.__file__).parent
 
@@ -151,8 +151,13 @@ def test_allowable_temperature_drives_the_runaway_check_and_the_results(baseline
 def test_builders_convert_celsius_and_degrees_to_si():
     # Independent references: 0 °C = 273.15 K (SI definition); G = S_c f cos θ_s (eq. 2.58)
     # with cos 60° = 1/2 exactly.
-    table = Thermal(ambient_temperature_c=0.0, sky_temperature_c=-10.0, solar_zenith_deg=60.0,
-                    matrix_reference_temperature_c=25.0, allowable_temperature_c=120.0)
+    table = Thermal(
+        ambient_temperature_c=0.0,
+        sky_temperature_c=-10.0,
+        solar_zenith_deg=60.0,
+        matrix_reference_temperature_c=25.0,
+        allowable_temperature_c=120.0,
+    )
     env = environment_from(table)
     assert env.ambient_temperature == 273.15 and ZERO_CELSIUS == 273.15
     assert env.sky_temperature == pytest.approx(263.15, abs=1e-12)
@@ -234,7 +239,11 @@ def test_thermal_never_loads_or_makes_designs_nor_imports_a_higher_layer():
 def test_zero_celsius_is_written_once():
     # 273.15 appears in the design, thermal and thermal-study sources only as the constant of
     # flexshaft.units; everything else converts with its functions.
-    files = [*(SRC / "design").glob("*.py"), *(SRC / "thermal").glob("*.py"), SRC / "studies" / "thermal.py",
-             SRC / "units.py"]
+    files = [
+        *(SRC / "design").glob("*.py"),
+        *(SRC / "thermal").glob("*.py"),
+        SRC / "studies" / "thermal.py",
+        SRC / "units.py",
+    ]
     hits = sorted(p.relative_to(SRC) for p in files if "273.15" in p.read_text())
     assert hits == [Path("units.py")]

@@ -49,6 +49,8 @@ def baseline_design():
     from pathlib import Path
 
     return load_design(Path(__file__).parent / "data" / "baseline_0f8aaa9.toml")
+
+
 from rotors import M_DISK, WN, jeffcott_text
 
 ECCENTRICITY = 1e-4  # m, disk mass eccentricity of the Jeffcott tests
@@ -94,12 +96,28 @@ def _reference_jeffcott(mass, stiffness, c_ext, eta, s0, alpha, duration, times,
         speed, phase = s0 + alpha * t, s0 * t + 0.5 * alpha * t * t
         c, s = math.cos(phase), math.sin(phase)
         ci = eta * k / (omega + speed)
-        fv = U * (speed * speed * c + alpha * s) - c_ext * dv - speed * (g11 * dv + g12 * dw) - k11 * v - k12 * w - ci * (dv + speed * w)
-        fw = U * (speed * speed * s - alpha * c) - c_ext * dw - speed * (g21 * dv + g22 * dw) - k21 * v - k22 * w - ci * (dw - speed * v)
+        fv = (
+            U * (speed * speed * c + alpha * s)
+            - c_ext * dv
+            - speed * (g11 * dv + g12 * dw)
+            - k11 * v
+            - k12 * w
+            - ci * (dv + speed * w)
+        )
+        fw = (
+            U * (speed * speed * s - alpha * c)
+            - c_ext * dw
+            - speed * (g21 * dv + g22 * dw)
+            - k21 * v
+            - k22 * w
+            - ci * (dw - speed * v)
+        )
         return [dv, dw, m11 * fv + m12 * fw, m21 * fv + m22 * fw]
 
     # steady forward whirl r = Re(R e^{iφ}): (−s0² M + i s0 c_e + K) R = U s0² (1, −i)
-    R = np.linalg.solve(-s0**2 * mass + 1j * s0 * (c_ext * np.eye(2) + s0 * G) + stiffness, U * s0**2 * np.array([1.0, -1j]))
+    R = np.linalg.solve(
+        -(s0**2) * mass + 1j * s0 * (c_ext * np.eye(2) + s0 * G) + stiffness, U * s0**2 * np.array([1.0, -1j])
+    )
     x0 = np.concatenate([R.real, (1j * s0 * R).real])
     sol = solve_ivp(rhs, (0.0, duration), x0, method="DOP853", rtol=1e-12, atol=1e-15 * ECCENTRICITY, dense_output=True)
     return sol.sol(times)[:2]
@@ -113,8 +131,11 @@ def _disk_matrices(red, rows):
     return Pinv.T @ Pinv, Pinv.T @ np.diag(red.w2) @ Pinv, Pinv.T @ red.G @ Pinv
 
 
-@pytest.mark.parametrize("c_e, eta", [(0.0, 0.0), (2 * 0.02 * M_DISK * WN, 0.0), (0.0, 0.04)],
-                         ids=["undamped", "external 2 %", "internal rotating η 0.04"])
+@pytest.mark.parametrize(
+    "c_e, eta",
+    [(0.0, 0.0), (2 * 0.02 * M_DISK * WN, 0.0), (0.0, 0.04)],
+    ids=["undamped", "external 2 %", "internal rotating η 0.04"],
+)
 def test_jeffcott_passage_matches_independent_integration(c_e, eta):
     """Whole time histories v(t), w(t) through the critical at λ = α/ω² = 1e-3.
 
@@ -133,8 +154,15 @@ def test_jeffcott_passage_matches_independent_integration(c_e, eta):
     Q1 = per_bay_imbalance_loads(model, M_DISK * ECCENTRICITY)
     s0, s1, lam = 0.5 * WN, 1.5 * WN, 1e-3
     alpha = lam * WN**2
-    result = transient_response(model, SpeedProfile.constant_acceleration(s0, s1, alpha), loads_per_speed_squared=Q1,
-                                reduced=red, rtol=1e-9, output_step=2e-3, static_correction=False)
+    result = transient_response(
+        model,
+        SpeedProfile.constant_acceleration(s0, s1, alpha),
+        loads_per_speed_squared=Q1,
+        reduced=red,
+        rtol=1e-9,
+        output_step=2e-3,
+        static_correction=False,
+    )
     v, w = result.displacement(rows)
     mass, stiffness, gyroscopic = _disk_matrices(red, rows)
     ref_v, ref_w = _reference_jeffcott(mass, stiffness, c_e, eta, s0, alpha, result.time[-1], result.time, gyroscopic)
@@ -145,7 +173,9 @@ def test_jeffcott_passage_matches_independent_integration(c_e, eta):
     assert np.abs(result.shaft_orbit.max(axis=0) - np.hypot(v, w)).max() <= 2e-3 * peak
 
     fine = np.linspace(0.0, result.time[-1], 100_001)
-    ref_v, ref_w = _reference_jeffcott(M_DISK * np.eye(2), M_DISK * WN**2 * np.eye(2), c_e, eta, s0, alpha, fine[-1], fine)
+    ref_v, ref_w = _reference_jeffcott(
+        M_DISK * np.eye(2), M_DISK * WN**2 * np.eye(2), c_e, eta, s0, alpha, fine[-1], fine
+    )
     radius = np.hypot(ref_v, ref_w)
     k = int(np.argmax(radius))
     value, _, speed = result.peak()
@@ -166,8 +196,13 @@ def test_undamped_passage_tends_to_the_fresnel_asymptote():
     errors = []
     for lam in (1e-3, 2.5e-4):
         alpha = lam * WN**2
-        run = transient_response(model, SpeedProfile.constant_acceleration(0.6 * WN, 1.3 * WN, alpha),
-                                 loads_per_speed_squared=Q1, reduced=red, rtol=1e-8)
+        run = transient_response(
+            model,
+            SpeedProfile.constant_acceleration(0.6 * WN, 1.3 * WN, alpha),
+            loads_per_speed_squared=Q1,
+            reduced=red,
+            rtol=1e-8,
+        )
         value, _, speed = run.peak()
         asymptote = 0.5 * np.sqrt(np.pi / lam) * f_star * ECCENTRICITY
         errors.append(abs(value / asymptote - 1))
@@ -184,22 +219,36 @@ def test_work_of_the_imbalance_force_equals_the_energy_change():
     U = M_DISK * ECCENTRICITY
     Q1 = per_bay_imbalance_loads(model, U)
     s0, s1, alpha = 0.5 * WN, 1.5 * WN, 1e-3 * WN**2
-    run = transient_response(model, SpeedProfile.constant_acceleration(s0, s1, alpha), loads_per_speed_squared=Q1,
-                             reduced=red, rtol=1e-10, initial="rest", static_correction=False,
-                             output_step=2 * np.pi / (20 * s1))
+    run = transient_response(
+        model,
+        SpeedProfile.constant_acceleration(s0, s1, alpha),
+        loads_per_speed_squared=Q1,
+        reduced=red,
+        rtol=1e-10,
+        initial="rest",
+        static_correction=False,
+        output_step=2 * np.pi / (20 * s1),
+    )
     turn = np.exp(1j * run.phase)
     y, ydot = np.real(run.modal_displacement * turn), np.real(run.modal_velocity * turn)
     energy = 0.5 * np.sum(ydot**2 + red.w2[:, None] * y**2, axis=0)
     dv, dw = red.Phi[rows] @ ydot
     speed, phase = run.speed, run.phase
-    power = U * ((speed**2 * np.cos(phase) + alpha * np.sin(phase)) * dv + (speed**2 * np.sin(phase) - alpha * np.cos(phase)) * dw)
+    power = U * (
+        (speed**2 * np.cos(phase) + alpha * np.sin(phase)) * dv
+        + (speed**2 * np.sin(phase) - alpha * np.cos(phase)) * dw
+    )
     work = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(run.time))])
     assert np.abs(energy - energy[0] - work).max() <= 1e-4 * energy.max()
 
 
 def _undamped_baseline():
-    overrides = {"materials.t700_adiprene.loss_E_L": 0.0, "materials.t700_adiprene.loss_E_T": 0.0,
-                 "materials.t700_adiprene.loss_G_LT": 0.0, "materials.boom_aluminium.loss_factor": 0.0}
+    overrides = {
+        "materials.t700_adiprene.loss_E_L": 0.0,
+        "materials.t700_adiprene.loss_E_T": 0.0,
+        "materials.t700_adiprene.loss_G_LT": 0.0,
+        "materials.boom_aluminium.loss_factor": 0.0,
+    }
     return build_model(with_overrides(baseline_design(), overrides))
 
 
@@ -217,8 +266,16 @@ def test_free_vibration_of_the_undamped_driveline_keeps_its_energy(spin):
     state[: 2 * red.size] = rng.normal(size=2 * red.size) * np.concatenate([1 / np.sqrt(red.w2), np.ones(red.size)])
     top = 0.0 if spin == "non-rotating" else model.speed
     profile = SpeedProfile.table([0.0, 2.0], [0.0, top])
-    run = transient_response(model, profile, loads_per_speed_squared=np.zeros(model.dofs.size), reduced=red,
-                             initial=state, rtol=1e-8, output_step=5e-3, static_correction=False)
+    run = transient_response(
+        model,
+        profile,
+        loads_per_speed_squared=np.zeros(model.dofs.size),
+        reduced=red,
+        initial=state,
+        rtol=1e-8,
+        output_step=5e-3,
+        static_correction=False,
+    )
     turn = np.exp(1j * run.phase)
     y, ydot = np.real(run.modal_displacement * turn), np.real(run.modal_velocity * turn)
     energy = 0.5 * np.sum(ydot**2 + red.w2[:, None] * y**2, axis=0)
@@ -248,17 +305,23 @@ def test_constant_speed_steady_state_equals_the_frequency_response(internal_damp
     model = build_model(with_overrides(baseline_design(), {"analysis.internal_damping": internal_damping}))
     red = reduce(model, default_basis_size(model, model.speed))
     for speed in np.linspace(0.05, 1.0, 12) * model.speed:
-        start = transient_response(model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red,
-                                   output_step=1e-3)  # initial="steady": the algebraic steady state
+        start = transient_response(
+            model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red, output_step=1e-3
+        )  # initial="steady": the algebraic steady state
         exact = steady_state_envelope(model, [speed])
         assert np.abs(start.shaft_orbit[:, 0] - exact.shaft_orbit[:, 0]).max() <= 1e-2 * exact.shaft_orbit.max()
-        for ours, theirs in ((start.actuator_displacement, exact.actuator_displacement),
-                             (start.actuator_force, exact.actuator_force)):
+        for ours, theirs in (
+            (start.actuator_displacement, exact.actuator_displacement),
+            (start.actuator_force, exact.actuator_force),
+        ):
             assert np.abs(ours[:, 0] - theirs[:, 0]).max() <= 2e-2 * theirs.max()
     for speed in (100.0, 205.0, 290.0):
-        settled = transient_response(model, SpeedProfile.table([0.0, 150.0], [speed, speed]), reduced=red,
-                                     initial="rest", output_step=1.0)
-        start = transient_response(model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red, output_step=1e-3)
+        settled = transient_response(
+            model, SpeedProfile.table([0.0, 150.0], [speed, speed]), reduced=red, initial="rest", output_step=1.0
+        )
+        start = transient_response(
+            model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red, output_step=1e-3
+        )
         shaft = start.shaft_orbit[:, 0]
         assert np.abs(settled.shaft_orbit[:, -1] - shaft).max() <= 1e-4 * shaft.max()
 
@@ -270,15 +333,23 @@ def test_transfer_function_actuator_states(baseline):
     (same tolerances as above), and the run from rest settles on it."""
     model, _ = baseline
     lagged = Controller(numerator=(2e3, 5e6), denominator=(1 / 20000.0, 1.0))
-    model = dataclasses.replace(model, actuators=tuple(dataclasses.replace(a, controller=lagged) for a in model.actuators))
+    model = dataclasses.replace(
+        model, actuators=tuple(dataclasses.replace(a, controller=lagged) for a in model.actuators)
+    )
     red = reduce(model, default_basis_size(model, model.speed))
     assert red.n_states == 2 * red.size + 4  # one state per direction per actuator
     for speed in (150.0, 250.0):
-        start = transient_response(model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red, output_step=1e-3)
-        settled = transient_response(model, SpeedProfile.table([0.0, 200.0], [speed, speed]), reduced=red,
-                                     initial="rest", output_step=1.0)
+        start = transient_response(
+            model, SpeedProfile.table([0.0, 1e-3], [speed, speed]), reduced=red, output_step=1e-3
+        )
+        settled = transient_response(
+            model, SpeedProfile.table([0.0, 200.0], [speed, speed]), reduced=red, initial="rest", output_step=1.0
+        )
         exact = steady_state_envelope(model, [speed])
-        assert np.abs(settled.actuator_force[:, -1] - start.actuator_force[:, 0]).max() <= 1e-4 * start.actuator_force.max()
+        assert (
+            np.abs(settled.actuator_force[:, -1] - start.actuator_force[:, 0]).max()
+            <= 1e-4 * start.actuator_force.max()
+        )
         assert np.abs(start.shaft_orbit[:, 0] - exact.shaft_orbit[:, 0]).max() <= 1e-2 * exact.shaft_orbit.max()
         np.testing.assert_allclose(start.actuator_force[:, 0], exact.actuator_force[:, 0], rtol=2e-2)
 
@@ -296,8 +367,9 @@ def test_slower_run_up_tends_to_the_steady_spin_up_curve(baseline):
     top = steady.shaft_peak.max()
     deficits, deviations = [], []
     for alpha in (8.0, 2.0, 0.5):
-        run = transient_response(model, SpeedProfile.constant_acceleration(170.0, 250.0, alpha), reduced=red,
-                                 output_step=0.01)  # the slow envelope: its beats here are ≤ 30 rad/s
+        run = transient_response(
+            model, SpeedProfile.constant_acceleration(170.0, 250.0, alpha), reduced=red, output_step=0.01
+        )  # the slow envelope: its beats here are ≤ 30 rad/s
         deficits.append(1 - run.peak()[0] / top)
         deviations.append(np.abs(run.shaft_peak - np.interp(run.speed, speeds, steady.shaft_peak)).max() / top)
     assert deficits[0] > 2.5 * deficits[1] > 6.25 * deficits[2] > 0
@@ -347,11 +419,19 @@ def test_callable_profile_equals_the_table():
     model, red, rows = _jeffcott(0.0, 2 * 0.05 * M_DISK * WN)
     Q1 = per_bay_imbalance_loads(model, M_DISK * ECCENTRICITY)
     s0, alpha, T = 0.7 * WN, 0.01 * WN**2, 0.6 / (0.01 * WN)
-    table = transient_response(model, SpeedProfile.constant_acceleration(s0, s0 + alpha * T, alpha),
-                               loads_per_speed_squared=Q1, reduced=red, rtol=1e-9, output_step=T / 200)
+    table = transient_response(
+        model,
+        SpeedProfile.constant_acceleration(s0, s0 + alpha * T, alpha),
+        loads_per_speed_squared=Q1,
+        reduced=red,
+        rtol=1e-9,
+        output_step=T / 200,
+    )
     for derivative in (lambda t: alpha, None):
         profile = SpeedProfile.from_callable(lambda t: s0 + alpha * t, T, derivative)
-        other = transient_response(model, profile, loads_per_speed_squared=Q1, reduced=red, rtol=1e-9, output_step=T / 200)
+        other = transient_response(
+            model, profile, loads_per_speed_squared=Q1, reduced=red, rtol=1e-9, output_step=T / 200
+        )
         np.testing.assert_allclose(other.shaft_peak, table.shaft_peak, rtol=1e-6, atol=1e-9 * table.shaft_peak.max())
 
 

@@ -25,25 +25,44 @@ from flexshaft.studies.verdict import (
 )
 
 OP = 4800.0 * 2.0 * math.pi / 60.0  # operating speed [rad/s]
-KEYS = ["tsai_wu", "buckling", "whirl_onset", "whirl_damping", "separation", "actuator_orbit", "actuator_force",
-        "temperature", "spinup_deflection"]
+KEYS = [
+    "tsai_wu",
+    "buckling",
+    "whirl_onset",
+    "whirl_damping",
+    "separation",
+    "actuator_orbit",
+    "actuator_force",
+    "temperature",
+    "spinup_deflection",
+]
 REQUIREMENTS = Requirements(max_spinup_deflection=5e-3)  # defaults + a spin-up limit
 
 
 def passing_evidence() -> Evidence:
     return Evidence(
         operating_speed=OP,
-        safety_factor=3.0, safety_factor_location={"station": 3.21, "ply": "1 (+55°)"},
-        buckling_safety_factor=4.0, buckling_location={"detail": "positive torque"},
-        stability_max_speed=1.5 * OP, onset_speed=None,
+        safety_factor=3.0,
+        safety_factor_location={"station": 3.21, "ply": "1 (+55°)"},
+        buckling_safety_factor=4.0,
+        buckling_location={"detail": "positive torque"},
+        stability_max_speed=1.5 * OP,
+        onset_speed=None,
         modes_at_operating=(ModeDamping("1 (planar, boom)", 31.0, 0.3), ModeDamping("6 (forward, shaft)", 347.0, 0.2)),
-        critical_speeds=(LateralCritical(0.5 * OP, 50.0, {"station": 8.05}),
-                         LateralCritical(1.4 * OP, 30.0, {"station": 4.42})),
+        critical_speeds=(
+            LateralCritical(0.5 * OP, 50.0, {"station": 8.05}),
+            LateralCritical(1.4 * OP, 30.0, {"station": 4.42}),
+        ),
         critical_search_max_speed=1.5 * OP,
-        actuators=(ActuatorEvidence("amb_1", 5e-5, 0.8 * OP, 500.0, 0.8 * OP, 2e-5, 200.0, 2.5e-4, 1500.0),
-                   ActuatorEvidence("amb_2", 6e-5, 0.9 * OP, 600.0, 0.9 * OP, 1e-5, 100.0, 2.5e-4, 1500.0)),
-        max_temperature=320.0, temperature_location={"station": 3.21}, allowable_temperature=373.15,
-        spinup_peak=1e-3, spinup_location={"station": 4.42, "speed": 0.7 * OP},
+        actuators=(
+            ActuatorEvidence("amb_1", 5e-5, 0.8 * OP, 500.0, 0.8 * OP, 2e-5, 200.0, 2.5e-4, 1500.0),
+            ActuatorEvidence("amb_2", 6e-5, 0.9 * OP, 600.0, 0.9 * OP, 1e-5, 100.0, 2.5e-4, 1500.0),
+        ),
+        max_temperature=320.0,
+        temperature_location={"station": 3.21},
+        allowable_temperature=373.15,
+        spinup_peak=1e-3,
+        spinup_location={"station": 4.42, "speed": 0.7 * OP},
     )
 
 
@@ -92,8 +111,11 @@ def test_whirl_onset_below_the_margin_fails_at_the_unstable_mode() -> None:
 
 
 def test_whirl_damping_fails_at_the_least_damped_mode() -> None:
-    modes = (ModeDamping("1 (planar, boom)", 31.0, 0.3), ModeDamping("6 (forward, shaft)", 347.0, -0.004),
-             ModeDamping("8 (forward, shaft)", 436.0, 0.05))
+    modes = (
+        ModeDamping("1 (planar, boom)", 31.0, 0.3),
+        ModeDamping("6 (forward, shaft)", 347.0, -0.004),
+        ModeDamping("8 (forward, shaft)", 436.0, 0.05),
+    )
     ev = dataclasses.replace(passing_evidence(), modes_at_operating=modes)
     check = only_failure(evaluate(ev, REQUIREMENTS), "whirl_damping")
     assert (check.value, check.limit) == pytest.approx((-0.004, 0.1))
@@ -112,7 +134,9 @@ def test_a_damping_ratio_requirement_is_checked_as_its_log_decrement() -> None:
 
 def test_separation_fails_for_the_critical_too_close_to_the_operating_speed() -> None:
     # N_c = 0.95 Ω_op with AF = 10: required 17 (1 − 1/8.5) = 15 %, actual 5 %.
-    criticals = passing_evidence().critical_speeds + (LateralCritical(0.95 * OP, 10.0, {"station": 6.84, "mode": "10"}),)
+    criticals = passing_evidence().critical_speeds + (
+        LateralCritical(0.95 * OP, 10.0, {"station": 6.84, "mode": "10"}),
+    )
     ev = dataclasses.replace(passing_evidence(), critical_speeds=criticals)
     check = only_failure(evaluate(ev, REQUIREMENTS), "separation")
     assert (check.value, check.limit, check.margin) == pytest.approx((0.05, 0.15, -0.10))
@@ -121,8 +145,9 @@ def test_separation_fails_for_the_critical_too_close_to_the_operating_speed() ->
     assert check.location["position"] == "below" and check.location["amplification_factor"] == 10.0
     assert check.n_failed == 1
     # the same critical with AF 2 needs no margin
-    ev = dataclasses.replace(ev, critical_speeds=passing_evidence().critical_speeds
-                             + (LateralCritical(0.95 * OP, 2.0, {}),))
+    ev = dataclasses.replace(
+        ev, critical_speeds=passing_evidence().critical_speeds + (LateralCritical(0.95 * OP, 2.0, {}),)
+    )
     assert evaluate(ev, REQUIREMENTS).passed
 
 
@@ -172,8 +197,10 @@ def test_missing_evidence_and_limits_are_not_evaluated_with_the_reason() -> None
     amb_1, amb_2 = passing_evidence().actuators
     ev = Evidence(
         operating_speed=OP,
-        actuators=(dataclasses.replace(amb_1, gap=None, force_capacity=None),
-                   dataclasses.replace(amb_2, gap=None, force_capacity=None)),
+        actuators=(
+            dataclasses.replace(amb_1, gap=None, force_capacity=None),
+            dataclasses.replace(amb_2, gap=None, force_capacity=None),
+        ),
         notes={"tsai_wu": "ply strength needs a lamina shaft material"},
     )
     verdict = evaluate(ev, Requirements())  # no spin-up limit by default
@@ -236,16 +263,30 @@ def test_baseline_requirements_and_bearing_limits() -> None:
 @pytest.mark.parametrize(
     ("old", "new", "message"),
     [
-        ("min_safety_factor = 1.5 ", "min_safety_factor = -1.5 ", "requirements.min_safety_factor: must be > 0 (got -1.5)"),
-        ("min_onset_margin = 0.15 ", "min_onset_margin = nan ", "requirements.min_onset_margin: must be a finite number"),
-        ("separation = \"api684\"", "separation = \"api610\"", "requirements.separation: unknown value (got \"api610\""),
-        ("min_log_decrement = 0.1 ", "min_log_decrement = 0.1\nmin_damping_ratio = 0.02 ",
-         "requirements.min_damping_ratio: give at most one of min_log_decrement and min_damping_ratio"),
+        (
+            "min_safety_factor = 1.5 ",
+            "min_safety_factor = -1.5 ",
+            "requirements.min_safety_factor: must be > 0 (got -1.5)",
+        ),
+        (
+            "min_onset_margin = 0.15 ",
+            "min_onset_margin = nan ",
+            "requirements.min_onset_margin: must be a finite number",
+        ),
+        ('separation = "api684"', 'separation = "api610"', 'requirements.separation: unknown value (got "api610"'),
+        (
+            "min_log_decrement = 0.1 ",
+            "min_log_decrement = 0.1\nmin_damping_ratio = 0.02 ",
+            "requirements.min_damping_ratio: give at most one of min_log_decrement and min_damping_ratio",
+        ),
         ("min_log_decrement = 0.1 ", "min_log_decrement = 0.1\ncolour = 1 ", "requirements.colour: unknown key"),
         ("gap = 0.25e-3 ", "gap = -0.25e-3 ", "bearings[1].gap: must be > 0 (got -0.00025)"),
-        ("force_capacity = 1500.0 ", "force_capacity = \"big\" ", "bearings[1].force_capacity: must be a number"),
-        ("fixed too: thesis eq. 2.29 (assumed)", "fixed too: thesis eq. 2.29 (assumed)\ngap = 1e-3",
-         "bearings[3].gap: unknown key"),
+        ("force_capacity = 1500.0 ", 'force_capacity = "big" ', "bearings[1].force_capacity: must be a number"),
+        (
+            "fixed too: thesis eq. 2.29 (assumed)",
+            "fixed too: thesis eq. 2.29 (assumed)\ngap = 1e-3",
+            "bearings[3].gap: unknown key",
+        ),
     ],
 )
 def test_bad_requirements_are_refused_naming_the_field(old: str, new: str, message: str) -> None:
@@ -273,11 +314,18 @@ def test_adapter_on_a_run_reports_what_it_cannot_evaluate() -> None:
     # the tube's fixed-frame ("thesis") internal damping cannot destabilise whirl: onset passes;
     # a metal shaft gets the metal strength check (not evaluated: its material gives no strengths)
     # and the isotropic shell's buckling (no torque: T_cr/T infinite)
-    assert status == {"tsai_wu": "not evaluated", "metal_strength": "not evaluated", "buckling": "pass",
-                      "whirl_onset": "pass",
-                      "whirl_damping": "fail", "separation": "pass", "actuator_orbit": "not evaluated",
-                      "actuator_force": "not evaluated", "temperature": "not evaluated",
-                      "spinup_deflection": "not evaluated"}
+    assert status == {
+        "tsai_wu": "not evaluated",
+        "metal_strength": "not evaluated",
+        "buckling": "pass",
+        "whirl_onset": "pass",
+        "whirl_damping": "fail",
+        "separation": "pass",
+        "actuator_orbit": "not evaluated",
+        "actuator_force": "not evaluated",
+        "temperature": "not evaluated",
+        "spinup_deflection": "not evaluated",
+    }
     # the adapter passes the run's numbers through unchanged
     onset = verdict.check("whirl_onset")
     assert res.stability.onset_speed is None  # stable over the analysed speeds: the lower bound is their top

@@ -78,8 +78,9 @@ def die_with_parent(parent_pid: int, pdeathsig: bool = True) -> str:
         if os.getppid() != parent_pid:
             os._exit(1)
         return "pdeathsig"
-    threading.Thread(target=_watch_parent, args=(parent_pid, WATCHDOG_INTERVAL), daemon=True,
-                     name="flexshaft-parent-watch").start()
+    threading.Thread(
+        target=_watch_parent, args=(parent_pid, WATCHDOG_INTERVAL), daemon=True, name="flexshaft-parent-watch"
+    ).start()
     return "watchdog"
 
 
@@ -123,8 +124,12 @@ def worker_pool(processes: int, warm: Sequence[str] = ()) -> Iterator[Executor |
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    pool = ProcessPoolExecutor(max_workers=int(processes), mp_context=multiprocessing.get_context("fork"),
-                               initializer=_warm, initargs=(os.getpid(), tuple(warm)))
+    pool = ProcessPoolExecutor(
+        max_workers=int(processes),
+        mp_context=multiprocessing.get_context("fork"),
+        initializer=_warm,
+        initargs=(os.getpid(), tuple(warm)),
+    )
     # The first submission forks every worker: they warm up while we go on. The objects this
     # process holds by then (the imported modules: ~150,000) are frozen for the fork, so that the
     # workers' full garbage collections skip them (a figure worker spent 0.45 s of CPU in the

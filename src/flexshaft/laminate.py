@@ -22,21 +22,34 @@ Jones, R. M. (1999). *Mechanics of Composite Materials*, 2nd ed., Taylor & Franc
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
-
-from flexshaft.design.layup import parse_layup
-from flexshaft.design.materials import DEFAULT_NU_23, DEFAULT_SHEAR_CORRECTION
-from typing import Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from flexshaft.design.layup import parse_layup
+from flexshaft.design.materials import DEFAULT_NU_23, DEFAULT_SHEAR_CORRECTION
+
 __all__ = [
-    "Lamina", "Laminate", "parse_layup", "reduced_stiffness", "strain_transformation",
-    "transformed_stiffness", "abd_matrices", "equivalent_moduli", "equivalent_density",
-    "hoop_strain_free", "ply_strains", "ply_stresses", "transverse_shear_stiffness",
-    "membrane_strains", "spin_hoop_resultant", "thermal_ply_stresses",
-    "DEFAULT_NU_23", "DEFAULT_SHEAR_CORRECTION",
+    "Lamina",
+    "Laminate",
+    "parse_layup",
+    "reduced_stiffness",
+    "strain_transformation",
+    "transformed_stiffness",
+    "abd_matrices",
+    "equivalent_moduli",
+    "equivalent_density",
+    "hoop_strain_free",
+    "ply_strains",
+    "ply_stresses",
+    "transverse_shear_stiffness",
+    "membrane_strains",
+    "spin_hoop_resultant",
+    "thermal_ply_stresses",
+    "DEFAULT_NU_23",
+    "DEFAULT_SHEAR_CORRECTION",
 ]
 
 
@@ -110,15 +123,27 @@ class Lamina:
             raise ValueError(f"shear_correction must lie in (0, 1], got {self.shear_correction!r}")
         for name in ("alpha_L", "alpha_T"):
             if not np.isfinite(getattr(self, name)):
-                raise ValueError(f"{name} must be a finite thermal expansion coefficient [1/K], got "
-                                 f"{getattr(self, name)!r}")
+                raise ValueError(
+                    f"{name} must be a finite thermal expansion coefficient [1/K], got {getattr(self, name)!r}"
+                )
 
     @classmethod
     def from_loss_factors(
-        cls, E_L: float, E_T: float, G_LT: float, nu_LT: float, density: float,
-        loss_E_L: float = 0.0, loss_E_T: float = 0.0, loss_G_LT: float = 0.0, *,
-        G_13: float | None = None, G_23: float | None = None,
-        shear_correction: float = DEFAULT_SHEAR_CORRECTION, alpha_L: float = 0.0, alpha_T: float = 0.0,
+        cls,
+        E_L: float,
+        E_T: float,
+        G_LT: float,
+        nu_LT: float,
+        density: float,
+        loss_E_L: float = 0.0,
+        loss_E_T: float = 0.0,
+        loss_G_LT: float = 0.0,
+        *,
+        G_13: float | None = None,
+        G_23: float | None = None,
+        shear_correction: float = DEFAULT_SHEAR_CORRECTION,
+        alpha_L: float = 0.0,
+        alpha_T: float = 0.0,
     ) -> Lamina:
         """Build a lamina from storage moduli [Pa] and loss factors [-], E* = E'(1 + i eta).
 
@@ -130,23 +155,32 @@ class Lamina:
             if not np.isfinite(eta) or eta < 0.0:
                 raise ValueError(f"{name} must be a finite loss factor >= 0, got {eta!r}")
         return cls(
-            E_L * (1 + 1j * loss_E_L), E_T * (1 + 1j * loss_E_T), G_LT * (1 + 1j * loss_G_LT),
-            float(nu_LT), float(density),
+            E_L * (1 + 1j * loss_E_L),
+            E_T * (1 + 1j * loss_E_T),
+            G_LT * (1 + 1j * loss_G_LT),
+            float(nu_LT),
+            float(density),
             G_13=None if G_13 is None else G_13 * (1 + 1j * loss_G_LT),
             G_23=None if G_23 is None else G_23 * (1 + 1j * loss_E_T),
-            shear_correction=float(shear_correction), alpha_L=float(alpha_L), alpha_T=float(alpha_T),
+            shear_correction=float(shear_correction),
+            alpha_L=float(alpha_L),
+            alpha_T=float(alpha_T),
         )
 
     @property
     def storage(self) -> Lamina:
         """The same lamina with its storage (real) moduli only."""
-        return replace(self, E_L=self.E_L.real, E_T=self.E_T.real, G_LT=self.G_LT.real,
-                       G_13=np.real(self.G_13), G_23=np.real(self.G_23))
+        return replace(
+            self,
+            E_L=self.E_L.real,
+            E_T=self.E_T.real,
+            G_LT=self.G_LT.real,
+            G_13=np.real(self.G_13),
+            G_23=np.real(self.G_23),
+        )
 
     @classmethod
-    def isotropic(
-        cls, E: float, G: float, density: float, loss_factor: float = 0.0, alpha: float = 0.0
-    ) -> Lamina:
+    def isotropic(cls, E: float, G: float, density: float, loss_factor: float = 0.0, alpha: float = 0.0) -> Lamina:
         """Isotropic material as a lamina: E_L = E_T = E [Pa], G_LT = G_13 = G_23 = G [Pa].
 
         nu = E/(2G) - 1; ``density`` [kg/m^3]; ``loss_factor`` [-] multiplies every modulus by
@@ -155,8 +189,9 @@ class Lamina:
         nu = E / (2.0 * G) - 1.0
         if not -1.0 < nu < 0.5:
             raise ValueError(f"E/(2G) - 1 = {nu:.4g} is not a Poisson ratio in (-1, 0.5); check E and G")
-        return cls.from_loss_factors(E, E, G, nu, density, loss_factor, loss_factor, loss_factor,
-                                     G_13=G, G_23=G, alpha_L=alpha, alpha_T=alpha)
+        return cls.from_loss_factors(
+            E, E, G, nu, density, loss_factor, loss_factor, loss_factor, G_13=G, G_23=G, alpha_L=alpha, alpha_T=alpha
+        )
 
 
 def _read_only(values: ArrayLike) -> NDArray[np.float64]:
@@ -187,8 +222,9 @@ class Laminate:
         angles = _read_only(self.angles)
         thicknesses = _read_only(self.thicknesses)
         if angles.ndim != 1 or angles.shape != thicknesses.shape:
-            raise ValueError(f"angles and thicknesses must be 1-D of equal length, got shapes "
-                             f"{angles.shape} and {thicknesses.shape}")
+            raise ValueError(
+                f"angles and thicknesses must be 1-D of equal length, got shapes {angles.shape} and {thicknesses.shape}"
+            )
         if not np.all(np.isfinite(angles)) or np.any(np.abs(angles) > np.pi / 2 + 1e-12):
             raise ValueError(f"ply angles must be finite and within [-pi/2, pi/2] rad, got {angles}")
         if not np.all(np.isfinite(thicknesses)) or np.any(thicknesses <= 0.0):
@@ -269,9 +305,7 @@ def transformed_stiffness(Q: ArrayLike, angles: ArrayLike) -> NDArray[np.complex
     return np.einsum("nji,jk,nkl->nil", T, np.asarray(Q, dtype=complex), T)
 
 
-def abd_matrices(
-    laminate: Laminate,
-) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.complex128]]:
+def abd_matrices(laminate: Laminate) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.complex128]]:
     """Extensional A [N/m], coupling B [N], bending D [N m] stiffness (thesis eq. 2.1-2.3).
 
     A = sum Q_bar_k (z_k - z_{k-1}), B = 1/2 sum Q_bar_k (z_k^2 - z_{k-1}^2),
@@ -344,9 +378,7 @@ def hoop_strain_free(laminate: Laminate, eps_x: ArrayLike, gamma_xy: ArrayLike) 
     return -(A[0, 1] * np.asarray(eps_x, dtype=float) + A[1, 2] * np.asarray(gamma_xy, dtype=float)) / A[1, 1]
 
 
-def ply_strains(
-    laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike
-) -> NDArray[np.float64]:
+def ply_strains(laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike) -> NDArray[np.float64]:
     """Strains of every ply in its material axes (thin wall: one laminate strain for all plies).
 
     ``eps_x, eps_y, gamma_xy`` [-] (engineering shear) broadcast to a shape S; the result has
@@ -357,9 +389,7 @@ def ply_strains(
     return np.tensordot(strains, strain_transformation(laminate.angles), axes=([-1], [2]))
 
 
-def ply_stresses(
-    laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike
-) -> NDArray[np.float64]:
+def ply_stresses(laminate: Laminate, eps_x: ArrayLike, eps_y: ArrayLike, gamma_xy: ArrayLike) -> NDArray[np.float64]:
     """Stresses of every ply in its material axes from the storage moduli (thesis eq. 2.47).
 
     ``eps_x, eps_y, gamma_xy`` [-] (engineering shear) broadcast to a shape S; the result has

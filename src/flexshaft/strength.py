@@ -242,14 +242,11 @@ def tsai_wu_contributions(
     s1, s2, t12 = (np.broadcast_to(np.asarray(s, dtype=float), R.shape) * scale for s in (sigma1, sigma2, tau12))
     interaction = F.F12 * s1 * s2
     return np.stack(
-        [F.F1 * s1 + F.F11 * s1**2 + interaction, F.F2 * s2 + F.F22 * s2**2 + interaction, F.F66 * t12**2],
-        axis=-1,
+        [F.F1 * s1 + F.F11 * s1**2 + interaction, F.F2 * s2 + F.F22 * s2**2 + interaction, F.F66 * t12**2], axis=-1
     )
 
 
-def dominant_stress(
-    sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths
-) -> NDArray[np.str_]:
+def dominant_stress(sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, strengths: Strengths) -> NDArray[np.str_]:
     """Label of the stress with the largest share of the Tsai-Wu index at failure.
 
     The criterion is the largest of H1, H2, H6 from :func:`tsai_wu_contributions`: the part of

@@ -39,7 +39,14 @@ from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
 from flexshaft.analyses.loss import frequency_coefficient_arrays
 from flexshaft.assembly.model import Model
 
-__all__ = ["SingularSystemError", "BandedHarmonicSolver", "band_ordering", "PIVOT_SCREEN", "FORWARD_ERROR_LIMIT", "solver_for"]
+__all__ = [
+    "SingularSystemError",
+    "BandedHarmonicSolver",
+    "band_ordering",
+    "PIVOT_SCREEN",
+    "FORWARD_ERROR_LIMIT",
+    "solver_for",
+]
 
 #: Smallest/largest |pivot| of the LU below which the solution is checked by refinement.
 PIVOT_SCREEN = 1e-8
@@ -156,8 +163,16 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
         template.sort_indices()
         for array in (perm, inverse, keys, rows, cols):
             array.setflags(write=False)
-        band = _BandStructure(perm, inverse, keys, rows, cols, int(np.max(rows - cols, initial=0)),
-                              int(np.max(cols - rows, initial=0)), template)
+        band = _BandStructure(
+            perm,
+            inverse,
+            keys,
+            rows,
+            cols,
+            int(np.max(rows - cols, initial=0)),
+            int(np.max(cols - rows, initial=0)),
+            template,
+        )
         if len(_STRUCTURES) >= 16:
             _STRUCTURES.clear()
         _STRUCTURES[key] = band
@@ -198,7 +213,9 @@ class BandedHarmonicSolver:
         # the terms with a non-zero entry: a model without material loss (or without dampers)
         # has all-zero loss terms, which need not be multiplied and added at every point
         self._used = np.array([k for k, name in enumerate(self._names) if np.any(self.data[name])], dtype=np.intp)
-        self._stack = np.array([self.data[self._names[k]] for k in self._used]).reshape(self._used.size, self._rows.size)
+        self._stack = np.array([self.data[self._names[k]] for k in self._used]).reshape(
+            self._used.size, self._rows.size
+        )
         # Every stored term is real (mass, stiffness, damping, loss and feedback patterns; the
         # complex weights carry the frequency dependence): Z's values are then one real
         # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
@@ -291,7 +308,9 @@ class BandedHarmonicSolver:
         for (omega, speed), weights in zip(points, table):
             yield self._solve_permuted(omega, speed, bp, weights)[self.inverse]
 
-    def _solve_permuted(self, omega: float, speed: float, bp: np.ndarray, weights: np.ndarray | None = None) -> np.ndarray:
+    def _solve_permuted(
+        self, omega: float, speed: float, bp: np.ndarray, weights: np.ndarray | None = None
+    ) -> np.ndarray:
         """Z(ω, Ω) x = bp in the solver's ordering: one ``zgbsv`` (band LU and solve)."""
         data = self.matrix_data(omega, speed, weights)
         ab = self._buffer
@@ -319,7 +338,9 @@ class BandedHarmonicSolver:
             if not np.all(np.isfinite(dx)):
                 break
             x = x + dx
-            change = float(np.max(np.linalg.norm(dx, axis=0) / np.maximum(np.linalg.norm(x, axis=0), np.finfo(float).tiny)))
+            change = float(
+                np.max(np.linalg.norm(dx, axis=0) / np.maximum(np.linalg.norm(x, axis=0), np.finfo(float).tiny))
+            )
             if change <= FORWARD_ERROR_LIMIT:
                 return x
             if change > 0.5 * previous:  # the corrections do not contract: singular to working precision

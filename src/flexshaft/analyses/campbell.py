@@ -14,21 +14,32 @@ interpolation).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
-from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, require_finite
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
-__all__ = ["Campbell", "CriticalSpeed", "EigenvalueCurves", "TrackedModes", "campbell", "critical_speeds",
-           "assignment", "check_speeds", "default_basis_size", "mac", "track_modes"]
+__all__ = [
+    "Campbell",
+    "CriticalSpeed",
+    "EigenvalueCurves",
+    "TrackedModes",
+    "campbell",
+    "critical_speeds",
+    "assignment",
+    "check_speeds",
+    "default_basis_size",
+    "mac",
+    "track_modes",
+]
 
 
 def default_basis_size(n_modes: int) -> int:
@@ -120,9 +131,15 @@ class TrackedModes:
 _CONTINUATION_MAC = 0.9
 
 
-def track_modes(model: Model, red: ReducedModel, speeds, n_modes: int,
-                solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
-                refine_loss: bool = True, viscous: Callable[[float], object] | None = None) -> TrackedModes:
+def track_modes(
+    model: Model,
+    red: ReducedModel,
+    speeds,
+    n_modes: int,
+    solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
+    refine_loss: bool = True,
+    viscous: Callable[[float], object] | None = None,
+) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
     The first speed fixes the identities (the lowest ``n_modes`` candidates by |s|). With
@@ -193,8 +210,10 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
     """All candidates at ``speed`` matched to the previous curves, then refined."""
     lam, Y = solve(speed)
     if lam.size < n_modes:
-        raise ValueError(f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
-                         "ask for fewer modes or a larger basis")
+        raise ValueError(
+            f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
+            "ask for fewer modes or a larger basis"
+        )
     if prev is None:
         idx = np.arange(n_modes)
     else:
@@ -246,8 +265,10 @@ class Campbell(EigenvalueCurves, ResultMixin):
     def __repr__(self) -> str:
         ns, nm = self.eigenvalues.shape
         top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
-        return (f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
-                f"internal damping {self.internal_damping!r})")
+        return (
+            f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
+            f"internal damping {self.internal_damping!r})"
+        )
 
     def to_dataset(self):
         """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
@@ -255,24 +276,43 @@ class Campbell(EigenvalueCurves, ResultMixin):
 
         return curves_dataset(self, "Campbell diagram")
 
-    def plot_campbell(self, ax=None, *, operating_rpm: float | None = None, max_critical_rpm: float | None = None,
-                      damping: bool = True, **kwargs):
+    def plot_campbell(
+        self,
+        ax=None,
+        *,
+        operating_rpm: float | None = None,
+        max_critical_rpm: float | None = None,
+        damping: bool = True,
+        **kwargs,
+    ):
         """Campbell diagram in rpm and Hz: whirl as line style and marker, the log decrement as
         colour (``damping=False``: one colour per mode), the critical speeds (up to
         ``max_critical_rpm``) labelled. Keywords (``main_rotor_hz``, ``harmonics``) go to
         :func:`flexshaft.plot.campbell.campbell_figure`."""
         from flexshaft.plot.campbell import campbell_figure
 
-        crit = [c.speed_rpm for c in self.critical_speeds if max_critical_rpm is None or c.speed_rpm <= max_critical_rpm]
+        crit = [
+            c.speed_rpm for c in self.critical_speeds if max_critical_rpm is None or c.speed_rpm <= max_critical_rpm
+        ]
         harmonics = sorted({c.harmonic for c in self.critical_speeds} | {1.0})
         kwargs.setdefault("harmonics", harmonics)
-        return campbell_figure(rad_s_to_rpm(self.speeds), self.frequencies, self.whirl, crit, operating_rpm,
-                               log_decrement=self.log_decrements if damping else None, kind=self.kind, ax=ax, **kwargs)
+        return campbell_figure(
+            rad_s_to_rpm(self.speeds),
+            self.frequencies,
+            self.whirl,
+            crit,
+            operating_rpm,
+            log_decrement=self.log_decrements if damping else None,
+            kind=self.kind,
+            ax=ax,
+            **kwargs,
+        )
 
 
 @single_blas_thread
-def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = None,
-             harmonics=(1.0,), damped: bool = True) -> Campbell:
+def campbell(
+    model: Model, speeds, n_modes: int = 10, basis_size: int | None = None, harmonics=(1.0,), damped: bool = True
+) -> Campbell:
     """Damped eigenvalues at each speed, tracked into continuous mode curves.
 
     Parameters
@@ -302,8 +342,16 @@ def campbell(model: Model, speeds, n_modes: int = 10, basis_size: int | None = N
     tracked = track_modes(model, red, speeds, n_modes, refine_loss=damped)
     require_finite("Campbell eigenvalues", tracked.eigenvalues)
     crit = critical_speeds(speeds, tracked.eigenvalues, tracked.whirl, tracked.kind, harmonics)
-    return Campbell(speeds, tracked.eigenvalues, tracked.whirl, tracked.whirl_ratios, crit, tracked.kind,
-                    tracked.component, model.internal_damping)
+    return Campbell(
+        speeds,
+        tracked.eigenvalues,
+        tracked.whirl,
+        tracked.whirl_ratios,
+        crit,
+        tracked.kind,
+        tracked.component,
+        model.internal_damping,
+    )
 
 
 def check_speeds(speeds) -> np.ndarray:
@@ -337,5 +385,7 @@ def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple
                 if kind is not None and kind[j, m] != "lateral":
                     continue
                 t = g[i] / (g[i] - g[i + 1])
-                out.append(CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[j, m])))
+                out.append(
+                    CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[j, m]))
+                )
     return tuple(sorted(out, key=lambda c: c.speed))

@@ -27,8 +27,16 @@ import numpy as np
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 
-__all__ = ["KIND_THRESHOLD", "WHIRL_THRESHOLD", "EnergyShares", "energy_shares", "whirl_ratio", "ModeLabels", "label_modes",
-           "ModalLabeler"]
+__all__ = [
+    "KIND_THRESHOLD",
+    "WHIRL_THRESHOLD",
+    "EnergyShares",
+    "energy_shares",
+    "whirl_ratio",
+    "ModeLabels",
+    "label_modes",
+    "ModalLabeler",
+]
 
 #: Share of kinetic energy in the shaft's twist (or axial motion) that makes a mode torsional (axial).
 KIND_THRESHOLD = 0.5
@@ -134,8 +142,11 @@ class ModalLabeler:
 
 
 def _labels(shares: EnergyShares, r: np.ndarray) -> ModeLabels:
-    kind = np.where(shares.shaft_torsion > KIND_THRESHOLD, "torsional",
-                    np.where(shares.shaft_axial > KIND_THRESHOLD, "axial", "lateral"))
+    kind = np.where(
+        shares.shaft_torsion > KIND_THRESHOLD,
+        "torsional",
+        np.where(shares.shaft_axial > KIND_THRESHOLD, "axial", "lateral"),
+    )
     whirl = np.where(r > WHIRL_THRESHOLD, "forward", np.where(r < -WHIRL_THRESHOLD, "backward", "planar"))
     whirl = np.where(kind == "lateral", whirl, "none")
     f = shares.shaft

@@ -55,11 +55,26 @@ import scipy.sparse.linalg as spla
 
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients, whirl_sign
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.size import HARD_MEMORY_BYTES, SPARSE_BASIS_ABOVE  # the basis threshold lives with the size estimate
+from flexshaft.assembly.size import (
+    HARD_MEMORY_BYTES,
+    SPARSE_BASIS_ABOVE,
+)  # the basis threshold lives with the size estimate
 from flexshaft.assembly.sparse import restrict
 
-__all__ = ["DIVERGENCE_TOLERANCE", "SPARSE_BASIS_ABOVE", "ReducedModel", "modal_basis", "reduce", "spectrum", "candidates",
-           "divergent_roots", "refine", "refine_set", "newton", "damped_modes"]
+__all__ = [
+    "DIVERGENCE_TOLERANCE",
+    "SPARSE_BASIS_ABOVE",
+    "ReducedModel",
+    "modal_basis",
+    "reduce",
+    "spectrum",
+    "candidates",
+    "divergent_roots",
+    "refine",
+    "refine_set",
+    "newton",
+    "damped_modes",
+]
 
 #: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
 DIVERGENCE_TOLERANCE = 1e-6
@@ -96,9 +111,11 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
     nb = int(min(basis_size, n))
     sparse = method == "sparse" or (method == "auto" and n > SPARSE_BASIS_ABOVE and nb < n // 2)
     if not sparse and 5 * 8.0 * n * n > HARD_MEMORY_BYTES:  # K, M, their copies and the vectors
-        raise ValueError(f"a dense modal basis of {nb} modes on {n:,} free DOFs needs about "
-                         f"{5 * 8.0 * n * n / 1024**3:.3g} GiB (allowed: {HARD_MEMORY_BYTES / 1024**3:g} GiB); "
-                         f"ask for fewer than {n // 2:,} basis modes (the sparse solver) or a coarser mesh")
+        raise ValueError(
+            f"a dense modal basis of {nb} modes on {n:,} free DOFs needs about "
+            f"{5 * 8.0 * n * n / 1024**3:.3g} GiB (allowed: {HARD_MEMORY_BYTES / 1024**3:g} GiB); "
+            f"ask for fewer than {n // 2:,} basis modes (the sparse solver) or a coarser mesh"
+        )
     if sparse and nb >= n - 1:
         raise ValueError(f"the sparse modal basis needs basis_size < {n - 1:,} free DOFs (got {basis_size!r})")
     M = restrict(model.M, free).tocsc()
@@ -220,14 +237,18 @@ class ReducedModel:
         states and with non-negative stiffness and damping. Then M > 0, symmetric stiffness and
         damping ≥ 0 and skew gyroscopic and circulatory terms leave no real positive root (for a
         real eigenvector φ: s² φᵀMφ + s φᵀDφ + φᵀKφ = 0 has no root s > 0)."""
-        return any(a.A.size or a.in_rows is not None or a.stiffness < 0 or a.damping < 0 or a.damping_in_basis < 0
-                   for a in self.actuators)
+        return any(
+            a.A.size or a.in_rows is not None or a.stiffness < 0 or a.damping < 0 or a.damping_in_basis < 0
+            for a in self.actuators
+        )
 
-    def undamped(self) -> "ReducedModel":
+    def undamped(self) -> ReducedModel:
         """The gyroscopic-only model: no viscous damping, no loss, no controller dynamics (the
         laws' static stiffness stays; actuators with states are left out)."""
         keep = tuple(dataclasses.replace(a, damping=0.0, damping_in_basis=0.0) for a in self.actuators if not a.A.size)
-        return ReducedModel(self.Phi, self.w2, self.G, 0 * self.C, self.F, self.L, self.S, self.internal_damping, keep, False)
+        return ReducedModel(
+            self.Phi, self.w2, self.G, 0 * self.C, self.F, self.L, self.S, self.internal_damping, keep, False
+        )
 
     def shapes(self, y: np.ndarray) -> np.ndarray:
         """Free-DOF displacement shapes Φ y of modal coordinates ``y`` (columns)."""
@@ -255,7 +276,9 @@ class ReducedModel:
             parts = cache[key] = (damping.astype(complex), stiffness)
         return parts
 
-    def newton_terms(self, s: complex, speed: float, loss: LossCoefficients, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def newton_terms(
+        self, s: complex, speed: float, loss: LossCoefficients, y: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
         """``T(s)`` and ``dT/ds · y`` of the second-order problem with the complex loss weights
         ``loss`` (controller laws as C(s)): what a Newton step needs. dT/ds is not formed: its
         product with ``y`` is the damping's, ``2 s y`` and each channel's rank-two term."""
@@ -287,9 +310,16 @@ def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness:
     collocated = sensing is None
     has_states = Ac.shape[0] > 0
     return _ActuatorStates(
-        rows, np.kron(I2, Ac), np.kron(I2, Bc), np.kron(I2, Cc), Dc - basis_stiffness,
-        law if has_states else None, basis_stiffness, sensing,
-        damping=0.0 if collocated else Ec, damping_in_basis=Ec if collocated else 0.0,
+        rows,
+        np.kron(I2, Ac),
+        np.kron(I2, Bc),
+        np.kron(I2, Cc),
+        Dc - basis_stiffness,
+        law if has_states else None,
+        basis_stiffness,
+        sensing,
+        damping=0.0 if collocated else Ec,
+        damping_in_basis=Ec if collocated else 0.0,
     )
 
 
@@ -318,13 +348,22 @@ def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:
             sensing = np.asarray(a.sensing_rows.tocsr()[:, free] @ Phi)
             actuators.append(_channel(rows, sensing, a.sensed_law, 0.0))
     return ReducedModel(
-        Phi=Phi, w2=w2, G=proj(model.G), C=proj(model.C + model.Kd), F=proj(model.loss_fixed),
-        L=proj(model.loss_lateral), S=proj(model.loss_circulatory), internal_damping=model.internal_damping,
-        actuators=tuple(actuators), has_loss=model.has_loss,
+        Phi=Phi,
+        w2=w2,
+        G=proj(model.G),
+        C=proj(model.C + model.Kd),
+        F=proj(model.loss_fixed),
+        L=proj(model.loss_lateral),
+        S=proj(model.loss_circulatory),
+        internal_damping=model.internal_damping,
+        actuators=tuple(actuators),
+        has_loss=model.has_loss,
     )
 
 
-def spectrum(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def spectrum(
+    red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Eigen-solution of the (loss-free or viscous) state matrix at one speed.
 
     Returns ``(s, Y, Y_div, s_div)``: the oscillatory eigenvalues (Im s > 0 [rad/s]) sorted
@@ -347,7 +386,12 @@ def spectrum(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LO
     vec = vec[:, order]
     norm = np.linalg.norm(vec, axis=0)
     dnorm = np.linalg.norm(div_vec, axis=0)
-    return lam[order], vec / np.where(norm > 0, norm, 1.0), div_vec.real / np.where(dnorm > 0, dnorm, 1.0) if div.size else div_vec.real, div
+    return (
+        lam[order],
+        vec / np.where(norm > 0, norm, 1.0),
+        div_vec.real / np.where(dnorm > 0, dnorm, 1.0) if div.size else div_vec.real,
+        div,
+    )
 
 
 def candidates(red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS) -> tuple[np.ndarray, np.ndarray]:
@@ -385,8 +429,14 @@ def refine(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
     return s, y
 
 
-def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: float = _TOL,
-           viscous: LossCoefficients | None = None) -> tuple[complex, np.ndarray, bool]:
+def newton(
+    red: ReducedModel,
+    speed: float,
+    s: complex,
+    y: np.ndarray,
+    tol: float = _TOL,
+    viscous: LossCoefficients | None = None,
+) -> tuple[complex, np.ndarray, bool]:
     """:func:`refine` that also says whether the iteration converged.
 
     With ``viscous`` weights (:func:`~flexshaft.analyses.loss.viscous_equivalent`) the problem
@@ -395,8 +445,9 @@ def newton(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: floa
     if viscous is not None:
         damping = red.C + viscous.fixed * red.F + viscous.lateral * red.L
         stiffness = viscous.circulatory * red.S
-        red = ReducedModel(red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping,
-                           red.actuators, False)
+        red = ReducedModel(
+            red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping, red.actuators, False
+        )
         red_S = stiffness
     forced_sigma = None
     previous_sigma = None

@@ -108,7 +108,9 @@ class EnvelopeSystem:
         self.lateral, self.circulatory = (red.L, red.S) if rotating and np.any(red.L) else (None, None)
         Q = np.asarray(loads_per_speed_squared)
         if Q.ndim != 1 or Q.size != model.dofs.size:
-            raise ValueError(f"loads_per_speed_squared must be one load vector of {model.dofs.size} values, got shape {Q.shape}")
+            raise ValueError(
+                f"loads_per_speed_squared must be one load vector of {model.dofs.size} values, got shape {Q.shape}"
+            )
         if not np.all(np.isfinite(Q)):
             raise ValueError("loads_per_speed_squared contains NaN or inf")
         self.b = np.zeros(self.n, complex)
@@ -307,7 +309,8 @@ def integrate_envelope(
             if not (np.isfinite(error) and np.isfinite(size)):
                 raise FloatingPointError(
                     f"the response overflowed at t = {t:.6g} s, Ω = {speed(t):.6g} rad/s: the system is unstable "
-                    f"there (largest growth rate {max(growth, float(basis.lam.real.max())):.3g} 1/s)")
+                    f"there (largest growth rate {max(growth, float(basis.lam.real.max())):.3g} 1/s)"
+                )
             tolerance = rtol * max(scale, size)
             if error > tolerance and h <= 1e-9 * duration:
                 raise RuntimeError(f"step size underflow at t = {t:.6g} s (h = {h:.3g} s) for rtol = {rtol:g}")

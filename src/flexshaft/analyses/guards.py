@@ -12,8 +12,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["NonFiniteResultError", "check_count", "check_finite_array", "check_model", "check_speed",
-           "require_finite"]
+__all__ = ["NonFiniteResultError", "check_count", "check_finite_array", "check_model", "check_speed", "require_finite"]
 
 
 class NonFiniteResultError(ArithmeticError, ValueError):
@@ -25,7 +24,9 @@ def check_model(model: Any) -> None:
     from flexshaft.assembly.model import Model
 
     if not isinstance(model, Model):
-        raise ValueError(f"model must be an assembled flexshaft Model (build_model(design)), got {type(model).__name__}")
+        raise ValueError(
+            f"model must be an assembled flexshaft Model (build_model(design)), got {type(model).__name__}"
+        )
 
 
 def check_speed(value: Any, name: str = "speed", unit: str = "rad/s", positive: bool = False) -> float:
@@ -34,16 +35,21 @@ def check_speed(value: Any, name: str = "speed", unit: str = "rad/s", positive: 
         number = float(value)
     except (TypeError, ValueError):
         number = float("nan")
-    if isinstance(value, (bool, complex, np.complexfloating)) or not np.isfinite(number) or number < 0 or (
-            positive and number == 0):
+    if (
+        isinstance(value, (bool, complex, np.complexfloating))
+        or not np.isfinite(number)
+        or number < 0
+        or (positive and number == 0)
+    ):
         raise ValueError(f"{name} must be a finite number {'>' if positive else '>='} 0 {unit} (got {value!r})")
     return number
 
 
 def check_count(value: Any, name: str, minimum: int = 1) -> int:
     """An integer >= ``minimum`` (an integral float is accepted), or a ValueError naming it."""
-    integral = isinstance(value, (int, np.integer)) or (isinstance(value, (float, np.floating)) and np.isfinite(value)
-                                                         and float(value).is_integer())
+    integral = isinstance(value, (int, np.integer)) or (
+        isinstance(value, (float, np.floating)) and np.isfinite(value) and float(value).is_integer()
+    )
     if isinstance(value, bool) or not integral or value < minimum:
         raise ValueError(f"{name} must be an integer >= {minimum} (got {value!r})")
     return int(value)
@@ -55,7 +61,9 @@ def check_finite_array(name: str, value: Any, unit: str = "") -> np.ndarray:
         array = np.asarray(value)
         finite = np.all(np.isfinite(array))
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be an array of numbers{f' [{unit}]' if unit else ''} (got {type(value).__name__})") from None
+        raise ValueError(
+            f"{name} must be an array of numbers{f' [{unit}]' if unit else ''} (got {type(value).__name__})"
+        ) from None
     if not finite:
         raise ValueError(f"{name} must be finite{f' [{unit}]' if unit else ''} (it contains NaN or inf)")
     return array
@@ -65,5 +73,7 @@ def require_finite(name: str, value: Any) -> None:
     """Raise :class:`NonFiniteResultError` when the result ``value`` holds NaN or inf."""
     array = np.asarray(value)
     if array.dtype.kind in "fc" and not np.all(np.isfinite(array)):
-        raise NonFiniteResultError(f"the {name} came out NaN or inf: some combination of the design's numbers "
-                                   "overflows double precision (see docs/limits.md)")
+        raise NonFiniteResultError(
+            f"the {name} came out NaN or inf: some combination of the design's numbers "
+            "overflows double precision (see docs/limits.md)"
+        )

@@ -51,8 +51,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["LossCoefficients", "frequency_coefficients", "frequency_coefficient_arrays", "eigen_coefficients",
-           "viscous_equivalent", "whirl_sign"]
+__all__ = [
+    "LossCoefficients",
+    "frequency_coefficients",
+    "frequency_coefficient_arrays",
+    "eigen_coefficients",
+    "viscous_equivalent",
+    "whirl_sign",
+]
 
 #: Relative band around ω = Ω inside which σ = sgn(ω − Ω) counts as 0 (the synchronous line).
 SYNCHRONOUS_TOLERANCE = 1e-9
@@ -131,7 +137,9 @@ def frequency_coefficient_arrays(internal_damping: str, omega, speed) -> tuple[n
     return 1j * on, 0.5j * (sigma_backward + sigma), 0.5 * (sigma_backward - sigma)
 
 
-def eigen_coefficients(internal_damping: str, omega: float, speed: float, sigma: float | None = None) -> LossCoefficients:
+def eigen_coefficients(
+    internal_damping: str, omega: float, speed: float, sigma: float | None = None
+) -> LossCoefficients:
     """Complex weights of the loss matrices for a mode of frequency ω = Im(s) > 0 [rad/s].
 
     The frequency-domain weights of :func:`frequency_coefficients` at ω; ``sigma`` overrides

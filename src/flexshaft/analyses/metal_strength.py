@@ -57,8 +57,9 @@ FATIGUE_CRITERION = "modified Goodman (DE-Goodman, Shigley eq. 7-7)"
 YIELD_CRITERION = "von Mises first-cycle yield (Shigley eq. 7-16)"
 
 
-def goodman_safety_factor(sigma_a, sigma_m, tau_a, tau_m, fatigue_strength: float, ultimate_strength: float,
-                          hoop=0.0) -> np.ndarray:
+def goodman_safety_factor(
+    sigma_a, sigma_m, tau_a, tau_m, fatigue_strength: float, ultimate_strength: float, hoop=0.0
+) -> np.ndarray:
     """DE-Goodman fatigue safety factor n_f [-] (Shigley, 10th ed., eq. 7-7, with a mean hoop stress).
 
     Parameters
@@ -85,8 +86,11 @@ def goodman_safety_factor(sigma_a, sigma_m, tau_a, tau_m, fatigue_strength: floa
 
 def von_mises_yield_factor(sigma_a, sigma_m, tau_a, tau_m, yield_strength: float, hoop=0.0) -> np.ndarray:
     """First-cycle yield safety factor S_y/σ'_max [-] (Shigley, 10th ed., eqs. 7-15, 7-16)."""
-    peak = _von_mises(np.asarray(sigma_m, dtype=float) + np.asarray(sigma_a, dtype=float), hoop,
-                      np.asarray(tau_m, dtype=float) + np.asarray(tau_a, dtype=float))
+    peak = _von_mises(
+        np.asarray(sigma_m, dtype=float) + np.asarray(sigma_a, dtype=float),
+        hoop,
+        np.asarray(tau_m, dtype=float) + np.asarray(tau_a, dtype=float),
+    )
     return np.divide(yield_strength, peak, out=np.full(np.shape(peak), np.inf), where=peak > 0)
 
 
@@ -144,8 +148,10 @@ class MetalStrength(ResultMixin):
     def __repr__(self) -> str:
         if not self.x.size:
             return "MetalStrength(no isotropic segment with strengths)"
-        return (f"MetalStrength(fatigue n_f {self.fatigue_safety_factor.min():.3g}, yield n_y "
-                f"{self.yield_safety_factor.min():.3g}, {len(np.unique(self.segment))} segments)")
+        return (
+            f"MetalStrength(fatigue n_f {self.fatigue_safety_factor.min():.3g}, yield n_y "
+            f"{self.yield_safety_factor.min():.3g}, {len(np.unique(self.segment))} segments)"
+        )
 
     @property
     def evaluated(self) -> bool:
@@ -159,10 +165,15 @@ class MetalStrength(ResultMixin):
         mask = np.ones(values.shape, bool) if segment is None else (self.segment == segment)[:, None]
         masked = np.where(mask, values, np.inf)
         e, end = np.unravel_index(int(np.argmin(masked)), masked.shape)
-        return {"safety_factor": float(values[e, end]), "station": float(self.x[e, end]),
-                "segment": str(self.segment[e]),
-                **{name: float(getattr(self, name)[e, end]) for name in
-                   ("sigma_alternating", "sigma_mean", "tau_alternating", "tau_mean", "hoop")}}
+        return {
+            "safety_factor": float(values[e, end]),
+            "station": float(self.x[e, end]),
+            "segment": str(self.segment[e]),
+            **{
+                name: float(getattr(self, name)[e, end])
+                for name in ("sigma_alternating", "sigma_mean", "tau_alternating", "tau_mean", "hoop")
+            },
+        }
 
     @property
     def segments(self) -> tuple[str, ...]:
@@ -177,6 +188,7 @@ class MetalStrength(ResultMixin):
 
     def to_dataset(self):
         """Safety factors and stresses at each element end (xarray)."""
+
         def ends(values, units, long_name):
             return (("element", "end"), np.asarray(values, float), {"units": units, "long_name": long_name})
 
@@ -198,8 +210,9 @@ class MetalStrength(ResultMixin):
         )
 
 
-def metal_strength(model: Model, static: np.ndarray, dynamic: np.ndarray | None = None,
-                   buckling: bool = True) -> MetalStrength:
+def metal_strength(
+    model: Model, static: np.ndarray, dynamic: np.ndarray | None = None, buckling: bool = True
+) -> MetalStrength:
     """Yield and fatigue safety factors of the isotropic shaft segments.
 
     Parameters
@@ -234,8 +247,10 @@ def metal_strength(model: Model, static: np.ndarray, dynamic: np.ndarray | None 
         isotropic.append(index)
         given = [getattr(material, f) for f in ("yield_strength", "ultimate_strength", "fatigue_strength")]
         if any(v is None for v in given):
-            notes.append(f"segment {seg.name}: material {seg.material} gives no yield_strength, "
-                         "ultimate_strength and fatigue_strength")
+            notes.append(
+                f"segment {seg.name}: material {seg.material} gives no yield_strength, "
+                "ultimate_strength and fatigue_strength"
+            )
             continue
         strengths[index] = given
         use |= zone == index
@@ -269,9 +284,15 @@ def metal_strength(model: Model, static: np.ndarray, dynamic: np.ndarray | None 
             out[key][i] = value[pick]
         out["hoop"][i] = hoop
     return MetalStrength(
-        x=ends[rows], segment=np.array([segments[zone[e]].name for e in rows], dtype=object),
-        sigma_alternating=out["sa"], sigma_mean=out["sm"], tau_alternating=out["ta"], tau_mean=out["tm"],
-        hoop=out["hoop"], fatigue_safety_factor=out["nf"], yield_safety_factor=out["ny"],
+        x=ends[rows],
+        segment=np.array([segments[zone[e]].name for e in rows], dtype=object),
+        sigma_alternating=out["sa"],
+        sigma_mean=out["sm"],
+        tau_alternating=out["ta"],
+        tau_mean=out["tm"],
+        hoop=out["hoop"],
+        fatigue_safety_factor=out["nf"],
+        yield_safety_factor=out["ny"],
         buckling=tuple(_segment_buckling(model, index) for index in isotropic) if buckling else (),
         notes=tuple(notes),
     )

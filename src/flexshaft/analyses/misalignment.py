@@ -66,8 +66,10 @@ class CouplingMisalignment(ResultMixin):
         if not self.names:
             return "CouplingMisalignment(no couplings)"
         k = int(np.argmax(self.total_angle))
-        return (f"CouplingMisalignment({len(self.names)} couplings, largest {np.degrees(self.total_angle[k]):.3g}° "
-                f"at {self.names[k]})")
+        return (
+            f"CouplingMisalignment({len(self.names)} couplings, largest {np.degrees(self.total_angle[k]):.3g}° "
+            f"at {self.names[k]})"
+        )
 
     @property
     def total_angle(self) -> np.ndarray:
@@ -76,6 +78,7 @@ class CouplingMisalignment(ResultMixin):
 
     def to_dataset(self):
         """One row per coupling (xarray)."""
+
         def row(values, units, long_name):
             return ("coupling", np.asarray(values, float), {"units": units, "long_name": long_name})
 
@@ -90,8 +93,10 @@ class CouplingMisalignment(ResultMixin):
                 "twist": row(self.twist, "rad", "static twist across the coupling"),
                 "torque": row(self.torque, "N m", "torque carried by the coupling spring"),
             },
-            {"coupling": ("coupling", list(self.names), {"long_name": "coupling"}),
-             "x": ("coupling", np.asarray(self.stations, float), {"units": "m", "long_name": "station"})},
+            {
+                "coupling": ("coupling", list(self.names), {"long_name": "coupling"}),
+                "x": ("coupling", np.asarray(self.stations, float), {"units": "m", "long_name": "station"}),
+            },
             "coupling misalignment",
         )
 
@@ -135,8 +140,9 @@ def coupling_misalignment(model: Model, static: np.ndarray, dynamic: np.ndarray 
         stations=np.array([c.x for c in model.couplings], float),
         static_angle=np.array(rows["static"], float),
         dynamic_angle=np.array(rows["dynamic"], float),
-        allowable_angle=np.array([np.nan if c.allowable_angle is None else c.allowable_angle
-                                  for c in model.couplings], float),
+        allowable_angle=np.array(
+            [np.nan if c.allowable_angle is None else c.allowable_angle for c in model.couplings], float
+        ),
         static_moment=load(4, rows["static"]),
         axial_offset=np.array(rows["offset"], float),
         axial_force=load(0, rows["offset"]),

@@ -17,9 +17,9 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
-from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
@@ -96,8 +96,7 @@ class Modes(ResultMixin):
         order = np.argsort(np.abs(self.frequencies - frequency), kind="stable")[: int(n)]
         return np.sort(order)
 
-    def plot_shapes(self, ax=None, *, modes=None, n: int = 6, near_rpm: float | None = None,
-                    bearings_x=(), **kwargs):
+    def plot_shapes(self, ax=None, *, modes=None, n: int = 6, near_rpm: float | None = None, bearings_x=(), **kwargs):
         """Two-plane shapes (v, w) of shaft and boom of the ``n`` modes nearest the spin
         frequency (``near_rpm`` [rpm] instead of this result's speed; the lowest ``n`` at rest), or
         of ``modes`` (0-based indices). ``bearings_x`` [m] marks the bearings. Returns the figure."""
@@ -120,8 +119,10 @@ class Modes(ResultMixin):
         for k in chosen:
             phi = self.shapes[:, k]
             ratio = f"{self.frequencies[k] / f_spin:.2f}× spin, " if f_spin > 0 else ""
-            label = (f"mode {k + 1}: {self.frequencies[k]:.2f} Hz ({ratio}{self.whirl[k]})\n"
-                     f"{self.kind[k]}, {self.component[k]}, δ = {delta[k]:.3g}")
+            label = (
+                f"mode {k + 1}: {self.frequencies[k]:.2f} Hz ({ratio}{self.whirl[k]})\n"
+                f"{self.kind[k]}, {self.component[k]}, δ = {delta[k]:.3g}"
+            )
             shaft.append({"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]})
             if dm.n_boom_nodes:
                 boom.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
@@ -130,8 +131,15 @@ class Modes(ResultMixin):
         else:
             title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm"
         kwargs.setdefault("title", title)
-        return mode_shapes_figure(dm.shaft_x, shaft, dm.boom_x if dm.n_boom_nodes else None, boom or None,
-                                  bearings_x=bearings_x, ax=ax, **kwargs)
+        return mode_shapes_figure(
+            dm.shaft_x,
+            shaft,
+            dm.boom_x if dm.n_boom_nodes else None,
+            boom or None,
+            bearings_x=bearings_x,
+            ax=ax,
+            **kwargs,
+        )
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -177,8 +185,9 @@ def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
 
 
 @single_blas_thread
-def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True,
-          basis_size: int | None = None) -> Modes:
+def modes(
+    model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True, basis_size: int | None = None
+) -> Modes:
     """Natural frequencies, damping and mode shapes at spin speed ``speed`` [rad/s].
 
     Parameters
@@ -215,5 +224,15 @@ def modes(model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = Tr
     require_finite("eigenvalues", s)
     require_finite("mode shapes", shapes)
     labels = label_modes(model, shapes)
-    return Modes(float(speed), s, shapes, labels.kind, labels.whirl, labels.whirl_ratio, labels.component,
-                 labels.shares, model.dofs, model.internal_damping)
+    return Modes(
+        float(speed),
+        s,
+        shapes,
+        labels.kind,
+        labels.whirl,
+        labels.whirl_ratio,
+        labels.component,
+        labels.shares,
+        model.dofs,
+        model.internal_damping,
+    )

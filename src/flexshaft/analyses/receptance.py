@@ -82,8 +82,16 @@ class ActuatorReceptance:
                 return None
             return np.concatenate([mine, theirs[extra]])[order]
 
-        per_speed = ("speeds", "shaft_free", "shaft_per_force", "actuator_free", "receptance", "plant",
-                     "sensor_free", "sensor_receptance")
+        per_speed = (
+            "speeds",
+            "shaft_free",
+            "shaft_per_force",
+            "actuator_free",
+            "receptance",
+            "plant",
+            "sensor_free",
+            "sensor_receptance",
+        )
         return replace(self, **{name: join(name) for name in per_speed})
 
     @property

@@ -76,8 +76,10 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         f = rad_s_to_rpm(self.frequencies) if self.excitation == "imbalance" else self.frequencies / (2 * np.pi)
         unit = "rpm" if self.excitation == "imbalance" else "Hz"
         span = f"{f.min():.4g}–{f.max():.4g} {unit}" if f.size > 1 else f"{f[0]:.4g} {unit}"
-        return (f"HarmonicResponse({self.excitation}, shape {self.shape}, {f.size} frequencies {span}, "
-                f"peak |q| {np.abs(np.asarray(self)).max():.3g} m or rad, internal damping {self.internal_damping!r})")
+        return (
+            f"HarmonicResponse({self.excitation}, shape {self.shape}, {f.size} frequencies {span}, "
+            f"peak |q| {np.abs(np.asarray(self)).max():.3g} m or rad, internal damping {self.internal_damping!r})"
+        )
 
     __str__ = __repr__
 
@@ -144,18 +146,22 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         dm = self.dofs
         curves = {}
         for label, node in self._stations(station, q).items():
-            k = case if case is not None else int(np.argmax(
-                orbit_amplitude(q[dm.shaft(node, "v")], q[dm.shaft(node, "w")]).max(axis=-1)))
+            k = (
+                case
+                if case is not None
+                else int(np.argmax(orbit_amplitude(q[dm.shaft(node, "v")], q[dm.shaft(node, "w")]).max(axis=-1)))
+            )
             suffix = f", case {k + 1}" if q.shape[1] > 1 else ""
-            for field in (("v", "w") if direction == "both" else (direction,)):
+            for field in ("v", "w") if direction == "both" else (direction,):
                 curves[f"{label}, {field}{suffix}"] = q[dm.shaft(node, field), k]
         x, x_label = self._abscissa()
         if self.excitation != "imbalance":
             kwargs.setdefault("title", "Frequency response (Bode)")
         return bode_figure(x, curves, x_label=x_label, ax=ax, **kwargs)
 
-    def plot_orbit(self, ax=None, *, station=None, speed_rpm: float | None = None, case: int | None = None,
-                   gap=None, **kwargs):
+    def plot_orbit(
+        self, ax=None, *, station=None, speed_rpm: float | None = None, case: int | None = None, gap=None, **kwargs
+    ):
         """Shaft orbits (v, w) at ``station`` [m] (a float, a sequence, or ``{label: x}``; default
         the node of the largest orbit) at the analysed point nearest ``speed_rpm`` [rpm]
         (spin speed for an imbalance response, else excitation frequency × 60; default the last).
@@ -168,7 +174,7 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         i = q.shape[2] - 1 if speed_rpm is None else int(np.argmin(np.abs(rpm - float(speed_rpm))))
         dm = self.dofs
         orbits = {}
-        for label, node in self._stations(station, q[..., i:i + 1]).items():
+        for label, node in self._stations(station, q[..., i : i + 1]).items():
             v, w = q[dm.shaft(node, "v"), :, i], q[dm.shaft(node, "w"), :, i]
             k = case if case is not None else int(np.argmax(orbit_amplitude(v, w)))
             orbits[label] = (v[k], w[k])
@@ -193,8 +199,8 @@ def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None
     for k, x in enumerate(solver.sweep([(omega, speed) for omega, speed, _ in points], rhs)):
         block[k - start] = x
         if k - start == _BLOCK - 1 or k == len(points) - 1:
-            done = block[: k - start + 1] * scales[start: k + 1]
-            out[solver.free, ..., start: k + 1] = np.moveaxis(done, 0, -1)
+            done = block[: k - start + 1] * scales[start : k + 1]
+            out[solver.free, ..., start : k + 1] = np.moveaxis(done, 0, -1)
             start = k + 1
     return out
 
@@ -237,15 +243,16 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
     out = _solve_many(model, loads, [(w, speed, 1.0) for w in omegas])
     require_finite("harmonic response", out)
     out = out[..., 0] if np.ndim(omega) == 0 else out
-    return HarmonicResponse(out, omegas, np.full(omegas.size, float(speed)), model.dofs, "harmonic", model.internal_damping)
+    return HarmonicResponse(
+        out, omegas, np.full(omegas.size, float(speed)), model.dofs, "harmonic", model.internal_damping
+    )
 
 
 def _check_loads(model: Model, loads) -> None:
     """Load vector(s) on the full DOF vector: finite, (ndof,) or (ndof, ncases)."""
     Q = check_finite_array("loads", loads, "N, N m")
     if Q.ndim not in (1, 2) or Q.shape[0] != model.dofs.size:
-        raise ValueError(f"loads must have shape ({model.dofs.size},) or ({model.dofs.size}, ncases) "
-                         f"(got {Q.shape})")
+        raise ValueError(f"loads must have shape ({model.dofs.size},) or ({model.dofs.size}, ncases) (got {Q.shape})")
 
 
 def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> HarmonicResponse:
@@ -285,9 +292,12 @@ def _static_parts(model: Model, speed: float):
     if model.all_pd and all(a.basis_stiffness == a.collocated_law.kp for a in model.actuators):
         K = model.K + model.Kp  # PD laws with K_p >= 0: the basis stiffness is the static one
     else:
-        K = model.K + model.actuator_matrix([
-            0.0 if a.integrates else (a.collocated_law.static_gain if a.collocated else -a.negative_stiffness)
-            for a in model.actuators])
+        K = model.K + model.actuator_matrix(
+            [
+                0.0 if a.integrates else (a.collocated_law.static_gain if a.collocated else -a.negative_stiffness)
+                for a in model.actuators
+            ]
+        )
         for a in model.actuators:
             if not a.collocated and not a.integrates:
                 K = K + a.feedback.static_gain * (a.lateral_rows.T @ a.sensing_rows)
@@ -336,9 +346,10 @@ def static_actuator_forces(model: Model, loads, speed: float | None = None) -> d
 
 
 def _static_solve(model: Model, loads, speed: float | None):
-    from flexshaft.assembly.sparse import restrict
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
+
+    from flexshaft.assembly.sparse import restrict
 
     check_model(model)
     free = model.dofs.free
@@ -361,7 +372,8 @@ def _static_solve(model: Model, loads, speed: float | None):
     except RuntimeError as exc:
         raise SingularSystemError(
             "static stiffness is singular: the model has an unconstrained rigid-body motion, or a magnetic "
-            "bearing's negative stiffness k_s cancels its static control stiffness") from exc
+            "bearing's negative stiffness k_s cancels its static control stiffness"
+        ) from exc
     x = lu.solve(rhs)
     if not np.all(np.isfinite(x)):
         raise SingularSystemError("static stiffness is singular to working precision")
@@ -383,7 +395,9 @@ def orbit_amplitude(a, b) -> np.ndarray:
     return 0.5 * (np.abs(a + ib) + np.abs(a - ib))
 
 
-def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, speed: float | None = None) -> dict[str, np.ndarray]:
+def bearing_forces(
+    model: Model, q: np.ndarray, omega: float = 0.0, loads=None, speed: float | None = None
+) -> dict[str, np.ndarray]:
     """Forces carried by each bearing [N, N m] over (u, v, w, β, γ) for displacement ``q``.
 
     Contact bearings: ``(k + iωc) · rel``; active bearings: ``G(iω) d_s − k_s d_a`` on v and w
@@ -408,8 +422,10 @@ def bearing_forces(model: Model, q: np.ndarray, omega: float = 0.0, loads=None, 
     if omega == 0.0 and any(a.integrates for a in model.actuators):
         if loads is None:
             names = ", ".join(a.name for a in model.actuators if a.integrates)
-            raise ValueError(f"actuator(s) {names} integrate (C(0) infinite): their static force is not a function "
-                             "of the displacement; pass the static loads (bearing_forces(model, q, loads=Q))")
+            raise ValueError(
+                f"actuator(s) {names} integrate (C(0) infinite): their static force is not a function "
+                "of the displacement; pass the static loads (bearing_forces(model, q, loads=Q))"
+            )
         static = static_actuator_forces(model, loads, speed)
     for link in model.bearings:
         rel = link.rows @ q
@@ -526,8 +542,9 @@ class BearingReaction:
         return complex(self.imbalance_motion[1, k]), complex(self.imbalance_motion[2, k])
 
 
-def bearing_reactions(model: Model, q_static: np.ndarray, q_at_speed: np.ndarray, speed: float | None = None,
-                      loads=None) -> dict[str, BearingReaction]:
+def bearing_reactions(
+    model: Model, q_static: np.ndarray, q_at_speed: np.ndarray, speed: float | None = None, loads=None
+) -> dict[str, BearingReaction]:
     """Static and imbalance loads and relative motion of every bearing.
 
     Parameters
@@ -555,8 +572,10 @@ def bearing_reactions(model: Model, q_static: np.ndarray, q_at_speed: np.ndarray
     q_dyn = np.asarray(q_at_speed)
     q_dyn = q_dyn[:, None] if q_dyn.ndim == 1 else q_dyn
     if q_static.shape != (model.dofs.size,) or q_dyn.ndim != 2 or q_dyn.shape[0] != model.dofs.size:
-        raise ValueError(f"q_static must have shape ({model.dofs.size},) and q_at_speed ({model.dofs.size}[, ncases]); "
-                         f"got {q_static.shape} and {np.shape(q_at_speed)}")
+        raise ValueError(
+            f"q_static must have shape ({model.dofs.size},) and q_at_speed ({model.dofs.size}[, ncases]); "
+            f"got {q_static.shape} and {np.shape(q_at_speed)}"
+        )
     if loads is None and any(a.integrates for a in model.actuators):
         from flexshaft.assembly.loads import external_static_load, torque_load
 
@@ -565,7 +584,15 @@ def bearing_reactions(model: Model, q_static: np.ndarray, q_at_speed: np.ndarray
     dynamic = bearing_forces(model, q_dyn, speed)
     gaps = {b.name: getattr(b, "gap", None) for b in model.design.bearings} if model.design is not None else {}
     return {
-        link.name: BearingReaction(link.name, link.kind, float(link.x_shaft), np.real(static[link.name]),
-                                   dynamic[link.name], link.rows @ q_dyn, speed, gaps.get(link.name))
+        link.name: BearingReaction(
+            link.name,
+            link.kind,
+            float(link.x_shaft),
+            np.real(static[link.name]),
+            dynamic[link.name],
+            link.rows @ q_dyn,
+            speed,
+            gaps.get(link.name),
+        )
         for link in model.bearings
     }

@@ -35,8 +35,11 @@ def coded(labels, meanings: Sequence[str], long_name: str) -> tuple[np.ndarray, 
     if unknown:
         raise ValueError(f"labels {unknown} are not among {list(meanings)}")
     codes = np.vectorize(lookup.__getitem__, otypes=[np.int8])(labels) if labels.size else labels.astype(np.int8)
-    attrs = {"long_name": long_name, "flag_values": np.arange(len(meanings), dtype=np.int8),
-             "flag_meanings": " ".join(meanings)}
+    attrs = {
+        "long_name": long_name,
+        "flag_values": np.arange(len(meanings), dtype=np.int8),
+        "flag_meanings": " ".join(meanings),
+    }
     return codes, attrs
 
 
@@ -46,8 +49,11 @@ def new_dataset(variables: dict, coords: dict, title: str, **attrs: Any):
 
     from flexshaft import __version__
 
-    return xr.Dataset(variables, coords=coords, attrs={"Conventions": CONVENTIONS, "title": title,
-                                                       "source": f"flexshaft {__version__}", **attrs})
+    return xr.Dataset(
+        variables,
+        coords=coords,
+        attrs={"Conventions": CONVENTIONS, "title": title, "source": f"flexshaft {__version__}", **attrs},
+    )
 
 
 class ResultMixin:

@@ -143,8 +143,12 @@ def api684_separation(critical_speed: float, amplification: float, operating_spe
     """Actual and required separation margin of one critical speed [rad/s] with its AF [-]."""
     position: Position = "below" if critical_speed < operating_speed else "above"
     return Separation(
-        float(critical_speed), float(operating_speed), float(amplification), position,
-        separation_margin(critical_speed, operating_speed), required_separation_margin(amplification, position),
+        float(critical_speed),
+        float(operating_speed),
+        float(amplification),
+        position,
+        separation_margin(critical_speed, operating_speed),
+        required_separation_margin(amplification, position),
     )
 
 
@@ -183,7 +187,7 @@ class ResonancePeak:
 
     @property
     def method(self) -> BandwidthMethod:
-        """"two-sided", "one-sided" (symmetric peak assumed) or "bounded" (upper bound of AF)."""
+        """ "two-sided", "one-sided" (symmetric peak assumed) or "bounded" (upper bound of AF)."""
         found = (self.lower is not None) + (self.upper is not None)
         return ("bounded", "one-sided", "two-sided")[found]
 
@@ -228,10 +232,10 @@ def _vertex(s: np.ndarray, a: np.ndarray, i: int) -> tuple[float, float]:
     neighbour sample: the peak is then narrower than the sampling, and extrapolating it would
     invent an amplitude the samples do not show.
     """
-    x = s[i - 1:i + 2]
-    if np.any(a[i - 1:i + 2] <= 0.0):
+    x = s[i - 1 : i + 2]
+    if np.any(a[i - 1 : i + 2] <= 0.0):
         return float(s[i]), float(a[i])
-    y = 1.0 / a[i - 1:i + 2] ** 2
+    y = 1.0 / a[i - 1 : i + 2] ** 2
     c2, c1, c0 = np.polyfit(x - x[1], y, 2)
     if not c2 > 0.0:
         return float(s[i]), float(a[i])
@@ -245,7 +249,7 @@ def _vertex(s: np.ndarray, a: np.ndarray, i: int) -> tuple[float, float]:
 def _crossing(s0: float, a0: float, s1: float, a1: float, level: float) -> float:
     """Speed between samples (s0, a0 > level) and (s1, a1 <= level) where A = level."""
     if a1 > 0.0:  # interpolate 1/A², a smooth low-order function of speed near a resonance
-        y0, y1, yl = a0 ** -2, a1 ** -2, level ** -2
+        y0, y1, yl = a0**-2, a1**-2, level**-2
     else:
         y0, y1, yl = -a0, -a1, -level
     return float(s0 + (yl - y0) / (y1 - y0) * (s1 - s0))

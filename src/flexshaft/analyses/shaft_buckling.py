@@ -39,8 +39,10 @@ class ShaftBuckling:
 
     def __repr__(self) -> str:
         r = self.result
-        return (f"ShaftBuckling({r.theory} shell: T_cr {min(r.torque_positive, r.torque_negative):.4g} N m "
-                f"({r.governing_positive}), T {self.torque:.4g} N m, safety factor {self.safety_factor:.3g})")
+        return (
+            f"ShaftBuckling({r.theory} shell: T_cr {min(r.torque_positive, r.torque_negative):.4g} N m "
+            f"({r.governing_positive}), T {self.torque:.4g} N m, safety factor {self.safety_factor:.3g})"
+        )
 
     def to_dict(self) -> dict:
         """Plain numbers for JSON and the verdict [N m, -]; a wave number None is the crimping limit."""
@@ -63,8 +65,9 @@ class ShaftBuckling:
         if self.classical is not None:
             c = self.classical
             out["classical_critical_torque_Nm"] = float(min(c.torque_positive, c.torque_negative))
-            out["classical_safety_factor"] = (float(buckling_safety_factor(c, self.torque)) if self.torque > 0
-                                              else float("inf"))
+            out["classical_safety_factor"] = (
+                float(buckling_safety_factor(c, self.torque)) if self.torque > 0 else float("inf")
+            )
         return out
 
 

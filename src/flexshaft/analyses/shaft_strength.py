@@ -57,16 +57,16 @@ from flexshaft.laminate import (
     spin_hoop_resultant,
     thermal_ply_stresses,
 )
-from flexshaft.strength import (
-    Strengths,
-    dominant_stress,
-    tsai_wu_safety_factor,
-    tsai_wu_shares,
-)
+from flexshaft.strength import Strengths, dominant_stress, tsai_wu_safety_factor, tsai_wu_shares
 
 __all__ = [
-    "ShaftStrains", "StrengthResult", "shaft_strains", "shaft_safety_factor", "shaft_strengths",
-    "static_load_parts", "LOAD_NAMES",
+    "ShaftStrains",
+    "StrengthResult",
+    "shaft_strains",
+    "shaft_safety_factor",
+    "shaft_strengths",
+    "static_load_parts",
+    "LOAD_NAMES",
 ]
 
 #: Names of the loads in ``load_shares`` / ``safety_factor_without``: the static parts given (by
@@ -100,11 +100,7 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
         return np.einsum("epi,ei...->ep...", rows, qe)
 
     return ShaftStrains(
-        x=x,
-        axial=apply(s.dudx),
-        curvature_v=apply(s.dgammadx),
-        curvature_w=-apply(s.dbetadx),
-        twist=apply(s.dthetadx),
+        x=x, axial=apply(s.dudx), curvature_v=apply(s.dgammadx), curvature_w=-apply(s.dbetadx), twist=apply(s.dthetadx)
     )
 
 
@@ -188,8 +184,10 @@ class StrengthResult(ResultMixin):
         return load_shares_figure(self.load_shares, ax=ax, **kwargs)
 
     def __repr__(self) -> str:
-        return (f"StrengthResult(Tsai-Wu safety factor {self.safety_factor:.3g} at x = {self.x:.3g} m, ply {self.ply + 1} "
-                f"({self.ply_angle_deg:+.0f}°), {self.dominant_stress} dominates)")
+        return (
+            f"StrengthResult(Tsai-Wu safety factor {self.safety_factor:.3g} at x = {self.x:.3g} m, ply {self.ply + 1} "
+            f"({self.ply_angle_deg:+.0f}°), {self.dominant_stress} dominates)"
+        )
 
     def to_dataset(self):
         """The safety factor along the shaft, with the critical point in the attributes (xarray)."""
@@ -327,8 +325,10 @@ def shaft_safety_factor(
         parts["thermal"] = residual[ply]
     R_min = float(R[k])
     if np.isnan(R_min):  # inf is a result (no stress); NaN is not
-        raise NonFiniteResultError("the Tsai-Wu safety factor came out NaN: some combination of the design's "
-                                   "numbers overflows double precision (see docs/limits.md)")
+        raise NonFiniteResultError(
+            "the Tsai-Wu safety factor came out NaN: some combination of the design's "
+            "numbers overflows double precision (see docs/limits.md)"
+        )
     scale = R_min if np.isfinite(R_min) else 0.0
     at_failure = np.array([parts[name] * (1.0 if name == "thermal" else scale) for name in parts])
     shares = tsai_wu_shares(at_failure, strengths) if np.isfinite(R_min) else np.zeros(len(parts))

@@ -39,12 +39,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.results import ResultMixin, new_dataset
-from flexshaft.units import rad_s_to_rpm
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptance
 from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.results import ResultMixin, new_dataset
 from flexshaft.assembly.model import Controller, Model
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
     "ActuatorReceptance",
@@ -91,7 +91,9 @@ def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
         D = np.repeat(gains, 2, axis=-1)  # (ng, ns, 2 n_act): the same law on v and w
         nb = D.shape[-1]
         system = np.eye(nb) + rec.receptance[None] * D[:, :, None, :]  # I + S D
-        d = np.linalg.solve(system, np.broadcast_to(rec.actuator_free[None], system.shape[:2] + rec.actuator_free.shape[1:]))
+        d = np.linalg.solve(
+            system, np.broadcast_to(rec.actuator_free[None], system.shape[:2] + rec.actuator_free.shape[1:])
+        )
         shaft = rec.shaft_free[None] - _per_speed_product(rec.shaft_per_force, D[..., None] * d)  # (ng, ns, n_out, nc)
         n_nodes = shaft.shape[2] // 2
         shaft_orbit = orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
@@ -105,8 +107,11 @@ def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
     shaft = rec.shaft_free[None] - _per_speed_product(rec.shaft_per_force, e)
     d = rec.actuator_free[None] - rec.receptance[None] @ e
     n_nodes = shaft.shape[2] // 2
-    return (orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:]),
-            orbit_amplitude(d[:, :, 0::2], d[:, :, 1::2]), orbit_amplitude(e[:, :, 0::2], e[:, :, 1::2]))
+    return (
+        orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:]),
+        orbit_amplitude(d[:, :, 0::2], d[:, :, 1::2]),
+        orbit_amplitude(e[:, :, 0::2], e[:, :, 1::2]),
+    )
 
 
 def _dynamic_gains(controllers, speeds: np.ndarray) -> np.ndarray:
@@ -162,8 +167,13 @@ class SpinupCurves(ResultMixin):
 
         if not self.actuator_names:
             raise ValueError("this driveline has no actuators")
-        return actuator_figure(rad_s_to_rpm(self.speeds), dict(zip(self.actuator_names, self.actuator_displacement)),
-                               dict(zip(self.actuator_names, self.actuator_force)), ax=ax, **kwargs)
+        return actuator_figure(
+            rad_s_to_rpm(self.speeds),
+            dict(zip(self.actuator_names, self.actuator_displacement)),
+            dict(zip(self.actuator_names, self.actuator_force)),
+            ax=ax,
+            **kwargs,
+        )
 
     @property
     def shaft_peak(self) -> np.ndarray:
@@ -172,19 +182,30 @@ class SpinupCurves(ResultMixin):
 
     def __repr__(self) -> str:
         k = int(np.argmax(self.shaft_peak))
-        return (f"SpinupCurves({self.speeds.size} speeds to {rad_s_to_rpm(self.speeds[-1]):.0f} rpm, peak shaft orbit "
-                f"{self.shaft_peak[k] * 1e3:.3g} mm at {rad_s_to_rpm(self.speeds[k]):.0f} rpm)")
+        return (
+            f"SpinupCurves({self.speeds.size} speeds to {rad_s_to_rpm(self.speeds[-1]):.0f} rpm, peak shaft orbit "
+            f"{self.shaft_peak[k] * 1e3:.3g} mm at {rad_s_to_rpm(self.speeds[k]):.0f} rpm)"
+        )
 
     def to_dataset(self):
         """Shaft orbit envelope and actuator orbit/force over speed (xarray)."""
         return new_dataset(
             {
-                "shaft_orbit": (("x_shaft", "speed"), self.shaft_orbit,
-                                {"units": "m", "long_name": "shaft orbit major semi-axis, worst load case"}),
-                "actuator_displacement": (("actuator", "speed"), self.actuator_displacement,
-                                          {"units": "m", "long_name": "relative orbit at the actuator"}),
-                "actuator_force": (("actuator", "speed"), self.actuator_force,
-                                   {"units": "N", "long_name": "actuator force amplitude"}),
+                "shaft_orbit": (
+                    ("x_shaft", "speed"),
+                    self.shaft_orbit,
+                    {"units": "m", "long_name": "shaft orbit major semi-axis, worst load case"},
+                ),
+                "actuator_displacement": (
+                    ("actuator", "speed"),
+                    self.actuator_displacement,
+                    {"units": "m", "long_name": "relative orbit at the actuator"},
+                ),
+                "actuator_force": (
+                    ("actuator", "speed"),
+                    self.actuator_force,
+                    {"units": "N", "long_name": "actuator force amplitude"},
+                ),
             },
             {
                 "speed": ("speed", self.speeds, {"units": "rad/s", "long_name": "spin speed"}),
@@ -210,12 +231,20 @@ def spinup_curves(rec: ActuatorReceptance, controllers) -> SpinupCurves:
     ):
         controllers = [controllers] * rec.n_actuators
     if not isinstance(rec, ActuatorReceptance):
-        raise ValueError(f"rec must be an ActuatorReceptance (actuator_receptance(model, speeds)), got {type(rec).__name__}")
+        raise ValueError(
+            f"rec must be an ActuatorReceptance (actuator_receptance(model, speeds)), got {type(rec).__name__}"
+        )
     for c in controllers:
         if isinstance(c, tuple):
             check_finite_array("controller gains (kp, kd)", c, "N/m, N s/m")
-    laws = [c if isinstance(c, Controller) else Controller.from_transfer_function(c) if hasattr(c, "num")
-            else Controller.pd(*c) for c in controllers]
+    laws = [
+        c
+        if isinstance(c, Controller)
+        else Controller.from_transfer_function(c)
+        if hasattr(c, "num")
+        else Controller.pd(*c)
+        for c in controllers
+    ]
     for law in laws:
         check_finite_array("controller coefficients", law.numerator + law.denominator)
     if len(laws) != rec.n_actuators:
@@ -294,8 +323,11 @@ class SpinupMap(ResultMixin):
     actuator_force_peak: np.ndarray
     actuator_names: tuple[str, ...]
 
-    plots = {"shaft_peak": "plot_shaft_peak", "actuator_displacement": "plot_actuator_displacement",
-             "actuator_force": "plot_actuator_force"}
+    plots = {
+        "shaft_peak": "plot_shaft_peak",
+        "actuator_displacement": "plot_actuator_displacement",
+        "actuator_force": "plot_actuator_force",
+    }
 
     def _plot_map(self, values, label: str, scale: float, title: str, ax, kwargs):
         from flexshaft.plot.studies import gain_map_figure
@@ -309,18 +341,36 @@ class SpinupMap(ResultMixin):
     def plot_shaft_peak(self, ax=None, **kwargs):
         """Peak spin-up shaft orbit [mm] over (K_p, K_d), the smallest marked ★ (keywords to
         :func:`flexshaft.plot.studies.gain_map_figure`, e.g. ``other={"design": (kp, kd)}``)."""
-        return self._plot_map(self.shaft_peak, "max spin-up shaft orbit [mm]", 1e3,
-                              "Maximum spin-up shaft deflection vs control gains", ax, kwargs)
+        return self._plot_map(
+            self.shaft_peak,
+            "max spin-up shaft orbit [mm]",
+            1e3,
+            "Maximum spin-up shaft deflection vs control gains",
+            ax,
+            kwargs,
+        )
 
     def plot_actuator_displacement(self, ax=None, **kwargs):
         """Peak relative orbit at the actuators [mm] (largest over them) over (K_p, K_d)."""
-        return self._plot_map(self.actuator_displacement_peak.max(axis=-1), "max actuator displacement [mm]", 1e3,
-                              "Maximum shaft displacement at the actuators vs control gains", ax, kwargs)
+        return self._plot_map(
+            self.actuator_displacement_peak.max(axis=-1),
+            "max actuator displacement [mm]",
+            1e3,
+            "Maximum shaft displacement at the actuators vs control gains",
+            ax,
+            kwargs,
+        )
 
     def plot_actuator_force(self, ax=None, **kwargs):
         """Peak actuator force [N] (largest over the actuators) over (K_p, K_d)."""
-        return self._plot_map(self.actuator_force_peak.max(axis=-1), "max actuator force [N]", 1.0,
-                              "Maximum actuator force vs control gains", ax, kwargs)
+        return self._plot_map(
+            self.actuator_force_peak.max(axis=-1),
+            "max actuator force [N]",
+            1.0,
+            "Maximum actuator force vs control gains",
+            ax,
+            kwargs,
+        )
 
     def best(self, max_actuator_displacement: float | None = None, max_actuator_force: float | None = None):
         """Gains ``(kp, kd, shaft_peak)`` of the smallest peak deflection within the limits."""
@@ -340,14 +390,21 @@ class SpinupMap(ResultMixin):
         return new_dataset(
             {
                 "shaft_peak": (dims, self.shaft_peak, {"units": "m", "long_name": "peak shaft orbit over speed"}),
-                "shaft_peak_speed": (dims, self.shaft_peak_speed, {"units": "rad/s", "long_name": "speed of the peak shaft orbit"}),
+                "shaft_peak_speed": (
+                    dims,
+                    self.shaft_peak_speed,
+                    {"units": "rad/s", "long_name": "speed of the peak shaft orbit"},
+                ),
                 "actuator_displacement_peak": (
                     dims + ("actuator",),
                     self.actuator_displacement_peak,
                     {"units": "m", "long_name": "peak relative orbit at the actuator"},
                 ),
-                "actuator_force_peak": (dims + ("actuator",), self.actuator_force_peak,
-                                        {"units": "N", "long_name": "peak actuator force amplitude"}),
+                "actuator_force_peak": (
+                    dims + ("actuator",),
+                    self.actuator_force_peak,
+                    {"units": "N", "long_name": "peak actuator force amplitude"},
+                ),
             },
             {
                 "kp": ("kp", self.kp, {"units": "N/m", "long_name": "proportional gain"}),
@@ -355,7 +412,9 @@ class SpinupMap(ResultMixin):
                 "actuator": ("actuator", list(self.actuator_names), {"long_name": "active bearing"}),
             },
             "spin-up map over the actuator gains",
-            speed_min=float(self.speeds[0]), speed_max=float(self.speeds[-1]), speed_units="rad/s",
+            speed_min=float(self.speeds[0]),
+            speed_max=float(self.speeds[-1]),
+            speed_units="rad/s",
             n_speeds=int(self.speeds.size),
         )
 

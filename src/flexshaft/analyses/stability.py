@@ -42,11 +42,12 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
-from flexshaft.analyses.results import ResultMixin
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.loss import viscous_equivalent
-from flexshaft.assembly.model import Model, rotation_generator as _rotation_generator
+from flexshaft.analyses.results import ResultMixin
+from flexshaft.assembly.model import Model
+from flexshaft.assembly.model import rotation_generator as _rotation_generator
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["DampingModel", "STABILITY_TOLERANCE", "StabilityResult", "rotation_generator", "stability", "onset_speed"]
@@ -113,8 +114,10 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
         onset = "stable" if self.onset_speed is None else f"onset {rad_s_to_rpm(self.onset_speed):.0f} rpm"
         if self.onset_kind == "divergence":
             onset += " (divergence)"
-        return (f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
-                f"{self.damping_model} method, internal damping {self.internal_damping!r})")
+        return (
+            f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
+            f"{self.damping_model} method, internal damping {self.internal_damping!r})"
+        )
 
     def to_dataset(self):
         """Tracked eigenvalues over speed with the onset speed (xarray)."""
@@ -122,8 +125,11 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
         attrs = {"method": self.damping_model, "onset_kind": getattr(self, "onset_kind", "whirl") or "none"}
         if self.onset_speed is not None:
-            attrs.update(onset_speed=float(self.onset_speed), onset_speed_units="rad/s",
-                         unstable_mode=int(self.unstable_mode) + 1)
+            attrs.update(
+                onset_speed=float(self.onset_speed),
+                onset_speed_units="rad/s",
+                unstable_mode=int(self.unstable_mode) + 1,
+            )
         if self.reference_frequency is not None:
             attrs.update(reference_frequency=float(self.reference_frequency), reference_frequency_units="rad/s")
         return curves_dataset(self, "whirl stability", **attrs)
@@ -159,23 +165,33 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
         onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
         text = self.onset_description()
-        return log_decrement_figure(rad_s_to_rpm(self.speeds), {label: self.log_decrements}, {label: onset}, ax=ax,
-                                    onset_text={label: text} if text else None, whirl={label: self.whirl}, **kwargs)
+        return log_decrement_figure(
+            rad_s_to_rpm(self.speeds),
+            {label: self.log_decrements},
+            {label: onset},
+            ax=ax,
+            onset_text={label: text} if text else None,
+            whirl={label: self.whirl},
+            **kwargs,
+        )
 
     def plot_real_parts(self, ax=None, *, label: str = "this design", **kwargs):
         """Re(s) of every tracked mode against speed [rpm] (thesis figures 4.2-4.4), onset marked."""
         from flexshaft.plot.stability import real_parts_figure
 
         onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
-        return real_parts_figure(rad_s_to_rpm(self.speeds), {label: self.real_parts}, onset_rpm={label: onset}, ax=ax,
-                                 **kwargs)
+        return real_parts_figure(
+            rad_s_to_rpm(self.speeds), {label: self.real_parts}, onset_rpm={label: onset}, ax=ax, **kwargs
+        )
 
     def at_speed(self, speed: float) -> int:
         """Index of the analysed speed nearest ``speed`` [rad/s]."""
         return int(np.argmin(np.abs(self.speeds - speed)))
 
 
-def onset_speed(speeds, eigenvalues, tolerance: float = STABILITY_TOLERANCE) -> tuple[float | None, int | None, int | None]:
+def onset_speed(
+    speeds, eigenvalues, tolerance: float = STABILITY_TOLERANCE
+) -> tuple[float | None, int | None, int | None]:
     """First crossing into instability: ``(speed, mode, index of the first unstable speed)``.
 
     A point is unstable when ζ = −Re(s)/|s| < −``tolerance``; the crossing speed is
@@ -207,9 +223,15 @@ def onset_speed(speeds, eigenvalues, tolerance: float = STABILITY_TOLERANCE) -> 
 
 
 @single_blas_thread
-def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingModel = "hysteretic",
-              reference_frequency: float | None = None, basis_size: int | None = None,
-              reduced: ReducedModel | None = None) -> StabilityResult:
+def stability(
+    model: Model,
+    speeds,
+    n_modes: int = 12,
+    damping_model: DampingModel = "hysteretic",
+    reference_frequency: float | None = None,
+    basis_size: int | None = None,
+    reduced: ReducedModel | None = None,
+) -> StabilityResult:
     """Eigenvalues of the linearised driveline with internal damping over speed.
 
     Parameters
@@ -241,8 +263,9 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     ref = None
     if damping_model == "viscous":
         ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
-        tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=False,
-                              viscous=lambda sp: viscous_equivalent(ref, sp))
+        tracked = track_modes(
+            model, red, speeds, int(n_modes), refine_loss=False, viscous=lambda sp: viscous_equivalent(ref, sp)
+        )
     else:
         tracked = track_modes(model, red, speeds, int(n_modes))
     eig = tracked.eigenvalues
@@ -265,8 +288,20 @@ def stability(model: Model, speeds, n_modes: int = 12, damping_model: DampingMod
     if first is not None and (onset is None or speeds[first[0]] <= onset):
         onset, mode, kind = float(speeds[first[0]]), None, "divergence"
         shape = model.dofs.expand(red.shapes(first[1]))
-    return StabilityResult(speeds, eig, tracked.whirl, damping_model, onset, mode, shape, tracked.kind,
-                           model.internal_damping, ref, divergence, kind)
+    return StabilityResult(
+        speeds,
+        eig,
+        tracked.whirl,
+        damping_model,
+        onset,
+        mode,
+        shape,
+        tracked.kind,
+        model.internal_damping,
+        ref,
+        divergence,
+        kind,
+    )
 
 
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:

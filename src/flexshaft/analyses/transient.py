@@ -123,12 +123,14 @@ class SpeedProfile:
     acceleration_function: Callable[[float], float] | None = None
 
     @classmethod
-    def table(cls, times, speeds) -> "SpeedProfile":
+    def table(cls, times, speeds) -> SpeedProfile:
         """Piecewise-linear Ω through ``speeds`` [rad/s] at ``times`` [s] (from t = 0)."""
         t = np.asarray(times, dtype=float).ravel()
         s = np.asarray(speeds, dtype=float).ravel()
         if t.size < 2 or t.size != s.size:
-            raise ValueError(f"speed table: need >= 2 (time, speed) pairs of equal length, got {t.size} times and {s.size} speeds")
+            raise ValueError(
+                f"speed table: need >= 2 (time, speed) pairs of equal length, got {t.size} times and {s.size} speeds"
+            )
         if not (np.all(np.isfinite(t)) and np.all(np.isfinite(s))):
             raise ValueError("speed table: times and speeds must be finite")
         if t[0] != 0.0 or np.any(np.diff(t) <= 0):
@@ -138,7 +140,7 @@ class SpeedProfile:
         return cls(duration=float(t[-1]), times=t, speeds=s)
 
     @classmethod
-    def constant_acceleration(cls, start: float, stop: float, acceleration: float, dwell: float = 0.0) -> "SpeedProfile":
+    def constant_acceleration(cls, start: float, stop: float, acceleration: float, dwell: float = 0.0) -> SpeedProfile:
         """From ``start`` to ``stop`` [rad/s] at ``|acceleration|`` [rad/s²] (run-down when
         stop < start), then ``dwell`` [s] at ``stop``."""
         if not (np.isfinite(acceleration) and acceleration != 0):
@@ -155,8 +157,9 @@ class SpeedProfile:
         return cls.table(times, speeds)
 
     @classmethod
-    def from_callable(cls, speed: Callable[[float], float], duration: float,
-                      acceleration: Callable[[float], float] | None = None) -> "SpeedProfile":
+    def from_callable(
+        cls, speed: Callable[[float], float], duration: float, acceleration: Callable[[float], float] | None = None
+    ) -> SpeedProfile:
         """Any smooth Ω(t) [rad/s] on [0, duration] [s], optionally with dΩ/dt [rad/s²]."""
         if not (np.isfinite(duration) and duration > 0):
             raise ValueError(f"duration must be > 0 s, got {duration!r}")
@@ -326,16 +329,23 @@ class TransientResult:
                 "speed": ("time", self.speed, {"units": "rad/s"}),
                 "acceleration": ("time", self.acceleration, {"units": "rad/s^2"}),
                 "shaft_orbit": (("x", "time"), self.shaft_orbit, {"units": "m", "long_name": "deflection envelope"}),
-                "shaft_peak": ("time", self.shaft_peak, {"units": "m", "long_name": "largest deflection over the shaft"}),
+                "shaft_peak": (
+                    "time",
+                    self.shaft_peak,
+                    {"units": "m", "long_name": "largest deflection over the shaft"},
+                ),
                 "actuator_displacement": (("actuator", "time"), self.actuator_displacement, {"units": "m"}),
                 "actuator_force": (("actuator", "time"), self.actuator_force, {"units": "N"}),
             },
-            coords={"time": ("time", self.time, {"units": "s"}), "x": ("x", self.shaft_x, {"units": "m"}),
-                    "actuator": ("actuator", list(self.actuator_names))},
+            coords={
+                "time": ("time", self.time, {"units": "s"}),
+                "x": ("x", self.shaft_x, {"units": "m"}),
+                "actuator": ("actuator", list(self.actuator_names)),
+            },
             attrs={"basis_size": self.basis_size, "internal_damping": self.internal_damping, "steps": self.steps},
         )
 
-    def plot(self, ax=None, steady: "SteadyEnvelope | None" = None):
+    def plot(self, ax=None, steady: SteadyEnvelope | None = None):
         """Shaft envelope against speed, with the steady-state spin-up curve when given
         (:func:`flexshaft.plot.transient.runup_envelope_figure`)."""
         from flexshaft.plot.transient import runup_envelope_figure
@@ -504,11 +514,22 @@ def transient_response(
         raise ValueError(f"output_step must be > 0 s, got {output_step!r}")
     count = int(np.ceil(duration / output_step)) + 1
     if count > MAX_OUTPUTS:
-        raise ValueError(f"{count} output samples (duration {duration:g} s / output_step {output_step:g} s) exceed "
-                         f"{MAX_OUTPUTS}; give a larger output_step")
+        raise ValueError(
+            f"{count} output samples (duration {duration:g} s / output_step {output_step:g} s) exceed "
+            f"{MAX_OUTPUTS}; give a larger output_step"
+        )
     T = np.linspace(0.0, duration, count)
-    run = integrate_envelope(system, profile.speed, profile.acceleration, profile.breakpoints, z, T,
-                             rtol=rtol, max_step=max_step, max_speed=top)
+    run = integrate_envelope(
+        system,
+        profile.speed,
+        profile.acceleration,
+        profile.breakpoints,
+        z,
+        T,
+        rtol=rtol,
+        max_step=max_step,
+        max_speed=top,
+    )
     Z = run.states
     speed = profile.speeds_at(T)
     accel = np.array([profile.acceleration(x) for x in T])
@@ -547,13 +568,29 @@ def transient_response(
     act_disp = np.array(act_disp).reshape(n_act, 2, T.size)
     act_force = np.array(act_force).reshape(n_act, 2, T.size)
     return TransientResult(
-        time=T, speed=speed, acceleration=accel, phase=phase, shaft_x=np.asarray(dm.shaft_x, dtype=float),
-        shaft_orbit=shaft, actuator_displacement=orbit_amplitude(act_disp[:, 0], act_disp[:, 1]),
-        actuator_force=orbit_amplitude(act_force[:, 0], act_force[:, 1]), actuator_names=tuple(a.name for a in model.actuators),
-        modal_displacement=Y, modal_velocity=Z[nb : 2 * nb], basis_size=nb, internal_damping=model.internal_damping,
-        steps=run.steps, rejected=run.rejected, refreshes=run.refreshes, max_growth_rate=run.max_growth_rate,
-        basis=red.Phi, residual=residual, force_scale=force_scale,
-        shaft_envelope=np.stack(shaft_rows), actuator_envelope=act_disp, actuator_force_envelope=act_force,
+        time=T,
+        speed=speed,
+        acceleration=accel,
+        phase=phase,
+        shaft_x=np.asarray(dm.shaft_x, dtype=float),
+        shaft_orbit=shaft,
+        actuator_displacement=orbit_amplitude(act_disp[:, 0], act_disp[:, 1]),
+        actuator_force=orbit_amplitude(act_force[:, 0], act_force[:, 1]),
+        actuator_names=tuple(a.name for a in model.actuators),
+        modal_displacement=Y,
+        modal_velocity=Z[nb : 2 * nb],
+        basis_size=nb,
+        internal_damping=model.internal_damping,
+        steps=run.steps,
+        rejected=run.rejected,
+        refreshes=run.refreshes,
+        max_growth_rate=run.max_growth_rate,
+        basis=red.Phi,
+        residual=residual,
+        force_scale=force_scale,
+        shaft_envelope=np.stack(shaft_rows),
+        actuator_envelope=act_disp,
+        actuator_force_envelope=act_force,
     )
 
 
@@ -565,8 +602,9 @@ def _rows(Phi: np.ndarray, rows: np.ndarray) -> np.ndarray:
     return out
 
 
-def run_up(model: Model, duration: float, *, start: float = 0.0, stop: float | None = None, dwell: float = 0.0,
-           **options) -> TransientResult:
+def run_up(
+    model: Model, duration: float, *, start: float = 0.0, stop: float | None = None, dwell: float = 0.0, **options
+) -> TransientResult:
     """Constant-acceleration run-up from ``start`` to ``stop`` (default the operating speed)
     [rad/s] in ``duration`` [s], then ``dwell`` [s] at ``stop``; a run-down when stop < start.
     ``options`` go to :func:`transient_response`."""

@@ -9,7 +9,17 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__all__ = ["BOOM_FIELDS", "SHAFT_FIELDS", "Actuator", "BearingLink", "Controller", "DofMap", "Model", "ShaftProperties", "build_model"]
+__all__ = [
+    "BOOM_FIELDS",
+    "SHAFT_FIELDS",
+    "Actuator",
+    "BearingLink",
+    "Controller",
+    "DofMap",
+    "Model",
+    "ShaftProperties",
+    "build_model",
+]
 
 _LAZY = {
     "BOOM_FIELDS": "flexshaft.assembly.dofs",

@@ -41,8 +41,6 @@ from flexshaft.assembly.model import (
 )
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.assembly.sparse import scatter_blocks
-from flexshaft.elements import magnetic
-from flexshaft.elements.coupling import coupling_matrices
 from flexshaft.elements import (
     TubeSection,
     boom_element_matrices,
@@ -50,15 +48,23 @@ from flexshaft.elements import (
     disk_matrices,
     ellipse_section,
     end_mass_matrix,
+    magnetic,
     relative_rows,
     shaft_element_matrices,
 )
+from flexshaft.elements.coupling import coupling_matrices
 from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
 
 __all__ = ["build_model", "segment_mesh", "shaft_properties", "segment_properties", "boom_semi_axes"]
 
-_COUPLING_DIRECTIONS = {"u": "axial", "v": "lateral", "w": "lateral", "theta": "torsional",
-                        "beta": "angular", "gamma": "angular"}
+_COUPLING_DIRECTIONS = {
+    "u": "axial",
+    "v": "lateral",
+    "w": "lateral",
+    "theta": "torsional",
+    "beta": "angular",
+    "gamma": "angular",
+}
 
 _RELATIVE = ("u", "v", "w", "beta", "gamma")
 
@@ -75,8 +81,13 @@ def shaft_properties(design) -> ShaftProperties:
 def segment_properties(design) -> tuple[SegmentProperties, ...]:
     """Every zone of the shaft (:attr:`~flexshaft.design.components.Shaft.tubes`) with its tube."""
     return tuple(
-        SegmentProperties(tube.name, float(tube.x_start), float(tube.x_end), tube.material,
-                          _tube_properties(tube, design.materials[tube.material]))
+        SegmentProperties(
+            tube.name,
+            float(tube.x_start),
+            float(tube.x_end),
+            tube.material,
+            _tube_properties(tube, design.materials[tube.material]),
+        )
         for tube in design.shaft.tubes
     )
 
@@ -94,10 +105,19 @@ def _tube_of(Do: float, wall: float, ply_angles_deg: tuple, mat) -> ShaftPropert
     Di = Do - 2 * wall
     if mat.kind == "lamina":
         lamina = Lamina.from_loss_factors(
-            E_L=mat.E_L, E_T=mat.E_T, G_LT=mat.G_LT, nu_LT=mat.nu_LT, density=mat.density,
-            loss_E_L=mat.loss_E_L, loss_E_T=mat.loss_E_T, loss_G_LT=mat.loss_G_LT,
-            G_13=mat.G_13, G_23=mat.G_23, shear_correction=mat.shear_correction,
-            alpha_L=mat.alpha_L, alpha_T=mat.alpha_T,
+            E_L=mat.E_L,
+            E_T=mat.E_T,
+            G_LT=mat.G_LT,
+            nu_LT=mat.nu_LT,
+            density=mat.density,
+            loss_E_L=mat.loss_E_L,
+            loss_E_T=mat.loss_E_T,
+            loss_G_LT=mat.loss_G_LT,
+            G_13=mat.G_13,
+            G_23=mat.G_23,
+            shear_correction=mat.shear_correction,
+            alpha_L=mat.alpha_L,
+            alpha_T=mat.alpha_T,
         )
         angles = np.radians(np.asarray(ply_angles_deg, dtype=float))
         plies = np.full(angles.size, wall / angles.size)
@@ -146,8 +166,16 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
         xb = xb + offset
     local, dofs, rows = _relative_rows(dm, float(x_shaft), None if xb is None else float(xb), float(h))
     if bearing.kind == "contact":
-        link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows,
-                           _coefficients(bearing.stiffness), _coefficients(bearing.damping))
+        link = BearingLink(
+            bearing.name,
+            bearing.kind,
+            x_shaft,
+            xb,
+            h,
+            rows,
+            _coefficients(bearing.stiffness),
+            _coefficients(bearing.damping),
+        )
     else:
         link = BearingLink(bearing.name, bearing.kind, x_shaft, xb, h, rows)
     return link, local, dofs
@@ -197,8 +225,9 @@ def _boom_blocks(boom_x: bytes, tailboom, material) -> tuple[np.ndarray, np.ndar
         a, b = boom_semi_axes(tailboom, x)
         return ellipse_section(a, b, tailboom.wall_thickness)
 
-    Mb, Kb = boom_element_matrices(np.frombuffer(boom_x), section_at, material.E * (1 + 1j * eta),
-                                   material.G * (1 + 1j * eta), material.density)
+    Mb, Kb = boom_element_matrices(
+        np.frombuffer(boom_x), section_at, material.E * (1 + 1j * eta), material.G * (1 + 1j * eta), material.density
+    )
     blocks = (Mb, np.ascontiguousarray(Kb.real), np.ascontiguousarray(Kb.imag))
     for block in blocks:
         block.flags.writeable = False
@@ -210,19 +239,35 @@ def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     index = design.bearings.index(bearing)
     ctrl = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
     if bearing.uses_magnet_geometry:
-        geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
+        geometry = (
+            bearing.coil_turns,
+            bearing.pole_area,
+            bearing.bias_current,
+            bearing.air_gap,
+            bearing.pole_angle_rad,
+        )
         k_i, k_s = magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
     else:
         k_i = 1.0 if bearing.ki is None else float(bearing.ki)
         k_s = 0.0 if bearing.ks is None else float(bearing.ks)
     saturation = None
     if bearing.saturation_flux_density is not None:
-        saturation = magnetic.saturation_force(bearing.saturation_flux_density, bearing.pole_area, bearing.pole_angle_rad)
+        saturation = magnetic.saturation_force(
+            bearing.saturation_flux_density, bearing.pole_area, bearing.pole_angle_rad
+        )
     sensor = _bearing_link(design, dm, bearing, bearing.sensor_offset) if bearing.sensor_offset != 0.0 else None
     check_magnet(design, index, k_i, k_s)
-    actuator = Actuator(link, ctrl, current_gain=k_i, negative_stiffness=k_s,
-                        amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s, sensor=sensor,
-                        air_gap=bearing.air_gap, bias_current=bearing.bias_current, saturation_force=saturation)
+    actuator = Actuator(
+        link,
+        ctrl,
+        current_gain=k_i,
+        negative_stiffness=k_s,
+        amplifier_bandwidth=bearing.amplifier_bandwidth_rad_s,
+        sensor=sensor,
+        air_gap=bearing.air_gap,
+        bias_current=bearing.bias_current,
+        saturation_force=saturation,
+    )
     check_actuator_law(design, index, actuator, design.operating.speed_rad_s)
     return actuator
 
@@ -253,13 +298,16 @@ def build_model(design) -> Model:
     from flexshaft.design import Design
 
     if not isinstance(design, Design):
-        raise ValueError(f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
-                         "use load_design, loads_design or design_from_dict")
+        raise ValueError(
+            f"build_model needs a validated flexshaft.design.Design (got {type(design).__name__}); "
+            "use load_design, loads_design or design_from_dict"
+        )
     check_problem_size(design, "model", stacklevel=4)  # the caller of flexshaft.assembly.build_model
     shaft_x, boom_x = design_mesh(design) if not design.segmented else _segmented_mesh(design)
     shaft_x, joints = _split_at_couplings(design, shaft_x)
-    dm = DofMap(shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints,
-                _tied_dofs(design, shaft_x, boom_x, joints))
+    dm = DofMap(
+        shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints, _tied_dofs(design, shaft_x, boom_x, joints)
+    )
     n = dm.size
 
     props = shaft_properties(design)
@@ -298,7 +346,9 @@ def build_model(design) -> Model:
                 parts["C"].append((((local.T * link.damping) @ local)[None], dofs[None]))
         else:
             actuators.append(_actuator(design, dm, bearing, link))
-    M, K, C, G, shaft_loss, boom_loss = (scatter_blocks(parts[k], n) for k in ("M", "K", "C", "G", "shaft_loss", "boom_loss"))
+    M, K, C, G, shaft_loss, boom_loss = (
+        scatter_blocks(parts[k], n) for k in ("M", "K", "C", "G", "shaft_loss", "boom_loss")
+    )
 
     model = Model(
         dofs=dm,
@@ -340,9 +390,18 @@ def _segmented_mesh(design) -> tuple[np.ndarray, np.ndarray]:
     if crowded:
         from flexshaft.design import DesignError, Problem
 
-        raise DesignError([Problem("mesh.shaft_elements", f"the segment boundary or coupling at x = {x:.6g} m is "
-                                   f"closer than {tol:.3g} m (5 % of an element) to another one or to a shaft end; "
-                                   "raise shaft_elements or move it") for x in crowded], "<model>")
+        raise DesignError(
+            [
+                Problem(
+                    "mesh.shaft_elements",
+                    f"the segment boundary or coupling at x = {x:.6g} m is "
+                    f"closer than {tol:.3g} m (5 % of an element) to another one or to a shaft end; "
+                    "raise shaft_elements or move it",
+                )
+                for x in crowded
+            ],
+            "<model>",
+        )
     soft = [x for x in shaft_pts if min(abs(x - h) for h in hard) >= tol]
     shaft_x = segment_mesh(soft + hard, design.mesh.shaft_elements)
     boom_x = design_mesh(design)[1]
@@ -376,8 +435,9 @@ def _shaft_elements(design, dm: DofMap, segments, parts: dict) -> None:
         if design.shaft.shear_deformation:
             nu = float(np.clip(props.youngs_modulus.real / (2 * props.shear_modulus.real) - 1, 0.0, 0.5))
             kappa = cowper_shear_coefficient(section, nu)
-        Ms, Ks, Gs = shaft_element_matrices(lengths[mine], section, props.youngs_modulus, props.shear_modulus,
-                                            props.density, kappa)
+        Ms, Ks, Gs = shaft_element_matrices(
+            lengths[mine], section, props.youngs_modulus, props.shear_modulus, props.density, kappa
+        )
         dofs = sdofs[mine]
         parts["M"].append((Ms, dofs))
         parts["K"].append((Ks.real, dofs))
@@ -393,9 +453,12 @@ def _coupling_values(coupling) -> list:
 def _tied_dofs(design, shaft_x, boom_x, joints) -> np.ndarray:
     """(tied, equals) raw DOF pairs of the rigid coupling directions: aft node = forward node."""
     raw = DofMap(shaft_x, boom_x)
-    pairs = [(raw.shaft(j + 1, f), raw.shaft(j, f))
-             for coupling, j in zip(sorted(design.couplings, key=lambda c: c.x), joints)
-             for f, value in zip(SHAFT_FIELDS, _coupling_values(coupling)) if value == "rigid"]
+    pairs = [
+        (raw.shaft(j + 1, f), raw.shaft(j, f))
+        for coupling, j in zip(sorted(design.couplings, key=lambda c: c.x), joints)
+        for f, value in zip(SHAFT_FIELDS, _coupling_values(coupling))
+        if value == "rigid"
+    ]
     return np.array(pairs, dtype=int).reshape(-1, 2)
 
 
@@ -413,6 +476,16 @@ def _couplings(design, dm: DofMap, parts: dict) -> tuple[CouplingLink, ...]:
         parts["M"].append((M[None], dofs[None]))
         parts["G"].append((G[None], dofs[None]))
         allowable = None if coupling.allowable_angle_deg is None else float(np.radians(coupling.allowable_angle_deg))
-        links.append(CouplingLink(coupling.name, float(dm.shaft_x[j]), int(j), int(j + 1),
-                                  np.where(rigid, np.inf, stiffness), rigid, float(coupling.mass), allowable))
+        links.append(
+            CouplingLink(
+                coupling.name,
+                float(dm.shaft_x[j]),
+                int(j),
+                int(j + 1),
+                np.where(rigid, np.inf, stiffness),
+                rigid,
+                float(coupling.mass),
+                allowable,
+            )
+        )
     return tuple(links)

@@ -28,8 +28,14 @@ import numpy as np
 from flexshaft.design import DesignError, Problem
 from flexshaft.design.quantities import MAX_CONTROLLER_COEFFICIENT
 
-__all__ = ["RIGID_RATIO", "check_actuator_law", "check_bearing_stiffness", "check_finite_model", "check_magnet",
-           "element_stiffness"]
+__all__ = [
+    "RIGID_RATIO",
+    "check_actuator_law",
+    "check_bearing_stiffness",
+    "check_finite_model",
+    "check_magnet",
+    "element_stiffness",
+]
 
 #: Largest support stiffness in units of one shaft element's stiffness (see the module docstring).
 RIGID_RATIO = 1e8
@@ -55,32 +61,54 @@ def element_stiffness(design, shaft) -> dict[str, float]:
 
 
 def _too_stiff(path: str, value: float, reference: float, unit: str, what: str) -> Problem:
-    return Problem(path, f"{value:g} {unit} is {value / reference:.3g} times the {what} of one shaft element "
-                         f"({reference:.3g} {unit}); a support stiffer than {RIGID_RATIO:g} times it is no more rigid "
-                         f"but costs the eigen-solution its digits (got {value!r}; allowed: at most "
-                         f"{RIGID_RATIO * reference:.3g} {unit} for this shaft and mesh.shaft_elements = "
-                         f"{{elements}}, see docs/limits.md)")
+    return Problem(
+        path,
+        f"{value:g} {unit} is {value / reference:.3g} times the {what} of one shaft element "
+        f"({reference:.3g} {unit}); a support stiffer than {RIGID_RATIO:g} times it is no more rigid "
+        f"but costs the eigen-solution its digits (got {value!r}; allowed: at most "
+        f"{RIGID_RATIO * reference:.3g} {unit} for this shaft and mesh.shaft_elements = "
+        f"{{elements}}, see docs/limits.md)",
+    )
 
 
 def check_bearing_stiffness(design, shaft) -> None:
     """Refuse supports stiffer than :data:`RIGID_RATIO` shaft elements (module docstring)."""
     reference = element_stiffness(design, shaft)
-    what = {"u": "axial stiffness E A/h", "v": "bending stiffness E I/h³", "w": "bending stiffness E I/h³",
-            "beta": "rotational stiffness E I/h", "gamma": "rotational stiffness E I/h"}
+    what = {
+        "u": "axial stiffness E A/h",
+        "v": "bending stiffness E I/h³",
+        "w": "bending stiffness E I/h³",
+        "beta": "rotational stiffness E I/h",
+        "gamma": "rotational stiffness E I/h",
+    }
     problems = []
     for index, bearing in enumerate(design.bearings):
         if bearing.kind == "contact":
             for direction, value in bearing.stiffness.items():
                 unit = "N m/rad" if direction in ("beta", "gamma") else "N/m"
                 if value > RIGID_RATIO * reference[direction]:
-                    problems.append(_too_stiff(f"bearings[{index}].stiffness.{direction}", value,
-                                               reference[direction], unit, what[direction]))
+                    problems.append(
+                        _too_stiff(
+                            f"bearings[{index}].stiffness.{direction}",
+                            value,
+                            reference[direction],
+                            unit,
+                            what[direction],
+                        )
+                    )
         else:
             gains = {"kp": (bearing.kp or 0.0) * (1.0 if bearing.ki is None else bearing.ki), "ks": bearing.ks or 0.0}
             for name, value in gains.items():
                 if value > RIGID_RATIO * reference["v"]:
-                    problems.append(_too_stiff(f"bearings[{index}].{name}", value, reference["v"], "N/m",
-                                               what["v"] + (" (k_i kp)" if name == "kp" else "")))
+                    problems.append(
+                        _too_stiff(
+                            f"bearings[{index}].{name}",
+                            value,
+                            reference["v"],
+                            "N/m",
+                            what["v"] + (" (k_i kp)" if name == "kp" else ""),
+                        )
+                    )
     if problems:
         elements = design.mesh.shaft_elements
         raise DesignError([Problem(p.path, p.message.replace("{elements}", str(elements))) for p in problems], _SOURCE)
@@ -92,8 +120,10 @@ def check_magnet(design, index: int, current_gain: float, negative_stiffness: fl
     bearing = design.bearings[index]
     fields = "coil_turns, pole_area, bias_current, air_gap" if bearing.uses_magnet_geometry else None
     problems = []
-    for name, value, low_ok, high in (("ki", current_gain, lambda v: v > 0, _MAX_CURRENT_GAIN),
-                                      ("ks", negative_stiffness, lambda v: v >= 0, _MAX_NEGATIVE_STIFFNESS)):
+    for name, value, low_ok, high in (
+        ("ki", current_gain, lambda v: v > 0, _MAX_CURRENT_GAIN),
+        ("ks", negative_stiffness, lambda v: v >= 0, _MAX_NEGATIVE_STIFFNESS),
+    ):
         if not (np.isfinite(value) and low_ok(value) and value <= high):
             unit = "N/A" if name == "ki" else "N/m"
             if fields is None:
@@ -101,8 +131,11 @@ def check_magnet(design, index: int, current_gain: float, negative_stiffness: fl
             else:
                 path, origin = f"bearings[{index}].coil_turns", f"{name} = {value:.6g} {unit} from {fields}"
             allowed = "in (0, 1e6] N/A" if name == "ki" else "in [0, 1e12] N/m"
-            problems.append(Problem(path, f"gives the magnet gain {name} = {value:.6g} {unit} ({origin}; allowed: "
-                                          f"{name} {allowed})"))
+            problems.append(
+                Problem(
+                    path, f"gives the magnet gain {name} = {value:.6g} {unit} ({origin}; allowed: {name} {allowed})"
+                )
+            )
     if problems:
         raise DesignError(problems, _SOURCE)
 
@@ -118,12 +151,21 @@ def check_actuator_law(design, index: int, actuator, speed: float) -> None:
     reason = _law_problem(actuator, speed)
     if reason is not None:
         path = f"bearings[{index}].controller" if bearing.controller is not None else f"bearings[{index}]"
-        fields = ("controller coefficients" if bearing.controller is not None else
-                  "kp, kd, integral_gain, derivative_cutoff")
-        raise DesignError([Problem(path, f"the feedback law k_i A(s) C(s) {reason} (allowed: a law finite over the "
-                                         f"analysed frequencies with realization entries below "
-                                         f"{MAX_CONTROLLER_COEFFICIENT:g}: rescale the {fields}, "
-                                         "amplifier_bandwidth or ki)")], _SOURCE)
+        fields = (
+            "controller coefficients" if bearing.controller is not None else "kp, kd, integral_gain, derivative_cutoff"
+        )
+        raise DesignError(
+            [
+                Problem(
+                    path,
+                    f"the feedback law k_i A(s) C(s) {reason} (allowed: a law finite over the "
+                    f"analysed frequencies with realization entries below "
+                    f"{MAX_CONTROLLER_COEFFICIENT:g}: rescale the {fields}, "
+                    "amplifier_bandwidth or ki)",
+                )
+            ],
+            _SOURCE,
+        )
 
 
 #: Verdicts of :func:`_law_problem` by law and speed: a sweep builds the same bearings again
@@ -133,8 +175,14 @@ _LAW_PROBLEMS: dict = {}
 
 def _law_problem(actuator, speed: float) -> str | None:
     """Why the actuator's law fails :func:`check_actuator_law` at ``speed``, or None."""
-    key = (actuator.controller, actuator.amplifier_bandwidth, actuator.current_gain, actuator.negative_stiffness,
-           actuator.collocated, float(speed))
+    key = (
+        actuator.controller,
+        actuator.amplifier_bandwidth,
+        actuator.current_gain,
+        actuator.negative_stiffness,
+        actuator.collocated,
+        float(speed),
+    )
     try:
         hash(key)
     except TypeError:  # a controller built by hand with array coefficients: not remembered
@@ -165,17 +213,31 @@ def _check_laws(actuator, speed: float) -> str | None:
             if not law.integrates:
                 values = np.append(values, law(0.0))
             if not np.all(np.isfinite(values)):
-                reason = "is not finite at some frequency s = iω, 1 to " f"{omegas[-1]:.3g} rad/s"
+                reason = f"is not finite at some frequency s = iω, 1 to {omegas[-1]:.3g} rad/s"
                 break
     return reason
 
 
 def check_finite_model(model) -> None:
     """Refuse a model with a non-finite matrix entry (a last guard behind the bounds above)."""
-    matrices = {"mass": model.M, "stiffness": model.K, "damping": model.C, "gyroscopic": model.G,
-                "shaft loss stiffness": model.shaft_loss_stiffness, "boom loss stiffness": model.boom_loss_stiffness}
+    matrices = {
+        "mass": model.M,
+        "stiffness": model.K,
+        "damping": model.C,
+        "gyroscopic": model.G,
+        "shaft loss stiffness": model.shaft_loss_stiffness,
+        "boom loss stiffness": model.boom_loss_stiffness,
+    }
     bad = [name for name, matrix in matrices.items() if matrix is not None and not np.all(np.isfinite(matrix.data))]
     if bad:
-        raise DesignError([Problem("design", f"the assembled {', '.join(bad)} matrix has non-finite entries: some "
-                                             "combination of the design's numbers overflows double precision "
-                                             "(see docs/limits.md)")], _SOURCE)
+        raise DesignError(
+            [
+                Problem(
+                    "design",
+                    f"the assembled {', '.join(bad)} matrix has non-finite entries: some "
+                    "combination of the design's numbers overflows double precision "
+                    "(see docs/limits.md)",
+                )
+            ],
+            _SOURCE,
+        )

@@ -34,17 +34,17 @@ class Controller:
     denominator: tuple[float, ...] = (1.0,)
 
     @classmethod
-    def pd(cls, kp: float, kd: float) -> "Controller":
+    def pd(cls, kp: float, kd: float) -> Controller:
         """Proportional-derivative law ``C(s) = kp + kd s`` [N/m, N s/m]."""
         return cls(numerator=(float(kd), float(kp)), denominator=(1.0,))
 
     @classmethod
-    def constant(cls, gain: float) -> "Controller":
+    def constant(cls, gain: float) -> Controller:
         """The static law ``C(s) = gain``."""
         return cls(numerator=(float(gain),), denominator=(1.0,))
 
     @classmethod
-    def pid(cls, kp: float, ki: float = 0.0, kd: float = 0.0, derivative_cutoff: float | None = None) -> "Controller":
+    def pid(cls, kp: float, ki: float = 0.0, kd: float = 0.0, derivative_cutoff: float | None = None) -> Controller:
         """``C(s) = kp + ki/s + kd s/(1 + s/ω_d)`` with the derivative-filter corner ω_d [rad/s].
 
         ``derivative_cutoff=None`` is the ideal derivative ``kd s``. Without integral action
@@ -61,7 +61,7 @@ class Controller:
         return cls((kd + kp / wd, kp + ki / wd, ki), (1.0 / wd, 1.0, 0.0))
 
     @classmethod
-    def lag(cls, bandwidth: float) -> "Controller":
+    def lag(cls, bandwidth: float) -> Controller:
         """First-order low-pass ``1/(1 + s/ω_a)`` of bandwidth ω_a [rad/s] (an amplifier)."""
         w = float(bandwidth)
         if not (np.isfinite(w) and w > 0):
@@ -69,7 +69,7 @@ class Controller:
         return cls((1.0,), (1.0 / w, 1.0))
 
     @classmethod
-    def from_transfer_function(cls, tf: Any) -> "Controller":
+    def from_transfer_function(cls, tf: Any) -> Controller:
         """A Controller from any SISO transfer-function object with ``num`` and ``den``.
 
         Duck-typed: a ``control.TransferFunction`` of python-control (``num``/``den`` as
@@ -95,8 +95,10 @@ class Controller:
                 out = out.reshape(-1)
             out = np.atleast_1d(out)
             if out.ndim != 1 or out.size == 0 or not np.all(np.isfinite(out)):
-                raise ValueError(f"transfer function {name} must be one finite coefficient sequence of a SISO "
-                                 f"system (got shape {out.shape})")
+                raise ValueError(
+                    f"transfer function {name} must be one finite coefficient sequence of a SISO "
+                    f"system (got shape {out.shape})"
+                )
             return tuple(float(v) for v in out)
 
         num, den = coefficients(tf.num, "numerator"), coefficients(tf.den, "denominator")
@@ -107,18 +109,22 @@ class Controller:
             raise ValueError("C(s) is improper by more than one degree (at most an ideal derivative is allowed)")
         return law
 
-    def series(self, other: "Controller") -> "Controller":
+    def series(self, other: Controller) -> Controller:
         """The product ``C(s) · other(s)`` (two blocks in series)."""
-        return Controller(tuple(np.polymul(self.numerator, other.numerator)), tuple(np.polymul(self.denominator, other.denominator)))
+        return Controller(
+            tuple(np.polymul(self.numerator, other.numerator)), tuple(np.polymul(self.denominator, other.denominator))
+        )
 
-    def scaled(self, gain: float) -> "Controller":
+    def scaled(self, gain: float) -> Controller:
         """``gain · C(s)``."""
         return Controller(tuple(float(gain) * np.asarray(self.numerator, dtype=float)), self.denominator)
 
-    def shifted(self, constant: float) -> "Controller":
+    def shifted(self, constant: float) -> Controller:
         """``C(s) + constant``."""
-        return Controller(tuple(np.polyadd(self.numerator, float(constant) * np.asarray(self.denominator, dtype=float))),
-                          self.denominator)
+        return Controller(
+            tuple(np.polyadd(self.numerator, float(constant) * np.asarray(self.denominator, dtype=float))),
+            self.denominator,
+        )
 
     @property
     def is_pd(self) -> bool:
@@ -184,7 +190,9 @@ class Controller:
         a, b = num[::-1], den[::-1]
         series = []
         for k in range(order + 1):
-            value = (a[k] if k < a.size else 0.0) - sum(series[j] * (b[k - j] if k - j < b.size else 0.0) for j in range(k))
+            value = (a[k] if k < a.size else 0.0) - sum(
+                series[j] * (b[k - j] if k - j < b.size else 0.0) for j in range(k)
+            )
             series.append(value / b[0])
         return float(series[order])
 

@@ -105,12 +105,18 @@ class DofMap:
         and field index (in :data:`SHAFT_FIELDS` or :data:`BOOM_FIELDS` order): the key of a
         DOF ordering along the driveline (:mod:`flexshaft.analyses.banded`)."""
         ns, nb = self.n_shaft_nodes, self.n_boom_nodes
-        return np.column_stack([
-            np.concatenate([np.repeat(np.asarray(self.shaft_x, dtype=float), 6),
-                            np.repeat(np.asarray(self.boom_x, dtype=float), 5)]),
-            np.concatenate([np.zeros(6 * ns), np.ones(5 * nb)]),
-            np.concatenate([np.tile(np.arange(6.0), ns), np.tile(np.arange(5.0), nb)]),
-        ])
+        return np.column_stack(
+            [
+                np.concatenate(
+                    [
+                        np.repeat(np.asarray(self.shaft_x, dtype=float), 6),
+                        np.repeat(np.asarray(self.boom_x, dtype=float), 5),
+                    ]
+                ),
+                np.concatenate([np.zeros(6 * ns), np.ones(5 * nb)]),
+                np.concatenate([np.tile(np.arange(6.0), ns), np.tile(np.arange(5.0), nb)]),
+            ]
+        )
 
     @property
     def free(self) -> np.ndarray:

@@ -57,8 +57,11 @@ def _vector3(name: str, value, unit: str) -> np.ndarray:
 def _member(model: Model, on: str, allowed=_MEMBERS) -> None:
     if on not in allowed:
         raise ValueError(f"on must be one of {', '.join(map(repr, allowed))} (got {on!r})")
-    if on != "shaft" and (model.design is None or model.design.tailboom is None or
-                          (on == "end_mass" and model.design.tailboom.end_mass is None)):
+    if on != "shaft" and (
+        model.design is None
+        or model.design.tailboom is None
+        or (on == "end_mass" and model.design.tailboom.end_mass is None)
+    ):
         raise ValueError(f"the model has no {'tailboom end mass' if on == 'end_mass' else 'tailboom'} (on = {on!r})")
 
 
@@ -227,15 +230,19 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     if placement not in IMBALANCE_PLACEMENTS:
         raise ValueError(f"placement must be one of {', '.join(map(repr, IMBALANCE_PLACEMENTS))} (got {placement!r})")
     ecc = eccentricity if eccentricity is not None else (loads.eccentricity if loads else 0.0)
-    if isinstance(ecc, bool) or not (isinstance(ecc, (int, float, np.floating, np.integer)) and np.isfinite(ecc) and ecc >= 0):
+    if isinstance(ecc, bool) or not (
+        isinstance(ecc, (int, float, np.floating, np.integer)) and np.isfinite(ecc) and ecc >= 0
+    ):
         raise ValueError(f"eccentricity must be a finite number >= 0 [m] (got {ecc!r})")
     bays = imbalance_bays(model)
     if not bays:
         bays = [(model.dofs.shaft_x[0], model.dofs.shaft_x[-1])]
     if placement == "worst" and len(bays) > MAX_WORST_BAYS:
-        raise ValueError(f'placement "worst" enumerates 2^(bays-1) load cases: {len(bays)} bays give '
-                         f"2^{len(bays) - 1} (allowed: at most {MAX_WORST_BAYS} bays, or placement "
-                         '"mid_bay" / "distributed")')
+        raise ValueError(
+            f'placement "worst" enumerates 2^(bays-1) load cases: {len(bays)} bays give '
+            f"2^{len(bays) - 1} (allowed: at most {MAX_WORST_BAYS} bays, or placement "
+            '"mid_bay" / "distributed")'
+        )
     share = ecc * model.shaft_mass / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
     if placement == "distributed":
@@ -254,7 +261,9 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     if placement != "worst":
         return per_bay.sum(axis=1, keepdims=True)
     nb = per_bay.shape[1]
-    signs = [np.array([1.0] + [1.0 if (k >> j) & 1 == 0 else -1.0 for j in range(nb - 1)]) for k in range(2 ** (nb - 1))]
+    signs = [
+        np.array([1.0] + [1.0 if (k >> j) & 1 == 0 else -1.0 for j in range(nb - 1)]) for k in range(2 ** (nb - 1))
+    ]
     return np.stack([per_bay @ s for s in signs], axis=1)
 
 
@@ -279,7 +288,11 @@ def per_bay_imbalance_loads(model: Model, unbalance, angle=0.0, position=0.5) ->
     n = len(bays)
     values = {}
     for name, value in (("unbalance", unbalance), ("angle", angle), ("position", position)):
-        v = np.broadcast_to(np.asarray(value, dtype=float), (n,)) if np.ndim(value) == 0 else np.asarray(value, dtype=float)
+        v = (
+            np.broadcast_to(np.asarray(value, dtype=float), (n,))
+            if np.ndim(value) == 0
+            else np.asarray(value, dtype=float)
+        )
         if v.shape != (n,):
             raise ValueError(f"{name}: expected one value per bay ({n} bays), got shape {np.shape(value)}")
         if not np.all(np.isfinite(v)):

@@ -19,8 +19,14 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["STATION_MERGE_FRACTION", "merge_stations", "segment_mesh", "design_stations", "design_mesh",
-           "merge_tolerance"]
+__all__ = [
+    "STATION_MERGE_FRACTION",
+    "merge_stations",
+    "segment_mesh",
+    "design_stations",
+    "design_mesh",
+    "merge_tolerance",
+]
 
 #: Stations closer than this fraction of the nominal element length are one node.
 STATION_MERGE_FRACTION = 0.05

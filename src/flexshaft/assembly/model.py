@@ -29,8 +29,16 @@ import scipy.sparse as sp
 from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.dofs import DofMap
 
-__all__ = ["Controller", "Actuator", "BearingLink", "CouplingLink", "SegmentProperties", "ShaftProperties", "Model",
-           "rotation_generator"]
+__all__ = [
+    "Controller",
+    "Actuator",
+    "BearingLink",
+    "CouplingLink",
+    "SegmentProperties",
+    "ShaftProperties",
+    "Model",
+    "rotation_generator",
+]
 
 
 def rotation_generator(dofs: DofMap) -> sp.csr_matrix:
@@ -117,18 +125,24 @@ class Actuator:
     def __post_init__(self) -> None:
         if not isinstance(self.controller, Controller):  # e.g. a python-control TransferFunction
             object.__setattr__(self, "controller", Controller.from_transfer_function(self.controller))
-        for field_name, value, allowed in (("current_gain", self.current_gain, "a finite number > 0 N/A"),
-                                           ("negative_stiffness", self.negative_stiffness, "a finite number >= 0 N/m")):
+        for field_name, value, allowed in (
+            ("current_gain", self.current_gain, "a finite number > 0 N/A"),
+            ("negative_stiffness", self.negative_stiffness, "a finite number >= 0 N/m"),
+        ):
             ok = np.isfinite(value) and (value > 0 if field_name == "current_gain" else value >= 0)
             if not ok:
                 raise ValueError(f"actuator {self.link.name!r}: {field_name} must be {allowed} (got {value!r})")
         bandwidth = self.amplifier_bandwidth
         if bandwidth is not None and not (np.isfinite(bandwidth) and bandwidth > 0):
-            raise ValueError(f"actuator {self.link.name!r}: amplifier_bandwidth must be None or a finite number > 0 rad/s "
-                             f"(got {bandwidth!r})")
+            raise ValueError(
+                f"actuator {self.link.name!r}: amplifier_bandwidth must be None or a finite number > 0 rad/s "
+                f"(got {bandwidth!r})"
+            )
         if self.controller.relative_degree < -1:
-            raise ValueError(f"actuator {self.link.name!r}: C(s) is improper by more than one degree "
-                             "(at most an ideal derivative is allowed)")
+            raise ValueError(
+                f"actuator {self.link.name!r}: C(s) is improper by more than one degree "
+                "(at most an ideal derivative is allowed)"
+            )
 
     @property
     def name(self) -> str:
@@ -156,8 +170,11 @@ class Actuator:
 
     def plant(self, s):
         """``k_i A(s)`` [N/A]: current command to force at Laplace variable(s) ``s``."""
-        value = np.ones_like(np.asarray(s, dtype=complex)) if self.amplifier_bandwidth is None \
+        value = (
+            np.ones_like(np.asarray(s, dtype=complex))
+            if self.amplifier_bandwidth is None
             else 1.0 / (1.0 + np.asarray(s) / self.amplifier_bandwidth)
+        )
         return value if self.current_gain == 1.0 else self.current_gain * value
 
     def feedback_gain(self, s, controller: Controller | None = None):
@@ -366,7 +383,9 @@ class Model:
 
     def actuator_matrix(self, gains) -> sp.csr_matrix:
         """``Σ Bᵀ g_a B`` over actuators for per-actuator scalar gains ``g_a`` (actuation rows)."""
-        out = sp.csr_matrix((self.dofs.size, self.dofs.size), dtype=np.result_type(*gains, float) if len(gains) else float)
+        out = sp.csr_matrix(
+            (self.dofs.size, self.dofs.size), dtype=np.result_type(*gains, float) if len(gains) else float
+        )
         for act, g in zip(self.actuators, gains):
             out = out + g * act.lateral_gram
         return out.tocsr()
@@ -386,20 +405,28 @@ class Model:
 
     def controller_matrix(self, s) -> sp.csr_matrix:
         """Actuator dynamic stiffness ``Σ B_aᵀ (G_a(s) B_s − k_s B_a)`` at one complex ``s``."""
-        out = self.actuator_matrix([complex(a.law(s)) if a.collocated else -a.negative_stiffness for a in self.actuators])
+        out = self.actuator_matrix(
+            [complex(a.law(s)) if a.collocated else -a.negative_stiffness for a in self.actuators]
+        )
         for a in self.actuators:
             if not a.collocated:
                 out = out + complex(a.feedback_gain(s)) * (a.lateral_rows.T @ a.sensing_rows)
         return out.tocsr()
 
-    def passive(self) -> "Model":
+    def passive(self) -> Model:
         """The same model with every actuator switched off (zero law, no magnet stiffness)."""
         import dataclasses
 
         off = Controller.pd(0.0, 0.0)
-        return dataclasses.replace(self, actuators=tuple(
-            dataclasses.replace(a, controller=off, current_gain=1.0, negative_stiffness=0.0, amplifier_bandwidth=None)
-            for a in self.actuators))
+        return dataclasses.replace(
+            self,
+            actuators=tuple(
+                dataclasses.replace(
+                    a, controller=off, current_gain=1.0, negative_stiffness=0.0, amplifier_bandwidth=None
+                )
+                for a in self.actuators
+            ),
+        )
 
     @property
     def shaft_mass(self) -> float:

@@ -147,10 +147,12 @@ class ProblemSize:
 
     def summary(self) -> str:
         """One line: the counts and the estimates."""
-        return (f"{self.dofs:,} DOFs ({self.shaft_nodes:,} shaft and {self.boom_nodes:,} boom nodes), "
-                f"{self.bearings} bearings ({self.actuators} active, {self.controller_states} controller states), "
-                f"{self.disks} disks, {self.load_cases:,} imbalance load case(s): about "
-                f"{_gigabytes(self.memory_bytes)} and {_duration(self.time_seconds)} for {self.analysis!r}")
+        return (
+            f"{self.dofs:,} DOFs ({self.shaft_nodes:,} shaft and {self.boom_nodes:,} boom nodes), "
+            f"{self.bearings} bearings ({self.actuators} active, {self.controller_states} controller states), "
+            f"{self.disks} disks, {self.load_cases:,} imbalance load case(s): about "
+            f"{_gigabytes(self.memory_bytes)} and {_duration(self.time_seconds)} for {self.analysis!r}"
+        )
 
 
 def bearing_bays(stations, tolerance: float) -> list[tuple[float, float]]:
@@ -219,9 +221,23 @@ def problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: in
         time["modal bases"] = 10 * basis_time
         time["eigen-solutions"] = eigen_speeds * speed_time
         time["harmonic solves"] = (n_speeds + 600) * solve_time + 16e-9 * dofs * cases * n_speeds
-    return ProblemSize(analysis, int(shaft_x.size), int(boom_x.size), int(dofs), int(free), len(design.bearings),
-                       len(active), len(design.disks), int(states), int(bays), int(cases), int(n_speeds), bool(dense),
-                       memory, time)
+    return ProblemSize(
+        analysis,
+        int(shaft_x.size),
+        int(boom_x.size),
+        int(dofs),
+        int(free),
+        len(design.bearings),
+        len(active),
+        len(design.disks),
+        int(states),
+        int(bays),
+        int(cases),
+        int(n_speeds),
+        bool(dense),
+        memory,
+        time,
+    )
 
 
 def _gigabytes(size: float) -> str:
@@ -240,23 +256,44 @@ def _what_to_change(size: ProblemSize, design) -> list[tuple[str, str]]:
     """(field path, advice) pairs that reduce the largest estimates."""
     advice = []
     if size.load_cases > 1:
-        advice.append(("loads.imbalance_placement",
-                       f'"worst" enumerates 2^(bays-1) = {size.load_cases:,} load cases over {size.bays} bays: use '
-                       '"mid_bay" or "distributed", or fewer bearings'))
+        advice.append(
+            (
+                "loads.imbalance_placement",
+                f'"worst" enumerates 2^(bays-1) = {size.load_cases:,} load cases over {size.bays} bays: use '
+                '"mid_bay" or "distributed", or fewer bearings',
+            )
+        )
     if size.controller_states > 2 * RUN_BASIS:
-        advice.append(("bearings", f"{size.actuators} active bearings add {size.controller_states:,} controller "
-                                   "states: use fewer active bearings or lower-order controllers"))
+        advice.append(
+            (
+                "bearings",
+                f"{size.actuators} active bearings add {size.controller_states:,} controller "
+                "states: use fewer active bearings or lower-order controllers",
+            )
+        )
     if size.dofs > SOFT_DOFS or advice == []:
-        advice.append(("mesh.shaft_elements", f"{design.mesh.shaft_elements} shaft and {design.mesh.boom_elements} "
-                                              f"boom elements give {size.dofs:,} DOFs: use fewer (36 and 24 converge "
-                                              "the baseline's lowest frequencies within 3e-8)"))
+        advice.append(
+            (
+                "mesh.shaft_elements",
+                f"{design.mesh.shaft_elements} shaft and {design.mesh.boom_elements} "
+                f"boom elements give {size.dofs:,} DOFs: use fewer (36 and 24 converge "
+                "the baseline's lowest frequencies within 3e-8)",
+            )
+        )
     return advice
 
 
-def check_problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: int = RUN_SPEEDS, *,
-                       hard_memory: float = HARD_MEMORY_BYTES, soft_memory: float = SOFT_MEMORY_BYTES,
-                       hard_time: float = HARD_TIME_SECONDS, soft_time: float = SOFT_TIME_SECONDS,
-                       stacklevel: int = 2) -> ProblemSize:
+def check_problem_size(
+    design,
+    analysis: Literal["model", "run"] = "run",
+    n_speeds: int = RUN_SPEEDS,
+    *,
+    hard_memory: float = HARD_MEMORY_BYTES,
+    soft_memory: float = SOFT_MEMORY_BYTES,
+    hard_time: float = HARD_TIME_SECONDS,
+    soft_time: float = SOFT_TIME_SECONDS,
+    stacklevel: int = 2,
+) -> ProblemSize:
     """:func:`problem_size`, refused above the hard caps and warned about above the soft ones.
 
     Raises
@@ -275,22 +312,33 @@ def check_problem_size(design, analysis: Literal["model", "run"] = "run", n_spee
     size = problem_size(design, analysis, n_speeds)
     problems: list[Problem] = []
     if analysis == "run" and design.loads.imbalance_placement == "worst" and size.bays > MAX_WORST_BAYS:
-        problems.append(Problem("loads.imbalance_placement",
-                                f'"worst" would enumerate 2^(bays-1) = 2^{size.bays - 1} load cases over {size.bays} '
-                                f'bays (got "worst"; allowed: at most {MAX_WORST_BAYS} bays, i.e. '
-                                f'{2 ** (MAX_WORST_BAYS - 1)} cases, or "mid_bay" / "distributed")'))
+        problems.append(
+            Problem(
+                "loads.imbalance_placement",
+                f'"worst" would enumerate 2^(bays-1) = 2^{size.bays - 1} load cases over {size.bays} '
+                f'bays (got "worst"; allowed: at most {MAX_WORST_BAYS} bays, i.e. '
+                f'{2 ** (MAX_WORST_BAYS - 1)} cases, or "mid_bay" / "distributed")',
+            )
+        )
     over = []
     if size.memory_bytes > hard_memory:
-        over.append(f"needs about {_gigabytes(size.memory_bytes)} (mostly {size.largest_memory}; allowed: "
-                    f"{_gigabytes(hard_memory)})")
+        over.append(
+            f"needs about {_gigabytes(size.memory_bytes)} (mostly {size.largest_memory}; allowed: "
+            f"{_gigabytes(hard_memory)})"
+        )
     if size.time_seconds > hard_time:
-        over.append(f"takes about {_duration(size.time_seconds)} (mostly {size.largest_time}; allowed: "
-                    f"{_duration(hard_time)})")
+        over.append(
+            f"takes about {_duration(size.time_seconds)} (mostly {size.largest_time}; allowed: {_duration(hard_time)})"
+        )
     if over:
         for path, advice in _what_to_change(size, design):
-            problems.append(Problem(path, f"{advice}; {analysis!r} of {size.dofs:,} DOFs, {size.load_cases:,} "
-                                          f"load case(s) and {size.controller_states:,} controller states "
-                                          + " and ".join(over)))
+            problems.append(
+                Problem(
+                    path,
+                    f"{advice}; {analysis!r} of {size.dofs:,} DOFs, {size.load_cases:,} "
+                    f"load case(s) and {size.controller_states:,} controller states " + " and ".join(over),
+                )
+            )
     if problems:
         raise DesignError(problems, "<problem size>")
     notes = []
@@ -302,6 +350,9 @@ def check_problem_size(design, analysis: Literal["model", "run"] = "run", n_spee
         notes.append(f"has {size.dofs:,} DOFs: a finer mesh is no more accurate and its harmonic solves lose digits")
     if notes:
         advice = "; ".join(f"{path}: {text}" for path, text in _what_to_change(size, design))
-        warnings.warn(f"{size.summary()}; the analysis {' and '.join(notes)}. To reduce it: {advice}",
-                      ProblemSizeWarning, stacklevel=stacklevel)
+        warnings.warn(
+            f"{size.summary()}; the analysis {' and '.join(notes)}. To reduce it: {advice}",
+            ProblemSizeWarning,
+            stacklevel=stacklevel,
+        )
     return size

@@ -41,8 +41,9 @@ def scatter_blocks(parts, size: int) -> sp.csr_matrix:
         data.append(blocks.ravel())
     if not data:
         return sp.csr_matrix((size, size))
-    return sp.coo_matrix((np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))),
-                         shape=(size, size)).tocsr()
+    return sp.coo_matrix(
+        (np.concatenate(data), (np.concatenate(rows), np.concatenate(cols))), shape=(size, size)
+    ).tocsr()
 
 
 def restrict(matrix, free: np.ndarray):

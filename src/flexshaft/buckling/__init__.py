@@ -58,6 +58,13 @@ from flexshaft.buckling.torque import (
 )
 
 __all__ = [
-    "ShellTheory", "Kinematics", "BucklingResult", "shell_stiffness", "galerkin_matrices",
-    "infinite_cylinder_torque", "torsional_buckling_torque", "buckling_safety_factor", "crimping_torques",
+    "ShellTheory",
+    "Kinematics",
+    "BucklingResult",
+    "shell_stiffness",
+    "galerkin_matrices",
+    "infinite_cylinder_torque",
+    "torsional_buckling_torque",
+    "buckling_safety_factor",
+    "crimping_torques",
 ]

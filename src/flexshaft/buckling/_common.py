@@ -11,8 +11,18 @@ from numpy.typing import NDArray
 from flexshaft.laminate import Laminate, abd_matrices, transverse_shear_stiffness
 
 __all__ = [
-    "ShellTheory", "Kinematics", "shell_stiffness", "check_inputs", "axial_integrals", "default_terms",
-    "extreme_torques", "helix_grid", "helix_minima", "rank_two_torques", "THEORIES", "KINEMATICS",
+    "ShellTheory",
+    "Kinematics",
+    "shell_stiffness",
+    "check_inputs",
+    "axial_integrals",
+    "default_terms",
+    "extreme_torques",
+    "helix_grid",
+    "helix_minima",
+    "rank_two_torques",
+    "THEORIES",
+    "KINEMATICS",
 ]
 
 #: Shell theory: classical Kirchhoff-Love, or first-order shear deformation (Reissner-Mindlin).
@@ -99,8 +109,9 @@ def extreme_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tup
     return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
 
 
-def rank_two_torques(K: NDArray[np.complex128], beta_x: NDArray[np.complex128], beta_y: NDArray[np.complex128],
-                     radius: float) -> NDArray[np.float64]:
+def rank_two_torques(
+    K: NDArray[np.complex128], beta_x: NDArray[np.complex128], beta_y: NDArray[np.complex128], radius: float
+) -> NDArray[np.float64]:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of stacked helices.
 
     The load matrix has rank 2: G = -c (x y^H + y x^H) with x = conj(beta_x), y = conj(beta_y)
@@ -139,8 +150,14 @@ def helix_grid(torques, radius: float, n: NDArray[np.int_], log_k_offsets: NDArr
     return tuple(grid)
 
 
-def helix_minima(torques, radius: float, n: NDArray[np.int_], log_k_offsets: NDArray[np.float64],
-                 refine: bool = True, grid: tuple | None = None) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def helix_minima(
+    torques,
+    radius: float,
+    n: NDArray[np.int_],
+    log_k_offsets: NDArray[np.float64],
+    refine: bool = True,
+    grid: tuple | None = None,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Minimum over the axial wavenumber k of an endless tube's helix torques, per n.
 
     ``torques(n, k)`` gives the (..., 2) torques (positive sense, negative-sense magnitude) of
@@ -159,8 +176,9 @@ def helix_minima(torques, radius: float, n: NDArray[np.int_], log_k_offsets: NDA
     best_torques = np.full((n.size, 2), np.inf)
     wavenumbers = np.zeros((n.size, 2))
     step = log_k_offsets[1] - log_k_offsets[0]
-    for hand, (log_k, values) in zip((1.0, -1.0), grid if grid is not None else helix_grid(torques, radius, n,
-                                                                                           log_k_offsets)):
+    for hand, (log_k, values) in zip(
+        (1.0, -1.0), grid if grid is not None else helix_grid(torques, radius, n, log_k_offsets)
+    ):
         best = np.argmin(values, axis=1)  # (n, 2)
         centre, value = log_k[rows, best], values[rows, best, senses]
         if refine:

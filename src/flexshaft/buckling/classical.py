@@ -85,13 +85,18 @@ def classical_helix_torque(
     """
     C = shell_stiffness(laminate)
     n = np.arange(2, int(n_max) + 1)
-    torques, wavenumbers = helix_minima(lambda n_, k_: _helix_torques(C, radius, n_, k_, kinematics), radius, n,
-                                        _LOG_K_OFFSETS)
+    torques, wavenumbers = helix_minima(
+        lambda n_, k_: _helix_torques(C, radius, n_, k_, kinematics), radius, n, _LOG_K_OFFSETS
+    )
     best = {}
     for sense, key in enumerate(("positive", "negative")):
         i = int(np.argmin(torques[:, sense]))
         found = np.isfinite(torques[i, sense])
-        best[key] = (float(torques[i, sense]), int(n[i]) if found else 0, float(wavenumbers[i, sense]) if found else 0.0)
+        best[key] = (
+            float(torques[i, sense]),
+            int(n[i]) if found else 0,
+            float(wavenumbers[i, sense]) if found else 0.0,
+        )
     return best
 
 
@@ -114,7 +119,7 @@ def _ritz_operators(
     sanders = 1.0 if kinematics == "sanders" else 0.0
     Bs = np.zeros((8, m.size), dtype=complex)
     Bc = np.zeros((8, m.size), dtype=complex)
-    Bs[_EPS_X, u] = -xi_u                                   # d/dx cos = -xi sin
+    Bs[_EPS_X, u] = -xi_u  # d/dx cos = -xi sin
     Bs[_EPS_Y, v], Bs[_EPS_Y, w] = 1j * eta, 1.0 / radius
     Bc[_GAMMA, u], Bc[_GAMMA, v] = 1j * eta, xi
     Bs[_KAPPA_X, w] = xi**2
@@ -128,8 +133,12 @@ def _ritz_operators(
 
 
 def assemble_ritz(
-    Bs: NDArray[np.complex128], Bc: NDArray[np.complex128], m: NDArray[np.int_], C: NDArray[np.float64],
-    radius: float, length: float,
+    Bs: NDArray[np.complex128],
+    Bc: NDArray[np.complex128],
+    m: NDArray[np.int_],
+    C: NDArray[np.float64],
+    radius: float,
+    length: float,
 ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
     """K [N m] and G per unit torque [-] from sin/cos strain rows; the last two rows are beta_x, beta_y.
 
@@ -148,12 +157,16 @@ def assemble_ritz(
     K = cross + cross.conj().T
     a, b = np.nonzero(m[:, None] == m[None, :])  # same axial index: the same-parity terms
     I_ss, I_cc = integrals[(0, 0)][a, b], integrals[(1, 1)][a, b]
-    K[a, b] += (np.einsum("ip,ip->p", Bs_[:, a].conj(), CBs[:, b]) * I_ss
-                + np.einsum("ip,ip->p", Bc_[:, a].conj(), CBc[:, b]) * I_cc)
+    K[a, b] += (
+        np.einsum("ip,ip->p", Bs_[:, a].conj(), CBs[:, b]) * I_ss
+        + np.einsum("ip,ip->p", Bc_[:, a].conj(), CBc[:, b]) * I_cc
+    )
     # P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
     (bx_s, by_s), (bx_c, by_c) = Bs[-2:], Bc[-2:]
-    P = (np.multiply.outer(bx_s.conj(), by_c) * integrals[(0, 1)]
-         + np.multiply.outer(bx_c.conj(), by_s) * integrals[(1, 0)])
+    P = (
+        np.multiply.outer(bx_s.conj(), by_c) * integrals[(0, 1)]
+        + np.multiply.outer(bx_c.conj(), by_s) * integrals[(1, 0)]
+    )
     P[a, b] += bx_s[a].conj() * by_s[b] * I_ss + bx_c[a].conj() * by_c[b] * I_cc
     area = 2.0 * np.pi * radius
     G = -(P + P.conj().T) * (area / (2.0 * np.pi * radius**2))

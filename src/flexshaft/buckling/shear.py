@@ -71,14 +71,18 @@ import numpy as np
 from numpy.typing import NDArray
 
 from flexshaft.buckling._common import (
-    Kinematics, default_terms, extreme_torques, helix_grid, helix_minima, rank_two_torques, shell_stiffness,
+    Kinematics,
+    default_terms,
+    extreme_torques,
+    helix_grid,
+    helix_minima,
+    rank_two_torques,
+    shell_stiffness,
 )
 from flexshaft.buckling.classical import assemble_ritz, ritz_mode
 from flexshaft.laminate import Laminate, transverse_shear_stiffness
 
-__all__ = [
-    "crimping_torques", "shear_helix_curve", "shear_helix_torque", "shear_galerkin_matrices", "shear_buckling",
-]
+__all__ = ["crimping_torques", "shear_helix_curve", "shear_helix_torque", "shear_galerkin_matrices", "shear_buckling"]
 
 # rows of the strain operators; dofs (U, V, W, PHI_X, PHI_Y)
 _EPS_X, _EPS_Y, _GAMMA, _KAPPA_X, _KAPPA_Y, _KAPPA_XY, _GAMMA_XZ, _GAMMA_YZ, _BETA_X, _BETA_Y = range(10)
@@ -142,8 +146,7 @@ def _helix_function(laminate: Laminate, radius: float, kinematics: str):
 
 
 def shear_helix_curve(
-    laminate: Laminate, radius: float, n: NDArray[np.int_], kinematics: Kinematics = "sanders",
-    refine: bool = True,
+    laminate: Laminate, radius: float, n: NDArray[np.int_], kinematics: Kinematics = "sanders", refine: bool = True
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Infinite shear-deformable tube: critical torques and axial wavenumbers per n.
 
@@ -205,7 +208,7 @@ def _ritz_operators(
     s = 1.0 if kinematics == "sanders" else 0.0
     Bs = np.zeros((10, m.size), dtype=complex)
     Bc = np.zeros((10, m.size), dtype=complex)
-    Bs[_EPS_X, u] = -xi_c                                          # d/dx cos = -xi sin
+    Bs[_EPS_X, u] = -xi_c  # d/dx cos = -xi sin
     Bs[_EPS_Y, v], Bs[_EPS_Y, w] = 1j * eta, 1.0 / radius
     Bc[_GAMMA, u], Bc[_GAMMA, v] = 1j * eta, xi
     Bs[_KAPPA_X, px] = -xi_c
@@ -295,7 +298,9 @@ def shear_buckling(
     for sense in (0, 1):
         n_global = global_n[sense]
         T_global = np.inf if n_global is None else curve[n_global][sense]
-        best[sense] = (T_global, n_global, "global") if T_global <= crimping[sense] else (crimping[sense], None, "crimp")
+        best[sense] = (
+            (T_global, n_global, "global") if T_global <= crimping[sense] else (crimping[sense], None, "crimp")
+        )
 
     # 2. short-wave branch: n above the global branch whose infinite-tube lower bound is lower
     for n in range(last + 1, n_max + 1):

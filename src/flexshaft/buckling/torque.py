@@ -13,7 +13,10 @@ from flexshaft.buckling.shear import shear_buckling, shear_galerkin_matrices, sh
 from flexshaft.laminate import Laminate
 
 __all__ = [
-    "BucklingResult", "galerkin_matrices", "infinite_cylinder_torque", "torsional_buckling_torque",
+    "BucklingResult",
+    "galerkin_matrices",
+    "infinite_cylinder_torque",
+    "torsional_buckling_torque",
     "buckling_safety_factor",
 ]
 
@@ -153,8 +156,15 @@ def torsional_buckling_torque(
     if theory == "classical":
         found = classical_buckling(laminate, radius, length, kinematics, n_terms, 200 if n_max is None else int(n_max))
         senses = {
-            positive: {"torque": torque, "n": n, "mode": mode, "half_waves": _half_waves(mode),
-                       "governing": "global helical", "global_torque": torque, "global_n": n}
+            positive: {
+                "torque": torque,
+                "n": n,
+                "mode": mode,
+                "half_waves": _half_waves(mode),
+                "governing": "global helical",
+                "global_torque": torque,
+                "global_n": n,
+            }
             for positive, (torque, n, mode) in ((p, found[p]) for p in (True, False))
         }
         crimping = (np.inf, np.inf)
@@ -189,7 +199,11 @@ def torsional_buckling_torque(
 
 
 def infinite_cylinder_torque(
-    laminate: Laminate, radius: float, *, theory: ShellTheory = "shear", kinematics: Kinematics = "sanders",
+    laminate: Laminate,
+    radius: float,
+    *,
+    theory: ShellTheory = "shear",
+    kinematics: Kinematics = "sanders",
     n_max: int = 40,
 ) -> dict[str, tuple[float, int, float]]:
     """Critical torques of an infinitely long tube, minimised over 2 <= n <= n_max and axial wavenumber.
@@ -211,8 +225,14 @@ def infinite_cylinder_torque(
 
 
 def galerkin_matrices(
-    laminate: Laminate, radius: float, length: float, n: int, n_terms: int, *,
-    theory: ShellTheory = "shear", kinematics: Kinematics = "sanders",
+    laminate: Laminate,
+    radius: float,
+    length: float,
+    n: int,
+    n_terms: int,
+    *,
+    theory: ShellTheory = "shear",
+    kinematics: Kinematics = "sanders",
 ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
     """Ritz stiffness K [N m] and load matrix G per unit torque for harmonic n; buckling: K a = T G a.
 
@@ -227,9 +247,7 @@ def galerkin_matrices(
     return shear_galerkin_matrices(laminate, radius, length, n, n_terms, kinematics)
 
 
-def buckling_safety_factor(
-    result: BucklingResult, torque: ArrayLike, *, signed: bool = False
-) -> NDArray[np.float64]:
+def buckling_safety_factor(result: BucklingResult, torque: ArrayLike, *, signed: bool = False) -> NDArray[np.float64]:
     """Torsional buckling safety factor T_cr / |T| (thesis sec. 3.2.4).
 
     Parameters

@@ -25,9 +25,9 @@ from typing import Annotated
 import typer
 
 from flexshaft.cli.analysis import baseline, check, modes, stability, thermal
+from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, settings
 from flexshaft.cli.compare import compare
 from flexshaft.cli.optimize import optimize
-from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, settings
 from flexshaft.cli.run import run
 from flexshaft.cli.study import study_app
 from flexshaft.cli.transient import montecarlo, runup
@@ -43,8 +43,8 @@ app = typer.Typer(
     rich_markup_mode=None,  # "[rpm]" in a help text is a unit, not markup
     pretty_exceptions_enable=False,
     help="Design and analysis of high-flexibility rotorcraft tail-rotor drivelines.\n\n"
-         "Exit codes: 0 ok, 2 user error (design, argument, output folder), 3 a requirement failed "
-         "(run --strict), 4 internal error (see --debug).",
+    "Exit codes: 0 ok, 2 user error (design, argument, output folder), 3 a requirement failed "
+    "(run --strict), 4 internal error (see --debug).",
 )
 
 
@@ -58,10 +58,12 @@ def _version(value: bool) -> None:
 
 @app.callback()
 def _options(
-    version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
-                                          help="Print the version and exit.")] = False,
-    debug: Annotated[bool, typer.Option("--debug", envvar="FLEXSHAFT_DEBUG",
-                                        help="Show the traceback of an error.")] = False,
+    version: Annotated[
+        bool, typer.Option("--version", callback=_version, is_eager=True, help="Print the version and exit.")
+    ] = False,
+    debug: Annotated[
+        bool, typer.Option("--debug", envvar="FLEXSHAFT_DEBUG", help="Show the traceback of an error.")
+    ] = False,
 ) -> None:
     """Global options (the app's help text is set on the Typer)."""
     settings.debug = debug

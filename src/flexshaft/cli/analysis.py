@@ -9,18 +9,11 @@ transient progress line on a terminal.
 from __future__ import annotations
 
 import sys
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import (
-    check_finite,
-    design_fingerprint,
-    guarded,
-    load_design_argument,
-    plain,
-    print_json,
-)
+from flexshaft.cli.common import check_finite, design_fingerprint, guarded, load_design_argument, plain, print_json
 from flexshaft.cli.options import (
     Convection,
     DampingModel,
@@ -37,10 +30,15 @@ __all__ = ["baseline", "check", "modes", "stability", "thermal"]
 
 @guarded
 def baseline(
-    name: Annotated[Embedded, typer.Option(
-        "--name", case_sensitive=False,
-        help="Embedded design: baseline (thesis Table 3.1: K_p 1e7 N/m, K_d 0) or tuned (the tuned final "
-             "design, the default of `flexshaft run`).")] = Embedded.baseline,
+    name: Annotated[
+        Embedded,
+        typer.Option(
+            "--name",
+            case_sensitive=False,
+            help="Embedded design: baseline (thesis Table 3.1: K_p 1e7 N/m, K_d 0) or tuned (the tuned final "
+            "design, the default of `flexshaft run`).",
+        ),
+    ] = Embedded.baseline,
     as_json: JsonOption = False,
 ) -> None:
     """Print an embedded design file (start your own from a copy); with --json, its values as
@@ -56,11 +54,10 @@ def baseline(
 @guarded
 def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
     """Validate a design file and print a one-line summary (with --json: every problem found)."""
-    from flexshaft.design import DesignError
-
     import warnings
 
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
+    from flexshaft.design import DesignError
 
     try:
         loaded = load_design_argument(design)
@@ -69,13 +66,25 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
             check_problem_size(loaded.design, "run")  # refuses what a run would refuse
     except DesignError as exc:
         if as_json:
-            print_json({"ok": False, "source": exc.source,
-                        "problems": [{"path": p.path, "message": p.message} for p in exc.problems]})
+            print_json(
+                {
+                    "ok": False,
+                    "source": exc.source,
+                    "problems": [{"path": p.path, "message": p.message} for p in exc.problems],
+                }
+            )
         raise
     notes = [str(w.message) for w in caught if issubclass(w.category, ProblemSizeWarning)]
     if as_json:
-        print_json({"ok": True, "design": loaded.design.name, "source": loaded.source,
-                    "design_fingerprint": design_fingerprint(loaded.design), "warnings": notes})
+        print_json(
+            {
+                "ok": True,
+                "design": loaded.design.name,
+                "source": loaded.source,
+                "design_fingerprint": design_fingerprint(loaded.design),
+                "warnings": notes,
+            }
+        )
         return
     typer.echo(f"ok: {plain(loaded.design.name)}")
     for note in notes:
@@ -85,8 +94,12 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
 @guarded
 def modes(
     design: DesignArgument = None,
-    speed_rpm: Annotated[Optional[float], typer.Option(
-        "--speed-rpm", help="Spin speed [rpm]; default: the design's operating speed.", show_default=False)] = None,
+    speed_rpm: Annotated[
+        float | None,
+        typer.Option(
+            "--speed-rpm", help="Spin speed [rpm]; default: the design's operating speed.", show_default=False
+        ),
+    ] = None,
     n_modes: NModesOption = 10,
     as_json: JsonOption = False,
 ) -> None:
@@ -104,8 +117,9 @@ def modes(
     speed = model.speed if speed_rpm is None else rpm_to_rad_s(speed_rpm)
     rows = modes_at(model, speed, n_modes)
     if as_json:
-        print_json({"design": loaded.design.name, "speed_rpm": rad_s_to_rpm(speed), "mode_numbering": "from 1",
-                    "modes": rows})
+        print_json(
+            {"design": loaded.design.name, "speed_rpm": rad_s_to_rpm(speed), "mode_numbering": "from 1", "modes": rows}
+        )
         return
     from flexshaft.cli.tables import modes_table, print_line, sig, stdout_console
 
@@ -117,20 +131,34 @@ def modes(
 @guarded
 def stability(
     design: DesignArgument = None,
-    max_rpm: Annotated[Optional[float], typer.Option(
-        "--max-rpm", help="Highest speed analysed [rpm]; default: 1.5 × the operating speed.",
-        show_default=False)] = None,
+    max_rpm: Annotated[
+        float | None,
+        typer.Option(
+            "--max-rpm", help="Highest speed analysed [rpm]; default: 1.5 × the operating speed.", show_default=False
+        ),
+    ] = None,
     n_speeds: Annotated[int, typer.Option("--n-speeds", min=2, max=2000, help="Number of speeds.")] = 61,
     n_modes: Annotated[int, typer.Option("--n-modes", min=1, max=100, help="Number of tracked modes.")] = 10,
-    damping_model: Annotated[DampingModel, typer.Option(
-        "--damping-model", case_sensitive=False,
-        help="hysteretic: the composite's loss factor, each mode at its own frequency; viscous: thesis "
-             "chapter 4, one reference frequency.")] = DampingModel.hysteretic,
-    reference_hz: Annotated[Optional[float], typer.Option(
-        "--reference-hz", help="Reference frequency ω_ref of the viscous model [Hz]; default: the first shaft mode.",
-        show_default=False)] = None,
-    compare_thesis: Annotated[bool, typer.Option(
-        "--compare-thesis", help="Also the thesis's aluminium, (45/-45)s and (45/-45/0/0)s shafts.")] = False,
+    damping_model: Annotated[
+        DampingModel,
+        typer.Option(
+            "--damping-model",
+            case_sensitive=False,
+            help="hysteretic: the composite's loss factor, each mode at its own frequency; viscous: thesis "
+            "chapter 4, one reference frequency.",
+        ),
+    ] = DampingModel.hysteretic,
+    reference_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--reference-hz",
+            help="Reference frequency ω_ref of the viscous model [Hz]; default: the first shaft mode.",
+            show_default=False,
+        ),
+    ] = None,
+    compare_thesis: Annotated[
+        bool, typer.Option("--compare-thesis", help="Also the thesis's aluminium, (45/-45)s and (45/-45/0/0)s shafts.")
+    ] = False,
     as_json: JsonOption = False,
 ) -> None:
     """Whirl stability with internal damping: onset speed of instability and the unstable mode,
@@ -169,20 +197,29 @@ def stability(
         results = {}
         for label, dd in designs.items():
             progress.step(f"whirl stability: {label}")
-            results[label] = stability_analysis(model if label == "design" else build_model(dd), speeds, n_modes,
-                                                damping_model.value, reference)
+            results[label] = stability_analysis(
+                model if label == "design" else build_model(dd), speeds, n_modes, damping_model.value, reference
+            )
     for label, result in results.items():
         onset_check = whirl_onset_check(result.onset_speed, float(speeds[-1]), model.speed, margin)
         shafts[label] = {
             "onset_speed_rpm": None if result.onset_speed is None else rad_s_to_rpm(result.onset_speed),
-            "unstable_mode_whirl": None if result.unstable_mode is None else str(result.whirl[-1, result.unstable_mode]),
+            "unstable_mode_whirl": None
+            if result.unstable_mode is None
+            else str(result.whirl[-1, result.unstable_mode]),
             "min_damping_ratio": float(result.stability_margin.min()),
             "onset_check": onset_check.status,
         }
     operating_rpm = rad_s_to_rpm(model.speed)
-    out = {"design": d.name, "damping_model": damping_model.value, "analysed_to_rpm": rad_s_to_rpm(top),
-           "operating_speed_rpm": operating_rpm, "min_onset_margin": margin,
-           "required_onset_rpm": (1 + margin) * operating_rpm, "shafts": shafts}
+    out = {
+        "design": d.name,
+        "damping_model": damping_model.value,
+        "analysed_to_rpm": rad_s_to_rpm(top),
+        "operating_speed_rpm": operating_rpm,
+        "min_onset_margin": margin,
+        "required_onset_rpm": (1 + margin) * operating_rpm,
+        "shafts": shafts,
+    }
     if as_json:
         print_json(out)
         return
@@ -190,33 +227,65 @@ def stability(
 
     console = stdout_console()
     print_line(console, d.name, style="bold")
-    print_line(console, f"operating speed {sig(operating_rpm)} rpm; required: no whirl onset below "
-                        f"{sig(out['required_onset_rpm'])} rpm ({sig(margin * 100, 3)} % margin, [requirements] "
-                        f"min_onset_margin); {damping_model.value} internal damping, analysed to "
-                        f"{sig(out['analysed_to_rpm'])} rpm")
+    print_line(
+        console,
+        f"operating speed {sig(operating_rpm)} rpm; required: no whirl onset below "
+        f"{sig(out['required_onset_rpm'])} rpm ({sig(margin * 100, 3)} % margin, [requirements] "
+        f"min_onset_margin); {damping_model.value} internal damping, analysed to "
+        f"{sig(out['analysed_to_rpm'])} rpm",
+    )
     rows = []
     for label, r in shafts.items():
         onset = r["onset_speed_rpm"]
         ratio = onset / operating_rpm if onset is not None and operating_rpm > 0 else None
-        rows.append([label, onset if onset is not None else f"stable to {sig(out['analysed_to_rpm'])}", ratio,
-                     r["unstable_mode_whirl"] or "—", r["min_damping_ratio"], r["onset_check"].upper()])
-    console.print(table("whirl onset", ["shaft", "onset [rpm]", "onset / operating", "unstable whirl",
-                                        "min damping ratio ζ", "check"], rows, numeric={1, 2, 4}))
+        rows.append(
+            [
+                label,
+                onset if onset is not None else f"stable to {sig(out['analysed_to_rpm'])}",
+                ratio,
+                r["unstable_mode_whirl"] or "—",
+                r["min_damping_ratio"],
+                r["onset_check"].upper(),
+            ]
+        )
+    console.print(
+        table(
+            "whirl onset",
+            ["shaft", "onset [rpm]", "onset / operating", "unstable whirl", "min damping ratio ζ", "check"],
+            rows,
+            numeric={1, 2, 4},
+        )
+    )
 
 
 @guarded
 def thermal(
     design: DesignArgument = None,
-    loss_model: Annotated[Optional[LossModel], typer.Option(
-        "--loss-model", case_sensitive=False, help="Shaft heat model; default: the design's analysis.internal_damping.",
-        show_default=False)] = None,
-    convection: Annotated[Optional[Convection], typer.Option(
-        "--convection", case_sensitive=False, help="Rotating-shaft convection correlation; default: the design's.",
-        show_default=False)] = None,
-    self_heat: Annotated[bool, typer.Option(
-        "--self-heating", help="Iterate temperature-dependent matrix properties to equilibrium.")] = False,
-    sweeps: Annotated[bool, typer.Option(
-        "--sweeps", help="Peak rise against wall thickness and convection (thesis figures 3.18, 3.19).")] = False,
+    loss_model: Annotated[
+        LossModel | None,
+        typer.Option(
+            "--loss-model",
+            case_sensitive=False,
+            help="Shaft heat model; default: the design's analysis.internal_damping.",
+            show_default=False,
+        ),
+    ] = None,
+    convection: Annotated[
+        Convection | None,
+        typer.Option(
+            "--convection",
+            case_sensitive=False,
+            help="Rotating-shaft convection correlation; default: the design's.",
+            show_default=False,
+        ),
+    ] = None,
+    self_heat: Annotated[
+        bool, typer.Option("--self-heating", help="Iterate temperature-dependent matrix properties to equilibrium.")
+    ] = False,
+    sweeps: Annotated[
+        bool,
+        typer.Option("--sweeps", help="Peak rise against wall thickness and convection (thesis figures 3.18, 3.19)."),
+    ] = False,
     as_json: JsonOption = False,
 ) -> None:
     """Tailboom skin temperatures (hover, parked), shaft temperature rise and self-heating margin."""
@@ -226,11 +295,17 @@ def thermal(
 
     d = loaded.design
     with StageProgress(transient=True) as progress:
-        progress.step("tailboom and shaft temperatures" + (", self-heating" if self_heat else "")
-                      + (", sweeps" if sweeps else ""))
-        out = thermal_summary(d, build_model(d), loss_model=None if loss_model is None else loss_model.value,
-                              convection=None if convection is None else convection.value, self_heat=self_heat,
-                              sweeps=sweeps)
+        progress.step(
+            "tailboom and shaft temperatures" + (", self-heating" if self_heat else "") + (", sweeps" if sweeps else "")
+        )
+        out = thermal_summary(
+            d,
+            build_model(d),
+            loss_model=None if loss_model is None else loss_model.value,
+            convection=None if convection is None else convection.value,
+            self_heat=self_heat,
+            sweeps=sweeps,
+        )
     if as_json:
         print_json(out)
         return
@@ -244,27 +319,61 @@ def _print_thermal(name: str, out: dict) -> None:
     print_line(console, name, style="bold")
     if "tailboom_c" in out:
         flags = out.get("tailboom_flags", {})
-        console.print(table("tailboom skin temperature", ["condition", "temperature [°C]", "note"],
-                            [[k, v, flags.get(k, "")] for k, v in out["tailboom_c"].items()], numeric={1}))
+        console.print(
+            table(
+                "tailboom skin temperature",
+                ["condition", "temperature [°C]", "note"],
+                [[k, v, flags.get(k, "")] for k, v in out["tailboom_c"].items()],
+                numeric={1},
+            )
+        )
     rows = []
     for key, s in out.items():
         if key.startswith("shaft_") and key.endswith("_loss_model"):
-            model = key[len("shaft_"):-len("_loss_model")]
-            rows.append([model + (" (used)" if model == out["loss_model"] else ""), s["air_c"], s["h_W_m2K"],
-                         s["heat_vibration_W"], s["heat_static_W"], s["peak_rise_K"], s["peak_x_m"]])
-    console.print(table("shaft at the operating speed", ["loss model", "air [°C]", "h [W/(m² K)]",
-                                                         "vibration heat [W]", "static heat [W]", "peak rise [K]",
-                                                         "peak at x [m]"], rows))
-    source = {"self_heating": "self-heating equilibrium",
-              "reference_properties": "reference-temperature properties"}.get(out["max_shaft_temperature_source"],
-                                                                              out["max_shaft_temperature_source"])
-    print_line(console, f"max shaft temperature {sig(out['max_shaft_temperature_c'])} °C ({source}); allowable "
-                        f"{sig(out['allowable_temperature_c'])} °C; margin {sig(out['temperature_margin_K'])} K")
+            model = key[len("shaft_") : -len("_loss_model")]
+            rows.append(
+                [
+                    model + (" (used)" if model == out["loss_model"] else ""),
+                    s["air_c"],
+                    s["h_W_m2K"],
+                    s["heat_vibration_W"],
+                    s["heat_static_W"],
+                    s["peak_rise_K"],
+                    s["peak_x_m"],
+                ]
+            )
+    console.print(
+        table(
+            "shaft at the operating speed",
+            [
+                "loss model",
+                "air [°C]",
+                "h [W/(m² K)]",
+                "vibration heat [W]",
+                "static heat [W]",
+                "peak rise [K]",
+                "peak at x [m]",
+            ],
+            rows,
+        )
+    )
+    source = {
+        "self_heating": "self-heating equilibrium",
+        "reference_properties": "reference-temperature properties",
+    }.get(out["max_shaft_temperature_source"], out["max_shaft_temperature_source"])
+    print_line(
+        console,
+        f"max shaft temperature {sig(out['max_shaft_temperature_c'])} °C ({source}); allowable "
+        f"{sig(out['allowable_temperature_c'])} °C; margin {sig(out['temperature_margin_K'])} K",
+    )
     if "self_heating" in out:
         sh = out["self_heating"]
-        print_line(console, f"self-heating: {sh['status']} after {sh['iterations']} iterations, "
-                            f"margin {sig(sh['margin_K'])} K")
-    for key, title in (("peak_rise_K_by_wall", "peak shaft temperature rise by wall thickness"),
-                       ("peak_rise_K_by_convection", "peak shaft temperature rise by convection coefficient")):
+        print_line(
+            console, f"self-heating: {sh['status']} after {sh['iterations']} iterations, margin {sig(sh['margin_K'])} K"
+        )
+    for key, title in (
+        ("peak_rise_K_by_wall", "peak shaft temperature rise by wall thickness"),
+        ("peak_rise_K_by_convection", "peak shaft temperature rise by convection coefficient"),
+    ):
         if key in out:
             console.print(table(title, ["case", "peak rise [K]"], [[k, v] for k, v in out[key].items()], numeric={1}))

@@ -20,9 +20,10 @@ import re
 import stat
 import sys
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, NoReturn, TypeVar
+from typing import Any, NoReturn, TypeVar
 
 import typer
 
@@ -109,8 +110,22 @@ def _stderr(message: str) -> None:
 
 F = TypeVar("F", bound=Callable[..., Any])
 
-_USER_OS_ERRORS = {"EACCES", "EPERM", "EROFS", "ENOSPC", "EDQUOT", "ENOTDIR", "EISDIR", "EEXIST", "ENOENT",
-                   "ENAMETOOLONG", "ELOOP", "EMFILE", "ENFILE", "EFBIG"}
+_USER_OS_ERRORS = {
+    "EACCES",
+    "EPERM",
+    "EROFS",
+    "ENOSPC",
+    "EDQUOT",
+    "ENOTDIR",
+    "EISDIR",
+    "EEXIST",
+    "ENOENT",
+    "ENAMETOOLONG",
+    "ELOOP",
+    "EMFILE",
+    "ENFILE",
+    "EFBIG",
+}
 
 
 def _loaded_class(module: str, name: str) -> type | None:
@@ -139,8 +154,10 @@ def _user_message(exc: BaseException) -> str | None:
             where = f" {exc.filename}" if exc.filename is not None else ""
             return f"cannot write or read{where}: {exc.strerror}"
     if isinstance(exc, MemoryError):
-        return ("not enough memory for this computation; reduce mesh.shaft_elements / mesh.boom_elements, "
-                "the number of speeds or the study grid")
+        return (
+            "not enough memory for this computation; reduce mesh.shaft_elements / mesh.boom_elements, "
+            "the number of speeds or the study grid"
+        )
     return None
 
 
@@ -152,12 +169,16 @@ def _internal_error(exc: BaseException) -> None:
     if settings.debug:
         _stderr(plain("".join(traceback.format_exception(exc)), keep_newlines=True).rstrip("\n"))
     _stderr(plain(f"internal error: {what}", keep_newlines=False))
-    hint = (f"This is a bug in flexshaft {__version__}, not a problem with your input. Please report it at "
-            f"{BUG_REPORT_TARGET} with the design file, the command line and its output with --debug "
-            "(flexshaft --debug COMMAND ...).")
+    hint = (
+        f"This is a bug in flexshaft {__version__}, not a problem with your input. Please report it at "
+        f"{BUG_REPORT_TARGET} with the design file, the command line and its output with --debug "
+        "(flexshaft --debug COMMAND ...)."
+    )
     if settings.debug:
-        hint = (f"This is a bug in flexshaft {__version__}. Please report it at {BUG_REPORT_TARGET} with the "
-                "design file, the command line and the traceback above.")
+        hint = (
+            f"This is a bug in flexshaft {__version__}. Please report it at {BUG_REPORT_TARGET} with the "
+            "design file, the command line and the traceback above."
+        )
     _stderr(hint)
 
 
@@ -223,8 +244,9 @@ def is_guarded(func: Callable[..., Any]) -> bool:
 # Arguments
 
 
-def check_finite(option: str, value: float | None, minimum: float | None = None,
-                 maximum: float | None = None) -> float | None:
+def check_finite(
+    option: str, value: float | None, minimum: float | None = None, maximum: float | None = None
+) -> float | None:
     """``value`` if it is None or finite and within [minimum, maximum]; else a user error."""
     if value is None:
         return None
@@ -252,15 +274,18 @@ def default_design(name: str = "baseline") -> LoadedDesign:
     tuned final design, for ``flexshaft run``)."""
     from flexshaft.design import EMBEDDED_DESIGNS, embedded_design, embedded_text
 
-    return LoadedDesign(embedded_design(name), embedded_text(name),
-                        f"embedded {name} design ({EMBEDDED_DESIGNS[name][1]})")
+    return LoadedDesign(
+        embedded_design(name), embedded_text(name), f"embedded {name} design ({EMBEDDED_DESIGNS[name][1]})"
+    )
 
 
-_FILE_KINDS = ((stat.S_ISDIR, "is a directory, not a design file"),
-               (stat.S_ISFIFO, "is a named pipe (FIFO), not a regular design file"),
-               (stat.S_ISCHR, "is a character device, not a regular design file"),
-               (stat.S_ISBLK, "is a block device, not a regular design file"),
-               (stat.S_ISSOCK, "is a socket, not a regular design file"))
+_FILE_KINDS = (
+    (stat.S_ISDIR, "is a directory, not a design file"),
+    (stat.S_ISFIFO, "is a named pipe (FIFO), not a regular design file"),
+    (stat.S_ISCHR, "is a character device, not a regular design file"),
+    (stat.S_ISBLK, "is a block device, not a regular design file"),
+    (stat.S_ISSOCK, "is a socket, not a regular design file"),
+)
 
 
 def _check_design_path(path: Path) -> None:
@@ -339,7 +364,7 @@ def json_ready(value: Any) -> Any:
         return value if math.isfinite(value) else None
     if hasattr(value, "tolist"):  # numpy scalar or array
         return json_ready(value.tolist())
-    if hasattr(value, "value") and isinstance(getattr(value, "value"), str):  # an Enum
+    if hasattr(value, "value") and isinstance(value.value, str):  # an Enum
         return value.value
     try:
         return json_ready(float(value))

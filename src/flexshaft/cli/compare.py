@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Any, Optional
+from typing import Annotated, Any
 
 import typer
 
@@ -35,7 +35,7 @@ class _Pair:
         return {"a": self.a.model_dump(mode=mode), "b": self.b.model_dump(mode=mode)}
 
 
-def _labels(paths: tuple[Optional[Path], Optional[Path]]) -> tuple[str, str]:
+def _labels(paths: tuple[Path | None, Path | None]) -> tuple[str, str]:
     labels = [default if path is None else path.stem for path, default in zip(paths, DEFAULTS)]
     if labels[0] == labels[1]:
         labels = [f"A: {labels[0]}", f"B: {labels[1]}"]
@@ -44,15 +44,32 @@ def _labels(paths: tuple[Optional[Path], Optional[Path]]) -> tuple[str, str]:
 
 @guarded
 def compare(
-    design_a: Annotated[Optional[Path], typer.Argument(
-        help="First design (TOML). Default: the embedded tuned FMC design (`flexshaft baseline --name tuned`).",
-        show_default=False, metavar="A")] = None,
-    design_b: Annotated[Optional[Path], typer.Argument(
-        help="Second design (TOML). Default: the embedded current segmented aluminium driveline "
-             "(`flexshaft baseline --name current`).", show_default=False, metavar="B")] = None,
-    out: Annotated[Path, typer.Option(
-        "--out", "-o", help="Results folder: report.html, figures, results.json, comparison.nc (created if "
-                            "missing; refused if it holds other files, see --force).")] = Path("flexshaft-compare"),
+    design_a: Annotated[
+        Path | None,
+        typer.Argument(
+            help="First design (TOML). Default: the embedded tuned FMC design (`flexshaft baseline --name tuned`).",
+            show_default=False,
+            metavar="A",
+        ),
+    ] = None,
+    design_b: Annotated[
+        Path | None,
+        typer.Argument(
+            help="Second design (TOML). Default: the embedded current segmented aluminium driveline "
+            "(`flexshaft baseline --name current`).",
+            show_default=False,
+            metavar="B",
+        ),
+    ] = None,
+    out: Annotated[
+        Path,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Results folder: report.html, figures, results.json, comparison.nc (created if "
+            "missing; refused if it holds other files, see --force).",
+        ),
+    ] = Path("flexshaft-compare"),
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -84,8 +101,10 @@ def _print_comparison(result, page: Path, seconds: float) -> None:
     a, b = result.labels
     for label, run in zip(result.labels, result.runs):
         print_line(console, f"{label}: {run.model.design.name}", style="bold")
-    rows = [[m.title, *(format_metric(m.key, m.unit, m.values[d], m.lower_bounds[d]) for d in (0, 1))]
-            for m in result.metrics()]
+    rows = [
+        [m.title, *(format_metric(m.key, m.unit, m.values[d], m.lower_bounds[d]) for d in (0, 1))]
+        for m in result.metrics()
+    ]
     console.print(table("driveline comparison", ["quantity", a, b], rows, numeric=()))
     for label, run in zip(result.labels, result.runs):
         verdict = run.verdict

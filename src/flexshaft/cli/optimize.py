@@ -10,10 +10,8 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
-from typing import Optional
-
 from enum import Enum
+from pathlib import Path
 
 import typer
 
@@ -45,8 +43,10 @@ def parse_variable(spec: str):
     paths, sep, rest = spec.partition("=")
     parts = rest.split(":")
     if not sep or len(parts) not in (2, 3) or not paths.strip():
-        raise OptimizeError(f"--var {spec!r}: expected PATH[,PATH...]=LOWER:UPPER[:int|:log], "
-                            "e.g. shaft.wall_thickness=0.0015:0.004 or bearings[1].kp,bearings[2].kp=1e5:1e7:log")
+        raise OptimizeError(
+            f"--var {spec!r}: expected PATH[,PATH...]=LOWER:UPPER[:int|:log], "
+            "e.g. shaft.wall_thickness=0.0015:0.004 or bearings[1].kp,bearings[2].kp=1e5:1e7:log"
+        )
     flag = parts[2].strip() if len(parts) == 3 else ""
     if flag not in ("", "int", "log"):
         raise OptimizeError(f"--var {spec!r}: the flag must be 'int' or 'log' (got {flag!r})")
@@ -73,7 +73,7 @@ def _parse_set(spec: str) -> tuple[str, object]:
     return path.strip(), value
 
 
-def _load_design(path: Optional[Path], embedded: str):
+def _load_design(path: Path | None, embedded: str):
     from flexshaft.design import EMBEDDED_DESIGNS, DesignError, embedded_design, load_design
 
     try:
@@ -86,7 +86,7 @@ def _load_design(path: Optional[Path], embedded: str):
         _fail(f"invalid design {path if path is not None else f'(embedded {embedded})'}:\n{exc}")
 
 
-def _base_label(path: Optional[Path]) -> str:
+def _base_label(path: Path | None) -> str:
     if path is None:
         return "base (Table 3.1 baseline)"
     return f"base ({path.stem if path.suffix == '.toml' else path.name})"
@@ -94,32 +94,49 @@ def _base_label(path: Optional[Path]) -> str:
 
 @guarded
 def optimize(
-    design: Optional[Path] = typer.Argument(None, help="Base design file (TOML). Default: the embedded Table 3.1 "
-                                            "baseline (`flexshaft baseline`).", show_default=False),
+    design: Path | None = typer.Argument(
+        None,
+        help="Base design file (TOML). Default: the embedded Table 3.1 baseline (`flexshaft baseline`).",
+        show_default=False,
+    ),
     budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
-    out: Path = typer.Option(Path("flexshaft-optimize"), "--out", "-o",
-                             help="Run folder: every evaluation is kept there; run again to resume or extend."),
+    out: Path = typer.Option(
+        Path("flexshaft-optimize"),
+        "--out",
+        "-o",
+        help="Run folder: every evaluation is kept there; run again to resume or extend.",
+    ),
     jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
-    dask: Optional[str] = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
-    var: Optional[list[str]] = typer.Option(
-        None, "--var", help="Variable PATH[,PATH...]=LOWER:UPPER[:int|:log] in the design file's units (SI, "
+    dask: str | None = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
+    var: list[str] | None = typer.Option(
+        None,
+        "--var",
+        help="Variable PATH[,PATH...]=LOWER:UPPER[:int|:log] in the design file's units (SI, "
         "ply angles in degrees); layup.NAME fills {NAME} of --layup. Default: ply angles (a/-a/b/-b)s, wall "
-        "thickness, shared K_p and K_d of the active bearings, their stations."),
-    layup: Optional[str] = typer.Option(None, "--layup", help="Layup template, e.g. '({a}/{-a}/0_{n})s'."),
-    ply_thickness_mm: Optional[float] = typer.Option(None, "--ply-thickness-mm",
-                                                     help="Ply thickness in mm: the wall thickness is plies x this."),
-    objective: Optional[list[str]] = typer.Option(
-        None, "--objective", help="shaft_mass, safety_factor, buckling_safety_factor, actuator_force, actuator_orbit, "
-        "spinup_deflection, max_temperature, min_log_decrement. Default: shaft_mass and safety_factor."),
-    ignore_check: Optional[list[str]] = typer.Option(None, "--ignore-check",
-                                                     help="Verdict check not used as a constraint (default: all)."),
-    set_value: Optional[list[str]] = typer.Option(None, "--set", help="Fixed override PATH=VALUE on every candidate."),
-    fidelity: Fidelity = typer.Option(Fidelity.verdict, "--fidelity",
-                                      help="verdict (the run's resolution) or screening (coarser, for ranking)."),
-    pop_size: Optional[int] = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
+        "thickness, shared K_p and K_d of the active bearings, their stations.",
+    ),
+    layup: str | None = typer.Option(None, "--layup", help="Layup template, e.g. '({a}/{-a}/0_{n})s'."),
+    ply_thickness_mm: float | None = typer.Option(
+        None, "--ply-thickness-mm", help="Ply thickness in mm: the wall thickness is plies x this."
+    ),
+    objective: list[str] | None = typer.Option(
+        None,
+        "--objective",
+        help="shaft_mass, safety_factor, buckling_safety_factor, actuator_force, actuator_orbit, "
+        "spinup_deflection, max_temperature, min_log_decrement. Default: shaft_mass and safety_factor.",
+    ),
+    ignore_check: list[str] | None = typer.Option(
+        None, "--ignore-check", help="Verdict check not used as a constraint (default: all)."
+    ),
+    set_value: list[str] | None = typer.Option(None, "--set", help="Fixed override PATH=VALUE on every candidate."),
+    fidelity: Fidelity = typer.Option(
+        Fidelity.verdict, "--fidelity", help="verdict (the run's resolution) or screening (coarser, for ranking)."
+    ),
+    pop_size: int | None = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
     seed: int = typer.Option(1, "--seed", min=0, help="Seed of the search (>= 0)."),
-    reference: Optional[list[str]] = typer.Option(None, "--reference",
-                                                  help="Design marked on the figure: embedded name or file."),
+    reference: list[str] | None = typer.Option(
+        None, "--reference", help="Design marked on the figure: embedded name or file."
+    ),
     designs: int = typer.Option(8, "--designs", min=1, help="Pareto designs written as design files (at most)."),
     verify: bool = typer.Option(True, "--verify/--no-verify", help="Re-verify the written designs with the full run."),
 ) -> None:
@@ -145,22 +162,36 @@ def optimize(
             variables, template = default_variables(base)
             template = layup or template
         problem = DesignProblem(
-            variables, base=base, objectives=tuple(objective or ("shaft_mass", "safety_factor")),
-            constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])), layup=template,
+            variables,
+            base=base,
+            objectives=tuple(objective or ("shaft_mass", "safety_factor")),
+            constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])),
+            layup=template,
             ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
-            fixed=dict(_parse_set(s) for s in set_value or []), fidelity=Fidelity(fidelity).value,
-            name=f"flexshaft optimize: {base.name}")
+            fixed=dict(_parse_set(s) for s in set_value or []),
+            fidelity=Fidelity(fidelity).value,
+            name=f"flexshaft optimize: {base.name}",
+        )
         from flexshaft.studies.optimize import optimize as run_optimization
 
-        result = run_optimization(problem, budget, out, pop_size=pop_size, seed=seed, jobs=jobs, client=dask,
-                                  references=refs, base_label=_base_label(design),
-                                  progress=lambda line: typer.echo(plain(line), err=True))  # stdout: results
+        result = run_optimization(
+            problem,
+            budget,
+            out,
+            pop_size=pop_size,
+            seed=seed,
+            jobs=jobs,
+            client=dask,
+            references=refs,
+            base_label=_base_label(design),
+            progress=lambda line: typer.echo(plain(line), err=True),
+        )  # stdout: results
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
     _report(result, out, designs, verify, jobs, dask)
 
 
-def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: Optional[str]) -> None:
+def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: str | None) -> None:
     from flexshaft.plot.driveline import save_figure
 
     paths = result.save(out)
@@ -168,8 +199,11 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
     typer.echo(f"{result!r}; {result.n_computed} computed in {result.elapsed:.0f} s")
     typer.echo(f"written: {paths['evaluations']}, {paths['pareto']}, {figure['png']}")
     if result.pareto.sizes.get("design", 0) == 0:
-        typer.echo("no evaluated design passes every requirement: raise the budget, widen the bounds or "
-                   "see the margins in evaluations.nc", err=True)
+        typer.echo(
+            "no evaluated design passes every requirement: raise the budget, widen the bounds or "
+            "see the margins in evaluations.nc",
+            err=True,
+        )
         raise typer.Exit(code=NO_DESIGN_PASSES)
     files = result.write_designs(out / "designs", max_designs)
     failed = []
@@ -195,18 +229,32 @@ def _print_table(result) -> None:
     names = ("shaft_mass", "safety_factor", "buckling_safety_factor", "actuator_force", "spinup_deflection")
 
     def row(label, outputs, verdict):
-        return [label, outputs["shaft_mass"], outputs["safety_factor"], outputs["buckling_safety_factor"],
-                outputs["actuator_force"], outputs["spinup_deflection"] * 1e3, verdict]
+        return [
+            label,
+            outputs["shaft_mass"],
+            outputs["safety_factor"],
+            outputs["buckling_safety_factor"],
+            outputs["actuator_force"],
+            outputs["spinup_deflection"] * 1e3,
+            verdict,
+        ]
 
-    rows = [row(label, outputs, "PASS" if outputs["feasible"] else "FAIL")
-            for label, outputs in result.references.items()]
+    rows = [
+        row(label, outputs, "PASS" if outputs["feasible"] else "FAIL") for label, outputs in result.references.items()
+    ]
     for k in range(pareto.sizes["design"]):
         name = str(pareto["file"].values[k]) if "file" in pareto else ""
         if not name:
             continue
         verified = {1.0: "PASS run", 0.0: "FAIL run"}.get(
-            float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS")
+            float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS"
+        )
         rows.append(row(name.removesuffix(".toml"), {n: float(pareto[n].values[k]) for n in names}, verified))
-    console.print(table("Pareto designs and references (search verdict; 'run': re-verified by the full run)",
-                        ["design", "mass [kg]", "strength SF", "buckling SF", "force [N]", "orbit [mm]", "verdict"],
-                        rows, numeric=range(1, 6)))
+    console.print(
+        table(
+            "Pareto designs and references (search verdict; 'run': re-verified by the full run)",
+            ["design", "mass [kg]", "strength SF", "buckling SF", "force [N]", "orbit [mm]", "verdict"],
+            rows,
+            numeric=range(1, 6),
+        )
+    )

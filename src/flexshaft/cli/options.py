@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from enum import Enum
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -74,27 +74,35 @@ class Resolution(str, Enum):
 
 
 DesignArgument = Annotated[
-    Optional[Path],
-    typer.Argument(help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False,
-                   metavar="DESIGN"),
+    Path | None,
+    typer.Argument(
+        help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False, metavar="DESIGN"
+    ),
 ]
 JsonOption = Annotated[
     bool,
-    typer.Option("--json", help="Print machine-readable JSON on stdout: SI values, each unit in its key "
-                                "(e.g. frequency_Hz, wall_thickness_m; speeds _rpm, temperatures _c [°C])."),
+    typer.Option(
+        "--json",
+        help="Print machine-readable JSON on stdout: SI values, each unit in its key "
+        "(e.g. frequency_Hz, wall_thickness_m; speeds _rpm, temperatures _c [°C]).",
+    ),
 ]
 ForceOption = Annotated[
     bool,
-    typer.Option("--force", help="Write into a non-empty --out folder that flexshaft did not write, or wrote "
-                                 "for another design."),
+    typer.Option(
+        "--force", help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design."
+    ),
 ]
 JobsOption = Annotated[int, typer.Option("--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each).")]
 DaskOption = Annotated[
-    Optional[str],
-    typer.Option("--dask", help="Dask scheduler address, e.g. tcp://host:8786 (needs flexshaft[dask])."),
+    str | None, typer.Option("--dask", help="Dask scheduler address, e.g. tcp://host:8786 (needs flexshaft[dask]).")
 ]
 NModesOption = Annotated[
     int,
-    typer.Option("--n-modes", min=1, max=500, help="Number of modes (numbered from 1 in the output; the "
-                                                   "Python API counts from 0)."),
+    typer.Option(
+        "--n-modes",
+        min=1,
+        max=500,
+        help="Number of modes (numbered from 1 in the output; the Python API counts from 0).",
+    ),
 ]

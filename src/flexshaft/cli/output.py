@@ -59,8 +59,9 @@ def _check_writable(folder: Path, option: str) -> None:
     os.unlink(probe)
 
 
-def prepare_output_folder(folder: Path, design: Any, command: str, *, force: bool = False,
-                          option: str = "--out") -> Path:
+def prepare_output_folder(
+    folder: Path, design: Any, command: str, *, force: bool = False, option: str = "--out"
+) -> Path:
     """Check (and create) an output folder for ``command`` on ``design``; write its marker.
 
     Parameters
@@ -89,16 +90,22 @@ def prepare_output_folder(folder: Path, design: Any, command: str, *, force: boo
         marker = read_marker(folder)
         if entries and not force:
             if marker is None:
-                fail(f"{option}: the folder {folder} is not empty and was not written by flexshaft "
-                     f"({len(entries)} entries, no {MARKER}); choose a new or empty folder, or pass --force "
-                     "to write into it anyway")
+                fail(
+                    f"{option}: the folder {folder} is not empty and was not written by flexshaft "
+                    f"({len(entries)} entries, no {MARKER}); choose a new or empty folder, or pass --force "
+                    "to write into it anyway"
+                )
             if marker.get("command") != command:
-                fail(f"{option}: the folder {folder} holds the output of 'flexshaft {marker.get('command')}', "
-                     f"not of 'flexshaft {command}'; choose another folder, or pass --force to write into it")
+                fail(
+                    f"{option}: the folder {folder} holds the output of 'flexshaft {marker.get('command')}', "
+                    f"not of 'flexshaft {command}'; choose another folder, or pass --force to write into it"
+                )
             if marker.get("design_fingerprint") != fingerprint:
-                fail(f"{option}: the folder {folder} holds the results of another design "
-                     f"({marker.get('design')!r}, not {str(design.name)!r}); choose another folder, or pass "
-                     "--force to replace them")
+                fail(
+                    f"{option}: the folder {folder} holds the results of another design "
+                    f"({marker.get('design')!r}, not {str(design.name)!r}); choose another folder, or pass "
+                    "--force to replace them"
+                )
     else:
         try:
             folder.mkdir(parents=True, exist_ok=True)
@@ -118,8 +125,13 @@ def prepare_output_folder(folder: Path, design: Any, command: str, *, force: boo
 def _write_marker(folder: Path, design: Any, fingerprint: str, command: str, option: str) -> None:
     from flexshaft import __version__
 
-    data = {"written_by": "flexshaft", "version": __version__, "command": command,
-            "design": str(design.name), "design_fingerprint": fingerprint}
+    data = {
+        "written_by": "flexshaft",
+        "version": __version__,
+        "command": command,
+        "design": str(design.name),
+        "design_fingerprint": fingerprint,
+    }
     try:
         (folder / MARKER).write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
     except OSError as exc:

@@ -34,8 +34,13 @@ class StageProgress:
         Labels starting with it are sub-steps of the current stage.
     """
 
-    def __init__(self, enabled: bool | None = None, transient: bool = False, console: Any = None,
-                 sub_prefix: str = "design studies: ") -> None:
+    def __init__(
+        self,
+        enabled: bool | None = None,
+        transient: bool = False,
+        console: Any = None,
+        sub_prefix: str = "design studies: ",
+    ) -> None:
         self.sub_prefix = sub_prefix
         self.timings: dict[str, float] = {}  # stage -> seconds
         self.sub_timings: dict[str, dict[str, float]] = {}  # stage -> {sub-step: seconds}
@@ -48,7 +53,7 @@ class StageProgress:
         self._stage: tuple[str, float, Any] | None = None  # (label, start, task)
         self._sub: tuple[str, float, Any] | None = None
 
-    def __enter__(self) -> "StageProgress":
+    def __enter__(self) -> StageProgress:
         from rich.progress import Progress, ProgressColumn, SpinnerColumn, TextColumn
         from rich.text import Text
 
@@ -64,8 +69,13 @@ class StageProgress:
         console = self._console if self._console is not None else stderr_console()
         enabled = console.is_terminal if self._enabled is None else self._enabled
         if enabled:
-            self._progress = Progress(SpinnerColumn(finished_text="[green]✓"), TextColumn("{task.fields[label]}"),
-                                      Seconds(), console=console, transient=self._transient)
+            self._progress = Progress(
+                SpinnerColumn(finished_text="[green]✓"),
+                TextColumn("{task.fields[label]}"),
+                Seconds(),
+                console=console,
+                transient=self._transient,
+            )
             self._progress.start()
         return self
 
@@ -94,7 +104,7 @@ class StageProgress:
 
         if label.startswith(self.sub_prefix) and self._stage is not None:
             self._close_sub()
-            sub = label[len(self.sub_prefix):]
+            sub = label[len(self.sub_prefix) :]
             self._sub = (sub, time.perf_counter(), self._add(f"  · {plain(sub)}"))
             return
         self._close_sub()

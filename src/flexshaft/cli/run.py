@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -25,20 +25,37 @@ def _worker_processes() -> int:
 
 @guarded
 def run(
-    design: Annotated[Optional[Path], typer.Argument(
-        help="Design file (TOML). Default: the embedded tuned design (`flexshaft baseline --name tuned`).",
-        show_default=False, metavar="DESIGN")] = None,
-    out: Annotated[Path, typer.Option(
-        "--out", "-o", help="Results folder: report.html, figures, results.json, timings.json (created if "
-                            "missing; refused if it holds other files, see --force).")] = Path("flexshaft-results"),
+    design: Annotated[
+        Path | None,
+        typer.Argument(
+            help="Design file (TOML). Default: the embedded tuned design (`flexshaft baseline --name tuned`).",
+            show_default=False,
+            metavar="DESIGN",
+        ),
+    ] = None,
+    out: Annotated[
+        Path,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Results folder: report.html, figures, results.json, timings.json (created if "
+            "missing; refused if it holds other files, see --force).",
+        ),
+    ] = Path("flexshaft-results"),
     force: ForceOption = False,
     as_json: JsonOption = False,
-    studies: Annotated[Studies, typer.Option(
-        "--studies", case_sensitive=False,
-        help="Thesis chapter-3 design studies in the report: report (the whole run about 8 s on 2 cores), full "
-             "(about 15 s) or none (about 4 s).")] = Studies.report,
-    strict: Annotated[bool, typer.Option(
-        "--strict", help=f"Exit with code {EXIT_REQUIREMENT_FAILED} when a requirement fails.")] = False,
+    studies: Annotated[
+        Studies,
+        typer.Option(
+            "--studies",
+            case_sensitive=False,
+            help="Thesis chapter-3 design studies in the report: report (the whole run about 8 s on 2 cores), full "
+            "(about 15 s) or none (about 4 s).",
+        ),
+    ] = Studies.report,
+    strict: Annotated[
+        bool, typer.Option("--strict", help=f"Exit with code {EXIT_REQUIREMENT_FAILED} when a requirement fails.")
+    ] = False,
     svg: Annotated[bool, typer.Option("--svg", help="Also write every figure as SVG (PNG always).")] = False,
 ) -> None:
     """Analyse a design (default: the embedded tuned design), check it against its requirements
@@ -48,10 +65,9 @@ def run(
     loaded = load_design_argument(design, DEFAULT_DESIGN)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
     from flexshaft._pool import worker_pool
+    from flexshaft.plot.output import FIGURE_MODULES
     from flexshaft.report.driveline import results_json, write_run_report
     from flexshaft.studies.run import run_analysis
-
-    from flexshaft.plot.output import FIGURE_MODULES
 
     if studies is not Studies.none:
         # xarray once, here, before the workers fork: both workers and this process need it
@@ -61,11 +77,22 @@ def run(
 
         xarray.Dataset({"warm": ("x", [0.0])})
     with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, StageProgress(transient=as_json) as progress:
-        results = run_analysis(loaded.design, progress=progress.step,
-                               studies=None if studies is Studies.none else studies.value, executor=pool)
+        results = run_analysis(
+            loaded.design,
+            progress=progress.step,
+            studies=None if studies is Studies.none else studies.value,
+            executor=pool,
+        )
         progress.step("writing the report")
-        page = write_run_report(results, folder, design_text=loaded.text, design_source=loaded.source,
-                                timings=dict(progress.timings), svg=svg, executor=pool)
+        page = write_run_report(
+            results,
+            folder,
+            design_text=loaded.text,
+            design_source=loaded.source,
+            timings=dict(progress.timings),
+            svg=svg,
+            executor=pool,
+        )
     failed = strict and results.verdict is not None and not results.verdict.passed
     data = results_json(results)
     if as_json:
@@ -83,24 +110,37 @@ def _print_run(results, data: dict, page: Path, seconds: float) -> None:
     console = stdout_console()
     s = data["summary"]
     print_line(console, s["name"], style="bold")
-    print_line(console, f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "
-                        f"(loss factor {sig(s['shaft_E_loss_factor'], 3)}), G* = {sig(s['shaft_G_storage_Pa'] / 1e9)} GPa "
-                        f"(loss factor {sig(s['shaft_G_loss_factor'], 3)}), torque {sig(s['torque_Nm'])} N m, "
-                        f"{s['free_dofs']} free DOFs")
+    print_line(
+        console,
+        f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "
+        f"(loss factor {sig(s['shaft_E_loss_factor'], 3)}), G* = {sig(s['shaft_G_storage_Pa'] / 1e9)} GPa "
+        f"(loss factor {sig(s['shaft_G_loss_factor'], 3)}), torque {sig(s['torque_Nm'])} N m, "
+        f"{s['free_dofs']} free DOFs",
+    )
     console.print(modes_table("natural frequencies at rest", data["modes_at_rest"]))
-    console.print(modes_table(f"natural frequencies at {sig(s['operating_speed_rpm'])} rpm",
-                              data["modes_at_operating_speed"]))
+    console.print(
+        modes_table(f"natural frequencies at {sig(s['operating_speed_rpm'])} rpm", data["modes_at_operating_speed"])
+    )
     sf = data["strength_static_plus_imbalance"]
     if sf:
-        print_line(console, f"Tsai-Wu safety factor {sig(sf['safety_factor'], 3)} at x = {sig(sf['x_m'], 3)} m, "
-                            f"ply {sf['ply']} ({sf['ply_angle_deg']:+.0f}°), {sf['dominant_stress']} dominates; "
-                            f"buckling safety factor {sig(data['buckling']['safety_factor'], 3)}")
+        print_line(
+            console,
+            f"Tsai-Wu safety factor {sig(sf['safety_factor'], 3)} at x = {sig(sf['x_m'], 3)} m, "
+            f"ply {sf['ply']} ({sf['ply_angle_deg']:+.0f}°), {sf['dominant_stress']} dominates; "
+            f"buckling safety factor {sig(data['buckling']['safety_factor'], 3)}",
+        )
     imbalance = data["imbalance"]
-    print_line(console, f"spin-up peak shaft orbit {sig(m_to_mm(imbalance['max_shaft_orbit_spin_up_m']), 3)} mm "
-                        f"at {sig(imbalance['speed_of_max_rpm'])} rpm")
+    print_line(
+        console,
+        f"spin-up peak shaft orbit {sig(m_to_mm(imbalance['max_shaft_orbit_spin_up_m']), 3)} mm "
+        f"at {sig(imbalance['speed_of_max_rpm'])} rpm",
+    )
     if results.verdict is not None:
         console.print(verdict_table(results.verdict))
         head = "PASS" if results.verdict.passed else "FAIL"
-        print_line(console, f"verdict: {head}: {results.verdict.summary.split(': ', 1)[1]}",
-                   style="bold green" if results.verdict.passed else "bold red")
+        print_line(
+            console,
+            f"verdict: {head}: {results.verdict.summary.split(': ', 1)[1]}",
+            style="bold green" if results.verdict.passed else "bold red",
+        )
     print_line(console, f"report written to {page} in {sig(seconds, 3)} s (stage times in timings.json)")

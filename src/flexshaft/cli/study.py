@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -20,12 +20,18 @@ from flexshaft.cli.output import prepare_output_folder
 
 __all__ = ["study_app"]
 
-study_app = typer.Typer(no_args_is_help=True, rich_markup_mode=None,
-                        help="Design studies of thesis chapter 3 (sweeps; resumable).")
+study_app = typer.Typer(
+    no_args_is_help=True, rich_markup_mode=None, help="Design studies of thesis chapter 3 (sweeps; resumable)."
+)
 
-OutOption = Annotated[Path, typer.Option(
-    "--out", "-o", help="Run folder: chunks, manifest, results.nc and figures; re-run to resume. "
-                        "Default: flexshaft-study-NAME.")]
+OutOption = Annotated[
+    Path,
+    typer.Option(
+        "--out",
+        "-o",
+        help="Run folder: chunks, manifest, results.nc and figures; re-run to resume. Default: flexshaft-study-NAME.",
+    ),
+]
 
 
 def _show_progress(as_json: bool) -> bool:
@@ -33,12 +39,12 @@ def _show_progress(as_json: bool) -> bool:
     return not as_json and sys.stdout.isatty() and sys.stderr.isatty()
 
 
-def _prepare(design: Optional[Path], out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
+def _prepare(design: Path | None, out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
     loaded = load_design_argument(design)
     return loaded, prepare_output_folder(out, loaded.design, f"study {name}", force=force)
 
 
-def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, dask: Optional[str], as_json: bool, **kw):
+def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, dask: str | None, as_json: bool, **kw):
     return func(design=loaded.design, run_dir=folder, jobs=jobs, client=dask, progress=_show_progress(as_json), **kw)
 
 
@@ -48,22 +54,38 @@ def _save(fig, folder: Path, stem: str) -> dict:
     return {kind: str(path) for kind, path in save_figure(fig, folder, stem).items()}
 
 
-def _report(loaded: LoadedDesign, name: str, folder: Path, ds, variables: list[str], figures: dict,
-            headline: str, as_json: bool, table=None) -> None:
+def _report(
+    loaded: LoadedDesign,
+    name: str,
+    folder: Path,
+    ds,
+    variables: list[str],
+    figures: dict,
+    headline: str,
+    as_json: bool,
+    table=None,
+) -> None:
     """Print a study: its headline and the table of ``variables``, or the JSON of all its data."""
     from flexshaft.cli.tables import dataset_json, dataset_table, print_line, stdout_console
 
     if as_json:
         results = folder / "results.nc"
-        print_json({"design": loaded.design.name, "study": name, "headline": headline,
-                    "results_file": str(results) if results.is_file() else None, "figures": figures,
-                    **dataset_json(ds)})
+        print_json(
+            {
+                "design": loaded.design.name,
+                "study": name,
+                "headline": headline,
+                "results_file": str(results) if results.is_file() else None,
+                "figures": figures,
+                **dataset_json(ds),
+            }
+        )
         return
     console = stdout_console()
     print_line(console, loaded.design.name, style="bold")
     console.print(table if table is not None else dataset_table(ds, variables, f"study {name}"))
     print_line(console, headline)
-    for stem, paths in figures.items():
+    for _stem, paths in figures.items():
         print_line(console, f"figure: {paths['png']}")
 
 
@@ -73,7 +95,10 @@ def ply_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=0.5, max=45.0, help="Angle step [deg].")] = 5.0,
     out: OutOption = Path("flexshaft-study-ply-angle"),
-    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
 ) -> None:
     """Safety factor vs α of (α/−α/−α/α), no imbalance (thesis: optimum ±55°)."""
     import numpy as np
@@ -86,10 +111,19 @@ def ply_angle(
     best = float(ds["safety_factor"].idxmax("alpha").item())
     headline = f"best α = ±{best:g}°: safety factor {float(ds['safety_factor'].max().item()):.3g}"
     dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
-    figures = {"ply_angle": _save(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), folder,
-                                  "ply_angle")}
-    _report(loaded, "ply-angle", folder, ds, ["safety_factor", "sigma1", "sigma2", "tau12", "critical_ply_angle"],
-            figures, headline, as_json)
+    figures = {
+        "ply_angle": _save(ply_angle_figure(ds.alpha.values, ds["safety_factor"].values, dominant), folder, "ply_angle")
+    }
+    _report(
+        loaded,
+        "ply-angle",
+        folder,
+        ds,
+        ["safety_factor", "sigma1", "sigma2", "tau12", "critical_ply_angle"],
+        figures,
+        headline,
+        as_json,
+    )
 
 
 @study_app.command("two-angle")
@@ -98,7 +132,10 @@ def two_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=1.0, max=45.0, help="Angle step [deg].")] = 15.0,
     out: OutOption = Path("flexshaft-study-two-angle"),
-    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
 ) -> None:
     """Safety factor map of (α/−α/β/−β)s laminates, no imbalance (thesis: best (55/−55/0/0)s)."""
     import numpy as np
@@ -115,8 +152,17 @@ def two_angle(
     a, b = ds.alpha.values[i[0]], ds.beta.values[i[1]]
     headline = f"best ({a:g}/-{a:g}/{b:g}/-{b:g})s: safety factor {float(sf.values[i]):.3g}"
     figures = {"two_angle": _save(two_angle_figure(ds.alpha.values, ds.beta.values, sf.values), folder, "two_angle")}
-    _report(loaded, "two-angle", folder, ds, ["safety_factor"], figures, headline, as_json,
-            table=None if as_json else matrix_table(sf, "study two-angle"))
+    _report(
+        loaded,
+        "two-angle",
+        folder,
+        ds,
+        ["safety_factor"],
+        figures,
+        headline,
+        as_json,
+        table=None if as_json else matrix_table(sf, "study two-angle"),
+    )
 
 
 def _largest_safety_factor(sf, where) -> str:
@@ -133,8 +179,12 @@ def _largest_safety_factor(sf, where) -> str:
 @study_app.command("wall")
 @guarded
 def wall(
-    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-wall"),
-    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+    design: DesignArgument = None,
+    out: OutOption = Path("flexshaft-study-wall"),
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
 ) -> None:
     """Safety factor (with/without imbalance), first frequency and spin-up peak vs wall thickness."""
     from flexshaft.plot.studies import wall_thickness_figure
@@ -145,18 +195,40 @@ def wall(
     ds = _sweep(wall_thickness_study, loaded, folder, jobs, dask, as_json)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall")
-    figures = {"wall": _save(wall_thickness_figure(ds.wall_thickness.values, sf, ds["safety_factor_no_imbalance"].values,
-                                                   ds["natural_frequency_1"].values, ds["spinup_peak_deflection"].values),
-                             folder, "wall")}
-    _report(loaded, "wall", folder, ds, ["safety_factor", "safety_factor_no_imbalance", "natural_frequency_1",
-                                         "spinup_peak_deflection"], figures, headline, as_json)
+    figures = {
+        "wall": _save(
+            wall_thickness_figure(
+                ds.wall_thickness.values,
+                sf,
+                ds["safety_factor_no_imbalance"].values,
+                ds["natural_frequency_1"].values,
+                ds["spinup_peak_deflection"].values,
+            ),
+            folder,
+            "wall",
+        )
+    }
+    _report(
+        loaded,
+        "wall",
+        folder,
+        ds,
+        ["safety_factor", "safety_factor_no_imbalance", "natural_frequency_1", "spinup_peak_deflection"],
+        figures,
+        headline,
+        as_json,
+    )
 
 
 @study_app.command("gain")
 @guarded
 def gain(
-    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-gain"),
-    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+    design: DesignArgument = None,
+    out: OutOption = Path("flexshaft-study-gain"),
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
 ) -> None:
     """Safety factor and actuator displacement vs the proportional gain K_p [N/m] of both AMBs."""
     from flexshaft.cli.tables import sig
@@ -174,8 +246,12 @@ def gain(
 @study_app.command("buckling")
 @guarded
 def buckling(
-    design: DesignArgument = None, out: OutOption = Path("flexshaft-study-buckling"),
-    force: ForceOption = False, jobs: JobsOption = 1, dask: DaskOption = None, as_json: JsonOption = False,
+    design: DesignArgument = None,
+    out: OutOption = Path("flexshaft-study-buckling"),
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    dask: DaskOption = None,
+    as_json: JsonOption = False,
 ) -> None:
     """Torsional buckling safety factor vs wall thickness (about 5 s per wall)."""
     from flexshaft.plot.studies import buckling_figure
@@ -186,8 +262,11 @@ def buckling(
     ds = _sweep(buckling_study, loaded, folder, jobs, dask, as_json)
     sf = ds["buckling_safety_factor"].values
     thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
-    headline = (f"walls up to {m_to_mm(float(max(thin))):.3g} mm buckle (safety factor < 1)" if thin
-                else "no wall studied buckles (safety factor ≥ 1 everywhere)")
+    headline = (
+        f"walls up to {m_to_mm(float(max(thin))):.3g} mm buckle (safety factor < 1)"
+        if thin
+        else "no wall studied buckles (safety factor ≥ 1 everywhere)"
+    )
     figures = {"buckling": _save(buckling_figure(ds.wall_thickness.values, sf), folder, "buckling")}
     _report(loaded, "buckling", folder, ds, ["critical_torque", "buckling_safety_factor"], figures, headline, as_json)
 
@@ -198,7 +277,9 @@ def spinup_map(
     design: DesignArgument = None,
     n_gains: Annotated[int, typer.Option("--n-gains", min=2, max=400, help="Gains per axis (K_p and K_d).")] = 30,
     n_speeds: Annotated[int, typer.Option("--n-speeds", min=10, max=20000, help="Spin-up speeds.")] = 400,
-    out: OutOption = Path("flexshaft-study-spinup-map"), force: ForceOption = False, as_json: JsonOption = False,
+    out: OutOption = Path("flexshaft-study-spinup-map"),
+    force: ForceOption = False,
+    as_json: JsonOption = False,
 ) -> None:
     """Peak shaft orbit, actuator displacement and force over a (K_p [N/m], K_d [N s/m]) grid."""
     import numpy as np
@@ -215,17 +296,22 @@ def spinup_map(
     write_netcdf(ds, folder / "results.nc")
     i = np.unravel_index(int(np.argmin(ds["shaft_peak"].values)), ds["shaft_peak"].shape)
     best = (float(ds.kp.values[i[0]]), float(ds.kd.values[i[1]]))
-    headline = (f"best K_p = {sig(best[0], 3)} N/m, K_d = {sig(best[1], 3)} N s/m: peak shaft orbit "
-                f"{sig(m_to_mm(float(ds['shaft_peak'].values[i])), 3)} mm")
+    headline = (
+        f"best K_p = {sig(best[0], 3)} N/m, K_d = {sig(best[1], 3)} N s/m: peak shaft orbit "
+        f"{sig(m_to_mm(float(ds['shaft_peak'].values[i])), 3)} mm"
+    )
     figures = {}
-    for var, label in (("shaft_peak", "max spin-up shaft orbit [mm]"),
-                       ("actuator_displacement_peak", "max actuator displacement [mm]"),
-                       ("actuator_force_peak", "max actuator force [N]")):
+    for var, label in (
+        ("shaft_peak", "max spin-up shaft orbit [mm]"),
+        ("actuator_displacement_peak", "max actuator displacement [mm]"),
+        ("actuator_force_peak", "max actuator force [N]"),
+    ):
         values = ds[var].values if ds[var].ndim == 2 else ds[var].values.max(axis=-1)
         scale = m_to_mm(1.0) if ds[var].attrs.get("units") == "m" else 1.0
         stem = f"spinup_map_{var}"
-        figures[stem] = _save(gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=best),
-                              folder, stem)
+        figures[stem] = _save(
+            gain_map_figure(ds.kp.values, ds.kd.values, values, label, scale=scale, best=best), folder, stem
+        )
     if as_json:
         _report(loaded, "spinup-map", folder, ds, [], figures, headline, as_json)
         return
@@ -243,26 +329,32 @@ def spinup_map(
 @guarded
 def all_studies(
     design: DesignArgument = None,
-    resolution: Annotated[Resolution, typer.Option(
-        "--resolution", case_sensitive=False, help="Grid resolution: report (about 10 s of computation) or full (about 25 s); "
-                                              "--jobs divides it.")
+    resolution: Annotated[
+        Resolution,
+        typer.Option(
+            "--resolution",
+            case_sensitive=False,
+            help="Grid resolution: report (about 10 s of computation) or full (about 25 s); --jobs divides it.",
+        ),
     ] = Resolution.report,
-    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and "
-                                                          "report.html.")] = Path("flexshaft-studies"),
-    force: ForceOption = False, jobs: JobsOption = 1,
-    gap: Annotated[Optional[float], typer.Option(
-        "--gap", help="Actuator gap limiting the tuned gains [m].", show_default=False)] = None,
+    out: Annotated[
+        Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and report.html.")
+    ] = Path("flexshaft-studies"),
+    force: ForceOption = False,
+    jobs: JobsOption = 1,
+    gap: Annotated[
+        float | None, typer.Option("--gap", help="Actuator gap limiting the tuned gains [m].", show_default=False)
+    ] = None,
     as_json: JsonOption = False,
 ) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     check_finite("--gap", gap, 1e-9)
     loaded, folder = _prepare(design, out, "all", force)
+    from flexshaft._pool import worker_pool
     from flexshaft.cli.progress import StageProgress
     from flexshaft.report.html import write_report
     from flexshaft.report.studies_section import design_studies_section
     from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
-
-    from flexshaft._pool import worker_pool
 
     d = loaded.design
     # the studies as independent tasks on one pool of `jobs` workers (each sweep in its worker)
@@ -270,8 +362,9 @@ def all_studies(
         res = design_studies(d, resolution.value, progress=progress.step, actuator_gap=gap, executor=pool)
         progress.step("writing the report")
         save_study_data(res, folder)
-        page = write_report(folder, f"Design studies: {d.name}", [design_studies_section(res, folder)],
-                            design_name=d.name)
+        page = write_report(
+            folder, f"Design studies: {d.name}", [design_studies_section(res, folder)], design_name=d.name
+        )
     data = headline(res)
     if as_json:
         print_json(data)
@@ -296,13 +389,24 @@ def _print_headline(data: dict, page: Path) -> None:
         ["best wall [mm]", mm(data["best_wall_m"]), mm(thesis["best_wall_m"])],
         ["K_p before → tuned [N/m]", _pair(before.get("kp_N_per_m"), after.get("kp_N_per_m")), None],
         ["K_d before → tuned [N s/m]", _pair(before.get("kd_N_s_per_m"), after.get("kd_N_s_per_m")), None],
-        ["spin-up peak orbit before tuning [mm]", mm(data["peak_deflection_before_m"]), mm(thesis["tuned_peak_before_m"])],
+        [
+            "spin-up peak orbit before tuning [mm]",
+            mm(data["peak_deflection_before_m"]),
+            mm(thesis["tuned_peak_before_m"]),
+        ],
         ["spin-up peak orbit after tuning [mm]", mm(data["peak_deflection_after_m"]), mm(thesis["tuned_peak_after_m"])],
     ]
     console = stdout_console()
     print_line(console, data["design"], style="bold")
-    console.print(table(f"design studies ({data['resolution']} resolution)", ["quantity", "this design", "thesis"],
-                        rows, numeric={1, 2}, digits=3))
+    console.print(
+        table(
+            f"design studies ({data['resolution']} resolution)",
+            ["quantity", "this design", "thesis"],
+            rows,
+            numeric={1, 2},
+            digits=3,
+        )
+    )
     for note in data["notes"]:
         print_line(console, f"note: {note}")
     print_line(console, f"report written to {page}")
@@ -311,4 +415,3 @@ def _print_headline(data: dict, page: Path) -> None:
 def _pair(first, second) -> str:
     """Two gains, each with three significant figures in exponent form where needed."""
     return " → ".join("—" if v is None else f"{v:.3g}" for v in (first, second))
-

@@ -104,8 +104,15 @@ def print_line(console, text: str, style: str | None = None) -> None:
     console.print(Text(plain(text), style=style or ""), soft_wrap=True)
 
 
-def table(title: str | None, headers: Sequence[str], rows: Iterable[Sequence[Any]], *,
-          numeric: Iterable[int] | None = None, caption: str | None = None, digits: int = 4):
+def table(
+    title: str | None,
+    headers: Sequence[str],
+    rows: Iterable[Sequence[Any]],
+    *,
+    numeric: Iterable[int] | None = None,
+    caption: str | None = None,
+    digits: int = 4,
+):
     """A rich table of plain-text cells; ``numeric`` column indices are right-aligned
     (default: the columns whose first cell is a number)."""
     from rich.table import Table
@@ -113,16 +120,24 @@ def table(title: str | None, headers: Sequence[str], rows: Iterable[Sequence[Any
 
     rows = [list(r) for r in rows]
     if numeric is None:
-        numeric = {i for i, v in enumerate(rows[0]) if isinstance(v, (int, float)) and not isinstance(v, bool)} if rows else set()
+        numeric = (
+            {i for i, v in enumerate(rows[0]) if isinstance(v, (int, float)) and not isinstance(v, bool)}
+            if rows
+            else set()
+        )
     numeric = set(numeric)
-    out = Table(title=Text(plain(title)) if title else None, caption=Text(plain(caption)) if caption else None,
-                min_width=max(len(title or ""), len(caption or "")) + 4)  # no wrapped title or caption
+    out = Table(
+        title=Text(plain(title)) if title else None,
+        caption=Text(plain(caption)) if caption else None,
+        min_width=max(len(title or ""), len(caption or "")) + 4,
+    )  # no wrapped title or caption
     cells = [[c if isinstance(c, Text) else Text(cell(c, digits)) for c in row] for row in rows]
     for i, header in enumerate(headers):  # on a narrow terminal headers and text wrap, numbers never do
         word = max((len(w) for w in str(header).split()), default=0)
         widest = max([word, *(r[i].cell_len for r in cells if i < len(r))]) if i in numeric else None
-        out.add_column(Text(plain(header)), justify="right" if i in numeric else "left", min_width=widest,
-                       overflow="fold")
+        out.add_column(
+            Text(plain(header)), justify="right" if i in numeric else "left", min_width=widest, overflow="fold"
+        )
     for row in cells:
         out.add_row(*row)
     return out
@@ -133,8 +148,19 @@ def modes_table(title: str, rows: Sequence[dict]):
     return table(
         title,
         ["mode", "f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "kind", "whirl", "component"],
-        [[r["mode"], r["frequency_Hz"], r["frequency_rpm"], r["damping_ratio"], r["log_decrement"], r["kind"],
-          "—" if r["whirl"] == "none" else r["whirl"], r["component"]] for r in rows],
+        [
+            [
+                r["mode"],
+                r["frequency_Hz"],
+                r["frequency_rpm"],
+                r["damping_ratio"],
+                r["log_decrement"],
+                r["kind"],
+                "—" if r["whirl"] == "none" else r["whirl"],
+                r["component"],
+            ]
+            for r in rows
+        ],
         numeric=range(5),
         caption="f damped frequency, ζ damping ratio, δ log decrement; mode numbers start at 1",
     )
@@ -208,8 +234,9 @@ def matrix_table(da, title: str):
     corner = f"{rows_dim} \\ {cols_dim}" + (f" [{unit}]" if unit else "")
     values = _values(da)
     rows = [[float(r), *(float(v) for v in values[i])] for i, r in enumerate(row_values)]
-    return table(f"{title}: {_header(da)}", [corner, *(sig(c) for c in col_values)], rows,
-                 numeric=range(len(col_values) + 1))
+    return table(
+        f"{title}: {_header(da)}", [corner, *(sig(c) for c in col_values)], rows, numeric=range(len(col_values) + 1)
+    )
 
 
 def dataset_json(ds, variables: Sequence[str] | None = None) -> dict:
@@ -219,6 +246,8 @@ def dataset_json(ds, variables: Sequence[str] | None = None) -> dict:
     return {
         "coords": {unit_key(str(c), ds[c].attrs.get("units")): ds[c].values.tolist() for c in ds.coords},
         "variables": {unit_key(v, ds[v].attrs.get("units")): ds[v].values.tolist() for v in names},
-        "dims": {unit_key(v, ds[v].attrs.get("units")): [unit_key(str(d), ds[d].attrs.get("units")) for d in ds[v].dims]
-                 for v in names},
+        "dims": {
+            unit_key(v, ds[v].attrs.get("units")): [unit_key(str(d), ds[d].attrs.get("units")) for d in ds[v].dims]
+            for v in names
+        },
     }

@@ -5,7 +5,7 @@ and the Monte-Carlo imbalance study (:mod:`flexshaft.analyses.transient`,
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -26,12 +26,20 @@ def _limits(design) -> tuple[float | None, float | None]:
 @guarded
 def runup(
     design: DesignArgument = None,
-    duration: Annotated[float, typer.Option("--duration", help="Run-up time from --start-rpm to --stop-rpm [s].")] = 10.0,
+    duration: Annotated[
+        float, typer.Option("--duration", help="Run-up time from --start-rpm to --stop-rpm [s].")
+    ] = 10.0,
     start_rpm: Annotated[float, typer.Option("--start-rpm", help="Start speed [rpm].")] = 0.0,
-    stop_rpm: Annotated[Optional[float], typer.Option(
-        "--stop-rpm", help="End speed [rpm]; default the operating speed (below --start-rpm: a run-down).")] = None,
+    stop_rpm: Annotated[
+        float | None,
+        typer.Option(
+            "--stop-rpm", help="End speed [rpm]; default the operating speed (below --start-rpm: a run-down)."
+        ),
+    ] = None,
     dwell: Annotated[float, typer.Option("--dwell", help="Time held at the end speed [s].")] = 0.0,
-    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for runup.nc and runup.png.")] = Path("flexshaft-runup"),
+    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for runup.nc and runup.png.")] = Path(
+        "flexshaft-runup"
+    ),
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -65,13 +73,22 @@ def runup(
     peak, _, at_speed = result.peak()
     at_station = float(result.shaft_x[int(np.argmax(result.shaft_orbit.max(axis=1)))])
     data = {
-        "design": loaded.design.name, "duration_s": duration, "start_rpm": start_rpm, "stop_rpm": rad_s_to_rpm(stop),
-        "peak_shaft_orbit_m": peak, "peak_speed_rpm": rad_s_to_rpm(at_speed), "peak_station_m": at_station,
+        "design": loaded.design.name,
+        "duration_s": duration,
+        "start_rpm": start_rpm,
+        "stop_rpm": rad_s_to_rpm(stop),
+        "peak_shaft_orbit_m": peak,
+        "peak_speed_rpm": rad_s_to_rpm(at_speed),
+        "peak_station_m": at_station,
         "steady_peak_shaft_orbit_m": float(np.max(steady.shaft_orbit)),
-        "actuator_orbit_max_m": {n: float(np.max(result.actuator_displacement[k]))
-                                 for k, n in enumerate(result.actuator_names)},
-        "actuator_force_max_N": {n: float(np.max(result.actuator_force[k])) for k, n in enumerate(result.actuator_names)},
-        "max_growth_rate_per_s": result.max_growth_rate, "basis_size": result.basis_size,
+        "actuator_orbit_max_m": {
+            n: float(np.max(result.actuator_displacement[k])) for k, n in enumerate(result.actuator_names)
+        },
+        "actuator_force_max_N": {
+            n: float(np.max(result.actuator_force[k])) for k, n in enumerate(result.actuator_names)
+        },
+        "max_growth_rate_per_s": result.max_growth_rate,
+        "basis_size": result.basis_size,
         "internal_damping": result.internal_damping,
     }
     if as_json:
@@ -82,32 +99,53 @@ def runup(
 
     console = stdout_console()
     print_line(console, loaded.design.name, style="bold")
-    print_line(console, f"run-up {sig(start_rpm)} → {sig(rad_s_to_rpm(stop))} rpm in {sig(duration)} s "
-                        f"({result.basis_size} modes, {result.internal_damping} internal damping)")
-    print_line(console, f"peak shaft orbit {sig(m_to_mm(peak))} mm at {sig(rad_s_to_rpm(at_speed))} rpm, "
-                        f"x = {sig(at_station)} m (steady-state spin-up peak {sig(m_to_mm(data['steady_peak_shaft_orbit_m']))} mm)")
-    rows = [[n, m_to_mm(data["actuator_orbit_max_m"][n]), data["actuator_force_max_N"][n]] for n in result.actuator_names]
+    print_line(
+        console,
+        f"run-up {sig(start_rpm)} → {sig(rad_s_to_rpm(stop))} rpm in {sig(duration)} s "
+        f"({result.basis_size} modes, {result.internal_damping} internal damping)",
+    )
+    print_line(
+        console,
+        f"peak shaft orbit {sig(m_to_mm(peak))} mm at {sig(rad_s_to_rpm(at_speed))} rpm, "
+        f"x = {sig(at_station)} m (steady-state spin-up peak {sig(m_to_mm(data['steady_peak_shaft_orbit_m']))} mm)",
+    )
+    rows = [
+        [n, m_to_mm(data["actuator_orbit_max_m"][n]), data["actuator_force_max_N"][n]] for n in result.actuator_names
+    ]
     if rows:
         console.print(table("actuators during the run-up", ["actuator", "orbit [mm]", "force [N]"], rows))
     if result.max_growth_rate > 0:
-        print_line(console, f"free whirl grows at {sig(result.max_growth_rate)} 1/s at the end speed: unstable there",
-                   style="bold red")
+        print_line(
+            console,
+            f"free whirl grows at {sig(result.max_growth_rate)} 1/s at the end speed: unstable there",
+            style="bold red",
+        )
     print_line(console, f"written to {folder}")
 
 
 @guarded
 def montecarlo(
     design: DesignArgument = None,
-    samples: Annotated[int, typer.Option("--samples", min=10, max=1_000_000, help="Number of imbalance samples.")] = 500,
+    samples: Annotated[
+        int, typer.Option("--samples", min=10, max=1_000_000, help="Number of imbalance samples.")
+    ] = 500,
     seed: Annotated[int, typer.Option("--seed", min=0, help="Random seed (the same seed gives the same samples).")] = 0,
-    grade: Annotated[float, typer.Option(
-        "--grade", help="Balance quality grade G [mm/s] (ISO 21940-11), e.g. 6.3 or 16.")] = 6.3,
-    gap_mm: Annotated[Optional[float], typer.Option(
-        "--gap-mm", help="Actuator gap [mm]; default the smallest active-bearing gap of the design.")] = None,
-    force_limit: Annotated[Optional[float], typer.Option(
-        "--force-limit", help="Actuator force limit [N]; default the smallest force capacity of the design.")] = None,
-    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for samples.nc and montecarlo.png (resumable).")]
-    = Path("flexshaft-montecarlo"),
+    grade: Annotated[
+        float, typer.Option("--grade", help="Balance quality grade G [mm/s] (ISO 21940-11), e.g. 6.3 or 16.")
+    ] = 6.3,
+    gap_mm: Annotated[
+        float | None,
+        typer.Option("--gap-mm", help="Actuator gap [mm]; default the smallest active-bearing gap of the design."),
+    ] = None,
+    force_limit: Annotated[
+        float | None,
+        typer.Option(
+            "--force-limit", help="Actuator force limit [N]; default the smallest force capacity of the design."
+        ),
+    ] = None,
+    out: Annotated[
+        Path, typer.Option("--out", "-o", help="Folder for samples.nc and montecarlo.png (resumable).")
+    ] = Path("flexshaft-montecarlo"),
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -130,18 +168,43 @@ def montecarlo(
     gap, capacity = _limits(loaded.design)
     gap = gap if gap_mm is None else gap_mm / 1000.0
     capacity = capacity if force_limit is None else force_limit
-    result = run_montecarlo(loaded.design, samples, seed=seed, grade_mm_s=grade, gap=gap, force_limit=capacity,
-                            jobs=jobs, client=dask, run_dir=folder / "sweep", progress=not as_json)
+    result = run_montecarlo(
+        loaded.design,
+        samples,
+        seed=seed,
+        grade_mm_s=grade,
+        gap=gap,
+        force_limit=capacity,
+        jobs=jobs,
+        client=dask,
+        run_dir=folder / "sweep",
+        progress=not as_json,
+    )
     result.dataset.to_netcdf(folder / "samples.nc")
     save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset
-    summary = {name: {"mean": float(np.nanmean(ds[name].values)), "p99": float(np.nanpercentile(ds[name].values, 99))}
-               for name in ("shaft_peak", "actuator_orbit_max", "actuator_excursion_max", "actuator_force_max",
-                            "actuator_load_max") if name in ds}
-    data = {"design": loaded.design.name, "samples": samples, "seed": seed, "grade_mm_s": grade,
-            "gap_m": gap, "force_limit_N": capacity, "summary": summary,
-            "p_gap_exceeded": None if result.gap_exceedance is None else result.gap_exceedance[0],
-            "p_force_exceeded": None if result.force_exceedance is None else result.force_exceedance[0]}
+    summary = {
+        name: {"mean": float(np.nanmean(ds[name].values)), "p99": float(np.nanpercentile(ds[name].values, 99))}
+        for name in (
+            "shaft_peak",
+            "actuator_orbit_max",
+            "actuator_excursion_max",
+            "actuator_force_max",
+            "actuator_load_max",
+        )
+        if name in ds
+    }
+    data = {
+        "design": loaded.design.name,
+        "samples": samples,
+        "seed": seed,
+        "grade_mm_s": grade,
+        "gap_m": gap,
+        "force_limit_N": capacity,
+        "summary": summary,
+        "p_gap_exceeded": None if result.gap_exceedance is None else result.gap_exceedance[0],
+        "p_force_exceeded": None if result.force_exceedance is None else result.force_exceedance[0],
+    }
     if as_json:
         print_json(data)
         return
@@ -150,18 +213,27 @@ def montecarlo(
     console = stdout_console()
     print_line(console, loaded.design.name, style="bold")
     print_line(console, f"{samples} samples, balance grade G {sig(grade)} mm/s, seed {seed}")
-    for key, label, scale, unit in (("shaft_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
-                                    ("actuator_orbit_max", "largest actuator orbit", m_to_mm, "mm"),
-                                    ("actuator_excursion_max", "largest actuator excursion (static + orbit)", m_to_mm, "mm"),
-                                    ("actuator_force_max", "largest actuator dynamic force", float, "N"),
-                                    ("actuator_load_max", "largest actuator force (static + dynamic)", float, "N")):
+    for key, label, scale, unit in (
+        ("shaft_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
+        ("actuator_orbit_max", "largest actuator orbit", m_to_mm, "mm"),
+        ("actuator_excursion_max", "largest actuator excursion (static + orbit)", m_to_mm, "mm"),
+        ("actuator_force_max", "largest actuator dynamic force", float, "N"),
+        ("actuator_load_max", "largest actuator force (static + dynamic)", float, "N"),
+    ):
         if key in summary:
-            print_line(console, f"{label}: mean {sig(scale(summary[key]['mean']))} {unit}, "
-                                f"99th percentile {sig(scale(summary[key]['p99']))} {unit}")
-    for name, value, limit in (("gap", result.gap_exceedance, gap and m_to_mm(gap)),
-                               ("force limit", result.force_exceedance, capacity)):
+            print_line(
+                console,
+                f"{label}: mean {sig(scale(summary[key]['mean']))} {unit}, "
+                f"99th percentile {sig(scale(summary[key]['p99']))} {unit}",
+            )
+    for name, value, limit in (
+        ("gap", result.gap_exceedance, gap and m_to_mm(gap)),
+        ("force limit", result.force_exceedance, capacity),
+    ):
         if value is not None:
             unit = "mm" if name == "gap" else "N"
-            print_line(console, f"P({name} {sig(limit)} {unit} exceeded, static + dynamic) = {sig(value[0], 3)} "
-                                f"± {sig(value[1], 2)}")
+            print_line(
+                console,
+                f"P({name} {sig(limit)} {unit} exceeded, static + dynamic) = {sig(value[0], 3)} ± {sig(value[1], 2)}",
+            )
     print_line(console, f"written to {folder}")

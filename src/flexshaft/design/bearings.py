@@ -9,18 +9,11 @@ or a transfer function, amplifier lag) and its sensor station. Stiffness [N/m], 
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
-from flexshaft.design.fields import (
-    BearingDirection,
-    Coefficients,
-    FrozenModel,
-    Name,
-    Problems,
-    format_value,
-)
+from flexshaft.design.fields import BearingDirection, Coefficients, FrozenModel, Name, Problems, format_value
 from flexshaft.design.quantities import (
     AirGap,
     BackupGap,
@@ -134,8 +127,7 @@ class Controller(FrozenModel):
         problems = Problems()
         if self.denominator[0] == 0.0:
             problems.add(
-                ("denominator",),
-                f"leading coefficient must be non-zero (got {format_value(list(self.denominator))})",
+                ("denominator",), f"leading coefficient must be non-zero (got {format_value(list(self.denominator))})"
             )
         elif self.numerator_degree > len(self.denominator) - 1:
             problems.add(
@@ -247,8 +239,17 @@ class ActiveBearing(_BearingBase):
     bias_current: Current | None = None
     coil_turns: CoilTurns | None = None
     pole_area: PoleArea | None = None
-    pole_angle: Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=90.0, description=(
-        "angle of the poles to the control axis, 0 to 90 deg"), json_schema_extra={"unit": "deg"})] = 22.5
+    pole_angle: Annotated[
+        float,
+        Field(
+            strict=True,
+            allow_inf_nan=False,
+            ge=0.0,
+            lt=90.0,
+            description=("angle of the poles to the control axis, 0 to 90 deg"),
+            json_schema_extra={"unit": "deg"},
+        ),
+    ] = 22.5
     saturation_flux_density: FluxDensity | None = None
 
     @model_validator(mode="before")
@@ -265,10 +266,7 @@ class ActiveBearing(_BearingBase):
             for field in ("kp", "kd", "integral_gain", "derivative_cutoff"):
                 value = getattr(self, field)
                 if value is not None:
-                    problems.add(
-                        (field,),
-                        f"must be omitted when a controller is given (got {format_value(value)})",
-                    )
+                    problems.add((field,), f"must be omitted when a controller is given (got {format_value(value)})")
         elif self.kp is None:
             problems.add(("kp",), "required key is missing (give kp [N/m], or a controller)")
         if self.uses_magnet_geometry:
@@ -345,4 +343,4 @@ class ActiveBearing(_BearingBase):
         return (kd + kp / wd, kp + k_int / wd, k_int), (1.0 / wd, 1.0, 0.0)
 
 
-Bearing = Annotated[Union[ContactBearing, ActiveBearing], Field(discriminator="kind")]
+Bearing = Annotated[ContactBearing | ActiveBearing, Field(discriminator="kind")]

@@ -13,6 +13,7 @@ from typing import Annotated
 
 from pydantic import Field, StrictBool, field_validator, model_validator
 
+from flexshaft.design.bearings import ActiveBearing, Bearing, ContactBearing, Controller  # re-exported
 from flexshaft.design.fields import (
     ZERO3,
     DofName,
@@ -38,23 +39,19 @@ from flexshaft.design.quantities import (
     Station,
     WallThickness,
 )
-from flexshaft.design.bearings import ActiveBearing, Bearing, ContactBearing, Controller  # re-exported
 from flexshaft.design.segments import MAX_SEGMENTS, ShaftSegment, Tube, check_layup
 
 #: The ply layup as written in the design file (parsed by :func:`~flexshaft.design.layup.parse_layup`).
-Layup = Annotated[str, Field(strict=True, max_length=MAX_LAYUP_LENGTH,
-                             description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters")]
-
-__all__ = [
-    "ActiveBearing",
-    "Bearing",
-    "ContactBearing",
-    "Controller",
-    "Disk",
-    "EndMass",
-    "Shaft",
-    "Tailboom",
+Layup = Annotated[
+    str,
+    Field(
+        strict=True,
+        max_length=MAX_LAYUP_LENGTH,
+        description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters",
+    ),
 ]
+
+__all__ = ["ActiveBearing", "Bearing", "ContactBearing", "Controller", "Disk", "EndMass", "Shaft", "Tailboom"]
 
 # ------------------------------------------------------------------------------------------------
 # Shaft and tailboom
@@ -172,14 +169,27 @@ class Shaft(FrozenModel):
         does not inherits both from ``[shaft]``.
         """
         if not self.segments:
-            return (Tube(name="shaft", x_start=self.x_start, x_end=self.x_end, outer_diameter=self.outer_diameter,
-                         wall_thickness=self.wall_thickness, material=self.material, layup=self.layup),)
+            return (
+                Tube(
+                    name="shaft",
+                    x_start=self.x_start,
+                    x_end=self.x_end,
+                    outer_diameter=self.outer_diameter,
+                    wall_thickness=self.wall_thickness,
+                    material=self.material,
+                    layup=self.layup,
+                ),
+            )
         return tuple(
-            Tube(name=s.name, x_start=s.x_start, x_end=s.x_end,
-                 outer_diameter=self.outer_diameter if s.outer_diameter is None else s.outer_diameter,
-                 wall_thickness=self.wall_thickness if s.wall_thickness is None else s.wall_thickness,
-                 material=self.material if s.material is None else s.material,
-                 layup=s.layup if (s.material is not None or s.layup is not None) else self.layup)
+            Tube(
+                name=s.name,
+                x_start=s.x_start,
+                x_end=s.x_end,
+                outer_diameter=self.outer_diameter if s.outer_diameter is None else s.outer_diameter,
+                wall_thickness=self.wall_thickness if s.wall_thickness is None else s.wall_thickness,
+                material=self.material if s.material is None else s.material,
+                layup=s.layup if (s.material is not None or s.layup is not None) else self.layup,
+            )
             for s in self.segments
         )
 
@@ -277,8 +287,6 @@ class Tailboom(FrozenModel):
 
 # ------------------------------------------------------------------------------------------------
 # Disks
-
-
 
 
 class Disk(FrozenModel):

@@ -15,17 +15,12 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Sequence
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 from pydantic_core import PydanticCustomError
 
-from flexshaft.design.quantities import (
-    MAX_DESIGN_NAME_LENGTH,
-    MAX_NAME_LENGTH,
-    ControllerCoefficient,
-    SemiAxis,
-)
+from flexshaft.design.quantities import MAX_DESIGN_NAME_LENGTH, MAX_NAME_LENGTH, ControllerCoefficient, SemiAxis
 
 __all__ = [
     "BearingDirection",
@@ -60,17 +55,47 @@ __all__ = [
 Finite = Annotated[float, Field(strict=True, allow_inf_nan=False)]
 Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0)]
 NonNegative = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0)]
-LossFactor = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0, description=(
-    "hysteretic loss factor η in [0, 1) (polyurethane matrices reach 0.1-0.3)"), json_schema_extra={"unit": "-"})]
+LossFactor = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        lt=1.0,
+        description=("hysteretic loss factor η in [0, 1) (polyurethane matrices reach 0.1-0.3)"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
 Vector3 = tuple[Finite, Finite, Finite]
 NonNegativeVector3 = tuple[NonNegative, NonNegative, NonNegative]
 SemiAxes = tuple[SemiAxis, SemiAxis]
-Name = Annotated[str, Field(strict=True, min_length=1, max_length=MAX_NAME_LENGTH,
-                            description=f"identifier, 1 to {MAX_NAME_LENGTH} characters")]
-DesignName = Annotated[str, Field(strict=True, max_length=MAX_DESIGN_NAME_LENGTH,
-                                  description=f"title of the design, at most {MAX_DESIGN_NAME_LENGTH} characters")]
-ElementCount = Annotated[int, Field(strict=True, ge=1, le=2000, description="approximate element count, 1 to 2000 "
-                                    "(the problem-size estimate of flexshaft.assembly.size bounds the total)")]
+Name = Annotated[
+    str,
+    Field(
+        strict=True,
+        min_length=1,
+        max_length=MAX_NAME_LENGTH,
+        description=f"identifier, 1 to {MAX_NAME_LENGTH} characters",
+    ),
+]
+DesignName = Annotated[
+    str,
+    Field(
+        strict=True,
+        max_length=MAX_DESIGN_NAME_LENGTH,
+        description=f"title of the design, at most {MAX_DESIGN_NAME_LENGTH} characters",
+    ),
+]
+ElementCount = Annotated[
+    int,
+    Field(
+        strict=True,
+        ge=1,
+        le=2000,
+        description="approximate element count, 1 to 2000 "
+        "(the problem-size estimate of flexshaft.assembly.size bounds the total)",
+    ),
+]
 Coefficients = Annotated[tuple[ControllerCoefficient, ...], Field(min_length=1, max_length=21)]
 
 #: Degree-of-freedom names of a shaft node, in the order of docs/model.md (coordinates and DOFs).
@@ -86,7 +111,7 @@ PROBLEMS_ERROR_TYPE = "flexshaft_problems"
 LAYUP_ERROR_TYPE = "flexshaft_layup"
 
 #: Path of a field below the model that reports it, e.g. ``("bearings", 2, "x")``.
-FieldPath = tuple[Union[str, int], ...]
+FieldPath = tuple[str | int, ...]
 #: Default of optional 3-vectors (moments, load factors, inertias).
 ZERO3 = (0.0, 0.0, 0.0)
 
@@ -151,9 +176,7 @@ class Problems:
 
     def raise_if_any(self) -> None:
         if self.items:
-            summary = "; ".join(
-                ".".join(str(part) for part in path) + ": " + message for path, message in self.items
-            )
+            summary = "; ".join(".".join(str(part) for part in path) + ": " + message for path, message in self.items)
             raise PydanticCustomError(
                 PROBLEMS_ERROR_TYPE, "{summary}", {"summary": summary, "problems": tuple(self.items)}
             )

@@ -28,10 +28,7 @@ from pydantic import BaseModel, ValidationError
 from flexshaft.design.messages import key_text, problems_from_validation
 from flexshaft.design.problems import DesignError, Problem
 from flexshaft.design.reading import read_design_bytes, text_problems
-from flexshaft.design.schema import (
-    Design,
-    format_value,
-)
+from flexshaft.design.schema import Design, format_value
 
 __all__ = [
     "DEFAULT_DESIGN",
@@ -54,8 +51,11 @@ __all__ = [
 EMBEDDED_DESIGNS: dict[str, tuple[str, str]] = {
     "baseline": ("baseline.toml", "thesis Table 3.1 study configuration (K_p 1e7 N/m, K_d 0); fails its requirements"),
     "tuned": ("tuned.toml", "tuned final design: Table 3.1 driveline with spin-up-tuned actuator gains; passes"),
-    "current": ("current_driveline.toml", "today's segmented aluminium driveline of the same boom, power and speed "
-                                          "(five tubes, four disc couplings, four hangers, a damper); passes"),
+    "current": (
+        "current_driveline.toml",
+        "today's segmented aluminium driveline of the same boom, power and speed "
+        "(five tubes, four disc couplings, four hangers, a damper); passes",
+    ),
 }
 #: The embedded design ``flexshaft run`` analyses when given no design file.
 DEFAULT_DESIGN = "tuned"
@@ -151,7 +151,9 @@ def embedded_text(name: str) -> str:
     """
     if not isinstance(name, str) or name not in EMBEDDED_DESIGNS:
         allowed = ", ".join(EMBEDDED_DESIGNS)
-        raise DesignError([Problem("<embedded design>", f"no such embedded design (got {format_value(name)}; allowed: {allowed})")])
+        raise DesignError(
+            [Problem("<embedded design>", f"no such embedded design (got {format_value(name)}; allowed: {allowed})")]
+        )
     filename = EMBEDDED_DESIGNS[name][0]
     return resources.files("flexshaft.design").joinpath(filename).read_text(encoding="utf-8")
 
@@ -302,8 +304,7 @@ def _set_path(data: dict[str, Any], path: str, value: Any) -> Problem | None:
     if parts is None:
         shown = path if re.fullmatch(r"[\x21-\x7e]+", path) else format_value(path)
         return Problem(
-            shown,
-            'malformed override path (expected keys joined by "." with optional [index], e.g. bearings[1].kp)',
+            shown, 'malformed override path (expected keys joined by "." with optional [index], e.g. bearings[1].kp)'
         )
     container: Any = data
     walked = ""

@@ -42,15 +42,31 @@ __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 #: drivelines run at 3,000-8,000 rev/min and a 0.1 m shaft at 10^6 rev/min would have a surface
 #: speed of 5 km/s; far larger values only overflow the gyroscopic matrix Ω G to inf/nan.
 MAX_SPEED_RPM = 1.0e6
-MainRotorSpeed = quantity("rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)",
-                          gt=0.0, le=5000.0)
-SpeedRpm = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=MAX_SPEED_RPM, description=(
-    "shaft speed from 0 to 1e6 rev/min (a 0.1 m shaft at 1e6 rev/min has a surface speed of 5 km/s)"),
-    json_schema_extra={"unit": "rev/min"})]
-SpeedRadS = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=rpm_to_rad_s(MAX_SPEED_RPM),
-                                   description="shaft speed from 0 to 1e6 rev/min expressed in rad/s",
-                                   json_schema_extra={"unit": "rad/s"})]
-
+MainRotorSpeed = quantity(
+    "rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)", gt=0.0, le=5000.0
+)
+SpeedRpm = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=MAX_SPEED_RPM,
+        description=("shaft speed from 0 to 1e6 rev/min (a 0.1 m shaft at 1e6 rev/min has a surface speed of 5 km/s)"),
+        json_schema_extra={"unit": "rev/min"},
+    ),
+]
+SpeedRadS = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=rpm_to_rad_s(MAX_SPEED_RPM),
+        description="shaft speed from 0 to 1e6 rev/min expressed in rad/s",
+        json_schema_extra={"unit": "rad/s"},
+    ),
+]
 
 
 class Operating(FrozenModel):
@@ -77,8 +93,9 @@ class Operating(FrozenModel):
     speed: SpeedRadS | None = None
     power: Power
     main_rotor_speed_rpm: MainRotorSpeed | None = None
-    main_rotor_blades: Annotated[int, Field(strict=True, ge=1, le=12, description=(
-        "number of main-rotor blades N, 1 to 12"))] | None = None
+    main_rotor_blades: (
+        Annotated[int, Field(strict=True, ge=1, le=12, description=("number of main-rotor blades N, 1 to 12"))] | None
+    ) = None
 
     def main_rotor_frequencies(self) -> dict[str, float]:
         """The main rotor's excitation frequencies at the operating point [Hz]: 1/rev and N/rev
@@ -104,8 +121,7 @@ class Operating(FrozenModel):
         elif self.speed_rad_s == 0.0 and self.power > 0.0:
             problems.add(
                 ("power",),
-                f"must be 0 when the speed is 0, the torque P/Ω would be infinite "
-                f"(got {format_value(self.power)})",
+                f"must be 0 when the speed is 0, the torque P/Ω would be infinite (got {format_value(self.power)})",
             )
         elif self.power > MAX_TORQUE * self.speed_rad_s:
             problems.add(
@@ -160,7 +176,7 @@ class PointLoad(FrozenModel):
         if self.on == "end_mass" and self.x is not None:
             problems.add(("x",), f'must be omitted for on = "end_mass" (got {format_value(self.x)})')
         elif self.on != "end_mass" and self.x is None:
-            problems.add(("x",), f'required key is missing (the station [m] on the {self.on})')
+            problems.add(("x",), f"required key is missing (the station [m] on the {self.on})")
         problems.raise_if_any()
         return self
 

@@ -8,28 +8,24 @@ carry the SI name). The ``kind`` key selects the model (``"lamina"`` or ``"isotr
 from __future__ import annotations
 
 import math
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from flexshaft.design.fields import (
-    FrozenModel,
-    LossFactor,
-    Problems,
-    format_number,
-    format_value,
-)
-from flexshaft.design.quantities import (
-    Density,
-    Modulus,
-    PoissonRatio,
-    Strength,
-    TsaiWuInteraction,
-)
+from flexshaft.design.fields import FrozenModel, LossFactor, Problems, format_number, format_value
+from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction
 from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
-__all__ = ["DEFAULT_ALPHA_L", "DEFAULT_ALPHA_T", "DEFAULT_NU_23", "DEFAULT_SHEAR_CORRECTION",
-           "DEFAULT_STRESS_FREE_TEMPERATURE_C", "Isotropic", "Lamina", "Material"]
+__all__ = [
+    "DEFAULT_ALPHA_L",
+    "DEFAULT_ALPHA_T",
+    "DEFAULT_NU_23",
+    "DEFAULT_SHEAR_CORRECTION",
+    "DEFAULT_STRESS_FREE_TEMPERATURE_C",
+    "Isotropic",
+    "Lamina",
+    "Material",
+]
 
 #: Transverse Poisson ratio nu_23 [-] behind the default G_23 = E_T / (2 (1 + nu_23)) = E_T / 3.
 DEFAULT_NU_23 = 0.5
@@ -52,18 +48,40 @@ DEFAULT_STRESS_FREE_TEMPERATURE_C = 100.0
 #: Plausible bounds of a thermal expansion coefficient [1/K]: catches values given in ppm/K.
 _ALPHA_LIMIT = 1e-3
 
-ShearCorrection = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0.0, le=1.0, description=(
-    "first-order shear correction factor k in (0, 1]"), json_schema_extra={"unit": "-"})]
-Celsius = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=-ZERO_CELSIUS, le=400.0, description=(
-    "temperature above absolute zero and at most 400 °C (polymer matrices decompose near 300 °C)"),
-    json_schema_extra={"unit": "degC"})]
+ShearCorrection = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        gt=0.0,
+        le=1.0,
+        description=("first-order shear correction factor k in (0, 1]"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
+Celsius = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        gt=-ZERO_CELSIUS,
+        le=400.0,
+        description=("temperature above absolute zero and at most 400 °C (polymer matrices decompose near 300 °C)"),
+        json_schema_extra={"unit": "degC"},
+    ),
+]
 #: Thermal expansion [1/K]: finite here; the range (±1e-3 1/K, with a hint for values in ppm/K)
 #: is checked by :meth:`Lamina._check`. The JSON schema shows the range of
 #: :data:`~flexshaft.design.quantities.ExpansionCoefficient`.
-_Expansion = Annotated[float, Field(
-    strict=True, allow_inf_nan=False,
-    description="thermal expansion coefficient within ±1e-3 1/K (polymers 2e-4; a value in ppm/K needs the factor 1e-6)",
-    json_schema_extra={"unit": "1/K", "minimum": -_ALPHA_LIMIT, "maximum": _ALPHA_LIMIT})]
+_Expansion = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        description="thermal expansion coefficient within ±1e-3 1/K (polymers 2e-4; a value in ppm/K needs the factor 1e-6)",
+        json_schema_extra={"unit": "1/K", "minimum": -_ALPHA_LIMIT, "maximum": _ALPHA_LIMIT},
+    ),
+]
 
 
 class Lamina(FrozenModel):
@@ -271,4 +289,4 @@ class Isotropic(FrozenModel):
         return self.E / (2.0 * self.G) - 1.0
 
 
-Material = Annotated[Union[Lamina, Isotropic], Field(discriminator="kind")]
+Material = Annotated[Lamina | Isotropic, Field(discriminator="kind")]

@@ -256,8 +256,12 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
         return Problem(path, f"must be a number (got {_got(value)})")
     if kind in ("int_type", "int_parsing", "int_from_float"):
         return Problem(path, f"must be an integer (got {_got(value)})")
-    comparisons = {"greater_than": ("gt", ">"), "greater_than_equal": ("ge", ">="),
-                   "less_than": ("lt", "<"), "less_than_equal": ("le", "<=")}
+    comparisons = {
+        "greater_than": ("gt", ">"),
+        "greater_than_equal": ("ge", ">="),
+        "less_than": ("lt", "<"),
+        "less_than_equal": ("le", "<="),
+    }
     if kind in comparisons:
         key, symbol = comparisons[kind]
         bound = ctx.get(key)
@@ -274,8 +278,10 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
         return Problem(path, f"must not be empty (got {_got(value)})")
     if kind == "string_too_long":
         length = len(value) if isinstance(value, str) else "?"
-        return Problem(path, f"is {length:,} characters long (got {_got(value)}; allowed: at most "
-                             f"{ctx.get('max_length')} characters)")
+        return Problem(
+            path,
+            f"is {length:,} characters long (got {_got(value)}; allowed: at most {ctx.get('max_length')} characters)",
+        )
     if kind == "literal_error":
         annotation = located.annotation
         if typing.get_origin(annotation) is Literal:

@@ -13,7 +13,6 @@ from typing import Any
 __all__ = ["DesignError", "Problem"]
 
 
-
 @dataclass(frozen=True)
 class Problem:
     """One input problem: where (a field path such as ``bearings[2].x``, or a file) and what."""

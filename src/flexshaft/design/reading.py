@@ -55,15 +55,25 @@ def read_design_bytes(path: str | os.PathLike[str]) -> bytes:
         if stat.S_ISDIR(info.st_mode):
             raise IsADirectoryError(21, "is a directory")
         if not stat.S_ISREG(info.st_mode):
-            kind = ("a FIFO (named pipe)" if stat.S_ISFIFO(info.st_mode) else
-                    "a character device" if stat.S_ISCHR(info.st_mode) else
-                    "a block device" if stat.S_ISBLK(info.st_mode) else
-                    "a socket" if stat.S_ISSOCK(info.st_mode) else "not a regular file")
-            raise ValueError(f"is {kind}, not a design file (allowed: a regular file of at most "
-                             f"{MAX_DESIGN_BYTES:,} bytes)")
+            kind = (
+                "a FIFO (named pipe)"
+                if stat.S_ISFIFO(info.st_mode)
+                else "a character device"
+                if stat.S_ISCHR(info.st_mode)
+                else "a block device"
+                if stat.S_ISBLK(info.st_mode)
+                else "a socket"
+                if stat.S_ISSOCK(info.st_mode)
+                else "not a regular file"
+            )
+            raise ValueError(
+                f"is {kind}, not a design file (allowed: a regular file of at most {MAX_DESIGN_BYTES:,} bytes)"
+            )
         if info.st_size > MAX_DESIGN_BYTES:
-            raise ValueError(f"is {info.st_size:,} bytes long (allowed: at most {MAX_DESIGN_BYTES:,} bytes; "
-                             "a design file is a few kilobytes)")
+            raise ValueError(
+                f"is {info.st_size:,} bytes long (allowed: at most {MAX_DESIGN_BYTES:,} bytes; "
+                "a design file is a few kilobytes)"
+            )
         if hasattr(os, "set_blocking"):
             os.set_blocking(descriptor, True)
         chunks, size = [], 0
@@ -74,8 +84,10 @@ def read_design_bytes(path: str | os.PathLike[str]) -> bytes:
             chunks.append(chunk)
             size += len(chunk)
         if size > MAX_DESIGN_BYTES:
-            raise ValueError(f"is more than {MAX_DESIGN_BYTES:,} bytes long (allowed: at most "
-                             f"{MAX_DESIGN_BYTES:,} bytes; a design file is a few kilobytes)")
+            raise ValueError(
+                f"is more than {MAX_DESIGN_BYTES:,} bytes long (allowed: at most "
+                f"{MAX_DESIGN_BYTES:,} bytes; a design file is a few kilobytes)"
+            )
         return b"".join(chunks)
     finally:
         os.close(descriptor)
@@ -87,7 +99,7 @@ def _keys(line: str) -> list[str]:
     keys, start = [], 0
     for match in _KEY_BOUNDARY.finditer(line):
         if match.group() == "=":
-            keys.append(line[start:match.start()])
+            keys.append(line[start : match.start()])
         start = match.end()
     return keys
 
@@ -101,8 +113,10 @@ def text_problems(text: str) -> list[str]:
         return [f"the text is {len(text):,} characters long (allowed: at most {MAX_DESIGN_BYTES:,})"]
     for number, line in enumerate(text.split("\n"), start=1):
         if len(line) > MAX_LINE_LENGTH:
-            return [f"line {number} is {len(line):,} characters long (allowed: at most {MAX_LINE_LENGTH:,}; a "
-                    "design file has short lines)"]
+            return [
+                f"line {number} is {len(line):,} characters long (allowed: at most {MAX_LINE_LENGTH:,}; a "
+                "design file has short lines)"
+            ]
     problems: list[str] = []
     blanked = _QUOTED.sub(lambda match: "\x00" + "\n" * match.group().count("\n"), text)
     depth = 0
@@ -115,13 +129,15 @@ def text_problems(text: str) -> list[str]:
             if parts > MAX_KEY_DEPTH:
                 problems.append(f"line {number}: a dotted key with {parts:,} parts (allowed: at most {MAX_KEY_DEPTH})")
                 return problems
-        body = line[header.end():] if header else line
+        body = line[header.end() :] if header else line
         for char in body:
             if char in "[{":
                 depth += 1
                 if depth > MAX_NESTING:
-                    problems.append(f"line {number}: arrays or inline tables nested more than {MAX_NESTING} deep "
-                                    f"(allowed: at most {MAX_NESTING})")
+                    problems.append(
+                        f"line {number}: arrays or inline tables nested more than {MAX_NESTING} deep "
+                        f"(allowed: at most {MAX_NESTING})"
+                    )
                     return problems
             elif char in "]}":
                 depth = max(depth - 1, 0)

@@ -41,14 +41,7 @@ from pydantic_core import PydanticUndefined
 
 from flexshaft.design.schema import Design
 
-__all__ = [
-    "FieldDoc",
-    "TableDoc",
-    "design_json_schema",
-    "design_reference",
-    "design_tables",
-    "main",
-]
+__all__ = ["FieldDoc", "TableDoc", "design_json_schema", "design_reference", "design_tables", "main"]
 
 #: JSON Schema dialect of the export (what pydantic generates).
 JSON_SCHEMA_DIALECT = "https://json-schema.org/draft/2020-12/schema"
@@ -199,8 +192,12 @@ class _Shape:
     note: str = ""
 
 
-_SCALARS = {bool: ("boolean", "booleans"), int: ("integer", "integers"), float: ("float", "floats"),
-            str: ("string", "strings")}
+_SCALARS = {
+    bool: ("boolean", "booleans"),
+    int: ("integer", "integers"),
+    float: ("float", "floats"),
+    str: ("string", "strings"),
+}
 
 
 def _shape(annotation: Any, links: dict[type[BaseModel], str], extra: tuple[Any, ...] = ()) -> _Shape:
@@ -236,8 +233,12 @@ def _shape(annotation: Any, links: dict[type[BaseModel], str], extra: tuple[Any,
             count = "" if variable else f"{len(args)} "
             plural = _plural(element.type)
             each = [f"each {text}" for text in element.allowed if text]
-            shape = _Shape(f"array of {count}{plural}", [_lengths(metadata, "items")] + each,
-                           unit or element.unit, note or element.note)
+            shape = _Shape(
+                f"array of {count}{plural}",
+                [_lengths(metadata, "items")] + each,
+                unit or element.unit,
+                note or element.note,
+            )
     elif origin is dict:
         key, value = typing.get_args(base)
         key_base, _ = _unwrap(key)
@@ -245,11 +246,18 @@ def _shape(annotation: Any, links: dict[type[BaseModel], str], extra: tuple[Any,
         if _models(value):
             shape = _Shape("tables by name", [element.allowed[0], _lengths(metadata, "tables")])
         else:
-            keys = (", ".join(f"`{k}`" for k in typing.get_args(key_base))
-                    if typing.get_origin(key_base) is Literal else "any name")
+            keys = (
+                ", ".join(f"`{k}`" for k in typing.get_args(key_base))
+                if typing.get_origin(key_base) is Literal
+                else "any name"
+            )
             each = [f"values {text}" for text in element.allowed if text]
-            shape = _Shape(f"inline table of {_plural(element.type)}", [f"keys {keys}"] + each,
-                           unit or element.unit, note or element.note)
+            shape = _Shape(
+                f"inline table of {_plural(element.type)}",
+                [f"keys {keys}"] + each,
+                unit or element.unit,
+                note or element.note,
+            )
     else:
         shape = _Shape(getattr(base, "__name__", str(base)), [])
     if not shape.unit:
@@ -289,7 +297,7 @@ def _split_docstring(model: type) -> tuple[str, str]:
     for match in _SECTION.finditer(doc):
         if match.group("title") == "Attributes":
             prose = doc[: match.start()].rstrip()
-            rest = doc[match.end():]
+            rest = doc[match.end() :]
             following = _SECTION.search(rest)
             attributes = rest[: following.start()] if following else rest
             break
@@ -324,7 +332,11 @@ def _attribute_docs(model: type[BaseModel]) -> dict[str, str]:
 
 def _markdown(text: str) -> str:
     """reStructuredText roles and literals of a docstring as Markdown."""
-    text = re.sub(r":[a-z]+:`~?([^`]+)`", lambda m: f"`{m.group(1).rpartition('.')[2] if '~' in m.group(0) else m.group(1)}`", text)
+    text = re.sub(
+        r":[a-z]+:`~?([^`]+)`",
+        lambda m: f"`{m.group(1).rpartition('.')[2] if '~' in m.group(0) else m.group(1)}`",
+        text,
+    )
     return text.replace("``", "`")
 
 
@@ -408,15 +420,17 @@ def design_tables() -> list[TableDoc]:
             note = shape.note
             own = info.description if info.description and info.description != note else ""
             description = own or docs.get(name, "")
-            fields.append(FieldDoc(
-                key=name,
-                type=shape.type,
-                unit=shape.unit or str(extras.get("unit", "")) or _unit_in(description),
-                default=_default(info),
-                allowed="; ".join(text for text in shape.allowed if text),
-                description=_markdown(description),
-                note=_markdown(note),
-            ))
+            fields.append(
+                FieldDoc(
+                    key=name,
+                    type=shape.type,
+                    unit=shape.unit or str(extras.get("unit", "")) or _unit_in(description),
+                    default=_default(info),
+                    allowed="; ".join(text for text in shape.allowed if text),
+                    description=_markdown(description),
+                    note=_markdown(note),
+                )
+            )
         prose, _ = _split_docstring(model)
         tables.append(TableDoc(header, links[model], _kind(model), model, _markdown(prose), tuple(fields)))
     return tables
@@ -498,8 +512,14 @@ def design_reference() -> str:
             if field.note:
                 label = "Range" if "float" in field.type or "integer" in field.type else "Limit"
                 description += f" *{label}:* {field.note.rstrip('.')}."
-            out.append("| " + " | ".join(_cell(text) for text in (
-                f"`{field.key}`", field.type, field.unit, field.default, field.allowed, description)) + " |")
+            out.append(
+                "| "
+                + " | ".join(
+                    _cell(text)
+                    for text in (f"`{field.key}`", field.type, field.unit, field.default, field.allowed, description)
+                )
+                + " |"
+            )
         out.append("")
     return "\n".join(out).rstrip() + "\n"
 
@@ -522,14 +542,19 @@ def design_json_schema() -> dict[str, Any]:
             node["description"] = table.intro
         for field in table.fields:
             prop = node["properties"][field.key]
-            text = " ".join(part for part in (field.description, field.note.rstrip(".") + "." if field.note else "") if part)
+            text = " ".join(
+                part for part in (field.description, field.note.rstrip(".") + "." if field.note else "") if part
+            )
             if text:
                 prop["description"] = text
             if field.unit and "unit" not in prop:
                 prop["unit"] = field.unit
     first = {"$schema": JSON_SCHEMA_DIALECT, "title": "flexshaft design file"}
-    return {**first, **{key: value for key, value in schema.items() if key not in first and key != "$defs"},
-            "$defs": definitions}
+    return {
+        **first,
+        **{key: value for key, value in schema.items() if key not in first and key != "$defs"},
+        "$defs": definitions,
+    }
 
 
 def main(argv: list[str] | None = None) -> int:

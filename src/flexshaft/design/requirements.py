@@ -28,12 +28,39 @@ __all__ = ["DEFAULT_MIN_LOG_DECREMENT", "Requirements", "log_decrement_from_damp
 #: requirement is given.
 DEFAULT_MIN_LOG_DECREMENT = 0.1
 
-Margin = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=10.0, description=(
-    "margin as a fraction of the operating speed, 0 to 10"), json_schema_extra={"unit": "-"})]
-LogDecrement = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, le=100.0, description=(
-    "logarithmic decrement, 0 to 100"), json_schema_extra={"unit": "-"})]
-DampingRatio = Annotated[float, Field(strict=True, allow_inf_nan=False, ge=0.0, lt=1.0, description=(
-    "damping ratio in [0, 1)"), json_schema_extra={"unit": "-"})]
+Margin = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=10.0,
+        description=("margin as a fraction of the operating speed, 0 to 10"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
+LogDecrement = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=100.0,
+        description=("logarithmic decrement, 0 to 100"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
+DampingRatio = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        lt=1.0,
+        description=("damping ratio in [0, 1)"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
 
 
 def log_decrement_from_damping_ratio(damping_ratio: float) -> float:

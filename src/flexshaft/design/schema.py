@@ -56,12 +56,12 @@ from flexshaft.design.fields import (
     format_number,
     format_value,
 )
-from flexshaft.design.thermal_schema import Thermal
 from flexshaft.design.loads import MAX_SPEED_RPM, LineLoad, Loads, Operating, PointLoad
 from flexshaft.design.materials import Isotropic, Lamina, Material
 from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
 from flexshaft.design.segments import MAX_COUPLINGS, Coupling, ShaftSegment, Tube
+from flexshaft.design.thermal_schema import Thermal
 
 __all__ = [
     "Analysis",
@@ -224,9 +224,7 @@ class Design(FrozenModel):
                 f"(got {format_value(self.shaft.layup)})",
             )
         if self.tailboom is not None:
-            boom_material = self._material_reference(
-                problems, ("tailboom", "material"), self.tailboom.material
-            )
+            boom_material = self._material_reference(problems, ("tailboom", "material"), self.tailboom.material)
             if isinstance(boom_material, Lamina):
                 problems.add(
                     ("tailboom", "material"),
@@ -241,17 +239,24 @@ class Design(FrozenModel):
             path: FieldPath = ("shaft", "segments", index)
             material = self._material_reference(problems, path + ("material",), segment.material)
             if isinstance(material, Lamina) and tube.layup is None:
-                problems.add(path + ("layup",), f"required key is missing (the segment material "
-                                                f"{format_value(segment.material)} is a lamina)")
+                problems.add(
+                    path + ("layup",),
+                    f"required key is missing (the segment material {format_value(segment.material)} is a lamina)",
+                )
             elif isinstance(material, Isotropic) and tube.layup is not None:
-                problems.add(path + ("layup",), f"must be omitted for the isotropic material "
-                                                f"{format_value(segment.material)} (got {format_value(tube.layup)})")
+                problems.add(
+                    path + ("layup",),
+                    f"must be omitted for the isotropic material "
+                    f"{format_value(segment.material)} (got {format_value(tube.layup)})",
+                )
         for index, segment in enumerate(self.shaft.segments):
             inherited = self.materials.get(self.shaft.material)
             if segment.material is None and segment.layup is not None and isinstance(inherited, Isotropic):
-                problems.add(("shaft", "segments", index, "layup"),
-                             f"must be omitted for the isotropic material {format_value(self.shaft.material)} "
-                             f"(got {format_value(segment.layup)})")
+                problems.add(
+                    ("shaft", "segments", index, "layup"),
+                    f"must be omitted for the isotropic material {format_value(self.shaft.material)} "
+                    f"(got {format_value(segment.layup)})",
+                )
 
     def _check_couplings(self, problems: Problems) -> None:
         """Couplings strictly inside the shaft, at distinct stations."""
@@ -260,11 +265,15 @@ class Design(FrozenModel):
         seen: list[float] = []
         for index, coupling in enumerate(self.couplings):
             if not self.shaft.x_start + tol < coupling.x < self.shaft.x_end - tol:
-                problems.add(("couplings", index, "x"), f"{format_value(coupling.x)} is not strictly inside the "
-                                                        f"shaft {self._shaft_range()} (a coupling joins two pieces)")
+                problems.add(
+                    ("couplings", index, "x"),
+                    f"{format_value(coupling.x)} is not strictly inside the "
+                    f"shaft {self._shaft_range()} (a coupling joins two pieces)",
+                )
             elif any(abs(coupling.x - other) <= tol for other in seen):
-                problems.add(("couplings", index, "x"), f"{format_value(coupling.x)} repeats the station of "
-                                                        "another coupling")
+                problems.add(
+                    ("couplings", index, "x"), f"{format_value(coupling.x)} repeats the station of another coupling"
+                )
             seen.append(coupling.x)
 
     def _station_tolerance(self) -> float:
@@ -275,8 +284,11 @@ class Design(FrozenModel):
         tol = self._station_tolerance()
         for coupling in self.couplings:
             if abs(x - coupling.x) <= tol:
-                problems.add(path, f"{format_value(x)} is the station of coupling {format_value(coupling.name)}; "
-                                   "put it on one side of the joint")
+                problems.add(
+                    path,
+                    f"{format_value(x)} is the station of coupling {format_value(coupling.name)}; "
+                    "put it on one side of the joint",
+                )
 
     def _shaft_range(self) -> str:
         return f"[{format_number(self.shaft.x_start)}, {format_number(self.shaft.x_end)}] m"
@@ -296,8 +308,7 @@ class Design(FrozenModel):
         for index, bearing in enumerate(self.bearings):
             if not self._on_shaft(bearing.x):
                 problems.add(
-                    ("bearings", index, "x"),
-                    f"{format_value(bearing.x)} is outside the shaft {self._shaft_range()}",
+                    ("bearings", index, "x"), f"{format_value(bearing.x)} is outside the shaft {self._shaft_range()}"
                 )
             if self.tailboom is None:
                 for field in ("x_boom", "offset"):
@@ -314,8 +325,7 @@ class Design(FrozenModel):
                 note = "" if bearing.x_boom is not None else " (x_boom defaults to x; give x_boom)"
                 problems.add(
                     ("bearings", index, field),
-                    f"boom station {format_value(bearing.boom_x)} is outside the tailboom "
-                    f"{self._boom_range()}{note}",
+                    f"boom station {format_value(bearing.boom_x)} is outside the tailboom {self._boom_range()}{note}",
                 )
             if isinstance(bearing, ActiveBearing) and bearing.sensor_offset != 0.0:
                 self._check_sensor(problems, index, bearing)

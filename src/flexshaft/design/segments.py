@@ -26,13 +26,7 @@ from typing import Annotated, Literal, Union
 from pydantic import Field, field_validator, model_validator
 from pydantic_core import PydanticCustomError
 
-from flexshaft.design.fields import (
-    LAYUP_ERROR_TYPE,
-    FrozenModel,
-    Name,
-    Problems,
-    check_interval,
-)
+from flexshaft.design.fields import LAYUP_ERROR_TYPE, FrozenModel, Name, Problems, check_interval
 from flexshaft.design.layup import parse_layup
 from flexshaft.design.quantities import (
     MAX_LAYUP_LENGTH,
@@ -45,8 +39,16 @@ from flexshaft.design.quantities import (
     quantity,
 )
 
-__all__ = ["MAX_COUPLINGS", "MAX_SEGMENTS", "RIGID", "Coupling", "CouplingStiffness", "ShaftSegment", "Tube",
-           "check_layup"]
+__all__ = [
+    "MAX_COUPLINGS",
+    "MAX_SEGMENTS",
+    "RIGID",
+    "Coupling",
+    "CouplingStiffness",
+    "ShaftSegment",
+    "Tube",
+    "check_layup",
+]
 
 #: The value of a coupling stiffness that makes the joint rigid in that direction.
 RIGID = "rigid"
@@ -58,14 +60,22 @@ MAX_COUPLINGS = 255
 CouplingStiffness = Union[Stiffness, Literal["rigid"]]
 #: A torsional stiffness must carry the torque: > 0 or ``"rigid"``.
 TorsionalStiffness = Union[
-    quantity("N m/rad", "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)", gt=0.0, le=1e12),
+    quantity(
+        "N m/rad", "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)", gt=0.0, le=1e12
+    ),
     Literal["rigid"],
 ]
 #: An allowable misalignment angle [deg], in (0, 90).
 Angle = quantity("deg", "misalignment angle above 0 and below 90 deg", gt=0.0, lt=90.0)
 #: A layup string, as ``[shaft] layup``.
-Layup = Annotated[str, Field(strict=True, max_length=MAX_LAYUP_LENGTH,
-                             description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters")]
+Layup = Annotated[
+    str,
+    Field(
+        strict=True,
+        max_length=MAX_LAYUP_LENGTH,
+        description=f"ply layup in degrees, e.g. (55/-55/0/0)s; at most {MAX_LAYUP_LENGTH} characters",
+    ),
+]
 
 
 def check_layup(layup: str | None) -> str | None:

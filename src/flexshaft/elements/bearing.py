@@ -18,7 +18,6 @@ import numpy as np
 
 from flexshaft.elements.boom import BOOM_COLUMNS
 
-
 __all__ = ["RELATIVE_FIELDS", "attachment_transform", "point_rows", "relative_rows", "spring_matrix"]
 
 _V_COLS = [1, 5, 7, 11]  # v-plane element columns [v1, γ1, v2, γ2]

@@ -40,14 +40,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = [
-    "MU_0",
-    "bias_flux_density",
-    "current_gain",
-    "force_slope",
-    "magnet_constant",
-    "saturation_force",
-]
+__all__ = ["MU_0", "bias_flux_density", "current_gain", "force_slope", "magnet_constant", "saturation_force"]
 
 #: Permeability of free space μ0 [H/m] (the pre-2019 exact value; the SI 2019 value differs by 1e-10).
 MU_0 = 4e-7 * math.pi

@@ -43,7 +43,9 @@ def damping_colormap(vmin: float, vmax: float):
         lower = colormaps["Reds"](np.linspace(0.95, 0.45, 128))
         return ListedColormap(np.vstack([lower, upper])), TwoSlopeNorm(0.0, vmin, vmax)
     if vmax <= 0.0:
-        return ListedColormap(colormaps["Reds"](np.linspace(0.95, 0.45, 128))), Normalize(vmin, min(vmax, -1e-12) if vmax == vmin else vmax)
+        return ListedColormap(colormaps["Reds"](np.linspace(0.95, 0.45, 128))), Normalize(
+            vmin, min(vmax, -1e-12) if vmax == vmin else vmax
+        )
     return ListedColormap(upper), Normalize(0.0, vmax)
 
 
@@ -149,8 +151,14 @@ def campbell_figure(
         f, w = freqs[:, mode], labels[:, mode]
         for start, stop in _runs(w):
             end = min(stop + 1, speeds.size)  # one point of overlap keeps the curve continuous
-            ax.plot(speeds[start:end], f[start:end], color=color, ls=WHIRL_LINESTYLE[w[start]],
-                    lw=1.0 if delta is not None else 1.6, zorder=2)
+            ax.plot(
+                speeds[start:end],
+                f[start:end],
+                color=color,
+                ls=WHIRL_LINESTYLE[w[start]],
+                lw=1.0 if delta is not None else 1.6,
+                zorder=2,
+            )
 
     f_max = np.nanmax(freqs) if np.isfinite(freqs).any() else 1.0
     critical = vector("critical_speeds_rpm", critical_speeds_rpm)
@@ -162,14 +170,31 @@ def campbell_figure(
     handles = []
     present = [name for name in ("forward", "backward", "planar") if name in labels]
     for name in present:
-        handles.append(Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[name], marker=WHIRL_MARKER[name] if delta is not None else None,
-                              ms=5, label=f"{name} whirl"))
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color="0.3",
+                ls=WHIRL_LINESTYLE[name],
+                marker=WHIRL_MARKER[name] if delta is not None else None,
+                ms=5,
+                label=f"{name} whirl",
+            )
+        )
     if "none" in labels:
         names = sorted(set(kinds[labels == "none"])) if kinds is not None else ["torsional / axial"]
         for name in names:
-            handles.append(Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE["none"],
-                                  marker=WHIRL_MARKER.get(name, "s") if delta is not None else None, ms=5,
-                                  label=f"{name} (no 1× critical)"))
+            handles.append(
+                Line2D(
+                    [],
+                    [],
+                    color="0.3",
+                    ls=WHIRL_LINESTYLE["none"],
+                    marker=WHIRL_MARKER.get(name, "s") if delta is not None else None,
+                    ms=5,
+                    label=f"{name} (no 1× critical)",
+                )
+            )
     if delta is not None:
         finite = delta[np.isfinite(delta) & np.isfinite(freqs)]
         lo = max(float(finite.min()), LOG_DECREMENT_RANGE[0]) if finite.size else 0.0
@@ -184,30 +209,66 @@ def campbell_figure(
         for name in np.unique(markers.astype(str)):
             sel = (markers == name) & np.isfinite(freqs) & thin
             if sel.any():
-                mappable = ax.scatter(speeds2d[sel], freqs[sel], c=np.clip(delta[sel], lo, hi), cmap=cmap, norm=norm,
-                                      marker=WHIRL_MARKER.get(name, "o"), s=15, linewidths=0, zorder=3)
+                mappable = ax.scatter(
+                    speeds2d[sel],
+                    freqs[sel],
+                    c=np.clip(delta[sel], lo, hi),
+                    cmap=cmap,
+                    norm=norm,
+                    marker=WHIRL_MARKER.get(name, "o"),
+                    s=15,
+                    linewidths=0,
+                    zorder=3,
+                )
         extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
-            (bool(finite.size and finite.min() < lo), bool(finite.size and finite.max() > hi))]
+            (bool(finite.size and finite.min() < lo), bool(finite.size and finite.max() > hi))
+        ]
         nice_colorbar(fig, mappable, ax, "log decrement δ [-]", extend=extend, pad=0.045, fraction=0.045)
 
     for k, order in enumerate(harmonics):
-        (line,) = ax.plot(span, order * span / RPM_PER_HZ, color="0.15", lw=1.0,
-                          ls=(0, (6, 2, 1, 2)) if k else "-", alpha=0.8, label=f"{order:g}× shaft speed", zorder=1)
+        (line,) = ax.plot(
+            span,
+            order * span / RPM_PER_HZ,
+            color="0.15",
+            lw=1.0,
+            ls=(0, (6, 2, 1, 2)) if k else "-",
+            alpha=0.8,
+            label=f"{order:g}× shaft speed",
+            zorder=1,
+        )
         handles.append(line)
     for k, (name, f_op) in enumerate(rotor.items()):
         if operating_rpm:
-            (line,) = ax.plot(span, f_op * span / operating_rpm, color="tab:purple", lw=1.1, ls=(0, (5, 2, 1, 2)),
-                              zorder=1, label=f"main rotor {name}")
+            (line,) = ax.plot(
+                span,
+                f_op * span / operating_rpm,
+                color="tab:purple",
+                lw=1.1,
+                ls=(0, (5, 2, 1, 2)),
+                zorder=1,
+                label=f"main rotor {name}",
+            )
         else:
-            line = ax.axhline(f_op, color="tab:purple", lw=1.1, ls=(0, (5, 2, 1, 2)), zorder=1, label=f"main rotor {name}")
+            line = ax.axhline(
+                f_op, color="tab:purple", lw=1.1, ls=(0, (5, 2, 1, 2)), zorder=1, label=f"main rotor {name}"
+            )
         handles.append(line)
         x_end = span[1] if not operating_rpm else min(span[1], top * operating_rpm / f_op)
         y_end = f_op if not operating_rpm else f_op * x_end / operating_rpm
-        ax.annotate(f"MR {name}", (x_end, y_end), xytext=(-3, 3), textcoords="offset points", ha="right",
-                    va="bottom", fontsize=7.5, color="tab:purple")
+        ax.annotate(
+            f"MR {name}",
+            (x_end, y_end),
+            xytext=(-3, 3),
+            textcoords="offset points",
+            ha="right",
+            va="bottom",
+            fontsize=7.5,
+            color="tab:purple",
+        )
     if critical.size:
-        (marker,) = ax.plot(critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.3, ms=8,
-                            label="critical speed", zorder=4)
+        (marker,) = ax.plot(
+            critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.3, ms=8, label="critical speed", zorder=4
+        )
         handles.append(marker)
         _label_criticals(ax, critical)
     mark_operating(ax, operating_rpm)
@@ -236,8 +297,14 @@ def _label_criticals(ax, critical: np.ndarray) -> None:
             clusters.append([i])
     xs = [float(np.mean(critical[c])) for c in clusters]
     texts = [" / ".join(f"{critical[i]:.0f}" for i in c) + " rpm" for c in clusters]
-    place_point_labels(ax, xs, [x / RPM_PER_HZ for x in xs], texts, fontsize=7.5,
-                       bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
+    place_point_labels(
+        ax,
+        xs,
+        [x / RPM_PER_HZ for x in xs],
+        texts,
+        fontsize=7.5,
+        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8},
+    )
 
 
 def _mode_numbers(ax, speeds: np.ndarray, freqs: np.ndarray) -> None:
@@ -255,5 +322,13 @@ def _mode_numbers(ax, speeds: np.ndarray, freqs: np.ndarray) -> None:
     y_new = spread(px[:, 1], 7.5 * scale, ax.bbox.y0, ax.bbox.y1)
     inverse = ax.transData.inverted()
     for (mode, x, _), (xp, _), yn in zip(ends, px, y_new):
-        ax.annotate(str(mode + 1), (x, inverse.transform((xp, yn))[1]), xytext=(3, 0), textcoords="offset points",
-                    fontsize=7, va="center", ha="left", annotation_clip=False)
+        ax.annotate(
+            str(mode + 1),
+            (x, inverse.transform((xp, yn))[1]),
+            xytext=(3, 0),
+            textcoords="offset points",
+            fontsize=7,
+            va="center",
+            ha="left",
+            annotation_clip=False,
+        )

@@ -14,7 +14,16 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from flexshaft.plot.style import MM_PER_M, RPM_PER_HZ, WHIRL_LINESTYLE, log_scale, mark_operating, new_figure, styled, vector
+from flexshaft.plot.style import (
+    MM_PER_M,
+    RPM_PER_HZ,
+    WHIRL_LINESTYLE,
+    log_scale,
+    mark_operating,
+    new_figure,
+    styled,
+    vector,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -37,8 +46,9 @@ def _two(name: str, data: Mapping) -> list:
 
 
 @styled
-def campbell_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]],
-                            operating_rpm: float | None = None) -> Figure:
+def campbell_overlay_figure(
+    curves: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]], operating_rpm: float | None = None
+) -> Figure:
     """Campbell diagrams of two designs on one axes.
 
     Parameters
@@ -76,8 +86,10 @@ def campbell_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike, Arr
     span = np.array([0.0, top])
     (line,) = ax.plot(span, span / RPM_PER_HZ, color="0.15", lw=1.0, label="1× excitation")
     handles.append(line)
-    handles += [Line2D([], [], color="0.35", ls=WHIRL_LINESTYLE[name], label=f"{name} whirl")
-                for name in ("forward", "backward", "planar")]
+    handles += [
+        Line2D([], [], color="0.35", ls=WHIRL_LINESTYLE[name], label=f"{name} whirl")
+        for name in ("forward", "backward", "planar")
+    ]
     mark_operating(ax, operating_rpm)
     if operating_rpm is not None:
         handles.append(ax.get_lines()[-1])
@@ -91,8 +103,9 @@ def campbell_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike, Arr
 
 
 @styled
-def spinup_overlay_figure(responses: Mapping[str, tuple[ArrayLike, ArrayLike]], operating_rpm: float | None = None,
-                          limit: float | None = None) -> Figure:
+def spinup_overlay_figure(
+    responses: Mapping[str, tuple[ArrayLike, ArrayLike]], operating_rpm: float | None = None, limit: float | None = None
+) -> Figure:
     """Peak shaft orbit during spin-up of two designs (log scale).
 
     Parameters
@@ -125,8 +138,9 @@ def spinup_overlay_figure(responses: Mapping[str, tuple[ArrayLike, ArrayLike]], 
 
 
 @styled
-def safety_factor_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike, str]],
-                                 required: float | None = None) -> Figure:
+def safety_factor_overlay_figure(
+    curves: Mapping[str, tuple[ArrayLike, ArrayLike, str]], required: float | None = None
+) -> Figure:
     """Strength safety factor along the driveline of two designs (log scale).
 
     Parameters
@@ -148,8 +162,14 @@ def safety_factor_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike
         if np.isfinite(values).any():
             k = int(np.nanargmin(values))
             ax.plot(xs[k], values[k], "o", color=color, ms=6)
-            ax.annotate(f"{values[k]:.3g} at {xs[k]:.2f} m", (xs[k], values[k]), xytext=(6, -14),
-                        textcoords="offset points", color=color, fontsize=8.5)
+            ax.annotate(
+                f"{values[k]:.3g} at {xs[k]:.2f} m",
+                (xs[k], values[k]),
+                xytext=(6, -14),
+                textcoords="offset points",
+                color=color,
+                fontsize=8.5,
+            )
             lo, hi = min(lo, np.nanmin(values)), max(hi, np.nanmax(values))
     if required is not None:
         ax.axhline(required, color="tab:red", ls="--", lw=1.2, label=f"required {required:g}")
@@ -169,8 +189,9 @@ def safety_factor_overlay_figure(curves: Mapping[str, tuple[ArrayLike, ArrayLike
 
 
 @styled
-def static_deflection_overlay_figure(shapes: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]],
-                                     joints: Mapping[str, Sequence[float]] | None = None) -> Figure:
+def static_deflection_overlay_figure(
+    shapes: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]], joints: Mapping[str, Sequence[float]] | None = None
+) -> Figure:
     """Static deflection of the shaft of two designs: vertical and lateral panels [mm].
 
     Parameters
@@ -189,8 +210,15 @@ def static_deflection_overlay_figure(shapes: Mapping[str, tuple[ArrayLike, Array
             ax.plot(xs, d, color=color, label=label)
             stations = np.asarray(joints.get(label, ()), dtype=float)
             if stations.size:
-                ax.plot(stations, np.interp(stations, xs, d), "D", color=color, ms=5, mfc="white",
-                        label=f"{label}: couplings")
+                ax.plot(
+                    stations,
+                    np.interp(stations, xs, d),
+                    "D",
+                    color=color,
+                    ms=5,
+                    mfc="white",
+                    label=f"{label}: couplings",
+                )
     axes[0, 0].set_ylabel("vertical v [mm]")
     axes[1, 0].set_ylabel("lateral w [mm]")
     axes[1, 0].set_xlabel("axial position x [m]")
@@ -218,8 +246,9 @@ def mass_breakdown_figure(masses: Mapping[str, Mapping[str, float]]) -> Figure:
     colors = matplotlib.colormaps["tab10"].colors
     for j, kind in enumerate(kinds):
         values = np.array([float(parts.get(kind, 0.0)) for _, parts in items])
-        ax.bar(np.arange(len(items)), values, bottom=bottoms, color=colors[(j + 2) % len(colors)], label=kind,
-               width=0.55)
+        ax.bar(
+            np.arange(len(items)), values, bottom=bottoms, color=colors[(j + 2) % len(colors)], label=kind, width=0.55
+        )
         bottoms += values
     for i, total in enumerate(bottoms):
         ax.annotate(f"{total:.1f} kg", (i, total), xytext=(0, 4), textcoords="offset points", ha="center")

@@ -83,8 +83,7 @@ def imbalance_response_figure(
             amplitude_mm = np.where(amplitude_mm > 0.0, amplitude_mm, np.nan)
         ax.plot(speeds, amplitude_mm, label=name)
     if gap is not None:
-        ax.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2,
-                   label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm")
+        ax.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm")
     mark_operating(ax, operating_rpm)
     if log_y:
         log_scale(ax)
@@ -183,10 +182,17 @@ def safety_factor_figure(
     y_text, va = _free_band(ax, xs, factor)
     x_frac = (critical_x - xs.min()) / max(xs.max() - xs.min(), 1e-12)
     right_half = x_frac > 0.5
-    ax.annotate(text, (critical_x, critical_r), xytext=(x_frac - 0.04 if right_half else x_frac + 0.04, y_text),
-                textcoords="axes fraction", ha="right" if right_half else "left", va=va, fontsize=9,
-                bbox={"boxstyle": "round", "fc": "white", "ec": "0.6"},
-                arrowprops={"arrowstyle": "->", "color": "0.3"})
+    ax.annotate(
+        text,
+        (critical_x, critical_r),
+        xytext=(x_frac - 0.04 if right_half else x_frac + 0.04, y_text),
+        textcoords="axes fraction",
+        ha="right" if right_half else "left",
+        va=va,
+        fontsize=9,
+        bbox={"boxstyle": "round", "fc": "white", "ec": "0.6"},
+        arrowprops={"arrowstyle": "->", "color": "0.3"},
+    )
     ax.set_xlabel("axial position x [m]")
     ax.set_ylabel("Tsai-Wu safety factor R [-]")
     ax.set_title(title)
@@ -265,8 +271,15 @@ def load_shares_figure(shares: Mapping[str, float], title: str = "What loads the
     y = np.arange(len(names))[::-1]
     ax.barh(y, values, color=colors, height=0.6)
     for yi, v in zip(y, values):
-        ax.annotate(f"{v:+.1%}", (v, yi), xytext=(4 if v >= 0 else -4, 0), textcoords="offset points",
-                    ha="left" if v >= 0 else "right", va="center", fontsize=8)
+        ax.annotate(
+            f"{v:+.1%}",
+            (v, yi),
+            xytext=(4 if v >= 0 else -4, 0),
+            textcoords="offset points",
+            ha="left" if v >= 0 else "right",
+            va="center",
+            fontsize=8,
+        )
     ax.set_yticks(y, names)
     ax.axvline(0.0, color="k", lw=0.8)
     lo, hi = min(0.0, float(values.min())), max(0.0, float(values.max()))

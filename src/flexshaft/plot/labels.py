@@ -14,7 +14,9 @@ import numpy as np
 __all__ = ["spread", "place_point_labels"]
 
 
-def spread(positions: Sequence[float], min_gap: float, low: float | None = None, high: float | None = None) -> np.ndarray:
+def spread(
+    positions: Sequence[float], min_gap: float, low: float | None = None, high: float | None = None
+) -> np.ndarray:
     """Move 1-D label positions apart by at least ``min_gap``, as little as possible.
 
     Positions keep their order; the result stays within ``[low, high]`` when it fits. Used for
@@ -44,12 +46,32 @@ def spread(positions: Sequence[float], min_gap: float, low: float | None = None,
     return out
 
 
-_OFFSETS = [(6, -16), (6, 6), (-6, -16), (-6, 6), (8, -30), (8, 20), (-8, -30), (-8, 20), (14, -44), (14, 34),
-            (-14, -44), (-14, 34)]
+_OFFSETS = [
+    (6, -16),
+    (6, 6),
+    (-6, -16),
+    (-6, 6),
+    (8, -30),
+    (8, 20),
+    (-8, -30),
+    (-8, 20),
+    (14, -44),
+    (14, 34),
+    (-14, -44),
+    (-14, 34),
+]
 
 
-def place_point_labels(ax, x: Sequence[float], y: Sequence[float], texts: Sequence[str], *, fontsize: float = 8.0,
-                       avoid: Sequence[tuple[float, float]] = (), **text_kw) -> list:
+def place_point_labels(
+    ax,
+    x: Sequence[float],
+    y: Sequence[float],
+    texts: Sequence[str],
+    *,
+    fontsize: float = 8.0,
+    avoid: Sequence[tuple[float, float]] = (),
+    **text_kw,
+) -> list:
     """Annotate data points ``(x, y)`` with ``texts`` so that no two labels overlap.
 
     Each label tries offsets around its point (right-below first) and takes the first whose
@@ -60,7 +82,9 @@ def place_point_labels(ax, x: Sequence[float], y: Sequence[float], texts: Sequen
     fig = ax.figure
     to_px = ax.transData.transform
     scale = fig.dpi / 72.0
-    pts = np.asarray(to_px(np.column_stack([np.asarray(x, float), np.asarray(y, float)]))) if len(x) else np.zeros((0, 2))
+    pts = (
+        np.asarray(to_px(np.column_stack([np.asarray(x, float), np.asarray(y, float)]))) if len(x) else np.zeros((0, 2))
+    )
     marks = np.vstack([pts, to_px(np.asarray(avoid, float))]) if len(avoid) else pts
     box = ax.bbox
     placed: list[tuple[float, float, float, float]] = []
@@ -76,7 +100,12 @@ def place_point_labels(ax, x: Sequence[float], y: Sequence[float], texts: Sequen
             rect = (x0, y0, x0 + width, y0 + height)
             cost = sum(_overlap(rect, r) for r in placed)
             cost += sum(_overlap(rect, (mx - radius, my - radius, mx + radius, my + radius)) for mx, my in marks)
-            outside = max(0.0, box.x0 - rect[0]) + max(0.0, rect[2] - box.x1) + max(0.0, box.y0 - rect[1]) + max(0.0, rect[3] - box.y1)
+            outside = (
+                max(0.0, box.x0 - rect[0])
+                + max(0.0, rect[2] - box.x1)
+                + max(0.0, box.y0 - rect[1])
+                + max(0.0, rect[3] - box.y1)
+            )
             cost += outside * height * 4
             if cost < best_cost - 1e-9:
                 best, best_cost = (dx, dy, rect), cost
@@ -86,10 +115,19 @@ def place_point_labels(ax, x: Sequence[float], y: Sequence[float], texts: Sequen
         placed.append(rect)
         far = abs(dy) > 20 or abs(dx) > 10
         xy = ax.transData.inverted().transform((px, py))
-        out.append(ax.annotate(text, xy, xytext=(dx, dy), textcoords="offset points", fontsize=fontsize,
-                               ha="right" if dx < 0 else "left", va="bottom",
-                               arrowprops={"arrowstyle": "-", "color": "0.45", "lw": 0.7} if far else None,
-                               **text_kw))
+        out.append(
+            ax.annotate(
+                text,
+                xy,
+                xytext=(dx, dy),
+                textcoords="offset points",
+                fontsize=fontsize,
+                ha="right" if dx < 0 else "left",
+                va="bottom",
+                arrowprops={"arrowstyle": "-", "color": "0.45", "lw": 0.7} if far else None,
+                **text_kw,
+            )
+        )
     return out
 
 

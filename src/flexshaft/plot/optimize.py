@@ -87,22 +87,60 @@ def pareto_front(
     bad = shown & ~ok
     good = shown & ok
     ax.plot(x[bad], y[bad], "x", color="0.6", ms=4, mew=0.8, label=f"fails a requirement ({int(bad.sum())})", zorder=1)
-    ax.plot(x[good], y[good], "o", color="tab:blue", ms=4, alpha=0.55, mec="none",
-            label=f"passes every requirement ({int(good.sum())})", zorder=2)
+    ax.plot(
+        x[good],
+        y[good],
+        "o",
+        color="tab:blue",
+        ms=4,
+        alpha=0.55,
+        mec="none",
+        label=f"passes every requirement ({int(good.sum())})",
+        zorder=2,
+    )
     if fx.size:
         order = np.argsort(fx)
-        ax.plot(fx[order], fy[order], "-o", color="tab:red", ms=6, mfc="tab:red", mec="k", mew=0.6, lw=1.4,
-                drawstyle=("steps-post" if senses[0] == "min" else "steps-pre") if fx.size > 1 else "default", label=f"Pareto front ({fx.size})", zorder=4)
+        ax.plot(
+            fx[order],
+            fy[order],
+            "-o",
+            color="tab:red",
+            ms=6,
+            mfc="tab:red",
+            mec="k",
+            mew=0.6,
+            lw=1.4,
+            drawstyle=("steps-post" if senses[0] == "min" else "steps-pre") if fx.size > 1 else "default",
+            label=f"Pareto front ({fx.size})",
+            zorder=4,
+        )
     for k, (label, (rx, ry, passes)) in enumerate((references or {}).items()):
         if not (np.isfinite(rx) and np.isfinite(ry)):
             continue
         colour = _REFERENCE_COLOURS[k % len(_REFERENCE_COLOURS)]
         marker = _REFERENCE_MARKERS[k % len(_REFERENCE_MARKERS)]
         # the first reference (the base) largest and underneath: the others may sit on it
-        ax.plot([rx], [ry], marker, ms=20 if k == 0 else 9, mfc=colour if passes else "white",
-                mec=colour, mew=1.6, ls="none", label=f"{label}{'' if passes else ' (fails)'}", zorder=6 if k == 0 else 7)
-        ax.annotate(label, (rx, ry), textcoords="offset points", xytext=_LABEL_OFFSETS[k % len(_LABEL_OFFSETS)],
-                    fontsize=8.5, color=colour, ha="left" if _LABEL_OFFSETS[k % len(_LABEL_OFFSETS)][0] >= 0 else "right")
+        ax.plot(
+            [rx],
+            [ry],
+            marker,
+            ms=20 if k == 0 else 9,
+            mfc=colour if passes else "white",
+            mec=colour,
+            mew=1.6,
+            ls="none",
+            label=f"{label}{'' if passes else ' (fails)'}",
+            zorder=6 if k == 0 else 7,
+        )
+        ax.annotate(
+            label,
+            (rx, ry),
+            textcoords="offset points",
+            xytext=_LABEL_OFFSETS[k % len(_LABEL_OFFSETS)],
+            fontsize=8.5,
+            color=colour,
+            ha="left" if _LABEL_OFFSETS[k % len(_LABEL_OFFSETS)][0] >= 0 else "right",
+        )
     arrows = {"min": "lower is better", "max": "higher is better"}
     ax.set_xlabel(f"{x_label} ({arrows.get(senses[0], '')})")
     ax.set_ylabel(f"{y_label} ({arrows.get(senses[1], '')})")

@@ -37,7 +37,9 @@ def _check_stem(stem: str) -> None:
         raise ValueError(f"stem: expected a plain file name without folders, got {stem!r}")
 
 
-def save_figure(fig: Figure, folder: str | Path, stem: str, *, svg: bool = True, dpi: float = PNG_DPI) -> dict[str, Path]:
+def save_figure(
+    fig: Figure, folder: str | Path, stem: str, *, svg: bool = True, dpi: float = PNG_DPI
+) -> dict[str, Path]:
     """Write ``stem.png`` (and ``stem.svg`` when ``svg``) into ``folder``; release the figure.
 
     Parameters
@@ -113,8 +115,9 @@ def _check_jobs(jobs: Sequence[FigureJob]) -> None:
         raise ValueError(f"jobs: figure stems must be unique, repeated: {duplicated}")
 
 
-def start_figures(jobs: Sequence[FigureJob], folder: str | Path, executor: Executor, *, svg: bool = False,
-                  dpi: float = PNG_DPI) -> Callable[[], dict[str, RenderedFigure]]:
+def start_figures(
+    jobs: Sequence[FigureJob], folder: str | Path, executor: Executor, *, svg: bool = False, dpi: float = PNG_DPI
+) -> Callable[[], dict[str, RenderedFigure]]:
     """Submit every job to ``executor`` (e.g. :func:`flexshaft._pool.worker_pool`) and return
     a function that waits for them and returns ``{stem: RenderedFigure}`` in job order: the
     caller writes its other files while the workers draw."""
@@ -129,8 +132,15 @@ def start_figures(jobs: Sequence[FigureJob], folder: str | Path, executor: Execu
     return collect
 
 
-def render_figures(jobs: Sequence[FigureJob], folder: str | Path, *, svg: bool = False, dpi: float = PNG_DPI,
-                   processes: int = 1, executor: Executor | None = None) -> dict[str, RenderedFigure]:
+def render_figures(
+    jobs: Sequence[FigureJob],
+    folder: str | Path,
+    *,
+    svg: bool = False,
+    dpi: float = PNG_DPI,
+    processes: int = 1,
+    executor: Executor | None = None,
+) -> dict[str, RenderedFigure]:
     """Draw and save every job into ``folder``; returns ``{stem: RenderedFigure}`` in job order.
 
     Parameters

@@ -33,8 +33,13 @@ def _chunk(tag: bytes, data: bytes) -> bytes:
     return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data))
 
 
-def write_png(file: str | IO[bytes] | Any, rgba: NDArray[np.uint8], dpi: float | None = None,
-              text: dict[str, str] | None = None, level: int = 1) -> None:
+def write_png(
+    file: str | IO[bytes] | Any,
+    rgba: NDArray[np.uint8],
+    dpi: float | None = None,
+    text: dict[str, str] | None = None,
+    level: int = 1,
+) -> None:
     """Write an (height, width, 4) uint8 RGBA image as a PNG file.
 
     Parameters
@@ -92,8 +97,10 @@ def fast_png_canvas() -> type:
             if options:
                 return super().print_png(filename_or_obj, metadata=metadata, pil_kwargs=pil_kwargs)
             FigureCanvasAgg.draw(self)
-            text = {"Software": f"Matplotlib version{matplotlib.__version__}, https://matplotlib.org/",
-                    **(metadata or {})}
+            text = {
+                "Software": f"Matplotlib version{matplotlib.__version__}, https://matplotlib.org/",
+                **(metadata or {}),
+            }
             write_png(filename_or_obj, np.asarray(self.buffer_rgba()), self.figure.dpi, text, int(level))
 
     return FastPngCanvas

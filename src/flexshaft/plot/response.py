@@ -69,7 +69,9 @@ def bode_figure(
         phase -= 360.0 * np.round(phase[np.flatnonzero(amplitude > 0)[0]] / 360.0) if np.any(amplitude > 0) else 0.0
         phase_ax.plot(x, np.where(amplitude > 0, phase, np.nan), color=line.get_color(), label=name)
     if gap is not None:
-        amp_ax.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm")
+        amp_ax.axhline(
+            gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm"
+        )
     for a in (amp_ax, phase_ax):
         mark_operating(a, operating_rpm, label=a is amp_ax)
     log_scale(amp_ax)
@@ -138,14 +140,27 @@ def orbit_figure(
     n = len(orbits)
     ncols = min(4, n) if own else 1
     nrows = -(-n // ncols) if own else n
-    fig, axes = new_figure(nrows, ncols, (2.9 * ncols + 0.6, 2.85 * nrows + 0.75), False, ax=ax, left=0.7,
-                           right=0.15, bottom=0.55, top=0.7, wspace=0.85, hspace=0.75)
+    fig, axes = new_figure(
+        nrows,
+        ncols,
+        (2.9 * ncols + 0.6, 2.85 * nrows + 0.75),
+        False,
+        ax=ax,
+        left=0.7,
+        right=0.15,
+        bottom=0.55,
+        top=0.7,
+        wspace=0.85,
+        hspace=0.75,
+    )
     for k, (name, pair) in enumerate(orbits.items()):
         a = axes.flat[k]
         try:
             v, w = (complex(c) for c in pair)
         except (TypeError, ValueError):
-            raise ValueError(f"orbits[{name!r}]: expected a (v, w) pair of complex amplitudes [m], got {pair!r}") from None
+            raise ValueError(
+                f"orbits[{name!r}]: expected a (v, w) pair of complex amplitudes [m], got {pair!r}"
+            ) from None
         gap = gaps.get(name) if isinstance(gaps, Mapping) else gaps
         radius_mm = float(orbit_amplitude_mm(v, w))
         gap_mm = None if gap is None else gap * MM_PER_M
@@ -156,8 +171,12 @@ def orbit_figure(
         a.plot(ow, ov, color="C0", lw=1.6)
         a.plot(ow[0], ov[0], "o", color="C0", ms=5)
         j = len(ov) // 8
-        a.annotate("", (ow[j + 1], ov[j + 1]), xytext=(ow[j], ov[j]),
-                   arrowprops={"arrowstyle": "-|>", "color": "C0", "lw": 1.2, "mutation_scale": 12})
+        a.annotate(
+            "",
+            (ow[j + 1], ov[j + 1]),
+            xytext=(ow[j], ov[j]),
+            arrowprops={"arrowstyle": "-|>", "color": "C0", "lw": 1.2, "mutation_scale": 12},
+        )
         note = f"max {radius_mm * scale:.3g} {unit}"
         if gap_mm is not None:
             note += f"\n{100 * radius_mm / gap_mm:.3g} % of gap {gap_mm:.3g} mm"
@@ -171,8 +190,16 @@ def orbit_figure(
         a.axhline(0.0, color="0.6", lw=0.6)
         a.axvline(0.0, color="0.6", lw=0.6)
         a.set_title(str(name), fontsize=9.5)
-        a.text(0.03, 0.97, note, transform=a.transAxes, va="top", ha="left", fontsize=7.5,
-               bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.8", "alpha": 0.85})
+        a.text(
+            0.03,
+            0.97,
+            note,
+            transform=a.transAxes,
+            va="top",
+            ha="left",
+            fontsize=7.5,
+            bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.8", "alpha": 0.85},
+        )
         a.set_xlabel(f"w (lateral) [{unit}]", fontsize=9)
         a.set_ylabel(f"v (vertical) [{unit}]", fontsize=9)
     for a in axes.flat[n:]:

@@ -55,8 +55,10 @@ def deflected_shape_figure(
     boom = None
     if boom_x is not None:
         bx = vector("boom_x", boom_x)
-        boom = {"v": vector("boom_v", boom_v if boom_v is not None else np.zeros(bx.size), bx.size),
-                "w": vector("boom_w", boom_w if boom_w is not None else np.zeros(bx.size), bx.size)}
+        boom = {
+            "v": vector("boom_v", boom_v if boom_v is not None else np.zeros(bx.size), bx.size),
+            "w": vector("boom_w", boom_w if boom_w is not None else np.zeros(bx.size), bx.size),
+        }
     stations = vector("bearings_x", bearings_x)
 
     fig, axes = new_figure(2, 1, (8.0, 6.0), ax=ax, hspace=0.35)
@@ -67,8 +69,14 @@ def deflected_shape_figure(
             ax.plot(bx, boom[component] * MM_PER_M, color="C2", ls="--", label="tailboom")
         for k, station in enumerate(stations):
             ax.axvline(station, color="0.5", ls=":", lw=1.0)
-            ax.plot(station, np.interp(station, x, shaft[component]) * MM_PER_M, "^", color="k", ms=7,
-                    label="bearing" if k == 0 else None)
+            ax.plot(
+                station,
+                np.interp(station, x, shaft[component]) * MM_PER_M,
+                "^",
+                color="k",
+                ms=7,
+                label="bearing" if k == 0 else None,
+            )
         ax.axhline(0.0, color="0.2", lw=0.6)
         ax.set_ylabel(names[component])
         ax.legend(loc="best")
@@ -140,8 +148,17 @@ def mode_shapes_figure(
     ncols = min(3, len(shapes)) if own else 1
     nrows = -(-len(shapes) // ncols) if own else len(shapes)
     top_band = 0.75 if title else 0.4
-    fig, axes = new_figure(nrows, ncols, (4.1 * ncols, 2.5 * nrows + top_band + 0.95), ax=ax, left=0.75,
-                           bottom=0.95, top=top_band, hspace=0.55, wspace=0.45)
+    fig, axes = new_figure(
+        nrows,
+        ncols,
+        (4.1 * ncols, 2.5 * nrows + top_band + 0.95),
+        ax=ax,
+        left=0.75,
+        bottom=0.95,
+        top=top_band,
+        hspace=0.55,
+        wspace=0.45,
+    )
     handles = {}
     for k, shape in enumerate(shapes):
         ax_k = axes.flat[k]
@@ -149,8 +166,10 @@ def mode_shapes_figure(
         if parts[0].size != x.size or parts[1].size != x.size:
             raise ValueError(f"shapes[{k}]: v and w need {x.size} values like shaft_x")
         if boom_shapes is not None:
-            parts += [np.asarray(boom_shapes[k]["v"], dtype=complex).ravel(),
-                      np.asarray(boom_shapes[k]["w"], dtype=complex).ravel()]
+            parts += [
+                np.asarray(boom_shapes[k]["v"], dtype=complex).ravel(),
+                np.asarray(boom_shapes[k]["w"], dtype=complex).ravel(),
+            ]
         parts = _normalise(parts)
         envelope = np.hypot(np.abs(parts[0]), np.abs(parts[1]))
         ax_k.fill_between(x, -envelope, envelope, color="0.88", lw=0, label="shaft orbit size ±|(v, w)|")
@@ -166,20 +185,26 @@ def mode_shapes_figure(
         ax_k.set_title(str(shape.get("label", f"mode {k + 1}")), fontsize=9)
         for handle, name in zip(*ax_k.get_legend_handles_labels()):
             handles.setdefault(name, handle)
-    for ax_k in axes.flat[len(shapes):]:
+    for ax_k in axes.flat[len(shapes) :]:
         ax_k.set_visible(False)
     for ax_k in axes[-1, :]:
         ax_k.set_xlabel("axial position x [m]")
     for ax_k in axes[:, 0]:
         ax_k.set_ylabel("normalised [-]")
     if own:
-        for ax_k in axes.flat[len(shapes) - ncols: len(shapes)]:  # bottom panel of each column shows x
+        for ax_k in axes.flat[len(shapes) - ncols : len(shapes)]:  # bottom panel of each column shows x
             ax_k.xaxis.set_tick_params(labelbottom=True)
             ax_k.set_xlabel("axial position x [m]")
         if title:
             fig.suptitle(title, fontsize=11, y=1 - 0.12 / fig.get_figheight())
-        fig.legend(list(handles.values()), list(handles), loc="lower center", ncols=min(6, len(handles)),
-                   bbox_to_anchor=(0.5, 0.0), fontsize=8)
+        fig.legend(
+            list(handles.values()),
+            list(handles),
+            loc="lower center",
+            ncols=min(6, len(handles)),
+            bbox_to_anchor=(0.5, 0.0),
+            fontsize=8,
+        )
     else:
         axes.flat[0].legend(loc="best", fontsize=7)
     return fig

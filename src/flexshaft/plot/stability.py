@@ -39,25 +39,56 @@ def _draw_modes(ax, speeds: np.ndarray, values: np.ndarray, whirl: np.ndarray | 
         for stop in range(1, speeds.size + 1):
             if stop == speeds.size or w[stop] != w[start]:
                 end = min(stop + 1, speeds.size)
-                ax.plot(speeds[start:end], values[start:end, m], color=color, lw=1.2,
-                        ls=WHIRL_LINESTYLE.get(str(w[start]), "-"))
+                ax.plot(
+                    speeds[start:end],
+                    values[start:end, m],
+                    color=color,
+                    lw=1.2,
+                    ls=WHIRL_LINESTYLE.get(str(w[start]), "-"),
+                )
                 start = stop
 
 
 def _mark_onset(ax, onset_rpm: float | None, text: str | None, max_rpm: float, unstable_label: bool) -> None:
     """Onset: a red ✕ on the zero line, a thin vertical line and a boxed label; else "stable"."""
     if onset_rpm is None or not np.isfinite(onset_rpm):
-        ax.text(0.99, 0.96, f"stable up to {max_rpm:.0f} rpm", transform=ax.transAxes, ha="right", va="top",
-                fontsize=8, bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "0.7"})
+        ax.text(
+            0.99,
+            0.96,
+            f"stable up to {max_rpm:.0f} rpm",
+            transform=ax.transAxes,
+            ha="right",
+            va="top",
+            fontsize=8,
+            bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "0.7"},
+        )
         return
     ax.axvline(onset_rpm, color="tab:red", lw=0.9, ls=(0, (1, 1.5)))
-    ax.plot([onset_rpm], [0.0], "X", color="tab:red", mec="k", mew=0.6, ms=9, zorder=5,
-            label="onset of instability" if unstable_label else None)
+    ax.plot(
+        [onset_rpm],
+        [0.0],
+        "X",
+        color="tab:red",
+        mec="k",
+        mew=0.6,
+        ms=9,
+        zorder=5,
+        label="onset of instability" if unstable_label else None,
+    )
     label = f"onset {onset_rpm:.0f} rpm" + (f"\n{text}" if text else "")
     right = onset_rpm > np.mean(ax.get_xlim())
-    ax.annotate(label, (onset_rpm, 0.0), xytext=(-8 if right else 8, 0), textcoords="offset points",
-                xycoords=("data", "axes fraction"), ha="right" if right else "left", va="bottom", fontsize=8,
-                color="tab:red", bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "tab:red", "alpha": 0.9})
+    ax.annotate(
+        label,
+        (onset_rpm, 0.0),
+        xytext=(-8 if right else 8, 0),
+        textcoords="offset points",
+        xycoords=("data", "axes fraction"),
+        ha="right" if right else "left",
+        va="bottom",
+        fontsize=8,
+        color="tab:red",
+        bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "tab:red", "alpha": 0.9},
+    )
 
 
 @styled
@@ -125,8 +156,16 @@ def log_decrement_figure(
         mark_operating(a, operating_rpm, label=k == 0)
         _mark_onset(a, onsets.get(name), (onset_text or {}).get(name), speeds.max(), k == 0)
         if high > top:
-            a.text(0.01, 0.97, f"curves above δ = {top:.2g} cut", transform=a.transAxes, ha="left", va="top",
-                   fontsize=7, color="0.35")
+            a.text(
+                0.01,
+                0.97,
+                f"curves above δ = {top:.2g} cut",
+                transform=a.transAxes,
+                ha="left",
+                va="top",
+                fontsize=7,
+                color="0.35",
+            )
         a.set_ylabel("log decrement δ [-]")
         a.set_title(name, fontsize=10)
     axes[-1, 0].set_xlabel("spin speed Ω [rpm]")
@@ -134,8 +173,11 @@ def log_decrement_figure(
     if handles and own:  # in a band at the bottom: it hides no curve
         from matplotlib.lines import Line2D
 
-        handles += [Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[w], label=f"{w} whirl") for w in ("forward", "backward", "planar")
-                    if whirl is not None]
+        handles += [
+            Line2D([], [], color="0.3", ls=WHIRL_LINESTYLE[w], label=f"{w} whirl")
+            for w in ("forward", "backward", "planar")
+            if whirl is not None
+        ]
         fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=7.5, bbox_to_anchor=(0.5, 0.0))
     elif handles:
         axes[0, 0].legend(loc="best", fontsize=7.5)
@@ -143,8 +185,14 @@ def log_decrement_figure(
 
 
 @styled
-def real_parts_figure(speeds_rpm: ArrayLike, real_parts: Mapping[str, ArrayLike], operating_rpm: float | None = None,
-                      *, onset_rpm: Mapping[str, float | None] | None = None, ax=None):
+def real_parts_figure(
+    speeds_rpm: ArrayLike,
+    real_parts: Mapping[str, ArrayLike],
+    operating_rpm: float | None = None,
+    *,
+    onset_rpm: Mapping[str, float | None] | None = None,
+    ax=None,
+):
     """Real parts of the tracked eigenvalues against speed, one panel per shaft (thesis
     figures 4.2-4.4). ``real_parts[name]`` is (n_speeds, n_modes) [1/s]; Re > 0 is unstable;
     ``onset_rpm[name]`` [rpm] marks the onset. ``ax``: one axes per shaft."""
@@ -152,7 +200,7 @@ def real_parts_figure(speeds_rpm: ArrayLike, real_parts: Mapping[str, ArrayLike]
     n = len(real_parts)
     fig, axes = new_figure(n, 1, (8.0, 2.5 * n + 1.0), ax=ax, hspace=0.5, bottom=0.6, top=0.45)
     onsets = dict(onset_rpm or {})
-    for k, (a, (name, re)) in enumerate(zip(axes[:, 0], real_parts.items())):
+    for _k, (a, (name, re)) in enumerate(zip(axes[:, 0], real_parts.items())):
         re = _panel_curves(speeds, name, re, "real_parts")
         a.set_xlim(speeds.min(), speeds.max())
         _draw_modes(a, speeds, re, None)
@@ -168,8 +216,14 @@ def real_parts_figure(speeds_rpm: ArrayLike, real_parts: Mapping[str, ArrayLike]
 
 
 @styled
-def stability_map_figure(kd: ArrayLike, onset_rpm: Mapping[str, ArrayLike], operating_rpm: float | None = None,
-                         max_rpm: float | None = None, *, ax=None):
+def stability_map_figure(
+    kd: ArrayLike,
+    onset_rpm: Mapping[str, ArrayLike],
+    operating_rpm: float | None = None,
+    max_rpm: float | None = None,
+    *,
+    ax=None,
+):
     """Onset speed of whirl instability against the actuators' derivative gain K_d [N s/m];
     NaN onsets (stable over the analysed range) are drawn at ``max_rpm`` with open markers."""
     kd = vector("kd", kd)
@@ -178,7 +232,7 @@ def stability_map_figure(kd: ArrayLike, onset_rpm: Mapping[str, ArrayLike], oper
     ax = axes[0, 0]
     for name, values in onset_rpm.items():
         v = vector(f"onset_rpm[{name!r}]", values, kd.size)
-        line, = ax.plot(kd, v, "o-", label=name)
+        (line,) = ax.plot(kd, v, "o-", label=name)
         if max_rpm is not None and np.any(np.isnan(v)):
             ax.plot(kd[np.isnan(v)], np.full(np.isnan(v).sum(), max_rpm), "o", mfc="none", color=line.get_color())
     if operating_rpm is not None:

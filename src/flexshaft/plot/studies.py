@@ -108,8 +108,11 @@ def ply_angle_figure(
     ax.plot(alpha, sf, color="C0", label="safety factor R")
     if dominant is not None:
         dom = np.asarray(dominant, dtype=str)
-        for name, marker, label in (("sigma1", "o", "σ1 dominates"), ("sigma2", "s", "σ2 dominates"),
-                                    ("tau12", "^", "τ12 dominates")):
+        for name, marker, label in (
+            ("sigma1", "o", "σ1 dominates"),
+            ("sigma2", "s", "σ2 dominates"),
+            ("tau12", "^", "τ12 dominates"),
+        ):
             sel = dom == name
             if sel.any():
                 ax.plot(alpha[sel], sf[sel], marker, ms=4.5, color="C0", mfc="white", label=label)
@@ -128,8 +131,14 @@ def ply_angle_figure(
 
 
 @styled
-def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: ArrayLike,
-                     thesis_best: tuple[float, float] | None = (55.0, 0.0), *, ax=None) -> Figure:
+def two_angle_figure(
+    alpha_deg: ArrayLike,
+    beta_deg: ArrayLike,
+    safety_factor: ArrayLike,
+    thesis_best: tuple[float, float] | None = (55.0, 0.0),
+    *,
+    ax=None,
+) -> Figure:
     """Safety factor map of (α/−α/β/−β)s (thesis figure 3.3), best laminate marked.
 
     ``safety_factor`` has shape (n_alpha, n_beta).
@@ -147,8 +156,15 @@ def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: A
     i, j = np.unravel_index(int(np.nanargmax(sf)), sf.shape)
     ax.plot(a[i], b[j], **_BEST, label=f"best ({a[i]:g}/−{a[i]:g}/{b[j]:g}/−{b[j]:g})s: R = {sf[i, j]:.3g}")
     if thesis_best is not None:
-        ax.plot(*thesis_best, "X", ms=10, mfc="none", mec="tab:red", mew=1.6,
-                label=f"thesis ({thesis_best[0]:g}/−{thesis_best[0]:g}/{thesis_best[1]:g}/−{thesis_best[1]:g})s")
+        ax.plot(
+            *thesis_best,
+            "X",
+            ms=10,
+            mfc="none",
+            mec="tab:red",
+            mew=1.6,
+            label=f"thesis ({thesis_best[0]:g}/−{thesis_best[0]:g}/{thesis_best[1]:g}/−{thesis_best[1]:g})s",
+        )
     nice_colorbar(fig, mesh, ax, "Tsai-Wu safety factor R [-]", pad=0.03)
     ax.set_xlabel("α [deg]")
     ax.set_ylabel("β [deg]")
@@ -162,9 +178,15 @@ def two_angle_figure(alpha_deg: ArrayLike, beta_deg: ArrayLike, safety_factor: A
 
 
 @styled
-def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_imbalance: ArrayLike,
-                          frequency_hz: ArrayLike | None = None, spinup_peak: ArrayLike | None = None, *,
-                          ax=None) -> Figure:
+def wall_thickness_figure(
+    wall: ArrayLike,
+    with_imbalance: ArrayLike,
+    without_imbalance: ArrayLike,
+    frequency_hz: ArrayLike | None = None,
+    spinup_peak: ArrayLike | None = None,
+    *,
+    ax=None,
+) -> Figure:
     """Safety factor with and without imbalance vs wall thickness at fixed D_o (thesis fig.
     3.4); optionally the first natural frequency and the spin-up peak shaft orbit [m], each on
     a panel of its own (the orbit's NaN entries are left out, and its panel when all are NaN:
@@ -189,10 +211,22 @@ def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_im
         axes[1, 0].legend(loc="best")
     if peak is not None:
         panel, finite, k = axes[-1, 0], np.isfinite(peak), int(np.nanargmin(peak))
-        panel.plot(t[finite] * MM_PER_M, peak[finite] * MM_PER_M, "D-", color="C4",
-                   label="spin-up peak shaft orbit (design gains)")
-        panel.plot([t[k] * MM_PER_M], [peak[k] * MM_PER_M], "*", ms=13, color="gold", mec="k",
-                   label=f"smallest: {peak[k] * MM_PER_M:.3g} mm at {t[k] * MM_PER_M:g} mm wall")
+        panel.plot(
+            t[finite] * MM_PER_M,
+            peak[finite] * MM_PER_M,
+            "D-",
+            color="C4",
+            label="spin-up peak shaft orbit (design gains)",
+        )
+        panel.plot(
+            [t[k] * MM_PER_M],
+            [peak[k] * MM_PER_M],
+            "*",
+            ms=13,
+            color="gold",
+            mec="k",
+            label=f"smallest: {peak[k] * MM_PER_M:.3g} mm at {t[k] * MM_PER_M:g} mm wall",
+        )
         panel.set_ylim(bottom=0.0)
         panel.set_ylabel("orbit [mm]")
         panel.legend(loc="best")
@@ -201,8 +235,9 @@ def wall_thickness_figure(wall: ArrayLike, with_imbalance: ArrayLike, without_im
 
 
 @styled
-def forced_response_figure(speeds_rpm: ArrayLike, responses: Mapping[str, ArrayLike],
-                           operating_rpm: float | None = None, *, ax=None) -> Figure:
+def forced_response_figure(
+    speeds_rpm: ArrayLike, responses: Mapping[str, ArrayLike], operating_rpm: float | None = None, *, ax=None
+) -> Figure:
     """Largest shaft orbit against speed for a few designs, e.g. two walls (thesis fig. 3.5,
     3.9, 3.11). ``responses[label]`` is (n_speeds,) [m]; logarithmic amplitude axis."""
     speeds = vector("speeds_rpm", speeds_rpm)
@@ -222,8 +257,14 @@ def forced_response_figure(speeds_rpm: ArrayLike, responses: Mapping[str, ArrayL
 
 
 @styled
-def gain_figure(kp: ArrayLike, safety_factor: ArrayLike, actuator_displacement: ArrayLike,
-                design_kp: float | None = None, *, ax=None) -> Figure:
+def gain_figure(
+    kp: ArrayLike,
+    safety_factor: ArrayLike,
+    actuator_displacement: ArrayLike,
+    design_kp: float | None = None,
+    *,
+    ax=None,
+) -> Figure:
     """Safety factor and largest actuator displacement at the operating speed vs K_p
     (thesis figure 3.6). ``kp`` [N/m], displacement [m] (drawn in mm)."""
     k = vector("kp", kp)
@@ -263,10 +304,19 @@ def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike, *, ax=None) -> Fi
 
 
 @styled
-def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str, *,
-                    scale: float = 1.0, best: tuple[float, float] | None = None,
-                    other: Mapping[str, tuple[float, float]] | None = None, log_values: bool = True,
-                    title: str = "", ax=None) -> Figure:
+def gain_map_figure(
+    kp: ArrayLike,
+    kd: ArrayLike,
+    values: ArrayLike,
+    label: str,
+    *,
+    scale: float = 1.0,
+    best: tuple[float, float] | None = None,
+    other: Mapping[str, tuple[float, float]] | None = None,
+    log_values: bool = True,
+    title: str = "",
+    ax=None,
+) -> Figure:
     """A quantity over the (K_p, K_d) grid (thesis figures 3.12, 3.15, 3.16).
 
     Parameters
@@ -306,8 +356,16 @@ def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str,
         ax.plot(bx, by, **_BEST, label=f"best: K_p = {best[0]:.3g} N/m, K_d = {best[1]:.3g} N s/m")
     for k, (name, (px, py)) in enumerate(points.items()):
         ix, iy = int(np.argmin(np.abs(kp_v - px))), int(np.argmin(np.abs(kd_v - py)))
-        ax.plot(x[ix], y[iy], "o", ms=9, mfc="none", mec=("tab:red", "w", "tab:orange")[k % 3], mew=1.8,
-                label=f"{name}: K_p = {px:.3g}, K_d = {py:.3g}")
+        ax.plot(
+            x[ix],
+            y[iy],
+            "o",
+            ms=9,
+            mfc="none",
+            mec=("tab:red", "w", "tab:orange")[k % 3],
+            mew=1.8,
+            label=f"{name}: K_p = {px:.3g}, K_d = {py:.3g}",
+        )
     nice_colorbar(fig, mesh, ax, label, log=norm is not None, pad=0.03)
     ax.set_xticks(xt, xl)
     ax.set_yticks(yt, yl)
@@ -326,23 +384,35 @@ def gain_map_figure(kp: ArrayLike, kd: ArrayLike, values: ArrayLike, label: str,
 
 
 @styled
-def response_surface_figure(x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike],
-                            bearings_x: Sequence[float] = (), *, ax=None) -> Figure:
+def response_surface_figure(
+    x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike], bearings_x: Sequence[float] = (), *, ax=None
+) -> Figure:
     """Frequency-response surfaces: shaft orbit over position × speed (thesis figures 3.13,
     3.14), one 3-D panel per labelled case. ``surfaces[label]`` is (n_nodes, n_speeds) [m];
     ``x`` the node stations [m]. Panels share the amplitude axis."""
     xs = vector("x", x)
     speeds = vector("speeds_rpm", speeds_rpm)
     n = len(surfaces)
-    fig, axes = new_figure(1, n, (6.2 * n, 5.0), ax=ax, left=0.25, right=0.25, bottom=0.2, top=0.45, wspace=0.5,
-                           projection="3d")
+    fig, axes = new_figure(
+        1, n, (6.2 * n, 5.0), ax=ax, left=0.25, right=0.25, bottom=0.2, top=0.45, wspace=0.5, projection="3d"
+    )
     top = max(float(np.nanmax(np.asarray(v))) for v in surfaces.values()) * MM_PER_M
     X, S = np.meshgrid(xs, speeds, indexing="ij")
     for k, (label, values) in enumerate(surfaces.items()):
         z = _grid(f"surfaces[{label!r}]", values, (xs.size, speeds.size)) * MM_PER_M
         ax = axes[0, k]
-        ax.plot_surface(X, S, z, cmap="viridis", vmin=0.0, vmax=top, rstride=1, cstride=max(1, speeds.size // 60),
-                        linewidth=0, antialiased=False)
+        ax.plot_surface(
+            X,
+            S,
+            z,
+            cmap="viridis",
+            vmin=0.0,
+            vmax=top,
+            rstride=1,
+            cstride=max(1, speeds.size // 60),
+            linewidth=0,
+            antialiased=False,
+        )
         for xb in bearings_x:
             ax.plot([xb, xb], [speeds.min(), speeds.max()], [0, 0], color="k", lw=1.0)
         ax.set_zlim(0.0, top)
@@ -355,8 +425,9 @@ def response_surface_figure(x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mappi
 
 
 @styled
-def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
-                       operating_rpm: float | None = None, *, ax=None) -> Figure:
+def tuned_gains_figure(
+    speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike], operating_rpm: float | None = None, *, ax=None
+) -> Figure:
     """Largest shaft orbit during spin-up before and after tuning the gains (thesis figure
     3.17). ``curves[label]`` is (n_speeds,) [m]; each peak is annotated."""
     speeds = vector("speeds_rpm", speeds_rpm)
@@ -366,8 +437,14 @@ def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
         amp = vector(f"curves[{label!r}]", values, speeds.size) * MM_PER_M
         (line,) = ax.plot(speeds, amp, label=label)
         i = int(np.nanargmax(amp))
-        ax.annotate(f"{amp[i]:.3g} mm", (speeds[i], amp[i]), xytext=(4, 4), textcoords="offset points",
-                    color=line.get_color(), fontsize=8.5)
+        ax.annotate(
+            f"{amp[i]:.3g} mm",
+            (speeds[i], amp[i]),
+            xytext=(4, 4),
+            textcoords="offset points",
+            color=line.get_color(),
+            fontsize=8.5,
+        )
     mark_operating(ax, operating_rpm)
     ax.set_ylim(bottom=0.0)
     ax.set_xlim(speeds.min(), speeds.max())
@@ -379,9 +456,15 @@ def tuned_gains_figure(speeds_rpm: ArrayLike, curves: Mapping[str, ArrayLike],
 
 
 @styled
-def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
-                            onset_rpm: ArrayLike | None = None, best: tuple[float, float] | None = None, *,
-                            ax=None) -> Figure:
+def stability_margin_figure(
+    kp: ArrayLike,
+    kd: ArrayLike,
+    margin: ArrayLike,
+    onset_rpm: ArrayLike | None = None,
+    best: tuple[float, float] | None = None,
+    *,
+    ax=None,
+) -> Figure:
     """Smallest damping ratio at the operating speed over (K_p, K_d); negative (unstable)
     cells are hatched. ``onset_rpm`` (n_kp, n_kd), NaN where stable over the analysed range,
     is written in each cell when the grid is small."""
@@ -404,8 +487,15 @@ def stability_margin_figure(kp: ArrayLike, kd: ArrayLike, margin: ArrayLike,
         for i in range(z.shape[0]):
             for j in range(z.shape[1]):
                 text = "stable" if not np.isfinite(onset[i, j]) else f"{onset[i, j]:.0f} rpm"
-                ax.annotate(text, (x[i], y[j]), ha="center", va="bottom", xytext=(0, 6), textcoords="offset points",
-                            fontsize=6.5)
+                ax.annotate(
+                    text,
+                    (x[i], y[j]),
+                    ha="center",
+                    va="bottom",
+                    xytext=(0, 6),
+                    textcoords="offset points",
+                    fontsize=6.5,
+                )
     if best is not None:
         ix = int(np.argmin(np.abs(x - np.log10(max(best[0], 1e-300)))))
         iy = int(np.argmin(np.abs(y - (np.log10(best[1]) if best[1] > 0 else y.min()))))

@@ -23,8 +23,20 @@ from numpy.typing import ArrayLike, NDArray
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["MM_PER_M", "RPM_PER_HZ", "WHIRL_LINESTYLE", "WHIRL_MARKER", "STYLE", "styled", "new_figure",
-           "vector", "magnitude", "mark_operating", "nice_colorbar", "log_scale"]
+__all__ = [
+    "MM_PER_M",
+    "RPM_PER_HZ",
+    "WHIRL_LINESTYLE",
+    "WHIRL_MARKER",
+    "STYLE",
+    "styled",
+    "new_figure",
+    "vector",
+    "magnitude",
+    "mark_operating",
+    "nice_colorbar",
+    "log_scale",
+]
 
 MM_PER_M = 1e3
 RPM_PER_HZ = 60.0
@@ -66,9 +78,21 @@ def styled(func: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def new_figure(nrows: int, ncols: int, figsize: tuple[float, float], sharex: bool = True, *, ax=None,
-               left: float = 0.85, right: float = 0.25, bottom: float = 0.6, top: float = 0.4,
-               hspace: float = 0.55, wspace: float = 0.7, **subplot_kw):
+def new_figure(
+    nrows: int,
+    ncols: int,
+    figsize: tuple[float, float],
+    sharex: bool = True,
+    *,
+    ax=None,
+    left: float = 0.85,
+    right: float = 0.25,
+    bottom: float = 0.6,
+    top: float = 0.4,
+    hspace: float = 0.55,
+    wspace: float = 0.7,
+    **subplot_kw,
+):
     """A Figure (no pyplot state, no layout engine) and its (nrows, ncols) array of axes.
 
     Parameters
@@ -97,8 +121,10 @@ def new_figure(nrows: int, ncols: int, figsize: tuple[float, float], sharex: boo
     if ax is not None:
         axes = np.asarray(ax if isinstance(ax, (Sequence, np.ndarray)) else [ax], dtype=object).ravel()
         if axes.size != n or not all(hasattr(a, "plot") for a in axes):
-            raise ValueError(f"ax: this figure draws {n} panel(s) ({nrows} × {ncols}); pass {'one Axes' if n == 1 else f'{n} Axes'} "
-                             f"(got {axes.size} object(s))")
+            raise ValueError(
+                f"ax: this figure draws {n} panel(s) ({nrows} × {ncols}); pass {'one Axes' if n == 1 else f'{n} Axes'} "
+                f"(got {axes.size} object(s))"
+            )
         return axes[0].figure, axes.reshape(nrows, ncols)
     from matplotlib.figure import Figure
 
@@ -113,8 +139,14 @@ def new_figure(nrows: int, ncols: int, figsize: tuple[float, float], sharex: boo
     fast_png_canvas()(fig)
     panel_h = (height - top - bottom - (nrows - 1) * hspace) / nrows
     panel_w = (width - left - right - (ncols - 1) * wspace) / ncols
-    fig.subplots_adjust(left=left / width, right=1 - right / width, bottom=bottom / height, top=1 - top / height,
-                        hspace=hspace / max(panel_h, 1e-3), wspace=wspace / max(panel_w, 1e-3))
+    fig.subplots_adjust(
+        left=left / width,
+        right=1 - right / width,
+        bottom=bottom / height,
+        top=1 - top / height,
+        hspace=hspace / max(panel_h, 1e-3),
+        wspace=wspace / max(panel_w, 1e-3),
+    )
     if subplot_kw:
         axes = np.array([fig.add_subplot(nrows, ncols, k + 1, **subplot_kw) for k in range(n)], dtype=object)
         return fig, axes.reshape(nrows, ncols)
@@ -140,8 +172,13 @@ def magnitude(name: str, values: ArrayLike, size: int) -> NDArray[np.float64]:
 def mark_operating(ax: Axes, operating_rpm: float | None, label: bool = True) -> None:
     """Vertical line at the operating speed [rpm], if given."""
     if operating_rpm is not None:
-        ax.axvline(operating_rpm, color="tab:red", ls="-.", lw=1.2,
-                   label=f"operating speed {operating_rpm:.0f} rpm" if label else None)
+        ax.axvline(
+            operating_rpm,
+            color="tab:red",
+            ls="-.",
+            lw=1.2,
+            label=f"operating speed {operating_rpm:.0f} rpm" if label else None,
+        )
 
 
 def log_scale(ax: Axes, axis: str = "y", minor_grid: bool = True) -> None:
@@ -193,9 +230,8 @@ def _unicode_log_formatter() -> type:
 def _log_ticks(lo: float, hi: float) -> list[float]:
     """At least four 1-2-5 ticks inside [lo, hi] (lo > 0), fewer per decade on wide ranges."""
     decades = np.arange(np.floor(np.log10(lo)), np.ceil(np.log10(hi)) + 1)
-    for mantissas in ((1.0,), (1.0, 3.0), (1.0, 2.0, 5.0), (1.0, 1.5, 2.0, 3.0, 5.0, 7.0),
-                      tuple(np.arange(1.0, 10.0))):
-        ticks = [m * 10.0 ** d for d in decades for m in mantissas if lo * (1 - 1e-9) <= m * 10.0 ** d <= hi * (1 + 1e-9)]
+    for mantissas in ((1.0,), (1.0, 3.0), (1.0, 2.0, 5.0), (1.0, 1.5, 2.0, 3.0, 5.0, 7.0), tuple(np.arange(1.0, 10.0))):
+        ticks = [m * 10.0**d for d in decades for m in mantissas if lo * (1 - 1e-9) <= m * 10.0**d <= hi * (1 + 1e-9)]
         if len(ticks) >= 4:
             return ticks
     return ticks

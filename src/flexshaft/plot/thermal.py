@@ -13,8 +13,14 @@ __all__ = ["shaft_temperature_figure", "temperature_profiles_figure"]
 
 
 @styled
-def shaft_temperature_figure(x_nodes: ArrayLike, rise: Mapping[str, ArrayLike], x_elements: ArrayLike,
-                             heat_per_length: Mapping[str, ArrayLike], *, ax=None):
+def shaft_temperature_figure(
+    x_nodes: ArrayLike,
+    rise: Mapping[str, ArrayLike],
+    x_elements: ArrayLike,
+    heat_per_length: Mapping[str, ArrayLike],
+    *,
+    ax=None,
+):
     """Temperature rise above the air along the shaft [K] and the heat generated [W/m], one
     curve per loss model (``ax``: two axes)."""
     x = vector("x_nodes", x_nodes)
@@ -34,13 +40,17 @@ def shaft_temperature_figure(x_nodes: ArrayLike, rise: Mapping[str, ArrayLike], 
 
 
 @styled
-def temperature_profiles_figure(x_nodes: ArrayLike, by_wall: Mapping[str, ArrayLike], by_h: Mapping[str, ArrayLike],
-                                *, ax=None):
+def temperature_profiles_figure(
+    x_nodes: ArrayLike, by_wall: Mapping[str, ArrayLike], by_h: Mapping[str, ArrayLike], *, ax=None
+):
     """Shaft temperature rise along x [K] for several wall thicknesses and several convection
     coefficients (thesis figures 3.18 and 3.19; ``ax``: two axes)."""
     x = vector("x_nodes", x_nodes)
     fig, axes = new_figure(1, 2, (11.0, 4.2), sharex=False, ax=ax, wspace=0.8)
-    for a, curves, title in ((axes[0, 0], by_wall, "wall thickness (fixed D_o)"), (axes[0, 1], by_h, "convection coefficient")):
+    for a, curves, title in (
+        (axes[0, 0], by_wall, "wall thickness (fixed D_o)"),
+        (axes[0, 1], by_h, "convection coefficient"),
+    ):
         for name, values in curves.items():
             v = np.asarray(values, dtype=float)
             a.plot(np.linspace(x[0], x[-1], v.size) if v.size != x.size else x, v, label=name)

@@ -33,8 +33,15 @@ def _positive(values) -> np.ndarray:
 
 
 @styled
-def runup_envelope_figure(runs: Mapping[str, Any], steady: Any = None, *, operating_rpm: float | None = None,
-                          gap: float | None = None, force_limit: float | None = None, ax: Axes | None = None) -> Figure:
+def runup_envelope_figure(
+    runs: Mapping[str, Any],
+    steady: Any = None,
+    *,
+    operating_rpm: float | None = None,
+    gap: float | None = None,
+    force_limit: float | None = None,
+    ax: Axes | None = None,
+) -> Figure:
     """Run-up (or run-down) envelopes against speed, with the steady-state spin-up curve.
 
     Parameters
@@ -62,18 +69,32 @@ def runup_envelope_figure(runs: Mapping[str, Any], steady: Any = None, *, operat
         fig, panels = ax.figure, [ax]
     for label, run in runs.items():
         rpm = np.asarray(run.speed, dtype=float) * _RPM_PER_RAD_S
-        line, = panels[0].plot(rpm, _positive(run.shaft_peak) * MM_PER_M, lw=1.0, label=label)
+        (line,) = panels[0].plot(rpm, _positive(run.shaft_peak) * MM_PER_M, lw=1.0, label=label)
         if len(panels) > 1 and np.size(run.actuator_displacement):
-            panels[1].plot(rpm, _positive(np.max(run.actuator_displacement, axis=0)) * MM_PER_M, lw=1.0,
-                           color=line.get_color(), label=label)
-            panels[2].plot(rpm, _positive(np.max(run.actuator_force, axis=0)), lw=1.0, color=line.get_color(), label=label)
+            panels[1].plot(
+                rpm,
+                _positive(np.max(run.actuator_displacement, axis=0)) * MM_PER_M,
+                lw=1.0,
+                color=line.get_color(),
+                label=label,
+            )
+            panels[2].plot(
+                rpm, _positive(np.max(run.actuator_force, axis=0)), lw=1.0, color=line.get_color(), label=label
+            )
     if steady is not None:
         rpm = np.asarray(steady.speeds, dtype=float) * _RPM_PER_RAD_S
         panels[0].plot(rpm, _positive(steady.shaft_peak) * MM_PER_M, "k--", lw=1.2, label="steady-state spin-up")
         if len(panels) > 1 and np.size(steady.actuator_displacement):
-            panels[1].plot(rpm, _positive(np.max(steady.actuator_displacement, axis=0)) * MM_PER_M, "k--", lw=1.2,
-                           label="steady-state spin-up")
-            panels[2].plot(rpm, _positive(np.max(steady.actuator_force, axis=0)), "k--", lw=1.2, label="steady-state spin-up")
+            panels[1].plot(
+                rpm,
+                _positive(np.max(steady.actuator_displacement, axis=0)) * MM_PER_M,
+                "k--",
+                lw=1.2,
+                label="steady-state spin-up",
+            )
+            panels[2].plot(
+                rpm, _positive(np.max(steady.actuator_force, axis=0)), "k--", lw=1.2, label="steady-state spin-up"
+            )
     panels[0].set_ylabel("largest shaft deflection [mm]")
     panels[0].set_title("Run-up through the criticals: deflection envelope against speed")
     if len(panels) > 1:
@@ -100,8 +121,9 @@ def _exceedance(ax, values, label, scale=1.0):
 
 
 @styled
-def montecarlo_figure(samples: Any, *, gap: float | None = None, force_limit: float | None = None,
-                      axes: Any = None) -> Figure:
+def montecarlo_figure(
+    samples: Any, *, gap: float | None = None, force_limit: float | None = None, axes: Any = None
+) -> Figure:
     """Monte-Carlo imbalance: histograms of the peak deflection and the safety factor,
     exceedance curves P(X ≥ x) of the actuator orbit and force with their limits.
 
@@ -141,7 +163,10 @@ def montecarlo_figure(samples: Any, *, gap: float | None = None, force_limit: fl
     b.set_title("Shaft strength")
     c.set_xlabel("actuator excursion: static offset + peak orbit [mm]")
     d.set_xlabel("actuator force: static + peak dynamic [N]")
-    for ax, limit, name in ((c, None if gap is None else gap * MM_PER_M, "gap {:.3g} mm"), (d, force_limit, "force limit {:.4g} N")):
+    for ax, limit, name in (
+        (c, None if gap is None else gap * MM_PER_M, "gap {:.3g} mm"),
+        (d, force_limit, "force limit {:.4g} N"),
+    ):
         ax.set_yscale("log")
         ax.set_ylabel("P(X ≥ x)")
         ax.grid(which="minor", alpha=0.12)

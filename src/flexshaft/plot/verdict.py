@@ -84,8 +84,15 @@ def margins_figure(
         color = STATUS_COLORS[state]
         if not np.isfinite(v):
             ax.barh(yi, 0.02 * span, left=-0.01 * span, color=color, height=0.6, hatch="///", edgecolor="0.5")
-            ax.annotate("not evaluated", (0.0, yi), xytext=(6, 0), textcoords="offset points", va="center",
-                        fontsize=8, color="0.35")
+            ax.annotate(
+                "not evaluated",
+                (0.0, yi),
+                xytext=(6, 0),
+                textcoords="offset points",
+                va="center",
+                fontsize=8,
+                color="0.35",
+            )
             continue
         shown = float(np.clip(v, lo, hi))
         ax.barh(yi, shown, color=color, height=0.6, alpha=0.9)
@@ -93,14 +100,32 @@ def margins_figure(
             ax.plot([shown], [yi], ">" if v > 0 else "<", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
         label = ("≥ " if bound else "") + f"{v:+.0%}" + (f"  ({text})" if text else "")
         if v < 0:  # failed: the text on the empty positive side, clear of the names
-            ax.annotate(label, (0.0, yi), xytext=(7, 0), textcoords="offset points", ha="left", va="center",
-                        fontsize=8, color="tab:red")
+            ax.annotate(
+                label,
+                (0.0, yi),
+                xytext=(7, 0),
+                textcoords="offset points",
+                ha="left",
+                va="center",
+                fontsize=8,
+                color="tab:red",
+            )
         elif shown != v:  # cut: inside the bar
-            ax.annotate(label, (shown, yi), xytext=(-12, 0), textcoords="offset points", ha="right", va="center",
-                        fontsize=8, color="white", fontweight="bold")
+            ax.annotate(
+                label,
+                (shown, yi),
+                xytext=(-12, 0),
+                textcoords="offset points",
+                ha="right",
+                va="center",
+                fontsize=8,
+                color="white",
+                fontweight="bold",
+            )
         else:
-            ax.annotate(label, (shown, yi), xytext=(7, 0), textcoords="offset points", ha="left", va="center",
-                        fontsize=8)
+            ax.annotate(
+                label, (shown, yi), xytext=(7, 0), textcoords="offset points", ha="left", va="center", fontsize=8
+            )
     ax.axvline(0.0, color="k", lw=1.0)
     ax.set_yticks(y, names)
     ax.grid(axis="y", visible=False)

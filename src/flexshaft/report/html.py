@@ -205,16 +205,16 @@ def _png_dpi(data: bytes) -> float:
 
 def _render_table(table: Table, number: int) -> str:
     e = html.escape
-    head = "".join(f"<th scope=\"col\">{e(str(name))}</th>" for name in table.columns)
+    head = "".join(f'<th scope="col">{e(str(name))}</th>' for name in table.columns)
     body = []
     for row in table.rows:
         cells = "".join(
-            f"<td class=\"num\">{e(format_cell(v))}</td>" if _is_numeric(v) else f"<td>{e(format_cell(v))}</td>"
+            f'<td class="num">{e(format_cell(v))}</td>' if _is_numeric(v) else f"<td>{e(format_cell(v))}</td>"
             for v in row
         )
         body.append(f"<tr>{cells}</tr>")
     return (
-        f"<table id=\"table-{number}\">\n<caption>Table {number}. {e(table.caption)}</caption>\n"
+        f'<table id="table-{number}">\n<caption>Table {number}. {e(table.caption)}</caption>\n'
         f"<thead><tr>{head}</tr></thead>\n<tbody>\n" + "\n".join(body) + "\n</tbody>\n</table>"
     )
 
@@ -232,10 +232,10 @@ def _render_figure(figure: FigureRef, number: int) -> str:
     encoded = base64.b64encode(data).decode("ascii")
     alt = html.escape(figure.alt if figure.alt is not None else figure.caption, quote=True)
     return (
-        f"<figure id=\"figure-{number}\">\n"
-        f"<img src=\"data:image/png;base64,{encoded}\" alt=\"{alt}\" width=\"{width}\" height=\"{height}\">\n"
+        f'<figure id="figure-{number}">\n'
+        f'<img src="data:image/png;base64,{encoded}" alt="{alt}" width="{width}" height="{height}">\n'
         f"<figcaption>Figure {number}. {html.escape(figure.caption)} "
-        f"<span class=\"file\">({html.escape(files)})</span></figcaption>\n</figure>"
+        f'<span class="file">({html.escape(files)})</span></figcaption>\n</figure>'
     )
 
 
@@ -270,13 +270,11 @@ def render_report(
     e = html.escape
     generated = generated if generated is not None else dt.datetime.now().replace(microsecond=0)
     date_text = generated.strftime("%Y-%m-%d %H:%M") if isinstance(generated, dt.datetime) else generated.isoformat()
-    toc = "\n".join(
-        f"<li><a href=\"#section-{i}\">{e(section.title)}</a></li>" for i, section in enumerate(sections, 1)
-    )
+    toc = "\n".join(f'<li><a href="#section-{i}">{e(section.title)}</a></li>' for i, section in enumerate(sections, 1))
     parts: list[str] = []
     table_number = figure_number = 0
     for i, section in enumerate(sections, 1):
-        parts.append(f"<section id=\"section-{i}\">\n<h2>{i}. {e(section.title)}</h2>")
+        parts.append(f'<section id="section-{i}">\n<h2>{i}. {e(section.title)}</h2>')
         parts.extend(f"<p>{e(paragraph)}</p>" for paragraph in section.paragraphs)
         for table in section.tables:
             table_number += 1
@@ -284,8 +282,10 @@ def render_report(
         for figure in section.figures:
             figure_number += 1
             parts.append(_render_figure(figure, figure_number))
-        parts.extend(f"<details>\n<summary>{e(block.summary)}</summary>\n<pre>{e(block.text)}</pre>\n</details>"
-                     for block in section.blocks)
+        parts.extend(
+            f"<details>\n<summary>{e(block.summary)}</summary>\n<pre>{e(block.text)}</pre>\n</details>"
+            for block in section.blocks
+        )
         parts.append("</section>")
     body = "\n".join(parts)
     return f"""<!DOCTYPE html>
@@ -323,12 +323,7 @@ files beside this page (named in each caption).</footer>
 """
 
 
-def write_report(
-    folder: str | Path,
-    title: str,
-    sections: Sequence[Section],
-    **options: Any,
-) -> Path:
+def write_report(folder: str | Path, title: str, sections: Sequence[Section], **options: Any) -> Path:
     """Write ``report.html`` into ``folder`` (created if missing) and return its path.
 
     Parameters

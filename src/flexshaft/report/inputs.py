@@ -14,8 +14,8 @@ import json
 import re
 from dataclasses import dataclass
 
-from flexshaft.units import rad_s_to_rpm
 from flexshaft.report.html import Preformatted, Section, Table
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["MARKERS", "MarkedInput", "inputs_section", "marked_inputs", "report_title"]
 
@@ -65,7 +65,7 @@ def _split_comment(line: str) -> tuple[str, str]:
         elif char in "\"'":
             quote = char
         elif char == "#":
-            return line[:i], line[i + 1:].strip()
+            return line[:i], line[i + 1 :].strip()
         i += 1
     return line, ""
 
@@ -120,10 +120,10 @@ def marked_inputs(text: str) -> list[MarkedInput]:
             continue
         key_match = _KEY.match(code)
         if key_match:
-            key = re.sub(r"\s*\.\s*", ".", key_match.group(1)).strip('"\'')
+            key = re.sub(r"\s*\.\s*", ".", key_match.group(1)).strip("\"'")
             value = key_match.group(2).strip()
             if key == "name" and table.index is not None:
-                table.name = value.strip('"\'')
+                table.name = value.strip("\"'")
             last_key = (key, value)
             if marker:
                 found.append((table, key, value, marker.group(1).lower(), comment, number))
@@ -147,9 +147,11 @@ def report_title(design) -> str:
     material = f"{shaft.layup} {shaft.material}" if shaft.layup else f"{shaft.material} (isotropic)"
     actives = sum(b.kind == "active" for b in design.bearings)
     support = "on a flexible tailboom" if design.tailboom is not None else "on rigid supports"
-    return (f"{material} shaft, Ø {shaft.outer_diameter * 1e3:.1f} mm × {shaft.wall_thickness * 1e3:.2f} mm wall, "
-            f"{rad_s_to_rpm(design.operating.speed_rad_s):.0f} rpm, {design.operating.power / 1e3:.0f} kW, {support}, "
-            f"{actives} active bearing{'s' if actives != 1 else ''}")
+    return (
+        f"{material} shaft, Ø {shaft.outer_diameter * 1e3:.1f} mm × {shaft.wall_thickness * 1e3:.2f} mm wall, "
+        f"{rad_s_to_rpm(design.operating.speed_rad_s):.0f} rpm, {design.operating.power / 1e3:.0f} kW, {support}, "
+        f"{actives} active bearing{'s' if actives != 1 else ''}"
+    )
 
 
 def inputs_section(design, design_text: str | None, source: str) -> Section:
@@ -167,21 +169,35 @@ def inputs_section(design, design_text: str | None, source: str) -> Section:
     paragraphs = [f"Design file: {source}."]
     tables = []
     if design_text is None:
-        paragraphs.append("The original file was not passed to the report; the block below is the validated "
-                          "design (JSON, SI units), without the file's comments, so no assumed value can be listed.")
+        paragraphs.append(
+            "The original file was not passed to the report; the block below is the validated "
+            "design (JSON, SI units), without the file's comments, so no assumed value can be listed."
+        )
         text = json.dumps(design.model_dump(mode="json"), indent=2)
     else:
         text = design_text
         marked = marked_inputs(design_text)
         if marked:
-            paragraphs.append(f"{len(marked)} input values are marked in the file as assumed or calibrated: they "
-                              "are not data, and every result that depends on them inherits their uncertainty; "
-                              "replace them with measured values when available.")
-            tables.append(Table("Inputs marked in the design file as assumed or calibrated",
-                                ["key", "value", "marked", "comment", "line"],
-                                [[m.key, m.value, m.marker, m.comment, m.line] for m in marked]))
+            paragraphs.append(
+                f"{len(marked)} input values are marked in the file as assumed or calibrated: they "
+                "are not data, and every result that depends on them inherits their uncertainty; "
+                "replace them with measured values when available."
+            )
+            tables.append(
+                Table(
+                    "Inputs marked in the design file as assumed or calibrated",
+                    ["key", "value", "marked", "comment", "line"],
+                    [[m.key, m.value, m.marker, m.comment, m.line] for m in marked],
+                )
+            )
         else:
-            paragraphs.append("The file marks no value as assumed or calibrated (a comment containing the word "
-                              "\"assumed\" or \"calibrated\" marks the value on its line).")
-    return Section("Inputs and assumptions", paragraphs=paragraphs, tables=tables,
-                   blocks=[Preformatted(f"Design file ({source}, {len(text.splitlines())} lines)", text)])
+            paragraphs.append(
+                "The file marks no value as assumed or calibrated (a comment containing the word "
+                '"assumed" or "calibrated" marks the value on its line).'
+            )
+    return Section(
+        "Inputs and assumptions",
+        paragraphs=paragraphs,
+        tables=tables,
+        blocks=[Preformatted(f"Design file ({source}, {len(text.splitlines())} lines)", text)],
+    )

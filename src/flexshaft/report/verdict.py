@@ -10,8 +10,8 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from flexshaft.units import format_quantity, rad_s_to_rpm  # format_quantity re-exported
 from flexshaft.report.html import Section, Table
+from flexshaft.units import format_quantity, rad_s_to_rpm  # format_quantity re-exported
 
 __all__ = ["VERDICT_COLUMNS", "format_quantity", "location_text", "verdict_rows", "verdict_section"]
 
@@ -65,16 +65,24 @@ def verdict_rows(verdict, compact: bool = False) -> list[list[str]]:
     rows = []
     for c in verdict.checks:
         bound = "> " if c.lower_bound else ""
-        rows.append([c.title, bound + format_quantity(c.kind, c.value), _limit_text(c),
-                     bound + format_quantity(c.kind, c.margin, margin=True), _STATUS[c.status],
-                     location_text(c.location, compact), c.note])
+        rows.append(
+            [
+                c.title,
+                bound + format_quantity(c.kind, c.value),
+                _limit_text(c),
+                bound + format_quantity(c.kind, c.margin, margin=True),
+                _STATUS[c.status],
+                location_text(c.location, compact),
+                c.note,
+            ]
+        )
     return rows
 
 
 def verdict_section(verdict, operating_rpm: float) -> Section:
     """The report's first section: the overall verdict and the table of requirements."""
     failed = [f"{c.title} ({location_text(c.location)})" for c in verdict.failed]
-    lead = (f"Verdict: {'PASS' if verdict.passed else 'FAIL'}. " + verdict.summary.split(": ", 1)[1] + ".")
+    lead = f"Verdict: {'PASS' if verdict.passed else 'FAIL'}. " + verdict.summary.split(": ", 1)[1] + "."
     paragraphs = [lead]
     if failed:
         paragraphs.append("Failed, worst case of each: " + "; ".join(failed) + ".")
@@ -85,7 +93,12 @@ def verdict_section(verdict, operating_rpm: float) -> Section:
         "that could not be evaluated is marked so and does not pass. Separation margins follow API 684: the "
         "amplification factor AF = N_c/(N_2 − N_1) from the half-power points of the unbalance response at the "
         "shaft station where each peak is largest; AF < 2.5 needs no margin, otherwise 17(1 − 1/(AF − 1.5)) % "
-        "(at most 16 %) below and 10 + 17(1 − 1/(AF − 1.5)) % (at most 26 %) above the operating speed.")
-    return Section("Verdict against the requirements", paragraphs=paragraphs,
-                   tables=[Table("Requirements verdict (worst case of each requirement)", list(VERDICT_COLUMNS),
-                                 verdict_rows(verdict))])
+        "(at most 16 %) below and 10 + 17(1 − 1/(AF − 1.5)) % (at most 26 %) above the operating speed."
+    )
+    return Section(
+        "Verdict against the requirements",
+        paragraphs=paragraphs,
+        tables=[
+            Table("Requirements verdict (worst case of each requirement)", list(VERDICT_COLUMNS), verdict_rows(verdict))
+        ],
+    )

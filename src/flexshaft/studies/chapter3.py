@@ -20,17 +20,29 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
 from flexshaft.units import rad_s_to_rpm
 
-__all__ = ["COSTS", "DesignStudies", "RESOLUTIONS", "THESIS", "design_studies", "finish_design_studies",
-           "plan_design_studies", "start_design_studies", "headline", "nearest", "two_angle_name",
-           "save_study_data"]
+__all__ = [
+    "COSTS",
+    "DesignStudies",
+    "RESOLUTIONS",
+    "THESIS",
+    "design_studies",
+    "finish_design_studies",
+    "plan_design_studies",
+    "start_design_studies",
+    "headline",
+    "nearest",
+    "two_angle_name",
+    "save_study_data",
+]
 
 
 #: Thesis chapter 3 headline results (Ocalan 2002), for comparison.
@@ -132,12 +144,26 @@ def _reporter(progress) -> Callable[[str], None]:
 #: Relative cost of each study (seconds measured at the "report" resolution on the tuned
 #: design, one K_p row for the stability map); it only orders the tasks on a worker pool,
 #: longest first, so that the workers finish at about the same time.
-COSTS = {"ply_angle": 1.2, "two_angle": 1.5, "wall": 2.9, "forced_response": 0.45, "gain": 0.65,
-         "buckling": 1.7, "spinup": 2.0, "stability": 0.2}
+COSTS = {
+    "ply_angle": 1.2,
+    "two_angle": 1.5,
+    "wall": 2.9,
+    "forced_response": 0.45,
+    "gain": 0.65,
+    "buckling": 1.7,
+    "spinup": 2.0,
+    "stability": 0.2,
+}
 
 
-def design_studies(design=None, resolution: str = "report", progress=None, jobs: int = 1,
-                   actuator_gap: float | None = None, executor=None) -> DesignStudies:
+def design_studies(
+    design=None,
+    resolution: str = "report",
+    progress=None,
+    jobs: int = 1,
+    actuator_gap: float | None = None,
+    executor=None,
+) -> DesignStudies:
     """Run the thesis chapter-3 studies on ``design`` (default: the embedded baseline).
 
     Parameters
@@ -161,12 +187,21 @@ def design_studies(design=None, resolution: str = "report", progress=None, jobs:
     """
     if executor is not None and jobs != 1:
         raise ValueError(f"jobs must be 1 when the studies run on an executor (got jobs={jobs})")
-    res, run = start_design_studies(design, resolution, actuator_gap, executor, jobs=jobs, progress_bars=progress is True)
+    res, run = start_design_studies(
+        design, resolution, actuator_gap, executor, jobs=jobs, progress_bars=progress is True
+    )
     return finish_design_studies(res, run, progress)
 
 
-def start_design_studies(design=None, resolution: str = "report", actuator_gap: float | None = None, executor=None,
-                         *, jobs: int = 1, progress_bars: bool = False):
+def start_design_studies(
+    design=None,
+    resolution: str = "report",
+    actuator_gap: float | None = None,
+    executor=None,
+    *,
+    jobs: int = 1,
+    progress_bars: bool = False,
+):
     """Start the studies of :func:`design_studies` (on ``executor`` when given) and return
     ``(DesignStudies, TaskRun)`` for :func:`finish_design_studies`: the caller can compute
     something else while a pool works on them."""
@@ -177,8 +212,14 @@ def start_design_studies(design=None, resolution: str = "report", actuator_gap: 
     return res, start_tasks(tasks, executor, errors=(SweepError, ValueError))
 
 
-def plan_design_studies(design=None, resolution: str = "report", actuator_gap: float | None = None, *, jobs: int = 1,
-                        progress_bars: bool = False):
+def plan_design_studies(
+    design=None,
+    resolution: str = "report",
+    actuator_gap: float | None = None,
+    *,
+    jobs: int = 1,
+    progress_bars: bool = False,
+):
     """``(DesignStudies, tasks)``: the empty results (with the notes of the studies that do
     not apply) and the :class:`~flexshaft.studies.tasks.Task` of each study, to start
     together with other tasks (:func:`flexshaft.studies.tasks.start_tasks`)."""
@@ -192,8 +233,12 @@ def plan_design_studies(design=None, resolution: str = "report", actuator_gap: f
     design = design if design is not None else baseline_design()
     run = {"jobs": int(jobs), "progress": bool(progress_bars)}
     model = build_model(design)
-    res = DesignStudies(design_name=str(design.name), resolution=resolution, operating_speed=float(model.speed),
-                        actuator_gap=actuator_gap)
+    res = DesignStudies(
+        design_name=str(design.name),
+        resolution=resolution,
+        operating_speed=float(model.speed),
+        actuator_gap=actuator_gap,
+    )
     laminated = model.shaft.laminate is not None
     active = bool(model.actuators) and model.all_pd
     tasks = []
@@ -207,8 +252,14 @@ def plan_design_studies(design=None, resolution: str = "report", actuator_gap: f
     else:
         res.notes.append("ply-angle studies skipped: the shaft material is not a lamina")
     task("wall", "study 3: wall thickness", _wall_task, design, grid["walls"], run, laminated)
-    task("forced_response", "study 3: forced response", _forced_response_task, design, FORCED_WALLS,
-         grid["forced_speeds"])
+    task(
+        "forced_response",
+        "study 3: forced response",
+        _forced_response_task,
+        design,
+        FORCED_WALLS,
+        grid["forced_speeds"],
+    )
     if laminated and active and _both_actuators(design):
         task("gain", "study 4: proportional gain", _gain_task, design, grid["kp"], run)
     elif laminated:
@@ -258,8 +309,11 @@ def _ply_angle_task(design, angles, run) -> dict:
 
     ds = ply_angle_study(angles, design=design, **run)
     i = int(np.nanargmax(ds["safety_factor"].values))
-    return {"ply_angle": ds, "optimal_angle": float(ds.alpha.values[i]),
-            "optimal_angle_safety_factor": float(ds["safety_factor"].values[i])}
+    return {
+        "ply_angle": ds,
+        "optimal_angle": float(ds.alpha.values[i]),
+        "optimal_angle_safety_factor": float(ds["safety_factor"].values[i]),
+    }
 
 
 def _two_angle_task(design, angles, run) -> dict:
@@ -267,8 +321,11 @@ def _two_angle_task(design, angles, run) -> dict:
 
     ds = two_angle_study(angles, angles, design=design, **run)
     i, j = np.unravel_index(int(np.nanargmax(ds["safety_factor"].values)), ds["safety_factor"].shape)
-    return {"two_angle": ds, "best_two_angle": (float(ds.alpha.values[i]), float(ds.beta.values[j])),
-            "best_two_angle_safety_factor": float(ds["safety_factor"].values[i, j])}
+    return {
+        "two_angle": ds,
+        "best_two_angle": (float(ds.alpha.values[i]), float(ds.beta.values[j])),
+        "best_two_angle_safety_factor": float(ds["safety_factor"].values[i, j]),
+    }
 
 
 def _wall_task(design, walls, run, laminated: bool) -> dict:
@@ -281,8 +338,10 @@ def _wall_task(design, walls, run, laminated: bool) -> dict:
         i = int(np.nanargmax(sf))
         out["best_wall"], out["best_wall_safety_factor"] = float(ds.wall_thickness.values[i]), float(sf[i])
         if i in (0, sf.size - 1):
-            out["notes"] = [f"the best wall ({out['best_wall'] * 1e3:g} mm) is at the end of the range studied: "
-                            "the safety factor is monotonic there"]
+            out["notes"] = [
+                f"the best wall ({out['best_wall'] * 1e3:g} mm) is at the end of the range studied: "
+                "the safety factor is monotonic there"
+            ]
     return out
 
 
@@ -355,15 +414,24 @@ def _forced_response(design, walls, n_speeds: int):
             n = np.arange(dm.n_shaft_nodes)
             peaks.append(orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")]).max(axis=(0, 1)))
     return xr.Dataset(
-        {"shaft_peak": (("wall_thickness", "speed"), np.array(peaks),
-                        {"units": "m", "long_name": "largest shaft orbit over the nodes"})},
-        coords={"wall_thickness": ("wall_thickness", np.asarray(walls, float), {"units": "m"}),
-                "speed": ("speed", speeds, {"units": "rad/s", "long_name": "spin speed"})},
+        {
+            "shaft_peak": (
+                ("wall_thickness", "speed"),
+                np.array(peaks),
+                {"units": "m", "long_name": "largest shaft orbit over the nodes"},
+            )
+        },
+        coords={
+            "wall_thickness": ("wall_thickness", np.asarray(walls, float), {"units": "m"}),
+            "speed": ("speed", speeds, {"units": "rad/s", "long_name": "spin speed"}),
+        },
         attrs={"title": "forced response vs wall thickness (thesis figure 3.5)"},
     )
 
 
-def _refined_peak(receptance_at, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81) -> tuple[float, float]:
+def _refined_peak(
+    receptance_at, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81
+) -> tuple[float, float]:
     """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak;
     ``receptance_at(fine_speeds)`` gives the actuator receptance there."""
     from flexshaft.analyses.spinup import spinup_curves
@@ -430,11 +498,20 @@ def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]
     orbits = [spinup_curves(rec, (kp, kd)).shaft_orbit for _, kp, kd in cases]
     surfaces = xr.Dataset(
-        {"shaft_orbit": (("case", "x", "speed"), np.array(orbits), {"units": "m", "long_name": "shaft orbit major semi-axis"})},
-        coords={"case": [c[0] for c in cases], "kp": ("case", [c[1] for c in cases], {"units": "N/m"}),
-                "kd": ("case", [c[2] for c in cases], {"units": "N s/m"}),
-                "x": ("x", rec.shaft_x, {"units": "m", "long_name": "shaft station"}),
-                "speed": ("speed", rec.speeds, {"units": "rad/s"})},
+        {
+            "shaft_orbit": (
+                ("case", "x", "speed"),
+                np.array(orbits),
+                {"units": "m", "long_name": "shaft orbit major semi-axis"},
+            )
+        },
+        coords={
+            "case": [c[0] for c in cases],
+            "kp": ("case", [c[1] for c in cases], {"units": "N/m"}),
+            "kd": ("case", [c[2] for c in cases], {"units": "N s/m"}),
+            "x": ("x", rec.shaft_x, {"units": "m", "long_name": "shaft station"}),
+            "speed": ("speed", rec.speeds, {"units": "rad/s"}),
+        },
         attrs={"title": "frequency-response surfaces (thesis figures 3.13, 3.14)"},
     )
 
@@ -444,22 +521,47 @@ def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     (peak_before, speed_before), (peak_after, speed_after) = refined
     tuned = xr.Dataset(
         {
-            "shaft_peak": (("case", "speed"), np.array([c.shaft_peak for c in curves]),
-                           {"units": "m", "long_name": "largest shaft orbit over the nodes"}),
-            "actuator_displacement": (("case", "actuator", "speed"), np.array([c.actuator_displacement for c in curves]),
-                                      {"units": "m"}),
-            "actuator_force": (("case", "actuator", "speed"), np.array([c.actuator_force for c in curves]), {"units": "N"}),
-            "refined_peak": ("case", [r[0] for r in refined], {"units": "m", "long_name": "peak on a refined speed grid"}),
+            "shaft_peak": (
+                ("case", "speed"),
+                np.array([c.shaft_peak for c in curves]),
+                {"units": "m", "long_name": "largest shaft orbit over the nodes"},
+            ),
+            "actuator_displacement": (
+                ("case", "actuator", "speed"),
+                np.array([c.actuator_displacement for c in curves]),
+                {"units": "m"},
+            ),
+            "actuator_force": (
+                ("case", "actuator", "speed"),
+                np.array([c.actuator_force for c in curves]),
+                {"units": "N"},
+            ),
+            "refined_peak": (
+                "case",
+                [r[0] for r in refined],
+                {"units": "m", "long_name": "peak on a refined speed grid"},
+            ),
         },
-        coords={"case": ["design gains", "tuned gains"],
-                "kp": ("case", [gains_before[0], kp_a], {"units": "N/m"}),
-                "kd": ("case", [gains_before[1], kd_a], {"units": "N s/m"}),
-                "actuator": list(rec.actuator_names), "speed": ("speed", rec.speeds, {"units": "rad/s"})},
+        coords={
+            "case": ["design gains", "tuned gains"],
+            "kp": ("case", [gains_before[0], kp_a], {"units": "N/m"}),
+            "kd": ("case", [gains_before[1], kd_a], {"units": "N s/m"}),
+            "actuator": list(rec.actuator_names),
+            "speed": ("speed", rec.speeds, {"units": "rad/s"}),
+        },
         attrs={"title": "tuned gains (thesis figure 3.17)"},
     )
-    return {"spinup_map": ds, "gains_before": gains_before, "gains_after": (kp_a, kd_a), "surfaces": surfaces,
-            "tuned": tuned, "peak_before": peak_before, "peak_speed_before": speed_before, "peak_after": peak_after,
-            "peak_speed_after": speed_after}
+    return {
+        "spinup_map": ds,
+        "gains_before": gains_before,
+        "gains_after": (kp_a, kd_a),
+        "surfaces": surfaces,
+        "tuned": tuned,
+        "peak_before": peak_before,
+        "peak_speed_before": speed_before,
+        "peak_after": peak_after,
+        "peak_speed_after": speed_after,
+    }
 
 
 def _stability_dataset(smap) -> Any:
@@ -467,9 +569,18 @@ def _stability_dataset(smap) -> Any:
     import xarray as xr
 
     return xr.Dataset(
-        {"onset_speed": (("kp", "kd"), smap.onset_speed, {"units": "rad/s", "long_name": "whirl onset speed (NaN: stable)"}),
-         "damping_ratio": (("kp", "kd"), smap.margin_at_operating,
-                           {"units": "1", "long_name": "smallest damping ratio at the operating speed"})},
+        {
+            "onset_speed": (
+                ("kp", "kd"),
+                smap.onset_speed,
+                {"units": "rad/s", "long_name": "whirl onset speed (NaN: stable)"},
+            ),
+            "damping_ratio": (
+                ("kp", "kd"),
+                smap.margin_at_operating,
+                {"units": "1", "long_name": "smallest damping ratio at the operating speed"},
+            ),
+        },
         coords={"kp": ("kp", smap.kp, {"units": "N/m"}), "kd": ("kd", smap.kd, {"units": "N s/m"})},
         attrs={"title": "whirl-stability margin over the actuator gains", "max_speed_rad_s": smap.max_speed},
     )
@@ -499,8 +610,12 @@ def headline(results: DesignStudies) -> dict:
         "best_two_angle_safety_factor": _f(r.best_two_angle_safety_factor),
         "best_wall_m": _f(r.best_wall),
         "best_wall_safety_factor": _f(r.best_wall_safety_factor),
-        "gains_before": {"kp_N_per_m": _f(r.gains_before[0]), "kd_N_s_per_m": _f(r.gains_before[1])} if r.gains_before else None,
-        "gains_after": {"kp_N_per_m": _f(r.gains_after[0]), "kd_N_s_per_m": _f(r.gains_after[1])} if r.gains_after else None,
+        "gains_before": {"kp_N_per_m": _f(r.gains_before[0]), "kd_N_s_per_m": _f(r.gains_before[1])}
+        if r.gains_before
+        else None,
+        "gains_after": {"kp_N_per_m": _f(r.gains_after[0]), "kd_N_s_per_m": _f(r.gains_after[1])}
+        if r.gains_after
+        else None,
         "peak_deflection_before_m": _f(r.peak_before),
         "peak_deflection_after_m": _f(r.peak_after),
         "peak_speed_before_rpm": _f(None if r.peak_speed_before is None else rad_s_to_rpm(r.peak_speed_before)),
@@ -516,12 +631,24 @@ def headline(results: DesignStudies) -> dict:
     if r.ply_angle is not None:
         out["ply_angle_safety_factor_at_55_deg"] = _f(nearest(r.ply_angle, "alpha", 55.0)["safety_factor"])
     if r.two_angle is not None:
-        out["two_angle_safety_factor_at_55_0"] = _f(r.two_angle["safety_factor"].sel(alpha=55.0, beta=0.0, method="nearest"))
+        out["two_angle_safety_factor_at_55_0"] = _f(
+            r.two_angle["safety_factor"].sel(alpha=55.0, beta=0.0, method="nearest")
+        )
     return out
 
 
-_DATASETS = ("ply_angle", "two_angle", "wall", "forced_response", "gain", "buckling", "spinup_map", "surfaces",
-             "tuned", "stability_map")
+_DATASETS = (
+    "ply_angle",
+    "two_angle",
+    "wall",
+    "forced_response",
+    "gain",
+    "buckling",
+    "spinup_map",
+    "surfaces",
+    "tuned",
+    "stability_map",
+)
 
 
 def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Path]:
@@ -549,5 +676,3 @@ def nearest(ds, dim: str, value: float):
 def two_angle_name(pair) -> str:
     a, b = (f"{v:g}" for v in pair)
     return f"({a}/-{a}/{b}/-{b})s".replace("/-0/", "/0/").replace("/-0)", "/0)")
-
-

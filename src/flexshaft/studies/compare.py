@@ -52,8 +52,8 @@ class Inventory:
 def driveline_inventory(model: Model) -> Inventory:
     """Mass and count of the driveline's parts by kind (see the module docstring)."""
     design = model.design
-    mass = {kind: 0.0 for kind in PART_KINDS}
-    count = {kind: 0 for kind in PART_KINDS}
+    mass = dict.fromkeys(PART_KINDS, 0.0)
+    count = dict.fromkeys(PART_KINDS, 0)
     missing = []
     mass["segments"], count["segments"] = float(model.shaft_mass), len(design.couplings) + 1
     for coupling in design.couplings:
@@ -111,9 +111,11 @@ class Comparison(ResultMixin):
     def __repr__(self) -> str:
         a, b = self.labels
         verdicts = [("PASS" if r.verdict.passed else "FAIL") for r in self.runs]
-        return (f"Comparison({a}: {self.inventories[0].total_mass:.1f} kg, {self.inventories[0].total_count} parts, "
-                f"{verdicts[0]}; {b}: {self.inventories[1].total_mass:.1f} kg, {self.inventories[1].total_count} "
-                f"parts, {verdicts[1]})")
+        return (
+            f"Comparison({a}: {self.inventories[0].total_mass:.1f} kg, {self.inventories[0].total_count} parts, "
+            f"{verdicts[0]}; {b}: {self.inventories[1].total_mass:.1f} kg, {self.inventories[1].total_count} "
+            f"parts, {verdicts[1]})"
+        )
 
     # -- the verdicts ------------------------------------------------------------------------------
 
@@ -141,9 +143,18 @@ class Comparison(ResultMixin):
         check = self.check("separation", design)
         if check is None:
             return []
-        return [{"speed": f.location.get("speed"), "amplification_factor": f.location.get("amplification_factor"),
-                 "margin": f.value, "required": f.limit, "passed": f.passed, "station": f.location.get("station"),
-                 "mode": f.location.get("mode", "")} for f in check.findings]
+        return [
+            {
+                "speed": f.location.get("speed"),
+                "amplification_factor": f.location.get("amplification_factor"),
+                "margin": f.value,
+                "required": f.limit,
+                "passed": f.passed,
+                "station": f.location.get("station"),
+                "mode": f.location.get("mode", ""),
+            }
+            for f in check.findings
+        ]
 
     # -- the key numbers ---------------------------------------------------------------------------
 
@@ -151,31 +162,62 @@ class Comparison(ResultMixin):
         """The compared quantities, SI units (see :class:`Metric`)."""
         out = []
         for kind in PART_KINDS:
-            out.append(Metric(f"mass_{kind}", f"mass: {kind}", "kg",
-                              tuple(inv.mass[kind] for inv in self.inventories)))
-        out.append(Metric("mass_total", "mass: driveline total", "kg", tuple(inv.total_mass for inv in self.inventories),
-                          tuple(_missing_note(inv) for inv in self.inventories)))
+            out.append(Metric(f"mass_{kind}", f"mass: {kind}", "kg", tuple(inv.mass[kind] for inv in self.inventories)))
+        out.append(
+            Metric(
+                "mass_total",
+                "mass: driveline total",
+                "kg",
+                tuple(inv.total_mass for inv in self.inventories),
+                tuple(_missing_note(inv) for inv in self.inventories),
+            )
+        )
         for kind in PART_KINDS:
-            out.append(Metric(f"count_{kind}", f"parts: {kind}", "1",
-                              tuple(float(inv.count[kind]) for inv in self.inventories)))
-        out.append(Metric("count_total", "parts: total", "1", tuple(float(inv.total_count) for inv in self.inventories)))
+            out.append(
+                Metric(
+                    f"count_{kind}", f"parts: {kind}", "1", tuple(float(inv.count[kind]) for inv in self.inventories)
+                )
+            )
+        out.append(
+            Metric("count_total", "parts: total", "1", tuple(float(inv.total_count) for inv in self.inventories))
+        )
         out.append(self._from_checks("strength", "smallest strength safety factor", "1", ("tsai_wu", "metal_strength")))
         out.append(self._from_checks("buckling", "torsional buckling safety factor", "1", ("buckling",)))
         out.append(self._critical("critical_below", "highest lateral critical below the operating speed", below=True))
         out.append(self._critical("critical_above", "lowest lateral critical above the operating speed", below=False))
-        out.append(self._from_checks("separation", "smallest separation margin (fraction of Ω_op)", "1", ("separation",)))
+        out.append(
+            self._from_checks("separation", "smallest separation margin (fraction of Ω_op)", "1", ("separation",))
+        )
         out.append(self._from_checks("whirl_onset", "whirl onset speed", "rad/s", ("whirl_onset",)))
         out.append(self._from_checks("log_decrement", "smallest log decrement at Ω_op", "1", ("whirl_damping",)))
-        out.append(self._from_checks("spinup_peak", "spin-up peak shaft orbit", "m", ("spinup_deflection",), largest=True))
-        out.append(self._from_checks("coupling_angle", "largest coupling misalignment", "rad", ("coupling_angle",),
-                                     largest=True))
-        out.append(Metric("static_deflection", "largest static shaft deflection", "m",
-                          tuple(_static_deflection(run) for run in self.runs)))
-        out.append(self._from_checks("shaft_temperature", "largest shaft temperature", "K", ("temperature",),
-                                     largest=True))
+        out.append(
+            self._from_checks("spinup_peak", "spin-up peak shaft orbit", "m", ("spinup_deflection",), largest=True)
+        )
+        out.append(
+            self._from_checks(
+                "coupling_angle", "largest coupling misalignment", "rad", ("coupling_angle",), largest=True
+            )
+        )
+        out.append(
+            Metric(
+                "static_deflection",
+                "largest static shaft deflection",
+                "m",
+                tuple(_static_deflection(run) for run in self.runs),
+            )
+        )
+        out.append(
+            self._from_checks("shaft_temperature", "largest shaft temperature", "K", ("temperature",), largest=True)
+        )
         for condition in ("hover", "parked"):
-            out.append(Metric(f"boom_temperature_{condition}", f"tailboom temperature, {condition}", "K",
-                              tuple(t.get(condition) for t in self.boom_temperatures)))
+            out.append(
+                Metric(
+                    f"boom_temperature_{condition}",
+                    f"tailboom temperature, {condition}",
+                    "K",
+                    tuple(t.get(condition) for t in self.boom_temperatures),
+                )
+            )
         return out
 
     def _from_checks(self, key: str, title: str, unit: str, checks: tuple[str, ...], largest: bool = False) -> Metric:
@@ -204,8 +246,10 @@ class Comparison(ResultMixin):
             if found:
                 c = max(found, key=lambda c: c["speed"]) if below else min(found, key=lambda c: c["speed"])
                 values.append(float(c["speed"]))
-                notes.append(f"AF {c['amplification_factor']:.3g}, margin {100 * c['margin']:.1f} % "
-                             f"(needs {100 * c['required']:.1f} %)")
+                notes.append(
+                    f"AF {c['amplification_factor']:.3g}, margin {100 * c['margin']:.1f} % "
+                    f"(needs {100 * c['required']:.1f} %)"
+                )
             else:
                 values.append(None)
                 notes.append("none found" if below else "none up to 1.3 × Ω_op")
@@ -216,27 +260,39 @@ class Comparison(ResultMixin):
     def to_dataset(self):
         """Both designs: part masses and counts, every check, every metric (xarray, SI)."""
         keys = self.check_keys
-        status_labels, value, limit, margin = [], np.full((2, len(keys)), np.nan), np.full((2, len(keys)), np.nan), \
-            np.full((2, len(keys)), np.nan)
+        status_labels, value, limit, margin = (
+            [],
+            np.full((2, len(keys)), np.nan),
+            np.full((2, len(keys)), np.nan),
+            np.full((2, len(keys)), np.nan),
+        )
         for d in (0, 1):
             row = []
             for k, key in enumerate(keys):
                 c = self.check(key, d)
                 row.append("not_listed" if c is None else c.status.replace(" ", "_"))
                 if c is not None:
-                    value[d, k], limit[d, k], margin[d, k] = (np.nan if v is None else v for v in (c.value, c.limit, c.margin))
+                    value[d, k], limit[d, k], margin[d, k] = (
+                        np.nan if v is None else v for v in (c.value, c.limit, c.margin)
+                    )
             status_labels.append(row)
-        status, status_attrs = coded(status_labels, ("pass", "fail", "not_evaluated", "not_listed"), "requirement status")
+        status, status_attrs = coded(
+            status_labels, ("pass", "fail", "not_evaluated", "not_listed"), "requirement status"
+        )
         metrics = self.metrics()
         metric_values = np.array([[np.nan if m.values[d] is None else m.values[d] for m in metrics] for d in (0, 1)])
         return new_dataset(
             {
-                "part_mass": (("design", "part_kind"), np.array([[inv.mass[k] for k in PART_KINDS]
-                                                                 for inv in self.inventories]),
-                              {"units": "kg", "long_name": "mass of the parts of each kind"}),
-                "part_count": (("design", "part_kind"), np.array([[inv.count[k] for k in PART_KINDS]
-                                                                  for inv in self.inventories], dtype=np.int32),
-                               {"units": "1", "long_name": "number of parts of each kind"}),
+                "part_mass": (
+                    ("design", "part_kind"),
+                    np.array([[inv.mass[k] for k in PART_KINDS] for inv in self.inventories]),
+                    {"units": "kg", "long_name": "mass of the parts of each kind"},
+                ),
+                "part_count": (
+                    ("design", "part_kind"),
+                    np.array([[inv.count[k] for k in PART_KINDS] for inv in self.inventories], dtype=np.int32),
+                    {"units": "1", "long_name": "number of parts of each kind"},
+                ),
                 "check_value": (("design", "check"), value, {"long_name": "worst value (unit: check_units)"}),
                 "check_limit": (("design", "check"), limit, {"long_name": "required limit"}),
                 "check_margin": (("design", "check"), margin, {"long_name": "signed margin (negative: fails)"}),
@@ -254,7 +310,8 @@ class Comparison(ResultMixin):
                 "metric_units": ("metric", [m.unit for m in metrics], {"long_name": "SI unit"}),
             },
             "driveline comparison",
-            verdict_a=self.runs[0].verdict.summary, verdict_b=self.runs[1].verdict.summary,
+            verdict_a=self.runs[0].verdict.summary,
+            verdict_b=self.runs[1].verdict.summary,
         )
 
 
@@ -295,7 +352,9 @@ def _boom_temperatures(design, run) -> dict:
     from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
 
     options = thermal_options(design.thermal)
-    found = tailboom_temperatures(boom_equivalent_diameter(design.tailboom), options.environment, options.boom_convection)
+    found = tailboom_temperatures(
+        boom_equivalent_diameter(design.tailboom), options.environment, options.boom_convection
+    )
     return {k: float(v.temperature) for k, v in found.items()}
 
 
@@ -309,8 +368,15 @@ def _design(value):
     raise TypeError(f"design: expected a Design or the name of an embedded design, got {type(value).__name__}")
 
 
-def compare(design_a="tuned", design_b="current", *, labels: tuple[str, str] | None = None, n_speeds: int = 651,
-            n_campbell: int = 60, progress: Callable[[str], None] | None = None) -> Comparison:
+def compare(
+    design_a="tuned",
+    design_b="current",
+    *,
+    labels: tuple[str, str] | None = None,
+    n_speeds: int = 651,
+    n_campbell: int = 60,
+    progress: Callable[[str], None] | None = None,
+) -> Comparison:
     """Analyse two designs and put them side by side.
 
     Parameters
@@ -340,8 +406,15 @@ def compare(design_a="tuned", design_b="current", *, labels: tuple[str, str] | N
     step = progress or (lambda label: None)
     runs = []
     for label, design in zip(labels, designs):
-        runs.append(run_analysis(design, n_speeds=n_speeds, n_campbell=n_campbell, studies=None,
-                                 progress=lambda s, label=label: step(f"{label}: {s}")))
+        runs.append(
+            run_analysis(
+                design,
+                n_speeds=n_speeds,
+                n_campbell=n_campbell,
+                studies=None,
+                progress=lambda s, label=label: step(f"{label}: {s}"),
+            )
+        )
     return Comparison(
         labels=(str(labels[0]), str(labels[1])),
         runs=tuple(runs),

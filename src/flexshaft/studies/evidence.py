@@ -15,12 +15,18 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-__all__ = ["ActuatorEvidence", "CouplingEvidence", "Evidence", "LateralCritical", "Location", "MetalEvidence",
-           "ModeDamping"]
+__all__ = [
+    "ActuatorEvidence",
+    "CouplingEvidence",
+    "Evidence",
+    "LateralCritical",
+    "Location",
+    "MetalEvidence",
+    "ModeDamping",
+]
 
 #: Where a value occurs: SI values and labels.
 Location = Mapping[str, Any]
-
 
 
 @dataclass(frozen=True)

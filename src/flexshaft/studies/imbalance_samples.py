@@ -69,7 +69,7 @@ class EccentricityDistribution:
             raise ValueError(f"scale must be a finite eccentricity >= 0 m, got {self.scale!r}")
 
     @classmethod
-    def from_grade(cls, grade_mm_s: float, speed: float, kind: str = "disk") -> "EccentricityDistribution":
+    def from_grade(cls, grade_mm_s: float, speed: float, kind: str = "disk") -> EccentricityDistribution:
         """Scaled by the balance grade's e_per = G/Ω (:func:`balance_grade_eccentricity`)."""
         return cls(kind, balance_grade_eccentricity(grade_mm_s, speed))
 
@@ -167,8 +167,14 @@ def _station_layout(model: Model, placement: str):
             element_stations.append(tuple(station(lo + xi * (hi - lo)) for xi in _STATIONS))
             element_bay.append(b)
     lengths = np.array([c - a for a, c in bays])
-    return (np.array(bays, dtype=float), lengths, np.array(stations), np.array(elements),
-            np.array(element_stations, dtype=int), np.array(element_bay, dtype=int))
+    return (
+        np.array(bays, dtype=float),
+        lengths,
+        np.array(stations),
+        np.array(elements),
+        np.array(element_stations, dtype=int),
+        np.array(element_bay, dtype=int),
+    )
 
 
 def _station_loads(model: Model, stations: np.ndarray) -> np.ndarray:
@@ -177,7 +183,10 @@ def _station_loads(model: Model, stations: np.ndarray) -> np.ndarray:
 
     cols = []
     for x in stations:
-        cols.append(point_load(model, "shaft", (0.0, 1.0, 0.0), x=float(x)) - 1j * point_load(model, "shaft", (0.0, 0.0, 1.0), x=float(x)))
+        cols.append(
+            point_load(model, "shaft", (0.0, 1.0, 0.0), x=float(x))
+            - 1j * point_load(model, "shaft", (0.0, 0.0, 1.0), x=float(x))
+        )
     return np.array(cols).T
 
 
@@ -210,8 +219,9 @@ def _peak_refined_speeds(proxy, speeds: np.ndarray, width: float = 2e-6, keep: i
     return np.unique(np.concatenate([speeds, np.array(extra)]))
 
 
-def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", *, n_speeds: int = 150,
-                   refine: bool = True) -> UnitResponses:
+def unit_responses(
+    model: Model, speeds=None, placement: Placement = "uniform", *, n_speeds: int = 150, refine: bool = True
+) -> UnitResponses:
     """Unit responses of ``model`` for Monte-Carlo imbalance (see the module docstring).
 
     Parameters
@@ -224,8 +234,8 @@ def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", 
         Add speeds around every local peak of the response (golden-section search).
     """
     from flexshaft.analyses import static_response
-    from flexshaft.analyses.response import bearing_reactions
     from flexshaft.analyses.banded import BandedHarmonicSolver
+    from flexshaft.analyses.response import bearing_reactions
     from flexshaft.assembly.loads import external_static_load, torque_load
 
     if placement not in ("uniform", "mid_bay"):
@@ -271,7 +281,9 @@ def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", 
         shaft[k] = shaft_of(x)
         for a, b in enumerate(B):
             actuator[k, :, a] = b @ x
-    gain = np.array([[abs(complex(a.controller(1j * s))) for a in model.actuators] for s in speeds]).reshape(speeds.size, n_act)
+    gain = np.array([[abs(complex(a.controller(1j * s))) for a in model.actuators] for s in speeds]).reshape(
+        speeds.size, n_act
+    )
     operating = np.zeros((dm.size, stations.size), complex)
     operating[free] = solver.solve(model.speed, rhs, model.speed) * model.speed**2
     static_loads = external_static_load(model) + torque_load(model)
@@ -280,11 +292,22 @@ def unit_responses(model: Model, speeds=None, placement: Placement = "uniform", 
     static_offset = np.array([float(np.hypot(*np.real(a.lateral_rows @ static))) for a in model.actuators])
     static_force = np.array([float(reactions[a.name].static_lateral) for a in model.actuators])
     return UnitResponses(
-        speeds=speeds, bays=bays, bay_mass=model.shaft_mass * lengths / lengths.sum(), stations=stations,
-        elements=elements, element_stations=element_stations, element_bay=element_bay, shaft=shaft,
-        actuator=actuator, actuator_gain=gain, operating=operating, static=static,
-        actuator_names=tuple(a.name for a in model.actuators), placement=placement,
-        static_offset=static_offset, static_force=static_force,
+        speeds=speeds,
+        bays=bays,
+        bay_mass=model.shaft_mass * lengths / lengths.sum(),
+        stations=stations,
+        elements=elements,
+        element_stations=element_stations,
+        element_bay=element_bay,
+        shaft=shaft,
+        actuator=actuator,
+        actuator_gain=gain,
+        operating=operating,
+        static=static,
+        actuator_names=tuple(a.name for a in model.actuators),
+        placement=placement,
+        static_offset=static_offset,
+        static_force=static_force,
     )
 
 
@@ -302,8 +325,9 @@ class ImbalanceDraws:
     position: np.ndarray
 
 
-def draw_imbalance(indices: Sequence[int], n_bays: int, distribution: EccentricityDistribution, placement: Placement,
-                   seed: int) -> ImbalanceDraws:
+def draw_imbalance(
+    indices: Sequence[int], n_bays: int, distribution: EccentricityDistribution, placement: Placement, seed: int
+) -> ImbalanceDraws:
     """The draws of samples ``indices``: sample k uses ``default_rng([seed, k])`` alone, in the
     order eccentricities, angles, positions (so a sample never depends on the others)."""
     e, a, p = [], [], []
@@ -312,7 +336,9 @@ def draw_imbalance(indices: Sequence[int], n_bays: int, distribution: Eccentrici
         e.append(distribution.sample(rng, n_bays))
         a.append(rng.uniform(0.0, 2 * np.pi, n_bays))
         p.append(rng.random(n_bays) if placement == "uniform" else np.full(n_bays, 0.5))
-    return ImbalanceDraws(np.array(e).reshape(-1, n_bays), np.array(a).reshape(-1, n_bays), np.array(p).reshape(-1, n_bays))
+    return ImbalanceDraws(
+        np.array(e).reshape(-1, n_bays), np.array(a).reshape(-1, n_bays), np.array(p).reshape(-1, n_bays)
+    )
 
 
 def combine(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarray, np.ndarray]:
@@ -354,8 +380,15 @@ BASE_OUTPUTS: dict[str, tuple[str, str]] = {  # name -> (SI unit, long name)
 }
 
 
-def sample_outputs(model: Model, units: UnitResponses, draws: ImbalanceDraws, *, strength: bool = True,
-                   n_phases: int = 36, memory: float = 5e7) -> dict[str, np.ndarray]:
+def sample_outputs(
+    model: Model,
+    units: UnitResponses,
+    draws: ImbalanceDraws,
+    *,
+    strength: bool = True,
+    n_phases: int = 36,
+    memory: float = 5e7,
+) -> dict[str, np.ndarray]:
     """Outputs of each sample (arrays over samples) [SI]: ``shaft_peak`` [m] and
     ``shaft_peak_speed`` [rad/s], ``actuator_orbit_<name>`` [m] and ``actuator_force_<name>``
     [N] (peaks over speed), their largest over the actuators, ``actuator_excursion_max`` [m] and
@@ -368,7 +401,9 @@ def sample_outputs(model: Model, units: UnitResponses, draws: ImbalanceDraws, *,
     idx, weights = combine(units, draws)
     n, width = weights.shape
     out: dict[str, np.ndarray] = {name: np.full(n, np.nan) for name in BASE_OUTPUTS}
-    out.update({f"actuator_{kind}_{name}": np.full(n, np.nan) for name in units.actuator_names for kind in ("orbit", "force")})
+    out.update(
+        {f"actuator_{kind}_{name}": np.full(n, np.nan) for name in units.actuator_names for kind in ("orbit", "force")}
+    )
     laminated = strength and model.shaft.laminate is not None
     block = int(max(1, memory // (units.shaft[..., 0].size * width * 8)))
     for start in range(0, n, block):

@@ -71,7 +71,6 @@ __all__ = [
 ]
 
 
-
 # ---------------------------------------------------------------------------------------------
 # The sweep-engine study
 
@@ -92,7 +91,9 @@ class MonteCarloSampler:
 
     def units(self, point) -> UnitResponses:
         """Unit responses of the point's design, computed once per worker process."""
-        key = hashlib.sha256((point.design.model_dump_json() + repr((self.placement, self.n_speeds))).encode()).hexdigest()
+        key = hashlib.sha256(
+            (point.design.model_dump_json() + repr((self.placement, self.n_speeds))).encode()
+        ).hexdigest()
         if key not in _CACHE:
             _CACHE.clear()
             _CACHE[key] = unit_responses(point.model, placement=self.placement, n_speeds=self.n_speeds)
@@ -102,8 +103,12 @@ class MonteCarloSampler:
         units = self.units(point)
         k = int(point.axes["sample"])
         draws = draw_imbalance([k], units.n_bays, self.distribution, self.placement, self.seed)
-        out = {name: float(v[0]) for name, v in sample_outputs(point.model, units, draws, strength=self.strength,
-                                                               n_phases=self.n_phases).items()}
+        out = {
+            name: float(v[0])
+            for name, v in sample_outputs(
+                point.model, units, draws, strength=self.strength, n_phases=self.n_phases
+            ).items()
+        }
         for b in range(units.n_bays):
             out[f"eccentricity_bay{b + 1}"] = float(draws.eccentricity[0, b])
             out[f"angle_bay{b + 1}"] = float(draws.angle[0, b])
@@ -123,14 +128,23 @@ def montecarlo_study(design, n_samples: int, sampler: MonteCarloSampler):
     n_bays = max(len(imbalance_bays(model)), 1)
     outputs = [Output(name, unit, text) for name, (unit, text) in BASE_OUTPUTS.items()]
     for a in model.actuators:
-        outputs += [Output(f"actuator_orbit_{a.name}", "m", f"peak lateral relative orbit at {a.name}"),
-                    Output(f"actuator_force_{a.name}", "N", f"peak force at {a.name}")]
+        outputs += [
+            Output(f"actuator_orbit_{a.name}", "m", f"peak lateral relative orbit at {a.name}"),
+            Output(f"actuator_force_{a.name}", "N", f"peak force at {a.name}"),
+        ]
     for b in range(1, n_bays + 1):
-        outputs += [Output(f"eccentricity_bay{b}", "m"), Output(f"angle_bay{b}", "rad"), Output(f"position_bay{b}", "1",
-                                                                                           "fraction of the bay")]
-    return Study(name=f"Monte-Carlo imbalance ({n_samples} samples, seed {sampler.seed})",
-                 variables=[Variable("sample", list(range(int(n_samples))), long_name="sample index")],
-                 outputs=outputs, evaluate=sampler, base=design)
+        outputs += [
+            Output(f"eccentricity_bay{b}", "m"),
+            Output(f"angle_bay{b}", "rad"),
+            Output(f"position_bay{b}", "1", "fraction of the bay"),
+        ]
+    return Study(
+        name=f"Monte-Carlo imbalance ({n_samples} samples, seed {sampler.seed})",
+        variables=[Variable("sample", list(range(int(n_samples))), long_name="sample index")],
+        outputs=outputs,
+        evaluate=sampler,
+        base=design,
+    )
 
 
 @dataclass(frozen=True)
@@ -167,11 +181,24 @@ class MonteCarloResult:
         return montecarlo_figure(self.dataset, gap=self.gap, force_limit=self.force_limit)
 
 
-def run_montecarlo(design, n_samples: int, *, seed: int = 0, grade_mm_s: float | None = None,
-                   distribution: EccentricityDistribution | None = None, placement: Placement = "uniform",
-                   gap: float | None = None, force_limit: float | None = None, n_speeds: int = 150,
-                   strength: bool = True, jobs: int = 1, client=None, run_dir=None, chunk_size: int | None = None,
-                   progress: bool = False) -> MonteCarloResult:
+def run_montecarlo(
+    design,
+    n_samples: int,
+    *,
+    seed: int = 0,
+    grade_mm_s: float | None = None,
+    distribution: EccentricityDistribution | None = None,
+    placement: Placement = "uniform",
+    gap: float | None = None,
+    force_limit: float | None = None,
+    n_speeds: int = 150,
+    strength: bool = True,
+    jobs: int = 1,
+    client=None,
+    run_dir=None,
+    chunk_size: int | None = None,
+    progress: bool = False,
+) -> MonteCarloResult:
     """Run ``n_samples`` imbalance samples of ``design`` on the sweep engine.
 
     Parameters
@@ -199,8 +226,14 @@ def run_montecarlo(design, n_samples: int, *, seed: int = 0, grade_mm_s: float |
     sampler = MonteCarloSampler(int(seed), distribution, placement, int(n_speeds), strength=bool(strength))
     study = montecarlo_study(design, n_samples, sampler)
     ds = run_sweep(study, run_dir, jobs=jobs, client=client, chunk_size=chunk_size, progress=progress)
-    ds.attrs.update({"seed": int(seed), "distribution": distribution.kind, "eccentricity_scale_m": distribution.scale,
-                     "placement": placement})
+    ds.attrs.update(
+        {
+            "seed": int(seed),
+            "distribution": distribution.kind,
+            "eccentricity_scale_m": distribution.scale,
+            "placement": placement,
+        }
+    )
     return MonteCarloResult(ds, gap, force_limit)
 
 
@@ -225,9 +258,18 @@ class RunupSamples:
         return p, float(np.sqrt(p * (1 - p) / values.size))
 
 
-def runup_montecarlo(model: Model, profile, n_samples: int, *, seed: int = 0,
-                     distribution: EccentricityDistribution, basis_size: int | None = None,
-                     rtol: float = 1e-5, output_step: float | None = None, block: int = 256) -> RunupSamples:
+def runup_montecarlo(
+    model: Model,
+    profile,
+    n_samples: int,
+    *,
+    seed: int = 0,
+    distribution: EccentricityDistribution,
+    basis_size: int | None = None,
+    rtol: float = 1e-5,
+    output_step: float | None = None,
+    block: int = 256,
+) -> RunupSamples:
     """Monte-Carlo imbalance over a run-up (mid-bay unbalances, random magnitude and angle).
 
     The run-up is linear in the load, so one transient per bay
@@ -260,8 +302,14 @@ def runup_montecarlo(model: Model, profile, n_samples: int, *, seed: int = 0,
     for b in range(n_bays):
         unit = np.zeros(n_bays)
         unit[b] = 1.0
-        run = transient_response(model, profile, loads_per_speed_squared=per_bay_imbalance_loads(model, unit),
-                                 reduced=red, rtol=rtol, output_step=output_step)
+        run = transient_response(
+            model,
+            profile,
+            loads_per_speed_squared=per_bay_imbalance_loads(model, unit),
+            reduced=red,
+            rtol=rtol,
+            output_step=output_step,
+        )
         shaft.append(run.shaft_envelope)
         act.append(run.actuator_envelope)
         force.append(run.actuator_force_envelope)

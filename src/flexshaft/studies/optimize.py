@@ -124,14 +124,24 @@ class OptimizationResult:
     def __repr__(self) -> str:
         n = self.evaluations.sizes.get("evaluation", 0)
         feasible = int(self.evaluations["feasible"].sum()) if n else 0
-        return (f"OptimizationResult({n} evaluations, {feasible} feasible, {self.pareto.sizes.get('design', 0)} "
-                f"on the Pareto front; objectives {', '.join(self.objective_names)})")
+        return (
+            f"OptimizationResult({n} evaluations, {feasible} feasible, {self.pareto.sizes.get('design', 0)} "
+            f"on the Pareto front; objectives {', '.join(self.objective_names)})"
+        )
 
     def minimised(self, ds=None) -> np.ndarray:
         """Objectives of ``ds`` (default: the Pareto set) as minimised values (n, m)."""
         ds = self.pareto if ds is None else ds
-        return np.column_stack([np.asarray(ds[o.output].values, dtype=float) * (-1.0 if o.sense == "max" else 1.0)
-                                for o in self.problem.objectives]) if ds.sizes.get(_dim(ds), 0) else np.zeros((0, len(self.problem.objectives)))
+        return (
+            np.column_stack(
+                [
+                    np.asarray(ds[o.output].values, dtype=float) * (-1.0 if o.sense == "max" else 1.0)
+                    for o in self.problem.objectives
+                ]
+            )
+            if ds.sizes.get(_dim(ds), 0)
+            else np.zeros((0, len(self.problem.objectives)))
+        )
 
     def hypervolume(self, reference: Sequence[float]) -> float:
         """Hypervolume of the Pareto front in minimised objectives (maximised ones negated)."""
@@ -155,12 +165,23 @@ class OptimizationResult:
             units = ev[name].attrs.get("units", "") if name in ev else ""
             return f"{name} [{units}]" if units else name
 
-        refs = {k: (v.get(x, np.nan), v.get(y, np.nan), bool(v.get("feasible", False))) for k, v in self.references.items()}
+        refs = {
+            k: (v.get(x, np.nan), v.get(y, np.nan), bool(v.get("feasible", False))) for k, v in self.references.items()
+        }
         sense = (objectives[x].sense if x in objectives else "min", objectives[y].sense if y in objectives else "min")
         return pareto_front(
-            np.asarray(ev[x].values, float), np.asarray(ev[y].values, float), np.asarray(ev["feasible"].values, bool),
-            np.asarray(pa[x].values, float), np.asarray(pa[y].values, float), references=refs,
-            x_label=label(x), y_label=label(y), senses=sense, title=self.problem.name, ax=ax)
+            np.asarray(ev[x].values, float),
+            np.asarray(ev[y].values, float),
+            np.asarray(ev["feasible"].values, bool),
+            np.asarray(pa[x].values, float),
+            np.asarray(pa[y].values, float),
+            references=refs,
+            x_label=label(x),
+            y_label=label(y),
+            senses=sense,
+            title=self.problem.name,
+            ax=ax,
+        )
 
     def write_designs(self, folder: str | Path | None = None, max_designs: int = 8) -> list[Path]:
         """Write Pareto designs as design files ``pareto_NN.toml`` (all of them, or
@@ -185,8 +206,12 @@ class OptimizationResult:
         files = [""] * n
         for rank, k in enumerate(picks, start=1):
             overrides = json.loads(str(self.pareto["overrides"].values[k]))
-            summary = ", ".join(f"{o.output} {float(self.pareto[o.output].values[k]):.6g}" for o in self.problem.objectives)
-            name = f"flexshaft optimize: Pareto design {rank} of {len(picks)} ({summary}); from: {self.problem.base.name}"
+            summary = ", ".join(
+                f"{o.output} {float(self.pareto[o.output].values[k]):.6g}" for o in self.problem.objectives
+            )
+            name = (
+                f"flexshaft optimize: Pareto design {rank} of {len(picks)} ({summary}); from: {self.problem.base.name}"
+            )
             design = with_overrides(self.problem.base, {**overrides, "name": name})
             comments = [
                 f"flexshaft design file written by `flexshaft optimize` ({self.problem.name}).",
@@ -213,7 +238,11 @@ class OptimizationResult:
         if "file" in self.pareto:
             passed = {Path(p).name: float(v) for p, v in zip(ds["design_file"].values, ds["passed"].values)}
             verified = np.array([passed.get(str(f), -1.0) for f in self.pareto["file"].values])
-            self.pareto["verified"] = ("design", verified, {"long_name": "full-run verdict: 1 pass, 0 fail, -1 not verified"})
+            self.pareto["verified"] = (
+                "design",
+                verified,
+                {"long_name": "full-run verdict: 1 pass, 0 fail, -1 not verified"},
+            )
         return ds
 
     def save(self, folder: str | Path | None = None) -> dict[str, Path]:
@@ -224,8 +253,10 @@ class OptimizationResult:
         if folder is None:
             raise OptimizeError("save needs a folder (the optimization had no run folder)")
         folder.mkdir(parents=True, exist_ok=True)
-        return {"evaluations": write_netcdf(self.evaluations, folder / "evaluations.nc"),
-                "pareto": write_netcdf(self.pareto, folder / "pareto.nc")}
+        return {
+            "evaluations": write_netcdf(self.evaluations, folder / "evaluations.nc"),
+            "pareto": write_netcdf(self.pareto, folder / "pareto.nc"),
+        }
 
 
 def _dim(ds) -> str:
@@ -262,8 +293,10 @@ def _open_run(run_dir: Path | None, spec: dict) -> EvaluationCache:
             raise OptimizeError(f"{manifest}: unreadable ({exc}); use another run folder or delete it") from None
         if stored != spec:
             differ = sorted(k for k in set(stored) | set(spec) if stored.get(k) != spec.get(k))
-            raise OptimizeError(f"run folder {run_dir} belongs to another optimization (it differs in "
-                                f"{', '.join(differ)}); use another folder (a larger budget alone may reuse it)")
+            raise OptimizeError(
+                f"run folder {run_dir} belongs to another optimization (it differs in "
+                f"{', '.join(differ)}); use another folder (a larger budget alone may reuse it)"
+            )
     else:
         manifest.write_text(json.dumps(spec, indent=2, sort_keys=True, default=repr) + "\n", encoding="utf-8")
     return EvaluationCache(run_dir / EVALUATIONS)
@@ -370,8 +403,9 @@ def optimize(
 
     def evaluate(X: np.ndarray, generation: int) -> tuple[np.ndarray, np.ndarray]:
         values = [problem.values(x) for x in X]
-        records, computed = evaluate_candidates(problem, [problem.overrides(v) for v in values], cache, run_path,
-                                                jobs=jobs, client=client)
+        records, computed = evaluate_candidates(
+            problem, [problem.overrides(v) for v in values], cache, run_path, jobs=jobs, client=client
+        )
         log.add(records, values, generation, computed)
         F, G = log.last_FG
         say(log.line(generation, time.perf_counter() - start))
@@ -390,13 +424,16 @@ def optimize(
         records, computed = evaluate_candidates(ref_problem, [{}], cache, run_path, jobs=1, client=client)
         log.computed += computed
         outputs = dict(records[0]["outputs"])
-        F, G = objectives_and_constraints(ref_problem, [[outputs[n] for n in problem.output_names]], [records[0]["error"] is None])
+        F, G = objectives_and_constraints(
+            ref_problem, [[outputs[n] for n in problem.output_names]], [records[0]["error"] is None]
+        )
         outputs["feasible"] = bool(np.all(G <= 0.0))
         reference_outputs[label] = outputs
     evaluations = log.dataset()
     pareto = _pareto_dataset(problem, evaluations)
-    return OptimizationResult(problem, evaluations, pareto, reference_outputs, run_path, log.computed,
-                              time.perf_counter() - start)
+    return OptimizationResult(
+        problem, evaluations, pareto, reference_outputs, run_path, log.computed, time.perf_counter() - start
+    )
 
 
 def _nsga2(problem: DesignProblem, budget: int, pop_size: int, seed: int, evaluate) -> None:
@@ -415,10 +452,15 @@ def _nsga2(problem: DesignProblem, budget: int, pop_size: int, seed: int, evalua
             return X
 
     lower, upper = problem.bounds
-    search = Problem(n_var=lower.size, n_obj=len(problem.objectives), n_ieq_constr=len(problem.constraints) + 1,
-                     xl=lower, xu=upper)
-    algorithm = NSGA2(pop_size=pop_size, sampling=_initial_population(problem, pop_size, seed),
-                      repair=RoundIntegers(), eliminate_duplicates=True)
+    search = Problem(
+        n_var=lower.size, n_obj=len(problem.objectives), n_ieq_constr=len(problem.constraints) + 1, xl=lower, xu=upper
+    )
+    algorithm = NSGA2(
+        pop_size=pop_size,
+        sampling=_initial_population(problem, pop_size, seed),
+        repair=RoundIntegers(),
+        eliminate_duplicates=True,
+    )
     with warnings.catch_warnings():  # pymoo 0.6.1 warns about its own deprecated properties
         warnings.simplefilter("ignore", DeprecationWarning)
         algorithm.setup(search, seed=int(seed), verbose=False)
@@ -457,7 +499,9 @@ class _Log:
 
     def add(self, records, values, generation: int, computed: int) -> None:
         names = self.problem.output_names
-        outputs = np.array([[r["outputs"][n] for n in names] for r in records], dtype=float).reshape(len(records), len(names))
+        outputs = np.array([[r["outputs"][n] for n in names] for r in records], dtype=float).reshape(
+            len(records), len(names)
+        )
         F, G = objectives_and_constraints(self.problem, outputs, [r["error"] is None for r in records])
         self.last_FG = (F, G)
         self.computed += computed
@@ -475,11 +519,16 @@ class _Log:
 
     def line(self, generation: int, elapsed: float) -> str:
         n_feasible = sum(1 for r in self.records if _feasible(self.problem, r))
-        best = ", ".join(f"{'max' if o.sense == 'max' else 'min'} {o.output} "
-                         f"{(-1 if o.sense == 'max' else 1) * self.best[o.output]:.5g}"
-                         for o in self.problem.objectives if o.output in self.best)
-        return (f"generation {generation}: {len(self.records)} designs evaluated ({self.computed} computed), "
-                f"{n_feasible} feasible{'; ' + best if best else ''}; {elapsed:.0f} s")
+        best = ", ".join(
+            f"{'max' if o.sense == 'max' else 'min'} {o.output} "
+            f"{(-1 if o.sense == 'max' else 1) * self.best[o.output]:.5g}"
+            for o in self.problem.objectives
+            if o.output in self.best
+        )
+        return (
+            f"generation {generation}: {len(self.records)} designs evaluated ({self.computed} computed), "
+            f"{n_feasible} feasible{'; ' + best if best else ''}; {elapsed:.0f} s"
+        )
 
     def dataset(self):
         import xarray as xr
@@ -493,28 +542,51 @@ class _Log:
         violation = np.clip(G, 0.0, None).sum(axis=1) if n else np.zeros(0)
         data = {}
         for v in problem.variables:
-            attrs = {"units": v.units, "long_name": v.name, "design_path": ", ".join(v.paths),
-                     "lower_bound": v.lower, "upper_bound": v.upper, "scale": "log" if v.log else "linear",
-                     "integer": int(v.integer)}
+            attrs = {
+                "units": v.units,
+                "long_name": v.name,
+                "design_path": ", ".join(v.paths),
+                "lower_bound": v.lower,
+                "upper_bound": v.upper,
+                "scale": "log" if v.log else "linear",
+                "integer": int(v.integer),
+            }
             dtype = np.int64 if v.integer else float
             data[v.name] = ("evaluation", np.array([val[v.name] for val in self.values], dtype=dtype), attrs)
         for i, (name, units, long_name) in enumerate(problem.outputs):
             data[name] = ("evaluation", outputs[:, i], {"units": units, "long_name": long_name})
-        data["feasible"] = ("evaluation", (violation <= 0).astype(np.int8),
-                            {"long_name": "1: valid design, every constraint met (not evaluated counts as violated)"})
-        data["constraint_violation"] = ("evaluation", violation,
-                                        {"long_name": "sum of the constraint violations (normalised margins)"})
+        data["feasible"] = (
+            "evaluation",
+            (violation <= 0).astype(np.int8),
+            {"long_name": "1: valid design, every constraint met (not evaluated counts as violated)"},
+        )
+        data["constraint_violation"] = (
+            "evaluation",
+            violation,
+            {"long_name": "sum of the constraint violations (normalised margins)"},
+        )
         data["generation"] = ("evaluation", np.array(self.generations, dtype=np.int64), {"long_name": "generation"})
-        data["overrides"] = ("evaluation", np.array([json.dumps(r["overrides"], sort_keys=True) for r in self.records], dtype=str),
-                             {"long_name": "design overrides of the base (JSON)"})
-        data["error"] = ("evaluation", np.array([r["error"] or "" for r in self.records], dtype=str),
-                         {"long_name": "why the design is invalid (empty: valid)"})
+        data["overrides"] = (
+            "evaluation",
+            np.array([json.dumps(r["overrides"], sort_keys=True) for r in self.records], dtype=str),
+            {"long_name": "design overrides of the base (JSON)"},
+        )
+        data["error"] = (
+            "evaluation",
+            np.array([r["error"] or "" for r in self.records], dtype=str),
+            {"long_name": "why the design is invalid (empty: valid)"},
+        )
         from flexshaft import __version__
 
-        attrs = {"title": problem.name, "base_design": str(problem.base.name),
-                 "objectives": json.dumps([[o.output, o.sense] for o in problem.objectives]),
-                 "constraints": json.dumps(list(problem.constraints)), "layup_template": problem.layup or "",
-                 "fidelity": problem.fidelity, "flexshaft_version": __version__}
+        attrs = {
+            "title": problem.name,
+            "base_design": str(problem.base.name),
+            "objectives": json.dumps([[o.output, o.sense] for o in problem.objectives]),
+            "constraints": json.dumps(list(problem.constraints)),
+            "layup_template": problem.layup or "",
+            "fidelity": problem.fidelity,
+            "flexshaft_version": __version__,
+        }
         return xr.Dataset(data, coords={"evaluation": np.arange(n)}, attrs=attrs)
 
 
@@ -526,12 +598,22 @@ def _feasible(problem: DesignProblem, record: dict) -> bool:
 
 def _pareto_dataset(problem: DesignProblem, evaluations):
     feasible = np.flatnonzero(np.asarray(evaluations["feasible"].values, dtype=bool))
-    F = np.column_stack([np.asarray(evaluations[o.output].values, float)[feasible] * (-1.0 if o.sense == "max" else 1.0)
-                         for o in problem.objectives]) if feasible.size else np.zeros((0, len(problem.objectives)))
+    F = (
+        np.column_stack(
+            [
+                np.asarray(evaluations[o.output].values, float)[feasible] * (-1.0 if o.sense == "max" else 1.0)
+                for o in problem.objectives
+            ]
+        )
+        if feasible.size
+        else np.zeros((0, len(problem.objectives)))
+    )
     members = feasible[pareto_mask(F)] if feasible.size else feasible
     first = problem.objectives[0]
-    order = np.argsort(np.asarray(evaluations[first.output].values, float)[members] * (-1.0 if first.sense == "max" else 1.0),
-                       kind="stable")
+    order = np.argsort(
+        np.asarray(evaluations[first.output].values, float)[members] * (-1.0 if first.sense == "max" else 1.0),
+        kind="stable",
+    )
     members = members[order]
     pareto = evaluations.isel(evaluation=members).rename({"evaluation": "design"})
     pareto = pareto.assign_coords(design=np.arange(members.size))

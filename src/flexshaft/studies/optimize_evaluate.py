@@ -51,8 +51,19 @@ __all__ = [
 ]
 
 #: The verdict's checks, in report order (:mod:`flexshaft.studies.verdict`).
-CHECK_KEYS = ("tsai_wu", "metal_strength", "buckling", "whirl_onset", "whirl_damping", "separation", "actuator_orbit",
-              "actuator_force", "temperature", "spinup_deflection", "coupling_angle")
+CHECK_KEYS = (
+    "tsai_wu",
+    "metal_strength",
+    "buckling",
+    "whirl_onset",
+    "whirl_damping",
+    "separation",
+    "actuator_orbit",
+    "actuator_force",
+    "temperature",
+    "spinup_deflection",
+    "coupling_angle",
+)
 #: Status of a check as a float output: pass, fail, not evaluated, and not applicable (the design
 #: has no part the check concerns: ``metal_strength`` without an isotropic segment,
 #: ``coupling_angle`` without couplings).
@@ -61,8 +72,11 @@ CHECK_STATUS_CODES = {"pass": 1.0, "fail": 0.0, "not evaluated": -1.0, "not appl
 #: Metrics every evaluation returns besides the checks: name -> (SI unit, description).
 METRICS = {
     "shaft_mass": ("kg", "shaft mass"),
-    "safety_factor": ("1", "minimum strength safety factor (static + imbalance at the operating speed): ply "
-                           "Tsai-Wu of a laminated shaft, the smaller of it and the metal segments' fatigue/yield"),
+    "safety_factor": (
+        "1",
+        "minimum strength safety factor (static + imbalance at the operating speed): ply "
+        "Tsai-Wu of a laminated shaft, the smaller of it and the metal segments' fatigue/yield",
+    ),
     "buckling_safety_factor": ("1", "torsional-buckling safety factor"),
     "actuator_force": ("N", "largest static + spin-up actuator force over the active bearings"),
     "actuator_orbit": ("m", "largest static offset + spin-up orbit over the active bearings"),
@@ -91,10 +105,7 @@ class Fidelity:
 
 
 #: The evaluation fidelities by name (module docstring).
-FIDELITIES = {
-    "verdict": Fidelity("verdict", 651, 41),
-    "screening": Fidelity("screening", 261, 21),
-}
+FIDELITIES = {"verdict": Fidelity("verdict", 651, 41), "screening": Fidelity("screening", 261, 21)}
 
 
 def _fidelity(fidelity: str | Fidelity) -> Fidelity:
@@ -149,13 +160,16 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
     envelope = amp[:, case, idx]
     disp, force = actuator_response(model, q[:, case, idx], speeds)
     parts = static_load_parts(model)
-    q_at_speed = (imbalance_response(model, [speed], loads)[:, :, 0] if speed > 0
-                  else np.zeros((model.dofs.size, 1), complex))
+    q_at_speed = (
+        imbalance_response(model, [speed], loads)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    )
     strength_static = strength_total = buckling = thermal = None
     if model.shaft.laminate is not None:
         strength_static = shaft_safety_factor(model, parts)
-        strength_total = min((shaft_safety_factor(model, parts, q_at_speed[:, c]) for c in range(q_at_speed.shape[1])),
-                             key=lambda r: r.safety_factor)
+        strength_total = min(
+            (shaft_safety_factor(model, parts, q_at_speed[:, c]) for c in range(q_at_speed.shape[1])),
+            key=lambda r: r.safety_factor,
+        )
         buckling = shaft_buckling(model, compare_classical=False).to_dict()  # the verdict reads the shear shell only
         thermal = _self_heating(design, model)
     q_static = parts["external"] + parts["torque"]
@@ -166,12 +180,27 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
         misalignment = coupling_misalignment(model, q_static, q_at_speed)
     whirl = np.linspace(0.0, 1.5 * top, fid.n_whirl_speeds)
     results = RunResults(
-        model=model, summary=model_summary(model), modes_at_rest=[], modes_at_speed=[], mode_shapes=at_speed,
-        campbell=None, speeds=speeds, shaft_peak=envelope.max(axis=0), shaft_envelope=envelope,
-        actuator_displacement=disp, actuator_force=force, static_displacement=q_static,
-        strength_static=strength_static, strength_total=strength_total, imbalance_at_speed=q_at_speed,
-        buckling=buckling, stability=stability(model, whirl, n_modes=10), thermal=thermal, shaft_orbits=amp,
-        metal_strength=metal, coupling_misalignment=misalignment,
+        model=model,
+        summary=model_summary(model),
+        modes_at_rest=[],
+        modes_at_speed=[],
+        mode_shapes=at_speed,
+        campbell=None,
+        speeds=speeds,
+        shaft_peak=envelope.max(axis=0),
+        shaft_envelope=envelope,
+        actuator_displacement=disp,
+        actuator_force=force,
+        static_displacement=q_static,
+        strength_static=strength_static,
+        strength_total=strength_total,
+        imbalance_at_speed=q_at_speed,
+        buckling=buckling,
+        stability=stability(model, whirl, n_modes=10),
+        thermal=thermal,
+        shaft_orbits=amp,
+        metal_strength=metal,
+        coupling_misalignment=misalignment,
         bearing_reactions=bearing_reactions(model, q_static, q_at_speed),
     )
     results.verdict = evaluate(evidence_from_run(results), design.requirements)
@@ -184,8 +213,11 @@ def _self_heating(design, model) -> dict:
     from flexshaft.thermal.selfheating import self_heating
 
     loss_model = design.analysis.internal_damping
-    return {"loss_model": loss_model, "self_heating": self_heating(model, thermal_options(design.thermal), loss_model),
-            "shaft": {}}
+    return {
+        "loss_model": loss_model,
+        "self_heating": self_heating(model, thermal_options(design.thermal), loss_model),
+        "shaft": {},
+    }
 
 
 def normalised_margin(check, operating_speed: float) -> float:
@@ -210,9 +242,12 @@ def check_outputs() -> list[tuple[str, str, str]]:
     """``(name, unit, long name)`` of the per-check outputs: normalised margin and status."""
     out = []
     for key in CHECK_KEYS:
-        out.append((f"margin_{key}", "1", f"normalised margin of the {key} check (negative: fails; NaN: not evaluated)"))
-        out.append((f"status_{key}", "1",
-                    f"status of the {key} check: 1 pass, 0 fail, -1 not evaluated, -2 not applicable"))
+        out.append(
+            (f"margin_{key}", "1", f"normalised margin of the {key} check (negative: fails; NaN: not evaluated)")
+        )
+        out.append(
+            (f"status_{key}", "1", f"status of the {key} check: 1 pass, 0 fail, -1 not evaluated, -2 not applicable")
+        )
     return out
 
 

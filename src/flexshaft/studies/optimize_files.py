@@ -124,15 +124,20 @@ def verify_outputs(point) -> dict[str, float]:
         return float("nan") if c.value is None else float(c.value)
 
     return {
-        "passed": float(verdict.passed), "n_failed": float(len(verdict.failed)),
-        "n_not_evaluated": float(len(verdict.not_evaluated)), "shaft_mass": float(res.model.shaft_mass),
-        "safety_factor": value("tsai_wu"), "buckling_safety_factor": value("buckling"),
-        "actuator_force": value("actuator_force"), "spinup_deflection": value("spinup_deflection"),
+        "passed": float(verdict.passed),
+        "n_failed": float(len(verdict.failed)),
+        "n_not_evaluated": float(len(verdict.not_evaluated)),
+        "shaft_mass": float(res.model.shaft_mass),
+        "safety_factor": value("tsai_wu"),
+        "buckling_safety_factor": value("buckling"),
+        "actuator_force": value("actuator_force"),
+        "spinup_deflection": value("spinup_deflection"),
     }
 
 
-def verify_design_files(paths: Sequence[str | Path], *, jobs: int = 1, client: Any = None,
-                        run_dir: str | Path | None = None):
+def verify_design_files(
+    paths: Sequence[str | Path], *, jobs: int = 1, client: Any = None, run_dir: str | Path | None = None
+):
     """Full-run verdict of each design file, in parallel on the sweep engine.
 
     Returns
@@ -143,9 +148,12 @@ def verify_design_files(paths: Sequence[str | Path], *, jobs: int = 1, client: A
     from flexshaft.sweep import Output, Study, Variable, run_sweep
 
     files = [str(Path(p).resolve()) for p in paths]
-    study = Study(name="full-run verification of the optimized designs",
-                  variables=(Variable(name="design_file", values=files),),
-                  outputs=tuple(Output(*o) for o in VERIFY_OUTPUTS), evaluate=verify_outputs)
+    study = Study(
+        name="full-run verification of the optimized designs",
+        variables=(Variable(name="design_file", values=files),),
+        outputs=tuple(Output(*o) for o in VERIFY_OUTPUTS),
+        evaluate=verify_outputs,
+    )
     ds = run_sweep(study, run_dir, jobs=jobs, client=client, chunk_size=1, progress=False)
     ds["passed"] = ds["passed"].astype(np.int8) if np.all(np.isfinite(ds["passed"].values)) else ds["passed"]
     return ds

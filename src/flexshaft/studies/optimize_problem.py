@@ -111,13 +111,17 @@ class DesignVariable:
         if self.log and self.lower <= 0:
             raise OptimizeError(f"{where}: a log-scale variable needs a positive lower bound (got {self.lower!r})")
         if self.integer and (self.lower != int(self.lower) or self.upper != int(self.upper)):
-            raise OptimizeError(f"{where}: an integer variable needs integer bounds (got {self.lower!r}, {self.upper!r})")
+            raise OptimizeError(
+                f"{where}: an integer variable needs integer bounds (got {self.lower!r}, {self.upper!r})"
+            )
         if self.integer and self.log:
             raise OptimizeError(f"{where}: a variable is either integer or log-scale, not both")
-        if self.significant_digits is not None and not (isinstance(self.significant_digits, int)
-                                                        and 1 <= self.significant_digits <= 17):
-            raise OptimizeError(f"{where}: significant_digits must be an integer from 1 to 17 or None "
-                                f"(got {self.significant_digits!r})")
+        if self.significant_digits is not None and not (
+            isinstance(self.significant_digits, int) and 1 <= self.significant_digits <= 17
+        ):
+            raise OptimizeError(
+                f"{where}: significant_digits must be an integer from 1 to 17 or None (got {self.significant_digits!r})"
+            )
         if any(p.startswith(LAYUP_PREFIX) for p in paths) and len(paths) > 1:
             raise OptimizeError(f"{where}: a layup placeholder cannot share a variable with other paths")
         name = self.name if self.name is not None else _name_of(paths[0])
@@ -133,7 +137,7 @@ class DesignVariable:
     def placeholder(self) -> str | None:
         """The layup placeholder this variable fills, or None."""
         p = self.paths[0]
-        return p[len(LAYUP_PREFIX):] if p.startswith(LAYUP_PREFIX) else None
+        return p[len(LAYUP_PREFIX) :] if p.startswith(LAYUP_PREFIX) else None
 
     @property
     def search_bounds(self) -> tuple[float, float]:
@@ -158,8 +162,16 @@ class DesignVariable:
         return math.log10(value) if self.log else float(value)
 
     def spec(self) -> dict:
-        return {"path": list(self.paths), "lower": self.lower, "upper": self.upper, "integer": self.integer,
-                "log": self.log, "name": self.name, "units": self.units, "significant_digits": self.significant_digits}
+        return {
+            "path": list(self.paths),
+            "lower": self.lower,
+            "upper": self.upper,
+            "integer": self.integer,
+            "log": self.log,
+            "name": self.name,
+            "units": self.units,
+            "significant_digits": self.significant_digits,
+        }
 
 
 @dataclass(frozen=True)
@@ -286,11 +298,15 @@ class DesignProblem:
             elif isinstance(item, str) and item in DESIGN_OBJECTIVES:
                 objective = DESIGN_OBJECTIVES[item]
             else:
-                raise OptimizeError(f"objective: unknown name {item!r} (allowed: {', '.join(DESIGN_OBJECTIVES)}, "
-                                    "or an Objective on an output)")
+                raise OptimizeError(
+                    f"objective: unknown name {item!r} (allowed: {', '.join(DESIGN_OBJECTIVES)}, "
+                    "or an Objective on an output)"
+                )
             if objective.output not in self.output_names:
-                raise OptimizeError(f"objective {objective.output!r}: not an output of the evaluation "
-                                    f"(outputs: {', '.join(self.output_names)})")
+                raise OptimizeError(
+                    f"objective {objective.output!r}: not an output of the evaluation "
+                    f"(outputs: {', '.join(self.output_names)})"
+                )
             out.append(objective)
         if not out:
             raise OptimizeError("an optimization needs at least one objective")
@@ -307,7 +323,9 @@ class DesignProblem:
         for name in given:
             output = f"margin_{name}" if name in CHECK_KEYS else name
             if output not in self.output_names:
-                allowed = ", ".join(k for k in CHECK_KEYS if f"margin_{k}" in self.output_names) or ", ".join(self.output_names)
+                allowed = ", ".join(k for k in CHECK_KEYS if f"margin_{k}" in self.output_names) or ", ".join(
+                    self.output_names
+                )
                 raise OptimizeError(f"constraint: unknown check or output {name!r} (allowed: {allowed})")
             out.append(output)
         if len(set(out)) != len(out):
@@ -318,25 +336,32 @@ class DesignProblem:
         layup_vars = {v.placeholder: v for v in self.variables if v.placeholder is not None}
         if self.layup is None:
             if layup_vars:
-                raise OptimizeError(f"variables {sorted('layup.' + k for k in layup_vars)} need a layup template "
-                                    "(e.g. layup = \"({a}/{-a}/{b}/{-b})s\")")
+                raise OptimizeError(
+                    f"variables {sorted('layup.' + k for k in layup_vars)} need a layup template "
+                    '(e.g. layup = "({a}/{-a}/{b}/{-b})s")'
+                )
             if self.ply_thickness is not None:
                 raise OptimizeError("ply_thickness needs a layup template (the ply count comes from it)")
             return
         used = {m.group(2) for m in _PLACEHOLDER.finditer(self.layup)}
         if used != set(layup_vars):
-            raise OptimizeError(f"layup template {self.layup!r}: placeholders {sorted(used)} must match the layup "
-                                f"variables {sorted(layup_vars)} (paths layup.<name>)")
+            raise OptimizeError(
+                f"layup template {self.layup!r}: placeholders {sorted(used)} must match the layup "
+                f"variables {sorted(layup_vars)} (paths layup.<name>)"
+            )
         for m in _PLACEHOLDER.finditer(self.layup):
-            if self.layup[:m.start()].endswith("_") and not layup_vars[m.group(2)].integer:
-                raise OptimizeError(f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable "
-                                    "must be integer")
+            if self.layup[: m.start()].endswith("_") and not layup_vars[m.group(2)].integer:
+                raise OptimizeError(
+                    f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable must be integer"
+                )
         if "shaft.layup" in self.fixed or any("shaft.layup" in v.paths for v in self.variables):
             raise OptimizeError("give the layup either as a template or through shaft.layup, not both")
-        if self.ply_thickness is not None and ("shaft.wall_thickness" in self.fixed
-                                               or any("shaft.wall_thickness" in v.paths for v in self.variables)):
-            raise OptimizeError("with ply_thickness the wall thickness follows the ply count; do not set "
-                                "shaft.wall_thickness too")
+        if self.ply_thickness is not None and (
+            "shaft.wall_thickness" in self.fixed or any("shaft.wall_thickness" in v.paths for v in self.variables)
+        ):
+            raise OptimizeError(
+                "with ply_thickness the wall thickness follows the ply count; do not set shaft.wall_thickness too"
+            )
 
     def validate(self) -> None:
         """Check every path and both bounds of every variable against the design schema.
@@ -353,8 +378,9 @@ class DesignProblem:
                 try:
                     with_overrides(self.base, self.overrides(values))
                 except DesignError as exc:
-                    raise OptimizeError(f"variable {v.name!r} = {bound!r} (others mid-range) gives an invalid "
-                                        f"design:\n{exc}") from None
+                    raise OptimizeError(
+                        f"variable {v.name!r} = {bound!r} (others mid-range) gives an invalid design:\n{exc}"
+                    ) from None
 
     # -- candidates ----------------------------------------------------------------------------
     @property
@@ -376,7 +402,7 @@ class DesignProblem:
         out = dict(self.fixed)
         for v in self.variables:
             if v.placeholder is None:
-                out.update({p: values[v.name] for p in v.paths})
+                out.update(dict.fromkeys(v.paths, values[v.name]))
         if self.layup is not None:
             layup = self.layup_of(values)
             out["shaft.layup"] = layup
@@ -431,8 +457,12 @@ class DesignProblem:
         """What an evaluation's result depends on besides the design itself (keys the cache)."""
         from flexshaft import __version__
 
-        return {"evaluate": _qualname(self.evaluate), "outputs": [list(o) for o in self.outputs],
-                "fidelity": self.fidelity, "flexshaft": __version__}
+        return {
+            "evaluate": _qualname(self.evaluate),
+            "outputs": [list(o) for o in self.outputs],
+            "fidelity": self.fidelity,
+            "flexshaft": __version__,
+        }
 
     def evaluation_fingerprint(self) -> str:
         text = json.dumps(self.evaluation_spec(), sort_keys=True, default=repr)
@@ -447,7 +477,7 @@ class DesignProblem:
             "constraints": list(self.constraints),
             "layup": self.layup,
             "ply_thickness": self.ply_thickness,
-            "fixed": {k: v for k, v in self.fixed.items()},
+            "fixed": dict(self.fixed.items()),
             "base": json.loads(self.base.model_dump_json()),
             "evaluation": self.evaluation_fingerprint(),
         }
@@ -471,7 +501,7 @@ def _match_layup(template: str, layup: str) -> dict[str, float] | None:
     """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
     pattern, groups, position = "", [], 0
     for m in _PLACEHOLDER.finditer(template):
-        pattern += re.escape(template[position:m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
+        pattern += re.escape(template[position : m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
         groups.append((m.group(1) == "-", m.group(2)))
         position = m.end()
     pattern += re.escape(template[position:])
@@ -487,8 +517,9 @@ def _match_layup(template: str, layup: str) -> dict[str, float] | None:
     return out
 
 
-def objectives_and_constraints(problem: DesignProblem, outputs: np.ndarray,
-                               valid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def objectives_and_constraints(
+    problem: DesignProblem, outputs: np.ndarray, valid: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """The minimisation objectives F and constraints G (<= 0 feasible) of evaluated candidates.
 
     Parameters
@@ -536,16 +567,20 @@ def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
     template = None
     if design.shaft.layup is not None:
         template = "({a}/{-a}/{b}/{-b})s"
-        variables += [DesignVariable("layup.a", 30.0, 75.0, name="ply_angle_a", units="degree"),
-                      DesignVariable("layup.b", 0.0, 30.0, name="ply_angle_b", units="degree")]
+        variables += [
+            DesignVariable("layup.a", 30.0, 75.0, name="ply_angle_a", units="degree"),
+            DesignVariable("layup.b", 0.0, 30.0, name="ply_angle_b", units="degree"),
+        ]
     variables.append(DesignVariable("shaft.wall_thickness", 0.001, 0.004, name="wall_thickness", units="m"))
     bearings = list(design.bearings)
     active = [i for i, b in enumerate(bearings) if b.kind == "active"]
     if active:
-        variables.append(DesignVariable(tuple(f"bearings[{i}].kp" for i in active), 1e5, 1e7, log=True,
-                                        name="kp", units="N m-1"))
-        variables.append(DesignVariable(tuple(f"bearings[{i}].kd" for i in active), 0.0, 3000.0,
-                                        name="kd", units="N s m-1"))
+        variables.append(
+            DesignVariable(tuple(f"bearings[{i}].kp" for i in active), 1e5, 1e7, log=True, name="kp", units="N m-1")
+        )
+        variables.append(
+            DesignVariable(tuple(f"bearings[{i}].kd" for i in active), 0.0, 3000.0, name="kd", units="N s m-1")
+        )
         stations = sorted(b.x for b in bearings)
         for i in active:
             x = bearings[i].x
@@ -554,6 +589,13 @@ def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
             above = stations[k + 1] - 0.3 if k + 1 < len(stations) else design.shaft.x_end - 0.3
             lower, upper = max(x - 1.0, below), min(x + 1.0, above)
             if lower < upper:
-                variables.append(DesignVariable(f"bearings[{i}].x", round(lower, 3), round(upper, 3),
-                                                name=_name_of(f"{bearings[i].name}_x"), units="m"))
+                variables.append(
+                    DesignVariable(
+                        f"bearings[{i}].x",
+                        round(lower, 3),
+                        round(upper, 3),
+                        name=_name_of(f"{bearings[i].name}_x"),
+                        units="m",
+                    )
+                )
     return tuple(variables), template

@@ -29,7 +29,7 @@ __all__ = ["ZDT1_HYPERVOLUME", "ZDT1_REFERENCE", "zdt1_front", "zdt1_outputs", "
 #: Reference point of the hypervolume (f1, f2).
 ZDT1_REFERENCE = (1.1, 1.1)
 #: Hypervolume of the exact constrained front up to :data:`ZDT1_REFERENCE`.
-ZDT1_HYPERVOLUME = 0.1 * 0.9 + (2.0 / 3.0) * (1.0 - 0.1 ** 1.5) + 0.1 * 1.1
+ZDT1_HYPERVOLUME = 0.1 * 0.9 + (2.0 / 3.0) * (1.0 - 0.1**1.5) + 0.1 * 1.1
 
 _OUTPUTS = (
     ("f1", "1", "ZDT1 first objective"),
@@ -53,8 +53,12 @@ def zdt1_outputs(point) -> dict[str, float]:
     n_zero = sum(1 for angle in d.shaft.ply_angles_deg if angle == 0.0) // 2  # symmetric layup
     g = 1.0 + 3.0 * (u2 + u3 + u4) + (n_zero - 3) ** 2
     f1 = u1
-    return {"f1": f1, "f2": g * (1.0 - math.sqrt(f1 / g)), "margin_lower": u1 - 0.1,
-            "margin_probe": float("nan") if u3 > 0.9 else 1.0}
+    return {
+        "f1": f1,
+        "f2": g * (1.0 - math.sqrt(f1 / g)),
+        "margin_lower": u1 - 0.1,
+        "margin_probe": float("nan") if u3 > 0.9 else 1.0,
+    }
 
 
 def zdt1_problem(base=None, fidelity: str = "screening") -> DesignProblem:
@@ -66,9 +70,17 @@ def zdt1_problem(base=None, fidelity: str = "screening") -> DesignProblem:
         DesignVariable("bearings[1].kp", 1e5, 1e7, log=True, name="kp_1", units="N m-1"),
         DesignVariable("layup.n", 1, 5, integer=True, name="zero_plies"),
     )
-    return DesignProblem(variables, base=base, objectives=(Objective("f1", "min", "f1"), Objective("f2", "min", "f2")),
-                         constraints=("margin_lower", "margin_probe"), layup="(55/-55/0_{n})s",
-                         evaluate=zdt1_outputs, outputs=_OUTPUTS, fidelity=fidelity, name="ZDT1 verification problem")
+    return DesignProblem(
+        variables,
+        base=base,
+        objectives=(Objective("f1", "min", "f1"), Objective("f2", "min", "f2")),
+        constraints=("margin_lower", "margin_probe"),
+        layup="(55/-55/0_{n})s",
+        evaluate=zdt1_outputs,
+        outputs=_OUTPUTS,
+        fidelity=fidelity,
+        name="ZDT1 verification problem",
+    )
 
 
 def zdt1_front(f1: np.ndarray) -> np.ndarray:

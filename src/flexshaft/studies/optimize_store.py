@@ -104,8 +104,11 @@ class EvaluationCache:
                 continue  # an evaluation that raised (possibly a transient fault) is tried again on resume
             self.records[record["key"]] = record
         if bad:
-            warnings.warn(f"{self.path}: {bad} damaged evaluation record(s) skipped; those candidates are "
-                          "evaluated again", RuntimeWarning, stacklevel=3)
+            warnings.warn(
+                f"{self.path}: {bad} damaged evaluation record(s) skipped; those candidates are evaluated again",
+                RuntimeWarning,
+                stacklevel=3,
+            )
         if text and not text.endswith("\n"):
             with open(self.path, "a", encoding="utf-8") as fh:  # start the next record on a new line
                 fh.write("\n")
@@ -143,8 +146,15 @@ def _design_or_reason(problem: DesignProblem, overrides: Mapping[str, Any]):
         return None, str(exc).strip()
 
 
-def evaluate_candidates(problem: DesignProblem, candidates: Sequence[Mapping[str, Any]], cache: EvaluationCache,
-                        run_dir: Path | None = None, *, jobs: int = 1, client: Any = None) -> tuple[list[dict], int]:
+def evaluate_candidates(
+    problem: DesignProblem,
+    candidates: Sequence[Mapping[str, Any]],
+    cache: EvaluationCache,
+    run_dir: Path | None = None,
+    *,
+    jobs: int = 1,
+    client: Any = None,
+) -> tuple[list[dict], int]:
     """Outputs of every candidate (design overrides), from the cache or computed.
 
     New, valid candidates are computed as one sweep (``jobs`` processes or the Dask
@@ -174,9 +184,16 @@ def evaluate_candidates(problem: DesignProblem, candidates: Sequence[Mapping[str
             if key not in cache and key not in new:
                 new[key] = ov
         else:
-            key = candidate_key(fingerprint, json.dumps({"invalid": _canonical(ov), "base": _design_json(problem.base)}))
+            key = candidate_key(
+                fingerprint, json.dumps({"invalid": _canonical(ov), "base": _design_json(problem.base)})
+            )
             if key not in cache:
-                invalid[key] = {"key": key, "overrides": dict(ov), "outputs": {n: math.nan for n in names}, "error": reason}
+                invalid[key] = {
+                    "key": key,
+                    "overrides": dict(ov),
+                    "outputs": dict.fromkeys(names, math.nan),
+                    "error": reason,
+                }
         keys.append(key)
     invalid = list(invalid.values())
     stored = 0
@@ -185,9 +202,10 @@ def evaluate_candidates(problem: DesignProblem, candidates: Sequence[Mapping[str
         order = list(new)
         study = Study(
             name=f"{problem.name}: {len(order)} candidates",
-            variables=(Variable(name="candidate", values=[_canonical(new[k]) for k in order],
-                                overrides=candidate_overrides),
-                       Variable(name="fidelity", values=[problem.fidelity])),
+            variables=(
+                Variable(name="candidate", values=[_canonical(new[k]) for k in order], overrides=candidate_overrides),
+                Variable(name="fidelity", values=[problem.fidelity]),
+            ),
             outputs=tuple(names),
             evaluate=problem.evaluate,
             base=problem.base,
@@ -202,9 +220,17 @@ def evaluate_candidates(problem: DesignProblem, candidates: Sequence[Mapping[str
         values = np.stack([np.asarray(ds[n].values, dtype=float).reshape(len(order)) for n in names], axis=1)
         if not any(np.isfinite(list(r["outputs"].values())).any() for r in cache.records.values()):
             _raise_if_all_failed(study, values)
-        cache.add([{"key": k, "overrides": dict(new[k]), "outputs": dict(zip(names, map(float, row))),
-                    "error": FAILED if np.all(np.isnan(row)) else None}
-                   for k, row in zip(order, values)])
+        cache.add(
+            [
+                {
+                    "key": k,
+                    "overrides": dict(new[k]),
+                    "outputs": dict(zip(names, map(float, row))),
+                    "error": FAILED if np.all(np.isnan(row)) else None,
+                }
+                for k, row in zip(order, values)
+            ]
+        )
         if batch_dir is not None:
             shutil.rmtree(batch_dir, ignore_errors=True)
     return [cache.get(k) for k in keys], len(new) - stored
@@ -220,5 +246,6 @@ def _raise_if_all_failed(study, values: np.ndarray) -> None:
     try:
         evaluate_chunk(study, 0, 1, on_error="raise")
     except Exception as exc:  # the evaluation's own error, shown to the user
-        raise OptimizeError(f"every evaluation of the batch failed; the first one raised "
-                            f"{type(exc).__name__}: {exc}") from exc
+        raise OptimizeError(
+            f"every evaluation of the batch failed; the first one raised {type(exc).__name__}: {exc}"
+        ) from exc

@@ -5,8 +5,8 @@ Returns plain data (:class:`RunResults`) that the report, the JSON output and no
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
@@ -17,10 +17,10 @@ from flexshaft.analyses.misalignment import coupling_misalignment
 from flexshaft.analyses.response import actuator_response, bearing_reactions, worst_case_orbits
 from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
+from flexshaft.analyses.summary import model_summary, modes_table
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
-from flexshaft.analyses.summary import model_summary, modes_table
 
 __all__ = ["RunResults", "SCAN_BOTTOM", "SCAN_TOP", "run_analysis", "whirl_speeds"]
 
@@ -69,8 +69,14 @@ class RunResults:
         return np.flatnonzero(self.speeds <= self.model.speed * (1 + 1e-9))
 
 
-def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Callable[[str], None] | None = None,
-                 studies: str | None = "report", executor=None) -> RunResults:
+def run_analysis(
+    design,
+    n_speeds: int = 651,
+    n_campbell: int = 60,
+    progress: Callable[[str], None] | None = None,
+    studies: str | None = "report",
+    executor=None,
+) -> RunResults:
     """Analyse a design: modes, Campbell, spin-up imbalance response, static loads, strength,
     buckling, thermal, whirl stability, and the verdict against the design's ``[requirements]``.
 
@@ -110,14 +116,17 @@ def run_analysis(design, n_speeds: int = 651, n_campbell: int = 60, progress: Ca
     Q1 = imbalance_loads(model)
     parts = static_load_parts(model)
     q_static = parts["external"] + parts["torque"]
-    q_at_speed = imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    q_at_speed = (
+        imbalance_response(model, [speed], Q1)[:, :, 0] if speed > 0 else np.zeros((model.dofs.size, 1), complex)
+    )
     reactions = bearing_reactions(model, q_static, q_at_speed)
     strength_static = strength_total = None
     notes = []
     if model.shaft.laminate is not None:
         strength_static = shaft_safety_factor(model, parts)
-        totals = [shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=True)
-                  for c in range(q_at_speed.shape[1])]
+        totals = [
+            shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=True) for c in range(q_at_speed.shape[1])
+        ]
         strength_total = min(totals, key=lambda r: r.safety_factor)
     elif design.segmented:
         notes.append("ply strength and laminated-shell buckling assume one laminated tube; the shaft is segmented")
@@ -190,9 +199,12 @@ def _start_own_analyses(design, model: Model, speeds: np.ndarray, n_campbell: in
     # a worker rebuilds the model from the design (a few ms; the design pickles in a few kB);
     # in this process the tasks share the model already built
     source = design if executor is not None else model
-    tasks = [Task("imbalance", "imbalance response over speed", _spinup_response, (source, speeds), cost=0.4),
-             Task("campbell", "Campbell diagram", _campbell, (source, np.linspace(0.0, SCAN_TOP * top, n_campbell)),
-                  cost=0.15)]
+    tasks = [
+        Task("imbalance", "imbalance response over speed", _spinup_response, (source, speeds), cost=0.4),
+        Task(
+            "campbell", "Campbell diagram", _campbell, (source, np.linspace(0.0, SCAN_TOP * top, n_campbell)), cost=0.15
+        ),
+    ]
     if model.shaft.laminate is not None:
         tasks.append(Task("buckling", "torsional buckling", _buckling, (source,), cost=0.3))
         tasks.append(Task("thermal", "thermal", _thermal, (source,), cost=0.25))
@@ -258,13 +270,29 @@ def _start_studies(design, model: Model, resolution: str, executor):
         notes.append(f"thesis shaft comparison skipped: {str(exc).splitlines()[0]}")
         shafts = {}
     for label, shaft in shafts.items():  # viscous and hysteretic on one model and modal basis
-        tasks.append(Task(f"whirl/shaft:{label}", f"whirl of the {label} shaft", shaft_whirl, (shaft, speeds),
-                          {"n_modes": 8}, cost=0.3))
+        tasks.append(
+            Task(
+                f"whirl/shaft:{label}",
+                f"whirl of the {label} shaft",
+                shaft_whirl,
+                (shaft, speeds),
+                {"n_modes": 8},
+                cost=0.3,
+            )
+        )
     if model.actuators and model.all_pd:
         kp0 = model.actuators[0].controller.kp
         for i, kp in enumerate((kp0 / 30, kp0 / 5, kp0)):
-            tasks.append(Task(f"whirl/gain_map:{i}", "whirl onset over the actuator gains", gain_stability_map,
-                              (design, [kp], [0.0, 300.0, 1000.0, 3000.0], speeds), {"n_modes": 8}, cost=0.45))
+            tasks.append(
+                Task(
+                    f"whirl/gain_map:{i}",
+                    "whirl onset over the actuator gains",
+                    gain_stability_map,
+                    (design, [kp], [0.0, 300.0, 1000.0, 3000.0], speeds),
+                    {"n_modes": 8},
+                    cost=0.45,
+                )
+            )
     whirl_keys = [t.key for t in tasks]
     chapter3 = None
     try:
@@ -276,7 +304,7 @@ def _start_studies(design, model: Model, resolution: str, executor):
     run = start_tasks(tasks, executor, errors=(DesignError, ValueError))
     whirl = run.part(whirl_keys)
     if chapter3 is not None:
-        chapter3 = (chapter3, run.part(set(t.key for t in tasks) - set(whirl_keys)))
+        chapter3 = (chapter3, run.part({t.key for t in tasks} - set(whirl_keys)))
     return whirl, chapter3, notes
 
 
@@ -305,5 +333,7 @@ def _finish_studies(started, notes: list, step):
     design_studies_result = None
     if chapter3 is not None:
         step("design studies (thesis chapter 3)")
-        design_studies_result = finish_design_studies(*chapter3, progress=lambda label: step(f"design studies: {label}"))
+        design_studies_result = finish_design_studies(
+            *chapter3, progress=lambda label: step(f"design studies: {label}")
+        )
     return comparison, gmap, design_studies_result

@@ -159,8 +159,12 @@ def _wall_outputs(point) -> dict:
     from flexshaft.analyses.spinup import clustered_receptance, spinup_curves, spinup_speeds
 
     nan = float("nan")
-    out = {"spinup_peak_deflection": nan, "safety_factor_static": nan, "safety_factor": nan,
-           "safety_factor_no_imbalance": nan}
+    out = {
+        "spinup_peak_deflection": nan,
+        "safety_factor_static": nan,
+        "safety_factor": nan,
+        "safety_factor_no_imbalance": nan,
+    }
     model = point.model
     out["natural_frequency_1"] = float(modes(model, 0.0, 1).frequencies[0])
     if model.actuators:
@@ -196,8 +200,8 @@ def wall_thickness_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **ru
 
 def _actuator_outputs(point) -> dict:
     from flexshaft.analyses import imbalance_response
-    from flexshaft.assembly.loads import imbalance_loads
     from flexshaft.analyses.response import actuator_response
+    from flexshaft.assembly.loads import imbalance_loads
 
     model = point.model
     q = imbalance_response(model, [model.speed], imbalance_loads(model))
@@ -252,9 +256,11 @@ def buckling_study(walls=np.linspace(0.0015, 0.006, 10), design=None, **run):
 
     base = design if design is not None else baseline_design()
     if base.segmented or base.materials[base.shaft.material].kind != "lamina":
-        raise SweepError(f"study 'torsional buckling vs wall thickness': the shaft of {base.name!r} is not one "
-                         "laminated tube; the laminated-shell buckling model does not apply (a metal segment's "
-                         "buckling is checked by `flexshaft run`)")
+        raise SweepError(
+            f"study 'torsional buckling vs wall thickness': the shaft of {base.name!r} is not one "
+            "laminated tube; the laminated-shell buckling model does not apply (a metal segment's "
+            "buckling is checked by `flexshaft run`)"
+        )
     study = Study(
         "torsional buckling vs wall thickness",
         [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],

@@ -53,8 +53,9 @@ def _execute(task: Task) -> TaskOutcome:
 class TaskRun:
     """Tasks started by :func:`start_tasks`; :meth:`results` waits for them, in task order."""
 
-    def __init__(self, tasks: Sequence[Task], futures: dict[str, Future] | None,
-                 errors: tuple[type[BaseException], ...]) -> None:
+    def __init__(
+        self, tasks: Sequence[Task], futures: dict[str, Future] | None, errors: tuple[type[BaseException], ...]
+    ) -> None:
         self.tasks = list(tasks)
         self._futures = futures
         self._errors = errors
@@ -74,14 +75,15 @@ class TaskRun:
                 out[task.key] = TaskOutcome(task.key, None, time.perf_counter() - start, exc)
         return out
 
-    def part(self, keys) -> "TaskRun":
+    def part(self, keys) -> TaskRun:
         """The tasks of ``keys`` (in this run's order), sharing this run's submissions."""
         keys = set(keys)
         return TaskRun([t for t in self.tasks if t.key in keys], self._futures, self._errors)
 
 
-def start_tasks(tasks: Sequence[Task], executor: Executor | None = None,
-                errors: tuple[type[BaseException], ...] = ()) -> TaskRun:
+def start_tasks(
+    tasks: Sequence[Task], executor: Executor | None = None, errors: tuple[type[BaseException], ...] = ()
+) -> TaskRun:
     """Submit ``tasks`` to ``executor``, the most costly first; None runs them later, here.
 
     Keys must be unique. ``errors`` are the exception types that :meth:`TaskRun.results`

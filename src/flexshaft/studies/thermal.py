@@ -15,8 +15,7 @@ import numpy as np
 from flexshaft.assembly.model import Model
 from flexshaft.units import kelvin_to_celsius
 
-__all__ = ["thermal_results", "thermal_summary", "temperature_profiles", "wall_thickness_sweep",
-           "convection_sweep"]
+__all__ = ["thermal_results", "thermal_summary", "temperature_profiles", "wall_thickness_sweep", "convection_sweep"]
 
 
 def _options(design, convection: str | None = None):
@@ -26,8 +25,9 @@ def _options(design, convection: str | None = None):
     return options if convection is None else dataclasses.replace(options, shaft_convection=convection)
 
 
-def wall_thickness_sweep(design, thicknesses, loss_model: str | None = None, options=None,
-                         air_temperature: float | None = None) -> dict[str, np.ndarray]:
+def wall_thickness_sweep(
+    design, thicknesses, loss_model: str | None = None, options=None, air_temperature: float | None = None
+) -> dict[str, np.ndarray]:
     """Shaft temperature against wall thickness at fixed D_o (thesis figure 3.18).
 
     Parameters
@@ -57,8 +57,15 @@ def wall_thickness_sweep(design, thicknesses, loss_model: str | None = None, opt
     loss_model = loss_model or design.analysis.internal_damping
     T_air = shaft_air_temperature(design.tailboom, options) if air_temperature is None else float(air_temperature)
     walls = np.atleast_1d(np.asarray(thicknesses, dtype=float))
-    runs = [shaft_thermal(build_model(with_overrides(design, {"shaft.wall_thickness": float(t)})), options, loss_model,
-                          air_temperature=T_air) for t in walls]
+    runs = [
+        shaft_thermal(
+            build_model(with_overrides(design, {"shaft.wall_thickness": float(t)})),
+            options,
+            loss_model,
+            air_temperature=T_air,
+        )
+        for t in walls
+    ]
     return {
         "wall_thickness": walls,
         "peak_rise": np.array([r.peak_rise for r in runs]),
@@ -68,8 +75,9 @@ def wall_thickness_sweep(design, thicknesses, loss_model: str | None = None, opt
     }
 
 
-def convection_sweep(model: Model, coefficients, loss_model: str | None = None, options=None,
-                     air_temperature: float | None = None) -> dict[str, np.ndarray]:
+def convection_sweep(
+    model: Model, coefficients, loss_model: str | None = None, options=None, air_temperature: float | None = None
+) -> dict[str, np.ndarray]:
     """Shaft temperature against the convection coefficient (thesis figure 3.19); the heat
     sources are computed once.
 
@@ -94,8 +102,16 @@ def convection_sweep(model: Model, coefficients, loss_model: str | None = None, 
     options = options or _options(model.design)
     T_air = shaft_air_temperature(model.design.tailboom, options) if air_temperature is None else float(air_temperature)
     sources = heat_sources(model, loss_model)
-    runs = [shaft_thermal(model, options, air_temperature=T_air, sources=sources,
-                          heat_transfer_coefficient=None if h is None else float(h)) for h in coefficients]
+    runs = [
+        shaft_thermal(
+            model,
+            options,
+            air_temperature=T_air,
+            sources=sources,
+            heat_transfer_coefficient=None if h is None else float(h),
+        )
+        for h in coefficients
+    ]
     return {
         "heat_transfer_coefficient": np.array([r.temperature.heat_transfer_coefficient for r in runs]),
         "from_correlation": np.array([h is None for h in coefficients]),
@@ -105,8 +121,14 @@ def convection_sweep(model: Model, coefficients, loss_model: str | None = None, 
     }
 
 
-def temperature_profiles(design, model: Model, walls=(0.0015, 0.003, 0.005), coefficients=(5.0, 20.0, None),
-                         loss_model: str | None = None, options=None) -> dict:
+def temperature_profiles(
+    design,
+    model: Model,
+    walls=(0.0015, 0.003, 0.005),
+    coefficients=(5.0, 20.0, None),
+    loss_model: str | None = None,
+    options=None,
+) -> dict:
     """Shaft temperature rise along x for several wall thicknesses [m] at fixed D_o and several
     convection coefficients [W/(m² K)] (``None``: the rotating-cylinder correlation), thesis
     figures 3.18 and 3.19. Returns ``{"x": ..., "by_wall": {label: rise}, "by_h": {label: rise}}``."""
@@ -116,8 +138,10 @@ def temperature_profiles(design, model: Model, walls=(0.0015, 0.003, 0.005), coe
     air = shaft_air_temperature(design.tailboom, options)
     by_wall = wall_thickness_sweep(design, walls, loss_model, options, air)
     by_h = convection_sweep(model, coefficients, loss_model, options, air)
-    h_labels = [f"h = {h:.0f} W/m²K" + (" (correlation)" if corr else "")
-                for h, corr in zip(by_h["heat_transfer_coefficient"], by_h["from_correlation"])]
+    h_labels = [
+        f"h = {h:.0f} W/m²K" + (" (correlation)" if corr else "")
+        for h, corr in zip(by_h["heat_transfer_coefficient"], by_h["from_correlation"])
+    ]
     return {
         "x": model.dofs.shaft_x,
         "by_wall": {f"wall {t * 1e3:.1f} mm": rise for t, rise in zip(by_wall["wall_thickness"], by_wall["rise"])},
@@ -125,8 +149,9 @@ def temperature_profiles(design, model: Model, walls=(0.0015, 0.003, 0.005), coe
     }
 
 
-def thermal_results(design, model: Model, loss_model: str | None = None, convection: str | None = None,
-                    self_heat: bool = False) -> dict:
+def thermal_results(
+    design, model: Model, loss_model: str | None = None, convection: str | None = None, self_heat: bool = False
+) -> dict:
     """Thermal results of a design.
 
     Parameters
@@ -164,24 +189,35 @@ def thermal_results(design, model: Model, loss_model: str | None = None, convect
     out: dict = {"options": options, "environment": options.environment, "loss_model": loss_model}
     has_boom = design.tailboom is not None
     out["profiles"] = temperature_profiles(design, model, loss_model=loss_model, options=options) if has_boom else None
-    out["tailboom"] = tailboom_temperatures(boom_equivalent_diameter(design.tailboom), options.environment,
-                                            options.boom_convection) if has_boom else {}
+    out["tailboom"] = (
+        tailboom_temperatures(boom_equivalent_diameter(design.tailboom), options.environment, options.boom_convection)
+        if has_boom
+        else {}
+    )
     out["shaft"] = {lm: shaft_thermal(model, options, lm) for lm in ("thesis", "rotating")}
     sh = self_heating(model, options, loss_model) if self_heat else None
     out["self_heating"] = sh
     peak = sh.max_temperature if sh is not None else out["shaft"][loss_model].max_temperature
     allowable = options.allowable_temperature
     out.update(
-        max_shaft_temperature=peak, max_shaft_temperature_c=kelvin_to_celsius(peak),
+        max_shaft_temperature=peak,
+        max_shaft_temperature_c=kelvin_to_celsius(peak),
         max_shaft_temperature_source="self_heating" if sh is not None else "reference_properties",
-        allowable_temperature=allowable, allowable_temperature_c=kelvin_to_celsius(allowable),
+        allowable_temperature=allowable,
+        allowable_temperature_c=kelvin_to_celsius(allowable),
         temperature_margin=allowable - peak,
     )
     return out
 
 
-def thermal_summary(design, model: Model, loss_model: str | None = None, convection: str | None = None,
-                    self_heat: bool = False, sweeps: bool = False) -> dict:
+def thermal_summary(
+    design,
+    model: Model,
+    loss_model: str | None = None,
+    convection: str | None = None,
+    self_heat: bool = False,
+    sweeps: bool = False,
+) -> dict:
     """JSON-ready thermal numbers (°C, K, W); ``sweeps`` adds the peak rise against wall
     thickness and convection coefficient (thesis figures 3.18, 3.19)."""
     r = thermal_results(design, model, loss_model, convection, self_heat)

@@ -40,10 +40,9 @@ import math
 from dataclasses import dataclass, field
 from typing import Literal
 
-from flexshaft.analyses.separation import api684_separation
 from flexshaft.analyses.results import ResultMixin, coded, new_dataset
+from flexshaft.analyses.separation import api684_separation
 from flexshaft.design.requirements import Requirements
-from flexshaft.units import format_quantity
 from flexshaft.studies.evidence import (  # re-exported: the verdict's input types
     ActuatorEvidence,
     CouplingEvidence,
@@ -53,6 +52,7 @@ from flexshaft.studies.evidence import (  # re-exported: the verdict's input typ
     MetalEvidence,
     ModeDamping,
 )
+from flexshaft.units import format_quantity
 
 __all__ = [
     "ActuatorEvidence",
@@ -75,8 +75,16 @@ Status = Literal["pass", "fail", "not evaluated"]
 #: Physical kind of a check's value, limit and margin (sets the display unit).
 Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement", "angle"]
 #: SI unit of each kind.
-SI_UNITS: dict[str, str] = {"ratio": "-", "speed": "rad/s", "length": "m", "force": "N", "temperature": "K",
-                            "fraction": "-", "log_decrement": "-", "angle": "rad"}
+SI_UNITS: dict[str, str] = {
+    "ratio": "-",
+    "speed": "rad/s",
+    "length": "m",
+    "force": "N",
+    "temperature": "K",
+    "fraction": "-",
+    "log_decrement": "-",
+    "angle": "rad",
+}
 
 
 # ------------------------------------------------------------------------------------------------
@@ -103,8 +111,14 @@ class Finding:
         return self.margin >= 0.0
 
     def to_dict(self) -> dict:
-        return {"value": self.value, "limit": self.limit, "margin": self.margin, "passed": self.passed,
-                "lower_bound": self.lower_bound, "location": dict(self.location)}
+        return {
+            "value": self.value,
+            "limit": self.limit,
+            "margin": self.margin,
+            "passed": self.passed,
+            "lower_bound": self.lower_bound,
+            "location": dict(self.location),
+        }
 
 
 @dataclass(frozen=True)
@@ -156,9 +170,18 @@ class Check:
 
     def to_dict(self) -> dict:
         return {
-            "key": self.key, "title": self.title, "status": self.status, "sense": self.sense, "kind": self.kind,
-            "unit": SI_UNITS[self.kind], "value": self.value, "limit": self.limit, "margin": self.margin,
-            "lower_bound": self.lower_bound, "location": dict(self.location), "note": self.note,
+            "key": self.key,
+            "title": self.title,
+            "status": self.status,
+            "sense": self.sense,
+            "kind": self.kind,
+            "unit": SI_UNITS[self.kind],
+            "value": self.value,
+            "limit": self.limit,
+            "margin": self.margin,
+            "lower_bound": self.lower_bound,
+            "location": dict(self.location),
+            "note": self.note,
             "findings": [f.to_dict() for f in self.findings],
         }
 
@@ -178,12 +201,18 @@ class Verdict(ResultMixin):
         from flexshaft.plot.verdict import margins_figure
 
         normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
-        return margins_figure([c.title for c in self.checks], normalised, [c.status for c in self.checks],
-                              ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True)
-                               for c in self.checks],
-                              [c.lower_bound for c in self.checks],
-                              ax=ax, **{"title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} "
-                                                 "(margin / limit of each)", **kwargs})
+        return margins_figure(
+            [c.title for c in self.checks],
+            normalised,
+            [c.status for c in self.checks],
+            ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True) for c in self.checks],
+            [c.lower_bound for c in self.checks],
+            ax=ax,
+            **{
+                "title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} (margin / limit of each)",
+                **kwargs,
+            },
+        )
 
     def to_dataset(self):
         """One row per check: value, limit, margin (SI, the unit of each check in ``units``),
@@ -193,16 +222,23 @@ class Verdict(ResultMixin):
         def number(x):
             return float("nan") if x is None else float(x)
 
-        status, status_attrs = coded([c.status.replace(" ", "_") for c in self.checks],
-                                     ("pass", "fail", "not_evaluated"), "requirement status")
+        status, status_attrs = coded(
+            [c.status.replace(" ", "_") for c in self.checks], ("pass", "fail", "not_evaluated"), "requirement status"
+        )
         units = [SI_UNITS.get(c.kind, "-").replace("-", "1") for c in self.checks]
         return new_dataset(
             {
-                "value": ("check", np.array([number(c.value) for c in self.checks]),
-                          {"long_name": "worst value of the check (unit per check: see check_units)"}),
+                "value": (
+                    "check",
+                    np.array([number(c.value) for c in self.checks]),
+                    {"long_name": "worst value of the check (unit per check: see check_units)"},
+                ),
                 "limit": ("check", np.array([number(c.limit) for c in self.checks]), {"long_name": "required limit"}),
-                "margin": ("check", np.array([number(c.margin) for c in self.checks]),
-                           {"long_name": "signed margin (negative: fails)"}),
+                "margin": (
+                    "check",
+                    np.array([number(c.margin) for c in self.checks]),
+                    {"long_name": "signed margin (negative: fails)"},
+                ),
                 "status": ("check", status, status_attrs),
             },
             {
@@ -210,7 +246,9 @@ class Verdict(ResultMixin):
                 "check_title": ("check", [c.title for c in self.checks], {"long_name": "requirement title"}),
                 "check_units": ("check", units, {"long_name": "SI unit of value, limit and margin"}),
             },
-            "requirements verdict", verdict="PASS" if self.passed else "FAIL", summary=self.summary,
+            "requirements verdict",
+            verdict="PASS" if self.passed else "FAIL",
+            summary=self.summary,
         )
 
     @property
@@ -240,8 +278,10 @@ class Verdict(ResultMixin):
         head = "PASS" if self.passed else "FAIL"
         parts = []
         if self.failed:
-            parts.append(f"{len(self.failed)} of {len(self.checks)} requirements fail: "
-                         + ", ".join(c.title for c in self.failed))
+            parts.append(
+                f"{len(self.failed)} of {len(self.checks)} requirements fail: "
+                + ", ".join(c.title for c in self.failed)
+            )
         parts.append(f"{n_pass} pass")
         if self.not_evaluated:
             parts.append(f"{len(self.not_evaluated)} not evaluated: " + ", ".join(c.title for c in self.not_evaluated))
@@ -265,8 +305,20 @@ def _from_findings(key: str, title: str, kind: Kind, sense, findings: list[Findi
     if len(findings) > 1:
         count = f"{n_failed} of {len(findings)} fail" if n_failed else f"all {len(findings)} pass"
         note = f"{count}; {note}" if note else count
-    return Check(key, title, kind, sense, status, worst.value, worst.limit, worst.margin, worst.location, note,
-                 tuple(findings), worst.lower_bound)
+    return Check(
+        key,
+        title,
+        kind,
+        sense,
+        status,
+        worst.value,
+        worst.limit,
+        worst.margin,
+        worst.location,
+        note,
+        tuple(findings),
+        worst.lower_bound,
+    )
 
 
 def _at_least(value: float, limit: float, location: Location) -> Finding:
@@ -296,8 +348,14 @@ def _buckling(ev: Evidence, req: Requirements) -> Check:
     return _from_findings(*args, [finding])
 
 
-def whirl_onset_check(onset_speed: float | None, max_speed: float | None, operating_speed: float,
-                      min_margin: float, location: Location | None = None, note: str = "") -> Check:
+def whirl_onset_check(
+    onset_speed: float | None,
+    max_speed: float | None,
+    operating_speed: float,
+    min_margin: float,
+    location: Location | None = None,
+    note: str = "",
+) -> Check:
     """The whirl-onset requirement: no instability below (1 + ``min_margin``) × Ω_op.
 
     Parameters
@@ -322,8 +380,11 @@ def whirl_onset_check(onset_speed: float | None, max_speed: float | None, operat
     if max_speed >= required:
         finding = Finding(float(max_speed), float(required), float(max_speed - required), {}, lower_bound=True)
         return _from_findings(*args, [finding], "no onset up to the highest speed analysed")
-    return _not_evaluated(*args, f"stable up to {max_speed:.6g} rad/s only, the requirement needs "
-                                 f"{required:.6g} rad/s; analyse to a higher speed")
+    return _not_evaluated(
+        *args,
+        f"stable up to {max_speed:.6g} rad/s only, the requirement needs "
+        f"{required:.6g} rad/s; analyse to a higher speed",
+    )
 
 
 def _whirl_damping(ev: Evidence, req: Requirements) -> Check:
@@ -331,8 +392,9 @@ def _whirl_damping(ev: Evidence, req: Requirements) -> Check:
     if not ev.modes_at_operating:
         return _not_evaluated(*args, ev.notes.get("whirl_damping", "no eigenvalues at the operating speed"))
     limit = req.required_log_decrement
-    findings = [_at_least(m.log_decrement, limit, {"mode": m.label, "frequency": m.frequency})
-                for m in ev.modes_at_operating]
+    findings = [
+        _at_least(m.log_decrement, limit, {"mode": m.label, "frequency": m.frequency}) for m in ev.modes_at_operating
+    ]
     note = "lateral modes with ≥ 10 % of their kinetic energy in the shaft, at the operating speed"
     if req.min_damping_ratio is not None:
         note += f"; damping ratio ≥ {req.min_damping_ratio:g} as a log decrement"
@@ -342,25 +404,32 @@ def _whirl_damping(ev: Evidence, req: Requirements) -> Check:
 def _separation(ev: Evidence, req: Requirements) -> Check:
     args = ("separation", "critical-speed separation", "fraction", "at least")
     if req.separation == "off":
-        return _not_evaluated(*args, "separation = \"off\" in [requirements]")
+        return _not_evaluated(*args, 'separation = "off" in [requirements]')
     if ev.critical_speeds is None:
         return _not_evaluated(*args, ev.notes.get("separation", "no unbalance response to find critical speeds"))
     if not ev.critical_speeds:
-        return Check(*args, "pass", note="no resonance peak in the unbalance response"
-                     + (f" up to {ev.critical_search_max_speed:.6g} rad/s" if ev.critical_search_max_speed else ""))
+        return Check(
+            *args,
+            "pass",
+            note="no resonance peak in the unbalance response"
+            + (f" up to {ev.critical_search_max_speed:.6g} rad/s" if ev.critical_search_max_speed else ""),
+        )
     findings = []
     for critical in ev.critical_speeds:
         sep = api684_separation(critical.speed, critical.amplification_factor, ev.operating_speed)
-        location = {**critical.location, "speed": critical.speed, "amplification_factor": sep.amplification_factor,
-                    "position": sep.position}
+        location = {
+            **critical.location,
+            "speed": critical.speed,
+            "amplification_factor": sep.amplification_factor,
+            "position": sep.position,
+        }
         findings.append(_at_least(sep.margin, sep.required_margin, location))
     return _from_findings(*args, findings, "margin as a fraction of the operating speed")
 
 
 def _actuators(ev: Evidence, key: str) -> Check:
     orbit = key == "actuator_orbit"
-    args = (key, "actuator excursion" if orbit else "actuator force",
-            "length" if orbit else "force", "at most")
+    args = (key, "actuator excursion" if orbit else "actuator force", "length" if orbit else "force", "at most")
     if not ev.actuators:
         return _not_evaluated(*args, ev.notes.get(key, "the design has no active bearings"))
     limit_field = "gap" if orbit else "force_capacity"
@@ -389,8 +458,16 @@ def _temperature(ev: Evidence, req: Requirements) -> Check:
         return _not_evaluated(*args, "no allowable temperature given")
     check = _from_findings(*args, [_at_most(ev.max_temperature, ev.allowable_temperature, ev.temperature_location)])
     if ev.thermal_runaway:
-        return Check(*args, "fail", check.value, check.limit, check.margin, check.location,
-                     "thermal runaway: no self-heating equilibrium below the allowable temperature", check.findings)
+        return Check(
+            *args,
+            "fail",
+            check.value,
+            check.limit,
+            check.margin,
+            check.location,
+            "thermal runaway: no self-heating equilibrium below the allowable temperature",
+            check.findings,
+        )
     return check
 
 
@@ -407,11 +484,17 @@ def _metal_strength(ev: Evidence, req: Requirements) -> Check:
     args = ("metal_strength", "metal safety factor", "ratio", "at least")
     if not ev.metal_strength:
         return _not_evaluated(*args, ev.notes.get("metal_strength", "no isotropic segment gives its strengths"))
-    findings = [_at_least(m.safety_factor, req.min_safety_factor,
-                          {"station": m.station, "case": f"segment {m.segment}, {m.criterion}"})
-                for m in ev.metal_strength]
-    return _from_findings(*args, findings, "isotropic segments, yield and fatigue (Shigley DE-Goodman); "
-                                           "limit min_safety_factor")
+    findings = [
+        _at_least(
+            m.safety_factor,
+            req.min_safety_factor,
+            {"station": m.station, "case": f"segment {m.segment}, {m.criterion}"},
+        )
+        for m in ev.metal_strength
+    ]
+    return _from_findings(
+        *args, findings, "isotropic segments, yield and fatigue (Shigley DE-Goodman); limit min_safety_factor"
+    )
 
 
 def _coupling_angle(ev: Evidence) -> Check:
@@ -421,13 +504,25 @@ def _coupling_angle(ev: Evidence) -> Check:
         if c.allowable_angle is None:
             missing.append(c.name)
             continue
-        findings.append(_at_most(c.static_angle + c.dynamic_angle, c.allowable_angle,
-                                 {"station": c.station, "case": f"coupling {c.name}",
-                                  "detail": f"static {math.degrees(c.static_angle):.3g}° + whirl "
-                                            f"{math.degrees(c.dynamic_angle):.3g}°"}))
+        findings.append(
+            _at_most(
+                c.static_angle + c.dynamic_angle,
+                c.allowable_angle,
+                {
+                    "station": c.station,
+                    "case": f"coupling {c.name}",
+                    "detail": f"static {math.degrees(c.static_angle):.3g}° + whirl "
+                    f"{math.degrees(c.dynamic_angle):.3g}°",
+                },
+            )
+        )
     if not findings:
-        return _not_evaluated(*args, f"no allowable_angle_deg given on the couplings ({', '.join(missing)})"
-                              if missing else "the design has no couplings")
+        return _not_evaluated(
+            *args,
+            f"no allowable_angle_deg given on the couplings ({', '.join(missing)})"
+            if missing
+            else "the design has no couplings",
+        )
     note = "static + whirling angle at the operating speed"
     if missing:
         note += f"; not evaluated for {', '.join(missing)} (no allowable_angle_deg given)"
@@ -454,17 +549,25 @@ def evaluate(evidence: Evidence, requirements: Requirements | None = None) -> Ve
     onset_location = ev.onset_location if ev.onset_speed is not None else None
     metal = (_metal_strength(ev, req),) if ev.metal_strength is not None else ()
     couplings = (_coupling_angle(ev),) if ev.coupling_angles is not None else ()
-    return Verdict((
-        _tsai_wu(ev, req),
-        *metal,
-        _buckling(ev, req),
-        whirl_onset_check(ev.onset_speed, ev.stability_max_speed, ev.operating_speed, req.min_onset_margin,
-                          onset_location, ev.notes.get("whirl_onset", "")),
-        _whirl_damping(ev, req),
-        _separation(ev, req),
-        _actuators(ev, "actuator_orbit"),
-        _actuators(ev, "actuator_force"),
-        _temperature(ev, req),
-        _spinup(ev, req),
-        *couplings,
-    ))
+    return Verdict(
+        (
+            _tsai_wu(ev, req),
+            *metal,
+            _buckling(ev, req),
+            whirl_onset_check(
+                ev.onset_speed,
+                ev.stability_max_speed,
+                ev.operating_speed,
+                req.min_onset_margin,
+                onset_location,
+                ev.notes.get("whirl_onset", ""),
+            ),
+            _whirl_damping(ev, req),
+            _separation(ev, req),
+            _actuators(ev, "actuator_orbit"),
+            _actuators(ev, "actuator_force"),
+            _temperature(ev, req),
+            _spinup(ev, req),
+            *couplings,
+        )
+    )

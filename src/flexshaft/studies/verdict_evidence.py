@@ -18,7 +18,6 @@ from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
-from flexshaft.units import celsius_to_kelvin
 from flexshaft.studies.evidence import (
     ActuatorEvidence,
     CouplingEvidence,
@@ -27,9 +26,15 @@ from flexshaft.studies.evidence import (
     MetalEvidence,
     ModeDamping,
 )
+from flexshaft.units import celsius_to_kelvin
 
-__all__ = ["CRITICAL_SEARCH_TOP", "evidence_from_run", "label_critical_speeds", "lateral_critical_speeds",
-           "scan_critical_speeds"]
+__all__ = [
+    "CRITICAL_SEARCH_TOP",
+    "evidence_from_run",
+    "label_critical_speeds",
+    "lateral_critical_speeds",
+    "scan_critical_speeds",
+]
 
 #: Highest speed searched for critical speeds, as a multiple of the operating speed.
 CRITICAL_SEARCH_TOP = 1.30
@@ -48,8 +53,13 @@ def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
     return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
 
 
-def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top: float = CRITICAL_SEARCH_TOP,
-                            n_points: int = _SCAN_POINTS, scan=None) -> tuple[LateralCritical, ...]:
+def lateral_critical_speeds(
+    model: Model,
+    campbell: Campbell | None = None,
+    top: float = CRITICAL_SEARCH_TOP,
+    n_points: int = _SCAN_POINTS,
+    scan=None,
+) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
     Parameters
@@ -86,15 +96,20 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
         node, case = np.unravel_index(int(np.argmax(orbits[:, :, k])), orbits.shape[:2])
 
         def orbit_at(new_speeds, node=node, case=case):
-            q = imbalance_response(model, new_speeds, loads[:, case:case + 1])
+            q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
             return _shaft_orbits(model, q)[node, 0]
 
         station = float(model.dofs.shaft_x[node])
         try:
             peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
         except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
-            out.append(LateralCritical(rough.speed, float("inf"), {
-                "station": station, "detail": "undamped resonance: the response is singular at the peak"}))
+            out.append(
+                LateralCritical(
+                    rough.speed,
+                    float("inf"),
+                    {"station": station, "detail": "undamped resonance: the response is singular at the peak"},
+                )
+            )
             continue
         if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
             continue
@@ -103,7 +118,9 @@ def lateral_critical_speeds(model: Model, campbell: Campbell | None = None, top:
         if not peak.resolved:
             if _undamped_at(model, peak.speed):
                 amplification = float("inf")
-                location["detail"] = "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+                location["detail"] = (
+                    "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+                )
             else:
                 location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
         out.append(LateralCritical(peak.speed, amplification, location))
@@ -199,9 +216,15 @@ def _strength(res, notes: dict) -> dict:
         return {}
     r = min(results, key=lambda r: r.safety_factor)
     case = "static + imbalance" if r is res.strength_total else "static"
-    return {"safety_factor": float(r.safety_factor), "safety_factor_location": {
-        "station": float(r.x), "ply": f"{r.ply + 1} ({r.ply_angle_deg:+.0f}°)", "case": case,
-        "detail": f"φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates"}}
+    return {
+        "safety_factor": float(r.safety_factor),
+        "safety_factor_location": {
+            "station": float(r.x),
+            "ply": f"{r.ply + 1} ({r.ply_angle_deg:+.0f}°)",
+            "case": case,
+            "detail": f"φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates",
+        },
+    }
 
 
 def _metal(res, notes: dict) -> dict:
@@ -224,10 +247,14 @@ def _couplings(res) -> dict:
     angles = getattr(res, "coupling_misalignment", None)
     if angles is None:
         return {}
-    return {"coupling_angles": tuple(
-        CouplingEvidence(name, float(x), float(a), float(d), None if np.isnan(limit) else float(limit))
-        for name, x, a, d, limit in zip(angles.names, angles.stations, angles.static_angle, angles.dynamic_angle,
-                                        angles.allowable_angle))}
+    return {
+        "coupling_angles": tuple(
+            CouplingEvidence(name, float(x), float(a), float(d), None if np.isnan(limit) else float(limit))
+            for name, x, a, d, limit in zip(
+                angles.names, angles.stations, angles.static_angle, angles.dynamic_angle, angles.allowable_angle
+            )
+        )
+    }
 
 
 def _metal_buckling(res, notes: dict) -> dict:
@@ -239,14 +266,20 @@ def _metal_buckling(res, notes: dict) -> dict:
     covered = {b.segment for b in metal.buckling}
     uncovered = [seg.name for seg in getattr(res.model, "segments", ()) if seg.name not in covered]
     if uncovered:  # the metal tubes alone must not pass the check for the whole shaft
-        notes["buckling"] = (f"segment(s) {', '.join(uncovered)} are laminated: the buckling of a laminated segment of "
-                             "a segmented shaft is not modelled")
+        notes["buckling"] = (
+            f"segment(s) {', '.join(uncovered)} are laminated: the buckling of a laminated segment of "
+            "a segmented shaft is not modelled"
+        )
         return {}
     b = min(metal.buckling, key=lambda b: b.safety_factor)
-    return {"buckling_safety_factor": float(b.safety_factor), "buckling_location": {
-        "case": f"segment {b.segment}, n = {b.wave_number}",
-        "detail": f"applied {b.torque:.0f} N m, T_cr = {b.critical_torque:.0f} N m, isotropic classical (Sanders) "
-                  f"shell over {b.length:.2f} m"}}
+    return {
+        "buckling_safety_factor": float(b.safety_factor),
+        "buckling_location": {
+            "case": f"segment {b.segment}, n = {b.wave_number}",
+            "detail": f"applied {b.torque:.0f} N m, T_cr = {b.critical_torque:.0f} N m, isotropic classical (Sanders) "
+            f"shell over {b.length:.2f} m",
+        },
+    }
 
 
 def _buckling(res, notes: dict) -> dict:
@@ -257,9 +290,13 @@ def _buckling(res, notes: dict) -> dict:
     sense, n = ("positive", b["wave_number_positive"]) if positive else ("negative", b["wave_number_negative"])
     n = "∞ (shear crimping)" if n is None else n
     critical = min(b["critical_torque_positive_Nm"], b["critical_torque_negative_Nm"])
-    return {"buckling_safety_factor": float(b["safety_factor"]), "buckling_location": {
-        "case": f"{sense} torque, n = {n}",
-        "detail": f"applied {b['torque_Nm']:.0f} N m, T_cr = {critical:.0f} N m, {b['theory']} shell"}}
+    return {
+        "buckling_safety_factor": float(b["safety_factor"]),
+        "buckling_location": {
+            "case": f"{sense} torque, n = {n}",
+            "detail": f"applied {b['torque_Nm']:.0f} N m, T_cr = {critical:.0f} N m, {b['theory']} shell",
+        },
+    }
 
 
 def _whirl(res, speed: float, notes: dict) -> dict:
@@ -274,9 +311,11 @@ def _whirl(res, speed: float, notes: dict) -> dict:
         m = st.unstable_mode
         k = int(np.argmin(np.abs(np.asarray(st.speeds) - st.onset_speed)))
         out["onset_speed"] = float(st.onset_speed)
-        out["onset_location"] = {"mode": f"{m + 1} ({st.whirl[k, m]})",
-                                 "frequency": float(abs(st.eigenvalues[k, m].imag)),
-                                 "detail": f"{st.damping_model} internal-damping model"}
+        out["onset_location"] = {
+            "mode": f"{m + 1} ({st.whirl[k, m]})",
+            "frequency": float(abs(st.eigenvalues[k, m].imag)),
+            "detail": f"{st.damping_model} internal-damping model",
+        }
     return out
 
 
@@ -307,10 +346,19 @@ def _actuators(res) -> tuple[ActuatorEvidence, ...]:
             static_force = 0.0
         else:
             static_force = float(abs(a.law(0j))) * static
-        out.append(ActuatorEvidence(
-            a.name, float(d[i]), float(res.speeds[i]), float(f[j]), float(res.speeds[j]),
-            static_offset=static, static_force=static_force,
-            gap=getattr(bearing, "gap", None), force_capacity=capacity))
+        out.append(
+            ActuatorEvidence(
+                a.name,
+                float(d[i]),
+                float(res.speeds[i]),
+                float(f[j]),
+                float(res.speeds[j]),
+                static_offset=static,
+                static_force=static_force,
+                gap=getattr(bearing, "gap", None),
+                force_capacity=capacity,
+            )
+        )
     return tuple(out)
 
 
@@ -322,11 +370,16 @@ def _temperature(res, notes: dict) -> dict:
     sh = th.get("self_heating")
     temperature = sh.thermal.temperature if sh is not None else th["shaft"][th["loss_model"]].temperature
     i = int(np.argmax(temperature.temperature))
-    detail = (f"self-heating equilibrium ({sh.status}), {th['loss_model']} loss model" if sh is not None
-              else f"{th['loss_model']} loss model, constant properties")
-    return {"max_temperature": float(temperature.temperature[i]),
-            "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
-            "thermal_runaway": sh is not None and sh.status == "runaway"}
+    detail = (
+        f"self-heating equilibrium ({sh.status}), {th['loss_model']} loss model"
+        if sh is not None
+        else f"{th['loss_model']} loss model, constant properties"
+    )
+    return {
+        "max_temperature": float(temperature.temperature[i]),
+        "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
+        "thermal_runaway": sh is not None and sh.status == "runaway",
+    }
 
 
 def evidence_from_run(res: object) -> Evidence:
@@ -351,8 +404,9 @@ def evidence_from_run(res: object) -> Evidence:
         criticals, note = found
         criticals = None if criticals is None else label_critical_speeds(criticals, res.campbell)
     else:
-        criticals, note = scan_critical_speeds(model, np.asarray(res.speeds), getattr(res, "shaft_orbits", None),
-                                               res.campbell)
+        criticals, note = scan_critical_speeds(
+            model, np.asarray(res.speeds), getattr(res, "shaft_orbits", None), res.campbell
+        )
     if criticals is not None:
         values["critical_speeds"] = criticals
         values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
@@ -374,6 +428,9 @@ def evidence_from_run(res: object) -> Evidence:
             refined = c.location.get("peak_orbit")
             if refined is not None and c.speed <= speed and np.isfinite(refined) and refined > values["spinup_peak"]:
                 values["spinup_peak"] = float(refined)
-                values["spinup_location"] = {"station": c.location["station"], "speed": float(c.speed),
-                                             "detail": "peak refined between the sampled speeds"}
+                values["spinup_location"] = {
+                    "station": c.location["station"],
+                    "speed": float(c.speed),
+                    "detail": "peak refined between the sampled speeds",
+                }
     return Evidence(operating_speed=speed, actuators=_actuators(res), notes=notes, **values)

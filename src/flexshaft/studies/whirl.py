@@ -6,11 +6,10 @@ shaft on the same driveline; its abstract says adding 0° plies improves stabili
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
-
-import dataclasses
 
 from flexshaft.analyses.campbell import default_basis_size
 from flexshaft.analyses.eigen import reduce
@@ -18,8 +17,16 @@ from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
 
-__all__ = ["THESIS_SHAFTS", "thesis_shaft_designs", "compare_shafts", "shaft_stability", "shaft_whirl", "StabilityMap",
-           "gain_stability_map", "stack_maps"]
+__all__ = [
+    "THESIS_SHAFTS",
+    "thesis_shaft_designs",
+    "compare_shafts",
+    "shaft_stability",
+    "shaft_whirl",
+    "StabilityMap",
+    "gain_stability_map",
+    "stack_maps",
+]
 
 #: (label, overrides) of the thesis figure 4.2-4.4 shafts; the wall and D_o stay the design's.
 THESIS_SHAFTS = (
@@ -35,8 +42,9 @@ def thesis_shaft_designs(design) -> dict:
     return {label: with_overrides(design, ov) for label, ov in THESIS_SHAFTS}
 
 
-def compare_shafts(design, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
-                   reference_frequency: float | None = None) -> dict[str, StabilityResult]:
+def compare_shafts(
+    design, speeds, damping_model: str = "hysteretic", n_modes: int = 10, reference_frequency: float | None = None
+) -> dict[str, StabilityResult]:
     """Stability of each thesis shaft over ``speeds`` [rad/s]."""
     return {
         label: shaft_stability(d, speeds, damping_model, n_modes, reference_frequency)
@@ -44,13 +52,16 @@ def compare_shafts(design, speeds, damping_model: str = "hysteretic", n_modes: i
     }
 
 
-def shaft_stability(design, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
-                    reference_frequency: float | None = None) -> StabilityResult:
+def shaft_stability(
+    design, speeds, damping_model: str = "hysteretic", n_modes: int = 10, reference_frequency: float | None = None
+) -> StabilityResult:
     """Stability of one design over ``speeds`` [rad/s] (one task of :func:`compare_shafts`)."""
     return stability(build_model(design), speeds, n_modes, damping_model, reference_frequency)
 
 
-def shaft_whirl(design, speeds, damping_models=("viscous", "hysteretic"), n_modes: int = 10) -> dict[str, StabilityResult]:
+def shaft_whirl(
+    design, speeds, damping_models=("viscous", "hysteretic"), n_modes: int = 10
+) -> dict[str, StabilityResult]:
     """:func:`shaft_stability` of one design with each damping model, ``{model: result}``: one
     model and one modal basis for all of them (the basis does not depend on the damping)."""
     model = build_model(design)
@@ -69,8 +80,15 @@ class StabilityMap:
     max_speed: float
 
 
-def gain_stability_map(design, kp_values, kd_values, speeds, damping_model: str = "hysteretic", n_modes: int = 10,
-                       reference_frequency: float | None = None) -> StabilityMap:
+def gain_stability_map(
+    design,
+    kp_values,
+    kd_values,
+    speeds,
+    damping_model: str = "hysteretic",
+    n_modes: int = 10,
+    reference_frequency: float | None = None,
+) -> StabilityMap:
     """Onset speed over (K_p, K_d) applied to every active bearing (same values on each).
 
     One model and modal basis per K_p (it sets the basis stiffness); each K_d only changes the
@@ -106,5 +124,10 @@ def stack_maps(rows) -> StabilityMap:
     for row in rows[1:]:
         if row.kd.shape != kd.shape or not np.array_equal(row.kd, kd) or row.max_speed != top:
             raise ValueError("stack_maps: the maps must share their K_d values and top speed")
-    return StabilityMap(np.concatenate([r.kp for r in rows]), kd.copy(), np.vstack([r.onset_speed for r in rows]),
-                        np.vstack([r.margin_at_operating for r in rows]), top)
+    return StabilityMap(
+        np.concatenate([r.kp for r in rows]),
+        kd.copy(),
+        np.vstack([r.onset_speed for r in rows]),
+        np.vstack([r.margin_at_operating for r in rows]),
+        top,
+    )

@@ -34,8 +34,8 @@ from typing import Any
 
 import numpy as np
 
-from flexshaft.netcdf import write_netcdf
 from flexshaft._pool import die_with_parent, prepare_worker
+from flexshaft.netcdf import write_netcdf
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -97,8 +97,9 @@ def _worker_init(parent_pid: int) -> None:
 def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[int, np.ndarray]]:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
-    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=_pool_context(), initializer=_worker_init,
-                               initargs=(os.getpid(),))
+    pool = ProcessPoolExecutor(
+        max_workers=jobs, mp_context=_pool_context(), initializer=_worker_init, initargs=(os.getpid(),)
+    )
     pending: dict = {}
     queue = list(todo)
     try:
@@ -128,7 +129,9 @@ def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.nd
     client = Client(client) if own else client
     try:
         futures = {
-            client.submit(evaluate_chunk, study, a, b, on_error, pure=False, key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}"): k
+            client.submit(
+                evaluate_chunk, study, a, b, on_error, pure=False, key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}"
+            ): k
             for k, (a, b) in todo
         }
         for fut in as_completed(futures):
@@ -179,7 +182,7 @@ def to_dataset(study: Study, values: np.ndarray):
     attrs = {
         "title": study.name,
         "design": str(getattr(study.base, "name", "")),
-        "fixed_overrides": json.dumps({k: v for k, v in study.fixed.items()}, default=repr),
+        "fixed_overrides": json.dumps(dict(study.fixed.items()), default=repr),
         "flexshaft_version": __version__,
         "study_fingerprint": study.fingerprint(),
     }
@@ -302,8 +305,12 @@ class _progress_bar:
             from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
             self.progress = Progress(
-                TextColumn("[bold]{task.description}"), BarColumn(), MofNCompleteColumn(), TextColumn("chunks"),
-                TimeRemainingColumn(), transient=False,
+                TextColumn("[bold]{task.description}"),
+                BarColumn(),
+                MofNCompleteColumn(),
+                TextColumn("chunks"),
+                TimeRemainingColumn(),
+                transient=False,
             )
             self.task = self.progress.add_task(study.name, total=total, completed=completed)
             self.progress.start()

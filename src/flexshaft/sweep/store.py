@@ -128,9 +128,7 @@ def write_chunk(path: Path, values: np.ndarray, *, fingerprint: str, index: int,
     atomic_write(path, lambda fh: np.savez(fh, values=values, header=np.array(json.dumps(header))))
 
 
-def read_chunk(
-    path: Path, *, fingerprint: str, index: int, start: int, stop: int, n_outputs: int
-) -> np.ndarray:
+def read_chunk(path: Path, *, fingerprint: str, index: int, start: int, stop: int, n_outputs: int) -> np.ndarray:
     """The values of a stored chunk, after checking that it is exactly the chunk expected.
 
     Raises
@@ -167,8 +165,7 @@ def read_chunk(
         raise ChunkError(f"chunk format {fields['format']!r}, expected {FORMAT}")
     if fields["fingerprint"] != fingerprint:
         raise ChunkError(
-            f"belongs to another study (fingerprint {str(fields['fingerprint'])[:12]}, "
-            f"this study {fingerprint[:12]})"
+            f"belongs to another study (fingerprint {str(fields['fingerprint'])[:12]}, this study {fingerprint[:12]})"
         )
     if (fields["chunk"], fields["start"], fields["stop"]) != (index, start, stop):
         raise ChunkError(

@@ -237,7 +237,9 @@ class Study:
             return with_overrides(self.base, overrides)
         except DesignError as exc:
             shown = ", ".join(f"{k} = {v!r}" for k, v in values.items() if k in self._design_names)
-            raise SweepError(f"study {self.name!r}: invalid design at {shown or 'the fixed overrides'}:\n{exc}") from exc
+            raise SweepError(
+                f"study {self.name!r}: invalid design at {shown or 'the fixed overrides'}:\n{exc}"
+            ) from exc
 
     @cached_property
     def _design_names(self) -> frozenset[str]:
@@ -259,7 +261,9 @@ class Study:
                 except Exception as exc:  # the user's mapping function failed on a value
                     raise SweepError(f"variable {v.name!r}: cannot map value {value!r} to overrides: {exc}") from exc
                 if not isinstance(overrides, Mapping):
-                    raise SweepError(f"variable {v.name!r}: overrides({value!r}) must return a mapping of path to value")
+                    raise SweepError(
+                        f"variable {v.name!r}: overrides({value!r}) must return a mapping of path to value"
+                    )
                 self.design_at({v.name: value})
         n_combos = int(np.prod([len(v.values) for v in design_vars], dtype=np.int64)) if design_vars else 1
         if 1 < n_combos <= _VALIDATE_ALL_LIMIT and len(design_vars) > 1:

@@ -25,12 +25,28 @@ from flexshaft.thermal.matrix import MatrixTemperatureLaw
 from flexshaft.thermal.options import ThermalOptions, environment_from, matrix_law_from, thermal_options
 from flexshaft.thermal.shaft import ShaftTemperature, solve_shaft_temperature
 from flexshaft.thermal.tailboom import (
-    BoomTemperature, boom_equivalent_diameter, tailboom_temperature, tailboom_temperatures,
+    BoomTemperature,
+    boom_equivalent_diameter,
+    tailboom_temperature,
+    tailboom_temperatures,
 )
 
 __all__ = [
-    "ThermalEnvironment", "ThermalOptions", "MatrixTemperatureLaw", "environment_from", "matrix_law_from",
-    "thermal_options", "BoomTemperature", "boom_equivalent_diameter", "tailboom_temperature",
-    "tailboom_temperatures", "HeatSources", "heat_sources", "ShaftTemperature", "solve_shaft_temperature",
-    "ShaftThermal", "shaft_air_temperature", "shaft_thermal",
+    "ThermalEnvironment",
+    "ThermalOptions",
+    "MatrixTemperatureLaw",
+    "environment_from",
+    "matrix_law_from",
+    "thermal_options",
+    "BoomTemperature",
+    "boom_equivalent_diameter",
+    "tailboom_temperature",
+    "tailboom_temperatures",
+    "HeatSources",
+    "heat_sources",
+    "ShaftTemperature",
+    "solve_shaft_temperature",
+    "ShaftThermal",
+    "shaft_air_temperature",
+    "shaft_thermal",
 ]

@@ -13,17 +13,25 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.assembly.model import Model
-from flexshaft.units import kelvin_to_celsius
 from flexshaft.thermal.correlations import Nusselt
 from flexshaft.thermal.heat import HeatSources, LossModel, heat_sources
 from flexshaft.thermal.options import ThermalOptions
 from flexshaft.thermal.shaft import (
-    ShaftTemperature, laminate_axial_conductivity, rotating_shaft_convection, solve_shaft_temperature,
+    ShaftTemperature,
+    laminate_axial_conductivity,
+    rotating_shaft_convection,
+    solve_shaft_temperature,
 )
 from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
+from flexshaft.units import kelvin_to_celsius
 
-__all__ = ["ShaftThermal", "ISOTROPIC_SHAFT_CONDUCTIVITY", "shaft_air_temperature", "shaft_conductivity",
-           "shaft_thermal"]
+__all__ = [
+    "ShaftThermal",
+    "ISOTROPIC_SHAFT_CONDUCTIVITY",
+    "shaft_air_temperature",
+    "shaft_conductivity",
+    "shaft_thermal",
+]
 
 #: Conductivity of an isotropic (6061-T6 aluminium) shaft [W/(m K)], handbook value.
 ISOTROPIC_SHAFT_CONDUCTIVITY = 167.0
@@ -81,13 +89,15 @@ def shaft_air_temperature(tailboom, options: ThermalOptions | None = None) -> fl
     options = options or ThermalOptions()
     if tailboom is None:
         return options.environment.ambient_temperature
-    hover = tailboom_temperature("hover", boom_equivalent_diameter(tailboom), options.environment,
-                                 options.boom_convection)
+    hover = tailboom_temperature(
+        "hover", boom_equivalent_diameter(tailboom), options.environment, options.boom_convection
+    )
     return hover.temperature
 
 
-def shaft_conductivity(model: Model, options: ThermalOptions | None = None,
-                       isotropic: float = ISOTROPIC_SHAFT_CONDUCTIVITY) -> float:
+def shaft_conductivity(
+    model: Model, options: ThermalOptions | None = None, isotropic: float = ISOTROPIC_SHAFT_CONDUCTIVITY
+) -> float:
     """Axial wall conductivity [W/(m K)]: the laminate rule with the options' ply
     conductivities, or ``isotropic`` for a metal shaft."""
     options = options or ThermalOptions()
@@ -98,9 +108,14 @@ def shaft_conductivity(model: Model, options: ThermalOptions | None = None,
 
 
 def shaft_thermal(
-    model: Model, options: ThermalOptions | None = None, loss_model: LossModel | None = None, *,
-    air_temperature: float | None = None, heat_transfer_coefficient: float | None = None,
-    conductivity: float | None = None, sources: HeatSources | None = None,
+    model: Model,
+    options: ThermalOptions | None = None,
+    loss_model: LossModel | None = None,
+    *,
+    air_temperature: float | None = None,
+    heat_transfer_coefficient: float | None = None,
+    conductivity: float | None = None,
+    sources: HeatSources | None = None,
 ) -> ShaftThermal:
     """Steady temperature along the shaft at the model's operating speed.
 
@@ -129,10 +144,19 @@ def shaft_thermal(
     Do, Di = model.shaft.outer_diameter, model.shaft.inner_diameter
     nusselt = None
     if heat_transfer_coefficient is None:
-        heat_transfer_coefficient, nusselt = rotating_shaft_convection(Do, model.speed, T_air, options.shaft_convection,
-                                                                   options.environment.air_pressure)
+        heat_transfer_coefficient, nusselt = rotating_shaft_convection(
+            Do, model.speed, T_air, options.shaft_convection, options.environment.air_pressure
+        )
     k = shaft_conductivity(model, options) if conductivity is None else float(conductivity)
     sources = sources or heat_sources(model, loss_model)
-    temp = solve_shaft_temperature(sources.x, sources.total, k, np.pi * (Do**2 - Di**2) / 4, np.pi * Do,
-                                   heat_transfer_coefficient, T_air, (T_air, T_air))
+    temp = solve_shaft_temperature(
+        sources.x,
+        sources.total,
+        k,
+        np.pi * (Do**2 - Di**2) / 4,
+        np.pi * Do,
+        heat_transfer_coefficient,
+        T_air,
+        (T_air, T_air),
+    )
     return ShaftThermal(sources, temp, nusselt, k)

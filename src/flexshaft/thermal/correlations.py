@@ -44,10 +44,17 @@ from ht.conv_external import Nu_cylinder_Churchill_Bernstein
 from ht.conv_free_immersed import Nu_horizontal_cylinder_Churchill_Chu
 
 __all__ = [
-    "Nusselt", "HILPERT_TABLE", "hilpert_nusselt", "churchill_bernstein_nusselt",
-    "churchill_chu_nusselt", "rotating_cylinder_nusselt_becker",
-    "rotating_cylinder_nusselt_kendoush", "forced_cylinder_nusselt", "rotating_cylinder_nusselt",
-    "ForcedMethod", "RotatingMethod",
+    "Nusselt",
+    "HILPERT_TABLE",
+    "hilpert_nusselt",
+    "churchill_bernstein_nusselt",
+    "churchill_chu_nusselt",
+    "rotating_cylinder_nusselt_becker",
+    "rotating_cylinder_nusselt_kendoush",
+    "forced_cylinder_nusselt",
+    "rotating_cylinder_nusselt",
+    "ForcedMethod",
+    "RotatingMethod",
 ]
 
 ForcedMethod = Literal["hilpert", "churchill_bernstein"]
@@ -91,7 +98,11 @@ def hilpert_nusselt(Re: float, Pr: float) -> Nusselt:
     row = next((r for r in HILPERT_TABLE if r[0] <= Re <= r[1]), HILPERT_TABLE[0] if Re < lo else HILPERT_TABLE[-1])
     _, _, C, m = row
     in_range = lo <= Re <= hi and Pr >= 0.7
-    note = "" if in_range else f"Re = {Re:.3g}, Pr = {Pr:.3g} outside Hilpert's 0.4 ≤ Re ≤ 4e5, Pr ≥ 0.7; nearest row extrapolated"
+    note = (
+        ""
+        if in_range
+        else f"Re = {Re:.3g}, Pr = {Pr:.3g} outside Hilpert's 0.4 ≤ Re ≤ 4e5, Pr ≥ 0.7; nearest row extrapolated"
+    )
     return Nusselt(C * Re**m * Pr ** (1.0 / 3.0), "hilpert", in_range, note)
 
 

@@ -68,8 +68,15 @@ class ThermalEnvironment:
     solar_area_fraction: float = 0.69
 
     def __post_init__(self) -> None:
-        positive = ("rotorcraft_mass", "rotor_radius", "solar_constant", "sky_temperature",
-                    "air_density", "ambient_temperature", "air_pressure")
+        positive = (
+            "rotorcraft_mass",
+            "rotor_radius",
+            "solar_constant",
+            "sky_temperature",
+            "air_density",
+            "ambient_temperature",
+            "air_pressure",
+        )
         for name in positive:
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
@@ -79,7 +86,9 @@ class ThermalEnvironment:
             if not (math.isfinite(value) and 0 <= value <= 1):
                 raise ValueError(f"ThermalEnvironment.{name} must be in [0, 1], got {value!r}")
         if self.solar_absorptivity is not None and not 0 <= self.solar_absorptivity <= 1:
-            raise ValueError(f"ThermalEnvironment.solar_absorptivity must be in [0, 1], got {self.solar_absorptivity!r}")
+            raise ValueError(
+                f"ThermalEnvironment.solar_absorptivity must be in [0, 1], got {self.solar_absorptivity!r}"
+            )
         if not (math.isfinite(self.solar_zenith) and abs(self.solar_zenith) <= math.pi / 2):
             raise ValueError(f"ThermalEnvironment.solar_zenith must be in [-pi/2, pi/2] rad, got {self.solar_zenith!r}")
 

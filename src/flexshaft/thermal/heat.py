@@ -51,8 +51,17 @@ from flexshaft.assembly.model import Model
 from flexshaft.elements import TubeSection, cowper_shear_coefficient, shaft_element_matrices
 
 __all__ = [
-    "LossModel", "LOSS_MODELS", "resolve_loss_model", "HeatSources", "harmonic_loss_power", "split_whirl", "static_circular_amplitude",
-    "shaft_loss_matrices", "element_amplitudes", "shaft_response_amplitudes", "heat_sources",
+    "LossModel",
+    "LOSS_MODELS",
+    "resolve_loss_model",
+    "HeatSources",
+    "harmonic_loss_power",
+    "split_whirl",
+    "static_circular_amplitude",
+    "shaft_loss_matrices",
+    "element_amplitudes",
+    "shaft_response_amplitudes",
+    "heat_sources",
 ]
 
 LossModel = Literal["thesis", "rotating"]
@@ -81,8 +90,10 @@ def resolve_loss_model(model: Model, loss_model: LossModel | None = None) -> Los
     if loss_model is None:
         design = model.design
         if design is None:
-            raise ValueError("loss_model: the model carries no design to take [analysis] internal_damping from; "
-                             "give 'thesis' or 'rotating'")
+            raise ValueError(
+                "loss_model: the model carries no design to take [analysis] internal_damping from; "
+                "give 'thesis' or 'rotating'"
+            )
         loss_model = design.analysis.internal_damping
     if loss_model not in LOSS_MODELS:
         raise ValueError(f"loss_model must be 'thesis' or 'rotating', got {loss_model!r}")
@@ -156,8 +167,16 @@ def shaft_stiffness_matrices(model: Model, youngs_moduli=None, shear_moduli=None
     sh = model.shaft
     L = np.diff(model.dofs.shaft_x)
     section = TubeSection(sh.outer_diameter, sh.inner_diameter)
-    E = np.full(L.size, sh.youngs_modulus, dtype=complex) if youngs_moduli is None else np.asarray(youngs_moduli, dtype=complex)
-    G = np.full(L.size, sh.shear_modulus, dtype=complex) if shear_moduli is None else np.asarray(shear_moduli, dtype=complex)
+    E = (
+        np.full(L.size, sh.youngs_modulus, dtype=complex)
+        if youngs_moduli is None
+        else np.asarray(youngs_moduli, dtype=complex)
+    )
+    G = (
+        np.full(L.size, sh.shear_modulus, dtype=complex)
+        if shear_moduli is None
+        else np.asarray(shear_moduli, dtype=complex)
+    )
     shear = bool(getattr(getattr(model.design, "shaft", None), "shear_deformation", False))
     out = np.empty((L.size, 12, 12), dtype=complex)
     pairs = np.stack([E, G], axis=1)
@@ -228,8 +247,13 @@ class HeatSources:
         return self.total / np.diff(self.x)
 
 
-def heat_sources(model: Model, loss_model: LossModel | None = None, q_imbalance=None, q_static=None,
-                 loss_stiffness: np.ndarray | None = None) -> HeatSources:
+def heat_sources(
+    model: Model,
+    loss_model: LossModel | None = None,
+    q_imbalance=None,
+    q_static=None,
+    loss_stiffness: np.ndarray | None = None,
+) -> HeatSources:
     """Heat generated per shaft element by the imbalance response and the static deflection.
 
     Parameters

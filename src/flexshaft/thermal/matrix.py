@@ -20,8 +20,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.units import celsius_to_kelvin
 from flexshaft.laminate import Lamina
+from flexshaft.units import celsius_to_kelvin
 
 __all__ = ["MatrixTemperatureLaw"]
 
@@ -51,8 +51,13 @@ class MatrixTemperatureLaw:
     allowable_temperature: float = celsius_to_kelvin(100.0)
 
     def __post_init__(self) -> None:
-        for name in ("reference_temperature", "modulus_decay", "loss_growth", "max_loss_factor",
-                     "allowable_temperature"):
+        for name in (
+            "reference_temperature",
+            "modulus_decay",
+            "loss_growth",
+            "max_loss_factor",
+            "allowable_temperature",
+        ):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
                 raise ValueError(f"MatrixTemperatureLaw.{name} must be finite and > 0, got {value!r}")
@@ -67,5 +72,6 @@ class MatrixTemperatureLaw:
             eta = min(E.imag / E.real * lossy, self.max_loss_factor)
             return E.real * soft * (1 + 1j * eta)
 
-        return Lamina(complex(lamina.E_L), matrix(complex(lamina.E_T)), matrix(complex(lamina.G_LT)),
-                      lamina.nu_LT, lamina.density)
+        return Lamina(
+            complex(lamina.E_L), matrix(complex(lamina.E_T)), matrix(complex(lamina.G_LT)), lamina.nu_LT, lamina.density
+        )

@@ -19,11 +19,11 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from flexshaft.units import celsius_to_kelvin
 from flexshaft.thermal.correlations import ForcedMethod, RotatingMethod
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.matrix import MatrixTemperatureLaw
 from flexshaft.thermal.shaft import FIBRE_CONDUCTIVITY, TRANSVERSE_CONDUCTIVITY
+from flexshaft.units import celsius_to_kelvin
 
 if TYPE_CHECKING:
     from flexshaft.design.thermal_schema import Thermal
@@ -63,9 +63,13 @@ class ThermalOptions:
 
     def __post_init__(self) -> None:
         if self.boom_convection not in _BOOM_METHODS:
-            raise ValueError(f"ThermalOptions.boom_convection must be one of {_BOOM_METHODS}, got {self.boom_convection!r}")
+            raise ValueError(
+                f"ThermalOptions.boom_convection must be one of {_BOOM_METHODS}, got {self.boom_convection!r}"
+            )
         if self.shaft_convection not in _SHAFT_METHODS:
-            raise ValueError(f"ThermalOptions.shaft_convection must be one of {_SHAFT_METHODS}, got {self.shaft_convection!r}")
+            raise ValueError(
+                f"ThermalOptions.shaft_convection must be one of {_SHAFT_METHODS}, got {self.shaft_convection!r}"
+            )
         for name in ("fibre_conductivity", "transverse_conductivity"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
@@ -80,10 +84,15 @@ class ThermalOptions:
 def environment_from(thermal: Thermal) -> ThermalEnvironment:
     """The :class:`ThermalEnvironment` of a ``[thermal]`` table (°C and degrees → K and rad)."""
     return ThermalEnvironment(
-        rotorcraft_mass=thermal.rotorcraft_mass, rotor_radius=thermal.rotor_radius, emissivity=thermal.emissivity,
-        solar_absorptivity=thermal.solar_absorptivity, solar_constant=thermal.solar_constant,
-        solar_fraction=thermal.solar_fraction, solar_zenith=math.radians(thermal.solar_zenith_deg),
-        sky_temperature=celsius_to_kelvin(thermal.sky_temperature_c), air_density=thermal.air_density,
+        rotorcraft_mass=thermal.rotorcraft_mass,
+        rotor_radius=thermal.rotor_radius,
+        emissivity=thermal.emissivity,
+        solar_absorptivity=thermal.solar_absorptivity,
+        solar_constant=thermal.solar_constant,
+        solar_fraction=thermal.solar_fraction,
+        solar_zenith=math.radians(thermal.solar_zenith_deg),
+        sky_temperature=celsius_to_kelvin(thermal.sky_temperature_c),
+        air_density=thermal.air_density,
         ambient_temperature=celsius_to_kelvin(thermal.ambient_temperature_c),
         solar_area_fraction=thermal.solar_area_fraction,
     )
@@ -93,7 +102,8 @@ def matrix_law_from(thermal: Thermal) -> MatrixTemperatureLaw:
     """The :class:`MatrixTemperatureLaw` of a ``[thermal]`` table (°C → K)."""
     return MatrixTemperatureLaw(
         reference_temperature=celsius_to_kelvin(thermal.matrix_reference_temperature_c),
-        modulus_decay=thermal.matrix_modulus_decay, loss_growth=thermal.matrix_loss_growth,
+        modulus_decay=thermal.matrix_modulus_decay,
+        loss_growth=thermal.matrix_loss_growth,
         allowable_temperature=celsius_to_kelvin(thermal.allowable_temperature_c),
     )
 
@@ -101,7 +111,10 @@ def matrix_law_from(thermal: Thermal) -> MatrixTemperatureLaw:
 def thermal_options(thermal: Thermal) -> ThermalOptions:
     """The :class:`ThermalOptions` of a ``[thermal]`` table: every field of it, in SI."""
     return ThermalOptions(
-        environment=environment_from(thermal), boom_convection=thermal.boom_convection,
-        shaft_convection=thermal.shaft_convection, fibre_conductivity=thermal.fibre_conductivity,
-        transverse_conductivity=thermal.transverse_conductivity, matrix_law=matrix_law_from(thermal),
+        environment=environment_from(thermal),
+        boom_convection=thermal.boom_convection,
+        shaft_convection=thermal.shaft_convection,
+        fibre_conductivity=thermal.fibre_conductivity,
+        transverse_conductivity=thermal.transverse_conductivity,
+        matrix_law=matrix_law_from(thermal),
     )

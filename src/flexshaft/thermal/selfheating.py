@@ -17,24 +17,35 @@ with temperature, so it cannot jump over a lower fixed point).
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import scatter
-from flexshaft.units import kelvin_to_celsius
 from flexshaft.laminate import Laminate, equivalent_moduli
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
 from flexshaft.thermal.heat import (
-    LossModel, heat_sources, resolve_loss_model, shaft_response_amplitudes, shaft_stiffness_matrices,
+    LossModel,
+    heat_sources,
+    resolve_loss_model,
+    shaft_response_amplitudes,
+    shaft_stiffness_matrices,
 )
 from flexshaft.thermal.matrix import MatrixTemperatureLaw
 from flexshaft.thermal.options import ThermalOptions
+from flexshaft.units import kelvin_to_celsius
 
-__all__ = ["MatrixTemperatureLaw", "FixedPoint", "fixed_point", "model_with_shaft_moduli",
-           "SelfHeating", "self_heating", "runaway_onset"]
+__all__ = [
+    "MatrixTemperatureLaw",
+    "FixedPoint",
+    "fixed_point",
+    "model_with_shaft_moduli",
+    "SelfHeating",
+    "self_heating",
+    "runaway_onset",
+]
 
 
 @dataclass(frozen=True)
@@ -55,8 +66,9 @@ class FixedPoint:
         return self.status == "converged"
 
 
-def fixed_point(update: Callable[[np.ndarray], np.ndarray], initial, allowable: float,
-                tol: float = 1e-4, max_iter: int = 100) -> FixedPoint:
+def fixed_point(
+    update: Callable[[np.ndarray], np.ndarray], initial, allowable: float, tol: float = 1e-4, max_iter: int = 100
+) -> FixedPoint:
     """Picard iteration ``T ← update(T)`` with runaway detection.
 
     Parameters
@@ -155,9 +167,16 @@ class SelfHeating:
 
 
 def self_heating(
-    model: Model, options: ThermalOptions | None = None, loss_model: LossModel | None = None, *,
-    imbalance_scale: float = 1.0, static_scale: float = 1.0, air_temperature: float | None = None,
-    tol: float = 1e-3, max_iter: int = 60, **thermal_kwargs,
+    model: Model,
+    options: ThermalOptions | None = None,
+    loss_model: LossModel | None = None,
+    *,
+    imbalance_scale: float = 1.0,
+    static_scale: float = 1.0,
+    air_temperature: float | None = None,
+    tol: float = 1e-3,
+    max_iter: int = 60,
+    **thermal_kwargs,
 ) -> SelfHeating:
     """Iterate response → heat → temperature → lamina properties per element to a fixed point.
 
@@ -193,24 +212,32 @@ def self_heating(
         E, G = _element_moduli(model, law, T_el)
         variant = model_with_shaft_moduli(model, E, G)
         q_imb, q_st = shaft_response_amplitudes(variant, imbalance_scale, static_scale)
-        src = heat_sources(variant, loss_model, q_imb, q_st, loss_stiffness=shaft_stiffness_matrices(variant, E, G).imag)
+        src = heat_sources(
+            variant, loss_model, q_imb, q_st, loss_stiffness=shaft_stiffness_matrices(variant, E, G).imag
+        )
         res = shaft_thermal(variant, options, loss_model, air_temperature=T_air, sources=src, **thermal_kwargs)
         last["thermal"] = res
         return res.temperature.element_temperature
 
     fp = fixed_point(update, np.full(nel, T_air), law.allowable_temperature, tol, max_iter)
-    return SelfHeating(fp.status, fp.temperature, last["thermal"], fp.iterations, law.allowable_temperature,
-                       fp.history)
+    return SelfHeating(fp.status, fp.temperature, last["thermal"], fp.iterations, law.allowable_temperature, fp.history)
 
 
-def runaway_onset(model: Model, scales, options: ThermalOptions | None = None, loss_model: LossModel | None = None,
-                  refine: int = 0, **kwargs) -> tuple[float | None, list[SelfHeating]]:
+def runaway_onset(
+    model: Model,
+    scales,
+    options: ThermalOptions | None = None,
+    loss_model: LossModel | None = None,
+    refine: int = 0,
+    **kwargs,
+) -> tuple[float | None, list[SelfHeating]]:
     """First load multiple (imbalance and static loads scaled together, increasing ``scales``)
     at which the self-heating has no fixed point below the allowable temperature; ``refine``
     bisection steps then narrow it between the last stable and the first runaway scale.
 
     Returns ``(scale or None, results)``.
     """
+
     def run(s: float) -> SelfHeating:
         return self_heating(model, options, loss_model, imbalance_scale=float(s), static_scale=float(s), **kwargs)
 

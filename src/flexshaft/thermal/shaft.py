@@ -29,8 +29,12 @@ from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.correlations import Nusselt, RotatingMethod, rotating_cylinder_nusselt
 
 __all__ = [
-    "FIBRE_CONDUCTIVITY", "TRANSVERSE_CONDUCTIVITY", "laminate_axial_conductivity",
-    "rotating_shaft_convection", "ShaftTemperature", "solve_shaft_temperature",
+    "FIBRE_CONDUCTIVITY",
+    "TRANSVERSE_CONDUCTIVITY",
+    "laminate_axial_conductivity",
+    "rotating_shaft_convection",
+    "ShaftTemperature",
+    "solve_shaft_temperature",
 ]
 
 #: Assumed ply conductivities [W/(m K)]: carbon fibre ~9 W/(m K) × V_f 0.6 plus the matrix along
@@ -39,7 +43,9 @@ FIBRE_CONDUCTIVITY = 5.0
 TRANSVERSE_CONDUCTIVITY = 0.5
 
 
-def laminate_axial_conductivity(laminate, k_L: float = FIBRE_CONDUCTIVITY, k_T: float = TRANSVERSE_CONDUCTIVITY) -> float:
+def laminate_axial_conductivity(
+    laminate, k_L: float = FIBRE_CONDUCTIVITY, k_T: float = TRANSVERSE_CONDUCTIVITY
+) -> float:
     """Axial in-plane conductivity of the wall [W/(m K)]: plies conduct in parallel along x,
     each with k_xx = k_L cos²α + k_T sin²α; ``None`` laminate (isotropic) is not handled here."""
     a = np.asarray(laminate.angles)
@@ -47,8 +53,9 @@ def laminate_axial_conductivity(laminate, k_L: float = FIBRE_CONDUCTIVITY, k_T: 
     return float(np.sum(t * (k_L * np.cos(a) ** 2 + k_T * np.sin(a) ** 2)) / t.sum())
 
 
-def rotating_shaft_convection(diameter: float, speed: float, air_temperature: float,
-                              method: RotatingMethod = "becker", pressure: float = 101325.0) -> tuple[float, Nusselt]:
+def rotating_shaft_convection(
+    diameter: float, speed: float, air_temperature: float, method: RotatingMethod = "becker", pressure: float = 101325.0
+) -> tuple[float, Nusselt]:
     """Convection coefficient h [W/(m^2 K)] of a tube of ``diameter`` [m] spinning at ``speed``
     [rad/s] in still air at ``air_temperature`` [K]; returns (h, Nusselt)."""
     air = air_properties(air_temperature, pressure)
@@ -111,8 +118,14 @@ class ShaftTemperature:
 
 
 def solve_shaft_temperature(
-    x, element_power, conductivity: float, wall_area: float, perimeter: float,
-    heat_transfer_coefficient: float, air_temperature: float, end_temperatures=None,
+    x,
+    element_power,
+    conductivity: float,
+    wall_area: float,
+    perimeter: float,
+    heat_transfer_coefficient: float,
+    air_temperature: float,
+    end_temperatures=None,
 ) -> ShaftTemperature:
     """Solve ``K_THR T = q + K_conv T_∞`` with Dirichlet ends.
 
@@ -177,5 +190,6 @@ def solve_shaft_temperature(
     # end flows: what each end node's control volume receives and does not convect
     q0 = src[0] + cond[0] * (T[1] - T[0]) - convected[0]
     qn = src[-1] + cond[-1] * (T[-2] - T[-1]) - convected[-1]
-    return ShaftTemperature(x, T, P, float(air_temperature), (Ta, Tb), float(heat_transfer_coefficient),
-                            convected, (float(q0), float(qn)))
+    return ShaftTemperature(
+        x, T, P, float(air_temperature), (Ta, Tb), float(heat_transfer_coefficient), convected, (float(q0), float(qn))
+    )

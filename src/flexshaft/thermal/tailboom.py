@@ -28,13 +28,20 @@ from typing import Literal
 
 from fluids.numerics import NotBoundedError, brenth
 
-from flexshaft.units import kelvin_to_celsius
 from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
 from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment
+from flexshaft.units import kelvin_to_celsius
 
-__all__ = ["BoomCondition", "BoomTemperature", "ellipse_perimeter", "boom_equivalent_diameter",
-           "boom_heat_transfer_coefficient", "tailboom_temperature", "tailboom_temperatures"]
+__all__ = [
+    "BoomCondition",
+    "BoomTemperature",
+    "ellipse_perimeter",
+    "boom_equivalent_diameter",
+    "boom_heat_transfer_coefficient",
+    "tailboom_temperature",
+    "tailboom_temperatures",
+]
 
 BoomCondition = Literal["hover", "parked"]
 
@@ -100,7 +107,10 @@ def boom_equivalent_diameter(tailboom) -> float:
 
 
 def boom_heat_transfer_coefficient(
-    temperature: float, diameter: float, condition: BoomCondition, env: ThermalEnvironment,
+    temperature: float,
+    diameter: float,
+    condition: BoomCondition,
+    env: ThermalEnvironment,
     method: ForcedMethod = "hilpert",
 ) -> tuple[float, Nusselt, float]:
     """Convection coefficient h [W/(m^2 K)] of the boom at skin ``temperature`` [K].
@@ -122,8 +132,7 @@ def boom_heat_transfer_coefficient(
 
 
 def tailboom_temperature(
-    condition: BoomCondition, diameter: float, env: ThermalEnvironment | None = None,
-    method: ForcedMethod = "hilpert",
+    condition: BoomCondition, diameter: float, env: ThermalEnvironment | None = None, method: ForcedMethod = "hilpert"
 ) -> BoomTemperature:
     """Steady tailboom skin temperature for ``condition`` ("hover" or "parked").
 
@@ -154,16 +163,22 @@ def tailboom_temperature(
         raise ValueError(f"tailboom energy balance: no skin temperature between {lo:.6g} K and {hi:.6g} K") from exc
     h, nu, dimensionless = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
     return BoomTemperature(
-        condition=condition, temperature=T, heat_transfer_coefficient=h, nusselt=nu,
-        dimensionless=dimensionless, velocity=env.downwash_velocity if condition == "hover" else 0.0,
-        diameter=diameter, absorbed_solar=absorbed,
+        condition=condition,
+        temperature=T,
+        heat_transfer_coefficient=h,
+        nusselt=nu,
+        dimensionless=dimensionless,
+        velocity=env.downwash_velocity if condition == "hover" else 0.0,
+        diameter=diameter,
+        absorbed_solar=absorbed,
         net_radiation=eps_sigma * (T**4 - env.sky_temperature**4),
         convection=h * (T - env.ambient_temperature),
     )
 
 
-def tailboom_temperatures(diameter: float, env: ThermalEnvironment | None = None,
-                          method: ForcedMethod = "hilpert") -> dict[str, BoomTemperature]:
+def tailboom_temperatures(
+    diameter: float, env: ThermalEnvironment | None = None, method: ForcedMethod = "hilpert"
+) -> dict[str, BoomTemperature]:
     """Hover and parked skin temperatures of a boom of equivalent ``diameter`` [m]
     (:func:`boom_equivalent_diameter` of the design's tailboom table)."""
     return {c: tailboom_temperature(c, diameter, env, method) for c in ("hover", "parked")}
