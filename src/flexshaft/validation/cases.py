@@ -18,7 +18,7 @@ from typing import Any
 
 from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass
 
-__all__ = ["CASES", "SOURCES", "Case", "Source", "case_by_id"]
+__all__ = ["CASES", "GIBERT_ROD", "SOURCES", "VPCS_CANTILEVER", "Case", "Source", "case_by_id"]
 
 
 @dataclass(frozen=True)
@@ -126,6 +126,17 @@ SOURCES: dict[str, Source] = {
         "'Step-by-Step Example Walkthrough': a 45 in steel driveshaft, 3.5 in OD, 0.083 in wall, E = 30 Mpsi, "
         "0.283 lb/in³, simply supported: 11,390 RPM critical.",
     ),
+}
+
+#: Inputs of the closed-form cases, as in their design files (tests/test_validation.py checks both agree).
+GIBERT_ROD = {"length": 2.0, "diameter": 0.05, "modulus": 211.0e9, "density": 7810.0, "speed_rpm": 30000.0}
+VPCS_CANTILEVER = {
+    "length": 1.0,
+    "outer_diameter": 0.05,
+    "wall_thickness": 0.005,
+    "modulus": 210.0e9,
+    "density": 7800.0,
+    "tip_mass": 10.0,
 }
 
 _ROSS = "ROSS (petrobras/ross, commit 631a249a), ross/tests/test_examples.py"
@@ -240,7 +251,8 @@ CASES: tuple[Case, ...] = (
             "model as ROSS"
         ),
         note=(
-            "The third pair is heavily damped (ζ = 0.75): |s| and Im s differ by a third. ROSS's test also lists "
+            "'undamped' is the modulus |s| of the eigenvalue, 'damped' its imaginary part Im s. The third pair is "
+            "heavily damped (ζ = 0.75): the two differ by a third. ROSS's test also lists "
             "the values at 4000 rev/min, accepted at 10 % by that test; they are not used here."
         ),
     ),
@@ -314,10 +326,15 @@ CASES: tuple[Case, ...] = (
         reference_kind="closed form",
         design="gibert_spinning_rod.toml",
         quantity="whirl_frequencies",
-        arguments={"speed_rpm": 30000.0, "count": 2},
+        arguments={"speed_rpm": GIBERT_ROD["speed_rpm"], "count": 2},
         labels=("1 backward", "1 forward", "2 backward", "2 forward"),
         published=gibert_spinning_beam(
-            length=2.0, diameter=0.05, modulus=211.0e9, density=7810.0, speed=30000.0 * math.pi / 30.0, modes=2
+            length=GIBERT_ROD["length"],
+            diameter=GIBERT_ROD["diameter"],
+            modulus=GIBERT_ROD["modulus"],
+            density=GIBERT_ROD["density"],
+            speed=GIBERT_ROD["speed_rpm"] * math.pi / 30.0,
+            modes=2,
         ),
         unit="rad/s",
         tolerance=1e-3,
@@ -340,11 +357,7 @@ CASES: tuple[Case, ...] = (
         quantity="lateral_natural_frequencies",
         arguments={"speed_rpm": 0.0, "count": 1, "stride": 2},
         labels=("mode 1",),
-        published=(
-            rayleigh_cantilever_tip_mass(
-                length=1.0, outer_diameter=0.05, wall_thickness=0.005, modulus=210.0e9, density=7800.0, tip_mass=10.0
-            ),
-        ),
+        published=(rayleigh_cantilever_tip_mass(**VPCS_CANTILEVER),),
         unit="Hz",
         tolerance=1e-2,
         tolerance_basis="the source states the Rayleigh estimate of f1 to ±1 % (V2.02.015 §2.3)",

@@ -32,6 +32,7 @@ __all__ = [
     "report_json",
     "run_case",
     "run_validation",
+    "update_document",
 ]
 
 #: Package holding the cases' design files.
@@ -257,3 +258,17 @@ def markdown(report: ValidationReport) -> str:
             lines.append(f"* Note: {c.note}")
         lines.append("")
     return "\n".join(lines).rstrip() + "\n"
+
+
+#: Markers of the generated table in docs/validation.md.
+TABLE_START, TABLE_END = "<!-- validation-table:start -->", "<!-- validation-table:end -->"
+
+
+def update_document(text: str, report: ValidationReport) -> str:
+    """``text`` (docs/validation.md) with the block between its markers replaced by
+    :func:`markdown` of ``report`` (ValueError when the markers are missing)."""
+    if TABLE_START not in text or TABLE_END not in text:
+        raise ValueError(f"the page has no {TABLE_START} ... {TABLE_END} block")
+    head, rest = text.split(TABLE_START, 1)
+    _, tail = rest.split(TABLE_END, 1)
+    return f"{head}{TABLE_START}\n\n{markdown(report)}\n{TABLE_END}{tail}"
