@@ -62,7 +62,7 @@ class Case:
     published : tuple of float
         The published values, in ``unit``, in the order of ``labels``.
     unit : str
-        Display unit of the values: ``"rad/s"``, ``"Hz"``, ``"rpm"``, ``"N/m"`` or ``"g mm"``.
+        Display unit of the values: ``"rad/s"``, ``"Hz"``, ``"rpm"``, ``"N/m"``, ``"g mm"`` or ``"-"``.
     tolerance : float
         Largest accepted relative difference |flexshaft/published − 1| of every value.
     tolerance_basis : str
@@ -104,7 +104,7 @@ SOURCES: dict[str, Source] = {
     ),
     "gibert": Source(
         "gibert",
-        "R.-J. Gibert, Vibrations des structures (EDF/Eyrolles), closed form of the spinning simply supported "
+        "R.-J. Gibert, Vibrations des structures, closed form of the spinning simply supported "
         "Euler beam, as stated in code_aster Validation Manual V2.02.141, §2.1 'Benchmark solution' "
         "(code_aster documentation, man_v/v2/v2.02.141).",
     ),
@@ -119,6 +119,13 @@ SOURCES: dict[str, Source] = {
         "G. Schweitzer, E. H. Maslen (eds.), Magnetic Bearings: Theory, Design, and Application to Rotating "
         "Machinery, Springer, 2009, p. 343: negative stiffness k_s and current gain k_i of a radial bearing in "
         "differential driving mode.",
+    ),
+    "cengel": Source(
+        "cengel",
+        "Solutions of a heat-transfer textbook, Chapter 7 'External Forced Convection', Problems 7-53 (a steam "
+        "pipe in light wind) and 7-100 (an insulated steam pipe in cross-flow), as reproduced on coursehero.com "
+        "(files 6719813 and 6719861, 'Thermodynamics HW Solutions'); the page does not name the book, whose "
+        "solution format and air table (Table A-15) are those of Y. A. Çengel's Heat and Mass Transfer.",
     ),
     "calcady": Source(
         "calcady",
@@ -147,8 +154,8 @@ _ROSS_BASIS = (
 )
 _ROSS_KIND = "textbook example, peer-code values"
 _ROSS_NOTE = (
-    "ROSS's list also holds 650.41 rad/s, constant over speed and bearings: an axial or torsional mode of "
-    "ROSS's six-DOF element (free ends); flexshaft compares the lateral modes only."
+    "ROSS's list also holds 650.41 rad/s, the same at both speeds and on both bearing sets, so not a lateral "
+    "mode (presumably the torsional mode of ROSS's six-DOF model); flexshaft compares the lateral modes only."
 )
 
 CASES: tuple[Case, ...] = (
@@ -362,6 +369,44 @@ CASES: tuple[Case, ...] = (
         tolerance=1e-2,
         tolerance_basis="the source states the Rayleigh estimate of f1 to ±1 % (V2.02.015 §2.3)",
         note="The tip disk's diametral inertia is zero, as the formula's point mass.",
+    ),
+    Case(
+        id="cengel-7-53-crossflow",
+        title="Cylinder in cross-flow of air, Re = 1.632e4 (Churchill-Bernstein)",
+        part="tailboom forced convection in the rotor downwash (hover)",
+        source="cengel",
+        where="Problem 7-53: Re = 1.632 × 10⁴, Pr = 0.7255, Nu = 71.19 by the Churchill-Bernstein correlation",
+        via="",
+        reference_kind="worked example",
+        design=None,
+        quantity="cylinder_crossflow_nusselt",
+        arguments={"reynolds": 1.632e4, "prandtl": 0.7255, "method": "churchill_bernstein"},
+        labels=("Nu_D",),
+        published=(71.19,),
+        unit="-",
+        tolerance=2e-4,
+        tolerance_basis=(
+            "the solution prints Nu to four figures (71.19: ±7e-5) from Re printed to four figures (±3e-5 in Nu, "
+            "Nu ∝ Re^0.6)"
+        ),
+        note="Re and Pr are the solution's; flexshaft's air properties are not involved.",
+    ),
+    Case(
+        id="cengel-7-100-crossflow",
+        title="Cylinder in cross-flow of air, Re = 3.254e4 (Churchill-Bernstein)",
+        part="tailboom forced convection in the rotor downwash (hover)",
+        source="cengel",
+        where="Problem 7-100: Re = 3.254 × 10⁴, Pr = 0.7336, Nu = 107 by the Churchill-Bernstein correlation",
+        via="",
+        reference_kind="worked example",
+        design=None,
+        quantity="cylinder_crossflow_nusselt",
+        arguments={"reynolds": 3.254e4, "prandtl": 0.7336, "method": "churchill_bernstein"},
+        labels=("Nu_D",),
+        published=(107.0,),
+        unit="-",
+        tolerance=5e-3,
+        tolerance_basis="the solution prints Nu to three figures (107: ±0.5, 4.7e-3)",
     ),
     Case(
         id="calcady-driveshaft",

@@ -2,7 +2,8 @@
 
 A quantity is a function ``f(design, **arguments) -> ndarray`` of a validated design (or of
 plain numbers, ``design`` None) returning SI values in the order of the published ones:
-natural frequencies [rad/s], a bearing stiffness [N/m], a residual unbalance [kg m]. Each
+natural frequencies [rad/s], a bearing stiffness [N/m], a residual unbalance [kg m], a
+Nusselt number [-]. Each
 function names the analysis it calls; none of them holds a published number
 (:mod:`flexshaft.validation.cases` does) or a closed form (:mod:`flexshaft.validation.reference`
 does), so the comparison is always flexshaft against something else.
@@ -20,6 +21,7 @@ __all__ = [
     "QUANTITIES",
     "actuator_stiffness",
     "balance_tolerance",
+    "cylinder_crossflow_nusselt",
     "lateral_damped_frequencies",
     "lateral_frequency_pairs",
     "lateral_natural_frequencies",
@@ -128,6 +130,15 @@ def balance_tolerance(design: None, *, rotor_mass: float, grade_mm_s: float, spe
     return np.asarray([balance_grade_eccentricity(grade_mm_s, rpm_to_rad_s(speed_rpm)) * rotor_mass])
 
 
+def cylinder_crossflow_nusselt(design: None, *, reynolds: float, prandtl: float, method: str) -> np.ndarray:
+    """Mean Nusselt number [-] of a cylinder in cross-flow at Re_D = ``reynolds``, Pr =
+    ``prandtl`` by the correlation ``method`` the tailboom's hover convection uses
+    (:func:`flexshaft.thermal.correlations.forced_cylinder_nusselt`)."""
+    from flexshaft.thermal.correlations import forced_cylinder_nusselt
+
+    return np.asarray([forced_cylinder_nusselt(reynolds, prandtl, method).value])
+
+
 #: Every quantity a case may name.
 QUANTITIES: dict[str, Callable[..., np.ndarray]] = {
     "lateral_natural_frequencies": lateral_natural_frequencies,
@@ -137,6 +148,7 @@ QUANTITIES: dict[str, Callable[..., np.ndarray]] = {
     "torsional_natural_frequencies": torsional_natural_frequencies,
     "actuator_stiffness": actuator_stiffness,
     "balance_tolerance": balance_tolerance,
+    "cylinder_crossflow_nusselt": cylinder_crossflow_nusselt,
 }
 
 

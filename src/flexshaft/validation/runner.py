@@ -39,10 +39,17 @@ __all__ = [
 DESIGN_PACKAGE = "flexshaft.validation.designs"
 
 #: Display unit of a case -> factor from the quantity's SI value (rad/s, kg m).
-UNITS: dict[str, float] = {"rad/s": 1.0, "Hz": 1.0 / (2.0 * math.pi), "rpm": 30.0 / math.pi, "g mm": 1.0e6, "N/m": 1.0}
+UNITS: dict[str, float] = {
+    "rad/s": 1.0,
+    "Hz": 1.0 / (2.0 * math.pi),
+    "rpm": 30.0 / math.pi,
+    "g mm": 1.0e6,
+    "N/m": 1.0,
+    "-": 1.0,
+}
 
 #: Unit suffix of a JSON key, per display unit (the CLI's convention: ``frequency_Hz``).
-_JSON_SUFFIX = {"rad/s": "rad_per_s", "Hz": "Hz", "rpm": "rpm", "g mm": "g_mm", "N/m": "N_per_m"}
+_JSON_SUFFIX = {"rad/s": "rad_per_s", "Hz": "Hz", "rpm": "rpm", "g mm": "g_mm", "N/m": "N_per_m", "-": ""}
 
 
 def design_names() -> tuple[str, ...]:
@@ -171,12 +178,19 @@ def percent(difference: float) -> str:
     return f"{100.0 * difference:+.3f} %"
 
 
+def _plain(value) -> str:
+    return f"{value:g}" if isinstance(value, float) else repr(value) if isinstance(value, str) else str(value)
+
+
 def report_json(report: ValidationReport) -> dict:
     """The report as JSON-ready data: every case with its source, values and verdict."""
     cases = []
     for r in report.results:
         c = r.case
         suffix = _JSON_SUFFIX[c.unit]
+        published_key, flexshaft_key = (
+            (f"published_{suffix}", f"flexshaft_{suffix}") if suffix else ("published", "flexshaft")
+        )
         cases.append(
             {
                 "id": c.id,
@@ -242,16 +256,14 @@ def markdown(report: ValidationReport) -> str:
             "",
             f"**`{c.id}`: {c.title}.** {c.part[0].upper()}{c.part[1:]}.",
             "",
-            f"* Source: {SOURCES[c.source].citation} {c.where}."
-            + (f" Read {c.via}." if c.via else "")
-            + f" ({c.reference_kind})",
-            "* Inputs: "
-            + (
-                f"[`validation/designs/{c.design}`](../src/flexshaft/validation/designs/{c.design})"
+            f"* Source: {SOURCES[c.source].citation}",
+            f"* Where: {c.where}." + (f" Read {c.via}." if c.via else "") + f" Kind: {c.reference_kind}.",
+            (
+                f"* Inputs: [`validation/designs/{c.design}`](../src/flexshaft/validation/designs/{c.design})"
                 if c.design
-                else "plain numbers: " + ", ".join(f"`{k} = {v:g}`" for k, v in c.arguments.items())
+                else "* Inputs (no design file): " + ", ".join(f"`{k} = {_plain(v)}`" for k, v in c.arguments.items())
             )
-            + f"; quantity `{c.quantity}`.",
+            + f"; flexshaft's quantity `{c.quantity}`.",
             f"* Tolerance {100.0 * c.tolerance:g} %: {c.tolerance_basis}.",
         ]
         if c.note:
