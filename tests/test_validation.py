@@ -18,15 +18,16 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 import flexshaft.validation as validation
 from flexshaft.cli import app
 from flexshaft.validation import CASES, SOURCES, case_design, design_names, markdown, run_validation
-from flexshaft.validation.cases import GIBERT_ROD, VPCS_CANTILEVER
+from flexshaft.validation.cases import GIBERT_ROD, JEFFCOTT, VPCS_CANTILEVER
 from flexshaft.validation.quantities import QUANTITIES
-from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass
+from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass, rotating_damping_onset
 from flexshaft.validation.runner import TABLE_END as END
 from flexshaft.validation.runner import TABLE_START as START
 
@@ -166,6 +167,17 @@ def test_closed_form_inputs_are_those_of_the_design_files():
         VPCS_CANTILEVER["tip_mass"],
     )
     assert tube.disks[0].diametral_inertia == 0.0  # the formula's point mass
+    rotor = case_design(next(c for c in CASES if c.id == "jeffcott-rotating-damping-onset"))
+    steel = rotor.materials[rotor.shaft.material]
+    inertia = math.pi * rotor.shaft.outer_diameter**4 / 64.0  # solid (a 0.2 um bore: 1e-9 of I)
+    span = rotor.shaft.x_end - rotor.shaft.x_start
+    assert 48.0 * steel.E * inertia / span**3 == pytest.approx(JEFFCOTT["stiffness"], rel=1e-6)
+    assert (rotor.disks[0].mass, rotor.disks[0].x, steel.loss_factor) == (
+        JEFFCOTT["mass"],
+        span / 2.0,
+        JEFFCOTT["loss_factor"],
+    )
+    assert rotor.bearings[0].damping["v"] == rotor.bearings[0].damping["w"] == JEFFCOTT["external_damping"]
 
 
 def test_the_closed_forms_reduce_to_the_classical_beam():
@@ -178,6 +190,15 @@ def test_the_closed_forms_reduce_to_the_classical_beam():
     assert rest == pytest.approx([omega0[0], omega0[0], omega0[1], omega0[1]], rel=1e-14)
     spun = gibert_spinning_beam(length=L, diameter=D, modulus=E, density=rho, speed=5000.0, modes=2)
     assert spun[0] * spun[1] == pytest.approx(omega0[0] ** 2, rel=1e-14) and spun[0] < omega0[0] < spun[1]
+    # Jeffcott: at the onset a root of m s² + (c_e + c_i) s + k − i c_i Ω = 0 (complex coordinates)
+    # has a zero real part, the other a negative one; without external damping the onset is ω_n
+    k, m, c_e, c_i = 4e4, 10.0, 5.0, 3.0
+    onset = rotating_damping_onset(stiffness=k, mass=m, external_damping=c_e, internal_damping=c_i)
+    roots = np.roots([m, c_e + c_i, k - 1j * c_i * onset])
+    assert max(roots.real) == pytest.approx(0.0, abs=1e-12 * math.sqrt(k / m)) and min(roots.real) < 0.0
+    assert rotating_damping_onset(stiffness=4e4, mass=10.0, external_damping=0.0, internal_damping=3.0) == (
+        pytest.approx(math.sqrt(4e3), rel=1e-14)
+    )
     f1 = rayleigh_cantilever_tip_mass(
         length=L, outer_diameter=D, wall_thickness=0.002, modulus=E, density=1e-12, tip_mass=5.0
     )

@@ -16,9 +16,9 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass
+from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass, rotating_damping_onset
 
-__all__ = ["CASES", "GIBERT_ROD", "SOURCES", "VPCS_CANTILEVER", "Case", "Source", "case_by_id"]
+__all__ = ["CASES", "GIBERT_ROD", "JEFFCOTT", "SOURCES", "VPCS_CANTILEVER", "Case", "Source", "case_by_id"]
 
 
 @dataclass(frozen=True)
@@ -127,6 +127,14 @@ SOURCES: dict[str, Source] = {
         "(files 6719813 and 6719861, 'Thermodynamics HW Solutions'); the page does not name the book, whose "
         "solution format and air table (Table A-15) are those of Y. A. Çengel's Heat and Mass Transfer.",
     ),
+    "bently2002": Source(
+        "bently2002",
+        "Appendix 6, 'Eigenvalues of the Rotor Model' (pp. 497-498, eqs. A6-1 to A6-8, after Muszynska): the "
+        "eigenvalues of M r'' + D r' + (K - j D λ Ω) r = 0, as reproduced on scribd.com (document 755297072). "
+        "The page does not name the book; its rotor model and its 'Fluid Circumferential Average Velocity "
+        "Ratio' λ are those of D. E. Bently, C. T. Hatch, Fundamentals of Rotating Machinery Diagnostics "
+        "(2002).",
+    ),
     "calcady": Source(
         "calcady",
         "calcady.com, 'Driveshaft Critical Speed' (trade/automotive/driveshaft-critical-speed), section "
@@ -145,6 +153,10 @@ VPCS_CANTILEVER = {
     "density": 7800.0,
     "tip_mass": 10.0,
 }
+
+#: The Jeffcott rotor of the internal-damping case (its design file states the same numbers).
+JEFFCOTT = {"stiffness": 75398.22368615503, "mass": 10.0, "loss_factor": 0.02, "external_damping": 8.683215054699211}
+_JEFFCOTT_OMEGA_N = math.sqrt(JEFFCOTT["stiffness"] / JEFFCOTT["mass"])
 
 _ROSS = "ROSS (petrobras/ross, commit 631a249a), ross/tests/test_examples.py"
 _ROSS_BASIS = (
@@ -407,6 +419,48 @@ CASES: tuple[Case, ...] = (
         unit="-",
         tolerance=5e-3,
         tolerance_basis="the solution prints Nu to three figures (107: ±0.5, 4.7e-3)",
+    ),
+    Case(
+        id="jeffcott-rotating-damping-onset",
+        title="Jeffcott rotor with internal and external viscous damping: whirl onset speed",
+        part="whirl stability with internal damping (the thesis's viscous chapter-4 model)",
+        source="bently2002",
+        where=(
+            "eq. A6-7: the growth rate of s1 vanishes at λΩ = sqrt(K/M); with D = c_e + c_i and λ = c_i/(c_e + c_i) "
+            "(rotating damping c_i, stationary c_e) that is Ω = ω_n (1 + c_e/c_i)"
+        ),
+        via="",
+        reference_kind="closed form",
+        design="jeffcott_internal_damping.toml",
+        quantity="whirl_onset_speed",
+        arguments={
+            "max_speed": 3.0 * _JEFFCOTT_OMEGA_N,
+            "n_speeds": 31,
+            "n_modes": 2,
+            "damping_model": "viscous",
+            "reference_frequency": _JEFFCOTT_OMEGA_N,
+        },
+        labels=("onset speed",),
+        published=(
+            rotating_damping_onset(
+                stiffness=JEFFCOTT["stiffness"],
+                mass=JEFFCOTT["mass"],
+                external_damping=JEFFCOTT["external_damping"],
+                internal_damping=JEFFCOTT["loss_factor"] * JEFFCOTT["stiffness"] / _JEFFCOTT_OMEGA_N,
+            ),
+        ),
+        unit="rad/s",
+        tolerance=5e-4,
+        tolerance_basis=(
+            "the closed form's shaft is massless, the design's has 3 g (density 0.01 kg/m³) under the 10 kg disk: "
+            "ω_n and the onset about 1e-4 lower; the onset is solved to 1e-9 between the analysed speeds"
+        ),
+        note=(
+            "flexshaft's viscous model takes the shaft's loss factor η as c_i = η k/ω_ref at ω_ref = ω_n "
+            "(thesis chapter 4, Zorzi & Nelson's form), which is the rotating viscous damping of the closed form. "
+            "With the default hysteretic model this rotor is unstable above ω_n whenever η > 2ζ_e "
+            "(docs/model.md): here η = 0.02 > 2ζ_e = 0.01."
+        ),
     ),
     Case(
         id="calcady-driveshaft",

@@ -28,6 +28,7 @@ __all__ = [
     "quantity",
     "torsional_natural_frequencies",
     "whirl_frequencies",
+    "whirl_onset_speed",
 ]
 
 
@@ -120,6 +121,34 @@ def actuator_stiffness(design: Design, *, bearing: str, frequency: float) -> np.
     return np.asarray([complex(actuator.law(1j * frequency)).real])
 
 
+def whirl_onset_speed(
+    design: Design,
+    *,
+    max_speed: float,
+    n_speeds: int,
+    n_modes: int,
+    damping_model: str,
+    reference_frequency: float | None = None,
+) -> np.ndarray:
+    """Onset speed [rad/s] of the whirl instability from the stability analysis over the speeds
+    0..``max_speed`` [rad/s] (``n_speeds`` of them; the onset is refined between them), with the
+    internal-damping model ``damping_model`` ("viscous": the thesis's chapter-4 model at
+    ``reference_frequency`` [rad/s]; "hysteretic") (:func:`flexshaft.analyses.stability`)."""
+    from flexshaft.analyses import stability
+    from flexshaft.assembly import build_model
+
+    result = stability(
+        build_model(design),
+        np.linspace(0.0, max_speed, n_speeds),
+        n_modes=n_modes,
+        damping_model=damping_model,
+        reference_frequency=reference_frequency,
+    )
+    if result.onset_speed is None:
+        raise ValueError(f"no whirl instability below {max_speed:g} rad/s")
+    return np.asarray([result.onset_speed])
+
+
 def balance_tolerance(design: None, *, rotor_mass: float, grade_mm_s: float, speed_rpm: float) -> np.ndarray:
     """Permissible residual unbalance U_per = e_per m [kg m] of a rotor of mass ``rotor_mass``
     [kg] of balance grade ``grade_mm_s`` [mm/s] at ``speed_rpm`` [rpm]
@@ -149,6 +178,7 @@ QUANTITIES: dict[str, Callable[..., np.ndarray]] = {
     "actuator_stiffness": actuator_stiffness,
     "balance_tolerance": balance_tolerance,
     "cylinder_crossflow_nusselt": cylinder_crossflow_nusselt,
+    "whirl_onset_speed": whirl_onset_speed,
 }
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["gibert_spinning_beam", "rayleigh_cantilever_tip_mass"]
+__all__ = ["gibert_spinning_beam", "rayleigh_cantilever_tip_mass", "rotating_damping_onset"]
 
 
 def gibert_spinning_beam(
@@ -65,3 +65,18 @@ def rayleigh_cantilever_tip_mass(
     inertia = math.pi * (outer_diameter**4 - inner**4) / 64.0
     beam_mass = density * math.pi * (outer_diameter**2 - inner**2) / 4.0 * length
     return math.sqrt(3.0 * modulus * inertia / (length**3 * (tip_mass + 0.24 * beam_mass))) / (2.0 * math.pi)
+
+
+def rotating_damping_onset(*, stiffness: float, mass: float, external_damping: float, internal_damping: float) -> float:
+    """Onset speed [rad/s] of the whirl instability of a Jeffcott rotor with rotating (internal)
+    viscous damping ``internal_damping`` c_i and stationary damping ``external_damping`` c_e
+    [N s/m], on a shaft of ``stiffness`` k [N/m] carrying ``mass`` m [kg].
+
+    In complex coordinates r = v + i w the rotor obeys m r'' + (c_e + c_i) r' + (k − i c_i Ω) r = 0,
+    the rotor model ``M r'' + D r' + (K − j D λ Ω) r = 0`` of Bently & Hatch's Appendix 6 (eq. A6-1)
+    with D = c_e + c_i and λ = c_i/(c_e + c_i). Its eigenvalue s1 (eq. A6-7) has the growth rate
+    ``−D/(2M) + sqrt((−E + sqrt(E² + (DλΩ/M)²))/2)``, E = K/M − (D/2M)², which vanishes where
+    λΩ = sqrt(K/M): Ω = sqrt(k/m) (1 + c_e/c_i).
+    """
+    lam = internal_damping / (external_damping + internal_damping)
+    return math.sqrt(stiffness / mass) / lam
