@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import re
 import subprocess
 import sys
 import time
@@ -227,6 +228,11 @@ def test_the_documented_table_is_the_one_the_cases_produce(report):
     assert START in text and END in text
     documented = text.split(START, 1)[1].split(END, 1)[0].strip()
     assert documented == markdown(report).strip(), "docs/validation.md is stale: regenerate its table"
+
+
+def test_the_page_lists_every_source():
+    sources = DOC.read_text(encoding="utf-8").split("## Sources", 1)[1].split("\n## ", 1)[0]
+    assert set(re.findall(r"^\| `([a-z0-9]+)` \|", sources, flags=re.MULTILINE)) == set(SOURCES)
 
 
 def test_index_and_readme_link_the_validation_page():
