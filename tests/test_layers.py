@@ -11,7 +11,7 @@ docs/architecture.md):
     5  thermal
     6  sweep (generic engine)
     7  studies (thesis studies, verdict, the run pipeline)
-    8  report (HTML from results)
+    8  report (HTML from results), validation (published cases)
     9  cli
 
 Every ``import``/``from`` statement counts, including those inside functions (a lazy import
@@ -45,6 +45,7 @@ LAYERS = {
     "sweep": 6,
     "studies": 7,
     "report": 8,
+    "validation": 8,
     "cli": 9,
 }
 

@@ -31,6 +31,7 @@ from flexshaft.cli.optimize import optimize
 from flexshaft.cli.run import run
 from flexshaft.cli.study import study_app
 from flexshaft.cli.transient import montecarlo, runup
+from flexshaft.cli.validate import validate
 
 __all__ = ["REQUIREMENT_FAILED", "app", "main"]
 
@@ -100,6 +101,7 @@ app.command("montecarlo")(montecarlo)
 app.add_typer(study_app, name="study")
 app.command("compare")(compare)
 app.command("optimize")(optimize)
+app.command("validate")(validate)
 
 
 def main() -> None:  # pragma: no cover - console entry

@@ -1,0 +1,240 @@
+"""flexshaft validate: the published cases, the command, and docs/validation.md.
+
+The cases themselves are the verification (each compares flexshaft with a published number,
+with the tolerance its source supports; flexshaft.validation.cases). These tests check that the
+command runs them all and fails when one leaves its tolerance, that the case table is
+consistent with its design files and its closed forms, and that docs/validation.md holds the
+table the cases produce. The whole suite takes about 1 s of CPU time (a run of
+``flexshaft validate``), so no test here is marked slow.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+import flexshaft.validation as validation
+from flexshaft.cli import app
+from flexshaft.validation import CASES, SOURCES, case_design, design_names, markdown, run_validation
+from flexshaft.validation.cases import GIBERT_ROD, JEFFCOTT, VPCS_CANTILEVER
+from flexshaft.validation.quantities import QUANTITIES
+from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass, rotating_damping_onset
+from flexshaft.validation.runner import TABLE_END as END
+from flexshaft.validation.runner import TABLE_START as START
+
+ROOT = Path(__file__).resolve().parent.parent
+DOC = ROOT / "docs" / "validation.md"
+
+runner = CliRunner()
+
+
+@pytest.fixture(scope="module")
+def report():
+    return run_validation()
+
+
+# ------------------------------------------------------------------------------------------------
+# the command
+
+
+def test_validate_runs_every_case_within_its_tolerance_in_under_a_minute():
+    """The bar of issue 26: at least 12 cases from at least 6 sources, exit 0, < 60 s CPU."""
+    start = time.process_time()
+    result = runner.invoke(app, ["validate"])
+    cpu = time.process_time() - start
+    assert result.exit_code == 0, result.output
+    for case in CASES:
+        assert case.id in result.output
+    assert len(CASES) >= 12 and len({c.source for c in CASES}) >= 6
+    assert f"{len(CASES)} cases from {len({c.source for c in CASES})} sources: all within their tolerance" in (
+        result.output
+    )
+    assert cpu < 60.0, f"flexshaft validate took {cpu:.1f} s of CPU time"
+
+
+def test_json_has_every_case_with_its_source_values_and_verdict():
+    result = runner.invoke(app, ["validate", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert data["passed"] is True and data["n_failed"] == 0
+    assert data["n_cases"] == len(CASES) and data["n_sources"] == len({c.source for c in CASES})
+    for entry, case in zip(data["cases"], CASES):
+        assert entry["id"] == case.id and entry["citation"] == SOURCES[case.source].citation
+        assert entry["passed"] is True and entry["worst_relative_difference"] <= case.tolerance
+        assert len(entry["values"]) == len(case.published)
+        for value in entry["values"]:
+            published = next(v for k, v in value.items() if k.split("_")[0] == "published")
+            computed = next(v for k, v in value.items() if k.split("_")[0] == "flexshaft")
+            assert computed / published - 1.0 == pytest.approx(value["relative_difference"], abs=1e-12)
+
+
+def test_a_case_outside_its_tolerance_fails_the_command_with_exit_3(monkeypatch):
+    """A published value moved by 1 % (ten times the case's tolerance) must fail the run."""
+    case = next(c for c in CASES if c.id == "friswell-5.9.1-rest")
+    moved = dataclasses.replace(case, published=tuple(1.01 * p for p in case.published))
+    cases = tuple(moved if c is case else c for c in CASES)
+    monkeypatch.setattr(validation.cases, "CASES", cases)
+    monkeypatch.setattr(validation, "CASES", cases)
+    result = runner.invoke(app, ["validate", "--case", case.id])
+    assert result.exit_code == 3, result.output
+    assert "FAIL" in result.output and "1 outside their tolerance" in result.output
+    assert runner.invoke(app, ["validate", "--case", case.id, "--json"]).exit_code == 3
+
+
+def test_an_unknown_case_is_a_user_error_naming_the_cases():
+    result = runner.invoke(app, ["validate", "--case", "no-such-case"])
+    assert result.exit_code == 2
+    assert "no-such-case" in result.output and CASES[0].id in result.output
+
+
+def test_list_prints_the_cases_without_running_them():
+    result = runner.invoke(app, ["validate", "--list", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert [c["id"] for c in data["cases"]] == [c.id for c in CASES]
+    assert set(data["sources"]) == set(SOURCES)
+
+
+# ------------------------------------------------------------------------------------------------
+# the case table
+
+
+def test_case_table_is_consistent():
+    assert len({c.id for c in CASES}) == len(CASES)
+    for case in CASES:
+        assert case.source in SOURCES, case.id
+        assert case.quantity in QUANTITIES, case.id
+        assert len(case.labels) == len(case.published) >= 1, case.id
+        assert all(math.isfinite(p) and p != 0.0 for p in case.published), case.id
+        assert 0.0 < case.tolerance <= 0.05, case.id
+        assert case.where and case.tolerance_basis and case.reference_kind, case.id
+    used = {c.design for c in CASES if c.design}
+    assert used == set(design_names()), "every design file belongs to a case and every case's file exists"
+
+
+@pytest.mark.parametrize("name", design_names())
+def test_every_design_file_is_valid(name):
+    case = next(c for c in CASES if c.design == name)
+    design = case_design(case)
+    assert design.name
+
+
+def test_the_friswell_disks_follow_their_geometry():
+    """m = ρπ(D² − d²)w/4, I_p = m(D² + d²)/8, I_d = I_p/2 + m w²/12 (steel, w = 70 mm,
+    bore 50 mm): the inputs of Examples 5.9.1-5.9.9, typed into the design files."""
+    rho, width, bore = 7810.0, 0.07, 0.05
+    diameters = {"left": 0.28, "right": 0.35, "overhung": 0.35}
+    for case in CASES:
+        if not case.id.startswith("friswell-5"):
+            continue
+        for disk in case_design(case).disks:
+            D = diameters[disk.name]
+            mass = rho * math.pi * (D**2 - bore**2) * width / 4.0
+            polar = mass * (D**2 + bore**2) / 8.0
+            assert disk.mass == pytest.approx(mass, rel=1e-14)
+            assert disk.polar_inertia == pytest.approx(polar, rel=1e-14)
+            assert disk.diametral_inertia == pytest.approx(polar / 2.0 + mass * width**2 / 12.0, rel=1e-14)
+
+
+def test_closed_form_inputs_are_those_of_the_design_files():
+    rod = case_design(next(c for c in CASES if c.id == "gibert-spinning-rod"))
+    steel = rod.materials[rod.shaft.material]
+    assert (rod.shaft.x_end - rod.shaft.x_start, rod.shaft.outer_diameter) == (
+        GIBERT_ROD["length"],
+        GIBERT_ROD["diameter"],
+    )
+    assert (steel.E, steel.density) == (GIBERT_ROD["modulus"], GIBERT_ROD["density"])
+    assert rod.shaft.wall_thickness == pytest.approx(rod.shaft.outer_diameter / 2.0, rel=1e-5)  # solid
+    tube = case_design(next(c for c in CASES if c.id == "vpcs-sdll15-cantilever"))
+    steel = tube.materials[tube.shaft.material]
+    assert (tube.shaft.x_end, tube.shaft.outer_diameter, tube.shaft.wall_thickness) == (
+        VPCS_CANTILEVER["length"],
+        VPCS_CANTILEVER["outer_diameter"],
+        VPCS_CANTILEVER["wall_thickness"],
+    )
+    assert (steel.E, steel.density, tube.disks[0].mass) == (
+        VPCS_CANTILEVER["modulus"],
+        VPCS_CANTILEVER["density"],
+        VPCS_CANTILEVER["tip_mass"],
+    )
+    assert tube.disks[0].diametral_inertia == 0.0  # the formula's point mass
+    rotor = case_design(next(c for c in CASES if c.id == "jeffcott-rotating-damping-onset"))
+    steel = rotor.materials[rotor.shaft.material]
+    inertia = math.pi * rotor.shaft.outer_diameter**4 / 64.0  # solid (a 0.2 um bore: 1e-9 of I)
+    span = rotor.shaft.x_end - rotor.shaft.x_start
+    assert 48.0 * steel.E * inertia / span**3 == pytest.approx(JEFFCOTT["stiffness"], rel=1e-6)
+    assert (rotor.disks[0].mass, rotor.disks[0].x, steel.loss_factor) == (
+        JEFFCOTT["mass"],
+        span / 2.0,
+        JEFFCOTT["loss_factor"],
+    )
+    assert rotor.bearings[0].damping["v"] == rotor.bearings[0].damping["w"] == JEFFCOTT["external_damping"]
+
+
+def test_the_closed_forms_reduce_to_the_classical_beam():
+    """Gibert's spinning beam at rest is the simply supported Euler beam, (nπ/L)² sqrt(EI/ρA),
+    and its whirl pair keeps the product ω_b ω_f = ω_0² at any speed; the Rayleigh cantilever
+    without beam mass is sqrt(3EI/(m L³)) / 2π."""
+    L, D, E, rho = 1.3, 0.04, 2.0e11, 7800.0
+    omega0 = [(n * math.pi / L) ** 2 * math.sqrt(E * D**2 / (16.0 * rho)) for n in (1, 2)]
+    rest = gibert_spinning_beam(length=L, diameter=D, modulus=E, density=rho, speed=0.0, modes=2)
+    assert rest == pytest.approx([omega0[0], omega0[0], omega0[1], omega0[1]], rel=1e-14)
+    spun = gibert_spinning_beam(length=L, diameter=D, modulus=E, density=rho, speed=5000.0, modes=2)
+    assert spun[0] * spun[1] == pytest.approx(omega0[0] ** 2, rel=1e-14) and spun[0] < omega0[0] < spun[1]
+    # Jeffcott: at the onset a root of m s² + (c_e + c_i) s + k − i c_i Ω = 0 (complex coordinates)
+    # has a zero real part, the other a negative one; without external damping the onset is ω_n
+    k, m, c_e, c_i = 4e4, 10.0, 5.0, 3.0
+    onset = rotating_damping_onset(stiffness=k, mass=m, external_damping=c_e, internal_damping=c_i)
+    roots = np.roots([m, c_e + c_i, k - 1j * c_i * onset])
+    assert max(roots.real) == pytest.approx(0.0, abs=1e-12 * math.sqrt(k / m)) and min(roots.real) < 0.0
+    assert rotating_damping_onset(stiffness=4e4, mass=10.0, external_damping=0.0, internal_damping=3.0) == (
+        pytest.approx(math.sqrt(4e3), rel=1e-14)
+    )
+    f1 = rayleigh_cantilever_tip_mass(
+        length=L, outer_diameter=D, wall_thickness=0.002, modulus=E, density=1e-12, tip_mass=5.0
+    )
+    inertia = math.pi * (D**4 - (D - 0.004) ** 4) / 64.0
+    assert f1 == pytest.approx(math.sqrt(3.0 * E * inertia / (5.0 * L**3)) / (2.0 * math.pi), rel=1e-12)
+
+
+def test_export_script_writes_the_packaged_designs(tmp_path):
+    script = ROOT / "validation" / "export_designs.py"
+    done = subprocess.run([sys.executable, str(script), str(tmp_path)], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == list(design_names())
+    for name in design_names():
+        assert (tmp_path / name).read_text(encoding="utf-8") == validation.design_text(name)
+
+
+# ------------------------------------------------------------------------------------------------
+# docs/validation.md
+
+
+def test_the_documented_table_is_the_one_the_cases_produce(report):
+    """docs/validation.md holds markdown(run_validation()) between its markers: flexshaft's
+    values to five significant figures and differences to 0.001 %, so that machine round-off
+    does not change the page. Regenerate with ``python -m flexshaft.validation docs/validation.md``."""
+    text = DOC.read_text(encoding="utf-8")
+    assert START in text and END in text
+    documented = text.split(START, 1)[1].split(END, 1)[0].strip()
+    assert documented == markdown(report).strip(), "docs/validation.md is stale: regenerate its table"
+
+
+def test_the_page_lists_every_source():
+    sources = DOC.read_text(encoding="utf-8").split("## Sources", 1)[1].split("\n## ", 1)[0]
+    assert set(re.findall(r"^\| `([a-z0-9]+)` \|", sources, flags=re.MULTILINE)) == set(SOURCES)
+
+
+def test_index_and_readme_link_the_validation_page():
+    assert "(validation.md)" in (ROOT / "docs" / "index.md").read_text(encoding="utf-8")
+    assert "(docs/validation.md)" in (ROOT / "README.md").read_text(encoding="utf-8")
