@@ -14,6 +14,7 @@ from pydantic import Field, model_validator
 
 from flexshaft.design.fields import FrozenModel, LossFactor, Problems, format_number, format_value
 from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction, quantity
+from flexshaft.design.temperature_table import TemperatureTable
 from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
 __all__ = [
@@ -139,6 +140,11 @@ class Lamina(FrozenModel):
       ply's shear strength taken as its shear yield stress, assumed: an upper bound of γ_y,
       hence of the kink-band strength).
 
+    Temperature dependence: ``temperature_table`` (:class:`TemperatureTable`) lists the storage
+    moduli and loss factors over temperature; the lamina's own keys are its properties at
+    ``[thermal] matrix_reference_temperature_c``. Omitted: the assumed exponential law of the
+    ``[thermal]`` table (:mod:`flexshaft.thermal.matrix`).
+
     Attributes
     ----------
     kind : {"lamina"}
@@ -187,6 +193,9 @@ class Lamina(FrozenModel):
         Initial fibre misalignment φ of the kink-band compressive strength [deg].
     shear_yield_strain : float or None
         Shear yield strain γ_y of the ply in longitudinal shear [-]; omitted: S / G_LT.
+    temperature_table : table or None
+        Storage moduli and loss factors over temperature (``[materials.<name>.temperature_table]``);
+        omitted: the ``[thermal]`` matrix law.
     """
 
     kind: Literal["lamina"]
@@ -212,6 +221,7 @@ class Lamina(FrozenModel):
     stress_free_temperature_c: Celsius = DEFAULT_STRESS_FREE_TEMPERATURE_C
     fibre_misalignment_deg: FibreMisalignment = DEFAULT_FIBRE_MISALIGNMENT_DEG
     shear_yield_strain: ShearYieldStrain | None = None
+    temperature_table: TemperatureTable | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Lamina:

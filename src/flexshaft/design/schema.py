@@ -15,6 +15,7 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.segments`: :class:`ShaftSegment`, :class:`Coupling` (segmented shafts);
 * :mod:`flexshaft.design.loads`: :class:`Operating`, :class:`Loads` and its point and line loads;
 * :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
+* :mod:`flexshaft.design.temperature_table`: :class:`TemperatureTable` of a lamina;
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
 
 Constraints that involve several fields are checked in ``model_validator(mode="after")``
@@ -61,6 +62,7 @@ from flexshaft.design.materials import Isotropic, Lamina, Material
 from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
 from flexshaft.design.segments import MAX_COUPLINGS, Coupling, ShaftSegment, Tube
+from flexshaft.design.temperature_table import TemperatureTable, check_table_range
 from flexshaft.design.thermal_schema import Thermal
 
 __all__ = [
@@ -90,6 +92,7 @@ __all__ = [
     "Shaft",
     "ShaftSegment",
     "Tailboom",
+    "TemperatureTable",
     "Tube",
     "PROBLEMS_ERROR_TYPE",
     "LAYUP_ERROR_TYPE",
@@ -197,6 +200,7 @@ class Design(FrozenModel):
         self._check_bearings(problems)
         self._check_disks(problems)
         self._check_loads(problems)
+        self._check_temperature_tables(problems)
         problems.raise_if_any()
         return self
 
@@ -256,6 +260,18 @@ class Design(FrozenModel):
                     ("shaft", "segments", index, "layup"),
                     f"must be omitted for the isotropic material {format_value(self.shaft.material)} "
                     f"(got {format_value(segment.layup)})",
+                )
+
+    def _check_temperature_tables(self, problems: Problems) -> None:
+        """Each lamina's table spans the reference temperature and reaches the allowable."""
+        for name, material in self.materials.items():
+            if isinstance(material, Lamina) and material.temperature_table is not None:
+                check_table_range(
+                    problems,
+                    ("materials", name, "temperature_table"),
+                    material.temperature_table,
+                    self.thermal.matrix_reference_temperature_c,
+                    self.thermal.allowable_temperature_c,
                 )
 
     def _check_couplings(self, problems: Problems) -> None:
