@@ -41,6 +41,11 @@ def design():
             r"temperature_c: must span the reference temperature \[thermal\] matrix_reference_temperature_c = 20 °C",
         ),
         ({"thermal.allowable_temperature_c": 150.0}, r"temperature_c: must reach the allowable temperature"),
+        (
+            {"envelope.points[0].ambient_temperature_c": -70.0},
+            r"envelope\.points\[0\]\.ambient_temperature_c: puts the shaft at -70 °C, outside the temperature_table "
+            r'of lamina "t700_adiprene" \[-60, 120\] °C',
+        ),
     ],
 )
 def test_bad_tables_are_refused_naming_the_field(design, override, message):

@@ -15,6 +15,7 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.segments`: :class:`ShaftSegment`, :class:`Coupling` (segmented shafts);
 * :mod:`flexshaft.design.loads`: :class:`Operating`, :class:`Loads` and its point and line loads;
 * :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
+* :mod:`flexshaft.design.envelope`: :class:`Envelope`, the operating points of the verdict;
 * :mod:`flexshaft.design.temperature_table`: :class:`TemperatureTable` of a lamina;
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
 
@@ -41,6 +42,7 @@ from flexshaft.design.components import (
     Shaft,
     Tailboom,
 )
+from flexshaft.design.envelope import Envelope, EnvelopePoint, check_envelope_temperatures
 from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
     PROBLEMS_ERROR_TYPE,
@@ -78,6 +80,8 @@ __all__ = [
     "Design",
     "Disk",
     "DofName",
+    "Envelope",
+    "EnvelopePoint",
     "EndMass",
     "ImbalancePlacement",
     "Isotropic",
@@ -175,6 +179,8 @@ class Design(FrozenModel):
         Thermal environment and matrix temperature law (``[thermal]``).
     requirements : table
         Limits of the requirements verdict (``[requirements]``).
+    envelope : table
+        Operating points every check is evaluated at (``[envelope]``).
     """
 
     name: DesignName
@@ -190,6 +196,7 @@ class Design(FrozenModel):
     analysis: Analysis = Analysis()
     thermal: Thermal = Thermal()
     requirements: Requirements = Requirements()
+    envelope: Envelope = Envelope()
 
     @model_validator(mode="after")
     def _check(self) -> Design:
@@ -263,9 +270,12 @@ class Design(FrozenModel):
                 )
 
     def _check_temperature_tables(self, problems: Problems) -> None:
-        """Each lamina's table spans the reference temperature and reaches the allowable."""
+        """Each lamina's table spans the reference temperature and reaches the allowable; the
+        envelope's known material temperatures lie inside the tables."""
+        tables = {}
         for name, material in self.materials.items():
             if isinstance(material, Lamina) and material.temperature_table is not None:
+                tables[name] = material.temperature_table
                 check_table_range(
                     problems,
                     ("materials", name, "temperature_table"),
@@ -273,6 +283,7 @@ class Design(FrozenModel):
                     self.thermal.matrix_reference_temperature_c,
                     self.thermal.allowable_temperature_c,
                 )
+        check_envelope_temperatures(problems, self.envelope, self.thermal.ambient_temperature_c, tables)
 
     def _check_couplings(self, problems: Problems) -> None:
         """Couplings strictly inside the shaft, at distinct stations."""

@@ -10,6 +10,8 @@
 * :mod:`~flexshaft.thermal.matrix`, :mod:`~flexshaft.thermal.selfheating` — temperature-dependent
   lamina properties (a table over temperature or the assumed law) and the self-heating fixed
   point / thermal runaway;
+* :mod:`~flexshaft.thermal.envelope` — the temperatures and laminae at an operating point of a
+  design's ``[envelope]`` (:func:`flexshaft.design.points.design_at_point` applies them);
 * :mod:`~flexshaft.thermal.correlations`, :mod:`~flexshaft.thermal.air` — named Nusselt
   correlations with validity ranges, and air properties.
 
@@ -20,6 +22,7 @@ studies of a design (sweeps over wall thickness and convection, the report numbe
 """
 
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
+from flexshaft.thermal.envelope import PointConditions, envelope_conditions, point_conditions
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.heat import HeatSources, heat_sources
 from flexshaft.thermal.matrix import LaminaTable, MatrixTemperatureLaw
@@ -37,6 +40,9 @@ __all__ = [
     "ThermalOptions",
     "MatrixTemperatureLaw",
     "LaminaTable",
+    "PointConditions",
+    "point_conditions",
+    "envelope_conditions",
     "environment_from",
     "matrix_law_from",
     "thermal_options",
