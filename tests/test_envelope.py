@@ -176,6 +176,16 @@ def test_speed_power_and_loads_of_a_point(design):
     assert fast.materials == design.materials
 
 
+def test_a_point_at_rest(design):
+    """speed_rpm = 0 (ground, rotor stopped; power 0: no torque): the geared main rotor stops
+    too, so its excitation speed is dropped rather than scaled to an invalid 0 rev/min."""
+    point = EnvelopePoint(
+        name="rest", material_temperature="given", material_temperature_c=20.0, speed_rpm=0.0, power=0.0
+    )
+    _, rest = at(design, point)
+    assert (rest.operating.speed_rpm, rest.operating.power, rest.operating.main_rotor_speed_rpm) == (0.0, 0.0, None)
+
+
 def test_kink_band_strength_follows_the_hot_lamina(design):
     """At the hot-soak point G_LT has fallen to ~18 MPa and the kink-band X_c with it:
     G/(1 + phi G/S) with S = 20 MPa (closed form, rel 1e-14)."""

@@ -9,7 +9,7 @@ at the point. What it changes:
   matrix reference temperature, which moves to the material temperature with the laminae);
 * ``[materials]``: the laminae of ``conditions.materials``;
 * ``[operating]``: the point's ``speed_rpm`` (the main-rotor speed scales with it: the two are
-  geared) and ``power`` when given;
+  geared; at rest it is dropped) and ``power`` when given;
 * ``[loads]``: ``load_scale`` multiplies the manoeuvre load factor and every point load (force
   and moment) and line load; the imbalance is not scaled.
 
@@ -61,7 +61,10 @@ def design_at_point(design: Design, point: EnvelopePoint | str, conditions: Any)
         if base_rpm is None:
             base_rpm = rad_s_to_rpm(operating["speed"])
         if operating["main_rotor_speed_rpm"] is not None and base_rpm > 0.0:
-            operating["main_rotor_speed_rpm"] *= point.speed_rpm / base_rpm
+            if point.speed_rpm > 0.0:
+                operating["main_rotor_speed_rpm"] *= point.speed_rpm / base_rpm
+            else:  # at rest: no main-rotor excitation lines
+                operating["main_rotor_speed_rpm"] = None
         operating["speed_rpm"], operating["speed"] = point.speed_rpm, None
     if point.power is not None:
         operating["power"] = point.power
