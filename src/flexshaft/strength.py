@@ -36,7 +36,7 @@ with Argon's (1972) rigid-perfectly plastic limit sigma_c = tau_y / phi (G_LT ->
 tau_y) and Rosen's bound sigma_c = G_LT as phi -> 0 or gamma_y -> inf. With G_LT ~ 0.1 GPa
 (an elastomer matrix) the kink-band strength is ~0.1 GPa, far below a datasheet's 2 GPa;
 :func:`compressive_strength` takes the smaller of the two and says which governs, and
-:func:`effective_strengths` gives the :class:`Strengths` the ply check uses.
+:func:`effective_strengths` gives the :class:`Strengths` the ply check uses with ``kinking=True``.
 
 References
 ----------
