@@ -19,6 +19,25 @@ Aumann-Shapley (integrated-gradient) attribution along the straight path from ze
 the only additive split of a quadratic that is linear in each part and symmetric among parts
 that enter the same way. See :func:`tsai_wu_shares`.
 
+Compressive strength of soft-matrix plies (fibre microbuckling and kinking)
+--------------------------------------------------------------------------
+A datasheet X_c is a fibre property only while the matrix holds the fibres straight. The
+fibres buckle in phase, shearing the matrix, at Rosen's (1965) shear-mode stress
+
+    sigma_c = G_LT                    (ply form; Rosen's own form G_m / (1 - V_f), see below),
+
+and an initial fibre misalignment phi lowers it. Budiansky & Fleck (1993) give for a composite
+that is elastic-perfectly plastic in longitudinal shear (shear modulus G_LT, shear yield strain
+gamma_y = tau_y / G_LT), to first order in the small angles,
+
+    sigma_c = G_LT / (1 + phi / gamma_y),
+
+with Argon's (1972) rigid-perfectly plastic limit sigma_c = tau_y / phi (G_LT -> inf at fixed
+tau_y) and Rosen's bound sigma_c = G_LT as phi -> 0 or gamma_y -> inf. With G_LT ~ 0.1 GPa
+(an elastomer matrix) the kink-band strength is ~0.1 GPa, far below a datasheet's 2 GPa;
+:func:`compressive_strength` takes the smaller of the two and says which governs, and
+:func:`effective_strengths` gives the :class:`Strengths` the ply check uses with ``kinking=True``.
+
 References
 ----------
 Ocalan, M. (2002). MS thesis, Penn State, eq. 2.48-2.53.
@@ -27,12 +46,23 @@ Tsai, S. W. and Hahn, H. T. (1980). *Introduction to Composite Materials*, Techn
 Tsai, S. W. (1992). *Theory of Composites Design*, Think Composites, ch. 9 (strength ratio with
 residual stresses).
 Aumann, R. J. and Shapley, L. S. (1974). *Values of Non-Atomic Games*, Princeton.
+Budiansky, B. and Fleck, N. A. (1993). Compressive failure of fibre composites. *J. Mech. Phys.
+Solids* 41(1), 183-211: plastic kinking from an initial misalignment is the dominant mode of
+polymer-matrix composites (abstract read; the elastic-perfectly plastic formula is taken as
+stated in docs/model.md and checked against an independent calculator, tests/test_kinking.py).
+Rosen, B. W. (1965). Mechanics of composite strengthening, in *Fiber Composite Materials*, ASM:
+shear-mode microbuckling, sigma_c = G_m / (1 - V_f) (read in secondary sources only: its
+derivation as reproduced in a thesis chapter on fibre microbuckling, and Hull 1992 as quoted
+in Princeton MAE 324 notes: the formula overestimates measured strengths about twofold).
+Argon, A. S. (1972). Fracture of composites, *Treatise on Materials Science and Technology* 1:
+sigma_c = tau_y / phi (not read; here it is the rigid-plastic limit of the formula above).
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -48,6 +78,16 @@ __all__ = [
     "tsai_wu_index",
     "tsai_wu_shares",
     "dominant_stress",
+    "DEFAULT_FIBRE_MISALIGNMENT_DEG",
+    "CompressiveStrength",
+    "argon_strength",
+    "budiansky_fleck_strength",
+    "compressive_strength",
+    "compressive_strength_note",
+    "datasheet_strengths",
+    "effective_strengths",
+    "rosen_matrix_strength",
+    "rosen_strength",
 ]
 
 StressLabel = Literal["sigma1", "sigma2", "tau12"]
@@ -260,3 +300,179 @@ def dominant_stress(sigma1: ArrayLike, sigma2: ArrayLike, tau12: ArrayLike, stre
     """
     shares = tsai_wu_contributions(sigma1, sigma2, tau12, strengths)
     return _LABELS[np.argmax(shares, axis=-1)]
+
+
+# ------------------------------------------------------------------------------------------------
+# Compressive strength of soft-matrix plies: microbuckling and kink bands
+
+#: Default initial fibre misalignment [deg] (assumed): the middle of the 1-3 deg usually quoted for
+#: aligned polymer-matrix composites after Budiansky & Fleck (1993) (docs/model.md).
+DEFAULT_FIBRE_MISALIGNMENT_DEG = 2.0
+
+
+def _positive(name: str, value: float, unit: str) -> float:
+    value = float(value)
+    if not math.isfinite(value) or value <= 0.0:
+        raise ValueError(f"{name} must be finite and > 0 [{unit}], got {value!r}")
+    return value
+
+
+def rosen_strength(shear_modulus: float) -> float:
+    """Rosen's (1965) shear-mode microbuckling stress of a ply, sigma_c = G_LT [Pa].
+
+    The in-phase (shear-mode) buckling of perfectly straight fibres on the matrix; in the ply
+    form the composite's longitudinal shear modulus ``shear_modulus`` = G_LT [Pa] stands for
+    Rosen's G_m / (1 - V_f) (:func:`rosen_matrix_strength`). An upper bound: any misalignment
+    lowers it (:func:`budiansky_fleck_strength`).
+    """
+    return _positive("shear_modulus", shear_modulus, "Pa")
+
+
+def rosen_matrix_strength(matrix_shear_modulus: float, fibre_volume_fraction: float) -> float:
+    """Rosen's (1965) shear-mode stress from the constituents, sigma_c = G_m / (1 - V_f) [Pa].
+
+    Parameters
+    ----------
+    matrix_shear_modulus : float
+        G_m [Pa].
+    fibre_volume_fraction : float
+        V_f in [0, 1) [-].
+    """
+    G_m = _positive("matrix_shear_modulus", matrix_shear_modulus, "Pa")
+    V_f = float(fibre_volume_fraction)
+    if not 0.0 <= V_f < 1.0:
+        raise ValueError(f"fibre_volume_fraction must lie in [0, 1), got {fibre_volume_fraction!r}")
+    return G_m / (1.0 - V_f)
+
+
+def budiansky_fleck_strength(shear_modulus: float, misalignment: float, shear_yield_strain: float) -> float:
+    """Kink-band strength of an elastic-perfectly plastic ply, sigma_c = G / (1 + phi/gamma_y) [Pa].
+
+    Budiansky & Fleck (1993), small-angle form: a band of fibres with initial misalignment phi
+    rotates under the compressive stress until the longitudinal shear stress reaches the yield
+    stress tau_y = G gamma_y. ``misalignment`` = 0 gives Rosen's G (:func:`rosen_strength`);
+    G -> inf at fixed tau_y gives Argon's tau_y / phi (:func:`argon_strength`).
+
+    Parameters
+    ----------
+    shear_modulus : float
+        Longitudinal (in-plane) shear modulus G_LT of the ply [Pa].
+    misalignment : float
+        Initial fibre misalignment phi [rad], >= 0.
+    shear_yield_strain : float
+        gamma_y = tau_y / G_LT [-], > 0.
+    """
+    G = _positive("shear_modulus", shear_modulus, "Pa")
+    gamma_y = _positive("shear_yield_strain", shear_yield_strain, "-")
+    phi = float(misalignment)
+    if not math.isfinite(phi) or phi < 0.0:
+        raise ValueError(f"misalignment must be finite and >= 0 [rad], got {misalignment!r}")
+    return G / (1.0 + phi / gamma_y)
+
+
+def argon_strength(shear_yield_stress: float, misalignment: float) -> float:
+    """Argon's (1972) rigid-perfectly plastic kinking stress, sigma_c = tau_y / phi [Pa].
+
+    ``shear_yield_stress`` tau_y [Pa]; ``misalignment`` phi [rad], > 0 (phi -> 0 has no finite
+    rigid-plastic kinking stress: the elastic composite buckles at G first).
+    """
+    return _positive("shear_yield_stress", shear_yield_stress, "Pa") / _positive("misalignment", misalignment, "rad")
+
+
+@dataclass(frozen=True)
+class CompressiveStrength:
+    """Fibre-direction compressive strength of a ply: the datasheet value against kinking.
+
+    Attributes
+    ----------
+    datasheet : float
+        X_c of the material file [Pa].
+    kink_band : float
+        Budiansky-Fleck kink-band strength G_LT / (1 + phi/gamma_y) [Pa].
+    rosen : float
+        Rosen's shear-mode bound G_LT [Pa] (phi = 0).
+    shear_modulus : float
+        G_LT [Pa] (storage value).
+    misalignment : float
+        Initial fibre misalignment phi [rad].
+    shear_yield_strain : float
+        gamma_y [-].
+    shear_yield_strain_source : str
+        ``"file"`` (the lamina's ``shear_yield_strain``) or ``"S/G_LT"`` (derived default).
+    """
+
+    datasheet: float
+    kink_band: float
+    rosen: float
+    shear_modulus: float
+    misalignment: float
+    shear_yield_strain: float
+    shear_yield_strain_source: str
+
+    @property
+    def effective(self) -> float:
+        """min(X_c, kink-band strength) [Pa]: the X_c the ply strength check uses."""
+        return min(self.datasheet, self.kink_band)
+
+    @property
+    def governs(self) -> Literal["kink_band", "datasheet"]:
+        """Which bound sets :attr:`effective`: ``"kink_band"`` or ``"datasheet"`` (a tie is the datasheet)."""
+        return "kink_band" if self.kink_band < self.datasheet else "datasheet"
+
+
+def compressive_strength(material: Any) -> CompressiveStrength:
+    """The fibre-direction compressive strength of a lamina, datasheet X_c against kinking.
+
+    ``material`` is a design-file lamina (:class:`flexshaft.design.materials.Lamina`) or any
+    object with ``X_c``, ``G_LT``, ``S`` [Pa], ``fibre_misalignment_deg`` [deg] and
+    ``shear_yield_strain`` [-] (None: gamma_y = S / G_LT, the ply's shear strength taken as
+    its shear yield stress; assumed, see docs/model.md).
+    """
+    G = float(material.G_LT)
+    phi = math.radians(float(material.fibre_misalignment_deg))
+    given = material.shear_yield_strain
+    gamma_y = float(material.S) / G if given is None else float(given)
+    return CompressiveStrength(
+        datasheet=float(material.X_c),
+        kink_band=budiansky_fleck_strength(G, phi, gamma_y),
+        rosen=rosen_strength(G),
+        shear_modulus=G,
+        misalignment=phi,
+        shear_yield_strain=gamma_y,
+        shear_yield_strain_source="S/G_LT" if given is None else "file",
+    )
+
+
+def datasheet_strengths(material: Any) -> Strengths:
+    """The :class:`Strengths` of a lamina as the file gives them (X_c unchanged)."""
+    return Strengths(material.X_t, material.X_c, material.Y_t, material.Y_c, material.S, material.F12)
+
+
+def effective_strengths(material: Any) -> Strengths:
+    """The :class:`Strengths` of a lamina with X_c = min(X_c, kink-band strength).
+
+    What the ply strength check uses (:func:`flexshaft.analyses.shaft_strength.shaft_strengths`);
+    :func:`compressive_strength` says which bound governs.
+    """
+    return Strengths(
+        material.X_t, compressive_strength(material).effective, material.Y_t, material.Y_c, material.S, material.F12
+    )
+
+
+def compressive_strength_note(strength: CompressiveStrength, name: str = "the lamina") -> str | None:
+    """A verdict note when the file's X_c exceeds its own kink-band bound, else None.
+
+    E.g. "X_c = 2000 MPa of t700_adiprene exceeds its kink-band strength 85.1 MPa
+    (Budiansky-Fleck: G_LT 100 MPa, misalignment 2 deg, gamma_y 0.2 = S/G_LT); the ply strength
+    check uses 85.1 MPa".
+    """
+    if strength.governs != "kink_band":
+        return None
+    mpa = 1e-6
+    return (
+        f"X_c = {strength.datasheet * mpa:.4g} MPa of {name} exceeds its kink-band strength "
+        f"{strength.kink_band * mpa:.3g} MPa (Budiansky-Fleck: G_LT {strength.shear_modulus * mpa:.4g} MPa, "
+        f"misalignment {math.degrees(strength.misalignment):.3g} deg, gamma_y {strength.shear_yield_strain:.3g}"
+        f"{' = S/G_LT' if strength.shear_yield_strain_source == 'S/G_LT' else ''}); "
+        f"the ply strength check uses {strength.effective * mpa:.3g} MPa"
+    )

@@ -20,7 +20,11 @@ inside a cubic element, so its extremes are at the ends)::
     γ_xy = (D_o/2) θ'                          every fibre passes the extreme once per turn)
     ε_y  from N_y = 0 (eq. 2.46); the spin's own hoop resultant is added as above.
 
-Ply stresses from the storage moduli; Tsai-Wu (eq. 2.48-2.53) solved for R per ply. R multiplies
+Ply stresses from the storage moduli; Tsai-Wu (eq. 2.48-2.53) solved for R per ply, with the
+file's strengths (the thesis's check) or, with ``kinking=True``, with the fibre-direction
+compressive strength X_c = min(X_c of the file, kink-band strength)
+(:func:`flexshaft.strength.effective_strengths`, docs/model.md: a soft matrix lets the fibres
+kink far below a datasheet X_c). R multiplies
 the mechanical loads (static, imbalance, centrifugal) together, as in the thesis; the thermal
 residual stress is a fixed initial state that R does not scale (Tsai 1992), F(σ_T + R σ) = 1.
 The design value is the minimum; where it occurs (element end, ply, φ, sign) and the dominant
@@ -57,7 +61,14 @@ from flexshaft.laminate import (
     spin_hoop_resultant,
     thermal_ply_stresses,
 )
-from flexshaft.strength import Strengths, dominant_stress, tsai_wu_safety_factor, tsai_wu_shares
+from flexshaft.strength import (
+    Strengths,
+    datasheet_strengths,
+    dominant_stress,
+    effective_strengths,
+    tsai_wu_safety_factor,
+    tsai_wu_shares,
+)
 
 __all__ = [
     "ShaftStrains",
@@ -104,12 +115,16 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
     )
 
 
-def shaft_strengths(model: Model) -> tuple[Laminate, Strengths]:
-    """The shaft laminate and ply strengths from the design (lamina materials only)."""
+def shaft_strengths(model: Model, kinking: bool = False) -> tuple[Laminate, Strengths]:
+    """The shaft laminate and ply strengths from the design (lamina materials only).
+
+    ``kinking``: X_c = min(X_c, kink-band strength) (:func:`flexshaft.strength.effective_strengths`);
+    False (default): the file's X_c (:func:`flexshaft.strength.datasheet_strengths`).
+    """
     mat = model.design.materials[model.design.shaft.material]
     if model.shaft.laminate is None or mat.kind != "lamina":
         raise ValueError("ply strength needs a laminated (lamina) shaft material")
-    return model.shaft.laminate, Strengths(mat.X_t, mat.X_c, mat.Y_t, mat.Y_c, mat.S, getattr(mat, "F12", None))
+    return model.shaft.laminate, (effective_strengths(mat) if kinking else datasheet_strengths(mat))
 
 
 def static_load_parts(model: Model) -> dict[str, np.ndarray]:
@@ -164,7 +179,10 @@ class StrengthResult(ResultMixin):
     @property
     def critical_description(self) -> str:
         """E.g. "ply 3 (+55°), φ = 120°, sigma2 dominates"."""
-        return f"ply {self.ply + 1} ({self.ply_angle_deg:+.0f}°), φ = {self.phase_deg:.0f}°, {self.dominant_stress} dominates"
+        return (
+            f"ply {self.ply + 1} ({self.ply_angle_deg:+.0f}°), φ = {self.phase_deg:.0f}°, "
+            f"{self.dominant_stress} dominates"
+        )
 
     def plot_along_shaft(self, ax=None, **kwargs):
         """Smallest safety factor along the shaft [m], the critical point annotated (keywords to
@@ -208,8 +226,9 @@ def _wall_strains(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Outer-wall (eps_x, gamma_xy) of the sum of the beam loads, grid ``shape`` + (2 signs,).
 
-    ``shape`` is (nel, 2, n_phase). Also returns the unit vector (e_v, e_w) (nel, 2, n_phase) of the total curvature: the
-    extreme fibres lie along it, and each load's bending strain there is r (kappa . e).
+    ``shape`` is (nel, 2, n_phase). Also returns the unit vector (e_v, e_w) (nel, 2, n_phase) of the
+    total curvature: the extreme fibres lie along it, and each load's bending strain there is
+    r (kappa . e).
     """
     zero = np.zeros(shape)
     axial = sum((s.axial for s in strains.values()), zero)
@@ -237,6 +256,7 @@ def shaft_safety_factor(
     temperature: float | None = None,
     thermal_residual: bool = True,
     leave_one_out: bool = False,
+    kinking: bool = False,
 ) -> StrengthResult:
     """Tsai-Wu safety factor of the superposed response.
 
@@ -261,6 +281,9 @@ def shaft_safety_factor(
     leave_one_out : bool
         Also compute ``safety_factor_without`` (one more evaluation of the whole shaft per load;
         off by default for sweeps).
+    kinking : bool
+        Use X_c = min(X_c, kink-band strength) (:func:`flexshaft.strength.effective_strengths`);
+        False (default) keeps the file's X_c, the thesis's check.
     """
     check_model(model)
     n_phases = check_count(n_phases, "n_phases")
@@ -268,7 +291,7 @@ def shaft_safety_factor(
         check_finite_array(name, value, "m, rad")
     if q_dynamic is not None:
         check_finite_array("q_dynamic", q_dynamic, "m, rad")
-    laminate, strengths = shaft_strengths(model)
+    laminate, strengths = shaft_strengths(model, kinking)
     laminate = laminate.storage
     design = model.design
     material = design.materials[design.shaft.material]

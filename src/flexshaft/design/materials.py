@@ -13,12 +13,14 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from flexshaft.design.fields import FrozenModel, LossFactor, Problems, format_number, format_value
-from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction
+from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction, quantity
+from flexshaft.design.temperature_table import TemperatureTable
 from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
 __all__ = [
     "DEFAULT_ALPHA_L",
     "DEFAULT_ALPHA_T",
+    "DEFAULT_FIBRE_MISALIGNMENT_DEG",
     "DEFAULT_NU_23",
     "DEFAULT_SHEAR_CORRECTION",
     "DEFAULT_STRESS_FREE_TEMPERATURE_C",
@@ -45,6 +47,10 @@ DEFAULT_ALPHA_T = 110e-6
 #: polyurethane cured with an aromatic diamine, about 100 °C; residual ply stresses grow as the
 #: shaft cools below it.
 DEFAULT_STRESS_FREE_TEMPERATURE_C = 100.0
+#: Initial fibre misalignment of the kink-band strength [deg] (assumed): the middle of the 1-3 deg
+#: usually quoted for aligned polymer-matrix composites after Budiansky & Fleck (1993) (docs/model.md).
+#: Equal to :data:`flexshaft.strength.DEFAULT_FIBRE_MISALIGNMENT_DEG` (tests/test_kinking.py).
+DEFAULT_FIBRE_MISALIGNMENT_DEG = 2.0
 #: Plausible bounds of a thermal expansion coefficient [1/K]: catches values given in ppm/K.
 _ALPHA_LIMIT = 1e-3
 
@@ -70,6 +76,19 @@ Celsius = Annotated[
         json_schema_extra={"unit": "degC"},
     ),
 ]
+FibreMisalignment = quantity(
+    "deg",
+    "initial fibre misalignment from 0 to 10 deg (1-3 deg in aligned composites; the kink-band "
+    "formula is a small-angle one)",
+    ge=0.0,
+    le=10.0,
+)
+ShearYieldStrain = quantity(
+    "-",
+    "shear yield strain gamma_y above 0 and at most 10 (elastomer matrices yield at far larger strains than epoxies)",
+    gt=0.0,
+    le=10.0,
+)
 #: Thermal expansion [1/K]: finite here; the range (±1e-3 1/K, with a hint for values in ppm/K)
 #: is checked by :meth:`Lamina._check`. The JSON schema shows the range of
 #: :data:`~flexshaft.design.quantities.ExpansionCoefficient`.
@@ -78,7 +97,9 @@ _Expansion = Annotated[
     Field(
         strict=True,
         allow_inf_nan=False,
-        description="thermal expansion coefficient within ±1e-3 1/K (polymers 2e-4; a value in ppm/K needs the factor 1e-6)",
+        description=(
+            "thermal expansion coefficient within ±1e-3 1/K (polymers 2e-4; a value in ppm/K needs the factor 1e-6)"
+        ),
         json_schema_extra={"unit": "1/K", "minimum": -_ALPHA_LIMIT, "maximum": _ALPHA_LIMIT},
     ),
 ]
@@ -107,6 +128,22 @@ class Lamina(FrozenModel):
       assumed, Schapery estimate); within ±1e-3 1/K.
     * ``stress_free_temperature_c`` [°C], where the cured laminate carries no residual stress;
       default 100 °C (cure temperature, assumed).
+
+    Compressive strength (fibre kinking; docs/model.md, forced response and strength): the ply
+    check with kinking (``shaft_safety_factor(..., kinking=True)``) uses
+    min(``X_c``, G_LT / (1 + φ/γ_y)) (Budiansky & Fleck 1993), with
+
+    * ``fibre_misalignment_deg`` [deg], the initial fibre misalignment φ; default 2°
+      (:data:`DEFAULT_FIBRE_MISALIGNMENT_DEG`, assumed: the middle of the 1-3° usually quoted for
+      aligned polymer-matrix composites);
+    * ``shear_yield_strain`` [-], γ_y of the ply in longitudinal shear; omitted: S / G_LT (the
+      ply's shear strength taken as its shear yield stress, assumed: an upper bound of γ_y,
+      hence of the kink-band strength).
+
+    Temperature dependence: ``temperature_table`` (:class:`TemperatureTable`) lists the storage
+    moduli and loss factors over temperature; the lamina's own keys are its properties at
+    ``[thermal] matrix_reference_temperature_c``. Omitted: the assumed exponential law of the
+    ``[thermal]`` table (:mod:`flexshaft.thermal.matrix`).
 
     Attributes
     ----------
@@ -152,6 +189,13 @@ class Lamina(FrozenModel):
         Thermal expansion coefficient across the fibres [1/K].
     stress_free_temperature_c : float
         Temperature at which the cured laminate carries no residual stress [°C].
+    fibre_misalignment_deg : float
+        Initial fibre misalignment φ of the kink-band compressive strength [deg].
+    shear_yield_strain : float or None
+        Shear yield strain γ_y of the ply in longitudinal shear [-]; omitted: S / G_LT.
+    temperature_table : table or None
+        Storage moduli and loss factors over temperature (``[materials.<name>.temperature_table]``);
+        omitted: the ``[thermal]`` matrix law.
     """
 
     kind: Literal["lamina"]
@@ -175,6 +219,9 @@ class Lamina(FrozenModel):
     alpha_L: _Expansion = DEFAULT_ALPHA_L
     alpha_T: _Expansion = DEFAULT_ALPHA_T
     stress_free_temperature_c: Celsius = DEFAULT_STRESS_FREE_TEMPERATURE_C
+    fibre_misalignment_deg: FibreMisalignment = DEFAULT_FIBRE_MISALIGNMENT_DEG
+    shear_yield_strain: ShearYieldStrain | None = None
+    temperature_table: TemperatureTable | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Lamina:
@@ -229,6 +276,11 @@ class Lamina(FrozenModel):
     def stress_free_temperature(self) -> float:
         """Stress-free temperature [K]."""
         return celsius_to_kelvin(self.stress_free_temperature_c)
+
+    @property
+    def fibre_misalignment(self) -> float:
+        """Initial fibre misalignment φ [rad]."""
+        return math.radians(self.fibre_misalignment_deg)
 
 
 class Isotropic(FrozenModel):

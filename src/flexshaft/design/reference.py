@@ -21,7 +21,7 @@ the design layer (a data leaf).
 
 >>> from flexshaft.design.reference import design_tables
 >>> [table.header for table in design_tables()][:4]
-['(top level)', '[materials.<name>]', '[materials.<name>]', '[shaft]']
+['(top level)', '[materials.<name>]', '[materials.<name>.temperature_table]', '[materials.<name>]']
 """
 
 from __future__ import annotations

@@ -15,6 +15,8 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.segments`: :class:`ShaftSegment`, :class:`Coupling` (segmented shafts);
 * :mod:`flexshaft.design.loads`: :class:`Operating`, :class:`Loads` and its point and line loads;
 * :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
+* :mod:`flexshaft.design.envelope`: :class:`Envelope`, the operating points of the verdict;
+* :mod:`flexshaft.design.temperature_table`: :class:`TemperatureTable` of a lamina;
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
 
 Constraints that involve several fields are checked in ``model_validator(mode="after")``
@@ -40,6 +42,7 @@ from flexshaft.design.components import (
     Shaft,
     Tailboom,
 )
+from flexshaft.design.envelope import Envelope, EnvelopePoint, check_envelope_temperatures
 from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
     PROBLEMS_ERROR_TYPE,
@@ -61,6 +64,7 @@ from flexshaft.design.materials import Isotropic, Lamina, Material
 from flexshaft.design.quantities import MAX_BEARINGS, MAX_DISKS, MAX_MATERIALS
 from flexshaft.design.requirements import Requirements
 from flexshaft.design.segments import MAX_COUPLINGS, Coupling, ShaftSegment, Tube
+from flexshaft.design.temperature_table import TemperatureTable, check_table_range
 from flexshaft.design.thermal_schema import Thermal
 
 __all__ = [
@@ -76,6 +80,8 @@ __all__ = [
     "Design",
     "Disk",
     "DofName",
+    "Envelope",
+    "EnvelopePoint",
     "EndMass",
     "ImbalancePlacement",
     "Isotropic",
@@ -90,6 +96,7 @@ __all__ = [
     "Shaft",
     "ShaftSegment",
     "Tailboom",
+    "TemperatureTable",
     "Tube",
     "PROBLEMS_ERROR_TYPE",
     "LAYUP_ERROR_TYPE",
@@ -172,6 +179,8 @@ class Design(FrozenModel):
         Thermal environment and matrix temperature law (``[thermal]``).
     requirements : table
         Limits of the requirements verdict (``[requirements]``).
+    envelope : table
+        Operating points every check is evaluated at (``[envelope]``).
     """
 
     name: DesignName
@@ -187,6 +196,7 @@ class Design(FrozenModel):
     analysis: Analysis = Analysis()
     thermal: Thermal = Thermal()
     requirements: Requirements = Requirements()
+    envelope: Envelope = Envelope()
 
     @model_validator(mode="after")
     def _check(self) -> Design:
@@ -197,6 +207,7 @@ class Design(FrozenModel):
         self._check_bearings(problems)
         self._check_disks(problems)
         self._check_loads(problems)
+        self._check_temperature_tables(problems)
         problems.raise_if_any()
         return self
 
@@ -257,6 +268,22 @@ class Design(FrozenModel):
                     f"must be omitted for the isotropic material {format_value(self.shaft.material)} "
                     f"(got {format_value(segment.layup)})",
                 )
+
+    def _check_temperature_tables(self, problems: Problems) -> None:
+        """Each lamina's table spans the reference temperature and reaches the allowable; the
+        envelope's known material temperatures lie inside the tables."""
+        tables = {}
+        for name, material in self.materials.items():
+            if isinstance(material, Lamina) and material.temperature_table is not None:
+                tables[name] = material.temperature_table
+                check_table_range(
+                    problems,
+                    ("materials", name, "temperature_table"),
+                    material.temperature_table,
+                    self.thermal.matrix_reference_temperature_c,
+                    self.thermal.allowable_temperature_c,
+                )
+        check_envelope_temperatures(problems, self.envelope, self.thermal.ambient_temperature_c, tables)
 
     def _check_couplings(self, problems: Problems) -> None:
         """Couplings strictly inside the shaft, at distinct stations."""

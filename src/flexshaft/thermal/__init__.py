@@ -8,7 +8,10 @@
 * :mod:`~flexshaft.thermal.shaft` — finite-difference shaft temperature;
 * :mod:`~flexshaft.thermal.analysis` — the shaft temperature of a model;
 * :mod:`~flexshaft.thermal.matrix`, :mod:`~flexshaft.thermal.selfheating` — temperature-dependent
-  matrix properties and the self-heating fixed point / thermal runaway;
+  lamina properties (a table over temperature or the assumed law) and the self-heating fixed
+  point / thermal runaway;
+* :mod:`~flexshaft.thermal.envelope` — the temperatures and laminae at an operating point of a
+  design's ``[envelope]`` (:func:`flexshaft.design.points.design_at_point` applies them);
 * :mod:`~flexshaft.thermal.correlations`, :mod:`~flexshaft.thermal.air` — named Nusselt
   correlations with validity ranges, and air properties.
 
@@ -19,9 +22,10 @@ studies of a design (sweeps over wall thickness and convection, the report numbe
 """
 
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
+from flexshaft.thermal.envelope import PointConditions, envelope_conditions, point_conditions
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.heat import HeatSources, heat_sources
-from flexshaft.thermal.matrix import MatrixTemperatureLaw
+from flexshaft.thermal.matrix import LaminaTable, MatrixTemperatureLaw
 from flexshaft.thermal.options import ThermalOptions, environment_from, matrix_law_from, thermal_options
 from flexshaft.thermal.shaft import ShaftTemperature, solve_shaft_temperature
 from flexshaft.thermal.tailboom import (
@@ -35,6 +39,10 @@ __all__ = [
     "ThermalEnvironment",
     "ThermalOptions",
     "MatrixTemperatureLaw",
+    "LaminaTable",
+    "PointConditions",
+    "point_conditions",
+    "envelope_conditions",
     "environment_from",
     "matrix_law_from",
     "thermal_options",

@@ -4,7 +4,8 @@ The design package is a data-only leaf; this module is where its plain ``[therma
 (degrees Celsius and degrees at the file's edge) become the objects the thermal analyses take:
 
 * :func:`environment_from` → :class:`~flexshaft.thermal.environment.ThermalEnvironment`;
-* :func:`matrix_law_from` → :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw`;
+* :func:`matrix_law_from` → :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw` (with the
+  lamina's temperature table when a material with one is given);
 * :func:`thermal_options` → :class:`ThermalOptions`, both of them plus the correlation choices
   and the ply conductivities.
 
@@ -21,7 +22,7 @@ from typing import TYPE_CHECKING
 
 from flexshaft.thermal.correlations import ForcedMethod, RotatingMethod
 from flexshaft.thermal.environment import ThermalEnvironment
-from flexshaft.thermal.matrix import MatrixTemperatureLaw
+from flexshaft.thermal.matrix import MatrixTemperatureLaw, matrix_law_for
 from flexshaft.thermal.shaft import FIBRE_CONDUCTIVITY, TRANSVERSE_CONDUCTIVITY
 from flexshaft.units import celsius_to_kelvin
 
@@ -98,23 +99,33 @@ def environment_from(thermal: Thermal) -> ThermalEnvironment:
     )
 
 
-def matrix_law_from(thermal: Thermal) -> MatrixTemperatureLaw:
-    """The :class:`MatrixTemperatureLaw` of a ``[thermal]`` table (°C → K)."""
-    return MatrixTemperatureLaw(
+def matrix_law_from(thermal: Thermal, material=None) -> MatrixTemperatureLaw:
+    """The :class:`MatrixTemperatureLaw` of a ``[thermal]`` table (°C → K).
+
+    ``material``: a design-file material whose ``temperature_table``, when it has one,
+    replaces the law (:func:`~flexshaft.thermal.matrix.matrix_law_for`).
+    """
+    law = MatrixTemperatureLaw(
         reference_temperature=celsius_to_kelvin(thermal.matrix_reference_temperature_c),
         modulus_decay=thermal.matrix_modulus_decay,
         loss_growth=thermal.matrix_loss_growth,
         allowable_temperature=celsius_to_kelvin(thermal.allowable_temperature_c),
     )
+    return matrix_law_for(material, law)
 
 
-def thermal_options(thermal: Thermal) -> ThermalOptions:
-    """The :class:`ThermalOptions` of a ``[thermal]`` table: every field of it, in SI."""
+def thermal_options(thermal: Thermal, material=None) -> ThermalOptions:
+    """The :class:`ThermalOptions` of a ``[thermal]`` table: every field of it, in SI.
+
+    ``material``: the shaft's design-file material, whose temperature table (if any) the
+    matrix law then carries (:func:`matrix_law_from`). The self-heating analysis attaches the
+    table of its model's shaft lamina in any case.
+    """
     return ThermalOptions(
         environment=environment_from(thermal),
         boom_convection=thermal.boom_convection,
         shaft_convection=thermal.shaft_convection,
         fibre_conductivity=thermal.fibre_conductivity,
         transverse_conductivity=thermal.transverse_conductivity,
-        matrix_law=matrix_law_from(thermal),
+        matrix_law=matrix_law_from(thermal, material),
     )

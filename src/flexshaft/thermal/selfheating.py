@@ -1,7 +1,9 @@
 """Self-heating equilibrium: temperature-dependent FMC properties iterated to a fixed point.
 
 The matrix properties follow the options' :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw`
-(E_T, G_LT soften and their loss factors grow with temperature; fibre properties fixed).
+(E_T, G_LT soften and their loss factors grow with temperature; fibre properties fixed), or the
+temperature table of the model's shaft lamina when it has one (the table wins,
+:func:`~flexshaft.thermal.matrix.matrix_law_for`).
 
 Fixed point, per element: each element e carries its own temperature T_e (mean of its nodes),
 hence its own lamina, laminate E*_e, G*_e and element stiffness. The model variant is the
@@ -33,7 +35,7 @@ from flexshaft.thermal.heat import (
     shaft_response_amplitudes,
     shaft_stiffness_matrices,
 )
-from flexshaft.thermal.matrix import MatrixTemperatureLaw
+from flexshaft.thermal.matrix import MatrixTemperatureLaw, matrix_law_for
 from flexshaft.thermal.options import ThermalOptions
 from flexshaft.units import kelvin_to_celsius
 
@@ -186,7 +188,8 @@ def self_heating(
         Assembled model with a laminated shaft.
     options : ThermalOptions
         Environment, correlations, ply conductivities and the matrix temperature law with its
-        allowable temperature (default: the baseline's).
+        allowable temperature (default: the baseline's). The temperature table of the model's
+        shaft lamina, when it has one, replaces the law's exponentials.
     loss_model : {"thesis", "rotating"} or None
         None: the design's ``[analysis] internal_damping``.
     imbalance_scale, static_scale : float
@@ -201,7 +204,8 @@ def self_heating(
         Passed to :func:`~flexshaft.thermal.analysis.shaft_thermal`.
     """
     options = options or ThermalOptions()
-    law = options.matrix_law
+    shaft_material = None if model.design is None else model.design.shaft_material
+    law = matrix_law_for(shaft_material, options.matrix_law)
     loss_model = resolve_loss_model(model, loss_model)
     tailboom = None if model.design is None else model.design.tailboom
     T_air = shaft_air_temperature(tailboom, options) if air_temperature is None else float(air_temperature)
