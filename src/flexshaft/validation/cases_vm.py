@@ -63,7 +63,7 @@ _NM_NOTE = (
 _ZN_BASIS = (
     "the VM's inputs are rounded: E = 2.1e11 Pa carries two significant figures (±2.4 %, ±1.2 % in a "
     "frequency, which scales as sqrt(E/ρ)), ρ = 7800 kg/m³ three (±0.06 %); the published speeds three "
-    "figures (4950: ±0.1 %). Five elements as the VM; 80 elements change the speeds by 5e-5"
+    "figures (4950: ±0.1 %). Five elements as the VM; 80 elements change the two speeds by 5e-5 and 2e-4"
 )
 
 VM_CASES: tuple[Case, ...] = (
