@@ -238,3 +238,68 @@ def test_the_page_lists_every_source():
 def test_index_and_readme_link_the_validation_page():
     assert "(validation.md)" in (ROOT / "docs" / "index.md").read_text(encoding="utf-8")
     assert "(docs/validation.md)" in (ROOT / "README.md").read_text(encoding="utf-8")
+
+
+# ------------------------------------------------------------------------------------------------
+# the quantities of the Verification-Manual cases, against independent solutions
+
+
+def test_the_critical_speed_pencil_is_where_a_whirl_frequency_meets_h_omega():
+    """Each critical speed Ω of the pencil K x = ω² (M − iG/h) x must be a speed at which the
+    damped-mode solver (flexshaft.analyses.modes, the quadratic problem at that spin) has a
+    lateral mode of frequency hΩ; 1e-7 is the solver's round-off on these 100-dof models."""
+    from flexshaft.analyses import modes
+    from flexshaft.assembly import build_model
+    from flexshaft.validation.quantities import synchronous_critical_speeds
+
+    design = case_design(next(c for c in CASES if c.id == "nelson-mcvaugh-1976-critical"))
+    model = build_model(design)
+    free = int(model.dofs.free.size)
+    for harmonic in (1.0, 4.0):
+        for speed in synchronous_critical_speeds(design, harmonic=harmonic, count=4):
+            result = modes(model, speed, n_modes=16, basis_size=free)
+            lateral = result.eigenvalues[result.kind == "lateral"].imag
+            assert np.min(np.abs(lateral / (harmonic * speed) - 1.0)) < 1e-7
+    forward = synchronous_critical_speeds(design, harmonic=1.0, count=3, whirl="forward")
+    both = synchronous_critical_speeds(design, harmonic=1.0, count=6)
+    assert forward == pytest.approx(both[1::2], rel=1e-12)  # b1 < f1 < b2 < f2 < b3 < f3 here
+
+
+def test_the_drill_pipe_torsion_converges_to_its_frequency_equation():
+    """A uniform shaft clamped in twist at one end with a polar inertia J_b at the other:
+    β tan β = ρ J_p L / J_b, ω = β sqrt(G/ρ)/L (Thomson's frequency equation). The design's 96
+    elements reproduce its first two roots to 1e-4 (consistent linear elements: error ∝ h²)."""
+    from scipy.optimize import brentq
+
+    from flexshaft.validation.quantities import torsional_block_frequencies
+
+    design = case_design(next(c for c in CASES if c.id == "thomson-drill-pipe-torsion"))
+    steel, shaft, bit = design.materials[design.shaft.material], design.shaft, design.disks[0]
+    D, t, L = shaft.outer_diameter, shaft.wall_thickness, shaft.x_end - shaft.x_start
+    polar = math.pi * (D**4 - (D - 2.0 * t) ** 4) / 32.0
+    ratio = steel.density * polar * L / bit.polar_inertia
+    roots = [brentq(lambda b: b * math.tan(b) - ratio, a + 1e-9, a + math.pi / 2 - 1e-9) for a in (0.0, math.pi)]
+    exact = np.asarray(roots) * math.sqrt(steel.G / steel.density) / L
+    assert torsional_block_frequencies(design, count=2) == pytest.approx(exact, rel=1e-4)
+
+
+def test_the_verification_manual_inputs_are_in_the_design_files():
+    """The numbers typed from VM247, VM261 and VM57 into the design files."""
+    nm = case_design(next(c for c in CASES if c.id == "nelson-mcvaugh-1976-critical"))
+    assert [s.outer_diameter for s in nm.shaft.segments][:6] == [0.0102, 0.0204, 0.0152, 0.0406, 0.0406, 0.066]
+    assert len(nm.shaft.segments) == 18 and nm.shaft.segments[-1].x_end == 0.355
+    bores = {s.name: s.outer_diameter - 2.0 * s.wall_thickness for s in nm.shaft.segments}
+    assert (bores["e7"], bores["e8"], bores["e18"]) == pytest.approx((0.0304, 0.0356, 0.0304), abs=1e-12)
+    assert [(b.x, b.stiffness["v"]) for b in nm.bearings] == [(0.1651, 4.378e7), (0.287, 4.378e7)]
+    disk = nm.disks[0]
+    assert (disk.x, disk.mass, disk.polar_inertia, disk.diametral_inertia) == (0.0889, 1.401, 0.002, 0.00136)
+    zn = case_design(next(c for c in CASES if c.id == "zorzi-nelson-1976-critical"))
+    steel = zn.materials[zn.shaft.material]
+    from flexshaft.validation.cases_vm import ZORZI_REFERENCE_FREQUENCY
+
+    assert steel.loss_factor / ZORZI_REFERENCE_FREQUENCY == pytest.approx(2.0e-4, rel=1e-14)  # VM261's BETD
+    assert (steel.E, steel.density, zn.shaft.x_end, zn.shaft.outer_diameter) == (2.1e11, 7800.0, 1.27, 0.1016)
+    th = case_design(next(c for c in CASES if c.id == "thomson-drill-pipe-torsion"))
+    ft, slug_ft2 = 0.3048, 1.3558179483
+    assert th.shaft.x_end - th.shaft.x_start == pytest.approx(5000.0 * ft, rel=1e-14)
+    assert th.disks[0].polar_inertia == pytest.approx(29.3 * slug_ft2, rel=1e-12)

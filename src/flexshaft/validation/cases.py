@@ -13,80 +13,12 @@ computed by flexshaft.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Any
 
+from flexshaft.validation.case_types import Case, Source
+from flexshaft.validation.cases_vm import VM_CASES, VM_SOURCES
 from flexshaft.validation.reference import gibert_spinning_beam, rayleigh_cantilever_tip_mass, rotating_damping_onset
 
 __all__ = ["CASES", "GIBERT_ROD", "JEFFCOTT", "SOURCES", "VPCS_CANTILEVER", "Case", "Source", "case_by_id"]
-
-
-@dataclass(frozen=True)
-class Source:
-    """A publication (or standard) that validation cases take numbers from."""
-
-    key: str
-    citation: str
-
-
-@dataclass(frozen=True)
-class Case:
-    """One published result and how flexshaft reproduces it.
-
-    Attributes
-    ----------
-    id : str
-        Short, unique name (``flexshaft validate --case`` and the JSON use it).
-    title : str
-        What the case is.
-    part : str
-        The part of flexshaft's model it exercises.
-    source : str
-        Key of :data:`SOURCES`.
-    where : str
-        Where in the source the number is printed (example, table, figure, page, equation).
-    via : str
-        How the number reached us when not read in the source itself ("" when it was).
-    reference_kind : str
-        What the published number is: ``"textbook example, peer-code values"``,
-        ``"worked example"`` or ``"closed form"``.
-    design : str or None
-        Design file (``flexshaft/validation/designs/<design>``) with the case's inputs; None
-        when the quantity takes plain numbers (``arguments``).
-    quantity : str
-        Key of :data:`flexshaft.validation.quantities.QUANTITIES`.
-    arguments : dict
-        Keyword arguments of the quantity.
-    labels : tuple of str
-        One label per compared value.
-    published : tuple of float
-        The published values, in ``unit``, in the order of ``labels``.
-    unit : str
-        Display unit of the values: ``"rad/s"``, ``"Hz"``, ``"rpm"``, ``"N/m"``, ``"g mm"`` or ``"-"``.
-    tolerance : float
-        Largest accepted relative difference |flexshaft/published − 1| of every value.
-    tolerance_basis : str
-        Why that tolerance: the source's own accuracy.
-    note : str
-        Where flexshaft's model differs from the source's, and other remarks.
-    """
-
-    id: str
-    title: str
-    part: str
-    source: str
-    where: str
-    via: str
-    reference_kind: str
-    design: str | None
-    quantity: str
-    arguments: dict[str, Any]
-    labels: tuple[str, ...]
-    published: tuple[float, ...]
-    unit: str
-    tolerance: float
-    tolerance_basis: str
-    note: str = field(default="")
 
 
 SOURCES: dict[str, Source] = {
@@ -141,6 +73,7 @@ SOURCES: dict[str, Source] = {
         "'Step-by-Step Example Walkthrough': a 45 in steel driveshaft, 3.5 in OD, 0.083 in wall, E = 30 Mpsi, "
         "0.283 lb/in³, simply supported: 11,390 RPM critical.",
     ),
+    **VM_SOURCES,
 }
 
 #: Inputs of the closed-form cases, as in their design files (tests/test_validation.py checks both agree).
@@ -528,7 +461,7 @@ CASES: tuple[Case, ...] = (
         tolerance=5e-2,
         tolerance_basis="the worked example prints two significant figures (12 gmm: ±0.5 gmm, 4.2 %)",
     ),
-)
+) + VM_CASES
 
 
 def case_by_id(case_id: str) -> Case:

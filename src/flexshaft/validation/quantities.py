@@ -26,6 +26,8 @@ __all__ = [
     "lateral_frequency_pairs",
     "lateral_natural_frequencies",
     "quantity",
+    "synchronous_critical_speeds",
+    "torsional_block_frequencies",
     "torsional_natural_frequencies",
     "whirl_frequencies",
     "whirl_onset_speed",
@@ -108,6 +110,80 @@ def torsional_natural_frequencies(design: Design, *, count: int, skip_rigid: boo
     return s[:count]
 
 
+def _blocks(design: Design, fields: tuple[str, ...]):
+    """The model of ``design`` and its stiffness, mass and gyroscopic matrices restricted to the
+    free shaft DOFs of ``fields`` ("v", "w", "beta", "gamma" lateral; "theta" torsion), after
+    checking that these DOFs do not couple with the other free DOFs (an isotropic shaft without
+    tailboom: bending, torsion and axial motion are independent)."""
+    from flexshaft.assembly import build_model
+
+    model = build_model(design)
+    dofs = model.dofs
+    if dofs.boom_x.size:
+        raise ValueError("the quantity takes a shaft without tailboom")
+    nodes = np.arange(dofs.n_shaft_nodes)
+    wanted = np.unique(np.concatenate([dofs.shaft(nodes, f) for f in fields]))
+    free = np.asarray(dofs.free)
+    own, other = free[np.isin(free, wanted)], free[~np.isin(free, wanted)]
+    blocks = []
+    for matrix in (model.K, model.M, model.G):
+        if other.size and abs(matrix[np.ix_(own, other)]).max() > 0.0:
+            raise ValueError(f"the DOFs {fields} couple with the others: the quantity needs them independent")
+        blocks.append(matrix[np.ix_(own, own)].toarray())
+    return model, own, blocks
+
+
+def synchronous_critical_speeds(design: Design, *, harmonic: float, count: int, whirl: str = "both") -> np.ndarray:
+    """The lowest ``count`` spin speeds Ω [rad/s] at which a lateral natural frequency of the
+    undamped rotor equals ``harmonic`` × Ω, ascending; ``whirl`` "forward" or "backward" keeps
+    the modes of that whirl direction only.
+
+    With the motion q = x e^{iωt} and Ω = ω/h, the undamped equations M q'' + Ω G q' + K q = 0
+    of the assembled model (:func:`flexshaft.assembly.build_model`) become the linear pencil
+    K x = ω² (M − i G/h) x (G skew, so M − iG/h is Hermitian): its real positive eigenvalues are
+    the critical speeds Ω = ω/h exactly, without a speed grid (Nelson & McVaugh's "whirl speed"
+    problem, their whirl ratio 1/h). Only the lateral DOFs enter (checked to be uncoupled from
+    the others). The whirl direction of each solution is read from its shaft orbits
+    (:func:`flexshaft.analyses.classify.whirl_ratio`).
+    """
+    from scipy.linalg import eig
+
+    from flexshaft.analyses.classify import whirl_ratio
+
+    if harmonic <= 0.0 or whirl not in ("both", "forward", "backward"):
+        raise ValueError(
+            f"harmonic must be > 0 and whirl 'both', 'forward' or 'backward' (got {harmonic!r}, {whirl!r})"
+        )
+    model, own, (K, M, G) = _blocks(design, ("v", "w", "beta", "gamma"))
+    lam, vectors = eig(K, M - 1j * G / harmonic)
+    real = np.isfinite(lam) & (np.abs(lam.imag) <= 1e-9 * np.abs(lam)) & (lam.real > 0.0)
+    lam, vectors = lam.real[real], vectors[:, real]
+    shapes = np.zeros((model.dofs.size, lam.size), dtype=complex)
+    shapes[own] = vectors
+    ratio = whirl_ratio(model.dofs, shapes)
+    keep = np.ones(lam.size, bool) if whirl == "both" else (ratio > 0.0 if whirl == "forward" else ratio < 0.0)
+    speeds = np.sort(np.sqrt(lam[keep]) / harmonic)
+    if speeds.size < count:
+        raise ValueError(
+            f"the model has {speeds.size} {whirl} critical speeds for ω = {harmonic:g} Ω, {count} are compared"
+        )
+    return speeds[:count]
+
+
+def torsional_block_frequencies(design: Design, *, count: int) -> np.ndarray:
+    """The lowest ``count`` torsional natural frequencies [rad/s] of a shaft restrained in twist,
+    from the torsional block of the assembled stiffness and mass (K_θθ φ = ω² M_θθ φ), checked to
+    be uncoupled from bending and axial motion; for a long shaft whose many bending modes lie
+    below its torsional ones."""
+    from scipy.linalg import eigh
+
+    _, _, (K, M, _) = _blocks(design, ("theta",))
+    lam = eigh(K, M, eigvals_only=True)
+    if lam.size < count or lam[0] <= 0.0:
+        raise ValueError("the torsional block must be restrained in twist and hold the compared modes")
+    return np.sqrt(lam[:count])
+
+
 def actuator_stiffness(design: Design, *, bearing: str, frequency: float) -> np.ndarray:
     """Real part [N/m] of the collocated force law ``k_i A(iω) C(iω) − k_s`` of the active
     bearing ``bearing`` at the frequency ``frequency`` [rad/s]: its equivalent stiffness, with
@@ -175,6 +251,8 @@ QUANTITIES: dict[str, Callable[..., np.ndarray]] = {
     "lateral_frequency_pairs": lateral_frequency_pairs,
     "whirl_frequencies": whirl_frequencies,
     "torsional_natural_frequencies": torsional_natural_frequencies,
+    "torsional_block_frequencies": torsional_block_frequencies,
+    "synchronous_critical_speeds": synchronous_critical_speeds,
     "actuator_stiffness": actuator_stiffness,
     "balance_tolerance": balance_tolerance,
     "cylinder_crossflow_nusselt": cylinder_crossflow_nusselt,
