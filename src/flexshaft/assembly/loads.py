@@ -3,7 +3,8 @@
 * point and line loads on the shaft or boom: consistent nodal loads ``∫ Nᵀ f``;
 * point loads on the end mass: ``Bᵀ F`` through the end-mass kinematics (eq. 2.37);
 * a load factor ``n`` [g] on every mass: ``M · (n g)`` applied to the rigid translation field;
-* the torque ``T = P/Ω`` at the shaft's aft end (forward end held in twist);
+* the torque ``T = P/Ω`` at the tail rotor (the shaft's aft end; forward end held in twist or
+  tied to its gearbox);
 * the rotating imbalance ``F = e_c m Ω²`` (ISO 21940-11: m the whole balanced rotor's mass,
   :mod:`flexshaft.assembly.balance`) shared among the shaft bays between bearings,
   as complex amplitudes of a forward-rotating load: ``Q_v = F``, ``Q_w = −iF`` (the force turns
@@ -164,17 +165,20 @@ def inertial_load(model: Model, load_factor) -> np.ndarray:
 
 
 def torque_load(model: Model, torque: float | None = None) -> np.ndarray:
-    """Transmitted torque at the shaft's aft node [N m], default ``P/Ω``.
+    """Transmitted torque at the tail rotor [N m], default ``P/Ω``.
 
-    The forward end is held in twist (the drive); the tail rotor resists the spin, so the aft
-    end carries ``−T`` about +x.
+    The forward end is held in twist (the drive) or tied to its gearbox; the tail rotor resists
+    the spin, so it carries ``−T`` about +x: on its own twist DOF behind an elastic drive
+    (:attr:`~flexshaft.assembly.drive.DriveTrain.rotor_dof`, the same torque in the shaft),
+    else on the shaft's aft node.
     """
     if torque is None:
         torque = model.power / model.speed if model.speed > 0 else 0.0
     if not np.isfinite(torque):
         raise ValueError(f"torque must be a finite number [N m] (got {torque!r})")
     Q = np.zeros(model.dofs.size)
-    Q[model.dofs.shaft(-1, "theta")] = -torque
+    dof = model.drive.rotor_dof
+    Q[model.dofs.shaft(-1, "theta") if dof is None else dof] = -torque
     return Q
 
 
