@@ -456,6 +456,8 @@ def torsional_forced_response(
     if not drive.has_rotor:
         raise ValueError("the design has no [tail_rotor]: no tail-rotor torque oscillation to apply")
     if speeds is None:
+        if model.design is None:
+            raise ValueError("the model has no design: give the shaft speeds [rad/s]")
         low, high = model.design.operating.speed_limits
         speeds = np.array([low]) if high == low else np.linspace(low, high, check_count(n_speeds, "n_speeds"))
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
