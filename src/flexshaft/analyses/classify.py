@@ -1,8 +1,9 @@
 """Mode labels shared by every eigen-analysis: kind, whirl direction and component.
 
 Kind. The kinetic energy ``φᴴ M φ`` of a mode is split over DOF groups by the block partition
-``E_g = Re(φ_gᴴ (M φ)_g)``: shaft axial (u), shaft torsion (θ), shaft lateral (v, w, β, γ)
-and tailboom. A mode is ``"torsional"`` when the shaft's twist holds more than
+``E_g = Re(φ_gᴴ (M φ)_g)``: shaft axial (u), shaft torsion (θ, with the drive train's own
+twist DOFs: the tail rotor behind its drive spring, :mod:`flexshaft.assembly.drive`), shaft
+lateral (v, w, β, γ) and tailboom. A mode is ``"torsional"`` when the shaft's twist holds more than
 :data:`KIND_THRESHOLD` of its kinetic energy, ``"axial"`` when the shaft's axial motion does,
 and ``"lateral"`` otherwise: bending of the shaft and/or the tailboom (whose twist belongs to
 its lateral dynamics: through the bearing offset and the end mass it moves the shaft
@@ -75,9 +76,9 @@ def energy_shares(model: Model, shapes: np.ndarray) -> EnergyShares:
     lateral = np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")])
     return EnergyShares(
         shaft_axial=share(dm.shaft(nodes, "u")),
-        shaft_torsion=share(dm.shaft(nodes, "theta")),
+        shaft_torsion=share(np.concatenate([dm.shaft(nodes, "theta"), dm.extra_dofs])),
         shaft_lateral=share(lateral),
-        boom=share(np.arange(6 * dm.n_shaft_nodes, dm.size)),
+        boom=share(dm.boom_dofs),
     )
 
 
@@ -119,9 +120,9 @@ class ModalLabeler:
         nodes = np.arange(dm.n_shaft_nodes)
         groups = {
             "shaft_axial": dm.shaft(nodes, "u"),
-            "shaft_torsion": dm.shaft(nodes, "theta"),
+            "shaft_torsion": np.concatenate([dm.shaft(nodes, "theta"), dm.extra_dofs]),
             "shaft_lateral": np.concatenate([dm.shaft(nodes, f) for f in ("v", "w", "beta", "gamma")]),
-            "boom": np.arange(6 * dm.n_shaft_nodes, dm.size),
+            "boom": dm.boom_dofs,
         }
         if len(dm.tied):  # a tied DOF (rigid coupling direction) counts once
             groups = {g: dm.unique(idx) for g, idx in groups.items()}

@@ -29,6 +29,7 @@ import scipy.sparse as sp
 
 from flexshaft.assembly.checks import check_actuator_law, check_bearing_stiffness, check_finite_model, check_magnet
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, DofMap
+from flexshaft.assembly.drive import drive_extra_dofs, drive_terms, gearbox_holds_twist
 from flexshaft.assembly.mesh import design_mesh, design_stations, merge_tolerance, segment_mesh
 from flexshaft.assembly.model import (
     Actuator,
@@ -141,6 +142,8 @@ def _fixed_dofs(design, shaft_x, boom_x) -> np.ndarray:
     dm = DofMap(shaft_x, boom_x)
     fixed = [dm.shaft(0, f) for f in design.shaft.fixed_start]
     fixed += [dm.shaft(-1, f) for f in design.shaft.fixed_end]
+    if gearbox_holds_twist(design):
+        fixed.append(dm.shaft(0, "theta"))  # a rigid [main_gearbox] holds the forward twist
     if len(boom_x):
         fixed += [dm.boom(0, f) for f in BOOM_FIELDS]  # cantilevered from the fuselage
     return np.array(sorted(set(fixed)), dtype=int)
@@ -192,7 +195,15 @@ _rows_cache: dict = {}
 def _relative_rows(dm: DofMap, x_shaft: float, x_boom: float | None, h: float):
     """(local rows (5, n_local), their global DOFs, sparse (5, ndof) rows) of a link between the
     shaft at ``x_shaft`` and the boom at ``x_boom`` (None: ground) at height ``h``, cached."""
-    key = (dm.shaft_x.tobytes(), dm.boom_x.tobytes(), np.asarray(dm.shaft_joints).tobytes(), x_shaft, x_boom, h)
+    key = (
+        dm.shaft_x.tobytes(),
+        dm.boom_x.tobytes(),
+        np.asarray(dm.shaft_joints).tobytes(),
+        dm.size,
+        x_shaft,
+        x_boom,
+        h,
+    )
     hit = _rows_cache.get(key)
     if hit is not None:
         return hit
@@ -306,7 +317,12 @@ def build_model(design) -> Model:
     shaft_x, boom_x = design_mesh(design) if not design.segmented else _segmented_mesh(design)
     shaft_x, joints = _split_at_couplings(design, shaft_x)
     dm = DofMap(
-        shaft_x, boom_x, _fixed_dofs(design, shaft_x, boom_x), joints, _tied_dofs(design, shaft_x, boom_x, joints)
+        shaft_x,
+        boom_x,
+        _fixed_dofs(design, shaft_x, boom_x),
+        joints,
+        _tied_dofs(design, shaft_x, boom_x, joints),
+        drive_extra_dofs(design),
     )
     n = dm.size
 
@@ -335,6 +351,8 @@ def build_model(design) -> Model:
         dofs = np.array([dm.shaft(node, f) for f in ("u", "v", "w", "theta", "beta", "gamma")])
         parts["M"].append((Md[None], dofs[None]))
         parts["G"].append((Gd[None], dofs[None]))
+
+    drive = drive_terms(design, dm, parts)
 
     links, actuators = [], []
     for bearing in design.bearings:
@@ -367,6 +385,7 @@ def build_model(design) -> Model:
         shaft_loss_stiffness=shaft_loss.tocsr(),
         boom_loss_stiffness=boom_loss.tocsr(),
         internal_damping=design.analysis.internal_damping,
+        drive=drive,
     )
     check_finite_model(model)
     return model

@@ -2,11 +2,14 @@
 
 Global vector layout::
 
-    [ shaft node 0: u v w θ β γ | shaft node 1: ... | ... | boom node 0: v w θ β γ | ... ]
+    [ shaft node 0: u v w θ β γ | shaft node 1: ... | ... | boom node 0: v w θ β γ | ... | extra ]
 
 Shaft nodes come first, 6 DOFs each in :data:`SHAFT_FIELDS` order; boom nodes follow, 5 DOFs
-each in :data:`BOOM_FIELDS` order. Every caller asks :class:`DofMap` for an index by
-``(component, node, field)``; no index is hard-coded anywhere else.
+each in :data:`BOOM_FIELDS` order; the *extra* DOFs close the vector: lumped scalar DOFs that
+belong to no node, named in :attr:`DofMap.extra` (``"tail_rotor"``: the reflected twist of the
+tail rotor behind its drive's spring, :mod:`flexshaft.assembly.drive`). Every caller asks
+:class:`DofMap` for an index by ``(component, node, field)`` (or an extra DOF by its name); no
+index is hard-coded anywhere else.
 
 Shaft nodes are in order of station. Consecutive nodes form a shaft element, except at a
 coupling joint (:attr:`DofMap.shaft_joints`): there two nodes share the station, one on each
@@ -55,6 +58,9 @@ class DofMap:
     tied : ndarray of int, shape (n, 2)
         Pairs (tied DOF, DOF it equals) of raw global indices: the rigid directions of the
         couplings (the aft node's DOF equals the forward node's).
+    extra : tuple of str
+        Names of the extra DOFs after the boom's, in order (:meth:`extra_dof`); they are twist
+        DOFs of the drive train and sit at the shaft's aft station in :attr:`stations`.
     """
 
     shaft_x: np.ndarray
@@ -62,6 +68,7 @@ class DofMap:
     fixed: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     shaft_joints: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     tied: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=int))
+    extra: tuple[str, ...] = ()
 
     @cached_property
     def _alias(self) -> np.ndarray | None:
@@ -97,24 +104,45 @@ class DofMap:
     @property
     def size(self) -> int:
         """Number of global DOFs, fixed ones included."""
-        return 6 * self.n_shaft_nodes + 5 * self.n_boom_nodes
+        return 6 * self.n_shaft_nodes + 5 * self.n_boom_nodes + len(self.extra)
+
+    @property
+    def boom_dofs(self) -> np.ndarray:
+        """Global indices of every boom DOF (fixed ones included), increasing."""
+        start = 6 * self.n_shaft_nodes
+        return np.arange(start, start + 5 * self.n_boom_nodes)
+
+    @property
+    def extra_dofs(self) -> np.ndarray:
+        """Global indices of the extra DOFs, in the order of :attr:`extra`."""
+        start = 6 * self.n_shaft_nodes + 5 * self.n_boom_nodes
+        return np.arange(start, start + len(self.extra))
+
+    def extra_dof(self, name: str) -> int:
+        """Global index of the extra DOF called ``name``."""
+        if name not in self.extra:
+            raise ValueError(f"the model has no extra DOF {name!r} (it has {list(self.extra)})")
+        return 6 * self.n_shaft_nodes + 5 * self.n_boom_nodes + self.extra.index(name)
 
     @property
     def stations(self) -> np.ndarray:
-        """(size, 3) of every global DOF: its node's station [m], component (0 shaft, 1 boom)
-        and field index (in :data:`SHAFT_FIELDS` or :data:`BOOM_FIELDS` order): the key of a
-        DOF ordering along the driveline (:mod:`flexshaft.analyses.banded`)."""
-        ns, nb = self.n_shaft_nodes, self.n_boom_nodes
+        """(size, 3) of every global DOF: its node's station [m], component (0 shaft, 1 boom,
+        2 extra) and field index (in :data:`SHAFT_FIELDS` or :data:`BOOM_FIELDS` order, the
+        position in :attr:`extra`): the key of a DOF ordering along the driveline
+        (:mod:`flexshaft.analyses.banded`). An extra DOF sits at the shaft's aft station."""
+        ns, nb, ne = self.n_shaft_nodes, self.n_boom_nodes, len(self.extra)
+        aft = float(self.shaft_x[-1]) if ns else 0.0
         return np.column_stack(
             [
                 np.concatenate(
                     [
                         np.repeat(np.asarray(self.shaft_x, dtype=float), 6),
                         np.repeat(np.asarray(self.boom_x, dtype=float), 5),
+                        np.full(ne, aft),
                     ]
                 ),
-                np.concatenate([np.zeros(6 * ns), np.ones(5 * nb)]),
-                np.concatenate([np.tile(np.arange(6.0), ns), np.tile(np.arange(5.0), nb)]),
+                np.concatenate([np.zeros(6 * ns), np.ones(5 * nb), np.full(ne, 2.0)]),
+                np.concatenate([np.tile(np.arange(6.0), ns), np.tile(np.arange(5.0), nb), np.arange(float(ne))]),
             ]
         )
 

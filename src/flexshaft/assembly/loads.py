@@ -3,8 +3,10 @@
 * point and line loads on the shaft or boom: consistent nodal loads ``∫ Nᵀ f``;
 * point loads on the end mass: ``Bᵀ F`` through the end-mass kinematics (eq. 2.37);
 * a load factor ``n`` [g] on every mass: ``M · (n g)`` applied to the rigid translation field;
-* the torque ``T = P/Ω`` at the shaft's aft end (forward end held in twist);
-* the rotating imbalance ``F = e_c m_s Ω²`` shared among the shaft bays between bearings,
+* the torque ``T = P/Ω`` at the tail rotor (the shaft's aft end; forward end held in twist or
+  tied to its gearbox);
+* the rotating imbalance ``F = e_c m Ω²`` (ISO 21940-11: m the whole balanced rotor's mass,
+  :mod:`flexshaft.assembly.balance`) shared among the shaft bays between bearings,
   as complex amplitudes of a forward-rotating load: ``Q_v = F``, ``Q_w = −iF`` (the force turns
   from +y towards +z with the spin); :func:`per_bay_imbalance_loads` takes each bay's own
   unbalance, angle and position.
@@ -14,10 +16,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from flexshaft.assembly.balance import design_eccentricity, imbalance_bays, rotating_mass
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS
-from flexshaft.assembly.mesh import merge_tolerance
 from flexshaft.assembly.model import Model
-from flexshaft.assembly.size import MAX_WORST_BAYS, bearing_bays
+from flexshaft.assembly.size import MAX_WORST_BAYS
 from flexshaft.elements.boom import BOOM_COLUMNS
 from flexshaft.elements.inertia import end_mass_kinematics
 from flexshaft.elements.shape import beam_shape, gauss_points
@@ -163,17 +165,20 @@ def inertial_load(model: Model, load_factor) -> np.ndarray:
 
 
 def torque_load(model: Model, torque: float | None = None) -> np.ndarray:
-    """Transmitted torque at the shaft's aft node [N m], default ``P/Ω``.
+    """Transmitted torque at the tail rotor [N m], default ``P/Ω``.
 
-    The forward end is held in twist (the drive); the tail rotor resists the spin, so the aft
-    end carries ``−T`` about +x.
+    The forward end is held in twist (the drive) or tied to its gearbox; the tail rotor resists
+    the spin, so it carries ``−T`` about +x: on its own twist DOF behind an elastic drive
+    (:attr:`~flexshaft.assembly.drive.DriveTrain.rotor_dof`, the same torque in the shaft),
+    else on the shaft's aft node.
     """
     if torque is None:
         torque = model.power / model.speed if model.speed > 0 else 0.0
     if not np.isfinite(torque):
         raise ValueError(f"torque must be a finite number [N m] (got {torque!r})")
     Q = np.zeros(model.dofs.size)
-    Q[model.dofs.shaft(-1, "theta")] = -torque
+    dof = model.drive.rotor_dof
+    Q[model.dofs.shaft(-1, "theta") if dof is None else dof] = -torque
     return Q
 
 
@@ -188,22 +193,12 @@ def external_static_load(model: Model) -> np.ndarray:
     return Q
 
 
-def imbalance_bays(model: Model) -> list[tuple[float, float]]:
-    """Shaft bays: the spans between consecutive bearing stations (overhangs excluded).
-
-    Stations closer than the mesh's merge tolerance (:func:`~flexshaft.assembly.mesh.merge_tolerance`)
-    are one station, as they are one node: a bearing 1e-9 m beside another adds no bay.
-    """
-    shaft_x = model.dofs.shaft_x
-    elements = model.design.mesh.shaft_elements if model.design is not None else max(shaft_x.size - 1, 1)
-    tolerance = merge_tolerance(float(shaft_x[-1] - shaft_x[0]), elements)
-    return bearing_bays([b.x_shaft for b in model.bearings], tolerance)
-
-
 def imbalance_loads(model: Model, placement: str | None = None, eccentricity: float | None = None) -> np.ndarray:
     """Rotating imbalance load vectors per unit Ω² [N s²], columns = load cases.
 
-    The force ``e_c m_s Ω²`` is shared equally among the bays. ``placement``:
+    The force ``e_c m Ω²`` (m the rotating mass of ISO 21940-11,
+    :func:`~flexshaft.assembly.balance.rotating_mass`: tubes, disks and coupling hubs) is
+    shared equally among the bays. ``placement``:
 
     * ``"mid_bay"``: a point force at each bay's midpoint, all in phase (one case);
     * ``"distributed"``: uniform over each bay (one case);
@@ -217,7 +212,9 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     placement : {"mid_bay", "distributed", "worst"} or None
         Default: the design's ``loads.imbalance_placement``.
     eccentricity : float or None
-        Mass eccentricity e_c [m], finite and >= 0; default: the design's.
+        Mass eccentricity e_c [m], finite and >= 0; default: the design's
+        (:func:`~flexshaft.assembly.balance.design_eccentricity`: its ``eccentricity`` or
+        ``balance_grade``).
 
     Raises
     ------
@@ -229,7 +226,7 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     placement = placement or (loads.imbalance_placement if loads else "mid_bay")
     if placement not in IMBALANCE_PLACEMENTS:
         raise ValueError(f"placement must be one of {', '.join(map(repr, IMBALANCE_PLACEMENTS))} (got {placement!r})")
-    ecc = eccentricity if eccentricity is not None else (loads.eccentricity if loads else 0.0)
+    ecc = eccentricity if eccentricity is not None else (design_eccentricity(model.design) if loads else 0.0)
     if isinstance(ecc, bool) or not (
         isinstance(ecc, (int, float, np.floating, np.integer)) and np.isfinite(ecc) and ecc >= 0
     ):
@@ -243,7 +240,7 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
             f"2^{len(bays) - 1} (allowed: at most {MAX_WORST_BAYS} bays, or placement "
             '"mid_bay" / "distributed")'
         )
-    share = ecc * model.shaft_mass / len(bays)
+    share = ecc * rotating_mass(model) / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
     if placement == "distributed":
         per_bay = []

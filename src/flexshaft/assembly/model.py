@@ -28,6 +28,7 @@ import scipy.sparse as sp
 
 from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.dofs import DofMap
+from flexshaft.assembly.drive import DriveTrain
 
 __all__ = [
     "Controller",
@@ -318,6 +319,9 @@ class Model:
         Every zone of the shaft with its tube (one for a one-piece shaft).
     couplings : tuple of CouplingLink
         Coupling elements, in order of station.
+    drive : DriveTrain
+        The tail rotor and gearbox on the shaft's end twists, reflected to the shaft
+        (:mod:`flexshaft.assembly.drive`); empty without ``[tail_rotor]``/``[main_gearbox]``.
     """
 
     dofs: DofMap
@@ -336,6 +340,7 @@ class Model:
     internal_damping: str = "rotating"
     segments: tuple[SegmentProperties, ...] = ()
     couplings: tuple[CouplingLink, ...] = ()
+    drive: DriveTrain = DriveTrain()
 
     @cached_property
     def _loss_split(self) -> tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]:

@@ -45,6 +45,15 @@ MAX_SPEED_RPM = 1.0e6
 MainRotorSpeed = quantity(
     "rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)", gt=0.0, le=5000.0
 )
+BalanceGrade = quantity(
+    "mm/s",
+    "ISO 21940-11 balance grade G above 0 and at most 4000 mm/s (the standard's coarsest is G 4000)",
+    gt=0.0,
+    le=4000.0,
+)
+SpeedFraction = quantity(
+    "-", "fraction of the operating speed above 0 and at most 10 (a speed range is a few % wide)", gt=0.0, le=10.0
+)
 SpeedRpm = Annotated[
     float,
     Field(
@@ -87,6 +96,11 @@ class Operating(FrozenModel):
         modes are placed.
     main_rotor_blades : int or None
         Number of main-rotor blades N.
+    speed_range : tuple of 2 floats or None
+        The operating speed range as fractions (lowest, highest) of the operating speed [-]
+        (e.g. ``[0.95, 1.05]``); omitted: the operating speed alone. The torsional separation
+        margins are taken over it, and a ``balance_grade`` is converted at its highest speed
+        (the maximum service speed of ISO 21940-11).
     """
 
     speed_rpm: SpeedRpm | None = None
@@ -96,6 +110,7 @@ class Operating(FrozenModel):
     main_rotor_blades: (
         Annotated[int, Field(strict=True, ge=1, le=12, description=("number of main-rotor blades N, 1 to 12"))] | None
     ) = None
+    speed_range: tuple[SpeedFraction, SpeedFraction] | None = None
 
     def main_rotor_frequencies(self) -> dict[str, float]:
         """The main rotor's excitation frequencies at the operating point [Hz]: 1/rev and N/rev
@@ -130,6 +145,12 @@ class Operating(FrozenModel):
                 f"Ω = {format_number(self.speed_rad_s)} rad/s (got {format_value(self.power)}; allowed: a torque of "
                 f"at most {MAX_TORQUE:g} N m, i.e. power <= {format_number(MAX_TORQUE * self.speed_rad_s)} W)",
             )
+        if self.speed_range is not None and not self.speed_range[0] <= 1.0 <= self.speed_range[1]:
+            problems.add(
+                ("speed_range",),
+                "must bracket the operating speed, lowest <= 1 <= highest (fractions of the operating "
+                f"speed; got {format_value(list(self.speed_range))})",
+            )
         problems.raise_if_any()
         return self
 
@@ -140,6 +161,13 @@ class Operating(FrozenModel):
             return self.speed
         assert self.speed_rpm is not None
         return rpm_to_rad_s(self.speed_rpm)
+
+    @property
+    def speed_limits(self) -> tuple[float, float]:
+        """The lowest and highest operating speeds [rad/s] of :attr:`speed_range` (both the
+        operating speed when it is omitted)."""
+        low, high = (1.0, 1.0) if self.speed_range is None else self.speed_range
+        return low * self.speed_rad_s, high * self.speed_rad_s
 
     @property
     def torque(self) -> float:
@@ -218,8 +246,14 @@ class Loads(FrozenModel):
     Attributes
     ----------
     eccentricity : float
-        Mass eccentricity e_c of the shaft [m]: the rotating imbalance force e_c m_s Ω² (m_s
-        the shaft mass) is shared equally among the bays between bearings.
+        Mass eccentricity e_c of the rotor [m] (the permissible residual specific unbalance
+        e_per of ISO 21940-11): the rotating imbalance force e_c m Ω², m the mass of the whole
+        balanced rotor (tubes, disks, coupling hubs: :func:`flexshaft.assembly.balance.rotating_mass`),
+        is shared equally among the bays between bearings. Give this or ``balance_grade``.
+    balance_grade : float or None
+        Balance grade G of ISO 21940-11 [mm/s] (e.g. 6.3 for G 6.3) instead of
+        ``eccentricity``: e_c = G/Ω_max with Ω_max the highest operating speed
+        (``[operating] speed_range``); ``eccentricity`` is then 0 or omitted.
     imbalance_placement : {"mid_bay", "distributed", "worst"}
         Where each bay's imbalance acts: a point force at mid-bay, spread along the bay, or the
         worst in/anti-phase pattern of the mid-bay forces at each speed.
@@ -233,7 +267,21 @@ class Loads(FrozenModel):
     """
 
     eccentricity: Eccentricity = 0.0
+    balance_grade: BalanceGrade | None = None
     imbalance_placement: ImbalancePlacement = "mid_bay"
     load_factor: tuple[LoadFactor, LoadFactor, LoadFactor] = ZERO3
     point: tuple[PointLoad, ...] = Field(default=(), max_length=MAX_POINT_LOADS)
     line: tuple[LineLoad, ...] = Field(default=(), max_length=MAX_LINE_LOADS)
+
+    @model_validator(mode="after")
+    def _check(self) -> Loads:
+        problems = Problems()
+        if self.balance_grade is not None and self.eccentricity != 0.0:
+            problems.add(
+                ("balance_grade",),
+                "give at most one of eccentricity [m] and balance_grade [mm/s] (eccentricity 0 or omitted) "
+                f"(got eccentricity = {format_value(self.eccentricity)}, "
+                f"balance_grade = {format_value(self.balance_grade)})",
+            )
+        problems.raise_if_any()
+        return self

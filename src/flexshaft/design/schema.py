@@ -17,6 +17,7 @@ name of the schema is importable from this module:
 * :mod:`flexshaft.design.requirements`: :class:`Requirements`, the limits the results must meet;
 * :mod:`flexshaft.design.envelope`: :class:`Envelope`, the operating points of the verdict;
 * :mod:`flexshaft.design.temperature_table`: :class:`TemperatureTable` of a lamina;
+* :mod:`flexshaft.design.drivetrain`: :class:`TailRotor`, :class:`MainGearbox` (the torsional ends);
 * this module: :class:`Mesh` and :class:`Design` with the cross-table checks.
 
 Constraints that involve several fields are checked in ``model_validator(mode="after")``
@@ -42,6 +43,7 @@ from flexshaft.design.components import (
     Shaft,
     Tailboom,
 )
+from flexshaft.design.drivetrain import MainGearbox, TailRotor
 from flexshaft.design.envelope import Envelope, EnvelopePoint, check_envelope_temperatures
 from flexshaft.design.fields import (
     LAYUP_ERROR_TYPE,
@@ -88,6 +90,7 @@ __all__ = [
     "Lamina",
     "LineLoad",
     "Loads",
+    "MainGearbox",
     "Material",
     "Mesh",
     "Operating",
@@ -95,6 +98,7 @@ __all__ = [
     "Requirements",
     "Shaft",
     "ShaftSegment",
+    "TailRotor",
     "Tailboom",
     "TemperatureTable",
     "Tube",
@@ -167,6 +171,12 @@ class Design(FrozenModel):
     couplings : tuple of tables
         Flexible couplings that cut the shaft into pieces (``[[couplings]]``;
         docs/segmented-driveline.md).
+    tail_rotor : table or None
+        The tail rotor driven by the shaft's aft end (``[tail_rotor]``); omitted: the aft end is
+        free in twist unless ``shaft.fixed_end`` holds it.
+    main_gearbox : table or None
+        The gearbox driving the shaft's forward end (``[main_gearbox]``); omitted: the forward
+        twist is as ``shaft.fixed_start`` says.
     operating : table
         The operating point (``[operating]``).
     loads : table
@@ -190,6 +200,8 @@ class Design(FrozenModel):
     bearings: tuple[Bearing, ...] = Field(min_length=1, max_length=MAX_BEARINGS)
     disks: tuple[Disk, ...] = Field(default=(), max_length=MAX_DISKS)
     couplings: tuple[Coupling, ...] = Field(default=(), max_length=MAX_COUPLINGS)
+    tail_rotor: TailRotor | None = None
+    main_gearbox: MainGearbox | None = None
     operating: Operating
     loads: Loads = Loads()
     mesh: Mesh = Mesh()
@@ -208,6 +220,7 @@ class Design(FrozenModel):
         self._check_disks(problems)
         self._check_loads(problems)
         self._check_temperature_tables(problems)
+        self._check_drive_ends(problems)
         problems.raise_if_any()
         return self
 
@@ -408,6 +421,22 @@ class Design(FrozenModel):
                 continue
             self._check_station(problems, path + ("x_start",), line.on, line.x_start)
             self._check_station(problems, path + ("x_end",), line.on, line.x_end)
+
+    def _check_drive_ends(self, problems: Problems) -> None:
+        """An elastic gearbox or a tail rotor drives an end's twist: the end must not hold it."""
+        if self.main_gearbox is not None and not self.main_gearbox.rigid and "theta" in self.shaft.fixed_start:
+            problems.add(
+                ("shaft", "fixed_start"),
+                f"holds the twist (theta), but [main_gearbox] stiffness = "
+                f"{format_value(self.main_gearbox.stiffness)} makes the forward end elastic in twist; "
+                f'remove "theta" from fixed_start (got {format_value(list(self.shaft.fixed_start))})',
+            )
+        if self.tail_rotor is not None and "theta" in self.shaft.fixed_end:
+            problems.add(
+                ("shaft", "fixed_end"),
+                'holds the twist (theta) of the aft end that drives the [tail_rotor]; remove "theta" '
+                f"from fixed_end (got {format_value(list(self.shaft.fixed_end))})",
+            )
 
     # -- convenience -----------------------------------------------------------------------------
 
