@@ -169,6 +169,7 @@ def track_modes(
         if step is None:
             step = _match(red, solve, speed, prev, n_modes, refine_loss and viscous is None)
         s_k, Y_k = step
+        Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
         states.append(Y_k)
