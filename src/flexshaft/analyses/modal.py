@@ -18,7 +18,7 @@ import numpy as np
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
-from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -195,7 +195,7 @@ def modes(
     model : Model
         Assembled model.
     speed : float
-        Ω [rad/s], finite and >= 0.
+        Ω [rad/s], finite, >= 0 and at most :data:`~flexshaft.analyses.guards.MAX_SPEED`.
     n_modes : int
         Number of lowest modes returned (>= 1).
     damped : bool
@@ -206,7 +206,7 @@ def modes(
         exact solution of the full problem).
     """
     check_model(model)
-    speed = check_speed(speed)
+    speed = check_spin_speed(speed)
     n_modes = check_count(n_modes, "n_modes")
     if basis_size is not None:
         basis_size = check_count(basis_size, "basis_size")
