@@ -30,7 +30,7 @@ from test_massless_members import effective_mass
 
 from flexshaft.analyses.banded import ResonanceWarning, SingularSystemError
 from flexshaft.analyses.campbell import campbell
-from flexshaft.analyses.guards import MAX_SPEED, UnstableResponseError
+from flexshaft.analyses.guards import MAX_SPEED, RefusedInputError, UnstableResponseError
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.preflight import model_guards
 from flexshaft.analyses.response import frequency_response, imbalance_response, static_response
@@ -88,7 +88,7 @@ def test_every_eigen_and_harmonic_analysis_refuses_speeds_above_the_limit(speed)
         lambda: static_response(model, np.real(loads[:, 0]), speed=speed),
     ]
     for call in calls:
-        with pytest.raises(ValueError, match=message):
+        with pytest.raises(RefusedInputError, match=message):
             call()
 
 
@@ -106,7 +106,7 @@ def test_a_spin_up_to_a_design_at_rest_is_refused():
     """Was: a design with speed_rpm = 0 got a spin-up grid up to 1 rad/s."""
     at_rest = variant("baseline", lambda d: d["operating"].update(speed_rpm=0.0, power=0.0))
     model = build_model(at_rest)
-    with pytest.raises(ValueError, match=r"operating speed is 0 \(operating.speed_rpm = 0\)"):
+    with pytest.raises(RefusedInputError, match=r"operating speed is 0 \(operating.speed_rpm = 0\)"):
         spinup_speeds(model, 10)
     # the analyses at the operating speed itself run: modes at rest, static deflection
     assert np.all(np.isfinite(modes(model, model.speed, 4).eigenvalues))
@@ -254,7 +254,7 @@ def test_an_integral_gain_that_destabilises_the_loop_is_reported_unstable_in_the
     design = variant("baseline", lambda d: d["bearings"][1].update(integral_gain=1e15))
     with pytest.raises(UnstableResponseError, match="the system is unstable there"):
         run_up(build_model(design), 0.5)  # the reproducer: `flexshaft runup --duration 0.5`
-    assert issubclass(UnstableResponseError, ValueError)
+    assert issubclass(UnstableResponseError, RefusedInputError)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -361,3 +361,20 @@ def test_model_guards_report_a_free_massless_member():
 def test_the_tube_constants_are_the_reference_rotors():
     """The closed forms above use the tests/rotors.py tube (guards against a silent change)."""
     assert (DO, DI, L, M_DISK) == (0.05, 0.04, 1.0, 20.0)
+
+
+def test_every_refusal_of_the_lower_layers_is_a_refused_input_error():
+    """A command reports RefusedInputError as a user error (exit 2) and any other exception as a
+    fault of flexshaft (exit 4): the refusals above all derive from it (and from ValueError, as
+    before), while a bug's ValueError does not (the thermal broadcast error of issue 27 was one)."""
+    from flexshaft.analyses.guards import NonFiniteResultError
+
+    for kind in (SingularSystemError, NonFiniteResultError, UnstableResponseError):
+        assert issubclass(kind, RefusedInputError) and issubclass(kind, ValueError)
+    from flexshaft.thermal.tailboom import tailboom_temperatures
+
+    hot_sky = variant("baseline", lambda d: d["thermal"].update(sky_temperature_c=400.0))
+    from flexshaft.thermal.options import thermal_options
+
+    with pytest.raises(RefusedInputError, match="no skin temperature"):
+        tailboom_temperatures(1.0, thermal_options(hot_sky.thermal).environment)

@@ -46,6 +46,7 @@ import scipy.sparse as sp
 from scipy.linalg import lapack
 from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import frequency_coefficient_arrays
 from flexshaft.assembly.model import Model
 
@@ -77,7 +78,7 @@ REFINEMENT_STEPS = 12
 RESONANCE_TOLERANCE = 1e-5
 
 
-class SingularSystemError(ArithmeticError, ValueError):
+class SingularSystemError(ArithmeticError, RefusedInputError):
     """The dynamic stiffness is singular: an undamped system excited exactly at resonance.
 
     Also a ``ValueError``: the cause is the design or the arguments (no damping at a resonance,

@@ -53,6 +53,7 @@ import numpy as np
 import scipy.linalg as la
 import scipy.sparse.linalg as spla
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients, whirl_sign
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import (
@@ -129,7 +130,7 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
     nb = int(min(basis_size, n))
     sparse = method == "sparse" or (method == "auto" and n > SPARSE_BASIS_ABOVE and nb < n // 2)
     if not sparse and 5 * 8.0 * n * n > HARD_MEMORY_BYTES:  # K, M, their copies and the vectors
-        raise ValueError(
+        raise RefusedInputError(
             f"a dense modal basis of {nb} modes on {n:,} free DOFs needs about "
             f"{5 * 8.0 * n * n / 1024**3:.3g} GiB (allowed: {HARD_MEMORY_BYTES / 1024**3:g} GiB); "
             f"ask for fewer than {n // 2:,} basis modes (the sparse solver) or a coarser mesh"
@@ -146,7 +147,7 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
             mu, Phi = la.eigh(dense_M, K.toarray() + _BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])
             w2 = 1.0 / mu - _BASIS_SHIFT
     except (la.LinAlgError, RuntimeError):  # (RuntimeError: SuperLU's "Factor is exactly singular")
-        raise ValueError(
+        raise RefusedInputError(
             "the modal basis cannot be computed: K + M is not positive definite to working "
             "precision, so some free rigid-body motion carries almost no mass or inertia (a "
             "free member of density near 1e-6 kg/m³): support that motion or raise the density"

@@ -40,6 +40,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.guards import (
+    RefusedInputError,
     check_count,
     check_finite_array,
     check_model,
@@ -80,7 +81,7 @@ def spinup_speeds(model: Model, n_speeds: int = 400, start: float = 0.02, stop: 
     if start > stop:
         raise ValueError(f"start must not exceed stop (got start = {start!r}, stop = {stop!r})")
     if not model.speed > 0:
-        raise ValueError(
+        raise RefusedInputError(
             "the design's operating speed is 0 (operating.speed_rpm = 0): a spin-up to it has no speeds; "
             "give the design an operating speed > 0, or the speeds [rad/s] of the analysis"
         )

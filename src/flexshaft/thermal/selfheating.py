@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import scatter
 from flexshaft.laminate import Laminate, equivalent_moduli
@@ -117,7 +118,7 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
     the law's lamina, an isotropic tube's (a metal segment) unchanged."""
     tubes = element_tubes(model)
     if all(t.laminate is None for t in tubes):
-        raise ValueError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
+        raise RefusedInputError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
     E = np.array([t.youngs_modulus for t in tubes], dtype=complex)
     G = np.array([t.shear_modulus for t in tubes], dtype=complex)
     rounded = np.round(np.asarray(temperatures, dtype=float), 6)
@@ -133,7 +134,7 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
                     Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, rounded[e]))
                 )
             except ValueError as error:  # the law took the matrix beyond a valid ply
-                raise ValueError(
+                raise RefusedInputError(
                     f"the matrix temperature law gives no valid ply at {rounded[e]:.6g} K (reference "
                     f"{law.reference_temperature:.6g} K, θ_E {law.modulus_decay:g} K: E_T scaled by "
                     f"{np.exp(-(rounded[e] - law.reference_temperature) / law.modulus_decay):.3g}): {error}; "

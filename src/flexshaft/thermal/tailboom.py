@@ -31,6 +31,7 @@ from typing import Literal
 
 from fluids.numerics import NotBoundedError, brenth
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.thermal.air import AIR_TEMPERATURE_RANGE, air_properties
 from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
 from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment
@@ -171,11 +172,11 @@ def tailboom_temperature(
         "solar_area_fraction, emissivity and solar_absorptivity set it"
     )
     if not lo < hi:
-        raise ValueError(why)
+        raise RefusedInputError(why)
     try:  # fluids' Brent (hyperbolic) root finder: scipy.optimize costs 0.35 s to import
         T = brenth(residual, lo, hi, xtol=1e-10, rtol=1e-14)
     except NotBoundedError as exc:
-        raise ValueError(why) from exc
+        raise RefusedInputError(why) from exc
     h, nu, dimensionless = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
     return BoomTemperature(
         condition=condition,
