@@ -429,7 +429,11 @@ def test_campbell_and_stability_with_a_transfer_function_controller_agree_with_f
             assert abs(peak - s.imag) < 0.05 * bandwidth
             assert abs(peak - omega_n * np.sqrt(1 - 2 * zeta**2)) < 0.01 * bandwidth
             checked += 1
-    assert checked >= 3 * len(speeds)
+    # every speed has a forward translation and a forward tilt mode: the translation pair is
+    # degenerate at every speed (no gyroscopic coupling in translation of the symmetric rotor),
+    # the tilt pair at rest, and a degenerate pair is resolved into one forward and one
+    # backward whirl (flexshaft.analyses.classify.circular_pairs)
+    assert checked == 2 * len(speeds)
 
 
 # ------------------------------------------------------------------------------------------------

@@ -22,7 +22,7 @@ import numpy as np
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
-from flexshaft.analyses.guards import check_count, check_finite_array, check_model, require_finite
+from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
@@ -169,6 +169,7 @@ def track_modes(
         if step is None:
             step = _match(red, solve, speed, prev, n_modes, refine_loss and viscous is None)
         s_k, Y_k = step
+        Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
         states.append(Y_k)
@@ -318,7 +319,7 @@ def campbell(
     Parameters
     ----------
     speeds : array_like
-        Ω [rad/s], increasing, finite, >= 0.
+        Ω [rad/s], increasing, finite, >= 0, at most :data:`~flexshaft.analyses.guards.MAX_SPEED`.
     n_modes : int
         Number of tracked modes (the lowest at the first speed).
     basis_size : int or None
@@ -355,18 +356,9 @@ def campbell(
 
 
 def check_speeds(speeds) -> np.ndarray:
-    """Speeds [rad/s] as a 1-D float array: finite, >= 0, strictly increasing (else ValueError)."""
-    try:
-        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
-    except (TypeError, ValueError):
-        raise ValueError(f"speeds must be a 1-D sequence of numbers [rad/s] (got {speeds!r})") from None
-    if speeds.ndim != 1 or speeds.size == 0:
-        raise ValueError("speeds must be a non-empty 1-D sequence [rad/s]")
-    if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
-        raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
-    if np.any(np.diff(speeds) <= 0):
-        raise ValueError("speeds must be strictly increasing")
-    return speeds
+    """Speeds [rad/s] as a 1-D float array: finite, >= 0, at most
+    :data:`~flexshaft.analyses.guards.MAX_SPEED`, strictly increasing (else ValueError)."""
+    return check_spin_speeds(speeds, "speeds", increasing=True)
 
 
 def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple[CriticalSpeed, ...]:

@@ -15,6 +15,12 @@ Whirl (lateral modes only; others are ``"none"``). With node orbits ``v = Re(V e
 whirl ratio ``r = −2 Σ Im(V̄ W) / Σ(|V|² + |W|²)`` over the shaft nodes is +1 for a circular
 forward orbit and −1 for a backward one; ``|r| <`` :data:`WHIRL_THRESHOLD` is ``"planar"``.
 
+Degenerate pairs. The two whirls of an axisymmetric mode without gyroscopic coupling (a
+symmetric rotor at rest, or its pure translation at any speed) share one eigenvalue, and any
+combination of the pair is a mode: the eigen-solver's choice is arbitrary. Such a pair
+(eigenvalues equal to :data:`DEGENERATE` relative) is resolved into its most forward and most
+backward combinations (:func:`circular_pairs`), so the labels do not depend on round-off.
+
 Component: ``"shaft"`` when the shaft holds more than 90 % of the kinetic energy, ``"boom"``
 below 10 %, else ``"coupled"``.
 """
@@ -24,6 +30,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg as la
 
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -37,12 +44,17 @@ __all__ = [
     "ModeLabels",
     "label_modes",
     "ModalLabeler",
+    "DEGENERATE",
+    "circular_pairs",
 ]
 
 #: Share of kinetic energy in the shaft's twist (or axial motion) that makes a mode torsional (axial).
 KIND_THRESHOLD = 0.5
 #: |whirl ratio| below which a lateral mode is planar.
 WHIRL_THRESHOLD = 0.1
+#: Relative distance of two eigenvalues below which they are one degenerate root (the Newton
+#: refinement converges each to 1e-10, :mod:`flexshaft.analyses.eigen`).
+DEGENERATE = 1e-8
 
 
 @dataclass(frozen=True)
@@ -92,6 +104,49 @@ def whirl_ratio(dofs: DofMap, shapes: np.ndarray) -> np.ndarray:
     return np.where(power > 0, r, 0.0)
 
 
+def circular_pairs(s: np.ndarray, Y: np.ndarray, V: np.ndarray, W: np.ndarray) -> np.ndarray:
+    """``Y`` with each group of degenerate modes resolved by whirl (see the module docstring).
+
+    Parameters
+    ----------
+    s : ndarray
+        Eigenvalues (n_modes,) [rad/s].
+    Y : ndarray
+        Their vectors (n, n_modes), in any coordinates.
+    V, W : ndarray
+        The shaft nodes' v and w of each vector (n_nodes, n_modes).
+
+    Returns
+    -------
+    ndarray
+        Y with the columns of every group of eigenvalues within :data:`DEGENERATE` of each other
+        replaced by the combinations that make the whirl ratio stationary, most forward first
+        (the generalised eigenvectors of the ratio's Hermitian forms on the group), with the
+        norms of the original columns. Other columns are unchanged.
+    """
+    s = np.asarray(s)
+    Y = np.array(Y, dtype=complex)
+    done = np.zeros(s.size, dtype=bool)
+    for k in range(s.size):
+        if done[k]:
+            continue
+        group = np.flatnonzero(~done & (np.abs(s - s[k]) <= DEGENERATE * np.abs(s[k])))
+        done[group] = True
+        if group.size < 2:
+            continue
+        Vg, Wg = V[:, group], W[:, group]
+        power = Vg.conj().T @ Vg + Wg.conj().T @ Wg  # Σ(|V|² + |W|²) as a Hermitian form
+        ratio = 1j * (Vg.conj().T @ Wg - Wg.conj().T @ Vg)  # −2 Σ Im(V̄W) as a Hermitian form
+        floor = np.finfo(float).eps * max(float(np.trace(power).real), np.finfo(float).tiny)
+        if np.linalg.eigvalsh(power)[0] <= 1e3 * floor:
+            continue  # a combination without shaft motion (a boom mode): nothing to resolve
+        _, C = la.eigh(0.5 * (ratio + ratio.conj().T), 0.5 * (power + power.conj().T))
+        combined = Y[:, group] @ C[:, ::-1]
+        norms = np.linalg.norm(Y[:, group], axis=0)
+        Y[:, group] = combined * (norms / np.linalg.norm(combined, axis=0))
+    return Y
+
+
 @dataclass(frozen=True)
 class ModeLabels:
     """Labels of modes (arrays over the modes)."""
@@ -128,6 +183,10 @@ class ModalLabeler:
             groups = {g: dm.unique(idx) for g, idx in groups.items()}
         self._energy = {g: full[idx].T @ MPhi[idx] for g, idx in groups.items()}
         self._v, self._w = full[dm.shaft(nodes, "v")], full[dm.shaft(nodes, "w")]
+
+    def circular(self, s: np.ndarray, Y: np.ndarray) -> np.ndarray:
+        """:func:`circular_pairs` of modes with eigenvalues ``s`` and modal coordinates ``Y``."""
+        return circular_pairs(s, Y, self._v @ Y, self._w @ Y)
 
     def __call__(self, Y: np.ndarray) -> ModeLabels:
         """Labels of the modes with modal coordinates ``Y`` (nb, n_modes)."""

@@ -42,6 +42,7 @@ import numpy as np
 import scipy.linalg as la
 
 from flexshaft.analyses.eigen import ReducedModel
+from flexshaft.analyses.guards import UnstableResponseError
 from flexshaft.assembly.model import Model
 
 __all__ = ["REFRESH_SPEED_FRACTION", "EnvelopeSystem", "EnvelopeRun", "integrate_envelope", "phi_functions"]
@@ -307,9 +308,10 @@ def integrate_envelope(
             error = np.linalg.norm(basis.V @ (small - big)) / 15.0
             size = np.linalg.norm(basis.V @ small)
             if not (np.isfinite(error) and np.isfinite(size)):
-                raise FloatingPointError(
+                raise UnstableResponseError(
                     f"the response overflowed at t = {t:.6g} s, Ω = {speed(t):.6g} rad/s: the system is unstable "
-                    f"there (largest growth rate {max(growth, float(basis.lam.real.max())):.3g} 1/s)"
+                    f"there (largest growth rate {max(growth, float(basis.lam.real.max())):.3g} 1/s); its "
+                    "stability analysis shows which mode and which bearing or controller gains make it so"
                 )
             tolerance = rtol * max(scale, size)
             if error > tolerance and h <= 1e-9 * duration:

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
+from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
-from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -195,7 +195,7 @@ def modes(
     model : Model
         Assembled model.
     speed : float
-        Ω [rad/s], finite and >= 0.
+        Ω [rad/s], finite, >= 0 and at most :data:`~flexshaft.analyses.guards.MAX_SPEED`.
     n_modes : int
         Number of lowest modes returned (>= 1).
     damped : bool
@@ -206,7 +206,7 @@ def modes(
         exact solution of the full problem).
     """
     check_model(model)
-    speed = check_speed(speed)
+    speed = check_spin_speed(speed)
     n_modes = check_count(n_modes, "n_modes")
     if basis_size is not None:
         basis_size = check_count(basis_size, "basis_size")
@@ -220,7 +220,10 @@ def modes(
         order = np.argsort(np.abs(s))[:n_modes]
         s, Z = s[order], Z[:, order]
         red = bare
-    shapes = _normalise(model.dofs, model.dofs.expand(red.shapes(Z)))
+    full = model.dofs.expand(red.shapes(Z))
+    nodes = np.arange(model.dofs.n_shaft_nodes)
+    v, w = (full[model.dofs.shaft(nodes, f)] for f in ("v", "w"))
+    shapes = _normalise(model.dofs, circular_pairs(s, full, v, w))  # a degenerate pair by whirl
     require_finite("eigenvalues", s)
     require_finite("mode shapes", shapes)
     labels = label_modes(model, shapes)

@@ -14,7 +14,7 @@ import numpy as np
 
 from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.banded import solver_for
-from flexshaft.analyses.guards import check_finite_array, check_model
+from flexshaft.analyses.guards import check_finite_array, check_model, check_spin_speeds
 from flexshaft.assembly.model import Model
 
 __all__ = ["ActuatorReceptance", "actuator_receptance"]
@@ -131,9 +131,7 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     check_model(model)
     if not model.actuators:
         raise ValueError("the model has no active bearings: nothing to tune")
-    speeds = check_finite_array("speeds", np.atleast_1d(np.asarray(speeds, dtype=float)), "rad/s")
-    if speeds.ndim != 1 or np.any(speeds < 0):
-        raise ValueError(f"speeds must be a 1-D sequence of finite speeds >= 0 rad/s (got {speeds!r})")
+    speeds = check_spin_speeds(speeds)
     if loads_per_speed_squared is not None:
         check_finite_array("loads_per_speed_squared", loads_per_speed_squared, "N s^2")
     Q1 = imbalance_loads(model) if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)

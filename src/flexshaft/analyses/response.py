@@ -10,8 +10,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.banded import BandedHarmonicSolver, SingularSystemError, solver_for
-from flexshaft.analyses.guards import check_finite_array, check_model, check_speed, require_finite
+from flexshaft.analyses.banded import PIVOT_SCREEN, BandedHarmonicSolver, SingularSystemError, solver_for
+from flexshaft.analyses.guards import (
+    check_finite_array,
+    check_model,
+    check_speed,
+    check_spin_speed,
+    check_spin_speeds,
+    require_finite,
+)
+from flexshaft.analyses.refinement import checked_solve
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
@@ -232,7 +240,7 @@ def frequency_response(model: Model, loads, omega, speed: float | None = None) -
         When Z(ω) is singular (an undamped resonance).
     """
     check_model(model)
-    speed = check_speed(model.speed if speed is None else speed)
+    speed = check_spin_speed(model.speed if speed is None else speed)
     try:
         omegas = np.atleast_1d(np.asarray(omega, dtype=float))
     except (TypeError, ValueError):
@@ -272,12 +280,7 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> Harmoni
         (ndof, [ncases,] nspeeds) complex amplitudes [m, rad].
     """
     check_model(model)
-    try:
-        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
-    except (TypeError, ValueError):
-        raise ValueError(f"speeds must be numbers [rad/s] (got {speeds!r})") from None
-    if not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
-        raise ValueError(f"speeds must be finite and >= 0 rad/s (got {speeds!r})")
+    speeds = check_spin_speeds(speeds)
     _check_loads(model, loads_per_speed_squared)
     out = _solve_many(model, loads_per_speed_squared, [(s, s, s * s) for s in speeds])
     require_finite("imbalance response", out)
@@ -353,7 +356,7 @@ def _static_solve(model: Model, loads, speed: float | None):
 
     check_model(model)
     free = model.dofs.free
-    speed = check_speed(model.speed if speed is None else speed)
+    speed = check_spin_speed(model.speed if speed is None else speed)
     _check_loads(model, loads)
     Q = np.asarray(loads)
     if np.iscomplexobj(Q) and np.any(Q.imag != 0):
@@ -367,16 +370,25 @@ def _static_solve(model: Model, loads, speed: float | None):
         Bs = sp.vstack([a.sensing_rows.tocsr()[:, free] for a in holding]).tocsr()
         A = sp.bmat([[A, -Ba.T], [Bs, None]]).tocsr()
         rhs = np.concatenate([rhs, np.zeros((Ba.shape[0],) + rhs.shape[1:])])
+    singular = (
+        "static stiffness is singular{}: the model has an unconstrained rigid-body motion (a direction "
+        "no bearing, fixed DOF or coupling holds), or a magnetic bearing's negative stiffness k_s cancels "
+        "its static control stiffness"
+    )
     try:
         lu = spla.splu(A.tocsc())
     except RuntimeError as exc:
-        raise SingularSystemError(
-            "static stiffness is singular: the model has an unconstrained rigid-body motion, or a magnetic "
-            "bearing's negative stiffness k_s cancels its static control stiffness"
-        ) from exc
+        raise SingularSystemError(singular.format("")) from exc
     x = lu.solve(rhs)
-    if not np.all(np.isfinite(x)):
-        raise SingularSystemError("static stiffness is singular to working precision")
+    pivots = np.abs(lu.U.diagonal())
+    if not np.all(np.isfinite(x)) or not pivots.min() >= PIVOT_SCREEN * pivots.max():
+        # a pivot of round-off size: regular but ill-conditioned, or singular to working
+        # precision (a rigid-body motion leaves a pivot of ε‖K‖ instead of 0, and the solution
+        # grew as 1/ε: up to 2e12 m for 100 N on a free-free driveline)
+        x = checked_solve(A, rhs.reshape(rhs.shape[0], -1))
+        if x is None:
+            raise SingularSystemError(singular.format(" to working precision"))
+        x = x.reshape(rhs.shape)
     out = np.zeros(Q.shape)
     out[free] = x[: free.size]
     require_finite("static response", out)
@@ -565,9 +577,7 @@ def bearing_reactions(
     dict of str to BearingReaction
         In the model's bearing order.
     """
-    speed = model.speed if speed is None else float(speed)
-    if not np.isfinite(speed) or speed < 0:
-        raise ValueError(f"speed must be a finite number >= 0 rad/s (got {speed!r})")
+    speed = check_spin_speed(model.speed if speed is None else speed)
     q_static = np.asarray(q_static)
     q_dyn = np.asarray(q_at_speed)
     q_dyn = q_dyn[:, None] if q_dyn.ndim == 1 else q_dyn

@@ -39,7 +39,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft._threads import single_blas_thread
-from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
+from flexshaft.analyses.guards import (
+    RefusedInputError,
+    check_count,
+    check_finite_array,
+    check_model,
+    check_speed,
+    check_spin_speed,
+    require_finite,
+)
 from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptance
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.results import ResultMixin, new_dataset
@@ -59,13 +67,26 @@ __all__ = [
 
 
 def spinup_speeds(model: Model, n_speeds: int = 400, start: float = 0.02, stop: float = 1.0) -> np.ndarray:
-    """``n_speeds`` spin speeds from ``start`` to ``stop`` times the operating speed [rad/s]."""
+    """``n_speeds`` spin speeds from ``start`` to ``stop`` times the operating speed [rad/s].
+
+    Raises
+    ------
+    ValueError
+        For a model at rest (``operating.speed_rpm = 0``): a spin-up to it is empty (this used to
+        give a grid up to 1 rad/s); pass the speeds of the analysis explicitly.
+    """
     check_model(model)
     n_speeds = check_count(n_speeds, "n_speeds")
     start, stop = check_speed(start, "start", "(fraction)"), check_speed(stop, "stop", "(fraction)")
     if start > stop:
         raise ValueError(f"start must not exceed stop (got start = {start!r}, stop = {stop!r})")
-    return np.linspace(start, stop, n_speeds) * max(model.speed, 1.0)
+    if not model.speed > 0:
+        raise RefusedInputError(
+            "the design's operating speed is 0 (operating.speed_rpm = 0): a spin-up to it has no speeds; "
+            "give the design an operating speed > 0, or the speeds [rad/s] of the analysis"
+        )
+    check_spin_speed(stop * model.speed, "stop × the operating speed")
+    return np.linspace(start, stop, n_speeds) * model.speed
 
 
 def _per_speed_product(A: np.ndarray, X: np.ndarray) -> np.ndarray:

@@ -17,7 +17,15 @@ cover what only combinations of numbers decide:
   ranges the schema allows for given gains.
 * **The controller law** ``k_i A(s) C(s)``: its state-space realization and its value at
   ``s = iω`` over the frequencies of the analyses must be finite (coefficients beyond
-  ~1e100 or corner frequencies near zero overflow).
+  ~1e100 or corner frequencies near zero overflow), and its poles within
+  :data:`MAX_CONTROLLER_POLE` of the origin. A faster pole is a constant gain at every
+  analysed frequency (its phase lag ω/p is below 1e-6 up to 1e6 rad/s) and costs the
+  eigen-analysis its digits: the pole is a state of the first-order problem, whose eigenvalues
+  err by about ε|p|. Measured on the baseline with ``C(s) = 1e7/(s/p + 1)`` on both bearings:
+  the damped eigenvalues differ from those of ``C = 1e7`` by 4e-12 at p = 1e12 rad/s and
+  4e-14 at 1e14 (the physical ω/p), and by 100 % at 1e16 (a ``denominator = [1e-30, 1]``
+  gave a spurious divergent root at rest). The law's static gain counts as a support
+  stiffness (below): ``denominator = [1, 1e-30]`` gave C(0) = 1e37 N/m.
 * **Every assembled matrix is finite.**
 """
 
@@ -25,10 +33,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from flexshaft.assembly.controller import Controller
 from flexshaft.design import DesignError, Problem
 from flexshaft.design.quantities import MAX_CONTROLLER_COEFFICIENT
 
 __all__ = [
+    "MAX_CONTROLLER_POLE",
     "RIGID_RATIO",
     "check_actuator_law",
     "check_bearing_stiffness",
@@ -39,6 +49,8 @@ __all__ = [
 
 #: Largest support stiffness in units of one shaft element's stiffness (see the module docstring).
 RIGID_RATIO = 1e8
+#: Largest |pole| of a feedback law [rad/s] (160 GHz; see the module docstring).
+MAX_CONTROLLER_POLE = 1e12
 #: Largest |k_i| [N/A] and k_s [N/m] (the schema's ranges for given gains).
 _MAX_CURRENT_GAIN = 1e6
 _MAX_NEGATIVE_STIFFNESS = 1e12
@@ -97,21 +109,36 @@ def check_bearing_stiffness(design, shaft) -> None:
                         )
                     )
         else:
-            gains = {"kp": (bearing.kp or 0.0) * (1.0 if bearing.ki is None else bearing.ki), "ks": bearing.ks or 0.0}
+            current_gain = 1.0 if bearing.ki is None else bearing.ki
+            gains = {"kp": (bearing.kp or 0.0) * current_gain, "ks": bearing.ks or 0.0}
+            labels = {"kp": " (k_i kp)", "ks": ""}
+            law = None if bearing.controller is None else _realizable(bearing)
+            if law is not None:  # its static gain is its support stiffness
+                with np.errstate(all="ignore"):
+                    static = abs(law.proportional_gain) * current_gain
+                gains["controller"] = static if np.isfinite(static) else np.inf
+                labels["controller"] = " (k_i times the static gain of C(s))"
             for name, value in gains.items():
                 if value > RIGID_RATIO * reference["v"]:
                     problems.append(
-                        _too_stiff(
-                            f"bearings[{index}].{name}",
-                            value,
-                            reference["v"],
-                            "N/m",
-                            what["v"] + (" (k_i kp)" if name == "kp" else ""),
-                        )
+                        _too_stiff(f"bearings[{index}].{name}", value, reference["v"], "N/m", what["v"] + labels[name])
                     )
     if problems:
         elements = design.mesh.shaft_elements
         raise DesignError([Problem(p.path, p.message.replace("{elements}", str(elements))) for p in problems], _SOURCE)
+
+
+def _realizable(bearing) -> Controller | None:
+    """The bearing's controller C(s), or None when its realization is refused anyway by
+    :func:`check_actuator_law` (which then gives the more basic reason)."""
+    law = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
+    with np.errstate(all="ignore"):
+        try:
+            parts = law.realization()
+        except (ValueError, np.linalg.LinAlgError, ZeroDivisionError):
+            return None
+        largest = max((float(np.max(np.abs(part), initial=0.0)) for part in parts), default=0.0)
+    return law if np.isfinite(largest) and largest <= MAX_CONTROLLER_COEFFICIENT else None
 
 
 def check_magnet(design, index: int, current_gain: float, negative_stiffness: float) -> None:
@@ -145,7 +172,8 @@ def check_actuator_law(design, index: int, actuator, speed: float) -> None:
 
     The law is evaluated at ``s = iω`` for ω from 1 rad/s to 100 × the largest of the operating
     speed and 1e3 rad/s (and at ω = 0 unless it integrates); the realization's entries must
-    stay below :data:`~flexshaft.design.quantities.MAX_CONTROLLER_COEFFICIENT`.
+    stay below :data:`~flexshaft.design.quantities.MAX_CONTROLLER_COEFFICIENT` and its poles
+    within :data:`MAX_CONTROLLER_POLE`.
     """
     bearing = design.bearings[index]
     reason = _law_problem(actuator, speed)
@@ -159,9 +187,9 @@ def check_actuator_law(design, index: int, actuator, speed: float) -> None:
                 Problem(
                     path,
                     f"the feedback law k_i A(s) C(s) {reason} (allowed: a law finite over the "
-                    f"analysed frequencies with realization entries below "
-                    f"{MAX_CONTROLLER_COEFFICIENT:g}: rescale the {fields}, "
-                    "amplifier_bandwidth or ki)",
+                    f"analysed frequencies, with realization entries below "
+                    f"{MAX_CONTROLLER_COEFFICIENT:g} and poles within {MAX_CONTROLLER_POLE:g} rad/s: "
+                    f"rescale the {fields}, amplifier_bandwidth or ki)",
                 )
             ],
             _SOURCE,
@@ -208,6 +236,15 @@ def _check_laws(actuator, speed: float) -> str | None:
             largest = max((float(np.max(np.abs(part), initial=0.0)) for part in parts), default=0.0)
             if not np.isfinite(largest) or largest > MAX_CONTROLLER_COEFFICIENT:
                 reason = f"has a state-space realization with entries up to {largest:.3g}"
+                break
+            poles = np.linalg.eigvals(parts[0]) if parts[0].size else np.zeros(0)
+            if poles.size and np.max(np.abs(poles)) > MAX_CONTROLLER_POLE:
+                fastest = poles[np.argmax(np.abs(poles))]
+                reason = (
+                    f"has a pole at s = {fastest:.3g} rad/s, beyond {MAX_CONTROLLER_POLE:g} rad/s: a pole that "
+                    "fast is a constant gain at every analysed frequency and costs the eigen-analysis its "
+                    "digits (drop the near-zero leading coefficients of the denominator)"
+                )
                 break
             values = np.concatenate([law(1j * omegas), law.derivative(1j * omegas)])
             if not law.integrates:

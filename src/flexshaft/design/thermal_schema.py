@@ -19,6 +19,16 @@ __all__ = ["Thermal", "BoomConvection", "ShaftConvection"]
 
 Fraction = quantity("-", "fraction from 0 to 1", ge=0.0, le=1.0)
 Celsius = quantity("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+#: The air's properties are evaluated from 200 to 600 K (flexshaft.thermal.air), at the film
+#: temperature (skin + ambient)/2 of the tailboom, whose skin temperature is sought up to the
+#: ambient + 300 K: an ambient within 200-450 K keeps every film temperature in range.
+AmbientCelsius = quantity(
+    "degC",
+    "ambient air temperature from -73 °C (200.15 K) to 176 °C (449.15 K): the air properties are "
+    "evaluated from 200 to 600 K, at film temperatures up to the ambient + 150 K",
+    ge=-73.0,
+    le=176.0,
+)
 Zenith = quantity("deg", "solar zenith angle within ±90 deg", ge=-90.0, le=90.0)
 Conductivity = quantity(
     "W/(m K)", "thermal conductivity from 1e-3 (below an aerogel, 0.013) to 2000 W/(m K) (diamond)", ge=1e-3, le=2000.0
@@ -102,7 +112,7 @@ class Thermal(FrozenModel):
     solar_zenith_deg: Zenith = 0.0
     sky_temperature_c: Celsius = 11.85  # 285 K
     air_density: AirDensity = 1.225
-    ambient_temperature_c: Celsius = 25.6
+    ambient_temperature_c: AmbientCelsius = 25.6
     solar_area_fraction: Fraction = 0.69
     boom_convection: BoomConvection = "hilpert"
     shaft_convection: ShaftConvection = "becker"

@@ -18,9 +18,12 @@ from dataclasses import dataclass
 import numpy as np
 from fluids.atmosphere import ATMOSPHERE_1976
 
-__all__ = ["AIR_GAS_CONSTANT", "AirProperties", "air_properties"]
+__all__ = ["AIR_GAS_CONSTANT", "AIR_TEMPERATURE_RANGE", "AirProperties", "air_properties"]
 
 AIR_GAS_CONSTANT = 287.05  # J/(kg K)
+#: Temperatures [K] at which :func:`air_properties` evaluates air (c_p is interpolated from
+#: 250-400 K data and extrapolated linearly; the correlations are not checked beyond).
+AIR_TEMPERATURE_RANGE = (200.0, 600.0)
 _CP_T = np.array([250.0, 300.0, 350.0, 400.0])  # K, Incropera Table A.4
 _CP = np.array([1006.0, 1007.0, 1009.0, 1014.0])  # J/(kg K)
 
@@ -65,8 +68,9 @@ def air_properties(temperature: float, pressure: float = 101325.0) -> AirPropert
         Outside 200-600 K, where the c_p interpolation and the correlations are not checked.
     """
     T = float(temperature)
-    if not 200.0 <= T <= 600.0:
-        raise ValueError(f"air temperature must be within 200-600 K, got {T!r} K")
+    low, high = AIR_TEMPERATURE_RANGE
+    if not low <= T <= high:
+        raise ValueError(f"air temperature must be within {low:g}-{high:g} K, got {T!r} K")
     cp = float(np.interp(T, _CP_T, _CP, left=_CP[0], right=None))
     if T > _CP_T[-1]:  # gentle linear extrapolation of the last interval
         cp = float(_CP[-1] + (T - _CP_T[-1]) * (_CP[-1] - _CP[-2]) / (_CP_T[-1] - _CP_T[-2]))

@@ -14,7 +14,7 @@ import numpy as np
 
 from flexshaft.assembly.model import Model
 from flexshaft.thermal.correlations import Nusselt
-from flexshaft.thermal.heat import HeatSources, LossModel, heat_sources
+from flexshaft.thermal.heat import HeatSources, LossModel, element_tubes, heat_sources
 from flexshaft.thermal.options import ThermalOptions
 from flexshaft.thermal.shaft import (
     ShaftTemperature,
@@ -48,15 +48,17 @@ class ShaftThermal:
     temperature : ShaftTemperature
         Node temperatures and energy balance.
     nusselt : Nusselt or None
-        Rotating-cylinder correlation used (None when h was given).
-    conductivity : float
-        Axial wall conductivity [W/(m K)].
+        Rotating-cylinder correlation used (None when h was given; of the diameter covering the
+        most length when a segmented shaft's tubes differ).
+    conductivity : float or ndarray
+        Axial wall conductivity [W/(m K)]; one per element (nel,) when a segmented shaft's tubes
+        differ.
     """
 
     sources: HeatSources
     temperature: ShaftTemperature
     nusselt: Nusselt | None
-    conductivity: float
+    conductivity: float | np.ndarray
 
     @property
     def peak_rise(self) -> float:
@@ -97,14 +99,22 @@ def shaft_air_temperature(tailboom, options: ThermalOptions | None = None) -> fl
 
 def shaft_conductivity(
     model: Model, options: ThermalOptions | None = None, isotropic: float = ISOTROPIC_SHAFT_CONDUCTIVITY
-) -> float:
+) -> float | np.ndarray:
     """Axial wall conductivity [W/(m K)]: the laminate rule with the options' ply
-    conductivities, or ``isotropic`` for a metal shaft."""
+    conductivities, or ``isotropic`` for a metal shaft; one value per element (nel,) when the
+    tubes of a segmented shaft differ in it."""
     options = options or ThermalOptions()
-    lam = model.shaft.laminate
-    if lam is None:
-        return isotropic
-    return laminate_axial_conductivity(lam, options.fibre_conductivity, options.transverse_conductivity)
+    values = {}
+    for tube in element_tubes(model):
+        if id(tube) not in values:
+            lam = tube.laminate
+            values[id(tube)] = (
+                isotropic
+                if lam is None
+                else laminate_axial_conductivity(lam, options.fibre_conductivity, options.transverse_conductivity)
+            )
+    per_element = np.array([values[id(t)] for t in element_tubes(model)])
+    return float(per_element[0]) if np.all(per_element == per_element[0]) else per_element
 
 
 def shaft_thermal(
@@ -141,12 +151,21 @@ def shaft_thermal(
     options = options or ThermalOptions()
     tailboom = None if model.design is None else model.design.tailboom
     T_air = shaft_air_temperature(tailboom, options) if air_temperature is None else float(air_temperature)
-    Do, Di = model.shaft.outer_diameter, model.shaft.inner_diameter
+    tubes = element_tubes(model)
+    Do = np.array([t.outer_diameter for t in tubes])
+    Di = np.array([t.inner_diameter for t in tubes])
     nusselt = None
     if heat_transfer_coefficient is None:
-        heat_transfer_coefficient, nusselt = rotating_shaft_convection(
-            Do, model.speed, T_air, options.shaft_convection, options.environment.air_pressure
-        )
+        ends = model.dofs.shaft_element_x
+        lengths = ends[:, 1] - ends[:, 0]
+        diameters, inverse = np.unique(Do, return_inverse=True)
+        convection = [
+            rotating_shaft_convection(D, model.speed, T_air, options.shaft_convection, options.environment.air_pressure)
+            for D in diameters
+        ]
+        heat_transfer_coefficient = np.array([h for h, _ in convection])[inverse.ravel()]
+        covered = np.bincount(inverse.ravel(), weights=lengths, minlength=diameters.size)
+        nusselt = convection[int(np.argmax(covered))][1]
     k = shaft_conductivity(model, options) if conductivity is None else float(conductivity)
     sources = sources or heat_sources(model, loss_model)
     temp = solve_shaft_temperature(

@@ -37,6 +37,15 @@ Static axial and torsional strains (torque) are not cycled in either model.
 Which model a design uses is its ``[analysis] internal_damping`` (the same choice as every
 other analysis of the model); ``loss_model=None`` in the functions below means that choice,
 and an explicit ``"thesis"`` or ``"rotating"`` overrides it for a comparison.
+
+Segmented shafts
+----------------
+A segmented shaft (``[[shaft.segments]]``, ``[[couplings]]``) has two nodes at each coupling,
+one on each side, and no shaft element between them: the elements are those of
+:meth:`~flexshaft.assembly.dofs.DofMap.element_dofs` (never consecutive nodes), each with the
+tube of its own segment (:func:`element_tubes`). The couplings themselves dissipate nothing
+here (their stiffness is real). The stations of the heat and temperature are the element ends,
+a coupling's two nodes counted once (:func:`thermal_stations`).
 """
 
 from __future__ import annotations
@@ -59,6 +68,9 @@ __all__ = [
     "split_whirl",
     "static_circular_amplitude",
     "shaft_loss_matrices",
+    "shaft_stiffness_matrices",
+    "element_tubes",
+    "thermal_stations",
     "element_amplitudes",
     "shaft_response_amplitudes",
     "heat_sources",
@@ -152,42 +164,66 @@ def static_circular_amplitude(X_static: np.ndarray) -> np.ndarray:
     return out
 
 
+def element_tubes(model: Model) -> tuple:
+    """The tube of every shaft element, (nel,) tuple of
+    :class:`~flexshaft.assembly.model.ShaftProperties`: its segment's (the ``[shaft]`` tube for
+    a one-piece shaft or a model without segments)."""
+    ends = model.dofs.shaft_element_x
+    segments = model.segments
+    if len(segments) <= 1:
+        tube = segments[0].properties if segments else model.shaft
+        return (tube,) * len(ends)
+    zone = np.searchsorted([seg.x_end for seg in segments[:-1]], 0.5 * (ends[:, 0] + ends[:, 1]))
+    return tuple(segments[k].properties for k in zone)
+
+
+def thermal_stations(model: Model) -> np.ndarray:
+    """Stations of the shaft elements' ends (nel + 1,) [m], increasing: the node stations with
+    the two nodes of each coupling joint counted once."""
+    x = np.asarray(model.dofs.shaft_x, dtype=float)
+    joints = np.asarray(model.dofs.shaft_joints, dtype=int)
+    return np.delete(x, joints + 1) if joints.size else x
+
+
 def shaft_loss_matrices(model: Model, youngs_moduli=None, shear_moduli=None) -> np.ndarray:
     """Loss stiffness Im(K_e) of every shaft element, (nel, 12, 12) [N/m, N m/rad].
 
     ``youngs_moduli``/``shear_moduli`` (nel,) complex [Pa] give per-element moduli (default:
-    the model's uniform E*, G*).
+    each element's tube, :func:`element_tubes`).
     """
     return shaft_stiffness_matrices(model, youngs_moduli, shear_moduli).imag
 
 
 def shaft_stiffness_matrices(model: Model, youngs_moduli=None, shear_moduli=None) -> np.ndarray:
-    """Complex stiffness K_e of every shaft element, (nel, 12, 12), with optional per-element
-    moduli (nel,) [Pa]; the shear option follows the design as in the assembly."""
-    sh = model.shaft
-    L = np.diff(model.dofs.shaft_x)
-    section = TubeSection(sh.outer_diameter, sh.inner_diameter)
-    E = (
-        np.full(L.size, sh.youngs_modulus, dtype=complex)
-        if youngs_moduli is None
-        else np.asarray(youngs_moduli, dtype=complex)
-    )
-    G = (
-        np.full(L.size, sh.shear_modulus, dtype=complex)
-        if shear_moduli is None
-        else np.asarray(shear_moduli, dtype=complex)
-    )
+    """Complex stiffness K_e of every shaft element (the elements of
+    :meth:`~flexshaft.assembly.dofs.DofMap.element_dofs`), (nel, 12, 12), each with its own
+    tube's section and optional per-element moduli (nel,) [Pa]; the shear option follows the
+    design as in the assembly."""
+    ends = model.dofs.shaft_element_x
+    L = ends[:, 1] - ends[:, 0]
+    tubes = element_tubes(model)
+    E = np.array([t.youngs_modulus for t in tubes], dtype=complex)
+    G = np.array([t.shear_modulus for t in tubes], dtype=complex)
+    if youngs_moduli is not None:
+        E = np.broadcast_to(np.asarray(youngs_moduli, dtype=complex), L.shape)
+    if shear_moduli is not None:
+        G = np.broadcast_to(np.asarray(shear_moduli, dtype=complex), L.shape)
     shear = bool(getattr(getattr(model.design, "shaft", None), "shear_deformation", False))
     out = np.empty((L.size, 12, 12), dtype=complex)
-    pairs = np.stack([E, G], axis=1)
-    uniq, inverse = np.unique(pairs, axis=0, return_inverse=True)
-    for k, (Ek, Gk) in enumerate(uniq):
+    tube_index: dict[int, int] = {}
+    index = [tube_index.setdefault(id(t), len(tube_index)) for t in tubes]  # the segments' tubes
+    table = np.column_stack([np.asarray(index, dtype=float).reshape(-1), E.real, E.imag, G.real, G.imag])
+    uniq, inverse = np.unique(table, axis=0, return_inverse=True)
+    for k, row in enumerate(uniq):
         sel = np.flatnonzero(inverse.ravel() == k)
+        tube = tubes[sel[0]]
+        Ek, Gk = complex(row[1], row[2]), complex(row[3], row[4])
+        section = TubeSection(tube.outer_diameter, tube.inner_diameter)
         kappa = None
         if shear:
             nu = float(np.clip(Ek.real / (2 * Gk.real) - 1, 0.0, 0.5))
             kappa = cowper_shear_coefficient(section, nu)
-        out[sel] = shaft_element_matrices(L[sel], section, Ek, Gk, sh.density, kappa)[1]
+        out[sel] = shaft_element_matrices(L[sel], section, Ek, Gk, tube.density, kappa)[1]
     return out
 
 
@@ -219,7 +255,7 @@ class HeatSources:
     Attributes
     ----------
     x : ndarray
-        Shaft node stations (nel + 1,) [m].
+        Stations of the elements' ends (nel + 1,) [m] (:func:`thermal_stations`).
     vibration : ndarray
         Mechanism 1, the imbalance response (nel,) [W] (worst load case when several).
     static : ndarray
@@ -293,4 +329,4 @@ def heat_sources(
         static = harmonic_loss_power(Xb, Kpp, Omega)
     else:
         static = harmonic_loss_power(static_circular_amplitude(Xs), Kpp, Omega)
-    return HeatSources(np.asarray(model.dofs.shaft_x, dtype=float), vibration, static, loss_model, Omega)
+    return HeatSources(thermal_stations(model), vibration, static, loss_model, Omega)

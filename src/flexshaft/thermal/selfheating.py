@@ -24,12 +24,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import scatter
 from flexshaft.laminate import Laminate, equivalent_moduli
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
 from flexshaft.thermal.heat import (
     LossModel,
+    element_tubes,
     heat_sources,
     resolve_loss_model,
     shaft_response_amplitudes,
@@ -114,15 +116,34 @@ def model_with_shaft_moduli(model: Model, youngs_moduli, shear_moduli) -> Model:
 
 
 def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.ndarray):
-    lam = model.shaft.laminate
-    if lam is None:
-        raise ValueError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
-    rounded = np.round(temperatures, 6)
-    uniq, inverse = np.unique(rounded, return_inverse=True)
-    E, G = np.empty(uniq.size, complex), np.empty(uniq.size, complex)
-    for k, T in enumerate(uniq):
-        E[k], G[k] = equivalent_moduli(Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, T)))
-    return E[inverse.ravel()], G[inverse.ravel()]
+    """Complex moduli (nel,) of each element's tube at its temperature: a laminated tube's from
+    the law's lamina, an isotropic tube's (a metal segment) unchanged."""
+    tubes = element_tubes(model)
+    if all(t.laminate is None for t in tubes):
+        raise RefusedInputError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
+    E = np.array([t.youngs_modulus for t in tubes], dtype=complex)
+    G = np.array([t.shear_modulus for t in tubes], dtype=complex)
+    rounded = np.round(np.asarray(temperatures, dtype=float), 6)
+    cache: dict = {}
+    for e, tube in enumerate(tubes):
+        lam = tube.laminate
+        if lam is None:
+            continue
+        key = (id(tube), rounded[e])
+        if key not in cache:
+            try:
+                cache[key] = equivalent_moduli(
+                    Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, rounded[e]))
+                )
+            except ValueError as error:  # the law took the matrix beyond a valid ply
+                raise RefusedInputError(
+                    f"the matrix temperature law gives no valid ply at {rounded[e]:.6g} K (reference "
+                    f"{law.reference_temperature:.6g} K, θ_E {law.modulus_decay:g} K: E_T scaled by "
+                    f"{np.exp(-(rounded[e] - law.reference_temperature) / law.modulus_decay):.3g}): {error}; "
+                    "[thermal] matrix_reference_temperature_c and matrix_modulus_decay set it"
+                ) from None
+        E[e], G[e] = cache[key]
+    return E, G
 
 
 @dataclass(frozen=True)
@@ -209,7 +230,7 @@ def self_heating(
     loss_model = resolve_loss_model(model, loss_model)
     tailboom = None if model.design is None else model.design.tailboom
     T_air = shaft_air_temperature(tailboom, options) if air_temperature is None else float(air_temperature)
-    nel = model.dofs.n_shaft_nodes - 1
+    nel = len(model.dofs.shaft_element_nodes)
     last: dict[str, ShaftThermal] = {}
 
     def update(T_el: np.ndarray) -> np.ndarray:

@@ -16,6 +16,11 @@ Convection from the rotating tube in still air inside the boom fairing:
 ``h = Nu k_air / D_o`` with Re_ω = Ω D_o² / ν (Becker / Kays & Bjorklund by default, Kendoush as
 the thesis's eq. 2.63), air at the boom temperature. Conduction along the wall uses the axial
 conductivity of the laminate, Σ t_k (k_L cos² α_k + k_T sin² α_k) / t.
+
+The conductivity, wall area, perimeter and h may differ per element (a segmented shaft: each
+segment's tube); a node then owns half of each adjacent element's conductance and surface. A
+coupling joint is one node: the coupling is assumed to conduct like the tube with no contact
+resistance (assumed: its flanges are metal and short).
 """
 
 from __future__ import annotations
@@ -79,11 +84,13 @@ class ShaftTemperature:
     air_temperature, end_temperatures : float, (float, float)
         T_∞ [K] and the Dirichlet end temperatures [K].
     heat_transfer_coefficient : float
-        h [W/(m^2 K)].
+        h [W/(m^2 K)] (the convecting-surface-weighted mean when it differs per element).
     convected : ndarray
         Heat convected from each node's control volume (n,) [W].
     end_flows : (float, float)
         Heat leaving through the forward and aft ends into the boom [W].
+    element_heat_transfer : ndarray or None
+        h of each element (n − 1,) [W/(m^2 K)].
     """
 
     x: np.ndarray
@@ -94,6 +101,7 @@ class ShaftTemperature:
     heat_transfer_coefficient: float
     convected: np.ndarray
     end_flows: tuple[float, float]
+    element_heat_transfer: np.ndarray | None = None
 
     @property
     def element_temperature(self) -> np.ndarray:
@@ -135,14 +143,14 @@ def solve_shaft_temperature(
         Node stations (n ≥ 3,) [m], increasing.
     element_power : array_like
         Heat generated per element (n − 1,) [W].
-    conductivity : float
-        Axial wall conductivity k [W/(m K)].
-    wall_area : float
-        Conducting area π(D_o² − D_i²)/4 [m^2].
-    perimeter : float
-        Convecting perimeter π D_o [m].
-    heat_transfer_coefficient : float
-        h [W/(m^2 K)].
+    conductivity : float or array_like
+        Axial wall conductivity k [W/(m K)], one value or one per element (n − 1,).
+    wall_area : float or array_like
+        Conducting area π(D_o² − D_i²)/4 [m^2], one value or one per element.
+    perimeter : float or array_like
+        Convecting perimeter π D_o [m], one value or one per element.
+    heat_transfer_coefficient : float or array_like
+        h [W/(m^2 K)], one value or one per element.
     air_temperature : float
         T_∞ [K].
     end_temperatures : (float, float) or None
@@ -155,19 +163,32 @@ def solve_shaft_temperature(
         raise ValueError("x must be at least 3 increasing stations [m]")
     if P.shape != L.shape:
         raise ValueError(f"element_power must have one value per element ({L.size}), got shape {P.shape}")
-    for name, v in (("conductivity", conductivity), ("wall_area", wall_area), ("perimeter", perimeter)):
-        if not (np.isfinite(v) and v > 0):
-            raise ValueError(f"{name} must be finite and > 0, got {v!r}")
-    if not (np.isfinite(heat_transfer_coefficient) and heat_transfer_coefficient >= 0):
-        raise ValueError(f"heat_transfer_coefficient must be finite and >= 0, got {heat_transfer_coefficient!r}")
+    per_element = {}
+    for name, v, low in (
+        ("conductivity", conductivity, 0.0),
+        ("wall_area", wall_area, 0.0),
+        ("perimeter", perimeter, 0.0),
+        ("heat_transfer_coefficient", heat_transfer_coefficient, None),
+    ):
+        try:
+            values = np.broadcast_to(np.asarray(v, dtype=float), L.shape)
+        except ValueError:
+            raise ValueError(
+                f"{name} must be one value or one per element ({L.size}), got shape {np.shape(v)}"
+            ) from None
+        if not (np.all(np.isfinite(values)) and (np.all(values > low) if low is not None else np.all(values >= 0))):
+            raise ValueError(f"{name} must be finite and {'> 0' if low is not None else '>= 0'}, got {v!r}")
+        per_element[name] = values
     Ta, Tb = (air_temperature, air_temperature) if end_temperatures is None else map(float, end_temperatures)
 
     n = x.size
-    cond = conductivity * wall_area / L  # (n−1,) [W/K]
-    ell = np.zeros(n)
-    ell[:-1] += L / 2
-    ell[1:] += L / 2
-    conv = heat_transfer_coefficient * perimeter * ell  # (n,) [W/K]
+    cond = per_element["conductivity"] * per_element["wall_area"] / L  # (n−1,) [W/K]
+    surface = per_element["heat_transfer_coefficient"] * per_element["perimeter"] * L  # h P L per element [W/K]
+    conv = np.zeros(n)  # (n,) [W/K]: half of each adjacent element's surface
+    conv[:-1] += surface / 2
+    conv[1:] += surface / 2
+    h, area = per_element["heat_transfer_coefficient"], per_element["perimeter"] * L
+    h_mean = float(h[0]) if np.all(h == h[0]) else float(np.sum(h * area) / np.sum(area))
     src = np.zeros(n)
     src[:-1] += P / 2
     src[1:] += P / 2
@@ -191,5 +212,13 @@ def solve_shaft_temperature(
     q0 = src[0] + cond[0] * (T[1] - T[0]) - convected[0]
     qn = src[-1] + cond[-1] * (T[-2] - T[-1]) - convected[-1]
     return ShaftTemperature(
-        x, T, P, float(air_temperature), (Ta, Tb), float(heat_transfer_coefficient), convected, (float(q0), float(qn))
+        x,
+        T,
+        P,
+        float(air_temperature),
+        (Ta, Tb),
+        h_mean,
+        convected,
+        (float(q0), float(qn)),
+        np.array(per_element["heat_transfer_coefficient"]),
     )

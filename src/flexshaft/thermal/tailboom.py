@@ -17,7 +17,10 @@ The elliptical boom is replaced by a circle of the same perimeter (D = P/π, Ram
 perimeter at the length-averaged semi-axes; exact average for the proportional baseline taper):
 the convective and radiating area then equals the real skin area. The shaft's heat is
 negligible against the boom's solar load and is not in this balance. The nonlinear equation is
-solved by Brent's method on [T_sky − 100 K, T_amb + 300 K].
+solved by Brent's method on [T_sky − 100 K, T_amb + 300 K], narrowed so that the film
+temperature stays within the 200-600 K of the air properties
+(:func:`~flexshaft.thermal.air.air_properties`); a skin temperature outside it is refused with
+the environment fields that set it.
 """
 
 from __future__ import annotations
@@ -28,7 +31,8 @@ from typing import Literal
 
 from fluids.numerics import NotBoundedError, brenth
 
-from flexshaft.thermal.air import air_properties
+from flexshaft.analyses.guards import RefusedInputError
+from flexshaft.thermal.air import AIR_TEMPERATURE_RANGE, air_properties
 from flexshaft.thermal.correlations import ForcedMethod, Nusselt, churchill_chu_nusselt, forced_cylinder_nusselt
 from flexshaft.thermal.environment import GRAVITY, STEFAN_BOLTZMANN, ThermalEnvironment
 from flexshaft.units import kelvin_to_celsius
@@ -44,6 +48,8 @@ __all__ = [
 ]
 
 BoomCondition = Literal["hover", "parked"]
+#: Temperatures at which the air's properties are evaluated [K] (flexshaft.thermal.air).
+_AIR_RANGE = AIR_TEMPERATURE_RANGE
 
 
 @dataclass(frozen=True)
@@ -155,12 +161,22 @@ def tailboom_temperature(
         h, _, _ = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
         return absorbed - eps_sigma * (T**4 - env.sky_temperature**4) - h * (T - env.ambient_temperature)
 
-    lo = max(min(env.sky_temperature, env.ambient_temperature) - 100.0, 200.0)
-    hi = env.ambient_temperature + 300.0
+    T_amb = env.ambient_temperature
+    lo = max(min(env.sky_temperature, T_amb) - 100.0, 200.0, 2 * _AIR_RANGE[0] - T_amb)
+    hi = min(T_amb + 300.0, 2 * _AIR_RANGE[1] - T_amb)
+    why = (
+        f"tailboom energy balance ({condition}): no skin temperature between {lo:.6g} K and {hi:.6g} K, "
+        f"where the film temperature stays within the air properties' {_AIR_RANGE[0]:g}-{_AIR_RANGE[1]:g} K "
+        f"(ambient {T_amb:.6g} K, sky {env.sky_temperature:.6g} K, absorbed sun {absorbed:.6g} W/m²): "
+        "[thermal] ambient_temperature_c, sky_temperature_c, solar_constant, solar_fraction, "
+        "solar_area_fraction, emissivity and solar_absorptivity set it"
+    )
+    if not lo < hi:
+        raise RefusedInputError(why)
     try:  # fluids' Brent (hyperbolic) root finder: scipy.optimize costs 0.35 s to import
         T = brenth(residual, lo, hi, xtol=1e-10, rtol=1e-14)
     except NotBoundedError as exc:
-        raise ValueError(f"tailboom energy balance: no skin temperature between {lo:.6g} K and {hi:.6g} K") from exc
+        raise RefusedInputError(why) from exc
     h, nu, dimensionless = boom_heat_transfer_coefficient(T, diameter, condition, env, method)
     return BoomTemperature(
         condition=condition,
