@@ -120,3 +120,21 @@ def test_log_decrement_grows_without_bound_as_the_damping_ratio_nears_one(model)
     expected = 2 * math.pi * zeta / math.sqrt(1 - zeta**2)
     # ζ near 1 amplifies the relative error of ζ by 1/(1 − ζ²) ≈ 50: 50 × 1e-4 asserted
     assert m.log_decrements == pytest.approx([expected, expected], rel=5e-3)
+
+
+def test_the_stability_margin_is_the_least_damped_mode():
+    # A dashpot of different strength in the two planes: the v- and w-plane disk modes have
+    # ζ_v = 0.3 and ζ_w = 0.1 (each plane is its own single-DOF oscillator); the margin at every
+    # speed is the smaller one, and each mode's log decrement is its own plane's.
+    from rotors import jeffcott_text
+
+    from flexshaft.assembly import build_model
+    from flexshaft.design import loads_design
+
+    c_w = 2 * 0.1 * math.sqrt(K_SHAFT * M_DISK)
+    text = jeffcott_text(0.0, C_E).replace(f"w = {C_E}", f"w = {c_w}")
+    assert f"w = {c_w}" in text
+    s = stability(build_model(loads_design(text)), SPEEDS, n_modes=2)
+    assert s.stability_margin == pytest.approx(np.full(3, 0.1), rel=REL)
+    expected = sorted(2 * math.pi * z / math.sqrt(1 - z**2) for z in (0.1, ZETA))
+    assert np.sort(s.log_decrements, axis=1) == pytest.approx(np.tile(expected, (3, 1)), rel=REL)
