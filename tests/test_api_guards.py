@@ -64,6 +64,14 @@ def variant(name: str, change) -> object:
     return design_from_dict(data)
 
 
+def without_tables(data: dict) -> dict:
+    """The design data with no lamina temperature table: the assumed matrix law
+    (``[thermal] matrix_*``) then sets the lamina at a temperature (a table replaces the law)."""
+    for material in data["materials"].values():
+        material.pop("temperature_table", None)
+    return data
+
+
 # ---------------------------------------------------------------------------------------------
 # Speeds
 
@@ -285,7 +293,7 @@ def test_thermal_combinations_the_correlations_cannot_evaluate_are_reported(chan
     film temperature; a reference temperature of 400 °C with θ_E = 5 K stiffens E_T by 8e30 at
     the shaft's air, beyond a valid ply. Each is a problem naming the fields (was a ValueError
     from inside the analysis)."""
-    design = variant("baseline", lambda d: d["thermal"].update(change))
+    design = variant("baseline", lambda d: without_tables(d)["thermal"].update(change))
     problems = thermal_guards(design)
     assert len(problems) == 1 and field in problems[0].message
 
@@ -327,7 +335,9 @@ GEOMETRY = {"air_gap": 5e-4, "bias_current": 5.0, "pole_area": 5e-4}
         ),
         (lambda d: d["thermal"].update(sky_temperature_c=400.0), "thermal"),
         (
-            lambda d: d["thermal"].update(matrix_reference_temperature_c=400.0, matrix_modulus_decay=5.0),
+            lambda d: without_tables(d)["thermal"].update(
+                matrix_reference_temperature_c=400.0, matrix_modulus_decay=5.0
+            ),
             "thermal.matrix_reference_temperature_c",
         ),
     ],

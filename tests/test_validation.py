@@ -222,12 +222,34 @@ def test_export_script_writes_the_packaged_designs(tmp_path):
 
 def test_the_documented_table_is_the_one_the_cases_produce(report):
     """docs/validation.md holds markdown(run_validation()) between its markers: flexshaft's
-    values to five significant figures and differences to 0.001 %, so that machine round-off
-    does not change the page. Regenerate with ``python -m flexshaft.validation docs/validation.md``."""
+    values to five significant figures and differences to 0.001 %, compared within one unit of
+    their last digit, so that machine round-off does not fail the test. Regenerate with ``python -m flexshaft.validation docs/validation.md``."""
     text = DOC.read_text(encoding="utf-8")
     assert START in text and END in text
-    documented = text.split(START, 1)[1].split(END, 1)[0].strip()
-    assert documented == markdown(report).strip(), "docs/validation.md is stale: regenerate its table"
+    documented = _table_rows(text.split(START, 1)[1].split(END, 1)[0])
+    generated = _table_rows(markdown(report))
+    stale = "docs/validation.md is stale: regenerate its table (python -m flexshaft.validation docs/validation.md)"
+    assert len(documented) == len(generated), stale
+    for doc_row, new_row in zip(documented, generated):
+        # every cell but flexshaft's value and the difference is text from the case data: equal
+        assert doc_row[:3] + doc_row[5:] == new_row[:3] + new_row[5:], f"{stale}: {doc_row} != {new_row}"
+        # flexshaft's value (five significant figures) and the difference (to 0.001 %) may sit on a
+        # rounding boundary, where round-off of another BLAS build moves the last digit: they agree
+        # within one unit of that digit (2e-4 relative, 0.0015 percentage points)
+        doc_value, new_value = float(doc_row[3]), float(new_row[3])
+        assert abs(doc_value - new_value) <= 2e-4 * abs(new_value), f"{stale}: {doc_row} != {new_row}"
+        assert abs(_percent(doc_row[4]) - _percent(new_row[4])) <= 0.0015, f"{stale}: {doc_row} != {new_row}"
+
+
+def _table_rows(table: str) -> list[list[str]]:
+    """The cells of each body row of a markdown table."""
+    rows = [re.split(r"(?<!\\)\|", line.strip()[1:-1]) for line in table.strip().splitlines() if line.startswith("|")]
+    return [[cell.strip() for cell in row] for row in rows[2:]]
+
+
+def _percent(cell: str) -> float:
+    """A difference cell (``+0.012 %``, ``< 0.001 %``) in percent."""
+    return 0.0 if cell.startswith("<") else float(cell.rstrip(" %"))
 
 
 def test_the_page_lists_every_source():

@@ -238,7 +238,7 @@ def markdown(report: ValidationReport) -> str:
                 + " | ".join(
                     [
                         f"[`{c.id}`](#{c.id.replace('.', '')})" if first else "",
-                        f"{label} [{c.unit}]",
+                        f"{label} [{c.unit}]".replace("|", "\\|"),  # |s| in a table cell
                         published_text(p),
                         significant(v, 5),
                         percent(d),
