@@ -223,7 +223,8 @@ def test_export_script_writes_the_packaged_designs(tmp_path):
 def test_the_documented_table_is_the_one_the_cases_produce(report):
     """docs/validation.md holds markdown(run_validation()) between its markers: flexshaft's
     values to five significant figures and differences to 0.001 %, compared within one unit of
-    their last digit, so that machine round-off does not fail the test. Regenerate with ``python -m flexshaft.validation docs/validation.md``."""
+    their last digit, so that machine round-off does not fail the test. Regenerate with
+    ``python -m flexshaft.validation docs/validation.md``."""
     text = DOC.read_text(encoding="utf-8")
     assert START in text and END in text
     documented = _table_rows(text.split(START, 1)[1].split(END, 1)[0])
