@@ -28,10 +28,10 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.transient import default_basis_size, run_up, steady_state_envelope
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design, with_overrides
+from flexshaft.parallel.threads import single_blas_thread
 
 RPM = 30.0 / np.pi
 

@@ -3,7 +3,8 @@
 Layers, bottom to top (a module may import only from its own layer or below; see
 docs/architecture.md):
 
-    0  units, _threads, _pool, netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
+    0  units, parallel (pools, BLAS threads, tasks), netcdf, plot (figures from plain arrays;
+       matplotlib loaded lazily)
     1  design (schema and I/O: a data leaf)
     2  laminate, strength, buckling, elements (physics on plain numbers)
     3  assembly
@@ -30,8 +31,7 @@ ROOT = Path(flexshaft.__file__).parent
 
 LAYERS = {
     "units": 0,
-    "_threads": 0,
-    "_pool": 0,
+    "parallel": 0,
     "netcdf": 0,
     "plot": 0,
     "design": 1,

@@ -105,7 +105,7 @@ def coarse_studies(coarse):
 def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, coarse_studies):
     """The studies as independent tasks on two forked workers (how `flexshaft run` computes
     them) give exactly the datasets and headline numbers computed in this process."""
-    from flexshaft._pool import worker_pool
+    from flexshaft.parallel.pool import worker_pool
     from flexshaft.studies.chapter3 import _DATASETS, design_studies, headline
 
     serial, _ = coarse_studies

@@ -11,8 +11,8 @@ import sys
 import numpy as np
 import pytest
 
-from flexshaft._pool import worker_pool
-from flexshaft.studies.tasks import Task, start_tasks
+from flexshaft.parallel.pool import worker_pool
+from flexshaft.parallel.tasks import Task, start_tasks
 
 needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="the pool needs fork")
 
@@ -140,7 +140,7 @@ def test_cli_sets_one_blas_thread_unless_the_user_chose():
 
 _LIFETIME = """
 import os, signal, sys, time
-from flexshaft._pool import worker_pool
+from flexshaft.parallel.pool import worker_pool
 
 def sleep(seconds):
     time.sleep(seconds)
@@ -198,7 +198,7 @@ def test_one_blas_thread_limits_and_restores_every_blas_library():
     two BLAS threads, so that the limit is visible)."""
     code = (
         "import numpy, scipy.linalg; from threadpoolctl import threadpool_info as info; "
-        "from flexshaft._threads import one_blas_thread\n"
+        "from flexshaft.parallel.threads import one_blas_thread\n"
         "before = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
         "for _ in range(3):\n"
         "    with one_blas_thread(): inside = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"

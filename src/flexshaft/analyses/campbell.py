@@ -19,12 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = [

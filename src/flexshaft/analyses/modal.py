@@ -15,13 +15,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, label_modes, whirl_ratio
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]

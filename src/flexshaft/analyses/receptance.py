@@ -12,10 +12,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_finite_array, check_model
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 
 __all__ = ["ActuatorReceptance", "actuator_receptance"]
 

@@ -38,12 +38,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptance
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.results import ResultMixin, new_dataset
 from flexshaft.assembly.model import Controller, Model
+from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = [

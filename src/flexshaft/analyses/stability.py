@@ -40,7 +40,6 @@ from typing import Literal
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
@@ -48,6 +47,7 @@ from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.model import rotation_generator as _rotation_generator
+from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["DampingModel", "STABILITY_TOLERANCE", "StabilityResult", "rotation_generator", "stability", "onset_speed"]

@@ -18,7 +18,7 @@ __all__ = ["run"]
 def _worker_processes() -> int:
     """Worker processes of the run: the CPUs this process may use, at most 4
     (benchmarks/studies_timing.py measures the run with them)."""
-    from flexshaft._pool import available_cpus
+    from flexshaft.parallel.pool import available_cpus
 
     return max(1, min(4, available_cpus()))
 
@@ -64,7 +64,7 @@ def run(
 
     loaded = load_design_argument(design, DEFAULT_DESIGN)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
-    from flexshaft._pool import worker_pool
+    from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES
     from flexshaft.report.driveline import results_json, write_run_report
     from flexshaft.studies.run import run_analysis

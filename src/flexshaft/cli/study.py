@@ -350,8 +350,8 @@ def all_studies(
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     check_finite("--gap", gap, 1e-9)
     loaded, folder = _prepare(design, out, "all", force)
-    from flexshaft._pool import worker_pool
     from flexshaft.cli.progress import StageProgress
+    from flexshaft.parallel.pool import worker_pool
     from flexshaft.report.html import write_report
     from flexshaft.report.studies_section import design_studies_section
     from flexshaft.studies.chapter3 import design_studies, headline, save_study_data

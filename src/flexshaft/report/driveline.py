@@ -578,7 +578,7 @@ def write_run_report(
     (stage -> seconds, e.g. from the CLI's progress display) go to ``timings.json`` with the
     design studies' own, never to ``results.json``. ``processes`` > 1 draws the figures in
     that many forked worker processes; an ``executor`` (e.g.
-    :func:`flexshaft._pool.worker_pool`) draws them in its workers while the data files are
+    :func:`flexshaft.parallel.pool.worker_pool`) draws them in its workers while the data files are
     written here.
     """
     folder = Path(folder)

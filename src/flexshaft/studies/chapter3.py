@@ -182,7 +182,7 @@ def design_studies(
         gains (the auxiliary-bearing gap, thesis figure 3.8); None: no limit.
     executor : concurrent.futures.Executor, optional
         Run the studies as independent tasks on this pool (e.g.
-        :func:`flexshaft._pool.worker_pool`); the results are the same as in this process.
+        :func:`flexshaft.parallel.pool.worker_pool`); the results are the same as in this process.
         Each study then runs in one worker: ``jobs`` must be 1.
     """
     if executor is not None and jobs != 1:
@@ -205,7 +205,7 @@ def start_design_studies(
     """Start the studies of :func:`design_studies` (on ``executor`` when given) and return
     ``(DesignStudies, TaskRun)`` for :func:`finish_design_studies`: the caller can compute
     something else while a pool works on them."""
-    from flexshaft.studies.tasks import start_tasks
+    from flexshaft.parallel.tasks import start_tasks
     from flexshaft.sweep import SweepError
 
     res, tasks = plan_design_studies(design, resolution, actuator_gap, jobs=jobs, progress_bars=progress_bars)
@@ -221,11 +221,11 @@ def plan_design_studies(
     progress_bars: bool = False,
 ):
     """``(DesignStudies, tasks)``: the empty results (with the notes of the studies that do
-    not apply) and the :class:`~flexshaft.studies.tasks.Task` of each study, to start
-    together with other tasks (:func:`flexshaft.studies.tasks.start_tasks`)."""
+    not apply) and the :class:`~flexshaft.parallel.tasks.Task` of each study, to start
+    together with other tasks (:func:`flexshaft.parallel.tasks.start_tasks`)."""
     from flexshaft.assembly import build_model
     from flexshaft.design import baseline_design
-    from flexshaft.studies.tasks import Task
+    from flexshaft.parallel.tasks import Task
 
     if resolution not in RESOLUTIONS:
         raise ValueError(f"resolution must be one of {sorted(RESOLUTIONS)}, got {resolution!r}")

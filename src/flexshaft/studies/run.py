@@ -93,7 +93,7 @@ def run_analysis(
         Resolution of the thesis design studies (chapter 3, and the whirl comparison of
         chapter 4); None skips them.
     executor : concurrent.futures.Executor, optional
-        A pool (e.g. :func:`flexshaft._pool.worker_pool`) that computes the studies while
+        A pool (e.g. :func:`flexshaft.parallel.pool.worker_pool`) that computes the studies while
         this process computes the design's own analyses; the results do not depend on it.
     """
     from flexshaft.assembly.size import check_problem_size
@@ -193,7 +193,7 @@ def whirl_speeds(model: Model) -> np.ndarray:
 def _start_own_analyses(design, model: Model, speeds: np.ndarray, n_campbell: int, executor):
     """Campbell diagram, spin-up imbalance response, torsional buckling, thermal and whirl
     stability of the design, as tasks (on ``executor`` when given)."""
-    from flexshaft.studies.tasks import Task, start_tasks
+    from flexshaft.parallel.tasks import Task, start_tasks
 
     top = max(model.speed, 1.0)
     # a worker rebuilds the model from the design (a few ms; the design pickles in a few kB);
@@ -257,8 +257,8 @@ def _start_studies(design, model: Model, resolution: str, executor):
     """Start the thesis studies as tasks (on ``executor`` when given): the three-shaft whirl
     comparison (viscous and hysteretic), the (K_p, K_d) onset map and the chapter-3 studies."""
     from flexshaft.design import DesignError
+    from flexshaft.parallel.tasks import Task, start_tasks
     from flexshaft.studies.chapter3 import plan_design_studies
-    from flexshaft.studies.tasks import Task, start_tasks
     from flexshaft.studies.whirl import gain_stability_map, shaft_whirl, thesis_shaft_designs
     from flexshaft.sweep import SweepError
 

@@ -293,7 +293,7 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     Runs with one BLAS thread; the model is built once per distinct design (consecutive
     points differing only in special axes share it).
     """
-    from flexshaft._threads import one_blas_thread
+    from flexshaft.parallel.threads import one_blas_thread
 
     names = [o.name for o in study.outputs]
     out = np.full((stop - start, len(names)), np.nan)

@@ -1,4 +1,5 @@
-"""One pool of forked worker processes for the stages of a command (``flexshaft run``).
+"""The package's process pools: one builder (:func:`new_pool`) for the run's pool of forked
+workers (:func:`worker_pool`) and the sweep engine's (:mod:`flexshaft.sweep.run`).
 
 The run's independent pieces of work (the thesis studies, then the report's figures) go to the
 same few workers, started once at the beginning. The workers fork from a parent that has
@@ -18,16 +19,18 @@ from __future__ import annotations
 
 import gc
 import importlib
+import multiprocessing
 import os
 import signal
 import sys
 import threading
 import time
 from collections.abc import Iterator, Sequence
-from concurrent.futures import Executor
+from concurrent.futures import Executor, ProcessPoolExecutor
 from contextlib import contextmanager
+from multiprocessing.context import BaseContext
 
-__all__ = ["available_cpus", "die_with_parent", "prepare_worker", "worker_pool"]
+__all__ = ["available_cpus", "die_with_parent", "new_pool", "prepare_worker", "stop_pool", "worker_pool"]
 
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 #: How often the portable watchdog thread looks at the parent [s].
@@ -93,13 +96,20 @@ def prepare_worker(parent_pid: int, pdeathsig: bool = True) -> str:
     return die_with_parent(parent_pid, pdeathsig)
 
 
-def _warm(parent_pid: int, modules: tuple[str, ...]) -> None:
-    """Worker initializer: :func:`prepare_worker`, then import ``modules`` once (matplotlib
-    with the Agg backend)."""
-    prepare_worker(parent_pid)
+#: Environment of a worker that must not start more than one BLAS thread.
+ONE_THREAD_ENVIRONMENT = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def _start_worker(parent_pid: int, modules: tuple[str, ...], pdeathsig: bool, one_thread_env: bool) -> None:
+    """Worker initializer: :func:`prepare_worker`, one BLAS thread in the environment when
+    asked, then import ``modules`` once (matplotlib with the Agg backend)."""
+    if one_thread_env:
+        for var in ONE_THREAD_ENVIRONMENT:
+            os.environ[var] = "1"
+    prepare_worker(parent_pid, pdeathsig)
     for name in modules:
         if name.startswith("matplotlib"):
-            import matplotlib
+            import matplotlib  # noqa: PLC0415 - only a worker that draws figures needs it (0.4 s)
 
             matplotlib.use("Agg")
         importlib.import_module(name)
@@ -109,9 +119,58 @@ def _ready() -> int:
     return os.getpid()
 
 
+def new_pool(
+    processes: int,
+    context: BaseContext,
+    *,
+    warm: Sequence[str] = (),
+    pdeathsig: bool = True,
+    one_thread_env: bool = False,
+) -> ProcessPoolExecutor:
+    """A :class:`~concurrent.futures.ProcessPoolExecutor` of ``processes`` workers of this
+    process, started now (a first submission), each set up by :func:`prepare_worker` (Ctrl-C
+    left to the parent, ends with it; ``pdeathsig`` as there), with ``OMP/OPENBLAS/MKL_NUM_THREADS``
+    = 1 when ``one_thread_env``, and importing ``warm`` once.
+
+    The objects this process holds when the workers fork (the imported modules: ~150,000) are
+    frozen for the fork, so that the workers' full garbage collections skip them (a figure
+    worker spent 0.45 s of CPU in the collector, 0.23 s without them) and do not copy their pages
+    by touching them.
+    """
+    pool = ProcessPoolExecutor(
+        max_workers=int(processes),
+        mp_context=context,
+        initializer=_start_worker,
+        initargs=(os.getpid(), tuple(warm), bool(pdeathsig), bool(one_thread_env)),
+    )
+    gc.freeze()
+    try:
+        pool.submit(_ready)
+    finally:
+        gc.unfreeze()  # this process collects them as before
+    return pool
+
+
+def stop_pool(pool: ProcessPoolExecutor, *, now: bool) -> None:
+    """Shut ``pool`` down: wait for its work, or with ``now`` cancel the queued work and end the
+    workers without waiting for their current task (SIGKILL: a task's own SIGTERM handler, a
+    sweep's, must not delay it)."""
+    if not now:
+        pool.shutdown(wait=True)
+        return
+    workers = dict(getattr(pool, "_processes", None) or {})  # the stdlib's record of them (no public API before 3.14)
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in workers.values():
+        if process.is_alive():
+            process.kill()
+    for process in workers.values():
+        process.join(timeout=5)
+
+
 @contextmanager
 def worker_pool(processes: int, warm: Sequence[str] = ()) -> Iterator[Executor | None]:
-    """A process pool of ``processes`` forked workers, started now, each importing ``warm``.
+    """A pool of ``processes`` forked workers, started now, each importing ``warm``
+    (:func:`new_pool`).
 
     Yields None when ``processes`` < 2 or the platform cannot fork. On leaving the block the
     pool is shut down: queued work is cancelled when an exception (Ctrl-C included) ends it.
@@ -121,39 +180,10 @@ def worker_pool(processes: int, warm: Sequence[str] = ()) -> Iterator[Executor |
     if processes < 2 or not hasattr(os, "fork"):
         yield None
         return
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-
-    pool = ProcessPoolExecutor(
-        max_workers=int(processes),
-        mp_context=multiprocessing.get_context("fork"),
-        initializer=_warm,
-        initargs=(os.getpid(), tuple(warm)),
-    )
-    # The first submission forks every worker: they warm up while we go on. The objects this
-    # process holds by then (the imported modules: ~150,000) are frozen for the fork, so that the
-    # workers' full garbage collections skip them (a figure worker spent 0.45 s of CPU in the
-    # collector, 0.23 s without them) and do not copy their pages by touching them.
-    gc.freeze()
-    try:
-        pool.submit(_ready)
-    finally:
-        gc.unfreeze()  # this process collects them as before
+    pool = new_pool(processes, multiprocessing.get_context("fork"), warm=warm)
     try:
         yield pool
     except BaseException:  # Ctrl-C or an error: the queued work is not wanted, stop the workers now
-        _terminate(pool)
+        stop_pool(pool, now=True)
         raise
-    pool.shutdown(wait=True)
-
-
-def _terminate(pool) -> None:
-    """Cancel the queued work and end the workers without waiting for their current task
-    (an interrupted run writes no report; a figure being drawn is lost with it)."""
-    workers = dict(getattr(pool, "_processes", None) or {})  # the stdlib's record of them (no public API before 3.14)
-    pool.shutdown(wait=False, cancel_futures=True)
-    for process in workers.values():  # SIGKILL: a task's own SIGTERM handler (a sweep's) must not delay it
-        if process.is_alive():
-            process.kill()
-    for process in workers.values():
-        process.join(timeout=5)
+    stop_pool(pool, now=False)

@@ -15,7 +15,7 @@ from concurrent.futures import Executor, Future
 from dataclasses import dataclass, field
 from typing import Any
 
-from flexshaft._threads import one_blas_thread
+from flexshaft.parallel.threads import one_blas_thread
 
 __all__ = ["Task", "TaskOutcome", "TaskRun", "start_tasks"]
 
