@@ -3,7 +3,8 @@
 Layers, bottom to top (a module may import only from its own layer or below; see
 docs/architecture.md):
 
-    0  units, parallel (pools, BLAS threads, tasks), netcdf, plot (figures from plain arrays;
+    0  units, resolution (grid sizes of the recipe), parallel (pools, BLAS threads, tasks), netcdf,
+       plot (figures from plain arrays;
        matplotlib loaded lazily)
     1  design (schema and I/O: a data leaf)
     2  laminate, strength, buckling, elements (physics on plain numbers)
@@ -32,6 +33,7 @@ ROOT = Path(flexshaft.__file__).parent
 LAYERS = {
     "units": 0,
     "parallel": 0,
+    "resolution": 0,
     "netcdf": 0,
     "plot": 0,
     "design": 1,

@@ -433,7 +433,7 @@ FORWARD_ENDS = {"twist only": ["theta"], "pinned": ["v", "w", "theta"], "clamped
 def forward_end_row(end: str) -> tuple:
     """Lateral critical speeds [rad/s] and AF within 0.8-1.25 x the operating speed at the Table 3.1
     gains (thesis damping), and the shaft orbit [m] at the operating speed, for a forward end."""
-    from flexshaft.studies.verdict_evidence import lateral_critical_speeds
+    from flexshaft.analyses.criticals import lateral_critical_speeds
 
     design = with_overrides(baseline_design(), {**THESIS_DAMPING, "shaft.fixed_start": FORWARD_ENDS[end]})
     model = build_model(design)

@@ -15,6 +15,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from flexshaft.analyses.criticals import LateralCritical
+
 __all__ = [
     "ActuatorEvidence",
     "CouplingEvidence",
@@ -36,18 +38,6 @@ class ModeDamping:
     label: str
     frequency: float
     log_decrement: float
-
-
-@dataclass(frozen=True)
-class LateralCritical:
-    """A lateral critical speed [rad/s] with its amplification factor [-] and where it peaks.
-
-    ``location`` names the shaft station of the peak response and the mode, if known.
-    """
-
-    speed: float
-    amplification_factor: float
-    location: Location = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

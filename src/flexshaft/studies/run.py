@@ -61,7 +61,7 @@ class RunResults:
     imbalance_spinup: object = None  # HarmonicResponse (ndof, ncases, n_speeds) over `speeds`
     metal_strength: object = None  # MetalStrength of the isotropic segments (None: no isotropic segment)
     coupling_misalignment: object = None  # CouplingMisalignment (None: no couplings)
-    critical_speeds: object = None  # (criticals without mode labels, note) of verdict_evidence.scan_critical_speeds
+    critical_speeds: object = None  # CriticalSpeeds without mode labels (analyses.criticals.scan_critical_speeds)
 
     @property
     def spinup(self) -> np.ndarray:
@@ -220,7 +220,7 @@ def _model_of(source) -> Model:
 def _spinup_response(source, speeds):
     """Worst-case imbalance response over ``speeds``: (q, orbits, worst envelope, actuator
     displacement and force, the lateral critical speeds found on it)."""
-    from flexshaft.studies.verdict_evidence import scan_critical_speeds
+    from flexshaft.analyses.criticals import scan_critical_speeds
 
     model = _model_of(source)
     q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)

@@ -1,180 +1,18 @@
 """The one adapter from a ``flexshaft run`` result to the verdict's :class:`Evidence`.
 
 :func:`evidence_from_run` reads :class:`flexshaft.studies.run.RunResults`; everything else of
-the verdict works on the plain :class:`~flexshaft.studies.verdict.Evidence`. The only new
-computation here is :func:`lateral_critical_speeds`: the unbalance response scanned up to
-:data:`CRITICAL_SEARCH_TOP` × the operating speed (beyond the largest margin API 684 can ask
-above the operating speed, 26 %), each peak refined at the shaft station where it is largest
-until its half-power bandwidth is resolved (:func:`flexshaft.analyses.separation.resolve_peak`).
+the verdict works on the plain :class:`~flexshaft.studies.verdict.Evidence`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from flexshaft.analyses import SingularSystemError, imbalance_response
-from flexshaft.analyses.campbell import Campbell
-from flexshaft.analyses.response import orbit_amplitude
-from flexshaft.analyses.separation import resolve_peak, response_peaks
-from flexshaft.assembly.loads import imbalance_loads
-from flexshaft.assembly.model import Model
-from flexshaft.studies.evidence import (
-    ActuatorEvidence,
-    CouplingEvidence,
-    Evidence,
-    LateralCritical,
-    MetalEvidence,
-    ModeDamping,
-)
+from flexshaft.analyses.criticals import scan_critical_speeds
+from flexshaft.studies.evidence import ActuatorEvidence, CouplingEvidence, Evidence, MetalEvidence, ModeDamping
 from flexshaft.units import celsius_to_kelvin
 
-__all__ = [
-    "CRITICAL_SEARCH_TOP",
-    "evidence_from_run",
-    "label_critical_speeds",
-    "lateral_critical_speeds",
-    "scan_critical_speeds",
-]
-
-#: Highest speed searched for critical speeds, as a multiple of the operating speed.
-CRITICAL_SEARCH_TOP = 1.30
-_SCAN_BOTTOM = 0.02
-_SCAN_POINTS = 651  # 0.2 % of the operating speed apart
-
-
-# ------------------------------------------------------------------------------------------------
-# Lateral critical speeds from the unbalance response
-
-
-def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
-    """Orbit amplitude [m] at every shaft node: (nodes, cases, speeds) from (ndof, cases, speeds)."""
-    dm = model.dofs
-    n = np.arange(dm.n_shaft_nodes)
-    return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
-
-
-def lateral_critical_speeds(
-    model: Model,
-    campbell: Campbell | None = None,
-    top: float = CRITICAL_SEARCH_TOP,
-    n_points: int = _SCAN_POINTS,
-    scan=None,
-) -> tuple[LateralCritical, ...]:
-    """Peaks of the unbalance response with their amplification factors.
-
-    Parameters
-    ----------
-    model : Model
-        Assembled model (its design's imbalance placement and eccentricity).
-    campbell : Campbell, optional
-        When given, each peak is labelled with the tracked mode whose 1× critical speed is
-        nearest (within 3 %).
-    top : float
-        Highest speed scanned, as a multiple of the operating speed.
-    n_points : int
-        Samples of the initial scan (2 % to ``top`` of the operating speed).
-    scan : tuple of ndarray, optional
-        ``(speeds, orbits)`` of a scan already computed (orbits (nodes, cases, speeds) [m], e.g.
-        the run's spin-up response), used instead of a new one.
-
-    Returns
-    -------
-    tuple of LateralCritical
-        In order of speed; AF from the half-power bandwidth of the orbit at the shaft station
-        where the peak is largest, for the worst imbalance case there.
-    """
-    loads = imbalance_loads(model)
-    if scan is None:
-        speeds = np.linspace(_SCAN_BOTTOM, top, n_points) * model.speed
-        orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
-    else:
-        speeds, orbits = scan
-    envelope = orbits.max(axis=(0, 1))
-    out: list[LateralCritical] = []
-    for rough in response_peaks(speeds, envelope):
-        k = int(np.argmin(np.abs(speeds - rough.speed)))
-        node, case = np.unravel_index(int(np.argmax(orbits[:, :, k])), orbits.shape[:2])
-
-        def orbit_at(new_speeds, node=node, case=case):
-            q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
-            return _shaft_orbits(model, q)[node, 0]
-
-        station = float(model.dofs.shaft_x[node])
-        try:
-            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
-        except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
-            out.append(
-                LateralCritical(
-                    rough.speed,
-                    float("inf"),
-                    {"station": station, "detail": "undamped resonance: the response is singular at the peak"},
-                )
-            )
-            continue
-        if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
-            continue
-        location = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
-        amplification = peak.amplification_factor
-        if not peak.resolved:
-            if _undamped_at(model, peak.speed):
-                amplification = float("inf")
-                location["detail"] = (
-                    "undamped resonance: the mode at the peak has no damping, the response is unbounded"
-                )
-            else:
-                location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
-        out.append(LateralCritical(peak.speed, amplification, location))
-    return label_critical_speeds(tuple(sorted(out, key=lambda c: c.speed)), campbell)
-
-
-def label_critical_speeds(criticals, campbell: Campbell | None):
-    """The resolved peaks of :func:`lateral_critical_speeds` labelled with the tracked mode of
-    ``campbell`` whose 1× critical speed is within 3 % (the run computes the peaks and the
-    Campbell diagram in parallel and labels them here)."""
-    out = []
-    for c in criticals:
-        mode = _campbell_label(campbell, c.speed) if "af_method" in c.location else ""
-        out.append(LateralCritical(c.speed, c.amplification_factor, {**c.location, "mode": mode}) if mode else c)
-    return tuple(out)
-
-
-def scan_critical_speeds(model: Model, speeds: np.ndarray, orbits: np.ndarray, campbell: Campbell | None = None):
-    """The run's lateral critical speeds from its spin-up scan (speeds [rad/s], orbits (nodes,
-    cases, speeds) [m]): ``(criticals, note)``, criticals None with a note when the unbalance
-    response is singular or the operating speed is zero."""
-    speed = float(model.speed)
-    if speed <= 0.0:
-        return None, "the operating speed is zero"
-    scan = None
-    if orbits is not None and speeds[-1] >= CRITICAL_SEARCH_TOP * speed * (1 - 1e-9):
-        scan = (np.asarray(speeds), np.asarray(orbits))
-    try:
-        return lateral_critical_speeds(model, campbell, scan=scan), None
-    except SingularSystemError as exc:
-        return None, f"the unbalance response could not be scanned: {exc}"
-
-
-def _undamped_at(model: Model, speed: float) -> bool:
-    """True when the synchronous mode at ``speed`` [rad/s] has no damping (|ζ| < 1e-9): its
-    peak is infinite however finely the speed is sampled."""
-    from flexshaft.analyses import modes
-
-    m = modes(model, speed, n_modes=12)
-    lateral = m.kind == "lateral"
-    if not np.any(lateral):
-        return False
-    k = int(np.argmin(np.where(lateral, np.abs(m.eigenvalues.imag - speed), np.inf)))
-    return bool(abs(m.damping_ratios[k]) < 1e-9)
-
-
-def _campbell_label(campbell, speed: float) -> str:
-    if campbell is None or not campbell.critical_speeds:
-        return ""
-    nearest = min(campbell.critical_speeds, key=lambda c: abs(c.speed - speed))
-    if abs(nearest.speed - speed) > 0.03 * speed:
-        return ""
-    return f"{nearest.mode + 1} ({nearest.whirl})"
-
+__all__ = ["evidence_from_run"]
 
 # ------------------------------------------------------------------------------------------------
 # Whirl stability at the operating speed
@@ -386,7 +224,7 @@ def evidence_from_run(res: object) -> Evidence:
     """Build the verdict's evidence from a :class:`flexshaft.studies.run.RunResults`.
 
     Computes the lateral critical speeds and their amplification factors
-    (:func:`lateral_critical_speeds`) unless ``res.critical_speeds`` holds them; every other
+    (:func:`flexshaft.analyses.criticals.scan_critical_speeds`) unless ``res.critical_speeds`` holds them; every other
     number is read from ``res``.
     """
     model = res.model
@@ -399,19 +237,15 @@ def evidence_from_run(res: object) -> Evidence:
     values.update(_couplings(res))
     values.update(_buckling(res, notes))
     values.update(_whirl(res, speed, notes))
-    found = getattr(res, "critical_speeds", None)  # (criticals, note) computed with the spin-up scan
-    if found is not None:
-        criticals, note = found
-        criticals = None if criticals is None else label_critical_speeds(criticals, res.campbell)
+    found = getattr(res, "critical_speeds", None)  # computed with the spin-up scan
+    if found is None:
+        found = scan_critical_speeds(model, np.asarray(res.speeds), getattr(res, "shaft_orbits", None))
+    found = found.labelled(res.campbell)
+    if found.criticals is not None:
+        values["critical_speeds"] = found.criticals
+        values["critical_search_max_speed"] = found.search_top
     else:
-        criticals, note = scan_critical_speeds(
-            model, np.asarray(res.speeds), getattr(res, "shaft_orbits", None), res.campbell
-        )
-    if criticals is not None:
-        values["critical_speeds"] = criticals
-        values["critical_search_max_speed"] = CRITICAL_SEARCH_TOP * speed
-    else:
-        notes["separation"] = note
+        notes["separation"] = found.note
     values.update(_temperature(res, notes))
     if design is not None:
         values["allowable_temperature"] = celsius_to_kelvin(design.thermal.allowable_temperature_c)
