@@ -258,7 +258,7 @@ def buckling_row():
 
 @functools.cache
 def thermal_row() -> dict:
-    from flexshaft.studies.thermal import thermal_summary
+    from flexshaft.thermal.study import thermal_summary
 
     design = tuned_design()
     model = build_model(design)

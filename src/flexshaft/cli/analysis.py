@@ -291,7 +291,7 @@ def thermal(
     """Tailboom skin temperatures (hover, parked), shaft temperature rise and self-heating margin."""
     loaded = load_design_argument(design)
     from flexshaft.assembly import build_model
-    from flexshaft.studies.thermal import thermal_summary
+    from flexshaft.thermal.study import thermal_summary
 
     d = loaded.design
     with StageProgress(transient=True) as progress:

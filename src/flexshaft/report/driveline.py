@@ -21,6 +21,7 @@ import numpy as np
 
 from flexshaft.plot.output import FigureJob, render_figures, start_figures
 from flexshaft.report.html import FigureRef, Section, Table, write_report
+from flexshaft.units import kelvin_to_celsius
 
 __all__ = ["RunReportPlan", "json_ready", "plan_run_report", "results_json", "write_run_report"]
 
@@ -747,14 +748,14 @@ def _thermal_dict(res) -> dict | None:
     th = res.thermal
     if th is None:
         return None
-    out = {"tailboom_c": {k: v.celsius for k, v in th["tailboom"].items()}, "report_loss_model": th["loss_model"]}
-    for lm, s in th["shaft"].items():
+    out = {"tailboom_c": {k: v.celsius for k, v in th.tailboom.items()}, "report_loss_model": th.loss_model}
+    for lm, s in th.shaft.items():
         out[f"shaft_{lm}"] = {
             "peak_rise_K": s.peak_rise,
             "heat_W": float(s.sources.total.sum()),
-            "air_c": s.temperature.air_temperature - 273.15,
+            "air_c": kelvin_to_celsius(s.temperature.air_temperature),
         }
-    sh = th["self_heating"]
+    sh = th.self_heating
     if sh is not None:
         out["self_heating"] = {"status": sh.status, "iterations": sh.iterations, "margin_K": sh.margin}
     return out
@@ -764,26 +765,26 @@ def _thermal_section(res, figs: _Figures) -> Section:
     from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
 
     th = res.thermal
-    env = th["environment"]
-    shafts = th["shaft"]
+    env = th.environment
+    shafts = th.shaft
     first = next(iter(shafts.values()))
     x = first.temperature.x
     xe = 0.5 * (x[:-1] + x[1:])
     rise = {f"{lm} loss model": s.temperature.temperature - s.temperature.air_temperature for lm, s in shafts.items()}
     heat = {f"{lm} loss model": s.sources.total / np.diff(x) for lm, s in shafts.items()}
     tables = []
-    if th["tailboom"]:
+    if th.tailboom:
         tables.append(
             Table(
                 "Tailboom skin temperature (thesis: 44 °C hovering, 89 °C parked)",
                 ["condition", "temperature [°C]", "h [W/m² K]", "correlation"],
-                [[k, v.celsius, v.heat_transfer_coefficient, v.nusselt.method] for k, v in th["tailboom"].items()],
+                [[k, v.celsius, v.heat_transfer_coefficient, v.nusselt.method] for k, v in th.tailboom.items()],
             )
         )
     rows = [
         [
             lm,
-            s.temperature.air_temperature - 273.15,
+            kelvin_to_celsius(s.temperature.air_temperature),
             s.temperature.heat_transfer_coefficient,
             float(s.sources.vibration.sum()),
             float(s.sources.static.sum()),
@@ -799,13 +800,13 @@ def _thermal_section(res, figs: _Figures) -> Section:
         )
     )
     paragraphs = [
-        f"Ambient {env.ambient_temperature - 273.15:.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
+        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
         "Heat is the hysteretic loss P = (ω/2)·Re(Xᴴ K'' X) of the imbalance response and of the static deflection "
         "seen by the rotating material. The thesis model cycles every response at Ω in the fixed frame; the "
         "rotating-frame model (used for the self-heating check) knows that synchronous forward whirl does not cycle "
         "the material, backward whirl is cycled at 2Ω and the static deflection at Ω."
     ]
-    sh = th["self_heating"]
+    sh = th.self_heating
     if sh is not None:
         paragraphs.append(
             f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
@@ -822,18 +823,18 @@ def _thermal_section(res, figs: _Figures) -> Section:
             heat,
         )
     ]
-    prof = th.get("profiles")
+    prof = th.profiles
     if prof:
         figures.append(
             figs.add(
                 "shaft_temperature_sweeps",
                 f"Shaft temperature profiles against wall thickness and "
-                f"convection ({th['loss_model']} loss model; thesis figures "
+                f"convection ({th.loss_model} loss model; thesis figures "
                 "3.18, 3.19)",
                 temperature_profiles_figure,
-                prof["x"],
-                prof["by_wall"],
-                prof["by_h"],
+                prof.x,
+                prof.by_wall,
+                prof.by_h,
             )
         )
     return Section("Thermal", paragraphs=paragraphs, tables=tables, figures=figures)

@@ -346,8 +346,8 @@ def _boom_temperatures(design, run) -> dict:
     if design.tailboom is None:
         return {}
     thermal = run.thermal
-    if thermal is not None and thermal.get("tailboom"):
-        return {k: float(v.temperature) for k, v in thermal["tailboom"].items()}
+    if thermal is not None and thermal.tailboom:
+        return {k: float(v.temperature) for k, v in thermal.tailboom.items()}
     from flexshaft.thermal.options import thermal_options
     from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
 

@@ -207,17 +207,11 @@ def verdict_run(design, fidelity: str | Fidelity = "screening"):
     return results
 
 
-def _self_heating(design, model) -> dict:
-    """The part of :func:`flexshaft.studies.thermal.thermal_results` the temperature check reads."""
-    from flexshaft.thermal.options import thermal_options
-    from flexshaft.thermal.selfheating import self_heating
+def _self_heating(design, model):
+    """The part of :func:`flexshaft.thermal.study.thermal_results` the temperature check reads."""
+    from flexshaft.thermal.study import thermal_results
 
-    loss_model = design.analysis.internal_damping
-    return {
-        "loss_model": loss_model,
-        "self_heating": self_heating(model, thermal_options(design.thermal), loss_model),
-        "shaft": {},
-    }
+    return thermal_results(design, model, self_heat=True, detail=False)
 
 
 def normalised_margin(check, operating_speed: float) -> float:

@@ -240,7 +240,7 @@ def _buckling(source):
 
 
 def _thermal(source):
-    from flexshaft.studies.thermal import thermal_results
+    from flexshaft.thermal.study import thermal_results
 
     model = _model_of(source)
     return thermal_results(model.design, model, self_heat=True)

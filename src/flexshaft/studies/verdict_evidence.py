@@ -205,13 +205,13 @@ def _temperature(res, notes: dict) -> dict:
     if th is None:
         notes["temperature"] = "no shaft thermal result (the thermal model needs a laminated shaft)"
         return {}
-    sh = th.get("self_heating")
-    temperature = sh.thermal.temperature if sh is not None else th["shaft"][th["loss_model"]].temperature
+    sh = th.self_heating
+    temperature = th.shaft_temperature
     i = int(np.argmax(temperature.temperature))
     detail = (
-        f"self-heating equilibrium ({sh.status}), {th['loss_model']} loss model"
+        f"self-heating equilibrium ({sh.status}), {th.loss_model} loss model"
         if sh is not None
-        else f"{th['loss_model']} loss model, constant properties"
+        else f"{th.loss_model} loss model, constant properties"
     )
     return {
         "max_temperature": float(temperature.temperature[i]),

@@ -3,26 +3,130 @@ the thesis's thermal-design sweeps (wall thickness, convection coefficient; figu
 
 Every ``[thermal]`` field reaches the computation through
 :func:`flexshaft.thermal.options.thermal_options`; the shaft's loss model is the design's
-``[analysis] internal_damping`` unless a comparison overrides it.
+``[analysis] internal_damping`` unless a comparison overrides it. :func:`thermal_results`
+returns a :class:`ThermalResults`.
 """
 
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
+from flexshaft.assembly import build_model
 from flexshaft.assembly.model import Model
-from flexshaft.units import kelvin_to_celsius
+from flexshaft.design import with_overrides
+from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
+from flexshaft.thermal.environment import ThermalEnvironment
+from flexshaft.thermal.heat import heat_sources
+from flexshaft.thermal.options import ThermalOptions, thermal_options
+from flexshaft.thermal.selfheating import SelfHeating, self_heating
+from flexshaft.thermal.shaft import ShaftTemperature
+from flexshaft.thermal.tailboom import BoomTemperature, boom_equivalent_diameter, tailboom_temperatures
+from flexshaft.units import kelvin_to_celsius, m_to_mm
 
-__all__ = ["thermal_results", "thermal_summary", "temperature_profiles", "wall_thickness_sweep", "convection_sweep"]
+__all__ = [
+    "TemperatureProfiles",
+    "ThermalResults",
+    "convection_sweep",
+    "temperature_profiles",
+    "thermal_results",
+    "thermal_summary",
+    "wall_thickness_sweep",
+]
 
 
-def _options(design, convection: str | None = None):
-    from flexshaft.thermal.options import thermal_options
-
+def _options(design, convection: str | None = None) -> ThermalOptions:
     options = thermal_options(design.thermal)
     return options if convection is None else dataclasses.replace(options, shaft_convection=convection)
+
+
+@dataclass(frozen=True)
+class TemperatureProfiles:
+    """Shaft temperature rise along x [K] for several wall thicknesses and convection
+    coefficients (thesis figures 3.18, 3.19): ``x`` node stations [m], ``by_wall`` and ``by_h``
+    label -> rise (nodes,)."""
+
+    x: np.ndarray
+    by_wall: Mapping[str, np.ndarray]
+    by_h: Mapping[str, np.ndarray]
+
+
+@dataclass(frozen=True)
+class ThermalResults:
+    """Thermal results of a design (:func:`thermal_results`), SI units.
+
+    Attributes
+    ----------
+    options : ThermalOptions
+        The design's ``[thermal]`` table (and the convection override) as used.
+    loss_model : {"thesis", "rotating"}
+        The shaft's loss model used for the verdict's numbers.
+    tailboom : mapping of str to BoomTemperature
+        ``"hover"`` and ``"parked"`` skin temperatures; empty without a tailboom, or when only
+        the self-heating was asked for.
+    shaft : mapping of str to ShaftThermal
+        The shaft temperature with reference-temperature properties under both loss models (for
+        comparison); empty when only the self-heating was asked for.
+    self_heating : SelfHeating or None
+        The self-heating equilibrium with temperature-dependent matrix properties (None: not
+        computed).
+    profiles : TemperatureProfiles or None
+        The thermal-design sweeps (None without a tailboom or when not asked for).
+    """
+
+    options: ThermalOptions
+    loss_model: str
+    tailboom: Mapping[str, BoomTemperature]
+    shaft: Mapping[str, ShaftThermal]
+    self_heating: SelfHeating | None
+    profiles: TemperatureProfiles | None
+
+    @property
+    def environment(self) -> ThermalEnvironment:
+        return self.options.environment
+
+    @property
+    def shaft_temperature(self) -> ShaftTemperature:
+        """The shaft temperature the verdict reads: the self-heating equilibrium's when computed,
+        else the one with reference-temperature properties under :attr:`loss_model`."""
+        if self.self_heating is not None:
+            return self.self_heating.thermal.temperature
+        return self.shaft[self.loss_model].temperature
+
+    @property
+    def max_shaft_temperature(self) -> float:
+        """Peak shaft temperature [K] (see :attr:`shaft_temperature`)."""
+        if self.self_heating is not None:
+            return self.self_heating.max_temperature
+        return self.shaft[self.loss_model].max_temperature
+
+    @property
+    def max_shaft_temperature_c(self) -> float:
+        """[°C]."""
+        return kelvin_to_celsius(self.max_shaft_temperature)
+
+    @property
+    def max_shaft_temperature_source(self) -> str:
+        """``"self_heating"`` or ``"reference_properties"``."""
+        return "self_heating" if self.self_heating is not None else "reference_properties"
+
+    @property
+    def allowable_temperature(self) -> float:
+        """Matrix allowable temperature [K]."""
+        return self.options.allowable_temperature
+
+    @property
+    def allowable_temperature_c(self) -> float:
+        """[°C]."""
+        return kelvin_to_celsius(self.allowable_temperature)
+
+    @property
+    def temperature_margin(self) -> float:
+        """Allowable − peak shaft temperature [K]."""
+        return self.allowable_temperature - self.max_shaft_temperature
 
 
 def wall_thickness_sweep(
@@ -49,10 +153,6 @@ def wall_thickness_sweep(
         ``wall_thickness`` (n,) [m], ``peak_rise`` (n,) [K], ``heat`` (n,) total [W], ``x`` node
         stations [m] and ``rise`` (n, nodes) temperature above the air [K].
     """
-    from flexshaft.assembly import build_model
-    from flexshaft.design import with_overrides
-    from flexshaft.thermal.analysis import shaft_air_temperature, shaft_thermal
-
     options = options or _options(design)
     loss_model = loss_model or design.analysis.internal_damping
     T_air = shaft_air_temperature(design.tailboom, options) if air_temperature is None else float(air_temperature)
@@ -96,9 +196,6 @@ def convection_sweep(
         ``heat_transfer_coefficient`` (n,) h used [W/(m^2 K)], ``from_correlation`` (n,) bool,
         ``peak_rise`` (n,) [K], ``x`` [m] and ``rise`` (n, nodes) [K].
     """
-    from flexshaft.thermal.analysis import shaft_air_temperature, shaft_thermal
-    from flexshaft.thermal.heat import heat_sources
-
     options = options or _options(model.design)
     T_air = shaft_air_temperature(model.design.tailboom, options) if air_temperature is None else float(air_temperature)
     sources = heat_sources(model, loss_model)
@@ -128,12 +225,10 @@ def temperature_profiles(
     coefficients=(5.0, 20.0, None),
     loss_model: str | None = None,
     options=None,
-) -> dict:
+) -> TemperatureProfiles:
     """Shaft temperature rise along x for several wall thicknesses [m] at fixed D_o and several
     convection coefficients [W/(m² K)] (``None``: the rotating-cylinder correlation), thesis
-    figures 3.18 and 3.19. Returns ``{"x": ..., "by_wall": {label: rise}, "by_h": {label: rise}}``."""
-    from flexshaft.thermal.analysis import shaft_air_temperature
-
+    figures 3.18 and 3.19."""
     options = options or _options(design)
     air = shaft_air_temperature(design.tailboom, options)
     by_wall = wall_thickness_sweep(design, walls, loss_model, options, air)
@@ -142,16 +237,21 @@ def temperature_profiles(
         f"h = {h:.0f} W/m²K" + (" (correlation)" if corr else "")
         for h, corr in zip(by_h["heat_transfer_coefficient"], by_h["from_correlation"])
     ]
-    return {
-        "x": model.dofs.shaft_x,
-        "by_wall": {f"wall {t * 1e3:.1f} mm": rise for t, rise in zip(by_wall["wall_thickness"], by_wall["rise"])},
-        "by_h": dict(zip(h_labels, by_h["rise"])),
-    }
+    return TemperatureProfiles(
+        model.dofs.shaft_x,
+        {f"wall {m_to_mm(t):.1f} mm": rise for t, rise in zip(by_wall["wall_thickness"], by_wall["rise"])},
+        dict(zip(h_labels, by_h["rise"])),
+    )
 
 
 def thermal_results(
-    design, model: Model, loss_model: str | None = None, convection: str | None = None, self_heat: bool = False
-) -> dict:
+    design,
+    model: Model,
+    loss_model: str | None = None,
+    convection: str | None = None,
+    self_heat: bool = False,
+    detail: bool = True,
+) -> ThermalResults:
     """Thermal results of a design.
 
     Parameters
@@ -167,47 +267,25 @@ def thermal_results(
         Override of ``[thermal] shaft_convection``.
     self_heat : bool
         Iterate the temperature-dependent matrix properties to the self-heating equilibrium.
-
-    Returns
-    -------
-    dict
-        ``options``, ``environment``, ``loss_model`` (the one used), ``tailboom``
-        ({"hover", "parked"}: BoomTemperature, empty without a tailboom), ``shaft`` (both loss
-        models, for comparison), ``self_heating`` (SelfHeating or None), ``profiles``;
-        and for a verdict: ``max_shaft_temperature`` [K] and ``max_shaft_temperature_c`` [°C]
-        (the self-heating equilibrium's peak when computed, else the peak with reference-
-        temperature properties, ``max_shaft_temperature_source`` says which),
-        ``allowable_temperature`` [K], ``allowable_temperature_c`` [°C] and
-        ``temperature_margin`` = allowable − max [K].
+    detail : bool
+        Also the tailboom temperatures, the shaft under both loss models and the thermal-design
+        sweeps; False (with ``self_heat``): the self-heating equilibrium alone, what the
+        verdict's temperature check reads.
     """
-    from flexshaft.thermal.analysis import shaft_thermal
-    from flexshaft.thermal.selfheating import self_heating
-    from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
-
+    if not (detail or self_heat):
+        raise ValueError("thermal_results: detail=False computes the self-heating alone; it needs self_heat=True")
     options = _options(design, convection)
     loss_model = loss_model or design.analysis.internal_damping
-    out: dict = {"options": options, "environment": options.environment, "loss_model": loss_model}
-    has_boom = design.tailboom is not None
-    out["profiles"] = temperature_profiles(design, model, loss_model=loss_model, options=options) if has_boom else None
-    out["tailboom"] = (
+    has_boom = detail and design.tailboom is not None
+    profiles = temperature_profiles(design, model, loss_model=loss_model, options=options) if has_boom else None
+    tailboom = (
         tailboom_temperatures(boom_equivalent_diameter(design.tailboom), options.environment, options.boom_convection)
         if has_boom
         else {}
     )
-    out["shaft"] = {lm: shaft_thermal(model, options, lm) for lm in ("thesis", "rotating")}
+    shaft = {lm: shaft_thermal(model, options, lm) for lm in ("thesis", "rotating")} if detail else {}
     sh = self_heating(model, options, loss_model) if self_heat else None
-    out["self_heating"] = sh
-    peak = sh.max_temperature if sh is not None else out["shaft"][loss_model].max_temperature
-    allowable = options.allowable_temperature
-    out.update(
-        max_shaft_temperature=peak,
-        max_shaft_temperature_c=kelvin_to_celsius(peak),
-        max_shaft_temperature_source="self_heating" if sh is not None else "reference_properties",
-        allowable_temperature=allowable,
-        allowable_temperature_c=kelvin_to_celsius(allowable),
-        temperature_margin=allowable - peak,
-    )
-    return out
+    return ThermalResults(options, loss_model, tailboom, shaft, sh, profiles)
 
 
 def thermal_summary(
@@ -223,13 +301,13 @@ def thermal_summary(
     r = thermal_results(design, model, loss_model, convection, self_heat)
     out = {}
     if sweeps:
-        prof = r["profiles"] or temperature_profiles(design, model, loss_model=r["loss_model"], options=r["options"])
-        out["peak_rise_K_by_wall"] = {k: float(v.max()) for k, v in prof["by_wall"].items()}
-        out["peak_rise_K_by_convection"] = {k: float(v.max()) for k, v in prof["by_h"].items()}
-    if r["tailboom"]:
-        out["tailboom_c"] = {k: round(v.celsius, 2) for k, v in r["tailboom"].items()}
-        out["tailboom_flags"] = {k: v.nusselt.note for k, v in r["tailboom"].items() if not v.nusselt.in_range}
-    for lm, s in r["shaft"].items():
+        prof = r.profiles or temperature_profiles(design, model, loss_model=r.loss_model, options=r.options)
+        out["peak_rise_K_by_wall"] = {k: float(v.max()) for k, v in prof.by_wall.items()}
+        out["peak_rise_K_by_convection"] = {k: float(v.max()) for k, v in prof.by_h.items()}
+    if r.tailboom:
+        out["tailboom_c"] = {k: round(v.celsius, 2) for k, v in r.tailboom.items()}
+        out["tailboom_flags"] = {k: v.nusselt.note for k, v in r.tailboom.items() if not v.nusselt.in_range}
+    for lm, s in r.shaft.items():
         t = s.temperature
         out[f"shaft_{lm}_loss_model"] = {
             "air_c": round(kelvin_to_celsius(t.air_temperature), 2),
@@ -239,13 +317,13 @@ def thermal_summary(
             "peak_rise_K": float(s.peak_rise),
             "peak_x_m": float(t.x[int(np.argmax(t.temperature))]),
         }
-    out["loss_model"] = r["loss_model"]
-    out["max_shaft_temperature_c"] = round(r["max_shaft_temperature_c"], 4)
-    out["max_shaft_temperature_K"] = round(r["max_shaft_temperature"], 4)
-    out["max_shaft_temperature_source"] = r["max_shaft_temperature_source"]
-    out["allowable_temperature_c"] = round(r["allowable_temperature_c"], 4)
-    out["temperature_margin_K"] = round(r["temperature_margin"], 4)
-    sh = r["self_heating"]
+    out["loss_model"] = r.loss_model
+    out["max_shaft_temperature_c"] = round(r.max_shaft_temperature_c, 4)
+    out["max_shaft_temperature_K"] = round(r.max_shaft_temperature, 4)
+    out["max_shaft_temperature_source"] = r.max_shaft_temperature_source
+    out["allowable_temperature_c"] = round(r.allowable_temperature_c, 4)
+    out["temperature_margin_K"] = round(r.temperature_margin, 4)
+    sh = r.self_heating
     if sh is not None:
         out["self_heating"] = {"status": sh.status, "iterations": sh.iterations, "margin_K": round(sh.margin, 3)}
     return out
