@@ -124,7 +124,7 @@ def runup_section(durations, figures: Path | None) -> None:
 
 def montecarlo_section(samples: int, jobs: int, gap: float, force_limit: float, figures: Path | None) -> None:
     from flexshaft.analyses.transient import SpeedProfile
-    from flexshaft.studies.montecarlo import EccentricityDistribution, run_montecarlo, runup_montecarlo
+    from flexshaft.montecarlo import EccentricityDistribution, run_montecarlo, runup_montecarlo
 
     design = baseline_design()
     model = build_model(design)

@@ -29,7 +29,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["FINE", "REPORT", "RESOLUTIONS", "Resolution", "SCREENING", "VERDICT", "resolution_named"]
+__all__ = ["FINE", "REPORT", "RESOLUTIONS", "SLOW_START", "Resolution", "SCREENING", "VERDICT", "resolution_named"]
+
+#: Where every spin-up scan starts [fraction of the operating speed]: slow enough that the
+#: response there is quasi-static (the assessment, the thesis studies, Monte-Carlo).
+SLOW_START = 0.02
 
 
 @dataclass(frozen=True)
@@ -67,7 +71,7 @@ class Resolution:
     report_detail: bool
     modes: int = 10
     campbell_modes: int = 12
-    scan_bottom: float = 0.02
+    scan_bottom: float = SLOW_START
     scan_top: float = 1.30
     whirl_top: float = 1.5
 

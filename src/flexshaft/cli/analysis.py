@@ -174,18 +174,19 @@ def stability(
     from flexshaft.assembly import build_model
     from flexshaft.cli.common import fail
     from flexshaft.design import DesignError
-    from flexshaft.studies.verdict import whirl_onset_check
+    from flexshaft.resolution import REPORT
     from flexshaft.units import hz_to_rpm, rad_s_to_rpm, rpm_to_rad_s
+    from flexshaft.verdict.checks import whirl_onset_check
 
     d = loaded.design
     model = build_model(d)
-    top = rpm_to_rad_s(max_rpm) if max_rpm else max(model.speed, 1.0) * 1.5
+    top = rpm_to_rad_s(max_rpm) if max_rpm else max(model.speed, 1.0) * REPORT.whirl_top
     speeds = np.linspace(0.0, top, n_speeds)
     # [Hz] -> [rad/s] through the rpm of the same rotation frequency
     reference = None if reference_hz is None else rpm_to_rad_s(hz_to_rpm(reference_hz))
     designs = {"design": d}
     if compare_thesis:
-        from flexshaft.studies.whirl import thesis_shaft_designs
+        from flexshaft.thesis.whirl import thesis_shaft_designs
 
         try:
             designs.update(thesis_shaft_designs(d))

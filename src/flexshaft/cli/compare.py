@@ -80,8 +80,8 @@ def compare(
     loaded = [load_design_argument(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     labels = _labels((design_a, design_b))
     folder = prepare_output_folder(out, _Pair(loaded[0].design, loaded[1].design), "compare", force=force)
+    from flexshaft.comparison import compare as compare_designs
     from flexshaft.report.compare import comparison_json, write_compare_report
-    from flexshaft.studies.compare import compare as compare_designs
 
     with StageProgress(transient=as_json) as progress:
         result = compare_designs(loaded[0].design, loaded[1].design, labels=labels, progress=progress.step)

@@ -1,7 +1,7 @@
 """Progress of the long commands on stderr: one line per stage with its elapsed time.
 
-:class:`StageProgress` takes the step labels of :func:`flexshaft.studies.run.run_analysis`
-(or of :func:`flexshaft.studies.chapter3.design_studies`) through :meth:`StageProgress.step`.
+:class:`StageProgress` takes the step labels of :func:`flexshaft.verdict.assess.assess`
+(or of :func:`flexshaft.thesis.design_studies.design_studies`) through :meth:`StageProgress.step`.
 Each label starts a stage: the previous one is ticked off with its time, the new one shows a
 spinner and a running clock. Labels that start with a sub-step prefix (``"design studies: "``)
 are shown indented under their stage, each with its own time.

@@ -170,7 +170,7 @@ _STATUS_STYLE = {"PASS": "green", "FAIL": "bold red", "not evaluated": "yellow"}
 
 
 def verdict_table(verdict):
-    """The requirements verdict (:class:`flexshaft.studies.verdict.Verdict`), worst case of each."""
+    """The requirements verdict (:class:`flexshaft.verdict.result.Verdict`), worst case of each."""
     from rich.text import Text
 
     from flexshaft.report.verdict import VERDICT_COLUMNS, verdict_rows

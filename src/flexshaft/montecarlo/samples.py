@@ -1,5 +1,5 @@
 """Random imbalance samples and their responses, cheap by linearity (see
-:mod:`flexshaft.studies.montecarlo` for the method and its references).
+:mod:`flexshaft.montecarlo.steady` for the method and its references).
 
 The balance-grade eccentricity (ISO 21940-11:2016, §5.3: ``e_per Ω = G``), the eccentricity
 distribution, the unit responses to a rotating unit unbalance at the Lagrange stations of every
@@ -14,8 +14,12 @@ from typing import Literal
 
 import numpy as np
 
-from flexshaft.analyses.response import orbit_amplitude
+from flexshaft.analyses.banded import BandedHarmonicSolver
+from flexshaft.analyses.response import bearing_reactions, orbit_amplitude, static_response
+from flexshaft.analyses.shaft_strength import shaft_safety_factor
+from flexshaft.assembly.loads import external_static_load, imbalance_bays, point_load, torque_load
 from flexshaft.assembly.model import Model
+from flexshaft.resolution import SLOW_START
 
 __all__ = [
     "EccentricityDistribution",
@@ -140,8 +144,6 @@ class UnitResponses:
 
 
 def _station_layout(model: Model, placement: str):
-    from flexshaft.assembly.loads import imbalance_bays
-
     bays = imbalance_bays(model) or [(float(model.dofs.shaft_x[0]), float(model.dofs.shaft_x[-1]))]
     x_nodes = np.asarray(model.dofs.shaft_x, dtype=float)
     stations, elements, element_stations, element_bay = [], [], [], []
@@ -179,8 +181,6 @@ def _station_layout(model: Model, placement: str):
 
 def _station_loads(model: Model, stations: np.ndarray) -> np.ndarray:
     """Rotating unit-unbalance load vectors per unit Ω² at the stations (ndof, n_st)."""
-    from flexshaft.assembly.loads import point_load
-
     cols = []
     for x in stations:
         cols.append(
@@ -227,17 +227,13 @@ def unit_responses(
     Parameters
     ----------
     speeds : array_like, optional
-        Spin-up speeds [rad/s]; default ``n_speeds`` from 2 % to 100 % of the operating speed.
+        Spin-up speeds [rad/s]; default ``n_speeds`` from a slow start
+        (:data:`~flexshaft.resolution.SLOW_START`, 2 %) to 100 % of the operating speed.
     placement : {"uniform", "mid_bay"}
         Unbalance position: anywhere along its bay, or at mid-bay.
     refine : bool
         Add speeds around every local peak of the response (golden-section search).
     """
-    from flexshaft.analyses import static_response
-    from flexshaft.analyses.banded import BandedHarmonicSolver
-    from flexshaft.analyses.response import bearing_reactions
-    from flexshaft.assembly.loads import external_static_load, torque_load
-
     if placement not in ("uniform", "mid_bay"):
         raise ValueError(f"placement must be 'uniform' or 'mid_bay', got {placement!r}")
     bays, lengths, stations, elements, element_stations, element_bay = _station_layout(model, placement)
@@ -267,7 +263,7 @@ def unit_responses(
         return float(np.abs(shaft_of(solver.solve(speed, probes, speed) * speed * speed)).max())
 
     if speeds is None:
-        speeds = np.linspace(0.02, 1.0, n_speeds) * max(model.speed, 1.0)
+        speeds = np.linspace(SLOW_START, 1.0, n_speeds) * max(model.speed, 1.0)
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size < 1 or not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
         raise ValueError("speeds must be a 1-D array of finite speeds >= 0 rad/s")
@@ -391,18 +387,21 @@ def sample_outputs(
 ) -> dict[str, np.ndarray]:
     """Outputs of each sample (arrays over samples) [SI]: ``shaft_peak`` [m] and
     ``shaft_peak_speed`` [rad/s], ``actuator_orbit_<name>`` [m] and ``actuator_force_<name>``
-    [N] (peaks over speed), their largest over the actuators, ``actuator_excursion_max`` [m] and
-    ``actuator_load_max`` [N] (static offset / force plus the peak, largest over the actuators,
-    as the verdict's actuator checks), and ``safety_factor`` (Tsai-Wu at
+    [N] (peaks over speed), their largest over the actuators, ``actuator_excursion_<name>`` [m]
+    and ``actuator_load_<name>`` [N] (static offset / force plus the peak: the values of the
+    verdict's actuator checks) and their largest, ``actuator_excursion_max`` and
+    ``actuator_load_max``, and ``safety_factor`` (Tsai-Wu at
     the operating speed; NaN when ``strength`` is False or the shaft is not laminated).
     Samples are combined in blocks of about ``memory`` bytes."""
-    from flexshaft.analyses.shaft_strength import shaft_safety_factor
-
     idx, weights = combine(units, draws)
     n, width = weights.shape
     out: dict[str, np.ndarray] = {name: np.full(n, np.nan) for name in BASE_OUTPUTS}
     out.update(
-        {f"actuator_{kind}_{name}": np.full(n, np.nan) for name in units.actuator_names for kind in ("orbit", "force")}
+        {
+            f"actuator_{kind}_{name}": np.full(n, np.nan)
+            for name in units.actuator_names
+            for kind in ("orbit", "force", "excursion", "load")
+        }
     )
     laminated = strength and model.shaft.laminate is not None
     block = int(max(1, memory // (units.shaft[..., 0].size * width * 8)))
@@ -421,6 +420,9 @@ def sample_outputs(
             for a, name in enumerate(units.actuator_names):
                 out[f"actuator_orbit_{name}"][sl] = orbit[..., a].max(axis=1)
                 out[f"actuator_force_{name}"][sl] = force[..., a].max(axis=1)
+                # static + peak dynamic, as the verdict's actuator checks
+                out[f"actuator_excursion_{name}"][sl] = orbit[..., a].max(axis=1) + units.static_offset[a]
+                out[f"actuator_load_{name}"][sl] = force[..., a].max(axis=1) + units.static_force[a]
             out["actuator_orbit_max"][sl] = orbit.max(axis=(1, 2))
             out["actuator_force_max"][sl] = force.max(axis=(1, 2))
             # static + peak dynamic, per actuator, as the verdict's actuator checks

@@ -22,7 +22,8 @@ import math
 
 import numpy as np
 
-from flexshaft.studies.optimize_problem import DesignProblem, DesignVariable, Objective
+from flexshaft.optimize.problem import DesignProblem
+from flexshaft.optimize.variables import DesignVariable, Objective
 
 __all__ = ["ZDT1_HYPERVOLUME", "ZDT1_REFERENCE", "zdt1_front", "zdt1_outputs", "zdt1_problem"]
 

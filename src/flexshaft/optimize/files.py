@@ -2,10 +2,10 @@
 
 :func:`design_toml` writes a validated design as a TOML design file (every field, so the file
 stands alone; comments first); loading it back gives the same design, which
-:func:`write_design_file` checks before it returns. :func:`verify_design_files` runs the
-complete ``flexshaft run`` analysis (:func:`~flexshaft.studies.run.run_analysis`) of each file
-on the sweep engine and returns its verdict: the same verdict ``flexshaft run --strict`` turns
-into its exit code.
+:func:`write_design_file` checks before it returns. :func:`verify_design_files` assesses each
+file as ``flexshaft run`` does (:func:`~flexshaft.verdict.assess.assess` at the report's
+resolution) on the sweep engine and returns its verdict: the same verdict ``flexshaft run
+--strict`` turns into its exit code.
 """
 
 from __future__ import annotations
@@ -18,6 +18,11 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from flexshaft.design import load_design
+from flexshaft.resolution import REPORT
+from flexshaft.sweep import Output, Study, Variable, run_sweep
+from flexshaft.verdict.assess import assess
 
 __all__ = ["VERIFY_OUTPUTS", "design_toml", "verify_design_files", "verify_outputs", "write_design_file"]
 
@@ -86,8 +91,6 @@ def design_toml(design, comments: Sequence[str] = ()) -> str:
 
 def write_design_file(design, path: str | Path, comments: Sequence[str] = ()) -> Path:
     """Write ``design`` to ``path`` and check that the file loads back to the same design."""
-    from flexshaft.design import load_design
-
     path = Path(path)
     path.write_text(design_toml(design, comments), encoding="utf-8")
     loaded = load_design(path)
@@ -110,13 +113,10 @@ VERIFY_OUTPUTS = (
 
 
 def verify_outputs(point) -> dict[str, float]:
-    """Sweep output function: the full ``flexshaft run`` verdict of the design file named by
-    the point's special axis ``design_file``."""
-    from flexshaft.design import load_design
-    from flexshaft.studies.run import run_analysis
-
+    """Sweep output function: the ``flexshaft run`` verdict of the design file named by the
+    point's special axis ``design_file``."""
     design = load_design(point.axes["design_file"])
-    res = run_analysis(design, studies=None)
+    res = assess(design, REPORT)
     verdict = res.verdict
 
     def value(key: str) -> float:
@@ -145,8 +145,6 @@ def verify_design_files(
     xarray.Dataset
         Over ``design_file``: the outputs of :data:`VERIFY_OUTPUTS`.
     """
-    from flexshaft.sweep import Output, Study, Variable, run_sweep
-
     files = [str(Path(p).resolve()) for p in paths]
     study = Study(
         name="full-run verification of the optimized designs",

@@ -1,11 +1,11 @@
-"""The design studies of thesis chapter 3 in one call, with their report section.
+"""The design studies of thesis chapter 3 in one call: every study of docs/studies.md (1-6 and
+the stability margin map of 8) on one design.
 
-:func:`design_studies` runs every study of docs/studies.md (1-6 and the stability margin map of
-8) on one design at a chosen resolution and returns a :class:`DesignStudies` of labelled
-:class:`xarray.Dataset` results (units in attributes) and the headline numbers;
-:func:`flexshaft.report.studies_section.design_studies_section` draws the figures and tables
-for the ``flexshaft run`` report;
-:func:`headline` gives the headline numbers as JSON-ready data, beside the thesis's.
+:func:`design_studies` runs them at a chosen resolution (:data:`STUDY_GRIDS`) and returns a
+:class:`DesignStudies` of labelled :class:`xarray.Dataset` results (units in attributes) and the
+headline numbers; :func:`flexshaft.report.studies_section.design_studies_section` draws the
+figures and tables for the ``flexshaft run`` report; :func:`headline` gives the headline numbers
+as JSON-ready data, beside the thesis's.
 
 Resolutions (CPU time on the 2-core machine, tuned design; ``flexshaft run`` divides it
 among its worker processes, benchmarks/studies_timing.py; see docs/studies.md):
@@ -20,28 +20,45 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Callable
-from dataclasses import dataclass, field
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from flexshaft.assembly import build_model
+from flexshaft.design import baseline_design
+from flexshaft.netcdf import write_netcdf
+from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
+from flexshaft.resolution import REPORT
+from flexshaft.sweep.study import SweepError
+from flexshaft.thesis.buckling_sweep import buckling_study
+from flexshaft.thesis.gain import proportional_gain_study
+from flexshaft.thesis.ply_angle import ply_angle_study
+from flexshaft.thesis.spinup_maps import spinup_studies
+from flexshaft.thesis.two_angles import two_angle_study
+from flexshaft.thesis.wall import FORCED_WALLS, forced_response, quietest_spinup_wall, wall_thickness_study
+from flexshaft.thesis.whirl import gain_stability_map, stability_dataset, stack_maps
 from flexshaft.units import rad_s_to_rpm
+
+if TYPE_CHECKING:
+    from xarray import Dataset
 
 __all__ = [
     "COSTS",
     "DesignStudies",
-    "RESOLUTIONS",
+    "STUDY_GRIDS",
+    "TABLE_ANGLES",
     "THESIS",
     "design_studies",
     "finish_design_studies",
-    "plan_design_studies",
-    "start_design_studies",
     "headline",
     "nearest",
-    "two_angle_name",
+    "plan_design_studies",
     "save_study_data",
+    "start_design_studies",
+    "two_angle_name",
 ]
 
 
@@ -55,7 +72,7 @@ THESIS = {
 }
 
 #: Grids of each resolution. Angles [deg], walls [m], gains [N/m], [N s/m].
-RESOLUTIONS: dict[str, dict[str, Any]] = {
+STUDY_GRIDS: dict[str, dict[str, Any]] = {
     "report": {
         "angles": np.arange(2.5, 90.0, 2.5),
         "two_angles": np.array([0.0, 15.0, 30.0, 45.0, 55.0, 60.0, 75.0, 90.0]),
@@ -84,15 +101,11 @@ RESOLUTIONS: dict[str, dict[str, Any]] = {
     },
 }
 
-#: Gain pairs of the thesis's frequency-response surfaces (figures 3.13, 3.14).
-SURFACE_GAINS = ((2e6, 1170.0), (3e5, 1170.0))
-#: Walls of the thesis's forced-response view (figure 3.5) [m].
-FORCED_WALLS = (0.001, 0.004)
 #: Ply angles listed in the critical-stress table (Table 3.3) besides the optimum [deg].
 TABLE_ANGLES = (15.0, 30.0, 45.0, 55.0, 60.0, 75.0)
 
 
-@dataclass
+@dataclass(frozen=True)
 class DesignStudies:
     """Results of :func:`design_studies` (SI units; datasets carry units in attributes).
 
@@ -103,16 +116,16 @@ class DesignStudies:
     design_name: str
     resolution: str
     operating_speed: float  # rad/s
-    ply_angle: Any = None  # Dataset over alpha [deg]: safety factor and critical-ply stresses
-    two_angle: Any = None  # Dataset over (alpha, beta) [deg]
-    wall: Any = None  # Dataset over wall_thickness [m]
-    forced_response: Any = None  # Dataset (wall_thickness, speed): max shaft orbit [m]
-    gain: Any = None  # Dataset over kp [N/m]
-    buckling: Any = None  # Dataset over wall_thickness [m]
-    spinup_map: Any = None  # Dataset over (kp, kd)
-    surfaces: Any = None  # Dataset (case, x, speed): shaft orbit [m]
-    tuned: Any = None  # Dataset (case, speed): before/after spin-up curves
-    stability_map: Any = None  # Dataset over (kp, kd): onset speed, damping ratio
+    ply_angle: Dataset | None = None  # over alpha [deg]: safety factor and critical-ply stresses
+    two_angle: Dataset | None = None  # over (alpha, beta) [deg]
+    wall: Dataset | None = None  # over wall_thickness [m]
+    forced_response: Dataset | None = None  # (wall_thickness, speed): max shaft orbit [m]
+    gain: Dataset | None = None  # over kp [N/m]
+    buckling: Dataset | None = None  # over wall_thickness [m]
+    spinup_map: Dataset | None = None  # over (kp, kd)
+    surfaces: Dataset | None = None  # (case, x, speed): shaft orbit [m]
+    tuned: Dataset | None = None  # (case, speed): before/after spin-up curves
+    stability_map: Dataset | None = None  # over (kp, kd): onset speed, damping ratio
     optimal_angle: float | None = None  # deg
     optimal_angle_safety_factor: float | None = None
     best_two_angle: tuple[float, float] | None = None  # (alpha, beta) deg
@@ -126,8 +139,8 @@ class DesignStudies:
     peak_speed_before: float | None = None  # rad/s
     peak_speed_after: float | None = None  # rad/s
     actuator_gap: float | None = None  # m, limit used for the tuned gains
-    timings: dict = field(default_factory=dict)  # study -> seconds
-    notes: list = field(default_factory=list)
+    timings: Mapping[str, float] = field(default_factory=dict)  # study -> seconds
+    notes: tuple[str, ...] = ()
 
     @property
     def elapsed(self) -> float:
@@ -170,10 +183,10 @@ def design_studies(
     ----------
     design : Design, optional
     resolution : {"report", "full"}
-        Grid sizes, see :data:`RESOLUTIONS`.
+        Grid sizes, see :data:`STUDY_GRIDS`.
     progress : callable or bool, optional
         A callable is called with a short label before each study (like
-        :func:`flexshaft.studies.run.run_analysis`); True shows the sweeps' progress bars.
+        :func:`flexshaft.verdict.assess.assess`); True shows the sweeps' progress bars.
     jobs : int
         Local worker processes for each sweep-engine study (1: in process; below ~5 s of
         work the process start-up costs more than it saves).
@@ -201,13 +214,10 @@ def start_design_studies(
     *,
     jobs: int = 1,
     progress_bars: bool = False,
-):
+) -> tuple[DesignStudies, TaskRun]:
     """Start the studies of :func:`design_studies` (on ``executor`` when given) and return
     ``(DesignStudies, TaskRun)`` for :func:`finish_design_studies`: the caller can compute
     something else while a pool works on them."""
-    from flexshaft.parallel.tasks import start_tasks
-    from flexshaft.sweep import SweepError
-
     res, tasks = plan_design_studies(design, resolution, actuator_gap, jobs=jobs, progress_bars=progress_bars)
     return res, start_tasks(tasks, executor, errors=(SweepError, ValueError))
 
@@ -219,29 +229,19 @@ def plan_design_studies(
     *,
     jobs: int = 1,
     progress_bars: bool = False,
-):
+) -> tuple[DesignStudies, list[Task]]:
     """``(DesignStudies, tasks)``: the empty results (with the notes of the studies that do
     not apply) and the :class:`~flexshaft.parallel.tasks.Task` of each study, to start
     together with other tasks (:func:`flexshaft.parallel.tasks.start_tasks`)."""
-    from flexshaft.assembly import build_model
-    from flexshaft.design import baseline_design
-    from flexshaft.parallel.tasks import Task
-
-    if resolution not in RESOLUTIONS:
-        raise ValueError(f"resolution must be one of {sorted(RESOLUTIONS)}, got {resolution!r}")
-    grid = RESOLUTIONS[resolution]
+    if resolution not in STUDY_GRIDS:
+        raise ValueError(f"resolution must be one of {sorted(STUDY_GRIDS)}, got {resolution!r}")
+    grid = STUDY_GRIDS[resolution]
     design = design if design is not None else baseline_design()
     run = {"jobs": int(jobs), "progress": bool(progress_bars)}
     model = build_model(design)
-    res = DesignStudies(
-        design_name=str(design.name),
-        resolution=resolution,
-        operating_speed=float(model.speed),
-        actuator_gap=actuator_gap,
-    )
     laminated = model.shaft.laminate is not None
     active = bool(model.actuators) and model.all_pd
-    tasks = []
+    tasks, notes = [], []
 
     def task(key, label, function, *args):
         tasks.append(Task(key, label, function, args, cost=COSTS[key.partition(":")[0]]))
@@ -250,7 +250,7 @@ def plan_design_studies(
         task("ply_angle", "study 1: ply angle", _ply_angle_task, design, grid["angles"], run)
         task("two_angle", "study 2: two-angle map", _two_angle_task, design, grid["two_angles"], run)
     else:
-        res.notes.append("ply-angle studies skipped: the shaft material is not a lamina")
+        notes.append("ply-angle studies skipped: the shaft material is not a lamina")
     task("wall", "study 3: wall thickness", _wall_task, design, grid["walls"], run, laminated)
     task(
         "forced_response",
@@ -263,7 +263,7 @@ def plan_design_studies(
     if laminated and active and _both_actuators(design):
         task("gain", "study 4: proportional gain", _gain_task, design, grid["kp"], run)
     elif laminated:
-        res.notes.append("the K_p study needs the baseline's two active bearings (design bearings 1 and 2)")
+        notes.append("the K_p study needs the baseline's two active bearings (design bearings 1 and 2)")
     if laminated:
         task("buckling", "study 5: torsional buckling", _buckling_task, design, grid["walls"], run)
     if active:
@@ -271,42 +271,45 @@ def plan_design_studies(
         for i, kp in enumerate(grid["stab_kp"]):  # one task per K_p row: the pool balances better
             task(f"stability:{i}", "stability margin map", _stability_row_task, design, grid, kp)
     else:
-        res.notes.append("spin-up and stability maps need PD active bearings; skipped")
+        notes.append("spin-up and stability maps need PD active bearings; skipped")
+    res = DesignStudies(
+        design_name=str(design.name),
+        resolution=resolution,
+        operating_speed=float(model.speed),
+        actuator_gap=actuator_gap,
+        notes=tuple(notes),
+    )
     return res, tasks
 
 
-def finish_design_studies(res: DesignStudies, run, progress=None) -> DesignStudies:
-    """Wait for the studies started by :func:`start_design_studies` and fill ``res``.
+def finish_design_studies(res: DesignStudies, run: TaskRun, progress=None) -> DesignStudies:
+    """Wait for the studies started by :func:`start_design_studies`: ``res`` with their results.
 
     A study that cannot run on the design (a :class:`~flexshaft.sweep.SweepError` or
-    ``ValueError``) is left None with the reason in ``res.notes``.
+    ``ValueError``) is left None with the reason in ``notes``.
     """
     outcomes = run.results(_reporter(progress))
-    rows, failed = [], set()
+    rows, failed, found = [], set(), {}
+    notes, timings = list(res.notes), dict(res.timings)
     for task in run.tasks:
         outcome = outcomes[task.key]
         name = task.key.partition(":")[0]
-        res.timings[name] = res.timings.get(name, 0.0) + outcome.seconds
+        timings[name] = timings.get(name, 0.0) + outcome.seconds
         if outcome.error is not None:
             if task.label not in failed:
-                res.notes.append(f"{task.label} skipped: {str(outcome.error).splitlines()[0]}")
+                notes.append(f"{task.label} skipped: {str(outcome.error).splitlines()[0]}")
             failed.add(task.label)
             continue
         fields = dict(outcome.value)
-        res.notes.extend(fields.pop("notes", []))
+        notes.extend(fields.pop("notes", []))
         rows.extend(fields.pop("stability_rows", []))
-        for field_name, value in fields.items():
-            setattr(res, field_name, value)
+        found.update(fields)
     if rows and "stability margin map" not in failed:
-        from flexshaft.studies.whirl import stack_maps
-
-        res.stability_map = _stability_dataset(stack_maps(rows))
-    return res
+        found["stability_map"] = stability_dataset(stack_maps(rows))
+    return replace(res, **found, timings=timings, notes=tuple(notes))
 
 
 def _ply_angle_task(design, angles, run) -> dict:
-    from flexshaft.studies.sweeps import ply_angle_study
-
     ds = ply_angle_study(angles, design=design, **run)
     i = int(np.nanargmax(ds["safety_factor"].values))
     return {
@@ -317,8 +320,6 @@ def _ply_angle_task(design, angles, run) -> dict:
 
 
 def _two_angle_task(design, angles, run) -> dict:
-    from flexshaft.studies.sweeps import two_angle_study
-
     ds = two_angle_study(angles, angles, design=design, **run)
     i, j = np.unravel_index(int(np.nanargmax(ds["safety_factor"].values)), ds["safety_factor"].shape)
     return {
@@ -329,8 +330,6 @@ def _two_angle_task(design, angles, run) -> dict:
 
 
 def _wall_task(design, walls, run, laminated: bool) -> dict:
-    from flexshaft.studies.sweeps import wall_thickness_study
-
     ds = wall_thickness_study(walls, design=design, **run)
     out = {"wall": ds}
     if laminated:
@@ -345,248 +344,30 @@ def _wall_task(design, walls, run, laminated: bool) -> dict:
     return out
 
 
-def quietest_spinup_wall(wall) -> tuple[float, float] | None:
-    """(wall [m], peak shaft orbit [m]) of the wall study's smallest spin-up peak under the
-    design's gains; None without actuators (all NaN)."""
-    peaks = np.asarray(wall["spinup_peak_deflection"].values, dtype=float)
-    if not np.isfinite(peaks).any():
-        return None
-    i = int(np.nanargmin(peaks))
-    return float(wall.wall_thickness.values[i]), float(peaks[i])
-
-
 def _forced_response_task(design, walls, n_speeds) -> dict:
-    return {"forced_response": _forced_response(design, walls, n_speeds)}
+    return {"forced_response": forced_response(design, walls, n_speeds)}
 
 
 def _gain_task(design, kps, run) -> dict:
-    from flexshaft.studies.sweeps import proportional_gain_study
-
     return {"gain": proportional_gain_study(kps, design=design, **run)}
 
 
 def _buckling_task(design, walls, run) -> dict:
-    from flexshaft.studies.sweeps import buckling_study
-
     return {"buckling": buckling_study(walls, design=design, **run)}
 
 
 def _spinup_task(design, grid, actuator_gap) -> dict:
-    from flexshaft.assembly import build_model
-
-    return _spinup_studies(build_model(design), grid, actuator_gap)
+    return spinup_studies(build_model(design), grid, actuator_gap)
 
 
 def _stability_row_task(design, grid, kp: float) -> dict:
-    from flexshaft.studies.whirl import gain_stability_map
-
-    speeds = np.linspace(0.0, 1.5 * max(design.operating.speed_rad_s, 1.0), grid["stab_speeds"])
+    speeds = np.linspace(0.0, REPORT.whirl_top * max(design.operating.speed_rad_s, 1.0), grid["stab_speeds"])
     return {"stability_rows": [gain_stability_map(design, [kp], grid["stab_kd"], speeds, n_modes=8)]}
 
 
 def _both_actuators(design) -> bool:
     kinds = [b.kind for b in design.bearings]
     return len(kinds) > 2 and kinds[1] == "active" and kinds[2] == "active"
-
-
-def _forced_response(design, walls, n_speeds: int):
-    """Largest shaft orbit vs speed (2 %–130 % of the operating speed) for a few walls."""
-    import xarray as xr
-
-    from flexshaft.analyses import imbalance_response
-    from flexshaft.analyses.response import orbit_amplitude
-    from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
-    from flexshaft.assembly import build_model
-    from flexshaft.assembly.loads import imbalance_loads
-    from flexshaft.design import with_overrides
-
-    peaks = []
-    speeds = None
-    for wall in walls:
-        model = build_model(with_overrides(design, {"shaft.wall_thickness": float(wall)}))
-        speeds = np.linspace(0.02, 1.3, n_speeds) * max(model.speed, 1.0)
-        if model.actuators:
-            rec = actuator_receptance(model, speeds)
-            peaks.append(spinup_curves(rec, [a.controller for a in model.actuators]).shaft_peak)
-        else:
-            q = imbalance_response(model, speeds, imbalance_loads(model))
-            dm = model.dofs
-            n = np.arange(dm.n_shaft_nodes)
-            peaks.append(orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")]).max(axis=(0, 1)))
-    return xr.Dataset(
-        {
-            "shaft_peak": (
-                ("wall_thickness", "speed"),
-                np.array(peaks),
-                {"units": "m", "long_name": "largest shaft orbit over the nodes"},
-            )
-        },
-        coords={
-            "wall_thickness": ("wall_thickness", np.asarray(walls, float), {"units": "m"}),
-            "speed": ("speed", speeds, {"units": "rad/s", "long_name": "spin speed"}),
-        },
-        attrs={"title": "forced response vs wall thickness (thesis figure 3.5)"},
-    )
-
-
-def _refined_peak(
-    receptance_at, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81
-) -> tuple[float, float]:
-    """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak;
-    ``receptance_at(fine_speeds)`` gives the actuator receptance there."""
-    from flexshaft.analyses.spinup import spinup_curves
-
-    i = int(np.argmax(curve))
-    lo, hi = speeds[max(i - 1, 0)], speeds[min(i + 1, speeds.size - 1)]
-    fine = np.linspace(lo, hi, n)
-    peak = spinup_curves(receptance_at(fine), controllers).shaft_peak
-    k = int(np.argmax(peak))
-    if peak[k] >= curve[i]:
-        return float(peak[k]), float(fine[k])
-    return float(curve[i]), float(speeds[i])
-
-
-def _receptance_cache(model):
-    """``receptance_at(speeds)``: the actuator receptance of ``model``, each grid solved once
-    (several gain pairs often refine the same resonance)."""
-    from flexshaft.analyses.spinup import actuator_receptance
-
-    cache = {}
-
-    def receptance_at(speeds: np.ndarray):
-        key = np.asarray(speeds, dtype=float).tobytes()
-        if key not in cache:
-            cache[key] = actuator_receptance(model, speeds)
-        return cache[key]
-
-    return receptance_at
-
-
-def _spinup_studies(model, grid, actuator_gap: float | None) -> dict:
-    """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance: the
-    :class:`DesignStudies` fields they fill."""
-    import xarray as xr
-
-    from flexshaft.analyses.spinup import clustered_receptance, spinup_curves, spinup_map, spinup_speeds
-    from flexshaft.assembly.model import Controller
-
-    before = [a.controller for a in model.actuators]  # the design's own laws
-    rec = clustered_receptance(model, before, spinup_speeds(model, grid["map_speeds"]))
-    receptance_at = _receptance_cache(model)
-    smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
-    ds = smap.to_dataset()
-    ds.attrs["title"] = "spin-up peaks over the actuator gains (thesis figures 3.12, 3.15, 3.16)"
-    first = model.actuators[0].controller
-    gains_before = (float(first.kp), float(first.kd))
-    # The best pair on the sampled speeds may owe its rank to a resonance that falls between
-    # samples: refine the peak of the few best candidates and keep the best refined one.
-    ok = np.ones(smap.shaft_peak.shape, bool)
-    if actuator_gap is not None:
-        ok &= smap.actuator_displacement_peak.max(axis=-1) <= actuator_gap
-    if not ok.any():
-        raise ValueError(f"no gain pair keeps the actuator orbit within the gap {actuator_gap} m")
-    order = np.argsort(np.where(ok, smap.shaft_peak, np.inf), axis=None)[: min(8, int(ok.sum()))]
-    best = None
-    for flat in order:
-        i, j = np.unravel_index(int(flat), smap.shaft_peak.shape)
-        law = [Controller.pd(float(smap.kp[i]), float(smap.kd[j]))] * rec.n_actuators
-        peak, _ = _refined_peak(receptance_at, law, rec.speeds, spinup_curves(rec, law).shaft_peak)
-        if best is None or peak < best[0]:
-            best = (peak, float(smap.kp[i]), float(smap.kd[j]))
-    _, kp_a, kd_a = best
-
-    cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]
-    orbits = [spinup_curves(rec, (kp, kd)).shaft_orbit for _, kp, kd in cases]
-    surfaces = xr.Dataset(
-        {
-            "shaft_orbit": (
-                ("case", "x", "speed"),
-                np.array(orbits),
-                {"units": "m", "long_name": "shaft orbit major semi-axis"},
-            )
-        },
-        coords={
-            "case": [c[0] for c in cases],
-            "kp": ("case", [c[1] for c in cases], {"units": "N/m"}),
-            "kd": ("case", [c[2] for c in cases], {"units": "N s/m"}),
-            "x": ("x", rec.shaft_x, {"units": "m", "long_name": "shaft station"}),
-            "speed": ("speed", rec.speeds, {"units": "rad/s"}),
-        },
-        attrs={"title": "frequency-response surfaces (thesis figures 3.13, 3.14)"},
-    )
-
-    after = [Controller.pd(kp_a, kd_a)] * rec.n_actuators
-    curves = [spinup_curves(rec, c) for c in (before, after)]
-    refined = [_refined_peak(receptance_at, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
-    (peak_before, speed_before), (peak_after, speed_after) = refined
-    tuned = xr.Dataset(
-        {
-            "shaft_peak": (
-                ("case", "speed"),
-                np.array([c.shaft_peak for c in curves]),
-                {"units": "m", "long_name": "largest shaft orbit over the nodes"},
-            ),
-            "actuator_displacement": (
-                ("case", "actuator", "speed"),
-                np.array([c.actuator_displacement for c in curves]),
-                {"units": "m"},
-            ),
-            "actuator_force": (
-                ("case", "actuator", "speed"),
-                np.array([c.actuator_force for c in curves]),
-                {"units": "N"},
-            ),
-            "refined_peak": (
-                "case",
-                [r[0] for r in refined],
-                {"units": "m", "long_name": "peak on a refined speed grid"},
-            ),
-        },
-        coords={
-            "case": ["design gains", "tuned gains"],
-            "kp": ("case", [gains_before[0], kp_a], {"units": "N/m"}),
-            "kd": ("case", [gains_before[1], kd_a], {"units": "N s/m"}),
-            "actuator": list(rec.actuator_names),
-            "speed": ("speed", rec.speeds, {"units": "rad/s"}),
-        },
-        attrs={"title": "tuned gains (thesis figure 3.17)"},
-    )
-    return {
-        "spinup_map": ds,
-        "gains_before": gains_before,
-        "gains_after": (kp_a, kd_a),
-        "surfaces": surfaces,
-        "tuned": tuned,
-        "peak_before": peak_before,
-        "peak_speed_before": speed_before,
-        "peak_after": peak_after,
-        "peak_speed_after": speed_after,
-    }
-
-
-def _stability_dataset(smap) -> Any:
-    """The stability margin map (a :class:`~flexshaft.studies.whirl.StabilityMap`) as a Dataset."""
-    import xarray as xr
-
-    return xr.Dataset(
-        {
-            "onset_speed": (
-                ("kp", "kd"),
-                smap.onset_speed,
-                {"units": "rad/s", "long_name": "whirl onset speed (NaN: stable)"},
-            ),
-            "damping_ratio": (
-                ("kp", "kd"),
-                smap.margin_at_operating,
-                {"units": "1", "long_name": "smallest damping ratio at the operating speed"},
-            ),
-        },
-        coords={"kp": ("kp", smap.kp, {"units": "N/m"}), "kd": ("kd", smap.kd, {"units": "N s/m"})},
-        attrs={"title": "whirl-stability margin over the actuator gains", "max_speed_rad_s": smap.max_speed},
-    )
-
-
-# ---------------------------------------------------------------------------------------------
 
 
 def _f(value) -> float | None:
@@ -654,8 +435,6 @@ _DATASETS = (
 def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Path]:
     """Write every study's Dataset to ``folder/study_NAME.nc`` (netCDF, units in attributes)
     and the headline to ``folder/design_studies.json``; returns the paths by name."""
-    from flexshaft.netcdf import write_netcdf
-
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     paths = {}

@@ -1,9 +1,9 @@
 """The evidence a requirements verdict judges: the few numbers each requirement needs, in SI,
 with where they occur.
 
-:func:`flexshaft.studies.verdict_evidence.evidence_from_run` builds an :class:`Evidence` from a
-``flexshaft run`` result; :func:`flexshaft.studies.verdict.evaluate` checks it against the
-design's requirements. Tests and other tools (the optimizer's lean evaluation) fill it directly.
+:func:`flexshaft.verdict.gather.gather_evidence` builds an :class:`Evidence` from the analyses of
+an operating point; :func:`flexshaft.verdict.checks.evaluate` checks it against the design's
+requirements. Tests fill it directly.
 
 Locations are small mappings with SI values (``station`` [m], ``speed`` [rad/s], ``frequency``
 [rad/s]) and labels (``actuator``, ``mode``, ``ply``, ``case``, ``detail``).

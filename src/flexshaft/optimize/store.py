@@ -30,7 +30,10 @@ from typing import Any
 
 import numpy as np
 
-from flexshaft.studies.optimize_problem import DesignProblem, OptimizeError
+from flexshaft.design import DesignError, with_overrides
+from flexshaft.optimize.problem import DesignProblem
+from flexshaft.optimize.variables import OptimizeError
+from flexshaft.sweep import Study, Variable, evaluate_chunk, finished_chunks, run_sweep
 
 __all__ = ["EVALUATIONS", "EvaluationCache", "candidate_key", "candidate_overrides", "evaluate_candidates"]
 
@@ -138,8 +141,6 @@ class EvaluationCache:
 
 def _design_or_reason(problem: DesignProblem, overrides: Mapping[str, Any]):
     """The candidate's design, or the schema's message when it is invalid."""
-    from flexshaft.design import DesignError, with_overrides
-
     try:
         return with_overrides(problem.base, overrides), None
     except DesignError as exc:
@@ -170,8 +171,6 @@ def evaluate_candidates(
     n_computed : int
         Evaluations computed now (not found in the cache nor in an interrupted batch).
     """
-    from flexshaft.sweep import Study, Variable, run_sweep
-
     fingerprint = problem.evaluation_fingerprint()
     names = problem.output_names
     keys: list[str] = []
@@ -212,8 +211,6 @@ def evaluate_candidates(
         )
         batch_dir = None
         if run_dir is not None:
-            from flexshaft.sweep import finished_chunks
-
             batch_dir = Path(run_dir) / BATCHES / study.fingerprint()[:20]
             stored = len(finished_chunks(batch_dir))  # an interrupted batch's evaluations (one per chunk)
         ds = run_sweep(study, batch_dir, jobs=jobs, client=client, chunk_size=1, progress=False, on_error="nan")
@@ -241,8 +238,6 @@ def _raise_if_all_failed(study, values: np.ndarray) -> None:
     the first candidate again here, to show the user the error instead of an empty front."""
     if values.size == 0 or not np.all(np.isnan(values)):
         return
-    from flexshaft.sweep import evaluate_chunk
-
     try:
         evaluate_chunk(study, 0, 1, on_error="raise")
     except Exception as exc:  # the evaluation's own error, shown to the user

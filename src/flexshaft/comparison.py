@@ -1,7 +1,7 @@
 """Two drivelines side by side: the thesis's comparison (``flexshaft compare``).
 
-:func:`compare` runs every analysis of two designs at their operating points
-(:func:`flexshaft.studies.run.run_analysis` without the design studies) and collects what a
+:func:`compare` assesses two designs at their operating points
+(:func:`flexshaft.verdict.assess.assess` at the report's resolution) and collects what a
 designer weighs: mass and part count by kind (:func:`driveline_inventory`), every requirement
 of both verdicts with value, limit and margin, the lateral critical speeds with their API 684
 separation margins, whirl onset and the smallest log decrement, the spin-up peak, the strength
@@ -17,13 +17,19 @@ a part without a mass counts 0 kg and is listed in :attr:`Inventory.mass_not_giv
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
 from flexshaft.analyses.results import ResultMixin, coded, new_dataset
 from flexshaft.assembly.model import Model
+from flexshaft.design import Design, embedded_design
+from flexshaft.resolution import REPORT, Resolution
+from flexshaft.thermal.options import thermal_options
+from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
+from flexshaft.verdict.assess import Assessment, assess
+from flexshaft.verdict.result import SI_UNITS, Check
 
 __all__ = ["PART_KINDS", "Comparison", "Inventory", "Metric", "compare", "driveline_inventory"]
 
@@ -96,17 +102,17 @@ class Comparison(ResultMixin):
     ----------
     labels : tuple of str
         Short names of the two designs (column headings).
-    runs : tuple of RunResults
-        The two runs (:class:`flexshaft.studies.run.RunResults`).
+    runs : tuple of Assessment
+        The two assessments (:class:`flexshaft.verdict.assess.Assessment`).
     inventories : tuple of Inventory
-    boom_temperatures : tuple of dict
+    boom_temperatures : tuple of mapping
         ``{"hover": K, "parked": K}`` of each design's tailboom (empty without a boom).
     """
 
     labels: tuple[str, str]
-    runs: tuple
+    runs: tuple[Assessment, Assessment]
     inventories: tuple[Inventory, Inventory]
-    boom_temperatures: tuple[dict, dict] = ({}, {})
+    boom_temperatures: tuple[Mapping[str, float], Mapping[str, float]] = ({}, {})
 
     def __repr__(self) -> str:
         a, b = self.labels
@@ -131,7 +137,7 @@ class Comparison(ResultMixin):
                 previous = c.key
         return tuple(keys)
 
-    def check(self, key: str, design: int):
+    def check(self, key: str, design: int) -> Check | None:
         """The check ``key`` of design 0 or 1, or None when its verdict does not list it."""
         try:
             return self.runs[design].verdict.check(key)
@@ -252,7 +258,8 @@ class Comparison(ResultMixin):
                 )
             else:
                 values.append(None)
-                notes.append("none found" if below else "none up to 1.3 × Ω_op")
+                top = self.runs[design].resolution.scan_top
+                notes.append("none found" if below else f"none up to {top:g} × Ω_op")
         return Metric(key, title, "rad/s", (values[0], values[1]), (notes[0], notes[1]))
 
     # -- data --------------------------------------------------------------------------------------
@@ -316,8 +323,6 @@ class Comparison(ResultMixin):
 
 
 def _check_unit(comparison: Comparison, key: str) -> str:
-    from flexshaft.studies.verdict import SI_UNITS
-
     c = comparison.check(key, 0) or comparison.check(key, 1)
     return SI_UNITS.get(c.kind, "-").replace("-", "1")
 
@@ -335,22 +340,19 @@ def _missing_note(inventory: Inventory) -> str:
     return "mass not given (0 kg): " + ", ".join(inventory.mass_not_given)
 
 
-def _static_deflection(run) -> float:
+def _static_deflection(run: Assessment) -> float:
     dm = run.model.dofs
     q = np.real(run.static_displacement)
     return float(np.max(np.hypot(dm.values(q, "shaft", "v"), dm.values(q, "shaft", "w"))))
 
 
-def _boom_temperatures(design, run) -> dict:
+def _boom_temperatures(design: Design, run: Assessment) -> dict[str, float]:
     """Hover and parked tailboom skin temperatures [K] (from the run's thermal result, else computed)."""
     if design.tailboom is None:
         return {}
     thermal = run.thermal
     if thermal is not None and thermal.tailboom:
         return {k: float(v.temperature) for k, v in thermal.tailboom.items()}
-    from flexshaft.thermal.options import thermal_options
-    from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
-
     options = thermal_options(design.thermal)
     found = tailboom_temperatures(
         boom_equivalent_diameter(design.tailboom), options.environment, options.boom_convection
@@ -358,9 +360,7 @@ def _boom_temperatures(design, run) -> dict:
     return {k: float(v.temperature) for k, v in found.items()}
 
 
-def _design(value):
-    from flexshaft.design import Design, embedded_design
-
+def _design(value) -> Design:
     if isinstance(value, Design):
         return value
     if isinstance(value, str):
@@ -373,8 +373,7 @@ def compare(
     design_b="current",
     *,
     labels: tuple[str, str] | None = None,
-    n_speeds: int = 651,
-    n_campbell: int = 60,
+    resolution: Resolution = REPORT,
     progress: Callable[[str], None] | None = None,
 ) -> Comparison:
     """Analyse two designs and put them side by side.
@@ -386,9 +385,8 @@ def compare(
         segmented aluminium driveline: the thesis's comparison).
     labels : tuple of str, optional
         Column headings; default the embedded names, else "A" and "B".
-    n_speeds, n_campbell : int
-        Speeds of each run's imbalance scan and Campbell diagram
-        (:func:`flexshaft.studies.run.run_analysis`).
+    resolution : Resolution
+        Grids of each assessment (:func:`flexshaft.verdict.assess.assess`).
     progress : callable, optional
         Called with a short label before each step.
 
@@ -396,8 +394,6 @@ def compare(
     -------
     Comparison
     """
-    from flexshaft.studies.run import run_analysis
-
     designs = (_design(design_a), _design(design_b))
     if labels is None:
         labels = tuple(v if isinstance(v, str) else k for v, k in ((design_a, "A"), (design_b, "B")))
@@ -406,15 +402,7 @@ def compare(
     step = progress or (lambda label: None)
     runs = []
     for label, design in zip(labels, designs):
-        runs.append(
-            run_analysis(
-                design,
-                n_speeds=n_speeds,
-                n_campbell=n_campbell,
-                studies=None,
-                progress=lambda s, label=label: step(f"{label}: {s}"),
-            )
-        )
+        runs.append(assess(design, resolution, progress=lambda s, label=label: step(f"{label}: {s}")))
     return Comparison(
         labels=(str(labels[0]), str(labels[1])),
         runs=tuple(runs),
