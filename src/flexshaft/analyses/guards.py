@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from flexshaft.assembly.model import Model
+
 __all__ = ["NonFiniteResultError", "check_count", "check_finite_array", "check_model", "check_speed", "require_finite"]
 
 
@@ -21,7 +23,6 @@ class NonFiniteResultError(ArithmeticError, ValueError):
 
 def check_model(model: Any) -> None:
     """Refuse anything but an assembled :class:`~flexshaft.assembly.model.Model`."""
-    from flexshaft.assembly.model import Model
 
     if not isinstance(model, Model):
         raise ValueError(

@@ -27,6 +27,11 @@ from flexshaft.cli.progress import StageProgress
 
 __all__ = ["baseline", "check", "modes", "stability", "thermal"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 
 @guarded
 def baseline(

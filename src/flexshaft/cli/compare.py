@@ -16,6 +16,11 @@ from flexshaft.cli.progress import StageProgress
 
 __all__ = ["compare"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Embedded designs compared when no file is given: A (the FMC design) and B (the current driveline).
 DEFAULTS = ("tuned", "current")
 

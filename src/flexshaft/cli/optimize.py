@@ -27,6 +27,11 @@ class Fidelity(str, Enum):
 
 __all__ = ["NO_DESIGN_PASSES", "Fidelity", "optimize", "parse_variable"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Exit code when no evaluated design passes every requirement (or one fails re-verification).
 NO_DESIGN_PASSES = 3
 

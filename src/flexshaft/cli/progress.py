@@ -18,6 +18,11 @@ from typing import Any
 
 __all__ = ["StageProgress"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 
 class StageProgress:
     """Stage-by-stage progress (a context manager).

@@ -3,6 +3,7 @@ report's resolution), the thesis studies beside it on the same worker pool, and 
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 from typing import Annotated
 
@@ -14,6 +15,11 @@ from flexshaft.cli.output import prepare_output_folder
 from flexshaft.cli.progress import StageProgress
 
 __all__ = ["run"]
+
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
 
 
 def _worker_processes() -> int:
@@ -65,10 +71,6 @@ def run(
 
     loaded = load_design_argument(design, DEFAULT_DESIGN)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
-    # the analyses load scipy (and the report matplotlib): imported here, not above, so that
-    # `flexshaft --help` and `flexshaft check` stay light (tests/test_import.py)
-    import warnings
-
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES

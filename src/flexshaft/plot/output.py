@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from flexshaft.parallel.pool import worker_pool
+
 if TYPE_CHECKING:
     from concurrent.futures import Executor
 
@@ -163,7 +165,6 @@ def render_figures(
         raise ValueError(f"processes must be an integer >= 1 (got {processes!r})")
     if executor is not None:
         return start_figures(jobs, folder, executor, svg=svg, dpi=dpi)()
-    from flexshaft.parallel.pool import worker_pool
 
     with worker_pool(max(1, min(int(processes), len(jobs))), FIGURE_MODULES) as pool:
         if pool is not None:

@@ -34,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from flexshaft import __version__
 from flexshaft.netcdf import write_netcdf
 from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
@@ -150,8 +151,6 @@ def _sigterm_to_exception():
 def to_dataset(study: Study, values: np.ndarray):
     """Results as an :class:`xarray.Dataset`: one variable per output over the study's dims."""
     import xarray as xr
-
-    from flexshaft import __version__
 
     dims = tuple(v.name for v in study.variables)
     grid = values.reshape(study.shape + (len(study.outputs),))
