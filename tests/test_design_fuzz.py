@@ -685,6 +685,7 @@ def test_extreme_designs_through_build_and_modes() -> None:
 
 
 def _run_outcome(design: Design) -> str:
+    from flexshaft.analyses.summary import modes_table
     from flexshaft.verdict.assess import assess
 
     try:
@@ -705,7 +706,7 @@ def _run_outcome(design: Design) -> str:
     _all_finite("mode shapes", results.modes_at_speed.shapes)
     for name, values in {**spinup.actuator_displacement, **spinup.actuator_force}.items():
         _all_finite(f"actuator {name}", values)
-    for row in results.modes_at_rest + results.modes_at_speed:
+    for row in modes_table(results.modes_at_rest) + modes_table(results.modes_at_speed):
         assert all(math.isfinite(value) for value in row.values() if isinstance(value, float)), row
     for strength in (results.strength_static, results.strength_total):
         if strength is not None:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["FINE", "REPORT", "RESOLUTIONS", "SLOW_START", "Resolution", "SCREENING", "VERDICT", "resolution_named"]
+__all__ = ["FINE", "REPORT", "RESOLUTIONS", "SLOW_START", "Resolution", "SCREENING", "VERDICT"]
 
 #: Where every spin-up scan starts [fraction of the operating speed]: slow enough that the
 #: response there is quasi-static (the assessment, the thesis studies, Monte-Carlo).
@@ -105,10 +105,6 @@ class Resolution:
         """Speeds of the Campbell diagram [rad/s] (empty without one)."""
         return np.linspace(0.0, self.scan_top * _reference(operating_speed), self.campbell_speeds)
 
-    def critical_search_top(self, operating_speed: float) -> float:
-        """Highest speed searched for lateral critical speeds [rad/s]."""
-        return self.scan_top * float(operating_speed)
-
 
 def _reference(operating_speed: float) -> float:
     """The speed the ranges scale [rad/s]: Ω_op, or 1 rad/s for a design at rest."""
@@ -122,13 +118,3 @@ FINE = Resolution("fine", spinup_speeds=1301, whirl_speeds=81, campbell_speeds=1
 
 #: The presets by name.
 RESOLUTIONS = {r.name: r for r in (SCREENING, VERDICT, REPORT, FINE)}
-
-
-def resolution_named(name: str | Resolution) -> Resolution:
-    """The preset called ``name`` (a :class:`Resolution` is returned as it is)."""
-    if isinstance(name, Resolution):
-        return name
-    try:
-        return RESOLUTIONS[name]
-    except KeyError:
-        raise ValueError(f"resolution: no such preset (got {name!r}; allowed: {', '.join(RESOLUTIONS)})") from None
