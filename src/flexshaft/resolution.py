@@ -10,7 +10,7 @@ Presets (:data:`RESOLUTIONS`, by name):
   speed apart; the critical-speed peaks are still refined between them) and 21 whirl speeds
   (the onset is still solved between them); only what the checks read;
 * :data:`VERDICT`: the report's grids, only what the checks read (the verdict of
-  ``flexshaft run``, at about half its cost);
+  ``flexshaft run``, at two thirds of its CPU time: benchmarks/optimizer.py);
 * :data:`REPORT`: ``flexshaft run``: 651 spin speeds (0.2 % apart), 41 whirl speeds, a Campbell
   diagram of 60 speeds and everything the report shows besides the checks (modes at rest,
   the leave-one-out load shares of the strength, the classical-shell buckling comparison, the

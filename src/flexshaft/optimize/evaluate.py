@@ -5,8 +5,9 @@ the :class:`~flexshaft.resolution.Resolution` of its fidelity (:data:`FIDELITIES
 
 * ``"verdict"``: :data:`~flexshaft.resolution.VERDICT`, the report's grids (651 scan speeds, 41
   whirl speeds) without what only the report shows (Campbell diagram, modes at rest, load
-  shares, classical-shell buckling, thermal sweeps): about half the cost of the full analysis,
-  the same verdict as ``flexshaft run`` (tests/test_optimize.py compares every check);
+  shares, classical-shell buckling, thermal sweeps): two thirds of the CPU time of the full
+  analysis (benchmarks/optimizer.py), the same verdict as ``flexshaft run``
+  (tests/test_optimize.py compares every check);
 * ``"screening"``: :data:`~flexshaft.resolution.SCREENING`, 261 scan speeds (0.5 % of the
   operating speed apart, the critical-speed peaks still refined) and 21 whirl speeds (the onset
   is still solved between them). Its margins differ from the full run's by the tolerances stated
