@@ -287,6 +287,17 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
     th = a.thermal
     env = th.environment
     shafts = th.shaft
+    if not shafts:  # below the report's detail: the self-heating equilibrium alone
+        sh = th.self_heating
+        return Section(
+            "Thermal",
+            paragraphs=[
+                f"Self-heating with temperature-dependent matrix properties ({th.loss_model} loss model): "
+                f"{sh.status} after {sh.iterations} iterations; peak {kelvin_to_celsius(sh.max_temperature):.1f} °C, "
+                f"margin to the allowable temperature {sh.margin:.1f} K. The report's resolution adds the tailboom, "
+                "both loss models and the thermal-design sweeps."
+            ],
+        )
     first = next(iter(shafts.values()))
     x = first.temperature.x
     xe = 0.5 * (x[:-1] + x[1:])
