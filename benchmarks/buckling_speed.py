@@ -30,7 +30,7 @@ import json, sys, time
 from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.design import tuned_design, with_overrides
 from flexshaft.assembly import build_model
-from flexshaft.studies.chapter3 import RESOLUTIONS
+from flexshaft.thesis.design_studies import STUDY_GRIDS as RESOLUTIONS
 repeats = int(sys.argv[1])
 design = tuned_design()
 models = [build_model(with_overrides(design, {"shaft.wall_thickness": float(w)}))

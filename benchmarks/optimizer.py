@@ -7,12 +7,12 @@ one evaluation against the full run (timing lives here, not in tests).
 
 Parts:
 
-* ``zdt1``: the ZDT1 verification problem (:mod:`flexshaft.studies.optimize_reference`, known
+* ``zdt1``: the ZDT1 verification problem (:mod:`flexshaft.optimize.reference`, known
   front, exact hypervolume 0.8456 up to (1.1, 1.1)) through the optimizer's own engine: NSGA-II
   and uniform random sampling at the same budgets, per seed; printed: the hypervolume of each and
   its gap to the exact front;
 * ``evaluation``: CPU time of one lean evaluation (``verdict`` and ``screening`` fidelities,
-  :mod:`flexshaft.studies.optimize_evaluate`) against ``run_analysis(studies=None)`` on the
+  :mod:`flexshaft.optimize.evaluate`) against ``assess(design, REPORT)`` on the
   tuned design, warm, in this process; printed as ratios;
 * ``driveline``: the default search of ``flexshaft optimize`` on the Table 3.1 baseline (mass
   and Tsai-Wu safety factor, every verdict check a constraint), NSGA-II and random sampling at
@@ -40,8 +40,8 @@ DRIVELINE_REFERENCE = (20.0, -1.5)
 
 
 def zdt1(seeds, budgets) -> None:
-    from flexshaft.studies.optimize import optimize
-    from flexshaft.studies.optimize_reference import ZDT1_HYPERVOLUME, ZDT1_REFERENCE, zdt1_problem
+    from flexshaft.optimize import optimize
+    from flexshaft.optimize.reference import ZDT1_HYPERVOLUME, ZDT1_REFERENCE, zdt1_problem
 
     problem = zdt1_problem()
     print(f"ZDT1 through the optimizer's engine (exact hypervolume {ZDT1_HYPERVOLUME:.4f} up to {ZDT1_REFERENCE})")
@@ -59,21 +59,22 @@ def zdt1(seeds, budgets) -> None:
 
 def evaluation(repeats: int = 3) -> None:
     from flexshaft.design import tuned_design
-    from flexshaft.studies.optimize_evaluate import verdict_run
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.optimize.evaluate import evaluate_design
+    from flexshaft.resolution import REPORT
+    from flexshaft.verdict.assess import assess
 
     design = tuned_design()
     cases = {
-        "run_analysis(studies=None)": lambda: run_analysis(design, studies=None),
-        "verdict fidelity": lambda: verdict_run(design, "verdict"),
-        "screening fidelity": lambda: verdict_run(design, "screening"),
+        "assess(design, REPORT)": lambda: assess(design, REPORT),
+        "verdict fidelity": lambda: evaluate_design(design, "verdict"),
+        "screening fidelity": lambda: evaluate_design(design, "screening"),
     }
     for fn in cases.values():
         fn()  # warm: imports and caches
     cpu = {}
     for name, fn in cases.items():
         cpu[name] = bu.stats([bu.timed(fn)[1] for _ in range(repeats)])["median"]
-    full = cpu["run_analysis(studies=None)"]
+    full = cpu["assess(design, REPORT)"]
     print("CPU time of one evaluation on the tuned design (median of", repeats, "warm calls):")
     for name, t in cpu.items():
         print(f"  {name:<28} {t:6.2f} s  ({t / full:.2f} of the full run)")
@@ -83,8 +84,7 @@ def driveline(budget: int, jobs: int, out: Path, seed: int = 1) -> None:
     import numpy as np
 
     from flexshaft.design import baseline_design
-    from flexshaft.studies.optimize import optimize
-    from flexshaft.studies.optimize_problem import DesignProblem, default_variables
+    from flexshaft.optimize import DesignProblem, default_variables, optimize
 
     variables, layup = default_variables(baseline_design())
     problem = DesignProblem(variables, layup=layup, name="Table 3.1 baseline: mass and Tsai-Wu safety factor")

@@ -1,6 +1,7 @@
-"""Time of writing the ``flexshaft run`` report from one precomputed RunResults.
+"""Time of writing the ``flexshaft run`` report from one precomputed assessment.
 
-The analyses run once (or are loaded from ``--cache``, a pickle of the RunResults); then
+The analyses run once (or are loaded from ``--cache``, a pickle of the assessment and the
+thesis studies); then
 ``write_run_report`` is timed ``--repeats`` times (after one untimed warm-up that imports
 matplotlib and loads the fonts) in each configuration: serial or with ``--processes`` forked
 workers, PNG only or PNG and SVG. Prints the median wall time with its spread (min-max), the
@@ -32,15 +33,18 @@ GENERATED = dt.datetime(2024, 1, 1)
 
 
 def load_results(studies: str, cache: Path | None):
-    """The baseline's RunResults: from ``cache`` when it exists, else computed (and cached)."""
+    """The baseline's (Assessment, ThesisStudies or None): from ``cache`` when it exists, else
+    computed (and cached)."""
     if cache is not None and cache.is_file():
         with cache.open("rb") as f:
             return pickle.load(f)
     from flexshaft.design import baseline_design
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.thesis.report_studies import start_thesis_studies
+    from flexshaft.verdict.assess import assess
 
     start = time.perf_counter()
-    res = run_analysis(baseline_design(), studies=None if studies == "none" else studies)
+    design = baseline_design()
+    res = (assess(design), None if studies == "none" else start_thesis_studies(design, studies).result())
     print(f"analyses: {time.perf_counter() - start:.1f} s (not part of the timings below)")
     if cache is not None:
         with cache.open("wb") as f:
@@ -60,7 +64,7 @@ def time_report(res, processes: int, svg: bool, repeats: int) -> dict:
     for _ in range(repeats):
         with tempfile.TemporaryDirectory() as folder:
             c0, w0, t0 = time.process_time(), children_cpu(), time.perf_counter()
-            write_run_report(res, folder, generated=GENERATED, processes=processes, svg=svg)
+            write_run_report(res[0], folder, generated=GENERATED, processes=processes, svg=svg, thesis=res[1])
             walls.append(time.perf_counter() - t0)
             cpus.append(time.process_time() - c0)
             workers.append(children_cpu() - w0)
@@ -74,7 +78,7 @@ def figure_times(res, repeats: int) -> dict[str, float]:
     per: dict[str, list[float]] = {}
     for _ in range(repeats):
         with tempfile.TemporaryDirectory() as folder:
-            plan = plan_run_report(res, folder)
+            plan = plan_run_report(res[0], folder, thesis=res[1])
             for stem, done in render_figures(plan.jobs, folder).items():
                 per.setdefault(stem, []).append(done.seconds)
     return {stem: statistics.median(v) for stem, v in per.items()}
@@ -86,9 +90,11 @@ def main(argv: list[str] | None = None) -> int:
         "--studies",
         choices=("report", "none"),
         default="report",
-        help="design studies in the RunResults (default: report)",
+        help="thesis design studies beside the assessment (default: report)",
     )
-    parser.add_argument("--cache", type=Path, default=None, help="pickle of the RunResults, reused or written")
+    parser.add_argument(
+        "--cache", type=Path, default=None, help="pickle of the assessment and thesis studies, reused or written"
+    )
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--processes", type=int, default=2, help="workers of the parallel runs (default 2)")
     args = parser.parse_args(argv)

@@ -28,10 +28,10 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.transient import default_basis_size, run_up, steady_state_envelope
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design, with_overrides
+from flexshaft.parallel.threads import single_blas_thread
 
 RPM = 30.0 / np.pi
 
@@ -124,7 +124,7 @@ def runup_section(durations, figures: Path | None) -> None:
 
 def montecarlo_section(samples: int, jobs: int, gap: float, force_limit: float, figures: Path | None) -> None:
     from flexshaft.analyses.transient import SpeedProfile
-    from flexshaft.studies.montecarlo import EccentricityDistribution, run_montecarlo, runup_montecarlo
+    from flexshaft.montecarlo import EccentricityDistribution, run_montecarlo, runup_montecarlo
 
     design = baseline_design()
     model = build_model(design)

@@ -1,7 +1,7 @@
 """Whirl-stability speed: the thesis's three-shaft comparison, this checkout against a reference.
 
 Runs the same job in two source trees, each in its own process with one BLAS thread:
-``flexshaft.studies.whirl.compare_shafts(baseline, speeds, method, n_modes=8)`` for the thesis's
+``flexshaft.thesis.whirl.compare_shafts(baseline, speeds, method, n_modes=8)`` for the thesis's
 aluminium, (45/-45)s and (45/-45/0/0)s shafts on the embedded baseline, speeds 0 to 1.5× the
 operating speed. Prints the median and spread of ``--repeats`` warm runs (one untimed run
 first), the onset speeds of both, and the speed ratio.
@@ -28,7 +28,7 @@ JOB = r"""
 import json, sys, time
 import numpy as np
 import flexshaft as fs
-from flexshaft.studies.whirl import compare_shafts
+from flexshaft.thesis.whirl import compare_shafts
 method, n_speeds, repeats = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 design = fs.baseline_design()
 speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, n_speeds)

@@ -6,7 +6,7 @@
 
 Cases:
 
-* ``studies-coarse``: ``flexshaft.studies.chapter3.design_studies(design, "report")`` on the
+* ``studies-coarse``: ``flexshaft.thesis.design_studies.design_studies(design, "report")`` on the
   baseline with the reduced mesh of ``tests/test_studies.py`` (18 shaft, 12 boom elements), in
   this process: the first call (cold: lazy imports included) and ``--repeats`` more (warm).
   The test used to assert that this takes under 25 s;
@@ -57,7 +57,7 @@ DEFAULT_CASES = ("studies-coarse", "run-none", "run-report")
 
 def time_studies(coarse: bool, repeats: int) -> dict:
     from flexshaft.design import baseline_design, with_overrides
-    from flexshaft.studies.chapter3 import design_studies
+    from flexshaft.thesis.design_studies import design_studies
 
     design = with_overrides(baseline_design(), COARSE) if coarse else baseline_design()
     cold_wall, cold_cpu, _ = bu.timed(lambda: design_studies(design, "report"))

@@ -22,11 +22,13 @@ variants with fewer speeds instead of six.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 from pathlib import Path
 
 from flexshaft.design import embedded_text, load_design, with_overrides
-from flexshaft.studies.run import run_analysis
+from flexshaft.resolution import REPORT
 from flexshaft.units import rad_s_to_rpm
+from flexshaft.verdict.assess import assess
 
 
 def check_value(verdict, key: str) -> float:
@@ -47,7 +49,10 @@ def main(argv: list[str] | None = None) -> int:
 
     walls_mm = (2.5, 3.5) if args.quick else (2.5, 3.0, 3.5)
     angles = (55,) if args.quick else (55, 45)
-    sizes = {"n_speeds": 80, "n_campbell": 12} if args.quick else {"n_speeds": 301, "n_campbell": 40}
+    sizes = (
+        {"spinup_speeds": 80, "campbell_speeds": 12} if args.quick else {"spinup_speeds": 301, "campbell_speeds": 40}
+    )
+    resolution = dataclasses.replace(REPORT, name="example", **sizes)
 
     print(f"starting point: {design.name}")
     header = (
@@ -66,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
                     "shaft.wall_thickness": wall_mm / 1000.0,
                 },
             )
-            results = run_analysis(variant, studies=None, **sizes)
+            results = assess(variant, resolution)
             verdict = results.verdict
             onset = results.stability.onset_speed
             onset_rpm = "stable" if onset is None else f"{rad_s_to_rpm(onset):.0f}"  # in the scanned range

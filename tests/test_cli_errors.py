@@ -99,7 +99,7 @@ def test_an_internal_fault_exits_4_with_a_hint_and_no_traceback(tmp_path: Path, 
 
 
 def test_a_study_command_has_the_same_boundary(tmp_path: Path, monkeypatch) -> None:
-    import flexshaft.studies.sweeps as sweeps
+    import flexshaft.thesis.ply_angle as sweeps
 
     def broken(*args, **kwargs):
         raise RuntimeError("simulated fault in a sweep")

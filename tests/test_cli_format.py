@@ -103,7 +103,7 @@ def test_choices_are_the_literals_of_the_layers_below() -> None:
     from flexshaft.analyses.stability import DampingModel as DampingLiteral
     from flexshaft.design.schema import InternalDamping
     from flexshaft.design.thermal_schema import ShaftConvection
-    from flexshaft.studies.chapter3 import RESOLUTIONS
+    from flexshaft.thesis.design_studies import STUDY_GRIDS as RESOLUTIONS
 
     assert {m.value for m in DampingModel} == set(typing.get_args(DampingLiteral))
     assert {m.value for m in LossModel} == set(typing.get_args(InternalDamping))
@@ -317,7 +317,7 @@ def test_verdict_table_shows_a_checks_note_where_it_has_no_location() -> None:
     its note in the "where" column instead of an empty cell; a located check prints its place,
     an unevaluated one its reason."""
     from flexshaft.cli.tables import verdict_table
-    from flexshaft.studies.verdict import Check, Verdict
+    from flexshaft.verdict.result import Check, Verdict
 
     checks = (
         Check(

@@ -109,17 +109,18 @@ def test_a_folder_of_another_command_is_refused(first_run: dict) -> None:
 @pytest.fixture()
 def no_computation(monkeypatch):
     """Make any analysis an internal fault (exit 4), so exit 2 proves the refusal came first."""
-    import flexshaft.studies.chapter3 as chapter3
-    import flexshaft.studies.run as run_module
-    import flexshaft.studies.sweeps as sweeps
+    import flexshaft.thesis.design_studies as chapter3
+    import flexshaft.thesis.ply_angle as ply_angle
+    import flexshaft.thesis.wall as wall
+    import flexshaft.verdict.assess as run_module
 
     def forbidden(*args, **kwargs):
         raise AssertionError("computed before checking --out")
 
     for module, name in (
-        (run_module, "run_analysis"),
-        (sweeps, "ply_angle_study"),
-        (sweeps, "wall_thickness_study"),
+        (run_module, "assess"),
+        (ply_angle, "ply_angle_study"),
+        (wall, "wall_thickness_study"),
         (chapter3, "design_studies"),
     ):
         monkeypatch.setattr(module, name, forbidden)

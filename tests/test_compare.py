@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 
 from flexshaft.assembly import build_model
+from flexshaft.comparison import PART_KINDS, Comparison, compare, driveline_inventory
 from flexshaft.design import design_from_dict, embedded_design
-from flexshaft.studies.compare import PART_KINDS, Comparison, compare, driveline_inventory
 
 PNG = b"\x89PNG\r\n\x1a\n"
 
@@ -154,7 +154,7 @@ def test_cli_compare_writes_the_report(comparison, tmp_path, monkeypatch):
     the module's comparison, so that the test does not run it twice)."""
     from typer.testing import CliRunner
 
-    import flexshaft.studies.compare as module
+    import flexshaft.comparison as module
     from flexshaft.cli import app
 
     calls = []

@@ -75,9 +75,12 @@ def test_response_strength_spinup_and_verdict(model, tmp_path):
     smap = spinup_map(model, [1e6, 1e7], [0.0, 500.0], speeds=np.linspace(50.0, model.speed, 20))
     ds = round_trip(smap, tmp_path)
     np.testing.assert_array_equal(ds.shaft_peak.values, smap.shaft_peak)
-    from flexshaft.studies.run import run_analysis
+    from dataclasses import replace
 
-    verdict = run_analysis(model.design, n_speeds=40, n_campbell=10, studies=None).verdict
+    from flexshaft.resolution import REPORT
+    from flexshaft.verdict.assess import assess
+
+    verdict = assess(model.design, replace(REPORT, spinup_speeds=40, campbell_speeds=10)).verdict
     ds = round_trip(verdict, tmp_path)
     assert list(ds.check.values) == [c.key for c in verdict.checks]
     assert list(decode(ds.status)) == [c.status.replace(" ", "_") for c in verdict.checks]

@@ -433,7 +433,7 @@ def test_every_table_refuses_an_unknown_key() -> None:
 #
 #     validation only (what `flexshaft check` runs)                             1600 examples
 #     validation, build_model and modes(n_modes=4) at the operating speed        400 examples
-#     validation, problem-size check, build_model and run_analysis(studies=None)   4 examples
+#     validation, problem-size check, build_model and assess(design)               4 examples
 #
 # Allowed outcomes: a validated Design and finite results, or a DesignError / ValueError whose
 # message is not empty (SingularSystemError and NonFiniteResultError are ValueErrors too).
@@ -443,7 +443,7 @@ def test_every_table_refuses_an_unknown_key() -> None:
 # every numpy array; it slows the analyses fourfold, hence not all of them) and its peak must
 # stay below TRACED_CAP_BYTES.
 #
-# Time (2 shared cores): about 12 s, 30 s and 30 s (run_analysis spends 5-10 s in the whirl
+# Time (2 shared cores): about 12 s, 30 s and 30 s (assess spends 5-10 s in the whirl
 # studies whatever the mesh). OUTCOMES collects the outcome classes (printed with -s).
 
 
@@ -685,20 +685,28 @@ def test_extreme_designs_through_build_and_modes() -> None:
 
 
 def _run_outcome(design: Design) -> str:
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.analyses.summary import modes_table
+    from flexshaft.verdict.assess import assess
 
     try:
         check_problem_size(design, "run")
-        results = run_analysis(design, studies=None)
+        results = assess(design)
     except Exception as error:  # noqa: BLE001
         return _refused(error)
-    for name in ("speeds", "shaft_peak", "shaft_envelope", "static_displacement", "imbalance_at_speed"):
-        _all_finite(name, getattr(results, name))
+    spinup = results.spinup
+    for name, values in (
+        ("speeds", spinup.speeds),
+        ("shaft_peak", spinup.shaft_peak),
+        ("shaft_envelope", spinup.envelope),
+        ("static_displacement", results.static_displacement),
+        ("imbalance_at_speed", results.imbalance_at_speed),
+    ):
+        _all_finite(name, values)
     _all_finite("Campbell eigenvalues", results.campbell.eigenvalues)
-    _all_finite("mode shapes", results.mode_shapes.shapes)
-    for name, values in {**results.actuator_displacement, **results.actuator_force}.items():
+    _all_finite("mode shapes", results.modes_at_speed.shapes)
+    for name, values in {**spinup.actuator_displacement, **spinup.actuator_force}.items():
         _all_finite(f"actuator {name}", values)
-    for row in results.modes_at_rest + results.modes_at_speed:
+    for row in modes_table(results.modes_at_rest) + modes_table(results.modes_at_speed):
         assert all(math.isfinite(value) for value in row.values() if isinstance(value, float)), row
     for strength in (results.strength_static, results.strength_total):
         if strength is not None:
@@ -706,7 +714,7 @@ def _run_outcome(design: Design) -> str:
     return "run"
 
 
-#: The run share: one example of each kind that reaches run_analysis (the baseline made small, a
+#: The run share: one example of each kind that reaches assess (the baseline made small, a
 #: transfer-function bearing a hair from the hanger, the "worst" placement, extreme numbers).
 RUN_EXAMPLES = [
     ([], ["amb_near_hanger", "tf_controller"], 1e-9, (4, 2)),

@@ -270,14 +270,15 @@ def test_the_worst_placement_is_bounded():
 
 def test_the_response_memory_estimate_bounds_the_measurement(model):
     """The estimate of the spin-up responses, 2 × 16 × DOFs × cases × speeds bytes, must bound
-    the traced peak of imbalance_response over 400 speeds for the "worst" placement (4 cases)
-    and be within 3 times it (so that the caps mean what they say)."""
+    the traced peak of imbalance_response over the estimate's speeds (the run's) for the "worst"
+    placement (4 cases) and be within 3 times it (so that the caps mean what they say)."""
     design = with_overrides(BASELINE, {"loads.imbalance_placement": "worst"})
-    estimate = problem_size(design, "run").memory["spin-up responses"]
+    size = problem_size(design, "run")
+    estimate = size.memory["spin-up responses"]
     worst = build_model(design)
     loads = imbalance_loads(worst)
     assert loads.shape[1] == 4
-    speeds = np.linspace(0.02, 1.1, 400) * worst.speed
+    speeds = np.linspace(0.02, 1.1, size.n_speeds) * worst.speed
     tracemalloc.start()
     try:
         imbalance_response(worst, speeds, loads)

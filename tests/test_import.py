@@ -67,8 +67,8 @@ def test_the_run_needs_no_scipy_optimize() -> None:
     code = (
         "import json, sys\n"
         "from flexshaft.design import embedded_design\n"
-        "from flexshaft.studies.run import run_analysis\n"
-        "run_analysis(embedded_design('tuned'), studies=None)\n"
+        "from flexshaft.verdict.assess import assess\n"
+        "assess(embedded_design('tuned'))\n"
         "print(json.dumps(sorted(m for m in ('scipy.optimize', 'scipy.special', 'scipy.fft') if m in sys.modules)))\n"
     )
     completed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=True)

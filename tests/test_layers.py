@@ -3,16 +3,19 @@
 Layers, bottom to top (a module may import only from its own layer or below; see
 docs/architecture.md):
 
-    0  units, _threads, _pool, netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
+    0  units, resolution (grid sizes of the recipe), parallel (pools, BLAS threads, tasks),
+       netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
     1  design (schema and I/O: a data leaf)
     2  laminate, strength, buckling, elements (physics on plain numbers)
     3  assembly
     4  analyses
     5  thermal
     6  sweep (generic engine)
-    7  studies (thesis studies, verdict, the run pipeline)
-    8  report (HTML from results), validation (published cases)
-    9  cli
+    7  verdict (evidence, checks, assess: the one recipe that judges a design)
+    8  optimize, thesis, comparison, montecarlo, validation (users of the recipe and the thesis's
+       studies; the published validation cases)
+    9  report (HTML from results)
+    10 cli
 
 Every ``import``/``from`` statement counts, including those inside functions (a lazy import
 is still an arrow).
@@ -30,8 +33,8 @@ ROOT = Path(flexshaft.__file__).parent
 
 LAYERS = {
     "units": 0,
-    "_threads": 0,
-    "_pool": 0,
+    "resolution": 0,
+    "parallel": 0,
     "netcdf": 0,
     "plot": 0,
     "design": 1,
@@ -43,10 +46,14 @@ LAYERS = {
     "analyses": 4,
     "thermal": 5,
     "sweep": 6,
-    "studies": 7,
-    "report": 8,
+    "verdict": 7,
+    "optimize": 8,
+    "thesis": 8,
+    "comparison": 8,
+    "montecarlo": 8,
     "validation": 8,
-    "cli": 9,
+    "report": 9,
+    "cli": 10,
 }
 
 

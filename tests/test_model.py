@@ -207,7 +207,7 @@ def test_geometry_caches_give_the_models_of_a_cold_build():
     def cold(design):
         build._boom_blocks.cache_clear()
         build._tube_of.cache_clear()
-        build._rows_cache.clear()
+        build._geometry_rows.cache_clear()
         return build_model(design)
 
     base = baseline_design()

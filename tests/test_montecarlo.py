@@ -1,4 +1,4 @@
-"""Monte-Carlo imbalance (flexshaft.studies.montecarlo) against closed forms and the direct solve.
+"""Monte-Carlo imbalance (flexshaft.montecarlo) against closed forms and the direct solve.
 
 * The balance-grade relation of ISO 21940-11 (e_per Ω = G) and the eccentricity
   distributions' first moments.
@@ -27,7 +27,7 @@ from flexshaft.analyses.spinup import actuator_receptance, spinup_curves
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads, per_bay_imbalance_loads
 from flexshaft.design import baseline_design, loads_design
-from flexshaft.studies.montecarlo import (
+from flexshaft.montecarlo import (
     EccentricityDistribution,
     balance_grade_eccentricity,
     draw_imbalance,
@@ -257,7 +257,7 @@ def test_runup_samples_superpose_the_bay_transients(two_bay):
     transient with that sample's loads (same output instants; the two integrations take
     different steps at rtol 1e-7, and the envelopes are stored in complex64: 1e-4)."""
     from flexshaft.analyses.transient import SpeedProfile, transient_response
-    from flexshaft.studies.montecarlo import runup_montecarlo
+    from flexshaft.montecarlo import runup_montecarlo
 
     design, model = two_bay
     profile = SpeedProfile.constant_acceleration(50.0, 600.0, 550.0)

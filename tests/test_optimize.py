@@ -3,8 +3,8 @@ on a problem with a known Pareto front through the same engine, resume without r
 parallel evaluation, design files re-verified with ``flexshaft run --strict``, the CLI's errors.
 
 References: the ZDT1 front f2 = 1 − √f1 and its hypervolume in closed form
-(:mod:`flexshaft.studies.optimize_reference`); the full ``flexshaft run`` pipeline
-(:func:`flexshaft.studies.run.run_analysis`) for the cheap evaluation's margins; pymoo's
+(:mod:`flexshaft.optimize.reference`); the full ``flexshaft run`` assessment
+(:func:`flexshaft.verdict.assess.assess`) for the cheap evaluation's margins; pymoo's
 hypervolume indicator for the 2-D sweep.
 """
 
@@ -24,25 +24,29 @@ from typer.testing import CliRunner
 
 from flexshaft.cli import app
 from flexshaft.design import baseline_design, embedded_design, load_design, loads_design, tuned_design, with_overrides
-from flexshaft.studies.optimize import hypervolume, optimize, pareto_mask
-from flexshaft.studies.optimize_evaluate import CHECK_KEYS, applicable_checks, normalised_margin, verdict_run
-from flexshaft.studies.optimize_files import design_toml
-from flexshaft.studies.optimize_problem import (
-    NOT_EVALUATED_VIOLATION,
+from flexshaft.optimize import (
     DesignProblem,
     DesignVariable,
     OptimizeError,
     default_variables,
+    hypervolume,
     objectives_and_constraints,
+    optimize,
+    pareto_mask,
 )
-from flexshaft.studies.optimize_reference import (
-    ZDT1_HYPERVOLUME,
-    ZDT1_REFERENCE,
-    zdt1_front,
-    zdt1_outputs,
-    zdt1_problem,
+from flexshaft.optimize.evaluate import (
+    CHECK_KEYS,
+    CHECK_STATUS_CODES,
+    applicable_checks,
+    design_metrics,
+    evaluate_design,
+    normalised_margin,
 )
-from flexshaft.studies.run import run_analysis
+from flexshaft.optimize.files import design_toml
+from flexshaft.optimize.problem import NOT_EVALUATED_VIOLATION
+from flexshaft.optimize.reference import ZDT1_HYPERVOLUME, ZDT1_REFERENCE, zdt1_front, zdt1_outputs, zdt1_problem
+from flexshaft.resolution import REPORT, SCREENING
+from flexshaft.verdict.assess import assess
 
 runner = CliRunner()
 
@@ -173,9 +177,9 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
         embedded_design("current"),
     ]  # segmented aluminium: metal strength and coupling angles too
     for design in designs:
-        full = run_analysis(design, studies=None)
-        lean = verdict_run(design, "verdict")
-        screen = verdict_run(design, "screening")
+        full = assess(design, REPORT)
+        lean = evaluate_design(design, "verdict")
+        screen = evaluate_design(design, "screening")
         np.testing.assert_allclose(_margins(lean), _margins(full), rtol=1e-9, atol=1e-12)
         assert [c.status for c in lean.verdict.checks] == [c.status for c in full.verdict.checks]
         assert [c.status for c in screen.verdict.checks] == [c.status for c in full.verdict.checks]
@@ -186,6 +190,39 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
         assert set(applicable) <= {c.key for c in full.verdict.checks}
         assert all(c.status == "not evaluated" for c in full.verdict.checks if c.key not in applicable)
         assert all(c.status != "not evaluated" for c in full.verdict.checks if c.key in applicable)
+
+
+def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
+    """One recipe: at one resolution the optimizer's verdict of a design is the run's, check by
+    check (status, value, margin), and its outputs (what the search reads: status codes,
+    normalised margins, objective values) are those of the run's checks, bit for bit: the same
+    functions on the same numbers, so no tolerance. The segmented aluminium driveline adds the
+    metal-strength and coupling checks, the tuned design the laminate's and the actuators'."""
+    values = {
+        "buckling": "buckling_safety_factor",
+        "whirl_damping": "min_log_decrement",
+        "actuator_orbit": "actuator_orbit",
+        "actuator_force": "actuator_force",
+        "temperature": "max_temperature",
+        "spinup_deflection": "spinup_deflection",
+    }
+    for design in (tuned_design(), embedded_design("current")):
+        run = assess(design, SCREENING)
+        optimizer = evaluate_design(design, "screening")
+        assert [(c.key, c.status, c.value, c.margin) for c in optimizer.verdict.checks] == [
+            (c.key, c.status, c.value, c.margin) for c in run.verdict.checks
+        ]
+        metrics = design_metrics(design, "screening")
+        listed = {c.key: c for c in run.verdict.checks}
+        assert set(listed) <= set(CHECK_KEYS)
+        for key in CHECK_KEYS:
+            check = listed.get(key)
+            assert metrics[f"status_{key}"] == CHECK_STATUS_CODES["not applicable" if check is None else check.status]
+            margin = float("nan") if check is None else normalised_margin(check, run.model.speed)
+            np.testing.assert_array_equal(metrics[f"margin_{key}"], margin, err_msg=key)
+        for key, output in values.items():
+            check = listed[key]
+            np.testing.assert_array_equal(metrics[output], np.nan if check.value is None else check.value, err_msg=key)
 
 
 # ------------------------------------------------------------------------------------------------

@@ -30,8 +30,8 @@ from flexshaft.plot.labels import place_point_labels, spread  # noqa: E402
 from flexshaft.plot.output import FigureJob, render_figures  # noqa: E402
 from flexshaft.plot.response import bode_figure, orbit_ellipse, orbit_figure  # noqa: E402
 from flexshaft.plot.studies import gain_map_figure  # noqa: E402
-from flexshaft.studies.verdict import Check, Verdict  # noqa: E402
 from flexshaft.units import rad_s_to_rpm  # noqa: E402
+from flexshaft.verdict.result import Check, Verdict  # noqa: E402
 
 RPM = 60.0 / (2.0 * np.pi)
 
@@ -324,7 +324,7 @@ def test_verdict_plot_margin_bars():
 
 def test_render_figures_serial_and_in_worker_processes(tmp_path, model):
     m = modes(model, model.speed, n_modes=6)
-    from flexshaft.report.driveline import plot_result
+    from flexshaft.report.run_sections import plot_result
 
     jobs = [
         FigureJob("shapes", plot_result, (m, "shapes")),

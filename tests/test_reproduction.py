@@ -36,9 +36,9 @@ THESIS_DAMPING = {"analysis.internal_damping": "thesis"}
 
 def chapter3_studies():
     """The thesis chapter-3 study functions (ply_angle_study, two_angle_study, ...)."""
-    from flexshaft.studies import sweeps
+    from flexshaft import thesis
 
-    return sweeps
+    return thesis
 
 
 # ------------------------------------------------------------------------------------------------
@@ -258,7 +258,7 @@ def buckling_row():
 
 @functools.cache
 def thermal_row() -> dict:
-    from flexshaft.studies.thermal import thermal_summary
+    from flexshaft.thermal.study import thermal_summary
 
     design = tuned_design()
     model = build_model(design)
@@ -269,7 +269,7 @@ def thermal_row() -> dict:
 def whirl_row(method: str) -> dict:
     """Whirl onset [rad/s] (None: stable to 1.5 x the operating speed) of the thesis's three shafts
     on the Table 3.1 driveline (thesis figures 4.2-4.4)."""
-    from flexshaft.studies.whirl import compare_shafts
+    from flexshaft.thesis.whirl import compare_shafts
 
     design = baseline_design()
     speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, 31)
@@ -279,21 +279,19 @@ def whirl_row(method: str) -> dict:
 @functools.cache
 def verdict_row(name: str):
     """``flexshaft run`` results (no design studies) of an embedded design."""
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.verdict.assess import assess
 
-    return run_analysis(baseline_design() if name == "baseline" else tuned_design(), studies=None)
+    return assess(baseline_design() if name == "baseline" else tuned_design())
 
 
 def shaft_mode_log_decrements(results) -> dict[str, float]:
     """Log decrement at the operating speed of the lateral modes with shaft participation (the
     whirl-damping check as the lead restricts it: boom-only, torsional and axial modes excluded)."""
-    from flexshaft.studies.verdict_evidence import evidence_from_run
-
     stab = results.stability
     k = int(np.argmin(np.abs(np.asarray(stab.speeds) - results.model.speed)))
     lateral = [str(kind) == "lateral" for kind in stab.kind[k]] if stab.kind is not None else None
     out = {}
-    for m, mode in enumerate(evidence_from_run(results).modes_at_operating):
+    for m, mode in enumerate(results.evidence.modes_at_operating):
         if "boom)" in mode.label or (lateral is not None and not lateral[m]):
             continue
         out[mode.label] = mode.log_decrement
@@ -434,7 +432,7 @@ FORWARD_ENDS = {"twist only": ["theta"], "pinned": ["v", "w", "theta"], "clamped
 def forward_end_row(end: str) -> tuple:
     """Lateral critical speeds [rad/s] and AF within 0.8-1.25 x the operating speed at the Table 3.1
     gains (thesis damping), and the shaft orbit [m] at the operating speed, for a forward end."""
-    from flexshaft.studies.verdict_evidence import lateral_critical_speeds
+    from flexshaft.analyses.criticals import lateral_critical_speeds
 
     design = with_overrides(baseline_design(), {**THESIS_DAMPING, "shaft.fixed_start": FORWARD_ENDS[end]})
     model = build_model(design)

@@ -557,7 +557,7 @@ def test_buckling_of_a_shaft_with_a_laminated_segment_is_not_evaluated():
     laminated segment (whose buckling on a segmented shaft is not modelled): not evaluated, naming it."""
     import json
 
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.verdict.assess import assess
 
     tuned = tuned_design()
     fmc = json.loads(tuned.materials[tuned.shaft.material].model_dump_json())
@@ -571,5 +571,5 @@ def test_buckling_of_a_shaft_with_a_laminated_segment_is_not_evaluated():
         power=20e3,
         elements=12,
     )
-    check = run_analysis(design_from_dict(data), studies=None).verdict.check("buckling")
+    check = assess(design_from_dict(data)).verdict.check("buckling")
     assert check.status == "not evaluated" and "fmc" in check.note

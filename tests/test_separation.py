@@ -126,9 +126,9 @@ def test_af_of_a_single_dof_unbalance_response_is_its_q(zeta: float) -> None:
 def test_af_of_a_simply_supported_tube_with_hysteretic_loss() -> None:
     """The whole pipeline on a model: peak AF of a tube with loss factor η is ≈ 1/η."""
     from flexshaft.analyses.campbell import campbell
+    from flexshaft.analyses.criticals import lateral_critical_speeds
     from flexshaft.assembly import build_model
     from flexshaft.design import loads_design
-    from flexshaft.studies.verdict_evidence import lateral_critical_speeds
 
     model = build_model(loads_design(TUBE))
     criticals = lateral_critical_speeds(model, campbell(model, np.linspace(0.0, 1.3 * model.speed, 40)))
@@ -148,9 +148,9 @@ def test_af_of_a_simply_supported_tube_with_hysteretic_loss() -> None:
 
 
 def test_an_undamped_peak_has_an_infinite_af_and_takes_the_capped_margin() -> None:
+    from flexshaft.analyses.criticals import lateral_critical_speeds
     from flexshaft.assembly import build_model
     from flexshaft.design import loads_design
-    from flexshaft.studies.verdict_evidence import lateral_critical_speeds
 
     model = build_model(loads_design(TUBE.replace("loss_factor = 0.01", "loss_factor = 0.0", 1)))
     (first,) = lateral_critical_speeds(model)

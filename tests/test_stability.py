@@ -138,7 +138,7 @@ def test_shaft_whirl_on_one_model_equals_separate_analyses():
     basis), as the thesis-shaft comparison ran before. One model and one basis for both damping
     models must give the same eigenvalues and onsets exactly (the basis does not depend on the
     damping, and no analysis may leave state behind for the other)."""
-    from flexshaft.studies.whirl import shaft_stability, shaft_whirl
+    from flexshaft.thesis.whirl import shaft_stability, shaft_whirl
 
     design = baseline_design()
     speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, 13)

@@ -12,7 +12,8 @@ xr = pytest.importorskip("xarray")
 pytest.importorskip("matplotlib")
 
 from flexshaft.design import baseline_design, with_overrides
-from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES, ply_angle_study, wall_thickness_study
+from flexshaft.thesis.ply_angle import DOMINANT_STRESS_CODES, ply_angle_study
+from flexshaft.thesis.wall import wall_thickness_study
 
 COARSE = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
 
@@ -95,7 +96,7 @@ def test_wall_study_first_frequency_follows_eq_3_3():
 
 @pytest.fixture(scope="module")
 def coarse_studies(coarse):
-    from flexshaft.studies.chapter3 import design_studies
+    from flexshaft.thesis.design_studies import design_studies
 
     labels = []
     # its run time is measured by benchmarks/studies_timing.py, not asserted here
@@ -105,8 +106,8 @@ def coarse_studies(coarse):
 def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, coarse_studies):
     """The studies as independent tasks on two forked workers (how `flexshaft run` computes
     them) give exactly the datasets and headline numbers computed in this process."""
-    from flexshaft._pool import worker_pool
-    from flexshaft.studies.chapter3 import _DATASETS, design_studies, headline
+    from flexshaft.parallel.pool import worker_pool
+    from flexshaft.thesis.design_studies import _DATASETS, design_studies, headline
 
     serial, _ = coarse_studies
     with worker_pool(2, ("xarray",)) as pool:
@@ -126,7 +127,7 @@ def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, coarse_s
 def test_design_studies_report_level_renders(coarse_studies, tmp_path):
     from flexshaft.report.html import render_report
     from flexshaft.report.studies_section import design_studies_section
-    from flexshaft.studies.chapter3 import headline, save_study_data
+    from flexshaft.thesis.design_studies import headline, save_study_data
 
     res, labels = coarse_studies
     assert labels and labels[0].startswith("study 1")
@@ -168,7 +169,7 @@ def test_design_studies_report_level_renders(coarse_studies, tmp_path):
 
 
 def test_unknown_resolution_is_refused():
-    from flexshaft.studies.chapter3 import design_studies
+    from flexshaft.thesis.design_studies import design_studies
 
     with pytest.raises(ValueError, match="resolution"):
         design_studies(None, "huge")

@@ -186,7 +186,7 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs):
 
 
 def test_thesis_ply_angle_study_runs_and_labels(tmp_path):
-    from flexshaft.studies.sweeps import one_angle_layup, ply_angle_study
+    from flexshaft.thesis.ply_angle import one_angle_layup, ply_angle_study
 
     assert one_angle_layup(55.0) == {"shaft.layup": "(55/-55/-55/55)"}
     ds = ply_angle_study([45.0, 55.0], run_dir=tmp_path, progress=False)

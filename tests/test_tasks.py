@@ -11,8 +11,8 @@ import sys
 import numpy as np
 import pytest
 
-from flexshaft._pool import worker_pool
-from flexshaft.studies.tasks import Task, start_tasks
+from flexshaft.parallel.pool import worker_pool
+from flexshaft.parallel.tasks import Task, start_tasks
 
 needs_fork = pytest.mark.skipif(not hasattr(os, "fork"), reason="the pool needs fork")
 
@@ -82,7 +82,7 @@ def test_stacked_single_row_maps_equal_the_map_in_one_call():
     """The run computes the (K_p, K_d) onset map one K_p row per task: stacking the rows gives
     the map computed in one call (each row is an independent model and modal basis)."""
     from flexshaft.design import baseline_design, with_overrides
-    from flexshaft.studies.whirl import gain_stability_map, stack_maps
+    from flexshaft.thesis.whirl import gain_stability_map, stack_maps
 
     design = with_overrides(baseline_design(), {"mesh.shaft_elements": 18, "mesh.boom_elements": 12})
     speeds = np.linspace(0.0, 1.5 * design.operating.speed_rad_s, 9)
@@ -97,23 +97,27 @@ def test_stacked_single_row_maps_equal_the_map_in_one_call():
 
 
 @needs_fork
-def test_run_analysis_on_a_pool_equals_the_run_in_process():
+def test_an_assessment_on_a_pool_equals_the_one_in_process():
     """`flexshaft run` computes the design's analyses as tasks on its worker pool: the numbers
     (results.json) are exactly those of the run in one process."""
+    from dataclasses import replace
+
     from flexshaft.design import baseline_design, with_overrides
-    from flexshaft.report.driveline import json_ready, results_json
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.report.results_json import json_ready, results_json
+    from flexshaft.resolution import REPORT
+    from flexshaft.verdict.assess import assess
 
     design = with_overrides(baseline_design(), {"mesh.shaft_elements": 18, "mesh.boom_elements": 12})
-    serial = run_analysis(design, n_speeds=101, n_campbell=11, studies=None)
+    resolution = replace(REPORT, spinup_speeds=101, campbell_speeds=11)
+    serial = assess(design, resolution)
     with worker_pool(2) as pool:
-        pooled = run_analysis(design, n_speeds=101, n_campbell=11, studies=None, executor=pool)
+        pooled = assess(design, resolution, executor=pool)
 
     def text(res):
         return json.dumps(json_ready(results_json(res)), sort_keys=True)
 
     assert text(serial) == text(pooled)
-    np.testing.assert_array_equal(np.asarray(serial.imbalance_spinup), np.asarray(pooled.imbalance_spinup))
+    np.testing.assert_array_equal(np.asarray(serial.spinup.response), np.asarray(pooled.spinup.response))
 
 
 def test_cli_sets_one_blas_thread_unless_the_user_chose():
@@ -140,7 +144,7 @@ def test_cli_sets_one_blas_thread_unless_the_user_chose():
 
 _LIFETIME = """
 import os, signal, sys, time
-from flexshaft._pool import worker_pool
+from flexshaft.parallel.pool import worker_pool
 
 def sleep(seconds):
     time.sleep(seconds)
@@ -198,7 +202,7 @@ def test_one_blas_thread_limits_and_restores_every_blas_library():
     two BLAS threads, so that the limit is visible)."""
     code = (
         "import numpy, scipy.linalg; from threadpoolctl import threadpool_info as info; "
-        "from flexshaft._threads import one_blas_thread\n"
+        "from flexshaft.parallel.threads import one_blas_thread\n"
         "before = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"
         "for _ in range(3):\n"
         "    with one_blas_thread(): inside = [i['num_threads'] for i in info() if i['user_api'] == 'blas']\n"

@@ -1,4 +1,4 @@
-"""Thermal-design sweeps of a design (thesis figures 3.18, 3.19) in flexshaft.studies.thermal."""
+"""Thermal-design sweeps of a design (thesis figures 3.18, 3.19) in flexshaft.thermal.study."""
 
 from __future__ import annotations
 
@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 import flexshaft as fs
-from flexshaft.studies.thermal import convection_sweep, temperature_profiles, wall_thickness_sweep
 from flexshaft.thermal.analysis import shaft_air_temperature, shaft_thermal
 from flexshaft.thermal.heat import heat_sources
 from flexshaft.thermal.options import thermal_options
+from flexshaft.thermal.study import convection_sweep, temperature_profiles, wall_thickness_sweep
 
 
 @pytest.fixture(scope="module")
@@ -68,6 +68,6 @@ def test_wall_thickness_sweep_rebuilds_each_design_at_the_boom_air(baseline):
 def test_temperature_profiles_are_labelled_by_wall_and_by_h(baseline):
     design, model = baseline
     prof = temperature_profiles(design, model, walls=(0.003,), coefficients=(5.0, None))
-    assert list(prof["by_wall"]) == ["wall 3.0 mm"]
-    labels = list(prof["by_h"])
+    assert list(prof.by_wall) == ["wall 3.0 mm"]
+    labels = list(prof.by_h)
     assert labels[0] == "h = 5 W/m²K" and labels[1].endswith("(correlation)")

@@ -13,16 +13,11 @@ import math
 
 import pytest
 
+from flexshaft.analyses.criticals import LateralCritical
 from flexshaft.design import DesignError, baseline_design, baseline_text, loads_design
 from flexshaft.design.requirements import Requirements, log_decrement_from_damping_ratio
-from flexshaft.studies.verdict import (
-    ActuatorEvidence,
-    Evidence,
-    LateralCritical,
-    ModeDamping,
-    evaluate,
-    whirl_onset_check,
-)
+from flexshaft.verdict.checks import evaluate, whirl_onset_check
+from flexshaft.verdict.evidence import ActuatorEvidence, Evidence, ModeDamping
 
 OP = 4800.0 * 2.0 * math.pi / 60.0  # operating speed [rad/s]
 KEYS = [
@@ -305,10 +300,10 @@ def test_adapter_on_a_run_reports_what_it_cannot_evaluate() -> None:
     """An isotropic tube on rigid supports: no plies, no thermal model, no actuators, no limit."""
     from test_separation import TUBE
 
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.verdict.assess import assess
 
     design = loads_design(TUBE)
-    res = run_analysis(design, studies=None)
+    res = assess(design)
     verdict = res.verdict
     status = {c.key: c.status for c in verdict.checks}
     # the tube's fixed-frame ("thesis") internal damping cannot destabilise whirl: onset passes;
@@ -347,17 +342,16 @@ def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
     import numpy as np
 
     from flexshaft.design import tuned_design, with_overrides
-    from flexshaft.studies.run import run_analysis
-    from flexshaft.studies.verdict_evidence import evidence_from_run
+    from flexshaft.verdict.assess import assess
 
     tuned = tuned_design()
-    pd = run_analysis(tuned, studies=None)
-    for a, ev in zip(pd.model.actuators, evidence_from_run(pd).actuators):
+    pd = assess(tuned)
+    for a, ev in zip(pd.model.actuators, pd.evidence.actuators):
         offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))
         assert ev.static_force == pytest.approx(abs(a.law(0j)) * offset, rel=1e-9)
     pid = with_overrides(tuned, {"bearings[1].integral_gain": 2.0e6, "bearings[2].integral_gain": 2.0e6})
-    res = run_analysis(pid, studies=None)
-    evidence = evidence_from_run(res).actuators
+    res = assess(pid)
+    evidence = res.evidence.actuators
     for ev in evidence:
         reaction = res.bearing_reactions[ev.name].static_lateral
         assert reaction > 10.0 and ev.static_force == reaction  # 3.5 g on the shaft: tens of newtons at least

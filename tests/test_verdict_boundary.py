@@ -17,16 +17,10 @@ import math
 import pytest
 
 from flexshaft.design.requirements import Requirements
-from flexshaft.studies.evidence import CouplingEvidence, MetalEvidence
-from flexshaft.studies.verdict import (
-    ActuatorEvidence,
-    Evidence,
-    Finding,
-    LateralCritical,
-    ModeDamping,
-    evaluate,
-    whirl_onset_check,
-)
+from flexshaft.analyses.criticals import LateralCritical
+from flexshaft.verdict.checks import evaluate, whirl_onset_check
+from flexshaft.verdict.evidence import ActuatorEvidence, CouplingEvidence, Evidence, MetalEvidence, ModeDamping
+from flexshaft.verdict.result import Finding
 
 OP = 400.0  # operating speed [rad/s]
 REQ = Requirements(

@@ -9,6 +9,11 @@ actively controlled magnetic bearings (Ocalan 2002). Typical use:
 >>> m = fs.modes(model, speed=design.operating.speed_rad_s)
 >>> m                                        # m.frequencies [Hz], m.whirl, m.shapes, ...
 Modes(10 modes at 4800 rpm: [...] Hz, internal damping 'rotating')
+>>> a = fs.assess(design, fs.SCREENING)      # doctest: +SKIP
+>>> a.verdict                                # doctest: +SKIP
+
+``assess(design, resolution)`` is the one recipe that judges a design (what ``flexshaft run``
+computes at :data:`REPORT`); its :class:`Assessment` holds every analysis and the verdict.
 
 The top level stays light: submodules load on first use.
 """
@@ -34,6 +39,13 @@ _LAZY = {
     "Modes": "flexshaft.analyses",
     "frequency_response": "flexshaft.analyses",
     "SingularSystemError": "flexshaft.analyses",
+    "assess": "flexshaft.verdict.assess",
+    "Assessment": "flexshaft.verdict.assess",
+    "Resolution": "flexshaft.resolution",
+    "SCREENING": "flexshaft.resolution",
+    "VERDICT": "flexshaft.resolution",
+    "REPORT": "flexshaft.resolution",
+    "FINE": "flexshaft.resolution",
 }
 
 __all__ = ["__version__", *_LAZY]

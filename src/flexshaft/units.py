@@ -20,12 +20,14 @@ import math
 
 __all__ = [
     "MM_PER_M",
+    "RPM_PER_HZ",
     "ZERO_CELSIUS",
     "celsius_to_kelvin",
     "format_quantity",
     "hz_to_rpm",
     "kelvin_to_celsius",
     "m_to_mm",
+    "mm_to_m",
     "rad_s_to_hz",
     "rad_s_to_rpm",
     "rpm_to_hz",
@@ -34,6 +36,8 @@ __all__ = [
 
 #: Millimetres per metre.
 MM_PER_M = 1000.0
+#: rpm per Hz (revolutions per minute of one revolution per second).
+RPM_PER_HZ = 60.0
 
 #: 0 °C in kelvin [K].
 ZERO_CELSIUS = 273.15
@@ -72,6 +76,11 @@ def hz_to_rpm(frequency):
 def rpm_to_hz(speed_rpm):
     """A spin speed [rev/min] as its rotation frequency [Hz]."""
     return speed_rpm / 60.0
+
+
+def mm_to_m(length_mm):
+    """[mm] -> [m]."""
+    return length_mm / MM_PER_M
 
 
 def m_to_mm(length):

@@ -37,6 +37,7 @@ the full model's, where the response of 100 N was 3.6e3 m).
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import math
 from dataclasses import dataclass
@@ -409,13 +410,9 @@ class BandedHarmonicSolver:
         )
 
 
+@functools.lru_cache(maxsize=8)  # the models of a run and of a sweep point's analyses
 def solver_for(model: Model, passive: bool = False) -> BandedHarmonicSolver:
-    """The model's :class:`BandedHarmonicSolver`, built once and kept with the (immutable) model;
+    """The model's :class:`BandedHarmonicSolver`, built once for the (immutable) model;
     ``passive``: the solver of the model without its actuators (:meth:`Model.passive`), which
     the spin-up studies solve on several speed grids."""
-    key = "_passive_banded_solver" if passive else "_banded_solver"
-    solver = model.__dict__.get(key)
-    if solver is None:
-        solver = BandedHarmonicSolver(model.passive() if passive else model)
-        model.__dict__[key] = solver  # a frozen dataclass: cache like functools.cached_property
-    return solver
+    return BandedHarmonicSolver(model.passive() if passive else model)

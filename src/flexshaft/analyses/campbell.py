@@ -19,12 +19,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import ModalLabeler
+from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
+from flexshaft.plot.campbell import campbell_figure
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = [
@@ -273,7 +275,6 @@ class Campbell(EigenvalueCurves, ResultMixin):
 
     def to_dataset(self):
         """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
-        from flexshaft.analyses.datasets import curves_dataset
 
         return curves_dataset(self, "Campbell diagram")
 
@@ -290,7 +291,6 @@ class Campbell(EigenvalueCurves, ResultMixin):
         colour (``damping=False``: one colour per mode), the critical speeds (up to
         ``max_critical_rpm``) labelled. Keywords (``main_rotor_hz``, ``harmonics``) go to
         :func:`flexshaft.plot.campbell.campbell_figure`."""
-        from flexshaft.plot.campbell import campbell_figure
 
         crit = [
             c.speed_rpm for c in self.critical_speeds if max_critical_rpm is None or c.speed_rpm <= max_critical_rpm

@@ -188,9 +188,10 @@ class _ActuatorStates:
         return self.rows.T @ self.sensing
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ReducedModel:
-    """A model projected on its modal basis (see the module docstring).
+    """A model projected on its modal basis (see the module docstring). Equality is identity, so
+    that it keys the cache of its speed parts.
 
     Attributes
     ----------
@@ -285,25 +286,10 @@ class ReducedModel:
 
     def _speed_parts(self, speed: float, loss: LossCoefficients) -> tuple[np.ndarray, np.ndarray]:
         """The parts of ``T(s)`` that do not depend on s, for one speed and loss weights: the
-        damping ``ΩG + C`` (complex, as dT/ds needs it) and the stiffness ``Λ + Σ loss``. Kept on
-        the instance for the next call: Newton's method calls with the same speed and weights
-        for every mode and step (two weights per speed with the rotating loss model)."""
-        key = (float(speed), complex(loss.fixed), complex(loss.lateral), complex(loss.circulatory))
-        cache = self.__dict__.setdefault("_parts", {})
-        parts = cache.get(key)
-        if parts is None:
-            damping = speed * self.G + self.C
-            stiffness = np.diag(self.w2).astype(complex)
-            if loss.fixed:
-                stiffness = stiffness + loss.fixed * self.F
-            if loss.lateral:
-                stiffness = stiffness + loss.lateral * self.L
-            if loss.circulatory:
-                stiffness = stiffness + loss.circulatory * self.S
-            if len(cache) >= 64:
-                cache.clear()
-            parts = cache[key] = (damping.astype(complex), stiffness)
-        return parts
+        damping ``ΩG + C`` (complex, as dT/ds needs it) and the stiffness ``Λ + Σ loss``, cached
+        (:func:`_speed_parts`): Newton's method calls with the same speed and weights for every
+        mode and step (two weights per speed with the rotating loss model)."""
+        return _speed_parts(self, float(speed), complex(loss.fixed), complex(loss.lateral), complex(loss.circulatory))
 
     def newton_terms(
         self, s: complex, speed: float, loss: LossCoefficients, y: np.ndarray
@@ -353,13 +339,30 @@ def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness:
 
 
 def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
-    """Project ``model`` on its lowest ``basis_size`` undamped modes (kept with the immutable
+    """Project ``model`` on its lowest ``basis_size`` undamped modes (cached for the immutable
     model, so a second analysis of it reuses the basis)."""
-    cache = model.__dict__.setdefault("_reduced", {})
-    key = (int(basis_size), method)
-    if key not in cache:
-        cache[key] = _reduce(model, basis_size, method)
-    return cache[key]
+    return _reduced(model, int(basis_size), method)
+
+
+@functools.lru_cache(maxsize=16)  # a model's bases of a few sizes; a sweep's last models
+def _reduced(model: Model, basis_size: int, method: str) -> ReducedModel:
+    return _reduce(model, basis_size, method)
+
+
+@functools.lru_cache(maxsize=64)  # the speeds and loss weights of one stability or Campbell sweep
+def _speed_parts(
+    red: ReducedModel, speed: float, fixed: complex, lateral: complex, circulatory: complex
+) -> tuple[np.ndarray, np.ndarray]:
+    """:meth:`ReducedModel._speed_parts` of ``red`` at ``speed`` [rad/s] with the loss weights."""
+    damping = speed * red.G + red.C
+    stiffness = np.diag(red.w2).astype(complex)
+    if fixed:
+        stiffness = stiffness + fixed * red.F
+    if lateral:
+        stiffness = stiffness + lateral * red.L
+    if circulatory:
+        stiffness = stiffness + circulatory * red.S
+    return damping.astype(complex), stiffness
 
 
 def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:

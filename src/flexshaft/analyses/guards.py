@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from flexshaft.assembly.model import Model
 from flexshaft.design.schema import MAX_SPEED_RPM
 from flexshaft.units import rpm_to_rad_s
 
@@ -59,7 +60,6 @@ class UnstableResponseError(FloatingPointError, RefusedInputError):
 
 def check_model(model: Any) -> None:
     """Refuse anything but an assembled :class:`~flexshaft.assembly.model.Model`."""
-    from flexshaft.assembly.model import Model
 
     if not isinstance(model, Model):
         raise RefusedInputError(

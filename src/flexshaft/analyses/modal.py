@@ -15,13 +15,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
+from flexshaft.analyses.datasets import modes_dataset
 from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
+from flexshaft.plot.shapes import mode_shapes_figure
 from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
@@ -84,7 +86,6 @@ class Modes(ResultMixin):
 
     def to_dataset(self):
         """Frequencies, damping, labels and shaft/boom translations of every mode (xarray)."""
-        from flexshaft.analyses.datasets import modes_dataset
 
         return modes_dataset(self)
 
@@ -100,7 +101,6 @@ class Modes(ResultMixin):
         """Two-plane shapes (v, w) of shaft and boom of the ``n`` modes nearest the spin
         frequency (``near_rpm`` [rpm] instead of this result's speed; the lowest ``n`` at rest), or
         of ``modes`` (0-based indices). ``bearings_x`` [m] marks the bearings. Returns the figure."""
-        from flexshaft.plot.shapes import mode_shapes_figure
 
         rpm = rad_s_to_rpm(self.speed) if near_rpm is None else float(near_rpm)
         f_spin = rpm / 60.0

@@ -12,10 +12,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_finite_array, check_model, check_spin_speeds
+from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 
 __all__ = ["ActuatorReceptance", "actuator_receptance"]
 
@@ -126,7 +127,6 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
     SingularSystemError
         When the structure without actuators is singular at a speed (no damping there).
     """
-    from flexshaft.assembly.loads import imbalance_loads
 
     check_model(model)
     if not model.actuators:

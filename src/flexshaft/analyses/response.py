@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.banded import PIVOT_SCREEN, BandedHarmonicSolver, SingularSystemError, solver_for
+from flexshaft.analyses.datasets import response_dataset
 from flexshaft.analyses.guards import (
     check_finite_array,
     check_model,
@@ -19,10 +20,14 @@ from flexshaft.analyses.guards import (
     check_spin_speeds,
     require_finite,
 )
+from flexshaft.analyses.loss import frequency_coefficients
 from flexshaft.analyses.refinement import checked_solve
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
+from flexshaft.assembly.loads import external_static_load, torque_load
 from flexshaft.assembly.model import Model
+from flexshaft.assembly.sparse import restrict
+from flexshaft.plot.response import bode_figure, orbit_figure
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
@@ -93,7 +98,6 @@ class HarmonicResponse(np.ndarray, ResultMixin):
 
     def to_dataset(self):
         """Translations of every node by load case and frequency (see :mod:`flexshaft.analyses.datasets`)."""
-        from flexshaft.analyses.datasets import response_dataset
 
         return response_dataset(self)
 
@@ -142,7 +146,6 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         ``direction`` "v" (vertical), "w" (lateral) or "both". ``case``: the load case (default
         the one with the largest response there). Other keywords (``operating_rpm``, ``gap``
         [m], ``title``) go to :func:`flexshaft.plot.response.bode_figure`."""
-        from flexshaft.plot.response import bode_figure
 
         if direction not in ("v", "w", "both"):
             raise ValueError(f"direction must be 'v', 'w' or 'both' (got {direction!r})")
@@ -174,7 +177,6 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         the node of the largest orbit) at the analysed point nearest ``speed_rpm`` [rpm]
         (spin speed for an imbalance response, else excitation frequency × 60; default the last).
         ``gap`` [m] (a float or ``{label: gap}``) draws the auxiliary-bearing clearance."""
-        from flexshaft.plot.response import orbit_figure
 
         q = self._cube()
         x, _ = self._abscissa()
@@ -290,7 +292,6 @@ def imbalance_response(model: Model, speeds, loads_per_speed_squared) -> Harmoni
 def _static_parts(model: Model, speed: float):
     """Static stiffness (storage + finite actuator laws + circulatory loss at ω = 0) and the
     integrating actuators, which instead hold their sensed displacement at zero."""
-    from flexshaft.analyses.loss import frequency_coefficients
 
     if model.all_pd and all(a.basis_stiffness == a.collocated_law.kp for a in model.actuators):
         K = model.K + model.Kp  # PD laws with K_p >= 0: the basis stiffness is the static one
@@ -351,8 +352,6 @@ def static_actuator_forces(model: Model, loads, speed: float | None = None) -> d
 def _static_solve(model: Model, loads, speed: float | None):
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
-
-    from flexshaft.assembly.sparse import restrict
 
     check_model(model)
     free = model.dofs.free
@@ -587,8 +586,6 @@ def bearing_reactions(
             f"got {q_static.shape} and {np.shape(q_at_speed)}"
         )
     if loads is None and any(a.integrates for a in model.actuators):
-        from flexshaft.assembly.loads import external_static_load, torque_load
-
         loads = external_static_load(model) + torque_load(model)
     static = bearing_forces(model, q_static, loads=loads)  # the static response is at the operating speed
     dynamic = bearing_forces(model, q_dyn, speed)

@@ -18,6 +18,9 @@ from typing import Any
 
 import numpy as np
 
+from flexshaft import __version__
+from flexshaft.netcdf import write_netcdf
+
 __all__ = ["CONVENTIONS", "ResultMixin", "coded", "new_dataset"]
 
 #: The ``Conventions`` attribute of every dataset the package writes.
@@ -47,8 +50,6 @@ def new_dataset(variables: dict, coords: dict, title: str, **attrs: Any):
     """An :class:`xarray.Dataset` with the package's global attributes."""
     import xarray as xr
 
-    from flexshaft import __version__
-
     return xr.Dataset(
         variables,
         coords=coords,
@@ -67,7 +68,6 @@ class ResultMixin:
 
     def save(self, path: str | Path) -> Path:
         """Write :meth:`to_dataset` to a netCDF file at ``path``; returns the path."""
-        from flexshaft.netcdf import write_netcdf
 
         path = Path(path)
         write_netcdf(self.to_dataset(), path)

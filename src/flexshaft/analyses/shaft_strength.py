@@ -49,8 +49,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flexshaft.analyses.datasets import strength_dataset
 from flexshaft.analyses.guards import NonFiniteResultError, check_count, check_finite_array, check_model
+from flexshaft.analyses.response import static_response
 from flexshaft.analyses.results import ResultMixin
+from flexshaft.assembly.loads import external_static_load, torque_load
 from flexshaft.assembly.model import Model
 from flexshaft.elements.shape import beam_shape
 from flexshaft.laminate import (
@@ -61,6 +64,7 @@ from flexshaft.laminate import (
     spin_hoop_resultant,
     thermal_ply_stresses,
 )
+from flexshaft.plot.driveline import load_shares_figure, safety_factor_figure
 from flexshaft.strength import (
     Strengths,
     datasheet_strengths,
@@ -133,8 +137,6 @@ def static_load_parts(model: Model) -> dict[str, np.ndarray]:
     Their sum is the static response of the thesis; keeping them apart lets
     :func:`shaft_safety_factor` report each one's share.
     """
-    from flexshaft.analyses.response import static_response
-    from flexshaft.assembly.loads import external_static_load, torque_load
 
     return {
         "external": static_response(model, external_static_load(model)),
@@ -187,14 +189,12 @@ class StrengthResult(ResultMixin):
     def plot_along_shaft(self, ax=None, **kwargs):
         """Smallest safety factor along the shaft [m], the critical point annotated (keywords to
         :func:`flexshaft.plot.driveline.safety_factor_figure`)."""
-        from flexshaft.plot.driveline import safety_factor_figure
 
         kwargs.setdefault("critical_r", self.safety_factor)
         return safety_factor_figure(self.x_along, self.along_shaft, self.x, self.critical_description, ax=ax, **kwargs)
 
     def plot_load_shares(self, ax=None, **kwargs):
         """Each load's share of the failure index at the critical point (bars)."""
-        from flexshaft.plot.driveline import load_shares_figure
 
         if not self.load_shares:
             raise ValueError("this result has no load shares")
@@ -209,7 +209,6 @@ class StrengthResult(ResultMixin):
 
     def to_dataset(self):
         """The safety factor along the shaft, with the critical point in the attributes (xarray)."""
-        from flexshaft.analyses.datasets import strength_dataset
 
         return strength_dataset(self)
 

@@ -38,7 +38,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.guards import (
     RefusedInputError,
     check_count,
@@ -52,6 +51,10 @@ from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptanc
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.results import ResultMixin, new_dataset
 from flexshaft.assembly.model import Controller, Model
+from flexshaft.parallel.threads import single_blas_thread
+from flexshaft.plot.driveline import actuator_figure, imbalance_response_figure
+from flexshaft.plot.studies import gain_map_figure
+from flexshaft.resolution import SLOW_START
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
@@ -66,7 +69,7 @@ __all__ = [
 ]
 
 
-def spinup_speeds(model: Model, n_speeds: int = 400, start: float = 0.02, stop: float = 1.0) -> np.ndarray:
+def spinup_speeds(model: Model, n_speeds: int = 400, start: float = SLOW_START, stop: float = 1.0) -> np.ndarray:
     """``n_speeds`` spin speeds from ``start`` to ``stop`` times the operating speed [rad/s].
 
     Raises
@@ -174,7 +177,6 @@ class SpinupCurves(ResultMixin):
         """Largest shaft orbit and the actuator orbits against speed [rpm] (log amplitude);
         keywords (``operating_rpm``, ``gap`` [m]) go to
         :func:`flexshaft.plot.driveline.imbalance_response_figure`."""
-        from flexshaft.plot.driveline import imbalance_response_figure
 
         curves = {"max over the shaft": self.shaft_peak}
         curves.update({f"at {name} (relative)": d for name, d in zip(self.actuator_names, self.actuator_displacement)})
@@ -184,7 +186,6 @@ class SpinupCurves(ResultMixin):
 
     def plot_actuators(self, ax=None, **kwargs):
         """Actuator relative orbit [mm] and force [N] against speed [rpm] (two panels)."""
-        from flexshaft.plot.driveline import actuator_figure
 
         if not self.actuator_names:
             raise ValueError("this driveline has no actuators")
@@ -351,7 +352,6 @@ class SpinupMap(ResultMixin):
     }
 
     def _plot_map(self, values, label: str, scale: float, title: str, ax, kwargs):
-        from flexshaft.plot.studies import gain_map_figure
 
         if "best" not in kwargs:
             kp, kd, _ = self.best()

@@ -40,14 +40,16 @@ from typing import Literal
 
 import numpy as np
 
-from flexshaft._threads import single_blas_thread
 from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
+from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.model import rotation_generator as _rotation_generator
+from flexshaft.parallel.threads import single_blas_thread
+from flexshaft.plot.stability import log_decrement_figure, real_parts_figure
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["DampingModel", "STABILITY_TOLERANCE", "StabilityResult", "rotation_generator", "stability", "onset_speed"]
@@ -121,7 +123,6 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
     def to_dataset(self):
         """Tracked eigenvalues over speed with the onset speed (xarray)."""
-        from flexshaft.analyses.datasets import curves_dataset
 
         attrs = {"method": self.damping_model, "onset_kind": getattr(self, "onset_kind", "whirl") or "none"}
         if self.onset_speed is not None:
@@ -161,7 +162,6 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
     def plot_log_decrement(self, ax=None, *, label: str = "this design", **kwargs):
         """Log decrement of every tracked mode against speed [rpm], the onset marked. Keywords
         (``operating_rpm``, ``required``) go to :func:`flexshaft.plot.stability.log_decrement_figure`."""
-        from flexshaft.plot.stability import log_decrement_figure
 
         onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
         text = self.onset_description()
@@ -177,7 +177,6 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
     def plot_real_parts(self, ax=None, *, label: str = "this design", **kwargs):
         """Re(s) of every tracked mode against speed [rpm] (thesis figures 4.2-4.4), onset marked."""
-        from flexshaft.plot.stability import real_parts_figure
 
         onset = None if self.onset_speed is None else rad_s_to_rpm(self.onset_speed)
         return real_parts_figure(

@@ -69,20 +69,21 @@ Lewis, F. M. (1932). Vibration during acceleration through a critical speed. Tra
 
 from __future__ import annotations
 
-import bisect
-from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import cached_property
 
 import numpy as np
 
-from flexshaft.analyses.eigen import ReducedModel, reduce
+from flexshaft.analyses.eigen import ReducedModel, modal_basis, reduce
 from flexshaft.analyses.envelope import EnvelopeSystem, integrate_envelope
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
+from flexshaft.analyses.speed_profile import SpeedProfile
+from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
+from flexshaft.assembly.sparse import restrict
+from flexshaft.plot.transient import runup_envelope_figure
 
 __all__ = [
-    "SpeedProfile",
+    "SpeedProfile",  # the run's speed law (flexshaft.analyses.speed_profile), part of this module's API
     "SteadyEnvelope",
     "TransientResult",
     "default_basis_size",
@@ -102,124 +103,9 @@ OUTPUT_SAMPLES_PER_RADIAN = 8 / (2 * np.pi)
 _SQ3 = np.sqrt(3.0)
 
 
-# ---------------------------------------------------------------------------------------------
-# Speed profiles
-
-
-@dataclass(frozen=True)
-class SpeedProfile:
-    """Spin speed Ω(t) ≥ 0 [rad/s] over ``0 ≤ t ≤ duration`` [s].
-
-    Either piecewise linear through ``(times, speeds)`` (constant acceleration on each
-    segment; the integrator lands on every breakpoint), or a callable ``speed(t)`` with its
-    derivative ``acceleration(t)`` [rad/s²] (central differences when not given).
-    Build one with :meth:`constant_acceleration`, :meth:`table` or :meth:`from_callable`.
-    """
-
-    duration: float
-    times: np.ndarray | None = None
-    speeds: np.ndarray | None = None
-    speed_function: Callable[[float], float] | None = None
-    acceleration_function: Callable[[float], float] | None = None
-
-    @classmethod
-    def table(cls, times, speeds) -> SpeedProfile:
-        """Piecewise-linear Ω through ``speeds`` [rad/s] at ``times`` [s] (from t = 0)."""
-        t = np.asarray(times, dtype=float).ravel()
-        s = np.asarray(speeds, dtype=float).ravel()
-        if t.size < 2 or t.size != s.size:
-            raise ValueError(
-                f"speed table: need >= 2 (time, speed) pairs of equal length, got {t.size} times and {s.size} speeds"
-            )
-        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(s))):
-            raise ValueError("speed table: times and speeds must be finite")
-        if t[0] != 0.0 or np.any(np.diff(t) <= 0):
-            raise ValueError(f"speed table: times must start at 0 s and increase strictly, got {t.tolist()}")
-        if np.any(s < 0):
-            raise ValueError(f"speed table: speeds must be >= 0 rad/s (one spin direction), got min {s.min()!r}")
-        return cls(duration=float(t[-1]), times=t, speeds=s)
-
-    @classmethod
-    def constant_acceleration(cls, start: float, stop: float, acceleration: float, dwell: float = 0.0) -> SpeedProfile:
-        """From ``start`` to ``stop`` [rad/s] at ``|acceleration|`` [rad/s²] (run-down when
-        stop < start), then ``dwell`` [s] at ``stop``."""
-        if not (np.isfinite(acceleration) and acceleration != 0):
-            raise ValueError(f"acceleration must be finite and nonzero rad/s², got {acceleration!r}")
-        if not (np.isfinite(dwell) and dwell >= 0):
-            raise ValueError(f"dwell must be >= 0 s, got {dwell!r}")
-        ramp = abs(stop - start) / abs(acceleration)
-        if ramp <= 0:
-            raise ValueError(f"start and stop speeds are equal ({start!r} rad/s): nothing to ramp")
-        times, speeds = [0.0, ramp], [start, stop]
-        if dwell > 0:
-            times.append(ramp + dwell)
-            speeds.append(stop)
-        return cls.table(times, speeds)
-
-    @classmethod
-    def from_callable(
-        cls, speed: Callable[[float], float], duration: float, acceleration: Callable[[float], float] | None = None
-    ) -> SpeedProfile:
-        """Any smooth Ω(t) [rad/s] on [0, duration] [s], optionally with dΩ/dt [rad/s²]."""
-        if not (np.isfinite(duration) and duration > 0):
-            raise ValueError(f"duration must be > 0 s, got {duration!r}")
-        probe = np.array([float(speed(t)) for t in np.linspace(0.0, duration, 257)])
-        if not np.all(np.isfinite(probe)) or np.any(probe < 0):
-            raise ValueError("speed(t) must be finite and >= 0 rad/s on [0, duration]")
-        return cls(duration=float(duration), speed_function=speed, acceleration_function=acceleration)
-
-    @property
-    def breakpoints(self) -> np.ndarray:
-        """Times [s] the integrator must land on (segment ends of a table)."""
-        return self.times if self.times is not None else np.array([0.0, self.duration])
-
-    @property
-    def max_speed(self) -> float:
-        """Largest speed [rad/s] (sampled for a callable)."""
-        if self.speeds is not None:
-            return float(self.speeds.max())
-        return float(max(self.speed(t) for t in np.linspace(0.0, self.duration, 1025)))
-
-    def _segment(self, t: float) -> int:
-        return min(max(bisect.bisect_right(self._knots, t) - 1, 0), len(self._knots) - 2)
-
-    @cached_property
-    def _knots(self) -> list[float]:
-        return self.times.tolist()
-
-    @cached_property
-    def _slopes(self) -> list[float]:
-        return (np.diff(self.speeds) / np.diff(self.times)).tolist()
-
-    def speed(self, t: float) -> float:
-        """Ω(t) [rad/s]."""
-        if self.speeds is not None:
-            k = self._segment(t)
-            return float(self.speeds[k] + self._slopes[k] * (min(max(t, 0.0), self.duration) - self._knots[k]))
-        return float(self.speed_function(t))
-
-    def speeds_at(self, times) -> np.ndarray:
-        """Ω at many times [rad/s] (vectorised for a table)."""
-        t = np.asarray(times, dtype=float)
-        if self.speeds is not None:
-            return np.interp(t, self.times, self.speeds)
-        return np.array([self.speed(x) for x in t.ravel()]).reshape(t.shape)
-
-    def acceleration(self, t: float) -> float:
-        """dΩ/dt [rad/s²] (of the segment containing t; right-continuous at a breakpoint)."""
-        if self.speeds is not None:
-            return self._slopes[self._segment(t)]
-        if self.acceleration_function is not None:
-            return float(self.acceleration_function(t))
-        h = 1e-6 * self.duration
-        a, b = max(t - h, 0.0), min(t + h, self.duration)
-        return (self.speed(b) - self.speed(a)) / (b - a)
-
-
 def default_basis_size(model: Model, max_speed: float) -> int:
     """Basis modes: every undamped mode below :data:`BASIS_FREQUENCY_RATIO` × the largest
     speed, at least :data:`MIN_BASIS` (see the convergence study in ``benchmarks/runup.py``)."""
-    from flexshaft.analyses.eigen import modal_basis
 
     n_free = model.dofs.free.size
     guess = min(n_free, 60)
@@ -348,7 +234,6 @@ class TransientResult:
     def plot(self, ax=None, steady: SteadyEnvelope | None = None):
         """Shaft envelope against speed, with the steady-state spin-up curve when given
         (:func:`flexshaft.plot.transient.runup_envelope_figure`)."""
-        from flexshaft.plot.transient import runup_envelope_figure
 
         return runup_envelope_figure({"transient": self}, steady=steady, ax=ax)
 
@@ -374,7 +259,6 @@ class SteadyEnvelope:
 def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) -> SteadyEnvelope:
     """The steady synchronous response at each speed [rad/s] (banded direct solve, exact
     hysteretic loss), as the envelopes :class:`TransientResult` reports."""
-    from flexshaft.assembly.loads import imbalance_loads
 
     speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
     Q1 = imbalance_loads(model)[:, 0] if loads_per_speed_squared is None else np.asarray(loads_per_speed_squared)
@@ -421,8 +305,6 @@ def residual_flexibility(model: Model, red: ReducedModel, loads_per_speed_square
     """Static response of the modes left out of the basis to Q₁ [m/(rad/s)²] on the free DOFs:
     ``(K + K_a)⁻¹ Q₁ − Φ Λ⁻¹ Φᵀ Q₁`` (None when the basis stiffness is singular)."""
     import scipy.sparse.linalg as spla
-
-    from flexshaft.assembly.sparse import restrict
 
     free = model.dofs.free
     if np.any(red.w2 <= 1e-9 * red.w2.max()):
@@ -481,7 +363,6 @@ def transient_response(
         truncation error of the bearing relative displacements drops from ~10 % to ~0.1 % at
         16-32 modes on the baseline. The actuators see it through ``C(iΩ)`` (quasi-static).
     """
-    from flexshaft.assembly.loads import imbalance_loads
 
     if not isinstance(profile, SpeedProfile):
         raise TypeError("profile must be a SpeedProfile (SpeedProfile.constant_acceleration, .table or .from_callable)")

@@ -35,6 +35,7 @@ _LAZY = {
 
 def build_model(design) -> Any:
     """Assemble the global model of a validated design (see :mod:`flexshaft.assembly.build`)."""
+    # here, not above: the build loads scipy, and `import flexshaft.assembly` stays light
     from flexshaft.assembly.build import build_model as build
 
     return build(design)

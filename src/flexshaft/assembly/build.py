@@ -42,6 +42,7 @@ from flexshaft.assembly.model import (
 )
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.assembly.sparse import scatter_blocks
+from flexshaft.design import Design, DesignError, Problem
 from flexshaft.elements import (
     TubeSection,
     boom_element_matrices,
@@ -189,24 +190,24 @@ def _bearing_rows(design, dm: DofMap, bearing, offset: float = 0.0) -> tuple[Bea
 #: mesh, and the boom's element matrices and the bearings' rows were a third of each build.
 #: Entries are read-only; keys hold the stations' bytes.
 _GEOMETRY_CACHE = 64
-_rows_cache: dict = {}
 
 
 def _relative_rows(dm: DofMap, x_shaft: float, x_boom: float | None, h: float):
     """(local rows (5, n_local), their global DOFs, sparse (5, ndof) rows) of a link between the
-    shaft at ``x_shaft`` and the boom at ``x_boom`` (None: ground) at height ``h``, cached."""
-    key = (
-        dm.shaft_x.tobytes(),
-        dm.boom_x.tobytes(),
-        np.asarray(dm.shaft_joints).tobytes(),
-        dm.size,
-        x_shaft,
-        x_boom,
-        h,
+    shaft at ``x_shaft`` and the boom at ``x_boom`` (None: ground) at height ``h``, cached for
+    the DOF map's geometry (:func:`_geometry_rows`)."""
+    arrays = (dm.shaft_x, dm.boom_x, dm.fixed, dm.shaft_joints, dm.tied)
+    key = tuple((np.asarray(a).dtype.str, np.shape(a), np.asarray(a).tobytes()) for a in arrays)
+    return _geometry_rows(key, dm.extra, x_shaft, x_boom, h)
+
+
+@functools.lru_cache(maxsize=4 * _GEOMETRY_CACHE)
+def _geometry_rows(key: tuple, extra: tuple[str, ...], x_shaft: float, x_boom: float | None, h: float):
+    """:func:`_relative_rows` on the DOF map whose arrays ``key`` holds (dtype, shape, bytes) and
+    whose extra (drive-train twist) DOFs are ``extra``: they set the global size."""
+    dm = DofMap(
+        *(np.frombuffer(data, dtype=np.dtype(dtype)).reshape(shape) for dtype, shape, data in key), extra=extra
     )
-    hit = _rows_cache.get(key)
-    if hit is not None:
-        return hit
     es, xis, Ls = dm.locate("shaft", x_shaft)
     shaft_dofs = dm.element_dofs("shaft")[es]
     if x_boom is None:
@@ -220,9 +221,6 @@ def _relative_rows(dm: DofMap, x_shaft: float, x_boom: float | None, h: float):
     ).tocsr()
     for array in (local, dofs, rows.data, rows.indices, rows.indptr):  # shared by the models of one mesh
         array.flags.writeable = False
-    if len(_rows_cache) >= 4 * _GEOMETRY_CACHE:
-        _rows_cache.clear()
-    _rows_cache[key] = (local, dofs, rows)
     return local, dofs, rows
 
 
@@ -306,7 +304,6 @@ def build_model(design) -> Model:
     ProblemSizeWarning
         When the model is large (above the soft caps).
     """
-    from flexshaft.design import Design
 
     if not isinstance(design, Design):
         raise ValueError(
@@ -407,8 +404,6 @@ def _segmented_mesh(design) -> tuple[np.ndarray, np.ndarray]:
     crowded = [x for x in hard if min(abs(x - e) for e in ends) < tol]
     crowded += [b for a, b in zip(hard[:-1], hard[1:]) if b - a < tol]
     if crowded:
-        from flexshaft.design import DesignError, Problem
-
         raise DesignError(
             [
                 Problem(

@@ -291,9 +291,13 @@ class CouplingLink:
         return float(self.stiffness[4])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Model:
     """Assembled global matrices (full size; restrict to ``dofs.free`` to solve).
+
+    Equality is identity (``eq=False``: the sparse matrices have no ``==`` that answers one
+    truth value), so a model can key the caches of the analyses computed from it
+    (``functools.lru_cache``, e.g. :func:`flexshaft.analyses.banded.solver_for`).
 
     Attributes
     ----------

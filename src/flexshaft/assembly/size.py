@@ -10,13 +10,19 @@ bays and load cases. From them it estimates the largest arrays and the run time:
 * banded harmonic solves: ``16 n (3 k + 1)`` bytes for a half-bandwidth ``k``;
 * first-order eigen-problems of ``2 nb + s`` states (``nb`` modal coordinates, ``s``
   controller states): ``16 (2 nb + s)²`` bytes and ``~5e-9 (2 nb + s)³`` s each;
-* the spin-up responses of ``flexshaft run``: ``16 · DOFs · load cases · speeds`` bytes.
+* the spin-up responses of an assessment: ``16 · DOFs · load cases · speeds`` bytes.
+
+An assessment (:func:`flexshaft.verdict.assess.assess`) is counted from the grids of its
+:class:`~flexshaft.resolution.Resolution` (spin-up, Campbell and whirl speeds, modes), the very
+numbers it computes with; ``flexshaft run`` adds the thesis studies to the report's assessment.
 
 :func:`check_problem_size` raises a :class:`~flexshaft.design.DesignError` naming the fields to
 change when an estimate exceeds its hard cap (:data:`HARD_MEMORY_BYTES`,
 :data:`HARD_TIME_SECONDS`) and warns with :class:`ProblemSizeWarning` above the soft caps.
-:func:`~flexshaft.assembly.build.build_model` checks the model-level estimate; the ``run``
-estimate adds the spin-up responses and every step of ``flexshaft run``.
+:func:`~flexshaft.assembly.build.build_model` checks the model-level estimate;
+:func:`~flexshaft.verdict.assess.assess` the ``assess`` estimate (the spin-up responses and every
+analysis of the assessment); ``flexshaft check`` and ``flexshaft run`` the ``run`` estimate
+(the report's assessment and the thesis studies).
 
 The time constants were measured on the development machine (2 shared cores, one BLAS
 thread): they give the order of magnitude, not a promise. The baseline estimates 0.03 GB and
@@ -33,12 +39,12 @@ import numpy as np
 
 from flexshaft.assembly.mesh import design_mesh, merge_stations, merge_tolerance
 from flexshaft.design import DesignError, Problem
+from flexshaft.resolution import REPORT, Resolution
 
 __all__ = [
     "HARD_MEMORY_BYTES",
     "HARD_TIME_SECONDS",
     "MAX_WORST_BAYS",
-    "RUN_SPEEDS",
     "SOFT_DOFS",
     "SOFT_MEMORY_BYTES",
     "SOFT_TIME_SECONDS",
@@ -53,10 +59,17 @@ __all__ = [
 #: Free-DOF count above which the modal basis is computed by sparse shift-invert
 #: (:func:`flexshaft.analyses.eigen.modal_basis`).
 SPARSE_BASIS_ABOVE = 900
-#: Spin-up speeds of ``flexshaft run`` (:func:`flexshaft.studies.run.run_analysis`).
-RUN_SPEEDS = 400
 #: Modal basis of the run's eigen-analyses (10 to 12 modes: ``max(4 n_modes, 60)``).
 RUN_BASIS = 60
+#: Eigen-solutions per whirl speed of the thesis studies of ``flexshaft run``
+#: (:mod:`flexshaft.thesis.report_studies`): three shafts under two damping models, and with PD
+#: active bearings the gain map's 3 K_p × 4 K_d.
+THESIS_WHIRL_SOLVES = 6
+THESIS_GAIN_MAP_SOLVES = 12
+#: Modal bases built by the run (the design's, the thesis shafts', one per K_p row, ...).
+RUN_BASES = 10
+#: Harmonic solves besides the spin-up scan (critical-speed refinement, the thesis studies).
+EXTRA_HARMONIC_SOLVES = 600
 #: Most imbalance bays the ``"worst"`` placement enumerates (2^(bays−1) = 512 load cases).
 MAX_WORST_BAYS = 10
 #: Estimated memory above which a design is refused / warned about [bytes].
@@ -92,8 +105,10 @@ class ProblemSize:
 
     Attributes
     ----------
-    analysis : {"model", "run"}
-        ``"model"``: building the model and its modes; ``"run"``: all of ``flexshaft run``.
+    analysis : {"model", "assess", "run"}
+        ``"model"``: building the model and its modes; ``"assess"``: an assessment at
+        ``resolution``; ``"run"``: all of ``flexshaft run`` (the assessment and the thesis
+        studies).
     shaft_nodes, boom_nodes, dofs, free_dofs : int
         Mesh size (after merging close stations).
     bearings, actuators, disks : int
@@ -102,7 +117,11 @@ class ProblemSize:
     bays, load_cases : int
         Imbalance bays and the load cases of the imbalance placement.
     n_speeds : int
-        Spin-up speeds of the run.
+        Spin-up speeds of the assessment (0 for ``"model"``).
+    campbell_speeds, whirl_speeds : int
+        Speeds of its Campbell diagram and whirl stability (0 for ``"model"``).
+    n_modes : int
+        Modes of its modal analyses.
     dense_basis : bool
         Whether the modal basis is a dense eigen-solve.
     memory : dict of str to float
@@ -123,6 +142,9 @@ class ProblemSize:
     bays: int
     load_cases: int
     n_speeds: int
+    campbell_speeds: int
+    whirl_speeds: int
+    n_modes: int
     dense_basis: bool
     memory: dict = field(default_factory=dict)
     time: dict = field(default_factory=dict)
@@ -168,22 +190,23 @@ def _controller_order(bearing) -> int:
     return max(den.size - 1, 0) + (1 if bearing.amplifier_bandwidth is not None else 0)
 
 
-def problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: int = RUN_SPEEDS) -> ProblemSize:
+def problem_size(
+    design, analysis: Literal["model", "assess", "run"] = "run", resolution: Resolution = REPORT
+) -> ProblemSize:
     """Estimate the size of the analyses of ``design`` (see the module docstring).
 
     Parameters
     ----------
     design : Design
         A validated design.
-    analysis : {"model", "run"}
-        Building the model and computing its modes, or the whole of ``flexshaft run``.
-    n_speeds : int
-        Spin-up speeds of the run (>= 1).
+    analysis : {"model", "assess", "run"}
+        Building the model and computing its modes; an assessment at ``resolution``; or the
+        whole of ``flexshaft run`` (the assessment and the thesis studies).
+    resolution : Resolution
+        The grids of the assessment.
     """
-    if analysis not in ("model", "run"):
-        raise ValueError(f"analysis must be 'model' or 'run' (got {analysis!r})")
-    if int(n_speeds) != n_speeds or n_speeds < 1:
-        raise ValueError(f"n_speeds must be an integer >= 1 (got {n_speeds!r})")
+    if analysis not in ("model", "assess", "run"):
+        raise ValueError(f"analysis must be 'model', 'assess' or 'run' (got {analysis!r})")
     shaft_x, boom_x = design_mesh(design)
     dofs = 6 * shaft_x.size + 5 * boom_x.size
     fixed = len(design.shaft.fixed_start) + len(design.shaft.fixed_end) + (5 if boom_x.size else 0)
@@ -210,17 +233,27 @@ def problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: in
     memory["state matrices"] = 4 * 16.0 * n_states**2
     speed_time = _EIG_FIXED + _EIG_CUBIC * n_states**3
     solve_time = _BANDED_FIXED + _BANDED_SOLVE * free * half_band**2
+    n_speeds = campbell_speeds = whirl_speeds = 0
     if analysis == "model":
         time["modal basis"] = basis_time
         time["eigen-solutions"] = 2 * speed_time
     else:
-        pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
-        eigen_speeds = 2 + 60 + 61 + 3 * (61 + 31) + (12 * 61 if active and pd_only else 0)
+        n_speeds, campbell_speeds, whirl_speeds = (
+            resolution.spinup_speeds,
+            resolution.campbell_speeds,
+            resolution.whirl_speeds,
+        )
+        # the modes at the operating speed (and at rest for the report), the Campbell diagram and
+        # the whirl stability of the assessment
+        eigen_speeds = (2 if resolution.report_detail else 1) + campbell_speeds + whirl_speeds
+        if analysis == "run":
+            pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
+            eigen_speeds += (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and pd_only else 0)) * whirl_speeds
         memory["banded harmonic solver"] = 16.0 * free * (3 * half_band + 1) * 2
         memory["spin-up responses"] = 16.0 * dofs * cases * n_speeds * 2
-        time["modal bases"] = 10 * basis_time
+        time["modal bases"] = RUN_BASES * basis_time
         time["eigen-solutions"] = eigen_speeds * speed_time
-        time["harmonic solves"] = (n_speeds + 600) * solve_time + 16e-9 * dofs * cases * n_speeds
+        time["harmonic solves"] = (n_speeds + EXTRA_HARMONIC_SOLVES) * solve_time + 16e-9 * dofs * cases * n_speeds
     return ProblemSize(
         analysis,
         int(shaft_x.size),
@@ -234,6 +267,9 @@ def problem_size(design, analysis: Literal["model", "run"] = "run", n_speeds: in
         int(bays),
         int(cases),
         int(n_speeds),
+        int(campbell_speeds),
+        int(whirl_speeds),
+        int(resolution.modes),
         bool(dense),
         memory,
         time,
@@ -285,8 +321,8 @@ def _what_to_change(size: ProblemSize, design) -> list[tuple[str, str]]:
 
 def check_problem_size(
     design,
-    analysis: Literal["model", "run"] = "run",
-    n_speeds: int = RUN_SPEEDS,
+    analysis: Literal["model", "assess", "run"] = "run",
+    resolution: Resolution = REPORT,
     *,
     hard_memory: float = HARD_MEMORY_BYTES,
     soft_memory: float = SOFT_MEMORY_BYTES,
@@ -299,7 +335,8 @@ def check_problem_size(
     Raises
     ------
     DesignError
-        When the ``"worst"`` placement has more than :data:`MAX_WORST_BAYS` bays (``run``), or
+        When the ``"worst"`` placement has more than :data:`MAX_WORST_BAYS` bays (``assess``,
+        ``run``), or
         an estimate exceeds ``hard_memory`` [bytes] or ``hard_time`` [s]; the message gives the
         numbers and the fields to change.
 
@@ -309,9 +346,9 @@ def check_problem_size(
         Above ``soft_memory``, ``soft_time`` or :data:`SOFT_DOFS` DOFs (``stacklevel`` as for
         :func:`warnings.warn`: 2 points at the caller).
     """
-    size = problem_size(design, analysis, n_speeds)
+    size = problem_size(design, analysis, resolution)
     problems: list[Problem] = []
-    if analysis == "run" and design.loads.imbalance_placement == "worst" and size.bays > MAX_WORST_BAYS:
+    if analysis != "model" and design.loads.imbalance_placement == "worst" and size.bays > MAX_WORST_BAYS:
         problems.append(
             Problem(
                 "loads.imbalance_placement",

@@ -78,7 +78,7 @@ _BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_TH
 def _one_blas_thread_per_process() -> None:
     """One BLAS thread in the command's process and its workers, unless the user set the
     variables: the analyses' dense solves are small (a second BLAS thread slows them on a busy
-    2-core machine, see flexshaft._threads) and the commands parallelise over processes; a
+    2-core machine, see flexshaft.parallel.threads) and the commands parallelise over processes; a
     threaded BLAS that spins while worker processes hold the cores cost a third more CPU
     time in ``flexshaft run`` (benchmarks/studies_timing.py). Only effective before numpy
     loads, which the commands do lazily."""

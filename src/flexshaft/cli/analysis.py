@@ -27,6 +27,11 @@ from flexshaft.cli.progress import StageProgress
 
 __all__ = ["baseline", "check", "modes", "stability", "thermal"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 
 @guarded
 def baseline(
@@ -174,18 +179,19 @@ def stability(
     from flexshaft.assembly import build_model
     from flexshaft.cli.common import fail
     from flexshaft.design import DesignError
-    from flexshaft.studies.verdict import whirl_onset_check
+    from flexshaft.resolution import REPORT
     from flexshaft.units import hz_to_rpm, rad_s_to_rpm, rpm_to_rad_s
+    from flexshaft.verdict.checks import whirl_onset_check
 
     d = loaded.design
     model = build_model(d)
-    top = rpm_to_rad_s(max_rpm) if max_rpm else max(model.speed, 1.0) * 1.5
+    top = rpm_to_rad_s(max_rpm) if max_rpm else max(model.speed, 1.0) * REPORT.whirl_top
     speeds = np.linspace(0.0, top, n_speeds)
     # [Hz] -> [rad/s] through the rpm of the same rotation frequency
     reference = None if reference_hz is None else rpm_to_rad_s(hz_to_rpm(reference_hz))
     designs = {"design": d}
     if compare_thesis:
-        from flexshaft.studies.whirl import thesis_shaft_designs
+        from flexshaft.thesis.whirl import thesis_shaft_designs
 
         try:
             designs.update(thesis_shaft_designs(d))
@@ -291,7 +297,7 @@ def thermal(
     """Tailboom skin temperatures (hover, parked), shaft temperature rise and self-heating margin."""
     loaded = load_design_argument(design)
     from flexshaft.assembly import build_model
-    from flexshaft.studies.thermal import thermal_summary
+    from flexshaft.thermal.study import thermal_summary
 
     d = loaded.design
     with StageProgress(transient=True) as progress:

@@ -47,6 +47,11 @@ __all__ = [
     "settings",
 ]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Exit code of a user error (bad design, argument or output folder).
 EXIT_USER_ERROR = 2
 #: Exit code of ``flexshaft run --strict`` when a requirement fails.

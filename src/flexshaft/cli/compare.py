@@ -16,6 +16,11 @@ from flexshaft.cli.progress import StageProgress
 
 __all__ = ["compare"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Embedded designs compared when no file is given: A (the FMC design) and B (the current driveline).
 DEFAULTS = ("tuned", "current")
 
@@ -80,8 +85,8 @@ def compare(
     loaded = [load_design_argument(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     labels = _labels((design_a, design_b))
     folder = prepare_output_folder(out, _Pair(loaded[0].design, loaded[1].design), "compare", force=force)
+    from flexshaft.comparison import compare as compare_designs
     from flexshaft.report.compare import comparison_json, write_compare_report
-    from flexshaft.studies.compare import compare as compare_designs
 
     with StageProgress(transient=as_json) as progress:
         result = compare_designs(loaded[0].design, loaded[1].design, labels=labels, progress=progress.step)

@@ -19,13 +19,18 @@ from flexshaft.cli.common import fail, guarded, plain
 
 
 class Fidelity(str, Enum):
-    """Resolution of an optimizer evaluation (``flexshaft.studies.optimize_evaluate.FIDELITIES``)."""
+    """Resolution of an optimizer evaluation (``flexshaft.optimize.evaluate.FIDELITIES``)."""
 
     verdict = "verdict"
     screening = "screening"
 
 
 __all__ = ["NO_DESIGN_PASSES", "Fidelity", "optimize", "parse_variable"]
+
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
 
 #: Exit code when no evaluated design passes every requirement (or one fails re-verification).
 NO_DESIGN_PASSES = 3
@@ -38,7 +43,7 @@ def _fail(message: str) -> None:
 def parse_variable(spec: str):
     """``PATH[,PATH...]=LOWER:UPPER[:int|:log]`` -> DesignVariable (values in the design
     file's units: SI, ply angles in degrees)."""
-    from flexshaft.studies.optimize_problem import DesignVariable, OptimizeError
+    from flexshaft.optimize.variables import DesignVariable, OptimizeError
 
     paths, sep, rest = spec.partition("=")
     parts = rest.split(":")
@@ -142,8 +147,8 @@ def optimize(
 ) -> None:
     """Search the designs that pass every requirement for the best trade-off of the objectives
     (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
-    from flexshaft.studies.optimize_evaluate import CHECK_KEYS, applicable_checks
-    from flexshaft.studies.optimize_problem import DesignProblem, OptimizeError, default_variables
+    from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
+    from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.sweep import SweepError
 
     base = _load_design(design, "baseline")
@@ -172,7 +177,7 @@ def optimize(
             fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}",
         )
-        from flexshaft.studies.optimize import optimize as run_optimization
+        from flexshaft.optimize.nsga import optimize as run_optimization
 
         result = run_optimization(
             problem,

@@ -67,7 +67,7 @@ class Embedded(str, Enum):
 
 
 class Resolution(str, Enum):
-    """Grid resolution of the chapter-3 design studies (``flexshaft.studies.chapter3.RESOLUTIONS``)."""
+    """Grid resolution of the chapter-3 design studies (``flexshaft.thesis.design_studies.STUDY_GRIDS``)."""
 
     report = "report"
     full = "full"

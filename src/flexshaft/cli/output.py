@@ -24,6 +24,11 @@ from flexshaft.cli.common import design_fingerprint, fail
 
 __all__ = ["MARKER", "prepare_output_folder", "read_marker"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Marker file of a folder written by flexshaft.
 MARKER = ".flexshaft-output.json"
 

@@ -1,7 +1,7 @@
 """Progress of the long commands on stderr: one line per stage with its elapsed time.
 
-:class:`StageProgress` takes the step labels of :func:`flexshaft.studies.run.run_analysis`
-(or of :func:`flexshaft.studies.chapter3.design_studies`) through :meth:`StageProgress.step`.
+:class:`StageProgress` takes the step labels of :func:`flexshaft.verdict.assess.assess`
+(or of :func:`flexshaft.thesis.design_studies.design_studies`) through :meth:`StageProgress.step`.
 Each label starts a stage: the previous one is ticked off with its time, the new one shows a
 spinner and a running clock. Labels that start with a sub-step prefix (``"design studies: "``)
 are shown indented under their stage, each with its own time.
@@ -17,6 +17,11 @@ import time
 from typing import Any
 
 __all__ = ["StageProgress"]
+
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
 
 
 class StageProgress:

@@ -1,7 +1,9 @@
-"""``flexshaft run``: every analysis of a design, its requirements verdict and the report folder."""
+"""``flexshaft run``: the assessment of a design (:func:`flexshaft.verdict.assess.assess` at the
+report's resolution), the thesis studies beside it on the same worker pool, and the report folder."""
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 from typing import Annotated
 
@@ -14,11 +16,16 @@ from flexshaft.cli.progress import StageProgress
 
 __all__ = ["run"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 
 def _worker_processes() -> int:
     """Worker processes of the run: the CPUs this process may use, at most 4
     (benchmarks/studies_timing.py measures the run with them)."""
-    from flexshaft._pool import available_cpus
+    from flexshaft.parallel.pool import available_cpus  # light, but the CLI imports nothing it may not need
 
     return max(1, min(4, available_cpus()))
 
@@ -64,12 +71,19 @@ def run(
 
     loaded = load_design_argument(design, DEFAULT_DESIGN)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
-    from flexshaft._pool import worker_pool
+    from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
+    from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES
-    from flexshaft.report.driveline import results_json, write_run_report
-    from flexshaft.studies.run import run_analysis
+    from flexshaft.report.driveline import write_run_report
+    from flexshaft.report.results_json import results_json
+    from flexshaft.resolution import REPORT
+    from flexshaft.thesis.report_studies import start_thesis_studies
+    from flexshaft.verdict.assess import assess
 
-    if studies is not Studies.none:
+    with_studies = studies is not Studies.none
+    # refuses what cannot finish, warns when large: the assessment and the thesis studies
+    check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
+    if with_studies:
         # xarray once, here, before the workers fork: both workers and this process need it
         # (the studies' results are Datasets). Its import and its first Dataset, which loads
         # the optional array backends (dask when installed), cost 0.5-0.9 s of CPU each time.
@@ -77,33 +91,34 @@ def run(
 
         xarray.Dataset({"warm": ("x", [0.0])})
     with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, StageProgress(transient=as_json) as progress:
-        results = run_analysis(
-            loaded.design,
-            progress=progress.step,
-            studies=None if studies is Studies.none else studies.value,
-            executor=pool,
-        )
+        # the thesis studies are no part of the assessment: they run beside it on the same workers
+        pending = start_thesis_studies(loaded.design, studies.value, pool) if with_studies else None
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ProblemSizeWarning)  # estimated above, with the studies
+            assessment = assess(loaded.design, REPORT, executor=pool, progress=progress.step)
+        thesis = pending.result(progress.step) if pending is not None else None
         progress.step("writing the report")
         page = write_run_report(
-            results,
+            assessment,
             folder,
             design_text=loaded.text,
             design_source=loaded.source,
             timings=dict(progress.timings),
+            thesis=thesis,
             svg=svg,
             executor=pool,
         )
-    failed = strict and results.verdict is not None and not results.verdict.passed
-    data = results_json(results)
+    failed = strict and not assessment.verdict.passed
+    data = results_json(assessment, thesis)
     if as_json:
         print_json(data)
     else:
-        _print_run(results, data, page, progress.elapsed)
+        _print_run(assessment, data, page, progress.elapsed)
     if failed:
         raise typer.Exit(code=EXIT_REQUIREMENT_FAILED)
 
 
-def _print_run(results, data: dict, page: Path, seconds: float) -> None:
+def _print_run(assessment, data: dict, page: Path, seconds: float) -> None:
     from flexshaft.cli.tables import modes_table, print_line, sig, stdout_console, verdict_table
     from flexshaft.units import m_to_mm
 
@@ -135,12 +150,12 @@ def _print_run(results, data: dict, page: Path, seconds: float) -> None:
         f"spin-up peak shaft orbit {sig(m_to_mm(imbalance['max_shaft_orbit_spin_up_m']), 3)} mm "
         f"at {sig(imbalance['speed_of_max_rpm'])} rpm",
     )
-    if results.verdict is not None:
-        console.print(verdict_table(results.verdict))
-        head = "PASS" if results.verdict.passed else "FAIL"
-        print_line(
-            console,
-            f"verdict: {head}: {results.verdict.summary.split(': ', 1)[1]}",
-            style="bold green" if results.verdict.passed else "bold red",
-        )
+    verdict = assessment.verdict
+    console.print(verdict_table(verdict))
+    head = "PASS" if verdict.passed else "FAIL"
+    print_line(
+        console,
+        f"verdict: {head}: {verdict.summary.split(': ', 1)[1]}",
+        style="bold green" if verdict.passed else "bold red",
+    )
     print_line(console, f"report written to {page} in {sig(seconds, 3)} s (stage times in timings.json)")

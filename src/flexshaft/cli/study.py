@@ -20,6 +20,11 @@ from flexshaft.cli.output import prepare_output_folder
 
 __all__ = ["study_app"]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 study_app = typer.Typer(
     no_args_is_help=True, rich_markup_mode=None, help="Design studies of thesis chapter 3 (sweeps; resumable)."
 )
@@ -104,7 +109,7 @@ def ply_angle(
     import numpy as np
 
     from flexshaft.plot.studies import ply_angle_figure
-    from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES, ply_angle_study
+    from flexshaft.thesis.ply_angle import DOMINANT_STRESS_CODES, ply_angle_study
 
     loaded, folder = _prepare(design, out, "ply-angle", force)
     ds = _sweep(ply_angle_study, loaded, folder, jobs, dask, as_json, angles=np.arange(step, 90.0, step))
@@ -142,7 +147,7 @@ def two_angle(
 
     from flexshaft.cli.tables import matrix_table
     from flexshaft.plot.studies import two_angle_figure
-    from flexshaft.studies.sweeps import two_angle_study
+    from flexshaft.thesis.two_angles import two_angle_study
 
     loaded, folder = _prepare(design, out, "two-angle", force)
     angles = np.arange(0.0, 90.0 + 1e-9, step)
@@ -188,7 +193,7 @@ def wall(
 ) -> None:
     """Safety factor (with/without imbalance), first frequency and spin-up peak vs wall thickness."""
     from flexshaft.plot.studies import wall_thickness_figure
-    from flexshaft.studies.sweeps import wall_thickness_study
+    from flexshaft.thesis.wall import wall_thickness_study
     from flexshaft.units import m_to_mm
 
     loaded, folder = _prepare(design, out, "wall", force)
@@ -233,7 +238,7 @@ def gain(
     """Safety factor and actuator displacement vs the proportional gain K_p [N/m] of both AMBs."""
     from flexshaft.cli.tables import sig
     from flexshaft.plot.studies import gain_figure
-    from flexshaft.studies.sweeps import proportional_gain_study
+    from flexshaft.thesis.gain import proportional_gain_study
 
     loaded, folder = _prepare(design, out, "gain", force)
     ds = _sweep(proportional_gain_study, loaded, folder, jobs, dask, as_json)
@@ -255,7 +260,7 @@ def buckling(
 ) -> None:
     """Torsional buckling safety factor vs wall thickness (about 5 s per wall)."""
     from flexshaft.plot.studies import buckling_figure
-    from flexshaft.studies.sweeps import buckling_study
+    from flexshaft.thesis.buckling_sweep import buckling_study
     from flexshaft.units import m_to_mm
 
     loaded, folder = _prepare(design, out, "buckling", force)
@@ -287,7 +292,7 @@ def spinup_map(
     from flexshaft.cli.tables import sig
     from flexshaft.netcdf import write_netcdf
     from flexshaft.plot.studies import gain_map_figure
-    from flexshaft.studies.sweeps import spinup_gain_map
+    from flexshaft.thesis.spinup_maps import spinup_gain_map
     from flexshaft.units import m_to_mm
 
     loaded, folder = _prepare(design, out, "spinup-map", force)
@@ -350,11 +355,11 @@ def all_studies(
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     check_finite("--gap", gap, 1e-9)
     loaded, folder = _prepare(design, out, "all", force)
-    from flexshaft._pool import worker_pool
     from flexshaft.cli.progress import StageProgress
+    from flexshaft.parallel.pool import worker_pool
     from flexshaft.report.html import write_report
     from flexshaft.report.studies_section import design_studies_section
-    from flexshaft.studies.chapter3 import design_studies, headline, save_study_data
+    from flexshaft.thesis.design_studies import design_studies, headline, save_study_data
 
     d = loaded.design
     # the studies as independent tasks on one pool of `jobs` workers (each sweep in its worker)

@@ -33,6 +33,11 @@ __all__ = [
     "verdict_table",
 ]
 
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
+
 #: Pascals per megapascal.
 PA_PER_MPA = 1.0e6
 
@@ -170,7 +175,7 @@ _STATUS_STYLE = {"PASS": "green", "FAIL": "bold red", "not evaluated": "yellow"}
 
 
 def verdict_table(verdict):
-    """The requirements verdict (:class:`flexshaft.studies.verdict.Verdict`), worst case of each."""
+    """The requirements verdict (:class:`flexshaft.verdict.result.Verdict`), worst case of each."""
     from rich.text import Text
 
     from flexshaft.report.verdict import VERDICT_COLUMNS, verdict_rows

@@ -1,6 +1,6 @@
 """``flexshaft runup`` and ``flexshaft montecarlo``: the transient run-up through the criticals
 and the Monte-Carlo imbalance study (:mod:`flexshaft.analyses.transient`,
-:mod:`flexshaft.studies.montecarlo`)."""
+:mod:`flexshaft.montecarlo`)."""
 
 from __future__ import annotations
 
@@ -15,12 +15,10 @@ from flexshaft.cli.output import prepare_output_folder
 
 __all__ = ["montecarlo", "runup"]
 
-
-def _limits(design) -> tuple[float | None, float | None]:
-    """The smallest auxiliary-bearing gap [m] and force capacity [N] of the active bearings."""
-    gaps = [b.gap for b in design.bearings if b.kind == "active" and getattr(b, "gap", None)]
-    forces = [b.force_capacity for b in design.bearings if b.kind == "active" and getattr(b, "force_capacity", None)]
-    return (min(gaps) if gaps else None), (min(forces) if forces else None)
+# The rest of the package is imported inside the functions that need it: the design schema
+# (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
+# xarray are measurably heavy, and `flexshaft --help` answers in about 0.1 s without them
+# (tests/test_import.py).
 
 
 @guarded
@@ -135,12 +133,16 @@ def montecarlo(
     ] = 6.3,
     gap_mm: Annotated[
         float | None,
-        typer.Option("--gap-mm", help="Actuator gap [mm]; default the smallest active-bearing gap of the design."),
+        typer.Option(
+            "--gap-mm", help="Actuator gap [mm] of every active bearing; default each one's own gap (as the verdict)."
+        ),
     ] = None,
     force_limit: Annotated[
         float | None,
         typer.Option(
-            "--force-limit", help="Actuator force limit [N]; default the smallest force capacity of the design."
+            "--force-limit",
+            help="Actuator force limit [N] of every active bearing; default each one's own force capacity "
+            "(as the verdict: its magnet's saturation force when no capacity is given).",
         ),
     ] = None,
     out: Annotated[
@@ -161,25 +163,23 @@ def montecarlo(
     check_finite("--force-limit", force_limit, 1e-6, 1e9)
     loaded = load_design_argument(design)
     folder = prepare_output_folder(out, loaded.design, "montecarlo", force=force)
+    from flexshaft.montecarlo.steady import run_montecarlo
     from flexshaft.plot.driveline import save_figure
-    from flexshaft.studies.montecarlo import run_montecarlo
-    from flexshaft.units import m_to_mm
+    from flexshaft.units import m_to_mm, mm_to_m
 
-    gap, capacity = _limits(loaded.design)
-    gap = gap if gap_mm is None else gap_mm / 1000.0
-    capacity = capacity if force_limit is None else force_limit
     result = run_montecarlo(
         loaded.design,
         samples,
         seed=seed,
         grade_mm_s=grade,
-        gap=gap,
-        force_limit=capacity,
+        gap=None if gap_mm is None else mm_to_m(gap_mm),  # default: each active bearing's own, as the verdict
+        force_limit=force_limit,
         jobs=jobs,
         client=dask,
         run_dir=folder / "sweep",
         progress=not as_json,
     )
+    gap, capacity = result.gap, result.force_limit
     result.dataset.to_netcdf(folder / "samples.nc")
     save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from flexshaft.parallel.pool import worker_pool
+
 if TYPE_CHECKING:
     from concurrent.futures import Executor
 
@@ -28,7 +30,7 @@ __all__ = ["FIGURE_MODULES", "PNG_DPI", "FigureJob", "RenderedFigure", "render_f
 PNG_DPI = 120
 #: zlib compression level of the PNG figures (1: fastest; the default 6 costs ~70 ms a figure).
 PNG_COMPRESSION = 1
-#: What a process that draws figures imports once (a worker of :func:`flexshaft._pool.worker_pool`).
+#: What a process that draws figures imports once (a worker of :func:`flexshaft.parallel.pool.worker_pool`).
 FIGURE_MODULES = ("matplotlib.figure", "matplotlib.backends.backend_agg", "flexshaft.plot.driveline")
 
 
@@ -118,7 +120,7 @@ def _check_jobs(jobs: Sequence[FigureJob]) -> None:
 def start_figures(
     jobs: Sequence[FigureJob], folder: str | Path, executor: Executor, *, svg: bool = False, dpi: float = PNG_DPI
 ) -> Callable[[], dict[str, RenderedFigure]]:
-    """Submit every job to ``executor`` (e.g. :func:`flexshaft._pool.worker_pool`) and return
+    """Submit every job to ``executor`` (e.g. :func:`flexshaft.parallel.pool.worker_pool`) and return
     a function that waits for them and returns ``{stem: RenderedFigure}`` in job order: the
     caller writes its other files while the workers draw."""
     _check_jobs(jobs)
@@ -163,7 +165,6 @@ def render_figures(
         raise ValueError(f"processes must be an integer >= 1 (got {processes!r})")
     if executor is not None:
         return start_figures(jobs, folder, executor, svg=svg, dpi=dpi)()
-    from flexshaft._pool import worker_pool
 
     with worker_pool(max(1, min(int(processes), len(jobs))), FIGURE_MODULES) as pool:
         if pool is not None:

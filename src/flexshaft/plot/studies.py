@@ -1,4 +1,4 @@
-"""Figures of the design studies of thesis chapter 3 (``flexshaft.studies.chapter3``).
+"""Figures of the design studies of thesis chapter 3 (``flexshaft.thesis``).
 
 Same conventions as :mod:`flexshaft.plot.driveline`: inputs are plain numpy arrays (or an
 :class:`xarray.Dataset` where named) in SI units with speeds in rpm; lengths are drawn in mm;

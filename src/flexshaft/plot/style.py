@@ -20,6 +20,9 @@ from typing import TYPE_CHECKING, Any, TypeVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from flexshaft.plot.png import fast_png_canvas
+from flexshaft.units import MM_PER_M, RPM_PER_HZ  # the figures' unit conversions (re-exported for plot/)
+
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
@@ -38,8 +41,6 @@ __all__ = [
     "log_scale",
 ]
 
-MM_PER_M = 1e3
-RPM_PER_HZ = 60.0
 WHIRL_LINESTYLE = {"forward": "-", "backward": "--", "planar": ":", "none": (0, (1, 4))}  # none: torsional/axial
 #: Marker of each whirl label (the ROSS convention: ▲ forward, ▼ backward); torsional ■, axial ◆.
 WHIRL_MARKER = {"forward": "^", "backward": "v", "planar": "o", "torsional": "s", "axial": "D", "none": "s"}
@@ -127,8 +128,6 @@ def new_figure(
             )
         return axes[0].figure, axes.reshape(nrows, ncols)
     from matplotlib.figure import Figure
-
-    from flexshaft.plot.png import fast_png_canvas
 
     width, height = figsize
     fig = Figure(figsize=figsize)

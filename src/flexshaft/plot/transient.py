@@ -6,7 +6,7 @@ Inputs are duck-typed result objects (no analysis is imported here): a run has `
 ``speeds`` [rad/s] and the same three envelopes over them
 (:class:`flexshaft.analyses.transient.SteadyEnvelope`); a Monte-Carlo sample set is an
 :class:`xarray.Dataset` over ``sample`` with the outputs of
-:mod:`flexshaft.studies.montecarlo`. Speeds are drawn in rpm, lengths in mm.
+:mod:`flexshaft.montecarlo`. Speeds are drawn in rpm, lengths in mm.
 """
 
 from __future__ import annotations
@@ -17,14 +17,13 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from flexshaft.plot.style import MM_PER_M, mark_operating, new_figure, styled
+from flexshaft.units import rad_s_to_rpm
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
 __all__ = ["runup_envelope_figure", "montecarlo_figure"]
-
-_RPM_PER_RAD_S = 30.0 / np.pi
 
 
 def _positive(values) -> np.ndarray:
@@ -68,7 +67,7 @@ def runup_envelope_figure(
     else:
         fig, panels = ax.figure, [ax]
     for label, run in runs.items():
-        rpm = np.asarray(run.speed, dtype=float) * _RPM_PER_RAD_S
+        rpm = rad_s_to_rpm(np.asarray(run.speed, dtype=float))
         (line,) = panels[0].plot(rpm, _positive(run.shaft_peak) * MM_PER_M, lw=1.0, label=label)
         if len(panels) > 1 and np.size(run.actuator_displacement):
             panels[1].plot(
@@ -82,7 +81,7 @@ def runup_envelope_figure(
                 rpm, _positive(np.max(run.actuator_force, axis=0)), lw=1.0, color=line.get_color(), label=label
             )
     if steady is not None:
-        rpm = np.asarray(steady.speeds, dtype=float) * _RPM_PER_RAD_S
+        rpm = rad_s_to_rpm(np.asarray(steady.speeds, dtype=float))
         panels[0].plot(rpm, _positive(steady.shaft_peak) * MM_PER_M, "k--", lw=1.2, label="steady-state spin-up")
         if len(panels) > 1 and np.size(steady.actuator_displacement):
             panels[1].plot(

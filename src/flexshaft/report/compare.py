@@ -1,6 +1,6 @@
 """The ``flexshaft compare`` report: two drivelines side by side in one self-contained page.
 
-Duck-typed on :class:`flexshaft.studies.compare.Comparison`; converts SI to engineering units
+Formats a :class:`flexshaft.comparison.Comparison`; converts SI to engineering units
 (rpm, mm, °C, degrees, %) here. Writes ``report.html`` (:mod:`flexshaft.report.html`), the
 figures (PNG and SVG, :mod:`flexshaft.plot.compare`), ``results.json`` (SI) and
 ``comparison.nc`` (the comparison's dataset).
@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from flexshaft.comparison import PART_KINDS, Comparison
 from flexshaft.plot.compare import (
     campbell_overlay_figure,
     mass_breakdown_figure,
@@ -22,8 +23,8 @@ from flexshaft.plot.compare import (
     static_deflection_overlay_figure,
 )
 from flexshaft.plot.driveline import save_figure
-from flexshaft.report.driveline import json_ready
 from flexshaft.report.html import FigureRef, Section, Table, write_report
+from flexshaft.report.results_json import json_ready
 from flexshaft.report.verdict import location_text
 from flexshaft.units import format_quantity, rad_s_to_rpm
 
@@ -52,7 +53,7 @@ def format_metric(key: str, unit: str, value: float | None, lower_bound: bool = 
     return f"{value:.3g}"
 
 
-def comparison_json(comparison) -> dict:
+def comparison_json(comparison: Comparison) -> dict:
     """Key numbers of both designs, JSON-ready (SI units)."""
     labels = comparison.labels
     out = {
@@ -199,8 +200,6 @@ def _summary_section(comparison) -> Section:
 
 def _parts_section(comparison, folder: Path) -> Section:
     a, b = comparison.labels
-    from flexshaft.studies.compare import PART_KINDS
-
     inv = comparison.inventories
     rows = [[kind, inv[0].count[kind], inv[0].mass[kind], inv[1].count[kind], inv[1].mass[kind]] for kind in PART_KINDS]
     rows.append(["total", inv[0].total_count, inv[0].total_mass, inv[1].total_count, inv[1].total_mass])
@@ -237,7 +236,7 @@ def _dynamics_section(comparison, folder: Path) -> Section:
     spinup = save_figure(
         spinup_overlay_figure(
             {
-                label: (rad_s_to_rpm(run.speeds), run.shaft_peak)
+                label: (rad_s_to_rpm(run.spinup.speeds), run.spinup.shaft_peak)
                 for label, run in zip(comparison.labels, comparison.runs)
             },
             op_rpm,
@@ -289,7 +288,7 @@ def _strength_curve(run):
     if run.strength_total is not None:
         r = run.strength_total
         return np.asarray(r.x_along, float).ravel(), np.asarray(r.along_shaft, float).ravel(), "Tsai-Wu (plies)"
-    metal = getattr(run, "metal_strength", None)
+    metal = run.metal_strength
     if metal is not None and metal.evaluated:
         x, sf = metal.along_shaft()
         return x, sf, "metal: min(yield, fatigue)"
@@ -306,7 +305,7 @@ def _strength_section(comparison, folder: Path) -> Section:
         fig = save_figure(safety_factor_overlay_figure(curves, required), folder, "compare_safety_factor")
         figures.append(FigureRef(fig["png"], "Strength safety factor along the driveline"))
     for label, run in zip(comparison.labels, comparison.runs):
-        metal = getattr(run, "metal_strength", None)
+        metal = run.metal_strength
         if metal is None or not metal.evaluated:
             continue
         rows = []
@@ -365,7 +364,7 @@ def _deflection_section(comparison, folder: Path) -> Section:
     fig = save_figure(static_deflection_overlay_figure(shapes, joints), folder, "compare_static_deflection")
     tables = []
     for label, run in zip(comparison.labels, comparison.runs):
-        cm = getattr(run, "coupling_misalignment", None)
+        cm = run.coupling_misalignment
         if cm is None:
             continue
         rows = [
@@ -418,7 +417,7 @@ def _notes_section(comparison) -> Section:
     )
 
 
-def write_compare_report(comparison, folder: str | Path, generated=None) -> Path:
+def write_compare_report(comparison: Comparison, folder: str | Path, generated=None) -> Path:
     """Write ``report.html``, the figures, ``results.json`` and ``comparison.nc`` into ``folder``.
 
     Returns

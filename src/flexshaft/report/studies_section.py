@@ -1,6 +1,6 @@
 """The "design studies" section of the ``flexshaft run`` report (thesis chapter 3).
 
-Draws the figures and tables of a :class:`flexshaft.studies.chapter3.DesignStudies` (it only
+Draws the figures and tables of a :class:`flexshaft.thesis.design_studies.DesignStudies` (it only
 consumes the studies' datasets and headline numbers).
 """
 
@@ -10,12 +10,15 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft.studies.chapter3 import TABLE_ANGLES, DesignStudies, nearest, quietest_spinup_wall, two_angle_name
-from flexshaft.studies.sweeps import DOMINANT_STRESS_CODES
+from flexshaft.plot import studies as sf
+from flexshaft.plot.output import FigureJob, render_figures
+from flexshaft.report.html import FigureRef, Section, Table
+from flexshaft.thesis.design_studies import TABLE_ANGLES, DesignStudies, nearest, two_angle_name
+from flexshaft.thesis.ply_angle import DOMINANT_STRESS_CODES
+from flexshaft.thesis.wall import quietest_spinup_wall
 from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["design_studies_section", "studies_section_and_jobs"]
-
 
 _STRESS_NAMES = {0: "σ1", 1: "σ2", 2: "τ12"}
 
@@ -23,7 +26,6 @@ _STRESS_NAMES = {0: "σ1", 1: "σ2", 2: "τ12"}
 def design_studies_section(results: DesignStudies, folder: str | Path, *, svg: bool = True, processes: int = 1):
     """The "Design studies" section of the ``flexshaft run`` report with its figures drawn and
     saved in ``folder`` (PNG, and SVG when ``svg``; names ``study_*``)."""
-    from flexshaft.plot.output import render_figures
 
     section, jobs = studies_section_and_jobs(results, folder)
     render_figures(jobs, folder, svg=svg, processes=processes)
@@ -34,9 +36,6 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
     """The "Design studies" section (figures referenced as ``folder/study_*.png``, tables of
     the headline numbers) and the :class:`~flexshaft.plot.output.FigureJob` that draw its
     figures (not drawn here)."""
-    from flexshaft.plot import studies as sf
-    from flexshaft.plot.output import FigureJob
-    from flexshaft.report.html import FigureRef, Section, Table
 
     r = results
     folder = Path(folder)

@@ -1,6 +1,6 @@
 """The requirements verdict as text: table rows for the HTML report and the terminal.
 
-Duck-typed on :class:`flexshaft.studies.verdict.Verdict` (checks with SI values, a ``kind``
+Duck-typed on :class:`flexshaft.verdict.result.Verdict` (checks with SI values, a ``kind``
 and a location mapping); converts to engineering units (rpm, mm, °C, %) here, at the edge.
 """
 

@@ -13,7 +13,7 @@
 >>> ds["shaft_mass"].round(2).values.tolist()     # ρ π (D − t) t L of the 8.05 m baseline shaft [kg]
 [8.31, 12.34]
 
-The thesis's chapter-3 studies are in :mod:`flexshaft.studies.sweeps` (docs/studies.md).
+The thesis's chapter-3 studies are in :mod:`flexshaft.thesis` (docs/studies.md).
 xarray is imported when results are assembled; Dask only when a Dask client or address is
 given.
 """

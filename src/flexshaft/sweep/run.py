@@ -34,8 +34,9 @@ from typing import Any
 
 import numpy as np
 
-from flexshaft._pool import die_with_parent, prepare_worker
+from flexshaft import __version__
 from flexshaft.netcdf import write_netcdf
+from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -70,7 +71,7 @@ _USE_PDEATHSIG = True
 
 def _die_with_parent(parent_pid: int) -> str:
     """Make this worker end when its parent, the sweep process ``parent_pid``, ends, however
-    (:func:`flexshaft._pool.die_with_parent`); returns ``"pdeathsig"`` or ``"watchdog"``."""
+    (:func:`flexshaft.parallel.pool.die_with_parent`); returns ``"pdeathsig"`` or ``"watchdog"``."""
     return die_with_parent(parent_pid, pdeathsig=_USE_PDEATHSIG)
 
 
@@ -88,18 +89,11 @@ def _pool_context():
     return context
 
 
-def _worker_init(parent_pid: int) -> None:
-    for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
-        os.environ[var] = "1"
-    prepare_worker(parent_pid, pdeathsig=_USE_PDEATHSIG)  # Ctrl-C left to the parent, ends with it
-
-
 def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[int, np.ndarray]]:
-    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    from concurrent.futures import FIRST_COMPLETED, wait
 
-    pool = ProcessPoolExecutor(
-        max_workers=jobs, mp_context=_pool_context(), initializer=_worker_init, initargs=(os.getpid(),)
-    )
+    # one BLAS thread per worker; Ctrl-C left to this process; each worker ends with it
+    pool = new_pool(jobs, _pool_context(), pdeathsig=_USE_PDEATHSIG, one_thread_env=True)
     pending: dict = {}
     queue = list(todo)
     try:
@@ -111,13 +105,7 @@ def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[in
             for fut in done:
                 yield pending.pop(fut), fut.result()
     finally:
-        interrupted = bool(pending)  # chunks still running: stop the workers now
-        processes = list((getattr(pool, "_processes", None) or {}).values())
-        pool.shutdown(wait=not interrupted, cancel_futures=True)
-        if interrupted:
-            for proc in processes:
-                if proc.is_alive():
-                    proc.terminate()
+        stop_pool(pool, now=bool(pending))  # chunks still running: stop the workers now
 
 
 def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.ndarray]]:
@@ -163,8 +151,6 @@ def _sigterm_to_exception():
 def to_dataset(study: Study, values: np.ndarray):
     """Results as an :class:`xarray.Dataset`: one variable per output over the study's dims."""
     import xarray as xr
-
-    from flexshaft import __version__
 
     dims = tuple(v.name for v in study.variables)
     grid = values.reshape(study.shape + (len(study.outputs),))

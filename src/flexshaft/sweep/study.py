@@ -21,7 +21,11 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Output", "Point", "Study", "SweepError", "SweepWarning", "Variable"]
+from flexshaft.assembly import build_model
+from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.parallel.threads import one_blas_thread
+
+__all__ = ["DesignModel", "Output", "Point", "Study", "SweepError", "SweepWarning", "Variable"]
 
 # Validate every combination of design values up front when there are at most this many.
 _VALIDATE_ALL_LIMIT = 20_000
@@ -145,18 +149,26 @@ class Point:
     values: dict[str, Any]
     axes: dict[str, Any]
     design: Any
-    _model_cache: dict = field(default_factory=dict, repr=False)
+    shared: DesignModel | None = field(default=None, repr=False)
+
+    @property
+    def model(self):
+        """The assembled model of ``design`` (built once per design within a chunk: the points
+        of a chunk with one design share its :class:`DesignModel`)."""
+        if self.shared is None:
+            self.shared = DesignModel(self.design)
+        return self.shared.model
+
+
+class DesignModel:
+    """A design and its model, built on first use (:func:`functools.cached_property`)."""
+
+    def __init__(self, design) -> None:
+        self.design = design
 
     @cached_property
     def model(self):
-        """The assembled model of ``design`` (built once per design within a chunk)."""
-        key = id(self.design)
-        if key not in self._model_cache:
-            from flexshaft.assembly import build_model
-
-            self._model_cache.clear()
-            self._model_cache[key] = build_model(self.design)
-        return self._model_cache[key]
+        return build_model(self.design)
 
 
 @dataclass(frozen=True)
@@ -191,8 +203,6 @@ class Study:
         object.__setattr__(self, "outputs", tuple(Output(o) if isinstance(o, str) else o for o in self.outputs))
         object.__setattr__(self, "fixed", dict(self.fixed))
         if self.base is None:
-            from flexshaft.design import baseline_design
-
             object.__setattr__(self, "base", baseline_design())
         names = [v.name for v in self.variables]
         if len(set(names)) != len(names):
@@ -228,7 +238,6 @@ class Study:
 
     def design_at(self, values: Mapping[str, Any]):
         """The validated design of a point (raises :class:`SweepError` naming the field)."""
-        from flexshaft.design import DesignError, with_overrides
 
         overrides = self.overrides_at(values)
         if not overrides:
@@ -293,24 +302,22 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     Runs with one BLAS thread; the model is built once per distinct design (consecutive
     points differing only in special axes share it).
     """
-    from flexshaft._threads import one_blas_thread
 
     names = [o.name for o in study.outputs]
     out = np.full((stop - start, len(names)), np.nan)
-    cache: dict = {}
-    last_key, last_design = None, None
+    last_key, shared = None, None
     with one_blas_thread():
         for row, index in enumerate(range(start, stop)):
             values = study.values_at(index)
             key = tuple(values[v.name] for v in study.variables if v.is_design)
             if key != last_key:
-                last_key, last_design = key, study.design_at(values)
+                last_key, shared = key, DesignModel(study.design_at(values))
             point = Point(
                 index=index,
                 values=values,
                 axes={v.name: values[v.name] for v in study.variables if not v.is_design},
-                design=last_design,
-                _model_cache=cache,
+                design=shared.design,
+                shared=shared,
             )
             try:
                 result = study.evaluate(point)

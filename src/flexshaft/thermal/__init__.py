@@ -16,8 +16,8 @@
   correlations with validity ranges, and air properties.
 
 These modules take models and plain values; they never load or make designs. The thermal
-studies of a design (sweeps over wall thickness and convection, the report numbers) are in
-:mod:`flexshaft.studies.thermal`. Importing this package imports ``ht`` and ``fluids`` (not
+study of a design (sweeps over wall thickness and convection, the report numbers,
+:class:`~flexshaft.thermal.study.ThermalResults`) is :mod:`flexshaft.thermal.study`. Importing this package imports ``ht`` and ``fluids`` (not
 ``import flexshaft``).
 """
 

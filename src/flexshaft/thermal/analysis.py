@@ -3,7 +3,7 @@
 The shaft runs inside the boom fairing: its air and both ends are at the boom's hover skin
 temperature (the thesis sets the driveline's operating ambient to the boom's 44 °C), or at the
 ambient when the design has no tailboom, unless an air temperature is given. Sweeps over other
-designs (wall thickness, convection) live in :mod:`flexshaft.studies.thermal`.
+designs (wall thickness, convection) live in :mod:`flexshaft.thermal.study`.
 """
 
 from __future__ import annotations

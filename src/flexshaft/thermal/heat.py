@@ -55,7 +55,9 @@ from typing import Literal
 
 import numpy as np
 
+from flexshaft.analyses.response import imbalance_response, static_response
 from flexshaft.assembly.dofs import SHAFT_FIELDS
+from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
 from flexshaft.assembly.model import Model
 from flexshaft.elements import TubeSection, cowper_shear_coefficient, shaft_element_matrices
 
@@ -237,8 +239,6 @@ def shaft_response_amplitudes(model: Model, imbalance_scale: float = 1.0, static
 
     Static = external loads (manoeuvre, thrust) + torque, from the storage stiffness.
     """
-    from flexshaft.analyses.response import imbalance_response, static_response
-    from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
 
     q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[..., 0] * imbalance_scale
     Q = torque_load(model)

@@ -228,11 +228,11 @@ def whirl_onset_speed(
 def balance_tolerance(design: None, *, rotor_mass: float, grade_mm_s: float, speed_rpm: float) -> np.ndarray:
     """Permissible residual unbalance U_per = e_per m [kg m] of a rotor of mass ``rotor_mass``
     [kg] of balance grade ``grade_mm_s`` [mm/s] at ``speed_rpm`` [rpm]
-    (:func:`flexshaft.studies.imbalance_samples.balance_grade_eccentricity`, ISO 21940-11)."""
-    from flexshaft.studies.imbalance_samples import balance_grade_eccentricity
+    (:func:`flexshaft.assembly.balance.permissible_unbalance`, ISO 21940-11)."""
+    from flexshaft.assembly.balance import permissible_unbalance
     from flexshaft.units import rpm_to_rad_s
 
-    return np.asarray([balance_grade_eccentricity(grade_mm_s, rpm_to_rad_s(speed_rpm)) * rotor_mass])
+    return np.asarray([permissible_unbalance(grade_mm_s, rpm_to_rad_s(speed_rpm), rotor_mass)])
 
 
 def cylinder_crossflow_nusselt(design: None, *, reynolds: float, prandtl: float, method: str) -> np.ndarray:

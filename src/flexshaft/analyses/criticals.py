@@ -1,0 +1,210 @@
+"""Lateral critical speeds: the peaks of the unbalance response and their amplification factors.
+
+:func:`lateral_critical_speeds` scans the unbalance response up to a top speed (the
+:class:`~flexshaft.resolution.Resolution`'s ``scan_top`` × the operating speed, beyond the largest
+margin API 684 can ask above the operating speed, 26 %) and refines each peak at the shaft
+station where it is largest until its half-power bandwidth is resolved
+(:func:`flexshaft.analyses.separation.resolve_peak`). :func:`scan_critical_speeds` reuses a scan
+already computed (the spin-up response of an assessment) and says why there is none when the
+response cannot be scanned; :func:`label_critical_speeds` names the Campbell mode of each peak.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from flexshaft.analyses.banded import SingularSystemError
+from flexshaft.analyses.campbell import Campbell
+from flexshaft.analyses.modal import modes
+from flexshaft.analyses.response import imbalance_response, orbit_amplitude
+from flexshaft.analyses.separation import resolve_peak, response_peaks
+from flexshaft.assembly.loads import imbalance_loads
+from flexshaft.assembly.model import Model
+from flexshaft.resolution import REPORT
+
+__all__ = [
+    "CriticalSpeeds",
+    "LateralCritical",
+    "label_critical_speeds",
+    "lateral_critical_speeds",
+    "scan_critical_speeds",
+]
+
+#: Modes solved at a peak to tell an undamped resonance from an unresolved one.
+_UNDAMPED_CHECK_MODES = 12
+#: Largest distance [fraction of the speed] between a peak and the Campbell critical speed that labels it.
+_LABEL_TOLERANCE = 0.03
+
+
+@dataclass(frozen=True)
+class LateralCritical:
+    """A lateral critical speed [rad/s] with its amplification factor [-] and where it peaks.
+
+    ``location`` names the shaft station of the peak response [m] and, when known, the mode,
+    the AF method, the refined peak orbit [m] and a detail.
+    """
+
+    speed: float
+    amplification_factor: float
+    location: Mapping[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class CriticalSpeeds:
+    """The lateral critical speeds of a scan of the unbalance response.
+
+    Attributes
+    ----------
+    criticals : tuple of LateralCritical or None
+        In order of speed; None when the response could not be scanned (``note`` says why).
+    search_top : float
+        Highest speed searched [rad/s].
+    note : str
+        Why there are no criticals (empty otherwise).
+    """
+
+    criticals: tuple[LateralCritical, ...] | None
+    search_top: float
+    note: str = ""
+
+    def labelled(self, campbell: Campbell | None) -> CriticalSpeeds:
+        """The same criticals, each named by its Campbell mode (:func:`label_critical_speeds`)."""
+        if self.criticals is None:
+            return self
+        return CriticalSpeeds(label_critical_speeds(self.criticals, campbell), self.search_top, self.note)
+
+
+def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
+    """Orbit amplitude [m] at every shaft node: (nodes, cases, speeds) from (ndof, cases, speeds)."""
+    dm = model.dofs
+    n = np.arange(dm.n_shaft_nodes)
+    return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
+
+
+def lateral_critical_speeds(
+    model: Model,
+    campbell: Campbell | None = None,
+    top: float = REPORT.scan_top,
+    n_points: int = REPORT.spinup_speeds,
+    scan=None,
+) -> tuple[LateralCritical, ...]:
+    """Peaks of the unbalance response with their amplification factors.
+
+    Parameters
+    ----------
+    model : Model
+        Assembled model (its design's imbalance placement and eccentricity).
+    campbell : Campbell, optional
+        When given, each peak is labelled with the tracked mode whose 1× critical speed is
+        nearest (within 3 %).
+    top : float
+        Highest speed scanned, as a multiple of the operating speed.
+    n_points : int
+        Samples of the initial scan (``REPORT.scan_bottom`` to ``top`` of the operating speed).
+    scan : tuple of ndarray, optional
+        ``(speeds, orbits)`` of a scan already computed (orbits (nodes, cases, speeds) [m], e.g.
+        an assessment's spin-up response), used instead of a new one.
+
+    Returns
+    -------
+    tuple of LateralCritical
+        In order of speed; AF from the half-power bandwidth of the orbit at the shaft station
+        where the peak is largest, for the worst imbalance case there.
+    """
+    loads = imbalance_loads(model)
+    if scan is None:
+        speeds = np.linspace(REPORT.scan_bottom, top, n_points) * model.speed
+        orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
+    else:
+        speeds, orbits = scan
+    envelope = orbits.max(axis=(0, 1))
+    out: list[LateralCritical] = []
+    for rough in response_peaks(speeds, envelope):
+        k = int(np.argmin(np.abs(speeds - rough.speed)))
+        node, case = np.unravel_index(int(np.argmax(orbits[:, :, k])), orbits.shape[:2])
+
+        def orbit_at(new_speeds, node=node, case=case):
+            q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
+            return _shaft_orbits(model, q)[node, 0]
+
+        station = float(model.dofs.shaft_x[node])
+        try:
+            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+        except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
+            out.append(
+                LateralCritical(
+                    rough.speed,
+                    float("inf"),
+                    {"station": station, "detail": "undamped resonance: the response is singular at the peak"},
+                )
+            )
+            continue
+        if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
+            continue
+        location = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
+        amplification = peak.amplification_factor
+        if not peak.resolved:
+            if _undamped_at(model, peak.speed):
+                amplification = float("inf")
+                location["detail"] = (
+                    "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+                )
+            else:
+                location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
+        out.append(LateralCritical(peak.speed, amplification, location))
+    return label_critical_speeds(tuple(sorted(out, key=lambda c: c.speed)), campbell)
+
+
+def label_critical_speeds(criticals, campbell: Campbell | None) -> tuple[LateralCritical, ...]:
+    """The resolved peaks of :func:`lateral_critical_speeds` labelled with the tracked mode of
+    ``campbell`` whose 1× critical speed is within 3 % (an assessment computes the peaks and
+    the Campbell diagram in parallel and labels them afterwards)."""
+    out = []
+    for c in criticals:
+        mode = _campbell_label(campbell, c.speed) if "af_method" in c.location else ""
+        out.append(LateralCritical(c.speed, c.amplification_factor, {**c.location, "mode": mode}) if mode else c)
+    return tuple(out)
+
+
+def scan_critical_speeds(
+    model: Model, speeds: np.ndarray, orbits: np.ndarray | None, top: float = REPORT.scan_top
+) -> CriticalSpeeds:
+    """The lateral critical speeds up to ``top`` × the operating speed, from a spin-up scan
+    (speeds [rad/s], orbits (nodes, cases, speeds) [m]) when it reaches that high, else from a
+    new scan; none, with a note, when the unbalance response is singular or the operating
+    speed is zero."""
+    speed = float(model.speed)
+    search_top = top * speed
+    if speed <= 0.0:
+        return CriticalSpeeds(None, search_top, "the operating speed is zero")
+    scan = None
+    if orbits is not None and speeds[-1] >= search_top * (1 - 1e-9):
+        scan = (np.asarray(speeds), np.asarray(orbits))
+    try:
+        return CriticalSpeeds(lateral_critical_speeds(model, top=top, scan=scan), search_top)
+    except SingularSystemError as exc:
+        return CriticalSpeeds(None, search_top, f"the unbalance response could not be scanned: {exc}")
+
+
+def _undamped_at(model: Model, speed: float) -> bool:
+    """True when the synchronous mode at ``speed`` [rad/s] has no damping (|ζ| < 1e-9): its
+    peak is infinite however finely the speed is sampled."""
+    m = modes(model, speed, n_modes=_UNDAMPED_CHECK_MODES)
+    lateral = m.kind == "lateral"
+    if not np.any(lateral):
+        return False
+    k = int(np.argmin(np.where(lateral, np.abs(m.eigenvalues.imag - speed), np.inf)))
+    return bool(abs(m.damping_ratios[k]) < 1e-9)
+
+
+def _campbell_label(campbell: Campbell | None, speed: float) -> str:
+    if campbell is None or not campbell.critical_speeds:
+        return ""
+    nearest = min(campbell.critical_speeds, key=lambda c: abs(c.speed - speed))
+    if abs(nearest.speed - speed) > _LABEL_TOLERANCE * speed:
+        return ""
+    return f"{nearest.mode + 1} ({nearest.whirl})"

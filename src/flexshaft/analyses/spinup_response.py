@@ -1,0 +1,73 @@
+"""The steady imbalance response over a spin-up: orbits along the shaft and at the actuators.
+
+:func:`spinup_response` solves the synchronous response to the design's imbalance at every
+speed of a scan (one banded solve per speed for all load cases,
+:func:`~flexshaft.analyses.response.imbalance_response`) and keeps, at each speed, the worst
+load case (the largest shaft orbit over the nodes): its orbit along the shaft and the relative
+orbit and carried force at each active bearing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from flexshaft.analyses.response import actuator_response, imbalance_response, worst_case_orbits
+from flexshaft.assembly.loads import imbalance_loads
+from flexshaft.assembly.model import Model
+
+__all__ = ["SpinupResponse", "spinup_response"]
+
+
+@dataclass(frozen=True)
+class SpinupResponse:
+    """The imbalance response over a speed scan, SI units.
+
+    Attributes
+    ----------
+    speeds : ndarray
+        Spin speeds Ω [rad/s] (n_speeds,).
+    response : ndarray
+        Complex amplitudes (ndof, n_cases, n_speeds) [m, rad] of every load case.
+    orbits : ndarray
+        Orbit amplitude (major semi-axis) at every shaft node (n_nodes, n_cases, n_speeds) [m].
+    worst_case : ndarray
+        The load case with the largest shaft orbit at each speed (n_speeds,).
+    envelope : ndarray
+        Orbit of the worst case at every shaft node (n_nodes, n_speeds) [m].
+    actuator_displacement, actuator_force : mapping of str to ndarray
+        Relative orbit [m] and carried force [N] of each active bearing in the worst case
+        (n_speeds,).
+    """
+
+    speeds: np.ndarray
+    response: np.ndarray
+    orbits: np.ndarray
+    worst_case: np.ndarray
+    envelope: np.ndarray
+    actuator_displacement: Mapping[str, np.ndarray]
+    actuator_force: Mapping[str, np.ndarray]
+
+    @property
+    def shaft_peak(self) -> np.ndarray:
+        """Largest orbit over the shaft at each speed [m] (n_speeds,)."""
+        return self.envelope.max(axis=0)
+
+    def up_to(self, speed: float) -> np.ndarray:
+        """Indices of the speeds up to ``speed`` [rad/s] (the spin-up proper when it is the
+        operating speed)."""
+        return np.flatnonzero(self.speeds <= speed * (1 + 1e-9))
+
+
+def spinup_response(model: Model, speeds: np.ndarray) -> SpinupResponse:
+    """The worst-case imbalance response of ``model`` at ``speeds`` [rad/s] (see the module
+    docstring)."""
+    speeds = np.asarray(speeds, dtype=float)
+    q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
+    orbits, case = worst_case_orbits(model, q)
+    idx = np.arange(speeds.size)
+    envelope = orbits[:, case, idx]
+    displacement, force = actuator_response(model, q[:, case, idx], speeds)
+    return SpinupResponse(speeds, q, orbits, case, envelope, displacement, force)

@@ -1,0 +1,36 @@
+"""Monte-Carlo imbalance: random residual unbalance per bay and the distribution of what it does.
+
+* :mod:`~flexshaft.montecarlo.samples`: the balance-grade eccentricity, the draws and the unit
+  responses that make each sample a weighted sum (linearity);
+* :mod:`~flexshaft.montecarlo.steady`: the steady spin-up of every sample on the sweep engine,
+  with the probabilities of exceeding the actuators' limits;
+* :mod:`~flexshaft.montecarlo.runup`: the same samples over a run-up transient.
+"""
+
+from flexshaft.montecarlo.runup import RunupSamples, runup_montecarlo
+from flexshaft.montecarlo.samples import (
+    EccentricityDistribution,
+    ImbalanceDraws,
+    UnitResponses,
+    balance_grade_eccentricity,
+    draw_imbalance,
+    sample_outputs,
+    unit_responses,
+)
+from flexshaft.montecarlo.steady import MonteCarloResult, MonteCarloSampler, montecarlo_study, run_montecarlo
+
+__all__ = [
+    "EccentricityDistribution",
+    "ImbalanceDraws",
+    "MonteCarloResult",
+    "MonteCarloSampler",
+    "RunupSamples",
+    "UnitResponses",
+    "balance_grade_eccentricity",
+    "draw_imbalance",
+    "montecarlo_study",
+    "run_montecarlo",
+    "runup_montecarlo",
+    "sample_outputs",
+    "unit_responses",
+]

@@ -1,0 +1,382 @@
+"""What the optimizer searches: a :class:`DesignProblem` of design variables with bounds
+(:mod:`flexshaft.optimize.variables`), objectives and constraints on a base design.
+
+Constraints are outputs that must be ``>= 0``: the verdict checks' normalised margins
+(:func:`~flexshaft.optimize.evaluate.normalised_margin`).
+
+A check that is **not evaluated** (its margin is NaN) is a violated constraint, never a
+satisfied one: it counts as a violation of :data:`NOT_EVALUATED_VIOLATION` (the margin of a
+design that fails by its whole limit). A requirement the design never evaluates (e.g. no
+``max_spinup_deflection``) must be left out of ``constraints`` explicitly. A design the schema
+refuses (a bearing moved past its neighbour) or whose evaluation fails is infeasible through one
+more constraint, ``valid``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import re
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from flexshaft import __version__
+from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.design.layup import parse_layup
+from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
+from flexshaft.optimize.variables import DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
+
+__all__ = ["DesignProblem", "NOT_EVALUATED_VIOLATION", "objectives_and_constraints"]
+
+#: Constraint violation of a check that was not evaluated (a failure by the whole limit).
+NOT_EVALUATED_VIOLATION = 1.0
+#: Objective value given to a design without a result (never compared: it is infeasible).
+_NO_RESULT = 1e30
+_PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
+
+
+def _qualname(func: Callable) -> str:
+    return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', repr(func))}"
+
+
+def _format_angle(value: float) -> str:
+    # the decoded value as is (4 significant digits by default): the layup written is the design evaluated
+    text = f"{float(value):.6g}"
+    return "0" if text == "-0" else text
+
+
+@dataclass(frozen=True)
+class DesignProblem:
+    """A design optimization: variables, objectives and constraints on a base design.
+
+    Parameters
+    ----------
+    variables : sequence of DesignVariable
+    base : Design, optional
+        The design every candidate starts from (default: the embedded Table 3.1 baseline).
+    objectives : sequence of str or Objective
+        Names of :data:`DESIGN_OBJECTIVES` or :class:`Objective` on any output.
+    constraints : sequence of str, optional
+        Outputs that must be >= 0; a verdict check key (``"tsai_wu"``) stands for its margin
+        output ``margin_<key>``. Default: every verdict check.
+    layup : str, optional
+        Layup template with ``{name}`` / ``{-name}`` placeholders filled by ``layup.<name>``
+        variables, e.g. ``"({a}/{-a}/{b}/{-b})s"`` (degrees; a placeholder after ``_`` is a ply
+        repeat count and its variable must be integer).
+    ply_thickness : float, optional
+        Cured ply thickness [m]: the wall thickness becomes plies × ply_thickness.
+    fixed : mapping, optional
+        Design overrides applied to every candidate.
+    fidelity : {"verdict", "screening"}
+        Resolution of the evaluation (:data:`~flexshaft.optimize.evaluate.FIDELITIES`).
+    evaluate : callable, optional
+        Sweep output function ``evaluate(point) -> {output: float}`` (module level, for worker
+        processes); default the driveline evaluation.
+    outputs : sequence of (name, unit, long name), optional
+        What ``evaluate`` returns (default: the driveline metrics and checks).
+    name : str
+        Title of the results.
+    """
+
+    variables: tuple[DesignVariable, ...]
+    base: Any = None
+    objectives: tuple[str | Objective, ...] = ("shaft_mass", "safety_factor")
+    constraints: tuple[str, ...] | None = None
+    layup: str | None = None
+    ply_thickness: float | None = None
+    fixed: Mapping[str, Any] = field(default_factory=dict)
+    fidelity: str = "verdict"
+    evaluate: Callable = design_outputs
+    outputs: tuple[tuple[str, str, str], ...] | None = None
+    name: str = "design optimization"
+
+    def __post_init__(self) -> None:
+        if self.base is None:
+            object.__setattr__(self, "base", baseline_design())
+        variables = tuple(self.variables)
+        if not variables:
+            raise OptimizeError("an optimization needs at least one variable")
+        if not all(isinstance(v, DesignVariable) for v in variables):
+            raise OptimizeError("variables must be DesignVariable objects")
+        object.__setattr__(self, "variables", variables)
+        names = [v.name for v in variables]
+        if len(set(names)) != len(names):
+            raise OptimizeError(f"variable names must be unique, got {names}")
+        paths = [p for v in variables for p in v.paths]
+        if len(set(paths)) != len(paths):
+            raise OptimizeError(f"a design path may belong to one variable only, got {paths}")
+        object.__setattr__(self, "fixed", dict(self.fixed))
+        if self.fidelity not in FIDELITIES:
+            raise OptimizeError(f"fidelity: must be one of {', '.join(FIDELITIES)} (got {self.fidelity!r})")
+        outputs = tuple(tuple(o) for o in (self.outputs if self.outputs is not None else metric_outputs()))
+        object.__setattr__(self, "outputs", outputs)
+        object.__setattr__(self, "objectives", self._resolve_objectives())
+        object.__setattr__(self, "constraints", self._resolve_constraints())
+        if self.ply_thickness is not None and not (math.isfinite(self.ply_thickness) and self.ply_thickness > 0):
+            raise OptimizeError(f"ply_thickness: must be a positive thickness [m] (got {self.ply_thickness!r})")
+        self._check_layup()
+
+    # -- resolution and checks -----------------------------------------------------------------
+    @property
+    def output_names(self) -> tuple[str, ...]:
+        return tuple(o[0] for o in self.outputs)
+
+    def _resolve_objectives(self) -> tuple[Objective, ...]:
+        out = []
+        for item in self.objectives:
+            if isinstance(item, Objective):
+                objective = item
+            elif isinstance(item, str) and item in DESIGN_OBJECTIVES:
+                objective = DESIGN_OBJECTIVES[item]
+            else:
+                raise OptimizeError(
+                    f"objective: unknown name {item!r} (allowed: {', '.join(DESIGN_OBJECTIVES)}, "
+                    "or an Objective on an output)"
+                )
+            if objective.output not in self.output_names:
+                raise OptimizeError(
+                    f"objective {objective.output!r}: not an output of the evaluation "
+                    f"(outputs: {', '.join(self.output_names)})"
+                )
+            out.append(objective)
+        if not out:
+            raise OptimizeError("an optimization needs at least one objective")
+        if len({o.output for o in out}) != len(out):
+            raise OptimizeError(f"objectives must differ, got {[o.output for o in out]}")
+        return tuple(out)
+
+    def _resolve_constraints(self) -> tuple[str, ...]:
+        if self.constraints is None and "margin_tsai_wu" in self.output_names:
+            given = applicable_checks(self.base)  # the base design's verdict: its parts decide which checks apply
+        else:
+            given = self.constraints or ()
+        out = []
+        for name in given:
+            output = f"margin_{name}" if name in CHECK_KEYS else name
+            if output not in self.output_names:
+                allowed = ", ".join(k for k in CHECK_KEYS if f"margin_{k}" in self.output_names) or ", ".join(
+                    self.output_names
+                )
+                raise OptimizeError(f"constraint: unknown check or output {name!r} (allowed: {allowed})")
+            out.append(output)
+        if len(set(out)) != len(out):
+            raise OptimizeError(f"constraints must differ, got {out}")
+        return tuple(out)
+
+    def _check_layup(self) -> None:
+        layup_vars = {v.placeholder: v for v in self.variables if v.placeholder is not None}
+        if self.layup is None:
+            if layup_vars:
+                raise OptimizeError(
+                    f"variables {sorted('layup.' + k for k in layup_vars)} need a layup template "
+                    '(e.g. layup = "({a}/{-a}/{b}/{-b})s")'
+                )
+            if self.ply_thickness is not None:
+                raise OptimizeError("ply_thickness needs a layup template (the ply count comes from it)")
+            return
+        used = {m.group(2) for m in _PLACEHOLDER.finditer(self.layup)}
+        if used != set(layup_vars):
+            raise OptimizeError(
+                f"layup template {self.layup!r}: placeholders {sorted(used)} must match the layup "
+                f"variables {sorted(layup_vars)} (paths layup.<name>)"
+            )
+        for m in _PLACEHOLDER.finditer(self.layup):
+            if self.layup[: m.start()].endswith("_") and not layup_vars[m.group(2)].integer:
+                raise OptimizeError(
+                    f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable must be integer"
+                )
+        if "shaft.layup" in self.fixed or any("shaft.layup" in v.paths for v in self.variables):
+            raise OptimizeError("give the layup either as a template or through shaft.layup, not both")
+        if self.ply_thickness is not None and (
+            "shaft.wall_thickness" in self.fixed or any("shaft.wall_thickness" in v.paths for v in self.variables)
+        ):
+            raise OptimizeError(
+                "with ply_thickness the wall thickness follows the ply count; do not set shaft.wall_thickness too"
+            )
+
+    def validate(self) -> None:
+        """Check every path and both bounds of every variable against the design schema.
+
+        Each variable is set to its lower and its upper bound with the others at the middle of
+        their range; raises :class:`OptimizeError` naming the variable and the schema's message.
+        """
+        middle = {v.name: v.decode(sum(v.search_bounds) / 2) for v in self.variables}
+        for v in self.variables:
+            for bound in (v.lower, v.upper):
+                values = {**middle, v.name: int(bound) if v.integer else float(bound)}
+                try:
+                    with_overrides(self.base, self.overrides(values))
+                except DesignError as exc:
+                    raise OptimizeError(
+                        f"variable {v.name!r} = {bound!r} (others mid-range) gives an invalid design:\n{exc}"
+                    ) from None
+
+    # -- candidates ----------------------------------------------------------------------------
+    @property
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper bounds of the search space (log10 for log-scale variables)."""
+        b = np.array([v.search_bounds for v in self.variables], dtype=float)
+        return b[:, 0], b[:, 1]
+
+    @property
+    def integer_mask(self) -> np.ndarray:
+        return np.array([v.integer for v in self.variables])
+
+    def values(self, x: Sequence[float]) -> dict[str, float | int]:
+        """Variable values by name of one search point."""
+        return {v.name: v.decode(xi) for v, xi in zip(self.variables, x)}
+
+    def overrides(self, values: Mapping[str, float | int]) -> dict[str, Any]:
+        """Design overrides (``fixed`` first) of a candidate's variable values."""
+        out = dict(self.fixed)
+        for v in self.variables:
+            if v.placeholder is None:
+                out.update(dict.fromkeys(v.paths, values[v.name]))
+        if self.layup is not None:
+            layup = self.layup_of(values)
+            out["shaft.layup"] = layup
+            if self.ply_thickness is not None:
+                out["shaft.wall_thickness"] = len(parse_layup(layup)) * float(self.ply_thickness)
+        return out
+
+    def layup_of(self, values: Mapping[str, float | int]) -> str:
+        """The layup string of a candidate (placeholders filled, degrees)."""
+        by_placeholder = {v.placeholder: values[v.name] for v in self.variables if v.placeholder is not None}
+
+        def fill(m: re.Match) -> str:
+            value = by_placeholder[m.group(2)]
+            if isinstance(value, int):
+                return str(-value if m.group(1) else value)
+            return _format_angle(-value if m.group(1) else value)
+
+        return _PLACEHOLDER.sub(fill, self.layup or "")
+
+    def base_values(self) -> dict[str, float | int] | None:
+        """The base design's variable values (to seed the search), or None when a variable
+        cannot be read back from it or lies outside its bounds."""
+        data = json.loads(self.base.model_dump_json())
+        values: dict[str, float | int] = {}
+        for v in self.variables:
+            if v.placeholder is not None:
+                continue
+            found = {_read_path(data, p) for p in v.paths}
+            if len(found) != 1 or None in found:
+                return None
+            values[v.name] = found.pop()
+        if self.layup is not None:
+            from_layup = _match_layup(self.layup, self.base.shaft.layup or "")
+            if from_layup is None:
+                return None
+            for v in self.variables:
+                if v.placeholder is not None:
+                    values[v.name] = from_layup[v.placeholder]
+        for v in self.variables:
+            value = values[v.name]
+            if not isinstance(value, (int, float)) or not v.lower <= value <= v.upper:
+                return None
+            if v.integer and value != int(value):
+                return None
+            values[v.name] = int(value) if v.integer else float(value)
+        return values
+
+    # -- identity ------------------------------------------------------------------------------
+    def evaluation_spec(self) -> dict:
+        """What an evaluation's result depends on besides the design itself (keys the cache)."""
+        return {
+            "evaluate": _qualname(self.evaluate),
+            "outputs": [list(o) for o in self.outputs],
+            "fidelity": self.fidelity,
+            "flexshaft": __version__,
+        }
+
+    def evaluation_fingerprint(self) -> str:
+        text = json.dumps(self.evaluation_spec(), sort_keys=True, default=repr)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def spec(self) -> dict:
+        """JSON-able description of the search (what the run folder belongs to)."""
+        return {
+            "name": self.name,
+            "variables": [v.spec() for v in self.variables],
+            "objectives": [[o.output, o.sense] for o in self.objectives],
+            "constraints": list(self.constraints),
+            "layup": self.layup,
+            "ply_thickness": self.ply_thickness,
+            "fixed": dict(self.fixed.items()),
+            "base": json.loads(self.base.model_dump_json()),
+            "evaluation": self.evaluation_fingerprint(),
+        }
+
+
+def _read_path(data: Any, path: str) -> Any:
+    """The value at a design path (``a.b[2].c``) of a model dump, or None."""
+    for key, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
+        if index:
+            if not isinstance(data, list) or int(index) >= len(data):
+                return None
+            data = data[int(index)]
+        else:
+            if not isinstance(data, dict) or key not in data:
+                return None
+            data = data[key]
+    return data
+
+
+def _match_layup(template: str, layup: str) -> dict[str, float] | None:
+    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
+    pattern, groups, position = "", [], 0
+    for m in _PLACEHOLDER.finditer(template):
+        pattern += re.escape(template[position : m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
+        groups.append((m.group(1) == "-", m.group(2)))
+        position = m.end()
+    pattern += re.escape(template[position:])
+    found = re.fullmatch(pattern.replace(r"\ ", r"\s*"), layup.replace(" ", ""))
+    if found is None:
+        return None
+    out: dict[str, float] = {}
+    for (negated, name), text in zip(groups, found.groups()):
+        value = -float(text) if negated else float(text)
+        if name in out and not math.isclose(out[name], value, abs_tol=1e-9):
+            return None
+        out[name] = value + 0.0  # -0.0 -> 0.0
+    return out
+
+
+def objectives_and_constraints(
+    problem: DesignProblem, outputs: np.ndarray, valid: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The minimisation objectives F and constraints G (<= 0 feasible) of evaluated candidates.
+
+    Parameters
+    ----------
+    outputs : ndarray
+        (n, n_outputs) in the order of ``problem.outputs``.
+    valid : ndarray of bool
+        (n,) False for a design the schema refused.
+
+    Returns
+    -------
+    F : ndarray
+        (n, n_objectives): the objective, negated when maximised.
+    G : ndarray
+        (n, n_constraints + 1): −margin of each constraint (:data:`NOT_EVALUATED_VIOLATION`
+        where the margin is NaN, i.e. not evaluated), then 0 for a valid design with a finite
+        value of every objective and 1 otherwise.
+    """
+    outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
+    index = {name: i for i, name in enumerate(problem.output_names)}
+    F = np.column_stack([outputs[:, index[o.output]] * (-1.0 if o.sense == "max" else 1.0) for o in problem.objectives])
+    ok = np.asarray(valid, dtype=bool) & np.all(np.isfinite(F), axis=1)
+    F[~ok] = _NO_RESULT
+    columns = []
+    for name in problem.constraints:
+        margin = outputs[:, index[name]]
+        columns.append(np.where(np.isnan(margin), NOT_EVALUATED_VIOLATION, -margin))
+    columns.append(np.where(ok, 0.0, 1.0))
+    G = np.column_stack(columns)
+    G[~ok, :-1] = np.where(np.isnan(G[~ok, :-1]), NOT_EVALUATED_VIOLATION, G[~ok, :-1])
+    return F, G

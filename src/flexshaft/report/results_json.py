@@ -1,0 +1,190 @@
+"""``results.json`` of ``flexshaft run``: the key numbers of an
+:class:`~flexshaft.verdict.assess.Assessment` (and of the thesis studies beside it), JSON-ready.
+
+Only formatting: SI to the units named in each key (rpm, °C through :mod:`flexshaft.units`);
+every number comes from the assessment.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from flexshaft.analyses.summary import model_summary, modes_table
+from flexshaft.thesis.design_studies import headline
+from flexshaft.thesis.report_studies import ThesisStudies
+from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
+from flexshaft.verdict.assess import Assessment
+
+__all__ = ["json_ready", "results_json", "rpm_or_none"]
+
+
+def _bearing_dict(a: Assessment) -> dict | None:
+    """Static lateral and axial force and the imbalance force amplitude at the operating speed
+    (from the assessment's bearing reactions)."""
+    reactions = a.bearing_reactions
+    if not reactions:
+        return None
+    return {
+        name: {
+            "static_lateral_N": r.static_lateral,
+            "static_axial_N": r.static_axial,
+            "imbalance_lateral_amplitude_N": r.imbalance_lateral_amplitude,
+        }
+        for name, r in reactions.items()
+    }
+
+
+def _strength_dict(r) -> dict | None:
+    if r is None:
+        return None
+    return {
+        "safety_factor": r.safety_factor,
+        "x_m": r.x,
+        "element": r.element,
+        "ply": r.ply + 1,
+        "ply_angle_deg": r.ply_angle_deg,
+        "phase_deg": r.phase_deg,
+        "bending_sign": r.bending_sign,
+        "dominant_stress": r.dominant_stress,
+        "sigma1_Pa": r.stresses[0],
+        "sigma2_Pa": r.stresses[1],
+        "tau12_Pa": r.stresses[2],
+    }
+
+
+def results_json(a: Assessment, thesis: ThesisStudies | None = None) -> dict:
+    """The key numbers of an assessment (and the thesis studies beside it), JSON-ready: SI units,
+    each unit in its key (``_m``, ``_N``, ``_Pa``, ``_Hz``; speeds ``_rpm``, temperatures ``_c``
+    [°C]), non-finite numbers as None.
+
+    Nothing here depends on when or how fast the run went (no timestamp, no timings: those go
+    to ``timings.json``), so two runs of one design give byte-identical ``results.json``.
+    """
+    model = a.model
+    dm = model.dofs
+    qs = a.static_displacement
+    spinup = a.spinup
+    summary = model_summary(model)
+    i_op = int(np.argmin(np.abs(spinup.speeds - model.speed)))
+    peaks = spinup.shaft_peak
+    studies = None
+    if thesis is not None and thesis.design_studies is not None:
+        studies = {k: v for k, v in headline(thesis.design_studies).items() if k not in ("elapsed_s", "timings_s")}
+    return json_ready(
+        {
+            "design": summary["name"],
+            "verdict": a.verdict.to_dict(),
+            "summary": summary,
+            "modes_at_rest": modes_table(a.modes_at_rest) if a.modes_at_rest is not None else [],
+            "modes_at_operating_speed": modes_table(a.modes_at_speed),
+            "critical_speeds": [
+                {"speed_rpm": c.speed_rpm, "tracked_mode": c.mode + 1, "harmonic": c.harmonic, "whirl": c.whirl}
+                for c in (a.campbell.critical_speeds if a.campbell is not None else ())
+            ],
+            "imbalance": {
+                # the spin-up proper (to the operating speed, peaks refined): the verdict's number
+                **_spinup_peak(a),
+                "max_shaft_orbit_scan_m": float(peaks.max()),
+                "speed_of_max_scan_rpm": float(rad_s_to_rpm(spinup.speeds[np.argmax(peaks)])),
+                "max_shaft_orbit_at_operating_m": float(peaks[i_op]),
+                "actuator_max_displacement_m": {k: float(v.max()) for k, v in spinup.actuator_displacement.items()},
+                "actuator_max_force_N": {k: float(v.max()) for k, v in spinup.actuator_force.items()},
+            },
+            "static": {
+                "boom_tip_v_m": float(qs[dm.boom(-1, "v")]) if dm.n_boom_nodes else None,
+                "boom_tip_w_m": float(qs[dm.boom(-1, "w")]) if dm.n_boom_nodes else None,
+                "max_shaft_deflection_m": float(
+                    np.max(np.hypot(dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w")))
+                ),
+            },
+            "bearings": _bearing_dict(a),
+            "strength_static": _strength_dict(a.strength_static),
+            "strength_static_plus_imbalance": _strength_dict(a.strength_total),
+            "buckling": a.buckling.to_dict() if a.buckling is not None else None,
+            "stability": _stability_dict(a, thesis),
+            "thermal": _thermal_dict(a),
+            "design_studies": studies,
+            "notes": [*a.notes, *(thesis.notes if thesis is not None else ())],
+        }
+    )
+
+
+def _spinup_peak(a: Assessment) -> dict:
+    """Peak shaft orbit of the spin-up to the operating speed and its speed: the verdict's
+    ``spinup_deflection`` check (refined between the sampled speeds) when it was evaluated,
+    else the largest sampled value up to the operating speed."""
+    check = next((c for c in a.verdict.checks if c.key == "spinup_deflection"), None)
+    if check is not None and check.value is not None and "speed" in check.location:
+        return {
+            "max_shaft_orbit_spin_up_m": float(check.value),
+            "speed_of_max_rpm": rad_s_to_rpm(float(check.location["speed"])),
+        }
+    spinup = a.spinup
+    up = spinup.up_to(a.model.speed)
+    up = up if up.size else np.arange(spinup.speeds.size)
+    k = up[int(np.argmax(spinup.shaft_peak[up]))]
+    return {
+        "max_shaft_orbit_spin_up_m": float(spinup.shaft_peak[k]),
+        "speed_of_max_rpm": float(rad_s_to_rpm(spinup.speeds[k])),
+    }
+
+
+def json_ready(value):
+    """Plain JSON data of ``results_json``: numpy scalars/arrays as Python, tuples as lists,
+    NaN and infinities as None (strict JSON has neither)."""
+    if isinstance(value, dict):
+        return {str(k): json_ready(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [json_ready(v) for v in value]
+    if value is None or isinstance(value, (bool, str, int)):
+        return value
+    if isinstance(value, float):
+        return value if np.isfinite(value) else None
+    if hasattr(value, "tolist"):
+        return json_ready(value.tolist())
+    return json_ready(float(value))
+
+
+def rpm_or_none(speed: float | None) -> float | None:
+    """A speed [rad/s] in rpm; None when it is None or not finite."""
+    return None if speed is None or not np.isfinite(speed) else float(rad_s_to_rpm(speed))
+
+
+def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:
+    st = a.stability
+    comparison = thesis.shaft_comparison if thesis is not None else {}
+    out = {
+        "damping_model": st.damping_model,
+        "onset_speed_rpm": rpm_or_none(st.onset_speed),
+        "analysed_to_rpm": float(rad_s_to_rpm(st.speeds[-1])),
+        "unstable_mode_whirl": None if st.unstable_mode is None else str(st.whirl[-1, st.unstable_mode]),
+        "thesis_shafts": {
+            label: {m: rpm_or_none(r.onset_speed) for m, r in models.items()} for label, models in comparison.items()
+        },
+    }
+    if thesis is not None and thesis.gain_map is not None:
+        g = thesis.gain_map
+        out["gain_map"] = {
+            "kp_N_per_m": g.kp.tolist(),
+            "kd_N_s_per_m": g.kd.tolist(),
+            "onset_speed_rpm": [[rpm_or_none(v) for v in row] for row in g.onset_speed],
+            "min_damping_ratio_at_operating": g.margin_at_operating.tolist(),
+        }
+    return out
+
+
+def _thermal_dict(a: Assessment) -> dict | None:
+    th = a.thermal
+    if th is None:
+        return None
+    out = {"tailboom_c": {k: v.celsius for k, v in th.tailboom.items()}, "report_loss_model": th.loss_model}
+    for lm, s in th.shaft.items():
+        out[f"shaft_{lm}"] = {
+            "peak_rise_K": s.peak_rise,
+            "heat_W": float(s.sources.total.sum()),
+            "air_c": kelvin_to_celsius(s.temperature.air_temperature),
+        }
+    sh = th.self_heating
+    if sh is not None:
+        out["self_heating"] = {"status": sh.status, "iterations": sh.iterations, "margin_K": sh.margin}
+    return out

@@ -1,0 +1,371 @@
+"""Sections of the ``flexshaft run`` report on the spin-up response, whirl stability and thermal
+results of an :class:`~flexshaft.verdict.assess.Assessment` (with the thesis studies beside them).
+
+Each returns a :class:`~flexshaft.report.html.Section` and adds its figures' jobs to a
+:class:`Figures`; SI is converted to rpm, mm and °C here, through :mod:`flexshaft.units`.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from flexshaft.plot.driveline import actuator_figure, bode_figure, imbalance_response_figure, orbit_figure
+from flexshaft.plot.output import FigureJob
+from flexshaft.plot.stability import log_decrement_figure, stability_map_figure
+from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
+from flexshaft.report.html import FigureRef, Section, Table
+from flexshaft.report.results_json import rpm_or_none
+from flexshaft.thesis.report_studies import ThesisStudies
+from flexshaft.units import kelvin_to_celsius, m_to_mm, rad_s_to_rpm
+from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.gather import actuator_limits
+
+__all__ = ["Figures", "imbalance_section", "plot_result", "stability_section", "thermal_section"]
+
+
+def plot_result(result, kind: str | None = None, **kwargs):
+    """``result.plot(kind, **kwargs)``: a picklable figure function for :class:`FigureJob`."""
+    return result.plot(kind, **kwargs)
+
+
+class Figures:
+    """Collects figure jobs and hands out their :class:`FigureRef`."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+        self.jobs: list[FigureJob] = []
+
+    def add(self, stem: str, caption: str, function, *args, **kwargs) -> FigureRef:
+        self.jobs.append(FigureJob(stem, function, args, kwargs))
+        return FigureRef(self.folder / f"{stem}.png", caption)
+
+    def result(self, stem: str, caption: str, result, kind: str | None = None, **kwargs) -> FigureRef:
+        return self.add(stem, caption, plot_result, result, kind, **kwargs)
+
+
+def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -> Section:
+    """The spin-up response: figures of the orbits, Bode plot, bearing orbits and actuators,
+    tables of the actuator peaks and bearing loads."""
+    model = a.model
+    dm = model.dofs
+    design = model.design
+    spinup = a.spinup
+    rpm = rad_s_to_rpm(spinup.speeds)
+    limits = actuator_limits(model)
+    act_gaps = [limits[act.name].gap for act in model.actuators if limits[act.name].gap is not None]
+    amps = {"max over shaft": spinup.shaft_peak}
+    amps.update(
+        {f"shaft at {act.name}": spinup.envelope[dm.node_at("shaft", act.link.x_shaft)] for act in model.actuators}
+    )
+    figures = [
+        figs.add(
+            "imbalance_response",
+            "Synchronous imbalance response during spin-up (orbit major semi-axis)",
+            imbalance_response_figure,
+            rpm,
+            amps,
+            op_rpm,
+            log_y=True,
+        )
+    ]
+    q = spinup.response
+    if np.ndim(q) == 3 and q.shape[2] == rpm.size:
+        i_op = int(np.argmin(np.abs(spinup.speeds - model.speed)))
+        stations = {
+            f"{act.name} (x = {act.link.x_shaft:.2f} m)": dm.node_at("shaft", act.link.x_shaft)
+            for act in model.actuators
+        }
+        peak = int(np.argmax(spinup.envelope[:, i_op]))
+        stations.setdefault(f"largest orbit at {op_rpm:.0f} rpm (x = {dm.shaft_x[peak]:.2f} m)", peak)
+        curves = {}
+        for label, node in stations.items():
+            v = np.asarray(q[dm.shaft(node, "v")])  # (ncases, n_speeds)
+            case = int(np.argmax(np.abs(v[:, i_op])))
+            curves[f"{label}, v" + (f", case {case + 1}" if v.shape[0] > 1 else "")] = v[case]
+        figures.append(
+            figs.add(
+                "imbalance_bode",
+                "Bode plot of the vertical imbalance response (phase relative to the imbalance force)",
+                bode_figure,
+                rpm,
+                curves,
+                op_rpm,
+                min(act_gaps) if act_gaps else None,
+                title="Imbalance response at the actuators (Bode)",
+            )
+        )
+    reactions = a.bearing_reactions
+    if reactions:
+        orbits = {f"{name} (x = {r.x_shaft:.2f} m)": r.orbit for name, r in reactions.items()}
+        orbit_gaps = {f"{name} (x = {r.x_shaft:.2f} m)": r.gap for name, r in reactions.items() if r.gap is not None}
+        figures.append(
+            figs.add(
+                "bearing_orbits",
+                f"Shaft orbits relative to each bearing at {op_rpm:.0f} rpm (worst load "
+                "case; dashed: auxiliary-bearing gap; viewed along +x, forward whirl "
+                "clockwise)",
+                orbit_figure,
+                orbits,
+                orbit_gaps,
+                title=f"Orbits at the bearings, {op_rpm:.0f} rpm",
+            )
+        )
+    if model.actuators:
+        caps = [b.force_capacity for b in design.bearings if b.kind == "active" and b.force_capacity is not None]
+        figures.append(
+            figs.add(
+                "actuators",
+                "Actuator relative displacement and force during spin-up",
+                actuator_figure,
+                rpm,
+                spinup.actuator_displacement,
+                spinup.actuator_force,
+                min(act_gaps) if act_gaps else None,
+                operating_rpm=op_rpm,
+                force_capacity=min(caps) if caps else None,
+            )
+        )
+    imb = data["imbalance"]
+    tables = [
+        Table(
+            "Actuators (spin-up maxima)",
+            ["actuator", "max relative displacement [mm]", "max force [N]"],
+            [
+                [k, m_to_mm(imb["actuator_max_displacement_m"][k]), imb["actuator_max_force_N"][k]]
+                for k in spinup.actuator_force
+            ],
+        )
+    ]
+    if reactions:
+        tables.append(
+            Table(
+                f"Bearing loads: static, and imbalance at {op_rpm:.0f} rpm (worst load case)",
+                [
+                    "bearing",
+                    "kind",
+                    "x shaft [m]",
+                    "static lateral [N]",
+                    "static axial [N]",
+                    "imbalance force amplitude [N]",
+                    "relative orbit [mm]",
+                    "gap [mm]",
+                ],
+                [
+                    [
+                        n,
+                        r.kind,
+                        r.x_shaft,
+                        r.static_lateral,
+                        r.static_axial,
+                        r.imbalance_lateral_amplitude,
+                        _orbit_mm(r.orbit),
+                        None if r.gap is None else m_to_mm(r.gap),
+                    ]
+                    for n, r in reactions.items()
+                ],
+            )
+        )
+    return Section(
+        "Imbalance response over speed",
+        paragraphs=[
+            f"Rotating imbalance e_c m_s Ω² ({design.loads.imbalance_placement} placement), "
+            f"steady state at each speed from 2 % to 130 % of the operating speed. Peak shaft orbit of "
+            f"the spin-up to the operating speed {m_to_mm(imb['max_shaft_orbit_spin_up_m']):.3f} mm at "
+            f"{imb['speed_of_max_rpm']:.0f} rpm (refined between the sampled speeds); "
+            f"{m_to_mm(imb['max_shaft_orbit_at_operating_m']):.4f} mm at the operating speed; "
+            f"largest over the whole scan {m_to_mm(imb['max_shaft_orbit_scan_m']):.3f} mm at "
+            f"{imb['speed_of_max_scan_rpm']:.0f} rpm."
+        ],
+        tables=tables,
+        figures=figures,
+    )
+
+
+def _orbit_mm(pair) -> float:
+    """Major semi-axis of the orbit of a (v, w) amplitude pair [m], in mm."""
+    v, w = pair
+    return float(m_to_mm(np.sqrt(0.5 * (abs(v) ** 2 + abs(w) ** 2 + abs(v * v + w * w)))))
+
+
+def _onset_text(speed: float | None, top: float) -> str:
+    if speed is None or not np.isfinite(speed):
+        return f"stable to {rad_s_to_rpm(top):.0f}"
+    return f"{rad_s_to_rpm(speed):.0f}"
+
+
+def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures, op_rpm: float) -> Section:
+    """Whirl stability: the design's log decrements beside the thesis's three shafts, the onset
+    speeds and the onset over the actuator gains."""
+    st = a.stability
+    comparison = thesis.shaft_comparison if thesis is not None else {}
+    gain_map = thesis.gain_map if thesis is not None else None
+    top = st.speeds[-1]
+    figures = []
+    curves = {"this design (exact hysteretic loss)": st.log_decrements}
+    onsets = {"this design (exact hysteretic loss)": rpm_or_none(st.onset_speed)}
+    texts = {"this design (exact hysteretic loss)": st.onset_description()}
+    whirl = {"this design (exact hysteretic loss)": st.whirl}
+    same_speeds = True
+    for label, models in comparison.items():
+        r = models["viscous"]
+        same_speeds &= r.speeds.shape == st.speeds.shape and bool(np.allclose(r.speeds, st.speeds))
+        name = f"{label} (viscous equivalent)"
+        curves[name], onsets[name], texts[name], whirl[name] = (
+            r.log_decrements,
+            rpm_or_none(r.onset_speed),
+            r.onset_description(),
+            r.whirl,
+        )
+    if not same_speeds:  # the comparison was run on other speeds: draw the design alone
+        curves, onsets, texts, whirl = ({k: v[k] for k in list(v)[:1]} for v in (curves, onsets, texts, whirl))
+    required = a.design.requirements.required_log_decrement
+    figures.append(
+        figs.add(
+            "stability_log_decrement",
+            "Log decrement of the tracked modes against speed, the onset of "
+            "whirl instability marked ✕ (the thesis's three reference shafts "
+            "with the viscous-equivalent internal damping, figures 4.2-4.4)",
+            log_decrement_figure,
+            rad_s_to_rpm(st.speeds),
+            curves,
+            onsets,
+            op_rpm,
+            onset_text={k: v for k, v in texts.items() if v},
+            whirl=whirl,
+            required=required,
+        )
+    )
+    tables = []
+    rows = [["this design", _onset_text(st.onset_speed, top), "—"]]
+    rows += [
+        [label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]
+        for label, m in comparison.items()
+    ]
+    tables.append(
+        Table("Onset speed of whirl instability [rpm]", ["shaft", "viscous equivalent", "exact hysteretic"], rows)
+    )
+    if gain_map is not None:
+        g = gain_map
+        onset = {f"K_p = {kp:.3g} N/m": rad_s_to_rpm(g.onset_speed[i]) for i, kp in enumerate(g.kp)}
+        figures.append(
+            figs.add(
+                "stability_map",
+                "Onset speed against the actuator gains",
+                stability_map_figure,
+                g.kd,
+                onset,
+                op_rpm,
+                rad_s_to_rpm(g.max_speed),
+            )
+        )
+        tables.append(
+            Table(
+                "Smallest damping ratio at the operating speed",
+                ["K_p [N/m]", *[f"K_d = {kd:g}" for kd in g.kd]],
+                [[kp, *g.margin_at_operating[i]] for i, kp in enumerate(g.kp)],
+            )
+        )
+    return Section(
+        "Whirl stability",
+        paragraphs=[
+            "The composite's hysteretic loss acts in the rotating frame: as an equivalent viscous damping "
+            "C_i = Im(K_shaft)/ω_ref it adds C_i and the circulatory stiffness Ω C_i S in the fixed frame "
+            "(Zorzi & Nelson 1977), destabilising forward whirl above its natural frequency unless external "
+            "damping (actuator K_d, boom structural damping) outweighs it. ω_ref is the first shaft natural "
+            "frequency for the viscous model; the exact hysteretic model iterates each mode to its own "
+            "relative whirl frequency |ω − Ω|."
+        ],
+        tables=tables,
+        figures=figures,
+    )
+
+
+def thermal_section(a: Assessment, figs: Figures) -> Section:
+    """Tailboom and shaft temperatures, the self-heating equilibrium and the thermal sweeps."""
+    th = a.thermal
+    env = th.environment
+    shafts = th.shaft
+    if not shafts:  # below the report's detail: the self-heating equilibrium alone
+        sh = th.self_heating
+        return Section(
+            "Thermal",
+            paragraphs=[
+                f"Self-heating with temperature-dependent matrix properties ({th.loss_model} loss model): "
+                f"{sh.status} after {sh.iterations} iterations; peak {kelvin_to_celsius(sh.max_temperature):.1f} °C, "
+                f"margin to the allowable temperature {sh.margin:.1f} K. The report's resolution adds the tailboom, "
+                "both loss models and the thermal-design sweeps."
+            ],
+        )
+    first = next(iter(shafts.values()))
+    x = first.temperature.x
+    xe = 0.5 * (x[:-1] + x[1:])
+    rise = {f"{lm} loss model": s.temperature.temperature - s.temperature.air_temperature for lm, s in shafts.items()}
+    heat = {f"{lm} loss model": s.sources.total / np.diff(x) for lm, s in shafts.items()}
+    tables = []
+    if th.tailboom:
+        tables.append(
+            Table(
+                "Tailboom skin temperature (thesis: 44 °C hovering, 89 °C parked)",
+                ["condition", "temperature [°C]", "h [W/m² K]", "correlation"],
+                [[k, v.celsius, v.heat_transfer_coefficient, v.nusselt.method] for k, v in th.tailboom.items()],
+            )
+        )
+    rows = [
+        [
+            lm,
+            kelvin_to_celsius(s.temperature.air_temperature),
+            s.temperature.heat_transfer_coefficient,
+            float(s.sources.vibration.sum()),
+            float(s.sources.static.sum()),
+            s.peak_rise,
+        ]
+        for lm, s in shafts.items()
+    ]
+    tables.append(
+        Table(
+            "Shaft self-heating at the operating speed",
+            ["loss model", "air [°C]", "h [W/m² K]", "vibration heat [W]", "static heat [W]", "peak rise [K]"],
+            rows,
+        )
+    )
+    paragraphs = [
+        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
+        "Heat is the hysteretic loss P = (ω/2)·Re(Xᴴ K'' X) of the imbalance response and of the static deflection "
+        "seen by the rotating material. The thesis model cycles every response at Ω in the fixed frame; the "
+        "rotating-frame model (used for the self-heating check) knows that synchronous forward whirl does not cycle "
+        "the material, backward whirl is cycled at 2Ω and the static deflection at Ω."
+    ]
+    sh = th.self_heating
+    if sh is not None:
+        paragraphs.append(
+            f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
+            f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K."
+        )
+    figures = [
+        figs.add(
+            "shaft_temperature",
+            "Shaft temperature rise and heat generation along the shaft",
+            shaft_temperature_figure,
+            x,
+            rise,
+            xe,
+            heat,
+        )
+    ]
+    prof = th.profiles
+    if prof:
+        figures.append(
+            figs.add(
+                "shaft_temperature_sweeps",
+                f"Shaft temperature profiles against wall thickness and "
+                f"convection ({th.loss_model} loss model; thesis figures "
+                "3.18, 3.19)",
+                temperature_profiles_figure,
+                prof.x,
+                prof.by_wall,
+                prof.by_h,
+            )
+        )
+    return Section("Thermal", paragraphs=paragraphs, tables=tables, figures=figures)

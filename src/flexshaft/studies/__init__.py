@@ -1,1 +1,0 @@
-"""Studies layer: analyses combined into the answers a designer asks for."""

@@ -1,0 +1,47 @@
+"""Thesis study 4: the proportional gain K_p of both active bearings. The Tsai-Wu safety factor and
+the actuator's relative orbit at the operating speed against K_p, on the sweep engine."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from flexshaft.analyses.response import actuator_response, imbalance_response
+from flexshaft.assembly.loads import imbalance_loads
+from flexshaft.sweep.run import run_sweep
+from flexshaft.sweep.study import Output, Study, Variable
+from flexshaft.thesis.strength import STRENGTH_OUTPUTS, strength_outputs
+
+__all__ = ["proportional_gain_study"]
+
+
+def _actuator_outputs(point) -> dict:
+    model = point.model
+    q = imbalance_response(model, [model.speed], imbalance_loads(model))
+    worst_disp = 0.0
+    for c in range(q.shape[1]):
+        disp, _ = actuator_response(model, q[:, c], np.array([model.speed]))
+        worst_disp = max(worst_disp, max(float(d[0]) for d in disp.values()))
+    nan = float("nan")  # ply strength needs a laminated shaft (as in the wall study)
+    strength = strength_outputs(point) if model.shaft.laminate is not None else {o.name: nan for o in STRENGTH_OUTPUTS}
+    return {**strength, "actuator_displacement": worst_disp}
+
+
+def _both_actuators_kp(kp: float) -> dict:
+    return {"bearings[1].kp": kp, "bearings[2].kp": kp}
+
+
+def proportional_gain_study(kps=None, design=None, **run):
+    """Safety factor and actuator displacement at the operating speed vs K_p (study 4).
+
+    ``kps`` [N/m] (default 13 from 1e5 to 1e8) is applied to both active bearings of the
+    baseline (design bearings 1 and 2).
+    """
+    kps = np.logspace(5, 8, 13) if kps is None else kps
+    study = Study(
+        "proportional gain",
+        [Variable("kp", kps, overrides=_both_actuators_kp, units="N/m")],
+        STRENGTH_OUTPUTS + [Output("actuator_displacement", "m", "relative orbit at the actuator, operating speed")],
+        _actuator_outputs,
+        base=design,
+    )
+    return run_sweep(study, **run)

@@ -1,0 +1,242 @@
+"""What a requirements verdict says: one :class:`Check` per requirement with its value, limit,
+margin (signed, in the value's unit: positive means room to the limit), pass/fail and location,
+and the :class:`Verdict` of a design.
+
+A requirement that cannot be evaluated (no limit given, no result to check) says why instead of
+passing. Locations are small mappings with SI values (``station`` [m], ``speed`` [rad/s],
+``frequency`` [rad/s]) and labels (``actuator``, ``mode``, ``ply``, ``case``, ``detail``); the
+report (:mod:`flexshaft.report.verdict`) converts and prints them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from flexshaft.analyses.results import ResultMixin, coded, new_dataset
+from flexshaft.plot.verdict import margins_figure
+from flexshaft.units import format_quantity
+from flexshaft.verdict.evidence import Location
+
+__all__ = ["Check", "Finding", "Kind", "SI_UNITS", "Status", "Verdict"]
+
+
+#: Outcome of one check.
+Status = Literal["pass", "fail", "not evaluated"]
+
+#: Physical kind of a check's value, limit and margin (sets the display unit).
+Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement", "angle"]
+
+#: SI unit of each kind.
+SI_UNITS: dict[str, str] = {
+    "ratio": "-",
+    "speed": "rad/s",
+    "length": "m",
+    "force": "N",
+    "temperature": "K",
+    "fraction": "-",
+    "log_decrement": "-",
+    "angle": "rad",
+}
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One instance of a requirement (one mode, one critical, one actuator...).
+
+    ``margin`` is in the unit of ``value``: value − limit for "at least" requirements, limit −
+    value for "at most" ones, so that a negative margin fails. ``lower_bound``: the true value
+    (and margin) is at least this large.
+    """
+
+    value: float
+    limit: float
+    margin: float
+    location: Location = field(default_factory=dict)
+    lower_bound: bool = False  # the true value is larger (e.g. no whirl onset up to the speed analysed)
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= 0.0
+
+    def to_dict(self) -> dict:
+        return {
+            "value": self.value,
+            "limit": self.limit,
+            "margin": self.margin,
+            "passed": self.passed,
+            "lower_bound": self.lower_bound,
+            "location": dict(self.location),
+        }
+
+
+@dataclass(frozen=True)
+class Check:
+    """One requirement: status, the governing (worst) finding and every finding.
+
+    Attributes
+    ----------
+    key, title : str
+        Identifier and human name of the requirement.
+    kind : Kind
+        Physical kind of value, limit and margin (SI unit in :data:`SI_UNITS`).
+    sense : {"at least", "at most"}
+        The value must be at least / at most the limit.
+    status : {"pass", "fail", "not evaluated"}
+    value, limit, margin : float or None
+        Of the governing finding (None when not evaluated); with ``lower_bound`` the value and
+        margin are lower bounds.
+    location : mapping
+        Where the governing finding occurs.
+    note : str
+        Why the check was not evaluated, or a remark on how it was.
+    findings : tuple of Finding
+        Every instance checked; the governing one has the smallest margin (for separation the
+        margins are fractions of the operating speed, so they compare across criticals).
+    """
+
+    key: str
+    title: str
+    kind: Kind
+    sense: Literal["at least", "at most"]
+    status: Status
+    value: float | None = None
+    limit: float | None = None
+    margin: float | None = None
+    location: Location = field(default_factory=dict)
+    note: str = ""
+    findings: tuple[Finding, ...] = ()
+    lower_bound: bool = False
+
+    @property
+    def passed(self) -> bool | None:
+        """True, False, or None when not evaluated."""
+        return None if self.status == "not evaluated" else self.status == "pass"
+
+    @property
+    def n_failed(self) -> int:
+        return sum(not f.passed for f in self.findings)
+
+    def to_dict(self) -> dict:
+        return {
+            "key": self.key,
+            "title": self.title,
+            "status": self.status,
+            "sense": self.sense,
+            "kind": self.kind,
+            "unit": SI_UNITS[self.kind],
+            "value": self.value,
+            "limit": self.limit,
+            "margin": self.margin,
+            "lower_bound": self.lower_bound,
+            "location": dict(self.location),
+            "note": self.note,
+            "findings": [f.to_dict() for f in self.findings],
+        }
+
+
+@dataclass(frozen=True)
+class Verdict(ResultMixin):
+    """Every requirement check of one design; ``passed`` when none fails."""
+
+    checks: tuple[Check, ...]
+
+    plots = {"margins": "plot_margins"}
+
+    def plot_margins(self, ax=None, **kwargs):
+        """Bar chart of every check's margin divided by its limit, green pass, red fail, grey
+        not evaluated, with the margin in engineering units beside each bar (keywords to
+        :func:`flexshaft.plot.verdict.margins_figure`)."""
+        normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
+        return margins_figure(
+            [c.title for c in self.checks],
+            normalised,
+            [c.status for c in self.checks],
+            ["" if c.margin is None else format_quantity(c.kind, c.margin, margin=True) for c in self.checks],
+            [c.lower_bound for c in self.checks],
+            ax=ax,
+            **{
+                "title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} (margin / limit of each)",
+                **kwargs,
+            },
+        )
+
+    def to_dataset(self):
+        """One row per check: value, limit, margin (SI, the unit of each check in ``units``),
+        status coded pass/fail/not_evaluated (xarray)."""
+
+        def number(x):
+            return float("nan") if x is None else float(x)
+
+        status, status_attrs = coded(
+            [c.status.replace(" ", "_") for c in self.checks], ("pass", "fail", "not_evaluated"), "requirement status"
+        )
+        units = [SI_UNITS.get(c.kind, "-").replace("-", "1") for c in self.checks]
+        return new_dataset(
+            {
+                "value": (
+                    "check",
+                    np.array([number(c.value) for c in self.checks]),
+                    {"long_name": "worst value of the check (unit per check: see check_units)"},
+                ),
+                "limit": ("check", np.array([number(c.limit) for c in self.checks]), {"long_name": "required limit"}),
+                "margin": (
+                    "check",
+                    np.array([number(c.margin) for c in self.checks]),
+                    {"long_name": "signed margin (negative: fails)"},
+                ),
+                "status": ("check", status, status_attrs),
+            },
+            {
+                "check": ("check", [c.key for c in self.checks], {"long_name": "requirement"}),
+                "check_title": ("check", [c.title for c in self.checks], {"long_name": "requirement title"}),
+                "check_units": ("check", units, {"long_name": "SI unit of value, limit and margin"}),
+            },
+            "requirements verdict",
+            verdict="PASS" if self.passed else "FAIL",
+            summary=self.summary,
+        )
+
+    @property
+    def passed(self) -> bool:
+        """No check fails (checks that could not be evaluated do not fail)."""
+        return not self.failed
+
+    @property
+    def failed(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if c.status == "fail")
+
+    @property
+    def not_evaluated(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if c.status == "not evaluated")
+
+    def check(self, key: str) -> Check:
+        """The check called ``key``."""
+        for c in self.checks:
+            if c.key == key:
+                return c
+        raise KeyError(key)
+
+    @property
+    def summary(self) -> str:
+        """One line: PASS/FAIL, the failed requirements and the count not evaluated."""
+        n_pass = sum(c.status == "pass" for c in self.checks)
+        head = "PASS" if self.passed else "FAIL"
+        parts = []
+        if self.failed:
+            parts.append(
+                f"{len(self.failed)} of {len(self.checks)} requirements fail: "
+                + ", ".join(c.title for c in self.failed)
+            )
+        parts.append(f"{n_pass} pass")
+        if self.not_evaluated:
+            parts.append(f"{len(self.not_evaluated)} not evaluated: " + ", ".join(c.title for c in self.not_evaluated))
+        return f"{head}: " + "; ".join(parts)
+
+    def __repr__(self) -> str:
+        return f"Verdict({self.summary})"
+
+    def to_dict(self) -> dict:
+        return {"passed": self.passed, "summary": self.summary, "checks": [c.to_dict() for c in self.checks]}
