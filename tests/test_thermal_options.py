@@ -253,10 +253,6 @@ def test_thermal_never_loads_or_makes_designs_nor_imports_a_higher_layer():
 def test_zero_celsius_is_written_once():
     # 273.15 appears in the design, thermal and thermal-study sources only as the constant of
     # flexshaft.units; everything else converts with its functions.
-    files = [
-        *(SRC / "design").glob("*.py"),
-        *(SRC / "thermal").glob("*.py"),
-        SRC / "units.py",
-    ]
+    files = [*(SRC / "design").glob("*.py"), *(SRC / "thermal").glob("*.py"), SRC / "units.py"]
     hits = sorted(p.relative_to(SRC) for p in files if "273.15" in p.read_text())
     assert hits == [Path("units.py")]

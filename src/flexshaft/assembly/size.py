@@ -37,6 +37,7 @@ from typing import Literal
 
 import numpy as np
 
+from flexshaft.assembly.drive import drive_extra_dofs
 from flexshaft.assembly.mesh import design_mesh, merge_stations, merge_tolerance
 from flexshaft.design import DesignError, Problem
 from flexshaft.resolution import REPORT, Resolution
@@ -208,7 +209,7 @@ def problem_size(
     if analysis not in ("model", "assess", "run"):
         raise ValueError(f"analysis must be 'model', 'assess' or 'run' (got {analysis!r})")
     shaft_x, boom_x = design_mesh(design)
-    dofs = 6 * shaft_x.size + 5 * boom_x.size
+    dofs = 6 * shaft_x.size + 5 * boom_x.size + len(drive_extra_dofs(design))  # + drive-train twists
     fixed = len(design.shaft.fixed_start) + len(design.shaft.fixed_end) + (5 if boom_x.size else 0)
     free = dofs - fixed
     active = [b for b in design.bearings if b.kind == "active"]

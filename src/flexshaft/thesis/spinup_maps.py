@@ -37,9 +37,7 @@ def spinup_gain_map(kp=None, kd=None, design=None, n_speeds: int = 400):
 SURFACE_GAINS = ((2e6, 1170.0), (3e5, 1170.0))
 
 
-def _refined_peak(
-    model: Model, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81
-) -> tuple[float, float]:
+def _refined_peak(model: Model, controllers, speeds: np.ndarray, curve: np.ndarray, n: int = 81) -> tuple[float, float]:
     """Peak of a spin-up curve refined on a fine grid between the neighbours of the coarse peak
     (the actuator receptance of ``model`` there, :func:`_receptance`)."""
     i = int(np.argmax(curve))
