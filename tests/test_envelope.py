@@ -32,7 +32,8 @@ def at(design, point):
 
 
 def test_default_envelope_and_the_packaged_files_agree(design):
-    """Without [envelope] the three documented points apply; the packaged files spell them out."""
+    """An [envelope] without points holds the three documented points (a design without one is
+    judged at its own operating point: design.envelope is None); the packaged files spell them out."""
     assert [p.name for p in Envelope().points] == ["cold_day", "standard_day", "hot_soak_start"]
     assert design.envelope == Envelope()
     cold, standard, hot = DEFAULT_ENVELOPE_POINTS
