@@ -71,7 +71,8 @@ def exact_frequencies(speed, whirl, n_roots, k=KB):
     EI = E * I
     s = 1.0 if whirl == "forward" else -1.0
 
-    def det(w):
+    def det(w):  # w a number or a 1-D array of them
+        w = np.asarray(w, dtype=float)
         a = RHO * (I * w * w - s * J * speed * w)
         disc = np.sqrt(a * a + 4 * EI * RHO * A * w * w)
         s1 = np.sqrt((-a + disc) / (2 * EI))
@@ -91,12 +92,13 @@ def exact_frequencies(speed, whirl, n_roots, k=KB):
         f0, fL = funcs(0.0), funcs(L)
         rows = np.array(
             [EI * f0[2], EI * f0[3] + a * f0[1] + k * f0[0], EI * fL[2], -EI * fL[3] - a * fL[1] + k * fL[0]]
-        )
-        scale = np.linalg.norm(rows, axis=0)
+        )  # (4 conditions, 4 functions[, n speeds])
+        rows = np.moveaxis(rows, (0, 1), (-2, -1))
+        scale = np.linalg.norm(rows, axis=-2, keepdims=True)
         return np.linalg.det(rows / scale)
 
     grid = np.linspace(1.0, 2.0e4, 40000)
-    vals = np.array([det(w) for w in grid])
+    vals = det(grid)  # every grid point at once
     roots = []
     for i in np.flatnonzero(np.sign(vals[:-1]) != np.sign(vals[1:])):
         r = brentq(det, grid[i], grid[i + 1], xtol=1e-12)
