@@ -172,7 +172,9 @@ def test_sample_mean_and_spread_converge_at_the_inverse_square_root_rate(two_bay
     design, model = two_bay
     speed = 300.0
     units, (a1, a2) = _two_phasor(two_bay, speed)
-    mean = 2 * (a1 + a2) * ellipe(4 * a1 * a2 / (a1 + a2) ** 2) / np.pi
+    # k² = 4a₁a₂/(a₁ + a₂)² = 1 − ((a₁ − a₂)/(a₁ + a₂))², written so that it never rounds above 1
+    # (a₁ = a₂ by symmetry here: 4a₁a₂/(a₁ + a₂)² can round to 1 + ε, where E(k²) is NaN)
+    mean = 2 * (a1 + a2) * ellipe(1 - ((a1 - a2) / (a1 + a2)) ** 2) / np.pi
     sigma = np.sqrt(a1**2 + a2**2 - mean**2)
     dist = EccentricityDistribution("fixed", design.loads.eccentricity)
     sizes = np.array([64, 256, 1024, 4096])

@@ -402,7 +402,9 @@ def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
     theirs = [reference(t) for t in ticks]
     exponents = [round(np.log10(t)) for t in ticks]
     superscript = dict(zip("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
-    assert len(ticks) >= 3 and -4 in exponents and 2 in exponents
+    # the decades the locator picks vary with the versions (every one with numpy 2, every second
+    # with numpy 1.26): any three, negative and positive exponents among them
+    assert len(ticks) >= 3 and min(exponents) < 0 < max(exponents)
     assert theirs == [f"$\\mathdefault{{10^{{{e}}}}}$" for e in exponents]
     assert ours == ["10" + "".join(superscript[c] for c in str(e)) for e in exponents]
     assert plain_log_label("$\\mathdefault{2\\times10^{-3}}$") == "2×10⁻³"

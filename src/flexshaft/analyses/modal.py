@@ -17,8 +17,9 @@ import numpy as np
 
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.datasets import modes_dataset
-from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
+from flexshaft.analyses.eigen import reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
+from flexshaft.analyses.hysteretic_roots import damped_modes
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
