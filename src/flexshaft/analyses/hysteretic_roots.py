@@ -272,6 +272,28 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
     return s, y, False
 
 
+def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The roots ``s`` of a dense eigen-solve refined by Newton's method on their own branch's
+    problem: a dense solve of the first-order matrix is accurate to about ε‖A‖ in absolute
+    terms, which a nearly massless member (‖A‖ of its stiff, light modes ~1e8 rad²/s² and
+    more) turns into 1e-9 of a low mode; Newton on the nb × nb second-order problem brings
+    each root to the convergence tolerance relative to its own |s|. A refined root is kept
+    only when it converged on the same branch and is the same mode (MAC with the dense
+    solve's vector at least :data:`SAME_MODE_MAC`); an on-line root (:func:`line_root`) and a
+    root Newton cannot refine keep the dense solve's value."""
+    s, Y = s.copy(), Y.copy()
+    parts = branches(red, speed)
+    for k in range(s.size):
+        branch = next((b for b in parts if on_branch(b, s[k].imag, speed)), None)
+        if branch is None:
+            continue
+        root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights)
+        same = abs(np.vdot(Y[:, k], vec)) ** 2 >= SAME_MODE_MAC * np.vdot(Y[:, k], Y[:, k]).real
+        if converged and same and on_branch(branch, root.imag, speed):
+            s[k], Y[:, k] = root, vec
+    return s, Y
+
+
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
@@ -283,6 +305,7 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     divergence).
     """
     out_s, out_y = consistent_roots(red, speed)
+    out_s, out_y = _polish(red, speed, out_s[:n_modes], out_y[:, :n_modes])
     _, _, Y_div, div = spectrum(red, speed)
     if div.size:
         out_s = np.concatenate([out_s, div.astype(complex)])
