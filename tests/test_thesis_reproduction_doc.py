@@ -121,6 +121,23 @@ def static_strains_at_critical(name: str) -> dict[str, float]:
     }
 
 
+def failure_state(name: str) -> np.ndarray:
+    """The critical ply's stresses at failure, σ* = R Σ σ_load + σ_residual [Pa]."""
+    r = safety_factor(name)
+    return sum(
+        np.asarray(stress) * (1.0 if load == "thermal" else r.safety_factor) for load, stress in r.stress_parts.items()
+    )
+
+
+def tsai_wu_terms(name: str) -> dict[str, float]:
+    """Terms of the Tsai-Wu failure index (eq. 2.48) at the critical ply's failure state."""
+    s1, s2, _ = failure_state(name)
+    s = shaft_strengths(responses(name)[0])[1]
+    F11, F22 = 1.0 / (s.X_t * s.X_c), 1.0 / (s.Y_t * s.Y_c)
+    F12 = -0.5 * math.sqrt(F11 * F22) if s.F12 is None else s.F12
+    return {"F11": F11 * s1 * s1, "F22": F22 * s2 * s2, "F12": 2.0 * F12 * s1 * s2}
+
+
 def row1_numbers(name: str) -> list[float]:
     """σ1 [MPa] of the critical ply, the torque's shear strain, R of σ1 alone, R, R without the
     boom loads."""
@@ -348,13 +365,28 @@ def _added_row(key: str) -> list[float]:
 QUOTES = [
     Quote(
         "row 1: the critical ply",
-        "**Safety factor {} against 3.5 (row 1).** The critical stress is the fibre compression of a "
+        "The critical stress is the fibre compression of a "
         "+55° ply, σ1 = {} MPa at x = {} m, from the 489 N m torque that the ±55° plies carry (the 0° "
-        "plies carry none; torsional shear strain {}): σ1 alone against X_c = 2000 MPa gives R = {}, "
-        "and Tsai-Wu's linear term in the transverse stress brings it to {}. The boom loads add little: "
-        "without them R = {}.",
-        lambda: [row1_numbers("baseline")[4], *row1_numbers("baseline")],
-        [".0f", ".1f", ".2f", "×10:1", ".0f", ".1f", ".1f"],
+        "plies carry none; torsional shear strain {}): σ1 alone against X_c = 2000 MPa gives R = {}. "
+        "Tsai-Wu brings it to {} through the ply's transverse stress, σ2 = {} MPa at failure ({} MPa of it "
+        "the thermal residual): at the failure point the interaction term 2F12σ1σ2 is {} of the failure index "
+        "and F22σ2² {}, where F11σ1² is {}. The boom loads add little: without them R = {}.",
+        lambda: [
+            *row1_numbers("baseline")[:5],
+            failure_state("baseline")[1] / 1e6,
+            safety_factor("baseline").stress_parts["thermal"][1] / 1e6,
+            tsai_wu_terms("baseline")["F12"],
+            tsai_wu_terms("baseline")["F22"],
+            tsai_wu_terms("baseline")["F11"],
+            row1_numbers("baseline")[5],
+        ],
+        [".1f", ".2f", "×10:1", ".0f", ".1f", ".2f", ".2f", ".2f", ".2f", ".2f", ".1f"],
+    ),
+    Quote(
+        "row 1: the heading",
+        "**Safety factor {} against 3.5 (row 1).**",
+        lambda: [safety_factor("baseline").safety_factor],
+        [".0f"],
     ),
     Quote(
         "row 1: the boom loads' strains",
@@ -564,7 +596,7 @@ def test_safety_factor_3_5_needs_boom_loads_no_airframe_carries(name: str) -> No
     assert r.ply_angle_deg == 0.0 and r.dominant_stress == "sigma1" and r.stresses[0] > 0.0
     failure = sum(
         np.asarray(stress) * (1.0 if load == "thermal" else r.safety_factor) for load, stress in r.stress_parts.items()
-    )
+    )  # as failure_state(), at the scaled loads
     strengths = shaft_strengths(responses(name)[0])[1]
     assert tsai_wu_index(*failure, strengths) == pytest.approx(1.0, abs=1e-9)
     assert failure[0] == pytest.approx(strengths.X_t, rel=0.05)
