@@ -270,6 +270,19 @@ def gain_row(exponent: float) -> list[float]:
     return [nearest, 100 * (nearest / op - 1.0), r, 100 * imbalance_cost(model)]
 
 
+@functools.cache
+def gain_log_decrement(exponent: float) -> float:
+    """Log decrement of the lateral shaft mode nearest 80 Hz at K_p = 10^exponent N/m."""
+    design = baseline_design()
+    kp = {f"bearings[{i}].kp": 10.0**exponent for i, b in enumerate(design.bearings) if b.kind == "active"}
+    model = build_model(with_overrides(design, kp))
+    m = modes(model, model.speed, 24)
+    f = np.asarray(m.frequencies)
+    keep = (np.asarray(m.kind) == "lateral") & (np.asarray(m.shaft_fractions) >= 0.1)
+    k = np.flatnonzero(keep)[np.argmin(np.abs(f[keep] - gain_row(exponent)[0]))]
+    return float(np.asarray(m.log_decrements)[k])
+
+
 # ------------------------------------------------------------------------------------------------
 # The loads flexshaft adds
 
@@ -499,6 +512,12 @@ QUOTES = [
         )
         for x, label in zip(GAIN_EXPONENTS, ("1.26e6", "1.50e6", "1.58e6", "1.68e6", "2.00e6", "2.37e6"))
     ],
+    Quote(
+        "row 5: the damping of those modes",
+        "(these shaft modes' log decrement is {} to {})",
+        lambda: [min(map(gain_log_decrement, GAIN_EXPONENTS)), max(map(gain_log_decrement, GAIN_EXPONENTS))],
+        [".4f", ".4f"],
+    ),
     Quote(
         "added loads: centrifugal hoop",
         "| centrifugal hoop stress | {} MPa | {} / {} | {} % / {} % |",
