@@ -29,7 +29,6 @@ from flexshaft.assembly.loads import imbalance_loads, per_bay_imbalance_loads
 from flexshaft.design import baseline_design, loads_design
 from flexshaft.montecarlo import (
     EccentricityDistribution,
-    balance_grade_eccentricity,
     draw_imbalance,
     run_montecarlo,
     sample_outputs,
@@ -91,11 +90,11 @@ def two_bay():
 
 def test_balance_grade_relation():
     """ISO 21940-11: e_per = G/Ω; G 6.3 at 4800 rpm is 12.53 µm, G 2.5 at 3000 rpm 7.96 µm
-    (the standard's chart reads ~8 µm)."""
-    assert balance_grade_eccentricity(6.3, 4800 * np.pi / 30) == pytest.approx(12.533e-6, rel=1e-4)
-    assert balance_grade_eccentricity(2.5, 3000 * np.pi / 30) == pytest.approx(7.958e-6, rel=1e-3)
+    (the standard's chart reads ~8 µm): the distribution's scale from a grade."""
+    assert EccentricityDistribution.from_grade(6.3, 4800 * np.pi / 30).scale == pytest.approx(12.533e-6, rel=1e-4)
+    assert EccentricityDistribution.from_grade(2.5, 3000 * np.pi / 30).scale == pytest.approx(7.958e-6, rel=1e-3)
     with pytest.raises(ValueError, match="grade_mm_s"):
-        balance_grade_eccentricity(-1.0, 100.0)
+        EccentricityDistribution.from_grade(-1.0, 100.0)
 
 
 @pytest.mark.parametrize(

@@ -1,6 +1,7 @@
 """Monte-Carlo imbalance: random residual unbalance per bay and the distribution of what it does.
 
-* :mod:`~flexshaft.montecarlo.samples`: the balance-grade eccentricity, the draws and the unit
+* :mod:`~flexshaft.montecarlo.samples`: the eccentricity distribution (ISO 21940-11's balance
+  grade), each bay's unbalance ``U_b = e_b m_b`` (m_b its rotating mass), the draws and the unit
   responses that make each sample a weighted sum (linearity);
 * :mod:`~flexshaft.montecarlo.steady`: the steady spin-up of every sample on the sweep engine,
   with the probabilities of exceeding the actuators' limits;
@@ -12,7 +13,7 @@ from flexshaft.montecarlo.samples import (
     EccentricityDistribution,
     ImbalanceDraws,
     UnitResponses,
-    balance_grade_eccentricity,
+    bay_unbalances,
     draw_imbalance,
     sample_outputs,
     unit_responses,
@@ -26,7 +27,7 @@ __all__ = [
     "MonteCarloSampler",
     "RunupSamples",
     "UnitResponses",
-    "balance_grade_eccentricity",
+    "bay_unbalances",
     "draw_imbalance",
     "montecarlo_study",
     "run_montecarlo",

@@ -231,7 +231,9 @@ def run_montecarlo(
     ----------
     grade_mm_s : float, optional
         Balance grade G [mm/s]: each bay's eccentricity is drawn from
-        ``EccentricityDistribution.from_grade(G, operating speed)`` ("disk").
+        ``EccentricityDistribution.from_grade(G, Ω_max)`` ("disk"), Ω_max the highest operating
+        speed (``[operating] speed_range``), as the design's own ``balance_grade``
+        (:func:`flexshaft.assembly.balance.design_eccentricity`).
     distribution : EccentricityDistribution, optional
         Instead of a grade (one of the two is required).
     placement : {"uniform", "mid_bay"}
@@ -245,7 +247,7 @@ def run_montecarlo(
     if (grade_mm_s is None) == (distribution is None):
         raise ValueError("give exactly one of grade_mm_s (balance grade, mm/s) or distribution")
     if distribution is None:
-        distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_rad_s)
+        distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_limits[1])
     for name, value in (("gap", gap), ("force_limit", force_limit)):
         if value is not None and not (np.isfinite(value) and value > 0):
             raise ValueError(f"{name} must be > 0, got {value!r}")
