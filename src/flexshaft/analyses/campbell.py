@@ -21,7 +21,7 @@ import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce, refine_set
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
@@ -144,7 +144,10 @@ def track_modes(
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
-    The first speed fixes the identities (the lowest ``n_modes`` candidates by |s|). With
+    The first speed fixes the identities and their numbering: the ``n_modes`` candidates of
+    :func:`~flexshaft.analyses.eigen.lowest_modes`, refined and numbered by damped frequency, as
+    :func:`~flexshaft.analyses.modal.modes` numbers the modes at that speed (column k is mode
+    k + 1 of its tables). With
     ``refine_loss`` (the default path) each later speed is first tried by continuation: every
     mode's eigenvalue is extrapolated linearly from the previous speeds and converged by
     Newton's method on its loss-consistent problem; the step is accepted when every mode
@@ -171,6 +174,9 @@ def track_modes(
         if step is None:
             step = _match(red, solve, speed, prev, n_modes, refine_loss and viscous is None)
         s_k, Y_k = step
+        if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
+            first = np.lexsort((np.abs(s_k), s_k.imag))
+            s_k, Y_k = s_k[first], Y_k[:, first]
         Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
@@ -218,7 +224,7 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
             "ask for fewer modes or a larger basis"
         )
     if prev is None:
-        idx = np.arange(n_modes)
+        idx = lowest_modes(lam, n_modes)
     else:
         lam_prev, Y_prev = prev
         scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)

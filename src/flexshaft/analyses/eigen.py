@@ -75,6 +75,7 @@ __all__ = [
     "refine_set",
     "newton",
     "damped_modes",
+    "lowest_modes",
 ]
 
 #: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
@@ -556,19 +557,44 @@ def _duplicate(found: np.ndarray, s: complex) -> bool:
     return bool(found.size) and bool(np.any(np.abs(found - s) <= _SAME_ROOT * abs(s)))
 
 
+def lowest_modes(s: np.ndarray, n: int) -> np.ndarray:
+    """Indices of the ``n`` modes of lowest damped frequency Im s among the ``2 n`` of lowest
+    |s|, in increasing Im s (then |s|): the modes every table lists and numbers.
+
+    Numbered by damped frequency, the frequency the tables print: a heavily damped mode
+    (ζ = 0.14 in the tuned design) has a damped frequency below a lighter one's of smaller |s|.
+    Chosen by damped frequency too, so that a list of n modes is the start of a longer one
+    (the whirl stability's 10 modes are the Campbell diagram's first 10 of 12), unless a mode
+    beyond the ``2 n`` of lowest |s| is damped below them. Only among those: a root all but
+    critically damped (Im s a millionth of |s|, as the viscous internal-damping model gives the
+    stiff axial DOFs) is no vibration mode of the band, however low its Im s.
+
+    Parameters
+    ----------
+    s : ndarray
+        Eigenvalues [rad/s] (a divergent root is real: Im s = 0 puts it first).
+    n : int
+        Modes wanted (all of them when there are fewer).
+    """
+    s = np.asarray(s)
+    pool = np.argsort(np.abs(s), kind="stable")[: 2 * n]
+    return pool[np.lexsort((np.abs(s[pool]), s[pool].imag))[:n]]
+
+
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
-    Returns ``(s, Y)`` sorted by |s| (undamped natural frequency), Y modal coordinates.
-    Divergent roots (real s > 0, :func:`spectrum`) are modes too: they are returned with
+    Returns ``(s, Y)`` in increasing damped frequency Im s, Y modal coordinates: the candidates
+    of :func:`lowest_modes`, refined, then ordered again (the refinement moves each a little).
+    Divergent roots (real s > 0, :func:`spectrum`) are modes too: they are returned first, with
     Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic loss is
     defined for harmonic motion only and cannot hold a static divergence).
     """
     lam, Y, Y_div, div = spectrum(red, speed)
-    n = min(n_modes, lam.size)
-    out_s, out_y = refine_set(red, speed, lam[:n], Y[:, :n])
+    wanted = lowest_modes(lam, n_modes)
+    out_s, out_y = refine_set(red, speed, lam[wanted], Y[:, wanted])
     if div.size:
         out_s = np.concatenate([out_s, div.astype(complex)])
         out_y = np.hstack([out_y, Y_div.astype(complex)])
-    order = np.argsort(np.abs(out_s))[:n_modes]
+    order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
     return out_s[order], out_y[:, order]

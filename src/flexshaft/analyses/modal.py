@@ -17,7 +17,7 @@ import numpy as np
 
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.datasets import modes_dataset
-from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
+from flexshaft.analyses.eigen import damped_modes, lowest_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.dofs import DofMap
@@ -40,7 +40,10 @@ def _log_decrement(zeta: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class Modes(ResultMixin):
-    """Eigen-solution at one speed, sorted by undamped natural frequency |s|.
+    """Eigen-solution at one speed: the lowest modes, numbered by damped frequency Im s / 2π
+    (:attr:`frequencies`, the f of every table; mode ``k`` of the Python API is mode ``k + 1``
+    of the command line and the report; :func:`~flexshaft.analyses.eigen.lowest_modes`). A
+    divergent root (Im s = 0) comes first.
 
     Attributes
     ----------
@@ -82,7 +85,10 @@ class Modes(ResultMixin):
         rpm = rad_s_to_rpm(self.speed)
         freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
         more = ", ..." if self.eigenvalues.size > 6 else ""
-        return f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, internal damping {self.internal_damping!r})"
+        return (
+            f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, "
+            f"internal damping {self.internal_damping!r})"
+        )
 
     def to_dataset(self):
         """Frequencies, damping, labels and shaft/boom translations of every mode (xarray)."""
@@ -127,7 +133,10 @@ class Modes(ResultMixin):
             if dm.n_boom_nodes:
                 boom.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
         if modes is None and f_spin > 0:
-            title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm: the {chosen.size} modes nearest the spin frequency {f_spin:.1f} Hz"
+            title = (
+                f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm: the {chosen.size} modes nearest the spin "
+                f"frequency {f_spin:.1f} Hz"
+            )
         else:
             title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm"
         kwargs.setdefault("title", title)
@@ -197,7 +206,8 @@ def modes(
     speed : float
         Ω [rad/s], finite, >= 0 and at most :data:`~flexshaft.analyses.guards.MAX_SPEED`.
     n_modes : int
-        Number of lowest modes returned (>= 1).
+        Number of modes returned (>= 1), in increasing damped frequency
+        (:func:`~flexshaft.analyses.eigen.lowest_modes`).
     damped : bool
         Include the bearing dampers, the actuator laws' damping and controller dynamics, and
         the hysteretic loss of every member (gyroscopic terms are always in).
@@ -217,7 +227,7 @@ def modes(
         bare = red.undamped()
         lam, Z, Z_div, div = spectrum(bare, speed)
         s, Z = np.concatenate([lam, div.astype(complex)]), np.hstack([Z, Z_div.astype(complex)])
-        order = np.argsort(np.abs(s))[:n_modes]
+        order = lowest_modes(s, n_modes)
         s, Z = s[order], Z[:, order]
         red = bare
     full = model.dofs.expand(red.shapes(Z))
