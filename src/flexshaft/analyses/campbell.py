@@ -23,7 +23,7 @@ from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce, refine_set
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.campbell import campbell_figure
@@ -114,6 +114,32 @@ class EigenvalueCurves:
         """δ = 2π ζ/√(1 − ζ²) [-]."""
         z = self.damping_ratios
         return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
+
+    #: Columns of :meth:`mode_summary`.
+    SUMMARY_COLUMNS = ("mode", "f first [Hz]", "f last [Hz]", "kind", "whirl last", "min δ [-]", "at [rpm]")
+
+    def mode_summary(self) -> list[list]:
+        """One row per tracked mode, numbered from 1 as the modes at the first speed: its damped
+        frequency at the first and the last speed [Hz], kind and whirl at the last speed, and its
+        smallest log decrement with the speed where it occurs [rpm]."""
+        kind = getattr(self, "kind", None)
+        whirl = self.whirl
+        delta = self.log_decrements
+        rows = []
+        for m in range(self.eigenvalues.shape[1]):
+            k = int(np.argmin(delta[:, m]))
+            rows.append(
+                [
+                    m + 1,
+                    float(self.frequencies[0, m]),
+                    float(self.frequencies[-1, m]),
+                    "—" if kind is None else str(kind[-1, m]),
+                    "—" if str(whirl[-1, m]) == "none" else str(whirl[-1, m]),
+                    float(delta[k, m]),
+                    float(rad_s_to_rpm(self.speeds[k])),
+                ]
+            )
+        return rows
 
 
 @dataclass(frozen=True)
@@ -283,6 +309,28 @@ class Campbell(EigenvalueCurves, ResultMixin):
         """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
 
         return curves_dataset(self, "Campbell diagram")
+
+    def _repr_html_(self) -> str:
+        crit = [[c.speed_rpm, c.mode + 1, c.harmonic, c.whirl] for c in self.critical_speeds]
+        out = html_table(self.SUMMARY_COLUMNS, self.mode_summary(), title=repr(self))
+        if crit:
+            out += html_table(("speed [rpm]", "mode", "harmonic", "whirl"), crit, title="critical speeds")
+        return out
+
+    def to_dataframe(self):
+        """The critical speeds, one row each: speed [rpm] and [rad/s], tracked mode (numbered
+        from 1), excitation order and whirl (pandas, imported here; xarray brings it). The
+        curves themselves: :meth:`to_dataset`."""
+        crit = self.critical_speeds
+        return dataframe(
+            {
+                "speed_rpm": [c.speed_rpm for c in crit],
+                "speed_rad_s": [c.speed for c in crit],
+                "mode": [c.mode + 1 for c in crit],
+                "harmonic": [c.harmonic for c in crit],
+                "whirl": [c.whirl for c in crit],
+            }
+        )
 
     def plot_campbell(
         self,

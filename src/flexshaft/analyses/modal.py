@@ -19,12 +19,12 @@ from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_mode
 from flexshaft.analyses.datasets import modes_dataset
 from flexshaft.analyses.eigen import damped_modes, lowest_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, dataframe, html_table, text_table
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.shapes import mode_shapes_figure
-from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
+from flexshaft.units import hz_to_rpm, rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
 
@@ -32,6 +32,10 @@ __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
 def default_basis_size(n_modes: int) -> int:
     """Modal basis used for ``n_modes`` wanted modes (truncation error ≲ 1e-5 on the baseline)."""
     return max(4 * n_modes, 60)
+
+
+#: Caption of the modes' tables.
+_CAPTION = "f damped frequency, ζ damping ratio, δ log decrement; modes numbered from 1 by f (Python index + 1)"
 
 
 def _log_decrement(zeta: np.ndarray) -> np.ndarray:
@@ -89,6 +93,60 @@ class Modes(ResultMixin):
             f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, "
             f"internal damping {self.internal_damping!r})"
         )
+
+    #: Columns of :meth:`table` as printed (unit in each header).
+    COLUMNS = ("mode", "f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "kind", "whirl", "component")
+
+    def table(self) -> list[dict]:
+        """One row per mode, numbered from 1 as the command line and the report number them:
+        damped frequency [Hz] and as a spin speed [rpm], damping ratio, log decrement, kind,
+        whirl, component and the shaft's share of the kinetic energy."""
+        return [
+            {
+                "mode": k + 1,
+                "frequency_Hz": float(self.frequencies[k]),
+                "frequency_rpm": float(hz_to_rpm(self.frequencies[k])),
+                "damping_ratio": float(self.damping_ratios[k]),
+                "log_decrement": float(self.log_decrements[k]),
+                "kind": str(self.kind[k]),
+                "whirl": str(self.whirl[k]),
+                "component": str(self.component[k]),
+                "shaft_energy_fraction": float(self.shaft_fractions[k]),
+            }
+            for k in range(self.eigenvalues.size)
+        ]
+
+    def _rows(self) -> list[list]:
+        return [
+            [
+                r["mode"],
+                r["frequency_Hz"],
+                r["frequency_rpm"],
+                r["damping_ratio"],
+                r["log_decrement"],
+                r["kind"],
+                "—" if r["whirl"] == "none" else r["whirl"],
+                r["component"],
+            ]
+            for r in self.table()
+        ]
+
+    def _title(self) -> str:
+        rpm = rad_s_to_rpm(self.speed)
+        return f"{self.eigenvalues.size} modes at {rpm:.0f} rpm ({self.internal_damping} internal damping)"
+
+    def __str__(self) -> str:
+        """The per-mode table (``print(m)``), numbered from 1."""
+        return text_table(self.COLUMNS, self._rows(), title=self._title(), caption=_CAPTION)
+
+    def _repr_html_(self) -> str:
+        return html_table(self.COLUMNS, self._rows(), title=self._title(), caption=_CAPTION)
+
+    def to_dataframe(self):
+        """:meth:`table` as a :class:`pandas.DataFrame` indexed by the mode number (from 1), SI
+        and engineering units in the column names (pandas is imported here; xarray brings it)."""
+        rows = self.table()
+        return dataframe({key: [r[key] for r in rows] for key in rows[0]} if rows else {"mode": []}, index="mode")
 
     def to_dataset(self):
         """Frequencies, damping, labels and shaft/boom translations of every mode (xarray)."""

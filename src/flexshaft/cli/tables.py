@@ -211,30 +211,12 @@ def verdict_table(verdict):
 
 
 def verdict_line(verdict) -> str:
-    """The verdict in one line, first of a run's output: ``verdict: FAIL — 2 of 9 checks fail:
-    whirl onset speed (3125 rpm; required ≥ 5520 rpm), …`` or ``verdict: PASS — 9 checks pass``,
-    and the checks not evaluated."""
-    from flexshaft.units import format_quantity
+    """The verdict in one line, first of a run's output after the design's:
+    ``verdict: FAIL — 2 of 9 checks fail: whirl onset speed (3125 rpm; required ≥ 5520 rpm), …``
+    (:func:`flexshaft.verdict.text.verdict_headline`)."""
+    from flexshaft.verdict.text import verdict_headline
 
-    def finding(check) -> str:
-        bound = "> " if check.lower_bound else ""
-        sense = "≥" if check.sense == "at least" else "≤"
-        return (
-            f"{check.title} ({bound}{format_quantity(check.kind, check.value)}; required {sense} "
-            f"{format_quantity(check.kind, check.limit)})"
-        )
-
-    n = len(verdict.checks)
-    failed, skipped = verdict.failed, verdict.not_evaluated
-    if failed:
-        text = f"verdict: FAIL — {len(failed)} of {n} checks fail: " + ", ".join(finding(c) for c in failed)
-    elif skipped:
-        text = f"verdict: PASS — {n - len(skipped)} of {n} checks pass"
-    else:
-        text = f"verdict: PASS — {n} checks pass"
-    if skipped:
-        text += f"; {len(skipped)} not evaluated: " + ", ".join(c.title for c in skipped)
-    return text
+    return f"verdict: {verdict_headline(verdict)}"
 
 
 # ------------------------------------------------------------------------------------------------
