@@ -21,10 +21,10 @@ import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.campbell import campbell_figure
@@ -116,6 +116,32 @@ class EigenvalueCurves:
         z = self.damping_ratios
         return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
 
+    #: Columns of :meth:`mode_summary`.
+    SUMMARY_COLUMNS = ("mode", "f first [Hz]", "f last [Hz]", "kind", "whirl last", "min δ [-]", "at [rpm]")
+
+    def mode_summary(self) -> list[list]:
+        """One row per tracked mode, numbered from 1 as the modes at the first speed: its damped
+        frequency at the first and the last speed [Hz], kind and whirl at the last speed, and its
+        smallest log decrement with the speed where it occurs [rpm]."""
+        kind = getattr(self, "kind", None)
+        whirl = self.whirl
+        delta = self.log_decrements
+        rows = []
+        for m in range(self.eigenvalues.shape[1]):
+            k = int(np.argmin(delta[:, m]))
+            rows.append(
+                [
+                    m + 1,
+                    float(self.frequencies[0, m]),
+                    float(self.frequencies[-1, m]),
+                    "—" if kind is None else str(kind[-1, m]),
+                    "—" if str(whirl[-1, m]) == "none" else str(whirl[-1, m]),
+                    float(delta[k, m]),
+                    float(rad_s_to_rpm(self.speeds[k])),
+                ]
+            )
+        return rows
+
 
 @dataclass(frozen=True)
 class TrackedModes:
@@ -145,15 +171,17 @@ def track_modes(
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
-    The first speed fixes the identities (the lowest ``n_modes`` eigenvalues by |s|). Each
-    later speed is first tried by continuation: every mode's eigenvalue is extrapolated
-    linearly from the previous speeds and converged on its own problem; with ``refine_loss``
-    (the hysteretic loss) that is :func:`~flexshaft.analyses.hysteretic_roots.mode_root`,
-    which continues both sides of the synchronous line and keeps the root consistent with its
-    side. The step is accepted when every mode converged, kept its shape (MAC ≥ 0.9 with the
-    previous speed) and no two modes landed on the same eigenvalue. Otherwise ``solve(speed)
-    -> (s, Y)`` gives all eigenvalues at the speed (default: with ``refine_loss`` the exact
-    loss-consistent set,
+    The first speed fixes the identities and their numbering: the ``n_modes`` roots of
+    :func:`~flexshaft.analyses.eigen.lowest_modes`, refined and numbered by damped frequency, as
+    :func:`~flexshaft.analyses.modal.modes` numbers the modes at that speed (column k is mode
+    k + 1 of its tables). Each later speed is first tried by continuation: every mode's
+    eigenvalue is extrapolated linearly from the previous speeds and converged on its own
+    problem; with ``refine_loss`` (the hysteretic loss) that is
+    :func:`~flexshaft.analyses.hysteretic_roots.mode_root`, which continues both sides of the
+    synchronous line and keeps the root consistent with its side. The step is accepted when
+    every mode converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes
+    landed on the same eigenvalue. Otherwise ``solve(speed) -> (s, Y)`` gives all eigenvalues
+    at the speed (default: with ``refine_loss`` the exact loss-consistent set,
     :func:`~flexshaft.analyses.hysteretic_roots.consistent_roots`; else the loss-free state
     matrix), matched to the previous curves by maximum MAC with a small frequency-distance
     penalty (optimal assignment). ``viscous(speed)`` gives the weights of the thesis's viscous
@@ -179,6 +207,9 @@ def track_modes(
         if step is None:
             step = _match(red, solve, speed, prev, n_modes, hysteretic)
         s_k, Y_k = step
+        if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
+            first = np.lexsort((np.abs(s_k), s_k.imag))
+            s_k, Y_k = s_k[first], Y_k[:, first]
         Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
@@ -232,7 +263,7 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
             "ask for fewer modes or a larger basis"
         )
     if prev is None:
-        idx = np.arange(n_modes)
+        idx = lowest_modes(lam, n_modes)
     else:
         lam_prev, Y_prev = prev
         scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
@@ -294,6 +325,28 @@ class Campbell(EigenvalueCurves, ResultMixin):
         """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
 
         return curves_dataset(self, "Campbell diagram")
+
+    def _repr_html_(self) -> str:
+        crit = [[c.speed_rpm, c.mode + 1, c.harmonic, c.whirl] for c in self.critical_speeds]
+        out = html_table(self.SUMMARY_COLUMNS, self.mode_summary(), title=repr(self))
+        if crit:
+            out += html_table(("speed [rpm]", "mode", "harmonic", "whirl"), crit, title="critical speeds")
+        return out
+
+    def to_dataframe(self):
+        """The critical speeds, one row each: speed [rpm] and [rad/s], tracked mode (numbered
+        from 1), excitation order and whirl (pandas, imported here; xarray brings it). The
+        curves themselves: :meth:`to_dataset`."""
+        crit = self.critical_speeds
+        return dataframe(
+            {
+                "speed_rpm": [c.speed_rpm for c in crit],
+                "speed_rad_s": [c.speed for c in crit],
+                "mode": [c.mode + 1 for c in crit],
+                "harmonic": [c.harmonic for c in crit],
+                "whirl": [c.whirl for c in crit],
+            }
+        )
 
     def plot_campbell(
         self,

@@ -72,6 +72,7 @@ __all__ = [
     "candidates",
     "divergent_roots",
     "newton",
+    "lowest_modes",
 ]
 
 #: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
@@ -502,3 +503,27 @@ def newton(
             return s_new, y, s_new.imag > 0
         s = s_new
     return s, y, False
+
+
+def lowest_modes(s: np.ndarray, n: int) -> np.ndarray:
+    """Indices of the ``n`` modes of lowest damped frequency Im s among the ``2 n`` of lowest
+    |s|, in increasing Im s (then |s|): the modes every table lists and numbers.
+
+    Numbered by damped frequency, the frequency the tables print: a heavily damped mode
+    (ζ = 0.14 in the tuned design) has a damped frequency below a lighter one's of smaller |s|.
+    Chosen by damped frequency too, so that a list of n modes is the start of a longer one
+    (the whirl stability's 10 modes are the Campbell diagram's first 10 of 12), unless a mode
+    beyond the ``2 n`` of lowest |s| is damped below them. Only among those: a root all but
+    critically damped (Im s a millionth of |s|, as the viscous internal-damping model gives the
+    stiff axial DOFs) is no vibration mode of the band, however low its Im s.
+
+    Parameters
+    ----------
+    s : ndarray
+        Eigenvalues [rad/s] (a divergent root is real: Im s = 0 puts it first).
+    n : int
+        Modes wanted (all of them when there are fewer).
+    """
+    s = np.asarray(s)
+    pool = np.argsort(np.abs(s), kind="stable")[: 2 * n]
+    return pool[np.lexsort((np.abs(s[pool]), s[pool].imag))[:n]]

@@ -58,7 +58,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as la
 
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, spectrum
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, spectrum
 from flexshaft.analyses.loss import SYNCHRONOUS_TOLERANCE, LossCoefficients, frequency_coefficients
 
 __all__ = [
@@ -297,18 +297,21 @@ def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tu
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
-    Returns ``(s, Y)`` sorted by |s| (undamped natural frequency), Y modal coordinates: the
-    eigenvalues R(Ω) of :func:`consistent_roots` (a mode in a fold near the synchronous line
-    has two). Divergent roots (real s > 0, :func:`~flexshaft.analyses.eigen.spectrum`) are
-    modes too: they are returned with Im s = 0 (ζ = −1) as computed from the loss-free state
-    matrix (the hysteretic loss is defined for harmonic motion only and cannot hold a static
-    divergence).
+    Returns ``(s, Y)`` in increasing damped frequency Im s (then |s|), Y modal coordinates:
+    among the eigenvalues R(Ω) of :func:`consistent_roots` (a mode in a fold near the
+    synchronous line has two), the ``n_modes`` of
+    :func:`~flexshaft.analyses.eigen.lowest_modes` (lowest damped frequency among the 2n of
+    lowest |s|: the modes every table numbers), refined by :func:`_polish`. Divergent roots
+    (real s > 0, :func:`~flexshaft.analyses.eigen.spectrum`) are modes too: they are returned
+    first, with Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic
+    loss is defined for harmonic motion only and cannot hold a static divergence).
     """
     out_s, out_y = consistent_roots(red, speed)
-    out_s, out_y = _polish(red, speed, out_s[:n_modes], out_y[:, :n_modes])
+    wanted = lowest_modes(out_s, n_modes)
+    out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
     _, _, Y_div, div = spectrum(red, speed)
     if div.size:
         out_s = np.concatenate([out_s, div.astype(complex)])
         out_y = np.hstack([out_y, Y_div.astype(complex)])
-    order = np.argsort(np.abs(out_s), kind="stable")[:n_modes]
+    order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
     return out_s[order], out_y[:, order]

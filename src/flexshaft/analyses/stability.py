@@ -58,7 +58,7 @@ from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.hysteretic_roots import mode_root
 from flexshaft.analyses.loss import viscous_equivalent
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.model import rotation_generator as _rotation_generator
 from flexshaft.parallel.threads import single_blas_thread
@@ -133,6 +133,9 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
             f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
             f"{self.damping_model} method, internal damping {self.internal_damping!r})"
         )
+
+    def _repr_html_(self) -> str:
+        return html_table(self.SUMMARY_COLUMNS, self.mode_summary(), title=repr(self))
 
     def to_dataset(self):
         """Tracked eigenvalues over speed with the onset speed (xarray)."""

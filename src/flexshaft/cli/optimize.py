@@ -93,7 +93,7 @@ def _load_design(path: Path | None, embedded: str):
 
 def _base_label(path: Path | None) -> str:
     if path is None:
-        return "base (Table 3.1 baseline)"
+        return "base (tuned design)"
     return f"base ({path.stem if path.suffix == '.toml' else path.name})"
 
 
@@ -101,7 +101,8 @@ def _base_label(path: Path | None) -> str:
 def optimize(
     design: Path | None = typer.Argument(
         None,
-        help="Base design file (TOML). Default: the embedded Table 3.1 baseline (`flexshaft baseline`).",
+        help="Base design file (TOML). Default: the embedded tuned design (`flexshaft baseline --name tuned`), as "
+        "for every command.",
         show_default=False,
     ),
     budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
@@ -147,11 +148,18 @@ def optimize(
 ) -> None:
     """Search the designs that pass every requirement for the best trade-off of the objectives
     (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
+    from flexshaft.cli.tables import design_heading, design_source
+    from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS
     from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.sweep import SweepError
 
-    base = _load_design(design, "baseline")
+    base = _load_design(design, DEFAULT_DESIGN)
+    if design is not None and not design.exists() and str(design) in EMBEDDED_DESIGNS:
+        source = design_source(None, str(design))  # an embedded design by name
+    else:
+        source = design_source(design)
+    typer.echo(plain(design_heading(base.name, source)))
     refs = {}
     for item in reference or []:
         refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)

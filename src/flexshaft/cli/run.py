@@ -66,10 +66,9 @@ def run(
     svg: Annotated[bool, typer.Option("--svg", help="Also write every figure as SVG (PNG always).")] = False,
 ) -> None:
     """Analyse a design (default: the embedded tuned design), check it against its requirements
-    and write the report folder. Shows each stage and its time on a terminal."""
-    from flexshaft.design import DEFAULT_DESIGN
-
-    loaded = load_design_argument(design, DEFAULT_DESIGN)
+    and write the report folder. Prints the design and the verdict first, the tables after; shows
+    each stage and its time on a terminal."""
+    loaded = load_design_argument(design)
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.parallel.pool import worker_pool
@@ -113,18 +112,31 @@ def run(
     if as_json:
         print_json(data)
     else:
-        _print_run(assessment, data, page, progress.elapsed)
+        _print_run(assessment, data, page, progress.elapsed, design)
     if failed:
         raise typer.Exit(code=EXIT_REQUIREMENT_FAILED)
 
 
-def _print_run(assessment, data: dict, page: Path, seconds: float) -> None:
-    from flexshaft.cli.tables import modes_table, print_line, sig, stdout_console, verdict_table
+def _print_run(assessment, data: dict, page: Path, seconds: float, path: Path | None) -> None:
+    """The design, the verdict in one line, the model and the modes, the headline numbers, the
+    verdict table and where the report is."""
+    from flexshaft.cli.tables import (
+        design_heading,
+        design_source,
+        modes_table,
+        print_line,
+        sig,
+        stdout_console,
+        verdict_line,
+        verdict_table,
+    )
     from flexshaft.units import m_to_mm
 
     console = stdout_console()
     s = data["summary"]
-    print_line(console, s["name"], style="bold")
+    verdict = assessment.verdict
+    print_line(console, design_heading(s["name"], design_source(path)), style="bold")
+    print_line(console, verdict_line(verdict), style="bold green" if verdict.passed else "bold red")
     print_line(
         console,
         f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "
@@ -150,12 +162,5 @@ def _print_run(assessment, data: dict, page: Path, seconds: float) -> None:
         f"spin-up peak shaft orbit {sig(m_to_mm(imbalance['max_shaft_orbit_spin_up_m']), 3)} mm "
         f"at {sig(imbalance['speed_of_max_rpm'])} rpm",
     )
-    verdict = assessment.verdict
     console.print(verdict_table(verdict))
-    head = "PASS" if verdict.passed else "FAIL"
-    print_line(
-        console,
-        f"verdict: {head}: {verdict.summary.split(': ', 1)[1]}",
-        style="bold green" if verdict.passed else "bold red",
-    )
     print_line(console, f"report written to {page} in {sig(seconds, 3)} s (stage times in timings.json)")

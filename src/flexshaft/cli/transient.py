@@ -92,11 +92,11 @@ def runup(
     if as_json:
         print_json(data)
         return
-    from flexshaft.cli.tables import print_line, sig, stdout_console, table
+    from flexshaft.cli.tables import design_heading, design_source, print_line, sig, stdout_console, table
     from flexshaft.units import m_to_mm
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, design_source(design)), style="bold")
     print_line(
         console,
         f"run-up {sig(start_rpm)} → {sig(rad_s_to_rpm(stop))} rpm in {sig(duration)} s "
@@ -208,10 +208,10 @@ def montecarlo(
     if as_json:
         print_json(data)
         return
-    from flexshaft.cli.tables import print_line, sig, stdout_console
+    from flexshaft.cli.tables import design_heading, design_source, print_line, sig, stdout_console
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, design_source(design)), style="bold")
     print_line(console, f"{samples} samples, balance grade G {sig(grade)} mm/s, seed {seed}")
     for key, label, scale, unit in (
         ("shaft_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),

@@ -15,6 +15,8 @@ all go through it, so one design at one resolution is judged identically by each
 
 from __future__ import annotations
 
+import dataclasses
+import html
 from collections.abc import Callable
 from concurrent.futures import Executor
 from dataclasses import dataclass
@@ -22,6 +24,7 @@ from dataclasses import dataclass
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.design import Design
 from flexshaft.resolution import REPORT, Resolution
+from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.gather import gather_evidence
@@ -41,6 +44,30 @@ class Assessment(PointAnalyses):
 
     evidence: Evidence
     verdict: Verdict
+
+    def __repr__(self) -> str:
+        return f"Assessment({self.design.name!r} at the {self.resolution.name} resolution: {self.verdict.summary})"
+
+    def _repr_html_(self) -> str:
+        """The design, the verdict headline and table (:meth:`Verdict._repr_html_`), the
+        analyses it holds and the notes."""
+        rpm = rad_s_to_rpm(self.operating_speed)
+        fields = [f.name for f in dataclasses.fields(PointAnalyses) if getattr(self, f.name) is not None]
+        analyses = [n for n in fields if n not in ("design", "resolution", "model", "notes")]
+        parts = [
+            f"<p><b>{html.escape(self.design.name)}</b><br>assessed at {rpm:.0f} rpm, "
+            f"{html.escape(self.resolution.name)} resolution</p>",
+            self.verdict._repr_html_(),
+            '<p style="font-size:smaller">analyses: '
+            + html.escape(", ".join(f".{n}" for n in (*analyses, "evidence")))
+            + "; the table: .to_dataframe()</p>",
+        ]
+        parts += [f'<p style="font-size:smaller">note: {html.escape(note)}</p>' for note in self.notes]
+        return "".join(parts)
+
+    def to_dataframe(self):
+        """The verdict's checks (:meth:`Verdict.to_dataframe`; pandas imported there)."""
+        return self.verdict.to_dataframe()
 
 
 def assess(
