@@ -12,7 +12,8 @@ a value not seen before (log-spaced from 2e5 to 2e6 N/m, so that no cache helps)
   screening grids with the Campbell diagram, the verdict and figures as JSON; ``server_s``), the
   CPU time of the worker's assessment and payload (``cpu_s``), and the HTTP time seen by the
   client;
-* **browser round trip**, in headless Chromium (Debian's, driven by playwright as the tests
+* **browser round trip**, in headless Chromium (after the time to open the page to its first
+  verdict, plotly.js of 4.8 MB included) (Debian's, driven by playwright as the tests
   do): from typing the new K_p into its field (Enter) to the verdict table and every figure
   redrawn (the page's own measure, ``performance.now()`` around the request and the drawing).
 
@@ -114,8 +115,10 @@ def browser_side(url: str, n: int) -> None:
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=FLAGS)
         page = browser.new_page(viewport={"width": 1400, "height": 1000})
+        start = time.perf_counter()
         page.goto(url)
         wait_seq(page, -1)
+        print(f"page opened to its first verdict and figures in {time.perf_counter() - start:.2f} s")
         key = page.evaluate("flexshaftExplore.state.controls.find(c => c.key.endsWith('.kp')).key")
         selector = f"[id='ctl-{key}']"
         trips = []
