@@ -4,7 +4,8 @@ playwright, against ``flexshaft explore`` started as a user would start it.
 One session of the page, in order: it opens on the tuned design (PASS); K_p of one actuator
 lowered to 2e5 N/m turns the verdict to FAIL on the actuator excursion (the design the
 screening assessment judges so, tests/test_explore.py) within the update latency; a wall of
-60 mm shows the schema's message at the wall's field; the design file downloads, loads back as
+60 mm typed while an update computes shows the schema's message at the wall's field, and keeps
+it when that update answers; the design file downloads, loads back as
 the base and gives the same verdict; ``flexshaft run --strict`` judges the downloaded file to
 the same verdict, check by check (exit code 3 for FAIL), and its ``interactive.html`` draws its
 figures offline; a sweep of K_p draws every check's margin; the page's full-resolution run
@@ -181,12 +182,17 @@ def test_the_explorer_in_a_browser(explorer, browser, tmp_path):
     round_trip = float(page.evaluate("document.body.dataset.roundTrip"))
     assert round_trip < ROUND_TRIP_BOUND, f"update took {round_trip:.2f} s"
 
-    # an invalid value: the schema's message at the field, the verdict of the last valid design kept
-    page.fill("[id='ctl-shaft.wall_thickness']", "60")
-    page.press("[id='ctl-shaft.wall_thickness']", "Enter")
+    # an invalid value typed while an update (K_d 560 -> 561 N s/m) is still computing: the
+    # schema's message at the field, kept when that older update answers after the refusal
+    before = _seq(page)
+    _set(page, "[id='ctl-bearings[1].kd']", "561")
+    _set(page, "[id='ctl-shaft.wall_thickness']", "60")
+    _wait_update(page, before)
     _until(page, "document.getElementById('err-shaft.wall_thickness').textContent.length > 0")
     message = page.text_content("[id='err-shaft.wall_thickness']")
     assert "shaft.wall_thickness: must be less than outer_diameter/2" in message
+    assert page.input_value("[id='ctl-shaft.wall_thickness']") == "60"
+    assert page.input_value("[id='ctl-bearings[1].kd']") == "561"
     assert _verdict(page) == verdict
 
     # a sweep of K_p: every check's normalised margin at three gains
@@ -204,6 +210,7 @@ def test_the_explorer_in_a_browser(explorer, browser, tmp_path):
     download.value.save_as(saved)
     text = saved.read_text(encoding="utf-8")
     assert "CHANGED bearings[1].kp = 200000.0  (was 500000.0)" in text
+    assert "CHANGED bearings[1].kd = 561.0  (was 560.0)" in text
     assert page.text_content("#run-command").startswith("flexshaft run ")
     before = _seq(page)
     page.set_input_files("#load-file", str(saved))

@@ -108,7 +108,7 @@ function edit(key, input) {
   input.classList.add("changed");
   const value = input.value.trim() === "" ? NaN : Number(input.value);
   if (!isFinite(value)) {
-    showProblems([{path: key, message: `expected a number, got "${input.value}"`}], key);
+    showProblems([{path: key, message: `expected a number, got "${input.value}"`}], key, state.seq + 0.5);
     return;
   }
   update({[key]: value}, {}, key);
@@ -126,7 +126,10 @@ function controlOf(path) {
   return state.controls.find((c) => c.key === path || c.paths.some((p) => path === p || path.startsWith(p + ".") || path.startsWith(p + "[")));
 }
 
-function showProblems(problems, editedKey) {
+// The problems of the newest refused request: an older update that answers after it must not
+// clear them (its design is still the last valid one, but the refused value stays on show).
+function showProblems(problems, editedKey, seq) {
+  const typed = {};
   clearProblems();
   for (const p of problems) {
     const text = `${p.path}: ${p.message}`;
@@ -135,13 +138,24 @@ function showProblems(problems, editedKey) {
       const box = $("err-" + control.key);
       box.textContent = box.textContent ? box.textContent + "\n" + text : text;
       $("ctl-" + control.key).classList.add("invalid");
+      typed[control.key] = $("ctl-" + control.key).value;
     } else if (editedKey === "advanced") {
       $("advanced-error").textContent += ($("advanced-error").textContent ? "\n" : "") + text;
     } else {
       $("general-error").textContent += ($("general-error").textContent ? "\n" : "") + text;
     }
   }
-  $("verdict-status").classList.add("stale");
+  state.refused = {seq, problems, editedKey, typed};
+}
+
+function keepRefused(seq) {
+  const refused = state.refused;
+  if (!refused || refused.seq < seq) { state.refused = null; return; }
+  for (const [key, value] of Object.entries(refused.typed)) {
+    const input = $("ctl-" + key);
+    if (input) { input.value = value; state.lastSent[key] = value; }
+  }
+  showProblems(refused.problems, refused.editedKey, refused.seq);
 }
 
 async function update(edits, advanced, editedKey) {
@@ -153,7 +167,7 @@ async function update(edits, advanced, editedKey) {
   });
   if (seq === state.seq) $("busy").hidden = true;
   if (!ok) {
-    if (seq === state.seq) showProblems(data.problems || [{path: "request", message: data.message || "refused"}], editedKey);
+    if (seq === state.seq) showProblems(data.problems || [{path: "request", message: data.message || "refused"}], editedKey, seq);
     return;
   }
   if (data.superseded || seq < state.shown) return;
@@ -163,6 +177,7 @@ async function update(edits, advanced, editedKey) {
   clearProblems();
   refreshControls(data.controls);
   render(data.results);
+  keepRefused(seq);
   const roundTrip = (performance.now() - started) / 1000;
   $("update-time").textContent =
     `update ${roundTrip.toFixed(2)} s (server ${data.server_s.toFixed(2)} s, assessment CPU ${data.results.cpu_s.toFixed(2)} s)`;
@@ -222,7 +237,7 @@ $("advanced-apply").addEventListener("click", () => {
 
 $("download").addEventListener("click", async () => {
   const {ok, data} = await api("/api/export", {base: state.base, overrides: state.overrides, verdict: state.summary});
-  if (!ok) { showProblems(data.problems || [], null); return; }
+  if (!ok) { showProblems(data.problems || [], null, state.seq); return; }
   const blob = new Blob([data.text], {type: "application/toml"});
   const link = document.createElement("a");
   link.href = URL.createObjectURL(blob);
@@ -329,7 +344,7 @@ $("sweep-run").addEventListener("click", async () => {
   const layout = {
     title: {text: `Normalised margin of every check against ${control.label} [${control.unit}]`, font: {size: 14}},
     xaxis: {title: {text: `${control.label} [${control.unit}]`}, type: control.log ? "log" : "linear"},
-    yaxis: {title: {text: "normalised margin [-] (< 0 fails)"}, range: [-1, 2]},
+    yaxis: {title: {text: "normalised margin [-] (< 0 fails; above 2 off scale: zoom out)"}, range: [-1, 2]},
     shapes: [
       {type: "line", xref: "paper", x0: 0, x1: 1, y0: 0, y1: 0, line: {color: "#c62828", width: 1.5}},
       {type: "line", yref: "paper", x0: control.value, x1: control.value, y0: 0, y1: 1, line: {color: "#444", dash: "dash"}},
