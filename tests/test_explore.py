@@ -261,6 +261,14 @@ def test_explore_without_its_extra_says_how_to_install_it():
     assert "Traceback" not in done.stderr
 
 
+def test_only_loopback_addresses_count_as_local():
+    """--host warns unless the address is this machine's loopback (127.0.0.0/8, ::1, localhost)."""
+    from flexshaft.explore.launch import is_local
+
+    assert all(is_local(h) for h in ("127.0.0.1", "127.0.0.2", "::1", "localhost"))
+    assert not any(is_local(h) for h in ("0.0.0.0", "::", "192.168.1.10", "example.org"))
+
+
 def test_import_flexshaft_cli_does_not_load_the_web_stack():
     code = (
         "import sys, flexshaft, flexshaft.cli\n"
