@@ -166,8 +166,9 @@ def optimize(
     verify: bool = typer.Option(True, "--verify/--no-verify", help="Re-verify the written designs with the full run."),
     as_json: JsonOption = False,
 ) -> None:
-    """Search the designs that pass every requirement for the best trade-off of the objectives
-    (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
+    """Search the designs that pass every requirement for the best trade-off of the objectives,
+    by default the driveline mass against the smallest requirement margin (NSGA-II from pymoo:
+    pip install the 'optimize' extra of flexshaft)."""
     from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.optimize.variables import DEFAULT_OBJECTIVES
