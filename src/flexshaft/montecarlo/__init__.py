@@ -5,9 +5,12 @@
   responses that make each sample a weighted sum (linearity);
 * :mod:`~flexshaft.montecarlo.steady`: the steady spin-up of every sample on the sweep engine,
   with the probabilities of exceeding the actuators' limits;
-* :mod:`~flexshaft.montecarlo.runup`: the same samples over a run-up transient.
+* :mod:`~flexshaft.montecarlo.runup`: the same samples over a run-up transient;
+* :mod:`~flexshaft.montecarlo.confidence`: exceedance counts and their exact (Clopper–Pearson)
+  upper confidence bounds.
 """
 
+from flexshaft.montecarlo.confidence import Exceedance, clopper_pearson_upper
 from flexshaft.montecarlo.runup import RunupSamples, runup_montecarlo
 from flexshaft.montecarlo.samples import (
     EccentricityDistribution,
@@ -22,12 +25,14 @@ from flexshaft.montecarlo.steady import MonteCarloResult, MonteCarloSampler, mon
 
 __all__ = [
     "EccentricityDistribution",
+    "Exceedance",
     "ImbalanceDraws",
     "MonteCarloResult",
     "MonteCarloSampler",
     "RunupSamples",
     "UnitResponses",
     "bay_unbalances",
+    "clopper_pearson_upper",
     "draw_imbalance",
     "montecarlo_study",
     "run_montecarlo",
