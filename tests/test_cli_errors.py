@@ -142,10 +142,10 @@ def test_user_errors_exit_2_and_debug_adds_the_traceback(tmp_path: Path) -> None
 def test_rich_markup_in_names_is_printed_literally(tmp_path: Path) -> None:
     design = _write(tmp_path, "markup.toml", _named('"[/bold] x [red]y"', bearing='"[bold]amb[/]"'))
     check = runner.invoke(app, ["check", str(design)])
-    assert (check.exit_code, check.stdout) == (0, "ok: [/bold] x [red]y\n")
+    assert (check.exit_code, check.stdout) == (0, f"ok: [/bold] x [red]y ({design})\n")
     modes = runner.invoke(app, ["modes", str(design), "--n-modes", "3"])
     assert modes.exit_code == 0, modes.output
-    assert modes.stdout.splitlines()[0] == "[/bold] x [red]y"
+    assert modes.stdout.splitlines()[0] == f"design: [/bold] x [red]y ({design})"
     data = json.loads(runner.invoke(app, ["modes", str(design), "--n-modes", "3", "--json"]).stdout)
     assert data["design"] == "[/bold] x [red]y"
 

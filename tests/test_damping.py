@@ -124,13 +124,19 @@ def test_static_load_on_the_spinning_shaft_deflects_towards_the_spin_by_atan_eta
 @pytest.mark.parametrize("internal_damping", ["rotating", "thesis"])
 def test_jeffcott_eigenvalues_are_the_consistent_hysteretic_roots(internal_damping):
     """Forward: m s² + c_e s + k(1 + iη σ) = 0 with σ = sgn(ω − Ω) (rotating) or 1 (thesis);
-    backward: the conjugate of m s² + c_e s + k(1 − iη) = 0 (its loss sign is always +)."""
+    backward: the conjugate of m s² + c_e s + k(1 − iη) = 0 (its loss sign is always +).
+    Both forward roots have the frequency ω_d (the σ = −1 equation is the conjugate of the
+    σ = +1 one, whose roots sum to −c_e/m), so the consistent forward root switches at Ω = ω_d;
+    speeds 1e-3 either side of it are included (the test rotor's frequencies carry a round-off
+    of about 1e-5, tests/test_stability.py::basis_round_off)."""
     c_e = 2 * 0.003 * M_DISK * WN
     model = jeffcott(ETA, c_e, internal_damping)
-    for ratio in (0.0, 0.6, 1.4, 2.5):
-        speed = ratio * WN
+    roots = np.roots([M_DISK, c_e, K_SHAFT * (1 + 1j * ETA)])
+    w_d = roots[np.argmax(roots.imag)].imag
+    for ratio in (0.0, 0.6, 0.999, 1.001, 1.4, 2.5):
+        speed = ratio * w_d
         m = modes(model, speed, n_modes=2)
-        sigma = -1.0 if internal_damping == "rotating" and speed > WN else 1.0
+        sigma = -1.0 if internal_damping == "rotating" and speed > w_d else 1.0
         roots = np.roots([M_DISK, c_e, K_SHAFT * (1 + 1j * ETA * sigma)])
         forward = roots[np.argmax(roots.imag)]
         roots = np.roots([M_DISK, c_e, K_SHAFT * (1 - 1j * ETA)])

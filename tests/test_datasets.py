@@ -44,6 +44,11 @@ def test_modes(model, tmp_path):
     ds = round_trip(m, tmp_path)
     np.testing.assert_array_equal(ds.frequency.values, m.frequencies)
     np.testing.assert_array_equal(ds.log_decrement.values, m.log_decrements)
+    # and what they mean, from the definitions: s = −σ + iω_d, f = ω_d/2π [Hz]; the log decrement
+    # ln(x(t)/x(t + T_d)) = σ T_d = 2π σ/ω_d (equal to 2πζ/√(1 − ζ²), ζ = σ/|s|); a few ulps
+    s = m.eigenvalues
+    np.testing.assert_allclose(ds.frequency.values, s.imag / (2 * np.pi), rtol=1e-14)
+    np.testing.assert_allclose(ds.log_decrement.values, -2 * np.pi * s.real / s.imag, rtol=1e-12)
     assert list(decode(ds.kind)) == list(m.kind) and list(decode(ds.whirl)) == list(m.whirl)
     v = m.shapes[model.dofs.shaft(np.arange(model.dofs.n_shaft_nodes), "v")]  # (nodes, modes)
     np.testing.assert_array_equal(ds.shaft_v_real.values, v.real.T)

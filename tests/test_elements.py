@@ -116,7 +116,12 @@ def test_axial_and_torsional_rod_frequencies():
     converge as h²: with 400 elements the error of mode 3 is ≈ (5π/2·/400)²/24 ≈ 1.6e-5."""
     L = 1.0
     M, K, _, dm = tube_system(400, L, SECTION, ("u", "v", "w", "theta", "beta", "gamma"))
-    w = np.sqrt(la.eigh(K, M, eigvals_only=True))
+    # the axial and twist DOFs are uncoupled from bending (structural zeros, exact): their block
+    # alone holds these modes, a 800-DOF problem instead of 2400
+    nodes = np.arange(dm.n_shaft_nodes)
+    rod = np.isin(dm.free, np.concatenate([dm.shaft(nodes, "u"), dm.shaft(nodes, "theta")]))
+    assert not np.any(K[np.ix_(rod, ~rod)]) and not np.any(M[np.ix_(rod, ~rod)])
+    w = np.sqrt(la.eigh(K[np.ix_(rod, rod)], M[np.ix_(rod, rod)], eigvals_only=True))
     for c in (np.sqrt(E / RHO), np.sqrt(G_STEEL / RHO)):
         for n in (1, 2, 3):
             ref = (2 * n - 1) * np.pi / (2 * L) * c

@@ -15,7 +15,7 @@ docs/architecture.md):
     8  optimize, thesis, comparison, montecarlo, validation (users of the recipe and the thesis's
        studies; the published validation cases)
     9  report (HTML from results)
-    10 cli
+    10 cli, explore (the browser explorer: it runs a design through cli.run's pipeline)
 
 Every ``import``/``from`` statement counts, including those inside functions (a lazy import
 is still an arrow).
@@ -54,6 +54,7 @@ LAYERS = {
     "validation": 8,
     "report": 9,
     "cli": 10,
+    "explore": 10,
 }
 
 

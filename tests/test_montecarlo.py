@@ -29,7 +29,6 @@ from flexshaft.assembly.loads import imbalance_loads, per_bay_imbalance_loads
 from flexshaft.design import baseline_design, loads_design
 from flexshaft.montecarlo import (
     EccentricityDistribution,
-    balance_grade_eccentricity,
     draw_imbalance,
     run_montecarlo,
     sample_outputs,
@@ -91,11 +90,11 @@ def two_bay():
 
 def test_balance_grade_relation():
     """ISO 21940-11: e_per = G/Ω; G 6.3 at 4800 rpm is 12.53 µm, G 2.5 at 3000 rpm 7.96 µm
-    (the standard's chart reads ~8 µm)."""
-    assert balance_grade_eccentricity(6.3, 4800 * np.pi / 30) == pytest.approx(12.533e-6, rel=1e-4)
-    assert balance_grade_eccentricity(2.5, 3000 * np.pi / 30) == pytest.approx(7.958e-6, rel=1e-3)
+    (the standard's chart reads ~8 µm): the distribution's scale from a grade."""
+    assert EccentricityDistribution.from_grade(6.3, 4800 * np.pi / 30).scale == pytest.approx(12.533e-6, rel=1e-4)
+    assert EccentricityDistribution.from_grade(2.5, 3000 * np.pi / 30).scale == pytest.approx(7.958e-6, rel=1e-3)
     with pytest.raises(ValueError, match="grade_mm_s"):
-        balance_grade_eccentricity(-1.0, 100.0)
+        EccentricityDistribution.from_grade(-1.0, 100.0)
 
 
 @pytest.mark.parametrize(
@@ -172,7 +171,9 @@ def test_sample_mean_and_spread_converge_at_the_inverse_square_root_rate(two_bay
     design, model = two_bay
     speed = 300.0
     units, (a1, a2) = _two_phasor(two_bay, speed)
-    mean = 2 * (a1 + a2) * ellipe(4 * a1 * a2 / (a1 + a2) ** 2) / np.pi
+    # k² = 4a₁a₂/(a₁ + a₂)² = 1 − ((a₁ − a₂)/(a₁ + a₂))², written so that it never rounds above 1
+    # (a₁ = a₂ by symmetry here: 4a₁a₂/(a₁ + a₂)² can round to 1 + ε, where E(k²) is NaN)
+    mean = 2 * (a1 + a2) * ellipe(1 - ((a1 - a2) / (a1 + a2)) ** 2) / np.pi
     sigma = np.sqrt(a1**2 + a2**2 - mean**2)
     dist = EccentricityDistribution("fixed", design.loads.eccentricity)
     sizes = np.array([64, 256, 1024, 4096])

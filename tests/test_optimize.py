@@ -153,29 +153,18 @@ def _margins(res) -> np.ndarray:
     return np.array([normalised_margin(c, res.model.speed) for c in res.verdict.checks])
 
 
-def test_verdict_fidelity_equals_the_full_run_and_screening_is_close():
+@pytest.mark.parametrize("name", ["baseline", "current"])
+def test_verdict_fidelity_equals_the_full_run_and_screening_is_close(name):
     """The "verdict" fidelity computes only what the checks read, at the run's resolutions: every
     margin equals the full run's (rounding only). The "screening" fidelity samples the unbalance
     scan at 0.5 % of the operating speed instead of 0.2 % and the whirl stability at 21 speeds
     instead of 41: the critical speeds are still refined, the actuator peaks are not, so their
-    margins move by at most a few per cent of their limits (measured up to 1.4 % on these
-    designs; the bound 5 % says the screening ranks designs, the final ones are re-verified
-    with the full run), and every status is the same."""
-    tuned = tuned_design()
-    designs = [
-        tuned,
-        baseline_design(),
-        with_overrides(
-            tuned,
-            {
-                "shaft.wall_thickness": 0.002,
-                "shaft.layup": "(45/-45/10/-10)s",
-                "bearings[1].kp": 1e6,
-                "bearings[2].kd": 1500.0,
-            },
-        ),
-        embedded_design("current"),
-    ]  # segmented aluminium: metal strength and coupling angles too
+    margins move by at most a few per cent of their limits (measured up to 1.4 % on the tuned,
+    baseline, a thinner re-laid tuned and the segmented designs; the bound 5 % says the screening
+    ranks designs, the final ones are re-verified with the full run), and every status is the
+    same. Two designs (CPU budget, issue 23): the Table 3.1 baseline, one-piece FMC failing
+    several checks, and the segmented aluminium driveline (metal strength, coupling angles)."""
+    designs = [baseline_design() if name == "baseline" else embedded_design("current")]
     for design in designs:
         full = assess(design, REPORT)
         lean = evaluate_design(design, "verdict")
@@ -229,28 +218,31 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
 # Convergence on a known front, resume, parallel
 
 
-def test_nsga2_converges_to_the_known_zdt1_front(tmp_path):
+def test_nsga2_approaches_the_known_zdt1_front_and_resumes(tmp_path):
     """ZDT1 through the same engine (design overrides, sweep batches, cache): the hypervolume gap
-    shrinks with the budget and the front found lies on f2 = 1 − √f1 with the integer variable
-    at its optimum; extending the budget on the run folder re-evaluates nothing."""
+    shrinks with the budget, no design lies below the known front f2 = 1 − √f1 (the distance is
+    g − 1 = 3 Σu + (n − 3)² ≥ 0 exactly), the constraint and the integer variable's optimum hold,
+    and extending the budget on the run folder re-evaluates nothing. At 600 evaluations (CPU
+    budget, issue 23); NSGA-II's convergence to within 1 % at 2400 is pymoo's behaviour and is
+    checked by ``benchmarks/optimizer.py --parts zdt1 --zdt1-budgets 2400 --seeds 1 2 3 4
+    --check``."""
     problem = zdt1_problem()
-    short = optimize(problem, 400, tmp_path / "run", pop_size=40, seed=3)
-    long = optimize(problem, 2400, tmp_path / "run", pop_size=40, seed=3)
-    # nothing is evaluated twice: the designs of the first 400 are read back from the run folder
+    short = optimize(problem, 200, tmp_path / "run", pop_size=40, seed=3)
+    long = optimize(problem, 600, tmp_path / "run", pop_size=40, seed=3)
+    # nothing is evaluated twice: the designs of the first 200 are read back from the run folder
     # (candidates equal to 4 significant digits are one design; the base design is evaluated
     # once more as the figure's reference, ZDT1 not seeding it)
     assert short.n_computed + long.n_computed == long.evaluations.sizes["evaluation"] + 1
-    assert long.n_computed > 1500
+    assert long.n_computed > 350
     gap_short = 1 - short.hypervolume(ZDT1_REFERENCE) / ZDT1_HYPERVOLUME
     gap_long = 1 - long.hypervolume(ZDT1_REFERENCE) / ZDT1_HYPERVOLUME
-    # Measured with seeds 1-4 at 2400 evaluations: gap 0.28-0.52 %, mean distance to the front
-    # 0.0009-0.0024, largest 0.0075-0.0097 (at 400: gaps of tens of per cent). The bounds leave
-    # a factor of about 2; the staircase of the > 200 points found itself misses < 0.1 %.
-    assert gap_long < 0.01 < 0.1 < gap_short
+    # Measured with seeds 1-4: gaps 0.81-1.0 at 200 evaluations and 0.13-0.29 at 600; the bound
+    # leaves a factor of about 2.
+    assert gap_long < 0.5 and gap_long < gap_short
     F = long.minimised()
-    assert F.shape[0] > 100
-    distance = np.abs(F[:, 1] - zdt1_front(F[:, 0]))  # = g − 1 = 3 Σu + (n − 3)² at the f1 found
-    assert distance.mean() < 0.005 and distance.max() < 0.02
+    assert F.shape[0] > 5
+    distance = F[:, 1] - zdt1_front(F[:, 0])
+    assert np.all(distance >= -1e-12)  # never below the exact front (round-off of f2)
     assert np.all(long.pareto["zero_plies"].values == 3)
     assert F[:, 0].min() >= 0.1  # the constraint margin_lower
     ev = long.evaluations
@@ -369,6 +361,10 @@ def test_cli_user_errors_exit_2(tmp_path):
         assert message in result.output, (args, result.output)
 
 
+@pytest.mark.slow(
+    reason="end to end: four verdict evaluations, the full runs that verify the written designs and the "
+    "baseline reference, and `flexshaft run --strict` on a written file (about 4 s alone)"
+)
 def test_cli_optimizes_writes_verified_design_files(tmp_path):
     """A small search from the tuned design over the actuator gains: the base is the first
     candidate, so the front is not empty; each written design file passes the full run, and
@@ -382,9 +378,9 @@ def test_cli_optimizes_writes_verified_design_files(tmp_path):
             "optimize",
             str(base),
             "--budget",
-            "6",
+            "4",
             "--pop-size",
-            "3",
+            "2",
             "--out",
             str(out),
             "--seed",
@@ -414,7 +410,7 @@ def test_cli_optimizes_writes_verified_design_files(tmp_path):
     strict = runner.invoke(app, ["run", str(files[0]), "--strict", "--studies", "none", "--out", str(tmp_path / "r")])
     assert strict.exit_code == 0, strict.output
     evaluations = xr.load_dataset(out / "evaluations.nc")
-    assert evaluations.sizes["evaluation"] == 6 and set(CHECK_KEYS) <= {
+    assert evaluations.sizes["evaluation"] == 4 and set(CHECK_KEYS) <= {
         k[len("margin_") :] for k in evaluations.data_vars if k.startswith("margin_")
     }
     from flexshaft.sweep import SweepWarning
@@ -427,9 +423,9 @@ def test_cli_optimizes_writes_verified_design_files(tmp_path):
                 "optimize",
                 str(base),
                 "--budget",
-                "6",
+                "4",
                 "--pop-size",
-                "3",
+                "2",
                 "--out",
                 str(out),
                 "--seed",

@@ -275,20 +275,24 @@ def test_spinup_map_plot_legend_hides_no_marker(model):
     kp, kd, _ = smap.best()
     assert f"K_p = {kp:.3g} N/m, K_d = {kd:.3g} N s/m" in star[0].get_label()
     legend = ax.get_legend().get_window_extent()
-    for line in ax.get_lines():
-        px, py = ax.transData.transform(np.column_stack(line.get_data()))[0]
-        assert not (legend.x0 <= px <= legend.x1 and legend.y0 <= py <= legend.y1), line.get_label()
-    bar = fig.axes[1]
+    strip = fig.axes[1]  # K_d = 0 has a strip of its own under the log axis: the design's ring is there
+    assert [t.get_text() for t in strip.get_yticklabels()] == ["0"]
+    assert any(ln.get_marker() == "o" for ln in strip.get_lines())
+    for panel in (ax, strip):
+        for line in panel.get_lines():
+            px, py = panel.transData.transform(np.column_stack(line.get_data()))[0]
+            assert not (legend.x0 <= px <= legend.x1 and legend.y0 <= py <= legend.y1), line.get_label()
+    bar = fig.axes[-1]
     assert bar.get_ylabel() == "max spin-up shaft orbit [mm]"
     assert len([t for t in bar.get_yticklabels() if t.get_text()]) >= 4
     force = smap.plot("actuator_force")
-    assert force.axes[1].get_ylabel() == "max actuator force [N]"
+    assert force.axes[-1].get_ylabel() == "max actuator force [N]"
 
 
 def test_log_colour_bar_within_one_decade_has_four_ticks():
     values = np.array([[20.0, 40.0], [80.0, 140.0]]) * 1e-3
     fig = drawn(gain_map_figure([1e6, 1e7], [0.0, 100.0], values, "orbit [mm]", scale=1e3))
-    ticks = [t.get_text() for t in fig.axes[1].get_yticklabels() if t.get_text()]
+    ticks = [t.get_text() for t in fig.axes[-1].get_yticklabels() if t.get_text()]
     assert len(ticks) >= 4 and all("10^" not in t and "times" not in t for t in ticks), ticks
 
 
@@ -402,7 +406,9 @@ def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
     theirs = [reference(t) for t in ticks]
     exponents = [round(np.log10(t)) for t in ticks]
     superscript = dict(zip("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
-    assert len(ticks) >= 3 and -4 in exponents and 2 in exponents
+    # the decades the locator picks vary with the versions (every one with numpy 2, every second
+    # with numpy 1.26): any three, negative and positive exponents among them
+    assert len(ticks) >= 3 and min(exponents) < 0 < max(exponents)
     assert theirs == [f"$\\mathdefault{{10^{{{e}}}}}$" for e in exponents]
     assert ours == ["10" + "".join(superscript[c] for c in str(e)) for e in exponents]
     assert plain_log_label("$\\mathdefault{2\\times10^{-3}}$") == "2×10⁻³"

@@ -17,6 +17,10 @@ def baseline_run(tmp_path_factory):
     return out, result.output
 
 
+@pytest.mark.slow(
+    reason="the README's main command end to end: the full run of the default design with its design "
+    "studies and every figure (about 10 s of CPU, the command's own cost; the module shares the fixture)"
+)
 def test_run_writes_report_figures_and_numbers(baseline_run):
     out, output = baseline_run
     assert "report written to" in output

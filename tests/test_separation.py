@@ -201,17 +201,42 @@ shaft_elements = 20
 # Peaks that do not fall to half power, edges, bad input
 
 
+def test_one_sided_af_of_a_symmetric_peak_is_its_two_sided_af() -> None:
+    # A Lorentzian (N_c = 3000.25, B = 100 rpm) sampled only to 3020 rpm: its upper half-power
+    # point (N_c + B/2) lies outside the range, so the lower one alone is found and the peak is
+    # taken as symmetric. For this symmetric peak that is exact: AF = N_c/B (closed form, module
+    # docstring), to the interpolation of the 0.5 rpm samples, O((h/B)²) = 2.5e-5: 1e-4 asserted.
+    speeds = np.arange(2000.0, 3020.5, 0.5)
+    (peak,) = response_peaks(speeds, lorentzian(speeds, 3000.25, 100.0))
+    assert peak.method == "one-sided" and peak.upper is None and peak.lower is not None
+    assert peak.amplification_factor == pytest.approx(3000.25 / 100.0, rel=1e-4)
+
+
 def test_one_sided_af_when_a_neighbouring_peak_overlaps() -> None:
     # Two Lorentzians 120 rpm apart with B = 100 rpm: between them the curve stays above 0.707 of
-    # each peak, so only the outer half-power points exist and each peak is taken as symmetric:
-    # AF = N_c / (2 |N_c − N_found|).
+    # each peak, so only the outer half-power points exist and each peak is taken as symmetric.
+    # Reference: the summed curve's peaks (maximised) and outer half-power points (root of
+    # A(N) = A_peak/√2) solved on the continuous curve here, then AF = N_p/(2|N_p − N_h|) as for
+    # the symmetric peak above; the code samples every 0.5 rpm: 1e-4 asserted.
+    from scipy.optimize import brentq, minimize_scalar
+
+    def curve(n):
+        return lorentzian(n, 3000.0, 100.0) + 0.9 * lorentzian(n, 3120.0, 100.0)
+
     speeds = np.arange(2000.0, 4001.0, 0.5)
-    amplitude = lorentzian(speeds, 3000.0, 100.0) + 0.9 * lorentzian(speeds, 3120.0, 100.0)
-    first, second = response_peaks(speeds, amplitude)
+    first, second = response_peaks(speeds, curve(speeds))
     assert first.method == "one-sided" and first.upper is None and first.lower is not None
-    assert first.amplification_factor == pytest.approx(first.speed / (2.0 * (first.speed - first.lower)))
     assert second.method == "one-sided" and second.lower is None and second.upper is not None
-    assert second.amplification_factor == pytest.approx(second.speed / (2.0 * (second.upper - second.speed)))
+    for peak, window, outer in (
+        (first, (2980.0, 3040.0), (2800.0, 2999.0)),
+        (second, (3080.0, 3140.0), (3112.0, 3400.0)),
+    ):
+        top = minimize_scalar(lambda n: -curve(n), bounds=window, method="bounded", options={"xatol": 1e-6}).x
+        level = curve(top) / np.sqrt(2.0)
+        half = brentq(lambda n, level=level: curve(n) - level, *outer, xtol=1e-9)
+        assert peak.amplification_factor == pytest.approx(top / (2.0 * abs(top - half)), rel=1e-4)
+    # the neighbour's tail lowers both below the isolated N_c/B = 30 and 31.2
+    assert first.amplification_factor < 30.0 and second.amplification_factor < 31.2
     # the valley between them bounds the unfound sides
     assert first.upper_limit == second.lower_limit
 

@@ -6,7 +6,10 @@ makes the first-order problem ill-conditioned) with loss factor
 in complex coordinates r = v + iw the forward mode obeys
 
     m s² + c_e s + c_i (s − iΩ) + k = 0,      c_i = η k / ω_ref   (viscous equivalent)
-    m s² + c_e s + k (1 + iη sgn(ω − Ω)) = 0                      (hysteretic)
+    m s² + c_e s + k (1 + iη sgn(ω − Ω)) = 0                      (hysteretic, ω = Im s)
+
+and the backward mode m s² + c_e s + k(1 + iη) = 0 on both sides of the spin (tests/test_damping.py
+derives both).
 """
 
 import numpy as np
@@ -46,20 +49,167 @@ def test_viscous_internal_damping_threshold_is_wn_times_one_plus_ce_over_ci():
     assert res.whirl[-1, res.unstable_mode] == "forward"
 
 
+def hysteretic_roots(c_e, eta):
+    """Closed-form Jeffcott roots (module docstring): the forward roots of the two sides of the
+    spin, s₊ (σ = +1) and s₋ (σ = −1), and the backward root (its loss sign is always +)."""
+    roots = np.roots([M_DISK, c_e, K_SHAFT * (1 + 1j * eta)])
+    s_plus = roots[np.argmax(roots.imag)]
+    roots = np.roots([M_DISK, c_e, K_SHAFT * (1 - 1j * eta)])
+    s_minus = roots[np.argmax(roots.imag)]
+    return s_plus, s_minus, s_plus  # the backward root solves the σ = +1 equation on both sides
+
+
+def basis_round_off():
+    """Relative round-off of the test rotor's frequencies. The dense basis eigen-solve errs by
+    ε‖K‖ in ω² (backward stability), i.e. by ε κ relative at ω_n with κ = ω_max²/ω_n² (the
+    near-massless shaft's stiffest basis mode against the disk mode, about 4e10); the frequency
+    by half that. Ten times ε κ / 2 is asserted: about 4e-5 (different BLAS kernels move the
+    frequencies by 5e-6)."""
+    w2_max = reduce(jeffcott(0.02, 0.0), 48).w2.max()
+    return 10 * np.finfo(float).eps * (w2_max / WN**2) / 2
+
+
 def test_hysteretic_forward_mode_above_wn_has_real_part_eta_wn_minus_ce_over_m_over_two():
+    """Reference: the closed-form roots of m s² + c_e s + k(1 + iησ), σ = sgn(ω − Ω). The forward
+    roots of the two sides share one frequency ω_d (s₋ = −c_e/m − s̄₊ exactly), so below ω_d only
+    the damped s₊ is an eigenvalue, above it only s₋ with Re s₋ = (ηω_n − c_e/m)/2 + O(η²) > 0:
+    the onset is ω_d itself, whatever the speed grid. The set of tracked eigenvalues is checked
+    at every speed of the scan, which no choice of branch by round-off can pass by accident."""
     eta, zeta_e = 0.02, 0.005
     c_e = 2 * zeta_e * M_DISK * WN
     model = jeffcott(eta, c_e)
+    s_plus, s_minus, backward = hysteretic_roots(c_e, eta)
+    w_d = s_plus.imag
+    assert s_minus == pytest.approx(-c_e / M_DISK - np.conj(s_plus), rel=1e-14)
+    assert s_minus.real == pytest.approx((eta * WN - c_e / M_DISK) / 2, rel=eta)
+    tol = basis_round_off()
     speeds = np.array([0.6, 0.9, 1.2, 1.6, 2.0, 3.0]) * WN
     res = stability(model, speeds, n_modes=2, damping_model="hysteretic")
-    re_fwd = res.eigenvalues.real.max(axis=1)
-    expected = (eta * WN - c_e / M_DISK) / 2
-    # first-order result; the viscous-equivalent's residual term ηkσ/|ω − Ω| is O(σ/ω) ≈ 1 %
-    assert np.allclose(re_fwd[speeds > 1.1 * WN], expected, rtol=0.02)
-    # below ω_n both whirls are damped: Re(s) = −(ηω_n + c_e/m)/2 for the forward mode
-    assert np.all(re_fwd[speeds < WN] < 0)
     res_scan = stability(model, np.linspace(0.9, 1.1, 81) * WN, n_modes=2, damping_model="hysteretic")
-    assert res_scan.onset_speed == pytest.approx(WN, rel=5e-3)  # unstable at every Ω > ω_n
+    for r in (res, res_scan):
+        for speed, got in zip(r.speeds, r.eigenvalues):
+            if abs(speed / w_d - 1) < tol:
+                continue  # on the line within round-off: either side is right
+            forward = s_plus if speed < w_d else s_minus
+            want = np.sort_complex(np.array([forward, backward]))
+            # each root to the frequencies' round-off: |Δs| ≈ ω_d · tol
+            np.testing.assert_allclose(np.sort_complex(got), want, rtol=0, atol=tol * w_d)
+    assert res.onset_speed is not None and res_scan.onset_speed is not None
+    assert res_scan.onset_speed == pytest.approx(w_d, rel=tol)  # the jump itself, not the grid
+    assert res.onset_speed == pytest.approx(w_d, rel=tol)
+    assert res_scan.whirl[-1, res_scan.unstable_mode] == "forward"
+
+
+def pencil_roots(red, speed, weights, bounds=False):
+    """Roots with Im s > 0 of the branch problem [s² I + s D + K + W] y = 0 on the modal basis,
+    by QZ on the linearisation A z = s B z, A = [[−K, 0], [0, I]], B = [[D, I], [I, 0]],
+    z = (y, s y): another linearisation and another algorithm than the package's QR of its
+    companion matrix. PD bearings only (no controller states).
+
+    With ``bounds``, also returns each root's error bound [rad/s]: first-order perturbation theory, an
+    eigenvalue of a backward-stable solve errs by ε‖data‖ κ, κ = ‖x‖‖y‖/|yᴴ B x| from the
+    right and left eigenvectors; the bound adds that of the QZ root (data ‖A‖ + |s|‖B‖) and
+    that of the companion matrix [[0, I], [−K, −D]] a QR solver sees, ten times over."""
+    assert all(a.A.size == 0 for a in red.actuators)
+    fixed, lateral, circulatory = weights
+    K = np.diag(red.w2) + fixed * red.F + lateral * red.L + circulatory * red.S
+    D = speed * red.G + red.C
+    for a in red.actuators:
+        K = K + a.stiffness * a.coupling
+        D = D + a.damping * a.coupling
+    n = red.size
+    I, Z = np.eye(n), np.zeros((n, n))
+    A, B = np.block([[-K, Z], [Z, I]]), np.block([[D, I], [I, Z]])
+    if not bounds:
+        lam = la.eigvals(A, B)
+        return lam[np.isfinite(lam) & (lam.imag > 0)]
+    lam, left, right = la.eig(A, B, left=True, right=True)
+    keep = np.isfinite(lam) & (lam.imag > 0)
+    lam, left, right = lam[keep], left[:, keep], right[:, keep]
+    kappa = np.linalg.norm(left, axis=0) * np.linalg.norm(right, axis=0) / np.abs(np.sum(left.conj() * (B @ right), 0))
+    bound = kappa * (la.norm(A, 2) + np.abs(lam) * la.norm(B, 2))
+    C = np.block([[Z, I], [-K, -D]])
+    mu, cleft, cright = la.eig(C, left=True, right=True)
+    kc = np.linalg.norm(cleft, axis=0) * np.linalg.norm(cright, axis=0) / np.abs(np.sum(cleft.conj() * cright, 0))
+    nearest = np.argmin(np.abs(mu[None, :] - lam[:, None]), axis=1)
+    bound = bound + kc[nearest] * la.norm(C, 2)
+    return lam, 10 * np.finfo(float).eps * bound
+
+
+#: The loss weights of F, K_lat and K_lat S for a mode of frequency ω > 0 at spin Ω > 0,
+#: typed from L(ω, Ω) = i F + i (σ_B + σ)/2 K_lat + (σ_B − σ)/2 K_lat S with σ_B = 1
+#: (tests/test_damping.py derives the Jeffcott case): above the spin and below it.
+ABOVE, BELOW = (1j, 1j, 0.0), (1j, 0.0, 1.0)
+
+
+def damped_baseline():
+    return build_model(with_overrides(baseline_design(), {"bearings[1].kd": 200.0, "bearings[2].kd": 200.0}))
+
+
+def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side():
+    """The eigenvalues of the hysteretic problem (piecewise linear in s: one linear problem
+    above the spin, one below) are the roots of the problem above the spin with Im s ≥ Ω and
+    of the one below with Im s ≤ Ω, nothing else. Reference: each side's roots by QZ
+    (:func:`pencil_roots`), filtered by their own side in the test. Both inclusions are
+    checked on the damped baseline (gyroscopic, PD bearings, shaft and boom loss) at rest and at
+    four speeds, so the set cannot depend on which root an iteration reaches. Tolerance: each
+    root's perturbation bound (:func:`pencil_roots`)."""
+    from flexshaft.analyses.hysteretic_roots import consistent_roots
+
+    red = reduce(damped_baseline(), 48)
+    for speed in (0.0, 150.0, 327.3, 430.0, 600.0):
+        got, _ = consistent_roots(red, speed)
+        sides = [(ABOVE, +1)] if speed == 0 else [(ABOVE, +1), (BELOW, -1)]
+        want, tol = [], []
+        for weights, sign in sides:
+            lam, bound = pencil_roots(red, speed, weights, bounds=True)
+            mine = sign * (lam.imag - speed) >= -1e-9 * speed
+            want.append(lam[mine])
+            tol.append(bound[mine])
+        want, tol = np.concatenate(want), np.concatenate(tol)
+        band = 1e-6 * speed  # a root this close to the line may fall on either side of it
+        for s in got:  # every eigenvalue found is a root on its own side
+            k = np.argmin(np.abs(want - s))
+            assert abs(want[k] - s) <= tol[k], (speed, s, tol[k])
+        for s, bound in zip(want, tol):  # and every such root is found
+            if abs(s.imag - speed) > band:
+                assert np.min(np.abs(got - s)) <= bound, (speed, s, bound)
+        assert got.size == want.size
+
+
+def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold():
+    """A forward mode's roots above and below the spin (s₊, s₋) differ by the shaft loss, their
+    frequencies by O(η²)ω: where ω₊ < Ω < ω₋ neither is consistent and the eigenvalue sits on
+    the line (Im s = Ω, the loss sign set-valued at 0, its real part between those of s₊ and
+    s₋); where ω₋ < Ω < ω₊ both are eigenvalues. Reference: s₊, s₋ by QZ (:func:`pencil_roots`);
+    the crossing speed of each pair solved in the test by fixed-point iteration."""
+    from flexshaft.analyses.hysteretic_roots import consistent_roots
+
+    red = reduce(damped_baseline(), 48)
+    speed = 430.0
+    above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
+    pairs = [(p, below[np.argmin(np.abs(below - p))]) for p in above if 0.5 * speed < p.imag < 2 * speed]
+    # the loss moves a forward root by ~ηω/2 in its real part and far less in frequency
+    pairs = [(p, q) for p, q in pairs if 1e-6 < abs(p.imag - q.imag) / p.imag < 1e-3 and abs(p - q) < 0.05 * abs(p)]
+    seen = set()
+    for p, q in pairs:
+        for _ in range(4):  # the speed between the pair's frequencies, which move with the speed
+            speed = 0.5 * (p.imag + q.imag)
+            above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
+            p, q = above[np.argmin(np.abs(above - p))], below[np.argmin(np.abs(below - q))]
+        got, _ = consistent_roots(red, speed)
+        near = got[np.abs(got - p) < 2 * abs(p - q)]
+        tol = 1e-7 * abs(p)  # QZ against QR (previous test), with the fixed-point residual
+        if p.imag < speed < q.imag:  # gap: one root, on the line
+            seen.add("gap")
+            assert near.size == 1
+            assert near[0].imag == pytest.approx(speed, rel=1e-9)  # the synchronous band
+            assert min(p.real, q.real) - tol <= near[0].real <= max(p.real, q.real) + tol
+        elif q.imag < speed < p.imag:  # fold: both
+            seen.add("fold")
+            assert near.size == 2
+            np.testing.assert_allclose(np.sort_complex(near), np.sort_complex(np.array([p, q])), rtol=0, atol=tol)
+    assert seen == {"gap", "fold"}  # the baseline has both (its modes 8 and 9 near 414 and 418 rad/s)
 
 
 @pytest.mark.parametrize("damping_model", ["viscous", "hysteretic"])

@@ -80,14 +80,34 @@ def test_nearly_linear_criterion_is_stable():
     assert tsai_wu_safety_factor(2.5e8, 0.0, 0.0, nearly_linear) == pytest.approx(4.0, rel=1e-12)
 
 
-def test_coefficients_and_default_interaction():
+def test_coefficients_are_fixed_by_the_uniaxial_strengths():
+    """Tsai & Wu's coefficients are defined by the five uniaxial failure states: the index
+    f₁σ + f₁₁σ² = 1 at σ₁ = X_t and at σ₁ = −X_c (two linear equations for f₁, f₁₁, solved here),
+    the same for σ₂ with Y_t, Y_c, and f₆₆ S² = 1 (no linear shear term: the shear strength does
+    not depend on the shear's sign). Solved by numpy, not typed: 1e-12."""
     F = tsai_wu_coefficients(THESIS)
-    assert F.F1 == pytest.approx(1 / 2185e6 - 1 / 2000e6)
-    assert F.F22 == pytest.approx(1 / (5.1e6 * 5.5e6))
-    assert F.F66 == pytest.approx(1 / 20e6**2)
-    assert F.F12 == pytest.approx(-0.5 * np.sqrt(F.F11 * F.F22))
+    for (tension, compression), (linear, quadratic) in (
+        ((THESIS.X_t, THESIS.X_c), (F.F1, F.F11)),
+        ((THESIS.Y_t, THESIS.Y_c), (F.F2, F.F22)),
+    ):
+        f, ff = np.linalg.solve([[tension, tension**2], [-compression, compression**2]], [1.0, 1.0])
+        assert (linear, quadratic) == pytest.approx((f, ff), rel=1e-12)
+    assert F.F66 * THESIS.S**2 == pytest.approx(1.0, rel=1e-12)
     custom = Strengths(1e9, 1e9, 1e7, 1e7, 1e7, F12=0.0)
     assert tsai_wu_coefficients(custom).F12 == 0.0
+
+
+def test_default_interaction_reduces_an_isotropic_ply_to_von_mises():
+    """With equal strengths X in every direction and S = X/√3 (an isotropic material's shear
+    yield), the default interaction F₁₂ = −½√(F₁₁F₂₂) (Tsai & Hahn) makes the Tsai-Wu index the
+    von Mises plane-stress criterion (σ₁² − σ₁σ₂ + σ₂² + 3τ₁₂²)/X², so R = X/σ_vM exactly; random
+    states, 1e-12."""
+    X = 300e6
+    iso = Strengths(X, X, X, X, X / np.sqrt(3.0))
+    rng = np.random.default_rng(11)
+    s1, s2, t12 = rng.normal(0.0, 1e8, (3, 50))
+    von_mises = np.sqrt(s1**2 - s1 * s2 + s2**2 + 3 * t12**2)
+    np.testing.assert_allclose(tsai_wu_safety_factor(s1, s2, t12, iso), X / von_mises, rtol=1e-12)
 
 
 def test_invalid_strengths_are_refused():
@@ -272,23 +292,74 @@ def test_baseline_failure_state_reaches_the_envelope(baseline_strength):
     assert full.temperature_change == pytest.approx(expected)
 
 
-def test_thesis_path_unchanged_without_hoop_and_thermal():
-    """Golden value: speed 0 and no thermal residual is the thesis's strength check (N_y = 0,
-    eq. 2.46); on the baseline of commit 0f8aaa9 (tests/data; the embedded baseline has moved
-    since) it gives R = 36.9338 (regenerate: the same calls on that file; last regenerated when
-    the imbalance and static responses took the rotating-frame internal loss, which moved R by
-    5e-6)."""
-    from pathlib import Path
+ISOTROPIC_PLY_TUBE = """
+name = "isotropic-ply (55/-55/0/0)s tube on pinned ends"
+[materials.ply]
+kind = "lamina"
+density = 1650.0
+E_L = 70.0e9
+E_T = 70.0e9
+G_LT = 26.923076923076923e9
+nu_LT = 0.3
+G_23 = 26.923076923076923e9
+X_t = 2185.0e6
+X_c = 2000.0e6
+Y_t = 5.1e6
+Y_c = 5.5e6
+S = 20.0e6
+[shaft]
+x_start = 0.0
+x_end = 2.0
+outer_diameter = 0.1016
+wall_thickness = 0.003
+material = "ply"
+layup = "(55/-55/0/0)s"
+fixed_start = ["u", "v", "w", "theta"]
+fixed_end = ["v", "w"]
+[[bearings]]
+name = "stop"
+kind = "contact"
+x = 2.0
+stiffness = {}
+[operating]
+speed_rpm = 0.0
+power = 0.0
+[mesh]
+shaft_elements = 20
+"""
 
-    from flexshaft.analyses import imbalance_response
-    from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
+
+def test_thesis_strength_path_against_beam_theory_and_tsai_wu_by_hand():
+    """The thesis's strength check (no hoop stress: speed 0; no thermal residual; N_y = 0,
+    eq. 2.46) of a 2 m tube on pinned ends, midspan force P = 300 N and torque T = 40 N m, with
+    an isotropic 'lamina' (E = 70 GPa, G = E/2.6) in the (55/-55/0/0)s stack, so the laminate is
+    isotropic and every ply carries the beam stresses. By hand: the midspan moment M = PL/4,
+    σ_x = ±M r_o/I on the outer wall, τ_xy = T r_o/J (J = 2I), σ_y = 0 (N_y = 0, isotropic);
+    rotated into each ply's axes (σ₁ = σ_x c² + 2τ cs, σ₂ = σ_x s² − 2τ cs,
+    τ₁₂ = τ (c² − s²) − σ_x cs) and R the positive root of the Tsai-Wu quadratic
+    (:func:`tsai_wu_safety_factor`, verified above), the smallest over plies and both fibres.
+    The Hermite beam element is exact for a point load at a node (linear moment between nodes):
+    1e-9 asserted, round-off. (This replaces a value copied from an earlier run of the
+    baseline.)"""
+    from flexshaft.analyses.response import static_response
+    from flexshaft.analyses.shaft_strength import shaft_safety_factor
     from flexshaft.assembly import build_model
-    from flexshaft.assembly.loads import imbalance_loads
-    from flexshaft.design import load_design
+    from flexshaft.assembly.loads import point_load, torque_load
+    from flexshaft.design import loads_design
 
-    model = build_model(load_design(Path(__file__).parent / "data" / "baseline_0f8aaa9.toml"))
-    parts = static_load_parts(model)
-    q_dyn = imbalance_response(model, [model.speed], imbalance_loads(model))[:, 0, 0]
-    old = shaft_safety_factor(model, parts["external"] + parts["torque"], q_dyn, speed=0.0, thermal_residual=False)
-    assert old.safety_factor == pytest.approx(36.93376810458834, rel=1e-10)
-    assert (old.ply_angle_deg, old.dominant_stress, old.x) == (55.0, "sigma1", pytest.approx(3.21))
+    P, T, L, D, wall = 300.0, 40.0, 2.0, 0.1016, 0.003
+    model = build_model(loads_design(ISOTROPIC_PLY_TUBE))
+    q = static_response(model, point_load(model, "shaft", (0.0, -P, 0.0), x=L / 2) + torque_load(model, T))
+    result = shaft_safety_factor(model, q, speed=0.0, thermal_residual=False)
+    r = D / 2
+    inertia = np.pi * (D**4 - (D - 2 * wall) ** 4) / 64
+    sigma, tau = P * L / 4 * r / inertia, T * r / (2 * inertia)
+    strengths = Strengths(2185e6, 2000e6, 5.1e6, 5.5e6, 20e6)
+    by_hand = []
+    for angle in (55.0, -55.0, 0.0):
+        c, s = np.cos(np.radians(angle)), np.sin(np.radians(angle))
+        for sx in (sigma, -sigma):
+            s1, s2, t12 = sx * c * c + 2 * tau * c * s, sx * s * s - 2 * tau * c * s, tau * (c * c - s * s) - sx * c * s
+            by_hand.append(float(tsai_wu_safety_factor(s1, s2, t12, strengths)))
+    assert result.safety_factor == pytest.approx(min(by_hand), rel=1e-9)
+    assert result.x == pytest.approx(L / 2)

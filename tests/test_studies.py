@@ -103,6 +103,10 @@ def coarse_studies(coarse):
     return design_studies(coarse, "report", progress=labels.append), labels
 
 
+@pytest.mark.slow(
+    reason="the report-level design studies twice, in process and on two forked workers (how flexshaft "
+    "run computes them): about 3 s each"
+)
 def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, coarse_studies):
     """The studies as independent tasks on two forked workers (how `flexshaft run` computes
     them) give exactly the datasets and headline numbers computed in this process."""

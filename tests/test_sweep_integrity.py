@@ -112,7 +112,7 @@ def _npy_bytes(values: np.ndarray) -> bytes:
 
 def _flip_last_bit(path: Path) -> None:
     values = _values(path).copy()
-    values.view(np.uint64)[1, 0] ^= 1  # one ulp on one value
+    values.view(np.uint64)[1, 0] ^= np.uint64(1)  # one ulp on one value (uint64: numpy 1.26 too)
     _rewrite(path, values=values)
 
 

@@ -12,7 +12,6 @@ import flexshaft as fs
 from flexshaft.thermal.air import air_properties
 from flexshaft.thermal.analysis import shaft_thermal
 from flexshaft.thermal.correlations import (
-    HILPERT_TABLE,
     churchill_bernstein_nusselt,
     churchill_chu_nusselt,
     hilpert_nusselt,
@@ -198,15 +197,27 @@ def test_rotating_model_sees_no_heat_from_a_pure_forward_synchronous_whirl(model
 
 
 # ------------------------------------------------------------------ correlations and air
+#: Hilpert's constants, Incropera & DeWitt Table 7.2 (Nu = C Re^m Pr^(1/3)): (Re_min, Re_max, C, m).
+#: Typed here from the table as reproduced in independent public implementations (the book
+#: itself was not at hand), not from flexshaft's own table.
+HILPERT_PUBLISHED = (
+    (0.4, 4.0, 0.989, 0.330),
+    (4.0, 40.0, 0.911, 0.385),
+    (40.0, 4000.0, 0.683, 0.466),
+    (4000.0, 40000.0, 0.193, 0.618),
+    (40000.0, 400000.0, 0.027, 0.805),
+)
+
+
 def test_hilpert_incropera_example():
     # Incropera & DeWitt Example 7.4 (6th ed.; 7.3 in later): Re = 6071, Pr = 0.70,
     # Hilpert C = 0.193, m = 0.618 → Nu = 37.3 (book to 3 figures: rel 2e-3).
     nu = hilpert_nusselt(6071, 0.70)
     assert nu.value == pytest.approx(37.3, rel=2e-3) and nu.in_range
-    # every table row reproduces C Re^m Pr^(1/3) at its own mid-range
-    for lo, hi, C, m in HILPERT_TABLE:
-        Re = math.sqrt(lo * hi)
-        assert hilpert_nusselt(Re, 1.0).value == pytest.approx(C * Re**m, rel=1e-12)
+    # every row of the published table, inside its Reynolds range (round-off: 1e-12)
+    for lo, hi, C, m in HILPERT_PUBLISHED:
+        for Re in (1.01 * lo, math.sqrt(lo * hi), 0.99 * hi):
+            assert hilpert_nusselt(Re, 0.7).value == pytest.approx(C * Re**m * 0.7 ** (1 / 3), rel=1e-12), Re
     out = hilpert_nusselt(5.2e5, 0.71)
     assert not out.in_range and "outside" in out.note
 
@@ -220,10 +231,17 @@ def test_churchill_bernstein_and_churchill_chu_published_examples():
 
 
 def test_rotating_cylinder_correlations():
-    # Becker's power law by hand at Re_ω = 1e5, Pr = 0.7; range flag beyond 4.3e5.
-    assert rotating_cylinder_nusselt_becker(1e5, 0.7).value == pytest.approx(0.133 * 1e5 ** (2 / 3) * 0.7 ** (1 / 3))
+    # Kendoush's form as the thesis writes it (eq. 2.63): h = (k_air/D_o) C √(Re Pr), i.e. Nu
+    # grows as the square root of Re and of Pr. The constant C did not survive the thesis's text
+    # extraction and no copy of Kendoush (1996) or Becker (1963) was at hand, so neither
+    # correlation's constant is verified here (the module docstring says so for Kendoush);
+    # what the sources fix is checked: the thesis's scaling, and Becker's stated validity range.
+    kendoush = [rotating_cylinder_nusselt(Re, Pr, "kendoush").value for Re, Pr in ((1e4, 0.7), (4e4, 0.7), (1e4, 2.8))]
+    assert kendoush[1] == pytest.approx(2 * kendoush[0], rel=1e-12)
+    assert kendoush[2] == pytest.approx(2 * kendoush[0], rel=1e-12)
+    assert rotating_cylinder_nusselt_becker(4.2e5, 0.7).in_range
     assert not rotating_cylinder_nusselt_becker(5e5, 0.7).in_range
-    assert rotating_cylinder_nusselt(1e5, 0.7, "kendoush").value == pytest.approx(0.6366 * math.sqrt(7e4))
+    assert rotating_cylinder_nusselt(1e5, 0.7, "becker") == rotating_cylinder_nusselt_becker(1e5, 0.7)
     with pytest.raises(ValueError, match="becker"):
         rotating_cylinder_nusselt(1e5, 0.7, "nope")
 
@@ -268,10 +286,13 @@ def test_tailboom_balance_closes_and_no_sun_no_gradient_stays_at_ambient(conditi
     assert tailboom_temperature(condition, D, env).temperature == pytest.approx(300.0, abs=1e-6)
 
 
-def test_baseline_tailboom_temperatures_regression():
-    # Regression of the documented baseline numbers (docs/thermal.md), not a verification:
-    # the baseline's sunlit share is calibrated to the thesis's 89 °C parked; the thesis's 44 °C
-    # hover is then predicted (ambient from Swinbank's clear sky, Hilpert as in eq. 2.57).
+def test_baseline_tailboom_temperatures_are_the_thesis_findings():
+    # The thesis's Table 2.1 results, 44 °C hovering and 89 °C parked (stated to the degree:
+    # ±0.5 °C). The baseline's sunlit share is calibrated to the 89 °C parked, so that one only
+    # checks the calibration holds; the 44 °C hover is then a prediction (ambient from
+    # Swinbank's clear sky, Hilpert as in the thesis's eq. 2.57). The hover downwash is the
+    # momentum-theory closed form V = √(W/(2ρπR²)) (DESIGN.md §2.8) with the thesis's Table 2.1
+    # rotorcraft, m_rc = 6838 kg, R_r = 7.315 m, and ρ = 1.225 kg/m³ (DESIGN.md §5).
     from flexshaft.thermal.options import thermal_options
 
     design = fs.baseline_design()
@@ -279,9 +300,10 @@ def test_baseline_tailboom_temperatures_regression():
     D = boom_equivalent_diameter(design.tailboom)
     hover = tailboom_temperature("hover", D, options.environment, options.boom_convection)
     parked = tailboom_temperature("parked", D, options.environment, options.boom_convection)
-    assert hover.celsius == pytest.approx(44.1, abs=0.2)
-    assert parked.celsius == pytest.approx(88.8, abs=0.2)
-    assert hover.velocity == pytest.approx(12.76, abs=0.01)
+    assert hover.celsius == pytest.approx(44.0, abs=0.5)
+    assert parked.celsius == pytest.approx(89.0, abs=0.5)
+    downwash = math.sqrt(6838.0 * 9.80665 / (2 * 1.225 * math.pi * 7.315**2))
+    assert hover.velocity == pytest.approx(downwash, rel=1e-12)
     assert hover.nusselt.method == "hilpert" and not hover.nusselt.in_range  # Re 5.3e5 > 4e5, flagged
 
 

@@ -9,11 +9,15 @@ actively controlled magnetic bearings (Ocalan 2002). Typical use:
 >>> m = fs.modes(model, speed=design.operating.speed_rad_s)
 >>> m                                        # m.frequencies [Hz], m.whirl, m.shapes, ...
 Modes(10 modes at 4800 rpm: [...] Hz, internal damping 'rotating')
+>>> print(m)                                 # doctest: +SKIP
 >>> a = fs.assess(design, fs.SCREENING)      # doctest: +SKIP
->>> a.verdict                                # doctest: +SKIP
+>>> a                                        # doctest: +SKIP
+>>> a.verdict.headline, a.to_dataframe()     # doctest: +SKIP
 
 ``assess(design, resolution)`` is the one recipe that judges a design (what ``flexshaft run``
-computes at :data:`REPORT`); its :class:`Assessment` holds every analysis and the verdict.
+computes at :data:`REPORT`); its :class:`Assessment` holds every analysis and the verdict. In
+a notebook it shows the verdict table; ``print(m)`` prints the modes' table; the tutorial is
+docs/tutorial.ipynb.
 
 The top level stays light: submodules load on first use.
 """
@@ -32,6 +36,9 @@ _LAZY = {
     "loads_design": "flexshaft.design",
     "baseline_design": "flexshaft.design",
     "baseline_text": "flexshaft.design",
+    "tuned_design": "flexshaft.design",
+    "embedded_design": "flexshaft.design",
+    "embedded_text": "flexshaft.design",
     "with_overrides": "flexshaft.design",
     "build_model": "flexshaft.assembly",
     "Model": "flexshaft.assembly",

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.results import ResultMixin, coded, new_dataset
+from flexshaft.analyses.results import ResultMixin, coded, dataframe, html_table, new_dataset
 from flexshaft.assembly.model import Model
 from flexshaft.design import Design, embedded_design
 from flexshaft.resolution import REPORT, Resolution
@@ -163,6 +163,27 @@ class Comparison(ResultMixin):
         ]
 
     # -- the key numbers ---------------------------------------------------------------------------
+
+    def to_dataframe(self):
+        """:meth:`metrics` as a table indexed by the quantity's title: its SI unit and both
+        designs' values (None: not available; pandas, imported here, comes with xarray)."""
+        found = self.metrics()
+        a, b = self.labels
+        return dataframe(
+            {
+                "quantity": [m.title for m in found],
+                "unit": [m.unit for m in found],
+                a: [m.values[0] for m in found],
+                b: [m.values[1] for m in found],
+            },
+            index="quantity",
+        )
+
+    def _repr_html_(self) -> str:
+        a, b = self.labels
+        verdicts = [f"{label}: {run.verdict.headline}" for label, run in zip(self.labels, self.runs)]
+        rows = [[m.title, m.unit, m.values[0], m.values[1]] for m in self.metrics()]
+        return html_table(("quantity", "SI unit", a, b), rows, title="; ".join(verdicts))
 
     def metrics(self) -> list[Metric]:
         """The compared quantities, SI units (see :class:`Metric`)."""

@@ -21,9 +21,10 @@ import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
-from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
+from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.campbell import campbell_figure
@@ -115,6 +116,32 @@ class EigenvalueCurves:
         z = self.damping_ratios
         return 2 * np.pi * z / np.sqrt(np.maximum(1 - z * z, 1e-300))
 
+    #: Columns of :meth:`mode_summary`.
+    SUMMARY_COLUMNS = ("mode", "f first [Hz]", "f last [Hz]", "kind", "whirl last", "min δ [-]", "at [rpm]")
+
+    def mode_summary(self) -> list[list]:
+        """One row per tracked mode, numbered from 1 as the modes at the first speed: its damped
+        frequency at the first and the last speed [Hz], kind and whirl at the last speed, and its
+        smallest log decrement with the speed where it occurs [rpm]."""
+        kind = getattr(self, "kind", None)
+        whirl = self.whirl
+        delta = self.log_decrements
+        rows = []
+        for m in range(self.eigenvalues.shape[1]):
+            k = int(np.argmin(delta[:, m]))
+            rows.append(
+                [
+                    m + 1,
+                    float(self.frequencies[0, m]),
+                    float(self.frequencies[-1, m]),
+                    "—" if kind is None else str(kind[-1, m]),
+                    "—" if str(whirl[-1, m]) == "none" else str(whirl[-1, m]),
+                    float(delta[k, m]),
+                    float(rad_s_to_rpm(self.speeds[k])),
+                ]
+            )
+        return rows
+
 
 @dataclass(frozen=True)
 class TrackedModes:
@@ -144,21 +171,30 @@ def track_modes(
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
-    The first speed fixes the identities (the lowest ``n_modes`` candidates by |s|). With
-    ``refine_loss`` (the default path) each later speed is first tried by continuation: every
-    mode's eigenvalue is extrapolated linearly from the previous speeds and converged by
-    Newton's method on its loss-consistent problem; the step is accepted when every mode
-    converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes landed on
-    the same eigenvalue. Otherwise (and always without ``refine_loss``) ``solve(speed) ->
-    (s, Y)`` gives all candidates (default: the loss-free state matrix), matched to the
-    previous curves by maximum MAC with a small frequency-distance penalty (optimal
-    assignment), then refined. ``viscous(speed)`` gives the weights of the thesis's viscous
+    The first speed fixes the identities and their numbering: the ``n_modes`` roots of
+    :func:`~flexshaft.analyses.eigen.lowest_modes`, refined and numbered by damped frequency, as
+    :func:`~flexshaft.analyses.modal.modes` numbers the modes at that speed (column k is mode
+    k + 1 of its tables). Each later speed is first tried by continuation: every mode's
+    eigenvalue is extrapolated linearly from the previous speeds and converged on its own
+    problem; with ``refine_loss`` (the hysteretic loss) that is
+    :func:`~flexshaft.analyses.hysteretic_roots.mode_root`, which continues both sides of the
+    synchronous line and keeps the root consistent with its side. The step is accepted when
+    every mode converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes
+    landed on the same eigenvalue. Otherwise ``solve(speed) -> (s, Y)`` gives all eigenvalues
+    at the speed (default: with ``refine_loss`` the exact loss-consistent set,
+    :func:`~flexshaft.analyses.hysteretic_roots.consistent_roots`; else the loss-free state
+    matrix), matched to the previous curves by maximum MAC with a small frequency-distance
+    penalty (optimal assignment). ``viscous(speed)`` gives the weights of the thesis's viscous
     internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
-    candidates and continuation then solve that linear problem.
+    candidates and continuation then solve that linear problem. Without ``refine_loss`` and
+    ``viscous`` (the undamped Campbell diagram) every speed is matched.
     """
     speeds = np.asarray(speeds, dtype=float)
+    hysteretic = refine_loss and viscous is None
     if viscous is not None:
         solve = lambda speed: candidates(red, speed, viscous(speed))  # noqa: E731
+    elif hysteretic:
+        solve = solve or (lambda speed: consistent_roots(red, speed))
     solve = solve or (lambda speed: candidates(red, speed))
     labeler = ModalLabeler(model, red.Phi)
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
@@ -169,8 +205,11 @@ def track_modes(
         if (refine_loss or viscous is not None) and k >= 1:
             step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))
         if step is None:
-            step = _match(red, solve, speed, prev, n_modes, refine_loss and viscous is None)
+            step = _match(red, solve, speed, prev, n_modes, hysteretic)
         s_k, Y_k = step
+        if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
+            first = np.lexsort((np.abs(s_k), s_k.imag))
+            s_k, Y_k = s_k[first], Y_k[:, first]
         Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
@@ -199,7 +238,10 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     s_k = np.empty(n_modes, complex)
     Y_k = np.empty_like(Y_prev)
     for m in range(n_modes):
-        s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m], viscous=viscous)
+        if viscous is None:
+            s_k[m], Y_k[:, m], converged = mode_root(red, speed, predicted[m], Y_prev[:, m])
+        else:
+            s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m], viscous=viscous)
         if not converged or abs(np.vdot(Y_prev[:, m], Y_k[:, m])) ** 2 < _CONTINUATION_MAC:
             return None
     gaps = np.abs(s_k[:, None] - s_k[None, :])
@@ -209,8 +251,11 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     return s_k, Y_k
 
 
-def _match(red, solve, speed, prev, n_modes, refine_loss):
-    """All candidates at ``speed`` matched to the previous curves, then refined."""
+def _match(red, solve, speed, prev, n_modes, hysteretic):
+    """All eigenvalues at ``speed`` matched to the previous curves. With the hysteretic loss
+    each matched root is then polished by Newton's method on its mode's branches, the least
+    stable of its consistent roots where a fold near the synchronous line has two
+    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`)."""
     lam, Y = solve(speed)
     if lam.size < n_modes:
         raise ValueError(
@@ -218,15 +263,18 @@ def _match(red, solve, speed, prev, n_modes, refine_loss):
             "ask for fewer modes or a larger basis"
         )
     if prev is None:
-        idx = np.arange(n_modes)
+        idx = lowest_modes(lam, n_modes)
     else:
         lam_prev, Y_prev = prev
         scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
         cost = 1 - mac(Y_prev, Y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
         idx = assignment(cost)
     s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
-    if refine_loss:
-        s_k, Y_k = refine_set(red, speed, s_k, Y_k)
+    if hysteretic:  # Newton polishes the dense eigen-solve's root (a fold: the less stable root)
+        for m in range(n_modes):
+            root, vec, found = mode_root(red, speed, s_k[m], Y_k[:, m])
+            if found:
+                s_k[m], Y_k[:, m] = root, vec
     return s_k, Y_k
 
 
@@ -277,6 +325,28 @@ class Campbell(EigenvalueCurves, ResultMixin):
         """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
 
         return curves_dataset(self, "Campbell diagram")
+
+    def _repr_html_(self) -> str:
+        crit = [[c.speed_rpm, c.mode + 1, c.harmonic, c.whirl] for c in self.critical_speeds]
+        out = html_table(self.SUMMARY_COLUMNS, self.mode_summary(), title=repr(self))
+        if crit:
+            out += html_table(("speed [rpm]", "mode", "harmonic", "whirl"), crit, title="critical speeds")
+        return out
+
+    def to_dataframe(self):
+        """The critical speeds, one row each: speed [rpm] and [rad/s], tracked mode (numbered
+        from 1), excitation order and whirl (pandas, imported here; xarray brings it). The
+        curves themselves: :meth:`to_dataset`."""
+        crit = self.critical_speeds
+        return dataframe(
+            {
+                "speed_rpm": [c.speed_rpm for c in crit],
+                "speed_rad_s": [c.speed for c in crit],
+                "mode": [c.mode + 1 for c in crit],
+                "harmonic": [c.harmonic for c in crit],
+                "whirl": [c.whirl for c in crit],
+            }
+        )
 
     def plot_campbell(
         self,

@@ -21,10 +21,12 @@ from flexshaft.analyses.banded import SingularSystemError
 from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
+from flexshaft.analyses.results import dataframe, html_table
 from flexshaft.analyses.separation import resolve_peak, response_peaks
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.resolution import REPORT
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
     "CriticalSpeeds",
@@ -70,6 +72,31 @@ class CriticalSpeeds:
     criticals: tuple[LateralCritical, ...] | None
     search_top: float
     note: str = ""
+
+    def to_dataframe(self):
+        """One row per critical speed: speed [rpm] and [rad/s], amplification factor, shaft
+        station of the peak [m], Campbell mode and detail (pandas, imported here; xarray brings
+        it); empty when there are none or the scan failed (see :attr:`note`)."""
+        found = self.criticals or ()
+        return dataframe(
+            {
+                "speed_rpm": [rad_s_to_rpm(c.speed) for c in found],
+                "speed_rad_s": [c.speed for c in found],
+                "amplification_factor": [c.amplification_factor for c in found],
+                "station_m": [c.location.get("station") for c in found],
+                "mode": [c.location.get("mode", "") for c in found],
+                "detail": [c.location.get("detail", "") for c in found],
+            }
+        )
+
+    def _repr_html_(self) -> str:
+        found = self.criticals or ()
+        rows = [
+            [rad_s_to_rpm(c.speed), c.amplification_factor, c.location.get("station"), c.location.get("mode", "")]
+            for c in found
+        ]
+        title = f"{len(found)} lateral critical speeds up to {rad_s_to_rpm(self.search_top):.0f} rpm"
+        return html_table(("speed [rpm]", "AF [-]", "x [m]", "mode"), rows, title=title, caption=self.note)
 
     def labelled(self, campbell: Campbell | None) -> CriticalSpeeds:
         """The same criticals, each named by its Campbell mode (:func:`label_critical_speeds`)."""

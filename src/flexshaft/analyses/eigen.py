@@ -24,22 +24,22 @@ matrix, or the one of the thesis's viscous internal-damping model, gives the can
 A PD bearing has no states: its K_p is in Λ and its K_d in C̃, exactly the thesis's model.
 
 Solution. A dense eigen-solve of the loss-free state matrix gives every candidate at a speed
-(:func:`candidates`). Each wanted mode is refined to the eigenvalue of its own loss-consistent
-problem by Newton's method on the nonlinear eigenproblem in modal coordinates
+(:func:`candidates`). With the hysteretic loss, the problem
 
     T(s) y = [s² I + s (Ω G̃ + C̃) + Λ + L̃(ω, Ω) + Σ B̃_outᵀ (L(s) − k_a − s E_basis) B̃_in] y = 0,
 
-with the hysteretic loss ``L̃`` of :mod:`flexshaft.analyses.loss` at the mode's own frequency
-ω = Im(s)
-
+with the loss ``L̃`` of :mod:`flexshaft.analyses.loss` at the mode's own frequency ω = Im(s),
+is linear on each side of the synchronous line (its weights depend on s only through
+sgn(ω − Ω)); :mod:`flexshaft.analyses.hysteretic_roots` finds the roots consistent with their
+own side. :func:`newton` solves one side: Newton's method with the loss weights held fixed
 (``u = T(s)⁻¹ T'(s) y``, ``s ← s − yᴴy / yᴴu``, ``y ← u/‖u‖``: quadratic convergence, one
-nb × nb LU per step). A mode that sits exactly on the synchronous line, where the
-rotating-frame loss switches sign, is settled with σ = 0.
+nb × nb LU per step).
 
 Divergence. A real eigenvalue s > 0 (a non-oscillatory, aperiodic instability: a magnetic
 bearing with too little control stiffness against its k_s) is not an oscillatory candidate;
-:func:`spectrum` returns it separately, :func:`damped_modes` reports it as a mode with
-Im s = 0 and the stability analysis as divergence.
+:func:`spectrum` returns it separately,
+:func:`~flexshaft.analyses.hysteretic_roots.damped_modes` reports it as a mode with Im s = 0 and
+the stability analysis as divergence.
 """
 
 from __future__ import annotations
@@ -54,7 +54,7 @@ import scipy.linalg as la
 import scipy.sparse.linalg as spla
 
 from flexshaft.analyses.guards import RefusedInputError
-from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients, whirl_sign
+from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import (
     HARD_MEMORY_BYTES,
@@ -71,10 +71,8 @@ __all__ = [
     "spectrum",
     "candidates",
     "divergent_roots",
-    "refine",
-    "refine_set",
     "newton",
-    "damped_modes",
+    "lowest_modes",
 ]
 
 #: A real eigenvalue above this fraction of the largest basis frequency is a divergent root.
@@ -452,15 +450,6 @@ def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.sqrt(re.dot(re) + im.dot(im))
 
 
-def refine(red: ReducedModel, speed: float, s: complex, y: np.ndarray, tol: float = _TOL) -> tuple[complex, np.ndarray]:
-    """The loss-consistent eigenpair nearest ``(s, y)`` (Newton; see the module docstring).
-
-    ``y`` are modal coordinates (nb,). Returns the refined ``(s, y)`` with ‖y‖ = 1.
-    """
-    s, y, _ = newton(red, speed, s, y, tol)
-    return s, y
-
-
 def newton(
     red: ReducedModel,
     speed: float,
@@ -468,107 +457,73 @@ def newton(
     y: np.ndarray,
     tol: float = _TOL,
     viscous: LossCoefficients | None = None,
+    weights: LossCoefficients | None = None,
 ) -> tuple[complex, np.ndarray, bool]:
-    """:func:`refine` that also says whether the iteration converged.
+    """Newton's method on ``T(s) y = 0`` from ``(s, y)``: ``(s, y, converged)`` with ‖y‖ = 1.
 
-    With ``viscous`` weights (:func:`~flexshaft.analyses.loss.viscous_equivalent`) the problem
-    is the thesis's linear viscous one instead of the hysteretic one.
+    The loss weights are held fixed for the whole iteration, so the problem solved is linear
+    in the weights and the iteration converges to one eigenvalue of it (no switching of the
+    loss sign between steps): ``weights`` when given (a branch of
+    :mod:`flexshaft.analyses.hysteretic_roots`), else the hysteretic weights of the starting
+    point's own side of the synchronous line, ``eigen_coefficients(ω = Im s₀)``. With
+    ``viscous`` weights (:func:`~flexshaft.analyses.loss.viscous_equivalent`) the problem is
+    the thesis's linear viscous one instead. Only a root with Im s > 0 counts as converged: the
+    hysteretic weights hold for ω = Im s > 0, and a root of the same matrix polynomial with
+    Im s < 0 is no eigenvalue of the hysteretic problem (there the loss has the opposite sign).
     """
     if viscous is not None:
         damping = red.C + viscous.fixed * red.F + viscous.lateral * red.L
-        stiffness = viscous.circulatory * red.S
+        extra = viscous.circulatory * red.S
         red = ReducedModel(
             red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping, red.actuators, False
         )
-        red_S = stiffness
-    forced_sigma = None
-    previous_sigma = None
-    flips = 0
-    weights = {}  # σ -> the loss weights: at one speed they depend on the mode only through σ
+        loss = _NO_LOSS
+    else:
+        extra = None
+        if weights is None:
+            omega = abs(s.imag)
+            if not (math.isfinite(omega) and omega > 0):
+                return s, y, False
+            weights = eigen_coefficients(red.internal_damping, omega, speed)
+        loss = weights
     y = _unit(np.asarray(y, dtype=complex))
     for _ in range(_MAX_ITER):
-        omega = abs(s.imag)
-        if omega <= 0:
-            break
-        sigma = whirl_sign(omega, speed) if forced_sigma is None else forced_sigma
-        if previous_sigma is not None and sigma != previous_sigma and forced_sigma is None:
-            flips += 1
-            if flips >= 2:  # no consistent side of the synchronous line: the mode sits on it
-                forced_sigma = sigma = 0.0
-        previous_sigma = sigma
-        if viscous is None:
-            loss = weights.get(sigma) if math.isfinite(omega) else None
-            if loss is None:  # (a non-finite ω is refused here)
-                loss = weights[sigma] = eigen_coefficients(red.internal_damping, omega, speed, sigma)
-            T, dTy = red.newton_terms(s, speed, loss, y)
-        else:
-            T, dTy = red.newton_terms(s, speed, _NO_LOSS, y)
-            T += red_S
+        T, dTy = red.newton_terms(s, speed, loss, y)
+        if extra is not None:
+            T += extra
         _, _, u, info = _gesv(T, dTy, overwrite_a=True, overwrite_b=True)
         if info > 0:  # s is an eigenvalue to machine precision
-            return s, y, True
+            return s, y, s.imag > 0
         denominator = np.vdot(y, u)
         if not np.isfinite(denominator) or denominator == 0:
-            return s, y, True
+            return s, y, s.imag > 0
         s_new = s - np.vdot(y, y) / denominator
         y = _unit(u)
         if abs(s_new - s) <= tol * abs(s_new):
-            return s_new, y, True
+            return s_new, y, s_new.imag > 0
         s = s_new
     return s, y, False
 
 
-#: Two refined eigenvalues closer than this (relative) are the same root.
-_SAME_ROOT = 1e-8
+def lowest_modes(s: np.ndarray, n: int) -> np.ndarray:
+    """Indices of the ``n`` modes of lowest damped frequency Im s among the ``2 n`` of lowest
+    |s|, in increasing Im s (then |s|): the modes every table lists and numbers.
 
+    Numbered by damped frequency, the frequency the tables print: a heavily damped mode
+    (ζ = 0.14 in the tuned design) has a damped frequency below a lighter one's of smaller |s|.
+    Chosen by damped frequency too, so that a list of n modes is the start of a longer one
+    (the whirl stability's 10 modes are the Campbell diagram's first 10 of 12), unless a mode
+    beyond the ``2 n`` of lowest |s| is damped below them. Only among those: a root all but
+    critically damped (Im s a millionth of |s|, as the viscous internal-damping model gives the
+    stiff axial DOFs) is no vibration mode of the band, however low its Im s.
 
-def refine_set(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`refine` every candidate, keeping the roots distinct.
-
-    Loss-free candidates can be degenerate (a forward/backward pair of an axisymmetric rotor
-    without gyroscopic coupling has one frequency): any combination of the pair is then a
-    candidate vector, and Newton's method may take both to the same loss-consistent root. A
-    candidate that lands on a root already found is restarted from the circular
-    combinations ``y_j ± i y_k`` (and ``y_j ± y_k``) with its degenerate partner, whose loss
-    separates the forward and the backward root.
+    Parameters
+    ----------
+    s : ndarray
+        Eigenvalues [rad/s] (a divergent root is real: Im s = 0 puts it first).
+    n : int
+        Modes wanted (all of them when there are fewer).
     """
-    n = s.size
-    out_s = np.empty(n, complex)
-    out_y = np.empty((red.size, n), complex)
-    for k in range(n):
-        out_s[k], out_y[:, k] = refine(red, speed, s[k], Y[:, k])
-        if not _duplicate(out_s[:k], out_s[k]):
-            continue
-        partners = [j for j in range(n) if j != k and abs(s[j] - s[k]) <= 1e-3 * abs(s[k])]  # (near-)degenerate
-        for j in partners:
-            for c in (1j, -1j, 1.0, -1.0):
-                trial_s, trial_y = refine(red, speed, s[k], (Y[:, k] + c * Y[:, j]) / np.sqrt(2))
-                if not _duplicate(out_s[:k], trial_s):
-                    out_s[k], out_y[:, k] = trial_s, trial_y
-                    break
-            else:
-                continue
-            break
-    return out_s, out_y
-
-
-def _duplicate(found: np.ndarray, s: complex) -> bool:
-    return bool(found.size) and bool(np.any(np.abs(found - s) <= _SAME_ROOT * abs(s)))
-
-
-def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
-    """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
-
-    Returns ``(s, Y)`` sorted by |s| (undamped natural frequency), Y modal coordinates.
-    Divergent roots (real s > 0, :func:`spectrum`) are modes too: they are returned with
-    Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic loss is
-    defined for harmonic motion only and cannot hold a static divergence).
-    """
-    lam, Y, Y_div, div = spectrum(red, speed)
-    n = min(n_modes, lam.size)
-    out_s, out_y = refine_set(red, speed, lam[:n], Y[:, :n])
-    if div.size:
-        out_s = np.concatenate([out_s, div.astype(complex)])
-        out_y = np.hstack([out_y, Y_div.astype(complex)])
-    order = np.argsort(np.abs(out_s))[:n_modes]
-    return out_s[order], out_y[:, order]
+    s = np.asarray(s)
+    pool = np.argsort(np.abs(s), kind="stable")[: 2 * n]
+    return pool[np.lexsort((np.abs(s[pool]), s[pool].imag))[:n]]

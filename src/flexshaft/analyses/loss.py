@@ -32,8 +32,8 @@ mode's own frequency ω = Im(s) (:func:`eigen_coefficients`): the eigenvalues ar
 the frequency response continued from the positive-frequency axis (the complex-stiffness
 eigenproblem ``[s² M + s D + K + L(Im s, Ω)] φ = 0``), so a uniformly hysteretic structure has
 ζ = sin(½ atan η) ≈ η/2 in every mode and the half-power bandwidth of a forced-response peak
-equals 2ζ of its mode. :mod:`flexshaft.analyses.eigen` iterates each mode to its own side of
-the synchronous line. The viscous Zorzi-Nelson model of the thesis's chapter 4 (one reference
+equals 2ζ of its mode. :mod:`flexshaft.analyses.hysteretic_roots` finds the roots consistent
+with their own side of the synchronous line. The viscous Zorzi-Nelson model of the thesis's chapter 4 (one reference
 frequency for every mode, damping ``(F + K_lat)/ω_ref`` and circulatory ``(Ω/ω_ref) K_lat S``)
 is :func:`viscous_equivalent`.
 
@@ -143,7 +143,7 @@ def eigen_coefficients(
     """Complex weights of the loss matrices for a mode of frequency ω = Im(s) > 0 [rad/s].
 
     The frequency-domain weights of :func:`frequency_coefficients` at ω; ``sigma`` overrides
-    sgn(ω − Ω) (used to settle a mode sitting on the synchronous line).
+    sgn(ω − Ω) (the weights of one side of the synchronous line, or of σ = 0 on it).
     """
     _check(internal_damping)
     if not (np.isfinite(omega) and omega > 0):

@@ -17,14 +17,15 @@ import numpy as np
 
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.datasets import modes_dataset
-from flexshaft.analyses.eigen import damped_modes, reduce, spectrum
+from flexshaft.analyses.eigen import lowest_modes, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.hysteretic_roots import damped_modes
+from flexshaft.analyses.results import ResultMixin, dataframe, html_table, text_table
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.shapes import mode_shapes_figure
-from flexshaft.units import rad_s_to_hz, rad_s_to_rpm
+from flexshaft.units import hz_to_rpm, rad_s_to_hz, rad_s_to_rpm
 
 __all__ = ["Modes", "modes", "whirl_ratio", "default_basis_size"]
 
@@ -34,13 +35,20 @@ def default_basis_size(n_modes: int) -> int:
     return max(4 * n_modes, 60)
 
 
+#: Caption of the modes' tables.
+_CAPTION = "f damped frequency, ζ damping ratio, δ log decrement; modes numbered from 1 by f (Python index + 1)"
+
+
 def _log_decrement(zeta: np.ndarray) -> np.ndarray:
     return 2 * np.pi * zeta / np.sqrt(np.maximum(1 - zeta * zeta, 1e-300))
 
 
 @dataclass(frozen=True)
 class Modes(ResultMixin):
-    """Eigen-solution at one speed, sorted by undamped natural frequency |s|.
+    """Eigen-solution at one speed: the lowest modes, numbered by damped frequency Im s / 2π
+    (:attr:`frequencies`, the f of every table; mode ``k`` of the Python API is mode ``k + 1``
+    of the command line and the report; :func:`~flexshaft.analyses.eigen.lowest_modes`). A
+    divergent root (Im s = 0) comes first.
 
     Attributes
     ----------
@@ -82,7 +90,64 @@ class Modes(ResultMixin):
         rpm = rad_s_to_rpm(self.speed)
         freqs = ", ".join(f"{f:.3g}" for f in self.frequencies[:6])
         more = ", ..." if self.eigenvalues.size > 6 else ""
-        return f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, internal damping {self.internal_damping!r})"
+        return (
+            f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, "
+            f"internal damping {self.internal_damping!r})"
+        )
+
+    #: Columns of :meth:`table` as printed (unit in each header).
+    COLUMNS = ("mode", "f [Hz]", "f [rpm]", "ζ [-]", "δ [-]", "kind", "whirl", "component")
+
+    def table(self) -> list[dict]:
+        """One row per mode, numbered from 1 as the command line and the report number them:
+        damped frequency [Hz] and as a spin speed [rpm], damping ratio, log decrement, kind,
+        whirl, component and the shaft's share of the kinetic energy."""
+        return [
+            {
+                "mode": k + 1,
+                "frequency_Hz": float(self.frequencies[k]),
+                "frequency_rpm": float(hz_to_rpm(self.frequencies[k])),
+                "damping_ratio": float(self.damping_ratios[k]),
+                "log_decrement": float(self.log_decrements[k]),
+                "kind": str(self.kind[k]),
+                "whirl": str(self.whirl[k]),
+                "component": str(self.component[k]),
+                "shaft_energy_fraction": float(self.shaft_fractions[k]),
+            }
+            for k in range(self.eigenvalues.size)
+        ]
+
+    def _rows(self) -> list[list]:
+        return [
+            [
+                r["mode"],
+                r["frequency_Hz"],
+                r["frequency_rpm"],
+                r["damping_ratio"],
+                r["log_decrement"],
+                r["kind"],
+                "—" if r["whirl"] == "none" else r["whirl"],
+                r["component"],
+            ]
+            for r in self.table()
+        ]
+
+    def _title(self) -> str:
+        rpm = rad_s_to_rpm(self.speed)
+        return f"{self.eigenvalues.size} modes at {rpm:.0f} rpm ({self.internal_damping} internal damping)"
+
+    def __str__(self) -> str:
+        """The per-mode table (``print(m)``), numbered from 1."""
+        return text_table(self.COLUMNS, self._rows(), title=self._title(), caption=_CAPTION)
+
+    def _repr_html_(self) -> str:
+        return html_table(self.COLUMNS, self._rows(), title=self._title(), caption=_CAPTION)
+
+    def to_dataframe(self):
+        """:meth:`table` as a :class:`pandas.DataFrame` indexed by the mode number (from 1), SI
+        and engineering units in the column names (pandas is imported here; xarray brings it)."""
+        rows = self.table()
+        return dataframe({key: [r[key] for r in rows] for key in rows[0]} if rows else {"mode": []}, index="mode")
 
     def to_dataset(self):
         """Frequencies, damping, labels and shaft/boom translations of every mode (xarray)."""
@@ -127,7 +192,10 @@ class Modes(ResultMixin):
             if dm.n_boom_nodes:
                 boom.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
         if modes is None and f_spin > 0:
-            title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm: the {chosen.size} modes nearest the spin frequency {f_spin:.1f} Hz"
+            title = (
+                f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm: the {chosen.size} modes nearest the spin "
+                f"frequency {f_spin:.1f} Hz"
+            )
         else:
             title = f"Mode shapes at {rad_s_to_rpm(self.speed):.0f} rpm"
         kwargs.setdefault("title", title)
@@ -197,7 +265,8 @@ def modes(
     speed : float
         Ω [rad/s], finite, >= 0 and at most :data:`~flexshaft.analyses.guards.MAX_SPEED`.
     n_modes : int
-        Number of lowest modes returned (>= 1).
+        Number of modes returned (>= 1), in increasing damped frequency
+        (:func:`~flexshaft.analyses.eigen.lowest_modes`).
     damped : bool
         Include the bearing dampers, the actuator laws' damping and controller dynamics, and
         the hysteretic loss of every member (gyroscopic terms are always in).
@@ -217,7 +286,7 @@ def modes(
         bare = red.undamped()
         lam, Z, Z_div, div = spectrum(bare, speed)
         s, Z = np.concatenate([lam, div.astype(complex)]), np.hstack([Z, Z_div.astype(complex)])
-        order = np.argsort(np.abs(s))[:n_modes]
+        order = lowest_modes(s, n_modes)
         s, Z = s[order], Z[:, order]
         red = bare
     full = model.dofs.expand(red.shapes(Z))

@@ -6,6 +6,8 @@
 
 from __future__ import annotations
 
+import html
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,7 +24,7 @@ from flexshaft.analyses.guards import (
 )
 from flexshaft.analyses.loss import frequency_coefficients
 from flexshaft.analyses.refinement import checked_solve
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, StationWarning, html_table
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.loads import external_static_load, torque_load
 from flexshaft.assembly.model import Model
@@ -96,6 +98,11 @@ class HarmonicResponse(np.ndarray, ResultMixin):
 
     __str__ = __repr__
 
+    def _repr_html_(self) -> str:
+        if self.dofs is None:
+            return f"<pre>{html.escape(repr(np.asarray(self)))}</pre>"
+        return html_table(("HarmonicResponse", ""), _summary(self))
+
     def to_dataset(self):
         """Translations of every node by load case and frequency (see :mod:`flexshaft.analyses.datasets`)."""
 
@@ -137,6 +144,13 @@ class HarmonicResponse(np.ndarray, ResultMixin):
             if not np.isfinite(x) or not lo - 1e-9 <= x <= hi + 1e-9:
                 raise ValueError(f"station must be a shaft position within [{lo:g}, {hi:g}] m (got {x!r})")
             node = dm.node_at("shaft", float(x))
+            if abs(dm.shaft_x[node] - x) > 1e-9 * max(hi - lo, 1.0):
+                warnings.warn(
+                    f"station {x:g} m is not a shaft node: shown at the nearest node, x = {dm.shaft_x[node]:g} m "
+                    "(the response is computed at the nodes; mesh.shaft_elements sets them)",
+                    StationWarning,
+                    stacklevel=4,
+                )
             out[name or f"x = {dm.shaft_x[node]:.2f} m"] = node
         return out
 
@@ -191,6 +205,19 @@ class HarmonicResponse(np.ndarray, ResultMixin):
         what = "spin speed" if self.excitation == "imbalance" else "excitation"
         kwargs.setdefault("title", f"Shaft orbits at {what} {rpm[i]:.0f} rpm")
         return orbit_figure(orbits, gap, ax=ax, **kwargs)
+
+
+def _summary(q: HarmonicResponse) -> list[list[str]]:
+    """The rows of a response's notebook table (what its repr says, one line each)."""
+    f = rad_s_to_rpm(q.frequencies) if q.excitation == "imbalance" else q.frequencies / (2 * np.pi)
+    unit = "rpm" if q.excitation == "imbalance" else "Hz"
+    return [
+        ["excitation", q.excitation],
+        ["shape", str(q.shape)],
+        ["frequencies", f"{f.size}, {f.min():.4g} to {f.max():.4g} {unit}"],
+        ["peak |q| [m or rad]", f"{np.abs(np.asarray(q)).max():.3g}"],
+        ["internal damping", q.internal_damping],
+    ]
 
 
 def _solve_many(model: Model, loads, points, solver: BandedHarmonicSolver | None = None) -> np.ndarray:

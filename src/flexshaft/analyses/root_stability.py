@@ -27,7 +27,10 @@ Method (at each speed Ω):
    side are refined to their loss-consistent value by Newton's method
    (:func:`~flexshaft.analyses.eigen.newton`): every root below the spin (0 < ω < Ω, where the
    rotating-frame loss of forward whirl turns circulatory) and every root unstable without the
-   loss (the loss may stabilise it).
+   loss (the loss may stabilise it): each on its own side of the line
+   (:mod:`flexshaft.analyses.hysteretic_roots`: ``mode_root`` below the spin, the upper branch's
+   linear problem above it). On the small basis of a passive driveline (below) every root is
+   solved exactly instead, one complex eigen-solution per branch (``consistent_roots``).
    A driveline whose actuator laws are all collocated, without states and with non-negative
    stiffness and damping (the thesis's ideal PD bearing) is *passive*: no root above the spin
    can be unstable (the energy argument of :func:`_basis`), so only the roots below the top
@@ -48,8 +51,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as la
 
-from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel, reduce, refine_set
+from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel, newton, reduce
 from flexshaft.analyses.guards import check_model, check_spin_speeds, require_finite
+from flexshaft.analyses.hysteretic_roots import branches, consistent_roots, mode_root, on_branch
 from flexshaft.analyses.loss import eigen_coefficients
 from flexshaft.analyses.modal import default_basis_size
 from flexshaft.analyses.stability import STABILITY_TOLERANCE
@@ -261,6 +265,46 @@ def _left_vectors(state: np.ndarray, roots: np.ndarray) -> np.ndarray:
     return left[:, index]
 
 
+def _hysteretic(
+    red: ReducedModel, speed: float, state: np.ndarray, s: np.ndarray, right: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The loss-free roots ``s`` (right eigenvectors ``right``) of the full basis with the
+    hysteretic loss where it can change a root's side (module docstring, step 3); returns the
+    roots and which were solved with the loss."""
+    done = np.zeros(s.size, bool)
+    if not red.has_loss:
+        return s, done
+    nb = red.size
+    zeta = _damping_ratio(s)
+    below = np.flatnonzero(s.imag < speed)  # the rotating loss of forward whirl can destabilise them
+    for k in below:
+        root, _, found = mode_root(red, speed, complex(s[k]), right[:nb, k])
+        if found and np.isfinite(root) and root.imag > 0:
+            s[k], done[k] = root, True
+    above = np.flatnonzero((s.imag >= speed) & (zeta < -STABILITY_TOLERANCE) & ~done)
+    if not above.size:
+        return s, done
+    # above the spin the loss only damps: a root unstable without it is settled by the
+    # first-order estimate when half and one and a half times its shift leave it stable; the
+    # rest are solved on the upper branch, most unstable first, until MAX_SOLVED_UNSTABLE are
+    # confirmed (the others keep their first-order value: refined = False)
+    left = _left_vectors(state, s[above])
+    estimate = _loss_shift(red, speed, s[above], left, right[:, above])
+    half, more = (_damping_ratio(s[above] + f * estimate) for f in (0.5, 1.5))
+    clear = (half > STABILITY_TOLERANCE) & (more > STABILITY_TOLERANCE)
+    s[above] += estimate
+    upper = branches(red, speed)[-1]
+    confirmed = 0
+    for k in above[~clear][np.argsort(_damping_ratio(s[above[~clear]]))]:
+        if confirmed >= MAX_SOLVED_UNSTABLE:
+            break
+        root, _, converged = newton(red, speed, complex(s[k]), right[:nb, k], weights=upper.weights)
+        if converged and on_branch(upper, root.imag, speed):
+            s[k], done[k] = root, True
+        confirmed += _damping_ratio(s[k : k + 1])[0] < -STABILITY_TOLERANCE
+    return s, done
+
+
 def root_stability(model: Model, speeds) -> RootStability:
     """Every root of the closed-loop driveline at each of ``speeds`` [rad/s] (module docstring).
 
@@ -289,42 +333,12 @@ def root_stability(model: Model, speeds) -> RootStability:
         oscillatory = lam.imag > 1e-6 * np.abs(lam)
         real = np.abs(lam.imag) <= 1e-6 * np.abs(lam)
         divergent = real & (lam.real > DIVERGENCE_TOLERANCE * scale)
-        s, right = lam[oscillatory].copy(), right[:, oscillatory]
-        zeta = _damping_ratio(s)
-        done = np.zeros(s.size, bool)
-        if red.has_loss:
-            below = np.flatnonzero(s.imag < speed)  # the rotating loss of forward whirl can destabilise them
-            above = np.flatnonzero((s.imag >= speed) & (zeta < -STABILITY_TOLERANCE))
-            todo = [below]
-            if above.size:
-                # above the spin the loss only damps: a root unstable without it is settled by the
-                # first-order estimate when half and one and a half times its shift leave it
-                # stable; the rest are solved
-                left = _left_vectors(state, s[above])
-                estimate = _loss_shift(red, speed, s[above], left, right[:, above])
-                half, more = (_damping_ratio(s[above] + f * estimate) for f in (0.5, 1.5))
-                clear = (half > STABILITY_TOLERANCE) & (more > STABILITY_TOLERANCE)
-                s[above[clear]] += estimate[clear]
-                s[above[~clear]] += estimate[~clear]  # until solved below
-                todo.append(above[~clear][np.argsort(_damping_ratio(s[above[~clear]]))])
-            todo = np.concatenate(todo)
-            # (below the spin a near-degenerate forward/backward pair needs the loss-consistent
-            # pair: refine_set restarts a duplicate from the circular combinations); above it,
-            # most unstable first, until MAX_SOLVED_UNSTABLE are confirmed: the others keep
-            # their first-order value (refined = False)
-            n_below = below.size
-            if n_below:
-                solved, _ = refine_set(red, speed, s[below], right[:nb, below])
-                ok = np.isfinite(solved) & (solved.imag > 0)
-                s[below[ok]], done[below[ok]] = solved[ok], True
-            confirmed = 0
-            for k in todo[n_below:]:
-                if confirmed >= MAX_SOLVED_UNSTABLE:
-                    break
-                solved, _ = refine_set(red, speed, s[k : k + 1], right[:nb, k : k + 1])
-                if np.isfinite(solved[0]) and solved[0].imag > 0:
-                    s[k], done[k] = solved[0], True
-                confirmed += _damping_ratio(s[k : k + 1])[0] < -STABILITY_TOLERANCE
+        if method == "passive" and red.has_loss:
+            # a small basis: every hysteretic root exactly, one complex eigen-solution per branch
+            s, _ = consistent_roots(red, speed)
+            done = np.ones(s.size, bool)
+        else:
+            s, done = _hysteretic(red, speed, state, lam[oscillatory].copy(), right[:, oscillatory])
         zeta = _damping_ratio(s)
         for k in np.flatnonzero(zeta < -STABILITY_TOLERANCE):
             unstable.append(UnstableRoot(speed, complex(s[k]), "oscillatory", bool(done[k])))

@@ -9,6 +9,7 @@ orbit and carried force at each active bearing.
 
 from __future__ import annotations
 
+import html
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -17,6 +18,7 @@ import numpy as np
 from flexshaft.analyses.response import actuator_response, imbalance_response, worst_case_orbits
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
+from flexshaft.units import m_to_mm, rad_s_to_rpm
 
 __all__ = ["SpinupResponse", "spinup_response"]
 
@@ -49,6 +51,24 @@ class SpinupResponse:
     envelope: np.ndarray
     actuator_displacement: Mapping[str, np.ndarray]
     actuator_force: Mapping[str, np.ndarray]
+
+    def __repr__(self) -> str:
+        """One line: the scan and its peaks (the arrays are in the attributes)."""
+        if not self.speeds.size:
+            return "SpinupResponse(no speeds)"
+        k = int(np.argmax(self.shaft_peak))
+        orbit, force = self.actuator_displacement, self.actuator_force
+        actuators = ", ".join(
+            f"{name} {m_to_mm(np.max(orbit[name])):.3g} mm, {np.max(force[name]):.4g} N" for name in orbit
+        )
+        return (
+            f"SpinupResponse({self.speeds.size} speeds {rad_s_to_rpm(self.speeds[0]):.0f} to "
+            f"{rad_s_to_rpm(self.speeds[-1]):.0f} rpm, peak shaft orbit {m_to_mm(self.shaft_peak[k]):.3g} mm at "
+            f"{rad_s_to_rpm(self.speeds[k]):.0f} rpm" + (f"; actuators {actuators})" if actuators else ")")
+        )
+
+    def _repr_html_(self) -> str:
+        return f"<p>{html.escape(repr(self))}</p>"
 
     @property
     def shaft_peak(self) -> np.ndarray:

@@ -14,11 +14,23 @@ mode at its own frequency (:mod:`flexshaft.analyses.loss`):
   i.e. ``C_i`` plus the circulatory ``Ω C_i S`` in the fixed frame (Zorzi & Nelson 1977), the
   boom's loss as ``K''_boom/ω_ref``.
 
+The hysteretic eigenvalues. The loss weights depend on a mode s only through the side of the
+synchronous line, σ = sgn(Im s − Ω), so the eigenproblem is linear on each side and its
+eigenvalues are exactly the roots of the "above" problem with Im s ≥ Ω and of the "below"
+problem with 0 < Im s ≤ Ω (:mod:`flexshaft.analyses.hysteretic_roots`, which derives this and
+the Jeffcott rotor's closed form). Each tracked mode continues both sides' roots and keeps
+the one consistent with its side; a mode with two consistent roots (a fold within O(η²)ω of
+its synchronous crossing) reports the less stable, one with none the root on the line. So the
+verdict is a property of the eigenvalue set, never of which root an iteration reached first:
+it does not change with the BLAS kernels' round-off.
+
 The onset speed is the first crossing of Re(s) from stable to unstable, counting a mode as
 unstable only when its damping ratio is below ``−`` :data:`STABILITY_TOLERANCE` (round-off of
 an undamped mode is ~1e-13); the crossing found on the speed grid is then solved for the
-speed where that mode's damping ratio is zero (regula falsi on Newton solves), so the onset
-does not depend on the grid spacing.
+speed where that mode's damping ratio changes sign (regula falsi, each evaluation the mode
+followed back from its first unstable speed): a zero crossing, or with the rotating-frame loss
+the jump where the mode's consistent root passes from one side of the line to the other (the
+hysteretic Jeffcott rotor: Ω = ω_d). The onset does not depend on the grid spacing.
 
 Divergence. A real eigenvalue s > 0 (an aperiodic instability: e.g. a magnetic bearing whose
 negative stiffness k_s exceeds its control stiffness, or C = 0) is no oscillatory mode and is
@@ -44,8 +56,9 @@ from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
+from flexshaft.analyses.hysteretic_roots import mode_root
 from flexshaft.analyses.loss import viscous_equivalent
-from flexshaft.analyses.results import ResultMixin
+from flexshaft.analyses.results import ResultMixin, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.model import rotation_generator as _rotation_generator
 from flexshaft.parallel.threads import single_blas_thread
@@ -120,6 +133,9 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
             f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
             f"{self.damping_model} method, internal damping {self.internal_damping!r})"
         )
+
+    def _repr_html_(self) -> str:
+        return html_table(self.SUMMARY_COLUMNS, self.mode_summary(), title=repr(self))
 
     def to_dataset(self):
         """Tracked eigenvalues over speed with the onset speed (xarray)."""
@@ -305,25 +321,34 @@ def stability(
 
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:
     """Speed where the tracked ``mode``'s damping ratio crosses zero between speeds[k−1] and
-    speeds[k] (Illinois regula falsi, each evaluation a Newton solve continued from the
-    bracket; converged to 1e-7 of the speed). Falls back to the linear interpolation of the
-    grid when the mode cannot be followed inside the bracket."""
+    speeds[k] (Illinois regula falsi; converged to 1e-7 of the speed). Each evaluation follows
+    the mode back from its unstable end, speeds[k], whose shape identifies it: Newton's method
+    on the viscous problem, or with the hysteretic loss the mode's consistent root
+    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`, both sides of the synchronous
+    line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
+    just below the forward frequency, unstable just above), the bracket closes on the jump.
+    Falls back to the linear interpolation of the grid when the mode cannot be followed inside
+    the bracket."""
 
     def zeta(s):
         return -s.real / abs(s)
 
     a, b = float(speeds[k - 1]), float(speeds[k])
     sa, sb = tracked.eigenvalues[k - 1, mode], tracked.eigenvalues[k, mode]
-    ya = tracked.states[k - 1][:, mode]
+    yb = tracked.states[k][:, mode]
     za, zb = zeta(sa), zeta(sb)
     estimate = a + za / (za - zb) * (b - a) if za != zb else b
     side = 0
-    for _ in range(40):
+    for _ in range(80):
         c = a + za / (za - zb) * (b - a) if za != zb else 0.5 * (a + b)
         t = (c - float(speeds[k - 1])) / (float(speeds[k]) - float(speeds[k - 1]))
-        guess = tracked.eigenvalues[k - 1, mode] + t * (tracked.eigenvalues[k, mode] - tracked.eigenvalues[k - 1, mode])
-        sc, yc, converged = newton(red, c, guess, ya, viscous=None if viscous is None else viscous(c))
-        if not converged or abs(np.vdot(ya, yc)) ** 2 < 0.8:
+        guess = sa + t * (sb - sa)
+        if viscous is None:  # the same mode: its test is mode_root's
+            sc, _, found = mode_root(red, c, guess, yb)
+        else:
+            sc, yc, converged = newton(red, c, guess, yb, viscous=viscous(c))
+            found = converged and abs(np.vdot(yb, yc)) ** 2 >= 0.8
+        if not found:
             return float(estimate)
         zc = zeta(sc)
         estimate = c

@@ -6,7 +6,7 @@ import numpy as np
 
 from flexshaft.analyses.modal import Modes, modes
 from flexshaft.assembly.model import Model
-from flexshaft.units import hz_to_rpm, rad_s_to_rpm
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = ["model_summary", "modes_table"]
 
@@ -41,22 +41,9 @@ def model_summary(model: Model) -> dict:
 
 
 def modes_table(m: Modes) -> list[dict]:
-    """One row per mode: frequency [Hz], damping ratio, log decrement, kind, whirl, component."""
-    comp = m.component
-    return [
-        {
-            "mode": i + 1,
-            "frequency_Hz": float(m.frequencies[i]),
-            "frequency_rpm": float(hz_to_rpm(m.frequencies[i])),
-            "damping_ratio": float(m.damping_ratios[i]),
-            "log_decrement": float(m.log_decrements[i]),
-            "kind": str(m.kind[i]),
-            "whirl": str(m.whirl[i]),
-            "component": str(comp[i]),
-            "shaft_energy_fraction": float(m.shaft_fractions[i]),
-        }
-        for i in range(len(m.eigenvalues))
-    ]
+    """One row per mode: frequency [Hz], damping ratio, log decrement, kind, whirl, component
+    (:meth:`Modes.table`)."""
+    return m.table()
 
 
 def modes_at(model: Model, speed: float, n_modes: int = 10) -> list[dict]:

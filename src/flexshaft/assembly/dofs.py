@@ -70,6 +70,14 @@ class DofMap:
     tied: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=int))
     extra: tuple[str, ...] = ()
 
+    def __repr__(self) -> str:
+        """One line: nodes, stations and DOF counts (the arrays are in the attributes)."""
+        span = f", x = {self.shaft_x[0]:g} to {self.shaft_x[-1]:g} m" if self.n_shaft_nodes else ""
+        return (
+            f"DofMap({self.n_shaft_nodes} shaft nodes{span}, {self.n_boom_nodes} boom nodes, "
+            f"{len(self.extra)} extra, {self.size} DOFs ({self.free.size} free))"
+        )
+
     @cached_property
     def _alias(self) -> np.ndarray | None:
         if not len(self.tied):

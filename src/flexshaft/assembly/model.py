@@ -29,6 +29,7 @@ import scipy.sparse as sp
 from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.drive import DriveTrain
+from flexshaft.units import rad_s_to_rpm
 
 __all__ = [
     "Controller",
@@ -345,6 +346,17 @@ class Model:
     segments: tuple[SegmentProperties, ...] = ()
     couplings: tuple[CouplingLink, ...] = ()
     drive: DriveTrain = DriveTrain()
+
+    def __repr__(self) -> str:
+        """One line: the design, the mesh, the DOFs, the bearings and the operating speed (the
+        matrices are in the attributes)."""
+        name = getattr(self.design, "name", None)
+        rpm = rad_s_to_rpm(self.speed)
+        return (
+            f"Model({name!r}, {self.dofs.n_shaft_nodes} shaft nodes, {self.dofs.n_boom_nodes} boom nodes, "
+            f"{self.dofs.size} DOFs ({self.dofs.free.size} free), {len(self.bearings)} bearings "
+            f"({len(self.actuators)} active), {rpm:.0f} rpm, internal damping {self.internal_damping!r})"
+        )
 
     @cached_property
     def _loss_split(self) -> tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix]:

@@ -1,5 +1,5 @@
 """Command-line interface: ``flexshaft run | baseline | check | modes | stability | thermal | runup |
-montecarlo | study``.
+montecarlo | study | compare | optimize | validate | explore``.
 
 Exit codes: 0 success; 2 a user error (bad design file, argument or output folder), with a
 message naming what to change and never a traceback; 3 ``flexshaft run --strict`` on a design
@@ -27,6 +27,7 @@ import typer
 from flexshaft.cli.analysis import baseline, check, modes, stability, thermal
 from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, settings
 from flexshaft.cli.compare import compare
+from flexshaft.cli.explore import explore
 from flexshaft.cli.optimize import optimize
 from flexshaft.cli.run import run
 from flexshaft.cli.study import study_app
@@ -102,6 +103,7 @@ app.add_typer(study_app, name="study")
 app.command("compare")(compare)
 app.command("optimize")(optimize)
 app.command("validate")(validate)
+app.command("explore")(explore)
 
 
 def main() -> None:  # pragma: no cover - console entry

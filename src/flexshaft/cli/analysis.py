@@ -40,8 +40,8 @@ def baseline(
         typer.Option(
             "--name",
             case_sensitive=False,
-            help="Embedded design: baseline (thesis Table 3.1: K_p 1e7 N/m, K_d 0) or tuned (the tuned final "
-            "design, the default of `flexshaft run`).",
+            help="Embedded design: baseline (thesis Table 3.1: K_p 1e7 N/m, K_d 0), tuned (the tuned final "
+            "design, every command's default) or current (today's segmented aluminium driveline).",
         ),
     ] = Embedded.baseline,
     as_json: JsonOption = False,
@@ -91,7 +91,9 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
             }
         )
         return
-    typer.echo(f"ok: {plain(loaded.design.name)}")
+    from flexshaft.cli.tables import design_source
+
+    typer.echo(f"ok: {plain(loaded.design.name)} ({plain(design_source(design))})")
     for note in notes:
         typer.echo(f"warning: {plain(note)}", err=True)
 
@@ -126,10 +128,10 @@ def modes(
             {"design": loaded.design.name, "speed_rpm": rad_s_to_rpm(speed), "mode_numbering": "from 1", "modes": rows}
         )
         return
-    from flexshaft.cli.tables import modes_table, print_line, sig, stdout_console
+    from flexshaft.cli.tables import design_heading, design_source, modes_table, print_line, sig, stdout_console
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, design_source(design)), style="bold")
     console.print(modes_table(f"modes at {sig(rad_s_to_rpm(speed))} rpm", rows))
 
 
@@ -229,10 +231,10 @@ def stability(
     if as_json:
         print_json(out)
         return
-    from flexshaft.cli.tables import print_line, sig, stdout_console, table
+    from flexshaft.cli.tables import design_heading, design_source, print_line, sig, stdout_console, table
 
     console = stdout_console()
-    print_line(console, d.name, style="bold")
+    print_line(console, design_heading(d.name, design_source(design)), style="bold")
     print_line(
         console,
         f"operating speed {sig(operating_rpm)} rpm; required: no whirl onset below "
@@ -315,14 +317,16 @@ def thermal(
     if as_json:
         print_json(out)
         return
-    _print_thermal(d.name, out)
+    from flexshaft.cli.tables import design_heading, design_source
+
+    _print_thermal(design_heading(d.name, design_source(design)), out)
 
 
-def _print_thermal(name: str, out: dict) -> None:
+def _print_thermal(heading: str, out: dict) -> None:
     from flexshaft.cli.tables import print_line, sig, stdout_console, table
 
     console = stdout_console()
-    print_line(console, name, style="bold")
+    print_line(console, heading, style="bold")
     if "tailboom_c" in out:
         flags = out.get("tailboom_flags", {})
         console.print(

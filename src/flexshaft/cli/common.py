@@ -273,12 +273,13 @@ class LoadedDesign:
     source: str
 
 
-def default_design(name: str = "baseline") -> LoadedDesign:
+def default_design(name: str | None = None) -> LoadedDesign:
     """The design of a command run without a design file: the embedded design ``name``
-    ("baseline", the thesis's Table 3.1 configuration, for the analysis commands; "tuned", the
-    tuned final design, for ``flexshaft run``)."""
-    from flexshaft.design import EMBEDDED_DESIGNS, embedded_design, embedded_text
+    (default :data:`flexshaft.design.DEFAULT_DESIGN`, the tuned final design, for every command;
+    ``flexshaft compare`` sets the current driveline beside it)."""
+    from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS, embedded_design, embedded_text
 
+    name = name or DEFAULT_DESIGN
     return LoadedDesign(
         embedded_design(name), embedded_text(name), f"embedded {name} design ({EMBEDDED_DESIGNS[name][1]})"
     )
@@ -320,8 +321,9 @@ def _check_design_path(path: Path) -> None:
         refuse(f"{info.st_size} bytes; a design file may have at most {MAX_DESIGN_BYTES} bytes")
 
 
-def load_design_argument(path: Path | None, default: str = "baseline") -> LoadedDesign:
-    """The design of a command's DESIGN argument (default: the embedded design ``default``).
+def load_design_argument(path: Path | None, default: str | None = None) -> LoadedDesign:
+    """The design of a command's DESIGN argument (default: the embedded design ``default``, the
+    tuned design unless named).
 
     Raises
     ------

@@ -95,17 +95,18 @@ def compare(
     if as_json:
         print_json(comparison_json(result))
     else:
-        _print_comparison(result, page, progress.elapsed)
+        _print_comparison(result, page, progress.elapsed, (design_a, design_b))
 
 
-def _print_comparison(result, page: Path, seconds: float) -> None:
-    from flexshaft.cli.tables import print_line, sig, stdout_console, table
+def _print_comparison(result, page: Path, seconds: float, paths: tuple[Path | None, Path | None]) -> None:
+    from flexshaft.cli.tables import design_source, print_line, sig, stdout_console, table
     from flexshaft.report.compare import format_metric
 
     console = stdout_console()
     a, b = result.labels
-    for label, run in zip(result.labels, result.runs):
-        print_line(console, f"{label}: {run.model.design.name}", style="bold")
+    for label, run, path, default in zip(result.labels, result.runs, paths, DEFAULTS):
+        source = design_source(path, default)
+        print_line(console, f"design {label}: {run.model.design.name} ({source})", style="bold")
     rows = [
         [m.title, *(format_metric(m.key, m.unit, m.values[d], m.lower_bounds[d]) for d in (0, 1))]
         for m in result.metrics()

@@ -1,6 +1,9 @@
 """``flexshaft optimize``: multi-objective design search with the requirements verdict as constraints.
 
-Mounted in :mod:`flexshaft.cli`. Exit codes: 0 when at least one
+Mounted in :mod:`flexshaft.cli`. Default objectives: the driveline mass (actuators included)
+against the smallest normalised margin of the requirements. The terminal shows the Pareto designs
+and the references; with no feasible design, which requirements block (``blocking_checks.json``
+in the run folder too); ``--json`` prints the same as JSON. Exit codes: 0 when at least one
 design passes every requirement (and, unless ``--no-verify``, every written design re-verifies
 with the full run), 2 for a user error (bad option, unknown path, missing extra, a run folder of
 another search), 3 when no design passes or a written design fails its re-verification.
@@ -15,7 +18,8 @@ from pathlib import Path
 
 import typer
 
-from flexshaft.cli.common import fail, guarded, plain
+from flexshaft.cli.common import fail, guarded, plain, print_json
+from flexshaft.cli.options import JsonOption
 
 
 class Fidelity(str, Enum):
@@ -91,9 +95,23 @@ def _load_design(path: Path | None, embedded: str):
         _fail(f"invalid design {path if path is not None else f'(embedded {embedded})'}:\n{exc}")
 
 
+def _base_text(path: Path | None, embedded: str) -> str | None:
+    """The base design file's text, whose comments the written designs keep (None if unreadable)."""
+    from flexshaft.design import EMBEDDED_DESIGNS, embedded_text
+
+    try:
+        if path is None:
+            return embedded_text(embedded)
+        if not path.exists() and str(path) in EMBEDDED_DESIGNS:
+            return embedded_text(str(path))
+        return path.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
 def _base_label(path: Path | None) -> str:
     if path is None:
-        return "base (Table 3.1 baseline)"
+        return "base (tuned design)"
     return f"base ({path.stem if path.suffix == '.toml' else path.name})"
 
 
@@ -101,7 +119,8 @@ def _base_label(path: Path | None) -> str:
 def optimize(
     design: Path | None = typer.Argument(
         None,
-        help="Base design file (TOML). Default: the embedded Table 3.1 baseline (`flexshaft baseline`).",
+        help="Base design file (TOML). Default: the embedded tuned design (`flexshaft baseline --name tuned`), as "
+        "for every command.",
         show_default=False,
     ),
     budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
@@ -127,8 +146,10 @@ def optimize(
     objective: list[str] | None = typer.Option(
         None,
         "--objective",
-        help="shaft_mass, safety_factor, buckling_safety_factor, actuator_force, actuator_orbit, "
-        "spinup_deflection, max_temperature, min_log_decrement. Default: shaft_mass and safety_factor.",
+        help="driveline_mass (tubes, couplings, bearings, actuators), min_margin (smallest normalised margin "
+        "of the requirements), shaft_mass, safety_factor, buckling_safety_factor, actuator_force, "
+        "actuator_orbit, spinup_deflection, max_temperature, min_log_decrement. Default: driveline_mass "
+        "and min_margin.",
     ),
     ignore_check: list[str] | None = typer.Option(
         None, "--ignore-check", help="Verdict check not used as a constraint (default: all)."
@@ -144,14 +165,24 @@ def optimize(
     ),
     designs: int = typer.Option(8, "--designs", min=1, help="Pareto designs written as design files (at most)."),
     verify: bool = typer.Option(True, "--verify/--no-verify", help="Re-verify the written designs with the full run."),
+    as_json: JsonOption = False,
 ) -> None:
-    """Search the designs that pass every requirement for the best trade-off of the objectives
-    (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
+    """Search the designs that pass every requirement for the best trade-off of the objectives,
+    by default the driveline mass against the smallest requirement margin (NSGA-II from pymoo:
+    pip install the 'optimize' extra of flexshaft)."""
+    from flexshaft.cli.tables import design_heading, design_source
+    from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS
     from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
+    from flexshaft.optimize.variables import DEFAULT_OBJECTIVES
     from flexshaft.sweep import SweepError
 
-    base = _load_design(design, "baseline")
+    base = _load_design(design, DEFAULT_DESIGN)
+    if design is not None and not design.exists() and str(design) in EMBEDDED_DESIGNS:
+        source = design_source(None, str(design))  # an embedded design by name
+    else:
+        source = design_source(design)
+    typer.echo(plain(design_heading(base.name, source)))
     refs = {}
     for item in reference or []:
         refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)
@@ -169,13 +200,14 @@ def optimize(
         problem = DesignProblem(
             variables,
             base=base,
-            objectives=tuple(objective or ("shaft_mass", "safety_factor")),
+            objectives=tuple(objective or DEFAULT_OBJECTIVES),
             constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])),
             layup=template,
             ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
             fixed=dict(_parse_set(s) for s in set_value or []),
             fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}",
+            base_text=_base_text(design, "baseline"),
         )
         from flexshaft.optimize.nsga import optimize as run_optimization
 
@@ -193,34 +225,125 @@ def optimize(
         )  # stdout: results
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
-    _report(result, out, designs, verify, jobs, dask)
+    _report(result, out, designs, verify, jobs, dask, as_json)
 
 
-def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: str | None) -> None:
+_NO_DESIGN = (
+    "no evaluated design passes every requirement: raise the budget, widen the bounds or relax what "
+    "blocks (the table; the margins of every design in evaluations.nc)"
+)
+
+
+def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: str | None, as_json: bool) -> None:
     from flexshaft.plot.driveline import save_figure
 
     paths = result.save(out)
     figure = save_figure(result.plot(), out, "pareto")
-    typer.echo(f"{result!r}; {result.n_computed} computed in {result.elapsed:.0f} s")
-    typer.echo(f"written: {paths['evaluations']}, {paths['pareto']}, {figure['png']}")
-    if result.pareto.sizes.get("design", 0) == 0:
-        typer.echo(
-            "no evaluated design passes every requirement: raise the budget, widen the bounds or "
-            "see the margins in evaluations.nc",
-            err=True,
-        )
+    files, failed = [], []
+    if result.pareto.sizes.get("design", 0):
+        files = result.write_designs(out / "designs", max_designs)
+        if verify:
+            ds = result.verify(files, jobs=jobs, client=dask)
+            failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
+        result.save(out)
+    if as_json:
+        print_json(_json_result(result, {**paths, "figure": figure["png"]}, files, failed))
+    else:
+        typer.echo(f"{result!r}; {result.n_computed} computed in {result.elapsed:.0f} s")
+        typer.echo(f"written: {paths['evaluations']}, {paths['pareto']}, {paths['blocking']}, {figure['png']}")
+        if files:
+            _print_table(result)
+            typer.echo(f"design files: {out / 'designs'} ({len(files)})")
+        else:
+            _print_blocking(result)
+    if not files:
+        typer.echo(_NO_DESIGN, err=True)
         raise typer.Exit(code=NO_DESIGN_PASSES)
-    files = result.write_designs(out / "designs", max_designs)
-    failed = []
-    if verify:
-        ds = result.verify(files, jobs=jobs, client=dask)
-        failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
-    result.save(out)
-    _print_table(result)
-    typer.echo(f"design files: {out / 'designs'} ({len(files)})")
     if failed:
         typer.echo(f"re-verification with the full run FAILS for: {', '.join(failed)}", err=True)
         raise typer.Exit(code=NO_DESIGN_PASSES)
+
+
+def _suffixed(name: str, units: str) -> str:
+    """A JSON key with its unit (``driveline_mass_kg``; dimensionless: the name alone)."""
+    return name if units in ("", "1") else f"{name}_{units.replace(' ', '_')}"
+
+
+def _json_result(result, paths: dict, files: list, failed: list) -> dict:
+    """The optimization as plain data: the search, the Pareto designs, the references, what
+    blocks and the files written (SI values, each unit in its key)."""
+    import numpy as np
+
+    problem, ev, pareto = result.problem, result.evaluations, result.pareto
+    units = {name: unit for name, unit, _ in problem.outputs + problem.derived_outputs}
+    shown = [n for n in problem.all_output_names if not n.startswith("status_")]
+
+    def outputs_of(values) -> dict:
+        return {_suffixed(n, units[n]): float(values[n]) for n in shown if n in values}
+
+    designs = []
+    for k in range(pareto.sizes.get("design", 0)):
+        row = {n: pareto[n].values[k] for n in shown if n in pareto}
+        verified = float(pareto["verified"].values[k]) if "verified" in pareto else -1.0
+        designs.append(
+            {
+                "file": str(pareto["file"].values[k]) or None if "file" in pareto else None,
+                "verified": {1.0: True, 0.0: False}.get(verified),
+                "evaluation": int(pareto["evaluation"].values[k]),
+                "limiting_check": str(pareto["limiting_check"].values[k]) if "limiting_check" in pareto else None,
+                "variables": {
+                    _suffixed(v.name, v.units.replace(" m-1", "_per_m")): (
+                        int(pareto[v.name].values[k]) if v.integer else float(pareto[v.name].values[k])
+                    )
+                    for v in problem.variables
+                },
+                "outputs": outputs_of(row),
+            }
+        )
+    n = ev.sizes.get("evaluation", 0)
+    return {
+        "design": str(problem.base.name),
+        "objectives": [
+            {"output": o.output, "sense": o.sense, "units": units.get(o.output, "")} for o in problem.objectives
+        ],
+        "constraints": [c.removeprefix("margin_") for c in problem.constraints],
+        "fidelity": problem.fidelity,
+        "evaluations": int(n),
+        "feasible": int(np.sum(ev["feasible"].values)) if n else 0,
+        "computed": int(result.n_computed),
+        "elapsed_s": float(result.elapsed),
+        "passed": bool(files) and not failed,
+        "pareto": designs,
+        "references": {
+            label: {
+                "feasible": bool(values.get("feasible", False)),
+                "limiting_check": values.get("limiting_check"),
+                "outputs": outputs_of(values),
+            }
+            for label, values in result.references.items()
+        },
+        "blocking_checks": result.blocking_checks(),
+        "reverification_failed": failed,
+        "files": {**{k: str(v) for k, v in paths.items()}, "designs": [str(f) for f in files]},
+    }
+
+
+def _print_blocking(result) -> None:
+    """What keeps every design out: per requirement, the candidates it rejects."""
+    from flexshaft.cli.tables import stdout_console, table
+
+    rows = result.blocking_checks()
+    n = result.evaluations.sizes.get("evaluation", 0)
+    stdout_console().print(
+        table(
+            f"no design passes: what blocks the {n} evaluated designs",
+            ["requirement", "rejects", "alone", "not evaluated", "best margin"],
+            [[r["check"], r["rejected"], r["alone"], r["not_evaluated"], r["best_margin"]] for r in rows],
+            numeric=range(1, 5),
+            caption="rejects: designs failing it; alone: designs failing only it; best margin: the largest "
+            "normalised margin reached (>= 0 passes)",
+        )
+    )
 
 
 def _print_table(result) -> None:
@@ -231,21 +354,30 @@ def _print_table(result) -> None:
     if "shaft_mass" not in pareto:  # a custom evaluation: print the objectives only
         print_line(console, str(pareto[[o.output for o in result.problem.objectives]].to_dataframe()))
         return
-    names = ("shaft_mass", "safety_factor", "buckling_safety_factor", "actuator_force", "spinup_deflection")
+    names = (
+        "driveline_mass",
+        "shaft_mass",
+        "min_margin",
+        "safety_factor",
+        "buckling_safety_factor",
+        "actuator_force",
+        "spinup_deflection",
+    )
 
-    def row(label, outputs, verdict):
+    def row(label, outputs, limiting, verdict):
+        nan = float("nan")
         return [
             label,
-            outputs["shaft_mass"],
-            outputs["safety_factor"],
-            outputs["buckling_safety_factor"],
-            outputs["actuator_force"],
-            outputs["spinup_deflection"] * 1e3,
+            *(outputs.get(n, nan) for n in names[:3]),
+            limiting or "",
+            *(outputs.get(n, nan) for n in names[3:6]),
+            outputs.get("spinup_deflection", nan) * 1e3,
             verdict,
         ]
 
     rows = [
-        row(label, outputs, "PASS" if outputs["feasible"] else "FAIL") for label, outputs in result.references.items()
+        row(label, outputs, outputs.get("limiting_check"), "PASS" if outputs["feasible"] else "FAIL")
+        for label, outputs in result.references.items()
     ]
     for k in range(pareto.sizes["design"]):
         name = str(pareto["file"].values[k]) if "file" in pareto else ""
@@ -254,12 +386,27 @@ def _print_table(result) -> None:
         verified = {1.0: "PASS run", 0.0: "FAIL run"}.get(
             float(pareto["verified"].values[k]) if "verified" in pareto else -1.0, "PASS"
         )
-        rows.append(row(name.removesuffix(".toml"), {n: float(pareto[n].values[k]) for n in names}, verified))
+        limiting = str(pareto["limiting_check"].values[k]) if "limiting_check" in pareto else ""
+        values = {n: float(pareto[n].values[k]) for n in names if n in pareto}
+        rows.append(row(name.removesuffix(".toml"), values, limiting, verified))
     console.print(
         table(
             "Pareto designs and references (search verdict; 'run': re-verified by the full run)",
-            ["design", "mass [kg]", "strength SF", "buckling SF", "force [N]", "orbit [mm]", "verdict"],
+            [
+                "design",
+                "driveline [kg]",
+                "shaft [kg]",
+                "smallest margin",
+                "limited by",
+                "strength SF",
+                "buckling SF",
+                "force [N]",
+                "orbit [mm]",
+                "verdict",
+            ],
             rows,
-            numeric=range(1, 6),
+            numeric=[1, 2, 3, 5, 6, 7, 8],
+            caption="driveline: tubes, couplings, bearings and actuators; smallest margin: the smallest "
+            "normalised margin of the requirements (>= 0 passes), that of 'limited by'",
         )
     )

@@ -76,7 +76,10 @@ class Resolution(str, Enum):
 DesignArgument = Annotated[
     Path | None,
     typer.Argument(
-        help="Design file (TOML). Default: the embedded thesis baseline.", show_default=False, metavar="DESIGN"
+        help="Design file (TOML). Default: the embedded tuned design (`flexshaft baseline --name tuned`), as "
+        "for every command.",
+        show_default=False,
+        metavar="DESIGN",
     ),
 ]
 JsonOption = Annotated[

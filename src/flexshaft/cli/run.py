@@ -9,12 +9,12 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, guarded, load_design_argument, print_json
+from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, fail, guarded, load_design_argument, print_json
 from flexshaft.cli.options import ForceOption, JsonOption, Studies
 from flexshaft.cli.output import prepare_output_folder
 from flexshaft.cli.progress import StageProgress
 
-__all__ = ["run"]
+__all__ = ["run", "run_pipeline"]
 
 # The rest of the package is imported inside the functions that need it: the design schema
 # (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
@@ -64,18 +64,75 @@ def run(
         bool, typer.Option("--strict", help=f"Exit with code {EXIT_REQUIREMENT_FAILED} when a requirement fails.")
     ] = False,
     svg: Annotated[bool, typer.Option("--svg", help="Also write every figure as SVG (PNG always).")] = False,
+    interactive: Annotated[
+        bool,
+        typer.Option(
+            "--interactive",
+            help="Also write interactive.html: the key figures with hover and zoom, plotly.js inlined (works "
+            "offline; needs the extra flexshaft[explore]).",
+        ),
+    ] = False,
 ) -> None:
     """Analyse a design (default: the embedded tuned design), check it against its requirements
-    and write the report folder. Shows each stage and its time on a terminal."""
-    from flexshaft.design import DEFAULT_DESIGN
+    and write the report folder. Prints the design and the verdict first, the tables after; shows
+    each stage and its time on a terminal."""
+    loaded = load_design_argument(design)
+    if interactive:
+        from flexshaft.report.interactive import missing_extra
 
-    loaded = load_design_argument(design, DEFAULT_DESIGN)
+        if missing_extra() is not None:  # before any computation: say how to install the extra
+            fail(missing_extra("flexshaft run --interactive"))
     folder = prepare_output_folder(out, loaded.design, "run", force=force)
+    progress = StageProgress(transient=as_json)
+    assessment, page, thesis = run_pipeline(loaded, folder, progress, studies=studies, svg=svg, interactive=interactive)
+    failed = strict and not assessment.verdict.passed
+    from flexshaft.report.results_json import results_json
+
+    data = results_json(assessment, thesis)
+    if as_json:
+        print_json(data)
+    else:
+        _print_run(assessment, data, page, progress.elapsed, design)
+    if failed:
+        raise typer.Exit(code=EXIT_REQUIREMENT_FAILED)
+
+
+def run_pipeline(
+    loaded,
+    folder: Path,
+    progress: StageProgress,
+    *,
+    studies: Studies = Studies.report,
+    svg: bool = False,
+    interactive: bool = False,
+) -> tuple:
+    """What ``flexshaft run`` computes and writes, without its arguments and printing: the
+    assessment at the report's resolution with the thesis studies beside it on one worker pool,
+    then the report folder. ``flexshaft explore`` runs a design at full resolution through it.
+
+    Parameters
+    ----------
+    loaded : LoadedDesign
+        The design and its file text (:func:`~flexshaft.cli.common.load_design_argument`).
+    folder : Path
+        The output folder, already prepared (:func:`~flexshaft.cli.output.prepare_output_folder`).
+    progress : StageProgress
+        Not yet entered: entered once the workers have forked; its ``step`` gets each stage's
+        label, its timings go to ``timings.json``.
+    studies, svg
+        As ``flexshaft run``'s options.
+    interactive : bool
+        Also write ``interactive.html`` (:func:`flexshaft.report.interactive.write_interactive_report`).
+
+    Returns
+    -------
+    (Assessment, Path, ThesisStudies or None)
+        The assessment, the report page and the thesis studies.
+    """
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES
     from flexshaft.report.driveline import write_run_report
-    from flexshaft.report.results_json import results_json
     from flexshaft.resolution import REPORT
     from flexshaft.thesis.report_studies import start_thesis_studies
     from flexshaft.verdict.assess import assess
@@ -90,7 +147,7 @@ def run(
         import xarray
 
         xarray.Dataset({"warm": ("x", [0.0])})
-    with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, StageProgress(transient=as_json) as progress:
+    with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, progress:
         # the thesis studies are no part of the assessment: they run beside it on the same workers
         pending = start_thesis_studies(loaded.design, studies.value, pool) if with_studies else None
         with warnings.catch_warnings():
@@ -108,23 +165,34 @@ def run(
             svg=svg,
             executor=pool,
         )
-    failed = strict and not assessment.verdict.passed
-    data = results_json(assessment, thesis)
-    if as_json:
-        print_json(data)
-    else:
-        _print_run(assessment, data, page, progress.elapsed)
-    if failed:
-        raise typer.Exit(code=EXIT_REQUIREMENT_FAILED)
+        if interactive:
+            from flexshaft.report.interactive import write_interactive_report
+
+            progress.step("writing the interactive figures")
+            write_interactive_report(assessment, folder)
+    return assessment, page, thesis
 
 
-def _print_run(assessment, data: dict, page: Path, seconds: float) -> None:
-    from flexshaft.cli.tables import modes_table, print_line, sig, stdout_console, verdict_table
+def _print_run(assessment, data: dict, page: Path, seconds: float, path: Path | None) -> None:
+    """The design, the verdict in one line, the model and the modes, the headline numbers, the
+    verdict table and where the report is."""
+    from flexshaft.cli.tables import (
+        design_heading,
+        design_source,
+        modes_table,
+        print_line,
+        sig,
+        stdout_console,
+        verdict_line,
+        verdict_table,
+    )
     from flexshaft.units import m_to_mm
 
     console = stdout_console()
     s = data["summary"]
-    print_line(console, s["name"], style="bold")
+    verdict = assessment.verdict
+    print_line(console, design_heading(s["name"], design_source(path)), style="bold")
+    print_line(console, verdict_line(verdict), style="bold green" if verdict.passed else "bold red")
     print_line(
         console,
         f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "
@@ -150,12 +218,5 @@ def _print_run(assessment, data: dict, page: Path, seconds: float) -> None:
         f"spin-up peak shaft orbit {sig(m_to_mm(imbalance['max_shaft_orbit_spin_up_m']), 3)} mm "
         f"at {sig(imbalance['speed_of_max_rpm'])} rpm",
     )
-    verdict = assessment.verdict
     console.print(verdict_table(verdict))
-    head = "PASS" if verdict.passed else "FAIL"
-    print_line(
-        console,
-        f"verdict: {head}: {verdict.summary.split(': ', 1)[1]}",
-        style="bold green" if verdict.passed else "bold red",
-    )
     print_line(console, f"report written to {page} in {sig(seconds, 3)} s (stage times in timings.json)")

@@ -45,7 +45,14 @@ def _show_progress(as_json: bool) -> bool:
 
 
 def _prepare(design: Path | None, out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
+    """The design (its ``source`` the file or ``embedded tuned design``, for the first line) and
+    the run folder."""
+    import dataclasses
+
+    from flexshaft.cli.tables import design_source
+
     loaded = load_design_argument(design)
+    loaded = dataclasses.replace(loaded, source=design_source(design))
     return loaded, prepare_output_folder(out, loaded.design, f"study {name}", force=force)
 
 
@@ -71,7 +78,7 @@ def _report(
     table=None,
 ) -> None:
     """Print a study: its headline and the table of ``variables``, or the JSON of all its data."""
-    from flexshaft.cli.tables import dataset_json, dataset_table, print_line, stdout_console
+    from flexshaft.cli.tables import dataset_json, dataset_table, design_heading, print_line, stdout_console
 
     if as_json:
         results = folder / "results.nc"
@@ -87,7 +94,7 @@ def _report(
         )
         return
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, loaded.source), style="bold")
     console.print(table if table is not None else dataset_table(ds, variables, f"study {name}"))
     print_line(console, headline)
     for _stem, paths in figures.items():
@@ -320,10 +327,10 @@ def spinup_map(
     if as_json:
         _report(loaded, "spinup-map", folder, ds, [], figures, headline, as_json)
         return
-    from flexshaft.cli.tables import print_line, stdout_console
+    from flexshaft.cli.tables import design_heading, print_line, stdout_console
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, loaded.source), style="bold")
     print_line(console, headline)
     print_line(console, f"data: {folder / 'results.nc'}")
     for paths in figures.values():
@@ -374,11 +381,11 @@ def all_studies(
     if as_json:
         print_json(data)
         return
-    _print_headline(data, page)
+    _print_headline(data, page, loaded.source)
 
 
-def _print_headline(data: dict, page: Path) -> None:
-    from flexshaft.cli.tables import print_line, stdout_console, table
+def _print_headline(data: dict, page: Path, source: str) -> None:
+    from flexshaft.cli.tables import design_heading, print_line, stdout_console, table
     from flexshaft.units import m_to_mm
 
     def mm(value):
@@ -402,7 +409,7 @@ def _print_headline(data: dict, page: Path) -> None:
         ["spin-up peak orbit after tuning [mm]", mm(data["peak_deflection_after_m"]), mm(thesis["tuned_peak_after_m"])],
     ]
     console = stdout_console()
-    print_line(console, data["design"], style="bold")
+    print_line(console, design_heading(data["design"], source), style="bold")
     console.print(
         table(
             f"design studies ({data['resolution']} resolution)",

@@ -9,8 +9,10 @@ lengths are shown in mm, stresses in MPa and speeds in rpm, as in the HTML repor
 from __future__ import annotations
 
 import math
+import os
 import sys
 from collections.abc import Callable, Iterable, Sequence
+from pathlib import Path
 from typing import Any
 
 from flexshaft.cli.common import plain
@@ -21,6 +23,8 @@ __all__ = [
     "cell",
     "dataset_json",
     "dataset_table",
+    "design_heading",
+    "design_source",
     "display_unit",
     "matrix_table",
     "modes_table",
@@ -30,6 +34,7 @@ __all__ = [
     "stdout_console",
     "table",
     "unit_key",
+    "verdict_line",
     "verdict_table",
 ]
 
@@ -100,6 +105,22 @@ def stderr_console():
     from rich.console import Console
 
     return Console(stderr=True, highlight=False)
+
+
+def design_source(path: Path | None, embedded: str | None = None) -> str:
+    """Where a command's design came from: the file, or ``embedded NAME design`` without one
+    (``embedded``, default :data:`flexshaft.design.DEFAULT_DESIGN`)."""
+    if path is not None:
+        return os.fsdecode(path)
+    from flexshaft.design import DEFAULT_DESIGN  # loaded already: the command read its design
+
+    return f"embedded {embedded or DEFAULT_DESIGN} design"
+
+
+def design_heading(name: str, source: str) -> str:
+    """The first line of every command: ``design: NAME (SOURCE)``, the design it analyses and
+    where it came from (:func:`design_source`)."""
+    return f"design: {name} ({source})"
 
 
 def print_line(console, text: str, style: str | None = None) -> None:
@@ -187,6 +208,15 @@ def verdict_table(verdict):
         count = f" {check.n_failed}/{len(check.findings)}" if check.n_failed and len(check.findings) > 1 else ""
         rows.append([*row[:4], Text(plain(status + count), style=_STATUS_STYLE[status]), where])
     return table("requirements verdict (worst case of each)", VERDICT_COLUMNS[:-1], rows, numeric={1, 2, 3})
+
+
+def verdict_line(verdict) -> str:
+    """The verdict in one line, first of a run's output after the design's:
+    ``verdict: FAIL — 2 of 9 checks fail: whirl onset speed (3125 rpm; required ≥ 5520 rpm), …``
+    (:func:`flexshaft.verdict.text.verdict_headline`)."""
+    from flexshaft.verdict.text import verdict_headline
+
+    return f"verdict: {verdict_headline(verdict)}"
 
 
 # ------------------------------------------------------------------------------------------------

@@ -92,11 +92,11 @@ def runup(
     if as_json:
         print_json(data)
         return
-    from flexshaft.cli.tables import print_line, sig, stdout_console, table
+    from flexshaft.cli.tables import design_heading, design_source, print_line, sig, stdout_console, table
     from flexshaft.units import m_to_mm
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, design_source(design)), style="bold")
     print_line(
         console,
         f"run-up {sig(start_rpm)} → {sig(rad_s_to_rpm(stop))} rpm in {sig(duration)} s "
@@ -155,7 +155,10 @@ def montecarlo(
 ) -> None:
     """Monte-Carlo imbalance: random eccentricity (balance grade), phase and place per bay;
     distributions of the spin-up peak, actuator orbit and force and the Tsai-Wu safety factor,
-    and the probability of exceeding the gap and the force limit."""
+    and the probability of exceeding the gap and the force limit (with its exact 95 % upper
+    confidence bound)."""
+    import sys
+
     import numpy as np
 
     check_finite("--grade", grade, 1e-3, 4000.0)
@@ -177,7 +180,7 @@ def montecarlo(
         jobs=jobs,
         client=dask,
         run_dir=folder / "sweep",
-        progress=not as_json,
+        progress=not as_json and sys.stderr.isatty(),  # the bar is drawn on stderr, only on a terminal
     )
     gap, capacity = result.gap, result.force_limit
     result.dataset.to_netcdf(folder / "samples.nc")
@@ -204,14 +207,18 @@ def montecarlo(
         "summary": summary,
         "p_gap_exceeded": None if result.gap_exceedance is None else result.gap_exceedance[0],
         "p_force_exceeded": None if result.force_exceedance is None else result.force_exceedance[0],
+        # the counts and the exact (Clopper-Pearson) 95 % upper bounds: with no exceedance the
+        # estimate above is 0, and the bound is the number to read
+        "gap_exceedance": None if result.gap_events is None else result.gap_events.to_dict(),
+        "force_exceedance": None if result.force_events is None else result.force_events.to_dict(),
     }
     if as_json:
         print_json(data)
         return
-    from flexshaft.cli.tables import print_line, sig, stdout_console
+    from flexshaft.cli.tables import design_heading, design_source, print_line, sig, stdout_console
 
     console = stdout_console()
-    print_line(console, loaded.design.name, style="bold")
+    print_line(console, design_heading(loaded.design.name, design_source(design)), style="bold")
     print_line(console, f"{samples} samples, balance grade G {sig(grade)} mm/s, seed {seed}")
     for key, label, scale, unit in (
         ("shaft_peak", "spin-up peak shaft orbit", m_to_mm, "mm"),
@@ -226,14 +233,11 @@ def montecarlo(
                 f"{label}: mean {sig(scale(summary[key]['mean']))} {unit}, "
                 f"99th percentile {sig(scale(summary[key]['p99']))} {unit}",
             )
-    for name, value, limit in (
-        ("gap", result.gap_exceedance, gap and m_to_mm(gap)),
-        ("force limit", result.force_exceedance, capacity),
+    for name, events, limit in (
+        ("gap", result.gap_events, gap and m_to_mm(gap)),
+        ("force limit", result.force_events, capacity),
     ):
-        if value is not None:
+        if events is not None:
             unit = "mm" if name == "gap" else "N"
-            print_line(
-                console,
-                f"P({name} {sig(limit)} {unit} exceeded, static + dynamic) = {sig(value[0], 3)} ± {sig(value[1], 2)}",
-            )
+            print_line(console, f"{name} {sig(limit)} {unit} exceeded (static + dynamic) in {events.describe()}")
     print_line(console, f"written to {folder}")

@@ -14,9 +14,10 @@ import numpy as np
 from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.transient import default_basis_size, transient_response
+from flexshaft.assembly.balance import bay_rotating_masses
 from flexshaft.assembly.loads import imbalance_bays, per_bay_imbalance_loads
 from flexshaft.assembly.model import Model
-from flexshaft.montecarlo.samples import EccentricityDistribution, ImbalanceDraws, draw_imbalance
+from flexshaft.montecarlo.samples import EccentricityDistribution, ImbalanceDraws, bay_unbalances, draw_imbalance
 
 __all__ = ["RunupSamples", "runup_montecarlo"]
 
@@ -56,7 +57,9 @@ def runup_montecarlo(
     (:func:`flexshaft.analyses.transient.transient_response` with a unit unbalance at the
     bay's middle, from rest or the steady state at Ω(0)) gives every sample as a weighted sum
     of the bays' complex envelopes; each sample's peaks are those of its envelopes over the
-    run. Sample k uses the same draws as the steady study (``default_rng([seed, k])``).
+    run. Sample k uses the same draws as the steady study (``default_rng([seed, k])``) and the
+    same unbalance per bay, ``U_b = e_b m_b`` with m_b the bay's rotating mass
+    (:func:`flexshaft.assembly.balance.bay_rotating_masses`).
 
     Parameters
     ----------
@@ -70,8 +73,7 @@ def runup_montecarlo(
     """
     bays = imbalance_bays(model) or [(float(model.dofs.shaft_x[0]), float(model.dofs.shaft_x[-1]))]
     n_bays = len(bays)
-    lengths = np.array([b - a for a, b in bays])
-    bay_mass = model.shaft_mass * lengths / lengths.sum()
+    bay_mass = bay_rotating_masses(model)
     red = reduce(model, default_basis_size(model, profile.max_speed) if basis_size is None else int(basis_size))
     output_step = np.pi / (2 * max(profile.max_speed, 1e-3)) if output_step is None else output_step
     shaft, act, force = [], [], []
@@ -95,7 +97,7 @@ def runup_montecarlo(
     force = np.stack(force, -1).astype(np.complex64).reshape(-1, n_bays)
     n_act = act.shape[0] // (2 * n_t)
     draws = draw_imbalance(range(int(n_samples)), n_bays, distribution, "mid_bay", seed)
-    weights = (draws.eccentricity * bay_mass * np.exp(1j * draws.angle)).T.astype(np.complex64)  # (n_bays, n) [kg m]
+    weights = bay_unbalances(bay_mass, draws).T.astype(np.complex64)  # (n_bays, n) [kg m]
     n = weights.shape[1]
     out = {k: np.zeros(n) for k in ("shaft_peak", "shaft_peak_speed", "actuator_orbit_max", "actuator_force_max")}
     for start in range(0, n, block):

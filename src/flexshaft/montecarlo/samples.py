@@ -1,9 +1,17 @@
 """Random imbalance samples and their responses, cheap by linearity (see
 :mod:`flexshaft.montecarlo.steady` for the method and its references).
 
-The balance-grade eccentricity (ISO 21940-11:2016, §5.3: ``e_per Ω = G``), the eccentricity
-distribution, the unit responses to a rotating unit unbalance at the Lagrange stations of every
-shaft element (solved once per speed), the draws of one sample and its outputs.
+The eccentricity distribution (scaled by a balance grade's permissible eccentricity, ISO
+21940-11:2016 §5.3: ``e_per Ω = G``, :func:`flexshaft.assembly.balance.permissible_eccentricity`),
+the unit responses to a rotating unit unbalance at the Lagrange stations of every shaft element
+(solved once per speed), the draws of one sample and its outputs.
+
+Each bay b carries ``U_b = e_b m_b`` with m_b the bay's rotating mass of ISO 21940-11
+(:func:`flexshaft.assembly.balance.bay_rotating_masses`: its tubes, disks and coupling hubs, the
+overhangs with the end bays), the same balanced rotor as the run's imbalance force ``e_c m Ω²``
+(Σ m_b = m). With every e_b = e_c the bays' unbalances add up to the run's e_c m; the run shares
+it equally among the bays (the thesis's convention), the samples by mass, so the two load
+vectors are equal where the bays' masses are (tests/test_montecarlo_iso.py).
 """
 
 from __future__ import annotations
@@ -17,6 +25,7 @@ import numpy as np
 from flexshaft.analyses.banded import BandedHarmonicSolver
 from flexshaft.analyses.response import bearing_reactions, orbit_amplitude, static_response
 from flexshaft.analyses.shaft_strength import shaft_safety_factor
+from flexshaft.assembly.balance import bay_rotating_masses, permissible_eccentricity
 from flexshaft.assembly.loads import external_static_load, imbalance_bays, point_load, torque_load
 from flexshaft.assembly.model import Model
 from flexshaft.resolution import SLOW_START
@@ -26,7 +35,7 @@ __all__ = [
     "ImbalanceDraws",
     "Placement",
     "UnitResponses",
-    "balance_grade_eccentricity",
+    "bay_unbalances",
     "combine",
     "draw_imbalance",
     "sample_outputs",
@@ -35,19 +44,6 @@ __all__ = [
 
 Placement = Literal["mid_bay", "uniform"]
 _STATIONS = np.array([0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0])  # Lagrange stations per element (ξ)
-
-
-def balance_grade_eccentricity(grade_mm_s: float, speed: float) -> float:
-    """Permissible residual specific unbalance e_per [m] of balance grade G at speed Ω.
-
-    ISO 21940-11 §5.3: ``e_per Ω = G`` with G [mm/s] (e.g. G 6.3) and Ω [rad/s] the maximum
-    service speed, so ``e_per = G/Ω``: G 6.3 at 4800 rpm gives 12.5 µm.
-    """
-    if not (np.isfinite(grade_mm_s) and grade_mm_s > 0):
-        raise ValueError(f"grade_mm_s must be a positive balance grade in mm/s (e.g. 6.3), got {grade_mm_s!r}")
-    if not (np.isfinite(speed) and speed > 0):
-        raise ValueError(f"speed must be > 0 rad/s, got {speed!r}")
-    return grade_mm_s * 1e-3 / speed
 
 
 @dataclass(frozen=True)
@@ -74,8 +70,10 @@ class EccentricityDistribution:
 
     @classmethod
     def from_grade(cls, grade_mm_s: float, speed: float, kind: str = "disk") -> EccentricityDistribution:
-        """Scaled by the balance grade's e_per = G/Ω (:func:`balance_grade_eccentricity`)."""
-        return cls(kind, balance_grade_eccentricity(grade_mm_s, speed))
+        """Scaled by the permissible eccentricity e_per = G/Ω of balance grade G [mm/s] at the
+        maximum service speed Ω [rad/s] (ISO 21940-11 §5.3,
+        :func:`flexshaft.assembly.balance.permissible_eccentricity`, the run's definition)."""
+        return cls(kind, permissible_eccentricity(grade_mm_s, speed))
 
     def sample(self, rng: np.random.Generator, size: int) -> np.ndarray:
         """``size`` eccentricities [m]."""
@@ -101,7 +99,8 @@ class UnitResponses:
     speeds : ndarray
         Ω [rad/s] (n_s,).
     bays : ndarray
-        Bay ends [m] (n_bays, 2) and ``bay_mass`` [kg] (n_bays,).
+        Bay ends [m] (n_bays, 2) and ``bay_mass`` [kg] (n_bays,), each bay's rotating mass
+        (:func:`flexshaft.assembly.balance.bay_rotating_masses`).
     stations : ndarray
         Station positions [m] (n_st,); ``elements`` (n_el, 2) the element ends of each bay's
         elements, ``element_stations`` (n_el, 4) their station indices, ``element_bay`` (n_el,).
@@ -236,7 +235,7 @@ def unit_responses(
     """
     if placement not in ("uniform", "mid_bay"):
         raise ValueError(f"placement must be 'uniform' or 'mid_bay', got {placement!r}")
-    bays, lengths, stations, elements, element_stations, element_bay = _station_layout(model, placement)
+    bays, _, stations, elements, element_stations, element_bay = _station_layout(model, placement)
     loads = _station_loads(model, stations)
     solver = BandedHarmonicSolver(model)
     free = solver.free
@@ -290,7 +289,7 @@ def unit_responses(
     return UnitResponses(
         speeds=speeds,
         bays=bays,
-        bay_mass=model.shaft_mass * lengths / lengths.sum(),
+        bay_mass=bay_rotating_masses(model),
         stations=stations,
         elements=elements,
         element_stations=element_stations,
@@ -337,9 +336,16 @@ def draw_imbalance(
     )
 
 
+def bay_unbalances(bay_mass, draws: ImbalanceDraws) -> np.ndarray:
+    """Complex unbalance of each bay in each sample, ``U_b e^{iψ_b} = e_b m_b e^{iψ_b}`` [kg m],
+    (n_samples, n_bays), from the bays' rotating masses ``bay_mass`` [kg]."""
+    return draws.eccentricity * np.asarray(bay_mass, dtype=float) * np.exp(1j * draws.angle)
+
+
 def combine(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarray, np.ndarray]:
     """Station indices (n, n_bays·4) and complex weights [kg m] of each sample."""
     n = draws.eccentricity.shape[0]
+    unbalances = bay_unbalances(units.bay_mass, draws)
     idx = np.zeros((n, units.n_bays, 4), int)
     weights = np.zeros((n, units.n_bays, 4), complex)
     for b in range(units.n_bays):
@@ -358,9 +364,8 @@ def combine(units: UnitResponses, draws: ImbalanceDraws) -> tuple[np.ndarray, np
                 for m in range(4):
                     if m != j:
                         basis[:, j] *= (xi - _STATIONS[m]) / (_STATIONS[j] - _STATIONS[m])
-        unbalance = draws.eccentricity[:, b] * units.bay_mass[b] * np.exp(1j * draws.angle[:, b])
         idx[:, b] = units.element_stations[e]
-        weights[:, b] = unbalance[:, None] * basis
+        weights[:, b] = unbalances[:, b, None] * basis
     return idx.reshape(n, -1), weights.reshape(n, -1)
 
 

@@ -49,6 +49,7 @@ import numpy as np
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_bays
 from flexshaft.design import Design
+from flexshaft.montecarlo.confidence import Exceedance
 from flexshaft.montecarlo.samples import (
     BASE_OUTPUTS,
     EccentricityDistribution,
@@ -155,12 +156,13 @@ class MonteCarloResult:
         """P(output > limit) and its standard error √(p(1−p)/N)."""
         values = np.asarray(self.dataset[name].values, dtype=float)
         values = values[np.isfinite(values)]
-        p = float(np.mean(values > limit)) if values.size else float("nan")
-        return p, _error(p, values.size)
+        events = Exceedance(int(np.sum(values > limit)), int(values.size))
+        return events.probability, events.standard_error
 
-    def _any_exceeds(self, output: str, limit_of) -> tuple[float, float] | None:
-        """P(some active bearing's ``output_<name>`` exceeds its own limit) and its standard
-        error; None when no bearing has a limit."""
+    def _count_exceeding(self, output: str, limit_of) -> Exceedance | None:
+        """Samples in which some active bearing's ``output_<name>`` exceeds its own limit (of
+        the samples with a finite value at every judged bearing); None when no bearing has a
+        limit."""
         judged = {name: limit_of(lim) for name, lim in self.limits.items() if limit_of(lim) is not None}
         if not judged:
             return None
@@ -170,21 +172,35 @@ class MonteCarloResult:
             values = np.asarray(self.dataset[f"{output}_{name}"].values, dtype=float)
             finite &= np.isfinite(values)
             over |= values > limit
-        n = int(finite.sum())
-        p = float(np.mean(over[finite])) if n else float("nan")
-        return p, _error(p, n)
+        return Exceedance(int(np.sum(over & finite)), int(finite.sum()))
+
+    @property
+    def gap_events(self) -> Exceedance | None:
+        """Samples with static offset + peak orbit > gap at some active bearing (None without a
+        gap): the verdict's actuator-excursion check, sample by sample; with the exact upper
+        confidence bound of the probability (:class:`~flexshaft.montecarlo.confidence.Exceedance`)."""
+        return self._count_exceeding("actuator_excursion", lambda lim: lim.gap)
+
+    @property
+    def force_events(self) -> Exceedance | None:
+        """Samples with static + peak force > force capacity at some active bearing: the
+        verdict's actuator-force check, sample by sample, with its upper confidence bound."""
+        return self._count_exceeding("actuator_load", lambda lim: lim.force_capacity)
 
     @property
     def gap_exceedance(self) -> tuple[float, float] | None:
-        """P(static offset + peak orbit > gap at some active bearing), with its standard error
-        (None without a gap): the verdict's actuator-excursion check, sample by sample."""
-        return self._any_exceeds("actuator_excursion", lambda lim: lim.gap)
+        """P(static offset + peak orbit > gap at some active bearing) and its standard error
+        (None without a gap). With no exceedance both are 0: report :attr:`gap_events`'s upper
+        bound instead."""
+        events = self.gap_events
+        return None if events is None else (events.probability, events.standard_error)
 
     @property
     def force_exceedance(self) -> tuple[float, float] | None:
-        """P(static + peak force > force capacity at some active bearing), with its standard
-        error: the verdict's actuator-force check, sample by sample."""
-        return self._any_exceeds("actuator_load", lambda lim: lim.force_capacity)
+        """P(static + peak force > force capacity at some active bearing) and its standard
+        error (see :attr:`force_events` for the upper confidence bound)."""
+        events = self.force_events
+        return None if events is None else (events.probability, events.standard_error)
 
     @property
     def gap(self) -> float | None:
@@ -199,12 +215,13 @@ class MonteCarloResult:
         return min(capacities) if capacities else None
 
     def plot(self):
-        """Histograms and exceedance curves (:func:`flexshaft.plot.transient.montecarlo_figure`)."""
-        return montecarlo_figure(self.dataset, gap=self.gap, force_limit=self.force_limit)
-
-
-def _error(p: float, n: int) -> float:
-    return float(np.sqrt(max(p * (1 - p), 0.0) / max(n, 1)))
+        """Histograms and exceedance curves (:func:`flexshaft.plot.transient.montecarlo_figure`),
+        each limit's exceedance count with its 95 % upper confidence bound written at the limit."""
+        events = {}
+        for key, found in (("gap", self.gap_events), ("force", self.force_events)):
+            if found is not None and found.samples:
+                events[key] = (found.events, found.samples, found.upper_bound())
+        return montecarlo_figure(self.dataset, gap=self.gap, force_limit=self.force_limit, exceedances=events)
 
 
 def run_montecarlo(
@@ -231,7 +248,9 @@ def run_montecarlo(
     ----------
     grade_mm_s : float, optional
         Balance grade G [mm/s]: each bay's eccentricity is drawn from
-        ``EccentricityDistribution.from_grade(G, operating speed)`` ("disk").
+        ``EccentricityDistribution.from_grade(G, Ω_max)`` ("disk"), Ω_max the highest operating
+        speed (``[operating] speed_range``), as the design's own ``balance_grade``
+        (:func:`flexshaft.assembly.balance.design_eccentricity`).
     distribution : EccentricityDistribution, optional
         Instead of a grade (one of the two is required).
     placement : {"uniform", "mid_bay"}
@@ -245,7 +264,7 @@ def run_montecarlo(
     if (grade_mm_s is None) == (distribution is None):
         raise ValueError("give exactly one of grade_mm_s (balance grade, mm/s) or distribution")
     if distribution is None:
-        distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_rad_s)
+        distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_limits[1])
     for name, value in (("gap", gap), ("force_limit", force_limit)):
         if value is not None and not (np.isfinite(value) and value > 0):
             raise ValueError(f"{name} must be > 0, got {value!r}")

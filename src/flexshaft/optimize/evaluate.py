@@ -23,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.assembly import build_model
+from flexshaft.optimize.mass import driveline_mass
 from flexshaft.resolution import SCREENING, VERDICT, Resolution
 from flexshaft.verdict.assess import Assessment, assess
 from flexshaft.verdict.checks import CHECK_KEYS, CHECKS
@@ -50,6 +51,11 @@ CHECK_STATUS_CODES = {"pass": 1.0, "fail": 0.0, "not evaluated": -1.0, "not appl
 
 #: Metrics every evaluation returns besides the checks: name -> (SI unit, description).
 METRICS = {
+    "driveline_mass": (
+        "kg",
+        "driveline mass: tubes, couplings, hangers, dampers and actuators (design mass fields; an "
+        "actuator without one estimated from its force capacity, flexshaft.optimize.mass)",
+    ),
     "shaft_mass": ("kg", "shaft mass"),
     "safety_factor": (
         "1",
@@ -143,6 +149,7 @@ def assessment_metrics(assessment: Assessment) -> dict[str, float]:
 
     strength = [v for v in (value("tsai_wu"), value("metal_strength")) if np.isfinite(v)]
     out = {
+        "driveline_mass": driveline_mass(assessment.model),
         "shaft_mass": float(assessment.model.shaft_mass),
         "safety_factor": min(strength) if strength else float("nan"),
         "buckling_safety_factor": value("buckling"),

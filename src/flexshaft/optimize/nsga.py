@@ -3,7 +3,7 @@
 >>> from flexshaft.design import baseline_design
 >>> from flexshaft.optimize import DesignProblem, default_variables, optimize
 >>> variables, layup = default_variables(baseline_design())
->>> problem = DesignProblem(variables, layup=layup)       # mass and Tsai-Wu safety factor
+>>> problem = DesignProblem(variables, layup=layup)       # driveline mass and the smallest margin
 >>> result = optimize(problem, budget=400, run_dir="opt", jobs=2)   # doctest: +SKIP
 >>> result.pareto                                          # doctest: +SKIP
 >>> files = result.write_designs()                         # doctest: +SKIP
@@ -212,9 +212,10 @@ def optimize(
         records, computed = evaluate_candidates(ref_problem, [{}], cache, run_path, jobs=1, client=client)
         log.computed += computed
         outputs = dict(records[0]["outputs"])
-        F, G = objectives_and_constraints(
-            ref_problem, [[outputs[n] for n in problem.output_names]], [records[0]["error"] is None]
-        )
+        row = [[outputs[n] for n in problem.output_names]]
+        F, G = objectives_and_constraints(ref_problem, row, [records[0]["error"] is None])
+        outputs.update(zip(problem.all_output_names, problem.with_derived(row)[0]))
+        outputs["limiting_check"] = problem.limiting(row)[0]
         outputs["feasible"] = bool(np.all(G <= 0.0))
         reference_outputs[label] = outputs
     evaluations = log.dataset()
@@ -341,8 +342,16 @@ class _Log:
             }
             dtype = np.int64 if v.integer else float
             data[v.name] = ("evaluation", np.array([val[v.name] for val in self.values], dtype=dtype), attrs)
-        for i, (name, units, long_name) in enumerate(problem.outputs):
-            data[name] = ("evaluation", outputs[:, i], {"units": units, "long_name": long_name})
+        full = problem.with_derived(outputs) if n else np.zeros((0, len(problem.all_output_names)))
+        for i, (name, units, long_name) in enumerate(problem.outputs + problem.derived_outputs):
+            data[name] = ("evaluation", full[:, i], {"units": units, "long_name": long_name})
+        if problem.constraints:
+            limiting = np.array(problem.limiting(outputs) if n else [], dtype=str)
+            data["limiting_check"] = (
+                "evaluation",
+                limiting,
+                {"long_name": "the constraint with the smallest normalised margin (the one that limits)"},
+            )
         data["feasible"] = (
             "evaluation",
             (violation <= 0).astype(np.int8),

@@ -25,15 +25,26 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
-from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.design import DesignError, baseline_design, embedded_text, with_overrides
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
-from flexshaft.optimize.variables import DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
+from flexshaft.optimize.variables import DEFAULT_OBJECTIVES, DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
 
-__all__ = ["DesignProblem", "NOT_EVALUATED_VIOLATION", "objectives_and_constraints"]
+__all__ = ["DERIVED_OUTPUTS", "DesignProblem", "NOT_EVALUATED_VIOLATION", "objectives_and_constraints"]
 
 #: Constraint violation of a check that was not evaluated (a failure by the whole limit).
 NOT_EVALUATED_VIOLATION = 1.0
+
+#: Outputs a problem derives from its constraints (not computed by the evaluation), by name:
+#: (unit, long name). ``min_margin`` is the smallest normalised margin of the problem's
+#: constraints (a check not evaluated counts as −:data:`NOT_EVALUATED_VIOLATION`): the
+#: requirement that limits the design, whichever it is; ignored checks do not count.
+DERIVED_OUTPUTS = {
+    "min_margin": (
+        "1",
+        "smallest normalised margin of the constraints (the requirement that limits; not evaluated: -1)",
+    )
+}
 #: Objective value given to a design without a result (never compared: it is infeasible).
 _NO_RESULT = 1e30
 _PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
@@ -59,7 +70,9 @@ class DesignProblem:
     base : Design, optional
         The design every candidate starts from (default: the embedded Table 3.1 baseline).
     objectives : sequence of str or Objective
-        Names of :data:`DESIGN_OBJECTIVES` or :class:`Objective` on any output.
+        Names of :data:`DESIGN_OBJECTIVES` or :class:`Objective` on any output (or on
+        ``min_margin``, :data:`DERIVED_OUTPUTS`). Default :data:`DEFAULT_OBJECTIVES`: the
+        driveline mass and the smallest normalised margin.
     constraints : sequence of str, optional
         Outputs that must be >= 0; a verdict check key (``"tsai_wu"``) stands for its margin
         output ``margin_<key>``. Default: every verdict check.
@@ -80,11 +93,15 @@ class DesignProblem:
         What ``evaluate`` returns (default: the driveline metrics and checks).
     name : str
         Title of the results.
+    base_text : str, optional
+        The base design file's text (TOML): the design files written keep its comments
+        (:func:`~flexshaft.optimize.files.design_toml`). Default: the embedded baseline's text
+        when ``base`` is omitted, else none. Not part of the search's identity.
     """
 
     variables: tuple[DesignVariable, ...]
     base: Any = None
-    objectives: tuple[str | Objective, ...] = ("shaft_mass", "safety_factor")
+    objectives: tuple[str | Objective, ...] = DEFAULT_OBJECTIVES
     constraints: tuple[str, ...] | None = None
     layup: str | None = None
     ply_thickness: float | None = None
@@ -93,10 +110,13 @@ class DesignProblem:
     evaluate: Callable = design_outputs
     outputs: tuple[tuple[str, str, str], ...] | None = None
     name: str = "design optimization"
+    base_text: str | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.base is None:
             object.__setattr__(self, "base", baseline_design())
+            if self.base_text is None:
+                object.__setattr__(self, "base_text", embedded_text("baseline"))
         variables = tuple(self.variables)
         if not variables:
             raise OptimizeError("an optimization needs at least one variable")
@@ -114,8 +134,8 @@ class DesignProblem:
             raise OptimizeError(f"fidelity: must be one of {', '.join(FIDELITIES)} (got {self.fidelity!r})")
         outputs = tuple(tuple(o) for o in (self.outputs if self.outputs is not None else metric_outputs()))
         object.__setattr__(self, "outputs", outputs)
-        object.__setattr__(self, "objectives", self._resolve_objectives())
         object.__setattr__(self, "constraints", self._resolve_constraints())
+        object.__setattr__(self, "objectives", self._resolve_objectives())
         if self.ply_thickness is not None and not (math.isfinite(self.ply_thickness) and self.ply_thickness > 0):
             raise OptimizeError(f"ply_thickness: must be a positive thickness [m] (got {self.ply_thickness!r})")
         self._check_layup()
@@ -123,7 +143,47 @@ class DesignProblem:
     # -- resolution and checks -----------------------------------------------------------------
     @property
     def output_names(self) -> tuple[str, ...]:
+        """The evaluation's outputs, in the order of its records."""
         return tuple(o[0] for o in self.outputs)
+
+    @property
+    def derived_outputs(self) -> tuple[tuple[str, str, str], ...]:
+        """``(name, unit, long name)`` of the outputs derived from the constraints
+        (:data:`DERIVED_OUTPUTS`; none without constraints, or when the evaluation has one of
+        that name)."""
+        if not self.constraints:
+            return ()
+        return tuple((k, u, t) for k, (u, t) in DERIVED_OUTPUTS.items() if k not in self.output_names)
+
+    @property
+    def all_output_names(self) -> tuple[str, ...]:
+        """The evaluation's outputs, then the derived ones."""
+        return self.output_names + tuple(o[0] for o in self.derived_outputs)
+
+    def with_derived(self, outputs: np.ndarray) -> np.ndarray:
+        """Outputs (n, n_outputs) in the order of :attr:`output_names`, with the derived
+        columns appended (the order of :attr:`all_output_names`)."""
+        outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
+        if not self.derived_outputs:
+            return outputs
+        return np.column_stack([outputs, self.constraint_margins(outputs).min(axis=1)])
+
+    def limiting(self, outputs: np.ndarray) -> list[str]:
+        """The constraint with the smallest margin of each row (its check key: ``tsai_wu``,
+        not ``margin_tsai_wu``); empty strings without constraints."""
+        outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
+        if not self.constraints:
+            return [""] * outputs.shape[0]
+        margins = self.constraint_margins(outputs)
+        return [self.constraints[k].removeprefix("margin_") for k in np.argmin(margins, axis=1)]
+
+    def constraint_margins(self, outputs: np.ndarray) -> np.ndarray:
+        """Margins (n, n_constraints) of the constraints, a not-evaluated (NaN) one as
+        −:data:`NOT_EVALUATED_VIOLATION`."""
+        outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
+        index = {name: i for i, name in enumerate(self.output_names)}
+        margins = outputs[:, [index[c] for c in self.constraints]].reshape(outputs.shape[0], len(self.constraints))
+        return np.where(np.isnan(margins), -NOT_EVALUATED_VIOLATION, margins)
 
     def _resolve_objectives(self) -> tuple[Objective, ...]:
         out = []
@@ -137,10 +197,10 @@ class DesignProblem:
                     f"objective: unknown name {item!r} (allowed: {', '.join(DESIGN_OBJECTIVES)}, "
                     "or an Objective on an output)"
                 )
-            if objective.output not in self.output_names:
+            if objective.output not in self.all_output_names:
                 raise OptimizeError(
                     f"objective {objective.output!r}: not an output of the evaluation "
-                    f"(outputs: {', '.join(self.output_names)})"
+                    f"(outputs: {', '.join(self.all_output_names)})"
                 )
             out.append(objective)
         if not out:
@@ -368,8 +428,9 @@ def objectives_and_constraints(
         value of every objective and 1 otherwise.
     """
     outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
-    index = {name: i for i, name in enumerate(problem.output_names)}
-    F = np.column_stack([outputs[:, index[o.output]] * (-1.0 if o.sense == "max" else 1.0) for o in problem.objectives])
+    index = {name: i for i, name in enumerate(problem.all_output_names)}
+    full = problem.with_derived(outputs)
+    F = np.column_stack([full[:, index[o.output]] * (-1.0 if o.sense == "max" else 1.0) for o in problem.objectives])
     ok = np.asarray(valid, dtype=bool) & np.all(np.isfinite(F), axis=1)
     F[~ok] = _NO_RESULT
     columns = []

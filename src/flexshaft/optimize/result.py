@@ -151,6 +151,58 @@ class OptimizationResult:
             ax=ax,
         )
 
+    def blocking_checks(self) -> list[dict]:
+        """Which requirements reject the evaluated designs, one row per constraint.
+
+        Each row: ``check`` (the verdict check key, or the output of a custom constraint),
+        ``rejected`` (valid candidates it rejects: margin < 0 or not evaluated), ``alone`` (of
+        them, those no other constraint rejects: the designs this check alone keeps out),
+        ``not_evaluated``, ``best_margin`` (the largest normalised margin any valid candidate
+        reached, NaN if it was never evaluated) and ``best_evaluation`` (its index in
+        :attr:`evaluations`, −1 if none). Sorted by ``rejected``, most first. Candidates the
+        schema refused or whose evaluation failed make one more row, ``valid design``, with
+        ``rejected`` their count (they count in no check's row).
+        """
+        ev = self.evaluations
+        n = ev.sizes.get("evaluation", 0)
+        valid = np.array([not str(e) for e in ev["error"].values], dtype=bool) if n else np.zeros(0, bool)
+        constraints = self.problem.constraints
+        margins = (
+            np.column_stack([np.asarray(ev[c].values, dtype=float) for c in constraints])
+            if n and constraints
+            else np.zeros((n, len(constraints)))
+        )
+        margins = margins[valid]
+        fails = ~(margins >= 0.0)  # NaN: not evaluated, a violation
+        rows = []
+        for k, name in enumerate(constraints):
+            column = margins[:, k]
+            finite = np.isfinite(column)
+            best = int(np.flatnonzero(valid)[np.flatnonzero(finite)[np.argmax(column[finite])]]) if finite.any() else -1
+            rows.append(
+                {
+                    "check": name.removeprefix("margin_"),
+                    "rejected": int(fails[:, k].sum()),
+                    "alone": int((fails[:, k] & (fails.sum(axis=1) == 1)).sum()),
+                    "not_evaluated": int((~finite).sum()),
+                    "best_margin": float(column[finite].max()) if finite.any() else float("nan"),
+                    "best_evaluation": best,
+                }
+            )
+        rows.sort(key=lambda r: (-r["rejected"], -r["alone"]))
+        if (~valid).any():
+            rows.append(
+                {
+                    "check": "valid design",
+                    "rejected": int((~valid).sum()),
+                    "alone": int((~valid).sum()),
+                    "not_evaluated": int((~valid).sum()),
+                    "best_margin": float("nan"),
+                    "best_evaluation": -1,
+                }
+            )
+        return rows
+
     def write_designs(self, folder: str | Path | None = None, max_designs: int = 8) -> list[Path]:
         """Write Pareto designs as design files ``pareto_NN.toml`` (all of them, or
         ``max_designs`` spread evenly along the front, its ends included).
@@ -188,7 +240,13 @@ class OptimizationResult:
                 f"Evaluated at the {self.problem.fidelity!r} fidelity; re-verify with `flexshaft run --strict`.",
                 "",
             ]
-            path = write_design_file(design, folder / f"pareto_{rank:02d}.toml", comments)
+            path = write_design_file(
+                design,
+                folder / f"pareto_{rank:02d}.toml",
+                comments,
+                base=self.problem.base,
+                base_text=self.problem.base_text,
+            )
             paths.append(path)
             files[k] = path.name
         self.pareto["file"] = ("design", np.array(files, dtype=str), {"long_name": "design file written"})
@@ -211,15 +269,28 @@ class OptimizationResult:
         return ds
 
     def save(self, folder: str | Path | None = None) -> dict[str, Path]:
-        """Write ``evaluations.nc`` and ``pareto.nc`` (default: into the run folder)."""
+        """Write ``evaluations.nc``, ``pareto.nc`` and ``blocking_checks.json`` (the table of
+        :meth:`blocking_checks`, non-finite margins as null) into ``folder`` (default: the run
+        folder)."""
 
         folder = Path(folder) if folder is not None else self.run_dir
         if folder is None:
             raise OptimizeError("save needs a folder (the optimization had no run folder)")
         folder.mkdir(parents=True, exist_ok=True)
+        blocking = folder / "blocking_checks.json"
+        rows = [
+            {k: (v if not isinstance(v, float) or np.isfinite(v) else None) for k, v in r.items()}
+            for r in self.blocking_checks()
+        ]
+        blocking.write_text(
+            json.dumps({"evaluations": int(self.evaluations.sizes.get("evaluation", 0)), "checks": rows}, indent=2)
+            + "\n",
+            encoding="utf-8",
+        )
         return {
             "evaluations": write_netcdf(self.evaluations, folder / "evaluations.nc"),
             "pareto": write_netcdf(self.pareto, folder / "pareto.nc"),
+            "blocking": blocking,
         }
 
 

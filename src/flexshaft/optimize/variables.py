@@ -10,8 +10,10 @@ placeholder of the problem's **layup template** (``"layup.a"`` fills ``{a}`` and
 default search of ``flexshaft optimize``.
 
 An :class:`Objective` is an output with a sense: for the driveline (:data:`DESIGN_OBJECTIVES`)
-``shaft_mass`` is minimised and ``safety_factor`` (the minimum Tsai-Wu safety factor)
-maximised, and so on.
+``driveline_mass`` (tubes, couplings, bearings and actuators) is minimised and ``min_margin``
+(the smallest normalised margin of the constraints: the requirement that limits the design)
+maximised, the default pair; ``shaft_mass``, ``safety_factor`` (the minimum Tsai-Wu safety
+factor) and the others are there too.
 """
 
 from __future__ import annotations
@@ -21,7 +23,15 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-__all__ = ["DESIGN_OBJECTIVES", "DesignVariable", "LAYUP_PREFIX", "Objective", "OptimizeError", "default_variables"]
+__all__ = [
+    "DEFAULT_OBJECTIVES",
+    "DESIGN_OBJECTIVES",
+    "DesignVariable",
+    "LAYUP_PREFIX",
+    "Objective",
+    "OptimizeError",
+    "default_variables",
+]
 
 
 #: Prefix of a variable that fills a placeholder of the layup template.
@@ -161,6 +171,8 @@ class Objective:
 
 #: The driveline's objectives by name (outputs of :func:`~flexshaft.optimize.evaluate.design_metrics`).
 DESIGN_OBJECTIVES = {
+    "driveline_mass": Objective("driveline_mass", "min", "driveline mass, actuators included [kg]"),
+    "min_margin": Objective("min_margin", "max", "smallest normalised margin of the requirements [-]"),
     "shaft_mass": Objective("shaft_mass", "min", "shaft mass [kg]"),
     "safety_factor": Objective("safety_factor", "max", "minimum Tsai-Wu safety factor [-]"),
     "buckling_safety_factor": Objective("buckling_safety_factor", "max", "torsional-buckling safety factor [-]"),
@@ -170,6 +182,10 @@ DESIGN_OBJECTIVES = {
     "max_temperature": Objective("max_temperature", "min", "maximum shaft temperature [K]"),
     "min_log_decrement": Objective("min_log_decrement", "max", "smallest whirl log decrement [-]"),
 }
+
+
+#: The default objectives of ``flexshaft optimize``: total mass against the margin that limits.
+DEFAULT_OBJECTIVES = ("driveline_mass", "min_margin")
 
 
 def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:

@@ -9,7 +9,8 @@ Thesis figure numbers: 3.2 :func:`ply_angle_figure`, 3.3 :func:`two_angle_figure
 3.4 :func:`wall_thickness_figure`, 3.5 :func:`forced_response_figure`, 3.6 :func:`gain_figure`,
 3.10 :func:`buckling_figure`, 3.12/3.15/3.16 :func:`gain_map_figure`, 3.13/3.14
 :func:`response_surface_figure`, 3.17 :func:`tuned_gains_figure`; the stability margin map
-:func:`stability_margin_figure` goes beyond the thesis.
+:func:`stability_margin_figure` goes beyond the thesis. The two gain maps live in
+:mod:`flexshaft.plot.gain_maps` (re-exported here).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
+from flexshaft.plot.gain_maps import BEST_MARKER, gain_map_figure, stability_margin_figure
 from flexshaft.plot.style import MM_PER_M, log_scale, mark_operating, new_figure, nice_colorbar, styled, vector
 
 if TYPE_CHECKING:
@@ -38,7 +40,7 @@ __all__ = [
     "stability_margin_figure",
 ]
 
-_BEST = {"marker": "*", "ms": 15, "mfc": "gold", "mec": "k", "mew": 1.0, "ls": "none", "zorder": 5}
+_BEST = BEST_MARKER
 
 
 def _grid(name: str, values: ArrayLike, shape: tuple[int, int]) -> np.ndarray:
@@ -46,29 +48,6 @@ def _grid(name: str, values: ArrayLike, shape: tuple[int, int]) -> np.ndarray:
     if array.shape != shape:
         raise ValueError(f"{name}: expected shape {shape} (first axis, second axis), got {array.shape}")
     return array
-
-
-def _log_positions(values: np.ndarray) -> tuple[np.ndarray, list[float], list[str]]:
-    """Plot positions of gains on a log axis; a zero gain sits one step below the smallest
-    positive one. Returns positions, tick positions and tick labels."""
-    values = np.asarray(values, dtype=float)
-    positive = values[values > 0]
-    if positive.size == 0:
-        return values.copy(), list(values), [f"{v:g}" for v in values]
-    logs = np.log10(positive)
-    step = float(np.median(np.diff(np.sort(logs)))) if logs.size > 1 else 1.0
-    pos = np.where(values > 0, np.log10(np.where(values > 0, values, 1.0)), logs.min() - max(step, 0.25))
-    ticks, labels = [], []
-    if values.size <= 8:  # few values: label each
-        return pos, [float(v) for v in pos], [f"{v:.3g}" for v in values]
-    if np.any(values <= 0):
-        ticks.append(float(pos[values <= 0][0]))
-        labels.append("0")
-    for decade in range(int(np.floor(logs.min())), int(np.ceil(logs.max())) + 1):
-        if logs.min() - 1e-9 <= decade <= logs.max() + 1e-9:
-            ticks.append(float(decade))
-            labels.append(f"1e{decade}")
-    return pos, ticks, labels
 
 
 def _edges(centres: np.ndarray) -> np.ndarray:
@@ -188,9 +167,9 @@ def wall_thickness_figure(
     ax=None,
 ) -> Figure:
     """Safety factor with and without imbalance vs wall thickness at fixed D_o (thesis fig.
-    3.4); optionally the first natural frequency and the spin-up peak shaft orbit [m], each on
-    a panel of its own (the orbit's NaN entries are left out, and its panel when all are NaN:
-    a design without actuators). ``wall`` [m]."""
+    3.4); optionally the shaft's first lateral natural frequency [Hz] and the spin-up peak
+    shaft orbit [m], each on a panel of its own (the orbit's NaN entries are left out, and its
+    panel when all are NaN: a design without actuators). ``wall`` [m]."""
     t = vector("wall", wall)
     f = None if frequency_hz is None else vector("frequency_hz", frequency_hz, t.size)
     peak = None if spinup_peak is None else vector("spinup_peak", spinup_peak, t.size)
@@ -206,7 +185,7 @@ def wall_thickness_figure(
     ax.set_title("Safety factor vs wall thickness (fixed outer diameter)")
     ax.legend(loc="best")
     if f is not None:
-        axes[1, 0].plot(t * MM_PER_M, f, "o-", color="C2", label="first natural frequency at rest")
+        axes[1, 0].plot(t * MM_PER_M, f, "o-", color="C2", label="shaft's first lateral mode at rest")
         axes[1, 0].set_ylabel("frequency [Hz]")
         axes[1, 0].legend(loc="best")
     if peak is not None:
@@ -304,86 +283,6 @@ def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike, *, ax=None) -> Fi
 
 
 @styled
-def gain_map_figure(
-    kp: ArrayLike,
-    kd: ArrayLike,
-    values: ArrayLike,
-    label: str,
-    *,
-    scale: float = 1.0,
-    best: tuple[float, float] | None = None,
-    other: Mapping[str, tuple[float, float]] | None = None,
-    log_values: bool = True,
-    title: str = "",
-    ax=None,
-) -> Figure:
-    """A quantity over the (K_p, K_d) grid (thesis figures 3.12, 3.15, 3.16).
-
-    Parameters
-    ----------
-    kp, kd : array_like
-        Gains [N/m], [N s/m]; log axes, a zero K_d is drawn one step below the smallest.
-    values : array_like, shape (n_kp, n_kd)
-        The quantity in SI units, multiplied by ``scale`` for display (1e3: m to mm).
-    label : str
-        Colour-bar label with its display unit.
-    best : (kp, kd), optional
-        Marked with a star. ``other``: more labelled points, e.g. ``{"before": (1e7, 0)}``.
-    log_values : bool
-        Logarithmic colour scale.
-    """
-    from matplotlib.colors import LogNorm
-
-    kp_v = vector("kp", kp)
-    kd_v = vector("kd", kd)
-    z = _grid("values", values, (kp_v.size, kd_v.size)) * scale
-    x, xt, xl = _log_positions(kp_v)
-    y, yt, yl = _log_positions(kd_v)
-    own = ax is None
-    fig, axes = new_figure(1, 1, (7.0, 6.1), ax=ax, bottom=1.2, right=0.2)
-    ax = axes[0, 0]
-    finite = z[np.isfinite(z) & (z > 0)]
-    norm = LogNorm(finite.min(), finite.max()) if log_values and finite.size and finite.max() > finite.min() else None
-    mesh = ax.pcolormesh(_edges(x), _edges(y), z.T, cmap="viridis", norm=norm, shading="flat")
-    if kp_v.size > 2 and kd_v.size > 2 and finite.size > 4:
-        levels = np.geomspace(finite.min(), finite.max(), 9)[1:-1] if norm is not None else 7
-        cs = ax.contour(x, y, z.T, levels=levels, colors="w", linewidths=0.6, alpha=0.8)
-        ax.clabel(cs, fontsize=6.5, fmt="%.3g")
-    points = dict(other or {})
-    if best is not None:
-        bx = x[int(np.argmin(np.abs(kp_v - best[0])))]
-        by = y[int(np.argmin(np.abs(kd_v - best[1])))]
-        ax.plot(bx, by, **_BEST, label=f"best: K_p = {best[0]:.3g} N/m, K_d = {best[1]:.3g} N s/m")
-    for k, (name, (px, py)) in enumerate(points.items()):
-        ix, iy = int(np.argmin(np.abs(kp_v - px))), int(np.argmin(np.abs(kd_v - py)))
-        ax.plot(
-            x[ix],
-            y[iy],
-            "o",
-            ms=9,
-            mfc="none",
-            mec=("tab:red", "w", "tab:orange")[k % 3],
-            mew=1.8,
-            label=f"{name}: K_p = {px:.3g}, K_d = {py:.3g}",
-        )
-    nice_colorbar(fig, mesh, ax, label, log=norm is not None, pad=0.03)
-    ax.set_xticks(xt, xl)
-    ax.set_yticks(yt, yl)
-    ax.set_xlim(_edges(x)[0], _edges(x)[-1])
-    ax.set_ylim(_edges(y)[0], _edges(y)[-1])
-    ax.set_xlabel("proportional gain K_p [N/m]")
-    ax.set_ylabel("derivative gain K_d [N s/m]")
-    ax.set_title(title)
-    ax.grid(False)
-    if best is not None or points:
-        if own:  # below the map: it hides neither the optimum nor a cell
-            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncols=1, fontsize=7.5)
-        else:
-            ax.legend(loc="lower left", fontsize=7.5)
-    return fig
-
-
-@styled
 def response_surface_figure(
     x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike], bearings_x: Sequence[float] = (), *, ax=None
 ) -> Figure:
@@ -452,64 +351,4 @@ def tuned_gains_figure(
     ax.set_ylabel("max shaft orbit [mm]")
     ax.set_title("Spin-up response: design gains and tuned gains")
     ax.legend(loc="best")
-    return fig
-
-
-@styled
-def stability_margin_figure(
-    kp: ArrayLike,
-    kd: ArrayLike,
-    margin: ArrayLike,
-    onset_rpm: ArrayLike | None = None,
-    best: tuple[float, float] | None = None,
-    *,
-    ax=None,
-) -> Figure:
-    """Smallest damping ratio at the operating speed over (K_p, K_d); negative (unstable)
-    cells are hatched. ``onset_rpm`` (n_kp, n_kd), NaN where stable over the analysed range,
-    is written in each cell when the grid is small."""
-    kp_v = vector("kp", kp)
-    kd_v = vector("kd", kd)
-    z = _grid("margin", margin, (kp_v.size, kd_v.size))
-    x, xt, xl = _log_positions(kp_v)
-    y, yt, yl = _log_positions(kd_v)
-    own = ax is None
-    fig, axes = new_figure(1, 1, (7.0, 6.1), ax=ax, bottom=1.2, right=0.2)
-    ax = axes[0, 0]
-    lim = max(float(np.nanmax(np.abs(z))), 1e-6) if np.isfinite(z).any() else 1.0
-    mesh = ax.pcolormesh(_edges(x), _edges(y), z.T, cmap="RdBu", vmin=-lim, vmax=lim, shading="flat")
-    X, Y = np.meshgrid(x, y, indexing="ij")
-    unstable = np.isfinite(z) & (z < 0)
-    if unstable.any():
-        ax.plot(X[unstable], Y[unstable], "x", color="k", ms=8, label="unstable at the operating speed")
-    if onset_rpm is not None and z.size <= 64:
-        onset = _grid("onset_rpm", onset_rpm, z.shape)
-        for i in range(z.shape[0]):
-            for j in range(z.shape[1]):
-                text = "stable" if not np.isfinite(onset[i, j]) else f"{onset[i, j]:.0f} rpm"
-                ax.annotate(
-                    text,
-                    (x[i], y[j]),
-                    ha="center",
-                    va="bottom",
-                    xytext=(0, 6),
-                    textcoords="offset points",
-                    fontsize=6.5,
-                )
-    if best is not None:
-        ix = int(np.argmin(np.abs(x - np.log10(max(best[0], 1e-300)))))
-        iy = int(np.argmin(np.abs(y - (np.log10(best[1]) if best[1] > 0 else y.min()))))
-        ax.plot(x[ix], y[iy], **_BEST, label=f"tuned gains {best[0]:.3g} N/m, {best[1]:.3g} N s/m (nearest cell)")
-    nice_colorbar(fig, mesh, ax, "smallest damping ratio at the operating speed [-]", pad=0.03)
-    ax.set_xticks(xt, xl)
-    ax.set_yticks(yt, yl)
-    ax.set_xlabel("proportional gain K_p [N/m]")
-    ax.set_ylabel("derivative gain K_d [N s/m]")
-    ax.set_title("Whirl-stability margin over the actuator gains")
-    ax.grid(False)
-    if unstable.any() or best is not None:
-        if own:  # below the map: it hides neither the optimum nor a cell
-            ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.11), ncols=1, fontsize=7.5)
-        else:
-            ax.legend(loc="lower left", fontsize=7.5)
     return fig

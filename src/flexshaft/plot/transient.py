@@ -39,9 +39,14 @@ def runup_envelope_figure(
     operating_rpm: float | None = None,
     gap: float | None = None,
     force_limit: float | None = None,
+    decades: float = 3.0,
     ax: Axes | None = None,
 ) -> Figure:
     """Run-up (or run-down) envelopes against speed, with the steady-state spin-up curve.
+
+    Each log axis spans ``decades`` below the largest value drawn in its panel (the curves'
+    peaks and the limits): the start of a run from rest reaches 1e-7 mm, which would otherwise
+    take half of every panel.
 
     Parameters
     ----------
@@ -53,6 +58,8 @@ def runup_envelope_figure(
         Operating speed [rpm].
     gap, force_limit : float, optional
         Actuator radial gap [m] and force capacity [N], drawn as horizontal lines.
+    decades : float
+        Decades shown below each panel's largest value (> 0).
     ax : matplotlib Axes, optional
         Draw only the shaft panel on it; otherwise a new figure with three panels (largest
         shaft deflection, actuator relative orbit, actuator force).
@@ -61,6 +68,8 @@ def runup_envelope_figure(
     -------
     matplotlib.figure.Figure
     """
+    if not (np.isfinite(decades) and decades > 0):
+        raise ValueError(f"decades: must be a positive number of decades, got {decades!r}")
     if ax is None:
         fig, axes = new_figure(3, 1, (8.5, 9.0), sharex=True)
         panels = list(axes[:, 0])
@@ -105,11 +114,53 @@ def runup_envelope_figure(
             panels[2].axhline(force_limit, color="tab:red", ls=":", lw=1.4, label=f"force limit {force_limit:.4g} N")
     for panel in panels:
         panel.set_yscale("log")
+        top = _largest_drawn(panel)
+        if top is not None:  # the meaningful range: `decades` below the peak, a little room above
+            panel.set_ylim(top * 10.0**-decades, top * 2.0)
         panel.grid(which="minor", alpha=0.12)
         mark_operating(panel, operating_rpm, label=panel is panels[0])
         panel.legend(loc="lower right", fontsize=8)
     panels[-1].set_xlabel("spin speed Ω [rpm]")
     return fig
+
+
+def _largest_drawn(ax) -> float | None:
+    """The largest finite positive y of the lines drawn on ``ax`` (horizontal limit lines
+    included; vertical lines, in axes coordinates, left out)."""
+    top = None
+    for line in ax.get_lines():
+        if line.get_transform() == ax.get_xaxis_transform():  # a vertical line: y in axes units
+            continue
+        y = np.asarray(line.get_ydata(), dtype=float)
+        y = y[np.isfinite(y) & (y > 0)]
+        if y.size:
+            top = float(y.max()) if top is None else max(top, float(y.max()))
+    return top
+
+
+def _mark_bound(ax, limit: float, count: int, n: int, upper: float) -> None:
+    """The exceedance of ``limit``: ▼ at the upper confidence bound, a bar down to the
+    estimate k/N when k > 0, and the numbers in a box."""
+    p = count / n
+    if count:
+        ax.plot([limit, limit], [p, upper], color="tab:red", lw=2.0, solid_capstyle="butt", zorder=4)
+        ax.plot([limit], [p], "o", color="tab:red", ms=4, zorder=5)
+    ax.plot([limit], [upper], "v", color="tab:red", mec="k", mew=0.6, ms=8, zorder=5, label="95 % upper bound of P")
+    text = (
+        f"0 of {n} samples exceed:\nP < {upper:.3g} (95 % upper bound)"
+        if count == 0
+        else f"{count} of {n} samples exceed:\nP = {p:.3g}, < {upper:.3g} (95 %)"
+    )
+    ax.text(
+        0.98,
+        0.97,
+        text,
+        transform=ax.transAxes,
+        ha="right",
+        va="top",
+        fontsize=8,
+        bbox={"boxstyle": "round,pad=0.3", "fc": "white", "ec": "tab:red", "alpha": 0.9},
+    )
 
 
 def _exceedance(ax, values, label, scale=1.0):
@@ -121,7 +172,12 @@ def _exceedance(ax, values, label, scale=1.0):
 
 @styled
 def montecarlo_figure(
-    samples: Any, *, gap: float | None = None, force_limit: float | None = None, axes: Any = None
+    samples: Any,
+    *,
+    gap: float | None = None,
+    force_limit: float | None = None,
+    exceedances: Mapping[str, tuple[int, int, float]] | None = None,
+    axes: Any = None,
 ) -> Figure:
     """Monte-Carlo imbalance: histograms of the peak deflection and the safety factor,
     exceedance curves P(X ≥ x) of the actuator orbit and force with their limits.
@@ -132,6 +188,12 @@ def montecarlo_figure(
         One sample set, or several labelled (e.g. by balance grade) drawn together.
     gap, force_limit : float, optional
         Actuator radial gap [m] and force capacity [N].
+    exceedances : mapping, optional
+        ``{"gap": (events, samples, upper), "force": (...)}``: how many samples exceeded each
+        limit and the upper confidence bound [-] of the probability (95 %,
+        :func:`flexshaft.montecarlo.confidence.clopper_pearson_upper`), drawn at the limit as
+        ▼ with the count and bound written beside it (with no exceedance the estimate is 0, and
+        the bound is the number to read).
     axes : array of 4 matplotlib Axes, optional
         Where to draw (row-major 2 x 2); default a new figure.
     """
@@ -162,20 +224,23 @@ def montecarlo_figure(
     b.set_title("Shaft strength")
     c.set_xlabel("actuator excursion: static offset + peak orbit [mm]")
     d.set_xlabel("actuator force: static + peak dynamic [N]")
-    for ax, limit, name in (
-        (c, None if gap is None else gap * MM_PER_M, "gap {:.3g} mm"),
-        (d, force_limit, "force limit {:.4g} N"),
+    events = dict(exceedances or {})
+    for ax, limit, name, key in (
+        (c, None if gap is None else gap * MM_PER_M, "gap {:.3g} mm", "gap"),
+        (d, force_limit, "force limit {:.4g} N", "force"),
     ):
         ax.set_yscale("log")
         ax.set_ylabel("P(X ≥ x)")
         ax.grid(which="minor", alpha=0.12)
         if limit is not None:
             ax.axvline(limit, color="tab:red", ls=":", lw=1.4, label=name.format(limit))
+            if key in events:
+                _mark_bound(ax, limit, *events[key])
     c.set_title("Actuator excursion exceedance")
     d.set_title("Actuator force exceedance")
     for ax in (a, b, c, d):
         if ax.has_data():
-            ax.legend(fontsize=8)
+            ax.legend(fontsize=8, loc="lower left" if ax in (c, d) else "best")
     if axes is None:
         fig.subplots_adjust(hspace=0.42)  # the lower titles clear the upper x labels
     return fig

@@ -170,7 +170,8 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
     return Section(
         "Imbalance response over speed",
         paragraphs=[
-            f"Rotating imbalance e_c m_s Ω² ({design.loads.imbalance_placement} placement), "
+            f"Rotating imbalance e_c m Ω², m the whole rotating mass of ISO 21940-11 "
+            f"({design.loads.imbalance_placement} placement), "
             f"steady state at each speed from 2 % to 130 % of the operating speed. Peak shaft orbit of "
             f"the spin-up to the operating speed {m_to_mm(imb['max_shaft_orbit_spin_up_m']):.3f} mm at "
             f"{imb['speed_of_max_rpm']:.0f} rpm (refined between the sampled speeds); "

@@ -148,7 +148,7 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
                     ds["spinup_peak_deflection"].values,
                 ),
                 "study_wall",
-                "Safety factor with and without imbalance, the first natural frequency and the peak "
+                "Safety factor with and without imbalance, the shaft's first lateral natural frequency and the peak "
                 "shaft orbit during spin-up (the design's gains, speeds clustered at the resonance "
                 "peaks) vs wall thickness at fixed outer diameter (thesis figure 3.4, eq. 3.3)",
             )

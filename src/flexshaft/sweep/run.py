@@ -203,7 +203,7 @@ def run_sweep(
         Points per chunk (default: ~8 chunks per worker, at most 256 points). A resumed run
         keeps the chunk size it was started with.
     progress : bool
-        Show a progress bar (rich) on the terminal.
+        Show a progress bar (rich) on stderr.
     on_error : {"raise", "nan"}
         What a point whose evaluation raises becomes: stop the run, or NaN outputs.
 
@@ -288,15 +288,17 @@ class _progress_bar:
     def __init__(self, enabled: bool, study: Study, total: int, completed: int):
         self.progress = None
         if enabled:
+            from rich.console import Console
             from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-            self.progress = Progress(
+            self.progress = Progress(  # on stderr, like every progress display: stdout holds results
                 TextColumn("[bold]{task.description}"),
                 BarColumn(),
                 MofNCompleteColumn(),
                 TextColumn("chunks"),
                 TimeRemainingColumn(),
                 transient=False,
+                console=Console(stderr=True),
             )
             self.task = self.progress.add_task(study.name, total=total, completed=completed)
             self.progress.start()

@@ -63,13 +63,14 @@ def _lateral(design: Design, speed_rpm: float, count: int, stride: int) -> np.nd
 
 def lateral_natural_frequencies(design: Design, *, speed_rpm: float, count: int, stride: int = 1) -> np.ndarray:
     """Undamped natural frequencies |s| [rad/s] of the lowest lateral modes at the spin speed
-    ``speed_rpm`` [rpm], in increasing order: ``count`` of them, every ``stride``-th
-    (:func:`flexshaft.analyses.modes`)."""
+    ``speed_rpm`` [rpm], in the order of :func:`flexshaft.analyses.modes` (by damped frequency,
+    which is the order of |s| for these lightly damped cases): ``count`` of them, every
+    ``stride``-th."""
     return np.abs(_lateral(design, speed_rpm, count, stride))
 
 
 def lateral_damped_frequencies(design: Design, *, speed_rpm: float, count: int, stride: int = 1) -> np.ndarray:
-    """Damped natural frequencies Im s [rad/s] of the lowest lateral modes (ordered by |s|) at
+    """Damped natural frequencies Im s [rad/s] of the lowest lateral modes (increasing) at
     ``speed_rpm`` [rpm], ``count`` of them, every ``stride``-th (:func:`flexshaft.analyses.modes`)."""
     return _lateral(design, speed_rpm, count, stride).imag
 

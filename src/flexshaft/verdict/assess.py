@@ -27,6 +27,8 @@ resolution is judged identically by each.
 
 from __future__ import annotations
 
+import dataclasses
+import html
 from collections.abc import Callable
 from concurrent.futures import Executor
 from dataclasses import dataclass
@@ -36,6 +38,7 @@ from flexshaft.design import Design, DesignError, Problem
 from flexshaft.design.points import design_at_point
 from flexshaft.resolution import REPORT, Resolution
 from flexshaft.thermal.envelope import point_conditions
+from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
 from flexshaft.verdict.evidence import Evidence
@@ -81,6 +84,38 @@ class Assessment(PointAnalyses):
             if p.name == name:
                 return p
         raise KeyError(name)
+
+    def __repr__(self) -> str:
+        where = f", governed by {self.governing_point}" if len(self.points) > 1 else ""
+        return (
+            f"Assessment({self.design.name!r} at the {self.resolution.name} resolution{where}: {self.verdict.summary})"
+        )
+
+    def _repr_html_(self) -> str:
+        """The design, the verdict headline and table (:meth:`Verdict._repr_html_`), the
+        analyses it holds and the notes."""
+        rpm = rad_s_to_rpm(self.operating_speed)
+        fields = [f.name for f in dataclasses.fields(PointAnalyses) if getattr(self, f.name) is not None]
+        analyses = [n for n in fields if n not in ("design", "resolution", "model", "notes")]
+        points = (
+            f"; {len(self.points)} operating points, analyses shown at {html.escape(self.governing_point)}"
+            if len(self.points) > 1
+            else ""
+        )
+        parts = [
+            f"<p><b>{html.escape(self.design.name)}</b><br>assessed at {rpm:.0f} rpm, "
+            f"{html.escape(self.resolution.name)} resolution{points}</p>",
+            self.verdict._repr_html_(),
+            '<p style="font-size:smaller">analyses: '
+            + html.escape(", ".join(f".{n}" for n in (*analyses, "evidence")))
+            + "; the table: .to_dataframe()</p>",
+        ]
+        parts += [f'<p style="font-size:smaller">note: {html.escape(note)}</p>' for note in self.notes]
+        return "".join(parts)
+
+    def to_dataframe(self):
+        """The verdict's checks (:meth:`Verdict.to_dataframe`; pandas imported there)."""
+        return self.verdict.to_dataframe()
 
 
 def _judged(name: str, analyses: PointAnalyses) -> PointAssessment:

@@ -10,15 +10,17 @@ report (:mod:`flexshaft.report.verdict`) converts and prints them.
 
 from __future__ import annotations
 
+import html
 from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
 
-from flexshaft.analyses.results import ResultMixin, coded, new_dataset
+from flexshaft.analyses.results import ResultMixin, coded, dataframe, html_table, new_dataset
 from flexshaft.plot.verdict import margins_figure
 from flexshaft.units import format_quantity
 from flexshaft.verdict.evidence import Location
+from flexshaft.verdict.text import VERDICT_COLUMNS, location_text, verdict_headline, verdict_rows
 
 __all__ = ["Check", "Finding", "Kind", "SI_UNITS", "Status", "Verdict"]
 
@@ -40,6 +42,14 @@ SI_UNITS: dict[str, str] = {
     "log_decrement": "-",
     "angle": "rad",
     "decibel": "dB",
+}
+
+
+#: CSS of each status in a notebook's verdict table.
+_STATUS_STYLE = {
+    "pass": "color:#1a7f37;font-weight:bold;",
+    "fail": "color:#cf222e;font-weight:bold;",
+    "not evaluated": "color:#9a6700;",
 }
 
 
@@ -238,6 +248,45 @@ class Verdict(ResultMixin):
 
     def __repr__(self) -> str:
         return f"Verdict({self.summary})"
+
+    @property
+    def headline(self) -> str:
+        """One line: ``FAIL — 2 of 9 checks fail: whirl onset speed (3125 rpm; required ≥ 5520
+        rpm), …`` or ``PASS — 9 checks pass`` (what ``flexshaft run`` prints first)."""
+        return verdict_headline(self)
+
+    def _repr_html_(self) -> str:
+        """The verdict table of the report: value, limit, margin, status (green pass, red fail,
+        amber not evaluated) and where, in engineering units, under the headline."""
+        rows = verdict_rows(self)
+        numbers = "white-space:nowrap;text-align:right;"
+        styles = [
+            {1: numbers, 2: numbers, 3: numbers, 4: "white-space:nowrap;" + _STATUS_STYLE[c.status]}
+            for c in self.checks
+        ]
+        colour = _STATUS_STYLE["pass" if self.passed else "fail"]
+        title = f'<p style="{colour}">verdict: {html.escape(self.headline)}</p>'
+        return title + html_table(VERDICT_COLUMNS, rows, row_styles=styles)
+
+    def to_dataframe(self):
+        """One row per check, indexed by its key: title, status, value, limit and margin in SI
+        (the unit in ``unit``), the sense of the limit, whether value and margin are lower bounds,
+        and where (text, engineering units). pandas is imported here (xarray brings it)."""
+        return dataframe(
+            {
+                "check": [c.key for c in self.checks],
+                "title": [c.title for c in self.checks],
+                "status": [c.status for c in self.checks],
+                "value": [c.value for c in self.checks],
+                "limit": [c.limit for c in self.checks],
+                "margin": [c.margin for c in self.checks],
+                "unit": [SI_UNITS[c.kind] for c in self.checks],
+                "sense": [c.sense for c in self.checks],
+                "lower_bound": [c.lower_bound for c in self.checks],
+                "where": [location_text(c.location) for c in self.checks],
+            },
+            index="check",
+        )
 
     def to_dict(self) -> dict:
         return {"passed": self.passed, "summary": self.summary, "checks": [c.to_dict() for c in self.checks]}

@@ -1,0 +1,317 @@
+r"""Eigenvalues of the hysteretic problem: the roots consistent with their own side of the spin.
+
+The problem. A mode s = −ζω_n + iω (ω = Im s > 0) meets every member's hysteretic loss at its
+own frequency (:mod:`flexshaft.analyses.loss`), so the modal problem of
+:mod:`flexshaft.analyses.eigen` is
+
+.. math:: T(s)\,y = \big[s^2 I + s(Ω\tilde G + \tilde C) + Λ + \tilde K_a(s) + W(ω, Ω)\big]\,y = 0,
+          \qquad W = w_F\,\tilde F + w_L\,\tilde K_{lat} + w_S\,\tilde K_{lat}\tilde S,
+
+whose weights ``w`` depend on s only through the side of the synchronous line: with the
+rotating-frame loss (``internal_damping = "rotating"``, Ω ≥ 0) they are
+``W₊ = (i, i, 0)`` above the spin (σ = sgn(ω − Ω) = +1) and ``W₋ = (i, 0, 1)`` below it
+(σ = −1); with the fixed-frame loss (``"thesis"``), and at Ω = 0, one set ``(i, i, 0)`` holds
+for every ω > 0. So T is **piecewise linear**: on each side (a *branch*) it is a plain
+quadratic eigenproblem with constant complex matrices, and the hysteretic eigenvalues are
+exactly
+
+.. math:: R(Ω) = \{s : \det T_{+}(s) = 0,\ \mathrm{Im}\,s ≥ Ω\} ∪
+                 \{s : \det T_{-}(s) = 0,\ 0 < \mathrm{Im}\,s ≤ Ω\} ∪ R_{line}(Ω),
+
+every root of each branch's linear problem that lies on that branch's own side (a root of
+``T₊`` below the spin, or of ``T₋`` above it, is a root of the wrong problem and no eigenvalue;
+so is any root with Im s ≤ 0, where the loss has the opposite sign). Each branch's linear
+problem is the eigenproblem of a complex first-order matrix (:func:`branch_state_matrix`), so
+R(Ω) is found without iterating on the loss sign: :func:`consistent_roots`. Nothing in R(Ω)
+depends on which root an iteration happens to reach, so neither does anything computed from it.
+
+Jeffcott rotor (the closed form this is tested against). Disk mass m, shaft stiffness k, loss
+factor η, external damping c_e, r = v + i w: the forward branch roots solve
+``m s² + c_e s + k(1 + iησ) = 0``, the backward ones ``m s² + c_e s + k(1 + iη) = 0`` on both
+branches (derived in tests/test_damping.py). The conjugate of the σ = +1 equation is the
+σ = −1 one, whose two roots sum to −c_e/m, so the forward roots are s₊ and
+``s₋ = −c_e/m − s̄₊`` exactly: one frequency ω_d, real parts ``−(ηω_n + c_e/m)/2`` and
+``+(ηω_n − c_e/m)/2`` to first order in η. Below ω_d only s₊ is consistent, above it only s₋;
+the onset is Ω = ω_d when ηω_n > c_e/m.
+
+Near the line. In general the two branch roots of one mode differ in frequency by O(η²)ω
+(ω₊ ≠ ω₋; a few 1e-5 ω on the baseline). Where ω₋ < Ω < ω₊ both are consistent (a fold: the
+mode has two eigenvalues); where ω₊ < Ω < ω₋ neither is, and the mode's eigenvalue lies on the
+line itself: Im s = Ω with the set-valued sign sgn(0) ∈ [−1, 1], i.e. a root of
+``T_μ = (1 − μ) T₋ + μ T₊`` for the μ ∈ [0, 1] that puts it at ω = Ω (:func:`line_root`;
+regula falsi on μ). These on-line roots complete R(Ω): every mode has at least one eigenvalue
+at every speed.
+
+Following a mode over speed (:func:`mode_root`) continues **both** branches from the mode's
+previous eigenvalue (Newton's method on each branch's linear problem,
+:func:`~flexshaft.analyses.eigen.newton`) and keeps the consistent one; in a fold the less
+stable of the two (the verdict must not depend on which of two valid eigenvalues a
+continuation followed); in the gap between, the on-line root. The tracking falls back to the
+exact set R(Ω) when a continuation step cannot be trusted.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as la
+
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, spectrum
+from flexshaft.analyses.loss import SYNCHRONOUS_TOLERANCE, LossCoefficients, frequency_coefficients
+
+__all__ = [
+    "Branch",
+    "branches",
+    "on_branch",
+    "branch_state_matrix",
+    "branch_roots",
+    "consistent_roots",
+    "line_root",
+    "mode_root",
+    "damped_modes",
+]
+
+#: Smallest MAC between the starting vector and a branch root for the root to count as the
+#: same mode's. The two branch roots of an isolated mode differ by a loss perturbation of
+#: order η (MAC > 0.99 on the baseline); the eigenvectors of a double root (the forward and
+#: backward whirl of an axisymmetric rotor on one branch) are any basis of its plane, which
+#: round-off picks (a circular start vector has MAC 1/2 with either of a planar pair).
+SAME_MODE_MAC = 0.25
+_NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True)
+class Branch:
+    """An interval of mode frequencies ``low <= ω <= high`` [rad/s] on which the loss weights
+    are constant (``weights``: of F, K_lat and K_lat S, :mod:`flexshaft.analyses.loss`)."""
+
+    low: float
+    high: float
+    weights: LossCoefficients
+
+
+def branches(red: ReducedModel, speed: float) -> tuple[Branch, ...]:
+    """The branches at spin speed Ω = ``speed`` >= 0 [rad/s], by increasing frequency: one for
+    a loss-free model, the fixed-frame (thesis) loss and Ω = 0; two (below and above Ω) for the
+    rotating-frame loss. The weights are those of
+    :func:`~flexshaft.analyses.loss.frequency_coefficients` inside each interval."""
+    if not red.has_loss:
+        return (Branch(0.0, math.inf, _NO_LOSS),)
+    if red.internal_damping == "thesis" or speed <= 0:
+        return (Branch(0.0, math.inf, frequency_coefficients(red.internal_damping, 1.0, max(speed, 0.0))),)
+    below = frequency_coefficients(red.internal_damping, 0.5 * speed, speed)
+    above = frequency_coefficients(red.internal_damping, 2.0 * speed, speed)
+    return (Branch(0.0, float(speed), below), Branch(float(speed), math.inf, above))
+
+
+def on_branch(branch: Branch, omega, speed: float):
+    """Whether frequencies ``omega`` [rad/s] lie on ``branch`` (closed, widened by the
+    synchronous band of :data:`~flexshaft.analyses.loss.SYNCHRONOUS_TOLERANCE`), and > 0."""
+    omega = np.asarray(omega, dtype=float)
+    band = SYNCHRONOUS_TOLERANCE * np.maximum(np.maximum(np.abs(omega), abs(speed)), 1.0)
+    return (omega > 0) & (omega >= branch.low - band) & (omega <= branch.high + band)
+
+
+def branch_state_matrix(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:
+    """First-order matrix of one branch's linear problem: the loss-free state matrix
+    (:meth:`~flexshaft.analyses.eigen.ReducedModel.state_matrix`) with the complex loss
+    stiffness ``w_F F̃ + w_L K̃_lat + w_S K̃_lat S̃`` added to its stiffness block."""
+    A = red.state_matrix(speed)
+    if not (weights.fixed or weights.lateral or weights.circulatory):
+        return A
+    nb = red.size
+    A = A.astype(complex)
+    A[nb : 2 * nb, :nb] -= weights.fixed * red.F + weights.lateral * red.L + weights.circulatory * red.S
+    return A
+
+
+def branch_roots(red: ReducedModel, speed: float, weights: LossCoefficients) -> tuple[np.ndarray, np.ndarray]:
+    """Every oscillatory root (Im s > 10⁻⁶ |s|) of one branch's linear problem, sorted by |s|:
+    ``(s [rad/s], Y)`` with unit modal coordinates (nb, k), on either side of the line."""
+    lam, vec = la.eig(branch_state_matrix(red, speed, weights), check_finite=False)
+    keep = lam.imag > 1e-6 * np.abs(lam)
+    lam, vec = lam[keep], vec[: red.size, keep]
+    order = np.argsort(np.abs(lam))
+    vec = vec[:, order]
+    norm = np.linalg.norm(vec, axis=0)
+    return lam[order], vec / np.where(norm > 0, norm, 1.0)
+
+
+def consistent_roots(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.ndarray]:
+    """Every oscillatory eigenvalue of the hysteretic problem at one speed, R(Ω) of the module
+    docstring: ``(s [rad/s], Y)`` sorted by |s|, unit modal coordinates (nb, k).
+
+    One dense eigen-solve per branch; the roots on their own branch's side, plus the on-line
+    roots of the modes whose two branch roots both lie on the wrong side (a lower-branch root
+    above Ω paired by MAC with an upper-branch root below it, :func:`line_root`).
+    """
+    if not red.has_loss:
+        return candidates(red, speed)
+    parts = []
+    for branch in branches(red, speed):
+        s, Y = branch_roots(red, speed, branch.weights)
+        parts.append((branch, s, Y, on_branch(branch, s.imag, speed)))
+    out_s = [s[ok] for _, s, _, ok in parts]
+    out_y = [Y[:, ok] for _, _, Y, ok in parts]
+    if len(parts) == 2:
+        (lower, s_lo, Y_lo, ok_lo), (upper, s_hi, Y_hi, ok_hi) = parts
+        above = np.flatnonzero(~ok_lo & (s_lo.imag > speed))  # lower-branch roots above the line
+        below = np.flatnonzero(~ok_hi & (s_hi.imag < speed))  # upper-branch roots below it
+        if above.size and below.size:
+            mac = np.abs(Y_lo[:, above].conj().T @ Y_hi[:, below]) ** 2
+            for i, j in zip(*np.nonzero(mac >= SAME_MODE_MAC)):
+                if mac[i].argmax() != j or mac[:, j].argmax() != i:
+                    continue  # pair only mutual best matches
+                a, b = above[i], below[j]
+                root = line_root(red, speed, lower.weights, upper.weights, (s_lo[a], Y_lo[:, a]), (s_hi[b], Y_hi[:, b]))
+                if root is not None:
+                    out_s.append(np.array([root[0]]))
+                    out_y.append(root[1][:, None])
+    s = np.concatenate(out_s)
+    Y = np.hstack(out_y)
+    order = np.argsort(np.abs(s), kind="stable")
+    return s[order], Y[:, order]
+
+
+def _mix(a: LossCoefficients, b: LossCoefficients, mu: float) -> LossCoefficients:
+    """``(1 − μ) a + μ b`` weight by weight."""
+    return LossCoefficients(
+        (1 - mu) * a.fixed + mu * b.fixed,
+        (1 - mu) * a.lateral + mu * b.lateral,
+        (1 - mu) * a.circulatory + mu * b.circulatory,
+    )
+
+
+def line_root(
+    red: ReducedModel, speed: float, lower: LossCoefficients, upper: LossCoefficients, low_root, high_root
+) -> tuple[complex, np.ndarray] | None:
+    """The on-line eigenvalue of a mode whose branch roots straddle the line the wrong way.
+
+    ``low_root = (s₋, y₋)``: the mode's root of the lower branch (weights ``lower``), with
+    Im s₋ > Ω; ``high_root = (s₊, y₊)``: its root of the upper branch, Im s₊ < Ω. Along
+    ``T_μ = T(weights (1 − μ) lower + μ upper)`` the root moves from s₋ (μ = 0) to s₊ (μ = 1),
+    so Im s(μ) − Ω changes sign: regula falsi (Illinois) on μ, each evaluation a Newton solve
+    of the linear problem T_μ started from the interpolated root, until |Im s − Ω| is inside
+    the synchronous band. Returns ``(s, y)`` with Im s = Ω, or None when the root cannot be
+    followed in μ (an evaluation that does not converge).
+    """
+    (s_lo, y_lo), (s_hi, y_hi) = low_root, high_root
+    phase = np.vdot(y_lo, y_hi)
+    y_hi = y_hi * (np.conj(phase) / abs(phase) if abs(phase) > 0 else 1.0)
+    band = SYNCHRONOUS_TOLERANCE * max(abs(speed), 1.0)
+    a, b = 0.0, 1.0
+    ga, gb = s_lo.imag - speed, s_hi.imag - speed
+    side = 0
+    for _ in range(60):
+        mu = a + ga / (ga - gb) * (b - a)
+        s, y, converged = newton(
+            red, speed, (1 - mu) * s_lo + mu * s_hi, (1 - mu) * y_lo + mu * y_hi, weights=_mix(lower, upper, mu)
+        )
+        if not converged:
+            return None
+        g = s.imag - speed
+        if abs(g) <= band or b - a <= 1e-15:
+            return s, y
+        if g > 0:
+            a, ga = mu, g
+            if side == +1:
+                gb *= 0.5
+            side = +1
+        else:
+            b, gb = mu, g
+            if side == -1:
+                ga *= 0.5
+            side = -1
+    return None
+
+
+def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tuple[complex, np.ndarray, bool]:
+    """The eigenvalue at ``speed`` of the mode near ``(s, y)`` (continuation of both branches).
+
+    Each branch's linear problem is solved by Newton's method from ``(s, y)``, the branch of
+    ``Im s`` first; a branch root counts when it converged (Im s > 0) on its own side of the
+    line and is the same mode (MAC with ``y`` at least :data:`SAME_MODE_MAC`). One such root:
+    that one; two (a fold): the less stable; none, with the two branch roots straddling the
+    line the wrong way: the on-line root (:func:`line_root`). Returns ``(s, y, found)``.
+
+    The other branch is skipped when the first root is consistent and farther from the line
+    than ten times the first-order distance between the two branch roots,
+    ``|yᴴ (W_other − W_this) y| / (2|s|)`` (the perturbation of a root of
+    ``s² + s D + K`` by a change ΔW of K), which cannot then be consistent.
+    """
+    parts = branches(red, speed)
+    if len(parts) == 2 and not on_branch(parts[0], s.imag, speed):
+        parts = parts[::-1]
+    found = []
+    for i, branch in enumerate(parts):
+        root, vec, converged = newton(red, speed, s, y, weights=branch.weights)
+        same = converged and abs(np.vdot(y, vec)) ** 2 >= SAME_MODE_MAC * np.vdot(y, y).real
+        found.append((branch, root, vec, same))
+        if i == 0 and len(parts) == 2 and same and on_branch(branch, root.imag, speed):
+            other = parts[1].weights
+            delta = (
+                (other.fixed - branch.weights.fixed) * (red.F @ vec)
+                + (other.lateral - branch.weights.lateral) * (red.L @ vec)
+                + (other.circulatory - branch.weights.circulatory) * (red.S @ vec)
+            )
+            if abs(root.imag - speed) > 10 * abs(np.vdot(vec, delta)) / (2 * abs(root)):
+                return root, vec, True
+    consistent = [(root, vec) for branch, root, vec, same in found if same and on_branch(branch, root.imag, speed)]
+    if consistent:
+        root, vec = max(consistent, key=lambda rv: rv[0].real)
+        return root, vec, True
+    if len(found) == 2 and found[0][3] and found[1][3]:
+        found.sort(key=lambda f: f[0].low)
+        (lower, s_lo, y_lo, _), (upper, s_hi, y_hi, _) = found
+        if s_lo.imag > speed > s_hi.imag:
+            root = line_root(red, speed, lower.weights, upper.weights, (s_lo, y_lo), (s_hi, y_hi))
+            if root is not None:
+                return root[0], root[1], True
+    return s, y, False
+
+
+def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The roots ``s`` of a dense eigen-solve refined by Newton's method on their own branch's
+    problem: a dense solve of the first-order matrix is accurate to about ε‖A‖ in absolute
+    terms, which a nearly massless member (‖A‖ of its stiff, light modes ~1e8 rad²/s² and
+    more) turns into 1e-9 of a low mode; Newton on the nb × nb second-order problem brings
+    each root to the convergence tolerance relative to its own |s|. A refined root is kept
+    only when it converged on the same branch and is the same mode (MAC with the dense
+    solve's vector at least :data:`SAME_MODE_MAC`); an on-line root (:func:`line_root`) and a
+    root Newton cannot refine keep the dense solve's value."""
+    s, Y = s.copy(), Y.copy()
+    parts = branches(red, speed)
+    for k in range(s.size):
+        branch = next((b for b in parts if on_branch(b, s[k].imag, speed)), None)
+        if branch is None:
+            continue
+        root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights)
+        same = abs(np.vdot(Y[:, k], vec)) ** 2 >= SAME_MODE_MAC * np.vdot(Y[:, k], Y[:, k]).real
+        if converged and same and on_branch(branch, root.imag, speed):
+            s[k], Y[:, k] = root, vec
+    return s, Y
+
+
+def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
+    """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
+
+    Returns ``(s, Y)`` in increasing damped frequency Im s (then |s|), Y modal coordinates:
+    among the eigenvalues R(Ω) of :func:`consistent_roots` (a mode in a fold near the
+    synchronous line has two), the ``n_modes`` of
+    :func:`~flexshaft.analyses.eigen.lowest_modes` (lowest damped frequency among the 2n of
+    lowest |s|: the modes every table numbers), refined by :func:`_polish`. Divergent roots
+    (real s > 0, :func:`~flexshaft.analyses.eigen.spectrum`) are modes too: they are returned
+    first, with Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic
+    loss is defined for harmonic motion only and cannot hold a static divergence).
+    """
+    out_s, out_y = consistent_roots(red, speed)
+    wanted = lowest_modes(out_s, n_modes)
+    out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
+    _, _, Y_div, div = spectrum(red, speed)
+    if div.size:
+        out_s = np.concatenate([out_s, div.astype(complex)])
+        out_y = np.hstack([out_y, Y_div.astype(complex)])
+    order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
+    return out_s[order], out_y[:, order]

@@ -1,0 +1,578 @@
+"""Interactive figures of an :class:`~flexshaft.verdict.assess.Assessment` (hover, zoom), drawn
+by plotly.js in a browser, and the offline page ``interactive.html`` that shows them.
+
+Each ``*_figure`` function returns a plotly.js figure as plain JSON data (``{"data": [...],
+"layout": {...}}``): the verdict's normalised margins, the Campbell diagram with the operating
+speed and the critical speeds, the spin-up orbit, the actuator excursion and force against their
+limits (static + dynamic, as the verdict checks them) and the whirl log decrement over speed.
+``flexshaft explore`` draws the same figures live; :func:`write_interactive_report` writes them
+beside ``report.html`` (``flexshaft run --interactive``) with plotly.js inlined, so the page
+works offline and alone. The static report is unchanged and stays the default.
+
+Numbers come from the assessment only (nothing is computed here); SI is converted to rpm, Hz
+and mm here, at the edge, through :mod:`flexshaft.units`. plotly.js is the file the ``plotly``
+wheel ships (the extra ``flexshaft[explore]``); no Python plotly API is used.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from flexshaft import __version__
+from flexshaft.optimize.evaluate import normalised_margin
+from flexshaft.report.verdict import VERDICT_COLUMNS, location_text, verdict_rows
+from flexshaft.units import m_to_mm, rad_s_to_hz, rad_s_to_rpm, rpm_to_hz
+from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.gather import actuator_limits
+
+__all__ = [
+    "EXPLORE_EXTRA",
+    "INTERACTIVE_PAGE",
+    "actuator_figure",
+    "assessment_figures",
+    "campbell_figure",
+    "margins_figure",
+    "missing_extra",
+    "plotly_js_path",
+    "spinup_figure",
+    "stability_figure",
+    "write_interactive_report",
+]
+
+#: The page :func:`write_interactive_report` writes.
+INTERACTIVE_PAGE = "interactive.html"
+#: How to install what the interactive figures and ``flexshaft explore`` need.
+EXPLORE_EXTRA = "pip install 'flexshaft[explore]'"
+
+#: Status colours (the static report's margin figure uses the same meaning).
+STATUS_COLOURS = {"pass": "#2e7d32", "fail": "#c62828", "not evaluated": "#9e9e9e"}
+_PALETTE = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2")
+_WHIRL_DASH = {"forward": "solid", "backward": "dash", "planar": "dot", "none": "dashdot"}
+_FONT = {"family": "DejaVu Sans, Helvetica, Arial, sans-serif", "size": 12}
+
+
+def plotly_js_path() -> Path | None:
+    """The ``plotly.min.js`` shipped in the ``plotly`` wheel, or None when it is not installed."""
+    try:
+        path = resources.files("plotly").joinpath("package_data", "plotly.min.js")
+    except ModuleNotFoundError:
+        return None
+    path = Path(str(path))
+    return path if path.is_file() else None
+
+
+def missing_extra(what: str = "the interactive figures") -> str | None:
+    """None when plotly.js is available; else the message saying how to install it."""
+    if plotly_js_path() is not None:
+        return None
+    return (
+        f"{what}: the optional package plotly is not installed (its plotly.js draws the figures, offline); "
+        f"install it with {EXPLORE_EXTRA}"
+    )
+
+
+# ------------------------------------------------------------------------------------------------
+# Plain JSON numbers
+
+
+def _values(array, digits: int = 6) -> list[float | None]:
+    """A 1-D array as JSON numbers rounded to ``digits`` significant digits (NaN, ±inf → null)."""
+    out = []
+    for x in np.asarray(array, dtype=float).ravel():
+        out.append(float(f"{x:.{digits}g}") if math.isfinite(x) else None)
+    return out
+
+
+def _layout(title: str, x_title: str, y_title: str, **extra: Any) -> dict:
+    return {
+        "title": {"text": title, "x": 0.01, "xanchor": "left", "font": {"size": 14}},
+        "xaxis": {"title": {"text": x_title}, "zeroline": False},
+        "yaxis": {"title": {"text": y_title}, "zeroline": False},
+        "font": _FONT,
+        "margin": {"l": 64, "r": 16, "t": 40, "b": 48},
+        "legend": {"orientation": "h", "y": -0.22, "font": {"size": 11}},
+        "hovermode": "closest",
+        **extra,
+    }
+
+
+def _vertical(x: float, label: str, colour: str = "#444", dash: str = "dash") -> tuple[dict, dict]:
+    """A vertical line across the plot at ``x`` and its label (layout shape and annotation)."""
+    shape = {
+        "type": "line",
+        "xref": "x",
+        "yref": "paper",
+        "x0": x,
+        "x1": x,
+        "y0": 0,
+        "y1": 1,
+        "line": {"color": colour, "dash": dash, "width": 1.5},
+    }
+    note = {
+        "x": x,
+        "y": 1,
+        "xref": "x",
+        "yref": "paper",
+        "text": label,
+        "showarrow": False,
+        "yanchor": "bottom",
+        "font": {"size": 11, "color": colour},
+    }
+    return shape, note
+
+
+def _limit_line(x0: float, x1: float, y: float, name: str, colour: str, axis: str = "") -> dict:
+    """A horizontal limit drawn as a trace (so it is in the legend and hover)."""
+    trace = {
+        "type": "scatter",
+        "mode": "lines",
+        "x": [x0, x1],
+        "y": [y, y],
+        "name": name,
+        "line": {"color": colour, "dash": "dash", "width": 1.5},
+        "hovertemplate": f"{name}: %{{y:.4g}}<extra></extra>",
+    }
+    if axis:
+        trace["xaxis"], trace["yaxis"] = "x" + axis, "y" + axis
+    return trace
+
+
+# ------------------------------------------------------------------------------------------------
+# Figures
+
+
+def margins_figure(a: Assessment) -> dict:
+    """Every check's normalised margin (:func:`~flexshaft.optimize.evaluate.normalised_margin`:
+    negative fails) as a bar, green pass, red fail, grey not evaluated."""
+    checks = a.verdict.checks
+    rows = verdict_rows(a.verdict, compact=True)
+    margins = [normalised_margin(c, a.operating_speed) for c in checks]
+    shown = [0.0 if not math.isfinite(m) else m for m in margins]
+    text = [f"{row[3]} ({row[4]})" for row in rows]
+    hover = [
+        f"<b>{html.escape(row[0])}</b><br>value {html.escape(row[1])}, limit {html.escape(row[2])}"
+        f"<br>margin {html.escape(row[3])}<br>{html.escape(row[5] or '')}"
+        for row in rows
+    ]
+    return {
+        "data": [
+            {
+                "type": "bar",
+                "orientation": "h",
+                "y": [c.title for c in checks],
+                "x": _values(shown),
+                "marker": {"color": [STATUS_COLOURS[c.status] for c in checks]},
+                "text": text,
+                "textposition": "auto",
+                "hovertext": hover,
+                "hoverinfo": "text",
+                "name": "normalised margin",
+            }
+        ],
+        "layout": _layout(
+            f"Requirements: {'PASS' if a.verdict.passed else 'FAIL'} (normalised margin, < 0 fails)",
+            "normalised margin [-]",
+            "",
+            yaxis={"autorange": "reversed", "automargin": True},
+            # the margins span decades (a Tsai-Wu factor of 30 beside a 2 % excursion margin): the
+            # axis stops at 3 (the label gives the value), zoom out to see the rest
+            xaxis={"title": {"text": "normalised margin [-]"}, "range": [min(-1.0, 1.1 * min(shown)), 3.0]},
+            showlegend=False,
+            margin={"l": 16, "r": 16, "t": 40, "b": 48},
+        ),
+    }
+
+
+def campbell_figure(a: Assessment) -> dict | None:
+    """Campbell diagram [Hz over rpm] of the tracked modes (whirl as line style), the 1× line,
+    the operating speed (and its range) and the lateral critical speeds the separation check
+    judges (peaks of the unbalance response, with their AF). None without a Campbell diagram."""
+    camp = a.campbell
+    if camp is None:
+        return None
+    rpm = rad_s_to_rpm(camp.speeds)
+    freq = camp.frequencies
+    logdec = camp.log_decrements
+    data = []
+    for k in range(freq.shape[1]):
+        whirl = _dominant(camp.whirl[:, k])
+        kind = _dominant(camp.kind[:, k]) if camp.kind is not None else "lateral"
+        label = f"mode {k + 1} ({whirl if kind == 'lateral' else kind})"
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "lines+markers",
+                "x": _values(rpm),
+                "y": _values(freq[:, k]),
+                "name": label,
+                "line": {"color": _PALETTE[k % len(_PALETTE)], "dash": _WHIRL_DASH.get(whirl, "solid"), "width": 1.5},
+                "marker": {"size": 4},
+                "customdata": _values(logdec[:, k], 4),
+                "hovertemplate": f"{label}<br>%{{x:.0f}} rpm, %{{y:.2f}} Hz<br>log decrement %{{customdata}}"
+                "<extra></extra>",
+            }
+        )
+    top = float(rpm[-1])
+    data.append(
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "x": [0.0, top],
+            "y": [0.0, rpm_to_hz(top)],
+            "name": "1× spin",
+            "line": {"color": "#000", "width": 1},
+            "hoverinfo": "skip",
+        }
+    )
+    criticals = a.criticals.criticals if a.criticals is not None else ()
+    if criticals:
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "markers",
+                "x": _values([rad_s_to_rpm(c.speed) for c in criticals]),
+                "y": _values([rad_s_to_hz(c.speed) for c in criticals]),
+                "name": "lateral critical speeds (unbalance peaks)",
+                "marker": {"symbol": "x", "size": 11, "color": "#c62828", "line": {"width": 2}},
+                "customdata": _values([c.amplification_factor for c in criticals], 3),
+                "hovertemplate": "critical %{x:.0f} rpm<br>AF %{customdata}<extra></extra>",
+            }
+        )
+    op = rad_s_to_rpm(a.operating_speed)
+    shapes, notes = _operating(a, op)
+    return {
+        "data": data,
+        "layout": _layout(
+            "Campbell diagram", "speed [rpm]", "frequency [Hz]", shapes=shapes, annotations=notes, hovermode="closest"
+        ),
+    }
+
+
+def _operating(a: Assessment, op_rpm: float) -> tuple[list, list]:
+    """The operating speed's line and, when the design gives one, its speed range as a band."""
+    shape, note = _vertical(op_rpm, f"operating {op_rpm:.0f} rpm")
+    shapes, notes = [shape], [note]
+    low, high = a.design.operating.speed_limits
+    if high > low:
+        shapes.append(
+            {
+                "type": "rect",
+                "xref": "x",
+                "yref": "paper",
+                "x0": rad_s_to_rpm(low),
+                "x1": rad_s_to_rpm(high),
+                "y0": 0,
+                "y1": 1,
+                "fillcolor": "#888",
+                "opacity": 0.12,
+                "line": {"width": 0},
+            }
+        )
+    return shapes, notes
+
+
+def _dominant(labels) -> str:
+    values, counts = np.unique(np.asarray(labels, dtype=str), return_counts=True)
+    return str(values[int(np.argmax(counts))]) if values.size else "none"
+
+
+def spinup_figure(a: Assessment) -> dict:
+    """Peak shaft orbit over the shaft and the orbit at each actuator station during the spin-up
+    [mm over rpm, log scale], with the spin-up deflection limit when the design gives one."""
+    spin = a.spinup
+    model = a.model
+    dm = model.dofs
+    rpm = rad_s_to_rpm(spin.speeds)
+    data = [
+        {
+            "type": "scatter",
+            "mode": "lines",
+            "x": _values(rpm),
+            "y": _values(m_to_mm(spin.shaft_peak)),
+            "name": "largest over the shaft",
+            "line": {"color": "#000", "width": 2},
+            "hovertemplate": "%{x:.0f} rpm: %{y:.4g} mm<extra>largest over the shaft</extra>",
+        }
+    ]
+    for k, act in enumerate(model.actuators):
+        node = dm.node_at("shaft", act.link.x_shaft)
+        name = f"shaft at {act.name} (x = {act.link.x_shaft:.2f} m)"
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "lines",
+                "x": _values(rpm),
+                "y": _values(m_to_mm(spin.envelope[node])),
+                "name": name,
+                "line": {"color": _PALETTE[k % len(_PALETTE)], "width": 1.5},
+                "hovertemplate": f"%{{x:.0f}} rpm: %{{y:.4g}} mm<extra>{html.escape(name)}</extra>",
+            }
+        )
+    limit = a.design.requirements.max_spinup_deflection
+    if limit is not None:
+        data.append(_limit_line(float(rpm[0]), float(rpm[-1]), m_to_mm(limit), "spin-up orbit limit", "#c62828"))
+    op = rad_s_to_rpm(a.operating_speed)
+    shapes, notes = _operating(a, op)
+    layout = _layout(
+        "Spin-up imbalance response (orbit major semi-axis)",
+        "speed [rpm]",
+        "orbit [mm]",
+        shapes=shapes,
+        annotations=notes,
+    )
+    layout["yaxis"]["type"] = "log"
+    return {"data": data, "layout": layout}
+
+
+def actuator_figure(a: Assessment) -> dict | None:
+    """Each actuator's excursion, static offset + spin-up orbit [mm], against its auxiliary-bearing
+    gap, and its force, static + spin-up [N], against its capacity (top and bottom panels): the
+    sums the actuator checks judge, with each check's peak marked. None without actuators."""
+    model = a.model
+    if not model.actuators:
+        return None
+    spin = a.spinup
+    rpm = rad_s_to_rpm(spin.speeds)
+    evidence = {e.name: e for e in a.evidence.actuators}
+    limits = actuator_limits(model)
+    data = []
+    x0, x1 = float(rpm[0]), float(rpm[-1])
+    for k, act in enumerate(model.actuators):
+        colour = _PALETTE[k % len(_PALETTE)]
+        ev = evidence.get(act.name)
+        offset = ev.static_offset if ev is not None else 0.0
+        force0 = ev.static_force if ev is not None else 0.0
+        excursion = m_to_mm(offset + np.asarray(spin.actuator_displacement[act.name]))
+        force = force0 + np.asarray(spin.actuator_force[act.name])
+        for axis, y, unit in (("", excursion, "mm"), ("2", force, "N")):
+            data.append(
+                {
+                    "type": "scatter",
+                    "mode": "lines",
+                    "x": _values(rpm),
+                    "y": _values(y),
+                    "xaxis": "x" + axis,
+                    "yaxis": "y" + axis,
+                    "name": f"{act.name}: static + spin-up",
+                    "legendgroup": act.name,
+                    "showlegend": axis == "",
+                    "line": {"color": colour, "width": 1.8},
+                    "hovertemplate": f"{html.escape(act.name)}: %{{y:.4g}} {unit} at %{{x:.0f}} rpm<extra></extra>",
+                }
+            )
+        if ev is not None:
+            for axis, speed, value, unit in (
+                ("", ev.orbit_speed, m_to_mm(ev.static_offset + ev.peak_orbit), "mm"),
+                ("2", ev.force_speed, ev.static_force + ev.peak_force, "N"),
+            ):
+                data.append(
+                    {
+                        "type": "scatter",
+                        "mode": "markers",
+                        "x": _values([rad_s_to_rpm(speed)]),
+                        "y": _values([value]),
+                        "xaxis": "x" + axis,
+                        "yaxis": "y" + axis,
+                        "name": f"{act.name}: checked peak",
+                        "legendgroup": act.name,
+                        "showlegend": False,
+                        "marker": {"color": colour, "size": 9, "symbol": "diamond"},
+                        "hovertemplate": f"{html.escape(act.name)} peak checked: %{{y:.4g}} {unit} at "
+                        "%{x:.0f} rpm<extra></extra>",
+                    }
+                )
+        limit = limits[act.name]
+        if limit.gap is not None:
+            data.append(_limit_line(x0, x1, m_to_mm(limit.gap), f"{act.name}: gap", colour))
+        if limit.force_capacity is not None:
+            data.append(_limit_line(x0, x1, limit.force_capacity, f"{act.name}: force capacity", colour, axis="2"))
+    op = rad_s_to_rpm(a.operating_speed)
+    shapes, notes = _operating(a, op)  # lines and band across both panels (paper height)
+    layout = _layout(
+        "Actuators: excursion against the gap, force against the capacity",
+        "",
+        "excursion [mm]",
+        shapes=shapes,
+        annotations=notes,
+        grid={"rows": 2, "columns": 1, "pattern": "independent", "roworder": "top to bottom"},
+    )
+    layout["xaxis"] = {"matches": "x2", "showticklabels": False}
+    layout["xaxis2"] = {"title": {"text": "speed [rpm]"}}
+    layout["yaxis2"] = {"title": {"text": "force [N]"}}
+    return {"data": data, "layout": layout}
+
+
+def stability_figure(a: Assessment) -> dict:
+    """Log decrement over speed of every tracked mode of the whirl-stability analysis, the
+    required log decrement and the modes the whirl-damping check judges at the operating speed."""
+    st = a.stability
+    rpm = rad_s_to_rpm(st.speeds)
+    logdec = st.log_decrements
+    data = []
+    for k in range(logdec.shape[1]):
+        whirl = _dominant(st.whirl[:, k])
+        kind = _dominant(st.kind[:, k]) if st.kind is not None else "lateral"
+        label = f"mode {k + 1} ({whirl if kind == 'lateral' else kind})"
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "lines+markers",
+                "x": _values(rpm),
+                "y": _values(logdec[:, k], 4),
+                "name": label,
+                "line": {"color": _PALETTE[k % len(_PALETTE)], "dash": _WHIRL_DASH.get(whirl, "solid"), "width": 1.5},
+                "marker": {"size": 4},
+                "hovertemplate": f"{label}<br>%{{x:.0f}} rpm: log decrement %{{y:.4g}}<extra></extra>",
+            }
+        )
+    required = a.design.requirements.required_log_decrement
+    data.append(_limit_line(float(rpm[0]), float(rpm[-1]), required, "required log decrement", "#c62828"))
+    judged = a.evidence.modes_at_operating or ()
+    if judged:
+        op = rad_s_to_rpm(a.operating_speed)
+        data.append(
+            {
+                "type": "scatter",
+                "mode": "markers",
+                "x": [op] * len(judged),
+                "y": _values([m.log_decrement for m in judged], 4),
+                "text": [f"mode {m.label}, {rad_s_to_hz(m.frequency):.2f} Hz" for m in judged],
+                "name": "checked at the operating speed",
+                "marker": {"symbol": "diamond", "size": 9, "color": "#000"},
+                "hovertemplate": "%{text}<br>log decrement %{y:.4g}<extra></extra>",
+            }
+        )
+    op = rad_s_to_rpm(a.operating_speed)
+    shapes, notes = _operating(a, op)
+    onset = st.onset_speed
+    if onset is not None and math.isfinite(onset):
+        shape, note = _vertical(rad_s_to_rpm(onset), f"whirl onset {rad_s_to_rpm(onset):.0f} rpm", "#c62828")
+        shapes.append(shape)
+        notes.append(note)
+    layout = _layout(
+        "Whirl stability: log decrement of the tracked modes",
+        "speed [rpm]",
+        "log decrement [-]",
+        shapes=shapes,
+        annotations=notes,
+    )
+    return {"data": data, "layout": layout}
+
+
+def assessment_figures(a: Assessment) -> dict[str, dict]:
+    """Every interactive figure of the assessment by name (those that exist for its design)."""
+    figures = {
+        "margins": margins_figure(a),
+        "campbell": campbell_figure(a),
+        "spinup": spinup_figure(a),
+        "actuators": actuator_figure(a),
+        "stability": stability_figure(a),
+    }
+    return {name: figure for name, figure in figures.items() if figure is not None}
+
+
+# ------------------------------------------------------------------------------------------------
+# The offline page
+
+_CSP = "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; img-src data: blob:"
+_CSS = """
+body { margin: 0; font: 15px/1.5 "DejaVu Sans", Helvetica, Arial, sans-serif; color: #1b1f24; }
+main { max-width: 1100px; margin: 0 auto; padding: 0 24px 48px; }
+h1 { font-size: 1.6em; border-bottom: 3px solid #0b5394; padding: 20px 0 8px; }
+table { border-collapse: collapse; font-size: 0.9em; margin: 12px 0 20px; }
+th, td { border: 1px solid #d0d7de; padding: 3px 8px; text-align: left; }
+tr.pass td.status { color: #2e7d32; font-weight: 600; } tr.fail td.status { color: #c62828; font-weight: 600; }
+.figure { width: 100%; height: 460px; margin: 8px 0 24px; border: 1px solid #d0d7de; }
+#actuators { height: 620px; }
+p.note { color: #57606a; }
+"""
+_TITLES = {
+    "margins": "Requirements margins",
+    "campbell": "Campbell diagram",
+    "spinup": "Spin-up orbit",
+    "actuators": "Actuator excursion and force",
+    "stability": "Whirl stability",
+}
+
+
+def _script_text(text: str) -> str:
+    """Text safe inside a <script> element (no closing tag can appear)."""
+    return text.replace("</", "<\\/")
+
+
+def interactive_page(a: Assessment, plotly_js: str, title: str | None = None) -> str:
+    """The HTML page of :func:`write_interactive_report` (``plotly_js``: the library's text)."""
+    e = html.escape
+    figures = assessment_figures(a)
+    rows = verdict_rows(a.verdict)
+    statuses = [c.status.replace(" ", "-") for c in a.verdict.checks]
+    head = "".join(f"<th>{e(c)}</th>" for c in VERDICT_COLUMNS)
+    body = "\n".join(
+        f'<tr class="{s}">'
+        + "".join(f'<td class="{"status" if i == 4 else ""}">{e(v)}</td>' for i, v in enumerate(row))
+        + "</tr>"
+        for s, row in zip(statuses, rows)
+    )
+    failed = "; ".join(f"{c.title} ({location_text(c.location)})" for c in a.verdict.failed)
+    divs = "\n".join(
+        f'<h2>{e(_TITLES.get(name, name))}</h2>\n<div class="figure" id="{e(name)}"></div>' for name in figures
+    )
+    data = _script_text(json.dumps(figures, allow_nan=False, separators=(",", ":")))
+    heading = title or f"flexshaft interactive figures: {a.design.name}"
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta http-equiv="Content-Security-Policy" content="{_CSP}">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta name="generator" content="flexshaft {e(__version__)}">
+<title>{e(heading)}</title>
+<style>{_CSS}</style>
+<script>{_script_text(plotly_js)}</script>
+</head>
+<body>
+<main>
+<h1>{e(heading)}</h1>
+<p>Verdict: <b>{"PASS" if a.verdict.passed else "FAIL"}</b> at the {e(a.resolution.name)} resolution.
+{e(failed)}</p>
+<p class="note">The figures of <a href="report.html">report.html</a> with hover and zoom (drag to zoom,
+double-click to reset). plotly.js is inside this page: it needs no network.</p>
+<table><thead><tr>{head}</tr></thead><tbody>
+{body}
+</tbody></table>
+{divs}
+</main>
+<script>
+const figures = {data};
+for (const [name, figure] of Object.entries(figures)) {{
+  Plotly.newPlot(name, figure.data, figure.layout, {{responsive: true, displaylogo: false}});
+}}
+document.body.dataset.plotted = String(Object.keys(figures).length);
+</script>
+</body>
+</html>
+"""
+
+
+def write_interactive_report(a: Assessment, folder: str | Path) -> Path:
+    """Write ``interactive.html`` (the verdict and :func:`assessment_figures`, plotly.js inlined)
+    into ``folder``; returns its path.
+
+    Raises
+    ------
+    ModuleNotFoundError
+        When plotly is not installed (:func:`missing_extra` says how to install it).
+    """
+    js = plotly_js_path()
+    if js is None:
+        raise ModuleNotFoundError(missing_extra())
+    path = Path(folder) / INTERACTIVE_PAGE
+    path.write_text(interactive_page(a, js.read_text(encoding="utf-8")), encoding="utf-8")
+    return path
