@@ -26,14 +26,14 @@ KEYS = [
     "whirl_onset",
     "whirl_damping",
     "separation",
+    "torsional_separation",
     "actuator_orbit",
     "actuator_force",
-    "temperature",
-    "spinup_deflection",
-    "torsional_separation",
     "loop_sensitivity",
     "loop_gain_margin",
     "loop_phase_margin",
+    "temperature",
+    "spinup_deflection",
 ]
 REQUIREMENTS = Requirements(max_spinup_deflection=5e-3)  # defaults + a spin-up limit
 

@@ -104,15 +104,15 @@ def test_a_margin_of_exactly_zero_passes_every_check():
         "whirl_onset",
         "whirl_damping",
         "separation",
+        "torsional_separation",
         "actuator_orbit",
         "actuator_force",
-        "temperature",
-        "spinup_deflection",
-        "coupling_angle",
-        "torsional_separation",
         "loop_sensitivity",
         "loop_gain_margin",
         "loop_phase_margin",
+        "temperature",
+        "spinup_deflection",
+        "coupling_angle",
     ]
     for check in verdict.checks:
         assert check.status == "pass", check

@@ -46,8 +46,8 @@ closed-loop pole with ζ < :data:`RESOLVED_DAMPING` in the range, the points ω_
 ω_d ± ζ ω_n/2: each such peak is sampled at its top and at its half width. The poles are those of the
 loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`) or the
 caller's (``poles``: the every-root check's; above the highest of them, the undamped natural
-frequencies with a nominal ζ = 1e-3). Refinement on the loop function itself (bounded
-golden section, Brent's method): the local maxima of |S| within :data:`PEAK_WINDOW` of the
+frequencies with a nominal ζ = 1e-3). Refinement on the loop function itself (golden-section
+search, regula falsi): the local maxima of |S| within :data:`PEAK_WINDOW` of the
 largest grid value or more than twice a neighbour (a peak the grid under-resolves: a pole
 beside a zero of S moves the peak off the pole), the gain crossovers whose phase margin
 interpolated on the grid is within :data:`MARGIN_WINDOW_DEG` of the smallest, the phase
@@ -62,7 +62,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
@@ -101,6 +100,50 @@ MARGIN_WINDOW_DEG = 3.0
 MARGIN_WINDOW_DB = 2.0
 #: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole.
 _AROUND = (-0.5, 0.0, 0.5)
+
+
+def _root(f: Callable[[float], float], a: float, b: float, tol: float) -> float:
+    """A root of ``f`` between ``a`` and ``b`` (f(a), f(b) of opposite signs) to ``tol``: the
+    Illinois variant of regula falsi (superlinear; scipy.optimize is not imported by a run)."""
+    fa, fb = f(a), f(b)
+    side = 0
+    for _ in range(100):
+        c = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+        fc = f(c)
+        if fc == 0 or abs(b - a) <= tol:
+            return c
+        if (fc > 0) == (fb > 0):
+            b, fb = c, fc
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            a, fa = c, fc
+            if side == +1:
+                fb *= 0.5
+            side = +1
+        if abs(b - a) <= tol:
+            break
+    return b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+
+
+_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
+
+
+def _maximum(f: Callable[[float], float], a: float, b: float, tol: float) -> tuple[float, float]:
+    """(x, f(x)) of the largest value of a unimodal ``f`` on [a, b], golden-section search to ``tol``."""
+    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > tol:
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - _GOLDEN * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + _GOLDEN * (b - a)
+            fd = f(d)
+    return (c, fc) if fc >= fd else (d, fd)
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -192,18 +235,16 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     def scalar(x: float) -> complex:
         return complex(loop(np.array([x]))[0])
 
-    def minus_s(log_w: float) -> float:
-        return -abs(1.0 / (1.0 + scalar(float(np.exp(log_w)))))
+    def s_of_log(log_w: float) -> float:
+        return abs(1.0 / (1.0 + scalar(float(np.exp(log_w)))))
 
     peak, peak_w = float(S.max()), float(w[np.argmax(S)])
     for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
         if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
             continue  # neither near the top nor under-resolved (a neighbour below half of it)
-        found = minimize_scalar(
-            minus_s, bounds=(np.log(w[k - 1]), np.log(w[k + 1])), method="bounded", options={"xatol": 1e-8}
-        )
-        if -found.fun > peak:
-            peak, peak_w = -float(found.fun), float(np.exp(found.x))
+        x, value = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
+        if value > peak:
+            peak, peak_w = float(value), float(np.exp(x))
 
     phase = np.angle(L)
     turn = np.abs(np.angle(L[1:] / L[:-1]))  # phase change across each interval [rad]
@@ -228,7 +269,7 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     for (k, (x, value)), gm in zip(zip(crossings, estimates), margins):
         near = (gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB)
         if near or sharp[k]:
-            x = brentq(lambda x: scalar(x).imag, w[k], w[k + 1], xtol=1e-10 * w[k], rtol=1e-10)
+            x = _root(lambda x: scalar(x).imag, w[k], w[k + 1], 1e-8 * w[k])
             value = scalar(x)
         if value.real < 0:
             phase_w.append(x)
@@ -246,7 +287,7 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     smallest = min(estimate_pm, default=np.inf)
     for k, pm in zip(brackets, estimate_pm):
         if pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]:
-            x = brentq(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], xtol=1e-10 * w[k], rtol=1e-10)
+            x = _root(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], 1e-8 * w[k])
             pm = 180.0 - abs(float(np.degrees(np.angle(scalar(x)))))
         else:
             t = log_l[k] / (log_l[k] - log_l[k + 1])

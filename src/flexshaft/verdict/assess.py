@@ -53,11 +53,12 @@ __all__ = ["Assessment", "PointAssessment", "assess"]
 class Assessment(PointAnalyses):
     """A design judged at its operating points, SI units. Frozen: computed once.
 
-    The fields of :class:`PointAnalyses` (the modes, Campbell diagram, spin-up response, critical
-    speeds, strength, buckling, metal strength, coupling misalignment, bearing reactions,
-    thermal results, whirl stability, every-root check, torsional dynamics, bearing loops and
-    the notes) are those of the governing point, with what only the report shows; ``evidence``
-    is that point's.
+    ``design`` is the design assessed. The other fields of :class:`PointAnalyses` (the model, the
+    modes, Campbell diagram, spin-up response, critical speeds, strength, buckling, metal
+    strength, coupling misalignment, bearing reactions, thermal results, whirl stability,
+    every-root check, torsional dynamics, bearing loops, the point's conditions and the notes)
+    are those of the governing point, with what only the report shows (the design at that
+    point is ``model.design``); ``evidence`` is that point's.
 
     Attributes
     ----------
@@ -188,7 +189,7 @@ def assess(
         judged[index] = _judged(governing, add_report_detail(judged[index].analyses))
     shown = judged[index]
     return Assessment(
-        **vars(shown.analyses),
+        **{**vars(shown.analyses), "design": design},
         evidence=shown.evidence,
         verdict=envelope_verdict(judged),
         points=tuple(judged),

@@ -23,14 +23,14 @@ Checks, in report order (key: requirement):
 * ``whirl_damping``: log decrement of the lateral whirl modes (shaft share ≥ 10 %) at the operating speed;
 * ``separation``: API 684 separation margin of every lateral critical speed
   (:mod:`flexshaft.analyses.separation`);
-* ``actuator_orbit``: static offset + spin-up orbit at each actuator within its auxiliary-bearing gap;
-* ``actuator_force``: static + spin-up force of each actuator within its capacity;
-* ``temperature``: maximum shaft temperature within the matrix allowable;
-* ``spinup_deflection``: peak shaft orbit during spin-up within the limit;
 * ``torsional_separation``: every torsional mode at least ``min_torsional_separation`` from
   every excitation (1/rev, tail-rotor N/rev, main-rotor harmonics) over the speed range;
+* ``actuator_orbit``: static offset + spin-up orbit at each actuator within its auxiliary-bearing gap;
+* ``actuator_force``: static + spin-up force of each actuator within its capacity;
 * ``loop_sensitivity``, ``loop_gain_margin``, ``loop_phase_margin`` (when the design has
   active bearings): sensitivity peak (ISO 14839-3), gain and phase margins of every loop;
+* ``temperature``: maximum shaft temperature within the matrix allowable;
+* ``spinup_deflection``: peak shaft orbit during spin-up within the limit;
 * ``coupling_angle`` (when the design has couplings): the static plus whirling misalignment
   angle of each coupling within its ``allowable_angle_deg``.
 """
@@ -487,15 +487,15 @@ CHECKS: tuple[CheckRule, ...] = (
     CheckRule("whirl_onset", whirl_onset),
     CheckRule("whirl_damping", whirl_damping),
     CheckRule("separation", separation),
+    CheckRule("torsional_separation", torsional_separation),
     CheckRule("actuator_orbit", actuator_orbit, _active_bearings),
     CheckRule("actuator_force", actuator_force, _active_bearings),
-    CheckRule("temperature", temperature, _laminated),
-    CheckRule("spinup_deflection", spinup_deflection),
-    CheckRule("coupling_angle", coupling_angle, _couplings),
-    CheckRule("torsional_separation", torsional_separation),
     CheckRule("loop_sensitivity", loop_sensitivity, _active_bearings),
     CheckRule("loop_gain_margin", loop_gain_margin, _active_bearings),
     CheckRule("loop_phase_margin", loop_phase_margin, _active_bearings),
+    CheckRule("temperature", temperature, _laminated),
+    CheckRule("spinup_deflection", spinup_deflection),
+    CheckRule("coupling_angle", coupling_angle, _couplings),
 )
 #: Their keys, in report order.
 CHECK_KEYS: tuple[str, ...] = tuple(rule.key for rule in CHECKS)
