@@ -66,7 +66,7 @@ def test_run_names_the_design_then_the_verdict(tmp_path: Path):
     assert result.exit_code == 0, result.output
     first, second = result.stdout.splitlines()[:2]
     assert first == TUNED_HEADING
-    assert second == "verdict: PASS — 9 checks pass"  # the tuned design passes (docs/requirements.md)
+    assert second == "verdict: PASS — 13 checks pass"  # the tuned design passes (docs/requirements.md)
 
 
 def test_stability_without_a_file_agrees_with_run_and_the_baseline_is_analysed_when_named(tmp_path: Path):

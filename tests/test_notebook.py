@@ -33,7 +33,7 @@ def test_the_tutorial_runs_and_shows_the_verdict_a_campbell_diagram_a_sweep_and_
     shown = [o for c in nb.cells if c.cell_type == "code" for o in _outputs(c)]
     html = [o["data"]["text/html"] for o in shown if "text/html" in o["data"]]
     # the edited design passes: the verdict table with its headline, then the sweep, where K_d = 0 fails
-    assert any("verdict: PASS — 9 checks pass" in h and "<table>" in h for h in html)
+    assert any("verdict: PASS — 13 checks pass" in h and "<table>" in h for h in html)
     assert any("FAIL" in h and "K_d [N s/m]" in h for h in html)
     assert any("Table 3.1 baseline: FAIL" in h for h in html)  # the comparison's headline
     assert sum("image/png" in o["data"] for o in shown) == 1  # the Campbell diagram

@@ -74,7 +74,9 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
         note = f"worst of {len(evaluated)} points: {name}" + (f"; {worst.note}" if worst.note else "")
         if skipped:
             note += f"; not evaluated at {', '.join(skipped)}"
-        combined.append(replace(worst, location={"point": name, **dict(worst.location)}, findings=findings, note=note))
+        # (a check passed without a number, e.g. no phase crossover anywhere, has no worst point)
+        location = {"point": name, **dict(worst.location)} if worst.value is not None else dict(worst.location)
+        combined.append(replace(worst, location=location, findings=findings, note=note))
     return Verdict(tuple(combined))
 
 

@@ -342,9 +342,7 @@ def _loops(p: PointAnalyses) -> dict:
     out = []
     for loop in p.bearing_loops:
         m = loop.margins
-        crossing = None
-        if np.isfinite(m.phase_margin_deg) and m.gain_crossovers:
-            crossing = None  # the crossover of the smallest margin is not kept by LoopMargins
+        crossing = None if m.phase_margin_frequency is None else 2.0 * np.pi * m.phase_margin_frequency
         out.append(
             LoopEvidence(
                 loop.actuator,
