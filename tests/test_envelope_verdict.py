@@ -24,7 +24,7 @@ import math
 import pytest
 
 from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
-from flexshaft.design import design_from_dict, tuned_design, with_overrides
+from flexshaft.design import DesignError, baseline_design, design_from_dict, tuned_design, with_overrides
 from flexshaft.resolution import SCREENING
 from flexshaft.verdict.assess import assess
 from flexshaft.verdict.checks import evaluate
@@ -159,3 +159,33 @@ def test_a_poor_loop_is_flagged_by_its_sensitivity_peak():
     assert a.verdict.check("loop_phase_margin").status == "fail"
     for loop in a.point(check.location["point"]).evidence.loops:
         assert 2 * math.sin(loop.phase_margin / 2) >= (1 - 1e-6) / loop.peak_sensitivity
+
+
+def test_a_divergent_magnet_fails_the_onset_at_rest_with_its_root():
+    """Was: a divergent stability onset crashed the whirl evidence (``m + 1`` on None). amb_1's
+    negative stiffness 2e7 N/m against its control stiffness k_i K_p = 1e7 N/m: the net bearing
+    stiffness is negative, so the rotor diverges at rest (a real root s > 0)."""
+    data = baseline_design().model_dump()
+    data["bearings"][1]["ks"] = 2.0e7
+    data["envelope"] = None
+    a = assess(design_from_dict(data), SCREENING)
+    onset = a.verdict.check("whirl_onset")
+    assert onset.status == "fail" and onset.value == 0.0
+    assert onset.location["mode"].startswith("divergence")
+    assert a.stability.onset_kind == "divergence" and a.roots.worst_at(0.0).kind == "divergence"
+
+
+def test_a_design_at_rest_gets_a_verdict_or_a_clean_refusal():
+    """Was: a design at rest crashed the actuator evidence (argmax of an empty spin-up). At rest
+    the actuators carry their static offset and force alone; nothing sweeps the criticals or the
+    torsional modes. With the tuned envelope, whose hot-soak point sets a power of 75 kW, the
+    point's design is refused (a power without speed) naming the point."""
+    data = with_overrides(tuned_design(), {"operating.speed_rpm": 0.0, "operating.power": 0.0}).model_dump()
+    data["envelope"] = None
+    a = assess(design_from_dict(data), SCREENING)
+    statuses = {c.key: c.status for c in a.verdict.checks}
+    assert statuses["actuator_orbit"] == "pass" and statuses["torsional_separation"] == "not evaluated"
+    (ev, *_) = a.evidence.actuators
+    assert ev.peak_orbit == 0.0 and ev.static_offset > 0.0
+    with pytest.raises(DesignError, match=r"envelope\.points\[3\] \(hot_soak_start\): operating\.power: must be 0"):
+        assess(with_overrides(tuned_design(), {"operating.speed_rpm": 0.0, "operating.power": 0.0}), SCREENING)

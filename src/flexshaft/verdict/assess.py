@@ -174,7 +174,13 @@ def assess(
             conditions = point_conditions(design, point)
         except ValueError as exc:  # a material temperature outside a lamina's table
             raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
-        at_point = design_at_point(design, point, conditions)
+        try:
+            at_point = design_at_point(design, point, conditions)
+        except DesignError as exc:  # the design at the point breaks the schema (e.g. power without speed)
+            raise DesignError(
+                [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
+                "<envelope>",
+            ) from None
         analyses = analyse_point(
             at_point, resolution, conditions=conditions, detail=False, executor=executor, progress=step
         )

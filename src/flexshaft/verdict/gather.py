@@ -69,6 +69,8 @@ def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     for k in range(m.eigenvalues.size):
         if m.kind[k] != "lateral" or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE:
             continue
+        if m.eigenvalues[k].imag <= 0:  # a divergent real root is no vibration: the onset check fails it
+            continue
         label = f"{k + 1} ({m.whirl[k]}, {m.component[k]})"
         out.append(ModeDamping(label, float(abs(m.eigenvalues[k].imag)), float(m.log_decrements[k])))
     return tuple(out)
