@@ -61,6 +61,7 @@ def test_a_design_file_is_named_by_its_path(name: str, tmp_path: Path):
     assert result.stdout.startswith("design: Thesis Table 3.1 configuration")
 
 
+@pytest.mark.slow(reason="a full run of the tuned design at its four envelope points (~6 s of CPU)")
 def test_run_names_the_design_then_the_verdict(tmp_path: Path):
     result = runner.invoke(app, ["run", "--studies", "none", "--out", str(tmp_path / "out")])
     assert result.exit_code == 0, result.output
