@@ -182,7 +182,8 @@ def optimize(
         source = design_source(None, str(design))  # an embedded design by name
     else:
         source = design_source(design)
-    typer.echo(plain(design_heading(base.name, source)))
+    if not as_json:  # JSON mode prints the JSON document only
+        typer.echo(plain(design_heading(base.name, source)))
     refs = {}
     for item in reference or []:
         refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)
