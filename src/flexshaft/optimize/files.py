@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.design import load_design
+from flexshaft.files import atomic_write_text
 from flexshaft.resolution import REPORT
 from flexshaft.sweep import Output, Study, Variable, run_sweep
 from flexshaft.verdict.assess import assess
@@ -92,7 +93,7 @@ def design_toml(design, comments: Sequence[str] = ()) -> str:
 def write_design_file(design, path: str | Path, comments: Sequence[str] = ()) -> Path:
     """Write ``design`` to ``path`` and check that the file loads back to the same design."""
     path = Path(path)
-    path.write_text(design_toml(design, comments), encoding="utf-8")
+    atomic_write_text(path, design_toml(design, comments))
     loaded = load_design(path)
     if json.loads(loaded.model_dump_json()) != json.loads(design.model_dump_json()):
         raise RuntimeError(f"{path}: the written design file does not load back to the same design")
