@@ -105,11 +105,18 @@ def optimize(
         show_default=False,
     ),
     budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
-    out: Path = typer.Option(
-        Path("flexshaft-optimize"),
+    out: Path | None = typer.Option(
+        None,
         "--out",
         "-o",
-        help="Run folder: every evaluation is kept there; run again to resume or extend.",
+        help="Run folder: every evaluation is kept there; run again to resume or extend (a rerun of an edited "
+        "design file starts afresh). Default: DESIGN-optimize (flexshaft-optimize for the embedded design).",
+        show_default=False,
+    ),
+    force: bool = typer.Option(
+        False,
+        "--force",
+        help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design.",
     ),
     jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
     dask: str | None = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
@@ -147,11 +154,20 @@ def optimize(
 ) -> None:
     """Search the designs that pass every requirement for the best trade-off of the objectives
     (NSGA-II from pymoo: pip install the 'optimize' extra of flexshaft)."""
+    from flexshaft.cli.output import default_output_folder, design_source, prepare_output_folder
+    from flexshaft.design import EMBEDDED_DESIGNS, DesignError, with_overrides
     from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.sweep import SweepError
 
     base = _load_design(design, "baseline")
+    embedded = design is None or (not design.exists() and str(design) in EMBEDDED_DESIGNS)
+    fixed = dict(_parse_set(s) for s in set_value or [])
+    if fixed:
+        try:  # every candidate carries them: refuse a bad one here, not as a search without a feasible design
+            with_overrides(base, fixed)
+        except DesignError as exc:
+            _fail(f"--set: the overrides {', '.join(set_value or [])} do not make a valid design:\n{exc}")
     refs = {}
     for item in reference or []:
         refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)
@@ -173,12 +189,22 @@ def optimize(
             constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])),
             layup=template,
             ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
-            fixed=dict(_parse_set(s) for s in set_value or []),
+            fixed=fixed,
             fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}",
         )
         from flexshaft.optimize.nsga import optimize as run_optimization
 
+        name = str(design) if embedded and design is not None else "baseline"
+        out = prepare_output_folder(
+            default_output_folder(None if embedded else design, "optimize", name if design else "flexshaft")
+            if out is None
+            else out,
+            base,
+            "optimize",
+            force=force,
+            source=design_source(None if embedded else design, name),
+        )
         result = run_optimization(
             problem,
             budget,

@@ -11,7 +11,7 @@ import typer
 
 from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, guarded, load_design_argument, print_json
 from flexshaft.cli.options import ForceOption, JsonOption, Studies
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, design_source, prepare_output_folder
 from flexshaft.cli.progress import StageProgress
 
 __all__ = ["run"]
@@ -41,14 +41,17 @@ def run(
         ),
     ] = None,
     out: Annotated[
-        Path,
+        Path | None,
         typer.Option(
             "--out",
             "-o",
             help="Results folder: report.html, figures, results.json, timings.json (created if "
-            "missing; refused if it holds other files, see --force).",
+            "missing; a rerun of the same design file replaces its results; refused if it holds other "
+            "files, see --force). Default: DESIGN-results (the design file's name without .toml), "
+            "flexshaft-results for the embedded design.",
+            show_default=False,
         ),
-    ] = Path("flexshaft-results"),
+    ] = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
     studies: Annotated[
@@ -70,7 +73,6 @@ def run(
     from flexshaft.design import DEFAULT_DESIGN
 
     loaded = load_design_argument(design, DEFAULT_DESIGN)
-    folder = prepare_output_folder(out, loaded.design, "run", force=force)
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES
@@ -81,8 +83,19 @@ def run(
     from flexshaft.verdict.assess import assess
 
     with_studies = studies is not Studies.none
+    if with_studies and not loaded.design.operating.speed_rpm > 0:
+        # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
+        typer.echo("note: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0): skipped", err=True)
+        with_studies = False
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
+    folder = prepare_output_folder(
+        default_output_folder(design, "results") if out is None else out,
+        loaded.design,
+        "run",
+        force=force,
+        source=design_source(design, DEFAULT_DESIGN),
+    )
     if with_studies:
         # xarray once, here, before the workers fork: both workers and this process need it
         # (the studies' results are Datasets). Its import and its first Dataset, which loads

@@ -16,7 +16,7 @@ import typer
 
 from flexshaft.cli.common import LoadedDesign, check_finite, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, design_source, prepare_output_folder
 
 __all__ = ["study_app"]
 
@@ -30,11 +30,13 @@ study_app = typer.Typer(
 )
 
 OutOption = Annotated[
-    Path,
+    Path | None,
     typer.Option(
         "--out",
         "-o",
-        help="Run folder: chunks, manifest, results.nc and figures; re-run to resume. Default: flexshaft-study-NAME.",
+        help="Run folder: chunks, manifest, results.nc and figures; re-run to resume (a rerun of an edited "
+        "design file starts afresh). Default: DESIGN-study-NAME (flexshaft-study-NAME for the embedded design).",
+        show_default=False,
     ),
 ]
 
@@ -44,9 +46,14 @@ def _show_progress(as_json: bool) -> bool:
     return not as_json and sys.stdout.isatty() and sys.stderr.isatty()
 
 
-def _prepare(design: Path | None, out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
+def _prepare(
+    design: Path | None, out: Path | None, name: str, force: bool, folder_suffix: str | None = None
+) -> tuple[LoadedDesign, Path]:
     loaded = load_design_argument(design)
-    return loaded, prepare_output_folder(out, loaded.design, f"study {name}", force=force)
+    folder = default_output_folder(design, folder_suffix or f"study-{name}") if out is None else out
+    return loaded, prepare_output_folder(
+        folder, loaded.design, f"study {name}", force=force, source=design_source(design, "baseline")
+    )
 
 
 def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, dask: str | None, as_json: bool, **kw):
@@ -99,7 +106,7 @@ def _report(
 def ply_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=0.5, max=45.0, help="Angle step [deg].")] = 5.0,
-    out: OutOption = Path("flexshaft-study-ply-angle"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -136,7 +143,7 @@ def ply_angle(
 def two_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=1.0, max=45.0, help="Angle step [deg].")] = 15.0,
-    out: OutOption = Path("flexshaft-study-two-angle"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -185,7 +192,7 @@ def _largest_safety_factor(sf, where) -> str:
 @guarded
 def wall(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-wall"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -229,7 +236,7 @@ def wall(
 @guarded
 def gain(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-gain"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -252,7 +259,7 @@ def gain(
 @guarded
 def buckling(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-buckling"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -282,7 +289,7 @@ def spinup_map(
     design: DesignArgument = None,
     n_gains: Annotated[int, typer.Option("--n-gains", min=2, max=400, help="Gains per axis (K_p and K_d).")] = 30,
     n_speeds: Annotated[int, typer.Option("--n-speeds", min=10, max=20000, help="Spin-up speeds.")] = 400,
-    out: OutOption = Path("flexshaft-study-spinup-map"),
+    out: OutOption = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -343,8 +350,15 @@ def all_studies(
         ),
     ] = Resolution.report,
     out: Annotated[
-        Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and report.html.")
-    ] = Path("flexshaft-studies"),
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for figures, netCDF, design_studies.json and report.html. Default: DESIGN-studies "
+            "(flexshaft-studies for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     gap: Annotated[
@@ -354,7 +368,7 @@ def all_studies(
 ) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     check_finite("--gap", gap, 1e-9)
-    loaded, folder = _prepare(design, out, "all", force)
+    loaded, folder = _prepare(design, out, "all", force, "studies")
     from flexshaft.cli.progress import StageProgress
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.report.html import write_report

@@ -11,7 +11,7 @@ import typer
 
 from flexshaft.cli.common import check_finite, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, design_source, prepare_output_folder
 
 __all__ = ["montecarlo", "runup"]
 
@@ -35,9 +35,15 @@ def runup(
         ),
     ] = None,
     dwell: Annotated[float, typer.Option("--dwell", help="Time held at the end speed [s].")] = 0.0,
-    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for runup.nc and runup.png.")] = Path(
-        "flexshaft-runup"
-    ),
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for runup.nc and runup.png. Default: DESIGN-runup (flexshaft-runup for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -50,7 +56,13 @@ def runup(
     check_finite("--stop-rpm", stop_rpm, 0.0, 1e6)
     check_finite("--dwell", dwell, 0.0, 3600.0)
     loaded = load_design_argument(design)
-    folder = prepare_output_folder(out, loaded.design, "runup", force=force)
+    folder = prepare_output_folder(
+        default_output_folder(design, "runup") if out is None else out,
+        loaded.design,
+        "runup",
+        force=force,
+        source=design_source(design, "baseline"),
+    )
     from flexshaft.analyses.transient import run_up, steady_state_envelope
     from flexshaft.assembly import build_model
     from flexshaft.plot.driveline import save_figure
@@ -146,8 +158,15 @@ def montecarlo(
         ),
     ] = None,
     out: Annotated[
-        Path, typer.Option("--out", "-o", help="Folder for samples.nc and montecarlo.png (resumable).")
-    ] = Path("flexshaft-montecarlo"),
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for samples.nc and montecarlo.png (resumable). Default: DESIGN-montecarlo "
+            "(flexshaft-montecarlo for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -162,7 +181,13 @@ def montecarlo(
     check_finite("--gap-mm", gap_mm, 1e-6, 1e3)
     check_finite("--force-limit", force_limit, 1e-6, 1e9)
     loaded = load_design_argument(design)
-    folder = prepare_output_folder(out, loaded.design, "montecarlo", force=force)
+    folder = prepare_output_folder(
+        default_output_folder(design, "montecarlo") if out is None else out,
+        loaded.design,
+        "montecarlo",
+        force=force,
+        source=design_source(design, "baseline"),
+    )
     from flexshaft.montecarlo.steady import run_montecarlo
     from flexshaft.plot.driveline import save_figure
     from flexshaft.units import m_to_mm, mm_to_m
@@ -180,7 +205,9 @@ def montecarlo(
         progress=not as_json,
     )
     gap, capacity = result.gap, result.force_limit
-    result.dataset.to_netcdf(folder / "samples.nc")
+    from flexshaft.netcdf import write_netcdf
+
+    write_netcdf(result.dataset, folder / "samples.nc")
     save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset
     summary = {
