@@ -22,7 +22,14 @@ import numpy as np
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, newton, reduce, refine_set
-from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
+from flexshaft.analyses.guards import (
+    RefusedInputError,
+    check_count,
+    check_finite_array,
+    check_model,
+    check_spin_speeds,
+    require_finite,
+)
 from flexshaft.analyses.results import ResultMixin
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
@@ -212,10 +219,10 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
 def _match(red, solve, speed, prev, n_modes, refine_loss):
     """All candidates at ``speed`` matched to the previous curves, then refined."""
     lam, Y = solve(speed)
-    if lam.size < n_modes:
-        raise ValueError(
+    if lam.size < n_modes:  # the model has fewer modes than asked for: the request's limit, not a fault
+        raise RefusedInputError(
             f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
-            "ask for fewer modes or a larger basis"
+            "ask for fewer modes or a larger basis (a finer mesh has more modes)"
         )
     if prev is None:
         idx = np.arange(n_modes)

@@ -36,6 +36,7 @@ __all__ = [
     "UserError",
     "at_command_end",
     "check_finite",
+    "dask_client",
     "default_design",
     "design_fingerprint",
     "fail",
@@ -45,6 +46,7 @@ __all__ = [
     "load_design_argument",
     "plain",
     "print_json",
+    "refused_by_analyses",
     "settings",
 ]
 
@@ -346,15 +348,27 @@ def check_finite(
     return value
 
 
+def dask_client(address: str | None) -> Any:
+    """The Dask client of ``--dask ADDRESS`` (None without one): the address checked and the
+    scheduler connected with a short timeout before anything is computed
+    (:func:`flexshaft.sweep.dask.connect`, a user error naming ``--dask``); closed when the
+    command ends."""
+    if address is None:
+        return None
+    from flexshaft.sweep.dask import connect
+
+    client = connect(address, name="--dask")
+    at_command_end(lambda completed: client.close())
+    return client
+
+
 @dataclass(frozen=True)
 class LoadedDesign:
-    """A validated design, the text it was read from (for the report) and where it came from
-    (``source`` as shown to the user; ``path`` the file, None for an embedded design)."""
+    """A validated design, the text it was read from (for the report) and where it came from."""
 
     design: Any  # flexshaft.design.Design
     text: str | None
     source: str
-    path: Path | None = None
 
 
 def default_design(name: str = "baseline") -> LoadedDesign:
@@ -423,7 +437,28 @@ def load_design_argument(path: Path | None, default: str = "baseline") -> Loaded
             text = file.read(MAX_DESIGN_BYTES + 1).decode("utf-8-sig")
     except (OSError, UnicodeDecodeError):  # it validated a moment ago; report without the text
         text = None
-    return LoadedDesign(design, text, os.fsdecode(path), Path(path))
+    return LoadedDesign(design, text, os.fsdecode(path))
+
+
+def refused_by_analyses(loaded: LoadedDesign) -> None:
+    """Raise the :class:`~flexshaft.design.DesignError` of what the analyses refuse in a
+    schema-valid design (:func:`flexshaft.analyses.preflight.model_guards`, then
+    :func:`flexshaft.thermal.preflight.thermal_guards`), each problem naming its fields; return
+    when every analysis can run. About 0.2 s on the baseline."""
+    import warnings
+
+    from flexshaft.analyses.preflight import model_guards
+    from flexshaft.design import DesignError
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # a size warning or an ill-conditioned solve is no refusal
+        problems = model_guards(loaded.design)
+        if not problems:
+            from flexshaft.thermal.preflight import thermal_guards
+
+            problems = thermal_guards(loaded.design)
+    if problems:
+        raise DesignError(problems, loaded.source)
 
 
 def design_fingerprint(design: Any) -> str:

@@ -94,6 +94,11 @@ def compare(
     current segmented aluminium driveline (about 11 s on 2 cores)."""
     loaded = [load_design_argument(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     labels = _labels((design_a, design_b))
+    from flexshaft.assembly.size import check_problem_size
+    from flexshaft.resolution import REPORT
+
+    for each in loaded:  # both assessments bounded before the folder is touched
+        check_problem_size(each.design, "assess", REPORT)
     sources = [design_source(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     folder = prepare_output_folder(
         _default_folder((design_a, design_b)) if out is None else out,

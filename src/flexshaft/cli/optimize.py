@@ -15,7 +15,7 @@ from pathlib import Path
 
 import typer
 
-from flexshaft.cli.common import fail, guarded, plain
+from flexshaft.cli.common import dask_client, fail, guarded, plain
 
 
 class Fidelity(str, Enum):
@@ -104,7 +104,13 @@ def optimize(
         help="Base design file (TOML). Default: the embedded Table 3.1 baseline (`flexshaft baseline`).",
         show_default=False,
     ),
-    budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
+    budget: int = typer.Option(
+        ...,
+        "--budget",
+        "-n",
+        min=1,
+        help="Design evaluations the search may use (refused with the numbers when estimated above 4 h per worker).",
+    ),
     out: Path | None = typer.Option(
         None,
         "--out",
@@ -161,6 +167,7 @@ def optimize(
     from flexshaft.sweep import SweepError
 
     base = _load_design(design, "baseline")
+    client = dask_client(dask)  # checked and connected before anything is prepared
     embedded = design is None or (not design.exists() and str(design) in EMBEDDED_DESIGNS)
     fixed = dict(_parse_set(s) for s in set_value or [])
     if fixed:
@@ -193,8 +200,10 @@ def optimize(
             fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}",
         )
+        from flexshaft.cli.bounds import check_optimize, workers_of
         from flexshaft.optimize.nsga import optimize as run_optimization
 
+        check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client))
         name = str(design) if embedded and design is not None else "baseline"
         out = prepare_output_folder(
             default_output_folder(None if embedded else design, "optimize", name if design else "flexshaft")
@@ -212,17 +221,17 @@ def optimize(
             pop_size=pop_size,
             seed=seed,
             jobs=jobs,
-            client=dask,
+            client=client,
             references=refs,
             base_label=_base_label(design),
             progress=lambda line: typer.echo(plain(line), err=True),
         )  # stdout: results
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
-    _report(result, out, designs, verify, jobs, dask)
+    _report(result, out, designs, verify, jobs, client)
 
 
-def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: str | None) -> None:
+def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client) -> None:
     from flexshaft.plot.driveline import save_figure
 
     paths = result.save(out)
@@ -239,7 +248,7 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
     files = result.write_designs(out / "designs", max_designs)
     failed = []
     if verify:
-        ds = result.verify(files, jobs=jobs, client=dask)
+        ds = result.verify(files, jobs=jobs, client=client)
         failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
     result.save(out)
     _print_table(result)
