@@ -216,6 +216,23 @@ def test_a_corrupt_evaluation_log_is_skipped_with_a_warning(tmp_path: Path) -> N
         assert set(EvaluationCache(log).records) == {"k1", "k2"}
 
 
+def test_a_resumed_optimize_on_a_corrupt_log_computes_again(tmp_path: Path) -> None:
+    """The reproducer itself: a run folder whose evaluations.jsonl is 4096 random bytes."""
+    pytest.importorskip("pymoo")
+    design = variant(tmp_path, "tuned", coarse)
+    out = tmp_path / "run"
+    args = ["optimize", str(design), "--budget", "2", "--fidelity", "screening", "--no-verify", "--out", str(out)]
+    first = runner.invoke(app, args)
+    assert first.exit_code in (0, 3), first.output
+    (out / "evaluations.jsonl").write_bytes(np.random.default_rng(1).bytes(4096))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        again = runner.invoke(app, args)
+    assert again.exit_code == first.exit_code, again.output
+    assert "(2 computed)" in again.output  # both evaluated afresh
+    assert any("damaged evaluation record" in str(w.message) for w in caught)
+
+
 # ------------------------------------------------------------------------------------------------
 # check runs the analyses' guards (deferred item 2 of stage 1)
 

@@ -234,3 +234,24 @@ def test_a_full_disk_names_the_file_and_leaves_no_complete_looking_folder(tmp_pa
     assert _marker(out)["complete"] is False
     assert not (out / "ply_angle.png").exists()  # no half file
     assert not [p.name for p in out.iterdir() if p.name.startswith(".tmp-")]
+
+
+def test_a_folder_marked_by_an_earlier_flexshaft_is_kept(tmp_path: Path) -> None:
+    """A marker without ``entries`` and ``design_source`` (written before this change): the same
+    design updates the folder; another one is refused, and with --force nothing is removed
+    (there is no list of what the earlier run wrote; the user's notes must not go)."""
+    design = _design(tmp_path)
+    other = _design(tmp_path, "other.toml", SMALL.replace("wall_thickness = 0.003", "wall_thickness = 0.0035", 1))
+    out = tmp_path / "out"
+    assert runner.invoke(app, [*PLY, str(design), "--out", str(out)]).exit_code == 0
+    legacy = {k: v for k, v in _marker(out).items() if k not in ("entries", "design_source", "complete")}
+    (out / MARKER).write_text(json.dumps(legacy), encoding="utf-8")
+    (out / "notes.txt").write_text("mine")
+    assert runner.invoke(app, [*PLY, str(design), "--out", str(out)]).exit_code == 0
+    (out / MARKER).write_text(json.dumps(legacy), encoding="utf-8")
+    refused = runner.invoke(app, [*PLY, str(other), "--out", str(out)])
+    assert refused.exit_code == 2 and "source not recorded" in refused.stderr
+    forced = runner.invoke(app, [*PLY, str(other), "--out", str(out), "--force"])
+    # nothing removed: the sweep then finds the other study's chunks and says so (as before)
+    assert forced.exit_code == 2 and "holds a different study" in forced.stderr, forced.output
+    assert (out / "notes.txt").read_text() == "mine" and (out / "chunks").is_dir()

@@ -199,10 +199,10 @@ def prepare_output_folder(
             listed = marker.get("entries")
             if isinstance(listed, list) and all(isinstance(n, str) for n in listed):
                 previous = [n for n in listed if n in entries]
-            else:  # a marker of an earlier flexshaft: everything in the folder is its
+                if marker.get("command") == command and not same_values:
+                    replace = previous  # results of another version of the design (same file, or --force)
+            else:  # a marker of an earlier flexshaft, without its list: nothing is removed
                 previous = [n for n in entries if n != MARKER]
-            if marker.get("command") == command and not same_values:
-                replace = previous  # results of another version of the design (same file, or --force)
         _remove_links(folder)
         if marker is not None:
             for name in _entries(folder, option):
