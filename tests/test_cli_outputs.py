@@ -168,9 +168,12 @@ def test_force_writes_into_a_foreign_folder_and_another_designs_folder(tmp_path:
     assert again.exit_code == 0, again.output
     refused = runner.invoke(app, [*study, str(other)])
     assert refused.exit_code == 2
+    # the two designs told apart by title, file and fingerprint
     assert (
-        "another design ('Thesis Table 3.1 configuration: one-piece" in refused.stderr
+        "another design: 'Thesis Table 3.1 configuration: one-piece" in refused.stderr
+        and f"(from {design.resolve()}, fingerprint " in refused.stderr
         and "not 'Another design" in refused.stderr
+        and f"(from {other.resolve()}, fingerprint " in refused.stderr
     )
 
 

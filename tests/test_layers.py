@@ -4,7 +4,7 @@ Layers, bottom to top (a module may import only from its own layer or below; see
 docs/architecture.md):
 
     0  units, resolution (grid sizes of the recipe), parallel (pools, BLAS threads, tasks),
-       netcdf, plot (figures from plain arrays; matplotlib loaded lazily)
+       netcdf, files (atomic writes), plot (figures from plain arrays; matplotlib loaded lazily)
     1  design (schema and I/O: a data leaf)
     2  laminate, strength, buckling, elements (physics on plain numbers)
     3  assembly
@@ -36,6 +36,7 @@ LAYERS = {
     "resolution": 0,
     "parallel": 0,
     "netcdf": 0,
+    "files": 0,
     "plot": 0,
     "design": 1,
     "laminate": 2,

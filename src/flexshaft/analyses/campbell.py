@@ -22,7 +22,14 @@ import numpy as np
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce
-from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
+from flexshaft.analyses.guards import (
+    RefusedInputError,
+    check_count,
+    check_finite_array,
+    check_model,
+    check_spin_speeds,
+    require_finite,
+)
 from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
@@ -257,10 +264,10 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
     stable of its consistent roots where a fold near the synchronous line has two
     (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`)."""
     lam, Y = solve(speed)
-    if lam.size < n_modes:
-        raise ValueError(
+    if lam.size < n_modes:  # the model has fewer modes than asked for: the request's limit, not a fault
+        raise RefusedInputError(
             f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
-            "ask for fewer modes or a larger basis"
+            "ask for fewer modes or a larger basis (a finer mesh has more modes)"
         )
     if prev is None:
         idx = lowest_modes(lam, n_modes)

@@ -12,7 +12,8 @@ frequencies ω_j + Ω.
 
 Integrator: exponential time differencing (ETDRK4, Cox & Matthews 2002) in the eigenbasis of
 ``J(Ω_ref)`` at a reference speed. Writing ``Ẑ = S Z`` (S scales the modal displacements by
-ω_j and balances the controller states, so the basis is well conditioned) and ``Ẑ = V w`` with ``S J(Ω_ref) S⁻¹ = V Λ V⁻¹``,
+ω_j and balances the controller states, so the basis is well conditioned) and ``Ẑ = V w``
+with ``S J(Ω_ref) S⁻¹ = V Λ V⁻¹``,
 
     ẇ = Λ w + N(w, t),   N = V⁻¹ S [(J(Ω) − J(Ω_ref)) Z + b (Ω² − iΩ̇)],
 
@@ -22,8 +23,14 @@ forcing, the drift of the gyroscopic and loss terms and the frame rotation −i(
 the reference. The reference is refreshed (one dense eigen-decomposition) when the speed has
 moved by :data:`REFRESH_SPEED_FRACTION` of the largest speed. The step is controlled by step
 doubling (one step h against two of h/2; the difference over 2⁴ − 1 estimates the local error
-in the energy norm ‖Ẑ‖, held below ``rtol`` times the largest state so far). Outputs between
-steps come from the exact exponential of Λ plus a second-order interpolation of N.
+in the energy norm ‖Ẑ‖, held below ``rtol`` times the largest state so far; an error of
+exactly zero, a zero load, doubles the step). Outputs between steps come from the exact
+exponential of Λ plus a second-order interpolation of N.
+
+Refusals, so that a run ends with a result or a message and never runs on for hours or returns
+an absurd number: more than :data:`MAX_STEPS` steps; a free whirl that grows more than
+:data:`MAX_GROWTH`-fold over the run (``∫ max(0, max Re λ(Ω_ref)) dt``, the system unstable
+at the run's speeds: the envelope would show the instability, not the imbalance response).
 
 References
 ----------
@@ -34,6 +41,7 @@ Hochbruck, M., Ostermann, A. (2010). Exponential integrators. Acta Numerica 19, 
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from math import factorial
@@ -42,13 +50,32 @@ import numpy as np
 import scipy.linalg as la
 
 from flexshaft.analyses.eigen import ReducedModel
-from flexshaft.analyses.guards import UnstableResponseError
+from flexshaft.analyses.guards import RefusedInputError, UnstableResponseError
 from flexshaft.assembly.model import Model
 
-__all__ = ["REFRESH_SPEED_FRACTION", "EnvelopeSystem", "EnvelopeRun", "integrate_envelope", "phi_functions"]
+__all__ = [
+    "ETD_STABLE_STEP",
+    "MAX_GROWTH",
+    "MAX_STEPS",
+    "REFRESH_SPEED_FRACTION",
+    "EnvelopeRun",
+    "EnvelopeSystem",
+    "integrate_envelope",
+    "phi_functions",
+]
 
 #: The eigenbasis is refreshed when Ω has moved by this fraction of the largest speed.
 REFRESH_SPEED_FRACTION = 0.02
+#: Most integration steps (accepted and rejected) of one run: about 2 ms each on the embedded
+#: drivelines (35-70 envelope states), so a run is refused rather than computed for minutes.
+MAX_STEPS = 100_000
+#: h·|rate| up to which ETDRK4 integrates an oscillatory remainder stably (its stability region
+#: reaches about 2.8 along the imaginary axis, Cox & Matthews 2002, fig. 1).
+ETD_STABLE_STEP = 2.8
+#: Largest growth of a free whirl over a run, exp(∫ max(0, growth rate) dt): beyond it the
+#: envelope shows the instability, not the imbalance response, and the run is refused
+#: (a short run-up of a controller with K_i = 1e15 returned 4e97 m).
+MAX_GROWTH = 1e3
 _SERIES_BELOW = 0.25  # |z| below which φ_k use their Taylor series (12 terms: 0.25¹²/12! ≈ 1e-16)
 _SERIES_TERMS = 12
 _INVERSE_FACTORIALS = np.array([1.0 / factorial(m) for m in range(_SERIES_TERMS + 4)])
@@ -165,6 +192,14 @@ class EnvelopeSystem:
         """Envelope of the steady synchronous response at constant Ω (n,)."""
         return la.solve(self.matrix(speed), -self.b * speed * speed)
 
+    def drift_rate(self, max_speed: float) -> float:
+        """Largest rate [1/s] of the speed-dependent remainder the integrator treats explicitly:
+        the gyroscopic drift ``(Ω − Ω_ref) G̃`` between two refreshes of the eigenbasis, with
+        |Ω − Ω_ref| up to :data:`REFRESH_SPEED_FRACTION` × the largest speed. A step must keep
+        ``h × rate`` below :data:`ETD_STABLE_STEP`."""
+        gyroscopic = float(np.linalg.norm(self.gyroscopic, 2)) if self.gyroscopic.size else 0.0
+        return REFRESH_SPEED_FRACTION * max(max_speed, 1.0) * gyroscopic
+
     def norm(self, Z: np.ndarray) -> float:
         """Energy-like norm ``‖S Z‖ = √(Σ ω_j²|Y_j|² + |V_j|² + Σ s_x²|x|²)`` (s_x: the
         controller states' balancing scale)."""
@@ -235,6 +270,14 @@ def integrate_envelope(
         Largest step [s].
     max_speed : float, optional
         Largest speed of the run [rad/s] (sets the refresh interval).
+
+    Raises
+    ------
+    RefusedInputError
+        When the run needs more than :data:`MAX_STEPS` steps.
+    UnstableResponseError
+        When a free whirl grows by more than :data:`MAX_GROWTH` over the run (the system is
+        unstable at its speeds), or the response overflows.
     """
     duration = float(breakpoints[-1])
     top = max(max_speed if max_speed is not None else max(speed(t) for t in np.linspace(0, duration, 257)), 1.0)
@@ -287,8 +330,12 @@ def integrate_envelope(
 
     basis = _Basis(system, speed(0.0))
     refreshes, max_condition, growth = 1, basis.condition, float(basis.lam.real.max())
+    exponent, growth_limit = 0.0, float(np.log(MAX_GROWTH))  # ∫ max(0, growth rate) dt so far
     w = basis.to_modal(S * z)
-    scale = max(system.norm(z), 1e-3 * system.norm(system.steady_state(top)), 1e-300)
+    with warnings.catch_warnings():  # a scale for the error only: an ill-conditioned solve is good enough
+        warnings.simplefilter("ignore", la.LinAlgWarning)
+        steady = system.steady_state(top)
+    scale = max(system.norm(z), 1e-3 * system.norm(steady) if np.all(np.isfinite(steady)) else 0.0, 1e-300)
     h = _quantise(min(max_step, 0.25 / top))
     t, steps, rejected = 0.0, 0, 0
     for stop in breakpoints[1:]:
@@ -316,7 +363,23 @@ def integrate_envelope(
             tolerance = rtol * max(scale, size)
             if error > tolerance and h <= 1e-9 * duration:
                 raise RuntimeError(f"step size underflow at t = {t:.6g} s (h = {h:.3g} s) for rtol = {rtol:g}")
+            if steps + rejected >= MAX_STEPS:
+                raise RefusedInputError(
+                    f"the run needs more than {MAX_STEPS:,} integration steps (at t = {t:.4g} s of {duration:.4g} s "
+                    f"the step is {h:.3g} s): the speed-dependent terms change faster than the integrator "
+                    "follows; shorten the run or see flexshaft.analyses.envelope"
+                )
             if error <= tolerance:
+                exponent += max(float(basis.lam.real.max()), 0.0) * h
+                if exponent > growth_limit:
+                    raise UnstableResponseError(
+                        f"the system is unstable there: at Ω = {speed(t):.6g} rad/s the growth rate is "
+                        f"{float(basis.lam.real.max()):.3g} 1/s, and by t = {t + h:.4g} s a free whirl has grown "
+                        f"e^{exponent:.3g} = {np.exp(exponent):.3g}-fold (more than {MAX_GROWTH:g}), so the "
+                        "response shows the instability, not the imbalance; the stability analysis (flexshaft "
+                        "stability) shows which mode and which bearing or controller gains make it so; a run "
+                        "that ends below the onset speed, or a shorter one, stays within it"
+                    )
                 for t0, w0, N0 in ((t, w, N_start), (t + 0.5 * h, half, N_half)):
                     k_end = int(np.searchsorted(outputs, t0 + 0.5 * h, side="right"))
                     if k_end > k_out:  # outputs inside this half step: ETDRK4 from its start
@@ -328,7 +391,10 @@ def integrate_envelope(
                 steps += 1
             else:
                 rejected += 1
-            h = _quantise(min(h * min(2.0, max(0.25, 0.9 * (tolerance / max(error, 1e-300)) ** 0.2)), max_step))
+            # an error of exactly 0 (a zero load: the state stays 0) doubles the step; it used to
+            # divide by 1e-300 and shrink the step to nothing, so the run never ended
+            grow = 2.0 if error == 0.0 else min(2.0, max(0.25, 0.9 * (tolerance / error) ** 0.2))
+            h = _quantise(min(h * grow, max_step))
     while k_out < outputs.size:  # round-off at the very end
         states[:, k_out] = (basis.V @ w) / S
         k_out += 1

@@ -74,7 +74,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from flexshaft.analyses.eigen import ReducedModel, modal_basis, reduce
-from flexshaft.analyses.envelope import EnvelopeSystem, integrate_envelope
+from flexshaft.analyses.envelope import ETD_STABLE_STEP, MAX_GROWTH, MAX_STEPS, EnvelopeSystem, integrate_envelope
+from flexshaft.analyses.guards import (
+    RefusedInputError,
+    UnstableResponseError,
+    check_count,
+    check_model,
+    check_spin_speed,
+)
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.speed_profile import SpeedProfile
 from flexshaft.assembly.loads import imbalance_loads
@@ -87,6 +94,7 @@ __all__ = [
     "SteadyEnvelope",
     "TransientResult",
     "default_basis_size",
+    "default_output_step",
     "residual_flexibility",
     "run_up",
     "steady_state_envelope",
@@ -364,15 +372,25 @@ def transient_response(
         16-32 modes on the baseline. The actuators see it through ``C(iΩ)`` (quasi-static).
     """
 
+    check_model(model)
     if not isinstance(profile, SpeedProfile):
         raise TypeError("profile must be a SpeedProfile (SpeedProfile.constant_acceleration, .table or .from_callable)")
     if not (0 < rtol < 1e-2):
-        raise ValueError(f"rtol must be in (0, 0.01), got {rtol!r}")
+        raise RefusedInputError(f"rtol must be in (0, 0.01), got {rtol!r}")
+    for name, value in (("max_step", max_step), ("output_step", output_step)):
+        if value is not None and not (
+            isinstance(value, (int, float, np.floating)) and np.isfinite(value) and value > 0
+        ):
+            raise RefusedInputError(f"{name} must be a finite time > 0 s or None, got {value!r}")
     top = profile.max_speed
+    n_free = model.dofs.free.size
     if reduced is None:
-        nb = default_basis_size(model, top) if basis_size is None else int(basis_size)
-        if nb < 1:
-            raise ValueError(f"basis_size must be >= 1, got {basis_size!r}")
+        if basis_size is None:
+            nb = default_basis_size(model, top)
+        else:
+            nb = check_count(basis_size, "basis_size")
+            if nb > n_free:  # reduce() of more modes than DOFs used to run until memory ran out
+                raise RefusedInputError(f"basis_size must be at most the model's {n_free} free DOFs (got {nb})")
         reduced = reduce(model, nb)
     red = reduced
     Q1 = imbalance_loads(model)[:, 0] if loads_per_speed_squared is None else loads_per_speed_squared
@@ -390,14 +408,20 @@ def transient_response(
             raise ValueError(f"initial state must have {n} values, got shape {z.shape}")
     duration = profile.duration
     if output_step is None:
-        output_step = 1.0 / (OUTPUT_SAMPLES_PER_RADIAN * max(top, 1e-3))
-    if not (np.isfinite(output_step) and output_step > 0):
-        raise ValueError(f"output_step must be > 0 s, got {output_step!r}")
+        output_step = default_output_step(top)
     count = int(np.ceil(duration / output_step)) + 1
     if count > MAX_OUTPUTS:
-        raise ValueError(
+        raise RefusedInputError(
             f"{count} output samples (duration {duration:g} s / output_step {output_step:g} s) exceed "
-            f"{MAX_OUTPUTS}; give a larger output_step"
+            f"{MAX_OUTPUTS}; give a larger output_step or a shorter run"
+        )
+    _refuse_growth_at_constant_speed(system, profile)
+    needed = duration * system.drift_rate(top) / ETD_STABLE_STEP
+    if needed > MAX_STEPS:
+        raise RefusedInputError(
+            f"the run would need about {needed:.3g} integration steps (at most {MAX_STEPS:,}): the gyroscopic "
+            f"coupling changes with the speed at a rate of {system.drift_rate(top):.3g} 1/s"
+            + _gyroscopic_culprit(model)
         )
     T = np.linspace(0.0, duration, count)
     run = integrate_envelope(
@@ -475,6 +499,51 @@ def transient_response(
     )
 
 
+def default_output_step(max_speed: float) -> float:
+    """Output spacing [s] of a run up to ``max_speed`` [rad/s]:
+    :data:`OUTPUT_SAMPLES_PER_RADIAN` samples per radian of the fastest envelope content."""
+    return 1.0 / (OUTPUT_SAMPLES_PER_RADIAN * max(max_speed, 1e-3))
+
+
+def _refuse_growth_at_constant_speed(system: EnvelopeSystem, profile: SpeedProfile) -> None:
+    """Refuse before integrating a run that holds an unstable speed long enough for a free whirl
+    to grow more than :data:`~flexshaft.analyses.envelope.MAX_GROWTH`-fold (the integration
+    would find it only at that time: a 900 s dwell of the baseline at 4800 rpm, growth rate
+    0.0098 1/s, took 30 s to refuse)."""
+    times = profile.breakpoints
+    speeds = profile.speeds_at(times)
+    exponent = 0.0
+    for (t0, t1), (s0, s1) in zip(zip(times[:-1], times[1:]), zip(speeds[:-1], speeds[1:])):
+        if s0 == s1 and t1 > t0:
+            rate = float(np.linalg.eigvals(system.matrix(float(s0))).real.max())
+            exponent += max(rate, 0.0) * (t1 - t0)
+            if exponent > np.log(MAX_GROWTH):
+                raise UnstableResponseError(
+                    f"the system is unstable at Ω = {s0:.6g} rad/s (growth rate {rate:.3g} 1/s): held there "
+                    f"for {t1 - t0:.4g} s a free whirl grows e^{exponent:.3g}-fold (more than {MAX_GROWTH:g}), so "
+                    "the response would show the instability, not the imbalance; a shorter dwell, or a speed "
+                    "below the whirl onset (flexshaft stability), stays within it"
+                )
+
+
+def _gyroscopic_culprit(model: Model) -> str:
+    """Which inertia makes the gyroscopic coupling that fast: a disk or coupling whose polar
+    inertia exceeds twice its diametral one, which no rigid body has (I_p ≤ I_1 + I_2 = 2 I_d)."""
+    worst, text = 2.0, ""
+    design = model.design
+    for table, items in (("disks", design.disks), ("couplings", design.couplings)):
+        for k, item in enumerate(items):
+            ratio = item.polar_inertia / max(item.diametral_inertia, 1e-300)
+            if item.polar_inertia > 0 and ratio > worst:
+                worst = ratio
+                text = (
+                    f"; {table}[{k}].polar_inertia = {item.polar_inertia:g} kg m² is {ratio:.3g} × its "
+                    f"diametral_inertia = {item.diametral_inertia:g} kg m², which no rigid body has "
+                    "(I_p ≤ 2 I_d): check the two inertias"
+                )
+    return text or "; a shorter run, or fewer modes (basis_size), needs fewer steps"
+
+
 def _rows(Phi: np.ndarray, rows: np.ndarray) -> np.ndarray:
     """Basis rows of free DOFs; a constrained DOF (−1) gives a zero row."""
     out = np.zeros((rows.size, Phi.shape[1]))
@@ -489,8 +558,17 @@ def run_up(
     """Constant-acceleration run-up from ``start`` to ``stop`` (default the operating speed)
     [rad/s] in ``duration`` [s], then ``dwell`` [s] at ``stop``; a run-down when stop < start.
     ``options`` go to :func:`transient_response`."""
-    stop = model.speed if stop is None else float(stop)
-    if not (np.isfinite(duration) and duration > 0):
-        raise ValueError(f"duration must be > 0 s, got {duration!r}")
+    check_model(model)
+    start = check_spin_speed(start, "start")
+    stop = model.speed if stop is None else check_spin_speed(stop, "stop")
+    if not (isinstance(duration, (int, float, np.floating)) and np.isfinite(duration) and duration > 0):
+        raise RefusedInputError(f"duration must be a finite time > 0 s, got {duration!r}")
+    if not (isinstance(dwell, (int, float, np.floating)) and np.isfinite(dwell) and dwell >= 0):
+        raise RefusedInputError(f"dwell must be a finite time >= 0 s, got {dwell!r}")
+    if stop == start:
+        raise RefusedInputError(
+            f"start and stop are both {start:g} rad/s: a run-up needs two different speeds"
+            + (" (the design's operating speed is 0: give stop)" if stop == 0.0 else "")
+        )
     profile = SpeedProfile.constant_acceleration(start, stop, (stop - start) / duration, dwell)
     return transient_response(model, profile, **options)

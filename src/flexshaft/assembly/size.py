@@ -58,6 +58,8 @@ __all__ = [
     "ProblemSizeWarning",
     "bearing_bays",
     "check_problem_size",
+    "eigen_seconds",
+    "harmonic_seconds",
     "problem_size",
 ]
 
@@ -95,6 +97,19 @@ _DENSE_BASIS_CUBIC = 5e-10  # dense generalised symmetric eigen-solve, per DOF³
 _SPARSE_BASIS_LINEAR = 1.6e-7  # shift-invert Lanczos, per DOF
 _BANDED_SOLVE = 2e-8  # banded LU, per DOF × half-bandwidth²
 _BANDED_FIXED = 2e-4
+
+
+def eigen_seconds(states: int) -> float:
+    """Estimated time of one first-order eigen-solution of ``states`` states, with its mode
+    tracking [s] (one speed of a Campbell diagram or a whirl-stability analysis)."""
+    return _EIG_FIXED + _EIG_CUBIC * float(states) ** 3
+
+
+def harmonic_seconds(free_dofs: int, boom: bool = True) -> float:
+    """Estimated time of one banded harmonic solve of ``free_dofs`` free DOFs [s] (one speed of
+    a spin-up or frequency response; half-bandwidth 24 with a tailboom, 12 without)."""
+    half_band = 24 if boom else 12
+    return _BANDED_FIXED + _BANDED_SOLVE * free_dofs * half_band**2
 
 
 class ProblemSizeWarning(UserWarning):
@@ -236,8 +251,8 @@ def problem_size(
         memory["modal basis (sparse)"] = 8.0 * free * (6 * half_band + 2 * nb + 2)
         basis_time = _SPARSE_BASIS_LINEAR * free + 0.05
     memory["state matrices"] = 4 * 16.0 * n_states**2
-    speed_time = _EIG_FIXED + _EIG_CUBIC * n_states**3
-    solve_time = _BANDED_FIXED + _BANDED_SOLVE * free * half_band**2
+    speed_time = eigen_seconds(n_states)
+    solve_time = harmonic_seconds(free, bool(boom_x.size))
     n_speeds = campbell_speeds = whirl_speeds = 0
     if analysis == "model":
         time["modal basis"] = basis_time

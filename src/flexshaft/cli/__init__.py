@@ -13,8 +13,9 @@ numbers start at 1 (the Python API counts from 0).
 
 The modules: :mod:`~flexshaft.cli.common` (error boundary, plain text, design loading, JSON),
 :mod:`~flexshaft.cli.options` (choices and shared options), :mod:`~flexshaft.cli.tables`,
-:mod:`~flexshaft.cli.progress`, :mod:`~flexshaft.cli.output` (``--out`` folders), and the
-commands in :mod:`~flexshaft.cli.analysis`, :mod:`~flexshaft.cli.run` and
+:mod:`~flexshaft.cli.progress`, :mod:`~flexshaft.cli.output` (``--out`` folders: one guarded
+path, marker written last), :mod:`~flexshaft.cli.bounds` (each command's work, bounded before
+it computes), and the commands in :mod:`~flexshaft.cli.analysis`, :mod:`~flexshaft.cli.run` and
 :mod:`~flexshaft.cli.study`.
 """
 

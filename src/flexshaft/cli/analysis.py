@@ -13,7 +13,15 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import check_finite, design_fingerprint, guarded, load_design_argument, plain, print_json
+from flexshaft.cli.common import (
+    check_finite,
+    design_fingerprint,
+    guarded,
+    load_design_argument,
+    plain,
+    print_json,
+    refused_by_analyses,
+)
 from flexshaft.cli.options import (
     Convection,
     DampingModel,
@@ -69,6 +77,7 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ProblemSizeWarning)
             check_problem_size(loaded.design, "run")  # refuses what a run would refuse
+        refused_by_analyses(loaded)  # and what the analyses refuse: a design `check` calls ok runs
     except DesignError as exc:
         if as_json:
             print_json(
@@ -116,6 +125,9 @@ def modes(
 
     check_finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM)
     loaded = load_design_argument(design)
+    from flexshaft.cli.bounds import check_modes
+
+    check_modes(loaded.design, n_modes)  # refused with the numbers before computing
     from flexshaft.analyses.summary import modes_at
     from flexshaft.assembly import build_model
     from flexshaft.units import rad_s_to_rpm, rpm_to_rad_s
@@ -144,8 +156,18 @@ def stability(
             "--max-rpm", help="Highest speed analysed [rpm]; default: 1.5 × the operating speed.", show_default=False
         ),
     ] = None,
-    n_speeds: Annotated[int, typer.Option("--n-speeds", min=2, max=2000, help="Number of speeds.")] = 61,
-    n_modes: Annotated[int, typer.Option("--n-modes", min=1, max=100, help="Number of tracked modes.")] = 10,
+    n_speeds: Annotated[
+        int,
+        typer.Option(
+            "--n-speeds",
+            min=2,
+            max=2000,
+            help="Number of speeds (× --n-modes: refused with the numbers when estimated above 10 min).",
+        ),
+    ] = 61,
+    n_modes: Annotated[
+        int, typer.Option("--n-modes", min=1, max=100, help="Number of tracked modes (see --n-speeds).")
+    ] = 10,
     damping_model: Annotated[
         DampingModel,
         typer.Option(
@@ -177,6 +199,9 @@ def stability(
     check_finite("--max-rpm", max_rpm, 1e-9, MAX_SPEED_RPM)
     check_finite("--reference-hz", reference_hz, 1e-9)
     loaded = load_design_argument(design)
+    from flexshaft.cli.bounds import check_stability
+
+    check_stability(loaded.design, n_speeds, n_modes, 4 if compare_thesis else 1)  # before computing
     from flexshaft.analyses.stability import stability as stability_analysis
     from flexshaft.assembly import build_model
     from flexshaft.cli.common import fail

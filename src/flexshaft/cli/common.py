@@ -34,7 +34,9 @@ __all__ = [
     "MAX_DESIGN_BYTES",
     "LoadedDesign",
     "UserError",
+    "at_command_end",
     "check_finite",
+    "dask_client",
     "default_design",
     "design_fingerprint",
     "fail",
@@ -44,6 +46,7 @@ __all__ = [
     "load_design_argument",
     "plain",
     "print_json",
+    "refused_by_analyses",
     "settings",
 ]
 
@@ -141,6 +144,16 @@ def _loaded_class(module: str, name: str) -> type | None:
     return cls if isinstance(cls, type) else None
 
 
+#: The lower layers' refusals of their input (a user error, not a fault): the analyses' and
+#: thermal layers' RefusedInputError (its subclasses: singular systems, non-finite results,
+#: unstable responses), the optimizer's OptimizeError. Each message names the input.
+_REFUSALS = (
+    ("flexshaft.analyses.guards", "RefusedInputError"),
+    ("flexshaft.sweep.study", "SweepError"),
+    ("flexshaft.optimize.variables", "OptimizeError"),
+)
+
+
 def _user_message(exc: BaseException) -> str | None:
     """The message of a user error, or None for an internal fault."""
     if isinstance(exc, UserError):
@@ -149,9 +162,10 @@ def _user_message(exc: BaseException) -> str | None:
     if design_error is not None and isinstance(exc, design_error):
         source = getattr(exc, "source", "")
         return f"invalid design {source}:\n{exc}" if source and source != "<string>" else f"invalid design:\n{exc}"
-    sweep_error = _loaded_class("flexshaft.sweep.study", "SweepError")
-    if sweep_error is not None and isinstance(exc, sweep_error):
-        return str(exc)
+    for module, name in _REFUSALS:
+        refusal = _loaded_class(module, name)
+        if refusal is not None and isinstance(exc, refusal):
+            return str(exc)
     if isinstance(exc, OSError) and exc.errno is not None:
         import errno
 
@@ -211,16 +225,84 @@ def _pass_through() -> tuple[type[BaseException], ...]:
 _PASS_THROUGH = _pass_through()
 
 
+def _exits() -> tuple[type[BaseException], ...]:
+    """The exceptions of a command that ended on purpose with its results written (exit 0, or 3
+    for a failed requirement) and of a reader that went away."""
+    kinds: list[type[BaseException]] = [typer.Exit, BrokenPipeError]
+    try:
+        import click
+    except ImportError:  # pragma: no cover - typer without click
+        return tuple(kinds)
+    return (*kinds, click.exceptions.Exit)
+
+
+_EXITS = _exits()
+
+#: Functions called when the running command ends, with True when it completed (see
+#: :func:`at_command_end`); each invocation calls and drops those it registered.
+_AT_END: list[Callable[[bool], None]] = []
+
+
+def at_command_end(hook: Callable[[bool], None]) -> None:
+    """Call ``hook(completed)`` when the running command ends: ``completed`` is True when it
+    returned or exited on purpose (``typer.Exit``: exit 0, or 3 for a failed requirement), False
+    after an error or Ctrl-C. The output folders write their final marker this way
+    (:mod:`flexshaft.cli.output`), after every other file."""
+    _AT_END.append(hook)
+
+
+def _end_command(mark: int, completed: bool) -> None:
+    hooks = _AT_END[mark:]
+    del _AT_END[mark:]
+    for hook in hooks:
+        if completed:
+            hook(True)
+        else:
+            try:
+                hook(False)
+            except Exception:  # noqa: BLE001 - the command's own error is the one to report
+                pass
+
+
+def _warning_format(original: Callable[..., str]) -> Callable[..., str]:
+    """``warnings.formatwarning`` that prints flexshaft's own warnings (problem size, resonance,
+    sweep) as one plain line ``warning: …`` on stderr, without file and line (the source line
+    means nothing to a user; ``--debug`` keeps the full form)."""
+
+    def format_warning(message, category, filename, lineno, line=None) -> str:
+        if not settings.debug and getattr(category, "__module__", "").startswith("flexshaft"):
+            return plain(f"warning: {message}") + "\n"
+        return original(message, category, filename, lineno, line)
+
+    return format_warning
+
+
 def guarded(func: F) -> F:
     """The error boundary of a command: user error → exit 2, internal fault → exit 4.
 
     ``typer.Exit`` (e.g. exit 3 of ``run --strict``) and click's own usage errors pass through.
+    The hooks of :func:`at_command_end` run when the command ends (the output folder's final
+    marker); flexshaft's warnings print as ``warning: …`` lines.
     """
 
     @functools.wraps(func)
     def boundary(*args: Any, **kwargs: Any) -> Any:
+        import warnings
+
+        mark = len(_AT_END)
+        original_format = warnings.formatwarning
+        warnings.formatwarning = _warning_format(original_format)
         try:
-            return func(*args, **kwargs)
+            try:
+                value = func(*args, **kwargs)
+            except _EXITS:
+                _end_command(mark, True)
+                raise
+            except BaseException:
+                _end_command(mark, False)
+                raise
+            _end_command(mark, True)
+            return value
         except _PASS_THROUGH:
             raise
         except BrokenPipeError:
@@ -235,6 +317,8 @@ def guarded(func: F) -> F:
                 raise typer.Exit(code=EXIT_USER_ERROR) from None
             _internal_error(exc)
             raise typer.Exit(code=EXIT_INTERNAL_ERROR) from None
+        finally:
+            warnings.formatwarning = original_format
 
     boundary.__flexshaft_guarded__ = True  # type: ignore[attr-defined]
     return boundary  # type: ignore[return-value]
@@ -262,6 +346,20 @@ def check_finite(
     if maximum is not None and value > maximum:
         fail(f"{option}: must be <= {maximum:g} (got {value:g})")
     return value
+
+
+def dask_client(address: str | None) -> Any:
+    """The Dask client of ``--dask ADDRESS`` (None without one): the address checked and the
+    scheduler connected with a short timeout before anything is computed
+    (:func:`flexshaft.sweep.dask.connect`, a user error naming ``--dask``); closed when the
+    command ends."""
+    if address is None:
+        return None
+    from flexshaft.sweep.dask import connect
+
+    client = connect(address, name="--dask")
+    at_command_end(lambda completed: client.close())
+    return client
 
 
 @dataclass(frozen=True)
@@ -342,6 +440,27 @@ def load_design_argument(path: Path | None, default: str | None = None) -> Loade
     except (OSError, UnicodeDecodeError):  # it validated a moment ago; report without the text
         text = None
     return LoadedDesign(design, text, os.fsdecode(path))
+
+
+def refused_by_analyses(loaded: LoadedDesign) -> None:
+    """Raise the :class:`~flexshaft.design.DesignError` of what the analyses refuse in a
+    schema-valid design (:func:`flexshaft.analyses.preflight.model_guards`, then
+    :func:`flexshaft.thermal.preflight.thermal_guards`), each problem naming its fields; return
+    when every analysis can run. About 0.2 s on the baseline."""
+    import warnings
+
+    from flexshaft.analyses.preflight import model_guards
+    from flexshaft.design import DesignError
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # a size warning or an ill-conditioned solve is no refusal
+        problems = model_guards(loaded.design)
+        if not problems:
+            from flexshaft.thermal.preflight import thermal_guards
+
+            problems = thermal_guards(loaded.design)
+    if problems:
+        raise DesignError(problems, loaded.source)
 
 
 def design_fingerprint(design: Any) -> str:

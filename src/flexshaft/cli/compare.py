@@ -11,7 +11,7 @@ import typer
 
 from flexshaft.cli.common import guarded, load_design_argument, print_json
 from flexshaft.cli.options import ForceOption, JsonOption
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import marker_source, prepare_output_folder
 from flexshaft.cli.progress import StageProgress
 
 __all__ = ["compare"]
@@ -38,6 +38,14 @@ class _Pair:
 
     def model_dump(self, mode: str = "json") -> dict:
         return {"a": self.a.model_dump(mode=mode), "b": self.b.model_dump(mode=mode)}
+
+
+def _default_folder(paths: tuple[Path | None, Path | None]) -> Path:
+    """``A-vs-B-compare`` from the design files' names; ``flexshaft-compare`` for the embedded pair."""
+    if all(path is None for path in paths):
+        return Path("flexshaft-compare")
+    stems = [default if path is None else (path.stem or "design") for path, default in zip(paths, DEFAULTS)]
+    return Path(f"{stems[0]}-vs-{stems[1]}-compare")
 
 
 def _labels(paths: tuple[Path | None, Path | None]) -> tuple[str, str]:
@@ -67,14 +75,16 @@ def compare(
         ),
     ] = None,
     out: Annotated[
-        Path,
+        Path | None,
         typer.Option(
             "--out",
             "-o",
             help="Results folder: report.html, figures, results.json, comparison.nc (created if "
-            "missing; refused if it holds other files, see --force).",
+            "missing; refused if it holds other files, see --force). Default: A-vs-B-compare (the design "
+            "files' names), flexshaft-compare for the embedded designs.",
+            show_default=False,
         ),
-    ] = Path("flexshaft-compare"),
+    ] = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -84,7 +94,19 @@ def compare(
     current segmented aluminium driveline (about 11 s on 2 cores)."""
     loaded = [load_design_argument(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     labels = _labels((design_a, design_b))
-    folder = prepare_output_folder(out, _Pair(loaded[0].design, loaded[1].design), "compare", force=force)
+    from flexshaft.assembly.size import check_problem_size
+    from flexshaft.resolution import REPORT
+
+    for each in loaded:  # both assessments bounded before the folder is touched
+        check_problem_size(each.design, "assess", REPORT)
+    sources = [marker_source(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
+    folder = prepare_output_folder(
+        _default_folder((design_a, design_b)) if out is None else out,
+        _Pair(loaded[0].design, loaded[1].design),
+        "compare",
+        force=force,
+        source=" | ".join(sources),
+    )
     from flexshaft.comparison import compare as compare_designs
     from flexshaft.report.compare import comparison_json, write_compare_report
 

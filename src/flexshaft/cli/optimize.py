@@ -18,7 +18,7 @@ from pathlib import Path
 
 import typer
 
-from flexshaft.cli.common import fail, guarded, plain, print_json
+from flexshaft.cli.common import dask_client, fail, guarded, plain, print_json
 from flexshaft.cli.options import JsonOption
 
 
@@ -123,12 +123,25 @@ def optimize(
         "for every command.",
         show_default=False,
     ),
-    budget: int = typer.Option(..., "--budget", "-n", min=1, help="Design evaluations the search may use."),
-    out: Path = typer.Option(
-        Path("flexshaft-optimize"),
+    budget: int = typer.Option(
+        ...,
+        "--budget",
+        "-n",
+        min=1,
+        help="Design evaluations the search may use (refused with the numbers when estimated above 4 h per worker).",
+    ),
+    out: Path | None = typer.Option(
+        None,
         "--out",
         "-o",
-        help="Run folder: every evaluation is kept there; run again to resume or extend.",
+        help="Run folder: every evaluation is kept there; run again to resume or extend (a rerun of an edited "
+        "design file starts afresh). Default: DESIGN-optimize (flexshaft-optimize for the embedded design).",
+        show_default=False,
+    ),
+    force: bool = typer.Option(
+        False,
+        "--force",
+        help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design.",
     ),
     jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
     dask: str | None = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
@@ -170,8 +183,9 @@ def optimize(
     """Search the designs that pass every requirement for the best trade-off of the objectives,
     by default the driveline mass against the smallest requirement margin (NSGA-II from pymoo:
     pip install the 'optimize' extra of flexshaft)."""
+    from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
     from flexshaft.cli.tables import design_heading, design_source
-    from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS
+    from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS, DesignError, with_overrides
     from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.optimize.variables import DEFAULT_OBJECTIVES
@@ -182,7 +196,16 @@ def optimize(
         source = design_source(None, str(design))  # an embedded design by name
     else:
         source = design_source(design)
-    typer.echo(plain(design_heading(base.name, source)))
+    if not as_json:  # JSON mode prints the JSON document only
+        typer.echo(plain(design_heading(base.name, source)))
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    embedded = design is None or (not design.exists() and str(design) in EMBEDDED_DESIGNS)
+    fixed = dict(_parse_set(s) for s in set_value or [])
+    if fixed:
+        try:  # every candidate carries them: refuse a bad one here, not as a search without a feasible design
+            with_overrides(base, fixed)
+        except DesignError as exc:
+            _fail(f"--set: the overrides {', '.join(set_value or [])} do not make a valid design:\n{exc}")
     refs = {}
     for item in reference or []:
         refs[Path(item).stem if item.endswith(".toml") else item] = _load_design(Path(item), item)
@@ -204,13 +227,25 @@ def optimize(
             constraints=tuple(k for k in applicable_checks(base) if k not in (ignore_check or [])),
             layup=template,
             ply_thickness=None if ply_thickness_mm is None else ply_thickness_mm * 1e-3,
-            fixed=dict(_parse_set(s) for s in set_value or []),
+            fixed=fixed,
             fidelity=Fidelity(fidelity).value,
             name=f"flexshaft optimize: {base.name}",
-            base_text=_base_text(design, "baseline"),
+            base_text=_base_text(design, DEFAULT_DESIGN),
         )
+        from flexshaft.cli.bounds import check_optimize, workers_of
         from flexshaft.optimize.nsga import optimize as run_optimization
 
+        check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client))
+        name = str(design) if embedded and design is not None else DEFAULT_DESIGN
+        out = prepare_output_folder(
+            default_output_folder(None if embedded else design, "optimize", name if design else "flexshaft")
+            if out is None
+            else out,
+            base,
+            "optimize",
+            force=force,
+            source=marker_source(None if embedded else design, name),
+        )
         result = run_optimization(
             problem,
             budget,
@@ -218,14 +253,14 @@ def optimize(
             pop_size=pop_size,
             seed=seed,
             jobs=jobs,
-            client=dask,
+            client=client,
             references=refs,
             base_label=_base_label(design),
             progress=lambda line: typer.echo(plain(line), err=True),
         )  # stdout: results
     except (OptimizeError, SweepError) as exc:
         _fail(str(exc))
-    _report(result, out, designs, verify, jobs, dask, as_json)
+    _report(result, out, designs, verify, jobs, client, as_json)
 
 
 _NO_DESIGN = (
@@ -234,7 +269,7 @@ _NO_DESIGN = (
 )
 
 
-def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: str | None, as_json: bool) -> None:
+def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client, as_json: bool) -> None:
     from flexshaft.plot.driveline import save_figure
 
     paths = result.save(out)
@@ -243,7 +278,7 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, dask: 
     if result.pareto.sizes.get("design", 0):
         files = result.write_designs(out / "designs", max_designs)
         if verify:
-            ds = result.verify(files, jobs=jobs, client=dask)
+            ds = result.verify(files, jobs=jobs, client=client)
             failed = [Path(f).name for f, ok in zip(ds["design_file"].values, ds["passed"].values) if ok != 1]
         result.save(out)
     if as_json:

@@ -11,7 +11,7 @@ import typer
 
 from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, fail, guarded, load_design_argument, print_json
 from flexshaft.cli.options import ForceOption, JsonOption, Studies
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 from flexshaft.cli.progress import StageProgress
 
 __all__ = ["run", "run_pipeline"]
@@ -41,14 +41,17 @@ def run(
         ),
     ] = None,
     out: Annotated[
-        Path,
+        Path | None,
         typer.Option(
             "--out",
             "-o",
             help="Results folder: report.html, figures, results.json, timings.json (created if "
-            "missing; refused if it holds other files, see --force).",
+            "missing; a rerun of the same design file replaces its results; refused if it holds other "
+            "files, see --force). Default: DESIGN-results (the design file's name without .toml), "
+            "flexshaft-results for the embedded design.",
+            show_default=False,
         ),
-    ] = Path("flexshaft-results"),
+    ] = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
     studies: Annotated[
@@ -76,13 +79,30 @@ def run(
     """Analyse a design (default: the embedded tuned design), check it against its requirements
     and write the report folder. Prints the design and the verdict first, the tables after; shows
     each stage and its time on a terminal."""
+    from flexshaft.design import DEFAULT_DESIGN
+
     loaded = load_design_argument(design)
     if interactive:
         from flexshaft.report.interactive import missing_extra
 
         if missing_extra() is not None:  # before any computation: say how to install the extra
             fail(missing_extra("flexshaft run --interactive"))
-    folder = prepare_output_folder(out, loaded.design, "run", force=force)
+    if studies is not Studies.none and not loaded.design.operating.speed_rpm > 0:
+        # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
+        typer.echo("note: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0): skipped", err=True)
+        studies = Studies.none
+    from flexshaft.assembly.size import check_problem_size
+    from flexshaft.resolution import REPORT
+
+    # refuses what cannot finish before the folder is touched: the assessment and the thesis studies
+    check_problem_size(loaded.design, "run" if studies is not Studies.none else "assess", REPORT)
+    folder = prepare_output_folder(
+        default_output_folder(design, "results") if out is None else out,
+        loaded.design,
+        "run",
+        force=force,
+        source=marker_source(design, DEFAULT_DESIGN),
+    )
     progress = StageProgress(transient=as_json)
     assessment, page, thesis = run_pipeline(loaded, folder, progress, studies=studies, svg=svg, interactive=interactive)
     failed = strict and not assessment.verdict.passed
@@ -137,7 +157,8 @@ def run_pipeline(
     from flexshaft.thesis.report_studies import start_thesis_studies
     from flexshaft.verdict.assess import assess
 
-    with_studies = studies is not Studies.none
+    # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
+    with_studies = studies is not Studies.none and loaded.design.operating.speed_rpm > 0
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
     if with_studies:

@@ -14,9 +14,9 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import LoadedDesign, check_finite, guarded, load_design_argument, print_json
+from flexshaft.cli.common import LoadedDesign, check_finite, dask_client, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 
 __all__ = ["study_app"]
 
@@ -30,11 +30,13 @@ study_app = typer.Typer(
 )
 
 OutOption = Annotated[
-    Path,
+    Path | None,
     typer.Option(
         "--out",
         "-o",
-        help="Run folder: chunks, manifest, results.nc and figures; re-run to resume. Default: flexshaft-study-NAME.",
+        help="Run folder: chunks, manifest, results.nc and figures; re-run to resume (a rerun of an edited "
+        "design file starts afresh). Default: DESIGN-study-NAME (flexshaft-study-NAME for the embedded design).",
+        show_default=False,
     ),
 ]
 
@@ -44,20 +46,42 @@ def _show_progress(as_json: bool) -> bool:
     return not as_json and sys.stdout.isatty() and sys.stderr.isatty()
 
 
-def _prepare(design: Path | None, out: Path, name: str, force: bool) -> tuple[LoadedDesign, Path]:
+def _prepare(
+    design: Path | None,
+    out: Path | None,
+    name: str,
+    force: bool,
+    folder_suffix: str | None = None,
+    *,
+    points: int | None = None,
+    jobs: int = 1,
+    client=None,
+    check=None,
+) -> tuple[LoadedDesign, Path]:
     """The design (its ``source`` the file or ``embedded tuned design``, for the first line) and
-    the run folder."""
+    the output folder of a study; its work bounded first (a sweep of ``points`` designs, or
+    ``check(design)``)."""
     import dataclasses
 
-    from flexshaft.cli.tables import design_source
+    from flexshaft.cli.tables import design_source as heading_source
+    from flexshaft.design import DEFAULT_DESIGN
 
     loaded = load_design_argument(design)
-    loaded = dataclasses.replace(loaded, source=design_source(design))
-    return loaded, prepare_output_folder(out, loaded.design, f"study {name}", force=force)
+    loaded = dataclasses.replace(loaded, source=heading_source(design))
+    if points is not None:
+        from flexshaft.cli.bounds import check_sweep, workers_of
+
+        check_sweep(loaded.design, f"study {name}", points, workers_of(jobs, client))
+    if check is not None:
+        check(loaded.design)
+    folder = default_output_folder(design, folder_suffix or f"study-{name}") if out is None else out
+    return loaded, prepare_output_folder(
+        folder, loaded.design, f"study {name}", force=force, source=marker_source(design, DEFAULT_DESIGN)
+    )
 
 
-def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, dask: str | None, as_json: bool, **kw):
-    return func(design=loaded.design, run_dir=folder, jobs=jobs, client=dask, progress=_show_progress(as_json), **kw)
+def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, client, as_json: bool, **kw):
+    return func(design=loaded.design, run_dir=folder, jobs=jobs, client=client, progress=_show_progress(as_json), **kw)
 
 
 def _save(fig, folder: Path, stem: str) -> dict:
@@ -106,7 +130,7 @@ def _report(
 def ply_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=0.5, max=45.0, help="Angle step [deg].")] = 5.0,
-    out: OutOption = Path("flexshaft-study-ply-angle"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -118,8 +142,10 @@ def ply_angle(
     from flexshaft.plot.studies import ply_angle_figure
     from flexshaft.thesis.ply_angle import DOMINANT_STRESS_CODES, ply_angle_study
 
-    loaded, folder = _prepare(design, out, "ply-angle", force)
-    ds = _sweep(ply_angle_study, loaded, folder, jobs, dask, as_json, angles=np.arange(step, 90.0, step))
+    angles = np.arange(step, 90.0, step)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    loaded, folder = _prepare(design, out, "ply-angle", force, points=angles.size, jobs=jobs, client=client)
+    ds = _sweep(ply_angle_study, loaded, folder, jobs, client, as_json, angles=angles)
     best = float(ds["safety_factor"].idxmax("alpha").item())
     headline = f"best α = ±{best:g}°: safety factor {float(ds['safety_factor'].max().item()):.3g}"
     dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
@@ -143,7 +169,7 @@ def ply_angle(
 def two_angle(
     design: DesignArgument = None,
     step: Annotated[float, typer.Option("--step", min=1.0, max=45.0, help="Angle step [deg].")] = 15.0,
-    out: OutOption = Path("flexshaft-study-two-angle"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -156,9 +182,10 @@ def two_angle(
     from flexshaft.plot.studies import two_angle_figure
     from flexshaft.thesis.two_angles import two_angle_study
 
-    loaded, folder = _prepare(design, out, "two-angle", force)
     angles = np.arange(0.0, 90.0 + 1e-9, step)
-    ds = _sweep(two_angle_study, loaded, folder, jobs, dask, as_json, alphas=angles, betas=angles)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    loaded, folder = _prepare(design, out, "two-angle", force, points=angles.size**2, jobs=jobs, client=client)
+    ds = _sweep(two_angle_study, loaded, folder, jobs, client, as_json, alphas=angles, betas=angles)
     sf = ds["safety_factor"]
     i = np.unravel_index(int(np.nanargmax(sf.values)), sf.shape)
     a, b = ds.alpha.values[i[0]], ds.beta.values[i[1]]
@@ -192,7 +219,7 @@ def _largest_safety_factor(sf, where) -> str:
 @guarded
 def wall(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-wall"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -203,8 +230,9 @@ def wall(
     from flexshaft.thesis.wall import wall_thickness_study
     from flexshaft.units import m_to_mm
 
-    loaded, folder = _prepare(design, out, "wall", force)
-    ds = _sweep(wall_thickness_study, loaded, folder, jobs, dask, as_json)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    loaded, folder = _prepare(design, out, "wall", force, points=10, jobs=jobs, client=client)
+    ds = _sweep(wall_thickness_study, loaded, folder, jobs, client, as_json)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall")
     figures = {
@@ -236,7 +264,7 @@ def wall(
 @guarded
 def gain(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-gain"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -247,8 +275,9 @@ def gain(
     from flexshaft.plot.studies import gain_figure
     from flexshaft.thesis.gain import proportional_gain_study
 
-    loaded, folder = _prepare(design, out, "gain", force)
-    ds = _sweep(proportional_gain_study, loaded, folder, jobs, dask, as_json)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    loaded, folder = _prepare(design, out, "gain", force, points=13, jobs=jobs, client=client)
+    ds = _sweep(proportional_gain_study, loaded, folder, jobs, client, as_json)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"K_p = {sig(float(ds.kp.values[i]), 3)} N/m")
     figures = {"gain": _save(gain_figure(ds.kp.values, sf, ds["actuator_displacement"].values), folder, "gain")}
@@ -259,7 +288,7 @@ def gain(
 @guarded
 def buckling(
     design: DesignArgument = None,
-    out: OutOption = Path("flexshaft-study-buckling"),
+    out: OutOption = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -270,8 +299,9 @@ def buckling(
     from flexshaft.thesis.buckling_sweep import buckling_study
     from flexshaft.units import m_to_mm
 
-    loaded, folder = _prepare(design, out, "buckling", force)
-    ds = _sweep(buckling_study, loaded, folder, jobs, dask, as_json)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    loaded, folder = _prepare(design, out, "buckling", force, points=10, jobs=jobs, client=client)
+    ds = _sweep(buckling_study, loaded, folder, jobs, client, as_json)
     sf = ds["buckling_safety_factor"].values
     thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
     headline = (
@@ -288,8 +318,16 @@ def buckling(
 def spinup_map(
     design: DesignArgument = None,
     n_gains: Annotated[int, typer.Option("--n-gains", min=2, max=400, help="Gains per axis (K_p and K_d).")] = 30,
-    n_speeds: Annotated[int, typer.Option("--n-speeds", min=10, max=20000, help="Spin-up speeds.")] = 400,
-    out: OutOption = Path("flexshaft-study-spinup-map"),
+    n_speeds: Annotated[
+        int,
+        typer.Option(
+            "--n-speeds",
+            min=10,
+            max=10000,
+            help="Spin-up speeds (× --n-gains²: refused with the numbers when estimated above 10 min or 2 GiB).",
+        ),
+    ] = 400,
+    out: OutOption = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
@@ -302,7 +340,7 @@ def spinup_map(
     from flexshaft.thesis.spinup_maps import spinup_gain_map
     from flexshaft.units import m_to_mm
 
-    loaded, folder = _prepare(design, out, "spinup-map", force)
+    loaded, folder = _prepare(design, out, "spinup-map", force, check=lambda d: _check_spinup_map(d, n_gains, n_speeds))
     kd = np.concatenate([[0.0], np.logspace(1, 4.5, n_gains - 1)])
     ds = spinup_gain_map(np.logspace(5, 8, n_gains), kd, design=loaded.design, n_speeds=n_speeds)
     write_netcdf(ds, folder / "results.nc")
@@ -337,6 +375,22 @@ def spinup_map(
         print_line(console, f"figure: {paths['png']}")
 
 
+def _check_spinup_map(design, n_gains: int, n_speeds: int) -> None:
+    """A spin-up map needs active bearings (their gains are its axes) and an operating speed
+    (its spin-up ends there); its work is bounded (:func:`flexshaft.cli.bounds.check_spinup_map`)."""
+    from flexshaft.cli.bounds import check_spinup_map
+    from flexshaft.cli.common import fail
+
+    if not any(b.kind == "active" for b in design.bearings):
+        fail(
+            'study spinup-map: the design has no active bearing (kind = "active"): the map varies the '
+            "proportional and derivative gains of the active bearings"
+        )
+    if not design.operating.speed_rpm > 0:
+        fail("study spinup-map: the design's operating speed is 0 (operating.speed_rpm = 0): the spin-up ends there")
+    check_spinup_map(design, n_gains, n_speeds)
+
+
 @study_app.command("all")
 @guarded
 def all_studies(
@@ -350,8 +404,15 @@ def all_studies(
         ),
     ] = Resolution.report,
     out: Annotated[
-        Path, typer.Option("--out", "-o", help="Folder for figures, netCDF, design_studies.json and report.html.")
-    ] = Path("flexshaft-studies"),
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for figures, netCDF, design_studies.json and report.html. Default: DESIGN-studies "
+            "(flexshaft-studies for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     gap: Annotated[
@@ -361,7 +422,7 @@ def all_studies(
 ) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     check_finite("--gap", gap, 1e-9)
-    loaded, folder = _prepare(design, out, "all", force)
+    loaded, folder = _prepare(design, out, "all", force, "studies", check=_check_studies)
     from flexshaft.cli.progress import StageProgress
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.report.html import write_report
@@ -382,6 +443,16 @@ def all_studies(
         print_json(data)
         return
     _print_headline(data, page, loaded.source)
+
+
+def _check_studies(design) -> None:
+    """``study all`` runs the thesis studies of ``flexshaft run`` (and its assessment's grids)."""
+    from flexshaft.assembly.size import check_problem_size
+    from flexshaft.cli.common import fail
+
+    if not design.operating.speed_rpm > 0:
+        fail("study all: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0)")
+    check_problem_size(design, "run")
 
 
 def _print_headline(data: dict, page: Path, source: str) -> None:

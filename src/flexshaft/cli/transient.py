@@ -9,9 +9,9 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import check_finite, guarded, load_design_argument, print_json
+from flexshaft.cli.common import check_finite, dask_client, fail, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption
-from flexshaft.cli.output import prepare_output_folder
+from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 
 __all__ = ["montecarlo", "runup"]
 
@@ -25,7 +25,12 @@ __all__ = ["montecarlo", "runup"]
 def runup(
     design: DesignArgument = None,
     duration: Annotated[
-        float, typer.Option("--duration", help="Run-up time from --start-rpm to --stop-rpm [s].")
+        float,
+        typer.Option(
+            "--duration",
+            help="Run-up time from --start-rpm to --stop-rpm [s], at most 3600; with --dwell at most 200,000 "
+            "output samples (8 per radian at the top speed: 312 s at 4800 rpm).",
+        ),
     ] = 10.0,
     start_rpm: Annotated[float, typer.Option("--start-rpm", help="Start speed [rpm].")] = 0.0,
     stop_rpm: Annotated[
@@ -34,30 +39,52 @@ def runup(
             "--stop-rpm", help="End speed [rpm]; default the operating speed (below --start-rpm: a run-down)."
         ),
     ] = None,
-    dwell: Annotated[float, typer.Option("--dwell", help="Time held at the end speed [s].")] = 0.0,
-    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for runup.nc and runup.png.")] = Path(
-        "flexshaft-runup"
-    ),
+    dwell: Annotated[float, typer.Option("--dwell", help="Time held at the end speed [s], at most 3600.")] = 0.0,
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for runup.nc and runup.png. Default: DESIGN-runup (flexshaft-runup for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     as_json: JsonOption = False,
 ) -> None:
     """Run-up (or run-down) transient at constant acceleration: shaft and actuator envelopes
     against the steady-state spin-up curve."""
+    from flexshaft.design.schema import MAX_SPEED_RPM
     from flexshaft.units import rad_s_to_rpm, rpm_to_rad_s
 
     check_finite("--duration", duration, 1e-3, 3600.0)
-    check_finite("--start-rpm", start_rpm, 0.0, 1e6)
-    check_finite("--stop-rpm", stop_rpm, 0.0, 1e6)
+    check_finite("--start-rpm", start_rpm, 0.0, MAX_SPEED_RPM)
+    check_finite("--stop-rpm", stop_rpm, 0.0, MAX_SPEED_RPM)
     check_finite("--dwell", dwell, 0.0, 3600.0)
     loaded = load_design_argument(design)
-    folder = prepare_output_folder(out, loaded.design, "runup", force=force)
     from flexshaft.analyses.transient import run_up, steady_state_envelope
     from flexshaft.assembly import build_model
+    from flexshaft.cli.bounds import check_runup
     from flexshaft.plot.driveline import save_figure
     from flexshaft.plot.transient import runup_envelope_figure
 
     model = build_model(loaded.design)
     stop = model.speed if stop_rpm is None else rpm_to_rad_s(stop_rpm)
+    if stop_rpm is None and stop == 0.0:
+        fail("--stop-rpm: the design's operating speed is 0 (operating.speed_rpm = 0); give the end speed")
+    if rpm_to_rad_s(start_rpm) == stop:
+        fail(
+            f"--start-rpm, --stop-rpm: both {start_rpm:g} rpm; a run-up (or run-down) needs two different "
+            "speeds (--stop-rpm defaults to the operating speed)"
+        )
+    check_runup(model, duration, dwell, max(rpm_to_rad_s(start_rpm), stop))
+    folder = prepare_output_folder(
+        default_output_folder(design, "runup") if out is None else out,
+        loaded.design,
+        "runup",
+        force=force,
+        source=marker_source(design, _default_design()),
+    )
     result = run_up(model, duration, start=rpm_to_rad_s(start_rpm), stop=stop, dwell=dwell)
     lo, hi = sorted((rpm_to_rad_s(start_rpm), stop))
     import numpy as np
@@ -127,7 +154,12 @@ def montecarlo(
     samples: Annotated[
         int, typer.Option("--samples", min=10, max=1_000_000, help="Number of imbalance samples.")
     ] = 500,
-    seed: Annotated[int, typer.Option("--seed", min=0, help="Random seed (the same seed gives the same samples).")] = 0,
+    seed: Annotated[
+        int,
+        typer.Option(
+            "--seed", min=0, max=2**63 - 1, help="Random seed (the same seed gives the same samples), 0 to 2^63 - 1."
+        ),
+    ] = 0,
     grade: Annotated[
         float, typer.Option("--grade", help="Balance quality grade G [mm/s] (ISO 21940-11), e.g. 6.3 or 16.")
     ] = 6.3,
@@ -146,8 +178,15 @@ def montecarlo(
         ),
     ] = None,
     out: Annotated[
-        Path, typer.Option("--out", "-o", help="Folder for samples.nc and montecarlo.png (resumable).")
-    ] = Path("flexshaft-montecarlo"),
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Folder for samples.nc and montecarlo.png (resumable). Default: DESIGN-montecarlo "
+            "(flexshaft-montecarlo for the embedded design).",
+            show_default=False,
+        ),
+    ] = None,
     force: ForceOption = False,
     jobs: JobsOption = 1,
     dask: DaskOption = None,
@@ -165,7 +204,19 @@ def montecarlo(
     check_finite("--gap-mm", gap_mm, 1e-6, 1e3)
     check_finite("--force-limit", force_limit, 1e-6, 1e9)
     loaded = load_design_argument(design)
-    folder = prepare_output_folder(out, loaded.design, "montecarlo", force=force)
+    client = dask_client(dask)  # checked and connected before anything is prepared
+    from flexshaft.cli.bounds import check_montecarlo, workers_of
+
+    if not loaded.design.operating.speed_rpm > 0:
+        fail("--grade: a balance grade G = e Ω needs an operating speed (the design has operating.speed_rpm = 0)")
+    check_montecarlo(loaded.design, samples, workers_of(jobs, client))
+    folder = prepare_output_folder(
+        default_output_folder(design, "montecarlo") if out is None else out,
+        loaded.design,
+        "montecarlo",
+        force=force,
+        source=marker_source(design, _default_design()),
+    )
     from flexshaft.montecarlo.steady import run_montecarlo
     from flexshaft.plot.driveline import save_figure
     from flexshaft.units import m_to_mm, mm_to_m
@@ -178,12 +229,14 @@ def montecarlo(
         gap=None if gap_mm is None else mm_to_m(gap_mm),  # default: each active bearing's own, as the verdict
         force_limit=force_limit,
         jobs=jobs,
-        client=dask,
+        client=client,
         run_dir=folder / "sweep",
         progress=not as_json and sys.stderr.isatty(),  # the bar is drawn on stderr, only on a terminal
     )
     gap, capacity = result.gap, result.force_limit
-    result.dataset.to_netcdf(folder / "samples.nc")
+    from flexshaft.netcdf import write_netcdf
+
+    write_netcdf(result.dataset, folder / "samples.nc")
     save_figure(result.plot(), folder, "montecarlo", svg=False)
     ds = result.dataset
     summary = {
@@ -195,7 +248,7 @@ def montecarlo(
             "actuator_force_max",
             "actuator_load_max",
         )
-        if name in ds
+        if name in ds and np.isfinite(ds[name].values).any()  # a driveline without actuators has none
     }
     data = {
         "design": loaded.design.name,
@@ -241,3 +294,11 @@ def montecarlo(
             unit = "mm" if name == "gap" else "N"
             print_line(console, f"{name} {sig(limit)} {unit} exceeded (static + dynamic) in {events.describe()}")
     print_line(console, f"written to {folder}")
+
+
+def _default_design() -> str:
+    """The embedded design a command analyses without a file (imported here: the schema is
+    measurably heavy for ``--help``)."""
+    from flexshaft.design import DEFAULT_DESIGN
+
+    return DEFAULT_DESIGN

@@ -46,6 +46,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from flexshaft.analyses.guards import RefusedInputError, check_count
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_bays
 from flexshaft.design import Design
@@ -66,7 +67,11 @@ from flexshaft.verdict.gather import ActuatorLimits, actuator_limits
 if TYPE_CHECKING:
     from xarray import Dataset
 
-__all__ = ["MonteCarloResult", "MonteCarloSampler", "montecarlo_study", "run_montecarlo"]
+__all__ = ["MAX_SEED", "MonteCarloResult", "MonteCarloSampler", "montecarlo_study", "run_montecarlo"]
+
+#: Largest seed (numpy's generators take any non-negative integer; the sample k of seed s uses
+#: ``default_rng([s, k])``).
+MAX_SEED = 2**63 - 1
 
 
 # ---------------------------------------------------------------------------------------------
@@ -114,8 +119,7 @@ class MonteCarloSampler:
 
 def montecarlo_study(design, n_samples: int, sampler: MonteCarloSampler) -> Study:
     """The :class:`~flexshaft.sweep.Study` of ``n_samples`` imbalance samples of ``design``."""
-    if int(n_samples) < 1:
-        raise ValueError(f"n_samples must be >= 1, got {n_samples!r}")
+    n_samples = check_count(n_samples, "n_samples")
     model = build_model(design)
     n_bays = max(len(imbalance_bays(model)), 1)
     outputs = [Output(name, unit, text) for name, (unit, text) in BASE_OUTPUTS.items()]
@@ -263,6 +267,15 @@ def run_montecarlo(
     """
     if (grade_mm_s is None) == (distribution is None):
         raise ValueError("give exactly one of grade_mm_s (balance grade, mm/s) or distribution")
+    n_samples = check_count(n_samples, "n_samples")  # 2.5 samples used to run 2
+    n_speeds = check_count(n_speeds, "n_speeds", minimum=2)  # a spin-up of one speed has no peak to find
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed <= MAX_SEED:
+        raise RefusedInputError(f"seed must be a whole number from 0 to 2^63 - 1 (got {seed!r})")
+    if distribution is None and not design.operating.speed_rad_s > 0:
+        raise RefusedInputError(
+            "a balance grade G = e Ω needs an operating speed (operating.speed_rpm = 0); give the "
+            "eccentricity distribution instead"
+        )
     if distribution is None:
         distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_limits[1])
     for name, value in (("gap", gap), ("force_limit", force_limit)):
@@ -281,7 +294,9 @@ def run_montecarlo(
     ds = run_sweep(study, run_dir, jobs=jobs, client=client, chunk_size=chunk_size, progress=progress)
     ds.attrs.update(
         {
-            "seed": int(seed),
+            # as text: netCDF3 attributes hold at most 32-bit integers (a seed of 2^31 failed to
+            # write after every sample was computed)
+            "seed": str(int(seed)),
             "distribution": distribution.kind,
             "eccentricity_scale_m": distribution.scale,
             "placement": placement,

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.design import load_design
+from flexshaft.files import atomic_write_text
 from flexshaft.optimize.toml_comments import FileComments, KeyComments, read_comments
 from flexshaft.resolution import REPORT
 from flexshaft.sweep import Output, Study, Variable, run_sweep
@@ -209,7 +210,7 @@ def write_design_file(
     """Write ``design`` to ``path`` (:func:`design_toml`, the base's comments carried over) and
     check that the file loads back to the same design."""
     path = Path(path)
-    path.write_text(design_toml(design, comments, base=base, base_text=base_text), encoding="utf-8")
+    atomic_write_text(path, design_toml(design, comments, base=base, base_text=base_text))
     loaded = load_design(path)
     if json.loads(loaded.model_dump_json()) != json.loads(design.model_dump_json()):
         raise RuntimeError(f"{path}: the written design file does not load back to the same design")

@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
+from flexshaft.files import atomic_write_text
 from flexshaft.optimize.problem import DesignProblem, objectives_and_constraints
 from flexshaft.optimize.result import OptimizationResult, pareto_mask
 from flexshaft.optimize.store import EVALUATIONS, EvaluationCache, evaluate_candidates
@@ -86,7 +87,7 @@ def _open_run(run_dir: Path | None, spec: dict) -> EvaluationCache:
                 f"{', '.join(differ)}); use another folder (a larger budget alone may reuse it)"
             )
     else:
-        manifest.write_text(json.dumps(spec, indent=2, sort_keys=True, default=repr) + "\n", encoding="utf-8")
+        atomic_write_text(manifest, json.dumps(spec, indent=2, sort_keys=True, default=repr) + "\n")
     return EvaluationCache(run_dir / EVALUATIONS)
 
 

@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.design import DesignError, with_overrides
+from flexshaft.files import append_line
 from flexshaft.optimize.problem import DesignProblem
 from flexshaft.optimize.variables import OptimizeError
 from flexshaft.sweep import Study, Variable, evaluate_chunk, finished_chunks, run_sweep
@@ -77,9 +78,10 @@ class EvaluationCache:
     """Evaluated candidates by key, kept in ``RUN/evaluations.jsonl`` (or in memory).
 
     Each line is a JSON record ``{"key", "overrides", "outputs", "error", "sum"}``; floats are
-    written with ``repr`` (exact round trip), NaN as ``NaN``. A line that does not parse or
-    whose checksum ``sum`` does not match (a run killed while writing it) is skipped with a
-    warning and the candidate is evaluated again.
+    written with ``repr`` (exact round trip), NaN as ``NaN``. A line that does not parse (not
+    UTF-8, not JSON: a damaged or overwritten file) or whose checksum ``sum`` does not match (a
+    run killed while writing it) is skipped with a warning and the candidate is evaluated again.
+    Records are appended without following a symbolic link (:func:`flexshaft.files.append_line`).
     """
 
     def __init__(self, path: str | os.PathLike | None = None) -> None:
@@ -89,32 +91,36 @@ class EvaluationCache:
             self._load()
 
     def _load(self) -> None:
-        text = self.path.read_text(encoding="utf-8")
-        lines = text.split("\n")
+        try:
+            data = self.path.read_bytes()
+        except IsADirectoryError:
+            raise OptimizeError(f"{self.path}: a folder, not the evaluation log; use another run folder") from None
         bad = 0
-        for line in lines:
-            if not line.strip():
+        for raw in data.split(b"\n"):
+            if not raw.strip():
                 continue
             try:
-                record = json.loads(line)
+                record = json.loads(raw.decode("utf-8"))
                 check = record.pop("sum")
                 if check != _line_checksum(record):
                     raise ValueError("checksum")
-            except (ValueError, KeyError, TypeError, AttributeError):
+                key = record["key"]
+                if not isinstance(key, str) or not isinstance(record["outputs"], dict):
+                    raise ValueError("record")
+            except (ValueError, KeyError, TypeError, AttributeError):  # UnicodeDecodeError is a ValueError
                 bad += 1
                 continue
             if record.get("error") == FAILED:
                 continue  # an evaluation that raised (possibly a transient fault) is tried again on resume
-            self.records[record["key"]] = record
+            self.records[key] = record
         if bad:
             warnings.warn(
                 f"{self.path}: {bad} damaged evaluation record(s) skipped; those candidates are evaluated again",
                 RuntimeWarning,
                 stacklevel=3,
             )
-        if text and not text.endswith("\n"):
-            with open(self.path, "a", encoding="utf-8") as fh:  # start the next record on a new line
-                fh.write("\n")
+        if data and not data.endswith(b"\n"):
+            append_line(self.path, "\n", sync=False)  # start the next record on a new line
 
     def __contains__(self, key: str) -> bool:
         return key in self.records
@@ -133,10 +139,7 @@ class EvaluationCache:
             self.records[record["key"]] = record
             lines.append(json.dumps({**record, "sum": _line_checksum(record)}, separators=(",", ":")))
         if self.path is not None and lines:
-            with open(self.path, "a", encoding="utf-8") as fh:
-                fh.write("\n".join(lines) + "\n")
-                fh.flush()
-                os.fsync(fh.fileno())
+            append_line(self.path, "\n".join(lines) + "\n")  # synced; a symbolic link is refused
 
 
 def _design_or_reason(problem: DesignProblem, overrides: Mapping[str, Any]):

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from flexshaft.files import writing
 from flexshaft.parallel.pool import worker_pool
 
 if TYPE_CHECKING:
@@ -42,7 +43,8 @@ def _check_stem(stem: str) -> None:
 def save_figure(
     fig: Figure, folder: str | Path, stem: str, *, svg: bool = True, dpi: float = PNG_DPI
 ) -> dict[str, Path]:
-    """Write ``stem.png`` (and ``stem.svg`` when ``svg``) into ``folder``; release the figure.
+    """Write ``stem.png`` (and ``stem.svg`` when ``svg``) into ``folder``, each atomically
+    (:func:`flexshaft.files.writing`); release the figure.
 
     Parameters
     ----------
@@ -68,10 +70,14 @@ def save_figure(
     paths = {"png": out / f"{stem}.png"}
     # zlib level 1: the figures of new_figure are written by flexshaft.plot.png (one pass, no row
     # filters: 15 ms a report figure); any other canvas goes through Pillow (44 ms at level 1)
-    fig.savefig(paths["png"], dpi=dpi, format="png", pil_kwargs={"compress_level": PNG_COMPRESSION})
+    # each file through a temporary name and a rename (flexshaft.files.writing): a symbolic link
+    # at the name is replaced, never written through, and a full disk leaves no half file
+    with writing(paths["png"]) as tmp:
+        fig.savefig(tmp, dpi=dpi, format="png", pil_kwargs={"compress_level": PNG_COMPRESSION})
     if svg:
         paths["svg"] = out / f"{stem}.svg"
-        fig.savefig(paths["svg"], format="svg", metadata={"Date": None})
+        with writing(paths["svg"]) as tmp:
+            fig.savefig(tmp, format="svg", metadata={"Date": None})
     if "matplotlib.pyplot" in sys.modules:  # only pyplot keeps a reference to figures
         sys.modules["matplotlib.pyplot"].close(fig)
     return paths

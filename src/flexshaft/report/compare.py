@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from flexshaft.comparison import PART_KINDS, Comparison
+from flexshaft.files import atomic_write_text
 from flexshaft.plot.compare import (
     campbell_overlay_figure,
     mass_breakdown_figure,
@@ -427,7 +428,9 @@ def write_compare_report(comparison: Comparison, folder: str | Path, generated=N
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / "results.json").write_text(json.dumps(json_ready(comparison_json(comparison)), indent=2, allow_nan=False))
+    atomic_write_text(
+        folder / "results.json", json.dumps(json_ready(comparison_json(comparison)), indent=2, allow_nan=False)
+    )
     comparison.save(folder / "comparison.nc")
     sections = [
         _summary_section(comparison),

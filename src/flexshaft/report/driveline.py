@@ -25,6 +25,7 @@ from flexshaft.analyses.modal import Modes
 from flexshaft.analyses.summary import modes_table
 from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.design import baseline_design, baseline_text
+from flexshaft.files import atomic_write_text
 from flexshaft.plot.driveline import deflected_shape_figure
 from flexshaft.plot.output import render_figures, start_figures
 from flexshaft.report.html import Section, Table, write_report
@@ -345,10 +346,11 @@ def write_run_report(
         def figures_done():
             return render_figures(plan.jobs, folder, svg=svg, processes=processes)
 
-    (folder / "results.json").write_text(json.dumps(json_ready(plan.data), indent=2, allow_nan=False))
+    atomic_write_text(folder / "results.json", json.dumps(json_ready(plan.data), indent=2, allow_nan=False))
     studies = thesis.design_studies if thesis is not None else None
     studies_timings = studies.timings if studies is not None else {}
-    (folder / "timings.json").write_text(
+    atomic_write_text(
+        folder / "timings.json",
         json.dumps(
             {
                 "note": "wall-clock seconds of this run; they vary from run to run (results.json does not)",
@@ -356,7 +358,7 @@ def write_run_report(
                 "design_studies_s": {k: float(v) for k, v in studies_timings.items()},
             },
             indent=2,
-        )
+        ),
     )
     if studies is not None:
         save_study_data(studies, folder / "studies")

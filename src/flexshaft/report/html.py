@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
+from flexshaft.files import atomic_write_text
 
 __all__ = ["Table", "FigureRef", "Preformatted", "Section", "format_cell", "render_report", "write_report"]
 
@@ -345,5 +346,4 @@ def write_report(folder: str | Path, title: str, sections: Sequence[Section], **
     out = Path(folder)
     out.mkdir(parents=True, exist_ok=True)
     path = out / "report.html"
-    path.write_text(render_report(title, sections, **options), encoding="utf-8")
-    return path
+    return atomic_write_text(path, render_report(title, sections, **options))

@@ -18,7 +18,9 @@ Backends:
   process even when it is killed with SIGKILL: on Linux each worker asks the kernel for SIGKILL
   when its parent dies (``prctl(PR_SET_PDEATHSIG)``); elsewhere a thread in each worker watches
   the parent and exits the worker within a second of its death;
-* ``client=``: a ``dask.distributed.Client`` or a scheduler address (``"tcp://host:8786"``).
+* ``client=``: a ``dask.distributed.Client`` or a scheduler address (``"tcp://host:8786"``;
+  its form is checked before anything is prepared, and the connection gives up after
+  :data:`flexshaft.sweep.dask.CONNECT_TIMEOUT`).
   On SLURM, make the client from ``dask_jobqueue.SLURMCluster``. Dask is imported only then.
 """
 
@@ -37,6 +39,7 @@ import numpy as np
 from flexshaft import __version__
 from flexshaft.netcdf import write_netcdf
 from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
+from flexshaft.sweep.dask import check_scheduler_address, connect
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -110,11 +113,11 @@ def _run_processes(study: Study, todo, on_error, jobs: int) -> Iterator[tuple[in
 
 def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.ndarray]]:
     try:
-        from distributed import Client, as_completed
+        from distributed import as_completed
     except ImportError as exc:  # pragma: no cover - depends on the extra
         raise SweepError("the Dask backend needs the extra: pip install 'flexshaft[dask]'") from exc
     own = isinstance(client, str)
-    client = Client(client) if own else client
+    client = connect(client) if own else client  # checked address, short connect timeout
     try:
         futures = {
             client.submit(
@@ -222,10 +225,12 @@ def run_sweep(
     """
     if on_error not in ("raise", "nan"):
         raise SweepError(f"on_error must be 'raise' or 'nan', got {on_error!r}")
-    if int(jobs) < 1:
-        raise SweepError(f"jobs must be >= 1, got {jobs}")
-    if chunk_size is not None and int(chunk_size) < 1:
-        raise SweepError(f"chunk_size must be >= 1, got {chunk_size}")
+    if not _whole(jobs) or jobs < 1:
+        raise SweepError(f"jobs must be a whole number >= 1, got {jobs!r}")
+    if chunk_size is not None and (not _whole(chunk_size) or chunk_size < 1):
+        raise SweepError(f"chunk_size must be a whole number >= 1, got {chunk_size!r}")
+    if isinstance(client, str):
+        check_scheduler_address(client)  # before anything is prepared (flexshaft.sweep.dask)
     study.validate()
     workers = jobs if client is None else _dask_workers(client)
     default_chunk_size = _default_chunk_size(study.size, workers)
@@ -271,6 +276,11 @@ def run_sweep(
     if run_path is not None:
         write_netcdf(ds, run_path / RESULTS)
     return ds
+
+
+def _whole(value: Any) -> bool:
+    """An integer (not a bool, not 2.5: a count given as 2.5 used to run as 2)."""
+    return isinstance(value, (int, np.integer)) and not isinstance(value, bool)
 
 
 def _dask_workers(client) -> int:

@@ -28,7 +28,6 @@ import hashlib
 import json
 import os
 import re
-import tempfile
 import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -36,6 +35,7 @@ from typing import IO, Any
 
 import numpy as np
 
+from flexshaft.files import atomic_write as write_file
 from flexshaft.sweep.study import Study, SweepError, SweepWarning
 
 __all__ = [
@@ -62,18 +62,10 @@ class ChunkError(ValueError):
 
 
 def atomic_write(path: Path, write: Callable[[IO[bytes]], Any]) -> None:
-    """Write ``path`` through a temporary file in the same folder, synced, then renamed."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=path.suffix)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            write(fh)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    """Write ``path`` through a temporary file in the same folder, synced, then renamed
+    (:func:`flexshaft.files.atomic_write`: a symbolic link at ``path`` is replaced, an error
+    names ``path``)."""
+    write_file(path, write, sync=True)
 
 
 def _digest(fields: dict, values: np.ndarray) -> str:

@@ -238,7 +238,7 @@ def temperature_profiles(
         for h, corr in zip(by_h["heat_transfer_coefficient"], by_h["from_correlation"])
     ]
     return TemperatureProfiles(
-        model.dofs.shaft_x,
+        by_h["x"],  # the thermal model's stations (a segmented shaft's differ from the mesh's shaft_x)
         {f"wall {m_to_mm(t):.1f} mm": rise for t, rise in zip(by_wall["wall_thickness"], by_wall["rise"])},
         dict(zip(h_labels, by_h["rise"])),
     )

@@ -29,6 +29,7 @@ import numpy as np
 
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design
+from flexshaft.files import atomic_write_text
 from flexshaft.netcdf import write_netcdf
 from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
 from flexshaft.resolution import REPORT
@@ -444,7 +445,7 @@ def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Pat
             paths[name] = folder / f"study_{name}.nc"
             write_netcdf(ds, paths[name])
     paths["headline"] = folder / "design_studies.json"
-    paths["headline"].write_text(json.dumps(headline(results), indent=2))
+    atomic_write_text(paths["headline"], json.dumps(headline(results), indent=2))
     return paths
 
 

@@ -1,0 +1,330 @@
+"""Property test: every command, on generated designs and options, ends cleanly (issue 27).
+
+The design fuzz (tests/test_design_fuzz.py) covers the design file through ``check``, ``modes``
+and the assessment. Here each command of the CLI runs on designs generated from the embedded
+ones (the one-piece FMC baseline and tuned designs with their active bearings; the segmented
+``current`` driveline with its couplings, hangers and damper) with structural edits (a
+transfer-function or PID controller, an active bearing on the segmented driveline, a damper on
+the FMC one, a disk, no tailboom, the "worst" imbalance placement), extreme values that broke
+a command once (issue 27: a coupling's polar inertia of 1e7, K_i = 1e15, a design at rest, a
+sky at 400 °C) and its own options, from their defaults to their documented limits.
+
+Every example must
+
+* end with exit code 0, 2 (a user error, its message naming what to change) or 3 (a failed
+  requirement), never 4 (an internal error) and never with a traceback;
+* end within :data:`TIMEOUT` seconds (SIGALRM; a hang fails the example);
+* write nothing outside its output folder (the working folder and the design files are
+  compared before and after);
+* print strict JSON with ``--json`` (no NaN or infinity).
+
+Budget: the examples of each command are sized to about 5 s of CPU on the development machine
+(derandomized, no example database: CI runs the same examples every time); ``study all`` and
+``compare`` run their assessments at the report's resolution (about 10 s) and are marked slow.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import copy
+import json
+import signal
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from test_design_fuzz import toml_document
+from typer.testing import CliRunner
+
+from flexshaft.cli import app
+from flexshaft.design import embedded_text
+
+runner = CliRunner()
+
+#: Longest an example may take [s] (the slowest accepted example runs in about 10 s).
+TIMEOUT = 120
+BASES = {name: tomllib.loads(embedded_text(name)) for name in ("baseline", "tuned", "current")}
+
+
+class Hang(BaseException):
+    """Raised by SIGALRM in an example that ran longer than TIMEOUT (a BaseException, so that
+    the CLI's error boundary does not report it as a user error or a fault)."""
+
+
+@contextlib.contextmanager
+def time_limit(seconds: int):
+    def alarm(signum, frame):
+        raise Hang(f"the command ran longer than {seconds} s")
+
+    previous = signal.signal(signal.SIGALRM, alarm)
+    signal.alarm(seconds)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+# ------------------------------------------------------------------------------------------------
+# Designs
+
+
+def _active(data: dict) -> dict | None:
+    return next((b for b in data["bearings"] if b.get("kind") == "active"), None)
+
+
+def _edit(data: dict, edit: str) -> None:
+    amb = _active(data)
+    one_piece = "segments" not in data["shaft"]
+    if edit == "tf_controller" and amb is not None:
+        for key in ("kp", "kd", "integral_gain"):
+            amb.pop(key, None)
+        amb["controller"] = {"numerator": [2.0e3, 1.0e7], "denominator": [1.0 / 6000.0, 1.0]}
+    elif edit == "pid_controller" and amb is not None:
+        amb.update({"integral_gain": 1e8, "derivative_cutoff": 800.0, "amplifier_bandwidth": 2000.0, "kd": 1e3})
+    elif edit == "amb_on_segments" and not one_piece:
+        x = data["bearings"][1]["x"] + 0.4
+        data["bearings"].append({"name": "amb", "kind": "active", "x": x, "kp": 1e6, "kd": 500.0, "gap": 2.5e-4})
+    elif edit == "damper" and one_piece:
+        x = 0.5 * (data["shaft"]["x_start"] + data["shaft"]["x_end"])
+        data["bearings"].append(
+            {
+                "name": "damper",
+                "kind": "contact",
+                "role": "damper",
+                "x": x,
+                "stiffness": {"v": 2e4, "w": 2e4},
+                "damping": {"v": 150.0, "w": 150.0},
+            }
+        )
+    elif edit == "disk":
+        x = 0.3 * data["shaft"]["x_start"] + 0.7 * data["shaft"]["x_end"]
+        data["disks"] = [{"name": "disk", "x": x, "mass": 5.0, "diametral_inertia": 0.1, "polar_inertia": 0.2}]
+    elif edit == "no_tailboom":
+        data.pop("tailboom", None)
+        data["loads"].pop("point", None)
+    elif edit == "worst":
+        data["loads"]["imbalance_placement"] = "worst"
+
+
+STRUCTURAL = ["tf_controller", "pid_controller", "amb_on_segments", "damper", "disk", "no_tailboom", "worst"]
+
+
+def _extreme(data: dict, edit: str) -> None:
+    amb = _active(data)
+    if edit == "heavy_coupling" and data.get("couplings"):
+        data["couplings"][-1]["polar_inertia"] = 1.0e7
+    elif edit == "integral_gain" and amb is not None and "controller" not in amb:
+        amb["integral_gain"] = 1e15
+    elif edit == "at_rest":
+        data["operating"].update(speed_rpm=0.0, power=0.0)
+    elif edit == "hot_sky":
+        data.setdefault("thermal", {})["sky_temperature_c"] = 400.0
+    elif edit == "fast":
+        data["operating"]["speed_rpm"] = 9.0e5
+    elif edit == "soft_hangers":
+        for bearing in data["bearings"]:
+            if bearing.get("kind") == "contact":
+                bearing["stiffness"] = {k: v * 1e-6 for k, v in bearing["stiffness"].items()}
+
+
+EXTREME = ["heavy_coupling", "integral_gain", "at_rest", "hot_sky", "fast", "soft_hangers"]
+
+designs = st.tuples(
+    st.sampled_from(sorted(BASES)),
+    st.lists(st.sampled_from(STRUCTURAL), max_size=2, unique=True),
+    st.lists(st.sampled_from(EXTREME), max_size=1),
+    st.integers(3, 6),
+)
+
+
+def design_text(example: tuple) -> str:
+    base, structure, extreme, elements = example
+    data = copy.deepcopy(BASES[base])
+    data["mesh"]["shaft_elements"], data["mesh"]["boom_elements"] = elements, 3
+    for edit in structure:
+        _edit(data, edit)
+    for edit in extreme:
+        _extreme(data, edit)
+    return toml_document(data)
+
+
+# ------------------------------------------------------------------------------------------------
+# Options: from the defaults to the documented limits (where an accepted maximum takes more
+# than seconds, the limit is paired with a value that the command's bound refuses up front)
+
+
+def _options(*choices: list) -> st.SearchStrategy:
+    return st.tuples(*(st.sampled_from(c) for c in choices)).map(lambda parts: [a for part in parts for a in part])
+
+
+OPTIONS = {
+    "check": _options([[], ["--json"]]),
+    "modes": _options(
+        [[], ["--speed-rpm", "0"], ["--speed-rpm", "1000000"]],
+        [[], ["--n-modes", "1"], ["--n-modes", "500"]],
+        [[], ["--json"]],
+    ),
+    "stability": _options(
+        [["--n-speeds", "3", "--n-modes", "2"], ["--n-speeds", "30", "--n-modes", "100"]],
+        [[], ["--damping-model", "viscous"], ["--max-rpm", "1000000"]],
+        [[], ["--json"]],
+    ),
+    "thermal": _options(
+        [[], ["--self-heating"]],
+        [[], ["--sweeps"]],
+        [[], ["--loss-model", "rotating", "--convection", "kendoush"]],
+        [[], ["--json"]],
+    ),
+    "runup": _options(
+        [["--duration", "0.05"], ["--duration", "3600"]],
+        [[], ["--start-rpm", "1000"], ["--stop-rpm", "1000000"], ["--stop-rpm", "0", "--start-rpm", "2000"]],
+        [[], ["--dwell", "0.05"], ["--dwell", "3600"]],
+        [[], ["--json"]],
+    ),
+    "montecarlo": _options(
+        [["--samples", "10"]],
+        [[], ["--grade", "4000"], ["--gap-mm", "0.000001", "--force-limit", "1000000000"]],
+        [[], ["--seed", "4611686018427387904"]],
+        [[], ["--json"]],
+    ),
+    "study ply-angle": _options([["--step", "45"], ["--step", "30"]], [[], ["--json"]]),
+    "study two-angle": _options([["--step", "45"]], [[], ["--json"]]),
+    "study wall": _options([[], ["--json"]]),
+    "study gain": _options([[], ["--json"]]),
+    "study buckling": _options([[], ["--json"]]),
+    "study spinup-map": _options(
+        [
+            ["--n-gains", "2", "--n-speeds", "10"],
+            ["--n-gains", "3", "--n-speeds", "20"],
+            ["--n-gains", "400", "--n-speeds", "10000"],
+        ],
+        [[], ["--json"]],
+    ),
+    "study all": _options([[], ["--json"]]),
+    "run": _options([["--studies", "none"]], [[], ["--strict"]], [[], ["--json"]]),
+    "compare": _options([[], ["--json"]]),
+    "optimize": _options([["--budget", "2", "--fidelity", "screening", "--no-verify"]], [[], ["--seed", "7"]]),
+    "validate": _options([["--list"], ["--case", "gibert-spinning-rod"]], [[], ["--json"]]),
+}
+
+#: Examples per command: about 5 s of CPU each.
+EXAMPLES = {
+    "check": 25,
+    "modes": 12,
+    "stability": 8,
+    "thermal": 8,
+    "runup": 8,
+    "montecarlo": 3,
+    "study ply-angle": 4,
+    "study two-angle": 3,
+    "study wall": 2,
+    "study gain": 2,
+    "study buckling": 2,
+    "study spinup-map": 4,
+    "study all": 2,
+    "run": 2,
+    "compare": 2,
+    "optimize": 2,
+    "validate": 3,
+}
+
+#: The verdict's side of stage-1 deferred items 4 and 5 (a divergent bearing, a design at rest)
+#: lands on another branch: until then the commands that assess a design skip those designs.
+ASSESSING = {"run", "compare", "optimize", "study all"}
+
+
+def _snapshot(root: Path, skip: Path) -> dict[str, bytes | None]:
+    """Every file under ``root`` outside ``skip`` with its content (None for a folder)."""
+    out = {}
+    for path in sorted(root.rglob("*")):
+        if path == skip or skip in path.parents:
+            continue
+        out[str(path.relative_to(root))] = None if path.is_dir() else path.read_bytes()
+    return out
+
+
+def _strict(text: str) -> Any:
+    def refuse(constant: str) -> Any:
+        raise AssertionError(f"{constant} in the JSON output")
+
+    return json.loads(text, parse_constant=refuse)
+
+
+def run_command(root: Path, command: str, example: tuple, options: list[str]) -> int:
+    """Run one example in ``root`` and check every property; returns the exit code."""
+    import shutil
+
+    designs, work = root / "designs", root / "work"
+    out = work / "out"
+    shutil.rmtree(work, ignore_errors=True)
+    designs.mkdir(exist_ok=True)
+    work.mkdir()
+    files = []
+    for k, part in enumerate([example] if command != "compare" else [example, (*example[:1], [], [], 3)]):
+        path = designs / f"d{k}.toml"
+        path.write_text(design_text(part), encoding="utf-8")
+        files.append(str(path))
+    args = command.split()
+    if command in ("validate",):
+        files = []
+    elif command not in ("check", "modes", "stability", "thermal"):
+        args += ["--out", str(out)]
+    before = _snapshot(root, out)
+    with contextlib.chdir(work), time_limit(TIMEOUT):
+        result = runner.invoke(app, [*args, *files, *options])
+    message = f"{command} {options} on {example}: exit {result.exit_code}\n{result.output[-3000:]}"
+    assert result.exit_code in (0, 2, 3), message
+    assert "Traceback" not in result.output and "internal error" not in result.output, message
+    if result.exit_code == 2:
+        assert result.stderr.startswith("error: ") and len(result.stderr) > 20, message
+    assert _snapshot(root, out) == before, f"files written outside the output folder: {message}"
+    if "--json" in options and result.exit_code in (0, 3) and result.stdout.strip():
+        _strict(result.stdout)
+    return result.exit_code
+
+
+def _fuzz(command: str, tmp_path_factory: pytest.TempPathFactory) -> dict[int, int]:
+    root = tmp_path_factory.mktemp("fuzz")
+    codes: dict[int, int] = {}
+    strategy = st.tuples(designs, OPTIONS[command])
+    if command in ASSESSING:
+        strategy = strategy.filter(lambda e: not set(e[0][2]) & {"at_rest", "integral_gain"})
+
+    @settings(
+        max_examples=EXAMPLES[command],
+        deadline=None,
+        derandomize=True,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )
+    @given(strategy)
+    def body(example) -> None:
+        design, options = example
+        code = run_command(root, command, design, options)
+        codes[code] = codes.get(code, 0) + 1
+
+    body()
+    assert sum(codes.values()) >= 0.9 * EXAMPLES[command]
+    return codes
+
+
+FAST = [c for c in OPTIONS if c not in ("study all", "compare")]
+
+
+@pytest.mark.parametrize("command", FAST)
+def test_every_command_ends_cleanly(command: str, tmp_path_factory: pytest.TempPathFactory) -> None:
+    if command == "optimize":
+        pytest.importorskip("pymoo")
+    codes = _fuzz(command, tmp_path_factory)
+    assert set(codes) <= {0, 2, 3}
+
+
+@pytest.mark.slow  # two assessments at the report's resolution per example: ~10 s of CPU each
+@pytest.mark.parametrize("command", ["study all", "compare"])
+def test_the_assessing_commands_end_cleanly(command: str, tmp_path_factory: pytest.TempPathFactory) -> None:
+    codes = _fuzz(command, tmp_path_factory)
+    assert set(codes) <= {0, 2, 3}

@@ -1,0 +1,134 @@
+"""Edit and rerun (issue 28, point 1): each design file has its own results folder, and a rerun
+of the same file replaces its own earlier results, also after the file was edited.
+
+The bar of the issue: from a fresh folder, the README's quick start (``flexshaft run``, the
+embedded design into ``flexshaft-results/``), then ``flexshaft baseline > my.toml && flexshaft
+run my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without ``--force``.
+It runs as a user would (subprocesses, default options) and is marked slow: three full runs
+with the thesis studies, about 40 s of CPU. The fast tests below check the same rules with
+``--studies none`` on a coarse mesh, and that another design's folder is still refused with a
+message that tells the two designs apart.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flexshaft.cli import app
+from flexshaft.cli.output import MARKER, default_output_folder
+from flexshaft.design import baseline_text
+
+runner = CliRunner()
+
+SMALL = (
+    baseline_text()
+    .replace("shaft_elements = 36", "shaft_elements = 6", 1)
+    .replace("boom_elements = 24", "boom_elements = 4", 1)
+)
+WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
+
+
+def _flexshaft(cwd: Path, *args: str, stdout=None) -> subprocess.CompletedProcess:
+    code = "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"
+    return subprocess.run(
+        [sys.executable, "-c", code, *args],
+        cwd=cwd,
+        stdout=stdout if stdout is not None else subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=600,
+        env={**os.environ, "OPENBLAS_NUM_THREADS": "1"},
+    )
+
+
+def _edit_wall(path: Path, wall: float) -> None:
+    text = path.read_text(encoding="utf-8")
+    assert WALL.search(text), "the design file has a shaft wall_thickness line"
+    path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
+
+
+@pytest.mark.slow  # three full `flexshaft run`s with the thesis studies, as a user types them: ~40 s CPU
+def test_the_readme_loop_runs_without_force(tmp_path: Path) -> None:
+    quick = _flexshaft(tmp_path, "run")
+    assert quick.returncode == 0, quick.stderr
+    assert (tmp_path / "flexshaft-results" / "report.html").is_file()
+    with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
+        assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
+    first = _flexshaft(tmp_path, "run", "my.toml")
+    assert first.returncode == 0, first.stderr
+    results = tmp_path / "my-results" / "results.json"
+    wall_before = json.loads(results.read_text())["summary"]
+    _edit_wall(tmp_path / "my.toml", 0.0035)
+    second = _flexshaft(tmp_path, "run", "my.toml")
+    assert second.returncode == 0, second.stderr
+    assert "--force" not in second.stderr
+    assert json.loads(results.read_text())["summary"]["shaft_mass_kg"] > wall_before["shaft_mass_kg"]
+    marker = json.loads((tmp_path / "my-results" / MARKER).read_text())
+    assert marker["complete"] is True and marker["design_source"] == str((tmp_path / "my.toml").resolve())
+
+
+def test_the_default_folder_follows_the_design() -> None:
+    assert default_output_folder(None, "results") == Path("flexshaft-results")
+    assert default_output_folder(Path("designs/my.toml"), "results") == Path("my-results")
+    assert default_output_folder(Path("b.toml"), "study-wall") == Path("b-study-wall")
+
+
+def test_an_edited_design_replaces_its_own_results(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    design = tmp_path / "my.toml"
+    design.write_text(SMALL, encoding="utf-8")
+    first = runner.invoke(app, ["study", "ply-angle", "my.toml", "--step", "30"])
+    assert first.exit_code == 0, first.output
+    out = tmp_path / "my-study-ply-angle"
+    (out / "notes.txt").write_text("mine")  # the user's own file in the folder is kept
+    chunks = sorted(p.name for p in (out / "chunks").iterdir())
+    old = (out / "results.nc").read_bytes()
+    _edit_wall(design, 0.0035)
+    second = runner.invoke(app, ["study", "ply-angle", "my.toml", "--step", "30"])
+    assert second.exit_code == 0, second.output
+    assert (out / "notes.txt").read_text() == "mine"
+    assert (out / "results.nc").read_bytes() != old  # computed afresh for the edited design
+    assert sorted(p.name for p in (out / "chunks").iterdir()) == chunks  # the old chunks were replaced
+    marker = json.loads((out / MARKER).read_text())
+    assert marker["complete"] is True and "notes.txt" not in marker["entries"]
+
+
+def test_another_design_is_refused_and_told_apart(tmp_path: Path, monkeypatch) -> None:
+    """Was: "another design ('My design…', not 'My design…')": the same title twice."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "a.toml").write_text(SMALL, encoding="utf-8")
+    (tmp_path / "b.toml").write_text(SMALL.replace("wall_thickness = 0.003", "wall_thickness = 0.0035", 1))
+    assert runner.invoke(app, ["study", "ply-angle", "a.toml", "--step", "30", "-o", "shared"]).exit_code == 0
+    refused = runner.invoke(app, ["study", "ply-angle", "b.toml", "--step", "30", "-o", "shared"])
+    assert refused.exit_code == 2
+    message = refused.stderr
+    assert f"from {tmp_path / 'a.toml'}" in message and f"from {tmp_path / 'b.toml'}" in message
+    fingerprints = re.findall(r"fingerprint ([0-9a-f]{12})", message)
+    assert len(fingerprints) == 2 and fingerprints[0] != fingerprints[1]
+    assert "--force" in message
+    forced = runner.invoke(app, ["study", "ply-angle", "b.toml", "--step", "30", "-o", "shared", "--force"])
+    assert forced.exit_code == 0, forced.output
+
+
+def test_a_rerun_of_the_same_file_in_run_needs_no_force(tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    design = tmp_path / "my.toml"
+    design.write_text(SMALL, encoding="utf-8")
+    assert runner.invoke(app, ["run", "my.toml", "--studies", "none"]).exit_code == 0
+    results = tmp_path / "my-results" / "results.json"
+    mass = json.loads(results.read_text())["summary"]["shaft_mass_kg"]
+    _edit_wall(design, 0.0035)
+    again = runner.invoke(app, ["run", "my.toml", "--studies", "none"])
+    assert again.exit_code == 0, again.output
+    # the folder holds the edited design's results: a 0.0035 m wall instead of 0.003 m weighs
+    # 7/6 as much (the tube's mass is proportional to its wall at a fixed outer diameter, up to
+    # the mean-radius change: within 3 %)
+    assert json.loads(results.read_text())["summary"]["shaft_mass_kg"] == pytest.approx(mass * 7 / 6, rel=0.03)
