@@ -109,6 +109,36 @@ def test_the_tuned_design_passes_at_every_point_and_says_where_each_check_govern
     assert a.governing_point in names and a.point(a.governing_point).analyses is not None
 
 
+def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(tuned_screening):
+    """results.json's ``envelope`` holds each point's conditions and own verdict, the report's
+    table one row per point, the terminal's line the governing point: all read the same
+    assessment, whose governing point has the tightest check of any point."""
+    from flexshaft.report.results_json import results_json
+    from flexshaft.verdict.envelope import relative_margin, tightest_check
+    from flexshaft.verdict.text import envelope_line, envelope_rows
+
+    a = tuned_screening
+    data = results_json(a)["envelope"]
+    assert data["governing_point"] == a.governing_point
+    assert [p["name"] for p in data["points"]] == [p.name for p in a.points]
+    for entry, point in zip(data["points"], a.points):
+        assert entry["material_temperature_c"] == pytest.approx(point.analyses.conditions.material_temperature_c)
+        assert entry["passed"] == point.verdict.passed
+        for c in point.verdict.checks:
+            assert entry["checks"][c.key]["status"] == c.status and entry["checks"][c.key]["value"] == c.value
+    # the governing point's tightest check is the tightest of all points' (relative margin)
+    tightest = {p.name: relative_margin(tightest_check(p.verdict)) for p in a.points}
+    assert tightest[a.governing_point] == min(tightest.values())
+    assert data["points"][[p.name for p in a.points].index(a.governing_point)]["tightest_check"] == (
+        tightest_check(a.point(a.governing_point).verdict).key
+    )
+    rows = envelope_rows(a)
+    assert [r[0] for r in rows if r[0].endswith("(governs)")] == [f"{a.governing_point} (governs)"]
+    assert f"governed by {a.governing_point} (" in envelope_line(a)
+    nominal = assess(with_overrides(tuned_design(), {"envelope": None}), SCREENING)
+    assert results_json(nominal)["envelope"] is None and envelope_rows(nominal) == [] and envelope_line(nominal) == ""
+
+
 def _failed(design, key):
     a = assess(design, SCREENING)
     assert [c.key for c in a.verdict.failed] == [key], a.verdict.summary

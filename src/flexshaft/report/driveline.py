@@ -84,7 +84,7 @@ def plan_run_report(
     op_rpm = rad_s_to_rpm(model.speed)
     s = data["summary"]
     sections = []
-    section = verdict_section(a.verdict, op_rpm)
+    section = verdict_section(a.verdict, op_rpm, a)
     ref = figs.result(
         "verdict_margins",
         "Margin of each requirement divided by its limit (green pass, red fail)",

@@ -20,7 +20,7 @@ from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.operating_point import PointAnalyses
 from flexshaft.verdict.result import Check, Finding, Verdict
 
-__all__ = ["PointAssessment", "envelope_verdict", "governing_point", "relative_margin"]
+__all__ = ["PointAssessment", "envelope_verdict", "governing_point", "relative_margin", "tightest_check"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -71,7 +71,10 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
         name, worst = min(evaluated, key=lambda item: _severity(item[1]))
         findings = tuple(_at_point(f, n) for n, c in evaluated for f in c.findings)
         skipped = [n for n, c in checks if c.status == "not evaluated"]
-        note = f"worst of {len(evaluated)} points: {name}" + (f"; {worst.note}" if worst.note else "")
+        if worst.value is None and worst.status == "pass":  # passed without a number everywhere: no worst point
+            note = f"at each of {len(evaluated)} points" + (f": {worst.note}" if worst.note else "")
+        else:
+            note = f"worst of {len(evaluated)} points: {name}" + (f"; {worst.note}" if worst.note else "")
         if skipped:
             note += f"; not evaluated at {', '.join(skipped)}"
         # (a check passed without a number, e.g. no phase crossover anywhere, has no worst point)
@@ -80,15 +83,19 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
     return Verdict(tuple(combined))
 
 
+def tightest_check(verdict: Verdict) -> Check | None:
+    """The verdict's tightest evaluated check: failing first, then the smallest margin relative to
+    its limit (:func:`relative_margin`); None when no check was evaluated."""
+    evaluated = [c for c in verdict.checks if c.status != "not evaluated"]
+    return min(evaluated, key=_severity, default=None)
+
+
 def governing_point(points: Sequence[PointAssessment]) -> str:
-    """The point of the tightest evaluated check (failing first, then the smallest margin relative
-    to its limit); the first point when no check was evaluated."""
+    """The point of the tightest evaluated check (:func:`tightest_check`, the first such point on
+    a tie); the first point when no check was evaluated."""
     best = None
     for p in points:
-        for c in p.verdict.checks:
-            if c.status == "not evaluated":
-                continue
-            key = _severity(c)
-            if best is None or key < best[0]:
-                best = (key, p.name)
+        check = tightest_check(p.verdict)
+        if check is not None and (best is None or _severity(check) < best[0]):
+            best = (_severity(check), p.name)
     return points[0].name if best is None else best[1]
