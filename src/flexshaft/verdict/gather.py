@@ -25,7 +25,7 @@ from flexshaft.verdict.evidence import (
     ModeDamping,
     TorsionalEvidence,
 )
-from flexshaft.verdict.operating_point import PointAnalyses
+from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes
 
 __all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence"]
 
@@ -62,14 +62,15 @@ def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     From the damped modes at the operating speed (the model's damping physics). Only lateral
     modes with at least :data:`WHIRL_DAMPING_SHAFT_SHARE` of their kinetic energy in the shaft
     count: API 617's log-decrement criterion concerns the rotor's whirl modes; boom-only modes
-    (damped by the structure, η/2) and torsional or axial modes cannot whirl and are excluded.
+    (damped by the structure, η/2) and torsional or axial modes cannot whirl and are excluded, as
+    are real and overdamped roots (:func:`~flexshaft.verdict.operating_point.whirl_modes`: the
+    controllers' states; a divergent root fails the onset check).
     """
     m = p.modes_at_speed
+    whirl = whirl_modes(m)
     out = []
     for k in range(m.eigenvalues.size):
-        if m.kind[k] != "lateral" or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE:
-            continue
-        if m.eigenvalues[k].imag <= 0:  # a divergent real root is no vibration: the onset check fails it
+        if not whirl[k] or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE or m.eigenvalues[k].imag <= 0:
             continue
         label = f"{k + 1} ({m.whirl[k]}, {m.component[k]})"
         out.append(ModeDamping(label, float(abs(m.eigenvalues[k].imag)), float(m.log_decrements[k])))

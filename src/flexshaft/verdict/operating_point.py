@@ -78,7 +78,7 @@ from flexshaft.thermal.study import ThermalResults
 from flexshaft.units import celsius_to_kelvin
 from flexshaft.verdict.point_tasks import campbell_task, independent_tasks, report_buckling, report_thermal
 
-__all__ = ["PointAnalyses", "add_report_detail", "analyse_point"]
+__all__ = ["OVERDAMPED_RATIO", "PointAnalyses", "add_report_detail", "analyse_point", "lateral_modes", "whirl_modes"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -319,13 +319,28 @@ def add_report_detail(p: PointAnalyses, resolution: Resolution | None = None) ->
     )
 
 
+#: Roots with at least this damping ratio are no whirl modes: overdamped or real roots (the
+#: controllers' integrator, derivative-filter and amplifier states, a divergence), which come
+#: first in frequency order; ζ = 0.99 is a log decrement of 44.
+OVERDAMPED_RATIO = 0.99
+
+
+def whirl_modes(found: Modes) -> np.ndarray:
+    """Mask of the lateral vibration modes of ``found``: lateral, with a damping ratio below
+    :data:`OVERDAMPED_RATIO` (not a real or overdamped root)."""
+    s = np.asarray(found.eigenvalues)
+    zeta = -s.real / np.where(np.abs(s) > 0, np.abs(s), 1.0)
+    return (np.asarray(found.kind) == "lateral") & (zeta < OVERDAMPED_RATIO)
+
+
 def lateral_modes(model: Model, speed: float, n_lateral: int) -> Modes:
-    """Damped modes at ``speed`` [rad/s], the lowest ones, until ``n_lateral`` of them are lateral
-    (the torsional and axial modes among them do not take the whirl modes' places)."""
+    """Damped modes at ``speed`` [rad/s], the lowest ones, until ``n_lateral`` of them are
+    lateral vibration modes (:func:`whirl_modes`): the torsional and axial modes and the real
+    roots of the controllers' states among them do not take the whirl modes' places."""
     n = int(n_lateral)
     found = modes(model, speed, n)
-    for _ in range(4):
-        missing = n_lateral - int(np.sum(found.kind == "lateral"))
+    for _ in range(6):
+        missing = n_lateral - int(np.sum(whirl_modes(found)))
         if missing <= 0 or found.eigenvalues.size >= model.dofs.free.size:
             break
         n = min(n + missing, model.dofs.free.size)
