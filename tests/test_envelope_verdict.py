@@ -115,7 +115,7 @@ def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(
     assessment, whose governing point has the tightest check of any point."""
     from flexshaft.report.results_json import results_json
     from flexshaft.verdict.envelope import relative_margin, tightest_check
-    from flexshaft.verdict.text import envelope_line, envelope_rows
+    from flexshaft.verdict.envelope_text import envelope_line, envelope_rows
 
     a = tuned_screening
     data = results_json(a)["envelope"]

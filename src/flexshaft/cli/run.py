@@ -208,7 +208,7 @@ def _print_run(assessment, data: dict, page: Path, seconds: float, path: Path | 
         verdict_table,
     )
     from flexshaft.units import m_to_mm
-    from flexshaft.verdict.text import envelope_line
+    from flexshaft.verdict.envelope_text import envelope_line
 
     console = stdout_console()
     s = data["summary"]

@@ -8,15 +8,13 @@ from __future__ import annotations
 
 from flexshaft.report.html import Section, Table
 from flexshaft.units import format_quantity  # re-exported
-from flexshaft.verdict.text import (  # re-exported
+from flexshaft.verdict.envelope_text import (
     ENVELOPE_COLUMNS,
-    VERDICT_COLUMNS,
     envelope_line,
     envelope_rows,
     governing_text,
-    location_text,
-    verdict_rows,
-)
+)  # re-exported
+from flexshaft.verdict.text import VERDICT_COLUMNS, location_text, verdict_rows  # re-exported
 
 __all__ = [
     "ENVELOPE_COLUMNS",
