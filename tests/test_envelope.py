@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from flexshaft.design import DesignError, embedded_design, tuned_design, with_overrides
+from flexshaft.design import DesignError, baseline_design, embedded_design, tuned_design, with_overrides
 from flexshaft.design.envelope import DEFAULT_ENVELOPE_POINTS, Envelope, EnvelopePoint
 from flexshaft.design.points import design_at_point
 from flexshaft.strength import compressive_strength
@@ -32,9 +32,20 @@ def at(design, point):
 
 
 def test_default_envelope_and_the_packaged_files_agree(design):
-    """Without [envelope] the three documented points apply; the packaged files spell them out."""
+    """An [envelope] without points holds the three documented points (a design without one is
+    judged at its own operating point: design.envelope is None); the baseline file spells them
+    out; the tuned file adds the hot day at full power and runs the hot-soak start on the ground
+    (75 kW, about 30 % of the power; 1 g of the 3.5 g)."""
     assert [p.name for p in Envelope().points] == ["cold_day", "standard_day", "hot_soak_start"]
-    assert design.envelope == Envelope()
+    assert baseline_design().envelope == Envelope()
+    assert [p.name for p in design.envelope.points] == ["cold_day", "standard_day", "hot_day", "hot_soak_start"]
+    cold_day, standard_day, hot_day, hot_soak = design.envelope.points
+    assert (cold_day, standard_day) == DEFAULT_ENVELOPE_POINTS[:2]
+    assert (hot_day.ambient_temperature_c, hot_day.material_temperature, hot_day.power) == (None, "shaft_air", None)
+    assert hot_soak.material_temperature == "parked" and hot_soak.power == pytest.approx(
+        0.3 * design.operating.power, rel=0.02
+    )
+    assert hot_soak.load_scale == pytest.approx(1.0 / 3.5, rel=1e-9)
     cold, standard, hot = DEFAULT_ENVELOPE_POINTS
     assert (cold.ambient_temperature_c, cold.material_temperature) == (-40.0, "ambient")
     assert (standard.ambient_temperature_c, standard.material_temperature) == (15.0, "shaft_air")

@@ -14,6 +14,7 @@ import flexshaft as fs
 from flexshaft.analyses import campbell, stability
 from flexshaft.analyses.eigen import lowest_modes
 from flexshaft.design import embedded_design
+from flexshaft.thesis.designs import thesis_tuned_design
 
 #: Modal basis shared by the three analyses compared, so that they solve the same reduced
 #: problem; each refines its roots by Newton's method to 1e-10 relative (analyses.eigen), so
@@ -34,7 +35,7 @@ def test_lowest_modes_picks_by_damped_frequency_among_the_lowest_undamped():
 
 
 def test_modes_are_numbered_by_damped_frequency_and_a_short_list_starts_a_long_one():
-    model = fs.build_model(embedded_design("tuned"))
+    model = fs.build_model(thesis_tuned_design())  # the design of the issue (the tuned design as the thesis tuned it)
     for speed in (0.0, model.speed):
         short = fs.modes(model, speed, 10, basis_size=BASIS)
         long = fs.modes(model, speed, 12, basis_size=BASIS)

@@ -23,7 +23,15 @@ xr = pytest.importorskip("xarray")
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
-from flexshaft.design import baseline_design, embedded_design, load_design, loads_design, tuned_design, with_overrides
+from flexshaft.design import (
+    baseline_design,
+    design_from_dict,
+    embedded_design,
+    load_design,
+    loads_design,
+    tuned_design,
+    with_overrides,
+)
 from flexshaft.optimize import (
     DesignProblem,
     DesignVariable,
@@ -163,8 +171,10 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close(name):
     baseline, a thinner re-laid tuned and the segmented designs; the bound 5 % says the screening
     ranks designs, the final ones are re-verified with the full run), and every status is the
     same. Two designs (CPU budget, issue 23): the Table 3.1 baseline, one-piece FMC failing
-    several checks, and the segmented aluminium driveline (metal strength, coupling angles)."""
-    designs = [baseline_design() if name == "baseline" else embedded_design("current")]
+    several checks, and the segmented aluminium driveline (metal strength, coupling angles), each
+    at its nominal point (the envelope repeats the same analyses at each point)."""
+    design = baseline_design() if name == "baseline" else embedded_design("current")
+    designs = [with_overrides(design, {"envelope": None})]
     for design in designs:
         full = assess(design, REPORT)
         lean = evaluate_design(design, "verdict")
@@ -186,7 +196,9 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
     check (status, value, margin), and its outputs (what the search reads: status codes,
     normalised margins, objective values) are those of the run's checks, bit for bit: the same
     functions on the same numbers, so no tolerance. The segmented aluminium driveline adds the
-    metal-strength and coupling checks, the tuned design the laminate's and the actuators'."""
+    metal-strength and coupling checks (at its nominal point), the tuned design the laminate's and
+    the actuators' (at its hottest envelope point, an envelope of one: the optimizer judges the
+    envelope's points as the run does)."""
     values = {
         "buckling": "buckling_safety_factor",
         "whirl_damping": "min_log_decrement",
@@ -195,7 +207,9 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
         "temperature": "max_temperature",
         "spinup_deflection": "spinup_deflection",
     }
-    for design in (tuned_design(), embedded_design("current")):
+    tuned = tuned_design().model_dump()
+    tuned["envelope"]["points"] = [tuned["envelope"]["points"][k] for k in (-1,)]
+    for design in (design_from_dict(tuned), with_overrides(embedded_design("current"), {"envelope": None})):
         run = assess(design, SCREENING)
         optimizer = evaluate_design(design, "screening")
         assert [(c.key, c.status, c.value, c.margin) for c in optimizer.verdict.checks] == [

@@ -174,6 +174,11 @@ def test_written_design_keeps_every_comment_and_marks_changed_keys(tmp_path, nam
         assert marked == [
             "mass = 1.5  # optimized: was 1.4; base note: kg, sealed ball bearing, housing and bracket (assumed)"
         ]
+    elif name == "tuned":
+        assert marked == [
+            "wall_thickness = 0.002  # optimized: was 0.00375; base note: m, 12 equal plies of 0.3125 mm "
+            "(tuned: kink-band Tsai-Wu factor on the hot day)"
+        ]
     else:
         assert marked == ["wall_thickness = 0.002  # optimized: was 0.003; base note: m, 8 equal plies (assumed)"]
 

@@ -28,10 +28,15 @@ from flexshaft.design import baseline_text
 
 runner = CliRunner()
 
-SMALL = (
+#: The baseline on a coarse mesh, judged at its nominal point (without its envelope's points:
+#: what these tests check does not depend on them, and each point is a whole assessment).
+SMALL = re.sub(
+    r"\[\[envelope\.points\]\].*?(?=\n# -+\n\[mesh\])",
+    "",
     baseline_text()
     .replace("shaft_elements = 36", "shaft_elements = 6", 1)
-    .replace("boom_elements = 24", "boom_elements = 4", 1)
+    .replace("boom_elements = 24", "boom_elements = 4", 1),
+    flags=re.S,
 )
 WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
 

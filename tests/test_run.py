@@ -100,6 +100,7 @@ def test_stability_command_compares_the_thesis_shafts():
     assert set(data["shafts"]) == {"design", "aluminium 6061-T6", "(45/-45)s FMC", "(45/-45/0/0)s FMC"}
 
 
+@pytest.mark.slow(reason="a full run of the tuned design at its four envelope points (~6 s of CPU)")
 def test_run_json_option_prints_the_key_results(tmp_path):
     result = CliRunner().invoke(app, ["run", "--out", str(tmp_path), "--json", "--studies", "none"])
     assert result.exit_code == 0

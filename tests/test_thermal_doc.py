@@ -46,6 +46,7 @@ from flexshaft.thermal.options import matrix_law_from, thermal_options
 from flexshaft.thermal.selfheating import runaway_onset, self_heating
 from flexshaft.thermal.study import convection_sweep, wall_thickness_sweep
 from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
+from flexshaft.thesis.designs import thesis_tuned_design
 from flexshaft.units import celsius_to_kelvin, kelvin_to_celsius
 
 PAGE = Path(__file__).resolve().parents[1] / "docs" / "thermal.md"
@@ -243,10 +244,12 @@ def sweeps() -> tuple[np.ndarray, np.ndarray]:
 
 @functools.cache
 def envelope_rows() -> dict[str, dict[str, float]]:
-    """The tuned design at each envelope point: T_m [°C], G_LT [MPa], η_LT, kink-band X_c [MPa],
-    Tsai-Wu safety factor with the kink-band X_c and with the file's (static + imbalance at the
-    point's speed, residual stress at T_m), and the critical ply's thermal residual σ2 [MPa]."""
-    design = tuned_design()
+    """The thesis's tuned design ((55/-55/0/0)s, 3 mm, K_d 560) at each default envelope point:
+    T_m [°C], G_LT [MPa], η_LT, kink-band X_c [MPa], Tsai-Wu safety factor with the kink-band X_c
+    and with the file's (static + imbalance at the point's speed, the secant residual stress at
+    T_m that the strength analysis takes on its own), and the critical ply's thermal residual σ2
+    [MPa]."""
+    design = thesis_tuned_design()
     rows = {}
     for conditions in envelope_conditions(design):
         at_point = design_at_point(design, conditions.point, conditions)

@@ -17,7 +17,7 @@ from flexshaft.analyses.criticals import LateralCritical
 from flexshaft.design import DesignError, baseline_design, baseline_text, loads_design
 from flexshaft.design.requirements import Requirements, log_decrement_from_damping_ratio
 from flexshaft.verdict.checks import evaluate, whirl_onset_check
-from flexshaft.verdict.evidence import ActuatorEvidence, Evidence, ModeDamping
+from flexshaft.verdict.evidence import ActuatorEvidence, Evidence, LoopEvidence, ModeDamping, TorsionalEvidence
 
 OP = 4800.0 * 2.0 * math.pi / 60.0  # operating speed [rad/s]
 KEYS = [
@@ -26,8 +26,12 @@ KEYS = [
     "whirl_onset",
     "whirl_damping",
     "separation",
+    "torsional_separation",
     "actuator_orbit",
     "actuator_force",
+    "loop_sensitivity",
+    "loop_gain_margin",
+    "loop_phase_margin",
     "temperature",
     "spinup_deflection",
 ]
@@ -58,6 +62,18 @@ def passing_evidence() -> Evidence:
         allowable_temperature=373.15,
         spinup_peak=1e-3,
         spinup_location={"station": 4.42, "speed": 0.7 * OP},
+        torsional_modes=(
+            TorsionalEvidence(
+                "T1", 2 * math.pi * 7.0, 0.23, "main rotor 2/rev", (2 * math.pi * 9.15, 2 * math.pi * 10.1)
+            ),
+            TorsionalEvidence(
+                "T2", 2 * math.pi * 140.0, 0.43, "tail rotor 4/rev", (2 * math.pi * 88.9, 2 * math.pi * 98.2)
+            ),
+        ),
+        loops=(
+            LoopEvidence("amb_1", "v", OP, 1.8, 2 * math.pi * 50.0, 12.0, -8.0, math.radians(40.0), 2 * math.pi * 49.0),
+            LoopEvidence("amb_1", "w", OP, 1.9, 2 * math.pi * 51.0, None, None, math.radians(35.0), 2 * math.pi * 50.0),
+        ),
     )
 
 
@@ -73,8 +89,8 @@ def only_failure(verdict, key: str):
 def test_the_passing_design_passes_every_check() -> None:
     verdict = evaluate(passing_evidence(), REQUIREMENTS)
     assert verdict.passed and not verdict.not_evaluated
-    assert [c.status for c in verdict.checks] == ["pass"] * 9
-    assert repr(verdict) == "Verdict(PASS: 9 pass)"
+    assert [c.status for c in verdict.checks] == ["pass"] * 13
+    assert repr(verdict) == "Verdict(PASS: 13 pass)"
     json.dumps(verdict.to_dict())  # JSON-ready
 
 
@@ -184,6 +200,38 @@ def test_spinup_orbit_over_the_limit() -> None:
     assert check.location == {"station": 4.42, "speed": pytest.approx(0.7 * OP)}
 
 
+def test_torsional_separation_fails_at_the_mode_inside_an_excitation_band() -> None:
+    """T2 at 95 Hz inside the tail rotor's 4/rev band 88.9-98.2 Hz: margin 0 < 10 %; T1 passes."""
+    modes = (
+        passing_evidence().torsional_modes[0],
+        TorsionalEvidence("T2", 2 * math.pi * 95.0, 0.0, "tail rotor 4/rev", (2 * math.pi * 88.9, 2 * math.pi * 98.2)),
+    )
+    ev = dataclasses.replace(passing_evidence(), torsional_modes=modes)
+    check = only_failure(evaluate(ev, REQUIREMENTS), "torsional_separation")
+    assert (check.value, check.limit, check.margin) == pytest.approx((0.0, 0.1, -0.1))
+    assert check.location["mode"] == "T2" and check.location["case"] == "tail rotor 4/rev"
+    assert check.location["frequency"] == pytest.approx(2 * math.pi * 95.0)
+    assert [f.passed for f in check.findings] == [True, False]
+
+
+def test_loop_checks_fail_at_the_worst_axis() -> None:
+    """A zone-C peak (4.5 > 4), a 3 dB gain fall (< 6 dB) and a 20° phase margin (< 30°) on
+    amb_1 w; amb_1 v passes all three."""
+    v, w = passing_evidence().loops
+    for changes, key, expected in (
+        ({"peak_sensitivity": 4.5}, "loop_sensitivity", (4.5, 4.0, -0.5)),
+        ({"gain_margin_lower": -3.0}, "loop_gain_margin", (3.0, 6.0, -3.0)),
+        ({"phase_margin": math.radians(20.0)}, "loop_phase_margin", tuple(map(math.radians, (20.0, 30.0, -10.0)))),
+    ):
+        ev = dataclasses.replace(passing_evidence(), loops=(v, dataclasses.replace(w, **changes)))
+        check = only_failure(evaluate(ev, REQUIREMENTS), key)
+        assert (check.value, check.limit, check.margin) == pytest.approx(expected)
+        assert check.location["actuator"] == "amb_1 (w)"
+    # a loop with neither phase crossover has no finite gain margin: it is not a finding
+    gm = evaluate(passing_evidence(), REQUIREMENTS).check("loop_gain_margin")
+    assert len(gm.findings) == 2 and gm.value == 8.0  # amb_1 v's gain fall, the nearer of its two
+
+
 # ------------------------------------------------------------------------------------------------
 # Not evaluated
 
@@ -199,16 +247,18 @@ def test_missing_evidence_and_limits_are_not_evaluated_with_the_reason() -> None
         notes={"tsai_wu": "ply strength needs a lamina shaft material"},
     )
     verdict = evaluate(ev, Requirements())  # no spin-up limit by default
-    assert [c.status for c in verdict.checks] == ["not evaluated"] * 9
-    assert verdict.passed and len(verdict.not_evaluated) == 9  # nothing failed, nothing passed
+    # (no loops: the loop checks are not listed; no torsional modes: not evaluated)
+    assert [c.status for c in verdict.checks] == ["not evaluated"] * 10
+    assert verdict.passed and len(verdict.not_evaluated) == 10  # nothing failed, nothing passed
     notes = {c.key: c.note for c in verdict.checks}
     assert notes["tsai_wu"] == "ply strength needs a lamina shaft material"
     assert notes["actuator_orbit"] == "no gap given on the active bearings (amb_1, amb_2)"
     assert notes["actuator_force"] == "no force_capacity given on the active bearings (amb_1, amb_2)"
     assert notes["spinup_deflection"] == "no limit given ([requirements] max_spinup_deflection)"
     assert notes["temperature"] == "no shaft thermal result"
+    assert notes["torsional_separation"] == "no torsional modes"
     assert all(c.value is None and c.margin is None for c in verdict.checks)
-    assert "9 not evaluated" in verdict.summary
+    assert "10 not evaluated" in verdict.summary
 
 
 def test_a_gap_on_one_actuator_only_is_evaluated_there() -> None:
@@ -320,6 +370,8 @@ def test_adapter_on_a_run_reports_what_it_cannot_evaluate() -> None:
         "actuator_force": "not evaluated",
         "temperature": "not evaluated",
         "spinup_deflection": "not evaluated",
+        # its first torsional mode (388 Hz, free twist against the held end) is far from 1/rev
+        "torsional_separation": "pass",
     }
     # the adapter passes the run's numbers through unchanged
     onset = verdict.check("whirl_onset")
@@ -344,7 +396,7 @@ def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
     from flexshaft.design import tuned_design, with_overrides
     from flexshaft.verdict.assess import assess
 
-    tuned = tuned_design()
+    tuned = with_overrides(tuned_design(), {"envelope": None})  # the nominal point: the envelope adds nothing here
     pd = assess(tuned)
     for a, ev in zip(pd.model.actuators, pd.evidence.actuators):
         offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))

@@ -19,7 +19,15 @@ import pytest
 from flexshaft.analyses.criticals import LateralCritical
 from flexshaft.design.requirements import Requirements
 from flexshaft.verdict.checks import evaluate, whirl_onset_check
-from flexshaft.verdict.evidence import ActuatorEvidence, CouplingEvidence, Evidence, MetalEvidence, ModeDamping
+from flexshaft.verdict.evidence import (
+    ActuatorEvidence,
+    CouplingEvidence,
+    Evidence,
+    LoopEvidence,
+    MetalEvidence,
+    ModeDamping,
+    TorsionalEvidence,
+)
 from flexshaft.verdict.result import Finding
 
 OP = 400.0  # operating speed [rad/s]
@@ -29,6 +37,10 @@ REQ = Requirements(
     min_onset_margin=0.25,
     min_log_decrement=0.125,
     max_spinup_deflection=0.005,
+    min_torsional_separation=0.125,
+    max_sensitivity_peak=4.0,
+    min_gain_margin_db=6.0,
+    min_phase_margin_deg=30.0,
 )
 REQUIRED_ONSET = 500.0  # (1 + 0.25) × 400, exact
 GAP = 0.5**12  # m
@@ -69,6 +81,8 @@ def evidence_on_every_limit(**changes) -> Evidence:
         coupling_angles=(
             CouplingEvidence("coupling_1", 0.79, ALLOWABLE_ANGLE / 2, ALLOWABLE_ANGLE / 2, ALLOWABLE_ANGLE),
         ),
+        torsional_modes=(TorsionalEvidence("T1", 90.0, 0.125, "shaft 1/rev", (80.0, 80.0)),),
+        loops=(LoopEvidence("amb", "v", OP, 4.0, 300.0, 6.0, -6.0, math.radians(30.0), 310.0),),
     )
     return dataclasses.replace(on_limits, **changes)
 
@@ -90,8 +104,12 @@ def test_a_margin_of_exactly_zero_passes_every_check():
         "whirl_onset",
         "whirl_damping",
         "separation",
+        "torsional_separation",
         "actuator_orbit",
         "actuator_force",
+        "loop_sensitivity",
+        "loop_gain_margin",
+        "loop_phase_margin",
         "temperature",
         "spinup_deflection",
         "coupling_angle",
@@ -149,6 +167,26 @@ SINGLE = {
         "at most",
         ALLOWABLE_ANGLE,
         lambda v: {"coupling_angles": (CouplingEvidence("c", 0.79, 0.0, v, ALLOWABLE_ANGLE),)},
+    ),
+    "torsional_separation": (
+        "at least",
+        0.125,
+        lambda v: {"torsional_modes": (TorsionalEvidence("T1", 90.0, v, "shaft 1/rev", (80.0, 80.0)),)},
+    ),
+    "loop_sensitivity": (
+        "at most",
+        4.0,
+        lambda v: {"loops": (LoopEvidence("amb", "v", OP, v, 300.0, 6.0, -6.0, math.radians(30.0)),)},
+    ),
+    "loop_gain_margin": (
+        "at least",
+        6.0,
+        lambda v: {"loops": (LoopEvidence("amb", "v", OP, 4.0, 300.0, v, None, math.radians(30.0)),)},
+    ),
+    "loop_phase_margin": (
+        "at least",
+        math.radians(30.0),
+        lambda v: {"loops": (LoopEvidence("amb", "v", OP, 4.0, 300.0, 6.0, -6.0, v),)},
     ),
 }
 

@@ -92,7 +92,8 @@ def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> 
     """A value (or a signed margin) of a check's ``kind`` in display units.
 
     Speeds in rpm, lengths in mm, forces in N, temperatures in °C (margins in K), fractions
-    in % (margins in percentage points), angles in degrees, safety factors and log decrements plain.
+    in % (margins in percentage points), angles in degrees, gains in dB, safety factors and log
+    decrements plain.
     """
     if value is None:
         return "—"
@@ -109,4 +110,6 @@ def format_quantity(kind: str, value: float | None, *, margin: bool = False) -> 
         return f"{value * 100:+.1f} pts" if margin else f"{value * 100:.1f} %"
     if kind == "angle":
         return f"{math.degrees(value):{sign}.3g}°"
+    if kind == "decibel":
+        return f"{value:{sign}.3g} dB"
     return f"{value:{sign}.3g}"

@@ -35,10 +35,25 @@ Margins (:func:`loop_margins`, on any L(iω)):
   puts L on −1; the smallest over the crossovers.
 
 The margins measure the distance to instability of a loop that is closed-loop stable; whether
-it is, the eigen-analysis says (:mod:`flexshaft.analyses.stability`). The frequency grid is
-logarithmic over ``frequency_range``, densified at the model's undamped natural frequencies
-(where lightly damped peaks sit); each local maximum of |S| and each crossover is then refined
-(bounded golden section, Brent's method) on the loop function itself.
+it is, the eigen-analysis says (:mod:`flexshaft.analyses.stability`,
+:mod:`flexshaft.analyses.root_stability`).
+
+Frequency grid. |S| = det Z_o/det Z_c peaks only near the closed-loop poles: a lightly damped
+pole s = −ζω_n + iω_d makes a peak at ω_d of half-power width 2ζω_n, far narrower than any
+affordable logarithmic grid. The grid is therefore a coarse logarithmic one over
+``frequency_range`` (``n_points``, 200 by default: 2.2 % steps over 0.1 Hz-2 kHz) plus, for every
+closed-loop pole with ζ < :data:`RESOLVED_DAMPING` in the range, the points ω_d and
+ω_d ± ζ ω_n/2: each such peak is sampled at its top and at its half width. The poles are those of the
+loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`) or the
+caller's (``poles``: the every-root check's; above the highest of them, the undamped natural
+frequencies with a nominal ζ = 1e-3). Refinement on the loop function itself (golden-section
+search, regula falsi): the local maxima of |S| within :data:`PEAK_WINDOW` of the
+largest grid value or more than twice a neighbour (a peak the grid under-resolves: a pole
+beside a zero of S moves the peak off the pole), the gain crossovers whose phase margin
+interpolated on the grid is within :data:`MARGIN_WINDOW_DEG` of the smallest, the phase
+crossovers whose gain margin is within :data:`MARGIN_WINDOW_DB` of the smallest of its kind,
+and any crossover whose bracket turns the phase by more than 30° (a resonance inside it).
+tests/test_loop_robustness.py checks the result against a 5000-point grid refined everywhere.
 """
 
 from __future__ import annotations
@@ -47,15 +62,19 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
 
 __all__ = [
     "DEFAULT_FREQUENCY_RANGE",
     "ISO_14839_ZONE_LIMITS",
+    "MARGIN_WINDOW_DB",
+    "MARGIN_WINDOW_DEG",
+    "PEAK_WINDOW",
+    "RESOLVED_DAMPING",
     "BearingLoop",
     "LoopMargins",
     "bearing_loops",
@@ -70,8 +89,61 @@ ISO_14839_ZONE_LIMITS = (3.0, 4.0, 5.0)
 #: corners (0.5-1 kHz) below the high end (assumed; the mesh should resolve the modes there).
 DEFAULT_FREQUENCY_RANGE = (0.1, 2000.0)
 _AXES = ("v", "w")
-#: Relative spacing of the extra grid points around each natural frequency.
-_AROUND = (0.999, 1.0, 1.001)
+#: Closed-loop poles below this damping ratio get grid points at their peak (module docstring);
+#: above it the coarse grid resolves the peak (half-power width 2ζ ≥ 40 % of the frequency).
+RESOLVED_DAMPING = 0.2
+#: Local maxima of |S| at least this fraction of the largest grid value are refined.
+PEAK_WINDOW = 0.8
+#: Gain crossovers whose interpolated phase margin is within this of the smallest are refined [deg].
+MARGIN_WINDOW_DEG = 3.0
+#: Phase crossovers whose interpolated gain margin is within this of the smallest are refined [dB].
+MARGIN_WINDOW_DB = 2.0
+#: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole.
+_AROUND = (-0.5, 0.0, 0.5)
+
+
+def _root(f: Callable[[float], float], a: float, b: float, tol: float) -> float:
+    """A root of ``f`` between ``a`` and ``b`` (f(a), f(b) of opposite signs) to ``tol``: the
+    Illinois variant of regula falsi (superlinear; scipy.optimize is not imported by a run)."""
+    fa, fb = f(a), f(b)
+    side = 0
+    for _ in range(100):
+        c = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+        fc = f(c)
+        if fc == 0 or abs(b - a) <= tol:
+            return c
+        if (fc > 0) == (fb > 0):
+            b, fb = c, fc
+            if side == -1:
+                fa *= 0.5
+            side = -1
+        else:
+            a, fa = c, fc
+            if side == +1:
+                fb *= 0.5
+            side = +1
+        if abs(b - a) <= tol:
+            break
+    return b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+
+
+_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
+
+
+def _maximum(f: Callable[[float], float], a: float, b: float, tol: float) -> tuple[float, float]:
+    """(x, f(x)) of the largest value of a unimodal ``f`` on [a, b], golden-section search to ``tol``."""
+    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > tol:
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - _GOLDEN * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + _GOLDEN * (b - a)
+            fd = f(d)
+    return (c, fc) if fc >= fd else (d, fd)
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -101,9 +173,14 @@ class LoopMargins:
     phase_margin_deg : float
         Smallest phase margin [deg] over the gain crossovers (inf when |L| never crosses 1).
     phase_crossovers : tuple of float
-        Frequencies where L is real and negative [Hz] (0 for a crossover at ω = 0).
+        Frequencies where L is real and negative [Hz] (0 for a crossover at ω = 0); refined
+        where they may set a gain margin, interpolated on the grid elsewhere.
     gain_crossovers : tuple of float
-        Frequencies where |L| = 1 [Hz].
+        Frequencies where |L| = 1 [Hz] (refined where they may set the phase margin).
+    phase_margin_frequency : float or None
+        The gain crossover of the smallest phase margin [Hz] (None without one).
+    gain_margin_frequency : float or None
+        The phase crossover of :attr:`gain_margin_db` [Hz] (None without one).
     """
 
     peak_sensitivity: float
@@ -113,6 +190,8 @@ class LoopMargins:
     phase_margin_deg: float
     phase_crossovers: tuple[float, ...]
     gain_crossovers: tuple[float, ...]
+    phase_margin_frequency: float | None = None
+    gain_margin_frequency: float | None = None
 
     @property
     def peak_sensitivity_db(self) -> float:
@@ -140,7 +219,8 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
         ``loop(ω)`` → L(iω) for an array of frequencies ω [rad/s] (complex array).
     omegas : array_like
         Increasing grid of frequencies > 0 [rad/s]; the peaks and crossovers are searched on it
-        and refined between its points.
+        and refined between its points (those that may set a margin, module docstring): a
+        lightly damped peak must have a grid point near its top.
     static_gain : float or None
         L(0) when finite (a loop without integral action): a negative L(0) is a phase
         crossover at ω = 0.
@@ -152,54 +232,88 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     require_finite("loop function", L)
     S = np.abs(1.0 / (1.0 + L))
 
-    def minus_s(log_w: float) -> float:
-        return -float(np.abs(1.0 / (1.0 + loop(np.array([np.exp(log_w)]))[0])))
-
-    peak, peak_w = float(S.max()), float(w[np.argmax(S)])
-    # refine every local maximum: a lightly damped peak between grid points can exceed the largest
-    # grid value many times over (the tuned design's lagged magnet at 411.5 Hz: 27 against 3.2 on the
-    # 0.8 % grid; its largest grid value, 16.5, is elsewhere)
-    for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
-        found = minimize_scalar(
-            minus_s, bounds=(np.log(w[k - 1]), np.log(w[k + 1])), method="bounded", options={"xatol": 1e-8}
-        )
-        if -found.fun > peak:
-            peak, peak_w = -float(found.fun), float(np.exp(found.x))
-    for edge in (0, -1):  # a maximum at the grid's end stays where it is
-        if S[edge] > peak:
-            peak, peak_w = float(S[edge]), float(w[edge])
-
     def scalar(x: float) -> complex:
         return complex(loop(np.array([x]))[0])
 
+    def s_of_log(log_w: float) -> float:
+        return abs(1.0 / (1.0 + scalar(float(np.exp(log_w)))))
+
+    peak, peak_w = float(S.max()), float(w[np.argmax(S)])
+    for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
+        if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
+            continue  # neither near the top nor under-resolved (a neighbour below half of it)
+        x, value = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
+        if value > peak:
+            peak, peak_w = float(value), float(np.exp(x))
+
+    phase = np.angle(L)
+    turn = np.abs(np.angle(L[1:] / L[:-1]))  # phase change across each interval [rad]
+    sharp = turn > np.radians(30.0)
+
+    # phase crossovers: L real and negative between two grid points
+    crossings = [
+        k for k in np.flatnonzero(np.sign(L.imag[:-1]) * np.sign(L.imag[1:]) < 0) if L.real[k] < 0 or L.real[k + 1] < 0
+    ]
+    estimates = []
+    for k in crossings:
+        t = L.imag[k] / (L.imag[k] - L.imag[k + 1])
+        x, value = w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])
+        estimates.append((x, value))
+    margins = np.array([20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for _, v in estimates])
+    best_upper = margins[margins > 0].min(initial=np.inf)
+    best_lower = margins[margins < 0].max(initial=-np.inf)
     phase_w, phase_l = [], []
     if static_gain is not None and np.isfinite(static_gain) and static_gain < 0:
         phase_w.append(0.0)
         phase_l.append(abs(static_gain))
-    for k in np.flatnonzero(np.sign(L.imag[:-1]) * np.sign(L.imag[1:]) < 0):
-        if L.real[k] < 0 or L.real[k + 1] < 0:
-            x = brentq(lambda x: scalar(x).imag, w[k], w[k + 1], xtol=1e-12 * w[k], rtol=1e-12)
+    for (k, (x, value)), gm in zip(zip(crossings, estimates), margins):
+        near = (gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB)
+        if near or sharp[k]:
+            x = _root(lambda x: scalar(x).imag, w[k], w[k + 1], 1e-8 * w[k])
             value = scalar(x)
-            if value.real < 0:
-                phase_w.append(x)
-                phase_l.append(abs(value))
-    gain_w, phase_margins = [], []
+        if value.real < 0:
+            phase_w.append(x)
+            phase_l.append(abs(value))
+
+    # gain crossovers: |L| = 1
     log_l = np.log(np.abs(L))
-    for k in np.flatnonzero(np.sign(log_l[:-1]) * np.sign(log_l[1:]) < 0):
-        x = brentq(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], xtol=1e-12 * w[k], rtol=1e-12)
+    gain_w, phase_margins = [], []
+    brackets = np.flatnonzero(np.sign(log_l[:-1]) * np.sign(log_l[1:]) < 0)
+    estimate_pm = []
+    for k in brackets:
+        t = log_l[k] / (log_l[k] - log_l[k + 1])
+        angle = phase[k] + t * np.angle(L[k + 1] / L[k])
+        estimate_pm.append(180.0 - abs(float(np.degrees(np.angle(np.exp(1j * angle))))))
+    smallest = min(estimate_pm, default=np.inf)
+    for k, pm in zip(brackets, estimate_pm):
+        if pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]:
+            x = _root(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], 1e-8 * w[k])
+            pm = 180.0 - abs(float(np.degrees(np.angle(scalar(x)))))
+        else:
+            t = log_l[k] / (log_l[k] - log_l[k + 1])
+            x = w[k] + t * (w[k + 1] - w[k])
         gain_w.append(x)
-        phase_margins.append(180.0 - abs(float(np.degrees(np.angle(scalar(x))))))
+        phase_margins.append(pm)
     margins_db = 20.0 * np.log10(1.0 / np.asarray(phase_l)) if phase_l else np.zeros(0)
     upper = margins_db[margins_db > 0]
     lower = margins_db[margins_db < 0]
+    gm_upper = float(upper.min()) if upper.size else float("inf")
+    gm_lower = float(lower.max()) if lower.size else float("-inf")
+    governing = gm_upper if gm_upper <= -gm_lower else gm_lower
+    gm_frequency = None
+    if np.isfinite(governing):
+        gm_frequency = float(phase_w[int(np.argmin(np.abs(margins_db - governing)))] / (2.0 * np.pi))
+    pm_index = int(np.argmin(phase_margins)) if phase_margins else None
     return LoopMargins(
         peak_sensitivity=peak,
         peak_frequency=peak_w / (2.0 * np.pi),
-        gain_margin_upper_db=float(upper.min()) if upper.size else float("inf"),
-        gain_margin_lower_db=float(lower.max()) if lower.size else float("-inf"),
-        phase_margin_deg=float(min(phase_margins)) if phase_margins else float("inf"),
+        gain_margin_upper_db=gm_upper,
+        gain_margin_lower_db=gm_lower,
+        phase_margin_deg=float(phase_margins[pm_index]) if pm_index is not None else float("inf"),
         phase_crossovers=tuple(float(x / (2.0 * np.pi)) for x in phase_w),
         gain_crossovers=tuple(float(x / (2.0 * np.pi)) for x in gain_w),
+        phase_margin_frequency=None if pm_index is None else float(gain_w[pm_index] / (2.0 * np.pi)),
+        gain_margin_frequency=gm_frequency,
     )
 
 
@@ -231,28 +345,50 @@ class BearingLoop:
     sensitivity: np.ndarray
 
 
-def _grid(model: Model, frequency_range, n_points: int) -> np.ndarray:
-    """Logarithmic grid [rad/s] with three points around each undamped natural frequency."""
-    low, high = frequency_range
-    grid = [np.geomspace(2 * np.pi * low, 2 * np.pi * high, n_points)]
+def _natural_frequencies(model: Model) -> np.ndarray:
+    """Undamped natural frequencies of (K + K_a, M) [rad/s] (dense; empty above 900 free DOFs)."""
     free = model.dofs.free
-    if free.size <= 900:  # dense: every natural frequency of (K + K_a, M)
-        import scipy.linalg as la
+    if free.size > 900:
+        return np.zeros(0)
+    import scipy.linalg as la
 
-        K = (model.K + model.Kp)[free][:, free].toarray()
-        w2 = la.eigh(K, model.M[free][:, free].toarray(), eigvals_only=True)
-        natural = np.sqrt(np.clip(w2, 0.0, None))
-        natural = natural[(natural > 2 * np.pi * low) & (natural < 2 * np.pi * high)]
-        grid.append(np.outer(natural, _AROUND).ravel())
+    K = (model.K + model.Kp)[free][:, free].toarray()
+    w2 = la.eigh(K, model.M[free][:, free].toarray(), eigvals_only=True)
+    return np.sqrt(np.clip(w2, 0.0, None))
+
+
+def _grid(model: Model, frequency_range, n_points: int, poles: np.ndarray) -> np.ndarray:
+    """Logarithmic grid [rad/s] with points at the peaks of the lightly damped ``poles``
+    (module docstring); above the highest pole given, at the undamped natural frequencies with
+    a nominal width of 1e-3 (poles of a truncated basis)."""
+    low, high = 2 * np.pi * frequency_range[0], 2 * np.pi * frequency_range[1]
+    grid = [np.geomspace(low, high, n_points)]
+    poles = np.asarray(poles, dtype=complex)
+    poles = poles[(poles.imag > 0) & np.isfinite(poles)]
+    top = float(np.max(np.abs(poles), initial=0.0))
+    if top < high:
+        natural = _natural_frequencies(model)
+        natural = natural[(natural > top) & (natural < high)]
+        poles = np.concatenate([poles, natural * (-1e-3 + 1j)])
+    natural = np.abs(poles)
+    zeta = -poles.real / np.where(natural > 0, natural, 1.0)
+    light = (np.abs(zeta) < RESOLVED_DAMPING) & (poles.imag > low) & (poles.imag < high)
+    if light.any():
+        width = np.maximum(np.abs(zeta[light]) * natural[light], 1e-9 * natural[light])
+        grid.append((poles.imag[light][:, None] + np.outer(width, _AROUND)).ravel())
     out = np.unique(np.concatenate(grid))
-    return out[(out >= 2 * np.pi * low) & (out <= 2 * np.pi * high)]
+    out = out[(out >= low) & (out <= high)]
+    # points closer than 1e-7 relative (the same pole of both lateral planes) are one: a
+    # near-duplicate would split a local maximum between two points and narrow its bracket
+    return out[np.concatenate([[True], np.diff(out) > 1e-7 * out[1:]])]
 
 
 def bearing_loops(
     model: Model,
     speed: float | None = None,
     frequency_range: tuple[float, float] = DEFAULT_FREQUENCY_RANGE,
-    n_points: int = 1200,
+    n_points: int = 200,
+    poles=None,
 ) -> tuple[BearingLoop, ...]:
     """Sensitivity function and margins of both control axes of every active bearing.
 
@@ -264,7 +400,11 @@ def bearing_loops(
     frequency_range : (float, float)
         Lowest and highest frequency [Hz], 0 < low < high.
     n_points : int
-        Points of the logarithmic grid (before the points at the natural frequencies).
+        Points of the logarithmic grid (before the points at the closed-loop poles).
+    poles : array_like or None
+        Closed-loop roots at ``speed`` [rad/s] (e.g. :attr:`RootStability.roots
+        <flexshaft.analyses.root_stability.RootStability.roots>` at it); default those of the
+        loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`).
 
     Returns
     -------
@@ -297,7 +437,9 @@ def bearing_loops(
         G = np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
         return G * Pc
 
-    grid = _grid(model, (low, high), n_points)
+    if poles is None:
+        poles = closed_loop_poles(model, speed)
+    grid = _grid(model, (low, high), n_points, poles)
     T_grid = closed(grid)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
     out = []

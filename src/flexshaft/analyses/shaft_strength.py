@@ -256,6 +256,7 @@ def shaft_safety_factor(
     thermal_residual: bool = True,
     leave_one_out: bool = False,
     kinking: bool = False,
+    residual_stress: np.ndarray | None = None,
 ) -> StrengthResult:
     """Tsai-Wu safety factor of the superposed response.
 
@@ -283,6 +284,11 @@ def shaft_safety_factor(
     kinking : bool
         Use X_c = min(X_c, kink-band strength) (:func:`flexshaft.strength.effective_strengths`);
         False (default) keeps the file's X_c, the thesis's check.
+    residual_stress : ndarray or None
+        Thermal residual ply stresses (n_plies, 3) [Pa] in material axes to use instead of the
+        ones computed here from ``temperature`` with the laminate's present moduli (e.g. the
+        incremental ones of :func:`flexshaft.thermal.residual.residual_ply_stresses`, which
+        integrate the moduli over the cool-down); ignored with ``thermal_residual=False``.
     """
     check_model(model)
     n_phases = check_count(n_phases, "n_phases")
@@ -315,7 +321,14 @@ def shaft_safety_factor(
         if not np.isfinite(temperature) or temperature <= 0.0:
             raise ValueError(f"temperature must be a positive absolute temperature [K], got {temperature!r}")
         delta_T = float(temperature) - material.stress_free_temperature
-    residual = thermal_ply_stresses(laminate, delta_T) if thermal_residual else None
+    if residual_stress is not None and thermal_residual:
+        residual = check_finite_array("residual_stress", residual_stress, "Pa")
+        if residual.shape != (laminate.angles.size, 3):
+            raise ValueError(
+                f"residual_stress must have shape (n_plies, 3) = ({laminate.angles.size}, 3) (got {residual.shape})"
+            )
+    else:
+        residual = thermal_ply_stresses(laminate, delta_T) if thermal_residual else None
     if residual is not None and not np.any(residual):
         residual = None
 

@@ -14,7 +14,11 @@ bays and load cases. From them it estimates the largest arrays and the run time:
 
 An assessment (:func:`flexshaft.verdict.assess.assess`) is counted from the grids of its
 :class:`~flexshaft.resolution.Resolution` (spin-up, Campbell and whirl speeds, modes), the very
-numbers it computes with; ``flexshaft run`` adds the thesis studies to the report's assessment.
+numbers it computes with, once per point of the design's ``[envelope]`` (the report's extras
+once); each point adds the every-root check (a dense eigen-solution of the full model at three
+speeds when an actuator has controller states or a remote sensor) and the loops of its active
+bearings (about 600 harmonic solves); ``flexshaft run`` adds the thesis studies to the report's
+assessment.
 
 :func:`check_problem_size` raises a :class:`~flexshaft.design.DesignError` naming the fields to
 change when an estimate exceeds its hard cap (:data:`HARD_MEMORY_BYTES`,
@@ -267,9 +271,21 @@ def problem_size(
             eigen_speeds += (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and pd_only else 0)) * whirl_speeds
         memory["banded harmonic solver"] = 16.0 * free * (3 * half_band + 1) * 2
         memory["spin-up responses"] = 16.0 * dofs * cases * n_speeds * 2
-        time["modal bases"] = RUN_BASES * basis_time
-        time["eigen-solutions"] = eigen_speeds * speed_time
-        time["harmonic solves"] = (n_speeds + EXTRA_HARMONIC_SOLVES) * solve_time + 16e-9 * dofs * cases * n_speeds
+        points = len(design.envelope.points) if design.envelope is not None else 1
+        # per point: the spin-up scan, the verdict's eigen-solutions, the every-root check and loops
+        per_point_eigen = 1 + whirl_speeds
+        full_states = 2 * free + 2 * states
+        passive = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
+        roots = 3 * (_EIG_FIXED + (speed_time if passive else 3 * _EIG_CUBIC * full_states**3))
+        loops = 600 * solve_time if active else 0.0
+        time["modal bases"] = (RUN_BASES + 2 * (points - 1)) * basis_time
+        time["eigen-solutions"] = (eigen_speeds + (points - 1) * per_point_eigen) * speed_time
+        time["every-root check and loops"] = points * (roots + loops)
+        time["harmonic solves"] = (points * n_speeds + EXTRA_HARMONIC_SOLVES) * solve_time + 16e-9 * dofs * cases * (
+            points * n_speeds
+        )
+        if not passive:
+            memory["every-root state matrix"] = 3 * 16.0 * full_states**2
     return ProblemSize(
         analysis,
         int(shaft_x.size),

@@ -208,12 +208,16 @@ def _print_run(assessment, data: dict, page: Path, seconds: float, path: Path | 
         verdict_table,
     )
     from flexshaft.units import m_to_mm
+    from flexshaft.verdict.envelope_text import envelope_line
 
     console = stdout_console()
     s = data["summary"]
     verdict = assessment.verdict
     print_line(console, design_heading(s["name"], design_source(path)), style="bold")
     print_line(console, verdict_line(verdict), style="bold green" if verdict.passed else "bold red")
+    envelope = envelope_line(assessment)
+    if envelope:
+        print_line(console, envelope)
     print_line(
         console,
         f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "

@@ -17,7 +17,9 @@ speed and power). :func:`flexshaft.thermal.envelope.design_at_point` turns a des
 into the design at that point (the lamina at the material temperature, the thermal environment
 at the ambient, the operating speed, power and loads); this module only validates the numbers.
 
-Default points (when the design has no ``[envelope]``), assumed values with their grounds:
+Default points (an ``[envelope]`` without points; :func:`envelope_point` also finds them by name
+for a design without an ``[envelope]``, which the verdict judges at its own operating point
+only), assumed values with their grounds:
 
 * ``cold_day``: -40 °C ambient, the shaft cold-soaked at it. -40 °C is an assumed cold limit of a
   rotorcraft envelope (MIL-HDBK-310's climatic design data and MIL-STD-810H's low-temperature
@@ -42,6 +44,7 @@ from flexshaft.units import ZERO_CELSIUS
 
 __all__ = [
     "DEFAULT_ENVELOPE_POINTS",
+    "envelope_point",
     "MAX_ENVELOPE_POINTS",
     "Envelope",
     "EnvelopePoint",
@@ -188,3 +191,14 @@ def check_envelope_temperatures(problems: Problems, envelope: Envelope, ambient_
                     f"lamina {format_value(name)} [{format_number(low)}, {format_number(high)}] °C "
                     "(tables are not extrapolated; extend the table)",
                 )
+
+
+def envelope_point(design, name: str) -> EnvelopePoint:
+    """The point called ``name`` of ``design``'s ``[envelope]``, or of the default points
+    (:data:`DEFAULT_ENVELOPE_POINTS`) for a design without one (KeyError when there is none)."""
+    if design.envelope is not None:
+        return design.envelope.point(name)
+    for point in DEFAULT_ENVELOPE_POINTS:
+        if point.name == name:
+            return point
+    raise KeyError(f"{name!r}: not a point of the default envelope (the design has no [envelope])")

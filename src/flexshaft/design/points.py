@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from flexshaft.design.envelope import EnvelopePoint
+from flexshaft.design.envelope import EnvelopePoint, envelope_point
 from flexshaft.design.io import design_from_dict
 from flexshaft.design.schema import Design
 from flexshaft.units import rad_s_to_rpm
@@ -36,7 +36,8 @@ def design_at_point(design: Design, point: EnvelopePoint | str, conditions: Any)
     design : Design
         The design (left unchanged).
     point : EnvelopePoint or str
-        A point, or the name of one of ``design.envelope.points``.
+        A point, or the name of one of ``design.envelope.points`` (of the default points
+        without an ``[envelope]``; :func:`~flexshaft.design.envelope.envelope_point`).
     conditions : PointConditions
         What the thermal models found at the point
         (:func:`flexshaft.thermal.envelope.point_conditions`); any object with ``thermal``
@@ -50,7 +51,7 @@ def design_at_point(design: Design, point: EnvelopePoint | str, conditions: Any)
         its range), with the field path.
     """
     if isinstance(point, str):
-        point = design.envelope.point(point)
+        point = envelope_point(design, point)
     data = design.model_dump()
     data["thermal"].update(conditions.thermal)
     for name, material in conditions.materials.items():

@@ -22,11 +22,29 @@ from pydantic import Field, model_validator
 from flexshaft.design.fields import FrozenModel, Problems, format_value
 from flexshaft.design.quantities import Deflection, SafetyFactor
 
-__all__ = ["DEFAULT_MIN_LOG_DECREMENT", "Requirements", "log_decrement_from_damping_ratio"]
+__all__ = [
+    "DEFAULT_MAX_SENSITIVITY_PEAK",
+    "DEFAULT_MIN_GAIN_MARGIN_DB",
+    "DEFAULT_MIN_LOG_DECREMENT",
+    "DEFAULT_MIN_PHASE_MARGIN_DEG",
+    "DEFAULT_MIN_TORSIONAL_SEPARATION",
+    "Requirements",
+    "log_decrement_from_damping_ratio",
+]
 
 #: API 617 acceptance level of the logarithmic decrement, used when neither whirl damping
 #: requirement is given.
 DEFAULT_MIN_LOG_DECREMENT = 0.1
+#: Separation of every torsional natural frequency from every excitation frequency over the
+#: operating speed range (API's 10 %, docs/requirements.md).
+DEFAULT_MIN_TORSIONAL_SEPARATION = 0.10
+#: Largest sensitivity peak |S|max of a magnetic-bearing loop: the upper limit of ISO 14839-3's
+#: zone B (docs/requirements.md).
+DEFAULT_MAX_SENSITIVITY_PEAK = 4.0
+#: Smallest gain margin of a magnetic-bearing loop, either way [dB] (assumed, docs/requirements.md).
+DEFAULT_MIN_GAIN_MARGIN_DB = 6.0
+#: Smallest phase margin of a magnetic-bearing loop [deg] (assumed, docs/requirements.md).
+DEFAULT_MIN_PHASE_MARGIN_DEG = 30.0
 
 Margin = Annotated[
     float,
@@ -63,6 +81,52 @@ DampingRatio = Annotated[
 ]
 
 
+Fraction = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=1.0,
+        description=("fraction from 0 to 1"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
+SensitivityPeak = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        gt=1.0,
+        le=100.0,
+        description=("sensitivity-function peak |S|max, above 1 (every loop reaches 1) and at most 100"),
+        json_schema_extra={"unit": "-"},
+    ),
+]
+GainMarginDb = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=60.0,
+        description=("gain margin in dB, 0 to 60"),
+        json_schema_extra={"unit": "dB"},
+    ),
+]
+PhaseMarginDeg = Annotated[
+    float,
+    Field(
+        strict=True,
+        allow_inf_nan=False,
+        ge=0.0,
+        le=90.0,
+        description=("phase margin in degrees, 0 to 90"),
+        json_schema_extra={"unit": "deg"},
+    ),
+]
+
+
 def log_decrement_from_damping_ratio(damping_ratio: float) -> float:
     """δ = 2πζ/√(1 − ζ²) of a damping ratio ζ in [0, 1)."""
     return 2.0 * math.pi * damping_ratio / math.sqrt(1.0 - damping_ratio * damping_ratio)
@@ -92,6 +156,16 @@ class Requirements(FrozenModel):
     max_spinup_deflection : float or None
         Largest allowed shaft orbit amplitude during spin-up to the operating speed [m]; None:
         no limit (the check is reported as not evaluated).
+    min_torsional_separation : float
+        Smallest separation of every torsional natural frequency from every excitation
+        frequency over the operating speed range, a fraction of the excitation frequency [-].
+    max_sensitivity_peak : float
+        Largest sensitivity-function peak |S|max of every magnetic-bearing loop [-] (4: the
+        upper limit of ISO 14839-3's zone B; 3 for zone A).
+    min_gain_margin_db : float
+        Smallest gain margin of every magnetic-bearing loop, for a gain rise and a gain fall [dB].
+    min_phase_margin_deg : float
+        Smallest phase margin of every magnetic-bearing loop [deg].
     """
 
     min_safety_factor: SafetyFactor = 1.5
@@ -101,6 +175,10 @@ class Requirements(FrozenModel):
     min_damping_ratio: DampingRatio | None = None
     separation: Literal["api684", "off"] = "api684"
     max_spinup_deflection: Deflection | None = None
+    min_torsional_separation: Fraction = DEFAULT_MIN_TORSIONAL_SEPARATION
+    max_sensitivity_peak: SensitivityPeak = DEFAULT_MAX_SENSITIVITY_PEAK
+    min_gain_margin_db: GainMarginDb = DEFAULT_MIN_GAIN_MARGIN_DB
+    min_phase_margin_deg: PhaseMarginDeg = DEFAULT_MIN_PHASE_MARGIN_DEG
 
     @model_validator(mode="after")
     def _check(self) -> Requirements:

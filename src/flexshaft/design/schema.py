@@ -189,8 +189,10 @@ class Design(FrozenModel):
         Thermal environment and matrix temperature law (``[thermal]``).
     requirements : table
         Limits of the requirements verdict (``[requirements]``).
-    envelope : table
-        Operating points every check is evaluated at (``[envelope]``).
+    envelope : table or None
+        Operating points every check is evaluated at (``[envelope]``); omitted: the design is
+        judged at its own operating point only (``[envelope]`` without points holds the three
+        default points, :data:`~flexshaft.design.envelope.DEFAULT_ENVELOPE_POINTS`).
     """
 
     name: DesignName
@@ -208,7 +210,7 @@ class Design(FrozenModel):
     analysis: Analysis = Analysis()
     thermal: Thermal = Thermal()
     requirements: Requirements = Requirements()
-    envelope: Envelope = Envelope()
+    envelope: Envelope | None = None
 
     @model_validator(mode="after")
     def _check(self) -> Design:
@@ -296,7 +298,8 @@ class Design(FrozenModel):
                     self.thermal.matrix_reference_temperature_c,
                     self.thermal.allowable_temperature_c,
                 )
-        check_envelope_temperatures(problems, self.envelope, self.thermal.ambient_temperature_c, tables)
+        if self.envelope is not None:
+            check_envelope_temperatures(problems, self.envelope, self.thermal.ambient_temperature_c, tables)
 
     def _check_couplings(self, problems: Problems) -> None:
         """Couplings strictly inside the shaft, at distinct stations."""

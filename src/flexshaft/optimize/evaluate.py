@@ -90,12 +90,15 @@ def evaluate_design(design, fidelity: str | Resolution = "screening") -> Assessm
 
 
 def normalised_margin(check: Check, operating_speed: float) -> float:
-    """A check's margin as a dimensionless number (negative: fails; NaN: not evaluated).
+    """A check's margin as a dimensionless number (negative: fails; NaN: not evaluated; +inf:
+    passed with nothing to measure, e.g. no phase crossover of any magnetic-bearing loop).
 
     Scales: the limit for safety factors, log decrements, lengths, forces and temperatures
     [K]; the operating speed for speeds; none for separation (its margin is already a fraction
     of the operating speed).
     """
+    if check.status == "pass" and check.margin is None:
+        return float("inf")  # passed without a number: no critical speed, no phase crossover
     if check.status == "not evaluated" or check.margin is None:
         return float("nan")
     if check.kind == "fraction":

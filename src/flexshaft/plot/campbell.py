@@ -70,6 +70,8 @@ def campbell_figure(
     log_decrement: ArrayLike | None = None,
     kind: ArrayLike | None = None,
     main_rotor_hz: Mapping[str, float] | None = None,
+    excitation_orders: Mapping[str, float] | None = None,
+    response_criticals: Sequence[tuple[float, float]] = (),
     ax=None,
 ) -> Figure:
     """Campbell diagram: tracked natural frequencies against spin speed.
@@ -100,6 +102,15 @@ def campbell_figure(
         ``{"1/rev": 4.3, "4/rev": 17.3}`` (the boom modes' forcing). The main rotor is geared to
         the shaft, so each is drawn as a ray from the origin through (operating speed,
         frequency); without ``operating_rpm`` as a horizontal line.
+    excitation_orders : mapping of str to float, optional
+        Further excitations geared to the shaft, by name, as orders of the shaft speed (e.g.
+        ``{"tail rotor 4/rev": 1.17}``, the torsional separation check's), drawn as labelled rays
+        f = order·Ω/60 [Hz].
+    response_criticals : sequence of (float, float), optional
+        The critical speeds the verdict's separation check uses (peaks of the unbalance
+        response) as (speed [rpm], amplification factor): marked on the 1× line as squares and
+        labelled with their speed and AF (the crossings of ``critical_speeds_rpm`` are then drawn
+        unlabelled).
     ax : matplotlib Axes, optional
         Draw into this axes (its figure is returned).
 
@@ -162,7 +173,10 @@ def campbell_figure(
 
     f_max = np.nanmax(freqs) if np.isfinite(freqs).any() else 1.0
     critical = vector("critical_speeds_rpm", critical_speeds_rpm)
-    top = 1.08 * max(f_max, critical.max(initial=0.0) / RPM_PER_HZ)
+    response_peaks = (
+        np.asarray(response_criticals, dtype=float).reshape(-1, 2)[:, 0] if len(response_criticals) else critical
+    )
+    top = 1.08 * max(f_max, critical.max(initial=0.0) / RPM_PER_HZ, response_peaks.max(initial=0.0) / RPM_PER_HZ)
     span = np.array([speeds.min(), speeds.max()])
     ax.set_xlim(span[0], span[1])
     ax.set_ylim(0.0, top)
@@ -265,12 +279,61 @@ def campbell_figure(
             fontsize=7.5,
             color="tab:purple",
         )
+    for name, order in (excitation_orders or {}).items():
+        if not (np.isfinite(order) and order > 0):
+            raise ValueError(f"excitation_orders: {name!r} must be a finite order > 0, got {order!r}")
+        (line,) = ax.plot(
+            span,
+            order * span / RPM_PER_HZ,
+            color="tab:brown",
+            lw=1.1,
+            ls=(0, (2, 2)),
+            zorder=1,
+            label=f"{name} ({order:.3g}×)",
+        )
+        handles.append(line)
+        x_end = min(span[1], top * RPM_PER_HZ / order)
+        ax.annotate(
+            name,
+            (x_end, order * x_end / RPM_PER_HZ),
+            xytext=(-3, 3),
+            textcoords="offset points",
+            ha="right",
+            va="bottom",
+            fontsize=7.5,
+            color="tab:brown",
+        )
     if critical.size:
         (marker,) = ax.plot(
             critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.3, ms=8, label="critical speed", zorder=4
         )
         handles.append(marker)
-        _label_criticals(ax, critical)
+        if not len(response_criticals):  # the verdict's criticals carry the labels when given
+            _label_criticals(ax, critical)
+    if len(response_criticals):
+        peaks = np.asarray(response_criticals, dtype=float).reshape(-1, 2)
+        (marker,) = ax.plot(
+            peaks[:, 0],
+            peaks[:, 0] / RPM_PER_HZ,
+            "s",
+            mfc="none",
+            mec="tab:red",
+            mew=1.4,
+            ms=9,
+            label="critical speed of the verdict (unbalance-response peak)",
+            zorder=5,
+        )
+        handles.append(marker)
+        place_point_labels(
+            ax,
+            peaks[:, 0],
+            peaks[:, 0] / RPM_PER_HZ,
+            [f"{rpm:.0f} rpm, AF {af:.3g}" if np.isfinite(af) else f"{rpm:.0f} rpm, AF ∞" for rpm, af in peaks],
+            fontsize=7.0,
+            avoid=[(c, c / RPM_PER_HZ) for c in critical],
+            color="tab:red",
+            bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8},
+        )
     mark_operating(ax, operating_rpm)
     if operating_rpm is not None:
         handles.append(ax.get_lines()[-1])

@@ -205,55 +205,96 @@ def actuator_figure(
     speeds_rpm: ArrayLike,
     displacement: Mapping[str, ArrayLike],
     force: Mapping[str, ArrayLike],
-    gap: float | None = None,
+    gap: float | Mapping[str, float] | None = None,
     *,
     operating_rpm: float | None = None,
-    force_capacity: float | None = None,
+    force_capacity: float | Mapping[str, float] | None = None,
+    static_offset: Mapping[str, float] | None = None,
+    static_force: Mapping[str, float] | None = None,
+    checked: Mapping[str, tuple[float, float, float, float]] | None = None,
     ax=None,
 ) -> Figure:
-    """Actuator (magnetic bearing) relative displacement and force against spin speed.
+    """Actuator (magnetic bearing) excursion and force against spin speed: static + spin-up
+    against each actuator's limits, what the actuator checks judge.
 
     Parameters
     ----------
     speeds_rpm : array_like, shape (n_speeds,)
         Spin speeds [rpm].
     displacement : mapping of str to array_like, each shape (n_speeds,)
-        Shaft-to-stator relative displacement amplitude at each actuator [m]; drawn in mm.
+        Spin-up (dynamic) relative displacement amplitude at each actuator [m]; drawn in mm,
+        plus the static offset.
     force : mapping of str to array_like, each shape (n_speeds,)
-        Actuator force amplitude [N].
-    gap : float, optional
-        Actuator air gap or auxiliary-bearing clearance [m], drawn on the displacement panel.
+        Spin-up (dynamic) actuator force amplitude [N], drawn plus the static force.
+    gap : float or mapping of str to float, optional
+        Auxiliary-bearing clearance [m], one for all or per actuator, drawn on the excursion panel.
     operating_rpm : float, optional
         Operating speed [rpm].
-    force_capacity : float, optional
-        Largest force the actuators can produce [N], drawn on the force panel.
+    force_capacity : float or mapping of str to float, optional
+        Largest force the actuator can produce [N], one or per actuator, drawn on the force panel.
+    static_offset, static_force : mapping of str to float, optional
+        Static relative displacement [m] and static force [N] of each actuator: the orbit is
+        centred on the static position, so the excursion is static + dynamic (the dynamic part
+        alone is drawn thin and dashed beside it). Omitted: 0.
+    checked : mapping of str to (speed [rpm], excursion [m], speed [rpm], force [N]), optional
+        The peaks the actuator checks judge (static + spin-up, to the operating speed), marked.
     ax : sequence of two matplotlib Axes, optional
-        Displacement and force panels.
+        Excursion and force panels.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
     speeds = vector("speeds_rpm", speeds_rpm)
-    fig, axes = new_figure(2, 1, (8.0, 6.5), ax=ax, hspace=0.3)
+    fig, axes = new_figure(2, 1, (8.0, 6.8), ax=ax, hspace=0.3)
     top, bottom = axes[0, 0], axes[1, 0]
-    for name, values in displacement.items():
-        top.plot(speeds, magnitude(f"displacement[{name!r}]", values, speeds.size) * MM_PER_M, label=name)
-    for name, values in force.items():
-        bottom.plot(speeds, magnitude(f"force[{name!r}]", values, speeds.size), label=name)
-    if gap is not None:
-        top.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"gap {gap * MM_PER_M:.3g} mm")
-    if force_capacity is not None:
-        bottom.axhline(force_capacity, color="k", ls="--", lw=1.2, label=f"force capacity {force_capacity:.4g} N")
-    for ax in (top, bottom):
-        mark_operating(ax, operating_rpm)
-        ax.set_ylim(bottom=0.0)
-        ax.legend(loc="best", fontsize=8)
+    offsets, statics = dict(static_offset or {}), dict(static_force or {})
+    highest = [0.0, 0.0]
+    for k, name in enumerate(displacement):
+        colour = f"C{k % 10}"
+        dynamic = magnitude(f"displacement[{name!r}]", displacement[name], speeds.size) * MM_PER_M
+        excursion = dynamic + offsets.get(name, 0.0) * MM_PER_M
+        top.plot(speeds, excursion, color=colour, lw=1.8, label=f"{name}: static + spin-up")
+        if name in offsets:
+            top.plot(speeds, dynamic, color=colour, lw=0.8, ls=":", label=f"{name}: spin-up orbit alone")
+        highest[0] = max(highest[0], float(np.max(excursion)))
+    for k, name in enumerate(force):
+        colour = f"C{k % 10}"
+        dynamic = magnitude(f"force[{name!r}]", force[name], speeds.size)
+        total = dynamic + statics.get(name, 0.0)
+        bottom.plot(speeds, total, color=colour, lw=1.8, label=f"{name}: static + spin-up")
+        if name in statics:
+            bottom.plot(speeds, dynamic, color=colour, lw=0.8, ls=":", label=f"{name}: spin-up force alone")
+        highest[1] = max(highest[1], float(np.max(total)))
+    names = list(displacement)
+    for panel, limits, unit, scale, label in (
+        (top, gap, "mm", MM_PER_M, "gap"),
+        (bottom, force_capacity, "N", 1.0, "force capacity"),
+    ):
+        if limits is None:
+            continue
+        per = dict(limits) if isinstance(limits, Mapping) else dict.fromkeys(names or ["all"], float(limits))
+        drawn = {}
+        for name, value in per.items():
+            drawn.setdefault(float(value), []).append(name)
+        for value, owners in drawn.items():
+            who = "" if len(drawn) == 1 else f" ({', '.join(owners)})"
+            panel.axhline(value * scale, color="k", ls="--", lw=1.2, label=f"{label} {value * scale:.4g} {unit}{who}")
+            index = 0 if panel is top else 1
+            highest[index] = max(highest[index], value * scale)
+    for k, (name, (orbit_rpm, orbit, force_rpm, force_value)) in enumerate((checked or {}).items()):
+        colour = f"C{names.index(name) % 10 if name in names else k % 10}"
+        top.plot([orbit_rpm], [orbit * MM_PER_M], "D", color=colour, ms=7, mec="k", label=f"{name}: checked peak")
+        bottom.plot([force_rpm], [force_value], "D", color=colour, ms=7, mec="k", label=f"{name}: checked peak")
+    for panel, high in zip((top, bottom), highest):
+        mark_operating(panel, operating_rpm)
+        panel.set_ylim(0.0, 1.12 * high if high > 0 else 1.0)
+        panel.legend(loc="best", fontsize=7.5, ncols=3)
     top.set_xlim(speeds.min(), speeds.max())
-    top.set_ylabel("relative displacement [mm]")
+    top.set_ylabel("excursion [mm]")
     bottom.set_ylabel("actuator force [N]")
     bottom.set_xlabel("spin speed Ω [rpm]")
-    top.set_title("Active bearing actuators")
+    top.set_title("Active bearing actuators: static + spin-up against the limits")
     return fig
 
 

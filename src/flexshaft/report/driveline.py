@@ -23,6 +23,7 @@ from pathlib import Path
 
 from flexshaft.analyses.modal import Modes
 from flexshaft.analyses.summary import modes_table
+from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.design import baseline_design, baseline_text
 from flexshaft.files import atomic_write_text
 from flexshaft.plot.driveline import deflected_shape_figure
@@ -83,7 +84,7 @@ def plan_run_report(
     op_rpm = rad_s_to_rpm(model.speed)
     s = data["summary"]
     sections = []
-    section = verdict_section(a.verdict, op_rpm)
+    section = verdict_section(a.verdict, op_rpm, a)
     ref = figs.result(
         "verdict_margins",
         "Margin of each requirement divided by its limit (green pass, red fail)",
@@ -141,7 +142,12 @@ def plan_run_report(
         campbell_figure.append(
             figs.result(
                 "campbell",
-                "Campbell diagram: whirl as line style and marker, log decrement as colour"
+                "Campbell diagram"
+                + (f" ({a.governing_point})" if len(a.points) > 1 else "")
+                + ": whirl as line style and marker, log decrement as colour; every mode up to 1.1 × the "
+                "highest excitation the checks use at 130 % of the operating speed; circles: where the lateral "
+                "modes cross 1×; red squares: the critical speeds of the verdict (unbalance-response peaks, "
+                "with their AF); brown: the tail rotor's 1/rev and N/rev (torsional separation)"
                 + (
                     "; the main rotor's 1/rev and N/rev lines (geared to the shaft) for the boom modes"
                     if main_rotor
@@ -152,6 +158,10 @@ def plan_run_report(
                 operating_rpm=op_rpm,
                 max_critical_rpm=1.25 * op_rpm,
                 main_rotor_hz=main_rotor or None,
+                excitation_orders=campbell_orders(model) or None,
+                response_criticals=[
+                    (rad_s_to_rpm(c.speed), c.amplification_factor) for c in a.evidence.critical_speeds or ()
+                ],
             )
         )
     sections.append(
@@ -291,6 +301,14 @@ def plan_run_report(
     if data["notes"]:
         sections.append(Section("Notes", paragraphs=list(data["notes"])))
     return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(design)}", design.name)
+
+
+def campbell_orders(model) -> dict[str, float]:
+    """The tail rotor's excitations as orders of the shaft speed (the torsional separation
+    check's, beside the shaft's 1× and the main rotor's lines): name → order."""
+    if model.design is None:
+        return {}
+    return {e.name: e.ratio for e in torsional_excitations(model.design) if e.source == "tail_rotor"}
 
 
 def write_run_report(

@@ -338,9 +338,12 @@ def actuator_figure(a: Assessment) -> dict | None:
     model = a.model
     if not model.actuators:
         return None
-    spin = a.spinup
+    # the envelope point where the excursion check governs: its spin-up and evidence
+    check = next((c for c in a.verdict.checks if c.key == "actuator_orbit"), None)
+    point = a.point(str(check.location.get("point", a.governing_point)) if check is not None else a.governing_point)
+    spin = point.analyses.spinup
     rpm = rad_s_to_rpm(spin.speeds)
-    evidence = {e.name: e for e in a.evidence.actuators}
+    evidence = {e.name: e for e in point.evidence.actuators}
     limits = actuator_limits(model)
     data = []
     x0, x1 = float(rpm[0]), float(rpm[-1])

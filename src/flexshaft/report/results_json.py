@@ -14,6 +14,7 @@ from flexshaft.thesis.design_studies import headline
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import kelvin_to_celsius, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.envelope import tightest_check
 
 __all__ = ["json_ready", "results_json", "rpm_or_none"]
 
@@ -74,6 +75,7 @@ def results_json(a: Assessment, thesis: ThesisStudies | None = None) -> dict:
         {
             "design": summary["name"],
             "verdict": a.verdict.to_dict(),
+            "envelope": _envelope_dict(a),
             "summary": summary,
             "modes_at_rest": modes_table(a.modes_at_rest) if a.modes_at_rest is not None else [],
             "modes_at_operating_speed": modes_table(a.modes_at_speed),
@@ -148,6 +150,36 @@ def json_ready(value):
 def rpm_or_none(speed: float | None) -> float | None:
     """A speed [rad/s] in rpm; None when it is None or not finite."""
     return None if speed is None or not np.isfinite(speed) else float(rad_s_to_rpm(speed))
+
+
+def _envelope_dict(a: Assessment) -> dict | None:
+    """Each envelope point: its conditions, its own verdict (check by check: status, value,
+    margin) and its tightest check; the governing point, whose analyses the rest of the file
+    holds. None for a design judged at its own operating point (no ``[envelope]``)."""
+    if a.design.envelope is None:
+        return None
+    points = []
+    for p in a.points:
+        operating, conditions = p.analyses.design.operating, p.analyses.conditions
+        tightest = tightest_check(p.verdict)
+        points.append(
+            {
+                "name": p.name,
+                "ambient_temperature_c": conditions.ambient_temperature_c,
+                "material_temperature_c": conditions.material_temperature_c,
+                "speed_rpm": operating.speed_rpm,
+                "power_W": operating.power,
+                "load_scale": conditions.point.load_scale,
+                "passed": p.verdict.passed,
+                "summary": p.verdict.summary,
+                "tightest_check": None if tightest is None else tightest.key,
+                "checks": {
+                    c.key: {"status": c.status, "value": c.value, "limit": c.limit, "margin": c.margin}
+                    for c in p.verdict.checks
+                },
+            }
+        )
+    return {"governing_point": a.governing_point, "points": points}
 
 
 def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:

@@ -113,18 +113,37 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
             )
         )
     if model.actuators:
-        caps = [b.force_capacity for b in design.bearings if b.kind == "active" and b.force_capacity is not None]
+        # the point where the actuator excursion check governs (its spin-up and evidence)
+        name = _check_point(a, "actuator_orbit")
+        point = a.point(name)
+        spinup_shown = point.analyses.spinup
+        evidence = {e.name: e for e in point.evidence.actuators}
+        shown = f" ({name}, where the excursion check governs)" if len(a.points) > 1 else ""
         figures.append(
             figs.add(
                 "actuators",
-                "Actuator relative displacement and force during spin-up",
+                f"Actuator excursion and force during spin-up{shown}: static + spin-up (solid; the spin-up "
+                "part alone dotted) against each actuator's gap and force capacity (dashed), the peaks the "
+                "actuator checks judge marked",
                 actuator_figure,
-                rpm,
-                spinup.actuator_displacement,
-                spinup.actuator_force,
-                min(act_gaps) if act_gaps else None,
+                rad_s_to_rpm(spinup_shown.speeds),
+                spinup_shown.actuator_displacement,
+                spinup_shown.actuator_force,
+                {n: lim.gap for n, lim in limits.items() if lim.gap is not None} or None,
                 operating_rpm=op_rpm,
-                force_capacity=min(caps) if caps else None,
+                force_capacity={n: lim.force_capacity for n, lim in limits.items() if lim.force_capacity is not None}
+                or None,
+                static_offset={n: e.static_offset for n, e in evidence.items()},
+                static_force={n: e.static_force for n, e in evidence.items()},
+                checked={
+                    n: (
+                        rad_s_to_rpm(e.orbit_speed),
+                        e.static_offset + e.peak_orbit,
+                        rad_s_to_rpm(e.force_speed),
+                        e.static_force + e.peak_force,
+                    )
+                    for n, e in evidence.items()
+                },
             )
         )
     imb = data["imbalance"]
@@ -182,6 +201,14 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
         tables=tables,
         figures=figures,
     )
+
+
+def _check_point(a: Assessment, key: str) -> str:
+    """The envelope point where check ``key`` governs (the governing point when it has none)."""
+    try:
+        return str(a.verdict.check(key).location.get("point", a.governing_point))
+    except KeyError:
+        return a.governing_point
 
 
 def _orbit_mm(pair) -> float:

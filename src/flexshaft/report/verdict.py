@@ -8,13 +8,30 @@ from __future__ import annotations
 
 from flexshaft.report.html import Section, Table
 from flexshaft.units import format_quantity  # re-exported
+from flexshaft.verdict.envelope_text import (
+    ENVELOPE_COLUMNS,
+    envelope_line,
+    envelope_rows,
+    governing_text,
+)  # re-exported
 from flexshaft.verdict.text import VERDICT_COLUMNS, location_text, verdict_rows  # re-exported
 
-__all__ = ["VERDICT_COLUMNS", "format_quantity", "location_text", "verdict_rows", "verdict_section"]
+__all__ = [
+    "ENVELOPE_COLUMNS",
+    "VERDICT_COLUMNS",
+    "envelope_line",
+    "envelope_rows",
+    "format_quantity",
+    "governing_text",
+    "location_text",
+    "verdict_rows",
+    "verdict_section",
+]
 
 
-def verdict_section(verdict, operating_rpm: float) -> Section:
-    """The report's first section: the overall verdict and the table of requirements."""
+def verdict_section(verdict, operating_rpm: float, assessment=None) -> Section:
+    """The report's first section: the overall verdict and the table of requirements; with the
+    ``assessment`` of a design with an ``[envelope]``, its points and which one governs."""
     failed = [f"{c.title} ({location_text(c.location)})" for c in verdict.failed]
     lead = f"Verdict: {'PASS' if verdict.passed else 'FAIL'}. " + verdict.summary.split(": ", 1)[1] + "."
     paragraphs = [lead]
@@ -29,10 +46,18 @@ def verdict_section(verdict, operating_rpm: float) -> Section:
         "shaft station where each peak is largest; AF < 2.5 needs no margin, otherwise 17(1 − 1/(AF − 1.5)) % "
         "(at most 16 %) below and 10 + 17(1 − 1/(AF − 1.5)) % (at most 26 %) above the operating speed."
     )
-    return Section(
-        "Verdict against the requirements",
-        paragraphs=paragraphs,
-        tables=[
-            Table("Requirements verdict (worst case of each requirement)", list(VERDICT_COLUMNS), verdict_rows(verdict))
-        ],
-    )
+    tables = [
+        Table("Requirements verdict (worst case of each requirement)", list(VERDICT_COLUMNS), verdict_rows(verdict))
+    ]
+    points = envelope_rows(assessment) if assessment is not None else []
+    if points:
+        paragraphs.append(
+            f"Every check is evaluated at each of the {len(points)} points of the design's [envelope] "
+            "(each point's material temperature sets the laminae's properties and the thermal residual stress; "
+            "its speed, power and load scale the loads); the table above gives each check's worst point in "
+            "brackets. The governing point has the tightest check (a failing one first, then the smallest "
+            f"margin relative to its limit): {governing_text(assessment)}. The analyses and figures below are "
+            "at it unless their caption names another point."
+        )
+        tables.append(Table("Envelope points (each point's own verdict)", list(ENVELOPE_COLUMNS), points))
+    return Section("Verdict against the requirements", paragraphs=paragraphs, tables=tables)

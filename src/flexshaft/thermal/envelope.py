@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from flexshaft.design.envelope import EnvelopePoint
+from flexshaft.design.envelope import DEFAULT_ENVELOPE_POINTS, EnvelopePoint, envelope_point
 from flexshaft.design.materials import Lamina
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.thermal.options import matrix_law_from, thermal_options
@@ -131,7 +131,8 @@ def point_conditions(design, point: EnvelopePoint | str) -> PointConditions:
     design : Design
         The design (read only).
     point : EnvelopePoint or str
-        A point, or the name of one of ``design.envelope.points``.
+        A point, or the name of one of ``design.envelope.points`` (of the default points
+        without an ``[envelope]``; :func:`~flexshaft.design.envelope.envelope_point`).
 
     Raises
     ------
@@ -140,7 +141,7 @@ def point_conditions(design, point: EnvelopePoint | str) -> PointConditions:
         names the point, the lamina, the temperature and the table's range).
     """
     if isinstance(point, str):
-        point = design.envelope.point(point)
+        point = envelope_point(design, point)
     changes = point_thermal(design, point)
     thermal = Thermal.model_validate({**design.thermal.model_dump(), **changes})
     options = thermal_options(thermal)
@@ -169,5 +170,8 @@ def point_conditions(design, point: EnvelopePoint | str) -> PointConditions:
 
 
 def envelope_conditions(design) -> tuple[PointConditions, ...]:
-    """:func:`point_conditions` at every point of ``design.envelope``, in order."""
-    return tuple(point_conditions(design, point) for point in design.envelope.points)
+    """:func:`point_conditions` at every point of ``design.envelope``, in order; at the default
+    points (:data:`~flexshaft.design.envelope.DEFAULT_ENVELOPE_POINTS`) for a design without an
+    ``[envelope]`` (which the verdict judges at its own operating point only)."""
+    points = design.envelope.points if design.envelope is not None else DEFAULT_ENVELOPE_POINTS
+    return tuple(point_conditions(design, point) for point in points)

@@ -1,16 +1,28 @@
 """The one recipe that judges a design: :func:`assess` and its :class:`Assessment`.
 
-``assess(design, resolution)`` analyses the design at its operating point
+``assess(design, resolution)`` analyses the design at each of its operating points
 (:func:`~flexshaft.verdict.operating_point.analyse_point`), gathers the evidence each
-requirement needs (:func:`~flexshaft.verdict.gather.gather_evidence`) and checks it against the
-design's ``[requirements]`` (:func:`~flexshaft.verdict.checks.evaluate`). ``flexshaft run`` (at
-:data:`~flexshaft.resolution.REPORT`), the optimizer (at its fidelity), ``flexshaft compare``
-and ``flexshaft check`` (its size estimate counts the same :class:`~flexshaft.resolution.Resolution`)
-all go through it, so one design at one resolution is judged identically by each.
+requirement needs (:func:`~flexshaft.verdict.gather.gather_evidence`), checks it against the
+design's ``[requirements]`` (:func:`~flexshaft.verdict.checks.evaluate`) and combines the points
+(:func:`~flexshaft.verdict.envelope.envelope_verdict`): every check at every point, the worst
+one and where.
+
+The operating points: a design without an ``[envelope]`` is judged at its own operating point
+(its ``[operating]`` speed and power, its materials at their reference temperature). With one,
+at each of its points (cold day, standard day, hot-soak start, ...), each the design at that
+point (:func:`flexshaft.thermal.envelope.point_conditions`,
+:func:`flexshaft.design.points.design_at_point`). What only the report shows (modes at rest,
+the Campbell diagram, the strength's load shares, the thermal sweeps) is computed once, at the
+governing point (:func:`~flexshaft.verdict.envelope.governing_point`); the checks do not read it.
+
+``flexshaft run`` (at :data:`~flexshaft.resolution.REPORT`), the optimizer (at its fidelity),
+``flexshaft compare`` and ``flexshaft check`` (its size estimate counts the same
+:class:`~flexshaft.resolution.Resolution` and points) all go through it, so one design at one
+resolution is judged identically by each.
 
 >>> import flexshaft as fs
 >>> a = fs.assess(fs.baseline_design(), fs.SCREENING)    # doctest: +SKIP
->>> a.verdict.summary, a.campbell, a.spinup.shaft_peak.max()  # doctest: +SKIP
+>>> a.verdict.summary, a.governing_point, [p.name for p in a.points]  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -22,31 +34,63 @@ from concurrent.futures import Executor
 from dataclasses import dataclass
 
 from flexshaft.assembly.size import check_problem_size
-from flexshaft.design import Design
+from flexshaft.design import Design, DesignError, Problem
+from flexshaft.design.points import design_at_point
 from flexshaft.resolution import REPORT, Resolution
+from flexshaft.thermal.envelope import point_conditions
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.checks import evaluate
+from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
 from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.gather import gather_evidence
-from flexshaft.verdict.operating_point import PointAnalyses, analyse_point
+from flexshaft.verdict.operating_point import PointAnalyses, add_report_detail, analyse_point
 from flexshaft.verdict.result import Verdict
 
-__all__ = ["Assessment", "assess"]
+__all__ = ["Assessment", "PointAssessment", "assess"]
 
 
 @dataclass(frozen=True, kw_only=True)
 class Assessment(PointAnalyses):
-    """A design judged at its operating point: every analysis of :class:`PointAnalyses` (the
+    """A design judged at its operating points, SI units. Frozen: computed once.
+
+    ``design`` is the design assessed. The other fields of :class:`PointAnalyses` (the model, the
     modes, Campbell diagram, spin-up response, critical speeds, strength, buckling, metal
-    strength, coupling misalignment, bearing reactions, thermal results, whirl stability and the
-    notes), the ``evidence`` its checks read and the ``verdict``, SI units. Frozen: computed once.
+    strength, coupling misalignment, bearing reactions, thermal results, whirl stability,
+    every-root check, torsional dynamics, bearing loops, the point's conditions and the notes)
+    are those of the governing point, with what only the report shows (the design at that
+    point is ``model.design``); ``evidence`` is that point's.
+
+    Attributes
+    ----------
+    evidence : Evidence
+        The governing point's evidence.
+    verdict : Verdict
+        Every check at every point: the worst value and where (its location's ``"point"``
+        names the envelope point; none without an ``[envelope]``).
+    points : tuple of PointAssessment
+        Each operating point's analyses, evidence and verdict, in the envelope's order (one,
+        named ``"operating point"``, without an ``[envelope]``).
+    governing_point : str
+        The point of the tightest check, whose analyses the fields above are.
     """
 
     evidence: Evidence
     verdict: Verdict
+    points: tuple[PointAssessment, ...]
+    governing_point: str
+
+    def point(self, name: str) -> PointAssessment:
+        """The operating point called ``name``."""
+        for p in self.points:
+            if p.name == name:
+                return p
+        raise KeyError(name)
 
     def __repr__(self) -> str:
-        return f"Assessment({self.design.name!r} at the {self.resolution.name} resolution: {self.verdict.summary})"
+        where = f", governed by {self.governing_point}" if len(self.points) > 1 else ""
+        return (
+            f"Assessment({self.design.name!r} at the {self.resolution.name} resolution{where}: {self.verdict.summary})"
+        )
 
     def _repr_html_(self) -> str:
         """The design, the verdict headline and table (:meth:`Verdict._repr_html_`), the
@@ -54,9 +98,14 @@ class Assessment(PointAnalyses):
         rpm = rad_s_to_rpm(self.operating_speed)
         fields = [f.name for f in dataclasses.fields(PointAnalyses) if getattr(self, f.name) is not None]
         analyses = [n for n in fields if n not in ("design", "resolution", "model", "notes")]
+        points = (
+            f"; {len(self.points)} operating points, analyses shown at {html.escape(self.governing_point)}"
+            if len(self.points) > 1
+            else ""
+        )
         parts = [
             f"<p><b>{html.escape(self.design.name)}</b><br>assessed at {rpm:.0f} rpm, "
-            f"{html.escape(self.resolution.name)} resolution</p>",
+            f"{html.escape(self.resolution.name)} resolution{points}</p>",
             self.verdict._repr_html_(),
             '<p style="font-size:smaller">analyses: '
             + html.escape(", ".join(f".{n}" for n in (*analyses, "evidence")))
@@ -70,6 +119,13 @@ class Assessment(PointAnalyses):
         return self.verdict.to_dataframe()
 
 
+def _judged(name: str, analyses: PointAnalyses) -> PointAssessment:
+    evidence = gather_evidence(analyses)
+    return PointAssessment(
+        name=name, analyses=analyses, evidence=evidence, verdict=evaluate(evidence, analyses.design.requirements)
+    )
+
+
 def assess(
     design: Design,
     resolution: Resolution = REPORT,
@@ -77,7 +133,8 @@ def assess(
     executor: Executor | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> Assessment:
-    """Analyse ``design`` at ``resolution`` and judge it against its ``[requirements]``.
+    """Analyse ``design`` at ``resolution`` at each operating point and judge it against its
+    ``[requirements]`` (module docstring).
 
     Parameters
     ----------
@@ -97,12 +154,50 @@ def assess(
     ------
     DesignError
         When the assessment could not finish (its size estimate is above the hard caps,
-        :func:`~flexshaft.assembly.size.check_problem_size`); a
-        :class:`~flexshaft.assembly.size.ProblemSizeWarning` when it is large.
+        :func:`~flexshaft.assembly.size.check_problem_size`; a ProblemSizeWarning when it is
+        large), or an envelope point puts the shaft outside a lamina's temperature table or the
+        design at a point breaks the schema.
     """
     check_problem_size(design, "assess", resolution, stacklevel=3)  # refuses what cannot finish; warns when large
-    analyses = analyse_point(design, resolution, executor=executor, progress=progress)
+    if design.envelope is None:
+        analyses = analyse_point(design, resolution, executor=executor, progress=progress)
+        if progress is not None:
+            progress("requirements verdict")
+        only = _judged("operating point", analyses)
+        return Assessment(
+            **vars(analyses), evidence=only.evidence, verdict=only.verdict, points=(only,), governing_point=only.name
+        )
+    judged = []
+    for index, point in enumerate(design.envelope.points):
+        step = None if progress is None else (lambda label, name=point.name: progress(f"{name}: {label}"))
+        try:
+            conditions = point_conditions(design, point)
+        except ValueError as exc:  # a material temperature outside a lamina's table
+            raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
+        try:
+            at_point = design_at_point(design, point, conditions)
+        except DesignError as exc:  # the design at the point breaks the schema (e.g. power without speed)
+            raise DesignError(
+                [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
+                "<envelope>",
+            ) from None
+        analyses = analyse_point(
+            at_point, resolution, conditions=conditions, detail=False, executor=executor, progress=step
+        )
+        judged.append(_judged(point.name, analyses))
     if progress is not None:
         progress("requirements verdict")
-    evidence = gather_evidence(analyses)
-    return Assessment(**vars(analyses), evidence=evidence, verdict=evaluate(evidence, design.requirements))
+    governing = governing_point(judged)
+    index = next(k for k, p in enumerate(judged) if p.name == governing)
+    if resolution.report_detail:
+        if progress is not None:
+            progress(f"{governing}: the report's detail")
+        judged[index] = _judged(governing, add_report_detail(judged[index].analyses))
+    shown = judged[index]
+    return Assessment(
+        **{**vars(shown.analyses), "design": design},
+        evidence=shown.evidence,
+        verdict=envelope_verdict(judged),
+        points=tuple(judged),
+        governing_point=governing,
+    )

@@ -11,17 +11,24 @@ entry here (with its evidence in :mod:`flexshaft.verdict.evidence` and
 
 Checks, in report order (key: requirement):
 
-* ``tsai_wu``: minimum ply Tsai-Wu safety factor (static loads + imbalance at the operating speed);
+* ``tsai_wu``: minimum ply Tsai-Wu safety factor (static loads, the steady torque times the
+  torsional response's torque factor, + imbalance at the operating speed), with the effective
+  compressive strength min(X_c, kink band); its note says which governs;
 * ``metal_strength`` (when the shaft has an isotropic segment): the smaller of the von Mises
   yield and modified-Goodman fatigue safety factors of the metal segments
   (:mod:`flexshaft.analyses.metal_strength`) against ``min_safety_factor``;
 * ``buckling``: torsional-buckling safety factor;
-* ``whirl_onset``: no whirl instability below (1 + margin) × the operating speed;
+* ``whirl_onset``: no whirl instability below (1 + margin) × the operating speed: neither a
+  tracked mode nor any root of the closed loop at rest, the operating speed and that speed;
 * ``whirl_damping``: log decrement of the lateral whirl modes (shaft share ≥ 10 %) at the operating speed;
 * ``separation``: API 684 separation margin of every lateral critical speed
   (:mod:`flexshaft.analyses.separation`);
+* ``torsional_separation``: every torsional mode at least ``min_torsional_separation`` from
+  every excitation (1/rev, tail-rotor N/rev, main-rotor harmonics) over the speed range;
 * ``actuator_orbit``: static offset + spin-up orbit at each actuator within its auxiliary-bearing gap;
 * ``actuator_force``: static + spin-up force of each actuator within its capacity;
+* ``loop_sensitivity``, ``loop_gain_margin``, ``loop_phase_margin`` (when the design has
+  active bearings): sensitivity peak (ISO 14839-3), gain and phase margins of every loop;
 * ``temperature``: maximum shaft temperature within the matrix allowable;
 * ``spinup_deflection``: peak shaft orbit during spin-up within the limit;
 * ``coupling_angle`` (when the design has couplings): the static plus whirling misalignment
@@ -52,7 +59,11 @@ __all__ = [
     "metal_strength",
     "separation",
     "spinup_deflection",
+    "loop_gain_margin",
+    "loop_phase_margin",
+    "loop_sensitivity",
     "temperature",
+    "torsional_separation",
     "tsai_wu",
     "whirl_damping",
     "whirl_onset",
@@ -104,11 +115,13 @@ def _at_most(value: float, limit: float, location: Location) -> Finding:
 
 
 def tsai_wu(ev: Evidence, req: Requirements) -> Check:
-    """The smallest ply Tsai-Wu safety factor at least ``min_safety_factor``."""
+    """The smallest ply Tsai-Wu safety factor at least ``min_safety_factor`` (the note says which
+    compressive strength governs and the torque factor applied)."""
     args = ("tsai_wu", "Tsai-Wu safety factor", "ratio", "at least")
     if ev.safety_factor is None:
         return _not_evaluated(*args, ev.notes.get("tsai_wu", "no ply strength result"))
-    return _from_findings(*args, [_at_least(ev.safety_factor, req.min_safety_factor, ev.safety_factor_location)])
+    finding = _at_least(ev.safety_factor, req.min_safety_factor, ev.safety_factor_location)
+    return _from_findings(*args, [finding], ev.strength_note)
 
 
 def buckling(ev: Evidence, req: Requirements) -> Check:
@@ -333,6 +346,93 @@ def actuator_force(ev: Evidence, req: Requirements) -> Check:
     return _actuator_check(ev, "actuator_force")
 
 
+def torsional_separation(ev: Evidence, req: Requirements) -> Check:
+    """Every torsional natural frequency at least ``min_torsional_separation`` from every
+    excitation frequency over the operating speed range (its nearest one per mode)."""
+    args = ("torsional_separation", "torsional separation", "fraction", "at least")
+    if ev.torsional_modes is None:
+        return _not_evaluated(*args, ev.notes.get("torsional_separation", "no torsional modes"))
+    if not ev.torsional_modes:
+        return Check(*args, "pass", note="no flexible torsional mode below twice the highest excitation")
+    findings = [
+        _at_least(
+            m.margin,
+            req.min_torsional_separation,
+            {
+                "mode": m.label,
+                "frequency": m.frequency,
+                "case": m.excitation,
+                "detail": f"excitation {m.band[0] / (2 * math.pi):.4g}-{m.band[1] / (2 * math.pi):.4g} Hz "
+                "over the speed range",
+            },
+        )
+        for m in ev.torsional_modes
+    ]
+    return _from_findings(*args, findings, "margin |f_n − f_e|/f_e to the nearest excitation over the speed range")
+
+
+def _loop_location(loop, frequency: float | None) -> dict:
+    location = {"actuator": f"{loop.actuator} ({loop.axis})", "speed": loop.speed}
+    if frequency is not None:
+        location["frequency"] = frequency
+    return location
+
+
+def loop_sensitivity(ev: Evidence, req: Requirements) -> Check | None:
+    """The sensitivity peak |S|max of every magnetic-bearing loop at most ``max_sensitivity_peak``
+    (ISO 14839-3's zone limits; listed only with active bearings)."""
+    args = ("loop_sensitivity", "loop sensitivity peak", "ratio", "at most")
+    if ev.loops is None:
+        return None
+    if not ev.loops:
+        return _not_evaluated(*args, ev.notes.get("loop_sensitivity", "no loop robustness result"))
+    findings = [
+        _at_most(lp.peak_sensitivity, req.max_sensitivity_peak, _loop_location(lp, lp.peak_frequency))
+        for lp in ev.loops
+    ]
+    return _from_findings(
+        *args, findings, "ISO 14839-3 zones A < 3, B < 4, C < 5, D above; each axis, other loops closed"
+    )
+
+
+def loop_gain_margin(ev: Evidence, req: Requirements) -> Check | None:
+    """The gain margin of every magnetic-bearing loop, for a gain rise and for a gain fall, at
+    least ``min_gain_margin_db`` (a loop without a phase crossover of a kind has no such limit)."""
+    args = ("loop_gain_margin", "loop gain margin", "decibel", "at least")
+    if ev.loops is None:
+        return None
+    if not ev.loops:
+        return _not_evaluated(*args, ev.notes.get("loop_gain_margin", "no loop robustness result"))
+    findings = []
+    for lp in ev.loops:
+        for value, direction in ((lp.gain_margin_upper, "gain rise"), (lp.gain_margin_lower, "gain fall")):
+            if value is not None:
+                location = {**_loop_location(lp, None), "case": direction}
+                findings.append(_at_least(abs(value), req.min_gain_margin_db, location))
+    if not findings:
+        return Check(*args, "pass", note="no phase crossover of any loop in the frequency range: no finite gain margin")
+    return _from_findings(*args, findings, "either way: the gain rise or fall that puts the loop on −1")
+
+
+def loop_phase_margin(ev: Evidence, req: Requirements) -> Check | None:
+    """The smallest phase margin over the gain crossovers of every magnetic-bearing loop at least
+    ``min_phase_margin_deg``."""
+    args = ("loop_phase_margin", "loop phase margin", "angle", "at least")
+    if ev.loops is None:
+        return None
+    if not ev.loops:
+        return _not_evaluated(*args, ev.notes.get("loop_phase_margin", "no loop robustness result"))
+    limit = math.radians(req.min_phase_margin_deg)
+    findings = [
+        _at_least(lp.phase_margin, limit, _loop_location(lp, lp.phase_margin_frequency))
+        for lp in ev.loops
+        if lp.phase_margin is not None
+    ]
+    if not findings:
+        return Check(*args, "pass", note="no gain crossover of any loop in the frequency range")
+    return _from_findings(*args, findings, "smallest over each loop's gain crossovers")
+
+
 # ------------------------------------------------------------------------------------------------
 # The table
 
@@ -387,8 +487,12 @@ CHECKS: tuple[CheckRule, ...] = (
     CheckRule("whirl_onset", whirl_onset),
     CheckRule("whirl_damping", whirl_damping),
     CheckRule("separation", separation),
+    CheckRule("torsional_separation", torsional_separation),
     CheckRule("actuator_orbit", actuator_orbit, _active_bearings),
     CheckRule("actuator_force", actuator_force, _active_bearings),
+    CheckRule("loop_sensitivity", loop_sensitivity, _active_bearings),
+    CheckRule("loop_gain_margin", loop_gain_margin, _active_bearings),
+    CheckRule("loop_phase_margin", loop_phase_margin, _active_bearings),
     CheckRule("temperature", temperature, _laminated),
     CheckRule("spinup_deflection", spinup_deflection),
     CheckRule("coupling_angle", coupling_angle, _couplings),

@@ -23,8 +23,10 @@ __all__ = [
     "Evidence",
     "LateralCritical",
     "Location",
+    "LoopEvidence",
     "MetalEvidence",
     "ModeDamping",
+    "TorsionalEvidence",
 ]
 
 #: Where a value occurs: SI values and labels.
@@ -98,6 +100,45 @@ class CouplingEvidence:
 
 
 @dataclass(frozen=True)
+class TorsionalEvidence:
+    """One torsional mode against its nearest excitation over the operating speed range.
+
+    ``frequency`` is its natural frequency [rad/s], ``margin`` the separation
+    min |f_n − f_e|/f_e over the excitation's band [-] (0 inside it), ``excitation`` its name
+    (e.g. "tail rotor 4/rev") and ``band`` the excitation's frequencies [rad/s] at the lowest
+    and highest operating speeds.
+    """
+
+    label: str
+    frequency: float
+    margin: float
+    excitation: str
+    band: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class LoopEvidence:
+    """Robustness of one control axis of one magnetic bearing.
+
+    ``peak_sensitivity`` max |S(iω)| [-] at ``peak_frequency`` [rad/s];
+    ``gain_margin_upper`` / ``gain_margin_lower`` [dB]: the smallest gain rise (> 0) and the
+    gain fall nearest 0 dB (< 0) that put the loop on −1 (None: no phase crossover of that
+    kind in the frequency range); ``phase_margin`` [rad] the smallest over the gain crossovers
+    (None: none); ``speed`` [rad/s] the spin speed of the loop.
+    """
+
+    actuator: str
+    axis: str
+    speed: float
+    peak_sensitivity: float
+    peak_frequency: float
+    gain_margin_upper: float | None = None
+    gain_margin_lower: float | None = None
+    phase_margin: float | None = None
+    phase_margin_frequency: float | None = None
+
+
+@dataclass(frozen=True)
 class Evidence:
     """The results a verdict needs, SI units; None where the result does not exist.
 
@@ -113,9 +154,11 @@ class Evidence:
         Highest speed of the stability analysis [rad/s]; None: no stability analysis.
     onset_speed, onset_location
         Lowest whirl-instability onset speed [rad/s] (None: stable up to ``stability_max_speed``)
-        and the unstable mode.
+        and the unstable mode or root: of the tracked modes, or the lowest speed of the
+        every-root check (:mod:`flexshaft.analyses.root_stability`) with an unstable root (the
+        onset is then at or below it).
     modes_at_operating : tuple of ModeDamping or None
-        Every tracked mode at the operating speed.
+        The lateral whirl modes at the operating speed (shaft share at least 10 %).
     critical_speeds : tuple of LateralCritical or None
         Lateral critical speeds (peaks of the unbalance response) with their AF.
     critical_search_max_speed : float or None
@@ -131,6 +174,15 @@ class Evidence:
         Safety factors of the isotropic segments; None: the shaft has none (no check).
     coupling_angles : tuple of CouplingEvidence or None
         Misalignment of every coupling; None: the design has no couplings (no check).
+    strength_note : str
+        How the ply check took its compressive strength and torque (kink band or X_c, the
+        torque factor), shown with the ``tsai_wu`` check.
+    torque_factor : float
+        Peak over steady torque of the torsional forced response [-] (1 without one).
+    torsional_modes : tuple of TorsionalEvidence or None
+        Every torsional mode checked for separation; None: not evaluated (see ``notes``).
+    loops : tuple of LoopEvidence or None
+        Every control axis of the magnetic bearings; None: no active bearings.
     notes : mapping
         Check key -> why its evidence is missing (shown as "not evaluated: <note>").
     """
@@ -155,4 +207,8 @@ class Evidence:
     spinup_location: Location = field(default_factory=dict)
     metal_strength: tuple[MetalEvidence, ...] | None = None
     coupling_angles: tuple[CouplingEvidence, ...] | None = None
+    strength_note: str = ""
+    torque_factor: float = 1.0
+    torsional_modes: tuple[TorsionalEvidence, ...] | None = None
+    loops: tuple[LoopEvidence, ...] | None = None
     notes: Mapping[str, str] = field(default_factory=dict)

@@ -14,9 +14,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.assembly.model import Model
-from flexshaft.units import celsius_to_kelvin
-from flexshaft.verdict.evidence import ActuatorEvidence, CouplingEvidence, Evidence, MetalEvidence, ModeDamping
-from flexshaft.verdict.operating_point import PointAnalyses
+from flexshaft.strength import compressive_strength_note
+from flexshaft.units import celsius_to_kelvin, kelvin_to_celsius, rad_s_to_rpm
+from flexshaft.verdict.evidence import (
+    ActuatorEvidence,
+    CouplingEvidence,
+    Evidence,
+    LoopEvidence,
+    MetalEvidence,
+    ModeDamping,
+    TorsionalEvidence,
+)
+from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes
 
 __all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence"]
 
@@ -53,12 +62,15 @@ def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     From the damped modes at the operating speed (the model's damping physics). Only lateral
     modes with at least :data:`WHIRL_DAMPING_SHAFT_SHARE` of their kinetic energy in the shaft
     count: API 617's log-decrement criterion concerns the rotor's whirl modes; boom-only modes
-    (damped by the structure, η/2) and torsional or axial modes cannot whirl and are excluded.
+    (damped by the structure, η/2) and torsional or axial modes cannot whirl and are excluded, as
+    are real and overdamped roots (:func:`~flexshaft.verdict.operating_point.whirl_modes`: the
+    controllers' states; a divergent root fails the onset check).
     """
     m = p.modes_at_speed
+    whirl = whirl_modes(m)
     out = []
     for k in range(m.eigenvalues.size):
-        if m.kind[k] != "lateral" or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE:
+        if not whirl[k] or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE or m.eigenvalues[k].imag <= 0:
             continue
         label = f"{k + 1} ({m.whirl[k]}, {m.component[k]})"
         out.append(ModeDamping(label, float(abs(m.eigenvalues[k].imag)), float(m.log_decrements[k])))
@@ -72,6 +84,21 @@ def _strength(p: PointAnalyses, notes: dict) -> dict:
         return {}
     r = min(results, key=lambda r: r.safety_factor)
     case = "static + imbalance" if r is p.strength_total else "static"
+    parts = []
+    c = p.compressive_strength
+    if c is not None:
+        note = compressive_strength_note(c, p.design.shaft.material)
+        parts.append(
+            note
+            if note is not None
+            else f"X_c = {c.datasheet * 1e-6:.4g} MPa (below its kink band {c.kink_band * 1e-6:.3g} MPa)"
+        )
+    if p.torque_factor != 1.0:
+        parts.append(f"steady torque × {p.torque_factor:.4g} (tail-rotor torque oscillation)")
+    if p.residual_temperature is not None:
+        parts.append(
+            f"thermal residual at {kelvin_to_celsius(p.residual_temperature):.1f} °C, integrated over the cool-down"
+        )
     return {
         "safety_factor": float(r.safety_factor),
         "safety_factor_location": {
@@ -80,6 +107,8 @@ def _strength(p: PointAnalyses, notes: dict) -> dict:
             "case": case,
             "detail": f"φ = {r.phase_deg:.0f}°, {r.dominant_stress} dominates",
         },
+        "strength_note": "; ".join(parts),
+        "torque_factor": p.torque_factor,
     }
 
 
@@ -129,7 +158,7 @@ def _metal_buckling(p: PointAnalyses, notes: dict) -> dict:
         return {}
     b = min(metal.buckling, key=lambda b: b.safety_factor)
     return {
-        "buckling_safety_factor": float(b.safety_factor),
+        "buckling_safety_factor": float(b.safety_factor) / p.torque_factor,
         "buckling_location": {
             "case": f"segment {b.segment}, n = {b.wave_number}",
             "detail": f"applied {b.torque:.0f} N m, T_cr = {b.critical_torque:.0f} N m, isotropic classical (Sanders) "
@@ -146,27 +175,52 @@ def _buckling(p: PointAnalyses, notes: dict) -> dict:
     sense, n = ("positive", r.n_positive) if positive else ("negative", r.n_negative)
     n = "∞ (shear crimping)" if n is None else n
     critical = float(min(r.torque_positive, r.torque_negative))
+    peak = f" × {p.torque_factor:.4g} (torsional response)" if p.torque_factor != 1.0 else ""
     return {
-        "buckling_safety_factor": float(p.buckling.safety_factor),
+        "buckling_safety_factor": float(p.buckling.safety_factor) / p.torque_factor,
         "buckling_location": {
             "case": f"{sense} torque, n = {n}",
-            "detail": f"applied {p.buckling.torque:.0f} N m, T_cr = {critical:.0f} N m, {r.theory} shell",
+            "detail": f"applied {p.buckling.torque:.0f} N m{peak}, T_cr = {critical:.0f} N m, {r.theory} shell",
         },
     }
 
 
 def _whirl(p: PointAnalyses) -> dict:
+    """The lowest onset of the tracked modes (an oscillatory mode or a divergence) and of the
+    every-root check, whichever is lower."""
     st = p.stability
     out = {"stability_max_speed": float(st.speeds[-1]), "modes_at_operating": _modes_at_operating(p)}
+    onset, location = None, {}
     if st.onset_speed is not None:
+        onset = float(st.onset_speed)
+        k = min(st.at_speed(onset), st.speeds.size - 1)
         m = st.unstable_mode
-        k = int(np.argmin(np.abs(np.asarray(st.speeds) - st.onset_speed)))
-        out["onset_speed"] = float(st.onset_speed)
-        out["onset_location"] = {
-            "mode": f"{m + 1} ({st.whirl[k, m]})",
-            "frequency": float(abs(st.eigenvalues[k, m].imag)),
-            "detail": f"{st.damping_model} internal-damping model",
+        if m is None or st.onset_kind == "divergence":
+            root = st.divergence[k] if st.divergence is not None else float("nan")
+            location = {"mode": "divergence (real root)", "detail": f"s = {root:.4g} 1/s, {st.damping_model} model"}
+        else:
+            location = {
+                "mode": f"{m + 1} ({st.whirl[k, m]})",
+                "frequency": float(abs(st.eigenvalues[k, m].imag)),
+                "detail": f"{st.damping_model} internal-damping model",
+            }
+    roots = p.roots
+    first = roots.onset_speed
+    if first is not None and (onset is None or first < onset):
+        worst = roots.worst_at(first)
+        kind = "divergence (real root)" if worst.kind == "divergence" else "untracked root"
+        solved = "" if worst.refined or worst.kind == "divergence" else " (first-order loss estimate)"
+        n = sum(r.speed == first for r in roots.unstable)
+        onset = first
+        location = {
+            "mode": kind,
+            "frequency": worst.frequency,
+            "detail": f"{n} unstable root(s) of the closed loop at {rad_s_to_rpm(first):.0f} rpm (onset at or below), "
+            f"worst s = {worst.root.real:.4g} {worst.root.imag:+.4g}j 1/s, ζ = {worst.damping_ratio:.3g}{solved}",
         }
+    if onset is not None:
+        out["onset_speed"] = onset
+        out["onset_location"] = location
     return out
 
 
@@ -181,15 +235,16 @@ def _actuators(p: PointAnalyses) -> tuple[ActuatorEvidence, ...]:
     for a in model.actuators:
         d = np.asarray(spinup.actuator_displacement[a.name])
         f = np.asarray(spinup.actuator_force[a.name])
-        i, j = int(up[np.argmax(d[up])]), int(up[np.argmax(f[up])])
         static = float(np.hypot(*np.real(a.lateral_rows @ p.static_displacement)))
+        if up.size:
+            i, j = int(up[np.argmax(d[up])]), int(up[np.argmax(f[up])])
+            peaks = (float(d[i]), float(spinup.speeds[i]), float(f[j]), float(spinup.speeds[j]))
+        else:  # at rest: no spin-up, the static offset and force alone
+            peaks = (0.0, 0.0, 0.0, 0.0)
         out.append(
             ActuatorEvidence(
                 a.name,
-                float(d[i]),
-                float(spinup.speeds[i]),
-                float(f[j]),
-                float(spinup.speeds[j]),
+                *peaks,
                 static_offset=static,
                 static_force=float(p.bearing_reactions[a.name].static_lateral),
                 gap=limits[a.name].gap,
@@ -212,11 +267,20 @@ def _temperature(p: PointAnalyses, notes: dict) -> dict:
         if sh is not None
         else f"{th.loss_model} loss model, constant properties"
     )
-    return {
+    out = {
         "max_temperature": float(temperature.temperature[i]),
         "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
         "thermal_runaway": sh is not None and sh.status == "runaway",
     }
+    c = p.conditions
+    if c is not None and c.material_temperature > out["max_temperature"]:
+        # a hot-soaked start: the shaft starts hotter than its running equilibrium
+        out["max_temperature"] = float(c.material_temperature)
+        out["temperature_location"] = {
+            "detail": f"the shaft's material temperature at the point ({c.point.material_temperature}), "
+            f"above its self-heating equilibrium {kelvin_to_celsius(float(temperature.temperature[i])):.1f} °C"
+        }
+    return out
 
 
 def _spinup_peak(p: PointAnalyses, criticals) -> dict:
@@ -246,6 +310,58 @@ def _spinup_peak(p: PointAnalyses, criticals) -> dict:
     return out
 
 
+def _torsional(p: PointAnalyses, notes: dict) -> dict:
+    """Each torsional mode against its nearest excitation (not evaluated at rest or without a
+    free twist)."""
+    if p.torsional_separation is None:
+        notes["torsional_separation"] = (
+            "the model has no free twist (no torsional modes)"
+            if p.torsional_modes is None
+            else "the point is at rest: no excitation sweeps the torsional modes"
+        )
+        return {}
+    hz = 2.0 * np.pi
+    return {
+        "torsional_modes": tuple(
+            TorsionalEvidence(
+                f"T{s.mode + 1}",
+                hz * s.natural_frequency,
+                float(s.margin),
+                s.excitation,
+                (hz * s.band[0], hz * s.band[1]),
+            )
+            for s in p.torsional_separation
+        )
+    }
+
+
+def _loops(p: PointAnalyses) -> dict:
+    if p.bearing_loops is None:
+        return {}
+
+    def finite(x: float, scale: float = 1.0) -> float | None:
+        return float(x) * scale if np.isfinite(x) else None
+
+    out = []
+    for loop in p.bearing_loops:
+        m = loop.margins
+        crossing = None if m.phase_margin_frequency is None else 2.0 * np.pi * m.phase_margin_frequency
+        out.append(
+            LoopEvidence(
+                loop.actuator,
+                loop.axis,
+                float(loop.speed),
+                float(m.peak_sensitivity),
+                float(2.0 * np.pi * m.peak_frequency),
+                finite(m.gain_margin_upper_db),
+                finite(m.gain_margin_lower_db),
+                finite(m.phase_margin_deg, np.pi / 180.0),
+                crossing,
+            )
+        )
+    return {"loops": tuple(out)}
+
+
 def gather_evidence(p: PointAnalyses) -> Evidence:
     """The verdict's evidence from the analyses of an operating point (every number is read
     from ``p``; notes say why a check's evidence is missing)."""
@@ -265,4 +381,6 @@ def gather_evidence(p: PointAnalyses) -> Evidence:
     values.update(_temperature(p, notes))
     values["allowable_temperature"] = celsius_to_kelvin(p.design.thermal.allowable_temperature_c)
     values.update(_spinup_peak(p, found.criticals))
+    values.update(_torsional(p, notes))
+    values.update(_loops(p))
     return Evidence(operating_speed=p.operating_speed, actuators=_actuators(p), notes=notes, **values)

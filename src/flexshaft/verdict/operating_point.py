@@ -1,51 +1,84 @@
 """Every analysis of a design at one operating point: the recipe the verdict judges.
 
 :func:`analyse_point` builds the design's model and runs, at the grids of a
-:class:`~flexshaft.resolution.Resolution`, the analyses the requirements read (modes at the
-operating speed, the spin-up imbalance response and the lateral critical speeds on it, static
-loads and bearing reactions, ply and metal strength, coupling misalignment, torsional buckling,
-the shaft's self-heating, whirl stability) and, at a report's resolution, what only the report
-shows (modes at rest, the Campbell diagram, the strength's load shares, the classical-shell
-buckling, the thermal sweeps). It returns them as a frozen :class:`PointAnalyses`.
+:class:`~flexshaft.resolution.Resolution`, the analyses the requirements read:
 
-One operating point is the design's own (its ``[operating]`` speed and power, its materials at
-their reference temperature). An operating envelope (several points, each a variant of the
-design) calls :func:`analyse_point` once per point.
+* modes at the operating speed (the lateral whirl modes: as many more modes as it takes to hold
+  ``resolution.modes`` lateral ones), the spin-up imbalance response and the lateral critical
+  speeds on it, static loads and bearing reactions;
+* the torsional modes, their separation from the excitations over the operating speed range,
+  and the forced response to the tail rotor's torque oscillation
+  (:mod:`flexshaft.analyses.torsional`), whose torque factor multiplies the steady torque of
+  the strength and buckling checks;
+* ply strength with the effective compressive strength min(X_c, kink band)
+  (:func:`flexshaft.strength.compressive_strength`) and the thermal residual stress integrated
+  over the cool-down (:mod:`flexshaft.thermal.residual`), metal strength, coupling
+  misalignment, torsional buckling, the shaft's self-heating;
+* whirl stability of the tracked modes (:mod:`flexshaft.analyses.stability`) and of every root
+  of the closed loop at rest, at the operating speed and at the speed the onset requirement
+  must reach (:mod:`flexshaft.analyses.root_stability`);
+* the robustness of every magnetic-bearing loop at the operating speed
+  (:mod:`flexshaft.analyses.bearing_loops`);
 
-Parallel: the analyses that do not need each other (the spin-up response with its critical
-speeds, the Campbell diagram, buckling, thermal, whirl stability) are tasks
-(:mod:`flexshaft.parallel.tasks`); with an ``executor`` they run in its workers, each rebuilding
-the model from the design, while this process computes the rest. The results do not depend on
-where they were computed (tests/test_tasks.py).
+and, with ``detail`` (the report's), what only the report shows (modes at rest, the Campbell
+diagram up to the highest excitation the checks use, the strength's load shares, the
+classical-shell buckling, the thermal sweeps): :func:`add_report_detail` adds them to a point
+computed without. It returns them as a frozen :class:`PointAnalyses`.
+
+One operating point is a design as it stands: the design's own, or an envelope point's design
+(:func:`flexshaft.design.points.design_at_point`) with the point's
+:class:`~flexshaft.thermal.envelope.PointConditions` (its material temperature sets the
+thermal residual stress). :mod:`flexshaft.verdict.assess` calls it once per point.
+
+Parallel: the analyses that do not need each other are tasks (:mod:`flexshaft.verdict.point_tasks`);
+with an ``executor`` they run in its workers, each rebuilding the model from the design, while
+this process computes the rest. The results do not depend on where they were computed
+(tests/test_tasks.py).
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Mapping
 from concurrent.futures import Executor
 from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.campbell import Campbell, campbell
-from flexshaft.analyses.criticals import CriticalSpeeds, scan_critical_speeds
+from flexshaft.analyses.bearing_loops import BearingLoop
+from flexshaft.analyses.campbell import Campbell
+from flexshaft.analyses.criticals import CriticalSpeeds
 from flexshaft.analyses.metal_strength import MetalStrength, metal_strength
 from flexshaft.analyses.misalignment import CouplingMisalignment, coupling_misalignment
 from flexshaft.analyses.modal import Modes, modes
 from flexshaft.analyses.response import BearingReaction, bearing_reactions, imbalance_response
-from flexshaft.analyses.shaft_buckling import ShaftBuckling, shaft_buckling
+from flexshaft.analyses.root_stability import RootStability
+from flexshaft.analyses.shaft_buckling import ShaftBuckling
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
-from flexshaft.analyses.spinup_response import SpinupResponse, spinup_response
-from flexshaft.analyses.stability import StabilityResult, stability
+from flexshaft.analyses.spinup_response import SpinupResponse
+from flexshaft.analyses.stability import StabilityResult
+from flexshaft.analyses.torsional import (
+    TorsionalForcedResponse,
+    TorsionalModes,
+    TorsionalSeparation,
+    torsional_forced_response,
+    torsional_modes,
+    torsional_separation,
+)
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.design import Design
-from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
 from flexshaft.resolution import Resolution
-from flexshaft.thermal.study import ThermalResults, thermal_results
+from flexshaft.strength import CompressiveStrength, compressive_strength
+from flexshaft.thermal.envelope import PointConditions
+from flexshaft.thermal.options import matrix_law_from
+from flexshaft.thermal.residual import residual_ply_stresses
+from flexshaft.thermal.study import ThermalResults
+from flexshaft.units import celsius_to_kelvin
+from flexshaft.verdict.point_tasks import campbell_task, independent_tasks, report_buckling, report_thermal
 
-__all__ = ["PointAnalyses", "analyse_point"]
+__all__ = ["OVERDAMPED_RATIO", "PointAnalyses", "add_report_detail", "analyse_point", "lateral_modes", "whirl_modes"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -55,6 +88,7 @@ class PointAnalyses:
     Attributes
     ----------
     design : Design
+        The design analysed (an envelope point's design at that point).
     resolution : Resolution
         The grids they were computed at.
     model : Model
@@ -62,7 +96,7 @@ class PointAnalyses:
     modes_at_rest : Modes or None
         Damped modes at rest (None below the report's detail).
     modes_at_speed : Modes
-        Damped modes at the operating speed.
+        Damped modes at the operating speed: at least ``resolution.modes`` lateral ones.
     campbell : Campbell or None
         Campbell diagram (None without Campbell speeds).
     spinup : SpinupResponse
@@ -70,16 +104,22 @@ class PointAnalyses:
     criticals : CriticalSpeeds
         Lateral critical speeds on the spin-up scan, labelled with the Campbell modes.
     static_displacement : ndarray
-        Static response to the external loads and the torque (ndof,) [m, rad].
+        Static response to the external loads and the steady torque (ndof,) [m, rad].
     imbalance_at_speed : ndarray
         Imbalance response at the operating speed (ndof, n_cases) [m, rad].
     bearing_reactions : mapping of str to BearingReaction
         Static and imbalance loads of every bearing.
     strength_static, strength_total : StrengthResult or None
-        Tsai-Wu of the laminated shaft under the static loads, and with the imbalance at the
-        operating speed (worst load case); None without a one-piece laminated shaft.
+        Tsai-Wu of the laminated shaft under the static loads (the torque times the torsional
+        torque factor), and with the imbalance at the operating speed (worst load case), with
+        the effective compressive strength and the incremental thermal residual stress; None
+        without a one-piece laminated shaft.
+    compressive_strength : CompressiveStrength or None
+        The shaft lamina's X_c against its kink-band strength at the point (None without one).
+    residual_temperature : float or None
+        Temperature of the thermal residual stress [K] (None without a laminated shaft).
     buckling : ShaftBuckling or None
-        Torsional buckling of the laminated shaft (None without one).
+        Torsional buckling of the laminated shaft under the steady torque (None without one).
     metal_strength : MetalStrength or None
         Fatigue, yield and buckling of the isotropic segments (None without one).
     coupling_misalignment : CouplingMisalignment or None
@@ -87,7 +127,22 @@ class PointAnalyses:
     thermal : ThermalResults or None
         Shaft temperature and self-heating (None without a laminated shaft).
     stability : StabilityResult
-        Whirl stability from rest over the resolution's whirl speeds.
+        Whirl stability of the tracked modes from rest over the resolution's whirl speeds.
+    roots : RootStability
+        Every root of the closed loop at rest, the operating speed and the required onset speed.
+    torsional_modes : TorsionalModes or None
+        Modes of the twist subsystem (None when the model has no free twist).
+    torsional_separation : tuple of TorsionalSeparation or None
+        Each torsional mode against its nearest excitation over the operating speed range
+        (None at rest or without torsional modes).
+    torsional_response : TorsionalForcedResponse or None
+        Dynamic torque of the tail rotor's torque oscillation (None without a ``[tail_rotor]``
+        or at rest).
+    bearing_loops : tuple of BearingLoop or None
+        Sensitivity peak and margins of every control axis at the operating speed (None
+        without active bearings).
+    conditions : PointConditions or None
+        The envelope point's conditions (None: the design's own operating point).
     notes : tuple of str
         Analyses skipped and why.
     """
@@ -105,11 +160,19 @@ class PointAnalyses:
     bearing_reactions: Mapping[str, BearingReaction]
     strength_static: StrengthResult | None
     strength_total: StrengthResult | None
+    compressive_strength: CompressiveStrength | None
+    residual_temperature: float | None
     buckling: ShaftBuckling | None
     metal_strength: MetalStrength | None
     coupling_misalignment: CouplingMisalignment | None
     thermal: ThermalResults | None
     stability: StabilityResult
+    roots: RootStability
+    torsional_modes: TorsionalModes | None
+    torsional_separation: tuple[TorsionalSeparation, ...] | None
+    torsional_response: TorsionalForcedResponse | None
+    bearing_loops: tuple[BearingLoop, ...] | None
+    conditions: PointConditions | None = None
     notes: tuple[str, ...] = ()
 
     @property
@@ -117,11 +180,23 @@ class PointAnalyses:
         """Ω_op [rad/s]."""
         return float(self.model.speed)
 
+    @property
+    def point_name(self) -> str:
+        """The envelope point's name, or ``"operating point"`` for the design's own."""
+        return self.conditions.name if self.conditions is not None else "operating point"
+
+    @property
+    def torque_factor(self) -> float:
+        """Peak over steady shaft torque of the torsional forced response [-] (1 without one)."""
+        return 1.0 if self.torsional_response is None else float(self.torsional_response.torque_factor)
+
 
 def analyse_point(
     design: Design,
     resolution: Resolution,
     *,
+    conditions: PointConditions | None = None,
+    detail: bool | None = None,
     executor: Executor | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> PointAnalyses:
@@ -130,55 +205,61 @@ def analyse_point(
     Parameters
     ----------
     design : Design
-        A validated design.
+        A validated design (an envelope point's design at that point).
     resolution : Resolution
-        Grid sizes and ranges, and whether to compute what only the report shows.
+        Grid sizes and ranges.
+    conditions : PointConditions, optional
+        The envelope point's conditions (its material temperature is the thermal residual's).
+    detail : bool, optional
+        Also compute what only the report shows; default ``resolution.report_detail``.
     executor : concurrent.futures.Executor, optional
         A pool (e.g. :func:`flexshaft.parallel.pool.worker_pool`) for the independent analyses.
     progress : callable, optional
         Called with a short label before each step.
     """
     step = progress or _quiet
+    detail = resolution.report_detail if detail is None else bool(detail)
     step("assembling the model")
     model = build_model(design)
     speed = model.speed
-    own = _start_independent(design, model, resolution, executor)
+    own = independent_tasks(design, model, resolution, executor, detail=detail)
     step("natural frequencies")
-    at_rest = modes(model, 0.0, resolution.modes) if resolution.report_detail else None
-    at_speed = modes(model, speed, resolution.modes)
+    at_rest = modes(model, 0.0, resolution.modes) if detail else None
+    at_speed = lateral_modes(model, speed, resolution.modes)
+    notes: list[str] = []
+    step("torsional dynamics")
+    torsion, separation, response = _torsional(model, notes)
     step("static loads and strength")
     parts = static_load_parts(model)
+    factor = 1.0 if response is None else float(response.torque_factor)
     q_static = parts["external"] + parts["torque"]
+    q_peak = parts["external"] + factor * parts["torque"]  # the steady torque times the torque factor
     q_at_speed = (
         imbalance_response(model, [speed], imbalance_loads(model))[:, :, 0]
         if speed > 0
         else np.zeros((model.dofs.size, 1), complex)
     )
     reactions = bearing_reactions(model, q_static, q_at_speed)
-    strength_static = strength_total = None
-    notes = []
-    if model.shaft.laminate is not None:
-        strength_static = shaft_safety_factor(model, parts)
-        # the leave-one-out load shares are the report's; the minimum is the same without them
-        totals = [
-            shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=resolution.report_detail)
-            for c in range(q_at_speed.shape[1])
-        ]
-        strength_total = min(totals, key=lambda r: r.safety_factor)
-    elif design.segmented:
-        notes.append("ply strength and laminated-shell buckling assume one laminated tube; the shaft is segmented")
-    else:
-        notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+    strength = _strength(
+        design,
+        model,
+        {"external": parts["external"], "torque": factor * parts["torque"]},
+        q_at_speed,
+        conditions,
+        detail,
+        notes,
+    )
     metal = misalignment = None
     if any(design.materials[seg.material].kind == "isotropic" for seg in model.segments):
         step("metal strength")
-        metal = metal_strength(model, q_static, q_at_speed)
+        metal = metal_strength(model, q_peak, q_at_speed)
     if model.couplings:
         misalignment = coupling_misalignment(model, q_static, q_at_speed)
     if model.shaft.laminate is None:
         notes.append("shaft thermal model needs a laminated shaft (lamina conductivities); skipped")
     done = {key: outcome.value for key, outcome in own.results(step).items()}
     spinup, criticals = done["spinup"]
+    roots, loops = done["roots"]
     camp = done.get("campbell")
     return PointAnalyses(
         design=design,
@@ -192,65 +273,124 @@ def analyse_point(
         static_displacement=q_static,
         imbalance_at_speed=q_at_speed,
         bearing_reactions=reactions,
-        strength_static=strength_static,
-        strength_total=strength_total,
+        strength_static=strength[0],
+        strength_total=strength[1],
+        compressive_strength=strength[2],
+        residual_temperature=strength[3],
         buckling=done.get("buckling"),
         metal_strength=metal,
         coupling_misalignment=misalignment,
         thermal=done.get("thermal"),
         stability=done["stability"],
+        roots=roots,
+        torsional_modes=torsion,
+        torsional_separation=separation,
+        torsional_response=response,
+        bearing_loops=loops,
+        conditions=conditions,
         notes=tuple(notes),
     )
+
+
+def add_report_detail(p: PointAnalyses, resolution: Resolution | None = None) -> PointAnalyses:
+    """``p`` with what only the report shows (modes at rest, the Campbell diagram with the
+    critical speeds labelled by it, the strength's load shares, the classical-shell buckling,
+    the thermal sweeps), computed at ``resolution`` (default ``p.resolution``); the verdict's
+    numbers do not change."""
+    resolution = resolution or p.resolution
+    model = p.model
+    camp = campbell_task(model, resolution) if resolution.campbell_speeds else None
+    notes: list[str] = []
+    strength = p.strength_static, p.strength_total
+    if model.shaft.laminate is not None:
+        parts = static_load_parts(model)
+        parts = {"external": parts["external"], "torque": p.torque_factor * parts["torque"]}
+        strength = _strength(p.design, model, parts, p.imbalance_at_speed, p.conditions, True, notes)[:2]
+    return dataclasses.replace(
+        p,
+        resolution=resolution,
+        modes_at_rest=modes(model, 0.0, resolution.modes),
+        campbell=camp,
+        criticals=p.criticals.labelled(camp),
+        strength_static=strength[0],
+        strength_total=strength[1],
+        buckling=report_buckling(model) if p.buckling is not None else None,
+        thermal=report_thermal(model) if p.thermal is not None else None,
+    )
+
+
+#: Roots with at least this damping ratio are no whirl modes: overdamped or real roots (the
+#: controllers' integrator, derivative-filter and amplifier states, a divergence), which come
+#: first in frequency order; ζ = 0.99 is a log decrement of 44.
+OVERDAMPED_RATIO = 0.99
+
+
+def whirl_modes(found: Modes) -> np.ndarray:
+    """Mask of the lateral vibration modes of ``found``: lateral, with a damping ratio below
+    :data:`OVERDAMPED_RATIO` (not a real or overdamped root)."""
+    s = np.asarray(found.eigenvalues)
+    zeta = -s.real / np.where(np.abs(s) > 0, np.abs(s), 1.0)
+    return (np.asarray(found.kind) == "lateral") & (zeta < OVERDAMPED_RATIO)
+
+
+def lateral_modes(model: Model, speed: float, n_lateral: int) -> Modes:
+    """Damped modes at ``speed`` [rad/s], the lowest ones, until ``n_lateral`` of them are
+    lateral vibration modes (:func:`whirl_modes`): the torsional and axial modes and the real
+    roots of the controllers' states among them do not take the whirl modes' places."""
+    n = int(n_lateral)
+    found = modes(model, speed, n)
+    for _ in range(6):
+        missing = n_lateral - int(np.sum(whirl_modes(found)))
+        if missing <= 0 or found.eigenvalues.size >= model.dofs.free.size:
+            break
+        n = min(n + missing, model.dofs.free.size)
+        found = modes(model, speed, n)
+    return found
 
 
 def _quiet(label: str) -> None:
     """No progress display."""
 
 
-def _start_independent(design: Design, model: Model, resolution: Resolution, executor: Executor | None) -> TaskRun:
-    """The spin-up response (with the critical speeds on it), the Campbell diagram, torsional
-    buckling, thermal and whirl stability of the design, as tasks (on ``executor`` when given)."""
-    # a worker rebuilds the model from the design (a few ms; the design pickles in a few kB);
-    # in this process the tasks share the model already built
-    source = design if executor is not None else model
-    tasks = [Task("spinup", "imbalance response over speed", _spinup, (source, resolution), cost=0.4)]
-    if resolution.campbell_speeds:
-        tasks.append(Task("campbell", "Campbell diagram", _campbell, (source, resolution), cost=0.15))
-    if model.shaft.laminate is not None:
-        tasks.append(Task("buckling", "torsional buckling", _buckling, (source, resolution), cost=0.3))
-        tasks.append(Task("thermal", "thermal", _thermal, (source, resolution), cost=0.25))
-    tasks.append(Task("stability", "whirl stability", _stability, (source, resolution), cost=0.2))
-    return start_tasks(tasks, executor)
+def _torsional(model: Model, notes: list[str]):
+    """Torsional modes, their separation over the operating speed range and the tail rotor's
+    forced response (None where the model has no free twist or the point is at rest)."""
+    try:
+        torsion = torsional_modes(model)
+    except ValueError as exc:  # every twist held: no torsional subsystem
+        notes.append(f"torsional analysis skipped: {exc}")
+        return None, None, None
+    if model.speed <= 0 or model.design is None:
+        notes.append("torsional separation and forced response need a shaft speed: the point is at rest")
+        return torsion, None, None
+    separation = torsional_separation(model, torsion)
+    response = torsional_forced_response(model) if model.drive.has_rotor else None
+    return torsion, separation, response
 
 
-def _model_of(source: Model | Design) -> Model:
-    """The model of a task's ``source``: a Model, or a design to build it from."""
-    return source if isinstance(source, Model) else build_model(source)
-
-
-def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupResponse, CriticalSpeeds]:
-    """The spin-up response over the resolution's scan and the lateral critical speeds on it
-    (not yet labelled with the Campbell modes, computed in parallel)."""
-    model = _model_of(source)
-    response = spinup_response(model, resolution.spin_speeds(model.speed))
-    return response, scan_critical_speeds(model, response.speeds, response.orbits, resolution.scan_top)
-
-
-def _campbell(source: Model | Design, resolution: Resolution) -> Campbell:
-    model = _model_of(source)
-    return campbell(model, resolution.campbell_grid(model.speed), n_modes=resolution.campbell_modes)
-
-
-def _buckling(source: Model | Design, resolution: Resolution) -> ShaftBuckling:
-    # the classical shell is the report's comparison, not the verdict's number
-    return shaft_buckling(_model_of(source), compare_classical=resolution.report_detail)
-
-
-def _thermal(source: Model | Design, resolution: Resolution) -> ThermalResults:
-    model = _model_of(source)
-    return thermal_results(model.design, model, self_heat=True, detail=resolution.report_detail)
-
-
-def _stability(source: Model | Design, resolution: Resolution) -> StabilityResult:
-    model = _model_of(source)
-    return stability(model, resolution.stability_speeds(model.speed), n_modes=resolution.modes)
+def _strength(design: Design, model: Model, parts, q_at_speed, conditions, detail: bool, notes: list[str]):
+    """(static, static + imbalance, compressive strength, residual temperature) of a one-piece
+    laminated shaft with the effective X_c and the incremental thermal residual stress."""
+    if model.shaft.laminate is None:
+        if design.segmented:
+            notes.append("ply strength and laminated-shell buckling assume one laminated tube; the shaft is segmented")
+        else:
+            notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
+        return None, None, None, None
+    material = design.materials[design.shaft.material]
+    temperature = (
+        conditions.material_temperature
+        if conditions is not None
+        else celsius_to_kelvin(design.thermal.ambient_temperature_c)
+    )
+    residual = residual_ply_stresses(
+        model.shaft.laminate, matrix_law_from(design.thermal, material), material.stress_free_temperature, temperature
+    )
+    options = {"kinking": True, "temperature": temperature, "residual_stress": residual}
+    static = shaft_safety_factor(model, parts, **options)
+    # the leave-one-out load shares are the report's; the minimum is the same without them
+    totals = [
+        shaft_safety_factor(model, parts, q_at_speed[:, c], leave_one_out=detail, **options)
+        for c in range(q_at_speed.shape[1])
+    ]
+    return static, min(totals, key=lambda r: r.safety_factor), compressive_strength(material), temperature

@@ -29,7 +29,7 @@ __all__ = ["Check", "Finding", "Kind", "SI_UNITS", "Status", "Verdict"]
 Status = Literal["pass", "fail", "not evaluated"]
 
 #: Physical kind of a check's value, limit and margin (sets the display unit).
-Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement", "angle"]
+Kind = Literal["ratio", "speed", "length", "force", "temperature", "fraction", "log_decrement", "angle", "decibel"]
 
 #: SI unit of each kind.
 SI_UNITS: dict[str, str] = {
@@ -41,6 +41,7 @@ SI_UNITS: dict[str, str] = {
     "fraction": "-",
     "log_decrement": "-",
     "angle": "rad",
+    "decibel": "dB",
 }
 
 

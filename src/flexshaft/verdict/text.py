@@ -24,12 +24,15 @@ _STATUS = {"pass": "PASS", "fail": "FAIL", "not evaluated": "not evaluated"}
 def location_text(location: Mapping[str, Any], compact: bool = False) -> str:
     """Where a finding occurs, e.g. ``amb_1, 4084 rpm`` or ``mode 6 (forward), 55.32 Hz``.
 
-    Keys (all optional): actuator, mode, station [m], ply, case, speed [rad/s], frequency
-    [rad/s], amplification_factor with af_method, position, detail.
+    Keys (all optional): point (the envelope point, shown first in brackets), actuator, mode,
+    station [m], ply, case, speed [rad/s], frequency [rad/s], amplification_factor with
+    af_method, position, detail.
 
     ``compact`` leaves out the free-text detail, the AF method and the position (terminal).
     """
     parts = []
+    if "point" in location:
+        parts.append(f"[{location['point']}]")
     if "actuator" in location:
         parts.append(str(location["actuator"]))
     if "mode" in location:

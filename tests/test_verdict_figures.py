@@ -1,0 +1,112 @@
+"""The report's figures agree with the verdict (issue 25, point 6): read back from the artists.
+
+The figures are drawn by the very jobs the report plans (:func:`flexshaft.report.driveline.
+plan_run_report`), and their data read back from matplotlib's artists, against the verdict:
+
+* the actuator figure draws static + spin-up (what the actuator checks judge), each actuator's
+  gap and force capacity, and marks the checked peaks: the marked excursion and force are the
+  check's findings at the point the figure shows (the point where the excursion check governs),
+  and the curve's largest value up to the operating speed is that finding;
+* the Campbell diagram tracks every mode up to 1.3 × the operating speed × the highest
+  excitation order the checks use (every undamped natural frequency of (K + K_a, M) below it,
+  from a dense eigen-solution: the reference), marks the verdict's critical speeds (the
+  separation check's unbalance-response peaks) at their speeds, and draws the tail rotor's
+  excitation orders at their slopes.
+
+Tolerances: the artists hold the numbers the figure functions were given, converted to rpm,
+mm or Hz: equal to round-off (1e-9 relative).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.linalg as la
+
+from flexshaft.analyses.torsional import torsional_excitations
+from flexshaft.design import tuned_design, with_overrides
+from flexshaft.report.driveline import plan_run_report
+from flexshaft.resolution import REPORT
+from flexshaft.units import rad_s_to_rpm
+from flexshaft.verdict.assess import assess
+
+#: The tuned design on a coarse mesh (the figures' wiring does not depend on it; the run is faster).
+SMALL = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
+
+
+@pytest.fixture(scope="module")
+def assessed():
+    return assess(with_overrides(tuned_design(), SMALL), REPORT)
+
+
+@pytest.fixture(scope="module")
+def jobs(assessed, tmp_path_factory):
+    plan = plan_run_report(assessed, tmp_path_factory.mktemp("report"))
+    return {job.stem: job for job in plan.jobs}
+
+
+def _draw(job):
+    return job.function(*job.args, **job.kwargs)
+
+
+def _lines(ax, label_part: str):
+    return [line for line in ax.get_lines() if label_part in str(line.get_label())]
+
+
+@pytest.mark.slow(reason="a REPORT assessment of the tuned design at its four envelope points (~8 s of CPU)")
+def test_actuator_figure_draws_what_the_actuator_checks_judge(assessed, jobs):
+    fig = _draw(jobs["actuators"])
+    top, bottom = fig.axes[:2]
+    orbit, force = assessed.verdict.check("actuator_orbit"), assessed.verdict.check("actuator_force")
+    point = orbit.location["point"]
+    op_rpm = rad_s_to_rpm(assessed.operating_speed)
+    for panel, check, scale in ((top, orbit, 1e3), (bottom, force, 1.0)):
+        findings = {f.location["actuator"]: f for f in check.findings if f.location["point"] == point}
+        assert findings  # the figure shows the excursion check's point; the force has findings there too
+        for name, finding in findings.items():
+            (peak,) = _lines(panel, f"{name}: checked peak")
+            x, y = peak.get_xdata()[0], peak.get_ydata()[0]
+            assert y == pytest.approx(finding.value * scale, rel=1e-9)
+            assert x == pytest.approx(rad_s_to_rpm(finding.location["speed"]), rel=1e-9)
+            (curve,) = _lines(panel, f"{name}: static + spin-up")
+            xs, ys = np.asarray(curve.get_xdata()), np.asarray(curve.get_ydata())
+            assert ys[xs <= op_rpm * (1 + 1e-12)].max() == pytest.approx(finding.value * scale, rel=1e-9)
+            limit = [
+                line.get_ydata()[0] for line in panel.get_lines() if str(line.get_label()).startswith(("gap", "force"))
+            ]
+            assert min(abs(v - finding.limit * scale) for v in limit) <= 1e-9 * finding.limit * scale
+        # the axis shows the limit and the peak
+        assert panel.get_ylim()[1] >= max(f.limit for f in findings.values()) * scale
+    # the excursion the figure marks highest is the verdict's worst
+    (worst,) = [f for f in orbit.findings if f.location["point"] == point and f.value == orbit.value]
+    assert orbit.value == max(f.value for f in orbit.findings)
+    assert worst.location["actuator"] in str([line.get_label() for line in top.get_lines()])
+
+
+@pytest.mark.slow(reason="a REPORT assessment of the tuned design at its four envelope points (~8 s of CPU)")
+def test_campbell_covers_every_mode_the_checks_use_and_marks_the_verdicts_criticals(assessed, jobs):
+    fig = _draw(jobs["campbell"])
+    ax = fig.axes[0]
+    model = assessed.model
+    orders = [1.0] + [e.ratio for e in torsional_excitations(model.design)]
+    ceiling_hz = 1.3 * model.speed * max(orders) / (2 * np.pi)
+    # reference: every undamped natural frequency of (K + K_a, M) at rest below the ceiling
+    free = model.dofs.free
+    w2 = la.eigh((model.K + model.Kp)[free][:, free].toarray(), model.M[free][:, free].toarray(), eigvals_only=True)
+    natural = np.sqrt(np.clip(w2, 0, None)) / (2 * np.pi)
+    wanted = natural[natural < ceiling_hz]
+    tracked_at_rest = np.sort(assessed.campbell.frequencies[0])
+    assert tracked_at_rest.size >= wanted.size and tracked_at_rest.max() > ceiling_hz
+    assert ax.get_ylim()[1] > ceiling_hz
+    # the verdict's critical speeds, at their speeds on the 1× line
+    (squares,) = _lines(ax, "critical speed of the verdict")
+    expected = sorted(rad_s_to_rpm(c.speed) for c in assessed.evidence.critical_speeds)
+    assert sorted(squares.get_xdata()) == pytest.approx(expected, rel=1e-9)
+    assert np.asarray(squares.get_ydata()) == pytest.approx(np.asarray(squares.get_xdata()) / 60.0, rel=1e-9)
+    # the tail rotor's torsional excitation orders, as rays of their slope
+    for e in torsional_excitations(model.design):
+        if e.source != "tail_rotor":
+            continue
+        (ray,) = _lines(ax, e.name)
+        x, y = np.asarray(ray.get_xdata()), np.asarray(ray.get_ydata())
+        assert (y[-1] - y[0]) / (x[-1] - x[0]) == pytest.approx(e.ratio / 60.0, rel=1e-9)
