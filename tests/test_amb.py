@@ -420,7 +420,7 @@ def test_campbell_and_stability_with_a_transfer_function_controller_agree_with_f
             kind = "translation" if s.imag < 300.0 else "tilt"
             omega_n, zeta = abs(s), -s.real / abs(s)
             peak = minimize_scalar(
-                lambda om: -receptance(kind, om, speed),
+                lambda om, kind=kind, speed=speed: -receptance(kind, om, speed),
                 bounds=(0.8 * s.imag, 1.2 * s.imag),
                 method="bounded",
                 options={"xatol": 1e-7},

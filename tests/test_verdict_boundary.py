@@ -16,8 +16,8 @@ import math
 
 import pytest
 
-from flexshaft.design.requirements import Requirements
 from flexshaft.analyses.criticals import LateralCritical
+from flexshaft.design.requirements import Requirements
 from flexshaft.verdict.checks import evaluate, whirl_onset_check
 from flexshaft.verdict.evidence import ActuatorEvidence, CouplingEvidence, Evidence, MetalEvidence, ModeDamping
 from flexshaft.verdict.result import Finding

@@ -183,7 +183,7 @@ def helix_minima(
         centre, value = log_k[rows, best], values[rows, best, senses]
         if refine:
 
-            def own(x):  # each sense's torque at its own log k, (n, 2)
+            def own(x, hand=hand):  # each sense's torque at its own log k, (n, 2)
                 return torques(n[:, None], hand * np.exp(x))[rows, senses, senses]
 
             a, b = centre - step, centre + step
