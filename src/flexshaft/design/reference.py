@@ -139,10 +139,11 @@ def _bounds(metadata: list[Any]) -> str:
                 found[name] = value
     extras = [info.json_schema_extra for info in _field_infos(metadata) if isinstance(info.json_schema_extra, dict)]
     for extra in extras:  # bounds a model checks itself, published for the JSON schema
-        if "minimum" in extra and "ge" not in found and "gt" not in found:
-            found["ge"] = extra["minimum"]
-        if "maximum" in extra and "le" not in found and "lt" not in found:
-            found["le"] = extra["maximum"]
+        minimum, maximum = extra.get("minimum"), extra.get("maximum")
+        if isinstance(minimum, (int, float)) and "ge" not in found and "gt" not in found:
+            found["ge"] = minimum
+        if isinstance(maximum, (int, float)) and "le" not in found and "lt" not in found:
+            found["le"] = maximum
     low = ("[", found["ge"]) if "ge" in found else ("(", found["gt"]) if "gt" in found else None
     high = ("]", found["le"]) if "le" in found else (")", found["lt"]) if "lt" in found else None
     if low and high:
