@@ -142,11 +142,9 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
         attrs = {"method": self.damping_model, "onset_kind": getattr(self, "onset_kind", "whirl") or "none"}
         if self.onset_speed is not None:
-            attrs.update(
-                onset_speed=float(self.onset_speed),
-                onset_speed_units="rad/s",
-                unstable_mode=int(self.unstable_mode) + 1,
-            )
+            attrs.update(onset_speed=float(self.onset_speed), onset_speed_units="rad/s")
+        if self.unstable_mode is not None:  # None at a divergence (a real root, no tracked mode)
+            attrs.update(unstable_mode=int(self.unstable_mode) + 1)
         if self.reference_frequency is not None:
             attrs.update(reference_frequency=float(self.reference_frequency), reference_frequency_units="rad/s")
         return curves_dataset(self, "whirl stability", **attrs)
