@@ -24,6 +24,7 @@ from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
+from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
@@ -93,7 +94,9 @@ class CriticalSpeed:
 class EigenvalueCurves:
     """Derived quantities of an ``eigenvalues`` array (n_speeds, n_modes) of s [rad/s]."""
 
+    speeds: np.ndarray
     eigenvalues: np.ndarray
+    whirl: np.ndarray
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -167,7 +170,7 @@ def track_modes(
     n_modes: int,
     solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
     refine_loss: bool = True,
-    viscous: Callable[[float], object] | None = None,
+    viscous: Callable[[float], LossCoefficients] | None = None,
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
@@ -198,7 +201,8 @@ def track_modes(
     solve = solve or (lambda speed: candidates(red, speed))
     labeler = ModalLabeler(model, red.Phi)
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
-    states, kinds, whirls, ratios, comps = [], [], [], [], []
+    states: list[np.ndarray] = []
+    kinds, whirls, ratios, comps = [], [], [], []
     prev = None
     for k, speed in enumerate(speeds):
         step = None

@@ -105,7 +105,9 @@ def extreme_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tup
         factor = scipy.linalg.cho_factor(K[np.ix_(r, r)], lower=True, check_finite=False)
         S = K[np.ix_(k, k)] - K_rk.conj().T @ scipy.linalg.cho_solve(factor, K_rk, check_finite=False)
         G_kk = G[np.ix_(k, k)]
-    mu = scipy.linalg.eigh(G_kk, S, eigvals_only=True, driver="gvd", check_finite=False)
+    # scipy-stubs 1.17.1.5 types the eigvals_only overloads' driver without the generalized
+    # drivers ("gv", "gvd", "gvx"), which scipy accepts for a (G, S) pair
+    mu = scipy.linalg.eigh(G_kk, S, eigvals_only=True, driver="gvd", check_finite=False)  # type: ignore[call-overload]
     return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
 
 
