@@ -222,7 +222,8 @@ def plan_run_report(
         )
     )
 
-    if a.strength_total is not None:
+    # the three are computed together, for a laminated shaft (verdict.operating_point)
+    if a.strength_total is not None and a.strength_static is not None and a.buckling is not None:
         rows = []
         for name, rr in (("static", a.strength_static), ("static + imbalance", a.strength_total)):
             rows.append(
