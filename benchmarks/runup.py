@@ -93,8 +93,9 @@ def runup_section(durations, figures: Path | None) -> None:
         value, _, at = run.peak()
         runs[f"{duration:g} s run-up ({top / duration:.1f} rad/s²)"] = run
         print(
-            f"{duration:>7g}s {wall:>9.2f} {run.steps:>6} {value * 1e3:>10.3f} {at * RPM:>9.0f} {value / true_peak:>8.4f} "
-            f"{run.actuator_displacement.max() * 1e3:>15.4f} {run.actuator_force.max():>14.0f} {run.max_growth_rate:>13.4f}"
+            f"{duration:>7g}s {wall:>9.2f} {run.steps:>6} {value * 1e3:>10.3f} {at * RPM:>9.0f} "
+            f"{value / true_peak:>8.4f} {run.actuator_displacement.max() * 1e3:>15.4f} "
+            f"{run.actuator_force.max():>14.0f} {run.max_growth_rate:>13.4f}"
         )
     print("  (/steady: against the refined steady-state peak; growth > 0: whirl-unstable speeds inside the run)")
     print()
@@ -146,7 +147,10 @@ def montecarlo_section(samples: int, jobs: int, gap: float, force_limit: float, 
         results[f"G {grade:g}"] = ds
         p_gap, e_gap = result.gap_exceedance
         p_force, e_force = result.force_exceedance
-        q = lambda name, scale=1.0: np.nanpercentile(ds[name].values, [50, 95, 99]) * scale  # noqa: E731
+
+        def q(name, scale=1.0, ds=ds):
+            return np.nanpercentile(ds[name].values, [50, 95, 99]) * scale
+
         print(f"G {grade:g} (e_per {ds.attrs['eccentricity_scale_m'] * 1e6:.2f} µm): {wall:.1f} s")
         print(f"  peak deflection  p50/p95/p99 {np.array2string(q('shaft_peak', 1e3), precision=2)} mm")
         print(
@@ -173,8 +177,9 @@ def montecarlo_section(samples: int, jobs: int, gap: float, force_limit: float, 
             f"{np.array2string(np.percentile(runup.shaft_peak, [50, 95, 99]) * 1e3, precision=2)} mm"
         )
         print(
-            f"    actuator orbit p99 {np.percentile(runup.actuator_orbit_max, 99) * 1e3:.4f} mm, P(> gap) = {p_gap:.4f} ± "
-            f"{e_gap:.4f}; force p99 {np.percentile(runup.actuator_force_max, 99):.0f} N, P(> limit) = {p_force:.4f} ± {e_force:.4f}"
+            f"    actuator orbit p99 {np.percentile(runup.actuator_orbit_max, 99) * 1e3:.4f} mm, "
+            f"P(> gap) = {p_gap:.4f} ± {e_gap:.4f}; force p99 {np.percentile(runup.actuator_force_max, 99):.0f} N, "
+            f"P(> limit) = {p_force:.4f} ± {e_force:.4f}"
         )
     if figures is not None:
         from flexshaft.plot.driveline import save_figure

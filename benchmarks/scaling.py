@@ -39,6 +39,7 @@ import math
 import os
 import statistics
 import sys
+from functools import partial
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -106,7 +107,7 @@ def zgbsv_floor(model, speeds, Q):
     for k, s in enumerate(speeds):
         ab = np.array(matrix(s, s), dtype=complex, order="F")  # formed outside the clock
         b = (s * s) * rhs
-        dw, dc, (_, _, x, info) = bu.timed(lambda: lapack.zgbsv(kl, ku, ab, b, overwrite_ab=True, overwrite_b=True))
+        dw, dc, (_, _, x, info) = bu.timed(partial(lapack.zgbsv, kl, ku, ab, b, overwrite_ab=True, overwrite_b=True))
         wall, cpu = wall + dw, cpu + dc
         if info != 0:
             raise RuntimeError(f"zgbsv info = {info} at Ω = {s} rad/s")
@@ -145,11 +146,11 @@ def run(elements, repeats: int, n_speeds: int, n_campbell: int) -> dict:
     n_modes = case.N_CAMPBELL_FREQ + 6
     rows = []
     for n_el in elements:
-        build_s, _, model = bu.timed(lambda: fx.build(n_el))
+        build_s, _, model = bu.timed(partial(fx.build, n_el))
         Q = fx.unbalance_loads(model)
         row = {"n_el": n_el, "ndof": int(model.dofs.size), "build_s": build_s}
 
-        imbalance = lambda: fa.imbalance_response(model, speeds, Q)  # noqa: E731
+        imbalance = partial(fa.imbalance_response, model, speeds, Q)
         imb, q = _timed(imbalance, 0)  # the warm-up call (its result is checked below)
         # the floor: a warm-up pass (also the check); then the timed passes, each right after a
         # timed imbalance call, so that both see the same load of a shared machine
@@ -171,7 +172,7 @@ def run(elements, repeats: int, n_speeds: int, n_campbell: int) -> dict:
             row["imbalance_over_zgbsv_cpu"] = statistics.median(i[1] / f[1] for i, f in pairs)
         elif _ok(imb):
             imb, q = _timed(imbalance, repeats)
-        camp, c = _timed(lambda: fa.campbell(model, cspeeds, n_modes=n_modes), repeats)
+        camp, c = _timed(partial(fa.campbell, model, cspeeds, n_modes=n_modes), repeats)
         if _ok(camp):
             row["campbell_lowest_hz"] = float(np.min(np.asarray(c.frequencies)[0]))
         row.update({"imbalance": imb, "zgbsv": floor, "campbell": camp})

@@ -59,7 +59,8 @@ def main() -> None:
     t0 = time.perf_counter()
     model = build_model(design)
     print(
-        f"model: {model.dofs.free.size} free DOFs, {len(model.actuators)} actuators, built in {time.perf_counter() - t0:.2f} s"
+        f"model: {model.dofs.free.size} free DOFs, {len(model.actuators)} actuators, "
+        f"built in {time.perf_counter() - t0:.2f} s"
     )
     speeds = spinup_speeds(model, args.n_speeds)
     kp = np.logspace(5, 8, args.n_gains)  # [N/m]
@@ -77,7 +78,8 @@ def main() -> None:
                 best = (total, t_rec, t_map)
         timings[label] = best
         print(
-            f"  {label:16s}: {best[0]:.2f} s  (structure solves {best[1]:.2f} s + {kp.size * kd.size} gain pairs {best[2]:.2f} s; best of 3)"
+            f"  {label:16s}: {best[0]:.2f} s  (structure solves {best[1]:.2f} s + "
+            f"{kp.size * kd.size} gain pairs {best[2]:.2f} s; best of 3)"
         )
 
     # direct estimate: a few full spin-ups with a banded solve per speed

@@ -241,6 +241,21 @@ def test_open_loop_magnet_is_a_divergence_reported_by_modes_and_stability():
     np.testing.assert_allclose(np.sort(weak.eigenvalues.real), expected / np.sqrt(2), rtol=5e-6)
 
 
+def test_a_divergence_onset_is_saved_without_a_mode_number(tmp_path):
+    """The open-loop magnet diverges from the first speed on (previous test: real roots
+    +√(2k_s/m), +√(2k_s l²/I_t)) and no tracked mode is unstable: the dataset and the netCDF
+    file carry the onset speed (0 rad/s) and kind "divergence", and no mode number (there is
+    none: it once failed on int(None))."""
+    xr = pytest.importorskip("xarray")
+    result = stability(rotor(f"kp = 0.0\nks = {KS}\nki = {KI}"), [0.0, 100.0, 200.0], n_modes=2)
+    assert result.unstable_mode is None
+    ds = result.to_dataset()
+    assert ds.attrs["onset_kind"] == "divergence" and ds.attrs["onset_speed"] == 0.0
+    assert "unstable_mode" not in ds.attrs
+    with xr.open_dataset(result.save(tmp_path / "stability")) as saved:
+        assert saved.attrs["onset_kind"] == "divergence" and saved.attrs["onset_speed"] == 0.0
+
+
 def test_pid_with_filtered_derivative_and_amplifier_lag_matches_the_hand_built_closed_loop():
     model = rotor(PID_KEYS)
     hand = la.eigvals(hand_state_matrix())
@@ -420,7 +435,7 @@ def test_campbell_and_stability_with_a_transfer_function_controller_agree_with_f
             kind = "translation" if s.imag < 300.0 else "tilt"
             omega_n, zeta = abs(s), -s.real / abs(s)
             peak = minimize_scalar(
-                lambda om: -receptance(kind, om, speed),
+                lambda om, kind=kind, speed=speed: -receptance(kind, om, speed),
                 bounds=(0.8 * s.imag, 1.2 * s.imag),
                 method="bounded",
                 options={"xatol": 1e-7},

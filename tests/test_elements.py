@@ -179,7 +179,10 @@ def test_ellipse_section_circle_and_quadrature():
     assert s.I_y == pytest.approx(np.pi * r**3 * t, rel=1e-12)
     assert s.torsion_constant == pytest.approx(2 * np.pi * r**3 * t, rel=1e-12)
     a, b = 0.5, 0.4
-    ds = lambda p: np.hypot(a * np.cos(p), b * np.sin(p))
+
+    def ds(p):
+        return np.hypot(a * np.cos(p), b * np.sin(p))
+
     Iz = t * si.quad(lambda p: (a * np.sin(p)) ** 2 * ds(p), 0, 2 * np.pi, epsabs=0, epsrel=1e-13)[0]
     P = si.quad(ds, 0, 2 * np.pi, epsabs=0, epsrel=1e-13)[0]
     e = ellipse_section(a, b, t)
@@ -191,7 +194,10 @@ def test_ellipse_section_circle_and_quadrature():
 
 def _tapered_boom(n_el, L=8.0):
     x = np.linspace(0, L, n_el + 1)
-    sec = lambda xx: ellipse_section(0.5 - 0.25 * xx / L, 0.4 - 0.2 * xx / L, 0.004)
+
+    def sec(xx):
+        return ellipse_section(0.5 - 0.25 * xx / L, 0.4 - 0.2 * xx / L, 0.004)
+
     Me, Ke = boom_element_matrices(x, sec, 71e9, 27e9, 2800.0)
     dm0 = DofMap(np.zeros(0), x)
     dm = DofMap(np.zeros(0), x, np.array([dm0.boom(0, f) for f in BOOM_FIELDS]))
@@ -216,8 +222,13 @@ def test_tapered_cantilever_static_deflection_and_twist_against_quadrature():
     L, P, T = 8.0, 5000.0, 2000.0
     v16, t16, sec = _tip_response(16)
     v32, t32, _ = _tip_response(32)
-    EIz = lambda x: 71e9 * sec(np.array([x])).I_z[0]
-    GJ = lambda x: 27e9 * sec(np.array([x])).torsion_constant[0]
+
+    def EIz(x):
+        return 71e9 * sec(np.array([x])).I_z[0]
+
+    def GJ(x):
+        return 27e9 * sec(np.array([x])).torsion_constant[0]
+
     delta = si.quad(lambda x: P * (L - x) ** 2 / EIz(x), 0, L, epsrel=1e-12)[0]
     twist = si.quad(lambda x: T / GJ(x), 0, L, epsrel=1e-12)[0]
     assert v32 == pytest.approx(delta, rel=1e-5)

@@ -174,7 +174,8 @@ def test_imbalance_response_bode_at_a_station(model, response):
 
 
 def test_bode_phase_of_a_jeffcott_rotor():
-    # closed form: imbalance response r^2 / (1 - r^2 + 2 i zeta r); phase 0 below, -90 deg at, -180 deg above the critical
+    # closed form: imbalance response r^2 / (1 - r^2 + 2 i zeta r); phase 0 below, -90 deg at,
+    # -180 deg above the critical
     r = np.linspace(0.05, 3.0, 300)
     zeta = 0.05
     q = 1e-4 * r**2 / (1 - r**2 + 2j * zeta * r)

@@ -240,7 +240,10 @@ def test_boom_tip_deflection_under_tip_load_matches_quadrature():
     tb = d.tailboom
     P = 1000.0
     q = static_response(model, point_load(model, "boom", (0.0, P, 0.0), x=tb.length))
-    sec = lambda x: ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+
+    def sec(x):
+        return ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+
     ref = si.quad(lambda x: P * (tb.length - x) ** 2 / (71e9 * sec(x).I_z), 0, tb.length, epsrel=1e-12)[0]
     assert q[model.dofs.boom(-1, "v")] == pytest.approx(ref, rel=1e-4)
 
@@ -253,7 +256,10 @@ def test_load_factor_and_imbalance_totals():
     Q = inertial_load(model, (0.0, -3.5, 0.0))
     total_v = Q[dm.shaft(np.arange(dm.n_shaft_nodes), "v")].sum() + Q[dm.boom(np.arange(dm.n_boom_nodes), "v")].sum()
     tb = d.tailboom
-    sec = lambda x: ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+
+    def sec(x):
+        return ellipse_section(0.5 - 0.25 * x / tb.length, 0.4 - 0.2 * x / tb.length, tb.wall_thickness)
+
     boom_mass = d.materials[tb.material].density * si.quad(lambda x: sec(x).area, 0, tb.length)[0]
     A = np.pi * (0.1016**2 - (0.1016 - 0.006) ** 2) / 4
     mass = boom_mass + 1650.0 * A * d.shaft.length + 200.0

@@ -314,7 +314,9 @@ def test_fixed_point_linear_case_converges_to_the_analytic_answer_or_reports_run
     T_inf, R, P0 = 300.0, 2.0, 5.0
     for gain in (0.2, 0.5, 0.8):
         a = gain / (R * P0)
-        fp = fixed_point(lambda T: T_inf + R * P0 * (1 + a * (T - T_inf)), [T_inf], 1000.0, tol=1e-10, max_iter=500)
+        fp = fixed_point(
+            lambda T, a=a: T_inf + R * P0 * (1 + a * (T - T_inf)), [T_inf], 1000.0, tol=1e-10, max_iter=500
+        )
         assert fp.converged
         assert fp.temperature[0] == pytest.approx(T_inf + R * P0 / (1 - gain), abs=1e-8)
     a = 1.1 / (R * P0)
@@ -332,7 +334,10 @@ def test_fixed_point_on_the_finite_difference_model_with_linear_heat():
     x = np.linspace(0, 7.0, 31)
     P0 = np.linspace(1.0, 3.0, 30)
     args = (3.5, 9.3e-4, 0.32, 20.0, 316.0)
-    el = lambda P: solve_shaft_temperature(x, P, *args).element_temperature
+
+    def el(P):
+        return solve_shaft_temperature(x, P, *args).element_temperature
+
     S = np.column_stack([el(np.eye(30)[e]) - 316.0 for e in range(30)])
     a = 0.05
     exact = 316.0 + np.linalg.solve(np.eye(30) - a * S @ np.diag(P0), S @ P0)

@@ -17,8 +17,9 @@ a part without a mass counts 0 kg and is listed in :attr:`Inventory.mass_not_giv
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
 
@@ -35,6 +36,8 @@ __all__ = ["PART_KINDS", "Comparison", "Inventory", "Metric", "compare", "drivel
 
 #: Part kinds of the mass breakdown and part count, in report order.
 PART_KINDS: tuple[str, ...] = ("segments", "couplings", "hangers", "dampers", "actuators")
+
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -189,24 +192,24 @@ class Comparison(ResultMixin):
         """The compared quantities, SI units (see :class:`Metric`)."""
         out = []
         for kind in PART_KINDS:
-            out.append(Metric(f"mass_{kind}", f"mass: {kind}", "kg", tuple(inv.mass[kind] for inv in self.inventories)))
+            out.append(Metric(f"mass_{kind}", f"mass: {kind}", "kg", _pair(inv.mass[kind] for inv in self.inventories)))
         out.append(
             Metric(
                 "mass_total",
                 "mass: driveline total",
                 "kg",
-                tuple(inv.total_mass for inv in self.inventories),
-                tuple(_missing_note(inv) for inv in self.inventories),
+                _pair(inv.total_mass for inv in self.inventories),
+                _pair(_missing_note(inv) for inv in self.inventories),
             )
         )
         for kind in PART_KINDS:
             out.append(
                 Metric(
-                    f"count_{kind}", f"parts: {kind}", "1", tuple(float(inv.count[kind]) for inv in self.inventories)
+                    f"count_{kind}", f"parts: {kind}", "1", _pair(float(inv.count[kind]) for inv in self.inventories)
                 )
             )
         out.append(
-            Metric("count_total", "parts: total", "1", tuple(float(inv.total_count) for inv in self.inventories))
+            Metric("count_total", "parts: total", "1", _pair(float(inv.total_count) for inv in self.inventories))
         )
         out.append(self._from_checks("strength", "smallest strength safety factor", "1", ("tsai_wu", "metal_strength")))
         out.append(self._from_checks("buckling", "torsional buckling safety factor", "1", ("buckling",)))
@@ -230,7 +233,7 @@ class Comparison(ResultMixin):
                 "static_deflection",
                 "largest static shaft deflection",
                 "m",
-                tuple(_static_deflection(run) for run in self.runs),
+                _pair(_static_deflection(run) for run in self.runs),
             )
         )
         out.append(
@@ -242,7 +245,7 @@ class Comparison(ResultMixin):
                     f"boom_temperature_{condition}",
                     f"tailboom temperature, {condition}",
                     "K",
-                    tuple(t.get(condition) for t in self.boom_temperatures),
+                    _pair(t.get(condition) for t in self.boom_temperatures),
                 )
             )
         return out
@@ -250,12 +253,16 @@ class Comparison(ResultMixin):
     def _from_checks(self, key: str, title: str, unit: str, checks: tuple[str, ...], largest: bool = False) -> Metric:
         """The governing value of the first of ``checks`` each verdict evaluates (the smallest, or
         with ``largest`` the largest, when several are evaluated)."""
-        values, notes, bounds = [], [], []
+        values: list[float | None] = []
+        notes: list[str] = []
+        bounds: list[bool] = []
         for design in (0, 1):
-            found = [c for c in (self.check(k, design) for k in checks) if c is not None and c.value is not None]
+            found = [
+                (c.value, c) for c in (self.check(k, design) for k in checks) if c is not None and c.value is not None
+            ]
             if found:
-                c = (max if largest else min)(found, key=lambda c: c.value)
-                values.append(float(c.value))
+                value, c = (max if largest else min)(found, key=lambda item: item[0])
+                values.append(float(value))
                 notes.append(c.title + _where(c.location) + (f"; {c.note}" if c.lower_bound and c.note else ""))
                 bounds.append(bool(c.lower_bound))
             else:
@@ -266,7 +273,8 @@ class Comparison(ResultMixin):
         return Metric(key, title, unit, (values[0], values[1]), (notes[0], notes[1]), (bounds[0], bounds[1]))
 
     def _critical(self, key: str, title: str, below: bool) -> Metric:
-        values, notes = [], []
+        values: list[float | None] = []
+        notes: list[str] = []
         for design in (0, 1):
             op = self.runs[design].model.speed
             found = [c for c in self.critical_speeds(design) if c["speed"] is not None and (c["speed"] < op) == below]
@@ -343,8 +351,15 @@ class Comparison(ResultMixin):
         )
 
 
+def _pair(values: Iterable[T]) -> tuple[T, T]:
+    """The two designs' values as a pair."""
+    a, b = values
+    return a, b
+
+
 def _check_unit(comparison: Comparison, key: str) -> str:
     c = comparison.check(key, 0) or comparison.check(key, 1)
+    assert c is not None  # a key of check_keys: one design's verdict at least has it
     return SI_UNITS.get(c.kind, "-").replace("-", "1")
 
 
@@ -417,16 +432,18 @@ def compare(
     """
     designs = (_design(design_a), _design(design_b))
     if labels is None:
-        labels = tuple(v if isinstance(v, str) else k for v, k in ((design_a, "A"), (design_b, "B")))
+        labels = (design_a if isinstance(design_a, str) else "A", design_b if isinstance(design_b, str) else "B")
     if len(labels) != 2 or labels[0] == labels[1]:
         raise ValueError(f"labels: expected two different names, got {labels!r}")
     step = progress or (lambda label: None)
-    runs = []
-    for label, design in zip(labels, designs):
-        runs.append(assess(design, resolution, progress=lambda s, label=label: step(f"{label}: {s}")))
+
+    def labelled(label: str) -> Callable[[str], None]:
+        return lambda s: step(f"{label}: {s}")
+
+    runs = [assess(design, resolution, progress=labelled(label)) for label, design in zip(labels, designs)]
     return Comparison(
         labels=(str(labels[0]), str(labels[1])),
-        runs=tuple(runs),
-        inventories=tuple(driveline_inventory(run.model) for run in runs),
-        boom_temperatures=tuple(_boom_temperatures(d, r) for d, r in zip(designs, runs)),
+        runs=_pair(runs),
+        inventories=_pair(driveline_inventory(run.model) for run in runs),
+        boom_temperatures=_pair(_boom_temperatures(d, r) for d, r in zip(designs, runs)),
     )

@@ -168,15 +168,17 @@ class Lamina:
         )
 
     @property
+    def transverse_shear_moduli(self) -> tuple[complex, complex]:
+        """(G_13, G_23) [Pa], the defaults filled in: never None once constructed."""
+        assert self.G_13 is not None and self.G_23 is not None  # __post_init__ sets them
+        return self.G_13, self.G_23
+
+    @property
     def storage(self) -> Lamina:
         """The same lamina with its storage (real) moduli only."""
+        G13, G23 = self.transverse_shear_moduli
         return replace(
-            self,
-            E_L=self.E_L.real,
-            E_T=self.E_T.real,
-            G_LT=self.G_LT.real,
-            G_13=np.real(self.G_13),
-            G_23=np.real(self.G_23),
+            self, E_L=self.E_L.real, E_T=self.E_T.real, G_LT=self.G_LT.real, G_13=np.real(G13), G_23=np.real(G23)
         )
 
     @classmethod
@@ -335,11 +337,11 @@ def transverse_shear_stiffness(laminate: Laminate) -> NDArray[np.complex128]:
     lamina = laminate.lamina
     c, s = np.cos(laminate.angles), np.sin(laminate.angles)
     h = laminate.thicknesses
-    G13, G23 = complex(lamina.G_13), complex(lamina.G_23)
+    G13, G23 = (complex(G) for G in lamina.transverse_shear_moduli)
     A55 = np.sum((G13 * c * c + G23 * s * s) * h)
     A44 = np.sum((G13 * s * s + G23 * c * c) * h)
     A45 = np.sum((G13 - G23) * c * s * h)
-    return lamina.shear_correction * np.array([[A55, A45], [A45, A44]], dtype=complex)
+    return lamina.shear_correction * np.array([[A55, A45], [A45, A44]], dtype=np.complex128)
 
 
 def equivalent_moduli(laminate: Laminate) -> tuple[complex, complex]:

@@ -17,6 +17,10 @@ floats and numpy arrays alike. Layup strings (angles in degrees) are parsed by
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING, TypeVar
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = [
     "MM_PER_M",
@@ -42,48 +46,52 @@ RPM_PER_HZ = 60.0
 #: 0 °C in kelvin [K].
 ZERO_CELSIUS = 273.15
 
+#: A value the conversions take and give back: a float or a numpy array (numpy is imported
+#: for the type checker only: ``import flexshaft`` stays light).
+Value = TypeVar("Value", float, "np.ndarray")
 
-def rpm_to_rad_s(speed_rpm: float) -> float:
+
+def rpm_to_rad_s(speed_rpm: Value) -> Value:
     """Convert a rotational speed from [rev/min] to [rad/s]."""
     return speed_rpm * 2.0 * math.pi / 60.0
 
 
-def rad_s_to_rpm(speed: float) -> float:
+def rad_s_to_rpm(speed: Value) -> Value:
     """Convert a rotational speed from [rad/s] to [rev/min]."""
     return speed * 60.0 / (2.0 * math.pi)
 
 
-def celsius_to_kelvin(temperature_c: float) -> float:
+def celsius_to_kelvin(temperature_c: Value) -> Value:
     """Convert a temperature from [°C] to [K]."""
     return temperature_c + ZERO_CELSIUS
 
 
-def kelvin_to_celsius(temperature: float) -> float:
+def kelvin_to_celsius(temperature: Value) -> Value:
     """Convert a temperature from [K] to [°C]."""
     return temperature - ZERO_CELSIUS
 
 
-def rad_s_to_hz(omega):
+def rad_s_to_hz(omega: Value) -> Value:
     """Convert an angular frequency from [rad/s] to [Hz]."""
     return omega / (2.0 * math.pi)
 
 
-def hz_to_rpm(frequency):
+def hz_to_rpm(frequency: Value) -> Value:
     """A frequency [Hz] as the spin speed [rev/min] whose 1× line it lies on."""
     return frequency * 60.0
 
 
-def rpm_to_hz(speed_rpm):
+def rpm_to_hz(speed_rpm: Value) -> Value:
     """A spin speed [rev/min] as its rotation frequency [Hz]."""
     return speed_rpm / 60.0
 
 
-def mm_to_m(length_mm):
+def mm_to_m(length_mm: Value) -> Value:
     """[mm] -> [m]."""
     return length_mm / MM_PER_M
 
 
-def m_to_mm(length):
+def m_to_mm(length: Value) -> Value:
     """Convert a length from [m] to [mm]."""
     return length * MM_PER_M
 

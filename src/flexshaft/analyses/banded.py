@@ -21,8 +21,9 @@ resonance: κ ≈ 1e12 at 800 elements) is refined until the correction is below
 :data:`FORWARD_ERROR_LIMIT` (its response is then known to three digits at least); the
 corrections of a system singular to working precision stay of order one (they do not
 contract: each step must at least halve them), whatever the model's size, and
-:class:`SingularSystemError` is raised (the 1-norm condition number, estimated only then, is quoted in the message). A fixed reciprocal-condition threshold would not scale: a damped 400-element model
-is regular but has rcond ≈ 5e-14 from its mesh alone.
+:class:`SingularSystemError` is raised (the 1-norm condition number, estimated only then, is
+quoted in the message). A fixed reciprocal-condition threshold would not scale: a damped
+400-element model is regular but has rcond ≈ 5e-14 from its mesh alone.
 
 Near an undamped resonance the system is regular and the solution accurate, but it is set by
 the distance to the resonance: with ``|ω − ω_r| = δ ω`` the amplitude grows as 1/δ. The

@@ -31,6 +31,7 @@ from flexshaft.analyses.guards import (
     require_finite,
 )
 from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
+from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
@@ -100,7 +101,9 @@ class CriticalSpeed:
 class EigenvalueCurves:
     """Derived quantities of an ``eigenvalues`` array (n_speeds, n_modes) of s [rad/s]."""
 
+    speeds: np.ndarray
     eigenvalues: np.ndarray
+    whirl: np.ndarray
 
     @property
     def frequencies(self) -> np.ndarray:
@@ -174,7 +177,7 @@ def track_modes(
     n_modes: int,
     solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
     refine_loss: bool = True,
-    viscous: Callable[[float], object] | None = None,
+    viscous: Callable[[float], LossCoefficients] | None = None,
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
@@ -205,7 +208,8 @@ def track_modes(
     solve = solve or (lambda speed: candidates(red, speed))
     labeler = ModalLabeler(model, red.Phi)
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
-    states, kinds, whirls, ratios, comps = [], [], [], [], []
+    states: list[np.ndarray] = []
+    kinds, whirls, ratios, comps = [], [], [], []
     prev = None
     for k, speed in enumerate(speeds):
         step = None

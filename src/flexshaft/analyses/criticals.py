@@ -172,7 +172,7 @@ def lateral_critical_speeds(
             continue
         if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
             continue
-        location = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
+        location: dict[str, Any] = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
         amplification = peak.amplification_factor
         if not peak.resolved:
             if _undamped_at(model, peak.speed):

@@ -8,6 +8,8 @@ stored as real and imaginary parts (netCDF has no complex type).
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from flexshaft.analyses.results import coded, new_dataset
@@ -32,7 +34,7 @@ def _translations(dofs, shapes: np.ndarray, dims_before: tuple[str, ...]) -> tup
         {"x_shaft": ("x_shaft", np.asarray(dofs.shaft_x, float), {"units": "m", "long_name": "shaft node station"})},
     )
     nodes = np.arange(dofs.n_shaft_nodes)
-    members = [("shaft", nodes, dofs.shaft, ("u", "v", "w"))]
+    members: list[tuple[str, np.ndarray, Any, tuple[str, ...]]] = [("shaft", nodes, dofs.shaft, ("u", "v", "w"))]
     if dofs.n_boom_nodes:
         coords["x_boom"] = (
             "x_boom",

@@ -55,6 +55,7 @@ import scipy.sparse.linalg as spla
 
 from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
+from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import (
     HARD_MEMORY_BYTES,
@@ -170,7 +171,7 @@ class _ActuatorStates:
     B: np.ndarray  # (2 m, 2)
     C: np.ndarray  # (2, 2 m)
     stiffness: float  # D − k_basis on B̃_outᵀ B̃_in
-    law: object = None  # the law's Controller when it has states (then T(s) uses law(s) directly)
+    law: Controller | None = None  # the law's Controller when it has states (then T(s) uses law(s) directly)
     basis_stiffness: float = 0.0
     in_rows: np.ndarray | None = None  # B̃_in (2, nb): what the law measures (None: = rows)
     damping: float = 0.0  # E not already in the projected damping (non-collocated channels)
@@ -393,7 +394,7 @@ def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:
 
 def spectrum(
     red: ReducedModel, speed: float, viscous: LossCoefficients = _NO_LOSS
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Eigen-solution of the (loss-free or viscous) state matrix at one speed.
 
     Returns ``(s, Y, Y_div, s_div)``: the oscillatory eigenvalues (Im s > 0 [rad/s]) sorted
@@ -441,7 +442,7 @@ def divergent_roots(red: ReducedModel, speed: float, viscous: LossCoefficients =
     return spectrum(red, speed, viscous)[3]
 
 
-_gesv = la.get_lapack_funcs("gesv", dtype=complex)
+_gesv = la.lapack.zgesv  # = la.get_lapack_funcs("gesv", dtype=complex), typed
 
 
 def _unit(v: np.ndarray) -> np.ndarray:

@@ -266,9 +266,9 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
         found.sort(key=lambda f: f[0].low)
         (lower, s_lo, y_lo, _), (upper, s_hi, y_hi, _) = found
         if s_lo.imag > speed > s_hi.imag:
-            root = line_root(red, speed, lower.weights, upper.weights, (s_lo, y_lo), (s_hi, y_hi))
-            if root is not None:
-                return root[0], root[1], True
+            pair = line_root(red, speed, lower.weights, upper.weights, (s_lo, y_lo), (s_hi, y_hi))
+            if pair is not None:
+                return pair[0], pair[1], True
     return s, y, False
 
 

@@ -116,7 +116,7 @@ def coupling_misalignment(model: Model, static: np.ndarray, dynamic: np.ndarray 
     q = np.real(np.asarray(static))
     d = None if dynamic is None else np.asarray(dynamic).reshape(dm.size, -1)
     fields = ("u", "theta", "beta", "gamma")
-    rows = {name: [] for name in ("static", "dynamic", "offset", "twist")}
+    rows: dict[str, list[float]] = {name: [] for name in ("static", "dynamic", "offset", "twist")}
     for c in model.couplings:
         delta = {f: q[dm.shaft(c.node_b, f)] - q[dm.shaft(c.node_a, f)] for f in fields}
         rows["static"].append(float(np.hypot(delta["beta"], delta["gamma"])))

@@ -163,7 +163,7 @@ def actuator_receptance(model: Model, speeds, loads_per_speed_squared=None) -> A
         shaft_per_force[k] = full[rows, n_cases:]
         actuator_free[k] = Bf @ x[:, :n_cases]
         receptance[k] = Bf @ x[:, n_cases:]
-        if Bs is not None:
+        if Bs is not None and sensor_free is not None and sensor_receptance is not None:  # not collocated
             sensor_free[k] = Bs @ x[:, :n_cases]
             sensor_receptance[k] = Bs @ x[:, n_cases:]
     s = 1j * speeds

@@ -60,6 +60,12 @@ class HarmonicResponse(np.ndarray, ResultMixin):
     """
 
     _CONTEXT = ("frequencies", "spin_speeds", "dofs", "excitation", "internal_damping")
+    # the context (None on an array viewed as a HarmonicResponse without it: repr falls back)
+    frequencies: np.ndarray
+    spin_speeds: np.ndarray
+    dofs: DofMap
+    excitation: str
+    internal_damping: str
     plots = {"bode": "plot_bode", "orbit": "plot_orbit"}
 
     def __new__(cls, values, frequencies, spin_speeds, dofs: DofMap, excitation: str, internal_damping: str):
@@ -411,10 +417,10 @@ def _static_solve(model: Model, loads, speed: float | None):
         # a pivot of round-off size: regular but ill-conditioned, or singular to working
         # precision (a rigid-body motion leaves a pivot of ε‖K‖ instead of 0, and the solution
         # grew as 1/ε: up to 2e12 m for 100 N on a free-free driveline)
-        x = checked_solve(A, rhs.reshape(rhs.shape[0], -1))
-        if x is None:
+        refined = checked_solve(A, rhs.reshape(rhs.shape[0], -1))
+        if refined is None:
             raise SingularSystemError(singular.format(" to working precision"))
-        x = x.reshape(rhs.shape)
+        x = refined.reshape(rhs.shape)
     out = np.zeros(Q.shape)
     out[free] = x[: free.size]
     require_finite("static response", out)

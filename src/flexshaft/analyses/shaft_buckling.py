@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from flexshaft.assembly.model import Model
-from flexshaft.buckling import BucklingResult, buckling_safety_factor, torsional_buckling_torque
+from flexshaft.buckling import BucklingResult, ShellTheory, buckling_safety_factor, torsional_buckling_torque
 
 __all__ = ["ShaftBuckling", "shaft_buckling"]
 
@@ -71,7 +71,7 @@ class ShaftBuckling:
         return out
 
 
-def shaft_buckling(model: Model, theory: str = "shear", compare_classical: bool = True) -> ShaftBuckling:
+def shaft_buckling(model: Model, theory: ShellTheory = "shear", compare_classical: bool = True) -> ShaftBuckling:
     """Critical torsional buckling torque and safety factor of the model's laminated shaft.
 
     Parameters

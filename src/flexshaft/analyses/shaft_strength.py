@@ -46,6 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -213,6 +214,18 @@ class StrengthResult(ResultMixin):
         return strength_dataset(self)
 
 
+def _components(stress) -> tuple[Any, Any, Any]:
+    """(σ1, σ2, τ12) of a ply stress state whose first axis holds the three components."""
+    sigma1, sigma2, tau12 = stress
+    return sigma1, sigma2, tau12
+
+
+def _floats(stress) -> tuple[float, float, float]:
+    """(σ1, σ2, τ12) [Pa] of one ply's stress state as floats."""
+    sigma1, sigma2, tau12 = stress
+    return float(sigma1), float(sigma2), float(tau12)
+
+
 def _unit_ply_stresses(laminate: Laminate) -> tuple[np.ndarray, np.ndarray]:
     """Ply stresses (n_ply, 3) [Pa] per unit axial strain and per unit shear strain, N_y = 0."""
     per_axial = ply_stresses(laminate, 1.0, hoop_strain_free(laminate, 1.0, 0.0), 0.0)
@@ -343,8 +356,9 @@ def shaft_safety_factor(
         for name, stress in uniform.items():
             if name != leave_out:
                 factored = factored + stress
-        fixed = None if residual is None or leave_out == "thermal" else tuple(residual.T)
-        return tsai_wu_safety_factor(*np.moveaxis(factored, -1, 0), strengths, residual=fixed), wall
+        fixed = None if residual is None or leave_out == "thermal" else _components(residual.T)
+        sigma1, sigma2, tau12 = np.moveaxis(factored, -1, 0)
+        return tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths, residual=fixed), wall
 
     R, (_, _, ev, ew) = evaluate()
     k = np.unravel_index(np.argmin(R), R.shape)
@@ -378,13 +392,13 @@ def shaft_safety_factor(
         ply_angle_deg=float(np.degrees(laminate.angles[ply])),
         phase_deg=float(np.degrees(phases[ph])),
         bending_sign=int(_SIGNS[sg]),
-        dominant_stress=str(dominant_stress(*(failure_state if np.isfinite(R_min) else total), strengths)),
-        stresses=tuple(float(v) for v in total),
+        dominant_stress=str(dominant_stress(*_components(failure_state if np.isfinite(R_min) else total), strengths)),
+        stresses=_floats(total),
         x_along=x_ends.ravel(),
         along_shaft=R.min(axis=(2, 3, 4)).ravel(),
         load_shares={name: float(v) for name, v in zip(parts, shares)},
         safety_factor_without=without,
-        stress_parts={name: tuple(float(v) for v in stress) for name, stress in parts.items()},
+        stress_parts={name: _floats(stress) for name, stress in parts.items()},
         spin_speed=spin,
         hoop_resultant=hoop,
         temperature_change=float(delta_T) if residual is not None else 0.0,

@@ -94,10 +94,12 @@ class SpeedProfile:
 
     @cached_property
     def _knots(self) -> list[float]:
+        assert self.times is not None  # a table's
         return self.times.tolist()
 
     @cached_property
     def _slopes(self) -> list[float]:
+        assert self.times is not None and self.speeds is not None  # a table's
         return (np.diff(self.speeds) / np.diff(self.times)).tolist()
 
     def speed(self, t: float) -> float:
@@ -105,13 +107,14 @@ class SpeedProfile:
         if self.speeds is not None:
             k = self._segment(t)
             return float(self.speeds[k] + self._slopes[k] * (min(max(t, 0.0), self.duration) - self._knots[k]))
+        assert self.speed_function is not None  # not a table: from_callable
         return float(self.speed_function(t))
 
     def speeds_at(self, times) -> np.ndarray:
         """Ω at many times [rad/s] (vectorised for a table)."""
         t = np.asarray(times, dtype=float)
         if self.speeds is not None:
-            return np.interp(t, self.times, self.speeds)
+            return np.interp(t, self._knots, self.speeds)
         return np.array([self.speed(x) for x in t.ravel()]).reshape(t.shape)
 
     def acceleration(self, t: float) -> float:

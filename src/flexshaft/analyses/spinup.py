@@ -123,8 +123,9 @@ def _coupled(rec: ActuatorReceptance, feedback: np.ndarray):
         shaft_orbit = orbit_amplitude(shaft[:, :, :n_nodes], shaft[:, :, n_nodes:])
         act_orbit = orbit_amplitude(d[:, :, 0::2], d[:, :, 1::2])
         return shaft_orbit, act_orbit, None
+    assert rec.sensor_receptance is not None and rec.sensor_free is not None  # set when not collocated
     G = np.repeat(feedback, 2, axis=-1)[..., None]  # (ng, ns, 2 n_act, 1)
-    K = np.repeat(ks, 2)[:, None]  # (2 n_act, 1)
+    K = np.repeat(ks, 2)[:, None] if ks is not None else 0.0  # (2 n_act, 1); None: no k_s, as above
     system = np.eye(G.shape[-2]) + G * rec.sensor_receptance[None] - K * rec.receptance[None]
     forcing = G * rec.sensor_free[None] - K * rec.actuator_free[None]
     e = np.linalg.solve(system, forcing)  # carried forces (ng, ns, 2 n_act, nc)

@@ -47,6 +47,7 @@ internal damping. J. Eng. Power 99, 71-76.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Literal
 
@@ -142,11 +143,9 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
 
         attrs = {"method": self.damping_model, "onset_kind": getattr(self, "onset_kind", "whirl") or "none"}
         if self.onset_speed is not None:
-            attrs.update(
-                onset_speed=float(self.onset_speed),
-                onset_speed_units="rad/s",
-                unstable_mode=int(self.unstable_mode) + 1,
-            )
+            attrs.update(onset_speed=float(self.onset_speed), onset_speed_units="rad/s")
+        if self.unstable_mode is not None:  # None at a divergence (a real root, no tracked mode)
+            attrs.update(unstable_mode=int(self.unstable_mode) + 1)
         if self.reference_frequency is not None:
             attrs.update(reference_frequency=float(self.reference_frequency), reference_frequency_units="rad/s")
         return curves_dataset(self, "whirl stability", **attrs)
@@ -220,7 +219,7 @@ def onset_speed(
         raise ValueError(f"tolerance must be a finite number >= 0 (got {tolerance!r})")
     with np.errstate(invalid="ignore", divide="ignore"):  # s = 0 (a rigid-body root) has ζ = NaN: never unstable
         zeta = -eigenvalues.real / np.abs(eigenvalues)
-    best = (None, None, None)
+    best: tuple[float | None, int | None, int | None] = (None, None, None)
     for m in range(zeta.shape[1]):
         pos = np.flatnonzero(zeta[:, m] < -tolerance)
         if pos.size == 0:
@@ -276,25 +275,26 @@ def stability(
         basis_size = check_count(basis_size, "basis_size")
     red = reduced or reduce(model, basis_size or max(default_basis_size(n_modes), 48))
     ref = None
+    weights = None  # the viscous method's loss weights at a speed (None: hysteretic)
     if damping_model == "viscous":
         ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
-        tracked = track_modes(
-            model, red, speeds, int(n_modes), refine_loss=False, viscous=lambda sp: viscous_equivalent(ref, sp)
-        )
+        weights = functools.partial(viscous_equivalent, ref)
+        tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=False, viscous=weights)
     else:
         tracked = track_modes(model, red, speeds, int(n_modes))
     eig = tracked.eigenvalues
     require_finite("stability eigenvalues", eig)
     onset, mode, k = onset_speed(speeds, eig)
-    if onset is not None and k > 0:
-        weights = None if damping_model == "hysteretic" else (lambda sp: viscous_equivalent(ref, sp))
-        onset = _refine_onset(red, speeds, tracked, mode, k, weights)
-    shape = model.dofs.expand(red.shapes(tracked.states[k][:, mode])) if onset is not None else None
+    shape = None
+    if onset is not None and mode is not None and k is not None:  # the three are set together
+        if k > 0:
+            onset = _refine_onset(red, speeds, tracked, mode, k, weights)
+        shape = model.dofs.expand(red.shapes(tracked.states[k][:, mode]))
     kind = None if onset is None else "oscillatory"
     divergence = np.zeros(speeds.size)
     first = None
     for i, speed in enumerate(speeds if red.may_diverge else ()):
-        viscous = viscous_equivalent(ref, speed) if damping_model == "viscous" else None
+        viscous = weights(speed) if weights is not None else None
         _, _, Y_div, roots = spectrum(red, speed, viscous) if viscous is not None else spectrum(red, speed)
         if roots.size:
             divergence[i] = roots[0]

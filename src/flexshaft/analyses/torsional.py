@@ -180,7 +180,7 @@ def _damped_roots(system: TorsionalSystem) -> np.ndarray:
     n = system.dofs.size
     Minv = la.inv(system.M)
     A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ (system.K + 1j * system.K_loss), -Minv @ system.C]])
-    s = la.eigvals(A)
+    s = np.asarray(la.eigvals(A), dtype=complex)
     return s[s.imag > 0]
 
 
@@ -313,7 +313,7 @@ def torsional_separation(
     modes = torsional_modes(model) if modes is None else modes
     bands = [(e, e.band(low, high)) for e in torsional_excitations(model.design)]
     ceiling = 2.0 * max(band[1] for _, band in bands)
-    out = []
+    out: list[TorsionalSeparation] = []
     for k, f in enumerate(modes.natural_frequencies):
         if f == 0.0:
             continue  # a free rigid-body twist is no resonance
@@ -471,9 +471,11 @@ def torsional_forced_response(
     steady = model.power / model.speed if model.speed > 0 else 0.0
     load = np.zeros(system.dofs.size)
     load[int(np.flatnonzero(system.dofs == drive.rotor_dof)[0])] = 1.0
-    best = None
+    assert drive.blades is not None  # a modelled tail rotor has its blade count (drive_terms)
+    best: tuple[float, float, tuple[TorqueHarmonic, ...], float, float] | None = None
     for speed in speeds:
-        harmonics, amplitudes = [], []
+        harmonics: list[TorqueHarmonic] = []
+        amplitudes = []
         for order, fraction in ((1, a1), (drive.blades, an)):
             omega = order * speed / drive.gearbox_ratio
             Z = system.K + 1j * system.K_loss + 1j * omega * system.C - omega**2 * system.M
@@ -495,9 +497,10 @@ def torsional_forced_response(
         e = int(np.argmax(peak * modulus))
         if best is None or peak[e] * modulus[e] > best[0]:
             best = (float(peak[e] * modulus[e]), float(speed), tuple(harmonics), float(np.max(peak)), float(mid[e]))
-    stress, speed, harmonics, peak_torque, x = best
+    assert best is not None  # speeds is not empty
+    stress, speed, worst, peak_torque, x = best
     require_finite("torsional forced response", np.array([stress, peak_torque]))
     factor = peak_torque / steady if steady > 0 else 1.0
     return TorsionalForcedResponse(
-        speed, float(steady), float(steady * np.max(modulus)), harmonics, float(factor), stress, x
+        speed, float(steady), float(steady * np.max(modulus)), worst, float(factor), stress, x
     )

@@ -205,7 +205,10 @@ def _relative_rows(dm: DofMap, x_shaft: float, x_boom: float | None, h: float):
 def _geometry_rows(key: tuple, extra: tuple[str, ...], x_shaft: float, x_boom: float | None, h: float):
     """:func:`_relative_rows` on the DOF map whose arrays ``key`` holds (dtype, shape, bytes) and
     whose extra (drive-train twist) DOFs are ``extra``: they set the global size."""
-    dm = DofMap(*(np.frombuffer(data, dtype=np.dtype(dtype)).reshape(shape) for dtype, shape, data in key), extra=extra)
+    shaft_x, boom_x, fixed, joints, tied = (
+        np.frombuffer(data, dtype=np.dtype(dtype)).reshape(shape) for dtype, shape, data in key
+    )
+    dm = DofMap(shaft_x, boom_x, fixed, joints, tied, extra=extra)
     es, xis, Ls = dm.locate("shaft", x_shaft)
     shaft_dofs = dm.element_dofs("shaft")[es]
     if x_boom is None:

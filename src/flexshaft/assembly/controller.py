@@ -188,7 +188,7 @@ class Controller:
             den, order = den[:-1], order + 1
         # Taylor coefficients of num/den about 0, ascending, up to the power `order`
         a, b = num[::-1], den[::-1]
-        series = []
+        series: list[float] = []
         for k in range(order + 1):
             value = (a[k] if k < a.size else 0.0) - sum(
                 series[j] * (b[k - j] if k - j < b.size else 0.0) for j in range(k)

@@ -14,10 +14,12 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 import numpy as np
 
 from flexshaft.assembly.balance import design_eccentricity, imbalance_bays, rotating_mass
-from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS
+from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, Component
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import MAX_WORST_BAYS
 from flexshaft.elements.boom import BOOM_COLUMNS
@@ -67,7 +69,7 @@ def _member(model: Model, on: str, allowed=_MEMBERS) -> None:
         raise ValueError(f"the model has no {'tailboom end mass' if on == 'end_mass' else 'tailboom'} (on = {on!r})")
 
 
-def _rows(model: Model, on: str, x):
+def _rows(model: Model, on: Component, x):
     """Element DOFs and shape rows (fields × element DOFs) at stations ``x`` on a member."""
     dm = model.dofs
     located = [dm.locate(on, float(xx)) for xx in np.atleast_1d(x)]
@@ -94,7 +96,9 @@ def _generalised(fields, force, moment) -> np.ndarray:
     return np.array([comp[f] for f in fields])
 
 
-def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | None = None) -> np.ndarray:
+def point_load(
+    model: Model, on: Literal["shaft", "boom", "end_mass"], force, moment=(0.0, 0.0, 0.0), x: float | None = None
+) -> np.ndarray:
     """Load vector of a point force [N] and moment [N m] (x, y, z components).
 
     Parameters
@@ -119,7 +123,7 @@ def point_load(model: Model, on: str, force, moment=(0.0, 0.0, 0.0), x: float | 
     return _scatter_vector(dm.size, dofs, np.einsum("nfd,f->nd", N, g))
 
 
-def line_load(model: Model, on: str, x_start: float, x_end: float, force_per_length) -> np.ndarray:
+def line_load(model: Model, on: Component, x_start: float, x_end: float, force_per_length) -> np.ndarray:
     """Consistent load vector of a uniform line load [N/m] between two stations [m]."""
     _member(model, on, ("shaft", "boom"))
     if not (np.isfinite(x_start) and np.isfinite(x_end) and x_start < x_end):
@@ -243,12 +247,12 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     share = ecc * rotating_mass(model) / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
     if placement == "distributed":
-        per_bay = []
+        columns = []
         for a, b in bays:
             re = line_load(model, "shaft", a, b, rotating.real * share / (b - a))
             im = line_load(model, "shaft", a, b, rotating.imag * share / (b - a))
-            per_bay.append(re + 1j * im)
-        per_bay = np.array(per_bay).T  # (ndof, nbays)
+            columns.append(re + 1j * im)
+        per_bay = np.array(columns).T  # (ndof, nbays)
     else:  # the point loads of every bay midpoint from one evaluation of the shape functions
         dofs, N, fields = _rows(model, "shaft", [0.5 * (a + b) for a, b in bays])
         g = _generalised(fields, rotating * share, np.zeros(3))

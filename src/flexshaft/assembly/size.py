@@ -181,11 +181,11 @@ class ProblemSize:
 
     @property
     def largest_memory(self) -> str:
-        return max(self.memory, key=self.memory.get)
+        return max(self.memory, key=lambda part: self.memory[part])
 
     @property
     def largest_time(self) -> str:
-        return max(self.time, key=self.time.get)
+        return max(self.time, key=lambda part: self.time[part])
 
     def summary(self) -> str:
         """One line: the counts and the estimates."""

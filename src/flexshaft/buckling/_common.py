@@ -105,7 +105,9 @@ def extreme_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tup
         factor = scipy.linalg.cho_factor(K[np.ix_(r, r)], lower=True, check_finite=False)
         S = K[np.ix_(k, k)] - K_rk.conj().T @ scipy.linalg.cho_solve(factor, K_rk, check_finite=False)
         G_kk = G[np.ix_(k, k)]
-    mu = scipy.linalg.eigh(G_kk, S, eigvals_only=True, driver="gvd", check_finite=False)
+    # scipy-stubs 1.17.1.5 types the eigvals_only overloads' driver without the generalized
+    # drivers ("gv", "gvd", "gvx"), which scipy accepts for a (G, S) pair
+    mu = scipy.linalg.eigh(G_kk, S, eigvals_only=True, driver="gvd", check_finite=False)  # type: ignore[call-overload]
     return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
 
 
@@ -183,7 +185,7 @@ def helix_minima(
         centre, value = log_k[rows, best], values[rows, best, senses]
         if refine:
 
-            def own(x):  # each sense's torque at its own log k, (n, 2)
+            def own(x, hand=hand):  # each sense's torque at its own log k, (n, 2)
                 return torques(n[:, None], hand * np.exp(x))[rows, senses, senses]
 
             a, b = centre - step, centre + step

@@ -187,7 +187,7 @@ def classical_galerkin_matrices(
 def ritz_mode(K: NDArray[np.complex128], G: NDArray[np.complex128], torque: float, w: slice) -> NDArray[np.complex128]:
     """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque."""
     lu = scipy.linalg.lu_factor(K - torque * (1.0 - 1e-9) * G)
-    vector = np.random.default_rng(0).standard_normal(K.shape[0]).astype(complex)
+    vector = np.random.default_rng(0).standard_normal(int(K.shape[0])).astype(complex)
     for _ in range(4):
         vector = scipy.linalg.lu_solve(lu, G @ vector)
         vector /= np.linalg.norm(vector)

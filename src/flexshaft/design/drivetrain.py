@@ -32,7 +32,7 @@ from typing import Annotated
 from pydantic import Field
 
 from flexshaft.design.fields import FrozenModel
-from flexshaft.design.quantities import Inertia, quantity
+from flexshaft.design.quantities import Inertia, quantity_field
 
 __all__ = ["DEFAULT_TORQUE_OSCILLATION_1P", "DEFAULT_TORQUE_OSCILLATION_NP", "MainGearbox", "TailRotor"]
 
@@ -43,20 +43,31 @@ DEFAULT_TORQUE_OSCILLATION_1P = 0.05
 #: (assumed: each blade passing the fin and the main-rotor wake; no published value found).
 DEFAULT_TORQUE_OSCILLATION_NP = 0.10
 
-GearRatio = quantity(
-    "-", "overall gear ratio shaft speed / rotor speed from 0.01 to 100 (tail drives: 2-5)", ge=0.01, le=100.0
-)
-TorsionalStiffness = quantity(
-    "N m/rad",
-    "torsional stiffness above 0 and at most 1e12 N m/rad (omit the key for a rigid connection)",
-    gt=0.0,
-    le=1e12,
-)
-PositiveInertia = quantity("kg m^2", "polar inertia above 0 and at most 1e7 kg m²", gt=0.0, le=1e7)
-TorqueFraction = quantity(
-    "-", "torque oscillation amplitude as a fraction of the mean torque, from 0 to 10", ge=0.0, le=10.0
-)
-TorsionalDamping = quantity("N m s/rad", "torsional damping dQ/dΩ from 0 to 1e9 N m s/rad", ge=0.0, le=1e9)
+GearRatio = Annotated[
+    float,
+    quantity_field(
+        "-", "overall gear ratio shaft speed / rotor speed from 0.01 to 100 (tail drives: 2-5)", ge=0.01, le=100.0
+    ),
+]
+TorsionalStiffness = Annotated[
+    float,
+    quantity_field(
+        "N m/rad",
+        "torsional stiffness above 0 and at most 1e12 N m/rad (omit the key for a rigid connection)",
+        gt=0.0,
+        le=1e12,
+    ),
+]
+PositiveInertia = Annotated[
+    float, quantity_field("kg m^2", "polar inertia above 0 and at most 1e7 kg m²", gt=0.0, le=1e7)
+]
+TorqueFraction = Annotated[
+    float,
+    quantity_field("-", "torque oscillation amplitude as a fraction of the mean torque, from 0 to 10", ge=0.0, le=10.0),
+]
+TorsionalDamping = Annotated[
+    float, quantity_field("N m s/rad", "torsional damping dQ/dΩ from 0 to 1e9 N m s/rad", ge=0.0, le=1e9)
+]
 BladeCount = Annotated[int, Field(strict=True, ge=1, le=12, description="number of tail-rotor blades N, 1 to 12")]
 
 

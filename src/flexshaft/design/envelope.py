@@ -33,13 +33,13 @@ only), assumed values with their grounds:
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from flexshaft.design.fields import FrozenModel, Name, Problems, check_unique, format_number, format_value
 from flexshaft.design.loads import SpeedRpm
-from flexshaft.design.quantities import Power, quantity
+from flexshaft.design.quantities import Power, quantity_field
 from flexshaft.units import ZERO_CELSIUS
 
 __all__ = [
@@ -58,11 +58,16 @@ MAX_ENVELOPE_POINTS = 20
 #: Where the shaft's material temperature at a point comes from (module docstring).
 MaterialTemperatureSource = Literal["ambient", "shaft_air", "parked", "given"]
 
-PointCelsius = quantity("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
-Fraction = quantity("-", "fraction from 0 to 1", ge=0.0, le=1.0)
-LoadScale = quantity(
-    "-", "multiplier of the static loads from 0 to 100 (0: no manoeuvre or point loads)", ge=0.0, le=100.0
-)
+PointCelsius = Annotated[
+    float, quantity_field("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+]
+Fraction = Annotated[float, quantity_field("-", "fraction from 0 to 1", ge=0.0, le=1.0)]
+LoadScale = Annotated[
+    float,
+    quantity_field(
+        "-", "multiplier of the static loads from 0 to 100 (0: no manoeuvre or point loads)", ge=0.0, le=100.0
+    ),
+]
 
 
 class EnvelopePoint(FrozenModel):
@@ -177,6 +182,7 @@ def check_envelope_temperatures(problems: Problems, envelope: Envelope, ambient_
             field, value = "ambient_temperature_c", point.ambient_temperature_c if given else ambient_c
         else:
             continue
+        assert value is not None  # Point's validator requires material_temperature_c with "given"
         for name, table in tables.items():
             low, high = table.temperature_c[0], table.temperature_c[-1]
             if not low <= value <= high:

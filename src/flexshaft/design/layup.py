@@ -144,7 +144,7 @@ class _LayupParser:
         return int(text)
 
     def angle(self) -> list[float]:
-        signs = (1.0,)
+        signs: tuple[float, ...] = (1.0,)
         if self.peek("pair") or self.peek("sign"):
             symbol = self.take()
             signs = _SIGNS[symbol]

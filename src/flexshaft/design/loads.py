@@ -32,7 +32,7 @@ from flexshaft.design.quantities import (
     Moment,
     Power,
     Station,
-    quantity,
+    quantity_field,
 )
 from flexshaft.units import rpm_to_rad_s
 
@@ -42,18 +42,27 @@ __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 #: drivelines run at 3,000-8,000 rev/min and a 0.1 m shaft at 10^6 rev/min would have a surface
 #: speed of 5 km/s; far larger values only overflow the gyroscopic matrix Ω G to inf/nan.
 MAX_SPEED_RPM = 1.0e6
-MainRotorSpeed = quantity(
-    "rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)", gt=0.0, le=5000.0
-)
-BalanceGrade = quantity(
-    "mm/s",
-    "ISO 21940-11 balance grade G above 0 and at most 4000 mm/s (the standard's coarsest is G 4000)",
-    gt=0.0,
-    le=4000.0,
-)
-SpeedFraction = quantity(
-    "-", "fraction of the operating speed above 0 and at most 10 (a speed range is a few % wide)", gt=0.0, le=10.0
-)
+MainRotorSpeed = Annotated[
+    float,
+    quantity_field(
+        "rpm", "main-rotor speed, up to 5000 rev/min (helicopter main rotors turn at 150-500)", gt=0.0, le=5000.0
+    ),
+]
+BalanceGrade = Annotated[
+    float,
+    quantity_field(
+        "mm/s",
+        "ISO 21940-11 balance grade G above 0 and at most 4000 mm/s (the standard's coarsest is G 4000)",
+        gt=0.0,
+        le=4000.0,
+    ),
+]
+SpeedFraction = Annotated[
+    float,
+    quantity_field(
+        "-", "fraction of the operating speed above 0 and at most 10 (a speed range is a few % wide)", gt=0.0, le=10.0
+    ),
+]
 SpeedRpm = Annotated[
     float,
     Field(

@@ -13,7 +13,7 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from flexshaft.design.fields import FrozenModel, LossFactor, Problems, format_number, format_value
-from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction, quantity
+from flexshaft.design.quantities import Density, Modulus, PoissonRatio, Strength, TsaiWuInteraction, quantity_field
 from flexshaft.design.temperature_table import TemperatureTable
 from flexshaft.units import ZERO_CELSIUS, celsius_to_kelvin
 
@@ -76,19 +76,26 @@ Celsius = Annotated[
         json_schema_extra={"unit": "degC"},
     ),
 ]
-FibreMisalignment = quantity(
-    "deg",
-    "initial fibre misalignment from 0 to 10 deg (1-3 deg in aligned composites; the kink-band "
-    "formula is a small-angle one)",
-    ge=0.0,
-    le=10.0,
-)
-ShearYieldStrain = quantity(
-    "-",
-    "shear yield strain gamma_y above 0 and at most 10 (elastomer matrices yield at far larger strains than epoxies)",
-    gt=0.0,
-    le=10.0,
-)
+FibreMisalignment = Annotated[
+    float,
+    quantity_field(
+        "deg",
+        "initial fibre misalignment from 0 to 10 deg (1-3 deg in aligned composites; the kink-band "
+        "formula is a small-angle one)",
+        ge=0.0,
+        le=10.0,
+    ),
+]
+ShearYieldStrain = Annotated[
+    float,
+    quantity_field(
+        "-",
+        "shear yield strain gamma_y above 0 and at most 10 (elastomer matrices yield at far larger strains than "
+        "epoxies)",
+        gt=0.0,
+        le=10.0,
+    ),
+]
 #: Thermal expansion [1/K]: finite here; the range (±1e-3 1/K, with a hint for values in ppm/K)
 #: is checked by :meth:`Lamina._check`. The JSON schema shows the range of
 #: :data:`~flexshaft.design.quantities.ExpansionCoefficient`.

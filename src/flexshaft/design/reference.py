@@ -26,8 +26,10 @@ the design layer (a data leaf).
 
 from __future__ import annotations
 
+import functools
 import inspect
 import json
+import operator
 import re
 import sys
 import types
@@ -102,7 +104,7 @@ def _optional(annotation: Any) -> tuple[Any, bool]:
     if typing.get_origin(annotation) in (Union, types.UnionType):
         members = [arg for arg in typing.get_args(annotation) if arg is not type(None)]
         if len(members) < len(typing.get_args(annotation)):
-            return (members[0] if len(members) == 1 else Union[tuple(members)]), True
+            return functools.reduce(operator.or_, members), True
     return annotation, False
 
 
@@ -137,10 +139,11 @@ def _bounds(metadata: list[Any]) -> str:
                 found[name] = value
     extras = [info.json_schema_extra for info in _field_infos(metadata) if isinstance(info.json_schema_extra, dict)]
     for extra in extras:  # bounds a model checks itself, published for the JSON schema
-        if "minimum" in extra and "ge" not in found and "gt" not in found:
-            found["ge"] = extra["minimum"]
-        if "maximum" in extra and "le" not in found and "lt" not in found:
-            found["le"] = extra["maximum"]
+        minimum, maximum = extra.get("minimum"), extra.get("maximum")
+        if isinstance(minimum, (int, float)) and "ge" not in found and "gt" not in found:
+            found["ge"] = minimum
+        if isinstance(maximum, (int, float)) and "le" not in found and "lt" not in found:
+            found["le"] = maximum
     low = ("[", found["ge"]) if "ge" in found else ("(", found["gt"]) if "gt" in found else None
     high = ("]", found["le"]) if "le" in found else (")", found["lt"]) if "lt" in found else None
     if low and high:
@@ -310,23 +313,17 @@ def _attribute_docs(model: type[BaseModel]) -> dict[str, str]:
     for cls in reversed(model.__mro__):
         _, section = _split_docstring(cls)
         name_line = re.compile(r"^(?P<names>[A-Za-z_][\w, ]*?)\s*:\s*.*$")
-        current: list[str] = []
-        lines: list[str] = []
-
-        def flush() -> None:
-            text = " ".join(line.strip() for line in lines).strip()
-            for name in current:
-                docs[name] = text
-
+        entries: list[tuple[list[str], list[str]]] = []  # (the names of one entry, its description lines)
         for line in section.splitlines():
             match = name_line.match(line) if line and not line[0].isspace() else None
             if match:
-                flush()
-                current = [name.strip() for name in match.group("names").split(",")]
-                lines = []
-            elif current:
-                lines.append(line)
-        flush()
+                entries.append(([name.strip() for name in match.group("names").split(",")], []))
+            elif entries:
+                entries[-1][1].append(line)
+        for names, lines in entries:
+            text = " ".join(line.strip() for line in lines).strip()
+            for name in names:
+                docs[name] = text
     return docs
 
 

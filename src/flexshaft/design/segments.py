@@ -21,7 +21,7 @@ file (no segments, no couplings) is one segment with the same numbers as before.
 
 from __future__ import annotations
 
-from typing import Annotated, Literal, Union
+from typing import Annotated, Final, Literal
 
 from pydantic import Field, field_validator, model_validator
 from pydantic_core import PydanticCustomError
@@ -36,7 +36,7 @@ from flexshaft.design.quantities import (
     Station,
     Stiffness,
     WallThickness,
-    quantity,
+    quantity_field,
 )
 
 __all__ = [
@@ -51,22 +51,25 @@ __all__ = [
 ]
 
 #: The value of a coupling stiffness that makes the joint rigid in that direction.
-RIGID = "rigid"
+RIGID: Final = "rigid"
 #: Most entries of ``[[shaft.segments]]`` and of ``[[couplings]]``.
 MAX_SEGMENTS = 256
 MAX_COUPLINGS = 255
 
 #: A coupling stiffness: a number [N/m or N m/rad] in [0, 1e12], or ``"rigid"``.
-CouplingStiffness = Union[Stiffness, Literal["rigid"]]
+CouplingStiffness = Stiffness | Literal["rigid"]
 #: A torsional stiffness must carry the torque: > 0 or ``"rigid"``.
-TorsionalStiffness = Union[
-    quantity(
-        "N m/rad", "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)", gt=0.0, le=1e12
-    ),
-    Literal["rigid"],
-]
+TorsionalStiffness = (
+    Annotated[
+        float,
+        quantity_field(
+            "N m/rad", "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)", gt=0.0, le=1e12
+        ),
+    ]
+    | Literal["rigid"]
+)
 #: An allowable misalignment angle [deg], in (0, 90).
-Angle = quantity("deg", "misalignment angle above 0 and below 90 deg", gt=0.0, lt=90.0)
+Angle = Annotated[float, quantity_field("deg", "misalignment angle above 0 and below 90 deg", gt=0.0, lt=90.0)]
 #: A layup string, as ``[shaft] layup``.
 Layup = Annotated[
     str,

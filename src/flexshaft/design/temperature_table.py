@@ -27,7 +27,7 @@ from typing import Annotated
 from pydantic import Field, model_validator
 
 from flexshaft.design.fields import FrozenModel, Problems, format_number, format_value
-from flexshaft.design.quantities import Modulus, quantity
+from flexshaft.design.quantities import Modulus, quantity_field
 from flexshaft.units import ZERO_CELSIUS
 
 __all__ = ["MAX_TABLE_ROWS", "TABLE_COLUMNS", "TemperatureTable", "check_table_range"]
@@ -37,11 +37,14 @@ MAX_TABLE_ROWS = 100
 #: The property columns of a table, in the order of the lamina's keys.
 TABLE_COLUMNS = ("E_L", "E_T", "G_LT", "loss_E_L", "loss_E_T", "loss_G_LT")
 
-TableCelsius = quantity("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+TableCelsius = Annotated[
+    float, quantity_field("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+]
 #: A loss factor of the table: strictly positive, because it is interpolated on its logarithm.
-TableLossFactor = quantity(
-    "-", "loss factor η in (0, 1) (interpolated on its logarithm, so 0 is not allowed)", gt=0.0, lt=1.0
-)
+TableLossFactor = Annotated[
+    float,
+    quantity_field("-", "loss factor η in (0, 1) (interpolated on its logarithm, so 0 is not allowed)", gt=0.0, lt=1.0),
+]
 Rows = Field(min_length=2, max_length=MAX_TABLE_ROWS)
 
 

@@ -9,46 +9,68 @@ model is not a thermal choice: it is the design's ``[analysis] internal_damping`
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from flexshaft.design.fields import FrozenModel
-from flexshaft.design.quantities import quantity
+from flexshaft.design.quantities import quantity_field
 from flexshaft.units import ZERO_CELSIUS
 
 __all__ = ["Thermal", "BoomConvection", "ShaftConvection"]
 
-Fraction = quantity("-", "fraction from 0 to 1", ge=0.0, le=1.0)
-Celsius = quantity("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+Fraction = Annotated[float, quantity_field("-", "fraction from 0 to 1", ge=0.0, le=1.0)]
+Celsius = Annotated[
+    float, quantity_field("degC", "temperature above absolute zero and at most 400 °C", gt=-ZERO_CELSIUS, le=400.0)
+]
 #: The air's properties are evaluated from 200 to 600 K (flexshaft.thermal.air), at the film
 #: temperature (skin + ambient)/2 of the tailboom, whose skin temperature is sought up to the
 #: ambient + 300 K: an ambient within 200-450 K keeps every film temperature in range.
-AmbientCelsius = quantity(
-    "degC",
-    "ambient air temperature from -73 °C (200.15 K) to 176 °C (449.15 K): the air properties are "
-    "evaluated from 200 to 600 K, at film temperatures up to the ambient + 150 K",
-    ge=-73.0,
-    le=176.0,
-)
-Zenith = quantity("deg", "solar zenith angle within ±90 deg", ge=-90.0, le=90.0)
-Conductivity = quantity(
-    "W/(m K)", "thermal conductivity from 1e-3 (below an aerogel, 0.013) to 2000 W/(m K) (diamond)", ge=1e-3, le=2000.0
-)
-RotorcraftMass = quantity(
-    "kg", "rotorcraft mass from 1 kg to 1e6 kg (the heaviest helicopter weighs 56 t)", ge=1.0, le=1e6
-)
-RotorRadius = quantity(
-    "m", "main-rotor radius from 0.1 m to 100 m (the largest rotor, Mi-12, is 17.5 m)", ge=0.1, le=100.0
-)
-SolarConstant = quantity("W/m^2", "solar irradiance above 0 and at most 1e4 W/m² (1361 at the Earth)", gt=0.0, le=1e4)
-AirDensity = quantity("kg/m^3", "air density from 1e-3 to 100 kg/m³ (1.225 at sea level)", ge=1e-3, le=100.0)
-TemperatureScale = quantity(
-    "K",
-    "temperature scale θ of the matrix law exp(±ΔT/θ) from 5 K to 1e6 K: over the "
-    "673 K span of allowed temperatures the factor stays below 1e59 (a glass transition "
-    "takes about 10 K per factor e)",
-    ge=5.0,
-    le=1e6,
-)
+AmbientCelsius = Annotated[
+    float,
+    quantity_field(
+        "degC",
+        "ambient air temperature from -73 °C (200.15 K) to 176 °C (449.15 K): the air properties are "
+        "evaluated from 200 to 600 K, at film temperatures up to the ambient + 150 K",
+        ge=-73.0,
+        le=176.0,
+    ),
+]
+Zenith = Annotated[float, quantity_field("deg", "solar zenith angle within ±90 deg", ge=-90.0, le=90.0)]
+Conductivity = Annotated[
+    float,
+    quantity_field(
+        "W/(m K)",
+        "thermal conductivity from 1e-3 (below an aerogel, 0.013) to 2000 W/(m K) (diamond)",
+        ge=1e-3,
+        le=2000.0,
+    ),
+]
+RotorcraftMass = Annotated[
+    float,
+    quantity_field("kg", "rotorcraft mass from 1 kg to 1e6 kg (the heaviest helicopter weighs 56 t)", ge=1.0, le=1e6),
+]
+RotorRadius = Annotated[
+    float,
+    quantity_field(
+        "m", "main-rotor radius from 0.1 m to 100 m (the largest rotor, Mi-12, is 17.5 m)", ge=0.1, le=100.0
+    ),
+]
+SolarConstant = Annotated[
+    float, quantity_field("W/m^2", "solar irradiance above 0 and at most 1e4 W/m² (1361 at the Earth)", gt=0.0, le=1e4)
+]
+AirDensity = Annotated[
+    float, quantity_field("kg/m^3", "air density from 1e-3 to 100 kg/m³ (1.225 at sea level)", ge=1e-3, le=100.0)
+]
+TemperatureScale = Annotated[
+    float,
+    quantity_field(
+        "K",
+        "temperature scale θ of the matrix law exp(±ΔT/θ) from 5 K to 1e6 K: over the "
+        "673 K span of allowed temperatures the factor stays below 1e59 (a glass transition "
+        "takes about 10 K per factor e)",
+        ge=5.0,
+        le=1e6,
+    ),
+]
 
 #: Forced-convection correlation of the hovering tailboom (cross-flow over a cylinder).
 BoomConvection = Literal["hilpert", "churchill_bernstein"]

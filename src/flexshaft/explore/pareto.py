@@ -94,8 +94,8 @@ def read_front(folder: str | Path) -> Front:
     return Front(folder, base, data)
 
 
-def front_design(front: Front, index: int) -> tuple[Design, dict[str, Any]]:
-    """The design of Pareto point ``index`` and its overrides of the base.
+def front_design(front: Front, index: object) -> tuple[Design, dict[str, Any]]:
+    """The design of Pareto point ``index`` (any JSON value: checked here) and its overrides of the base.
 
     Raises
     ------

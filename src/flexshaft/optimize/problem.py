@@ -23,9 +23,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from flexshaft import __version__
-from flexshaft.design import DesignError, baseline_design, embedded_text, with_overrides
+from flexshaft.design import Design, DesignError, baseline_design, embedded_text, with_overrides
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
 from flexshaft.optimize.variables import DEFAULT_OBJECTIVES, DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
@@ -50,6 +51,12 @@ _NO_RESULT = 1e30
 _PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
 
 
+def _output_triple(output: Sequence[str]) -> tuple[str, str, str]:
+    """``(name, unit, long name)`` of an evaluation output."""
+    name, unit, long_name = output
+    return name, unit, long_name
+
+
 def _qualname(func: Callable) -> str:
     return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', repr(func))}"
 
@@ -60,7 +67,7 @@ def _format_angle(value: float) -> str:
     return "0" if text == "-0" else text
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class DesignProblem:
     """A design optimization: variables, objectives and constraints on a base design.
 
@@ -99,43 +106,67 @@ class DesignProblem:
         when ``base`` is omitted, else none. Not part of the search's identity.
     """
 
+    # the resolved values (the constructor takes names and sequences: see Parameters)
     variables: tuple[DesignVariable, ...]
-    base: Any = None
-    objectives: tuple[str | Objective, ...] = DEFAULT_OBJECTIVES
-    constraints: tuple[str, ...] | None = None
-    layup: str | None = None
-    ply_thickness: float | None = None
-    fixed: Mapping[str, Any] = field(default_factory=dict)
-    fidelity: str = "verdict"
-    evaluate: Callable = design_outputs
-    outputs: tuple[tuple[str, str, str], ...] | None = None
-    name: str = "design optimization"
-    base_text: str | None = field(default=None, compare=False, repr=False)
+    base: Design
+    objectives: tuple[Objective, ...]
+    constraints: tuple[str, ...]
+    layup: str | None
+    ply_thickness: float | None
+    fixed: Mapping[str, Any]
+    fidelity: str
+    evaluate: Callable
+    outputs: tuple[tuple[str, str, str], ...]
+    name: str
+    base_text: str | None = field(compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        if self.base is None:
-            object.__setattr__(self, "base", baseline_design())
-            if self.base_text is None:
-                object.__setattr__(self, "base_text", embedded_text("baseline"))
-        variables = tuple(self.variables)
-        if not variables:
+    def __init__(
+        self,
+        variables: Sequence[DesignVariable],
+        base: Design | None = None,
+        objectives: Sequence[str | Objective] = DEFAULT_OBJECTIVES,
+        constraints: Sequence[str] | None = None,
+        layup: str | None = None,
+        ply_thickness: float | None = None,
+        fixed: Mapping[str, Any] | None = None,
+        fidelity: str = "verdict",
+        evaluate: Callable = design_outputs,
+        outputs: Sequence[Sequence[str]] | None = None,
+        name: str = "design optimization",
+        base_text: str | None = None,
+    ) -> None:
+        def set_field(field_name: str, value: Any) -> None:
+            object.__setattr__(self, field_name, value)  # a frozen dataclass
+
+        if base is None:
+            base = baseline_design()
+            if base_text is None:
+                base_text = embedded_text("baseline")
+        set_field("base", base)
+        set_field("base_text", base_text)
+        resolved = tuple(variables)
+        if not resolved:
             raise OptimizeError("an optimization needs at least one variable")
-        if not all(isinstance(v, DesignVariable) for v in variables):
+        if not all(isinstance(v, DesignVariable) for v in resolved):
             raise OptimizeError("variables must be DesignVariable objects")
-        object.__setattr__(self, "variables", variables)
-        names = [v.name for v in variables]
+        set_field("variables", resolved)
+        names = [v.name for v in resolved]
         if len(set(names)) != len(names):
             raise OptimizeError(f"variable names must be unique, got {names}")
-        paths = [p for v in variables for p in v.paths]
+        paths = [p for v in resolved for p in v.paths]
         if len(set(paths)) != len(paths):
             raise OptimizeError(f"a design path may belong to one variable only, got {paths}")
-        object.__setattr__(self, "fixed", dict(self.fixed))
-        if self.fidelity not in FIDELITIES:
-            raise OptimizeError(f"fidelity: must be one of {', '.join(FIDELITIES)} (got {self.fidelity!r})")
-        outputs = tuple(tuple(o) for o in (self.outputs if self.outputs is not None else metric_outputs()))
-        object.__setattr__(self, "outputs", outputs)
-        object.__setattr__(self, "constraints", self._resolve_constraints())
-        object.__setattr__(self, "objectives", self._resolve_objectives())
+        set_field("layup", layup)
+        set_field("ply_thickness", ply_thickness)
+        set_field("fixed", dict(fixed or {}))
+        set_field("evaluate", evaluate)
+        set_field("name", name)
+        if fidelity not in FIDELITIES:
+            raise OptimizeError(f"fidelity: must be one of {', '.join(FIDELITIES)} (got {fidelity!r})")
+        set_field("fidelity", fidelity)
+        set_field("outputs", tuple(_output_triple(o) for o in (outputs if outputs is not None else metric_outputs())))
+        set_field("constraints", self._resolve_constraints(constraints))
+        set_field("objectives", self._resolve_objectives(objectives))
         if self.ply_thickness is not None and not (math.isfinite(self.ply_thickness) and self.ply_thickness > 0):
             raise OptimizeError(f"ply_thickness: must be a positive thickness [m] (got {self.ply_thickness!r})")
         self._check_layup()
@@ -160,7 +191,7 @@ class DesignProblem:
         """The evaluation's outputs, then the derived ones."""
         return self.output_names + tuple(o[0] for o in self.derived_outputs)
 
-    def with_derived(self, outputs: np.ndarray) -> np.ndarray:
+    def with_derived(self, outputs: ArrayLike) -> np.ndarray:
         """Outputs (n, n_outputs) in the order of :attr:`output_names`, with the derived
         columns appended (the order of :attr:`all_output_names`)."""
         outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
@@ -168,7 +199,7 @@ class DesignProblem:
             return outputs
         return np.column_stack([outputs, self.constraint_margins(outputs).min(axis=1)])
 
-    def limiting(self, outputs: np.ndarray) -> list[str]:
+    def limiting(self, outputs: ArrayLike) -> list[str]:
         """The constraint with the smallest margin of each row (its check key: ``tsai_wu``,
         not ``margin_tsai_wu``); empty strings without constraints."""
         outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
@@ -177,7 +208,7 @@ class DesignProblem:
         margins = self.constraint_margins(outputs)
         return [self.constraints[k].removeprefix("margin_") for k in np.argmin(margins, axis=1)]
 
-    def constraint_margins(self, outputs: np.ndarray) -> np.ndarray:
+    def constraint_margins(self, outputs: ArrayLike) -> np.ndarray:
         """Margins (n, n_constraints) of the constraints, a not-evaluated (NaN) one as
         −:data:`NOT_EVALUATED_VIOLATION`."""
         outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
@@ -185,9 +216,9 @@ class DesignProblem:
         margins = outputs[:, [index[c] for c in self.constraints]].reshape(outputs.shape[0], len(self.constraints))
         return np.where(np.isnan(margins), -NOT_EVALUATED_VIOLATION, margins)
 
-    def _resolve_objectives(self) -> tuple[Objective, ...]:
+    def _resolve_objectives(self, objectives: Sequence[str | Objective]) -> tuple[Objective, ...]:
         out = []
-        for item in self.objectives:
+        for item in objectives:
             if isinstance(item, Objective):
                 objective = item
             elif isinstance(item, str) and item in DESIGN_OBJECTIVES:
@@ -209,11 +240,12 @@ class DesignProblem:
             raise OptimizeError(f"objectives must differ, got {[o.output for o in out]}")
         return tuple(out)
 
-    def _resolve_constraints(self) -> tuple[str, ...]:
-        if self.constraints is None and "margin_tsai_wu" in self.output_names:
+    def _resolve_constraints(self, constraints: Sequence[str] | None) -> tuple[str, ...]:
+        given: Sequence[str]
+        if constraints is None and "margin_tsai_wu" in self.output_names:
             given = applicable_checks(self.base)  # the base design's verdict: its parts decide which checks apply
         else:
-            given = self.constraints or ()
+            given = constraints or ()
         out = []
         for name in given:
             output = f"margin_{name}" if name in CHECK_KEYS else name
@@ -407,7 +439,7 @@ def _match_layup(template: str, layup: str) -> dict[str, float] | None:
 
 
 def objectives_and_constraints(
-    problem: DesignProblem, outputs: np.ndarray, valid: np.ndarray
+    problem: DesignProblem, outputs: ArrayLike, valid: ArrayLike
 ) -> tuple[np.ndarray, np.ndarray]:
     """The minimisation objectives F and constraints G (<= 0 feasible) of evaluated candidates.
 

@@ -174,7 +174,7 @@ class OptimizationResult:
         )
         margins = margins[valid]
         fails = ~(margins >= 0.0)  # NaN: not evaluated, a violation
-        rows = []
+        rows: list[dict[str, Any]] = []
         for k, name in enumerate(constraints):
             column = margins[:, k]
             finite = np.isfinite(column)

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -46,7 +47,7 @@ def _name_of(path: str) -> str:
     return re.sub(r"[^A-Za-z0-9_]+", "_", path).strip("_")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class DesignVariable:
     """One search variable.
 
@@ -72,16 +73,35 @@ class DesignVariable:
     path: str | tuple[str, ...]
     lower: float
     upper: float
-    integer: bool = False
-    log: bool = False
-    name: str | None = None
-    units: str = ""
-    significant_digits: int | None = 4
+    integer: bool
+    log: bool
+    name: str  # resolved: the default is made from the path
+    units: str
+    significant_digits: int | None
 
-    def __post_init__(self) -> None:
-        paths = (self.path,) if isinstance(self.path, str) else tuple(self.path)
+    def __init__(
+        self,
+        path: str | Sequence[str],
+        lower: float,
+        upper: float,
+        integer: bool = False,
+        log: bool = False,
+        name: str | None = None,
+        units: str = "",
+        significant_digits: int | None = 4,
+    ) -> None:
+        for field_name, value in (
+            ("lower", lower),
+            ("upper", upper),
+            ("integer", integer),
+            ("log", log),
+            ("units", units),
+            ("significant_digits", significant_digits),
+        ):
+            object.__setattr__(self, field_name, value)  # a frozen dataclass
+        paths = (path,) if isinstance(path, str) else tuple(path)
         if not paths or not all(isinstance(p, str) and p.strip() for p in paths):
-            raise OptimizeError(f"variable path: give one or more design paths (got {self.path!r})")
+            raise OptimizeError(f"variable path: give one or more design paths (got {path!r})")
         paths = tuple(p.strip() for p in paths)
         object.__setattr__(self, "path", paths if len(paths) > 1 else paths[0])
         where = f"variable {paths[0]!r}"
@@ -106,7 +126,7 @@ class DesignVariable:
             )
         if any(p.startswith(LAYUP_PREFIX) for p in paths) and len(paths) > 1:
             raise OptimizeError(f"{where}: a layup placeholder cannot share a variable with other paths")
-        name = self.name if self.name is not None else _name_of(paths[0])
+        name = name if name is not None else _name_of(paths[0])
         if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name or ""):
             raise OptimizeError(f"{where}: name must be an identifier (letters, digits, _), got {name!r}")
         object.__setattr__(self, "name", name)

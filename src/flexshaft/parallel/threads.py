@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import functools
 from contextlib import nullcontext
+from typing import Any
 
 __all__ = ["one_blas_thread", "single_blas_thread"]
 
 
-_CONTROLLER = []  # the process's ThreadpoolController, found once
+_CONTROLLER: list[tuple[int, Any]] = []  # (libraries, the process's ThreadpoolController), found once
 
 
 def _controller(libraries: int):

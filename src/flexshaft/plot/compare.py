@@ -243,7 +243,7 @@ def mass_breakdown_figure(masses: Mapping[str, Mapping[str, float]]) -> Figure:
     bottoms = np.zeros(len(items))
     import matplotlib
 
-    colors = matplotlib.colormaps["tab10"].colors
+    colors = matplotlib.color_sequences["tab10"]
     for j, kind in enumerate(kinds):
         values = np.array([float(parts.get(kind, 0.0)) for _, parts in items])
         ax.bar(

@@ -111,6 +111,7 @@ def place_point_labels(
                 best, best_cost = (dx, dy, rect), cost
             if cost == 0.0:
                 break
+        assert best is not None  # the first offset always improves on an infinite cost
         dx, dy, rect = best
         placed.append(rect)
         far = abs(dy) > 20 or abs(dx) > 10

@@ -55,7 +55,8 @@ def _view(fx, fy, ox, oy, references) -> tuple[float, float, float, float] | Non
         width = hi - lo
         near = others[np.isfinite(others) & (others >= lo - 2 * width) & (others <= hi + 2 * width)]
         limits += list(_span(np.r_[core, near], pad=0.08) if near.size else (lo, hi))
-    return tuple(limits)
+    x0, x1, y0, y1 = limits
+    return x0, x1, y0, y1
 
 
 def _clip(x: float, y: float, view) -> tuple[float, float, str | None]:
@@ -121,7 +122,7 @@ def pareto_front(
     fx = vector("front_x", front_x)
     fy = vector("front_y", front_y, fx.size)
     own = ax is None
-    if own:
+    if ax is None:
         rows = (3 + len(references or {}) + 1) // 2  # legend lines, two entries each
         band = 0.75 + 0.2 * rows
         fig, axes = new_figure(1, 1, (7.5, 4.6 + band), sharex=False, bottom=band)

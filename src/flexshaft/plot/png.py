@@ -71,7 +71,7 @@ def write_png(
     for key, value in (text or {}).items():
         if value is not None:
             parts.append(_chunk(b"tEXt", key.encode("latin-1") + b"\0" + str(value).encode("latin-1", "replace")))
-    parts += [_chunk(b"IDAT", zlib.compress(rows, level)), _chunk(b"IEND", b"")]
+    parts += [_chunk(b"IDAT", zlib.compress(rows.data, level)), _chunk(b"IEND", b"")]
     if hasattr(file, "write"):
         file.write(b"".join(parts))
     else:

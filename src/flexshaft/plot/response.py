@@ -165,7 +165,7 @@ def orbit_figure(
         radius_mm = float(orbit_amplitude_mm(v, w))
         gap_mm = None if gap is None else gap * MM_PER_M
         shows_gap = gap_mm is not None and gap_mm <= 4.0 * max(radius_mm, 1e-300)
-        extent_mm = max(radius_mm, gap_mm if shows_gap else 0.0) or 1e-6
+        extent_mm = max(radius_mm, gap_mm if gap_mm is not None and shows_gap else 0.0) or 1e-6
         unit, scale = ("μm", 1e3) if extent_mm < 0.1 else ("mm", 1.0)  # plain tick labels, no offset text
         ov, ow = orbit_ellipse(v * MM_PER_M * scale, w * MM_PER_M * scale)
         a.plot(ow, ov, color="C0", lw=1.6)

@@ -159,7 +159,7 @@ def mode_shapes_figure(
         hspace=0.55,
         wspace=0.45,
     )
-    handles = {}
+    handles: dict[str, Any] = {}
     for k, shape in enumerate(shapes):
         ax_k = axes.flat[k]
         parts = [np.asarray(shape["v"], dtype=complex).ravel(), np.asarray(shape["w"], dtype=complex).ravel()]

@@ -15,7 +15,7 @@ from __future__ import annotations
 import functools
 import sys
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any, Literal, ParamSpec, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -25,6 +25,7 @@ from flexshaft.units import MM_PER_M, RPM_PER_HZ  # the figures' unit conversion
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
+    from matplotlib.typing import RcKeyType
 
 __all__ = [
     "MM_PER_M",
@@ -44,7 +45,7 @@ __all__ = [
 WHIRL_LINESTYLE = {"forward": "-", "backward": "--", "planar": ":", "none": (0, (1, 4))}  # none: torsional/axial
 #: Marker of each whirl label (the ROSS convention: ▲ forward, ▼ backward); torsional ■, axial ◆.
 WHIRL_MARKER = {"forward": "^", "backward": "v", "planar": "o", "torsional": "s", "axial": "D", "none": "s"}
-STYLE = {
+STYLE: dict[RcKeyType, Any] = {
     "font.size": 10,
     "axes.titlesize": 11,
     "axes.labelsize": 10,
@@ -60,23 +61,25 @@ STYLE = {
     "axes.titley": 1.0,
 }
 
-F = TypeVar("F", bound=Callable[..., Any])
+P = ParamSpec("P")
+R = TypeVar("R")
 
 
-def styled(func: F) -> F:
+def styled(func: Callable[P, R]) -> Callable[P, R]:
     """Import matplotlib on first use (Agg unless pyplot is already loaded) and apply the style."""
 
     @functools.wraps(func)
-    def wrapper(*args: Any, **kwargs: Any) -> Any:
+    def wrapper(*args: P.args, **kwargs: P.kwargs) -> R:
         import matplotlib
+        from cycler import cycler
 
         if "matplotlib.pyplot" not in sys.modules:
             matplotlib.use("Agg")
-        style = {**STYLE, "axes.prop_cycle": matplotlib.cycler(color=matplotlib.colormaps["tab10"].colors)}
+        style: dict[RcKeyType, Any] = {**STYLE, "axes.prop_cycle": cycler(color=matplotlib.color_sequences["tab10"])}
         with matplotlib.rc_context(style):
             return func(*args, **kwargs)
 
-    return wrapper  # type: ignore[return-value]
+    return wrapper
 
 
 def new_figure(
@@ -180,7 +183,7 @@ def mark_operating(ax: Axes, operating_rpm: float | None, label: bool = True) ->
         )
 
 
-def log_scale(ax: Axes, axis: str = "y", minor_grid: bool = True) -> None:
+def log_scale(ax: Axes, axis: Literal["x", "y"] = "y", minor_grid: bool = True) -> None:
     """Logarithmic ``axis`` ("x" or "y") with minor ticks at 2 and 5 of each decade only
     (matplotlib's default eight per decade cost a tick object each at draw time, a third of
     the drawing of a log-scale figure, and add no reading accuracy)."""
@@ -265,9 +268,11 @@ def nice_colorbar(fig, mappable, ax, label: str, *, log: bool = False, **kwargs)
     elif lo is not None and hi is not None and hi > lo:
         center = getattr(mappable.norm, "vcenter", None)
         if center is not None and lo < center < hi:  # two halves of equal length: ticks on each
-            ticks = np.concatenate([MaxNLocator(3).tick_values(lo, center), MaxNLocator(5).tick_values(center, hi)])
+            candidates = np.concatenate(
+                [MaxNLocator(3).tick_values(lo, center), MaxNLocator(5).tick_values(center, hi)]
+            )
         else:
-            ticks = MaxNLocator(7).tick_values(lo, hi)
+            candidates = np.asarray(MaxNLocator(7).tick_values(lo, hi))
         tol = 1e-9 * abs(hi - lo)
-        bar.set_ticks(sorted({float(t) for t in ticks if lo - tol <= t <= hi + tol}))
+        bar.set_ticks(sorted({float(t) for t in candidates if lo - tol <= t <= hi + tol}))
     return bar

@@ -105,7 +105,8 @@ def plan_run_report(
             "Design summary",
             paragraphs=[
                 f"{design.name}. Shaft {design.shaft.x_start:g}–{design.shaft.x_end:g} m, "
-                f"D_o = {m_to_mm(design.shaft.outer_diameter):.1f} mm, wall {m_to_mm(design.shaft.wall_thickness):.2f} mm, "
+                f"D_o = {m_to_mm(design.shaft.outer_diameter):.1f} mm, "
+                f"wall {m_to_mm(design.shaft.wall_thickness):.2f} mm, "
                 f"layup {design.shaft.layup or 'isotropic'}; {op_rpm:.0f} rpm, {model.power / 1e3:.0f} kW."
             ],
             tables=[
@@ -232,7 +233,8 @@ def plan_run_report(
         )
     )
 
-    if a.strength_total is not None:
+    # the three are computed together, for a laminated shaft (verdict.operating_point)
+    if a.strength_total is not None and a.strength_static is not None and a.buckling is not None:
         rows = []
         for name, rr in (("static", a.strength_static), ("static + imbalance", a.strength_total)):
             rows.append(
@@ -261,7 +263,8 @@ def plan_run_report(
                     f"T_cr = {b['critical_torque_positive_Nm']:.0f} N m (positive, n = {b['wave_number_positive']}), "
                     f"{b['critical_torque_negative_Nm']:.0f} N m (negative, n = {b['wave_number_negative']}); "
                     f"applied {b['torque_Nm']:.0f} N m; buckling safety factor {b['safety_factor']:.2f}. "
-                    "The classical shell ignores transverse shear of the soft matrix and is unconservative for FMC walls.",
+                    "The classical shell ignores transverse shear of the soft matrix and is unconservative for "
+                    "FMC walls.",
                 ],
                 tables=[
                     Table(

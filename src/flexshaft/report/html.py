@@ -174,8 +174,8 @@ def format_cell(value: Any) -> str:
             return "∞" if number > 0 else "−∞"
         return f"{number:.4g}"
     if isinstance(value, numbers.Complex):
-        number = complex(value)
-        return f"{number.real:.4g}{number.imag:+.4g}j"
+        z = complex(value)
+        return f"{z.real:.4g}{z.imag:+.4g}j"
     return str(value)
 
 

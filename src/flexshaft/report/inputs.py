@@ -74,7 +74,8 @@ class _Element:
     """Label of the current table or array-of-tables element, resolved once its name is read."""
 
     def __init__(self, path: str, index: int | None):
-        self.path, self.index, self.name = path, index, None
+        self.path, self.index = path, index
+        self.name: str | None = None
 
     def label(self) -> str:
         if self.index is None:
@@ -132,12 +133,12 @@ def marked_inputs(text: str) -> list[MarkedInput]:
         elif marker and last_key is not None:  # continuation line of a multi-line value
             found.append((table, last_key[0], last_key[1] + " ...", marker.group(1).lower(), comment, number))
     out = []
-    for element, key, value, marker, comment, number in found:
+    for element, key, value, kind, comment, number in found:
         prefix = element.label()
         if key == "name" and element.index is not None:  # a marked name marks its whole table
-            out.append(MarkedInput(prefix, "(the whole table)", marker, comment, number))
+            out.append(MarkedInput(prefix, "(the whole table)", kind, comment, number))
             continue
-        out.append(MarkedInput(f"{prefix}.{key}" if prefix else key, value, marker, comment, number))
+        out.append(MarkedInput(f"{prefix}.{key}" if prefix else key, value, kind, comment, number))
     return out
 
 

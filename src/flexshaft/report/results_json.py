@@ -7,6 +7,8 @@ every number comes from the assessment.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from flexshaft.analyses.summary import model_summary, modes_table
@@ -185,7 +187,7 @@ def _envelope_dict(a: Assessment) -> dict | None:
 def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:
     st = a.stability
     comparison = thesis.shaft_comparison if thesis is not None else {}
-    out = {
+    out: dict[str, Any] = {
         "damping_model": st.damping_model,
         "onset_speed_rpm": rpm_or_none(st.onset_speed),
         "analysed_to_rpm": float(rad_s_to_rpm(st.speeds[-1])),
@@ -209,7 +211,10 @@ def _thermal_dict(a: Assessment) -> dict | None:
     th = a.thermal
     if th is None:
         return None
-    out = {"tailboom_c": {k: v.celsius for k, v in th.tailboom.items()}, "report_loss_model": th.loss_model}
+    out: dict[str, Any] = {
+        "tailboom_c": {k: v.celsius for k, v in th.tailboom.items()},
+        "report_loss_model": th.loss_model,
+    }
     for lm, s in th.shaft.items():
         out[f"shaft_{lm}"] = {
             "peak_rise_K": s.peak_rise,

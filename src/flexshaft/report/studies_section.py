@@ -85,7 +85,12 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
                 "not studied (3 mm chosen)",
             ]
         )
-    if r.gains_after is not None:
+    if (
+        r.gains_after is not None
+        and r.gains_before is not None
+        and r.peak_before is not None
+        and r.peak_after is not None
+    ):
         rows.append(
             [
                 "6. tuned gains: peak spin-up deflection",
@@ -105,7 +110,7 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
             "study_ply_angle",
             "Safety factor vs ply orientation, one angle variable, no imbalance (thesis figure 3.2)",
         )
-        wanted = sorted({r.optimal_angle, *TABLE_ANGLES})
+        wanted = sorted({*([] if r.optimal_angle is None else [r.optimal_angle]), *TABLE_ANGLES})
         trows = []
         for a in wanted:
             p = nearest(ds, "alpha", a)
@@ -253,6 +258,7 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
         for k, c in enumerate(ds.case.values):
             peak = r.peak_before if k == 0 else r.peak_after
             speed = r.peak_speed_before if k == 0 else r.peak_speed_after
+            assert peak is not None and speed is not None  # set with the tuned curves (thesis.spinup_maps)
             trows.append(
                 [
                     str(c),

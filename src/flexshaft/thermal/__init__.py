@@ -17,8 +17,8 @@
 
 These modules take models and plain values; they never load or make designs. The thermal
 study of a design (sweeps over wall thickness and convection, the report numbers,
-:class:`~flexshaft.thermal.study.ThermalResults`) is :mod:`flexshaft.thermal.study`. Importing this package imports ``ht`` and ``fluids`` (not
-``import flexshaft``).
+:class:`~flexshaft.thermal.study.ThermalResults`) is :mod:`flexshaft.thermal.study`.
+Importing this package imports ``ht`` and ``fluids`` (not ``import flexshaft``).
 """
 
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal

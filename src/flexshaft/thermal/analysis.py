@@ -155,6 +155,7 @@ def shaft_thermal(
     Do = np.array([t.outer_diameter for t in tubes])
     Di = np.array([t.inner_diameter for t in tubes])
     nusselt = None
+    h: float | np.ndarray
     if heat_transfer_coefficient is None:
         ends = model.dofs.shaft_element_x
         lengths = ends[:, 1] - ends[:, 0]
@@ -163,19 +164,14 @@ def shaft_thermal(
             rotating_shaft_convection(D, model.speed, T_air, options.shaft_convection, options.environment.air_pressure)
             for D in diameters
         ]
-        heat_transfer_coefficient = np.array([h for h, _ in convection])[inverse.ravel()]
+        h = np.array([coefficient for coefficient, _ in convection])[inverse.ravel()]
         covered = np.bincount(inverse.ravel(), weights=lengths, minlength=diameters.size)
         nusselt = convection[int(np.argmax(covered))][1]
+    else:
+        h = heat_transfer_coefficient
     k = shaft_conductivity(model, options) if conductivity is None else float(conductivity)
     sources = sources or heat_sources(model, loss_model)
     temp = solve_shaft_temperature(
-        sources.x,
-        sources.total,
-        k,
-        np.pi * (Do**2 - Di**2) / 4,
-        np.pi * Do,
-        heat_transfer_coefficient,
-        T_air,
-        (T_air, T_air),
+        sources.x, sources.total, k, np.pi * (Do**2 - Di**2) / 4, np.pi * Do, h, T_air, (T_air, T_air)
     )
     return ShaftThermal(sources, temp, nusselt, k)

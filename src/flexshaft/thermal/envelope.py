@@ -39,6 +39,7 @@ from dataclasses import dataclass, field
 
 from flexshaft.design.envelope import DEFAULT_ENVELOPE_POINTS, EnvelopePoint, envelope_point
 from flexshaft.design.materials import Lamina
+from flexshaft.design.schema import Design
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.thermal.options import matrix_law_from, thermal_options
 from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
@@ -94,7 +95,7 @@ class PointConditions:
         return kelvin_to_celsius(self.ambient_temperature)
 
 
-def point_thermal(design, point: EnvelopePoint) -> dict[str, float]:
+def point_thermal(design: Design, point: EnvelopePoint) -> dict[str, float]:
     """The keys of ``design``'s ``[thermal]`` table that differ at ``point`` (step 1, file units)."""
     base = design.thermal
     out: dict[str, float] = {}
@@ -115,6 +116,7 @@ def _material_temperature(point: EnvelopePoint, ambient: float, boom: dict[str, 
     """T_m [K] by the point's source (step 2 of the module)."""
     source = point.material_temperature
     if source == "given":
+        assert point.material_temperature_c is not None  # EnvelopePoint requires it with "given"
         return celsius_to_kelvin(point.material_temperature_c)
     if source == "shaft_air":
         return boom.get("hover", ambient)
@@ -123,7 +125,7 @@ def _material_temperature(point: EnvelopePoint, ambient: float, boom: dict[str, 
     return ambient
 
 
-def point_conditions(design, point: EnvelopePoint | str) -> PointConditions:
+def point_conditions(design: Design, point: EnvelopePoint | str) -> PointConditions:
     """Temperatures and laminae of ``design`` at one operating point (module docstring).
 
     Parameters
@@ -169,7 +171,7 @@ def point_conditions(design, point: EnvelopePoint | str) -> PointConditions:
     return PointConditions(point, ambient, T_m, boom, changes, materials)
 
 
-def envelope_conditions(design) -> tuple[PointConditions, ...]:
+def envelope_conditions(design: Design) -> tuple[PointConditions, ...]:
     """:func:`point_conditions` at every point of ``design.envelope``, in order; at the default
     points (:data:`~flexshaft.design.envelope.DEFAULT_ENVELOPE_POINTS`) for a design without an
     ``[envelope]`` (which the verdict judges at its own operating point only)."""

@@ -313,15 +313,15 @@ def heat_sources(
     Omega = model.speed
     Xi = element_amplitudes(model, np.asarray(q_imbalance).reshape(model.dofs.size, -1))  # (nel, 12, ncases)
     Xs = element_amplitudes(model, np.asarray(q_static, dtype=float))
-    vib_cases = []
+    per_case = []
     for c in range(Xi.shape[-1]):
         X = Xi[..., c]
         if loss_model == "thesis":
-            vib_cases.append(harmonic_loss_power(X, Kpp, Omega))
+            per_case.append(harmonic_loss_power(X, Kpp, Omega))
         else:
             axial, _, bwd = split_whirl(X)
-            vib_cases.append(harmonic_loss_power(axial, Kpp, Omega) + harmonic_loss_power(bwd, Kpp, 2 * Omega))
-    vib_cases = np.array(vib_cases)
+            per_case.append(harmonic_loss_power(axial, Kpp, Omega) + harmonic_loss_power(bwd, Kpp, 2 * Omega))
+    vib_cases = np.array(per_case)
     vibration = vib_cases[int(np.argmax(vib_cases.sum(axis=1)))]
     if loss_model == "thesis":
         Xb = np.zeros_like(Xs)

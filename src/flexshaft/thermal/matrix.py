@@ -215,13 +215,14 @@ class MatrixTemperatureLaw:
             return complex(getattr(lamina, name)) if unchanged else new[name] * (1 + 1j * new["loss_" + name])
 
         E_L, E_T, G_LT = complex_modulus("E_L"), complex_modulus("E_T"), complex_modulus("G_LT")
+        G_13, G_23 = lamina.transverse_shear_moduli
         return dataclasses.replace(
             lamina,
             E_L=E_L,
             E_T=E_T,
             G_LT=G_LT,
-            G_13=lamina.G_13 * (G_LT / complex(lamina.G_LT)),
-            G_23=lamina.G_23 * (E_T / complex(lamina.E_T)),
+            G_13=G_13 * (G_LT / complex(lamina.G_LT)),
+            G_23=G_23 * (E_T / complex(lamina.E_T)),
         )
 
     def material(self, material: LaminaMaterial, temperature: float) -> LaminaMaterial:

@@ -41,6 +41,8 @@ _ENVIRONMENT = (
 def thermal_guards(design: Any) -> list[Problem]:
     """Problems of the design's ``[thermal]`` table that only its evaluation shows (see the
     module docstring); empty when the thermal analyses can run."""
+    import numpy as np
+
     from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
     from flexshaft.thermal.air import AIR_TEMPERATURE_RANGE
     from flexshaft.thermal.analysis import shaft_air_temperature
@@ -82,7 +84,7 @@ def thermal_guards(design: Any) -> list[Problem]:
         )
         for temperature in sorted({min(air, law.allowable_temperature), max(air, law.allowable_temperature)}):
             try:
-                equivalent_moduli(Laminate((0.0,), (1.0,), law.lamina(lamina, temperature)))
+                equivalent_moduli(Laminate(np.array([0.0]), np.array([1.0]), law.lamina(lamina, temperature)))
             except ValueError as error:
                 problems.append(
                     Problem(

@@ -128,10 +128,10 @@ class ShaftTemperature:
 def solve_shaft_temperature(
     x,
     element_power,
-    conductivity: float,
-    wall_area: float,
-    perimeter: float,
-    heat_transfer_coefficient: float,
+    conductivity: float | np.ndarray,
+    wall_area: float | np.ndarray,
+    perimeter: float | np.ndarray,
+    heat_transfer_coefficient: float | np.ndarray,
     air_temperature: float,
     end_temperatures=None,
 ) -> ShaftTemperature:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -19,8 +20,9 @@ from flexshaft.assembly import build_model
 from flexshaft.assembly.model import Model
 from flexshaft.design import with_overrides
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
+from flexshaft.thermal.correlations import RotatingMethod
 from flexshaft.thermal.environment import ThermalEnvironment
-from flexshaft.thermal.heat import heat_sources
+from flexshaft.thermal.heat import LossModel, heat_sources
 from flexshaft.thermal.options import ThermalOptions, thermal_options
 from flexshaft.thermal.selfheating import SelfHeating, self_heating
 from flexshaft.thermal.shaft import ShaftTemperature
@@ -38,7 +40,7 @@ __all__ = [
 ]
 
 
-def _options(design, convection: str | None = None) -> ThermalOptions:
+def _options(design, convection: RotatingMethod | None = None) -> ThermalOptions:
     options = thermal_options(design.thermal)
     return options if convection is None else dataclasses.replace(options, shaft_convection=convection)
 
@@ -78,7 +80,7 @@ class ThermalResults:
     """
 
     options: ThermalOptions
-    loss_model: str
+    loss_model: LossModel
     tailboom: Mapping[str, BoomTemperature]
     shaft: Mapping[str, ShaftThermal]
     self_heating: SelfHeating | None
@@ -130,7 +132,7 @@ class ThermalResults:
 
 
 def wall_thickness_sweep(
-    design, thicknesses, loss_model: str | None = None, options=None, air_temperature: float | None = None
+    design, thicknesses, loss_model: LossModel | None = None, options=None, air_temperature: float | None = None
 ) -> dict[str, np.ndarray]:
     """Shaft temperature against wall thickness at fixed D_o (thesis figure 3.18).
 
@@ -176,7 +178,7 @@ def wall_thickness_sweep(
 
 
 def convection_sweep(
-    model: Model, coefficients, loss_model: str | None = None, options=None, air_temperature: float | None = None
+    model: Model, coefficients, loss_model: LossModel | None = None, options=None, air_temperature: float | None = None
 ) -> dict[str, np.ndarray]:
     """Shaft temperature against the convection coefficient (thesis figure 3.19); the heat
     sources are computed once.
@@ -223,7 +225,7 @@ def temperature_profiles(
     model: Model,
     walls=(0.0015, 0.003, 0.005),
     coefficients=(5.0, 20.0, None),
-    loss_model: str | None = None,
+    loss_model: LossModel | None = None,
     options=None,
 ) -> TemperatureProfiles:
     """Shaft temperature rise along x for several wall thicknesses [m] at fixed D_o and several
@@ -247,8 +249,8 @@ def temperature_profiles(
 def thermal_results(
     design,
     model: Model,
-    loss_model: str | None = None,
-    convection: str | None = None,
+    loss_model: LossModel | None = None,
+    convection: RotatingMethod | None = None,
     self_heat: bool = False,
     detail: bool = True,
 ) -> ThermalResults:
@@ -291,15 +293,15 @@ def thermal_results(
 def thermal_summary(
     design,
     model: Model,
-    loss_model: str | None = None,
-    convection: str | None = None,
+    loss_model: LossModel | None = None,
+    convection: RotatingMethod | None = None,
     self_heat: bool = False,
     sweeps: bool = False,
 ) -> dict:
     """JSON-ready thermal numbers (°C, K, W); ``sweeps`` adds the peak rise against wall
     thickness and convection coefficient (thesis figures 3.18, 3.19)."""
     r = thermal_results(design, model, loss_model, convection, self_heat)
-    out = {}
+    out: dict[str, Any] = {}
     if sweeps:
         prof = r.profiles or temperature_profiles(design, model, loss_model=r.loss_model, options=r.options)
         out["peak_rise_K_by_wall"] = {k: float(v.max()) for k, v in prof.by_wall.items()}

@@ -5,9 +5,10 @@ Chapter 3, on the sweep engine: :mod:`~flexshaft.thesis.ply_angle` (study 1),
 response of a few walls), :mod:`~flexshaft.thesis.gain` (4), :mod:`~flexshaft.thesis.buckling_sweep`
 (5), :mod:`~flexshaft.thesis.spinup_maps` (6: the spin-up over the actuator gains), with the
 strength output they share in :mod:`~flexshaft.thesis.strength` (the six study functions are
-importable from this package); all of them in one call: :mod:`~flexshaft.thesis.design_studies`. Chapter 4: :mod:`~flexshaft.thesis.whirl` (the three
-shafts and the whirl onset over the gains). :mod:`~flexshaft.thesis.report_studies` starts the
-studies ``flexshaft run`` reports beside a design's assessment.
+importable from this package); all of them in one call: :mod:`~flexshaft.thesis.design_studies`.
+Chapter 4: :mod:`~flexshaft.thesis.whirl` (the three shafts and the whirl onset over the gains).
+:mod:`~flexshaft.thesis.report_studies` starts the studies ``flexshaft run`` reports beside a
+design's assessment.
 """
 
 from flexshaft.thesis.buckling_sweep import buckling_study

@@ -42,8 +42,8 @@ def buckling_study(walls=None, design=None, **run):
         )
     study = Study(
         "torsional buckling vs wall thickness",
-        [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
-        [Output("critical_torque", "N m", "smaller of the two senses"), Output("buckling_safety_factor", "1")],
+        (Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m"),),
+        (Output("critical_torque", "N m", "smaller of the two senses"), Output("buckling_safety_factor", "1")),
         _buckling_outputs,
         base=design,
     )

@@ -39,8 +39,8 @@ def proportional_gain_study(kps=None, design=None, **run):
     kps = np.logspace(5, 8, 13) if kps is None else kps
     study = Study(
         "proportional gain",
-        [Variable("kp", kps, overrides=_both_actuators_kp, units="N/m")],
-        STRENGTH_OUTPUTS + [Output("actuator_displacement", "m", "relative orbit at the actuator, operating speed")],
+        (Variable("kp", kps, overrides=_both_actuators_kp, units="N/m"),),
+        STRENGTH_OUTPUTS + (Output("actuator_displacement", "m", "relative orbit at the actuator, operating speed"),),
         _actuator_outputs,
         base=design,
     )

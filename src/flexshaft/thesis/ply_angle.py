@@ -34,14 +34,14 @@ def one_angle_layup(alpha: float) -> dict:
 #: Codes of the ``dominant_stress`` output (a float, so that it fits the results array).
 DOMINANT_STRESS_CODES = {0: "sigma1", 1: "sigma2", 2: "tau12"}
 
-_CRITICAL = [
+_CRITICAL = (
     Output("sigma1", "Pa", "fibre-direction stress of the critical ply (thesis Table 3.3)"),
     Output("sigma2", "Pa", "transverse stress of the critical ply"),
     Output("tau12", "Pa", "in-plane shear stress of the critical ply"),
     Output("critical_ply_angle", "deg", "angle of the critical ply"),
     Output("critical_x", "m", "axial station of the critical point"),
     Output("dominant_stress", "1", "largest Tsai-Wu share: 0 sigma1, 1 sigma2, 2 tau12"),
-]
+)
 
 
 def critical_ply_outputs(point, added_loads: bool = True) -> dict:
@@ -94,7 +94,7 @@ def ply_angle_study(angles=None, design=None, *, added_loads: bool = True, **run
     angles = np.arange(5.0, 90.0, 5.0) if angles is None else angles
     study = Study(
         "ply angle (a/-a/-a/a)",
-        [Variable("alpha", angles, overrides=one_angle_layup, units="deg", long_name="ply angle")],
+        (Variable("alpha", angles, overrides=one_angle_layup, units="deg", long_name="ply angle"),),
         STRENGTH_OUTPUTS + _CRITICAL,
         critical_ply_outputs if added_loads else critical_ply_outputs_thesis_loads,
         base=design,

@@ -77,13 +77,14 @@ def spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     if not ok.any():
         raise ValueError(f"no gain pair keeps the actuator orbit within the gap {actuator_gap} m")
     order = np.argsort(np.where(ok, smap.shaft_peak, np.inf), axis=None)[: min(8, int(ok.sum()))]
-    best = None
+    best: tuple[float, float, float] | None = None
     for flat in order:
         i, j = np.unravel_index(int(flat), smap.shaft_peak.shape)
         law = [Controller.pd(float(smap.kp[i]), float(smap.kd[j]))] * rec.n_actuators
         peak, _ = _refined_peak(model, law, rec.speeds, spinup_curves(rec, law).shaft_peak)
         if best is None or peak < best[0]:
             best = (peak, float(smap.kp[i]), float(smap.kd[j]))
+    assert best is not None  # order holds at least one gain pair (ok.any())
     _, kp_a, kd_a = best
 
     cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]

@@ -25,7 +25,7 @@ def strength_outputs(point) -> dict:
 
 
 #: The outputs of :func:`strength_outputs`.
-STRENGTH_OUTPUTS = [
+STRENGTH_OUTPUTS = (
     Output("safety_factor_static", "1", "Tsai-Wu safety factor, static loads and torque"),
     Output("safety_factor", "1", "Tsai-Wu safety factor with the imbalance at the operating speed"),
-]
+)

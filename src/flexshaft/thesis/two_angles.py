@@ -26,7 +26,7 @@ def two_angle_study(alphas=None, betas=None, design=None, **run):
     betas = np.arange(0.0, 91.0, 15.0) if betas is None else betas
     study = Study(
         "two ply angles (a/-a/b/-b)s",
-        [Variable("alpha", alphas, units="deg"), Variable("beta", betas, units="deg")],
+        (Variable("alpha", alphas, units="deg"), Variable("beta", betas, units="deg")),
         STRENGTH_OUTPUTS,
         _two_angle_strength,
         base=design,

@@ -87,13 +87,13 @@ def wall_thickness_study(walls=None, design=None, **run):
     walls = np.linspace(0.0015, 0.006, 10) if walls is None else walls
     study = Study(
         "wall thickness at fixed outer diameter",
-        [Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m")],
+        (Variable(path="shaft.wall_thickness", name="wall_thickness", values=walls, units="m"),),
         STRENGTH_OUTPUTS
-        + [
+        + (
             Output("safety_factor_no_imbalance", "1"),
             Output("natural_frequency_1", "Hz", "the shaft's first lateral natural frequency at rest"),
             Output("spinup_peak_deflection", "m", "peak shaft orbit during spin-up"),
-        ],
+        ),
         _wall_outputs,
         base=design,
     )

@@ -12,10 +12,14 @@ does), so the comparison is always flexshaft against something else.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from flexshaft.design import Design
+
+if TYPE_CHECKING:
+    from flexshaft.thermal.correlations import ForcedMethod
 
 __all__ = [
     "QUANTITIES",
@@ -236,7 +240,7 @@ def balance_tolerance(design: None, *, rotor_mass: float, grade_mm_s: float, spe
     return np.asarray([permissible_unbalance(grade_mm_s, rpm_to_rad_s(speed_rpm), rotor_mass)])
 
 
-def cylinder_crossflow_nusselt(design: None, *, reynolds: float, prandtl: float, method: str) -> np.ndarray:
+def cylinder_crossflow_nusselt(design: None, *, reynolds: float, prandtl: float, method: ForcedMethod) -> np.ndarray:
     """Mean Nusselt number [-] of a cylinder in cross-flow at Re_D = ``reynolds``, Pr =
     ``prandtl`` by the correlation ``method`` the tailboom's hover convection uses
     (:func:`flexshaft.thermal.correlations.forced_cylinder_nusselt`)."""
