@@ -10,10 +10,11 @@ Layout of an optimizer run folder::
 
 A candidate's key is the SHA-256 of the evaluation fingerprint (evaluation function, outputs,
 fidelity, flexshaft version) and of the design it makes, so a design met again (a duplicate, the
-base design, a resumed run, a longer budget) is read, not recomputed. A batch is a :class:`~flexshaft.sweep.Study` over one
-special axis, ``candidate`` (its JSON overrides), with chunks of one point: an interrupted batch
-keeps every finished evaluation, and the resumed run (which asks for the same candidates, the
-search being deterministic for a seed) reuses them through the sweep engine's own resume.
+base design, a resumed run, a longer budget) is read, not recomputed. A batch is a
+:class:`~flexshaft.sweep.Study` over one special axis, ``candidate`` (its JSON overrides), with
+chunks of one point: an interrupted batch keeps every finished evaluation, and the resumed run
+(which asks for the same candidates, the search being deterministic for a seed) reuses them
+through the sweep engine's own resume.
 """
 
 from __future__ import annotations

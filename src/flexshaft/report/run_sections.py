@@ -359,7 +359,8 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
         )
     )
     paragraphs = [
-        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
+        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's "
+        "hover temperature. "
         "Heat is the hysteretic loss P = (ω/2)·Re(Xᴴ K'' X) of the imbalance response and of the static deflection "
         "seen by the rotating material. The thesis model cycles every response at Ω in the fixed frame; the "
         "rotating-frame model (used for the self-heating check) knows that synchronous forward whirl does not cycle "
