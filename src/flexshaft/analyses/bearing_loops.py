@@ -242,9 +242,9 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
         if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
             continue  # neither near the top nor under-resolved (a neighbour below half of it)
-        x, value = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
-        if value > peak:
-            peak, peak_w = float(value), float(np.exp(x))
+        x, s_local = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
+        if s_local > peak:
+            peak, peak_w = float(s_local), float(np.exp(x))
 
     phase = np.angle(L)
     turn = np.abs(np.angle(L[1:] / L[:-1]))  # phase change across each interval [rad]
@@ -254,7 +254,7 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     crossings = [
         k for k in np.flatnonzero(np.sign(L.imag[:-1]) * np.sign(L.imag[1:]) < 0) if L.real[k] < 0 or L.real[k + 1] < 0
     ]
-    estimates = []
+    estimates: list[tuple[float, complex]] = []  # (ω [rad/s], L(iω)) at each phase crossover
     for k in crossings:
         t = L.imag[k] / (L.imag[k] - L.imag[k + 1])
         x, value = w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])

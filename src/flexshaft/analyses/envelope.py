@@ -133,6 +133,9 @@ class EnvelopeSystem:
         self.gyroscopic = A1[nb : 2 * nb, nb : 2 * nb].copy()
         if np.abs(A1).sum() > np.abs(self.gyroscopic).sum() * (1 + 1e-12) + 1e-300:
             raise NotImplementedError("the speed enters the state matrix outside the gyroscopic block")
+        # the rotating-frame loss blocks L, S of the reduced model; None with the thesis model or no loss
+        self.lateral: np.ndarray | None
+        self.circulatory: np.ndarray | None
         self.lateral, self.circulatory = (red.L, red.S) if rotating and np.any(red.L) else (None, None)
         Q = np.asarray(loads_per_speed_squared)
         if Q.ndim != 1 or Q.size != model.dofs.size:
@@ -353,7 +356,7 @@ def integrate_envelope(
             N_half = drift_and_load(basis, half[:, None], np.array([t + 0.5 * h]))[:, 0]
             small = etd(basis, half, t + 0.5 * h, np.array([0.5 * h]), N_half)[:, 0]
             error = np.linalg.norm(basis.V @ (small - big)) / 15.0
-            size = np.linalg.norm(basis.V @ small)
+            size = float(np.linalg.norm(basis.V @ small))
             if not (np.isfinite(error) and np.isfinite(size)):
                 raise UnstableResponseError(
                     f"the response overflowed at t = {t:.6g} s, Ω = {speed(t):.6g} rad/s: the system is unstable "

@@ -232,7 +232,7 @@ def closed_loop_poles(model: Model, speed: float) -> np.ndarray:
     check_model(model)
     n_free = model.dofs.free.size
     red = _lateral_basis(model, reduce(model, min(n_free, FULL_BASIS_LIMIT)))
-    lam = la.eigvals(red.state_matrix(float(speed)), check_finite=False, overwrite_a=True)
+    lam: np.ndarray = la.eigvals(red.state_matrix(float(speed)), check_finite=False, overwrite_a=True)
     return lam[lam.imag > 1e-6 * np.abs(lam)]
 
 

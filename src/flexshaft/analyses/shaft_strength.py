@@ -334,6 +334,7 @@ def shaft_safety_factor(
         if not np.isfinite(temperature) or temperature <= 0.0:
             raise ValueError(f"temperature must be a positive absolute temperature [K], got {temperature!r}")
         delta_T = float(temperature) - material.stress_free_temperature
+    residual: np.ndarray | None  # the plies' thermal residual stresses (n_ply, 3) [Pa]; None when none
     if residual_stress is not None and thermal_residual:
         residual = check_finite_array("residual_stress", residual_stress, "Pa")
         if residual.shape != (laminate.angles.size, 3):

@@ -180,12 +180,12 @@ class TransientResult:
     rejected: int
     refreshes: int
     max_growth_rate: float
-    basis: np.ndarray = field(repr=False, default=None)
-    residual: np.ndarray | None = field(repr=False, default=None)
-    force_scale: np.ndarray = field(repr=False, default=None)
-    shaft_envelope: np.ndarray = field(repr=False, default=None)
-    actuator_envelope: np.ndarray = field(repr=False, default=None)
-    actuator_force_envelope: np.ndarray = field(repr=False, default=None)
+    basis: np.ndarray = field(repr=False)
+    residual: np.ndarray | None = field(repr=False)
+    force_scale: np.ndarray = field(repr=False)
+    shaft_envelope: np.ndarray = field(repr=False)
+    actuator_envelope: np.ndarray = field(repr=False)
+    actuator_force_envelope: np.ndarray = field(repr=False)
 
     @property
     def shaft_peak(self) -> np.ndarray:
@@ -456,7 +456,8 @@ def transient_response(
         res = np.concatenate([residual, [0.0]])  # index −1: a constrained DOF
         shaft_rows = [r + res[pos[dm.shaft(nodes, f)]][:, None] * force_scale for r, f in zip(shaft_rows, ("v", "w"))]
     shaft = orbit_amplitude(*shaft_rows)
-    act_disp, act_force = [], []
+    act_disp: list[np.ndarray] = []
+    act_force: list[np.ndarray] = []
     for (D, F, B), act in zip(_actuator_outputs(model, red), model.actuators):
         d, f = D @ Z, F @ Z
         if residual is not None:
@@ -470,8 +471,8 @@ def transient_response(
         act_disp.append(d)
         act_force.append(f)
     n_act = len(act_disp)
-    act_disp = np.array(act_disp).reshape(n_act, 2, T.size)
-    act_force = np.array(act_force).reshape(n_act, 2, T.size)
+    disp_envelope = np.array(act_disp).reshape(n_act, 2, T.size)
+    force_envelope = np.array(act_force).reshape(n_act, 2, T.size)
     return TransientResult(
         time=T,
         speed=speed,
@@ -479,8 +480,8 @@ def transient_response(
         phase=phase,
         shaft_x=np.asarray(dm.shaft_x, dtype=float),
         shaft_orbit=shaft,
-        actuator_displacement=orbit_amplitude(act_disp[:, 0], act_disp[:, 1]),
-        actuator_force=orbit_amplitude(act_force[:, 0], act_force[:, 1]),
+        actuator_displacement=orbit_amplitude(disp_envelope[:, 0], disp_envelope[:, 1]),
+        actuator_force=orbit_amplitude(force_envelope[:, 0], force_envelope[:, 1]),
         actuator_names=tuple(a.name for a in model.actuators),
         modal_displacement=Y,
         modal_velocity=Z[nb : 2 * nb],
@@ -494,8 +495,8 @@ def transient_response(
         residual=residual,
         force_scale=force_scale,
         shaft_envelope=np.stack(shaft_rows),
-        actuator_envelope=act_disp,
-        actuator_force_envelope=act_force,
+        actuator_envelope=disp_envelope,
+        actuator_force_envelope=force_envelope,
     )
 
 

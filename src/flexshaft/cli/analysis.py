@@ -9,7 +9,7 @@ transient progress line on a terminal.
 from __future__ import annotations
 
 import sys
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -225,7 +225,7 @@ def stability(
         except DesignError as exc:
             fail(f"--compare-thesis needs an isotropic material 'al6061_t6' and a lamina shaft:\n{exc}")
     margin = d.requirements.min_onset_margin
-    shafts = {}
+    shafts: dict[str, dict[str, Any]] = {}  # the JSON record of each shaft
     with StageProgress(transient=True) as progress:
         results = {}
         for label, dd in designs.items():

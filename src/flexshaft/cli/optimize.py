@@ -15,6 +15,7 @@ import json
 import math
 from enum import Enum
 from pathlib import Path
+from typing import NoReturn
 
 import typer
 
@@ -40,7 +41,7 @@ __all__ = ["NO_DESIGN_PASSES", "Fidelity", "optimize", "parse_variable"]
 NO_DESIGN_PASSES = 3
 
 
-def _fail(message: str) -> None:
+def _fail(message: str) -> NoReturn:
     fail(message)  # exit 2 through the error boundary of every command
 
 

@@ -173,8 +173,10 @@ def prepare_output_folder(
         entries = _entries(folder, option)
         marker = read_marker(folder)
         same_command = marker is not None and marker.get("command") == command
-        same_values = same_command and marker.get("design_fingerprint") == fingerprint
-        same_source = same_command and source is not None and marker.get("design_source") == source
+        same_values = same_command and marker is not None and marker.get("design_fingerprint") == fingerprint
+        same_source = (
+            same_command and marker is not None and source is not None and marker.get("design_source") == source
+        )
         if entries and not force:
             if marker is None:
                 shown = [n for n in entries if n != MARKER]

@@ -85,8 +85,8 @@ def run(
     if interactive:
         from flexshaft.report.interactive import missing_extra
 
-        if missing_extra() is not None:  # before any computation: say how to install the extra
-            fail(missing_extra("flexshaft run --interactive"))
+        if (message := missing_extra("flexshaft run --interactive")) is not None:  # before any computation
+            fail(message)  # how to install the extra
     if studies is not Studies.none and not loaded.design.operating.speed_rpm > 0:
         # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
         typer.echo("note: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0): skipped", err=True)

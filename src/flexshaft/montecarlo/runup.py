@@ -76,7 +76,9 @@ def runup_montecarlo(
     bay_mass = bay_rotating_masses(model)
     red = reduce(model, default_basis_size(model, profile.max_speed) if basis_size is None else int(basis_size))
     output_step = np.pi / (2 * max(profile.max_speed, 1e-3)) if output_step is None else output_step
-    shaft, act, force = [], [], []
+    shaft_runs: list[np.ndarray] = []  # the complex envelopes of each bay's unit imbalance
+    act_runs: list[np.ndarray] = []
+    force_runs: list[np.ndarray] = []
     for b in range(n_bays):
         unit = np.zeros(n_bays)
         unit[b] = 1.0
@@ -88,13 +90,13 @@ def runup_montecarlo(
             rtol=rtol,
             output_step=output_step,
         )
-        shaft.append(run.shaft_envelope)
-        act.append(run.actuator_envelope)
-        force.append(run.actuator_force_envelope)
-    n_t = shaft[0].shape[-1]
-    shaft = np.stack(shaft, -1).astype(np.complex64).reshape(-1, n_bays)  # (2·n_nodes·n_t, n_bays)
-    act = np.stack(act, -1).astype(np.complex64).reshape(-1, n_bays)  # (n_act·2·n_t, n_bays)
-    force = np.stack(force, -1).astype(np.complex64).reshape(-1, n_bays)
+        shaft_runs.append(run.shaft_envelope)
+        act_runs.append(run.actuator_envelope)
+        force_runs.append(run.actuator_force_envelope)
+    n_t = shaft_runs[0].shape[-1]
+    shaft = np.stack(shaft_runs, -1).astype(np.complex64).reshape(-1, n_bays)  # (2·n_nodes·n_t, n_bays)
+    act = np.stack(act_runs, -1).astype(np.complex64).reshape(-1, n_bays)  # (n_act·2·n_t, n_bays)
+    force = np.stack(force_runs, -1).astype(np.complex64).reshape(-1, n_bays)
     n_act = act.shape[0] // (2 * n_t)
     draws = draw_imbalance(range(int(n_samples)), n_bays, distribution, "mid_bay", seed)
     weights = bay_unbalances(bay_mass, draws).T.astype(np.complex64)  # (n_bays, n) [kg m]

@@ -69,7 +69,9 @@ class EccentricityDistribution:
             raise ValueError(f"scale must be a finite eccentricity >= 0 m, got {self.scale!r}")
 
     @classmethod
-    def from_grade(cls, grade_mm_s: float, speed: float, kind: str = "disk") -> EccentricityDistribution:
+    def from_grade(
+        cls, grade_mm_s: float, speed: float, kind: Literal["fixed", "disk", "uniform", "rayleigh"] = "disk"
+    ) -> EccentricityDistribution:
         """Scaled by the permissible eccentricity e_per = G/Ω of balance grade G [mm/s] at the
         maximum service speed Ω [rad/s] (ISO 21940-11 §5.3,
         :func:`flexshaft.assembly.balance.permissible_eccentricity`, the run's definition)."""
@@ -145,7 +147,10 @@ class UnitResponses:
 def _station_layout(model: Model, placement: str):
     bays = imbalance_bays(model) or [(float(model.dofs.shaft_x[0]), float(model.dofs.shaft_x[-1]))]
     x_nodes = np.asarray(model.dofs.shaft_x, dtype=float)
-    stations, elements, element_stations, element_bay = [], [], [], []
+    stations: list[float] = []
+    elements: list[tuple[float, float]] = []
+    element_stations: list[tuple[int, ...]] = []  # the station index of each of an element's 4 points
+    element_bay: list[int] = []
 
     def station(x: float) -> int:
         for k, s in enumerate(stations):

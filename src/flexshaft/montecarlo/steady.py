@@ -79,7 +79,7 @@ MAX_SEED = 2**63 - 1
 
 
 @functools.lru_cache(maxsize=1)  # one design per run: every chunk a worker computes reuses it
-def _unit_responses(design_json: str, placement: str, n_speeds: int) -> UnitResponses:
+def _unit_responses(design_json: str, placement: Placement, n_speeds: int) -> UnitResponses:
     """Unit responses of the design of ``design_json``, computed once per worker process."""
     return unit_responses(build_model(Design.model_validate_json(design_json)), placement=placement, n_speeds=n_speeds)
 
@@ -91,7 +91,7 @@ class MonteCarloSampler:
 
     seed: int
     distribution: EccentricityDistribution
-    placement: str = "uniform"
+    placement: Placement = "uniform"
     n_speeds: int = 150
     n_phases: int = 36
     strength: bool = True
@@ -138,8 +138,8 @@ def montecarlo_study(design, n_samples: int, sampler: MonteCarloSampler) -> Stud
         ]
     return Study(
         name=f"Monte-Carlo imbalance ({n_samples} samples, seed {sampler.seed})",
-        variables=[Variable("sample", list(range(int(n_samples))), long_name="sample index")],
-        outputs=outputs,
+        variables=(Variable("sample", list(range(int(n_samples))), long_name="sample index"),),
+        outputs=tuple(outputs),
         evaluate=sampler,
         base=design,
     )
@@ -277,6 +277,7 @@ def run_montecarlo(
             "eccentricity distribution instead"
         )
     if distribution is None:
+        assert grade_mm_s is not None  # exactly one of the two is given (refused above otherwise)
         distribution = EccentricityDistribution.from_grade(grade_mm_s, design.operating.speed_limits[1])
     for name, value in (("gap", gap), ("force_limit", force_limit)):
         if value is not None and not (np.isfinite(value) and value > 0):

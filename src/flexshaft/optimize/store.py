@@ -10,10 +10,11 @@ Layout of an optimizer run folder::
 
 A candidate's key is the SHA-256 of the evaluation fingerprint (evaluation function, outputs,
 fidelity, flexshaft version) and of the design it makes, so a design met again (a duplicate, the
-base design, a resumed run, a longer budget) is read, not recomputed. A batch is a :class:`~flexshaft.sweep.Study` over one
-special axis, ``candidate`` (its JSON overrides), with chunks of one point: an interrupted batch
-keeps every finished evaluation, and the resumed run (which asks for the same candidates, the
-search being deterministic for a seed) reuses them through the sweep engine's own resume.
+base design, a resumed run, a longer budget) is read, not recomputed. A batch is a
+:class:`~flexshaft.sweep.Study` over one special axis, ``candidate`` (its JSON overrides), with
+chunks of one point: an interrupted batch keeps every finished evaluation, and the resumed run
+(which asks for the same candidates, the search being deterministic for a seed) reuses them
+through the sweep engine's own resume.
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ from flexshaft.design import DesignError, with_overrides
 from flexshaft.files import append_line
 from flexshaft.optimize.problem import DesignProblem
 from flexshaft.optimize.variables import OptimizeError
-from flexshaft.sweep import Study, Variable, evaluate_chunk, finished_chunks, run_sweep
+from flexshaft.sweep import Output, Study, Variable, evaluate_chunk, finished_chunks, run_sweep
 
 __all__ = ["EVALUATIONS", "EvaluationCache", "candidate_key", "candidate_overrides", "evaluate_candidates"]
 
@@ -91,6 +92,7 @@ class EvaluationCache:
             self._load()
 
     def _load(self) -> None:
+        assert self.path is not None  # called for an existing log file only (__init__)
         try:
             data = self.path.read_bytes()
         except IsADirectoryError:
@@ -197,9 +199,8 @@ def evaluate_candidates(
                     "error": reason,
                 }
         keys.append(key)
-    invalid = list(invalid.values())
     stored = 0
-    cache.add(invalid)
+    cache.add(list(invalid.values()))
     if new:
         order = list(new)
         study = Study(
@@ -208,7 +209,7 @@ def evaluate_candidates(
                 Variable(name="candidate", values=[_canonical(new[k]) for k in order], overrides=candidate_overrides),
                 Variable(name="fidelity", values=[problem.fidelity]),
             ),
-            outputs=tuple(names),
+            outputs=tuple(Output(n) for n in names),
             evaluate=problem.evaluate,
             base=problem.base,
         )
@@ -233,7 +234,7 @@ def evaluate_candidates(
         )
         if batch_dir is not None:
             shutil.rmtree(batch_dir, ignore_errors=True)
-    return [cache.get(k) for k in keys], len(new) - stored
+    return [cache.records[k] for k in keys], len(new) - stored  # every key is in the cache now
 
 
 def _raise_if_all_failed(study, values: np.ndarray) -> None:

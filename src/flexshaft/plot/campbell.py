@@ -251,7 +251,7 @@ def campbell_figure(
             zorder=1,
         )
         handles.append(line)
-    for k, (name, f_op) in enumerate(rotor.items()):
+    for name, f_op in rotor.items():
         if operating_rpm:
             (line,) = ax.plot(
                 span,

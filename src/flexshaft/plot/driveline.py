@@ -164,7 +164,7 @@ def safety_factor_figure(
     if critical_r is None:
         critical_r = float(np.interp(critical_x, xs[finite], factor[finite]))
     if log_y is None:
-        log_y = np.nanmax(factor) / np.nanmin(factor) > 50.0
+        log_y = bool(np.nanmax(factor) / np.nanmin(factor) > 50.0)
 
     fig, axes = new_figure(1, 1, (8.0, 4.5), ax=ax)
     ax = axes[0, 0]
@@ -274,7 +274,7 @@ def actuator_figure(
         if limits is None:
             continue
         per = dict(limits) if isinstance(limits, Mapping) else dict.fromkeys(names or ["all"], float(limits))
-        drawn = {}
+        drawn: dict[float, list[str]] = {}  # limit value: the bearings that have it
         for name, value in per.items():
             drawn.setdefault(float(value), []).append(name)
         for value, owners in drawn.items():

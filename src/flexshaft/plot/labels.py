@@ -64,8 +64,8 @@ _OFFSETS = [
 
 def place_point_labels(
     ax,
-    x: Sequence[float],
-    y: Sequence[float],
+    x: Sequence[float] | np.ndarray,
+    y: Sequence[float] | np.ndarray,
     texts: Sequence[str],
     *,
     fontsize: float = 8.0,

@@ -163,6 +163,7 @@ def _envelope_dict(a: Assessment) -> dict | None:
     points = []
     for p in a.points:
         operating, conditions = p.analyses.design.operating, p.analyses.conditions
+        assert conditions is not None  # every envelope point is analysed at its conditions (verdict/assess.py)
         tightest = tightest_check(p.verdict)
         points.append(
             {

@@ -54,7 +54,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
     spinup = a.spinup
     rpm = rad_s_to_rpm(spinup.speeds)
     limits = actuator_limits(model)
-    act_gaps = [limits[act.name].gap for act in model.actuators if limits[act.name].gap is not None]
+    act_gaps = [gap for act in model.actuators if (gap := limits[act.name].gap) is not None]
     amps = {"max over shaft": spinup.shaft_peak}
     amps.update(
         {f"shaft at {act.name}": spinup.envelope[dm.node_at("shaft", act.link.x_shaft)] for act in model.actuators}
@@ -247,7 +247,8 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
             r.whirl,
         )
     if not same_speeds:  # the comparison was run on other speeds: draw the design alone
-        curves, onsets, texts, whirl = ({k: v[k] for k in list(v)[:1]} for v in (curves, onsets, texts, whirl))
+        for extra in list(curves)[1:]:  # the four dicts have the same keys, the design first
+            del curves[extra], onsets[extra], texts[extra], whirl[extra]
     required = a.design.requirements.required_log_decrement
     figures.append(
         figs.add(
@@ -313,10 +314,12 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
 def thermal_section(a: Assessment, figs: Figures) -> Section:
     """Tailboom and shaft temperatures, the self-heating equilibrium and the thermal sweeps."""
     th = a.thermal
+    assert th is not None  # the report adds this section only with a thermal result (report/driveline.py)
     env = th.environment
     shafts = th.shaft
     if not shafts:  # below the report's detail: the self-heating equilibrium alone
         sh = th.self_heating
+        assert sh is not None  # no shaft profiles: the self-heating alone was computed (thermal_results)
         return Section(
             "Thermal",
             paragraphs=[
@@ -359,7 +362,8 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
         )
     )
     paragraphs = [
-        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's hover temperature. "
+        f"Ambient {kelvin_to_celsius(env.ambient_temperature):.1f} °C; the shaft's air and ends are at the boom's "
+        "hover temperature. "
         "Heat is the hysteretic loss P = (ω/2)·Re(Xᴴ K'' X) of the imbalance response and of the static deflection "
         "seen by the rotating material. The thesis model cycles every response at Ω in the fixed frame; the "
         "rotating-frame model (used for the self-heating check) knows that synchronous forward whirl does not cycle "

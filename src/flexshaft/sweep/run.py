@@ -86,7 +86,7 @@ def _pool_context():
     """
     import multiprocessing
 
-    context = multiprocessing.get_context()
+    context: multiprocessing.context.BaseContext = multiprocessing.get_context()
     if context.get_start_method() == "forkserver":
         context = multiprocessing.get_context("spawn")
     return context

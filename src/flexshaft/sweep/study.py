@@ -74,7 +74,7 @@ class Variable:
         Human-readable description.
     """
 
-    name: str | None = None
+    name: str = ""  # "": the path (set in __post_init__)
     values: Sequence[Any] = ()
     path: str | None = None
     overrides: Callable[[Any], Mapping[str, Any]] | None = None
@@ -82,7 +82,7 @@ class Variable:
     long_name: str = ""
 
     def __post_init__(self) -> None:
-        name = self.name if self.name is not None else self.path
+        name = self.name or self.path
         if not name or not isinstance(name, str):
             raise SweepError("a sweep variable needs a name or a design path")
         object.__setattr__(self, "name", name)
@@ -227,7 +227,7 @@ class Study:
     def values_at(self, index: int) -> dict[str, Any]:
         """Every variable's value at flat grid index ``index``."""
         idx = np.unravel_index(index, self.shape) if self.shape else ()
-        return {v.name: v.values[i] for v, i in zip(self.variables, idx)}
+        return {v.name: v.values[int(i)] for v, i in zip(self.variables, idx)}
 
     def overrides_at(self, values: Mapping[str, Any]) -> dict[str, Any]:
         out = dict(self.fixed)
@@ -312,6 +312,7 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
             key = tuple(values[v.name] for v in study.variables if v.is_design)
             if key != last_key:
                 last_key, shared = key, DesignModel(study.design_at(values))
+            assert shared is not None  # built at the first point: its key differs from None
             point = Point(
                 index=index,
                 values=values,

@@ -40,6 +40,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Literal
 
 from flexshaft.analyses.separation import api684_separation
 from flexshaft.assembly.model import Model
@@ -74,12 +75,15 @@ __all__ = [
 # ------------------------------------------------------------------------------------------------
 # Findings
 
+_Sense = Literal["at least", "at most"]  # Check.sense
+_Args = tuple[str, str, Kind, _Sense]  # key, title, kind, sense: the leading arguments of a Check
 
-def _not_evaluated(key: str, title: str, kind: Kind, sense, note: str) -> Check:
+
+def _not_evaluated(key: str, title: str, kind: Kind, sense: _Sense, note: str) -> Check:
     return Check(key, title, kind, sense, "not evaluated", note=note)
 
 
-def _from_findings(key: str, title: str, kind: Kind, sense, findings: list[Finding], note: str = "") -> Check:
+def _from_findings(key: str, title: str, kind: Kind, sense: _Sense, findings: list[Finding], note: str = "") -> Check:
     worst = min(findings, key=lambda f: f.margin)
     status: Status = "pass" if worst.passed else "fail"
     n_failed = sum(not f.passed for f in findings)
@@ -117,7 +121,7 @@ def _at_most(value: float, limit: float, location: Location) -> Finding:
 def tsai_wu(ev: Evidence, req: Requirements) -> Check:
     """The smallest ply Tsai-Wu safety factor at least ``min_safety_factor`` (the note says which
     compressive strength governs and the torque factor applied)."""
-    args = ("tsai_wu", "Tsai-Wu safety factor", "ratio", "at least")
+    args: _Args = ("tsai_wu", "Tsai-Wu safety factor", "ratio", "at least")
     if ev.safety_factor is None:
         return _not_evaluated(*args, ev.notes.get("tsai_wu", "no ply strength result"))
     finding = _at_least(ev.safety_factor, req.min_safety_factor, ev.safety_factor_location)
@@ -126,7 +130,7 @@ def tsai_wu(ev: Evidence, req: Requirements) -> Check:
 
 def buckling(ev: Evidence, req: Requirements) -> Check:
     """The torsional-buckling safety factor at least ``min_buckling_safety_factor``."""
-    args = ("buckling", "buckling safety factor", "ratio", "at least")
+    args: _Args = ("buckling", "buckling safety factor", "ratio", "at least")
     if ev.buckling_safety_factor is None:
         return _not_evaluated(*args, ev.notes.get("buckling", "no torsional buckling result"))
     finding = _at_least(ev.buckling_safety_factor, req.min_buckling_safety_factor, ev.buckling_location)
@@ -156,7 +160,7 @@ def whirl_onset_check(
     location : mapping, optional
         The unstable mode.
     """
-    args = ("whirl_onset", "whirl onset speed", "speed", "at least")
+    args: _Args = ("whirl_onset", "whirl onset speed", "speed", "at least")
     if max_speed is None:
         return _not_evaluated(*args, note or "no whirl stability result")
     required = (1.0 + min_margin) * operating_speed
@@ -174,7 +178,7 @@ def whirl_onset_check(
 
 def whirl_damping(ev: Evidence, req: Requirements) -> Check:
     """The log decrement of every lateral whirl mode at the operating speed at least the required one."""
-    args = ("whirl_damping", "whirl log decrement", "log_decrement", "at least")
+    args: _Args = ("whirl_damping", "whirl log decrement", "log_decrement", "at least")
     if not ev.modes_at_operating:
         return _not_evaluated(*args, ev.notes.get("whirl_damping", "no eigenvalues at the operating speed"))
     limit = req.required_log_decrement
@@ -189,7 +193,7 @@ def whirl_damping(ev: Evidence, req: Requirements) -> Check:
 
 def separation(ev: Evidence, req: Requirements) -> Check:
     """Every lateral critical speed separated from the operating speed by API 684's margin for its AF."""
-    args = ("separation", "critical-speed separation", "fraction", "at least")
+    args: _Args = ("separation", "critical-speed separation", "fraction", "at least")
     if req.separation == "off":
         return _not_evaluated(*args, 'separation = "off" in [requirements]')
     if ev.critical_speeds is None:
@@ -216,7 +220,7 @@ def separation(ev: Evidence, req: Requirements) -> Check:
 
 def _actuator_check(ev: Evidence, key: str) -> Check:
     orbit = key == "actuator_orbit"
-    args = (key, "actuator excursion" if orbit else "actuator force", "length" if orbit else "force", "at most")
+    args: _Args = (key, "actuator excursion" if orbit else "actuator force", "length" if orbit else "force", "at most")
     if not ev.actuators:
         return _not_evaluated(*args, ev.notes.get(key, "the design has no active bearings"))
     limit_field = "gap" if orbit else "force_capacity"
@@ -239,7 +243,7 @@ def _actuator_check(ev: Evidence, key: str) -> Check:
 
 def temperature(ev: Evidence, req: Requirements) -> Check:
     """The largest shaft temperature at most the matrix allowable; a thermal runaway fails."""
-    args = ("temperature", "shaft temperature", "temperature", "at most")
+    args: _Args = ("temperature", "shaft temperature", "temperature", "at most")
     if ev.max_temperature is None:
         return _not_evaluated(*args, ev.notes.get("temperature", "no shaft thermal result"))
     if ev.allowable_temperature is None:
@@ -261,7 +265,7 @@ def temperature(ev: Evidence, req: Requirements) -> Check:
 
 def spinup_deflection(ev: Evidence, req: Requirements) -> Check:
     """The largest shaft orbit during the spin-up at most ``max_spinup_deflection``."""
-    args = ("spinup_deflection", "spin-up shaft orbit", "length", "at most")
+    args: _Args = ("spinup_deflection", "spin-up shaft orbit", "length", "at most")
     if req.max_spinup_deflection is None:
         return _not_evaluated(*args, "no limit given ([requirements] max_spinup_deflection)")
     if ev.spinup_peak is None:
@@ -273,7 +277,7 @@ def metal_strength(ev: Evidence, req: Requirements) -> Check | None:
     """Listed only when the shaft has an isotropic segment (``ev.metal_strength`` not None)."""
     if ev.metal_strength is None:
         return None
-    args = ("metal_strength", "metal safety factor", "ratio", "at least")
+    args: _Args = ("metal_strength", "metal safety factor", "ratio", "at least")
     if not ev.metal_strength:
         return _not_evaluated(*args, ev.notes.get("metal_strength", "no isotropic segment gives its strengths"))
     findings = [
@@ -293,7 +297,7 @@ def coupling_angle(ev: Evidence, req: Requirements) -> Check | None:
     """Listed only when the design has couplings (``ev.coupling_angles`` not None)."""
     if ev.coupling_angles is None:
         return None
-    args = ("coupling_angle", "coupling misalignment", "angle", "at most")
+    args: _Args = ("coupling_angle", "coupling misalignment", "angle", "at most")
     findings, missing = [], []
     for c in ev.coupling_angles:
         if c.allowable_angle is None:
@@ -349,7 +353,7 @@ def actuator_force(ev: Evidence, req: Requirements) -> Check:
 def torsional_separation(ev: Evidence, req: Requirements) -> Check:
     """Every torsional natural frequency at least ``min_torsional_separation`` from every
     excitation frequency over the operating speed range (its nearest one per mode)."""
-    args = ("torsional_separation", "torsional separation", "fraction", "at least")
+    args: _Args = ("torsional_separation", "torsional separation", "fraction", "at least")
     if ev.torsional_modes is None:
         return _not_evaluated(*args, ev.notes.get("torsional_separation", "no torsional modes"))
     if not ev.torsional_modes:
@@ -381,7 +385,7 @@ def _loop_location(loop, frequency: float | None) -> dict:
 def loop_sensitivity(ev: Evidence, req: Requirements) -> Check | None:
     """The sensitivity peak |S|max of every magnetic-bearing loop at most ``max_sensitivity_peak``
     (ISO 14839-3's zone limits; listed only with active bearings)."""
-    args = ("loop_sensitivity", "loop sensitivity peak", "ratio", "at most")
+    args: _Args = ("loop_sensitivity", "loop sensitivity peak", "ratio", "at most")
     if ev.loops is None:
         return None
     if not ev.loops:
@@ -398,7 +402,7 @@ def loop_sensitivity(ev: Evidence, req: Requirements) -> Check | None:
 def loop_gain_margin(ev: Evidence, req: Requirements) -> Check | None:
     """The gain margin of every magnetic-bearing loop, for a gain rise and for a gain fall, at
     least ``min_gain_margin_db`` (a loop without a phase crossover of a kind has no such limit)."""
-    args = ("loop_gain_margin", "loop gain margin", "decibel", "at least")
+    args: _Args = ("loop_gain_margin", "loop gain margin", "decibel", "at least")
     if ev.loops is None:
         return None
     if not ev.loops:
@@ -417,7 +421,7 @@ def loop_gain_margin(ev: Evidence, req: Requirements) -> Check | None:
 def loop_phase_margin(ev: Evidence, req: Requirements) -> Check | None:
     """The smallest phase margin over the gain crossovers of every magnetic-bearing loop at least
     ``min_phase_margin_deg``."""
-    args = ("loop_phase_margin", "loop phase margin", "angle", "at least")
+    args: _Args = ("loop_phase_margin", "loop phase margin", "angle", "at least")
     if ev.loops is None:
         return None
     if not ev.loops:

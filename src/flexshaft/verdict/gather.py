@@ -10,6 +10,7 @@ Monte-Carlo exceedances use the same).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -172,6 +173,7 @@ def _buckling(p: PointAnalyses, notes: dict) -> dict:
         return _metal_buckling(p, notes)
     r = p.buckling.result
     positive = r.torque_positive <= r.torque_negative
+    n: int | str | None  # the wave number, or a word when there is none
     sense, n = ("positive", r.n_positive) if positive else ("negative", r.n_negative)
     n = "∞ (shear crimping)" if n is None else n
     critical = float(min(r.torque_positive, r.torque_negative))
@@ -190,6 +192,7 @@ def _whirl(p: PointAnalyses) -> dict:
     every-root check, whichever is lower."""
     st = p.stability
     out = {"stability_max_speed": float(st.speeds[-1]), "modes_at_operating": _modes_at_operating(p)}
+    location: dict[str, Any]
     onset, location = None, {}
     if st.onset_speed is not None:
         onset = float(st.onset_speed)
@@ -208,6 +211,7 @@ def _whirl(p: PointAnalyses) -> dict:
     first = roots.onset_speed
     if first is not None and (onset is None or first < onset):
         worst = roots.worst_at(first)
+        assert worst is not None  # first is the speed of an unstable root (RootStability.onset_speed)
         kind = "divergence (real root)" if worst.kind == "divergence" else "untracked root"
         solved = "" if worst.refined or worst.kind == "divergence" else " (first-order loss estimate)"
         n = sum(r.speed == first for r in roots.unstable)
@@ -267,7 +271,7 @@ def _temperature(p: PointAnalyses, notes: dict) -> dict:
         if sh is not None
         else f"{th.loss_model} loss model, constant properties"
     )
-    out = {
+    out: dict[str, Any] = {
         "max_temperature": float(temperature.temperature[i]),
         "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
         "thermal_runaway": sh is not None and sh.status == "runaway",

@@ -42,6 +42,7 @@ import dataclasses
 from collections.abc import Callable, Mapping
 from concurrent.futures import Executor
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -378,6 +379,7 @@ def _strength(design: Design, model: Model, parts, q_at_speed, conditions, detai
             notes.append("ply strength and laminated-shell buckling need a lamina shaft material; skipped")
         return None, None, None, None
     material = design.materials[design.shaft.material]
+    assert material.kind == "lamina"  # the model's shaft has a laminate only for a lamina material
     temperature = (
         conditions.material_temperature
         if conditions is not None
@@ -386,7 +388,7 @@ def _strength(design: Design, model: Model, parts, q_at_speed, conditions, detai
     residual = residual_ply_stresses(
         model.shaft.laminate, matrix_law_from(design.thermal, material), material.stress_free_temperature, temperature
     )
-    options = {"kinking": True, "temperature": temperature, "residual_stress": residual}
+    options: dict[str, Any] = {"kinking": True, "temperature": temperature, "residual_stress": residual}
     static = shaft_safety_factor(model, parts, **options)
     # the leave-one-out load shares are the report's; the minimum is the same without them
     totals = [
