@@ -16,6 +16,11 @@ with an independent reference.
   Jeffcott rotor with rotating hysteretic damping the forward root above ω_n solves
   m s² + c_e s + k (1 − iη) = 0 at every supercritical speed (σ = sgn(ω − Ω) = −1), so with
   η ω_n > c_e/m every analysed speed above ω_n is unstable and the onset is the first of them.
+* **The static loop gain of a bearing without integral action** (mutation loop-static-gain-sign).
+  A PD magnet on an open-loop-unstable rotor has L(0) < 0: a phase crossover at ω = 0 that sets
+  the lower gain margin 20 log10(1/|L(0)|). Reference: the rigid rotor on two bearings of
+  tests/test_loop_robustness.py, its plant written by hand (the other loop closed), with
+  L(0) = G(0) b₁ᵀ Z_o(0)⁻¹ b₁ and G(0) = k_i K_p.
 """
 
 from __future__ import annotations
@@ -25,9 +30,12 @@ import math
 import numpy as np
 import pytest
 from rotors import K_SHAFT, M_DISK, WN, jeffcott
+from test_loop_robustness import HALF_SPAN, KI, KS, PID, rotor_text
 
+from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.root_stability import root_stability
-from flexshaft.design import tuned_design, with_overrides
+from flexshaft.assembly import build_model
+from flexshaft.design import loads_design, tuned_design, with_overrides
 from flexshaft.laminate import hoop_strain_free, ply_stresses
 from flexshaft.resolution import SCREENING
 from flexshaft.strength import compressive_strength
@@ -86,3 +94,21 @@ def test_the_whirl_onset_is_the_lowest_unstable_speed_of_the_jeffcott_rotor():
     assert sorted({r.speed for r in result.unstable}) == pytest.approx(list(speeds[1:]))
     assert all(r.root == pytest.approx(unstable, rel=1e-4) for r in result.unstable)
     assert result.onset_speed == pytest.approx(1.2 * WN)
+
+
+def test_the_lower_gain_margin_of_a_pd_magnet_is_its_static_loop_gain():
+    """Rigid rotor (E = 2.1e15) on two PD magnets (no integrator: the model gives L(0)). At ω = 0
+    the plant of bearing 1 with bearing 2 closed is Z_o(0) = −k_s b₁b₁ᵀ + (k_i K_p − k_s) b₂b₂ᵀ
+    (b_j = (1, x_j), the rigid body's stiffness only), so L(0) = k_i K_p b₁ᵀ Z_o(0)⁻¹ b₁ < 0 and
+    the lower gain margin is 20 log10(1/|L(0)|). The FE rotor's flexibility and the hangers'
+    compliance enter at ~1e-6 (tests/test_loop_robustness.py): rel 1e-5 asserted."""
+    pd = {k: v for k, v in PID.items() if k != "integral_gain"}
+    model = build_model(loads_design(rotor_text(2.1e15, pd)))
+    b1, b2 = np.array([1.0, -HALF_SPAN]), np.array([1.0, HALF_SPAN])
+    static = KI * pd["kp"]
+    Zo = -KS * np.outer(b1, b1) + (static - KS) * np.outer(b2, b2)
+    L0 = static * (b1 @ np.linalg.solve(Zo, b1))
+    assert L0 < -1.0  # an unstable magnet held by the loop: a lower margin, in dB below 0
+    for loop in bearing_loops(model, frequency_range=(0.5, 2000.0), n_points=300):
+        assert loop.margins.phase_crossovers[0] == 0.0
+        assert loop.margins.gain_margin_lower_db == pytest.approx(20 * np.log10(1 / abs(L0)), rel=1e-5)
