@@ -24,7 +24,7 @@ mutation text; ``--json`` and ``--markdown`` write it to files.
 
 Usage (from the repository root, with the project's venv)::
 
-    .venv/bin/python scripts/mutation.py                      # every mutation (~15 min, 1 core)
+    .venv/bin/python scripts/mutation.py                      # every mutation (~10 min, 1 core)
     .venv/bin/python scripts/mutation.py --list               # the mutations and their tests
     .venv/bin/python scripts/mutation.py --only verdict-zero-margin-fails thermal-h-radius
     .venv/bin/python scripts/mutation.py --module thermal.shaft --timeout 120
@@ -177,16 +177,23 @@ def mutate(text: str, m: Mutation) -> str:
 
 
 def check(mutations: list[Mutation]) -> None:
-    """Every mutation applies to the current source and compiles."""
+    """Every mutation applies to the current source and compiles; refuses with every stale
+    mutation listed (not only the first), so that one pass after a refactor finds them all."""
+    problems = []
     for m in mutations:
         source = PACKAGE / m.path
         if not source.is_file():
-            raise SystemExit(f"{m.id}: module file {source} does not exist (update [modules] in mutations.toml)")
-        mutated = mutate(source.read_text(encoding="utf-8"), m)
+            problems.append(f"{m.id}: module file {source} does not exist (update [modules] in mutations.toml)")
+            continue
         try:
+            mutated = mutate(source.read_text(encoding="utf-8"), m)
             compile(mutated, str(source), "exec")
+        except ValueError as error:
+            problems.append(str(error))
         except SyntaxError as error:
-            raise SystemExit(f"{m.id}: the mutated module does not compile: {error}") from None
+            problems.append(f"{m.id}: the mutated module does not compile: {error}")
+    if problems:
+        raise SystemExit(f"{len(problems)} of {len(mutations)} mutations do not apply:\n" + "\n".join(problems))
 
 
 # ------------------------------------------------------------------------------------------------
