@@ -31,7 +31,7 @@ import scipy.linalg as la
 import flexshaft
 from flexshaft.analyses.campbell import campbell, track_modes
 from flexshaft.analyses.eigen import reduce
-from flexshaft.analyses.eigen_error import EIGENVALUE_TOLERANCE, tracked_errors
+from flexshaft.analyses.eigen_error import EIGENVALUE_TOLERANCE, accurate_basis, accurate_reduction, tracked_errors
 from flexshaft.analyses.loss import eigen_coefficients
 from flexshaft.analyses.stability import stability
 from flexshaft.assembly.sparse import restrict
@@ -206,7 +206,9 @@ def test_error_estimate_with_loss_and_magnetic_bearings(tuned, basis_size, enric
 
 def test_stability_reaches_the_stated_accuracy_with_loss_and_magnetic_bearings(tuned):
     result = stability(tuned, TUNED_SPEEDS, n_modes=12)
-    red = reduce(tuned, *_basis_of(result))
+    size, enrich = accurate_basis(12)
+    red = accurate_reduction(tuned, size, enrich)  # the first basis tried: it reached 1e-6
+    assert red.size == result.basis_size
     tracked = track_modes(tuned, red, TUNED_SPEEDS, 12)
     np.testing.assert_array_equal(tracked.eigenvalues, result.eigenvalues)  # the basis reported
     true = _tuned_true_errors(tuned, red, tracked)
@@ -215,18 +217,22 @@ def test_stability_reaches_the_stated_accuracy_with_loss_and_magnetic_bearings(t
     assert result.tolerance == EIGENVALUE_TOLERANCE
 
 
-def _basis_of(result):
-    """(basis size, enriched modes) of the first basis :func:`accurate_basis` tries, checked
-    against the size the result reports."""
-    from flexshaft.analyses.eigen_error import accurate_basis
-
-    size, enrich = accurate_basis(result.eigenvalues.shape[1])
-    assert reduce(flexshaft.build_model(embedded_design("tuned")), size, enrich=enrich).size == result.basis_size
-    return size, "auto", enrich
-
-
 def test_tolerance_is_checked():
     model = flexshaft.build_model(loads_design(SHAFT))
     for bad in (0.0, 1.0, -1e-6, float("nan"), "1e-6", True):
         with pytest.raises(ValueError, match="tolerance"):
             campbell(model, [0.0, 10.0], n_modes=2, tolerance=bad)
+
+
+def test_no_estimate_for_a_reduced_model_changed_after_the_projection(shaft):
+    """A caller that adds to a reduced matrix (the gain map adds K_d B̃ᵀB̃ to C̃) has a problem
+    the full operators do not describe: the estimate is NaN, not a number for another problem."""
+    import dataclasses
+
+    model, _ = shaft
+    red = reduce(model, 20)
+    changed = dataclasses.replace(red, C=red.C + 10.0 * np.eye(red.size))
+    tracked = track_modes(model, changed, SHAFT_SPEEDS[:2], 4)
+    assert np.all(np.isnan(tracked_errors(changed, SHAFT_SPEEDS[:2], tracked.eigenvalues, tracked.states)))
+    tracked = track_modes(model, red, SHAFT_SPEEDS[:2], 4)
+    assert np.all(np.isfinite(tracked_errors(red, SHAFT_SPEEDS[:2], tracked.eigenvalues, tracked.states)))

@@ -142,7 +142,10 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
     K = restrict((model.K + model.Kp).tocsr(), free).tocsc()
     try:
         if sparse:
-            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM")
+            # a fixed start vector: ARPACK's own is random, which made two bases of one model
+            # differ at round-off (1e-10 in ω²), so results were not reproducible bit for bit
+            start = np.random.default_rng(0).standard_normal(n)
+            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM", v0=start)
         else:
             dense_M = M.toarray()
             mu, Phi = la.eigh(dense_M, K.toarray() + _BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])
