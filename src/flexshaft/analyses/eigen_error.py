@@ -126,7 +126,7 @@ def eigenvalue_corrections(
         T, dTY[:, k] = model.newton_terms(complex(sk), speed, w, Y[:, k])
         Ts[k] = T if extra is None else T + extra
     Z = _left_vectors(Ts, Y)
-    den = np.einsum("ij,ij->j", Z, dTY)
+    den = (Z * dTY).sum(axis=0)
     products = _products(red)
     if not products.consistent:
         return np.full(s.size, np.nan + 0j)
@@ -143,7 +143,7 @@ def eigenvalue_corrections(
     Tu = _apply(products.stacked, coefficients[keep], u)
     for rows_out, rows_in, gain in gains:
         Tu += rows_out.T @ ((rows_in @ u) * gain)
-    numerator = 2 * np.einsum("ij,ij->j", r_left, u) - np.einsum("ij,ij->j", v, Tu)
+    numerator = 2 * (r_left * u).sum(axis=0) - (v * Tu).sum(axis=0)
     with np.errstate(divide="ignore", invalid="ignore"):
         return numerator / den
 
@@ -383,7 +383,10 @@ def _apply(stacked, coefficients: np.ndarray, X: np.ndarray) -> np.ndarray:
     without the actuator channels)."""
     n = X.shape[0]
     products = _real_times(stacked, X).reshape(coefficients.shape[0], n, X.shape[1])
-    return np.einsum("kij,kj->ij", products, coefficients)
+    out = products[0] * coefficients[0]
+    for k in range(1, coefficients.shape[0]):
+        out += products[k] * coefficients[k]
+    return out
 
 
 def _actuator_gains(red: ReducedModel, s: np.ndarray) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
