@@ -260,3 +260,16 @@ def test_no_estimate_for_a_reduced_model_changed_after_the_projection(shaft):
     assert np.all(np.isnan(tracked_errors(changed, SHAFT_SPEEDS[:2], tracked.eigenvalues, tracked.states)))
     tracked = track_modes(model, red, SHAFT_SPEEDS[:2], 4)
     assert np.all(np.isfinite(tracked_errors(red, SHAFT_SPEEDS[:2], tracked.eigenvalues, tracked.states)))
+
+
+def test_basis_grows_while_the_estimate_exceeds_the_tolerance(shaft):
+    """A tolerance below what any basis reaches (1e-20: far under the round-off of the
+    estimate itself) makes the basis double until its cap, 4·max(4n, 40) vectors; the result
+    reports the basis used and the accuracy reached, not the tolerance asked for."""
+    model, reference = shaft
+    first = campbell(model, SHAFT_SPEEDS[:3], n_modes=4)
+    tight = campbell(model, SHAFT_SPEEDS[:3], n_modes=4, tolerance=1e-20)
+    assert tight.basis_size > first.basis_size
+    assert tight.basis_size <= 2 * 4 * max(4 * 4, 40)  # the last doubling may pass the cap once
+    assert tight.tolerance == 1e-20
+    assert np.max(_true_errors(tight.eigenvalues, reference[:3])) <= EIGENVALUE_TOLERANCE

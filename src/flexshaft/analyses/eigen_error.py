@@ -196,8 +196,9 @@ def tracked_to_accuracy(
     the full eigenproblem is estimated a posteriori (:mod:`flexshaft.analyses.eigen_error`).
     With ``reduced`` or ``basis_size`` given that basis is used as it is (the plain modal basis
     of ``basis_size`` modes) and the estimate only reported. Otherwise the enriched basis of
-    :func:`accurate_basis` is tried first and doubled, up to four times the plain default or
-    the whole model, while the largest estimate exceeds ``tolerance``; the result reports what
+    :func:`accurate_basis` is tried first and doubled while the largest estimate exceeds
+    ``tolerance``, until the basis (corrections included) holds four times the plain default
+    4·max(4n, 40) vectors or the whole model; the result reports what
     was reached (the estimate, not a promise). ``transform`` is applied to each reduced model
     (e.g. :meth:`~flexshaft.analyses.eigen.ReducedModel.undamped`), ``viscous(speed)`` gives the
     viscous method's weights for the estimate.
@@ -225,7 +226,7 @@ def tracked_to_accuracy(
         whole = size >= n_free
         out = run(accurate_reduction(model, min(size, n_free), 0 if whole else enrich))
         worst = float(np.nanmax(out[2], initial=0.0))
-        if whole or worst <= tolerance or 2 * size > largest:
+        if whole or worst <= tolerance or 2 * size > largest or out[0].size >= largest:
             return out
         size, enrich = 2 * size, 2 * enrich
 

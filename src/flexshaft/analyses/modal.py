@@ -329,7 +329,8 @@ def modes(
             red, s, Z, errors = _solve(
                 accurate_reduction(model, min(size, n_free), 0 if whole else enrich), speed, n_modes, damped
             )
-            if whole or not float(np.nanmax(errors, initial=0.0)) > tolerance or 2 * size > largest:
+            worst = float(np.nanmax(errors, initial=0.0))
+            if whole or not worst > tolerance or 2 * size > largest or red.size >= largest:
                 break
             size, enrich = 2 * size, 2 * enrich
     full = model.dofs.expand(red.shapes(Z))
