@@ -60,7 +60,7 @@ sys.path.insert(0, HERE)
 
 import bench_util as bu  # noqa: E402
 import shaft_case as case  # noqa: E402
-from ross_tables import _lookup, _versions, header_lines, headline, speedups, tables, update_readme  # noqa: E402
+from ross_tables import header_lines, headline, lookup, speedups, tables, update_readme, versions_of  # noqa: E402
 
 CASES = ("unbalance", "frf", "campbell")
 DEFAULT_ROSS_PYTHONS = ("/work/ross-2.3-venv/bin/python", "/work/ross-latest-venv/bin/python")
@@ -277,8 +277,8 @@ def ross_reuse_note(reuse: dict) -> dict:
 
 def report(data: dict) -> tuple[bool, bool]:
     """The text report; returns (all agree, all bars met)."""
-    fx, rs = _lookup(data)
-    versions = _versions(data)
+    fx, rs = lookup(data)
+    versions = versions_of(data)
     print()
     print(header_lines(data))
     print()

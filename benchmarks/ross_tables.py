@@ -16,7 +16,7 @@ MARK = "<!-- compare_ross.py --table: {} begin (generated, do not edit) -->"
 MARK_END = "<!-- compare_ross.py --table: {} end -->"
 
 
-def _versions(data: dict) -> list[str]:
+def versions_of(data: dict) -> list[str]:
     seen = []
     for r in data["ross_runs"]:
         if r["version"] not in seen:
@@ -24,7 +24,7 @@ def _versions(data: dict) -> list[str]:
     return sorted(seen, key=lambda v: [int(x) for x in re.findall(r"\d+", v)])
 
 
-def _lookup(data: dict):
+def lookup(data: dict):
     fx = {(r["case"], r["n_el"]): r for r in data["flexshaft_runs"]}
     rs = {(r["version"], r["case"], r["n_el"]): r for r in data["ross_runs"]}
     return fx, rs
@@ -77,13 +77,21 @@ def header_lines(data: dict) -> str:
     ]
     if "ross_reused" in data:
         old = data["ross_reused"]
+        # how long each side waited for a core: median warm wall / CPU time of its runs
+        waits = {
+            code: _median([r["warm"]["median"] / r["warm"]["cpu"]["median"] for r in data[key]])
+            for code, key in (("flexshaft", "flexshaft_runs"), ("ROSS", "ross_runs"))
+        }
+        lean = "flexshaft" if waits["ROSS"] > waits["flexshaft"] else "ROSS"
         lines.append(
-            f"The ROSS timings are reused from the run of {old['date'][:16]} (`--reuse-ross`; ROSS takes "
-            f"most of the hour), when the 1-min load average was {old['load_average_at_start']} to "
-            f"{old['load_average_at_end']}: on a busier machine, so the wall-time ratios favour flexshaft; "
+            f"The ROSS timings are reused from the run of {old['date'][:16]} (git {old.get('git_commit')}; "
+            f"`--reuse-ross`: ROSS takes most of the hour), when the 1-min load average was "
+            f"{old['load_average_at_start']} to {old['load_average_at_end']}; flexshaft was re-timed on this "
+            f"commit. Wall time over CPU time (median over the runs; 1 on an idle core): flexshaft "
+            f"{waits['flexshaft']:.1f}, ROSS {waits['ROSS']:.1f}, so the wall-time ratios favour {lean}; "
             "the CPU-time ratios in brackets are the fairer figure."
         )
-    for v in _versions(data):
+    for v in versions_of(data):
         r = next(r for r in data["ross_runs"] if r["version"] == v)
         lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, scipy {r['scipy']}.")
     lines.append(
@@ -102,8 +110,8 @@ def _ratio(x: float) -> str:
 
 def tables(data: dict, elements=None) -> str:
     """Markdown: the header lines, then warm, cold and memory/agreement tables."""
-    fx, rs = _lookup(data)
-    versions = _versions(data)
+    fx, rs = lookup(data)
+    versions = versions_of(data)
     keys = [k for k in fx if elements is None or k[1] in elements]
     out = [header_lines(data), ""]
 
@@ -179,9 +187,9 @@ def _median(xs):
 
 def headline(data: dict) -> str:
     """The short table for the top-level README: warm and cold speed-ups on the largest mesh."""
-    fx, rs = _lookup(data)
+    fx, rs = lookup(data)
     largest = max(n for _, n in fx)
-    versions = _versions(data)
+    versions = versions_of(data)
     out = [
         header_lines(data),
         "",
