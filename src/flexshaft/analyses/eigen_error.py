@@ -374,7 +374,7 @@ def _projects(red: ReducedModel, ops: FullOperators) -> bool:
     return True
 
 
-@functools.lru_cache(maxsize=8)  # one sweep's reduced model (keyed by identity)
+@functools.lru_cache(maxsize=2)  # one sweep's reduced model (keyed by identity; as large as the model)
 def _products(red: ReducedModel) -> _Products:
     return _Products(red)
 

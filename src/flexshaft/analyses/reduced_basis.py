@@ -32,6 +32,7 @@ modal truncation augmentation methods for modal response analysis. Computers & S
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,15 +54,8 @@ _INDEPENDENT = 1e-10
 
 
 @dataclass(frozen=True, eq=False)
-class FullOperators:
-    """The unreduced matrices on the free DOFs (sparse), as the reduced model projects them.
-
-    ``K`` holds the actuators' basis stiffness K_a (:attr:`~flexshaft.assembly.model.Model.Kp`)
-    and ``D`` the dampers with the laws' derivative part (``C + K_d``), as Λ and C̃ of the
-    reduced model do; ``shift`` σ [rad²/s²] and the sparse LU of ``K_σ = K + σM`` (positive
-    definite, :func:`~flexshaft.analyses.eigen.modal_basis`) give the static flexibility.
-    ``damped`` is False for :meth:`~flexshaft.analyses.eigen.ReducedModel.undamped` (no D).
-    """
+class _Matrices:
+    """The free-DOF matrices of one model and the LU of ``K_σ``."""
 
     M: sp.csr_matrix
     G: sp.csr_matrix
@@ -70,27 +64,11 @@ class FullOperators:
     F: sp.csr_matrix
     L: sp.csr_matrix
     S: sp.csr_matrix
-    shift: float
     factor: spla.SuperLU
-    damped: bool = True
-
-    @property
-    def size(self) -> int:
-        """Number of free DOFs n."""
-        return int(self.M.shape[0])
-
-    def flexibility(self, b: np.ndarray) -> np.ndarray:
-        """``K_σ⁻¹ b`` for real or complex columns ``b`` (n, p)."""
-        b = np.asarray(b)
-        if np.iscomplexobj(b):
-            parts = self.factor.solve(np.ascontiguousarray(np.hstack([b.real, b.imag])))
-            p = b.shape[1]
-            return parts[:, :p] + 1j * parts[:, p:]
-        return self.factor.solve(np.ascontiguousarray(b))
 
 
-def full_operators(model: Model, shift: float) -> FullOperators:
-    """The free-DOF matrices of ``model`` and the LU of ``K + K_a + shift·M``."""
+@functools.lru_cache(maxsize=2)  # one sweep's model (and one more): a factor is as large as the model
+def _matrices(model: Model, shift: float) -> _Matrices:
     free = model.dofs.free
 
     def on_free(A: sp.csr_matrix) -> sp.csr_matrix:
@@ -98,8 +76,7 @@ def full_operators(model: Model, shift: float) -> FullOperators:
 
     M = on_free(model.M)
     K = on_free(model.K + model.Kp)
-    factor = spla.splu((K + shift * M).tocsc())
-    return FullOperators(
+    return _Matrices(
         M=M,
         G=on_free(model.G),
         D=on_free(model.C + model.Kd),
@@ -107,9 +84,81 @@ def full_operators(model: Model, shift: float) -> FullOperators:
         F=on_free(model.loss_fixed),
         L=on_free(model.loss_lateral),
         S=on_free(model.loss_circulatory),
-        shift=float(shift),
-        factor=factor,
+        factor=spla.splu((K + shift * M).tocsc()),
     )
+
+
+@dataclass(frozen=True, eq=False)
+class FullOperators:
+    """The unreduced matrices on the free DOFs (sparse), as the reduced model projects them.
+
+    ``K`` holds the actuators' basis stiffness K_a (:attr:`~flexshaft.assembly.model.Model.Kp`)
+    and ``D`` the dampers with the laws' derivative part (``C + K_d``), as Λ and C̃ of the
+    reduced model do; ``shift`` σ [rad²/s²] and the sparse LU of ``K_σ = K + σM`` (positive
+    definite, :func:`~flexshaft.analyses.eigen.modal_basis`) give the static flexibility.
+    ``damped`` is False for :meth:`~flexshaft.analyses.eigen.ReducedModel.undamped` (no D).
+
+    A handle on the model: the matrices and the factor are built when first used and kept for
+    the last two models only, so the reduced models a cache holds do not hold them (a factor
+    costs as much memory as the model).
+    """
+
+    model: Model
+    shift: float
+    damped: bool = True
+
+    @property
+    def _m(self) -> _Matrices:
+        return _matrices(self.model, self.shift)
+
+    @property
+    def M(self) -> sp.csr_matrix:
+        return self._m.M
+
+    @property
+    def G(self) -> sp.csr_matrix:
+        return self._m.G
+
+    @property
+    def D(self) -> sp.csr_matrix:
+        return self._m.D
+
+    @property
+    def K(self) -> sp.csr_matrix:
+        return self._m.K
+
+    @property
+    def F(self) -> sp.csr_matrix:
+        return self._m.F
+
+    @property
+    def L(self) -> sp.csr_matrix:
+        return self._m.L
+
+    @property
+    def S(self) -> sp.csr_matrix:
+        return self._m.S
+
+    @property
+    def size(self) -> int:
+        """Number of free DOFs n."""
+        return int(self.model.dofs.free.size)
+
+    def flexibility(self, b: np.ndarray) -> np.ndarray:
+        """``K_σ⁻¹ b`` for real or complex columns ``b`` (n, p)."""
+        factor = self._m.factor
+        b = np.asarray(b)
+        if np.iscomplexobj(b):
+            parts = factor.solve(np.ascontiguousarray(np.hstack([b.real, b.imag])))
+            p = b.shape[1]
+            return parts[:, :p] + 1j * parts[:, p:]
+        return factor.solve(np.ascontiguousarray(b))
+
+
+def full_operators(model: Model, shift: float) -> FullOperators:
+    """The full operators of ``model`` with the shift σ = ``shift`` [rad²/s²] (a handle: the
+    matrices are built on first use)."""
+    return FullOperators(model, float(shift))
 
 
 def enrich_basis(
