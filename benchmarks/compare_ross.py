@@ -51,7 +51,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 
@@ -61,6 +60,7 @@ sys.path.insert(0, HERE)
 
 import bench_util as bu  # noqa: E402
 import shaft_case as case  # noqa: E402
+from ross_tables import header_lines, headline, lookup, speedups, tables, update_readme, versions_of  # noqa: E402
 
 CASES = ("unbalance", "frf", "campbell")
 DEFAULT_ROSS_PYTHONS = ("/work/ross-2.3-venv/bin/python", "/work/ross-latest-venv/bin/python")
@@ -75,10 +75,6 @@ repository; ROSS 3.x needs Python >= 3.12, 3.1 needs >= 3.13):
     python3.13 -m venv /work/ross-latest-venv
     /work/ross-latest-venv/bin/pip install ross-rotordynamics
 or pass --ross-python / set ROSS_PYTHON to interpreters that have ross-rotordynamics."""
-
-README_FILES = {"full": os.path.join(HERE, "README.md"), "headline": os.path.join(ROOT, "README.md")}
-MARK = "<!-- compare_ross.py --table: {} begin (generated, do not edit) -->"
-MARK_END = "<!-- compare_ross.py --table: {} end -->"
 
 
 # -------------------------------------------------------------------------------------------------
@@ -181,11 +177,33 @@ def compare(case_name: str, fxr: dict, rsr: dict) -> dict:
         for r_row, f_row in zip(rf, ff):
             for r in r_row:
                 worst = max(worst, float(np.min(np.abs(f_row - r)) / r))
-    extra = {}
+    extra = _accuracy(ff, rf, fxr)
     if "lateral" in rsr:
         extra["ross_non_lateral_modes"] = int(np.sum(~np.asarray(rsr["lateral"], dtype=bool)))
     extra.update(_whirl_agreement(fxr, rsr))
     return {"max_rel": worst, "label": label, **extra}
+
+
+def _accuracy(ff, rf, fxr) -> dict:
+    """Each code's Campbell frequencies against the full (unreduced) dense eigensolution
+    (``flexshaft_side.campbell_reference``, untimed): max |f − f_full| / f_full over the
+    reference speeds and the lowest lateral modes; with flexshaft's own error estimate."""
+    import numpy as np
+
+    ref = fxr.get("reference")
+    if not ref:
+        return {}
+    idx = np.asarray(ref["speed_index"])
+    full = np.asarray(ref["wd_hz"], dtype=float)
+    out = {}
+    for code, f in (("flexshaft", ff), ("ross", rf)):
+        if f.shape[1] >= full.shape[1]:
+            out[f"{code}_accuracy"] = float(np.max(np.abs(f[idx, : full.shape[1]] - full) / full))
+    if "error_estimate_max" in fxr:
+        out["flexshaft_estimate"] = fxr["error_estimate_max"]
+        out["flexshaft_basis"] = fxr.get("basis_size")
+        out["flexshaft_tolerance"] = fxr.get("tolerance")
+    return out
 
 
 def _whirl_agreement(fxr, rsr) -> dict:
@@ -257,24 +275,10 @@ def ross_reuse_note(reuse: dict) -> dict:
     }
 
 
-def _versions(data: dict) -> list[str]:
-    seen = []
-    for r in data["ross_runs"]:
-        if r["version"] not in seen:
-            seen.append(r["version"])
-    return sorted(seen, key=lambda v: [int(x) for x in re.findall(r"\d+", v)])
-
-
-def _lookup(data: dict):
-    fx = {(r["case"], r["n_el"]): r for r in data["flexshaft_runs"]}
-    rs = {(r["version"], r["case"], r["n_el"]): r for r in data["ross_runs"]}
-    return fx, rs
-
-
 def report(data: dict) -> tuple[bool, bool]:
     """The text report; returns (all agree, all bars met)."""
-    fx, rs = _lookup(data)
-    versions = _versions(data)
+    fx, rs = lookup(data)
+    versions = versions_of(data)
     print()
     print(header_lines(data))
     print()
@@ -303,6 +307,12 @@ def report(data: dict) -> tuple[bool, bool]:
                 notes.append(f"complex/peak {c['complex_rel_peak']:.1e}")
             if "whirl_mismatch" in c:
                 notes.append(f"whirl mismatch {c['whirl_mismatch']}")
+            if "flexshaft_accuracy" in c:
+                notes.append(
+                    f"vs full: flexshaft {c['flexshaft_accuracy']:.1e} "
+                    f"(estimate {c.get('flexshaft_estimate', float('nan')):.1e}), "
+                    f"ROSS {c.get('ross_accuracy', float('nan')):.1e}"
+                )
             if c.get("ross_non_lateral_modes"):
                 notes.append(f"ROSS non-lateral modes {c['ross_non_lateral_modes']}")
             sp = speedups(f, r)
@@ -344,171 +354,6 @@ def report(data: dict) -> tuple[bool, bool]:
         f"(largest over cases; bar {MEMORY_BAR_MB:.0f} MB)"
     )
     return ok_agree, ok_bars
-
-
-def speedups(f: dict, r: dict) -> dict:
-    return {
-        "warm": r["warm"]["median"] / f["warm"]["median"],
-        "cpu": r["warm"]["cpu"]["median"] / f["warm"]["cpu"]["median"],
-        "cold": r["cold_s"] / f["cold_s"],
-    }
-
-
-# -------------------------------------------------------------------------------------------------
-# README tables
-
-
-def header_lines(data: dict) -> str:
-    m = data["machine"]
-    fx0 = data["flexshaft_runs"][0]
-    threads = m["blas_threads_env"]
-    one = all(v == "1" for v in threads.values())
-    lines = [
-        f"Measured {m['date'][:10]} on {m['cpu']}, {m['cores']} cores, {m['memory_gb']:.0f} GB "
-        f"(a machine shared with other jobs; 1-min load average "
-        f"{m.get('load_average_at_start', ['?'])[0]} at the start of the run, "
-        f"{m['load_average_1_5_15'][0]} at its end), "
-        + (
-            "one BLAS thread (OPENBLAS/OMP/MKL/NUMBA_NUM_THREADS=1) for both codes."
-            if one
-            else f"BLAS threads {threads}."
-        ),
-        f"flexshaft {fx0['version']} (git {m['git_commit']}), Python {m['python']}, "
-        f"numpy {fx0['numpy']}, scipy {fx0['scipy']}.",
-    ]
-    if "ross_reused" in data:
-        old = data["ross_reused"]
-        lines.append(
-            f"The ROSS timings are reused from the run of {old['date'][:16]} (`--reuse-ross`; ROSS takes "
-            f"most of the hour), when the 1-min load average was {old['load_average_at_start']} to "
-            f"{old['load_average_at_end']}: on a busier machine, so the wall-time ratios favour flexshaft; "
-            "the CPU-time ratios in brackets are the fairer figure."
-        )
-    for v in _versions(data):
-        r = next(r for r in data["ross_runs"] if r["version"] == v)
-        lines.append(f"ROSS {v} (ross-rotordynamics), Python {r['python']}, numpy {r['numpy']}, scipy {r['scipy']}.")
-    lines.append(
-        f"Warm: median (min–max) of {data['repeats']} calls, each on a freshly built model, "
-        "after a first call in the same process. Cold: the first call in a fresh process "
-        "(package imported, model built, not timed). Speed-ups are ratios of wall-time "
-        "medians; in brackets, of process CPU-time medians, the steadier figure when "
-        "other jobs load the machine (wall time then includes waiting for a core)."
-    )
-    return "\n".join("* " + line for line in lines)
-
-
-def _ratio(x: float) -> str:
-    return f"{x:.0f}×" if x >= 10 else f"{x:.1f}×"
-
-
-def tables(data: dict, elements=None) -> str:
-    """Markdown: the header lines, then warm, cold and memory/agreement tables."""
-    fx, rs = _lookup(data)
-    versions = _versions(data)
-    keys = [k for k in fx if elements is None or k[1] in elements]
-    out = [header_lines(data), ""]
-
-    def row_head(cols):
-        return "| case | n_el | " + " | ".join(cols) + " |\n|---|---:|" + "---:|" * len(cols)
-
-    for title, get_fx, get_r, key in (
-        ("Warm [s]", lambda f: bu.fmt_stats(f["warm"], 3), lambda r: bu.fmt_stats(r["warm"], 2), "warm"),
-        ("Cold [s]", lambda f: f"{f['cold_s']:.3f}", lambda r: f"{r['cold_s']:.2f}", "cold"),
-    ):
-        cols = ["flexshaft"]
-        for v in versions:
-            cols += [f"ROSS {v}", "speed-up" + (" (CPU)" if key == "warm" else "")]
-        out += [f"**{title}**", "", row_head(cols)]
-        for k in keys:
-            f = fx[k]
-            cells = [get_fx(f)]
-            for v in versions:
-                r = rs.get((v, *k))
-                if r is None:
-                    cells += ["–", "–"]
-                    continue
-                s = speedups(f, r)
-                cells += [
-                    get_r(r),
-                    _ratio(s["warm"]) + f" ({_ratio(s['cpu'])})" if key == "warm" else _ratio(s["cold"]),
-                ]
-            out.append(f"| {k[0]} | {k[1]} | " + " | ".join(cells) + " |")
-        out.append("")
-    cols = ["flexshaft peak MB"] + [f"ROSS {v} peak MB" for v in versions] + [f"max rel. diff vs {v}" for v in versions]
-    out += ["**Peak memory (whole process, ru_maxrss) and agreement**", "", row_head(cols)]
-    for k in keys:
-        f = fx[k]
-        cells = [f"{f['peak_rss_mb']:.0f}"]
-        rr = [rs.get((v, *k)) for v in versions]
-        cells += [f"{r['peak_rss_mb']:.0f}" if r else "–" for r in rr]
-        cells += [f"{r['comparison']['max_rel']:.1e}" if r else "–" for r in rr]
-        out.append(f"| {k[0]} | {k[1]} | " + " | ".join(cells) + " |")
-    imports = [f"flexshaft {_median([f['import_s'] for f in fx.values()]):.1f} s"]
-    for v in versions:
-        imports.append(f"ROSS {v} {_median([r['import_s'] for r in data['ross_runs'] if r['version'] == v]):.1f} s")
-    out += ["", "Import time (median over the worker processes, not in the cold times): " + ", ".join(imports) + "."]
-    return "\n".join(out)
-
-
-def _median(xs):
-    xs = sorted(xs)
-    n = len(xs)
-    return (xs[n // 2] + xs[(n - 1) // 2]) / 2
-
-
-def headline(data: dict) -> str:
-    """The short table for the top-level README: warm and cold speed-ups on the largest mesh."""
-    fx, rs = _lookup(data)
-    largest = max(n for _, n in fx)
-    versions = _versions(data)
-    out = [
-        header_lines(data),
-        "",
-        "| case ("
-        + str(largest)
-        + " elements) | flexshaft warm [s] | "
-        + " | ".join(f"ROSS {v} warm [s] | speed-up warm (CPU) / cold" for v in versions)
-        + " |",
-        "|---|---:|" + "---:|---:|" * len(versions),
-    ]
-    for name in CASES:
-        f = fx.get((name, largest))
-        if f is None:
-            continue
-        cells = [f"{f['warm']['median']:.3f}"]
-        for v in versions:
-            r = rs.get((v, name, largest))
-            if r is None:
-                cells += ["–", "–"]
-                continue
-            s = speedups(f, r)
-            cells += [f"{r['warm']['median']:.1f}", f"{_ratio(s['warm'])} ({_ratio(s['cpu'])}) / {_ratio(s['cold'])}"]
-        out.append(f"| {name} | " + " | ".join(cells) + " |")
-    peak_fx = max(f["peak_rss_mb"] for f in fx.values())
-    peaks = [
-        f"ROSS {v} {max(r['peak_rss_mb'] for r in data['ross_runs'] if r['version'] == v):.0f} MB" for v in versions
-    ]
-    out += [
-        "",
-        f"Peak memory (whole process, largest case): flexshaft {peak_fx:.0f} MB"
-        + ("".join(f", {p}" for p in peaks))
-        + ".",
-    ]
-    return "\n".join(out)
-
-
-def update_readme(kind: str, text: str) -> None:
-    path = README_FILES[kind]
-    with open(path) as f:
-        doc = f.read()
-    begin, end = MARK.format(kind), MARK_END.format(kind)
-    if begin not in doc or end not in doc:
-        raise SystemExit(f"{path}: markers for the {kind!r} table not found ({begin!r})")
-    head, rest = doc.split(begin, 1)
-    _, tail = rest.split(end, 1)
-    with open(path, "w") as f:
-        f.write(f"{head}{begin}\n{text}\n{end}{tail}")
-    print(f"updated {path}")
 
 
 # -------------------------------------------------------------------------------------------------

@@ -8,7 +8,7 @@ actively controlled magnetic bearings (Ocalan 2002). Typical use:
 >>> model = fs.build_model(design)
 >>> m = fs.modes(model, speed=design.operating.speed_rad_s)
 >>> m                                        # m.frequencies [Hz], m.whirl, m.shapes, ...
-Modes(10 modes at 4800 rpm: [...] Hz, internal damping 'rotating')
+Modes(10 modes at 4800 rpm: [...] Hz, internal damping 'rotating', eigenvalues within ... of the full model (estimated))
 >>> print(m)                                 # doctest: +SKIP
 >>> a = fs.assess(design, fs.SCREENING)      # doctest: +SKIP
 >>> a                                        # doctest: +SKIP

@@ -21,7 +21,14 @@ import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler
 from flexshaft.analyses.datasets import curves_dataset
-from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton, reduce
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton
+from flexshaft.analyses.eigen_error import (
+    EIGENVALUE_TOLERANCE,
+    accuracy_text,
+    check_tolerance,
+    tracked_to_accuracy,
+    with_error_estimate,
+)
 from flexshaft.analyses.guards import (
     RefusedInputError,
     check_count,
@@ -54,7 +61,8 @@ __all__ = [
 
 
 def default_basis_size(n_modes: int) -> int:
-    """Modal basis of a sweep over speed for ``n_modes`` tracked modes."""
+    """Plain modal basis of a sweep over speed for ``n_modes`` tracked modes (an explicit
+    ``basis_size``; the default is the enriched basis of :func:`tracked_to_accuracy`)."""
     return max(4 * n_modes, 40)
 
 
@@ -311,6 +319,13 @@ class Campbell(EigenvalueCurves, ResultMixin):
         "shaft", "boom" or "coupled" per point.
     internal_damping : str
         Internal-damping model of the eigenvalues.
+    error_estimate : ndarray or None
+        Estimated relative error |s* − s|/|s| of each eigenvalue against the full (unreduced)
+        eigenproblem, (n_speeds, n_modes) (:mod:`flexshaft.analyses.eigen_error`).
+    tolerance : float or None
+        The accuracy the basis was chosen for (None: a basis size given by the caller).
+    basis_size : int or None
+        Number of basis vectors used.
     """
 
     speeds: np.ndarray
@@ -321,6 +336,9 @@ class Campbell(EigenvalueCurves, ResultMixin):
     kind: np.ndarray | None = None
     component: np.ndarray | None = None
     internal_damping: str = "rotating"
+    error_estimate: np.ndarray | None = None
+    tolerance: float | None = None
+    basis_size: int | None = None
 
     plots = {"campbell": "plot_campbell"}
 
@@ -329,13 +347,14 @@ class Campbell(EigenvalueCurves, ResultMixin):
         top = rad_s_to_rpm(self.speeds[-1]) if ns else 0.0
         return (
             f"Campbell({nm} modes × {ns} speeds to {top:.0f} rpm, {len(self.critical_speeds)} critical speeds, "
-            f"internal damping {self.internal_damping!r})"
+            f"internal damping {self.internal_damping!r}{accuracy_text(self)})"
         )
 
     def to_dataset(self):
-        """Tracked frequencies, damping and labels over speed, and the critical speeds (xarray)."""
+        """Tracked frequencies, damping and labels over speed, the critical speeds and each
+        eigenvalue's estimated error (xarray)."""
 
-        return curves_dataset(self, "Campbell diagram")
+        return with_error_estimate(curves_dataset(self, "Campbell diagram"), self)
 
     def _repr_html_(self) -> str:
         crit = [[c.speed_rpm, c.mode + 1, c.harmonic, c.whirl] for c in self.critical_speeds]
@@ -393,7 +412,13 @@ class Campbell(EigenvalueCurves, ResultMixin):
 
 @single_blas_thread
 def campbell(
-    model: Model, speeds, n_modes: int = 10, basis_size: int | None = None, harmonics=(1.0,), damped: bool = True
+    model: Model,
+    speeds,
+    n_modes: int = 10,
+    basis_size: int | None = None,
+    harmonics=(1.0,),
+    damped: bool = True,
+    tolerance: float = EIGENVALUE_TOLERANCE,
 ) -> Campbell:
     """Damped eigenvalues at each speed, tracked into continuous mode curves.
 
@@ -404,11 +429,16 @@ def campbell(
     n_modes : int
         Number of tracked modes (the lowest at the first speed).
     basis_size : int or None
-        Size of the modal basis (default :func:`default_basis_size`); larger is more exact.
+        A plain modal basis of this size (larger is more exact); default: the enriched basis
+        chosen for ``tolerance``.
     harmonics : sequence of float
         Excitation orders k for the critical speeds (ω = kΩ).
     damped : bool
         Include bearing dampers, actuator damping and the members' hysteretic loss.
+    tolerance : float
+        Relative eigenvalue accuracy against the full (unreduced) eigenproblem the basis is
+        chosen for when ``basis_size`` is None (:func:`tracked_to_accuracy`); the estimate
+        reached is :attr:`Campbell.error_estimate`.
     """
     check_model(model)
     speeds = check_speeds(speeds)
@@ -418,10 +448,16 @@ def campbell(
     harmonics = check_finite_array("harmonics", np.atleast_1d(np.asarray(harmonics, dtype=float)), "-")
     if harmonics.ndim != 1 or np.any(harmonics <= 0):
         raise ValueError(f"harmonics must be excitation orders > 0 (got {harmonics!r})")
-    red = reduce(model, basis_size or default_basis_size(n_modes))
-    if not damped:
-        red = red.undamped()
-    tracked = track_modes(model, red, speeds, n_modes, refine_loss=damped)
+    tolerance = check_tolerance(tolerance)
+    red, tracked, errors = tracked_to_accuracy(
+        model,
+        speeds,
+        n_modes,
+        lambda r: track_modes(model, r, speeds, n_modes, refine_loss=damped),
+        basis_size,
+        tolerance,
+        transform=None if damped else ReducedModel.undamped,
+    )
     require_finite("Campbell eigenvalues", tracked.eigenvalues)
     crit = critical_speeds(speeds, tracked.eigenvalues, tracked.whirl, tracked.kind, harmonics)
     return Campbell(
@@ -433,6 +469,9 @@ def campbell(
         tracked.kind,
         tracked.component,
         model.internal_damping,
+        errors,
+        None if basis_size is not None else tolerance,
+        red.size,
     )
 
 

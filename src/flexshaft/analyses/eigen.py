@@ -55,6 +55,7 @@ import scipy.sparse.linalg as spla
 
 from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
+from flexshaft.analyses.reduced_basis import FullOperators, enrich_basis, full_operators
 from flexshaft.assembly.controller import Controller
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import (
@@ -73,6 +74,7 @@ __all__ = [
     "candidates",
     "divergent_roots",
     "newton",
+    "viscous_model",
     "lowest_modes",
 ]
 
@@ -140,7 +142,10 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
     K = restrict((model.K + model.Kp).tocsr(), free).tocsc()
     try:
         if sparse:
-            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM")
+            # a fixed start vector: ARPACK's own is random, which made two bases of one model
+            # differ at round-off (1e-10 in ω²), so results were not reproducible bit for bit
+            start = np.random.default_rng(0).standard_normal(n)
+            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM", v0=start)
         else:
             dense_M = M.toarray()
             mu, Phi = la.eigh(dense_M, K.toarray() + _BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])
@@ -176,6 +181,8 @@ class _ActuatorStates:
     in_rows: np.ndarray | None = None  # B̃_in (2, nb): what the law measures (None: = rows)
     damping: float = 0.0  # E not already in the projected damping (non-collocated channels)
     damping_in_basis: float = 0.0  # E already in the projected damping (collocated channels: model.Kd)
+    rows_full: np.ndarray | None = None  # B_out (2, n_free) on the free DOFs (the error estimate's)
+    sensing_full: np.ndarray | None = None  # B_in (2, n_free) (None: = rows_full)
 
     @property
     def sensing(self) -> np.ndarray:
@@ -203,6 +210,9 @@ class ReducedModel:
         lateral shaft loss and circulatory loss matrices (nb, nb).
     internal_damping : str
         The model's internal-damping model.
+    full : FullOperators or None
+        The unreduced matrices the basis projects (for the a-posteriori error estimate of
+        :mod:`flexshaft.analyses.eigen_error`); None when the reduced model was built otherwise.
     """
 
     Phi: np.ndarray
@@ -215,6 +225,7 @@ class ReducedModel:
     internal_damping: str
     actuators: tuple[_ActuatorStates, ...]
     has_loss: bool
+    full: FullOperators | None = None
 
     @property
     def size(self) -> int:
@@ -275,8 +286,9 @@ class ReducedModel:
         """The gyroscopic-only model: no viscous damping, no loss, no controller dynamics (the
         laws' static stiffness stays; actuators with states are left out)."""
         keep = tuple(dataclasses.replace(a, damping=0.0, damping_in_basis=0.0) for a in self.actuators if not a.A.size)
+        full = None if self.full is None else dataclasses.replace(self.full, damped=False)
         return ReducedModel(
-            self.Phi, self.w2, self.G, 0 * self.C, self.F, self.L, self.S, self.internal_damping, keep, False
+            self.Phi, self.w2, self.G, 0 * self.C, self.F, self.L, self.S, self.internal_damping, keep, False, full
         )
 
     def shapes(self, y: np.ndarray) -> np.ndarray:
@@ -315,7 +327,13 @@ class ReducedModel:
         return T, dTy
 
 
-def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness: float) -> _ActuatorStates:
+def _channel(
+    rows: np.ndarray,
+    sensing: np.ndarray | None,
+    law: Controller,
+    basis_stiffness: float,
+    full: tuple[np.ndarray | None, np.ndarray | None] = (None, None),
+) -> _ActuatorStates:
     """The channel ``rowsᵀ · law · sensing`` (collocated when ``sensing`` is None: then
     ``basis_stiffness`` is in Λ and the law's ideal-derivative part in the projected damping,
     :attr:`Model.Kp` and :attr:`Model.Kd`)."""
@@ -334,18 +352,28 @@ def _channel(rows: np.ndarray, sensing: np.ndarray | None, law, basis_stiffness:
         sensing,
         damping=0.0 if collocated else Ec,
         damping_in_basis=Ec if collocated else 0.0,
+        rows_full=full[0],
+        sensing_full=full[1],
     )
 
 
-def reduce(model: Model, basis_size: int, method: str = "auto") -> ReducedModel:
+def reduce(model: Model, basis_size: int, method: str = "auto", enrich: int = 0) -> ReducedModel:
     """Project ``model`` on its lowest ``basis_size`` undamped modes (cached for the immutable
-    model, so a second analysis of it reuses the basis)."""
-    return _reduced(model, int(basis_size), method)
+    model, so a second analysis of it reuses the basis).
+
+    ``enrich > 0`` adds the static corrections of the lowest ``enrich`` modes and of the
+    actuators (:func:`~flexshaft.analyses.reduced_basis.enrich_basis`): the basis then holds
+    the speed-, damping- and loss-induced coupling to the truncated modes, and the reduced
+    eigenvalues converge far faster with ``basis_size`` (:mod:`flexshaft.analyses.reduced_basis`).
+    """
+    if isinstance(enrich, bool) or not isinstance(enrich, (int, np.integer)) or enrich < 0:
+        raise ValueError(f"enrich must be an integer >= 0 (got {enrich!r})")
+    return _reduced(model, int(basis_size), method, int(enrich))
 
 
 @functools.lru_cache(maxsize=16)  # a model's bases of a few sizes; a sweep's last models
-def _reduced(model: Model, basis_size: int, method: str) -> ReducedModel:
-    return _reduce(model, basis_size, method)
+def _reduced(model: Model, basis_size: int, method: str, enrich: int = 0) -> ReducedModel:
+    return _reduce(model, basis_size, method, enrich)
 
 
 @functools.lru_cache(maxsize=64)  # the speeds and loss weights of one stability or Campbell sweep
@@ -364,20 +392,25 @@ def _speed_parts(
     return damping.astype(complex), stiffness
 
 
-def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:
+def _reduce(model: Model, basis_size: int, method: str, enrich: int = 0) -> ReducedModel:
     free = model.dofs.free
     w2, Phi = modal_basis(model, basis_size, method)
+    full = full_operators(model, _BASIS_SHIFT)
+    out_rows = [np.asarray(a.lateral_rows.tocsr()[:, free].toarray()) for a in model.actuators]
+    in_rows = [None if a.collocated else np.asarray(a.sensing_rows.tocsr()[:, free].toarray()) for a in model.actuators]
+    if enrich:
+        w2, Phi = enrich_basis(full, w2, Phi, enrich, out_rows + [r for r in in_rows if r is not None])
 
     def proj(A):
         return Phi.T @ (restrict(A.tocsr(), free) @ Phi)
 
     actuators = []
-    for a in model.actuators:
-        rows = np.asarray(a.lateral_rows.tocsr()[:, free] @ Phi)
-        actuators.append(_channel(rows, None, a.collocated_law, a.basis_stiffness))
-        if not a.collocated:
-            sensing = np.asarray(a.sensing_rows.tocsr()[:, free] @ Phi)
-            actuators.append(_channel(rows, sensing, a.sensed_law, 0.0))
+    for a, b_out, b_in in zip(model.actuators, out_rows, in_rows):
+        rows = b_out @ Phi
+        actuators.append(_channel(rows, None, a.collocated_law, a.basis_stiffness, (b_out, None)))
+        sensed = a.sensed_law
+        if b_in is not None and sensed is not None:  # set together: a non-collocated sensor
+            actuators.append(_channel(rows, b_in @ Phi, sensed, 0.0, (b_out, b_in)))
     return ReducedModel(
         Phi=Phi,
         w2=w2,
@@ -389,6 +422,7 @@ def _reduce(model: Model, basis_size: int, method: str) -> ReducedModel:
         internal_damping=model.internal_damping,
         actuators=tuple(actuators),
         has_loss=model.has_loss,
+        full=full,
     )
 
 
@@ -451,6 +485,17 @@ def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.sqrt(re.dot(re) + im.dot(im))
 
 
+def viscous_model(red: ReducedModel, viscous: LossCoefficients) -> tuple[ReducedModel, np.ndarray]:
+    """The reduced model of the viscous internal-damping method and its extra stiffness: the
+    damping ``C̃ + w_F F̃ + w_L L̃`` in place of C̃, and ``w_S S̃`` to add to ``T(s)``
+    (:func:`~flexshaft.analyses.loss.viscous_equivalent`'s real weights)."""
+    damping = red.C + viscous.fixed * red.F + viscous.lateral * red.L
+    model = ReducedModel(
+        red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping, red.actuators, False, red.full
+    )
+    return model, viscous.circulatory * red.S
+
+
 def newton(
     red: ReducedModel,
     speed: float,
@@ -472,12 +517,9 @@ def newton(
     hysteretic weights hold for ω = Im s > 0, and a root of the same matrix polynomial with
     Im s < 0 is no eigenvalue of the hysteretic problem (there the loss has the opposite sign).
     """
+    extra: np.ndarray | None
     if viscous is not None:
-        damping = red.C + viscous.fixed * red.F + viscous.lateral * red.L
-        extra = viscous.circulatory * red.S
-        red = ReducedModel(
-            red.Phi, red.w2, red.G, damping, red.F, red.L, red.S, red.internal_damping, red.actuators, False
-        )
+        red, extra = viscous_model(red, viscous)
         loss = _NO_LOSS
     else:
         extra = None

@@ -17,7 +17,15 @@ import numpy as np
 
 from flexshaft.analyses.classify import EnergyShares, circular_pairs, label_modes, whirl_ratio
 from flexshaft.analyses.datasets import modes_dataset
-from flexshaft.analyses.eigen import lowest_modes, reduce, spectrum
+from flexshaft.analyses.eigen import ReducedModel, lowest_modes, reduce, spectrum
+from flexshaft.analyses.eigen_error import (
+    EIGENVALUE_TOLERANCE,
+    accuracy_text,
+    accurate_basis,
+    accurate_reduction,
+    check_tolerance,
+    eigenvalue_errors,
+)
 from flexshaft.analyses.guards import check_count, check_model, check_spin_speed, require_finite
 from flexshaft.analyses.hysteretic_roots import damped_modes
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table, text_table
@@ -71,6 +79,9 @@ class Modes(ResultMixin):
         Kinetic-energy shares by DOF group.
     internal_damping : str
         The internal-damping model used.
+    error_estimate : ndarray or None
+        Estimated relative error |s* − s|/|s| of each eigenvalue against the full (unreduced)
+        eigenproblem (:mod:`flexshaft.analyses.eigen_error`; NaN for a divergent root).
     """
 
     speed: float
@@ -83,6 +94,7 @@ class Modes(ResultMixin):
     shares: EnergyShares
     dofs: DofMap
     internal_damping: str = "rotating"
+    error_estimate: np.ndarray | None = None
 
     plots = {"shapes": "plot_shapes"}
 
@@ -92,7 +104,7 @@ class Modes(ResultMixin):
         more = ", ..." if self.eigenvalues.size > 6 else ""
         return (
             f"Modes({self.eigenvalues.size} modes at {rpm:.0f} rpm: [{freqs}{more}] Hz, "
-            f"internal damping {self.internal_damping!r})"
+            f"internal damping {self.internal_damping!r}{accuracy_text(self)})"
         )
 
     #: Columns of :meth:`table` as printed (unit in each header).
@@ -241,6 +253,23 @@ class Modes(ResultMixin):
         return self.shares.shaft
 
 
+def _solve(red: ReducedModel, speed: float, n_modes: int, damped: bool):
+    """The ``n_modes`` lowest modes on ``red``: (the model solved, s, modal coordinates,
+    estimated relative errors, NaN for a divergent root)."""
+    if damped:
+        s, Z = damped_modes(red, speed, n_modes)
+    else:
+        red = red.undamped()
+        lam, Z, Z_div, div = spectrum(red, speed)
+        s, Z = np.concatenate([lam, div.astype(complex)]), np.hstack([Z, Z_div.astype(complex)])
+        order = lowest_modes(s, n_modes)
+        s, Z = s[order], Z[:, order]
+    oscillatory = s.imag > 0
+    errors = np.full(s.size, np.nan)
+    errors[oscillatory] = eigenvalue_errors(red, float(speed), s[oscillatory], Z[:, oscillatory])
+    return red, s, Z, errors
+
+
 def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
     trans = [dofs.shaft(np.arange(dofs.n_shaft_nodes), f) for f in ("u", "v", "w")]
     if dofs.n_boom_nodes:
@@ -254,7 +283,12 @@ def _normalise(dofs: DofMap, phi: np.ndarray) -> np.ndarray:
 
 @single_blas_thread
 def modes(
-    model: Model, speed: float = 0.0, n_modes: int = 10, damped: bool = True, basis_size: int | None = None
+    model: Model,
+    speed: float = 0.0,
+    n_modes: int = 10,
+    damped: bool = True,
+    basis_size: int | None = None,
+    tolerance: float = EIGENVALUE_TOLERANCE,
 ) -> Modes:
     """Natural frequencies, damping and mode shapes at spin speed ``speed`` [rad/s].
 
@@ -271,24 +305,34 @@ def modes(
         Include the bearing dampers, the actuator laws' damping and controller dynamics, and
         the hysteretic loss of every member (gyroscopic terms are always in).
     basis_size : int or None
-        Modal basis (default :func:`default_basis_size`; the number of free DOFs gives the
-        exact solution of the full problem).
+        A plain modal basis of this size (the number of free DOFs gives the exact solution of
+        the full problem); default: the enriched basis chosen for ``tolerance``, as the
+        Campbell diagram's (:func:`~flexshaft.analyses.eigen_error.tracked_to_accuracy`).
+    tolerance : float
+        Relative eigenvalue accuracy against the full eigenproblem the default basis is chosen
+        for; the estimate reached is :attr:`Modes.error_estimate`.
     """
     check_model(model)
     speed = check_spin_speed(speed)
     n_modes = check_count(n_modes, "n_modes")
     if basis_size is not None:
         basis_size = check_count(basis_size, "basis_size")
-    red = reduce(model, basis_size or default_basis_size(n_modes))
-    if damped:
-        s, Z = damped_modes(red, speed, n_modes)
+    tolerance = check_tolerance(tolerance)
+    n_free = int(model.dofs.free.size)
+    if basis_size is not None:
+        red, s, Z, errors = _solve(reduce(model, basis_size), speed, n_modes, damped)
     else:
-        bare = red.undamped()
-        lam, Z, Z_div, div = spectrum(bare, speed)
-        s, Z = np.concatenate([lam, div.astype(complex)]), np.hstack([Z, Z_div.astype(complex)])
-        order = lowest_modes(s, n_modes)
-        s, Z = s[order], Z[:, order]
-        red = bare
+        size, enrich = accurate_basis(n_modes)
+        largest = max(4 * default_basis_size(n_modes), 2 * size)
+        while True:
+            whole = size >= n_free
+            red, s, Z, errors = _solve(
+                accurate_reduction(model, min(size, n_free), 0 if whole else enrich), speed, n_modes, damped
+            )
+            worst = float(np.nanmax(errors, initial=0.0))
+            if whole or not worst > tolerance or 2 * size > largest or red.size >= largest:
+                break
+            size, enrich = 2 * size, 2 * enrich
     full = model.dofs.expand(red.shapes(Z))
     nodes = np.arange(model.dofs.n_shaft_nodes)
     v, w = (full[model.dofs.shaft(nodes, f)] for f in ("v", "w"))
@@ -307,4 +351,5 @@ def modes(
         labels.shares,
         model.dofs,
         model.internal_damping,
+        errors,
     )

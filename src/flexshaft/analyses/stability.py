@@ -53,9 +53,16 @@ from typing import Literal
 
 import numpy as np
 
-from flexshaft.analyses.campbell import EigenvalueCurves, check_speeds, default_basis_size, track_modes
+from flexshaft.analyses.campbell import EigenvalueCurves, TrackedModes, check_speeds, default_basis_size, track_modes
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
+from flexshaft.analyses.eigen_error import (
+    EIGENVALUE_TOLERANCE,
+    accuracy_text,
+    check_tolerance,
+    tracked_to_accuracy,
+    with_error_estimate,
+)
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
 from flexshaft.analyses.hysteretic_roots import mode_root
 from flexshaft.analyses.loss import viscous_equivalent
@@ -108,6 +115,13 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
         Largest real unstable root per speed [1/s] (0 where there is none), (n_speeds,).
     onset_kind : {"oscillatory", "divergence"} or None
         Whether the onset is a tracked mode with Re(s) > 0 or a real root (None: stable).
+    error_estimate : ndarray or None
+        Estimated relative error |s* − s|/|s| of each tracked eigenvalue against the full
+        (unreduced) eigenproblem, (n_speeds, n_modes) (:mod:`flexshaft.analyses.eigen_error`).
+    tolerance : float or None
+        The accuracy the basis was chosen for (None: a basis given by the caller).
+    basis_size : int or None
+        Number of basis vectors used.
     """
 
     speeds: np.ndarray
@@ -122,6 +136,9 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
     reference_frequency: float | None = None
     divergence: np.ndarray | None = None
     onset_kind: str | None = None
+    error_estimate: np.ndarray | None = None
+    tolerance: float | None = None
+    basis_size: int | None = None
 
     plots = {"log_decrement": "plot_log_decrement", "real_part": "plot_real_parts"}
 
@@ -132,7 +149,7 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
             onset += " (divergence)"
         return (
             f"StabilityResult({onset} up to {top:.0f} rpm, {self.eigenvalues.shape[1]} modes, "
-            f"{self.damping_model} method, internal damping {self.internal_damping!r})"
+            f"{self.damping_model} method, internal damping {self.internal_damping!r}{accuracy_text(self)})"
         )
 
     def _repr_html_(self) -> str:
@@ -148,7 +165,7 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
             attrs.update(unstable_mode=int(self.unstable_mode) + 1)
         if self.reference_frequency is not None:
             attrs.update(reference_frequency=float(self.reference_frequency), reference_frequency_units="rad/s")
-        return curves_dataset(self, "whirl stability", **attrs)
+        return with_error_estimate(curves_dataset(self, "whirl stability", **attrs), self)
 
     @property
     def stability_margin(self) -> np.ndarray:
@@ -245,6 +262,7 @@ def stability(
     reference_frequency: float | None = None,
     basis_size: int | None = None,
     reduced: ReducedModel | None = None,
+    tolerance: float = EIGENVALUE_TOLERANCE,
 ) -> StabilityResult:
     """Eigenvalues of the linearised driveline with internal damping over speed.
 
@@ -260,9 +278,14 @@ def stability(
         ω_ref [rad/s] of the viscous method; default: the lowest basis frequency whose mode is
         more than 50 % shaft (the first shaft bending mode at rest).
     basis_size : int or None
-        Modal basis size (default :func:`~flexshaft.analyses.campbell.default_basis_size`).
+        A plain modal basis of this size (default: the enriched basis chosen for ``tolerance``).
     reduced : ReducedModel or None
         A precomputed reduction of ``model`` to reuse (e.g. across derivative gains).
+    tolerance : float
+        Relative eigenvalue accuracy against the full (unreduced) eigenproblem the basis is
+        chosen for when neither ``basis_size`` nor ``reduced`` is given
+        (:func:`~flexshaft.analyses.eigen_error.tracked_to_accuracy`); the estimate reached is
+        :attr:`StabilityResult.error_estimate`.
     """
     check_model(model)
     speeds = check_speeds(speeds)
@@ -273,15 +296,24 @@ def stability(
         reference_frequency = check_speed(reference_frequency, "reference_frequency", positive=True)
     if basis_size is not None:
         basis_size = check_count(basis_size, "basis_size")
-    red = reduced or reduce(model, basis_size or max(default_basis_size(n_modes), 48))
+    tolerance = check_tolerance(tolerance)
     ref = None
     weights = None  # the viscous method's loss weights at a speed (None: hysteretic)
     if damping_model == "viscous":
-        ref = float(reference_frequency) if reference_frequency is not None else _first_shaft_frequency(model, red)
+        if reference_frequency is not None:
+            ref = float(reference_frequency)
+        else:  # on the basis the caller gave, else on the plain default one
+            ref = _first_shaft_frequency(model, reduced or reduce(model, basis_size or _plain_basis(n_modes)))
         weights = functools.partial(viscous_equivalent, ref)
-        tracked = track_modes(model, red, speeds, int(n_modes), refine_loss=False, viscous=weights)
-    else:
-        tracked = track_modes(model, red, speeds, int(n_modes))
+
+    def track(red: ReducedModel) -> TrackedModes:
+        if weights is not None:
+            return track_modes(model, red, speeds, int(n_modes), refine_loss=False, viscous=weights)
+        return track_modes(model, red, speeds, int(n_modes))
+
+    red, tracked, errors = tracked_to_accuracy(
+        model, speeds, int(n_modes), track, basis_size, tolerance, viscous=weights, reduced=reduced
+    )
     eig = tracked.eigenvalues
     require_finite("stability eigenvalues", eig)
     onset, mode, k = onset_speed(speeds, eig)
@@ -316,7 +348,15 @@ def stability(
         ref,
         divergence,
         kind,
+        errors,
+        None if basis_size is not None or reduced is not None else tolerance,
+        red.size,
     )
+
+
+def _plain_basis(n_modes: int) -> int:
+    """The plain modal basis of earlier versions (the viscous method's reference frequency)."""
+    return max(default_basis_size(n_modes), 48)
 
 
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:
