@@ -58,8 +58,9 @@ tests/test_loop_robustness.py checks the result against a 5000-point grid refine
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Generator, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -102,16 +103,24 @@ MARGIN_WINDOW_DB = 2.0
 _AROUND = (-0.5, 0.0, 0.5)
 
 
-def _root(f: Callable[[float], float], a: float, b: float, tol: float) -> float:
-    """A root of ``f`` between ``a`` and ``b`` (f(a), f(b) of opposite signs) to ``tol``: the
-    Illinois variant of regula falsi (superlinear; scipy.optimize is not imported by a run)."""
-    fa, fb = f(a), f(b)
+#: A refinement step: it yields a frequency ω [rad/s] and is sent L(iω) there.
+Refinement = Generator[float, complex, Any]
+
+
+def _root(f: Callable[[complex], float], a: float, b: float, la: complex, lb: complex, tol: float) -> Refinement:
+    """A root of ``f(L(iω))`` between ``a`` and ``b`` (L there ``la``, ``lb``; f of opposite
+    signs) to ``tol``: the Illinois variant of regula falsi (superlinear; scipy.optimize is not
+    imported by a run). Returns (ω, L(iω)) at the root."""
+    fa, fb = f(la), f(lb)
     side = 0
+    last: tuple[float, complex] = (np.nan, 0j)
     for _ in range(100):
         c = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-        fc = f(c)
+        lc = yield c
+        last = (c, lc)
+        fc = f(lc)
         if fc == 0 or abs(b - a) <= tol:
-            return c
+            return c, lc
         if (fc > 0) == (fb > 0):
             b, fb = c, fc
             if side == -1:
@@ -124,26 +133,53 @@ def _root(f: Callable[[float], float], a: float, b: float, tol: float) -> float:
             side = +1
         if abs(b - a) <= tol:
             break
-    return b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+    x = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
+    return x, (last[1] if x == last[0] else (yield x))
 
 
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
-def _maximum(f: Callable[[float], float], a: float, b: float, tol: float) -> tuple[float, float]:
-    """(x, f(x)) of the largest value of a unimodal ``f`` on [a, b], golden-section search to ``tol``."""
+def _maximum(f: Callable[[complex], float], a: float, b: float, tol: float) -> Refinement:
+    """(log ω, f(L(iω))) of the largest value of a unimodal ``f`` of L on log ω in [a, b],
+    golden-section search to ``tol``."""
     c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
-    fc, fd = f(c), f(d)
+    fc = f((yield float(np.exp(c))))
+    fd = f((yield float(np.exp(d))))
     while b - a > tol:
         if fc >= fd:
             b, d, fd = d, c, fc
             c = b - _GOLDEN * (b - a)
-            fc = f(c)
+            fc = f((yield float(np.exp(c))))
         else:
             a, c, fc = c, d, fd
             d = a + _GOLDEN * (b - a)
-            fd = f(d)
+            fd = f((yield float(np.exp(d))))
     return (c, fc) if fc >= fd else (d, fd)
+
+
+def _lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.ndarray], np.ndarray]) -> list:
+    """Run refinement steps together: at each round every unfinished step's frequency is
+    evaluated in one call ``evaluate(ω, task index)`` → L(iω) (one banded sweep for them all);
+    the steps are those run one after another, so are their results."""
+    results: list = [None] * len(tasks)
+    pending: dict[int, float] = {}
+
+    def advance(i: int, value: complex | None) -> None:
+        try:
+            pending[i] = next(tasks[i]) if value is None else tasks[i].send(value)
+        except StopIteration as stop:
+            results[i] = stop.value
+            pending.pop(i, None)
+
+    for i in range(len(tasks)):
+        advance(i, None)
+    while pending:
+        keys = np.array(list(pending))
+        values = evaluate(np.array([pending[i] for i in keys]), keys)
+        for i, value in zip(keys, values):
+            advance(int(i), complex(value))
+    return results
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -230,21 +266,27 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
         raise ValueError("omegas must be an increasing grid of at least 3 finite frequencies > 0 rad/s")
     L = np.asarray(loop(w), dtype=complex)
     require_finite("loop function", L)
+    tasks, finish = _refinements(w, L, static_gain)
+    return finish(_lockstep(tasks, lambda x, _: np.asarray(loop(x), dtype=complex)))
+
+
+def _refinements(
+    w: np.ndarray, L: np.ndarray, static_gain: float | None
+) -> tuple[list[Refinement], Callable[[list], LoopMargins]]:
+    """The refinements :func:`loop_margins` needs from the loop function ``L`` on the grid ``w``
+    [rad/s], and the function that makes the margins of their results (in the same order)."""
     S = np.abs(1.0 / (1.0 + L))
 
-    def scalar(x: float) -> complex:
-        return complex(loop(np.array([x]))[0])
-
-    def s_of_log(log_w: float) -> float:
-        return abs(1.0 / (1.0 + scalar(float(np.exp(log_w)))))
+    def s_of(value: complex) -> float:
+        return abs(1.0 / (1.0 + value))
 
     peak, peak_w = float(S.max()), float(w[np.argmax(S)])
+    tasks: list[Refinement] = []
     for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
         if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
             continue  # neither near the top nor under-resolved (a neighbour below half of it)
-        x, value = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
-        if value > peak:
-            peak, peak_w = float(value), float(np.exp(x))
+        tasks.append(_maximum(s_of, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6))
+    n_peaks = len(tasks)
 
     phase = np.angle(L)
     turn = np.abs(np.angle(L[1:] / L[:-1]))  # phase change across each interval [rad]
@@ -257,27 +299,19 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     estimates = []
     for k in crossings:
         t = L.imag[k] / (L.imag[k] - L.imag[k + 1])
-        x, value = w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])
-        estimates.append((x, value))
+        estimates.append((w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])))
     margins = np.array([20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for _, v in estimates])
     best_upper = margins[margins > 0].min(initial=np.inf)
     best_lower = margins[margins < 0].max(initial=-np.inf)
-    phase_w, phase_l = [], []
-    if static_gain is not None and np.isfinite(static_gain) and static_gain < 0:
-        phase_w.append(0.0)
-        phase_l.append(abs(static_gain))
-    for (k, (x, value)), gm in zip(zip(crossings, estimates), margins):
+    phase_refined = []
+    for k, gm in zip(crossings, margins):
         near = (gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB)
-        if near or sharp[k]:
-            x = _root(lambda x: scalar(x).imag, w[k], w[k + 1], 1e-8 * w[k])
-            value = scalar(x)
-        if value.real < 0:
-            phase_w.append(x)
-            phase_l.append(abs(value))
+        phase_refined.append(bool(near or sharp[k]))
+        if phase_refined[-1]:
+            tasks.append(_root(lambda value: value.imag, w[k], w[k + 1], L[k], L[k + 1], 1e-8 * w[k]))
 
     # gain crossovers: |L| = 1
     log_l = np.log(np.abs(L))
-    gain_w, phase_margins = [], []
     brackets = np.flatnonzero(np.sign(log_l[:-1]) * np.sign(log_l[1:]) < 0)
     estimate_pm = []
     for k in brackets:
@@ -285,15 +319,48 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
         angle = phase[k] + t * np.angle(L[k + 1] / L[k])
         estimate_pm.append(180.0 - abs(float(np.degrees(np.angle(np.exp(1j * angle))))))
     smallest = min(estimate_pm, default=np.inf)
+    gain_refined = []
     for k, pm in zip(brackets, estimate_pm):
-        if pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]:
-            x = _root(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], 1e-8 * w[k])
-            pm = 180.0 - abs(float(np.degrees(np.angle(scalar(x)))))
-        else:
-            t = log_l[k] / (log_l[k] - log_l[k + 1])
-            x = w[k] + t * (w[k + 1] - w[k])
-        gain_w.append(x)
-        phase_margins.append(pm)
+        gain_refined.append(bool(pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]))
+        if gain_refined[-1]:
+            tasks.append(_root(lambda value: float(np.log(abs(value))), w[k], w[k + 1], L[k], L[k + 1], 1e-8 * w[k]))
+
+    def finish(results: list) -> LoopMargins:
+        top, top_w = peak, peak_w
+        for x, value in results[:n_peaks]:
+            if value > top:
+                top, top_w = float(value), float(np.exp(x))
+        done = iter(results[n_peaks:])
+        phase_w, phase_l = [], []
+        if static_gain is not None and np.isfinite(static_gain) and static_gain < 0:
+            phase_w.append(0.0)
+            phase_l.append(abs(static_gain))
+        for (x, value), refined in zip(estimates, phase_refined):
+            if refined:
+                x, value = next(done)
+            if value.real < 0:
+                phase_w.append(x)
+                phase_l.append(abs(value))
+        gain_w, phase_margins = [], []
+        for k, pm, refined in zip(brackets, estimate_pm, gain_refined):
+            if refined:
+                x, value = next(done)
+                pm = 180.0 - abs(float(np.degrees(np.angle(value))))
+            else:
+                t = log_l[k] / (log_l[k] - log_l[k + 1])
+                x = w[k] + t * (w[k + 1] - w[k])
+            gain_w.append(x)
+            phase_margins.append(pm)
+        return _margins(top, top_w, phase_w, phase_l, gain_w, phase_margins)
+
+    return tasks, finish
+
+
+def _margins(
+    peak: float, peak_w: float, phase_w: list, phase_l: list, gain_w: list, phase_margins: list
+) -> LoopMargins:
+    """:class:`LoopMargins` of the refined peak, phase crossovers (ω, |L|) and gain crossovers
+    (ω, phase margin), frequencies in [rad/s]."""
     margins_db = 20.0 * np.log10(1.0 / np.asarray(phase_l)) if phase_l else np.zeros(0)
     upper = margins_db[margins_db > 0]
     lower = margins_db[margins_db < 0]
@@ -442,14 +509,24 @@ def bearing_loops(
     grid = _grid(model, (low, high), n_points, poles)
     T_grid = closed(grid)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
-    out = []
-    for k, (actuator, j) in enumerate(rows):
-
-        def loop(omegas, k=k):
-            T = T_grid[k] if omegas is grid else closed(np.asarray(omegas, dtype=float))[k]
-            return T / (1.0 - T)
-
+    L_grid = T_grid / (1.0 - T_grid)
+    plans, owner = [], []
+    for k in range(len(rows)):
         gain0 = None if static is None else float(static[k] / (1.0 - static[k]))
-        margins = loop_margins(loop, grid, gain0)
+        plans.append(_refinements(grid, L_grid[k], gain0))
+        owner += [k] * len(plans[-1][0])
+    loop_of = np.array(owner, dtype=np.intp)
+
+    def evaluate(omegas: np.ndarray, tasks: np.ndarray) -> np.ndarray:
+        """L(iω) of each task's loop at its ω: one banded sweep for every loop's refinements."""
+        T = closed(omegas)[loop_of[tasks], np.arange(omegas.size)]
+        return T / (1.0 - T)
+
+    results = _lockstep([task for tasks, _ in plans for task in tasks], evaluate)
+    out, first = [], 0
+    for k, (actuator, j) in enumerate(rows):
+        tasks, finish = plans[k]
+        margins = finish(results[first : first + len(tasks)])
+        first += len(tasks)
         out.append(BearingLoop(actuator.name, _AXES[j], float(speed), margins, grid / (2 * np.pi), 1.0 - T_grid[k]))
     return tuple(out)
