@@ -54,18 +54,35 @@ interpolated on the grid is within :data:`MARGIN_WINDOW_DEG` of the smallest, th
 crossovers whose gain margin is within :data:`MARGIN_WINDOW_DB` of the smallest of its kind,
 and any crossover whose bracket turns the phase by more than 30° (a resonance inside it).
 tests/test_loop_robustness.py checks the result against a 5000-point grid refined everywhere.
+
+The refinements of all loops advance together, one banded sweep a round
+(:func:`~flexshaft.analyses.local_projection.lockstep`), each on a four-unknown projected model
+of its interval built from the grid's own solutions, and each result is checked by one full
+solve (:mod:`flexshaft.analyses.local_projection`: accepted when the two agree to 1e-9, else
+the model is enriched or the refinement repeated on full solves; the values reported are the
+full model's). tests/test_loop_projection.py compares the margins with full solves at every
+step.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Generator, Sequence
+import functools
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.local_projection import (
+    LocalModels,
+    RefinementTask,
+    golden_maximum,
+    illinois_root,
+    lockstep,
+    projected_refinements,
+    window_of,
+)
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
 
@@ -101,85 +118,6 @@ MARGIN_WINDOW_DEG = 3.0
 MARGIN_WINDOW_DB = 2.0
 #: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole.
 _AROUND = (-0.5, 0.0, 0.5)
-
-
-#: A refinement step: it yields a frequency ω [rad/s] and is sent L(iω) there.
-Refinement = Generator[float, complex, Any]
-
-
-def _root(f: Callable[[complex], float], a: float, b: float, la: complex, lb: complex, tol: float) -> Refinement:
-    """A root of ``f(L(iω))`` between ``a`` and ``b`` (L there ``la``, ``lb``; f of opposite
-    signs) to ``tol``: the Illinois variant of regula falsi (superlinear; scipy.optimize is not
-    imported by a run). Returns (ω, L(iω)) at the root."""
-    fa, fb = f(la), f(lb)
-    side = 0
-    last: tuple[float, complex] = (np.nan, 0j)
-    for _ in range(100):
-        c = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-        lc = yield c
-        last = (c, lc)
-        fc = f(lc)
-        if fc == 0 or abs(b - a) <= tol:
-            return c, lc
-        if (fc > 0) == (fb > 0):
-            b, fb = c, fc
-            if side == -1:
-                fa *= 0.5
-            side = -1
-        else:
-            a, fa = c, fc
-            if side == +1:
-                fb *= 0.5
-            side = +1
-        if abs(b - a) <= tol:
-            break
-    x = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-    return x, (last[1] if x == last[0] else (yield x))
-
-
-_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
-
-
-def _maximum(f: Callable[[complex], float], a: float, b: float, tol: float) -> Refinement:
-    """(log ω, f(L(iω))) of the largest value of a unimodal ``f`` of L on log ω in [a, b],
-    golden-section search to ``tol``."""
-    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
-    fc = f((yield float(np.exp(c))))
-    fd = f((yield float(np.exp(d))))
-    while b - a > tol:
-        if fc >= fd:
-            b, d, fd = d, c, fc
-            c = b - _GOLDEN * (b - a)
-            fc = f((yield float(np.exp(c))))
-        else:
-            a, c, fc = c, d, fd
-            d = a + _GOLDEN * (b - a)
-            fd = f((yield float(np.exp(d))))
-    return (c, fc) if fc >= fd else (d, fd)
-
-
-def _lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.ndarray], np.ndarray]) -> list:
-    """Run refinement steps together: at each round every unfinished step's frequency is
-    evaluated in one call ``evaluate(ω, task index)`` → L(iω) (one banded sweep for them all);
-    the steps are those run one after another, so are their results."""
-    results: list = [None] * len(tasks)
-    pending: dict[int, float] = {}
-
-    def advance(i: int, value: complex | None) -> None:
-        try:
-            pending[i] = next(tasks[i]) if value is None else tasks[i].send(value)
-        except StopIteration as stop:
-            results[i] = stop.value
-            pending.pop(i, None)
-
-    for i in range(len(tasks)):
-        advance(i, None)
-    while pending:
-        keys = np.array(list(pending))
-        values = evaluate(np.array([pending[i] for i in keys]), keys)
-        for i, value in zip(keys, values):
-            advance(int(i), complex(value))
-    return results
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -267,12 +205,26 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     L = np.asarray(loop(w), dtype=complex)
     require_finite("loop function", L)
     tasks, finish = _refinements(w, L, static_gain)
-    return finish(_lockstep(tasks, lambda x, _: np.asarray(loop(x), dtype=complex)))
+    return finish(lockstep([t.start() for t in tasks], lambda x, _: np.asarray(loop(x), dtype=complex)))
+
+
+def _imag(value: complex) -> float:
+    return value.imag
+
+
+def _log_abs(value: complex) -> float:
+    return float(np.log(abs(value)))
+
+
+def _crossover(f: Callable[[complex], float], w: np.ndarray, L: np.ndarray, k: int) -> RefinementTask:
+    """The refinement of the root of f(L) between grid points k and k + 1 to 1e-8 ω relative."""
+    bracket = float(w[k]), float(w[k + 1]), complex(L[k]), complex(L[k + 1]), 1e-8 * float(w[k])
+    return RefinementTask("root", k, k + 1, functools.partial(illinois_root, f, *bracket))
 
 
 def _refinements(
     w: np.ndarray, L: np.ndarray, static_gain: float | None
-) -> tuple[list[Refinement], Callable[[list], LoopMargins]]:
+) -> tuple[list[RefinementTask], Callable[[list], LoopMargins]]:
     """The refinements :func:`loop_margins` needs from the loop function ``L`` on the grid ``w``
     [rad/s], and the function that makes the margins of their results (in the same order)."""
     S = np.abs(1.0 / (1.0 + L))
@@ -281,11 +233,12 @@ def _refinements(
         return abs(1.0 / (1.0 + value))
 
     peak, peak_w = float(S.max()), float(w[np.argmax(S)])
-    tasks: list[Refinement] = []
+    tasks: list[RefinementTask] = []
     for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
         if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
             continue  # neither near the top nor under-resolved (a neighbour below half of it)
-        tasks.append(_maximum(s_of, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6))
+        bracket = float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6
+        tasks.append(RefinementTask("peak", int(k) - 1, int(k) + 1, functools.partial(golden_maximum, s_of, *bracket)))
     n_peaks = len(tasks)
 
     phase = np.angle(L)
@@ -308,7 +261,7 @@ def _refinements(
         near = (gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB)
         phase_refined.append(bool(near or sharp[k]))
         if phase_refined[-1]:
-            tasks.append(_root(lambda value: value.imag, w[k], w[k + 1], L[k], L[k + 1], 1e-8 * w[k]))
+            tasks.append(_crossover(_imag, w, L, int(k)))
 
     # gain crossovers: |L| = 1
     log_l = np.log(np.abs(L))
@@ -323,7 +276,7 @@ def _refinements(
     for k, pm in zip(brackets, estimate_pm):
         gain_refined.append(bool(pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]))
         if gain_refined[-1]:
-            tasks.append(_root(lambda value: float(np.log(abs(value))), w[k], w[k + 1], L[k], L[k + 1], 1e-8 * w[k]))
+            tasks.append(_crossover(_log_abs, w, L, int(k)))
 
     def finish(results: list) -> LoopMargins:
         top, top_w = peak, peak_w
@@ -456,6 +409,7 @@ def bearing_loops(
     frequency_range: tuple[float, float] = DEFAULT_FREQUENCY_RANGE,
     n_points: int = 200,
     poles=None,
+    projected: bool = True,
 ) -> tuple[BearingLoop, ...]:
     """Sensitivity function and margins of both control axes of every active bearing.
 
@@ -472,6 +426,10 @@ def bearing_loops(
         Closed-loop roots at ``speed`` [rad/s] (e.g. :attr:`RootStability.roots
         <flexshaft.analyses.root_stability.RootStability.roots>` at it); default those of the
         loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`).
+    projected : bool
+        Refine the peaks and crossovers on small projected models of their intervals, each
+        result checked against a full solve (:mod:`flexshaft.analyses.local_projection`); False:
+        a full solve at every refinement step (the reference the tests compare with).
 
     Returns
     -------
@@ -497,17 +455,23 @@ def bearing_loops(
     rhs = np.column_stack([a.lateral_rows[j].toarray().ravel()[free] for a, j in rows]).astype(complex)
     sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
 
-    def closed(omegas: np.ndarray) -> np.ndarray:
-        """G P_c (= T) of every loop at ω [rad/s]: (n_loops, n_omegas)."""
+    def gains(omegas: np.ndarray) -> np.ndarray:
+        return np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
+
+    def closed(omegas: np.ndarray, keep: list | None = None) -> np.ndarray:
+        """G P_c (= T) of every loop at ω [rad/s]: (n_loops, n_omegas); the solutions are
+        appended to ``keep`` when given."""
         X = list(solver.sweep([(float(x), speed) for x in omegas], rhs))
+        if keep is not None:
+            keep.extend(X)
         Pc = np.stack([np.einsum("ij,ji->i", sense, x) for x in X], axis=1)
-        G = np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
-        return G * Pc
+        return gains(omegas) * Pc
 
     if poles is None:
         poles = closed_loop_poles(model, speed)
     grid = _grid(model, (low, high), n_points, poles)
-    T_grid = closed(grid)
+    responses: list[np.ndarray] = []
+    T_grid = closed(grid, responses if projected else None)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
     L_grid = T_grid / (1.0 - T_grid)
     plans, owner = [], []
@@ -516,17 +480,26 @@ def bearing_loops(
         plans.append(_refinements(grid, L_grid[k], gain0))
         owner += [k] * len(plans[-1][0])
     loop_of = np.array(owner, dtype=np.intp)
+    tasks = [task for refinements, _ in plans for task in refinements]
 
-    def evaluate(omegas: np.ndarray, tasks: np.ndarray) -> np.ndarray:
+    def evaluate(omegas: np.ndarray, which: np.ndarray, keep: list | None = None) -> np.ndarray:
         """L(iω) of each task's loop at its ω: one banded sweep for every loop's refinements."""
-        T = closed(omegas)[loop_of[tasks], np.arange(omegas.size)]
+        T = closed(omegas, keep)[loop_of[which], np.arange(omegas.size)]
         return T / (1.0 - T)
 
-    results = _lockstep([task for tasks, _ in plans for task in tasks], evaluate)
+    if projected and tasks:
+
+        def local_models(windows: Sequence[Sequence[int]], active: np.ndarray) -> LocalModels:
+            return LocalModels(solver, speed, responses, windows, loop_of[active], rhs, sense, gains)
+
+        windows = [list(window_of(task.lo, task.hi, grid.size)) for task in tasks]
+        results = projected_refinements(tasks, loop_of, evaluate, local_models, windows, responses)
+    else:
+        results = lockstep([task.start() for task in tasks], evaluate)
     out, first = [], 0
     for k, (actuator, j) in enumerate(rows):
-        tasks, finish = plans[k]
-        margins = finish(results[first : first + len(tasks)])
-        first += len(tasks)
+        refinements, finish = plans[k]
+        margins = finish(results[first : first + len(refinements)])
+        first += len(refinements)
         out.append(BearingLoop(actuator.name, _AXES[j], float(speed), margins, grid / (2 * np.pi), 1.0 - T_grid[k]))
     return tuple(out)
