@@ -118,3 +118,12 @@ def test_a_failed_check_falls_back_to_full_solves(monkeypatch):
     monkeypatch.setattr(lp, "ENRICHMENTS", 0)
     model = _tuned_model()
     assert _margins(bearing_loops(model)) == _margins(bearing_loops(model, projected=False))
+
+
+def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
+    """A projected model that returns NaN (standing in for a singular or useless compression)
+    fails the check: no full solve at a non-finite frequency, the refinements are repeated on
+    full solves, and the margins are the full computation's exactly."""
+    monkeypatch.setattr(LocalModels, "closed", lambda self, omegas, intervals: np.full(len(omegas), np.nan + 0j))
+    model = _tuned_model()
+    assert _margins(bearing_loops(model)) == _margins(bearing_loops(model, projected=False))

@@ -251,21 +251,31 @@ def projected_refinements(
         if not active:
             return results
         which = np.array(active)
-        local = local_models([windows[i] for i in active], which)
-        found = lockstep([tasks[i].start() for i in active], functools.partial(_on_local, local))
+        try:
+            with np.errstate(all="ignore"):
+                local = local_models([windows[i] for i in active], which)
+                found = lockstep([tasks[i].start() for i in active], functools.partial(_on_local, local))
+        except np.linalg.LinAlgError:  # a singular projected model: refine these on the full one
+            break
         at = np.array([np.exp(x) if tasks[i].kind == "peak" else x for i, (x, _) in zip(active, found)])
+        finite = np.isfinite(at) & (at >= 0)  # a projected model gone astray is refined again
         first = len(responses)
-        full = evaluate(at, which, responses)
+        full = np.full(at.size, np.nan, dtype=complex)
+        full[finite] = evaluate(at[finite], which[finite], responses)
+        slot = first + np.cumsum(finite) - 1  # where each checked solution was appended
         retry = []
         for n, (i, (x, value), exact) in enumerate(zip(active, found, full)):
             if tasks[i].kind == "peak":
                 exact = abs(1.0 / (1.0 + exact))
-            if abs(value - exact) <= LOCAL_TOLERANCE * abs(exact):
+            if finite[n] and abs(value - exact) <= LOCAL_TOLERANCE * abs(exact):
                 results[i] = (x, exact)
-            else:
-                windows[i].append(first + n)
-                retry.append(i)
+                continue
+            if finite[n]:
+                windows[i].append(int(slot[n]))
+            retry.append(i)
         active = retry
+        if len({len(windows[i]) for i in active}) > 1:  # enriched unevenly: one model size each round
+            break
     if active:
         which = np.array(active)
         redone = lockstep([tasks[i].start() for i in active], lambda omegas, k: evaluate(omegas, which[k]))
