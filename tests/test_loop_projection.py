@@ -127,3 +127,21 @@ def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
     monkeypatch.setattr(LocalModels, "closed", lambda self, omegas, intervals: np.full(len(omegas), np.nan + 0j))
     model = _tuned_model()
     assert _margins(bearing_loops(model)) == _margins(bearing_loops(model, projected=False))
+
+
+def test_projected_terms_sum_to_the_projected_dynamic_stiffness():
+    """Σ_k w_k(ω, Ω) Vᴴ T_k V (BandedHarmonicSolver.project, term_weights) against Vᴴ Z(ω, Ω) V
+    from the assembled sparse Z, for random complex bases at two (ω, Ω): the same sum in
+    another order, so to round-off of |Z| |V|² (1e-12 relative to the largest entry)."""
+    model = _tuned_model()
+    solver = solver_for(model)
+    rng = np.random.default_rng(3)
+    V = rng.standard_normal((2, solver.n, 5)) + 1j * rng.standard_normal((2, solver.n, 5))
+    terms = solver.project(V)
+    for omega, speed in ((2 * np.pi * 37.0, model.speed), (2 * np.pi * 900.0, 0.3 * model.speed)):
+        weights = solver.term_weights([omega], [speed])[0]
+        Z = solver.sparse_matrix(omega, speed).toarray()[np.ix_(solver.inverse, solver.inverse)]
+        for m in range(2):
+            expected = V[m].conj().T @ Z @ V[m]
+            got = np.einsum("k,kab->ab", weights, terms[m])
+            assert np.abs(got - expected).max() <= 1e-12 * np.abs(expected).max()
