@@ -281,6 +281,27 @@ class BandedHarmonicSolver:
                 w[:, slot[f"A{k}"]] = -a.negative_stiffness
         return w
 
+    def term_weights(self, omegas, speeds) -> np.ndarray:
+        """Weights of the non-zero terms at many points (ω, Ω): (n_points, n_terms), the
+        columns of :meth:`coefficient_table` that :meth:`project` returns terms for."""
+        return self.coefficient_table(omegas, speeds)[:, self._used]
+
+    def project(self, bases: np.ndarray) -> np.ndarray:
+        """Galerkin projections ``Vᴴ T_k V`` of the non-zero terms T_k of Z on each basis V.
+
+        ``bases`` (m, n_free, r) in the free-DOF ordering; returns (m, n_terms, r, r), with
+        ``Vᴴ Z(ω, Ω) V = Σ_k w_k Vᴴ T_k V`` for ``w`` a row of :meth:`term_weights`.
+        """
+        m, n, r = bases.shape
+        Vp = np.ascontiguousarray(bases[:, self.perm, :].transpose(1, 0, 2)).reshape(n, m * r)
+        left = Vp.reshape(n, m, r).conj()
+        out = np.empty((m, self._used.size, r, r), dtype=complex)
+        T = self._template.copy().astype(self._stack.dtype)
+        for j in range(self._used.size):
+            T.data[:] = self._stack[j]
+            out[:, j] = np.einsum("nmi,nmj->mij", left, (T @ Vp).reshape(n, m, r), optimize=True)
+        return out
+
     def matrix_data(self, omega: float, speed: float, weights: np.ndarray | None = None) -> np.ndarray:
         """Values of Z(ω, Ω) on the shared pattern (permuted ordering); ``weights``: its row
         of :meth:`coefficient_table`, when already computed."""

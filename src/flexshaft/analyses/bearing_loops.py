@@ -54,17 +54,35 @@ interpolated on the grid is within :data:`MARGIN_WINDOW_DEG` of the smallest, th
 crossovers whose gain margin is within :data:`MARGIN_WINDOW_DB` of the smallest of its kind,
 and any crossover whose bracket turns the phase by more than 30° (a resonance inside it).
 tests/test_loop_robustness.py checks the result against a 5000-point grid refined everywhere.
+
+The refinements of all loops advance together, one banded sweep a round
+(:func:`~flexshaft.analyses.local_projection.lockstep`), each on a four-unknown projected model
+of its interval built from the grid's own solutions, and each result is checked by one full
+solve (:mod:`flexshaft.analyses.local_projection`: accepted when the two agree to 1e-9, else
+the model is enriched or the refinement repeated on full solves; the values reported are the
+full model's). tests/test_loop_projection.py compares the margins with full solves at every
+step.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import functools
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed, require_finite
+from flexshaft.analyses.local_projection import (
+    LocalModels,
+    RefinementTask,
+    golden_maximum,
+    illinois_root,
+    lockstep,
+    projected_refinements,
+    window_of,
+)
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
 
@@ -100,50 +118,6 @@ MARGIN_WINDOW_DEG = 3.0
 MARGIN_WINDOW_DB = 2.0
 #: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole.
 _AROUND = (-0.5, 0.0, 0.5)
-
-
-def _root(f: Callable[[float], float], a: float, b: float, tol: float) -> float:
-    """A root of ``f`` between ``a`` and ``b`` (f(a), f(b) of opposite signs) to ``tol``: the
-    Illinois variant of regula falsi (superlinear; scipy.optimize is not imported by a run)."""
-    fa, fb = f(a), f(b)
-    side = 0
-    for _ in range(100):
-        c = b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-        fc = f(c)
-        if fc == 0 or abs(b - a) <= tol:
-            return c
-        if (fc > 0) == (fb > 0):
-            b, fb = c, fc
-            if side == -1:
-                fa *= 0.5
-            side = -1
-        else:
-            a, fa = c, fc
-            if side == +1:
-                fb *= 0.5
-            side = +1
-        if abs(b - a) <= tol:
-            break
-    return b - fb * (b - a) / (fb - fa) if fb != fa else 0.5 * (a + b)
-
-
-_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
-
-
-def _maximum(f: Callable[[float], float], a: float, b: float, tol: float) -> tuple[float, float]:
-    """(x, f(x)) of the largest value of a unimodal ``f`` on [a, b], golden-section search to ``tol``."""
-    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
-    fc, fd = f(c), f(d)
-    while b - a > tol:
-        if fc >= fd:
-            b, d, fd = d, c, fc
-            c = b - _GOLDEN * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + _GOLDEN * (b - a)
-            fd = f(d)
-    return (c, fc) if fc >= fd else (d, fd)
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -230,21 +204,42 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
         raise ValueError("omegas must be an increasing grid of at least 3 finite frequencies > 0 rad/s")
     L = np.asarray(loop(w), dtype=complex)
     require_finite("loop function", L)
+    tasks, finish = _refinements(w, L, static_gain)
+    return finish(lockstep([t.start() for t in tasks], lambda x, _: np.asarray(loop(x), dtype=complex)))
+
+
+def _imag(value: complex) -> float:
+    return value.imag
+
+
+def _log_abs(value: complex) -> float:
+    return float(np.log(abs(value)))
+
+
+def _crossover(f: Callable[[complex], float], w: np.ndarray, L: np.ndarray, k: int) -> RefinementTask:
+    """The refinement of the root of f(L) between grid points k and k + 1 to 1e-8 ω relative."""
+    bracket = float(w[k]), float(w[k + 1]), complex(L[k]), complex(L[k + 1]), 1e-8 * float(w[k])
+    return RefinementTask("root", k, k + 1, functools.partial(illinois_root, f, *bracket))
+
+
+def _refinements(
+    w: np.ndarray, L: np.ndarray, static_gain: float | None
+) -> tuple[list[RefinementTask], Callable[[list], LoopMargins]]:
+    """The refinements :func:`loop_margins` needs from the loop function ``L`` on the grid ``w``
+    [rad/s], and the function that makes the margins of their results (in the same order)."""
     S = np.abs(1.0 / (1.0 + L))
 
-    def scalar(x: float) -> complex:
-        return complex(loop(np.array([x]))[0])
-
-    def s_of_log(log_w: float) -> float:
-        return abs(1.0 / (1.0 + scalar(float(np.exp(log_w)))))
+    def s_of(value: complex) -> float:
+        return abs(1.0 / (1.0 + value))
 
     peak, peak_w = float(S.max()), float(w[np.argmax(S)])
+    tasks: list[RefinementTask] = []
     for k in np.flatnonzero((S[1:-1] >= S[:-2]) & (S[1:-1] >= S[2:])) + 1:
         if S[k] < PEAK_WINDOW * peak and S[k] < 2.0 * min(S[k - 1], S[k + 1]):
             continue  # neither near the top nor under-resolved (a neighbour below half of it)
-        x, s_local = _maximum(s_of_log, float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6)
-        if s_local > peak:
-            peak, peak_w = float(s_local), float(np.exp(x))
+        bracket = float(np.log(w[k - 1])), float(np.log(w[k + 1])), 1e-6
+        tasks.append(RefinementTask("peak", int(k) - 1, int(k) + 1, functools.partial(golden_maximum, s_of, *bracket)))
+    n_peaks = len(tasks)
 
     phase = np.angle(L)
     turn = np.abs(np.angle(L[1:] / L[:-1]))  # phase change across each interval [rad]
@@ -257,27 +252,19 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     estimates: list[tuple[float, complex]] = []  # (ω [rad/s], L(iω)) at each phase crossover
     for k in crossings:
         t = L.imag[k] / (L.imag[k] - L.imag[k + 1])
-        x, value = w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])
-        estimates.append((x, value))
+        estimates.append((w[k] + t * (w[k + 1] - w[k]), L[k] + t * (L[k + 1] - L[k])))
     margins = np.array([20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for _, v in estimates])
     best_upper = margins[margins > 0].min(initial=np.inf)
     best_lower = margins[margins < 0].max(initial=-np.inf)
-    phase_w, phase_l = [], []
-    if static_gain is not None and np.isfinite(static_gain) and static_gain < 0:
-        phase_w.append(0.0)
-        phase_l.append(abs(static_gain))
-    for (k, (x, value)), gm in zip(zip(crossings, estimates), margins):
+    phase_refined = []
+    for k, gm in zip(crossings, margins):
         near = (gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB)
-        if near or sharp[k]:
-            x = _root(lambda x: scalar(x).imag, w[k], w[k + 1], 1e-8 * w[k])
-            value = scalar(x)
-        if value.real < 0:
-            phase_w.append(x)
-            phase_l.append(abs(value))
+        phase_refined.append(bool(near or sharp[k]))
+        if phase_refined[-1]:
+            tasks.append(_crossover(_imag, w, L, int(k)))
 
     # gain crossovers: |L| = 1
     log_l = np.log(np.abs(L))
-    gain_w, phase_margins = [], []
     brackets = np.flatnonzero(np.sign(log_l[:-1]) * np.sign(log_l[1:]) < 0)
     estimate_pm = []
     for k in brackets:
@@ -285,15 +272,48 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
         angle = phase[k] + t * np.angle(L[k + 1] / L[k])
         estimate_pm.append(180.0 - abs(float(np.degrees(np.angle(np.exp(1j * angle))))))
     smallest = min(estimate_pm, default=np.inf)
+    gain_refined = []
     for k, pm in zip(brackets, estimate_pm):
-        if pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]:
-            x = _root(lambda x: np.log(abs(scalar(x))), w[k], w[k + 1], 1e-8 * w[k])
-            pm = 180.0 - abs(float(np.degrees(np.angle(scalar(x)))))
-        else:
-            t = log_l[k] / (log_l[k] - log_l[k + 1])
-            x = w[k] + t * (w[k + 1] - w[k])
-        gain_w.append(x)
-        phase_margins.append(pm)
+        gain_refined.append(bool(pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]))
+        if gain_refined[-1]:
+            tasks.append(_crossover(_log_abs, w, L, int(k)))
+
+    def finish(results: list) -> LoopMargins:
+        top, top_w = peak, peak_w
+        for x, value in results[:n_peaks]:
+            if value > top:
+                top, top_w = float(value), float(np.exp(x))
+        done = iter(results[n_peaks:])
+        phase_w, phase_l = [], []
+        if static_gain is not None and np.isfinite(static_gain) and static_gain < 0:
+            phase_w.append(0.0)
+            phase_l.append(abs(static_gain))
+        for (x, value), refined in zip(estimates, phase_refined):
+            if refined:
+                x, value = next(done)
+            if value.real < 0:
+                phase_w.append(x)
+                phase_l.append(abs(value))
+        gain_w, phase_margins = [], []
+        for k, pm, refined in zip(brackets, estimate_pm, gain_refined):
+            if refined:
+                x, value = next(done)
+                pm = 180.0 - abs(float(np.degrees(np.angle(value))))
+            else:
+                t = log_l[k] / (log_l[k] - log_l[k + 1])
+                x = w[k] + t * (w[k + 1] - w[k])
+            gain_w.append(x)
+            phase_margins.append(pm)
+        return _margins(top, top_w, phase_w, phase_l, gain_w, phase_margins)
+
+    return tasks, finish
+
+
+def _margins(
+    peak: float, peak_w: float, phase_w: list, phase_l: list, gain_w: list, phase_margins: list
+) -> LoopMargins:
+    """:class:`LoopMargins` of the refined peak, phase crossovers (ω, |L|) and gain crossovers
+    (ω, phase margin), frequencies in [rad/s]."""
     margins_db = 20.0 * np.log10(1.0 / np.asarray(phase_l)) if phase_l else np.zeros(0)
     upper = margins_db[margins_db > 0]
     lower = margins_db[margins_db < 0]
@@ -389,6 +409,7 @@ def bearing_loops(
     frequency_range: tuple[float, float] = DEFAULT_FREQUENCY_RANGE,
     n_points: int = 200,
     poles=None,
+    projected: bool = True,
 ) -> tuple[BearingLoop, ...]:
     """Sensitivity function and margins of both control axes of every active bearing.
 
@@ -405,6 +426,10 @@ def bearing_loops(
         Closed-loop roots at ``speed`` [rad/s] (e.g. :attr:`RootStability.roots
         <flexshaft.analyses.root_stability.RootStability.roots>` at it); default those of the
         loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`).
+    projected : bool
+        Refine the peaks and crossovers on small projected models of their intervals, each
+        result checked against a full solve (:mod:`flexshaft.analyses.local_projection`); False:
+        a full solve at every refinement step (the reference the tests compare with).
 
     Returns
     -------
@@ -430,26 +455,51 @@ def bearing_loops(
     rhs = np.column_stack([a.lateral_rows[j].toarray().ravel()[free] for a, j in rows]).astype(complex)
     sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
 
-    def closed(omegas: np.ndarray) -> np.ndarray:
-        """G P_c (= T) of every loop at ω [rad/s]: (n_loops, n_omegas)."""
+    def gains(omegas: np.ndarray) -> np.ndarray:
+        return np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
+
+    def closed(omegas: np.ndarray, keep: list | None = None) -> np.ndarray:
+        """G P_c (= T) of every loop at ω [rad/s]: (n_loops, n_omegas); the solutions are
+        appended to ``keep`` when given."""
         X = list(solver.sweep([(float(x), speed) for x in omegas], rhs))
+        if keep is not None:
+            keep.extend(X)
         Pc = np.stack([np.einsum("ij,ji->i", sense, x) for x in X], axis=1)
-        G = np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
-        return G * Pc
+        return gains(omegas) * Pc
 
     if poles is None:
         poles = closed_loop_poles(model, speed)
     grid = _grid(model, (low, high), n_points, poles)
-    T_grid = closed(grid)
+    responses: list[np.ndarray] = []
+    T_grid = closed(grid, responses if projected else None)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
-    out = []
-    for k, (actuator, j) in enumerate(rows):
-
-        def loop(omegas, k=k):
-            T = T_grid[k] if omegas is grid else closed(np.asarray(omegas, dtype=float))[k]
-            return T / (1.0 - T)
-
+    L_grid = T_grid / (1.0 - T_grid)
+    plans, owner = [], []
+    for k in range(len(rows)):
         gain0 = None if static is None else float(static[k] / (1.0 - static[k]))
-        margins = loop_margins(loop, grid, gain0)
+        plans.append(_refinements(grid, L_grid[k], gain0))
+        owner += [k] * len(plans[-1][0])
+    loop_of = np.array(owner, dtype=np.intp)
+    tasks = [task for refinements, _ in plans for task in refinements]
+
+    def evaluate(omegas: np.ndarray, which: np.ndarray, keep: list | None = None) -> np.ndarray:
+        """L(iω) of each task's loop at its ω: one banded sweep for every loop's refinements."""
+        T = closed(omegas, keep)[loop_of[which], np.arange(omegas.size)]
+        return T / (1.0 - T)
+
+    if projected and tasks:
+
+        def local_models(windows: Sequence[Sequence[int]], active: np.ndarray) -> LocalModels:
+            return LocalModels(solver, speed, responses, windows, loop_of[active], rhs, sense, gains)
+
+        windows = [list(window_of(task.lo, task.hi, grid.size)) for task in tasks]
+        results = projected_refinements(tasks, loop_of, evaluate, local_models, windows, responses)
+    else:
+        results = lockstep([task.start() for task in tasks], evaluate)
+    out, first = [], 0
+    for k, (actuator, j) in enumerate(rows):
+        refinements, finish = plans[k]
+        margins = finish(results[first : first + len(refinements)])
+        first += len(refinements)
         out.append(BearingLoop(actuator.name, _AXES[j], float(speed), margins, grid / (2 * np.pi), 1.0 - T_grid[k]))
     return tuple(out)

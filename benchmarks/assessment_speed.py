@@ -1,0 +1,152 @@
+"""Screening-assessment speed (issue 30, point 2): one point and the envelope, this checkout
+against a reference tree.
+
+Runs the same job in each source tree, in its own process with one BLAS thread:
+``flexshaft.assess(design, resolution)`` on the embedded tuned design, at one point (the design
+with its ``[envelope]`` removed: its own operating point) and over its envelope (4 points).
+Prints the CPU and wall medians of ``--repeats`` warm runs, the cold first call (after the
+imports), the envelope's cost over one point's, and the paired ratio reference/this checkout
+(the trees run alternately, ``--rounds`` times, and the medians are over all their runs).
+``--report`` adds the REPORT resolution (for information; fewer repeats). ``--verdicts``
+compares the verdicts of every embedded design at SCREENING between the trees: pass/fail of
+each check, the governing point, and the largest relative difference of the checks' values.
+
+    .venv/bin/python benchmarks/assessment_speed.py --reference /tmp/ref-main --verdicts
+
+The reference is any flexshaft source tree (e.g. ``git worktree add /tmp/ref-main <commit>``);
+its ``src/`` is put first on PYTHONPATH. Without ``--reference`` only this checkout is timed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import bench_util as bu  # noqa: E402
+
+JOB = r"""
+import json, sys, time
+t0 = time.process_time()
+import flexshaft as fs
+from flexshaft.design.io import tuned_design
+import_cpu = time.process_time() - t0
+repeats, report = int(sys.argv[1]), sys.argv[2] == "1"
+envelope = tuned_design()
+one = envelope.model_copy(update={"envelope": None})
+def timed(design, resolution):
+    w, c = time.perf_counter(), time.process_time()
+    a = fs.assess(design, resolution)
+    return time.process_time() - c, time.perf_counter() - w, a
+out = {"import_cpu": import_cpu}
+cpu, wall, _ = timed(one, fs.SCREENING)
+out["cold"] = {"cpu": cpu, "wall": wall}
+cases = [("one point", one, fs.SCREENING, repeats), ("envelope", envelope, fs.SCREENING, repeats)]
+if report:
+    cases += [("one point REPORT", one, fs.REPORT, 1), ("envelope REPORT", envelope, fs.REPORT, 1)]
+for name, design, resolution, n in cases:
+    timed(design, resolution)  # warm
+    runs = [timed(design, resolution)[:2] for _ in range(n)]
+    out[name] = {"cpu": [r[0] for r in runs], "wall": [r[1] for r in runs]}
+print(json.dumps(out))
+"""
+
+VERDICTS = r"""
+import json, math
+import flexshaft as fs
+from flexshaft.design.io import embedded_design
+out = {}
+for name in ("baseline", "tuned", "current"):
+    a = fs.assess(embedded_design(name), fs.SCREENING)
+    out[name] = {
+        "governing": a.governing_point,
+        "checks": {c.key: [c.status, c.passed, c.value] for c in a.verdict.checks},
+    }
+print(json.dumps(out))
+"""
+
+
+def _median(values: list[float]) -> float:
+    return statistics.median(values)
+
+
+def compare_verdicts(ours: dict, theirs: dict) -> bool:
+    """Print the verdicts' differences; True when pass/fail and the governing point agree."""
+    same = True
+    for design, a in ours.items():
+        b = theirs[design]
+        status = all(a["checks"][k][:2] == b["checks"].get(k, [None, None])[:2] for k in a["checks"])
+        status &= set(a["checks"]) == set(b["checks"])
+        worst = 0.0
+        for key, (_, _, value) in a["checks"].items():
+            other = b["checks"].get(key, [None, None, None])[2]
+            if value is not None and other is not None and other != 0 and abs(other) != float("inf"):
+                worst = max(worst, abs(value - other) / abs(other))
+        governing = a["governing"] == b["governing"]
+        same &= status and governing
+        print(
+            f"  {design:18s} pass/fail {'identical' if status else 'DIFFERENT'}, governing point "
+            f"{'identical' if governing else 'DIFFERENT'} ({a['governing']}), largest relative "
+            f"difference of a check's value {worst:.1e}"
+        )
+    return same
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--reference", type=Path, help="another flexshaft source tree to compare with")
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
+    parser.add_argument("--report", action="store_true", help="also time the REPORT resolution")
+    parser.add_argument("--verdicts", action="store_true", help="compare the embedded designs' verdicts")
+    parser.add_argument("--blas-threads", type=int, default=1)
+    args = parser.parse_args()
+    bu.reexec_with_threads(args.blas_threads, __file__)
+    trees = {"this checkout": HERE.parent}
+    if args.reference:
+        trees["reference"] = args.reference.resolve()
+    runs: dict[str, list[dict]] = {name: [] for name in trees}
+    for _ in range(args.rounds):
+        for name, path in trees.items():
+            runs[name].append(bu.run_in_tree(path, JOB, args.repeats, int(args.report)))
+    info = bu.machine_info()
+    print(f"assessment speed, tuned design, {info.get('date', '')} commit {info.get('git_commit', '?')}")
+    load = info.get("load_average_1_5_15")
+    print(f"  {info.get('cpu', '')}, load {load}, BLAS threads {args.blas_threads}")
+    print(f"  {args.rounds} rounds x {args.repeats} warm repeats per tree")
+    medians: dict[str, dict[str, float]] = {}
+    for name, results in runs.items():
+        print(f"  {name} ({trees[name]}):")
+        cold_cpu = _median([r["cold"]["cpu"] for r in results])
+        cold_wall = _median([r["cold"]["wall"] for r in results])
+        imports = _median([r["import_cpu"] for r in results])
+        print(f"    import flexshaft        CPU {imports:6.3f} s")
+        print(f"    cold first call (1 pt)  CPU {cold_cpu:6.3f} s   wall {cold_wall:6.3f} s")
+        medians[name] = {}
+        for case in [k for k in results[0] if k not in ("cold", "import_cpu")]:
+            cpu = _median([t for r in results for t in r[case]["cpu"]])
+            wall = _median([t for r in results for t in r[case]["wall"]])
+            medians[name][case] = cpu
+            print(f"    {case:22s}  CPU {cpu:6.3f} s   wall {wall:6.3f} s   (warm median)")
+        one, env = medians[name]["one point"], medians[name]["envelope"]
+        print(f"    envelope / one point    {env / one:5.2f}x (CPU)")
+    if "reference" in medians:
+        for case, ref in medians["reference"].items():
+            print(f"  speed-up {case:22s} {ref / medians['this checkout'][case]:5.2f}x (reference/this, CPU)")
+    if args.verdicts:
+        verdicts = {name: bu.run_in_tree(path, VERDICTS) for name, path in trees.items()}
+        if "reference" in verdicts:
+            print("  verdicts at SCREENING, this checkout against the reference:")
+            if not compare_verdicts(verdicts["this checkout"], verdicts["reference"]):
+                raise SystemExit(1)
+        else:
+            for design, v in verdicts["this checkout"].items():
+                print(f"  {design}: governed by {v['governing']}")
+
+
+if __name__ == "__main__":
+    main()
