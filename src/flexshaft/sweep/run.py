@@ -40,7 +40,7 @@ from flexshaft import __version__
 from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.netcdf import write_netcdf
 from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
-from flexshaft.sweep.dask import check_scheduler_address, connect
+from flexshaft.sweep.dask import check_scheduler_address, connect, evaluate_chunk_on_worker
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
@@ -120,9 +120,18 @@ def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.nd
     own = isinstance(client, str)
     client = connect(client) if own else client  # checked address, short connect timeout
     try:
+        # the study (design, outputs, evaluation function) goes to every worker once, not with
+        # every chunk: chunks then carry two integers (benchmarks/dask_scaling.py)
+        shared = client.scatter(study, broadcast=True, hash=False) if todo else study
         futures = {
             client.submit(
-                evaluate_chunk, study, a, b, on_error, pure=False, key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}"
+                evaluate_chunk_on_worker,
+                shared,
+                a,
+                b,
+                on_error,
+                pure=False,
+                key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}",
             ): k
             for k, (a, b) in todo
         }
