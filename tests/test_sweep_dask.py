@@ -43,3 +43,50 @@ def test_local_cluster_matches_local_run(tmp_path):
     xr.testing.assert_identical(local, remote)
     xr.testing.assert_identical(xr.load_dataset(tmp_path / "run" / "results.nc"), local)
     assert np.all(remote["force"].values > 0)
+
+
+_FAULTS = """
+import resource, sys
+import numpy as np
+from flexshaft.sweep.dask import worker_heap
+state = worker_heap() if sys.argv[1] == "fix" else "not called"
+def faults():
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+    for _ in range(50):
+        a = np.ones(2**18)  # 2 MiB, above glibc's 128 kB mmap threshold
+        del a
+    return resource.getrusage(resource.RUSAGE_SELF).ru_minflt - before
+faults()
+print(state, faults())
+"""
+
+
+@pytest.mark.parametrize("trim", [None, "65536", str(2**30)])
+def test_worker_heap_undoes_only_dasks_small_trim_threshold(trim):
+    """Dask's nanny starts workers with MALLOC_TRIM_THRESHOLD_=65536, which turns off glibc's
+    adaptive mmap threshold: every 2 MiB array is then a fresh mmap whose 512 pages fault in
+    again (50 arrays: about 25 600 minor page faults, counted by getrusage). worker_heap() sets
+    the thresholds back above that size (the same loop then faults a few times at most) and
+    leaves any other setting alone."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k != "MALLOC_TRIM_THRESHOLD_"}
+    if trim is not None:
+        env["MALLOC_TRIM_THRESHOLD_"] = trim
+    runs = {}
+    for mode in ("plain", "fix"):
+        out = subprocess.run([sys.executable, "-c", _FAULTS, mode], env=env, capture_output=True, text=True, check=True)
+        state, _, faults = out.stdout.strip().rpartition(" ")
+        runs[mode] = (state, int(faults))
+    if trim == "65536":
+        assert runs["fix"][0] == "heap thresholds set"
+        assert runs["plain"][1] > 50 * 512 * 0.9  # every array faults in anew
+        assert runs["fix"][1] < 50 * 512 * 0.05
+    else:
+        assert runs["fix"][0] == "unchanged"
+        if trim is None:  # glibc's adaptive threshold: the heap reuses the pages
+            assert runs["plain"][1] < 50 * 512 * 0.05
+        else:  # the user's own setting is left alone: it faults as before
+            assert abs(runs["fix"][1] - runs["plain"][1]) < 50 * 512 * 0.1

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.netcdf import write_netcdf
 
 __all__ = [
@@ -37,6 +38,7 @@ __all__ = [
     "dataframe",
     "html_table",
     "netcdf_path",
+    "new_arrays",
     "new_dataset",
     "text_table",
 ]
@@ -64,15 +66,17 @@ def coded(labels, meanings: Sequence[str], long_name: str) -> tuple[np.ndarray, 
     return codes, attrs
 
 
+def new_arrays(variables: dict, coords: dict, title: str, **attrs: Any) -> LabelledArrays:
+    """The plain-array content of :func:`new_dataset` (no xarray import): study results travel
+    between processes as these (:mod:`flexshaft.analyses.labelled`)."""
+    return LabelledArrays(
+        variables, coords, {"Conventions": CONVENTIONS, "title": title, "source": f"flexshaft {__version__}", **attrs}
+    )
+
+
 def new_dataset(variables: dict, coords: dict, title: str, **attrs: Any):
     """An :class:`xarray.Dataset` with the package's global attributes."""
-    import xarray as xr
-
-    return xr.Dataset(
-        variables,
-        coords=coords,
-        attrs={"Conventions": CONVENTIONS, "title": title, "source": f"flexshaft {__version__}", **attrs},
-    )
+    return new_arrays(variables, coords, title, **attrs).to_dataset()
 
 
 class StationWarning(UserWarning):

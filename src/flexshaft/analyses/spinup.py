@@ -47,9 +47,10 @@ from flexshaft.analyses.guards import (
     check_spin_speed,
     require_finite,
 )
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.analyses.receptance import ActuatorReceptance, actuator_receptance
 from flexshaft.analyses.response import orbit_amplitude
-from flexshaft.analyses.results import ResultMixin, new_dataset
+from flexshaft.analyses.results import ResultMixin, new_arrays, new_dataset
 from flexshaft.assembly.model import Controller, Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.driveline import actuator_figure, imbalance_response_figure
@@ -408,8 +409,12 @@ class SpinupMap(ResultMixin):
 
     def to_dataset(self):
         """The map as an :class:`xarray.Dataset` with CF-style attributes."""
+        return self.to_arrays().to_dataset()
+
+    def to_arrays(self) -> LabelledArrays:
+        """The content of :meth:`to_dataset` as plain labelled arrays (no xarray import)."""
         dims = ("kp", "kd")
-        return new_dataset(
+        return new_arrays(
             {
                 "shaft_peak": (dims, self.shaft_peak, {"units": "m", "long_name": "peak shaft orbit over speed"}),
                 "shaft_peak_speed": (

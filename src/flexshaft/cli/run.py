@@ -152,7 +152,6 @@ def run_pipeline(
     from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.plot.output import FIGURE_MODULES
-    from flexshaft.report.driveline import write_run_report
     from flexshaft.resolution import REPORT
     from flexshaft.thesis.report_studies import start_thesis_studies
     from flexshaft.verdict.assess import assess
@@ -161,13 +160,9 @@ def run_pipeline(
     with_studies = studies is not Studies.none and loaded.design.operating.speed_rpm > 0
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
-    if with_studies:
-        # xarray once, here, before the workers fork: both workers and this process need it
-        # (the studies' results are Datasets). Its import and its first Dataset, which loads
-        # the optional array backends (dask when installed), cost 0.5-0.9 s of CPU each time.
-        import xarray
-
-        xarray.Dataset({"warm": ("x", [0.0])})
+    # No xarray before the first analysis: the studies' results travel as plain arrays
+    # (flexshaft.analyses.labelled); this process imports it only to write the studies' .nc
+    # files at the end (benchmarks/startup_timing.py).
     with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, progress:
         # the thesis studies are no part of the assessment: they run beside it on the same workers
         pending = start_thesis_studies(loaded.design, studies.value, pool) if with_studies else None
@@ -176,6 +171,8 @@ def run_pipeline(
             assessment = assess(loaded.design, REPORT, executor=pool, progress=progress.step)
         thesis = pending.result(progress.step) if pending is not None else None
         progress.step("writing the report")
+        from flexshaft.report.driveline import write_run_report  # after the analyses: 0.1-0.2 s of imports
+
         page = write_run_report(
             assessment,
             folder,

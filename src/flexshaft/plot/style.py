@@ -20,7 +20,6 @@ from typing import TYPE_CHECKING, Any, Literal, ParamSpec, TypeVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from flexshaft.plot.png import fast_png_canvas
 from flexshaft.units import MM_PER_M, RPM_PER_HZ  # the figures' unit conversions (re-exported for plot/)
 
 if TYPE_CHECKING:
@@ -130,15 +129,15 @@ def new_figure(
                 f"(got {axes.size} object(s))"
             )
         return axes[0].figure, axes.reshape(nrows, ncols)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
     width, height = figsize
     fig = Figure(figsize=figsize)
     # An Agg canvas from the start: text measured while the figure is built (contour labels)
     # then asks it for a renderer; a bare Figure's base canvas instead prints the whole figure
-    # to a PNG in memory for every label measured (31 extra draws in the report). Its PNG
-    # files are written without Pillow's per-row filter search (flexshaft.plot.png).
-    fast_png_canvas()(fig)
+    # to a PNG in memory for every label measured (31 extra draws in the report).
+    FigureCanvasAgg(fig)
     panel_h = (height - top - bottom - (nrows - 1) * hspace) / nrows
     panel_w = (width - left - right - (ncols - 1) * wspace) / ncols
     fig.subplots_adjust(

@@ -37,13 +37,14 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.netcdf import write_netcdf
 from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
-from flexshaft.sweep.dask import check_scheduler_address, connect
+from flexshaft.sweep.dask import check_scheduler_address, connect, evaluate_chunk_on_worker
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
 
-__all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_dataset", "write_netcdf"]
+__all__ = ["chunk_bounds", "finished_chunks", "run_sweep", "to_arrays", "to_dataset", "write_netcdf"]
 
 RESULTS = "results.nc"
 
@@ -119,9 +120,18 @@ def _run_dask(study: Study, todo, on_error, client) -> Iterator[tuple[int, np.nd
     own = isinstance(client, str)
     client = connect(client) if own else client  # checked address, short connect timeout
     try:
+        # the study (design, outputs, evaluation function) goes to every worker once, not with
+        # every chunk: chunks then carry two integers (benchmarks/dask_scaling.py)
+        shared = client.scatter(study, broadcast=True, hash=False) if todo else study
         futures = {
             client.submit(
-                evaluate_chunk, study, a, b, on_error, pure=False, key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}"
+                evaluate_chunk_on_worker,
+                shared,
+                a,
+                b,
+                on_error,
+                pure=False,
+                key=f"flexshaft-chunk-{k}-{os.urandom(4).hex()}",
             ): k
             for k, (a, b) in todo
         }
@@ -153,8 +163,11 @@ def _sigterm_to_exception():
 
 def to_dataset(study: Study, values: np.ndarray):
     """Results as an :class:`xarray.Dataset`: one variable per output over the study's dims."""
-    import xarray as xr
+    return to_arrays(study, values).to_dataset()
 
+
+def to_arrays(study: Study, values: np.ndarray) -> LabelledArrays:
+    """The content of :func:`to_dataset` as plain labelled arrays (no xarray import)."""
     dims = tuple(v.name for v in study.variables)
     grid = values.reshape(study.shape + (len(study.outputs),))
     coords = {}
@@ -175,7 +188,7 @@ def to_dataset(study: Study, values: np.ndarray):
         "flexshaft_version": __version__,
         "study_fingerprint": study.fingerprint(),
     }
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    return LabelledArrays(data, coords, attrs)
 
 
 def run_sweep(
@@ -187,6 +200,7 @@ def run_sweep(
     chunk_size: int | None = None,
     progress: bool = True,
     on_error: str = "raise",
+    as_arrays: bool = False,
 ):
     """Compute a study and return its results as an :class:`xarray.Dataset`.
 
@@ -209,6 +223,10 @@ def run_sweep(
         Show a progress bar (rich) on stderr.
     on_error : {"raise", "nan"}
         What a point whose evaluation raises becomes: stop the run, or NaN outputs.
+    as_arrays : bool
+        Return the Dataset's content as :class:`~flexshaft.analyses.labelled.LabelledArrays`
+        (plain arrays; ``.to_dataset()`` gives the Dataset): no xarray import without
+        ``run_dir`` (the studies of ``flexshaft run`` travel between processes as these).
 
     Raises
     ------
@@ -272,10 +290,10 @@ def run_sweep(
         bar.stop()
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
-    ds = to_dataset(study, values)
+    arrays = to_arrays(study, values)
     if run_path is not None:
-        write_netcdf(ds, run_path / RESULTS)
-    return ds
+        write_netcdf(arrays.to_dataset(), run_path / RESULTS)
+    return arrays if as_arrays else arrays.to_dataset()
 
 
 def _whole(value: Any) -> bool:

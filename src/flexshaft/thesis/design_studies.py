@@ -23,10 +23,11 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Union
 
 import numpy as np
 
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design
 from flexshaft.files import atomic_write_text
@@ -46,12 +47,19 @@ from flexshaft.units import rad_s_to_rpm
 if TYPE_CHECKING:
     from xarray import Dataset
 
+#: A study's results: a Dataset from :func:`design_studies`; the plain-array content of one
+#: (:class:`~flexshaft.analyses.labelled.LabelledArrays`, ``.to_dataset()``) from
+#: :func:`start_design_studies`, as they travel from the workers to ``flexshaft run``'s report.
+StudyData = Union["Dataset", LabelledArrays]
+
 __all__ = [
     "COSTS",
     "DesignStudies",
     "STUDY_GRIDS",
+    "StudyData",
     "TABLE_ANGLES",
     "THESIS",
+    "as_datasets",
     "design_studies",
     "finish_design_studies",
     "headline",
@@ -117,16 +125,16 @@ class DesignStudies:
     design_name: str
     resolution: str
     operating_speed: float  # rad/s
-    ply_angle: Dataset | None = None  # over alpha [deg]: safety factor and critical-ply stresses
-    two_angle: Dataset | None = None  # over (alpha, beta) [deg]
-    wall: Dataset | None = None  # over wall_thickness [m]
-    forced_response: Dataset | None = None  # (wall_thickness, speed): max shaft orbit [m]
-    gain: Dataset | None = None  # over kp [N/m]
-    buckling: Dataset | None = None  # over wall_thickness [m]
-    spinup_map: Dataset | None = None  # over (kp, kd)
-    surfaces: Dataset | None = None  # (case, x, speed): shaft orbit [m]
-    tuned: Dataset | None = None  # (case, speed): before/after spin-up curves
-    stability_map: Dataset | None = None  # over (kp, kd): onset speed, damping ratio
+    ply_angle: StudyData | None = None  # over alpha [deg]: safety factor and critical-ply stresses
+    two_angle: StudyData | None = None  # over (alpha, beta) [deg]
+    wall: StudyData | None = None  # over wall_thickness [m]
+    forced_response: StudyData | None = None  # (wall_thickness, speed): max shaft orbit [m]
+    gain: StudyData | None = None  # over kp [N/m]
+    buckling: StudyData | None = None  # over wall_thickness [m]
+    spinup_map: StudyData | None = None  # over (kp, kd)
+    surfaces: StudyData | None = None  # (case, x, speed): shaft orbit [m]
+    tuned: StudyData | None = None  # (case, speed): before/after spin-up curves
+    stability_map: StudyData | None = None  # over (kp, kd): onset speed, damping ratio
     optimal_angle: float | None = None  # deg
     optimal_angle_safety_factor: float | None = None
     best_two_angle: tuple[float, float] | None = None  # (alpha, beta) deg
@@ -204,7 +212,13 @@ def design_studies(
     res, run = start_design_studies(
         design, resolution, actuator_gap, executor, jobs=jobs, progress_bars=progress is True
     )
-    return finish_design_studies(res, run, progress)
+    return as_datasets(finish_design_studies(res, run, progress))
+
+
+def as_datasets(results: DesignStudies) -> DesignStudies:
+    """``results`` with every study as an :class:`xarray.Dataset` (imports xarray)."""
+    found = {name: getattr(results, name) for name in _DATASETS}
+    return replace(results, **{k: v.to_dataset() for k, v in found.items() if isinstance(v, LabelledArrays)})
 
 
 def start_design_studies(
@@ -238,7 +252,9 @@ def plan_design_studies(
         raise ValueError(f"resolution must be one of {sorted(STUDY_GRIDS)}, got {resolution!r}")
     grid = STUDY_GRIDS[resolution]
     design = design if design is not None else baseline_design()
-    run = {"jobs": int(jobs), "progress": bool(progress_bars)}
+    # the studies' results travel from the workers as plain arrays: no xarray in any process
+    # until a Dataset is asked for (design_studies) or written (save_study_data)
+    run = {"jobs": int(jobs), "progress": bool(progress_bars), "as_arrays": True}
     model = build_model(design)
     laminated = model.shaft.laminate is not None
     active = bool(model.actuators) and model.all_pd
@@ -443,7 +459,7 @@ def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Pat
         ds = getattr(results, name)
         if ds is not None:
             paths[name] = folder / f"study_{name}.nc"
-            write_netcdf(ds, paths[name])
+            write_netcdf(ds.to_dataset() if isinstance(ds, LabelledArrays) else ds, paths[name])
     paths["headline"] = folder / "design_studies.json"
     atomic_write_text(paths["headline"], json.dumps(headline(results), indent=2))
     return paths

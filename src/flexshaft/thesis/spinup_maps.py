@@ -9,6 +9,7 @@ import functools
 
 import numpy as np
 
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.analyses.receptance import ActuatorReceptance
 from flexshaft.analyses.spinup import (
     actuator_receptance,
@@ -60,12 +61,10 @@ def _receptance(model: Model, speeds: bytes) -> ActuatorReceptance:
 def spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     """(K_p, K_d) map, response surfaces and the tuned-gain comparison on one receptance: the
     :class:`DesignStudies` fields they fill."""
-    import xarray as xr  # here, not above: xarray costs 0.5-0.9 s to import
-
     before = [a.controller for a in model.actuators]  # the design's own laws
     rec = clustered_receptance(model, before, spinup_speeds(model, grid["map_speeds"]))
     smap = spinup_map(model, grid["map_kp"], grid["map_kd"], receptance=rec)
-    ds = smap.to_dataset()
+    ds = smap.to_arrays()
     ds.attrs["title"] = "spin-up peaks over the actuator gains (thesis figures 3.12, 3.15, 3.16)"
     first = model.actuators[0].controller
     gains_before = (float(first.kp), float(first.kd))
@@ -89,7 +88,7 @@ def spinup_studies(model, grid, actuator_gap: float | None) -> dict:
 
     cases = [(f"K_p = {kp:.3g} N/m, K_d = {kd:.4g} N s/m", kp, kd) for kp, kd in SURFACE_GAINS]
     orbits = [spinup_curves(rec, (kp, kd)).shaft_orbit for _, kp, kd in cases]
-    surfaces = xr.Dataset(
+    surfaces = LabelledArrays(
         {
             "shaft_orbit": (
                 ("case", "x", "speed"),
@@ -111,7 +110,7 @@ def spinup_studies(model, grid, actuator_gap: float | None) -> dict:
     curves = [spinup_curves(rec, c) for c in (before, after)]
     refined = [_refined_peak(model, c, rec.speeds, cv.shaft_peak) for c, cv in zip((before, after), curves)]
     (peak_before, speed_before), (peak_after, speed_after) = refined
-    tuned = xr.Dataset(
+    tuned = LabelledArrays(
         {
             "shaft_peak": (
                 ("case", "speed"),

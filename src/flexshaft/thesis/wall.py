@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.spinup import actuator_receptance, clustered_receptance, spinup_curves, spinup_speeds
@@ -117,8 +118,6 @@ def quietest_spinup_wall(wall) -> tuple[float, float] | None:
 def forced_response(design, walls, n_speeds: int):
     """Largest shaft orbit [m] vs speed (the spin-up scan's range of the report resolution,
     :data:`~flexshaft.resolution.REPORT`) for a few walls [m] (thesis figure 3.5)."""
-    import xarray as xr  # here, not above: xarray costs 0.5-0.9 s to import
-
     peaks = []
     speeds = None
     for wall in walls:
@@ -132,7 +131,7 @@ def forced_response(design, walls, n_speeds: int):
             dm = model.dofs
             n = np.arange(dm.n_shaft_nodes)
             peaks.append(orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")]).max(axis=(0, 1)))
-    return xr.Dataset(
+    return LabelledArrays(
         {
             "shaft_peak": (
                 ("wall_thickness", "speed"),

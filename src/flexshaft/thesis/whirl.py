@@ -14,6 +14,7 @@ import numpy as np
 
 from flexshaft.analyses.campbell import default_basis_size
 from flexshaft.analyses.eigen import reduce
+from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
@@ -136,10 +137,8 @@ def stack_maps(rows) -> StabilityMap:
 
 
 def stability_dataset(smap: StabilityMap):
-    """The stability margin map as a Dataset."""
-    import xarray as xr  # here, not above: xarray costs 0.5-0.9 s to import
-
-    return xr.Dataset(
+    """The stability margin map as labelled arrays (``.to_dataset()``: the xarray Dataset)."""
+    return LabelledArrays(
         {
             "onset_speed": (
                 ("kp", "kd"),

@@ -1,0 +1,167 @@
+"""Each report figure's cost against its floor: the same layout drawn with the least machinery.
+
+The figures of ``flexshaft run``'s report (the baseline's assessment and the thesis studies,
+computed once or loaded from ``--cache``) are drawn in this process, serially, after one
+untimed round (matplotlib imported, fonts loaded). For each figure, median of ``--repeats``:
+
+* **cost**: what the report does: the figure function (``job.function``: figure, axes,
+  artists) and ``Figure.savefig`` to a PNG in memory at the report's resolution and options;
+* **floor**: the same figure, built and drawn once untimed, its every tick then frozen
+  (each axis's ticks at the positions just drawn, ``FixedLocator``, with the labels just drawn,
+  ``FixedFormatter``: no locating, formatting or label measuring), drawn again (``canvas.draw``)
+  and encoded with one zlib pass at level 1 and no PNG row filters (the least work a PNG can
+  take; Pillow tries five filters on every row). What is left is the artists themselves:
+  lines, patches, text, images.
+
+The ratio cost / floor is the overhead of the machinery the report uses (locators,
+formatters, building the figure, the encoder). CPU times of this process (``process_time``);
+the shared VM's load moves them less than wall times.
+
+    OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl
+    .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl \
+        --reference /tmp/ref/src --reference-cache /tmp/run-ref.pkl
+
+With ``--reference SRC`` the same script runs on that checkout in a subprocess (its own cache
+file: the pickles hold that code's classes) and both tables are printed with the ratio of the
+totals.
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import zlib
+from pathlib import Path
+
+os.environ.setdefault("MPLBACKEND", "Agg")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+
+def _results(cache: Path | None):
+    from report_timing import load_results  # the same assessment and studies as the report timing
+
+    return load_results("report", cache)
+
+
+def _freeze_ticks(fig) -> None:
+    """Every axis of ``fig`` (drawn once) keeps the ticks and labels it just drew, fixed."""
+    from matplotlib.ticker import FixedFormatter, FixedLocator, NullFormatter
+
+    for ax in fig.axes:
+        for axis in ax._axis_map.values() if hasattr(ax, "_axis_map") else (ax.xaxis, ax.yaxis):
+            major = [t for t in axis.get_major_ticks() if t.get_visible()]
+            locs = list(axis.get_majorticklocs())[: len(major)]
+            labels = [t.get_text() for t in axis.get_majorticklabels()][: len(locs)]
+            minor_locs = list(axis.get_minorticklocs())
+            minor_labels = [t.get_text() for t in axis.get_minorticklabels()][: len(minor_locs)]
+            axis.set_major_locator(FixedLocator(locs))
+            axis.set_major_formatter(FixedFormatter(labels))
+            axis.set_minor_locator(FixedLocator(minor_locs))
+            axis.set_minor_formatter(FixedFormatter(minor_labels) if any(minor_labels) else NullFormatter())
+
+
+def _least_png(rgba) -> bytes:
+    """One zlib pass (level 1) over unfiltered rows: the PNG encoder's least work (the IDAT
+    payload; the few header bytes cost nothing)."""
+    import numpy as np
+
+    pixels = np.asarray(rgba)
+    rows = np.empty((pixels.shape[0], 1 + pixels.shape[1] * 4), dtype=np.uint8)
+    rows[:, 0] = 0
+    rows[:, 1:] = pixels.reshape(pixels.shape[0], -1)
+    return zlib.compress(rows.data, 1)
+
+
+def _save_like_the_report(fig) -> None:
+    from flexshaft.plot import output
+
+    kwargs = {"pil_kwargs": {"compress_level": getattr(output, "PNG_COMPRESSION", 1)}}
+    fig.savefig(io.BytesIO(), dpi=output.PNG_DPI, format="png", **kwargs)
+
+
+def measure(cache: Path | None, repeats: int) -> dict:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flexshaft.plot.output import PNG_DPI
+    from flexshaft.report.driveline import plan_run_report
+
+    res = _results(cache)
+    with tempfile.TemporaryDirectory() as folder:
+        jobs = plan_run_report(res[0], folder, thesis=res[1]).jobs
+    cost: dict[str, list[float]] = {}
+    floor: dict[str, list[float]] = {}
+    for round_ in range(repeats + 1):  # round 0: warm-up, not counted
+        for job in jobs:
+            c0 = time.process_time()
+            fig = job.function(*job.args, **job.kwargs)
+            _save_like_the_report(fig)
+            c1 = time.process_time()
+            fig = job.function(*job.args, **job.kwargs)
+            if not isinstance(fig.canvas, FigureCanvasAgg):
+                FigureCanvasAgg(fig)
+            fig.set_dpi(PNG_DPI)
+            fig.canvas.draw()
+            _freeze_ticks(fig)
+            c2 = time.process_time()
+            fig.canvas.draw()
+            _least_png(fig.canvas.buffer_rgba())
+            c3 = time.process_time()
+            if round_:
+                cost.setdefault(job.stem, []).append(c1 - c0)
+                floor.setdefault(job.stem, []).append(c3 - c2)
+    return {stem: (statistics.median(cost[stem]), statistics.median(floor[stem])) for stem in cost}
+
+
+def _print(title: str, data: dict) -> None:
+    total_cost = sum(c for c, _ in data.values())
+    total_floor = sum(f for _, f in data.values())
+    print(
+        f"\n{title}: {len(data)} figures, cost {total_cost:.2f} s, floor {total_floor:.2f} s, "
+        f"ratio {total_cost / total_floor:.2f}"
+    )
+    print(f"  {'figure':38s} {'cost [ms]':>9s} {'floor [ms]':>10s} {'ratio':>6s}")
+    for stem, (c, f) in sorted(data.items(), key=lambda item: -item[1][0]):
+        print(f"  {stem:38s} {c * 1e3:9.1f} {f * 1e3:10.1f} {c / f:6.2f}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--cache", type=Path, default=None, help="pickle of the assessment and studies (reused or written)")
+    p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--reference", default=None, help="another checkout's src folder, measured in a subprocess")
+    p.add_argument("--reference-cache", type=Path, default=None)
+    p.add_argument("--json", action="store_true", help="print the measurements as JSON only")
+    a = p.parse_args(argv)
+    data = measure(a.cache, a.repeats)
+    if a.json:
+        print(json.dumps(data))
+        return 0
+    print(
+        f"report figures, CPU time, median of {a.repeats}; load average {os.getloadavg()[0]:.2f}, "
+        f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}"
+    )
+    _print("this checkout", data)
+    if a.reference is not None:
+        cmd = [sys.executable, __file__, "--repeats", str(a.repeats), "--json"]
+        if a.reference_cache is not None:
+            cmd += ["--cache", str(a.reference_cache)]
+        env = {**os.environ, "PYTHONPATH": os.path.abspath(a.reference)}
+        out = subprocess.run(cmd, env=env, capture_output=True, text=True, check=True).stdout
+        ref = json.loads(out.strip().splitlines()[-1])
+        _print(f"reference ({a.reference})", {k: tuple(v) for k, v in ref.items()})
+        common = sorted(set(ref) & set(data))
+        now_cost = sum(data[k][0] for k in common)
+        ref_cost = sum(ref[k][0] for k in common)
+        print(f"\nreference / now, total cost of the {len(common)} common figures: {ref_cost / now_cost:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
