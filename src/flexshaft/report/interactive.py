@@ -148,13 +148,18 @@ def _limit_line(x0: float, x1: float, y: float, name: str, colour: str, axis: st
 # Figures
 
 
+_AXIS_END = 3.0  # where the margin axis stops [-]
+
+
 def margins_figure(a: Assessment) -> dict:
     """Every check's normalised margin (:func:`~flexshaft.optimize.evaluate.normalised_margin`:
     negative fails) as a bar, green pass, red fail, grey not evaluated."""
     checks = a.verdict.checks
     rows = verdict_rows(a.verdict, compact=True)
     margins = [normalised_margin(c, a.operating_speed) for c in checks]
-    shown = [0.0 if not math.isfinite(m) else m for m in margins]
+    # a pass with nothing to measure (+inf: no phase crossover, no critical speed) reaches the
+    # axis end, not zero, which would read "at the limit"; not evaluated (NaN) draws no bar
+    shown = [_AXIS_END if m == math.inf else (m if math.isfinite(m) else 0.0) for m in margins]
     text = [f"{row[3]} ({row[4]})" for row in rows]
     hover = [
         f"<b>{html.escape(row[0])}</b><br>value {html.escape(row[1])}, limit {html.escape(row[2])}"
@@ -183,7 +188,7 @@ def margins_figure(a: Assessment) -> dict:
             yaxis={"autorange": "reversed", "automargin": True},
             # the margins span decades (a Tsai-Wu factor of 30 beside a 2 % excursion margin): the
             # axis stops at 3 (the label gives the value), zoom out to see the rest
-            xaxis={"title": {"text": "normalised margin [-]"}, "range": [min(-1.0, 1.1 * min(shown)), 3.0]},
+            xaxis={"title": {"text": "normalised margin [-]"}, "range": [min(-1.0, 1.1 * min(shown)), _AXIS_END]},
             showlegend=False,
             margin={"l": 16, "r": 16, "t": 40, "b": 48},
         ),

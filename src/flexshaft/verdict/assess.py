@@ -43,7 +43,7 @@ from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
 from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.gather import gather_evidence
-from flexshaft.verdict.operating_point import PointAnalyses, add_report_detail, analyse_point
+from flexshaft.verdict.operating_point import PointAnalyses, add_campbell, add_report_detail, analyse_point
 from flexshaft.verdict.result import Verdict
 
 __all__ = ["Assessment", "PointAssessment", "assess"]
@@ -193,6 +193,8 @@ def assess(
         if progress is not None:
             progress(f"{governing}: the report's detail")
         judged[index] = _judged(governing, add_report_detail(judged[index].analyses))
+    elif resolution.campbell_speeds:  # a Campbell diagram to draw (the explorer's) at the governing point
+        judged[index] = _judged(governing, add_campbell(judged[index].analyses))
     shown = judged[index]
     return Assessment(
         **{**vars(shown.analyses), "design": design},

@@ -79,7 +79,15 @@ from flexshaft.thermal.study import ThermalResults
 from flexshaft.units import celsius_to_kelvin
 from flexshaft.verdict.point_tasks import campbell_task, independent_tasks, report_buckling, report_thermal
 
-__all__ = ["OVERDAMPED_RATIO", "PointAnalyses", "add_report_detail", "analyse_point", "lateral_modes", "whirl_modes"]
+__all__ = [
+    "OVERDAMPED_RATIO",
+    "PointAnalyses",
+    "add_campbell",
+    "add_report_detail",
+    "analyse_point",
+    "lateral_modes",
+    "whirl_modes",
+]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -318,6 +326,13 @@ def add_report_detail(p: PointAnalyses, resolution: Resolution | None = None) ->
         buckling=report_buckling(model) if p.buckling is not None else None,
         thermal=report_thermal(model) if p.thermal is not None else None,
     )
+
+
+def add_campbell(p: PointAnalyses) -> PointAnalyses:
+    """``p`` with its Campbell diagram at ``p.resolution`` and the critical speeds labelled by
+    it; nothing else (the verdict's numbers do not change)."""
+    camp = campbell_task(p.model, p.resolution)
+    return dataclasses.replace(p, campbell=camp, criticals=p.criticals.labelled(camp))
 
 
 #: Roots with at least this damping ratio are no whirl modes: overdamped or real roots (the
