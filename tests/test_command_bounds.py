@@ -10,6 +10,7 @@ maxima are measured in docs/limits.md (benchmarks/command_limits.py).
 from __future__ import annotations
 
 import math
+import sys
 import time
 from pathlib import Path
 
@@ -30,6 +31,7 @@ def nothing_computed(monkeypatch):
     def forbidden(*args, **kwargs):
         raise AssertionError("computed before bounding the work")
 
+    before = set(sys.modules)
     for module, name in (
         ("flexshaft.analyses.stability", "stability"),
         ("flexshaft.thesis.spinup_maps", "spinup_map"),
@@ -40,6 +42,13 @@ def nothing_computed(monkeypatch):
         ("flexshaft.thesis.two_angles", "two_angle_study"),
     ):
         monkeypatch.setattr(importlib.import_module(module), name, forbidden)
+    yield
+    # a module first imported during the test bound the forbidden stand-in by name (``from ...
+    # import stability``) and would keep it for the rest of the session: forget it, so that the
+    # next import runs it again with the real function
+    for module in set(sys.modules) - before:
+        if module.startswith("flexshaft"):
+            del sys.modules[module]
 
 
 def refused_quickly(args: list[str], *words: str) -> str:
@@ -143,3 +152,26 @@ def test_the_help_states_the_bound(command, option) -> None:
 def test_the_documented_maxima_run(args) -> None:
     result = runner.invoke(app, [*args, "--json"])
     assert result.exit_code == 0, result.output
+
+
+def test_the_eigen_bounds_cover_the_largest_basis_the_accuracy_loop_reaches() -> None:
+    """``stability`` and ``modes`` grow their basis (doubling) until the estimated eigenvalue
+    error meets the tolerance: asked for 1e-15, below round-off, the loop can only stop at its
+    cap, which the memory bound must cover (the time bound assumes the first basis tried)."""
+    import numpy as np
+
+    import flexshaft
+    from flexshaft.analyses.campbell import default_basis_size
+    from flexshaft.analyses.stability import stability
+    from flexshaft.cli.bounds import eigen_basis_range
+    from flexshaft.design import baseline_design
+
+    model = flexshaft.build_model(baseline_design())
+    free = int(model.dofs.free.size)
+    first, largest = eigen_basis_range(4, default_basis_size(4), free, actuators=2)
+    speeds = np.array([0.0, 300.0])
+    assert stability(model, speeds, n_modes=4).basis_size <= first
+    for n_modes in (4, 12):
+        first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), free, actuators=2)
+        grown = stability(model, speeds, n_modes=n_modes, tolerance=1e-15)
+        assert first < grown.basis_size <= largest

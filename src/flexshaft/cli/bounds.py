@@ -33,6 +33,7 @@ __all__ = [
     "check_spinup_map",
     "check_stability",
     "check_sweep",
+    "eigen_basis_range",
 ]
 
 # The rest of the package is imported inside the functions that need it: the design schema
@@ -94,20 +95,40 @@ def _model_size(design: Any):
         return problem_size(design, "model")
 
 
+def eigen_basis_range(n_modes: int, plain_default: int, free_dofs: int, actuators: int = 0) -> tuple[int, int]:
+    """(first, largest) basis vectors of an accuracy-controlled eigen-solve of ``n_modes``
+    modes (:func:`~flexshaft.analyses.eigen_error.tracked_to_accuracy`): the enriched basis
+    tried first, and the most it can grow to. The loop doubles the basis (``size`` modes and the
+    static corrections of the lowest ``enrich``) while twice the size stays within four times
+    the plain default basis (``plain_default`` vectors); each corrected mode adds up to five
+    vectors (G, the dampers, three loss matrices) and each actuator two
+    (:func:`~flexshaft.analyses.reduced_basis.enrich_basis`); the whole model caps both."""
+    from flexshaft.analyses.eigen_error import accurate_basis
+
+    size, enrich = accurate_basis(n_modes)
+    first = min(size + 5 * enrich + 2 * actuators, free_dofs)
+    cap = max(4 * plain_default, 2 * size)
+    while 2 * size <= cap:
+        size, enrich = 2 * size, 2 * enrich
+    return first, min(size + 5 * enrich + 2 * actuators, free_dofs)
+
+
 def check_stability(design: Any, n_speeds: int, n_modes: int, shafts: int = 1) -> None:
-    """``flexshaft stability``: ``shafts`` × ``n_speeds`` eigen-solutions of the basis of
-    ``n_modes`` tracked modes (:func:`flexshaft.analyses.campbell.default_basis_size`)."""
+    """``flexshaft stability``: ``shafts`` × ``n_speeds`` eigen-solutions of the basis chosen
+    for accuracy for ``n_modes`` tracked modes: the time at the first basis tried, the memory at
+    the largest it can grow to (:func:`eigen_basis_range`)."""
     from flexshaft.analyses.campbell import default_basis_size
     from flexshaft.assembly.size import eigen_seconds
 
     size = _model_size(design)
-    basis = min(max(default_basis_size(n_modes), 48), size.free_dofs)
-    states = 2 * basis + size.controller_states
+    first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), size.free_dofs, size.actuators)
+    states = 2 * first + size.controller_states
+    worst = 2 * largest + size.controller_states
     seconds = shafts * (size.time_seconds + n_speeds * eigen_seconds(states))
-    memory = 4 * 16.0 * states**2 + 16.0 * n_speeds * n_modes * shafts * 4
+    memory = 4 * 16.0 * worst**2 + 16.0 * n_speeds * n_modes * shafts * 4
     _refuse_if_large(
-        f"--n-speeds {n_speeds} × --n-modes {n_modes} (a basis of {basis} modes, {states} states"
-        f"{f', {shafts} shafts' if shafts > 1 else ''}, {size.free_dofs:,} free DOFs)",
+        f"--n-speeds {n_speeds} × --n-modes {n_modes} (a basis of {first} to {largest} vectors, {states} to "
+        f"{worst} states{f', {shafts} shafts' if shafts > 1 else ''}, {size.free_dofs:,} free DOFs)",
         seconds,
         memory,
         "use fewer speeds (--n-speeds) or tracked modes (--n-modes)",
@@ -115,17 +136,19 @@ def check_stability(design: Any, n_speeds: int, n_modes: int, shafts: int = 1) -
 
 
 def check_modes(design: Any, n_modes: int) -> None:
-    """``flexshaft modes``: one eigen-solution of the basis of ``n_modes`` modes."""
+    """``flexshaft modes``: one eigen-solution of the basis chosen for accuracy for ``n_modes``
+    modes: the time at the first basis tried, the memory at the largest (:func:`eigen_basis_range`)."""
     from flexshaft.analyses.modal import default_basis_size
     from flexshaft.assembly.size import eigen_seconds
 
     size = _model_size(design)
-    basis = min(default_basis_size(n_modes), size.free_dofs)
-    states = 2 * basis + size.controller_states
+    first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), size.free_dofs, size.actuators)
+    states = 2 * first + size.controller_states
+    worst = 2 * largest + size.controller_states
     _refuse_if_large(
-        f"--n-modes {n_modes} (a basis of {basis} modes, {states} states)",
+        f"--n-modes {n_modes} (a basis of {first} to {largest} vectors, {states} to {worst} states)",
         size.time_seconds + eigen_seconds(states),
-        8.0 * size.free_dofs * basis + 4 * 16.0 * states**2,
+        8.0 * size.free_dofs * largest + 4 * 16.0 * worst**2,
         "ask for fewer modes (--n-modes)",
     )
 
