@@ -420,8 +420,9 @@ def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
 def test_png_files_hold_the_pixels_agg_drew(tmp_path, facecolor):
     """Reference: the figure's Agg buffer at the same resolution (``canvas.draw`` and
     ``buffer_rgba``, matplotlib's public API). The PNG save_figure writes, decoded by Pillow,
-    holds the same pixels exactly and the resolution, through matplotlib's own canvas and
-    ``savefig`` (no canvas of flexshaft's overriding a print method)."""
+    holds the same pixels exactly and the resolution, through matplotlib's own canvas (no
+    canvas of flexshaft's overriding a print method): RGB for an opaque figure (its alpha is
+    255 everywhere), RGBA when the figure's face is transparent. The figure's dpi is kept."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image
 
@@ -434,14 +435,37 @@ def test_png_files_hold_the_pixels_agg_drew(tmp_path, facecolor):
     axes[0, 0].plot([0.0, 1.0, 2.0], [0.0, 1.0, 0.5], label="a")
     axes[0, 1].contourf(np.random.default_rng(0).random((8, 8)), cmap="viridis")
     axes[0, 0].legend()
+    own_dpi = fig.dpi
     ours = save_figure(fig, tmp_path, "ours", svg=False, dpi=97.0)["png"]
+    assert fig.dpi == own_dpi
     fig.set_dpi(97.0)
     fig.canvas.draw()
     reference = np.asarray(fig.canvas.buffer_rgba())
     with Image.open(ours) as mine:
         assert mine.size == (reference.shape[1], reference.shape[0])
+        assert mine.mode == ("RGB" if facecolor == "white" else "RGBA")
         np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), reference)
         assert mine.info["dpi"] == pytest.approx((97.0, 97.0), abs=1e-2)  # pixels per metre, rounded
+
+
+def test_png_of_a_figure_without_an_agg_canvas_goes_through_savefig(tmp_path):
+    """A bare ``Figure()`` (matplotlib's base canvas) is written by ``savefig``; reference:
+    the same figure on an Agg canvas, drawn at the same resolution: the same pixels."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    from flexshaft.plot.output import save_figure
+
+    fig = Figure(figsize=(3.0, 2.0))
+    assert not isinstance(fig.canvas, FigureCanvasAgg)
+    fig.add_subplot().plot([0.0, 1.0], [1.0, 0.0])
+    path = save_figure(fig, tmp_path, "bare", svg=False, dpi=80.0)["png"]
+    FigureCanvasAgg(fig)
+    fig.set_dpi(80.0)
+    fig.canvas.draw()
+    with Image.open(path) as mine:
+        np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), np.asarray(fig.canvas.buffer_rgba()))
 
 
 def test_wall_figure_shows_the_spinup_peak_panel_only_with_actuators():
