@@ -468,6 +468,37 @@ def test_png_of_a_figure_without_an_agg_canvas_goes_through_savefig(tmp_path):
         np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), np.asarray(fig.canvas.buffer_rgba()))
 
 
+@pytest.mark.parametrize("shape, cstride", [((6, 23), 4), ((5, 21), 4), ((4, 9), 1)])
+def test_response_surface_facets_draw_as_plot_surface(shape, cstride):
+    """Reference: matplotlib's ``Axes3D.plot_surface(rstride=1, cstride=...)`` of the same grid,
+    drawn in an identical figure: the vectorised facets give the same pixels, with the stride
+    dividing the columns evenly (21 - 1 = 5 × 4), unevenly (23 - 1 = 5 × 4 + 2) and 1."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from flexshaft.plot.studies import _surface
+
+    rng = np.random.default_rng(3)
+    X, Y = np.meshgrid(np.linspace(0.0, 2.0, shape[0]), np.linspace(0.0, 5e3, shape[1]), indexing="ij")
+    Z = rng.random(shape) * 3.0
+
+    def drawn(draw) -> np.ndarray:
+        fig = Figure(figsize=(4.0, 3.0), dpi=80)
+        FigureCanvasAgg(fig)
+        ax = fig.add_subplot(projection="3d")
+        draw(ax)
+        fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba()).copy()
+
+    ours = drawn(lambda ax: _surface(ax, X, Y, Z, cstride, 3.0))
+    theirs = drawn(
+        lambda ax: ax.plot_surface(
+            X, Y, Z, cmap="viridis", vmin=0.0, vmax=3.0, rstride=1, cstride=cstride, linewidth=0, antialiased=False
+        )
+    )
+    np.testing.assert_array_equal(ours, theirs)
+
+
 def test_wall_figure_shows_the_spinup_peak_panel_only_with_actuators():
     """The wall study's spin-up peak gets its own panel with its smallest value marked; a
     design without actuators (all NaN) keeps the two panels."""
