@@ -499,6 +499,46 @@ def test_response_surface_facets_draw_as_plot_surface(shape, cstride):
     np.testing.assert_array_equal(ours, theirs)
 
 
+def test_in_view_locators_draw_the_ticks_matplotlib_draws():
+    """Reference: the same figure with matplotlib's own AutoLocator / LogLocator put back (the
+    linear and log scales' defaults): the same pixels (matplotlib draws only the ticks inside
+    the view); ours locate no tick outside the view, theirs do."""
+    from matplotlib.ticker import AutoLocator, LogLocator
+
+    from flexshaft.plot.style import log_scale, new_figure, styled
+
+    x = np.linspace(0.13, 9.71, 50)
+
+    @styled
+    def drawn(ours: bool):
+        fig, axes = new_figure(2, 1, (4.0, 4.0))
+        top, bottom = axes[0, 0], axes[1, 0]
+        top.plot(x, 3.7 * np.sin(x) + 0.3)
+        bottom.plot(x, 2e-4 * np.exp(x))
+        log_scale(bottom)
+        if not ours:
+            for ax in (top, bottom):
+                ax.xaxis.set_major_locator(AutoLocator())
+            top.yaxis.set_major_locator(AutoLocator())
+            bottom.yaxis.set_major_locator(LogLocator(10.0))
+            bottom.yaxis.set_minor_locator(LogLocator(10.0, subs=(2.0, 5.0)))
+        fig.set_dpi(80)
+        fig.canvas.draw()
+        return fig, np.asarray(fig.canvas.buffer_rgba()).copy()
+
+    (ours, our_pixels), (_, their_pixels) = drawn(True), drawn(False)
+    np.testing.assert_array_equal(our_pixels, their_pixels)
+    beyond = 0
+    for ax, log in zip(ours.axes, (False, True)):
+        for axis, default in ((ax.xaxis, AutoLocator()), (ax.yaxis, LogLocator(10.0) if log else AutoLocator())):
+            lo, hi = sorted(axis.get_view_interval())
+            for locs in (axis.get_majorticklocs(), axis.get_minorticklocs()):
+                assert np.all((locs >= lo * (1 - 1e-9) - 1e-12) & (locs <= hi * (1 + 1e-9)))
+            default.set_axis(axis)
+            beyond += int(np.sum((default() < lo) | (default() > hi)))
+    assert beyond > 0  # matplotlib's own locators would have built Tick objects never drawn
+
+
 def test_wall_figure_shows_the_spinup_peak_panel_only_with_actuators():
     """The wall study's spin-up peak gets its own panel with its smallest value marked; a
     design without actuators (all NaN) keeps the two panels."""
