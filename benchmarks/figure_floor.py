@@ -19,6 +19,9 @@ formatters, building the figure, the encoder). Each table splits cost - floor th
 ``build`` (the figure function: none of it is in the floor), ``draw+`` (a first draw of the
 figure above its frozen redraw: Tick objects created, ticks located and formatted, text
 measured for the first time) and ``encode+`` (the report's PNG writer above one zlib pass).
+A minimal figure (one Axes, one line, labels, title; matplotlib only) is measured the same way
+and printed last, outside the totals: the ratio no figure drawn with matplotlib's Axes gets
+below, whatever the figure code does.
 CPU times of this process (``process_time``);
 the shared VM's load moves them less than wall times.
 
@@ -34,6 +37,7 @@ totals.
 from __future__ import annotations
 
 import argparse
+import gc
 import io
 import json
 import os
@@ -44,6 +48,7 @@ import tempfile
 import time
 import zlib
 from pathlib import Path
+from types import SimpleNamespace
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -84,6 +89,29 @@ def _least_png(rgba) -> bytes:
     return zlib.compress(rows.data, 1)
 
 
+#: Stem of the smallest figure measured alongside (not part of the totals).
+MINIMAL = "(minimal: 1 axes, 1 line)"
+
+
+def _minimal_figure():
+    """What no figure can be cheaper than: a Figure on an Agg canvas, one Axes, one line of
+    200 points, two axis labels and a title (matplotlib only, its default style). Its ratio
+    is the overhead of building and first drawing any matplotlib figure, whatever its code."""
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8.0, 4.8))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    x = np.linspace(0.0, 6000.0, 200)
+    ax.plot(x, np.sin(x / 700.0))
+    ax.set_xlabel("spin speed Ω [rpm]")
+    ax.set_ylabel("amplitude [mm]")
+    ax.set_title("one line")
+    return fig
+
+
 def _save_like_the_report(fig) -> None:
     from flexshaft.plot import output
 
@@ -94,9 +122,32 @@ def _save_like_the_report(fig) -> None:
     fig.savefig(io.BytesIO(), dpi=output.PNG_DPI, format="png", **kwargs)
 
 
-def measure(cache: Path | None, repeats: int) -> dict:
+def _time_figure(job, dpi: float) -> tuple[float, ...]:
+    """(cost, floor, the cost's figure function, a first draw, the floor's zlib pass) [s CPU]."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    c0 = time.process_time()
+    fig = job.function(*job.args, **job.kwargs)
+    c1 = time.process_time()
+    _save_like_the_report(fig)
+    c2 = time.process_time()
+    fig = job.function(*job.args, **job.kwargs)
+    if not isinstance(fig.canvas, FigureCanvasAgg):
+        FigureCanvasAgg(fig)
+    fig.set_dpi(dpi)
+    c3 = time.process_time()
+    fig.canvas.draw()
+    c4 = time.process_time()
+    _freeze_ticks(fig)
+    c5 = time.process_time()
+    fig.canvas.draw()
+    c6 = time.process_time()
+    _least_png(fig.canvas.buffer_rgba())
+    c7 = time.process_time()
+    return c2 - c0, c7 - c5, c1 - c0, c4 - c3, c7 - c6
+
+
+def measure(cache: Path | None, repeats: int) -> dict:
     from flexshaft.plot.output import PNG_DPI
     from flexshaft.report.driveline import plan_run_report
 
@@ -106,26 +157,14 @@ def measure(cache: Path | None, repeats: int) -> dict:
     times: dict[str, list[tuple[float, ...]]] = {}
     for round_ in range(repeats + 1):  # round 0: warm-up, not counted
         for job in jobs:
-            c0 = time.process_time()
-            fig = job.function(*job.args, **job.kwargs)
-            c1 = time.process_time()
-            _save_like_the_report(fig)
-            c2 = time.process_time()
-            fig = job.function(*job.args, **job.kwargs)
-            if not isinstance(fig.canvas, FigureCanvasAgg):
-                FigureCanvasAgg(fig)
-            fig.set_dpi(PNG_DPI)
-            c3 = time.process_time()
-            fig.canvas.draw()
-            c4 = time.process_time()
-            _freeze_ticks(fig)
-            c5 = time.process_time()
-            fig.canvas.draw()
-            c6 = time.process_time()
-            _least_png(fig.canvas.buffer_rgba())
-            c7 = time.process_time()
-            if round_:  # cost, floor, the cost's figure function, a first draw, the floor's zlib pass
-                times.setdefault(job.stem, []).append((c2 - c0, c7 - c5, c1 - c0, c4 - c3, c7 - c6))
+            measured = _time_figure(job, PNG_DPI)
+            if round_:
+                times.setdefault(job.stem, []).append(measured)
+    # the minimal figure on its own, after a collection: the report's figures leave cycles of
+    # artists that Python's collector frees when it runs, on whichever figure is timed then
+    gc.collect()
+    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
+    times[MINIMAL] = [_time_figure(minimal, PNG_DPI) for _ in range(repeats + 1)][1:]
     return {stem: tuple(statistics.median(t[k] for t in ts) for k in range(5)) for stem, ts in times.items()}
 
 
@@ -134,7 +173,10 @@ def _print(title: str, data: dict) -> None:
     (``build``: all of it is above the floor), the first draw above the frozen redraw (``draw+``:
     tick objects created, ticks located and formatted, text measured), and the rest of the
     save above one zlib pass (``encode+``: Pillow's row filters, the canvas). The three add up
-    to cost - floor (medians of separate runs: up to the noise)."""
+    to cost - floor (medians of separate runs: up to the noise). The minimal figure
+    (:data:`MINIMAL`) is printed last, outside the totals."""
+    minimal = data.get(MINIMAL)
+    data = {k: v for k, v in data.items() if k != MINIMAL}
     total_cost = sum(v[0] for v in data.values())
     total_floor = sum(v[1] for v in data.values())
     print(
@@ -155,6 +197,12 @@ def _print(title: str, data: dict) -> None:
         f"  above the floor: {over:.2f} s = build {sums[0]:.2f} s ({sums[0] / over:.0%}), draw+ {sums[1]:.2f} s "
         f"({sums[1] / over:.0%}), encode+ {sums[2]:.2f} s ({sums[2] / over:.0%})"
     )
+    if minimal is not None:
+        c, f = minimal[:2]
+        print(
+            f"  {MINIMAL:34s} {c * 1e3:7.1f} {f * 1e3:7.1f} {c / f:6.2f} "
+            + " ".join(f"{x * 1e3:7.1f}" for x in _overheads(minimal))
+        )
 
 
 def _overheads(v) -> tuple[float, float, float]:
@@ -188,7 +236,7 @@ def main(argv: list[str] | None = None) -> int:
         out = subprocess.run(cmd, env=env, capture_output=True, text=True, check=True).stdout
         ref = json.loads(out.strip().splitlines()[-1])
         _print(f"reference ({a.reference})", {k: tuple(v) for k, v in ref.items()})
-        common = sorted(set(ref) & set(data))
+        common = sorted((set(ref) & set(data)) - {MINIMAL})
         now_cost = sum(data[k][0] for k in common)
         ref_cost = sum(ref[k][0] for k in common)
         print(f"\nreference / now, total cost of the {len(common)} common figures: {ref_cost / now_cost:.2f}")
