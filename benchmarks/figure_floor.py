@@ -11,8 +11,8 @@ untimed round (matplotlib imported, fonts loaded). For each figure, median of ``
   (each axis's ticks at the positions just drawn, ``FixedLocator``, with the labels just drawn,
   ``FixedFormatter``: no locating, formatting or label measuring), drawn again (``canvas.draw``)
   and encoded with one zlib pass at level 1 and no PNG row filters (the least work a PNG can
-  take; Pillow tries five filters on every row). What is left is the artists themselves:
-  lines, patches, text, images.
+  take; Pillow tries four filters on every row, five with ``optimize``). What is left is the
+  artists themselves: lines, patches, text, images.
 
 The ratio cost / floor is the overhead of the machinery the report uses (locators,
 formatters, building the figure, the encoder). Each table splits cost - floor three ways:
