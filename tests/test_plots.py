@@ -450,7 +450,9 @@ def test_png_files_hold_the_pixels_agg_drew(tmp_path, facecolor):
 
 def test_png_of_a_figure_without_an_agg_canvas_goes_through_savefig(tmp_path):
     """A bare ``Figure()`` (matplotlib's base canvas) is written by ``savefig``; reference:
-    the same figure on an Agg canvas, drawn at the same resolution: the same pixels."""
+    the same figure on an Agg canvas, drawn at the same resolution: the same pixels. A canvas
+    derived from Agg (an interactive backend's) also goes through ``savefig``, which draws with
+    Agg's own method, not the window's."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
     from PIL import Image
@@ -461,6 +463,13 @@ def test_png_of_a_figure_without_an_agg_canvas_goes_through_savefig(tmp_path):
     assert not isinstance(fig.canvas, FigureCanvasAgg)
     fig.add_subplot().plot([0.0, 1.0], [1.0, 0.0])
     path = save_figure(fig, tmp_path, "bare", svg=False, dpi=80.0)["png"]
+
+    class WindowCanvas(FigureCanvasAgg):  # an interactive backend's canvas: its draw updates a window
+        def draw(self):
+            raise AssertionError("the window's draw was called")
+
+    WindowCanvas(fig)
+    assert save_figure(fig, tmp_path, "window", svg=False, dpi=80.0)["png"].stat().st_size > 0
     FigureCanvasAgg(fig)
     fig.set_dpi(80.0)
     fig.canvas.draw()
