@@ -5,16 +5,24 @@ computed once or loaded from ``--cache``) are drawn in this process, serially, a
 untimed round (matplotlib imported, fonts loaded). For each figure, median of ``--repeats``:
 
 * **cost**: what the report does: the figure function (``job.function``: figure, axes,
-  artists) and ``Figure.savefig`` to a PNG in memory at the report's resolution and options;
+  artists) and the PNG writer of ``save_figure`` (``flexshaft.plot.output.write_png``; in
+  older checkouts ``Figure.savefig``) to a PNG in memory at the report's resolution and options;
 * **floor**: the same figure, built and drawn once untimed, its every tick then frozen
   (each axis's ticks at the positions just drawn, ``FixedLocator``, with the labels just drawn,
   ``FixedFormatter``: no locating, formatting or label measuring), drawn again (``canvas.draw``)
   and encoded with one zlib pass at level 1 and no PNG row filters (the least work a PNG can
-  take; Pillow tries five filters on every row). What is left is the artists themselves:
-  lines, patches, text, images.
+  take; Pillow tries four filters on every row, five with ``optimize``). What is left is the
+  artists themselves: lines, patches, text, images.
 
 The ratio cost / floor is the overhead of the machinery the report uses (locators,
-formatters, building the figure, the encoder). CPU times of this process (``process_time``);
+formatters, building the figure, the encoder). Each table splits cost - floor three ways:
+``build`` (the figure function: none of it is in the floor), ``draw+`` (a first draw of the
+figure above its frozen redraw: Tick objects created, ticks located and formatted, text
+measured for the first time) and ``encode+`` (the report's PNG writer above one zlib pass).
+A minimal figure (one Axes, one line, labels, title; matplotlib only) is measured the same way
+and printed last, outside the totals: the ratio no figure drawn with matplotlib's Axes gets
+below, whatever the figure code does.
+CPU times of this process (``process_time``);
 the shared VM's load moves them less than wall times.
 
     OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl
@@ -29,6 +37,7 @@ totals.
 from __future__ import annotations
 
 import argparse
+import gc
 import io
 import json
 import os
@@ -39,6 +48,7 @@ import tempfile
 import time
 import zlib
 from pathlib import Path
+from types import SimpleNamespace
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -79,56 +89,126 @@ def _least_png(rgba) -> bytes:
     return zlib.compress(rows.data, 1)
 
 
+#: Stem of the smallest figure measured alongside (not part of the totals).
+MINIMAL = "(minimal: 1 axes, 1 line)"
+
+
+def _minimal_figure():
+    """What no figure can be cheaper than: a Figure on an Agg canvas, one Axes, one line of
+    200 points, two axis labels and a title (matplotlib only, its default style). Its ratio
+    is the overhead of building and first drawing any matplotlib figure, whatever its code."""
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8.0, 4.8))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    x = np.linspace(0.0, 6000.0, 200)
+    ax.plot(x, np.sin(x / 700.0))
+    ax.set_xlabel("spin speed Ω [rpm]")
+    ax.set_ylabel("amplitude [mm]")
+    ax.set_title("one line")
+    return fig
+
+
 def _save_like_the_report(fig) -> None:
     from flexshaft.plot import output
 
-    kwargs = {"pil_kwargs": {"compress_level": getattr(output, "PNG_COMPRESSION", 1)}}
+    if hasattr(output, "write_png"):  # what save_figure calls
+        output.write_png(fig, io.BytesIO(), output.PNG_DPI)
+        return
+    kwargs = {"pil_kwargs": {"compress_level": getattr(output, "PNG_COMPRESSION", 1)}}  # older checkouts
     fig.savefig(io.BytesIO(), dpi=output.PNG_DPI, format="png", **kwargs)
 
 
-def measure(cache: Path | None, repeats: int) -> dict:
+def _time_figure(job, dpi: float) -> tuple[float, ...]:
+    """(cost, floor, the cost's figure function, a first draw, the floor's zlib pass) [s CPU]."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    c0 = time.process_time()
+    fig = job.function(*job.args, **job.kwargs)
+    c1 = time.process_time()
+    _save_like_the_report(fig)
+    c2 = time.process_time()
+    fig = job.function(*job.args, **job.kwargs)
+    if not isinstance(fig.canvas, FigureCanvasAgg):
+        FigureCanvasAgg(fig)
+    fig.set_dpi(dpi)
+    c3 = time.process_time()
+    fig.canvas.draw()
+    c4 = time.process_time()
+    _freeze_ticks(fig)
+    c5 = time.process_time()
+    fig.canvas.draw()
+    c6 = time.process_time()
+    _least_png(fig.canvas.buffer_rgba())
+    c7 = time.process_time()
+    return c2 - c0, c7 - c5, c1 - c0, c4 - c3, c7 - c6
+
+
+def measure(cache: Path | None, repeats: int) -> dict:
     from flexshaft.plot.output import PNG_DPI
     from flexshaft.report.driveline import plan_run_report
 
     res = _results(cache)
     with tempfile.TemporaryDirectory() as folder:
         jobs = plan_run_report(res[0], folder, thesis=res[1]).jobs
-    cost: dict[str, list[float]] = {}
-    floor: dict[str, list[float]] = {}
+    times: dict[str, list[tuple[float, ...]]] = {}
     for round_ in range(repeats + 1):  # round 0: warm-up, not counted
         for job in jobs:
-            c0 = time.process_time()
-            fig = job.function(*job.args, **job.kwargs)
-            _save_like_the_report(fig)
-            c1 = time.process_time()
-            fig = job.function(*job.args, **job.kwargs)
-            if not isinstance(fig.canvas, FigureCanvasAgg):
-                FigureCanvasAgg(fig)
-            fig.set_dpi(PNG_DPI)
-            fig.canvas.draw()
-            _freeze_ticks(fig)
-            c2 = time.process_time()
-            fig.canvas.draw()
-            _least_png(fig.canvas.buffer_rgba())
-            c3 = time.process_time()
+            measured = _time_figure(job, PNG_DPI)
             if round_:
-                cost.setdefault(job.stem, []).append(c1 - c0)
-                floor.setdefault(job.stem, []).append(c3 - c2)
-    return {stem: (statistics.median(cost[stem]), statistics.median(floor[stem])) for stem in cost}
+                times.setdefault(job.stem, []).append(measured)
+    # the minimal figure on its own, after a collection: the report's figures leave cycles of
+    # artists that Python's collector frees when it runs, on whichever figure is timed then
+    gc.collect()
+    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
+    times[MINIMAL] = [_time_figure(minimal, PNG_DPI) for _ in range(repeats + 1)][1:]
+    return {stem: tuple(statistics.median(t[k] for t in ts) for k in range(5)) for stem, ts in times.items()}
 
 
 def _print(title: str, data: dict) -> None:
-    total_cost = sum(c for c, _ in data.values())
-    total_floor = sum(f for _, f in data.values())
+    """Cost and floor of each figure, and where the difference goes: the figure function
+    (``build``: all of it is above the floor), the first draw above the frozen redraw (``draw+``:
+    tick objects created, ticks located and formatted, text measured), and the rest of the
+    save above one zlib pass (``encode+``: Pillow's row filters, the canvas). The three add up
+    to cost - floor (medians of separate runs: up to the noise). The minimal figure
+    (:data:`MINIMAL`) is printed last, outside the totals."""
+    minimal = data.get(MINIMAL)
+    data = {k: v for k, v in data.items() if k != MINIMAL}
+    total_cost = sum(v[0] for v in data.values())
+    total_floor = sum(v[1] for v in data.values())
     print(
         f"\n{title}: {len(data)} figures, cost {total_cost:.2f} s, floor {total_floor:.2f} s, "
         f"ratio {total_cost / total_floor:.2f}"
     )
-    print(f"  {'figure':38s} {'cost [ms]':>9s} {'floor [ms]':>10s} {'ratio':>6s}")
-    for stem, (c, f) in sorted(data.items(), key=lambda item: -item[1][0]):
-        print(f"  {stem:38s} {c * 1e3:9.1f} {f * 1e3:10.1f} {c / f:6.2f}")
+    print(
+        f"  {'figure':34s} {'cost':>7s} {'floor':>7s} {'ratio':>6s} {'build':>7s} {'draw+':>7s} {'encode+':>7s}  [ms]"
+    )
+    sums = [0.0, 0.0, 0.0]
+    for stem, v in sorted(data.items(), key=lambda item: -item[1][0]):
+        c, f = v[:2]
+        parts = _overheads(v)
+        sums = [a + b for a, b in zip(sums, parts)]
+        print(f"  {stem:34s} {c * 1e3:7.1f} {f * 1e3:7.1f} {c / f:6.2f} " + " ".join(f"{x * 1e3:7.1f}" for x in parts))
+    over = total_cost - total_floor
+    print(
+        f"  above the floor: {over:.2f} s = build {sums[0]:.2f} s ({sums[0] / over:.0%}), draw+ {sums[1]:.2f} s "
+        f"({sums[1] / over:.0%}), encode+ {sums[2]:.2f} s ({sums[2] / over:.0%})"
+    )
+    if minimal is not None:
+        c, f = minimal[:2]
+        print(
+            f"  {MINIMAL:34s} {c * 1e3:7.1f} {f * 1e3:7.1f} {c / f:6.2f} "
+            + " ".join(f"{x * 1e3:7.1f}" for x in _overheads(minimal))
+        )
+
+
+def _overheads(v) -> tuple[float, float, float]:
+    """(build, draw+, encode+) of one figure's (cost, floor, build, first draw, zlib) [s]."""
+    c, f, build, first, zlib_pass = v
+    return build, first - (f - zlib_pass), c - build - first - zlib_pass
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -156,7 +236,7 @@ def main(argv: list[str] | None = None) -> int:
         out = subprocess.run(cmd, env=env, capture_output=True, text=True, check=True).stdout
         ref = json.loads(out.strip().splitlines()[-1])
         _print(f"reference ({a.reference})", {k: tuple(v) for k, v in ref.items()})
-        common = sorted(set(ref) & set(data))
+        common = sorted((set(ref) & set(data)) - {MINIMAL})
         now_cost = sum(data[k][0] for k in common)
         ref_cost = sum(ref[k][0] for k in common)
         print(f"\nreference / now, total cost of the {len(common)} common figures: {ref_cost / now_cost:.2f}")

@@ -420,8 +420,9 @@ def test_log_axis_labels_are_plain_text_with_the_values_of_matplotlibs_own():
 def test_png_files_hold_the_pixels_agg_drew(tmp_path, facecolor):
     """Reference: the figure's Agg buffer at the same resolution (``canvas.draw`` and
     ``buffer_rgba``, matplotlib's public API). The PNG save_figure writes, decoded by Pillow,
-    holds the same pixels exactly and the resolution, through matplotlib's own canvas and
-    ``savefig`` (no canvas of flexshaft's overriding a print method)."""
+    holds the same pixels exactly and the resolution, through matplotlib's own canvas (no
+    canvas of flexshaft's overriding a print method): RGB for an opaque figure (its alpha is
+    255 everywhere), RGBA when the figure's face is transparent. The figure's dpi is kept."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image
 
@@ -434,14 +435,117 @@ def test_png_files_hold_the_pixels_agg_drew(tmp_path, facecolor):
     axes[0, 0].plot([0.0, 1.0, 2.0], [0.0, 1.0, 0.5], label="a")
     axes[0, 1].contourf(np.random.default_rng(0).random((8, 8)), cmap="viridis")
     axes[0, 0].legend()
+    own_dpi = fig.dpi
     ours = save_figure(fig, tmp_path, "ours", svg=False, dpi=97.0)["png"]
+    assert fig.dpi == own_dpi
     fig.set_dpi(97.0)
     fig.canvas.draw()
     reference = np.asarray(fig.canvas.buffer_rgba())
     with Image.open(ours) as mine:
         assert mine.size == (reference.shape[1], reference.shape[0])
+        assert mine.mode == ("RGB" if facecolor == "white" else "RGBA")
         np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), reference)
         assert mine.info["dpi"] == pytest.approx((97.0, 97.0), abs=1e-2)  # pixels per metre, rounded
+
+
+def test_png_of_a_figure_without_an_agg_canvas_goes_through_savefig(tmp_path):
+    """A bare ``Figure()`` (matplotlib's base canvas) is written by ``savefig``; reference:
+    the same figure on an Agg canvas, drawn at the same resolution: the same pixels. A canvas
+    derived from Agg (an interactive backend's) also goes through ``savefig``, which draws with
+    Agg's own method, not the window's."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    from flexshaft.plot.output import save_figure
+
+    fig = Figure(figsize=(3.0, 2.0))
+    assert not isinstance(fig.canvas, FigureCanvasAgg)
+    fig.add_subplot().plot([0.0, 1.0], [1.0, 0.0])
+    path = save_figure(fig, tmp_path, "bare", svg=False, dpi=80.0)["png"]
+
+    class WindowCanvas(FigureCanvasAgg):  # an interactive backend's canvas: its draw updates a window
+        def draw(self):
+            raise AssertionError("the window's draw was called")
+
+    WindowCanvas(fig)
+    assert save_figure(fig, tmp_path, "window", svg=False, dpi=80.0)["png"].stat().st_size > 0
+    FigureCanvasAgg(fig)
+    fig.set_dpi(80.0)
+    fig.canvas.draw()
+    with Image.open(path) as mine:
+        np.testing.assert_array_equal(np.asarray(mine.convert("RGBA")), np.asarray(fig.canvas.buffer_rgba()))
+
+
+@pytest.mark.parametrize("shape, cstride", [((6, 23), 4), ((5, 21), 4), ((4, 9), 1)])
+def test_response_surface_facets_draw_as_plot_surface(shape, cstride):
+    """Reference: matplotlib's ``Axes3D.plot_surface(rstride=1, cstride=...)`` of the same grid,
+    drawn in an identical figure: the vectorised facets give the same pixels, with the stride
+    dividing the columns evenly (21 - 1 = 5 × 4), unevenly (23 - 1 = 5 × 4 + 2) and 1."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from flexshaft.plot.studies import _surface
+
+    rng = np.random.default_rng(3)
+    X, Y = np.meshgrid(np.linspace(0.0, 2.0, shape[0]), np.linspace(0.0, 5e3, shape[1]), indexing="ij")
+    Z = rng.random(shape) * 3.0
+
+    def drawn(draw) -> np.ndarray:
+        fig = Figure(figsize=(4.0, 3.0), dpi=80)
+        FigureCanvasAgg(fig)
+        ax = fig.add_subplot(projection="3d")
+        draw(ax)
+        fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba()).copy()
+
+    ours = drawn(lambda ax: _surface(ax, X, Y, Z, cstride, 3.0))
+    theirs = drawn(
+        lambda ax: ax.plot_surface(
+            X, Y, Z, cmap="viridis", vmin=0.0, vmax=3.0, rstride=1, cstride=cstride, linewidth=0, antialiased=False
+        )
+    )
+    np.testing.assert_array_equal(ours, theirs)
+
+
+def test_in_view_locators_draw_the_ticks_matplotlib_draws():
+    """Reference: the same figure with matplotlib's own AutoLocator / LogLocator put back (the
+    linear and log scales' defaults): the same pixels (matplotlib draws only the ticks inside
+    the view); ours locate no tick outside the view, theirs do."""
+    from matplotlib.ticker import AutoLocator, LogLocator
+
+    from flexshaft.plot.style import log_scale, new_figure, styled
+
+    x = np.linspace(0.13, 9.71, 50)
+
+    @styled
+    def drawn(ours: bool):
+        fig, axes = new_figure(2, 1, (4.0, 4.0))
+        top, bottom = axes[0, 0], axes[1, 0]
+        top.plot(x, 3.7 * np.sin(x) + 0.3)
+        bottom.plot(x, 2e-4 * np.exp(x))
+        log_scale(bottom)
+        if not ours:
+            for ax in (top, bottom):
+                ax.xaxis.set_major_locator(AutoLocator())
+            top.yaxis.set_major_locator(AutoLocator())
+            bottom.yaxis.set_major_locator(LogLocator(10.0))
+            bottom.yaxis.set_minor_locator(LogLocator(10.0, subs=(2.0, 5.0)))
+        fig.set_dpi(80)
+        fig.canvas.draw()
+        return fig, np.asarray(fig.canvas.buffer_rgba()).copy()
+
+    (ours, our_pixels), (_, their_pixels) = drawn(True), drawn(False)
+    np.testing.assert_array_equal(our_pixels, their_pixels)
+    beyond = 0
+    for ax, log in zip(ours.axes, (False, True)):
+        for axis, default in ((ax.xaxis, AutoLocator()), (ax.yaxis, LogLocator(10.0) if log else AutoLocator())):
+            lo, hi = sorted(axis.get_view_interval())
+            for locs in (axis.get_majorticklocs(), axis.get_minorticklocs()):
+                assert np.all((locs >= lo * (1 - 1e-9) - 1e-12) & (locs <= hi * (1 + 1e-9)))
+            default.set_axis(axis)
+            beyond += int(np.sum((default() < lo) | (default() > hi)))
+    assert beyond > 0  # matplotlib's own locators would have built Tick objects never drawn
 
 
 def test_wall_figure_shows_the_spinup_peak_panel_only_with_actuators():

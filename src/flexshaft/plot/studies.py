@@ -282,6 +282,48 @@ def buckling_figure(wall: ArrayLike, safety_factor: ArrayLike, *, ax=None) -> Fi
     return fig
 
 
+def _surface_facets(X: np.ndarray, Y: np.ndarray, Z: np.ndarray, cstride: int) -> tuple[list[np.ndarray], np.ndarray]:
+    """The facets of ``Axes3D.plot_surface(X, Y, Z, rstride=1, cstride=cstride)``, in its order
+    (row by row, each row's facets along the second axis, the last one narrower when
+    ``cstride`` does not divide ``cols - 1``): each facet is the outline of its block of grid
+    points, (points, 3) — the first row forward, the last column, the second row backward, the
+    first column — and each facet's mean height (its colour). Built block by block over all
+    rows at once instead of one facet at a time."""
+    rows, cols = Z.shape
+    grid = np.stack([X, Y, Z], axis=-1)  # (rows, cols, 3)
+    starts = list(range(0, cols - 1, cstride)) + [cols - 1]
+    first_row = np.arange(rows - 1)[:, None]
+    blocks = []
+    for c0, c1 in zip(starts[:-1], starts[1:]):
+        w = c1 - c0
+        dr = np.concatenate([np.zeros(w + 1, dtype=int), np.ones(w + 1, dtype=int)])
+        dc = np.concatenate([np.arange(w + 1), np.arange(w, -1, -1)])
+        blocks.append(grid[first_row + dr[None, :], c0 + dc[None, :]])  # (rows - 1, 2w + 2, 3)
+    facets = [block[r] for r in range(rows - 1) for block in blocks]
+    return facets, np.stack([block[..., 2].mean(axis=1) for block in blocks], axis=1).ravel()
+
+
+def _surface(ax, X: np.ndarray, Y: np.ndarray, Z: np.ndarray, cstride: int, top: float) -> None:
+    """Z over (X, Y) as ``plot_surface(rstride=1, cstride=cstride)`` draws it (viridis over
+    [0, top], facets coloured by their mean height, no edges), its facets built vectorised
+    (:func:`_surface_facets`): ``plot_surface`` builds a facet at a time in Python when
+    ``cstride`` does not divide the columns evenly (26 ms for a 38 × 393 grid). A grid with
+    non-finite values goes to ``plot_surface``, which drops those points from the facets."""
+    style = {"cmap": "viridis", "linewidth": 0, "antialiased": False}
+    if not (np.isfinite(X).all() and np.isfinite(Y).all() and np.isfinite(Z).all()) or min(Z.shape) < 2:
+        ax.plot_surface(X, Y, Z, vmin=0.0, vmax=top, rstride=1, cstride=cstride, **style)
+        return
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    had_data = ax.has_data()
+    facets, heights = _surface_facets(X, Y, Z, cstride)
+    surface = Poly3DCollection(facets, **style)
+    surface.set_array(heights)
+    surface.set_clim(0.0, top)
+    ax.add_collection3d(surface, autolim=False)
+    ax.auto_scale_xyz(X, Y, Z, had_data)
+
+
 @styled
 def response_surface_figure(
     x: ArrayLike, speeds_rpm: ArrayLike, surfaces: Mapping[str, ArrayLike], bearings_x: Sequence[float] = (), *, ax=None
@@ -300,18 +342,7 @@ def response_surface_figure(
     for k, (label, values) in enumerate(surfaces.items()):
         z = _grid(f"surfaces[{label!r}]", values, (xs.size, speeds.size)) * MM_PER_M
         ax = axes[0, k]
-        ax.plot_surface(
-            X,
-            S,
-            z,
-            cmap="viridis",
-            vmin=0.0,
-            vmax=top,
-            rstride=1,
-            cstride=max(1, speeds.size // 60),
-            linewidth=0,
-            antialiased=False,
-        )
+        _surface(ax, X, S, z, max(1, speeds.size // 60), top)
         for xb in bearings_x:
             ax.plot([xb, xb], [speeds.min(), speeds.max()], [0, 0], color="k", lw=1.0)
         ax.set_zlim(0.0, top)
