@@ -124,17 +124,24 @@ class ProjectedOrbit:
         speeds = np.asarray(speeds, dtype=float)
         if speeds.size == 0:
             return np.zeros(0)
+        exact: dict[int, float] = {}  # the samples solved in full in this call: their values
         for _ in range(PEAK_ENRICHMENTS + 1):
             values = self.projected(speeds)
             if not np.all(np.isfinite(values)):
                 break
-            check = _checked_samples(values)
-            X = self._full(speeds[check])
-            full = self._orbit(X)
-            if np.all(np.abs(values[check] - full) <= PEAK_TOLERANCE * np.abs(full)):
-                values[check] = full
+            for i, v in exact.items():
+                values[i] = v
+            fresh = np.array([i for i in _checked_samples(values) if i not in exact], dtype=np.intp)
+            if fresh.size == 0:
                 return values
-            self._enrich(speeds[check], X)
+            X = self._full(speeds[fresh])
+            full = self._orbit(X)
+            agree = np.all(np.abs(values[fresh] - full) <= PEAK_TOLERANCE * np.abs(full))
+            exact.update(zip(fresh.tolist(), full.tolist()))
+            if agree:
+                values[fresh] = full
+                return values
+            self._enrich(speeds[fresh], X)  # the model then interpolates there: evaluate again
         return self._orbit(self._full(speeds))
 
 
