@@ -11,7 +11,7 @@ response cannot be scanned; :func:`label_critical_speeds` names the Campbell mod
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -164,14 +164,15 @@ def lateral_critical_speeds(
             q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
             return _shaft_orbits(model, q)[node, 0]
 
+        response: Callable[[np.ndarray], np.ndarray] = orbit_at
         rows = (int(model.dofs.shaft(int(node), "v")), int(model.dofs.shaft(int(node), "w")))
         if projected and np.all(np.isin(rows, model.dofs.free)):
             # the refinement on a projected model of the peak, checked by full solves
-            orbit_at = ProjectedOrbit(model, loads[:, case], rows, speeds[max(k - 1, 0) : k + 2])
+            response = ProjectedOrbit(model, loads[:, case], rows, speeds[max(k - 1, 0) : k + 2])
 
         station = float(model.dofs.shaft_x[node])
         try:
-            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+            peak = resolve_peak(response, speeds, orbits[node, case], near=rough.speed)
         except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
             out.append(
                 LateralCritical(

@@ -330,7 +330,7 @@ def root_stability(model: Model, speeds) -> RootStability:
         state = red.state_matrix(speed)
         passive = method == "passive" and red.has_loss
         if passive:  # every root is solved on its branches below: the loss-free vectors are unused
-            lam, right = la.eigvals(state, check_finite=False), None
+            lam, right = np.asarray(la.eigvals(state, check_finite=False), dtype=complex), None
         else:
             lam, right = la.eig(state, check_finite=False)
         require_finite("closed-loop roots", lam)
