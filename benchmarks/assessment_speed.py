@@ -9,7 +9,9 @@ imports), the envelope's cost over one point's, and the paired ratio reference/t
 (the trees run alternately, ``--rounds`` times, and the medians are over all their runs).
 ``--report`` adds the REPORT resolution (for information; fewer repeats). ``--verdicts``
 compares the verdicts of every embedded design at SCREENING between the trees: pass/fail of
-each check, the governing point, and the largest relative difference of the checks' values.
+each check, the governing point, and the largest relative difference of the checks' values, which
+must stay within ``--tolerance`` (1e-6 by default: the modal analyses' eigenvalue tolerance, the
+loosest accuracy the screening's reduced and projected models are held to; exit status 1 else).
 
     .venv/bin/python benchmarks/assessment_speed.py --reference /tmp/ref-main --verdicts
 
@@ -74,8 +76,9 @@ def _median(values: list[float]) -> float:
     return statistics.median(values)
 
 
-def compare_verdicts(ours: dict, theirs: dict) -> bool:
-    """Print the verdicts' differences; True when pass/fail and the governing point agree."""
+def compare_verdicts(ours: dict, theirs: dict, tolerance: float = 1e-6) -> bool:
+    """Print the verdicts' differences; True when pass/fail and the governing point agree and
+    every check's value agrees to ``tolerance`` (relative)."""
     same = True
     for design, a in ours.items():
         b = theirs[design]
@@ -87,11 +90,11 @@ def compare_verdicts(ours: dict, theirs: dict) -> bool:
             if value is not None and other is not None and other != 0 and abs(other) != float("inf"):
                 worst = max(worst, abs(value - other) / abs(other))
         governing = a["governing"] == b["governing"]
-        same &= status and governing
+        same &= status and governing and worst <= tolerance
         print(
             f"  {design:18s} pass/fail {'identical' if status else 'DIFFERENT'}, governing point "
             f"{'identical' if governing else 'DIFFERENT'} ({a['governing']}), largest relative "
-            f"difference of a check's value {worst:.1e}"
+            f"difference of a check's value {worst:.1e} ({'within' if worst <= tolerance else 'ABOVE'} {tolerance:g})"
         )
     return same
 
@@ -103,6 +106,7 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
     parser.add_argument("--report", action="store_true", help="also time the REPORT resolution")
     parser.add_argument("--verdicts", action="store_true", help="compare the embedded designs' verdicts")
+    parser.add_argument("--tolerance", type=float, default=1e-6, help="largest relative difference of a value")
     parser.add_argument("--blas-threads", type=int, default=1)
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
@@ -141,7 +145,7 @@ def main() -> None:
         verdicts = {name: bu.run_in_tree(path, VERDICTS) for name, path in trees.items()}
         if "reference" in verdicts:
             print("  verdicts at SCREENING, this checkout against the reference:")
-            if not compare_verdicts(verdicts["this checkout"], verdicts["reference"]):
+            if not compare_verdicts(verdicts["this checkout"], verdicts["reference"], args.tolerance):
                 raise SystemExit(1)
         else:
             for design, v in verdicts["this checkout"].items():

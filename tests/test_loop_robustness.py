@@ -282,19 +282,20 @@ def test_the_pole_grid_finds_what_a_fine_grid_refined_everywhere_finds(monkeypat
     loops at 4800 rpm with the thesis's K_d 560 N s/m (lighter damped than its own 1250 N s/m:
     sharper peaks; one K_d for the CPU budget, issue 23). Both refine on the same loop
     function, so the peak, its frequency and the phase margin agree to the refinement's
-    tolerance (1e-8 relative; asserted 1e-7)."""
+    tolerance (1e-8 relative; asserted 1e-7). The screening's grid (one point at each such pole,
+    ``peak_samples=1``) is held to the same reference and tolerance."""
     import flexshaft.analyses.bearing_loops as bl
 
     for kd in (560.0,):
         model = build_model(with_overrides(tuned_design(), {"bearings[1].kd": kd, "bearings[2].kd": kd}))
-        fast = bearing_loops(model)
+        fasts = [bearing_loops(model), bearing_loops(model, peak_samples=1)]
         with monkeypatch.context() as patch:
             patch.setattr(bl, "PEAK_WINDOW", 0.0)
             patch.setattr(bl, "MARGIN_WINDOW_DEG", np.inf)
             patch.setattr(bl, "MARGIN_WINDOW_DB", np.inf)
             fine = bearing_loops(model, n_points=5000, poles=np.zeros(0))
-        assert fast[0].frequencies.size < fine[0].frequencies.size / 5
-        for a, b in zip(fast, fine):
+        assert fasts[1][0].frequencies.size < fasts[0][0].frequencies.size < fine[0].frequencies.size / 5
+        for a, b in ((a, b) for fast in fasts for a, b in zip(fast, fine)):
             assert a.margins.peak_sensitivity == pytest.approx(b.margins.peak_sensitivity, rel=1e-7)
             assert a.margins.peak_frequency == pytest.approx(b.margins.peak_frequency, rel=1e-5)
             assert a.margins.phase_margin_deg == pytest.approx(b.margins.phase_margin_deg, rel=1e-7)

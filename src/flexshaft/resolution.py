@@ -8,7 +8,10 @@ Presets (:data:`RESOLUTIONS`, by name):
 
 * :data:`SCREENING`: the optimizer's coarse evaluation: 261 spin speeds (0.5 % of the operating
   speed apart; the critical-speed peaks are still refined between them) and 21 whirl speeds
-  (the onset is still solved between them); only what the checks read;
+  (the onset is still solved between them), one point of the bearing loops' frequency grid per
+  lightly damped closed-loop pole instead of three (the margins are still refined between
+  the grid points; on the embedded designs they agree with three's to 2e-8); only what the
+  checks read;
 * :data:`VERDICT`: the report's grids, only what the checks read (the verdict of
   ``flexshaft run``, at two thirds of its CPU time: benchmarks/optimizer.py);
 * :data:`REPORT`: ``flexshaft run``: 651 spin speeds (0.2 % apart), 41 whirl speeds, a Campbell
@@ -62,6 +65,11 @@ class Resolution:
         for lateral critical speeds.
     whirl_top : float
         Top of the whirl-stability speeds [fraction of Ω_op].
+    loop_peak_samples : int
+        Frequency points of the magnetic-bearing loops' grid at each lightly damped closed-loop
+        pole: 3 (its top and half width) or 1 (its top; the refinement brackets the peak
+        between the neighbouring points instead):
+        :func:`~flexshaft.analyses.bearing_loops.bearing_loops`'s ``peak_samples``.
     """
 
     name: str
@@ -74,6 +82,7 @@ class Resolution:
     scan_bottom: float = SLOW_START
     scan_top: float = 1.30
     whirl_top: float = 1.5
+    loop_peak_samples: int = 3
 
     def __post_init__(self) -> None:
         counts = {
@@ -85,6 +94,8 @@ class Resolution:
         for name, value in counts.items():
             if int(value) != value or value < 2:
                 raise ValueError(f"{name} must be an integer >= 2 (got {value!r})")
+        if self.loop_peak_samples not in (1, 3):
+            raise ValueError(f"loop_peak_samples must be 1 or 3 (got {self.loop_peak_samples!r})")
         if int(self.campbell_speeds) != self.campbell_speeds or self.campbell_speeds == 1 or self.campbell_speeds < 0:
             raise ValueError(f"campbell_speeds must be 0 (no Campbell diagram) or >= 2 (got {self.campbell_speeds!r})")
         if not 0.0 < self.scan_bottom < 1.0 < self.scan_top or not self.whirl_top > 1.0:
@@ -111,7 +122,9 @@ def _reference(operating_speed: float) -> float:
     return max(float(operating_speed), 1.0)
 
 
-SCREENING = Resolution("screening", spinup_speeds=261, whirl_speeds=21, campbell_speeds=0, report_detail=False)
+SCREENING = Resolution(
+    "screening", spinup_speeds=261, whirl_speeds=21, campbell_speeds=0, report_detail=False, loop_peak_samples=1
+)
 VERDICT = Resolution("verdict", spinup_speeds=651, whirl_speeds=41, campbell_speeds=0, report_detail=False)
 REPORT = Resolution("report", spinup_speeds=651, whirl_speeds=41, campbell_speeds=60, report_detail=True)
 FINE = Resolution("fine", spinup_speeds=1301, whirl_speeds=81, campbell_speeds=120, report_detail=True)

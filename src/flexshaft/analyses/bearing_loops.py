@@ -43,7 +43,8 @@ pole s = −ζω_n + iω_d makes a peak at ω_d of half-power width 2ζω_n, far
 affordable logarithmic grid. The grid is therefore a coarse logarithmic one over
 ``frequency_range`` (``n_points``, 200 by default: 2.2 % steps over 0.1 Hz-2 kHz) plus, for every
 closed-loop pole with ζ < :data:`RESOLVED_DAMPING` in the range, the points ω_d and
-ω_d ± ζ ω_n/2: each such peak is sampled at its top and at its half width. The poles are those of the
+ω_d ± ζ ω_n/2: each such peak is sampled at its top and at its half width (the screening
+resolution samples the top only: ``peak_samples``). The poles are those of the
 loss-free closed loop (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`) or the
 caller's (``poles``: the every-root check's; above the highest of them, the undamped natural
 frequencies with a nominal ζ = 1e-3). Refinement on the loop function itself (golden-section
@@ -116,8 +117,9 @@ PEAK_WINDOW = 0.8
 MARGIN_WINDOW_DEG = 3.0
 #: Phase crossovers whose interpolated gain margin is within this of the smallest are refined [dB].
 MARGIN_WINDOW_DB = 2.0
-#: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole.
-_AROUND = (-0.5, 0.0, 0.5)
+#: Offsets k of the grid points ω_d + k ζ ω_n around a lightly damped pole, by the number of
+#: points per pole (``peak_samples``): its top and half width, or its top only.
+_AROUND = {3: (-0.5, 0.0, 0.5), 1: (0.0,)}
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -377,7 +379,7 @@ def _natural_frequencies(model: Model) -> np.ndarray:
     return np.sqrt(np.clip(w2, 0.0, None))
 
 
-def _grid(model: Model, frequency_range, n_points: int, poles: np.ndarray) -> np.ndarray:
+def _grid(model: Model, frequency_range, n_points: int, poles: np.ndarray, around=_AROUND[3]) -> np.ndarray:
     """Logarithmic grid [rad/s] with points at the peaks of the lightly damped ``poles``
     (module docstring); above the highest pole given, at the undamped natural frequencies with
     a nominal width of 1e-3 (poles of a truncated basis)."""
@@ -395,7 +397,7 @@ def _grid(model: Model, frequency_range, n_points: int, poles: np.ndarray) -> np
     light = (np.abs(zeta) < RESOLVED_DAMPING) & (poles.imag > low) & (poles.imag < high)
     if light.any():
         width = np.maximum(np.abs(zeta[light]) * natural[light], 1e-9 * natural[light])
-        grid.append((poles.imag[light][:, None] + np.outer(width, _AROUND)).ravel())
+        grid.append((poles.imag[light][:, None] + np.outer(width, around)).ravel())
     out = np.unique(np.concatenate(grid))
     out = out[(out >= low) & (out <= high)]
     # points closer than 1e-7 relative (the same pole of both lateral planes) are one: a
@@ -410,6 +412,7 @@ def bearing_loops(
     n_points: int = 200,
     poles=None,
     projected: bool = True,
+    peak_samples: int = 3,
 ) -> tuple[BearingLoop, ...]:
     """Sensitivity function and margins of both control axes of every active bearing.
 
@@ -430,6 +433,11 @@ def bearing_loops(
         Refine the peaks and crossovers on small projected models of their intervals, each
         result checked against a full solve (:mod:`flexshaft.analyses.local_projection`); False:
         a full solve at every refinement step (the reference the tests compare with).
+    peak_samples : {3, 1}
+        Grid points per lightly damped pole: at its top and half width (3), or at its top only
+        (1: the screening's; the refinement brackets the peak between the neighbouring grid
+        points instead, and the margins of the embedded designs agree with those of 3 to 2e-8,
+        tests/test_loop_robustness.py).
 
     Returns
     -------
@@ -444,6 +452,8 @@ def bearing_loops(
     check_model(model)
     speed = check_speed(model.speed if speed is None else speed)
     n_points = check_count(n_points, "n_points", minimum=3)
+    if peak_samples not in _AROUND:
+        raise ValueError(f"peak_samples must be 3 or 1 (got {peak_samples!r})")
     low, high = (float(v) for v in frequency_range)
     if not (np.isfinite(low) and np.isfinite(high) and 0 < low < high):
         raise ValueError(f"frequency_range must be 0 < low < high [Hz] (got {frequency_range!r})")
@@ -469,7 +479,7 @@ def bearing_loops(
 
     if poles is None:
         poles = closed_loop_poles(model, speed)
-    grid = _grid(model, (low, high), n_points, poles)
+    grid = _grid(model, (low, high), n_points, poles, _AROUND[peak_samples])
     responses: list[np.ndarray] = []
     T_grid = closed(grid, responses if projected else None)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real

@@ -11,7 +11,7 @@ response cannot be scanned; :func:`label_critical_speeds` names the Campbell mod
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -20,6 +20,7 @@ import numpy as np
 from flexshaft.analyses.banded import SingularSystemError
 from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.modal import modes
+from flexshaft.analyses.peak_projection import ProjectedOrbit
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.results import dataframe, html_table
 from flexshaft.analyses.separation import resolve_peak, response_peaks
@@ -118,6 +119,7 @@ def lateral_critical_speeds(
     top: float = REPORT.scan_top,
     n_points: int = REPORT.spinup_speeds,
     scan=None,
+    projected: bool = True,
 ) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
@@ -135,6 +137,10 @@ def lateral_critical_speeds(
     scan : tuple of ndarray, optional
         ``(speeds, orbits)`` of a scan already computed (orbits (nodes, cases, speeds) [m], e.g.
         an assessment's spin-up response), used instead of a new one.
+    projected : bool
+        Refine each peak on a small projected model of the response around it, checked by full
+        solves (:mod:`flexshaft.analyses.peak_projection`); False: a full solve at every
+        refinement speed (the reference the tests compare with).
 
     Returns
     -------
@@ -158,9 +164,15 @@ def lateral_critical_speeds(
             q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
             return _shaft_orbits(model, q)[node, 0]
 
+        response: Callable[[np.ndarray], np.ndarray] = orbit_at
+        rows = (int(model.dofs.shaft(int(node), "v")), int(model.dofs.shaft(int(node), "w")))
+        if projected and np.all(np.isin(rows, model.dofs.free)):
+            # the refinement on a projected model of the peak, checked by full solves
+            response = ProjectedOrbit(model, loads[:, case], rows, speeds[max(k - 1, 0) : k + 2])
+
         station = float(model.dofs.shaft_x[node])
         try:
-            peak = resolve_peak(orbit_at, speeds, orbits[node, case], near=rough.speed)
+            peak = resolve_peak(response, speeds, orbits[node, case], near=rough.speed)
         except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
             out.append(
                 LateralCritical(

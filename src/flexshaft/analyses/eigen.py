@@ -53,6 +53,7 @@ import numpy as np
 import scipy.linalg as la
 import scipy.sparse.linalg as spla
 
+from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
 from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
 from flexshaft.analyses.reduced_basis import FullOperators, enrich_basis, full_operators
@@ -146,6 +147,10 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
             # differ at round-off (1e-10 in ω²), so results were not reproducible bit for bit
             start = np.random.default_rng(0).standard_normal(n)
             w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM", v0=start)
+        elif n <= WHOLE_DENSE_BASIS_UP_TO and nb <= dense_spectrum(model, _BASIS_SHIFT)[2]:
+            mu, Phi, _ = dense_spectrum(model, _BASIS_SHIFT)  # every mode, once per model: bases share it
+            mu, Phi = mu[n - nb :], Phi[:, n - nb :]
+            w2 = 1.0 / mu - _BASIS_SHIFT
         else:
             dense_M = M.toarray()
             mu, Phi = la.eigh(dense_M, K.toarray() + _BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])

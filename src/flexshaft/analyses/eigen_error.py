@@ -42,6 +42,7 @@ import numpy as np
 import scipy.linalg as la
 import scipy.sparse as sp
 
+from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO
 from flexshaft.analyses.eigen import ReducedModel, reduce, viscous_model
 from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import LossCoefficients, eigen_coefficients
@@ -235,9 +236,12 @@ def accurate_reduction(model: Model, size: int, enrich: int) -> ReducedModel:
     """:func:`~flexshaft.analyses.eigen.reduce` for :func:`tracked_to_accuracy`: a basis of
     under a quarter of 300 or more free DOFs by sparse shift-invert Lanczos (4x faster than the
     dense solve at 604 DOFs and 28 modes, the same ω² to 3e-10; a basis error it leaves is in
-    the estimate like any other), the dense solver when ARPACK does not converge."""
+    the estimate like any other), the dense solver when ARPACK does not converge. Up to
+    :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs the dense basis is read
+    off the model's whole spectrum, solved once for every basis of the model (an assessment's
+    modes, stability and every-root check share it)."""
     n_free = int(model.dofs.free.size)
-    if n_free >= 300 and 4 * size < n_free:
+    if WHOLE_DENSE_BASIS_UP_TO < n_free and 4 * size < n_free:
         try:
             return reduce(model, size, "sparse", enrich=enrich)
         except RefusedInputError:  # ARPACK's failure: the dense solver says what is wrong

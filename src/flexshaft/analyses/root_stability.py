@@ -328,16 +328,21 @@ def root_stability(model: Model, speeds) -> RootStability:
     for speed in speeds:
         speed = float(speed)
         state = red.state_matrix(speed)
-        lam, right = la.eig(state, check_finite=False)
+        passive = method == "passive" and red.has_loss
+        if passive:  # every root is solved on its branches below: the loss-free vectors are unused
+            lam, right = np.asarray(la.eigvals(state, check_finite=False), dtype=complex), None
+        else:
+            lam, right = la.eig(state, check_finite=False)
         require_finite("closed-loop roots", lam)
         oscillatory = lam.imag > 1e-6 * np.abs(lam)
         real = np.abs(lam.imag) <= 1e-6 * np.abs(lam)
         divergent = real & (lam.real > DIVERGENCE_TOLERANCE * scale)
-        if method == "passive" and red.has_loss:
+        if passive:
             # a small basis: every hysteretic root exactly, one complex eigen-solution per branch
             s, _ = consistent_roots(red, speed)
             done = np.ones(s.size, bool)
         else:
+            assert right is not None
             s, done = _hysteretic(red, speed, state, lam[oscillatory].copy(), right[:, oscillatory])
         zeta = _damping_ratio(s)
         for k in np.flatnonzero(zeta < -STABILITY_TOLERANCE):

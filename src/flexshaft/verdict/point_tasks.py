@@ -60,7 +60,10 @@ def independent_tasks(
         tasks.append(Task("buckling", "torsional buckling", _buckling, (source, detail), cost=0.3))
         tasks.append(Task("thermal", "thermal", _thermal, (source, detail), cost=0.25))
     tasks.append(Task("stability", "whirl stability", _stability, (source, resolution), cost=0.2))
-    tasks.append(Task("roots", "every closed-loop root and the bearing loops", _roots_and_loops, (source,), cost=0.4))
+    roots = Task(
+        "roots", "every closed-loop root and the bearing loops", _roots_and_loops, (source, resolution), cost=0.4
+    )
+    tasks.append(roots)
     return start_tasks(tasks, executor)
 
 
@@ -138,11 +141,14 @@ def root_speeds(model: Model) -> np.ndarray:
     return np.unique([0.0, model.speed, (1.0 + margin) * model.speed])
 
 
-def _roots_and_loops(source: Model | Design) -> tuple[RootStability, tuple[BearingLoop, ...] | None]:
+def _roots_and_loops(
+    source: Model | Design, resolution: Resolution
+) -> tuple[RootStability, tuple[BearingLoop, ...] | None]:
     """Every root at :func:`root_speeds` and the loops at the operating speed (on a grid at the
     every-root check's closed-loop poles there)."""
     model = _model_of(source)
     roots = root_stability(model, root_speeds(model))
     if not model.actuators:
         return roots, None
-    return roots, bearing_loops(model, poles=roots.roots_at(model.speed))
+    poles = roots.roots_at(model.speed)
+    return roots, bearing_loops(model, poles=poles, peak_samples=resolution.loop_peak_samples)
