@@ -16,7 +16,7 @@ import pytest
 
 #: A test above this CPU time [s] must carry ``@pytest.mark.slow(reason=...)``.
 SLOW_CPU_SECONDS = 5.0
-_TIMES = pytest.StashKey[dict]()
+_TIMES = pytest.StashKey["_CpuTimes"]()
 
 
 def _cpu_seconds() -> float:
@@ -34,20 +34,59 @@ def pytest_addoption(parser):
     )
 
 
+class _CpuTimes:
+    """Sums each test's CPU time from its reports: in a serial run, and in pytest-xdist's
+    controller, which runs no test itself and receives the workers' reports."""
+
+    def __init__(self) -> None:
+        self.times: dict[str, list] = {}
+
+    def pytest_runtest_logreport(self, report) -> None:
+        props = dict(report.user_properties)
+        if "cpu_seconds" in props:
+            entry = self.times.setdefault(report.nodeid, [0.0, props["marked_slow"]])
+            entry[0] += props["cpu_seconds"]
+
+
 def pytest_configure(config):
-    config.stash[_TIMES] = {}
+    config.stash[_TIMES] = _CpuTimes()
+    config.pluginmanager.register(config.stash[_TIMES], "cpu-durations")
+
+
+_PHASE_START = pytest.StashKey[float]()
 
 
 @pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_protocol(item, nextitem):
-    start = _cpu_seconds()
+def pytest_runtest_makereport(item, call):
+    # each phase's CPU travels with its report (xdist sends user_properties to the controller)
+    seconds = _cpu_seconds() - item.stash.get(_PHASE_START, _cpu_seconds())
+    outcome = yield
+    report = outcome.get_result()
+    report.user_properties.append(("cpu_seconds", seconds))
+    report.user_properties.append(("marked_slow", item.get_closest_marker("slow") is not None))
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_setup(item):
+    item.stash[_PHASE_START] = _cpu_seconds()
     yield
-    item.config.stash[_TIMES][item.nodeid] = (_cpu_seconds() - start, item.get_closest_marker("slow") is not None)
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_call(item):
+    item.stash[_PHASE_START] = _cpu_seconds()
+    yield
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_teardown(item):
+    item.stash[_PHASE_START] = _cpu_seconds()
+    yield
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config):
     count = config.getoption("--cpu-durations")
-    times = config.stash[_TIMES]
+    times = {nodeid: tuple(entry) for nodeid, entry in config.stash[_TIMES].times.items()}
     if count is None or not times:
         return
     ranked = sorted(times.items(), key=lambda kv: -kv[1][0])
