@@ -136,6 +136,32 @@ def test_campbell_plot_colours_damping_and_labels_criticals_apart(model):
     assert legend.get_window_extent().y1 <= ax.get_window_extent().y0
 
 
+def test_excitation_ray_names_on_the_right_edge_do_not_overprint():
+    """Rays that leave the diagram on its right edge close together (here the main rotor's 4/rev
+    at 25.0 Hz and a 0.3x order at 30.0 Hz at 6000 rpm, about 20 px apart on a 150-Hz axis) keep
+    their names apart: their text boxes, drawn, do not overlap."""
+    speeds = np.linspace(0.0, 6000.0, 31)
+    f = np.column_stack([np.full(31, 150.0), np.full(31, 60.0)])
+    whirl = np.array([["forward", "backward"]] * 31)
+    fig = drawn(
+        campbell_figure(
+            speeds,
+            f,
+            whirl,
+            operating_rpm=4800.0,
+            main_rotor_hz={"4/rev": 20.0},  # geared: 25 Hz at 6000 rpm
+            excitation_orders={"tail rotor 1/rev": 0.3, "tail rotor 0.31/rev": 0.31},  # 30 and 31 Hz
+        )
+    )
+    ax = fig.axes[0]
+    names = [t for t in ax.texts if t.get_text() in ("MR 4/rev", "tail rotor 1/rev", "tail rotor 0.31/rev")]
+    assert len(names) == 3
+    boxes = [t.get_window_extent() for t in names]
+    for i in range(len(boxes)):
+        for j in range(i + 1, len(boxes)):
+            assert not boxes_overlap(boxes[i], boxes[j]), (names[i].get_text(), names[j].get_text())
+
+
 def test_campbell_without_damping_keeps_one_colour_per_mode():
     speeds = np.linspace(0.0, 6000.0, 31)
     f = np.column_stack([20 + 0.001 * speeds, 20 - 0.001 * speeds, np.full(31, 50.0)])

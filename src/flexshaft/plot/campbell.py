@@ -251,6 +251,7 @@ def campbell_figure(
             zorder=1,
         )
         handles.append(line)
+    ray_labels: list[tuple[str, float, float, str]] = []  # (text, x, y, colour) at each ray's end
     for name, f_op in rotor.items():
         if operating_rpm:
             (line,) = ax.plot(
@@ -269,16 +270,7 @@ def campbell_figure(
         handles.append(line)
         x_end = span[1] if not operating_rpm else min(span[1], top * operating_rpm / f_op)
         y_end = f_op if not operating_rpm else f_op * x_end / operating_rpm
-        ax.annotate(
-            f"MR {name}",
-            (x_end, y_end),
-            xytext=(-3, 3),
-            textcoords="offset points",
-            ha="right",
-            va="bottom",
-            fontsize=7.5,
-            color="tab:purple",
-        )
+        ray_labels.append((f"MR {name}", x_end, y_end, "tab:purple"))
     for name, order in (excitation_orders or {}).items():
         if not (np.isfinite(order) and order > 0):
             raise ValueError(f"excitation_orders: {name!r} must be a finite order > 0, got {order!r}")
@@ -293,16 +285,8 @@ def campbell_figure(
         )
         handles.append(line)
         x_end = min(span[1], top * RPM_PER_HZ / order)
-        ax.annotate(
-            name,
-            (x_end, order * x_end / RPM_PER_HZ),
-            xytext=(-3, 3),
-            textcoords="offset points",
-            ha="right",
-            va="bottom",
-            fontsize=7.5,
-            color="tab:brown",
-        )
+        ray_labels.append((name, x_end, order * x_end / RPM_PER_HZ, "tab:brown"))
+    _label_rays(ax, ray_labels)
     if critical.size:
         (marker,) = ax.plot(
             critical, critical / RPM_PER_HZ, "o", mfc="none", mec="k", mew=1.3, ms=8, label="critical speed", zorder=4
@@ -346,6 +330,33 @@ def campbell_figure(
     else:
         ax.legend(handles=handles, loc="best", fontsize=7.5)
     return fig
+
+
+def _label_rays(ax, labels: list[tuple[str, float, float, str]]) -> None:
+    """Name each excitation ray just above its end; the ends on the right edge of the axes
+    (rays that leave the diagram there) are moved apart vertically so that no two names print
+    over each other (positions in pixels, one line of 7.5-pt text apart); a white ground keeps
+    a name legible where it crosses a mode's line."""
+    if not labels:
+        return
+    scale = ax.figure.dpi / 72.0
+    ends = ax.transData.transform([(x, y) for _, x, y, _ in labels])
+    right = np.isclose(ends[:, 0], ax.transData.transform((ax.get_xlim()[1], 0.0))[0], atol=1.0)
+    y_px = ends[:, 1] + 3.0 * scale  # the text's baseline, 3 pt above the ray's end
+    if right.sum() > 1:
+        y_px[right] = spread(y_px[right], 10.0 * scale)
+    for (text, x, y, colour), y_end, y_text in zip(labels, ends[:, 1], y_px, strict=True):
+        ax.annotate(
+            text,
+            (x, y),
+            xytext=(-3.0, (y_text - y_end) / scale),
+            textcoords="offset points",
+            ha="right",
+            va="bottom",
+            fontsize=7.5,
+            color=colour,
+            bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},  # over a mode's line
+        )
 
 
 def _label_criticals(ax, critical: np.ndarray) -> None:
