@@ -191,14 +191,25 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close(name):
         assert all(c.status != "not evaluated" for c in full.verdict.checks if c.key in applicable)
 
 
-def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
+def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution(monkeypatch):
     """One recipe: at one resolution the optimizer's verdict of a design is the run's, check by
     check (status, value, margin), and its outputs (what the search reads: status codes,
     normalised margins, objective values) are those of the run's checks, bit for bit: the same
     functions on the same numbers, so no tolerance. The segmented aluminium driveline adds the
     metal-strength and coupling checks (at its nominal point), the tuned design the laminate's and
     the actuators' (at its hottest envelope point, an envelope of one: the optimizer judges the
-    envelope's points as the run does)."""
+    envelope's points as the run does). The optimizer's verdict is the assessment its outputs
+    were computed from (``design_metrics`` calls ``evaluate_design``; recorded on the way rather
+    than computed a second time: CPU budget, issue 23)."""
+    import flexshaft.optimize.evaluate as evaluation
+
+    judged = []
+
+    def recorded(design, fidelity="screening"):
+        judged.append(evaluate_design(design, fidelity))
+        return judged[-1]
+
+    monkeypatch.setattr(evaluation, "evaluate_design", recorded)
     values = {
         "buckling": "buckling_safety_factor",
         "whirl_damping": "min_log_decrement",
@@ -211,11 +222,13 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
     tuned["envelope"]["points"] = [tuned["envelope"]["points"][k] for k in (-1,)]
     for design in (design_from_dict(tuned), with_overrides(embedded_design("current"), {"envelope": None})):
         run = assess(design, SCREENING)
-        optimizer = evaluate_design(design, "screening")
+        metrics = design_metrics(design, "screening")
+        (optimizer,) = judged
+        judged.clear()
+        assert optimizer.design == design and optimizer.resolution == SCREENING
         assert [(c.key, c.status, c.value, c.margin) for c in optimizer.verdict.checks] == [
             (c.key, c.status, c.value, c.margin) for c in run.verdict.checks
         ]
-        metrics = design_metrics(design, "screening")
         listed = {c.key: c for c in run.verdict.checks}
         assert set(listed) <= set(CHECK_KEYS)
         for key in CHECK_KEYS:
