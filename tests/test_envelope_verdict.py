@@ -81,11 +81,17 @@ def tuned_screening():
     return assess(tuned_design(), SCREENING)
 
 
-def test_a_design_without_an_envelope_is_judged_at_its_own_point(tuned_screening):
+@pytest.fixture(scope="module")
+def nominal_screening():
+    """The tuned design without its ``[envelope]``, at the screening resolution (shared: read only)."""
     data = tuned_design().model_dump()
     data["envelope"] = None
-    design = design_from_dict(data)
-    a = assess(design, SCREENING)
+    return assess(design_from_dict(data), SCREENING)
+
+
+def test_a_design_without_an_envelope_is_judged_at_its_own_point(tuned_screening, nominal_screening):
+    a = nominal_screening
+    design = a.design
     assert design.envelope is None and [p.name for p in a.points] == ["operating point"]
     assert a.governing_point == "operating point" and a.conditions is None
     assert a.verdict == a.points[0].verdict
@@ -109,7 +115,7 @@ def test_the_tuned_design_passes_at_every_point_and_says_where_each_check_govern
     assert a.governing_point in names and a.point(a.governing_point).analyses is not None
 
 
-def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(tuned_screening):
+def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(tuned_screening, nominal_screening):
     """results.json's ``envelope`` holds each point's conditions and own verdict, the report's
     table one row per point, the terminal's line the governing point: all read the same
     assessment, whose governing point has the tightest check of any point."""
@@ -135,7 +141,7 @@ def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(
     rows = envelope_rows(a)
     assert [r[0] for r in rows if r[0].endswith("(governs)")] == [f"{a.governing_point} (governs)"]
     assert f"governed by {a.governing_point} (" in envelope_line(a)
-    nominal = assess(with_overrides(tuned_design(), {"envelope": None}), SCREENING)
+    nominal = nominal_screening
     assert results_json(nominal)["envelope"] is None and envelope_rows(nominal) == [] and envelope_line(nominal) == ""
 
 

@@ -191,14 +191,25 @@ def test_verdict_fidelity_equals_the_full_run_and_screening_is_close(name):
         assert all(c.status != "not evaluated" for c in full.verdict.checks if c.key in applicable)
 
 
-def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
+def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution(monkeypatch):
     """One recipe: at one resolution the optimizer's verdict of a design is the run's, check by
     check (status, value, margin), and its outputs (what the search reads: status codes,
     normalised margins, objective values) are those of the run's checks, bit for bit: the same
     functions on the same numbers, so no tolerance. The segmented aluminium driveline adds the
     metal-strength and coupling checks (at its nominal point), the tuned design the laminate's and
     the actuators' (at its hottest envelope point, an envelope of one: the optimizer judges the
-    envelope's points as the run does)."""
+    envelope's points as the run does). The optimizer's verdict is the assessment its outputs
+    were computed from (``design_metrics`` calls ``evaluate_design``; recorded on the way rather
+    than computed a second time: CPU budget, issue 23)."""
+    import flexshaft.optimize.evaluate as evaluation
+
+    judged = []
+
+    def recorded(design, fidelity="screening"):
+        judged.append(evaluate_design(design, fidelity))
+        return judged[-1]
+
+    monkeypatch.setattr(evaluation, "evaluate_design", recorded)
     values = {
         "buckling": "buckling_safety_factor",
         "whirl_damping": "min_log_decrement",
@@ -211,11 +222,13 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution():
     tuned["envelope"]["points"] = [tuned["envelope"]["points"][k] for k in (-1,)]
     for design in (design_from_dict(tuned), with_overrides(embedded_design("current"), {"envelope": None})):
         run = assess(design, SCREENING)
-        optimizer = evaluate_design(design, "screening")
+        metrics = design_metrics(design, "screening")
+        (optimizer,) = judged
+        judged.clear()
+        assert optimizer.design == design and optimizer.resolution == SCREENING
         assert [(c.key, c.status, c.value, c.margin) for c in optimizer.verdict.checks] == [
             (c.key, c.status, c.value, c.margin) for c in run.verdict.checks
         ]
-        metrics = design_metrics(design, "screening")
         listed = {c.key: c for c in run.verdict.checks}
         assert set(listed) <= set(CHECK_KEYS)
         for key in CHECK_KEYS:
@@ -377,14 +390,17 @@ def test_cli_user_errors_exit_2(tmp_path):
 
 @pytest.mark.slow(
     reason="end to end: four verdict evaluations, the full runs that verify the written designs and the "
-    "baseline reference, and `flexshaft run --strict` on a written file (about 4 s alone)"
+    "baseline reference, and `flexshaft run --strict` on a written file (about 7 s alone)"
 )
 def test_cli_optimizes_writes_verified_design_files(tmp_path):
     """A small search from the tuned design over the actuator gains: the base is the first
     candidate, so the front is not empty; each written design file passes the full run, and
-    ``flexshaft run --strict`` on it exits 0."""
+    ``flexshaft run --strict`` on it exits 0. The tuned design at its nominal point (CPU budget,
+    issue 23): the envelope would repeat every evaluation and full run at each of its four
+    points; the optimizer's judging of an envelope is
+    ``test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution``'s."""
     base = tmp_path / "tuned.toml"
-    base.write_text(design_toml(tuned_design()))
+    base.write_text(design_toml(with_overrides(tuned_design(), {"envelope": None})))
     out = tmp_path / "opt"
     result = runner.invoke(
         app,

@@ -390,19 +390,22 @@ def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
     """Was: a PID bearing (C(0) infinite) entered the force check with a static force of 0 (the
     collocated law times the offset was not finite and was dropped). Now the static force is the
     run's static bearing reaction (the integrator's constraint force); for a PD bearing that
-    reaction equals the law C(0) − k_s times the static offset at the magnet (another path)."""
+    reaction equals the law C(0) − k_s times the static offset at the magnet (another path).
+    At the screening resolution (CPU budget, issue 23): the static solution and the reactions do
+    not depend on the speed grids, and the dynamic peak only adds to the static force."""
     import numpy as np
 
     from flexshaft.design import tuned_design, with_overrides
+    from flexshaft.resolution import SCREENING
     from flexshaft.verdict.assess import assess
 
     tuned = with_overrides(tuned_design(), {"envelope": None})  # the nominal point: the envelope adds nothing here
-    pd = assess(tuned)
+    pd = assess(tuned, SCREENING)
     for a, ev in zip(pd.model.actuators, pd.evidence.actuators):
         offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))
         assert ev.static_force == pytest.approx(abs(a.law(0j)) * offset, rel=1e-9)
     pid = with_overrides(tuned, {"bearings[1].integral_gain": 2.0e6, "bearings[2].integral_gain": 2.0e6})
-    res = assess(pid)
+    res = assess(pid, SCREENING)
     evidence = res.evidence.actuators
     for ev in evidence:
         reaction = res.bearing_reactions[ev.name].static_lateral
