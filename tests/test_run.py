@@ -49,13 +49,35 @@ def _flexshaft(cwd: Path, *args: str, stdout=None) -> subprocess.CompletedProces
     )
 
 
-@pytest.fixture(scope="module")
-def quick_start(tmp_path_factory) -> dict:
-    """The README's quick start: ``flexshaft run`` in a fresh folder (tests only read it)."""
-    folder = tmp_path_factory.mktemp("quick_start")
+def _quick_start(folder: Path) -> dict:
     result = _flexshaft(folder, "run")
     assert result.returncode == 0, result.stderr
     return {"folder": folder, "out": folder / "flexshaft-results", "stdout": result.stdout, "stderr": result.stderr}
+
+
+@pytest.fixture(scope="module")
+def quick_start(tmp_path_factory) -> dict:
+    """The README's quick start: ``flexshaft run`` in a fresh folder (tests only read it).
+
+    Under pytest-xdist the module's tests may land on both workers: they share one run (the
+    first worker computes it under a lock in the session's temporary folder, the other waits and
+    reads it; pytest-xdist's documented pattern for a fixture run once per session)."""
+    if os.environ.get("PYTEST_XDIST_WORKER") is None:
+        return _quick_start(tmp_path_factory.mktemp("quick_start"))
+    try:
+        import fcntl
+    except ImportError:  # no POSIX locks: one run per worker
+        return _quick_start(tmp_path_factory.mktemp("quick_start"))
+    shared = tmp_path_factory.getbasetemp().parent  # this session's, above each worker's own
+    folder, record = shared / "quick_start", shared / "quick_start.json"
+    with open(shared / "quick_start.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not record.is_file():
+            shutil.rmtree(folder, ignore_errors=True)
+            folder.mkdir()
+            run = _quick_start(folder)
+            record.write_text(json.dumps({"stdout": run["stdout"], "stderr": run["stderr"]}), encoding="utf-8")
+    return {"folder": folder, "out": folder / "flexshaft-results", **json.loads(record.read_text(encoding="utf-8"))}
 
 
 @pytest.fixture(scope="module")
