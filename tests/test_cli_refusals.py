@@ -39,6 +39,13 @@ def coarse(data: dict) -> dict:
     return data
 
 
+def nominal(data: dict) -> dict:
+    """``coarse``, and judged at its own operating point only (no envelope: each of the
+    embedded envelope's points is one more assessment of the same reproducer)."""
+    coarse(data)["envelope"] = None
+    return data
+
+
 def refused(result, *words: str) -> str:
     """The stderr of a clean refusal: exit 2, no traceback, naming ``words``."""
     assert result.exit_code == 2, (result.exit_code, result.output)
@@ -300,7 +307,7 @@ def test_check_still_passes_the_embedded_designs(tmp_path: Path) -> None:
 def test_run_of_a_divergent_bearing_is_not_an_internal_error(tmp_path: Path) -> None:
     """Was: ks = 2e7 on the baseline's amb_1 (a negative stiffness beyond kp: divergence), `run
     --studies none` exit 4 (the whirl evidence added 1 to a missing mode)."""
-    design = variant(tmp_path, "baseline", lambda d: coarse(d)["bearings"][1].update(ks=2.0e7))
+    design = variant(tmp_path, "baseline", lambda d: nominal(d)["bearings"][1].update(ks=2.0e7))
     result = runner.invoke(app, ["run", str(design), "--studies", "none", "-o", str(tmp_path / "r")])
     assert result.exit_code in (0, 2, 3), result.output
 
@@ -308,7 +315,7 @@ def test_run_of_a_divergent_bearing_is_not_an_internal_error(tmp_path: Path) -> 
 def test_run_of_a_design_at_rest_is_not_an_internal_error(tmp_path: Path) -> None:
     """Was: speed_rpm = 0 and power = 0: `run` exit 4 in the actuator evidence (argmax of an
     empty sequence). The CLI skips the thesis studies of such a design (they are spin-ups)."""
-    design = variant(tmp_path, "baseline", lambda d: coarse(d)["operating"].update(speed_rpm=0.0, power=0.0))
+    design = variant(tmp_path, "baseline", lambda d: nominal(d)["operating"].update(speed_rpm=0.0, power=0.0))
     result = runner.invoke(app, ["run", str(design), "-o", str(tmp_path / "r")])
     assert result.exit_code in (0, 2, 3), result.output
     assert "thesis studies need an operating speed" in result.stderr

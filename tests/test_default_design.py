@@ -61,14 +61,9 @@ def test_a_design_file_is_named_by_its_path(name: str, tmp_path: Path):
     assert result.stdout.startswith("design: Thesis Table 3.1 configuration")
 
 
-@pytest.mark.slow(reason="a full run of the tuned design at its four envelope points (~6 s of CPU)")
-def test_run_names_the_design_then_the_verdict(tmp_path: Path):
-    result = runner.invoke(app, ["run", "--studies", "none", "--out", str(tmp_path / "out")])
-    assert result.exit_code == 0, result.output
-    first, second, third = result.stdout.splitlines()[:3]
-    assert first == TUNED_HEADING
-    assert second == "verdict: PASS — 13 checks pass"  # the tuned design passes (docs/requirements.md)
-    assert third.startswith("envelope: 4 points (cold_day, standard_day, hot_day, hot_soak_start); governed by ")
+# ``flexshaft run`` names the design, then the verdict, then the envelope's points: checked on the
+# README's quick start in tests/test_run.py (test_run_names_the_design_then_the_verdict), which
+# shares that one full run of the tuned design with the report's tests.
 
 
 def test_stability_without_a_file_agrees_with_run_and_the_baseline_is_analysed_when_named(tmp_path: Path):

@@ -20,8 +20,10 @@ Every example must
 
 Budget: the examples of each command are sized to about 5 s of CPU on the development machine
 (derandomized, no example database: CI runs the same examples every time); ``study all`` and
-``compare`` run their assessments at the report's resolution (about 10 s) and are marked slow,
-as are ``run`` and ``optimize`` (an assessment at each of the design's envelope points).
+``compare`` run their assessments at the report's resolution and are marked slow, as are
+``run`` and ``optimize``. The commands that judge a design at each point of its envelope
+(``run``, ``compare``, ``optimize``) get the design with one of its envelope's points, a
+different one from example to example (:func:`design_text`).
 """
 
 from __future__ import annotations
@@ -142,7 +144,18 @@ designs = st.tuples(
 )
 
 
-def design_text(example: tuple) -> str:
+#: Commands that assess a design at each of its envelope points (the embedded designs have three
+#: or four): their designs keep one point of the envelope (:func:`design_text`).
+ENVELOPE = {"run", "optimize", "compare"}
+
+
+def design_text(example: tuple, one_point: bool = False) -> str:
+    """The example's design file. With ``one_point`` its envelope keeps one of its points, the
+    ``elements % n``-th: the examples go through the envelope's points in turn, and the drawn
+    examples are the same as with the whole envelope. Each point is one more assessment of the
+    same design; an envelope of several points is judged end to end by the README's quick start
+    (tests/test_run.py: the tuned design's four points) and the comparison of the embedded
+    designs (tests/test_compare.py)."""
     base, structure, extreme, elements = example
     data = copy.deepcopy(BASES[base])
     data["mesh"]["shaft_elements"], data["mesh"]["boom_elements"] = elements, 3
@@ -150,6 +163,9 @@ def design_text(example: tuple) -> str:
         _edit(data, edit)
     for edit in extreme:
         _extreme(data, edit)
+    if one_point and data.get("envelope"):
+        points = data["envelope"]["points"]
+        data["envelope"]["points"] = [points[elements % len(points)]]
     return toml_document(data)
 
 
@@ -263,7 +279,7 @@ def run_command(root: Path, command: str, example: tuple, options: list[str]) ->
     files = []
     for k, part in enumerate([example] if command != "compare" else [example, (*example[:1], [], [], 3)]):
         path = designs / f"d{k}.toml"
-        path.write_text(design_text(part), encoding="utf-8")
+        path.write_text(design_text(part, one_point=command in ENVELOPE), encoding="utf-8")
         files.append(str(path))
     args = command.split()
     if command in ("validate",):
@@ -307,11 +323,10 @@ def _fuzz(command: str, tmp_path_factory: pytest.TempPathFactory) -> dict[int, i
     return codes
 
 
-#: Commands that assess a design at each of its envelope points (the embedded designs have four):
-#: two examples take about 7 s of CPU.
-ENVELOPE = {"run", "optimize"}
 FAST = [
-    pytest.param(c, marks=pytest.mark.slow(reason="two assessments at every envelope point (~7 s of CPU)"))
+    pytest.param(
+        c, marks=pytest.mark.slow(reason="two examples, each a full assessment with its report (~2-5 s of CPU)")
+    )
     if c in ENVELOPE
     else c
     for c in OPTIONS
@@ -327,7 +342,7 @@ def test_every_command_ends_cleanly(command: str, tmp_path_factory: pytest.TempP
     assert set(codes) <= {0, 2, 3}
 
 
-@pytest.mark.slow  # two assessments at the report's resolution per example: ~10 s of CPU each
+@pytest.mark.slow  # two assessments at the report's resolution per example: ~3 s of CPU each
 @pytest.mark.parametrize("command", ["study all", "compare"])
 def test_the_assessing_commands_end_cleanly(command: str, tmp_path_factory: pytest.TempPathFactory) -> None:
     codes = _fuzz(command, tmp_path_factory)

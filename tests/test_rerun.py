@@ -4,19 +4,18 @@ of the same file replaces its own earlier results, also after the file was edite
 The bar of the issue: from a fresh folder, the README's quick start (``flexshaft run``, the
 embedded design into ``flexshaft-results/``), then ``flexshaft baseline > my.toml && flexshaft
 run my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without ``--force``.
-It runs as a user would (subprocesses, default options) and is marked slow: three full runs
-with the thesis studies, about 40 s of CPU. The fast tests below check the same rules with
-``--studies none`` on a coarse mesh, and that another design's folder is still refused with a
-message that tells the two designs apart.
+It runs as a user would (subprocesses, default options) in tests/test_run.py
+(``test_the_readme_loop_runs_without_force``), marked slow: it goes on from that module's quick
+start, the full run whose report the module checks (one run of the embedded design, not two),
+then two full runs with the thesis studies, about 30 s of CPU. The fast tests below check the
+same rules with ``--studies none`` on a coarse mesh, and that another design's folder is still
+refused with a message that tells the two designs apart.
 """
 
 from __future__ import annotations
 
 import json
-import os
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -41,43 +40,10 @@ SMALL = re.sub(
 WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
 
 
-def _flexshaft(cwd: Path, *args: str, stdout=None) -> subprocess.CompletedProcess:
-    code = "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"
-    return subprocess.run(
-        [sys.executable, "-c", code, *args],
-        cwd=cwd,
-        stdout=stdout if stdout is not None else subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        timeout=600,
-        env={**os.environ, "OPENBLAS_NUM_THREADS": "1"},
-    )
-
-
 def _edit_wall(path: Path, wall: float) -> None:
     text = path.read_text(encoding="utf-8")
     assert WALL.search(text), "the design file has a shaft wall_thickness line"
     path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
-
-
-@pytest.mark.slow  # three full `flexshaft run`s with the thesis studies, as a user types them: ~40 s CPU
-def test_the_readme_loop_runs_without_force(tmp_path: Path) -> None:
-    quick = _flexshaft(tmp_path, "run")
-    assert quick.returncode == 0, quick.stderr
-    assert (tmp_path / "flexshaft-results" / "report.html").is_file()
-    with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
-        assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml")
-    assert first.returncode == 0, first.stderr
-    results = tmp_path / "my-results" / "results.json"
-    wall_before = json.loads(results.read_text())["summary"]
-    _edit_wall(tmp_path / "my.toml", 0.0035)
-    second = _flexshaft(tmp_path, "run", "my.toml")
-    assert second.returncode == 0, second.stderr
-    assert "--force" not in second.stderr
-    assert json.loads(results.read_text())["summary"]["shaft_mass_kg"] > wall_before["shaft_mass_kg"]
-    marker = json.loads((tmp_path / "my-results" / MARKER).read_text())
-    assert marker["complete"] is True and marker["design_source"] == str((tmp_path / "my.toml").resolve())
 
 
 def test_the_default_folder_follows_the_design() -> None:

@@ -1,25 +1,94 @@
-"""End to end: ``flexshaft run`` on the embedded default (tuned) design writes a report that renders."""
+"""End to end: ``flexshaft run`` on the embedded default (tuned) design writes a report that renders.
+
+The README's quick start, ``flexshaft run`` in a fresh folder, runs once (the module's fixture,
+a subprocess as a user types it: about 15 s of CPU, the full run of the tuned design at its four
+envelope points with the thesis studies and every figure). Its output feeds the report's tests,
+the first lines' test (the design, then the verdict) and the readme loop of issue 28, which goes
+on from the folder the quick start left (a copy of it).
+"""
 
 import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 from chromium_probe import chromium_or_skip, image_load_title
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
+from flexshaft.cli.output import MARKER
+from flexshaft.design import embedded_text, tuned_design
+
+#: The tuned design on a coarse mesh, judged at its nominal point (without its envelope's
+#: points): for the options whose subject is the output, not the design's verdict.
+SMALL_TUNED = re.sub(
+    r"\[\[envelope\.points\]\].*?(?=\n# -+\n\[mesh\])",
+    "",
+    embedded_text("tuned")
+    .replace("shaft_elements = 36", "shaft_elements = 6", 1)
+    .replace("boom_elements = 24", "boom_elements = 4", 1),
+    flags=re.S,
+)
+WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
+
+
+def _flexshaft(cwd: Path, *args: str, stdout=None) -> subprocess.CompletedProcess:
+    code = "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"
+    return subprocess.run(
+        [sys.executable, "-c", code, *args],
+        cwd=cwd,
+        stdout=stdout if stdout is not None else subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        timeout=600,
+        env={**os.environ, "OPENBLAS_NUM_THREADS": "1"},
+    )
+
+
+def _quick_start(folder: Path) -> dict:
+    result = _flexshaft(folder, "run")
+    assert result.returncode == 0, result.stderr
+    return {"folder": folder, "out": folder / "flexshaft-results", "stdout": result.stdout, "stderr": result.stderr}
 
 
 @pytest.fixture(scope="module")
-def baseline_run(tmp_path_factory):
-    out = tmp_path_factory.mktemp("run")
-    result = CliRunner().invoke(app, ["run", "--out", str(out)])
-    assert result.exit_code == 0, result.output
-    return out, result.output
+def quick_start(tmp_path_factory) -> dict:
+    """The README's quick start: ``flexshaft run`` in a fresh folder (tests only read it).
+
+    Under pytest-xdist the module's tests may land on both workers: they share one run (the
+    first worker computes it under a lock in the session's temporary folder, the other waits and
+    reads it; pytest-xdist's documented pattern for a fixture run once per session)."""
+    if os.environ.get("PYTEST_XDIST_WORKER") is None:
+        return _quick_start(tmp_path_factory.mktemp("quick_start"))
+    try:
+        import fcntl
+    except ImportError:  # no POSIX locks: one run per worker
+        return _quick_start(tmp_path_factory.mktemp("quick_start"))
+    shared = tmp_path_factory.getbasetemp().parent  # this session's, above each worker's own
+    folder, record = shared / "quick_start", shared / "quick_start.json"
+    with open(shared / "quick_start.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not record.is_file():
+            shutil.rmtree(folder, ignore_errors=True)
+            folder.mkdir()
+            run = _quick_start(folder)
+            record.write_text(json.dumps({"stdout": run["stdout"], "stderr": run["stderr"]}), encoding="utf-8")
+    return {"folder": folder, "out": folder / "flexshaft-results", **json.loads(record.read_text(encoding="utf-8"))}
+
+
+@pytest.fixture(scope="module")
+def baseline_run(quick_start):
+    return quick_start["out"], quick_start["stdout"] + quick_start["stderr"]
 
 
 @pytest.mark.slow(
-    reason="the README's main command end to end: the full run of the default design with its design "
-    "studies and every figure (about 10 s of CPU, the command's own cost; the module shares the fixture)"
+    reason="the README's main command end to end: the full run of the default design at its envelope "
+    "points with its design studies and every figure (about 15 s of CPU, the command's own cost; the "
+    "module shares it)"
 )
 def test_run_writes_report_figures_and_numbers(baseline_run):
     out, output = baseline_run
@@ -100,9 +169,12 @@ def test_stability_command_compares_the_thesis_shafts():
     assert set(data["shafts"]) == {"design", "aluminium 6061-T6", "(45/-45)s FMC", "(45/-45/0/0)s FMC"}
 
 
-@pytest.mark.slow(reason="a full run of the tuned design at its four envelope points (~6 s of CPU)")
 def test_run_json_option_prints_the_key_results(tmp_path):
-    result = CliRunner().invoke(app, ["run", "--out", str(tmp_path), "--json", "--studies", "none"])
+    """The option's output, on the tuned design's file with a coarse mesh at its nominal point
+    (the full design's JSON is the quick start's results.json, checked above)."""
+    design = tmp_path / "tuned.toml"
+    design.write_text(SMALL_TUNED, encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(design), "--out", str(tmp_path / "o"), "--json", "--studies", "none"])
     assert result.exit_code == 0
     data = json.loads(result.stdout)
     assert data["summary"]["operating_speed_rpm"] == pytest.approx(4800.0)
@@ -118,3 +190,43 @@ def test_thermal_command_reports_boom_and_shaft_temperatures():
     assert rises[0] > rises[1] > rises[2]  # more convection, cooler shaft
     bad = CliRunner().invoke(app, ["thermal", "--loss-model", "magic"])
     assert bad.exit_code == 2 and "Traceback" not in bad.output
+
+
+@pytest.mark.slow(reason="reads the module's quick start, a full run of the tuned design (~15 s of CPU if first)")
+def test_run_names_the_design_then_the_verdict(quick_start):
+    """issue 28, point 2 (tests/test_default_design.py): ``flexshaft run``'s first line names the
+    default design, the second is the verdict, the third the envelope's points."""
+    first, second, third = quick_start["stdout"].splitlines()[:3]
+    assert first == f"design: {tuned_design().name} (embedded tuned design)"
+    assert second == "verdict: PASS — 13 checks pass"  # the tuned design passes (docs/requirements.md)
+    assert third.startswith("envelope: 4 points (cold_day, standard_day, hot_day, hot_soak_start); governed by ")
+
+
+def _edit_wall(path: Path, wall: float) -> None:
+    text = path.read_text(encoding="utf-8")
+    assert WALL.search(text), "the design file has a shaft wall_thickness line"
+    path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
+
+
+@pytest.mark.slow  # two full `flexshaft run`s with the thesis studies, as a user types them: ~30 s CPU
+def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None:
+    """Issue 28's bar (tests/test_rerun.py): from a fresh folder, the README's quick start
+    (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture),
+    then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
+    my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
+    folder (the fixture's is shared), as a user would (subprocesses, default options)."""
+    shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
+    assert (tmp_path / "flexshaft-results" / "report.html").is_file()
+    with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
+        assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
+    first = _flexshaft(tmp_path, "run", "my.toml")
+    assert first.returncode == 0, first.stderr
+    results = tmp_path / "my-results" / "results.json"
+    wall_before = json.loads(results.read_text())["summary"]
+    _edit_wall(tmp_path / "my.toml", 0.0035)
+    second = _flexshaft(tmp_path, "run", "my.toml")
+    assert second.returncode == 0, second.stderr
+    assert "--force" not in second.stderr
+    assert json.loads(results.read_text())["summary"]["shaft_mass_kg"] > wall_before["shaft_mass_kg"]
+    marker = json.loads((tmp_path / "my-results" / MARKER).read_text())
+    assert marker["complete"] is True and marker["design_source"] == str((tmp_path / "my.toml").resolve())
