@@ -14,6 +14,13 @@ import os
 
 import pytest
 
+# One BLAS thread in every test process and the commands it starts, as `flexshaft` runs its own
+# workers (flexshaft.cli sets the same unless the user chose): OpenBLAS's idle threads spin, and
+# two xdist workers each with two BLAS threads on two cores nearly doubled the suite's CPU time
+# for the same results. A test that needs more threads sets them in its subprocess's env.
+for _name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS"):
+    os.environ.setdefault(_name, "1")
+
 #: A test above this CPU time [s] must carry ``@pytest.mark.slow(reason=...)``.
 SLOW_CPU_SECONDS = 5.0
 _TIMES = pytest.StashKey["_CpuTimes"]()
@@ -49,6 +56,9 @@ class _CpuTimes:
 
 
 def pytest_configure(config):
+    from threadpoolctl import threadpool_limits  # a BLAS already loaded (by a plugin) ignores the env
+
+    threadpool_limits(limits=1, user_api="blas")
     config.stash[_TIMES] = _CpuTimes()
     config.pluginmanager.register(config.stash[_TIMES], "cpu-durations")
 
