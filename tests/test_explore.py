@@ -10,6 +10,7 @@ ISO 21940-11's e = G/Ω, and the recipe itself at :data:`~flexshaft.resolution.S
 
 from __future__ import annotations
 
+import asyncio
 import json
 import math
 import subprocess
@@ -27,9 +28,10 @@ from flexshaft.verdict.assess import assess
 pytest.importorskip("starlette")
 pytest.importorskip("plotly")
 
-from flexshaft.explore.compute import EXPLORE, design_update, sweep_point
+from flexshaft.explore.compute import EXPLORE, design_update, sweep_point, update_on
 from flexshaft.explore.controls import advanced_overrides, control_overrides, design_controls, layup_angles
 from flexshaft.explore.export import explored_toml, header_comments, run_command
+from flexshaft.explore.workers import Workers
 from flexshaft.optimize.evaluate import normalised_margin
 from flexshaft.report.interactive import actuator_figure, interactive_page, margins_figure
 
@@ -183,6 +185,41 @@ def test_an_update_shows_the_screening_verdict(update_and_screening):
     assert not payload["passed"]  # K_p 2e5 lets actuator 1 reach its gap
     assert set(payload["figures"]) == {"margins", "campbell", "spinup", "actuators", "stability"}
     json.dumps(payload, allow_nan=False)  # strict JSON
+
+
+def test_an_envelope_update_on_two_workers_is_the_serial_update(update_and_screening):
+    """The server updates a design of several envelope points with the points in its workers
+    side by side, then the verdict and figures in one (update_on): the page receives the serial
+    update's payload. Reference: design_update in this process. Every point is computed by
+    the same functions on the same numbers with one BLAS thread (tests/conftest.py), so every
+    number agrees to round-off (1e-12 relative: the processes' BLAS may block the sums
+    differently) and every status and label is the same; only the CPU time differs."""
+    design, serial, _ = update_and_screening
+    workers = Workers(2)
+    try:
+        parallel = asyncio.run(update_on(workers, design))
+    finally:
+        workers.close()
+    assert parallel["cpu_s"] > 0
+    parallel, serial = (
+        json.loads(json.dumps({k: v for k, v in p.items() if k != "cpu_s"})) for p in (parallel, serial)
+    )
+
+    def same(a, b, where="payload"):
+        if isinstance(a, dict):
+            assert isinstance(b, dict) and a.keys() == b.keys(), where
+            for key in a:
+                same(a[key], b[key], f"{where}.{key}")
+        elif isinstance(a, list):
+            assert isinstance(b, list) and len(a) == len(b), where
+            for k, (x, y) in enumerate(zip(a, b)):
+                same(x, y, f"{where}[{k}]")
+        elif isinstance(a, float) and isinstance(b, float):
+            assert a == pytest.approx(b, rel=1e-12, abs=1e-300), where
+        else:
+            assert a == b, where
+
+    same(parallel, serial)
 
 
 def test_figures_draw_what_the_checks_judge(update_and_screening):

@@ -9,15 +9,21 @@ is one point of a one-variable sweep: every check's normalised margin
 (:func:`flexshaft.optimize.evaluate.assessment_metrics`, the optimizer's constraints) at
 :data:`~flexshaft.resolution.SCREENING`.
 
-The functions take and return plain picklable data, so that they run in a worker process.
+The functions take and return plain picklable data, so that they run in a worker process. A
+design with several envelope points is updated by :func:`update_on`: its points in the
+explorer's workers side by side (:func:`point_update`, one point each), then the verdict over
+them and the figures at the governing point (:func:`envelope_update`); the payload is
+:func:`design_update`'s (``tests/test_explore.py``), its wall time about the points' count
+divided by the workers'.
 """
 
 from __future__ import annotations
 
+import asyncio
 import math
 import time
 from dataclasses import replace
-from typing import Any
+from typing import Any, Protocol
 
 from flexshaft.comparison import driveline_inventory
 from flexshaft.design import Design, DesignError, with_overrides
@@ -26,10 +32,19 @@ from flexshaft.report.interactive import assessment_figures
 from flexshaft.report.verdict import VERDICT_COLUMNS, verdict_rows
 from flexshaft.resolution import SCREENING
 from flexshaft.units import rad_s_to_rpm
-from flexshaft.verdict.assess import Assessment, assess
+from flexshaft.verdict.assess import Assessment, PointAssessment, assess, assess_point, combine_points
 from flexshaft.verdict.checks import CHECK_KEYS
 
-__all__ = ["EXPLORE", "SWEEP", "design_update", "sweep_point", "update_payload"]
+__all__ = [
+    "EXPLORE",
+    "SWEEP",
+    "design_update",
+    "envelope_update",
+    "point_update",
+    "sweep_point",
+    "update_on",
+    "update_payload",
+]
 
 #: Campbell speeds drawn by the explorer: 25, every 5 % of the scan to 130 % of the operating
 #: speed (about 0.04 s of CPU on the tuned design, a seventh of the screening assessment).
@@ -89,6 +104,39 @@ def design_update(design: Design) -> dict[str, Any]:
     payload = update_payload(a)
     payload["cpu_s"] = time.process_time() - start
     return payload
+
+
+def point_update(design: Design, index: int) -> tuple[PointAssessment, float]:
+    """Point ``index`` of the design's envelope judged at :data:`EXPLORE`
+    (:func:`~flexshaft.verdict.assess.assess_point`), with the CPU time it took [s]."""
+    start = time.process_time()
+    judged = assess_point(design, index, EXPLORE)
+    return judged, time.process_time() - start
+
+
+def envelope_update(design: Design, judged: list[PointAssessment], cpu_s: float = 0.0) -> dict[str, Any]:
+    """The payload of :func:`design_update` from the envelope's points judged by
+    :func:`point_update` (in order; their CPU time ``cpu_s`` [s] is added to this step's)."""
+    start = time.process_time()
+    payload = update_payload(combine_points(design, judged, EXPLORE))
+    payload["cpu_s"] = cpu_s + time.process_time() - start
+    return payload
+
+
+class _Workers(Protocol):  # flexshaft.explore.workers.Workers
+    processes: int
+
+    async def run(self, function: Any, *args: Any) -> Any: ...
+
+
+async def update_on(workers: _Workers, design: Design) -> dict[str, Any]:
+    """:func:`design_update` of ``design`` computed in ``workers``: an envelope's points side by
+    side when there are several points and workers, else the whole update in one worker."""
+    points = 0 if design.envelope is None else len(design.envelope.points)
+    if points < 2 or workers.processes < 2:
+        return await workers.run(design_update, design)
+    results = await asyncio.gather(*(workers.run(point_update, design, k) for k in range(points)))
+    return await workers.run(envelope_update, design, [j for j, _ in results], sum(c for _, c in results))
 
 
 def sweep_point(base: Design, overrides: dict[str, Any]) -> dict[str, Any]:

@@ -39,7 +39,7 @@ from starlette.routing import Route
 from flexshaft.cli.common import LoadedDesign, UserError
 from flexshaft.cli.output import prepare_output_folder
 from flexshaft.design import Design, DesignError, loads_design, with_overrides
-from flexshaft.explore.compute import EXPLORE, design_update, sweep_point
+from flexshaft.explore.compute import EXPLORE, sweep_point, update_on
 from flexshaft.explore.controls import advanced_overrides, control_overrides, design_controls
 from flexshaft.explore.export import explored_toml, run_command
 from flexshaft.explore.fullrun import full_run
@@ -220,7 +220,7 @@ async def update(request: Request) -> Response:
     seq = body.get("seq", 0)
     seq = int(seq) if isinstance(seq, (int, float)) and math.isfinite(seq) else 0
     session = explorer.sessions.get(str(body.get("session", "")))
-    outcome = await session.update(seq, design_update, design)
+    outcome = await session.update(seq, lambda: update_on(explorer.workers, design))
     if outcome is None:
         return JSONResponse({"seq": seq, "superseded": True})
     payload, waited = outcome

@@ -16,7 +16,7 @@ import multiprocessing
 import threading
 import time
 from collections import OrderedDict
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from concurrent.futures import Future
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
@@ -123,16 +123,16 @@ class Session:
         self.latest = -1
         self._lock = asyncio.Lock()
 
-    async def update(self, seq: int, function: Callable, *args: Any) -> tuple[Any, float] | None:
-        """``function(*args)`` in a worker, or None when a newer request of this page came
-        while this one waited (it is then not computed); with the seconds it waited."""
+    async def update(self, seq: int, compute: Callable[[], Awaitable[Any]]) -> tuple[Any, float] | None:
+        """``await compute()`` (its work in the workers), or None when a newer request of this
+        page came while this one waited (it is then not computed); with the seconds it waited."""
         self.latest = max(self.latest, seq)
         arrived = time.perf_counter()
         async with self._lock:  # FIFO: the waiting requests go in order, the stale ones skip
             if seq < self.latest:
                 return None
             waited = time.perf_counter() - arrived
-            return await self.workers.run(function, *args), waited
+            return await compute(), waited
 
 
 class Sessions:

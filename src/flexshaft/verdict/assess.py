@@ -46,7 +46,7 @@ from flexshaft.verdict.gather import gather_evidence
 from flexshaft.verdict.operating_point import PointAnalyses, add_campbell, add_report_detail, analyse_point
 from flexshaft.verdict.result import Verdict
 
-__all__ = ["Assessment", "PointAssessment", "assess"]
+__all__ = ["Assessment", "PointAssessment", "assess", "assess_point", "combine_points"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -167,26 +167,72 @@ def assess(
         return Assessment(
             **vars(analyses), evidence=only.evidence, verdict=only.verdict, points=(only,), governing_point=only.name
         )
-    judged = []
-    for index, point in enumerate(design.envelope.points):
-        step = None if progress is None else (lambda label, name=point.name: progress(f"{name}: {label}"))
-        try:
-            conditions = point_conditions(design, point)
-        except ValueError as exc:  # a material temperature outside a lamina's table
-            raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
-        try:
-            at_point = design_at_point(design, point, conditions)
-        except DesignError as exc:  # the design at the point breaks the schema (e.g. power without speed)
-            raise DesignError(
-                [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
-                "<envelope>",
-            ) from None
-        analyses = analyse_point(
-            at_point, resolution, conditions=conditions, detail=False, executor=executor, progress=step
-        )
-        judged.append(_judged(point.name, analyses))
+    judged = [
+        assess_point(design, index, resolution, executor=executor, progress=progress)
+        for index in range(len(design.envelope.points))
+    ]
+    return combine_points(design, judged, resolution, progress=progress)
+
+
+def assess_point(
+    design: Design,
+    index: int,
+    resolution: Resolution = REPORT,
+    *,
+    executor: Executor | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> PointAssessment:
+    """The step :func:`assess` takes at point ``index`` of the design's ``[envelope]``: the
+    design at that point analysed at ``resolution`` (without the report's detail) and judged.
+
+    The points are independent: a caller with several processes may compute them apart (the
+    explorer does) and hand them, in the envelope's order, to :func:`combine_points`.
+
+    Raises
+    ------
+    DesignError
+        As :func:`assess` for that point; ValueError when the design has no envelope or no such
+        point.
+    """
+    if design.envelope is None or not 0 <= index < len(design.envelope.points):
+        count = 0 if design.envelope is None else len(design.envelope.points)
+        raise ValueError(f"index: the design's envelope has {count} points, got {index!r}")
+    point = design.envelope.points[index]
+    step = None if progress is None else (lambda label: progress(f"{point.name}: {label}"))
+    try:
+        conditions = point_conditions(design, point)
+    except ValueError as exc:  # a material temperature outside a lamina's table
+        raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
+    try:
+        at_point = design_at_point(design, point, conditions)
+    except DesignError as exc:  # the design at the point breaks the schema (e.g. power without speed)
+        raise DesignError(
+            [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
+            "<envelope>",
+        ) from None
+    analyses = analyse_point(
+        at_point, resolution, conditions=conditions, detail=False, executor=executor, progress=step
+    )
+    return _judged(point.name, analyses)
+
+
+def combine_points(
+    design: Design,
+    judged: list[PointAssessment],
+    resolution: Resolution = REPORT,
+    *,
+    progress: Callable[[str], None] | None = None,
+) -> Assessment:
+    """The assessment of ``design`` from its envelope's points judged by :func:`assess_point`
+    at ``resolution`` (in the envelope's order): the combined verdict, the governing point and,
+    at that point, what the resolution shows beyond the checks (the report's detail, or the
+    explorer's Campbell diagram)."""
+    names = [p.name for p in design.envelope.points] if design.envelope is not None else []
+    if [p.name for p in judged] != names:
+        raise ValueError(f"judged: the design's envelope points {names} in order, got {[p.name for p in judged]}")
     if progress is not None:
         progress("requirements verdict")
+    judged = list(judged)
     governing = governing_point(judged)
     index = next(k for k, p in enumerate(judged) if p.name == governing)
     if resolution.report_detail:
