@@ -3,5 +3,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/venv.sh
-# two workers: the suite is mostly single-threaded numerics (about 2.5 CPU-minutes; pytest --cpu-durations=N lists each test)
+# two workers: the suite is mostly single-threaded numerics (about 7.5 CPU-minutes; pytest --cpu-durations=N lists each test)
 .venv/bin/python -m pytest -n 2 "$@"
