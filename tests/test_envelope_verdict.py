@@ -248,7 +248,10 @@ def test_the_log_decrement_counts_the_lateral_vibration_modes_only():
     m = modes(a.model, a.model.speed, 40)
     s = m.eigenvalues
     zeta = -s.real / np.abs(s)
-    assert np.any(zeta[:8] > 0.999) and "torsional" in m.kind[:12]  # both would take the whirl modes' places
+    assert "torsional" in m.kind[:12]  # it would take a whirl mode's place
+    # the controllers' real roots (ζ ≈ 1) would too; the mode lists now put them after every
+    # vibration mode (analyses.eigen.lowest_modes), and the check must not depend on that
+    assert not np.any(zeta[: SCREENING.modes] > 0.995)
     lateral = np.flatnonzero((m.kind == "lateral") & (zeta < 0.99))[: SCREENING.modes]
     shaft = [k for k in lateral if m.shaft_fractions[k] >= 0.1]
     worst = min(shaft, key=lambda k: m.log_decrements[k])

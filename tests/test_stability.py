@@ -49,6 +49,42 @@ def test_viscous_internal_damping_threshold_is_wn_times_one_plus_ce_over_ci():
     assert res.whirl[-1, res.unstable_mode] == "forward"
 
 
+@pytest.mark.parametrize("basis_size", [4, 8])
+def test_overdamped_internal_roots_never_take_the_whirl_roots_places(basis_size):
+    """Was: with the viscous model every shaft mode above 2 ω_ref/η is damped past critical and
+    whirls at about Ω/2, below the disk's modes; among the 2n roots of lowest |s| those took the
+    places of the disk's forward or backward root (by LAPACK's round-off: numpy 1.26 / scipy
+    1.16 at the default basis, every build at a basis of 8), and the onset was missed. Reference:
+    the closed-form forward root, as above, and the onset W_N (1 + c_e/c_i)."""
+    eta, zeta_e = 0.02, 0.005
+    c_e = 2 * zeta_e * M_DISK * WN
+    c_i = eta * K_SHAFT / WN
+    speeds = np.linspace(0.5, 2.0, 61) * WN
+    res = stability(
+        jeffcott(eta, c_e), speeds, n_modes=2, damping_model="viscous", reference_frequency=WN, basis_size=basis_size
+    )
+    assert sorted(res.whirl[-1]) == ["backward", "forward"]
+    tracked = res.eigenvalues[:, list(res.whirl[-1]).index("forward")]
+    fwd = np.array([forward_root(s, c_e, c_i) for s in speeds])
+    assert np.allclose(tracked.real, fwd.real, rtol=1e-4, atol=1e-6 * WN)
+    # linear interpolation of Re(s) on a 2.5 % speed grid of a nearly linear Re(s): 1e-3
+    assert res.onset_speed == pytest.approx(WN * (1 + c_e / c_i), rel=1e-3)
+
+
+def test_lowest_modes_put_overdamped_roots_last_and_a_divergence_first():
+    """Constructed roots: two vibration modes (ζ 0.01, 0.3), two overdamped stable ones below them
+    in Im s (ζ 0.99995, and a real root), and a real divergent root (Re s > 0)."""
+    from flexshaft.analyses.eigen import lowest_modes
+
+    vib1, vib2 = complex(-3.0, 300.0), complex(-0.3 * 520 / np.sqrt(1 - 0.09), 520.0)
+    over, real_root, divergent = complex(-1.5e4, 150.0), complex(-200.0, 0.0), complex(5.0, 0.0)
+    s = np.array([over, vib2, real_root, vib1])
+    assert list(s[lowest_modes(s, 2)]) == [vib1, vib2]
+    assert list(s[lowest_modes(s, 3)]) == [vib1, vib2, real_root]  # fewer vibration modes than asked
+    s = np.append(s, divergent)
+    assert list(s[lowest_modes(s, 2)]) == [divergent, vib1]  # Im s = 0 first, as before
+
+
 def hysteretic_roots(c_e, eta):
     """Closed-form Jeffcott roots (module docstring): the forward roots of the two sides of the
     spin, s₊ (σ = +1) and s₋ (σ = −1), and the backward root (its loss sign is always +)."""

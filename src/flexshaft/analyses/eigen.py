@@ -553,6 +553,11 @@ def newton(
     return s, y, False
 
 
+#: A stable root with Im s below this fraction of |s| (damping ratio above 0.995) is overdamped:
+#: :func:`lowest_modes` takes it only when the vibration modes are fewer than asked for.
+OVERDAMPED_IM_FRACTION = 0.1
+
+
 def lowest_modes(s: np.ndarray, n: int) -> np.ndarray:
     """Indices of the ``n`` modes of lowest damped frequency Im s among the ``2 n`` of lowest
     |s|, in increasing Im s (then |s|): the modes every table lists and numbers.
@@ -573,5 +578,11 @@ def lowest_modes(s: np.ndarray, n: int) -> np.ndarray:
         Modes wanted (all of them when there are fewer).
     """
     s = np.asarray(s)
-    pool = np.argsort(np.abs(s), kind="stable")[: 2 * n]
-    return pool[np.lexsort((np.abs(s[pool]), s[pool].imag))[:n]]
+    # Overdamped roots (stable, Im s below a tenth of |s|: ζ > 0.995) are no vibration mode of
+    # the band either: the viscous internal-damping model makes every shaft mode above
+    # 2 ω_ref / η one, whirling at about half the spin, Im s ≈ Ω/2, below the modes of the band.
+    # They come last, so that they never take a vibration mode's place (which once dropped the
+    # least stable whirl root and with it the onset); a divergent root (Re s > 0) is never one.
+    overdamped = (s.real < 0) & (np.abs(s.imag) < OVERDAMPED_IM_FRACTION * np.abs(s))
+    pool = np.lexsort((np.abs(s), overdamped))[: 2 * n]
+    return pool[np.lexsort((np.abs(s[pool]), s[pool].imag, overdamped[pool]))[:n]]
