@@ -247,6 +247,7 @@ MAX_EXAMPLES = max(1, round(150 * float(os.environ.get("FLEXSHAFT_FUZZ_FACTOR", 
 calls = {"n": 0}
 
 
+@pytest.mark.slow(reason="150 derandomized command lines through the CLI: about 3.3-5 s of CPU")
 @settings(
     max_examples=MAX_EXAMPLES,
     deadline=None,

@@ -161,6 +161,10 @@ def _margins(res) -> np.ndarray:
     return np.array([normalised_margin(c, res.model.speed) for c in res.verdict.checks])
 
 
+@pytest.mark.slow(
+    reason="three assessments of an embedded design at its envelope points, at three resolutions "
+    "(verdict, report, screening): about 3 s (baseline) and 5.5 s (current) of CPU"
+)
 @pytest.mark.parametrize("name", ["baseline", "current"])
 def test_verdict_fidelity_equals_the_full_run_and_screening_is_close(name):
     """The "verdict" fidelity computes only what the checks read, at the run's resolutions: every

@@ -89,6 +89,7 @@ def test_another_design_is_refused_and_told_apart(tmp_path: Path, monkeypatch) -
     assert forced.exit_code == 0, forced.output
 
 
+@pytest.mark.slow(reason="three `flexshaft run`s of a small design with their figures: about 5 s of CPU")
 def test_a_rerun_of_the_same_file_in_run_needs_no_force(tmp_path: Path, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
     design = tmp_path / "my.toml"
