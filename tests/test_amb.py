@@ -25,7 +25,8 @@ import scipy.linalg as la
 from flexshaft.analyses import frequency_response, imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import campbell
 from flexshaft.analyses.eigen import modal_basis, reduce
-from flexshaft.analyses.response import bearing_forces, orbit_amplitude, static_actuator_forces
+from flexshaft.analyses.reactions import bearing_forces
+from flexshaft.analyses.response import orbit_amplitude, static_actuator_forces
 from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map
 from flexshaft.analyses.stability import stability
 from flexshaft.assembly import build_model

@@ -19,7 +19,8 @@ import pytest
 from rotors import K_SHAFT, M_DISK, WN, disk_dofs, jeffcott
 
 import flexshaft as fs
-from flexshaft.analyses.response import bearing_forces, frequency_response
+from flexshaft.analyses.reactions import bearing_forces
+from flexshaft.analyses.response import frequency_response
 from flexshaft.design import baseline_design
 
 ROOT_A, TIP_A, BOOM_L, CLEARANCE = 0.50, 0.25, 8.05, 0.08  # the baseline [tailboom] table

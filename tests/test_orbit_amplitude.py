@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 from rotors import K_SHAFT, M_DISK, WN, disk_dofs, jeffcott
 
-from flexshaft.analyses.response import imbalance_response, orbit_amplitude, worst_case_orbits
+from flexshaft.analyses.reactions import worst_case_orbits
+from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 
 
 def brute_force(a: complex, b: complex) -> float:

@@ -19,7 +19,8 @@ matplotlib.use("Agg")
 from matplotlib.figure import Figure  # noqa: E402
 
 from flexshaft.analyses import campbell, imbalance_response, modes, stability  # noqa: E402
-from flexshaft.analyses.response import bearing_reactions, orbit_amplitude, static_response  # noqa: E402
+from flexshaft.analyses.reactions import bearing_reactions
+from flexshaft.analyses.response import orbit_amplitude, static_response  # noqa: E402
 from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts  # noqa: E402
 from flexshaft.analyses.spinup import spinup_map  # noqa: E402
 from flexshaft.assembly import build_model  # noqa: E402

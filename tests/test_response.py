@@ -304,7 +304,7 @@ def test_bearing_reactions_balance_a_static_load():
     """Steel shaft on two end bearings, midspan force P: each bearing carries P/2 (statics)."""
     from test_model import steel_shaft
 
-    from flexshaft.analyses.response import bearing_forces
+    from flexshaft.analyses.reactions import bearing_forces
 
     model = build_model(steel_shaft(10))
     P = 800.0

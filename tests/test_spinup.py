@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from flexshaft.analyses import imbalance_response
-from flexshaft.analyses.response import actuator_response, orbit_amplitude
+from flexshaft.analyses.reactions import actuator_response
+from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map, spinup_speeds
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads

@@ -14,7 +14,7 @@ from flexshaft.sweep import Output, Study, Variable, run_sweep
 def peak_actuator_force(point):
     """A real (small) analysis per point: the actuator force at the operating speed."""
     from flexshaft.analyses import imbalance_response
-    from flexshaft.analyses.response import actuator_response
+    from flexshaft.analyses.reactions import actuator_response
     from flexshaft.assembly.loads import imbalance_loads
 
     model = point.model

@@ -15,7 +15,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.response import actuator_response, imbalance_response, worst_case_orbits
+from flexshaft.analyses.reactions import actuator_response, worst_case_orbits
+from flexshaft.analyses.response import imbalance_response
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.units import m_to_mm, rad_s_to_rpm

@@ -23,7 +23,8 @@ from typing import Literal
 import numpy as np
 
 from flexshaft.analyses.banded import BandedHarmonicSolver
-from flexshaft.analyses.response import bearing_reactions, orbit_amplitude, static_response
+from flexshaft.analyses.reactions import bearing_reactions
+from flexshaft.analyses.response import orbit_amplitude, static_response
 from flexshaft.analyses.shaft_strength import shaft_safety_factor
 from flexshaft.assembly.balance import bay_rotating_masses, permissible_eccentricity
 from flexshaft.assembly.loads import external_static_load, imbalance_bays, point_load, torque_load

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from flexshaft.analyses.response import actuator_response, imbalance_response
+from flexshaft.analyses.reactions import actuator_response
+from flexshaft.analyses.response import imbalance_response
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.sweep.run import run_sweep
 from flexshaft.sweep.study import Output, Study, Variable

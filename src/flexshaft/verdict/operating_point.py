@@ -52,7 +52,8 @@ from flexshaft.analyses.criticals import CriticalSpeeds
 from flexshaft.analyses.metal_strength import MetalStrength, metal_strength
 from flexshaft.analyses.misalignment import CouplingMisalignment, coupling_misalignment
 from flexshaft.analyses.modal import Modes, modes
-from flexshaft.analyses.response import BearingReaction, bearing_reactions, imbalance_response
+from flexshaft.analyses.reactions import BearingReaction, bearing_reactions
+from flexshaft.analyses.response import imbalance_response
 from flexshaft.analyses.root_stability import RootStability
 from flexshaft.analyses.shaft_buckling import ShaftBuckling
 from flexshaft.analyses.shaft_strength import StrengthResult, shaft_safety_factor, static_load_parts
