@@ -36,6 +36,8 @@ from flexshaft.assembly.sparse import restrict
 from flexshaft.design import EMBEDDED_DESIGNS, embedded_design, loads_design
 
 AREA = np.pi * (DO**2 - DI**2) / 4
+#: Newton's method on T(s) y = 0 (flexshaft.analyses.eigen.newton) stops at a step of 1e-10 |s|.
+NEWTON_STEP = 1e-10
 INERTIA = np.pi * (DO**4 - DI**4) / 64
 EPS = np.finfo(float).eps
 SHIFT = 1.0  # σ of the basis's shift-invert [rad²/s²]
@@ -90,9 +92,11 @@ def test_jeffcott_modes_of_a_massless_tube_match_the_closed_form(density):
     """Both whirls at rest at ω_n = √(k/m_e) with ζ = c/(2√(k m_e)) (ζ = 0.02 here).
 
     Tolerance: (m_s/m)² (Rayleigh's second-order error; 1.2e-13 at 1e-2) plus the basis's
-    residual bound on this model (the solver's own error, ≤ 1e-13 here), times 10 for the
-    Newton refinement's convergence tolerance relative to |s| (1e-10 of a damping ratio of 1e-4,
-    so 1e-12 of |s| at ζ = 0.02). Before the fix: |s|/ω_n = 0.83 and 1.19 at 1e-6."""
+    residual bound on this model (the solver's own error, ≤ 1e-13 here) plus the Newton
+    refinement's stopping step, NEWTON_STEP of |s|, times 10: the last step bounds the error only
+    if the iteration contracts, by at most r/(1 − r) = 9 steps for a contraction ratio r ≤ 0.9,
+    which this pencil's conditioning (K's top eigenvalue 3.6e13 ω_n² at 1e-4) allows; the modes'
+    stated accuracy is 1e-6 (docs/model.md). Before the fix: |s|/ω_n = 0.83 and 1.19 at 1e-6."""
     m_e = effective_mass(density)
     omega = np.sqrt(K_SHAFT / m_e)
     c = 2 * 0.02 * np.sqrt(K_SHAFT * M_DISK)
@@ -100,7 +104,7 @@ def test_jeffcott_modes_of_a_massless_tube_match_the_closed_form(density):
     K, M = basis_matrices(model)
     w2, Phi = modal_basis(model, 2)
     solver = float(residual_bound(K, M, w2, Phi).max())
-    tolerance = 10 * ((density * AREA * L / M_DISK) ** 2 + solver + 1e-12)
+    tolerance = 10 * ((density * AREA * L / M_DISK) ** 2 + solver + NEWTON_STEP)
     result = modes(model, 0.0, 2)
     assert np.abs(result.eigenvalues) / omega == pytest.approx([1.0, 1.0], abs=tolerance)
     assert result.damping_ratios / (c / (2 * np.sqrt(K_SHAFT * m_e))) == pytest.approx([1.0, 1.0], abs=tolerance)
