@@ -161,17 +161,16 @@ def test_the_eigen_bounds_cover_the_largest_basis_the_accuracy_loop_reaches() ->
     import numpy as np
 
     import flexshaft
-    from flexshaft.analyses.campbell import default_basis_size
     from flexshaft.analyses.stability import stability
     from flexshaft.cli.bounds import eigen_basis_range
     from flexshaft.design import baseline_design
 
     model = flexshaft.build_model(baseline_design())
     free = int(model.dofs.free.size)
-    first, largest = eigen_basis_range(4, default_basis_size(4), free, actuators=2)
+    first, largest = eigen_basis_range(4, free, actuators=2)
     speeds = np.array([0.0, 300.0])
     assert stability(model, speeds, n_modes=4).basis_size <= first
     for n_modes in (4, 12):
-        first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), free, actuators=2)
+        first, largest = eigen_basis_range(n_modes, free, actuators=2)
         grown = stability(model, speeds, n_modes=n_modes, tolerance=1e-15)
         assert first < grown.basis_size <= largest

@@ -53,6 +53,7 @@ __all__ = [
     "EIGENVALUE_TOLERANCE",
     "accuracy_text",
     "accurate_basis",
+    "accurate_bases",
     "accurate_reduction",
     "check_tolerance",
     "eigenvalue_corrections",
@@ -180,6 +181,26 @@ def accurate_basis(n_modes: int) -> tuple[int, int]:
     return max(2 * n_modes, 16), max(n_modes, 8)
 
 
+def accurate_bases(n_modes: int) -> list[tuple[int, int]]:
+    """Every (basis size, enriched modes) :func:`tracked_to_accuracy` may try for ``n_modes``
+    tracked modes, in order: :func:`accurate_basis`'s, then doubled while twice the size stays
+    within four times the plain default basis, 4·max(4n, 40) vectors (the loop also stops once
+    a basis, corrections included, holds that many). The command bounds read the largest
+    (:mod:`flexshaft.cli.bounds`)."""
+    size, enrich = accurate_basis(n_modes)
+    largest = _largest_basis(n_modes)
+    bases = [(size, enrich)]
+    while 2 * size <= largest:
+        size, enrich = 2 * size, 2 * enrich
+        bases.append((size, enrich))
+    return bases
+
+
+def _largest_basis(n_modes: int) -> int:
+    """Four times the plain default basis, max(4n, 40), and at least twice the first size."""
+    return max(4 * max(4 * n_modes, 40), 2 * accurate_basis(n_modes)[0])
+
+
 def tracked_to_accuracy(
     model: Model,
     speeds: np.ndarray,
@@ -221,15 +242,15 @@ def tracked_to_accuracy(
         return run(reduced)
     if basis_size is not None:
         return run(reduce(model, basis_size))
-    size, enrich = accurate_basis(n_modes)
-    largest = max(4 * max(4 * n_modes, 40), 2 * size)  # four times the plain default basis
-    while True:
+    largest = _largest_basis(n_modes)
+    bases = accurate_bases(n_modes)
+    for k, (size, enrich) in enumerate(bases):
         whole = size >= n_free
         out = run(accurate_reduction(model, min(size, n_free), 0 if whole else enrich))
         worst = float(np.nanmax(out[2], initial=0.0))
-        if whole or worst <= tolerance or 2 * size > largest or out[0].size >= largest:
-            return out
-        size, enrich = 2 * size, 2 * enrich
+        if whole or worst <= tolerance or k == len(bases) - 1 or out[0].size >= largest:
+            break
+    return out
 
 
 def accurate_reduction(model: Model, size: int, enrich: int) -> ReducedModel:

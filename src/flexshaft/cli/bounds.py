@@ -95,33 +95,27 @@ def _model_size(design: Any):
         return problem_size(design, "model")
 
 
-def eigen_basis_range(n_modes: int, plain_default: int, free_dofs: int, actuators: int = 0) -> tuple[int, int]:
+def eigen_basis_range(n_modes: int, free_dofs: int, actuators: int = 0) -> tuple[int, int]:
     """(first, largest) basis vectors of an accuracy-controlled eigen-solve of ``n_modes``
-    modes (:func:`~flexshaft.analyses.eigen_error.tracked_to_accuracy`): the enriched basis
-    tried first, and the most it can grow to. The loop doubles the basis (``size`` modes and the
-    static corrections of the lowest ``enrich``) while twice the size stays within four times
-    the plain default basis (``plain_default`` vectors); each corrected mode adds up to five
-    vectors (G, the dampers, three loss matrices) and each actuator two
+    modes: the first and the last basis of :func:`~flexshaft.analyses.eigen_error.accurate_bases`
+    (``size`` modes and the static corrections of the lowest ``enrich``); each corrected mode
+    adds up to five vectors (G, the dampers, three loss matrices) and each actuator two
     (:func:`~flexshaft.analyses.reduced_basis.enrich_basis`); the whole model caps both."""
-    from flexshaft.analyses.eigen_error import accurate_basis
+    from flexshaft.analyses.eigen_error import accurate_bases
 
-    size, enrich = accurate_basis(n_modes)
-    first = min(size + 5 * enrich + 2 * actuators, free_dofs)
-    cap = max(4 * plain_default, 2 * size)
-    while 2 * size <= cap:
-        size, enrich = 2 * size, 2 * enrich
-    return first, min(size + 5 * enrich + 2 * actuators, free_dofs)
+    bases = accurate_bases(n_modes)
+    first, last = (min(size + 5 * enrich + 2 * actuators, free_dofs) for size, enrich in (bases[0], bases[-1]))
+    return first, last
 
 
 def check_stability(design: Any, n_speeds: int, n_modes: int, shafts: int = 1) -> None:
     """``flexshaft stability``: ``shafts`` × ``n_speeds`` eigen-solutions of the basis chosen
     for accuracy for ``n_modes`` tracked modes: the time at the first basis tried, the memory at
     the largest it can grow to (:func:`eigen_basis_range`)."""
-    from flexshaft.analyses.campbell import default_basis_size
     from flexshaft.assembly.size import eigen_seconds
 
     size = _model_size(design)
-    first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), size.free_dofs, size.actuators)
+    first, largest = eigen_basis_range(n_modes, size.free_dofs, size.actuators)
     states = 2 * first + size.controller_states
     worst = 2 * largest + size.controller_states
     seconds = shafts * (size.time_seconds + n_speeds * eigen_seconds(states))
@@ -138,11 +132,10 @@ def check_stability(design: Any, n_speeds: int, n_modes: int, shafts: int = 1) -
 def check_modes(design: Any, n_modes: int) -> None:
     """``flexshaft modes``: one eigen-solution of the basis chosen for accuracy for ``n_modes``
     modes: the time at the first basis tried, the memory at the largest (:func:`eigen_basis_range`)."""
-    from flexshaft.analyses.modal import default_basis_size
     from flexshaft.assembly.size import eigen_seconds
 
     size = _model_size(design)
-    first, largest = eigen_basis_range(n_modes, default_basis_size(n_modes), size.free_dofs, size.actuators)
+    first, largest = eigen_basis_range(n_modes, size.free_dofs, size.actuators)
     states = 2 * first + size.controller_states
     worst = 2 * largest + size.controller_states
     _refuse_if_large(
