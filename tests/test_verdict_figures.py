@@ -110,3 +110,27 @@ def test_campbell_covers_every_mode_the_checks_use_and_marks_the_verdicts_critic
         (ray,) = _lines(ax, e.name)
         x, y = np.asarray(ray.get_xdata()), np.asarray(ray.get_ydata())
         assert (y[-1] - y[0]) / (x[-1] - x[0]) == pytest.approx(e.ratio / 60.0, rel=1e-9)
+
+
+def test_the_margins_figure_draws_a_pass_without_a_finite_margin_as_passed():
+    """A loop without a phase crossover has no finite gain margin: the check passes with no
+    number (the verdict's table prints its limit, the optimizer's normalised margin is +inf).
+    The report's margins figure draws it as passed, a green bar to the axis end, not as 'not
+    evaluated' (which only a check that could not be computed is)."""
+    from matplotlib.colors import to_rgba
+
+    from flexshaft.verdict.result import Check, Verdict
+
+    verdict = Verdict(
+        (
+            Check("loop_gain_margin", "loop gain margin", "decibel", "at least", "pass", limit=6.0),
+            Check("loop_phase_margin", "loop phase margin", "angle", "at least", "not evaluated"),
+        )
+    )
+    fig = verdict.plot_margins()
+    ax = fig.axes[0]
+    texts = [t.get_text() for t in ax.texts]
+    assert texts.count("not evaluated") == 1 and any(t.startswith("∞: no finite margin") for t in texts)
+    gain_bar = max(ax.patches, key=lambda p: p.get_y())  # the first check is drawn on top
+    assert gain_bar.get_facecolor()[:3] == pytest.approx(to_rgba("tab:green")[:3])
+    assert gain_bar.get_x() == 0.0 and gain_bar.get_width() >= 0.5  # the axis runs to at least +50 %

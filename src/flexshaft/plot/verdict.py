@@ -32,14 +32,16 @@ def margins_figure(
     ax=None,
 ) -> Figure:
     """One horizontal bar per requirement: its margin divided by its limit, green when it
-    passes, red when it fails, grey when it could not be evaluated.
+    passes (to the axis end when there is no finite margin), red when it fails, grey when it
+    could not be evaluated.
 
     Parameters
     ----------
     titles : sequence of str
         Requirement names, drawn top to bottom.
     normalised_margins : array_like
-        Margin / |limit| of each [-] (positive passes); NaN when not evaluated.
+        Margin / |limit| of each [-] (positive passes); NaN when not evaluated, +inf when it
+        passed with nothing to measure (a bar to the axis end, "∞: no finite margin").
     status : sequence of str
         "pass", "fail" or "not evaluated".
     texts : sequence of str, optional
@@ -82,6 +84,21 @@ def margins_figure(
     ax.set_ylim(-0.7, n - 0.3)
     for yi, v, state, text, bound in zip(y, value, states, texts, bounds):
         color = STATUS_COLORS[state]
+        if v == np.inf and state == "pass":  # passed with nothing to measure (no phase crossover)
+            ax.barh(yi, hi, color=color, height=0.6, alpha=0.9)
+            ax.plot([hi], [yi], ">", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
+            ax.annotate(
+                "∞: no finite margin" + (f"  ({text})" if text else ""),
+                (hi, yi),
+                xytext=(-12, 0),
+                textcoords="offset points",
+                ha="right",
+                va="center",
+                fontsize=8,
+                color="white",
+                fontweight="bold",
+            )
+            continue
         if not np.isfinite(v):
             ax.barh(yi, 0.02 * span, left=-0.01 * span, color=color, height=0.6, hatch="///", edgecolor="0.5")
             ax.annotate(

@@ -414,7 +414,12 @@ def loop_gain_margin(ev: Evidence, req: Requirements) -> Check | None:
                 location = {**_loop_location(lp, None), "case": direction}
                 findings.append(_at_least(abs(value), req.min_gain_margin_db, location))
     if not findings:
-        return Check(*args, "pass", note="no phase crossover of any loop in the frequency range: no finite gain margin")
+        return Check(  # the requirement is shown; there is no finite margin to measure against it
+            *args,
+            "pass",
+            limit=float(req.min_gain_margin_db),
+            note="no phase crossover of any loop in the frequency range: no finite gain margin",
+        )
     return _from_findings(*args, findings, "either way: the gain rise or fall that puts the loop on −1")
 
 
@@ -433,7 +438,7 @@ def loop_phase_margin(ev: Evidence, req: Requirements) -> Check | None:
         if lp.phase_margin is not None
     ]
     if not findings:
-        return Check(*args, "pass", note="no gain crossover of any loop in the frequency range")
+        return Check(*args, "pass", limit=limit, note="no gain crossover of any loop in the frequency range")
     return _from_findings(*args, findings, "smallest over each loop's gain crossovers")
 
 

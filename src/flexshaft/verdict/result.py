@@ -157,10 +157,17 @@ class Verdict(ResultMixin):
     plots = {"margins": "plot_margins"}
 
     def plot_margins(self, ax=None, **kwargs):
-        """Bar chart of every check's margin divided by its limit, green pass, red fail, grey
-        not evaluated, with the margin in engineering units beside each bar (keywords to
-        :func:`flexshaft.plot.verdict.margins_figure`)."""
-        normalised = [float("nan") if c.margin is None or not c.limit else c.margin / abs(c.limit) for c in self.checks]
+        """Bar chart of every check's margin divided by its limit, green pass (to the axis end
+        when it passed with no finite margin), red fail, grey not evaluated, with the margin in
+        engineering units beside each bar (keywords to :func:`flexshaft.plot.verdict.margins_figure`)."""
+        normalised = [
+            float("inf")  # passed with nothing to measure (no phase crossover of any loop)
+            if c.status == "pass" and c.margin is None
+            else float("nan")
+            if c.margin is None or not c.limit
+            else c.margin / abs(c.limit)
+            for c in self.checks
+        ]
         return margins_figure(
             [c.title for c in self.checks],
             normalised,
