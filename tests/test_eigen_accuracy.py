@@ -160,22 +160,33 @@ def tuned():
 
 def _full_root(model, dense, s, x, speed, viscous=None):
     """Newton's method on the full dense T(s) from (s, x): loss weights of the root's side, or
-    the viscous method's damping and circulatory weights."""
-    M, G, C, K, F, L, S = dense
+    the viscous method's damping and circulatory weights. The derivative T'(s) x is the central
+    difference (T(s + h) x − T(s − h) x)/2h, each T(z) x summed from the matrices' products with
+    x (T(s) itself is formed once a step, for the solve)."""
+    free = model.dofs.free
 
-    def T(z):
+    def coefficients(z):
+        """(c_M, c_G, c_C, c_K, c_F, c_L, c_S) of T(z) = Σ c_A A + controller(z)."""
         if viscous is not None:
-            damping = speed * G + C + viscous.fixed * F + viscous.lateral * L
-            out = z * z * M + z * damping + K + viscous.circulatory * S
+            damping = (speed * z, z, 1.0, z * viscous.fixed, z * viscous.lateral, viscous.circulatory)
         else:
             w = eigen_coefficients(model.internal_damping, z.imag, speed)
-            out = z * z * M + z * (speed * G + C) + K + w.fixed * F + w.lateral * L + w.circulatory * S
+            damping = (speed * z, z, 1.0, w.fixed, w.lateral, w.circulatory)
+        return (z * z, *damping)
+
+    def T(z):
+        out = sum(c * A for c, A in zip(coefficients(z), dense))
         return out + _dense(model, model.controller_matrix(z))
+
+    def T_times(z, products):
+        out = sum(c * Ax for c, Ax in zip(coefficients(z), products))
+        return out + restrict(model.controller_matrix(z), free) @ products[-1]
 
     for _ in range(40):
         h = 1e-7 * abs(s)
-        dTx = (T(s + h) - T(s - h)) @ x / (2 * h)
-        u = la.solve(T(s), dTx)
+        products = [A @ x for A in dense] + [x]
+        dTx = (T_times(s + h, products) - T_times(s - h, products)) / (2 * h)
+        u = la.solve(T(s), dTx, overwrite_a=True, check_finite=False)
         step = np.vdot(x, x) / np.vdot(x, u)
         s, x = s - step, u / np.linalg.norm(u)
         if abs(step) <= 1e-12 * abs(s):

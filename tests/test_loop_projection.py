@@ -14,6 +14,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -37,6 +39,13 @@ def _magnetic_tuned_model():
     return build_model(
         with_overrides(tuned_design(), {f"bearings[{i}].{k}": v for i in (1, 2) for k, v in keys.items()})
     )
+
+
+@functools.cache
+def _full_loops(make):
+    """The reference: ``bearing_loops(make(), projected=False)``, a full banded solve at every
+    step, computed once for the tests that compare with it (it reads no patched setting)."""
+    return bearing_loops(make(), projected=False)
 
 
 def _margins(loops):
@@ -98,7 +107,7 @@ def test_projected_refinement_matches_full_solves_at_every_step(make):
     on either function)."""
     model = make()
     fast = bearing_loops(model)
-    full = bearing_loops(model, projected=False)
+    full = _full_loops(make)
     for a, b in zip(_margins(fast), _margins(full)):
         assert a[0] == pytest.approx(b[0], rel=1e-7)
         assert a[1] == pytest.approx(b[1], rel=2e-6)
@@ -116,8 +125,7 @@ def test_a_failed_check_falls_back_to_full_solves(monkeypatch):
     again with full solves, the same steps as ``projected=False``: identical margins."""
     monkeypatch.setattr(lp, "LOCAL_TOLERANCE", 0.0)
     monkeypatch.setattr(lp, "ENRICHMENTS", 0)
-    model = _tuned_model()
-    assert _margins(bearing_loops(model)) == _margins(bearing_loops(model, projected=False))
+    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
 
 
 def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
@@ -125,8 +133,7 @@ def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
     fails the check: no full solve at a non-finite frequency, the refinements are repeated on
     full solves, and the margins are the full computation's exactly."""
     monkeypatch.setattr(LocalModels, "closed", lambda self, omegas, intervals: np.full(len(omegas), np.nan + 0j))
-    model = _tuned_model()
-    assert _margins(bearing_loops(model)) == _margins(bearing_loops(model, projected=False))
+    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
 
 
 def test_projected_terms_sum_to_the_projected_dynamic_stiffness():

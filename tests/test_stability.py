@@ -284,12 +284,15 @@ def test_circulatory_matrix_is_skew_symmetric():
 
 
 def test_onset_speed_converges_with_mesh():
+    """The onset moves by less than 2e-3 from the 2x to the 4x mesh, and less than from the 1x.
+    35 speeds (CPU budget, issue 23): the onset is solved between the grid speeds, and on 18, 35
+    or 86 speeds it agrees to 1e-8 relative, far below the 3e-5 to 3e-4 the meshes move it."""
     base = with_overrides(baseline_design(), {"bearings[1].kd": 200.0, "bearings[2].kd": 200.0})
     onsets = []
     for factor in (1, 2, 4):
         d = with_overrides(base, {"mesh.shaft_elements": 12 * factor, "mesh.boom_elements": 8 * factor})
         model = build_model(d)
-        res = stability(model, np.linspace(0.3, 2.0, 86) * model.speed, n_modes=10)
+        res = stability(model, np.linspace(0.3, 2.0, 35) * model.speed, n_modes=10)
         assert res.onset_speed is not None
         onsets.append(res.onset_speed)
     onsets = np.array(onsets)

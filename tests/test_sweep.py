@@ -151,11 +151,19 @@ def _markers_per_point(markers: Path) -> np.ndarray:
     return counts
 
 
-@pytest.mark.parametrize("sig, jobs", [(signal.SIGKILL, 1), (signal.SIGTERM, 2)])
-def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs):
-    # uninterrupted reference run
-    ref = _run_script(tmp_path, tmp_path / "reference", tmp_path / "ref_markers", jobs)
+@pytest.fixture(scope="module")
+def uninterrupted_sweep(tmp_path_factory) -> Path:
+    """results.nc of the killable sweep run to the end, once for both kill tests: a sweep's
+    file does not depend on its worker count (the run with ``jobs=1`` and ``jobs=2`` are
+    identical, attributes included)."""
+    tmp_path = tmp_path_factory.mktemp("uninterrupted")
+    ref = _run_script(tmp_path, tmp_path / "reference", tmp_path / "ref_markers", 1)
     assert ref.wait(timeout=60) == 0
+    return tmp_path / "reference" / "results.nc"
+
+
+@pytest.mark.parametrize("sig, jobs", [(signal.SIGKILL, 1), (signal.SIGTERM, 2)])
+def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs, uninterrupted_sweep):
     # interrupted run: kill once at least 3 of the 12 chunks are stored
     run_dir = tmp_path / "run"
     markers = tmp_path / "markers"
@@ -180,7 +188,7 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs):
     assert np.all(after - before >= 0) and np.all(after >= 1)
     assert np.all((after - before)[stored_points] == 0)
     final = xr.load_dataset(run_dir / "results.nc")
-    reference = xr.load_dataset(tmp_path / "reference" / "results.nc")
+    reference = xr.load_dataset(uninterrupted_sweep)
     xr.testing.assert_identical(final, reference)
     assert np.isfinite(final["response"].values).all()
 

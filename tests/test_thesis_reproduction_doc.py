@@ -210,10 +210,11 @@ WALLS = np.arange(1.0, 6.01, 0.5) * 1e-3
 GAIN_EXPONENTS = (6.1, 6.175, 6.2, 6.225, 6.3, 6.375)  # K_p = 10^x N/m, a mode through 80 Hz
 
 
-def nearest_lateral_modes(model, n_modes: int = 24) -> tuple[float, float]:
+def nearest_lateral_modes(model, n_modes: int = 24, m=None) -> tuple[float, float]:
     """Frequencies [Hz] at the operating speed of the lateral modes with at least 10 % of their
-    kinetic energy in the shaft nearest the operating speed, below and above it."""
-    m = modes(model, model.speed, n_modes)
+    kinetic energy in the shaft nearest the operating speed, below and above it (``m``: the
+    model's modes at that speed, if already computed)."""
+    m = modes(model, model.speed, n_modes) if m is None else m
     f = np.asarray(m.frequencies)
     keep = (np.asarray(m.kind) == "lateral") & (np.asarray(m.shaft_fractions) >= 0.1)
     op = model.speed / (2.0 * math.pi)
@@ -221,12 +222,18 @@ def nearest_lateral_modes(model, n_modes: int = 24) -> tuple[float, float]:
     return float(below.max()), float(above.min())
 
 
-def imbalance_cost(model) -> float:
-    """1 − R/R_static [-]: the share of the safety factor the imbalance response takes."""
+def static_and_total_safety_factor(model) -> tuple[float, float]:
+    """R of the static loads alone, and with the imbalance response added (worst case)."""
     q = static_response(model, external_static_load(model) + torque_load(model))
     q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
     static = shaft_safety_factor(model, q).safety_factor
     total = min(shaft_safety_factor(model, q, q_imb[:, c]).safety_factor for c in range(q_imb.shape[1]))
+    return static, total
+
+
+def imbalance_cost(model) -> float:
+    """1 − R/R_static [-]: the share of the safety factor the imbalance response takes."""
+    static, total = static_and_total_safety_factor(model)
     return 1.0 - total / static
 
 
@@ -257,27 +264,30 @@ def wall_numbers() -> list[float]:
 
 
 @functools.cache
-def gain_row(exponent: float) -> list[float]:
-    """Nearest lateral mode [Hz] to 80 Hz, its separation [%], R and the imbalance cost [%] with
-    both actuators at K_p = 10^exponent N/m (Table 3.1 otherwise)."""
+def gain_model(exponent: float) -> tuple:
+    """Model with both actuators at K_p = 10^exponent N/m (Table 3.1 otherwise) and its 24 modes
+    at the operating speed (shared by the mode's row and its log decrement)."""
     design = baseline_design()
     kp = {f"bearings[{i}].kp": 10.0**exponent for i, b in enumerate(design.bearings) if b.kind == "active"}
     model = build_model(with_overrides(design, kp))
+    return model, modes(model, model.speed, 24)
+
+
+@functools.cache
+def gain_row(exponent: float) -> list[float]:
+    """Nearest lateral mode [Hz] to 80 Hz, its separation [%], R and the imbalance cost [%] with
+    both actuators at K_p = 10^exponent N/m (Table 3.1 otherwise)."""
+    model, m = gain_model(exponent)
     op = model.speed / (2.0 * math.pi)
-    nearest = min(nearest_lateral_modes(model), key=lambda f: abs(f / op - 1.0))
-    q = static_response(model, external_static_load(model) + torque_load(model))
-    q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
-    r = min(shaft_safety_factor(model, q, q_imb[:, c]).safety_factor for c in range(q_imb.shape[1]))
-    return [nearest, 100 * (nearest / op - 1.0), r, 100 * imbalance_cost(model)]
+    nearest = min(nearest_lateral_modes(model, m=m), key=lambda f: abs(f / op - 1.0))
+    static, r = static_and_total_safety_factor(model)
+    return [nearest, 100 * (nearest / op - 1.0), r, 100 * (1.0 - r / static)]
 
 
 @functools.cache
 def gain_log_decrement(exponent: float) -> float:
     """Log decrement of the lateral shaft mode nearest 80 Hz at K_p = 10^exponent N/m."""
-    design = baseline_design()
-    kp = {f"bearings[{i}].kp": 10.0**exponent for i, b in enumerate(design.bearings) if b.kind == "active"}
-    model = build_model(with_overrides(design, kp))
-    m = modes(model, model.speed, 24)
+    _, m = gain_model(exponent)
     f = np.asarray(m.frequencies)
     keep = (np.asarray(m.kind) == "lateral") & (np.asarray(m.shaft_fractions) >= 0.1)
     k = np.flatnonzero(keep)[np.argmin(np.abs(f[keep] - gain_row(exponent)[0]))]
@@ -329,18 +339,23 @@ SAME_R = 1e-9
 
 
 @functools.cache
+def two_angle_static(a: float, b: float) -> tuple:
+    """Model of the (a/−a/b/−b)s wall (no imbalance) and its static response (both loads)."""
+    model = build_model(with_overrides(baseline_design(), {"loads.eccentricity": 0.0, **two_angle_layup((a, b))}))
+    return model, static_response(model, external_static_load(model) + torque_load(model))
+
+
+@functools.cache
 def two_angle_optimum(with_added_loads: bool) -> tuple[float, float, float, float]:
     """(α, β, R) of the best (α/−α/β/−β)s on the page's grid, and R of (55/−55/0/0)s (no imbalance).
 
     Of the two orders of the same plies (equal R, :data:`SAME_R`) the page names the one with the
     larger angle first, whichever of the two round-off puts ahead on a given machine."""
     options = {} if with_added_loads else {"speed": 0.0, "thermal_residual": False}
-    base = with_overrides(baseline_design(), {"loads.eccentricity": 0.0})
     rows, r55 = [], None
     for a in TWO_ANGLES:
         for b in TWO_ANGLES:
-            model = build_model(with_overrides(base, two_angle_layup((a, b))))
-            q = static_response(model, external_static_load(model) + torque_load(model))
+            model, q = two_angle_static(a, b)
             r = shaft_safety_factor(model, q, **options).safety_factor
             rows.append((a, b, r))
             if (a, b) == (55.0, 0.0):
