@@ -4,10 +4,11 @@ of the same file replaces its own earlier results, also after the file was edite
 The bar of the issue: from a fresh folder, the README's quick start (``flexshaft run``, the
 embedded design into ``flexshaft-results/``), then ``flexshaft baseline > my.toml && flexshaft
 run my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without ``--force``.
-It runs as a user would (subprocesses, default options) in tests/test_run.py
+It runs as a user would (subprocesses) in tests/test_run.py
 (``test_the_readme_loop_runs_without_force``), marked slow: it goes on from that module's quick
 start, the full run whose report the module checks (one run of the embedded design, not two),
-then two full runs with the thesis studies, about 30 s of CPU. The fast tests below check the
+then two full runs of the baseline at its envelope points without the thesis studies (the
+folder's ownership does not depend on them), about 12 s of CPU. The fast tests below check the
 same rules with ``--studies none`` on a coarse mesh, and that another design's folder is still
 refused with a message that tells the two designs apart.
 """
