@@ -10,7 +10,12 @@ about 200 s in all).
 
 from __future__ import annotations
 
+import contextlib
 import os
+import pickle
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -108,3 +113,67 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):
     over = [nodeid for nodeid, (seconds, slow) in ranked if seconds > SLOW_CPU_SECONDS and not slow]
     if over:
         write(f"above {SLOW_CPU_SECONDS:g} s CPU and not marked slow: " + ", ".join(over))
+
+
+# ------------------------------------------------------------------------------------------------
+# Results shared by the whole session, across pytest-xdist's workers
+
+
+@contextlib.contextmanager
+def session_lock(factory: pytest.TempPathFactory, name: str) -> Iterator[Path | None]:
+    """Hold the session-wide lock ``name`` and yield the folder that every worker of this test
+    session shares (pytest-xdist's documented pattern for a fixture computed once per session:
+    the first worker computes under the lock, the others wait and read what it left).
+
+    Yields None in a run without xdist workers, or without POSIX locks: each process then
+    computes for itself."""
+    if os.environ.get("PYTEST_XDIST_WORKER") is None:
+        yield None
+        return
+    try:
+        import fcntl
+    except ImportError:  # no POSIX locks: one computation per worker
+        yield None
+        return
+    shared = factory.getbasetemp().parent  # this session's, above each worker's own
+    with open(shared / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield shared
+
+
+_SHARED: dict[str, Any] = {}
+
+
+def shared_result(factory: pytest.TempPathFactory, name: str, compute: Callable[[], Any]) -> Any:
+    """``compute()`` once per test session, for every test module and xdist worker that asks for
+    ``name``: a read-only result (an assessment, a comparison) that several modules check.
+
+    The worker that first asks computes it (its test's CPU time counts it) and leaves it pickled
+    in the session's shared folder; the others load that file. Callers must not mutate it."""
+    if name in _SHARED:
+        return _SHARED[name]
+    with session_lock(factory, name) as shared:
+        if shared is None:
+            value = compute()
+        else:
+            record = shared / f"{name}.pickle"
+            if record.is_file():
+                value = pickle.loads(record.read_bytes())
+            else:
+                value = compute()
+                partial = record.with_suffix(".partial")
+                partial.write_bytes(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
+                partial.replace(record)
+    _SHARED[name] = value
+    return value
+
+
+@pytest.fixture(scope="session")
+def embedded_comparison(tmp_path_factory):
+    """``flexshaft.comparison.compare()``: the embedded tuned and current designs, each assessed at
+    its envelope's points at the report's resolution (about 11 s of CPU, once per session). Its
+    first run is ``assess(tuned_design(), REPORT)``, the tuned design's verdict as ``flexshaft
+    run`` computes it (tests/test_compare.py, tests/test_reproduction.py)."""
+    from flexshaft.comparison import compare
+
+    return shared_result(tmp_path_factory, "embedded_comparison", compare)

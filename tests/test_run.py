@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 from chromium_probe import chromium_or_skip, image_load_title
+from conftest import session_lock
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
@@ -61,17 +62,11 @@ def quick_start(tmp_path_factory) -> dict:
 
     Under pytest-xdist the module's tests may land on both workers: they share one run (the
     first worker computes it under a lock in the session's temporary folder, the other waits and
-    reads it; pytest-xdist's documented pattern for a fixture run once per session)."""
-    if os.environ.get("PYTEST_XDIST_WORKER") is None:
-        return _quick_start(tmp_path_factory.mktemp("quick_start"))
-    try:
-        import fcntl
-    except ImportError:  # no POSIX locks: one run per worker
-        return _quick_start(tmp_path_factory.mktemp("quick_start"))
-    shared = tmp_path_factory.getbasetemp().parent  # this session's, above each worker's own
-    folder, record = shared / "quick_start", shared / "quick_start.json"
-    with open(shared / "quick_start.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
+    reads it: tests/conftest.py's ``session_lock``)."""
+    with session_lock(tmp_path_factory, "quick_start") as shared:
+        if shared is None:
+            return _quick_start(tmp_path_factory.mktemp("quick_start"))
+        folder, record = shared / "quick_start", shared / "quick_start.json"
         if not record.is_file():
             shutil.rmtree(folder, ignore_errors=True)
             folder.mkdir()
