@@ -214,7 +214,8 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     (``--studies none``, CPU budget, issue 23: about 9 s of CPU each): what the loop checks is
     the output folder's ownership (its marker: the command, the design's source and
     fingerprint, whether it is complete), which the studies do not touch; the quick start above
-    is the run with the studies, checked by ``test_run_writes_report_figures_and_numbers``."""
+    is the run with the studies, checked by ``test_run_writes_report_figures_and_numbers``.
+    It is also tests/test_rerun.py's rerun of ``run`` after an edit (the edited wall's mass)."""
     shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
     with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
@@ -223,10 +224,16 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     assert first.returncode == 0, first.stderr
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
+    assert WALL.search((tmp_path / "my.toml").read_text(encoding="utf-8")).group() == "wall_thickness = 0.003"
     _edit_wall(tmp_path / "my.toml", 0.0035)
     second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
     assert second.returncode == 0, second.stderr
     assert "--force" not in second.stderr
-    assert json.loads(results.read_text())["summary"]["shaft_mass_kg"] > wall_before["shaft_mass_kg"]
+    # the folder holds the edited design's results: a 0.0035 m wall instead of 0.003 m weighs
+    # 7/6 as much (the tube's mass is proportional to its wall at a fixed outer diameter, up to
+    # the mean-radius change: within 3 %)
+    mass = json.loads(results.read_text())["summary"]["shaft_mass_kg"]
+    assert mass > wall_before["shaft_mass_kg"]
+    assert mass == pytest.approx(wall_before["shaft_mass_kg"] * 7 / 6, rel=0.03)
     marker = json.loads((tmp_path / "my-results" / MARKER).read_text())
     assert marker["complete"] is True and marker["design_source"] == str((tmp_path / "my.toml").resolve())
