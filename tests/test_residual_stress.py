@@ -94,14 +94,25 @@ def test_the_cold_day_of_the_assumed_law_is_0_28_of_the_secant_form():
 
 def test_the_quadrature_converges_to_a_fine_midpoint_rule():
     """The assumed law (E_T, G_LT on exp(−ΔT/40 K), loss factors growing) from 100 °C to −40 °C:
-    the composite Gauss rule against 20 000 midpoint steps (midpoint error ~ (h/θ)²/24 ~ 1e-10)."""
+    the composite Gauss rule against the midpoint rule extrapolated to zero step. The midpoint
+    rule's error is a series in even powers of its step h (Euler-Maclaurin, for a smooth
+    integrand): M(h) = I + c₂h² + c₄h⁴ + …, with c₂h² ~ (h/θ)²/24 relative for an exponential of
+    scale θ (2e-6 at 500 steps of 0.28 K; measured 5e-7 at 1000); Richardson's
+    (4 M(h/2) − M(h))/3 cancels the h² term, leaving ~7(h/θ)⁴/5760 ~ 3e-12, far below the 1e-8
+    asked (and below the 1.2e-9 of the 20 000 plain steps this used before, at a tenth of the
+    CPU time)."""
     law = MatrixTemperatureLaw(reference_temperature=T_REF, modulus_decay=THETA)
     lam = laminate()
-    edges = np.linspace(T_SF, 233.15, 20001)
-    reference = sum(
-        thermal_ply_stresses(Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, 0.5 * (a + b))), b - a)
-        for a, b in zip(edges[:-1], edges[1:])
-    )
+
+    def midpoint(steps: int) -> np.ndarray:
+        edges = np.linspace(T_SF, 233.15, steps + 1)
+        return sum(
+            thermal_ply_stresses(Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, 0.5 * (a + b))), b - a)
+            for a, b in zip(edges[:-1], edges[1:])
+        )
+
+    coarse, fine = midpoint(500), midpoint(1000)
+    reference = (4.0 * fine - coarse) / 3.0
     got = residual_ply_stresses(lam, law, T_SF, 233.15)
     assert np.allclose(got, reference, rtol=1e-8, atol=1e-8 * np.abs(reference).max())
 
