@@ -177,3 +177,19 @@ def embedded_comparison(tmp_path_factory):
     from flexshaft.comparison import compare
 
     return shared_result(tmp_path_factory, "embedded_comparison", compare)
+
+
+@pytest.fixture(scope="session")
+def tuned_nominal_screening(tmp_path_factory):
+    """The embedded tuned design without its ``[envelope]`` (its own operating point), assessed at
+    the screening resolution, once per session (tests/test_envelope_verdict.py,
+    tests/test_verdict.py)."""
+
+    def compute():
+        from flexshaft.design import tuned_design, with_overrides
+        from flexshaft.resolution import SCREENING
+        from flexshaft.verdict.assess import assess
+
+        return assess(with_overrides(tuned_design(), {"envelope": None}), SCREENING)
+
+    return shared_result(tmp_path_factory, "tuned_nominal_screening", compute)

@@ -386,13 +386,15 @@ def test_adapter_on_a_run_reports_what_it_cannot_evaluate() -> None:
     assert verdict.check("actuator_orbit").note == "the design has no active bearings"
 
 
-def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
+def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction(tuned_nominal_screening):
     """Was: a PID bearing (C(0) infinite) entered the force check with a static force of 0 (the
     collocated law times the offset was not finite and was dropped). Now the static force is the
     run's static bearing reaction (the integrator's constraint force); for a PD bearing that
     reaction equals the law C(0) − k_s times the static offset at the magnet (another path).
     At the screening resolution (CPU budget, issue 23): the static solution and the reactions do
-    not depend on the speed grids, and the dynamic peak only adds to the static force."""
+    not depend on the speed grids, and the dynamic peak only adds to the static force. The PD
+    design's assessment is the session's (tests/conftest.py, shared with
+    tests/test_envelope_verdict.py)."""
     import numpy as np
 
     from flexshaft.design import tuned_design, with_overrides
@@ -400,7 +402,8 @@ def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
     from flexshaft.verdict.assess import assess
 
     tuned = with_overrides(tuned_design(), {"envelope": None})  # the nominal point: the envelope adds nothing here
-    pd = assess(tuned, SCREENING)
+    pd = tuned_nominal_screening
+    assert pd.design == tuned and pd.resolution == SCREENING
     for a, ev in zip(pd.model.actuators, pd.evidence.actuators):
         offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))
         assert ev.static_force == pytest.approx(abs(a.law(0j)) * offset, rel=1e-9)
