@@ -463,11 +463,14 @@ def test_ritz_assembly_equals_the_four_term_definition():
 
 
 def test_helix_minima_equal_a_fine_scan_of_the_wavenumber():
-    """Reference: the endless tube's torques on a fine scan of log k (4001 points over two grid
-    steps around the minimum found, spacing 1.25e-4, then 4001 over 5e-4 around the scan's best
-    point, spacing 1.25e-7) for the baseline FMC wall, both senses, n = 2..40. The golden-section
-    refinement must give the scan's minimum to rtol 1e-8 (its bracket ends at 5.5e-5 in log k:
-    a relative error of order 1e-9 at these minima) and never fall below it."""
+    """Reference: the endless tube's torques on a fine scan of log k, zooming in three stages of
+    401 points (over two grid steps around the minimum found, spacing 1.25e-3; then over 5e-3
+    around that scan's best point, spacing 1.25e-5; then over 5e-5, spacing 1.25e-7: each
+    window reaches two spacings of the stage before on either side of its best point, as before) for the
+    baseline FMC wall, both senses, n = 2..40. The golden-section refinement must give the
+    scan's minimum to rtol 1e-8 (its bracket ends at 5.5e-5 in log k: a relative error of order
+    1e-9 at these minima) and never fall below it. (Was two stages of 4001 points, 1.25e-4 then
+    the same final spacing 1.25e-7: the same reference for a seventh of the evaluations.)"""
     from flexshaft.buckling._common import shell_stiffness
     from flexshaft.buckling.shear import _LOG_K_OFFSETS, _helix_torques
 
@@ -479,8 +482,8 @@ def test_helix_minima_equal_a_fine_scan_of_the_wavenumber():
     for sense in (0, 1):
         centre = np.log(np.abs(wavenumbers[:, sense]))
         hand = np.sign(wavenumbers[:, sense])
-        for width in (2 * step, 5e-4):
-            x = centre[:, None] + np.linspace(-width / 2, width / 2, 4001)[None, :]
+        for width in (2 * step, 5e-3, 5e-5):
+            x = centre[:, None] + np.linspace(-width / 2, width / 2, 401)[None, :]
             values = _helix_torques(C, BASELINE_RADIUS, n[:, None], hand[:, None] * np.exp(x), "sanders")[..., sense]
             centre = x[np.arange(n.size), np.argmin(values, axis=1)]
         scan = values.min(axis=1)
