@@ -193,3 +193,78 @@ def tuned_nominal_screening(tmp_path_factory):
         return assess(with_overrides(tuned_design(), {"envelope": None}), SCREENING)
 
     return shared_result(tmp_path_factory, "tuned_nominal_screening", compute)
+
+
+def _run_design() -> str:
+    """A small design for the ``run`` command's own behaviour (its output folder, marker, JSON):
+    the Table 3.1 baseline on a coarse mesh (4 shaft, 2 boom elements) with one point of its
+    envelope (hot_soak_start: the run still goes through the envelope's per-point steps and
+    verdict), no aluminium (no thesis-shaft comparison), and markup in the actuators' names (it
+    must reach the verdict table literally)."""
+    import re
+
+    from flexshaft.design import baseline_text
+
+    text = baseline_text()
+    small = text.replace("shaft_elements = 36", "shaft_elements = 4", 1).replace(
+        "boom_elements = 24", "boom_elements = 2", 1
+    )
+    aluminium = text[text.index("[materials.al6061_t6]") : text.index("[materials.boom_aluminium]")]
+    two_points = re.compile(r"\[\[envelope\.points\]\]\nname = \"(cold_day|standard_day)\".*?(?=\[\[envelope)", re.S)
+    return (
+        two_points.sub("", small)
+        .replace(aluminium, "", 1)
+        .replace('name = "amb_1"', 'name = "[bold]amb_1[/]"', 1)
+        .replace('name = "amb_2"', 'name = "[red]amb_2"', 1)
+    )
+
+
+#: The design of :func:`small_run` (tests/test_cli_outputs.py and others read it).
+RUN_DESIGN = _run_design()
+
+
+@pytest.fixture(scope="session")
+def small_run(tmp_path_factory) -> dict:
+    """``flexshaft run design.toml --studies none --json --out results`` of :data:`RUN_DESIGN`,
+    once per session (about 3 s of CPU, mostly the report's figures), in a folder every xdist
+    worker shares: tests read it, and a test that writes into a run folder copies ``out``
+    first (the design file stays where it is: the copy's marker names it). Keys: ``design``,
+    ``out``, ``exit_code``, ``stdout``, ``stderr``, ``results`` (results.json's bytes)."""
+
+    def compute(folder: Path) -> dict:
+        from typer.testing import CliRunner
+
+        from flexshaft.cli import app
+
+        design = folder / "design.toml"
+        design.write_text(RUN_DESIGN, encoding="utf-8")
+        result = CliRunner().invoke(
+            app, ["run", str(design), "--studies", "none", "--json", "--out", str(folder / "results")]
+        )
+        return {
+            "exit_code": result.exit_code,
+            "stdout": result.stdout,
+            "stderr": result.stderr,
+            "output": result.output,
+        }
+
+    with session_lock(tmp_path_factory, "small_run") as shared:
+        if shared is None:
+            folder = tmp_path_factory.mktemp("small_run")
+            record = compute(folder)
+        else:
+            import json
+
+            folder, saved = shared / "small_run", shared / "small_run.json"
+            if saved.is_file():
+                record = json.loads(saved.read_text(encoding="utf-8"))
+            else:
+                import shutil
+
+                shutil.rmtree(folder, ignore_errors=True)
+                folder.mkdir()
+                record = compute(folder)
+                saved.write_text(json.dumps(record), encoding="utf-8")
+    assert record["exit_code"] == 0, record["output"]
+    out = folder / "results"
+    return {"design": folder / "design.toml", "out": out, **record, "results": (out / "results.json").read_bytes()}

@@ -22,18 +22,8 @@ from typer.testing import CliRunner
 
 from flexshaft.cli import app
 from flexshaft.cli.output import MARKER
-from flexshaft.design import embedded_text, tuned_design
+from flexshaft.design import tuned_design
 
-#: The tuned design on a coarse mesh, judged at its nominal point (without its envelope's
-#: points): for the options whose subject is the output, not the design's verdict.
-SMALL_TUNED = re.sub(
-    r"\[\[envelope\.points\]\].*?(?=\n# -+\n\[mesh\])",
-    "",
-    embedded_text("tuned")
-    .replace("shaft_elements = 36", "shaft_elements = 6", 1)
-    .replace("boom_elements = 24", "boom_elements = 4", 1),
-    flags=re.S,
-)
 WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
 
 
@@ -164,14 +154,12 @@ def test_stability_command_compares_the_thesis_shafts():
     assert set(data["shafts"]) == {"design", "aluminium 6061-T6", "(45/-45)s FMC", "(45/-45/0/0)s FMC"}
 
 
-def test_run_json_option_prints_the_key_results(tmp_path):
-    """The option's output, on the tuned design's file with a coarse mesh at its nominal point
-    (the full design's JSON is the quick start's results.json, checked above)."""
-    design = tmp_path / "tuned.toml"
-    design.write_text(SMALL_TUNED, encoding="utf-8")
-    result = CliRunner().invoke(app, ["run", str(design), "--out", str(tmp_path / "o"), "--json", "--studies", "none"])
-    assert result.exit_code == 0
-    data = json.loads(result.stdout)
+def test_run_json_option_prints_the_key_results(small_run):
+    """The option's output: the session's ``run --studies none --json`` of a small baseline at one
+    envelope point (tests/conftest.py's ``small_run``; the full design's JSON is the quick
+    start's results.json, checked above)."""
+    assert small_run["exit_code"] == 0
+    data = json.loads(small_run["stdout"])
     assert data["summary"]["operating_speed_rpm"] == pytest.approx(4800.0)
 
 
