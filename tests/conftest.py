@@ -10,7 +10,12 @@ about 200 s in all).
 
 from __future__ import annotations
 
+import contextlib
 import os
+import pickle
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -108,3 +113,158 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):
     over = [nodeid for nodeid, (seconds, slow) in ranked if seconds > SLOW_CPU_SECONDS and not slow]
     if over:
         write(f"above {SLOW_CPU_SECONDS:g} s CPU and not marked slow: " + ", ".join(over))
+
+
+# ------------------------------------------------------------------------------------------------
+# Results shared by the whole session, across pytest-xdist's workers
+
+
+@contextlib.contextmanager
+def session_lock(factory: pytest.TempPathFactory, name: str) -> Iterator[Path | None]:
+    """Hold the session-wide lock ``name`` and yield the folder that every worker of this test
+    session shares (pytest-xdist's documented pattern for a fixture computed once per session:
+    the first worker computes under the lock, the others wait and read what it left).
+
+    Yields None in a run without xdist workers, or without POSIX locks: each process then
+    computes for itself."""
+    if os.environ.get("PYTEST_XDIST_WORKER") is None:
+        yield None
+        return
+    try:
+        import fcntl
+    except ImportError:  # no POSIX locks: one computation per worker
+        yield None
+        return
+    shared = factory.getbasetemp().parent  # this session's, above each worker's own
+    with open(shared / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield shared
+
+
+_SHARED: dict[str, Any] = {}
+
+
+def shared_result(factory: pytest.TempPathFactory, name: str, compute: Callable[[], Any]) -> Any:
+    """``compute()`` once per test session, for every test module and xdist worker that asks for
+    ``name``: a read-only result (an assessment, a comparison) that several modules check.
+
+    The worker that first asks computes it (its test's CPU time counts it) and leaves it pickled
+    in the session's shared folder; the others load that file. Callers must not mutate it."""
+    if name in _SHARED:
+        return _SHARED[name]
+    with session_lock(factory, name) as shared:
+        if shared is None:
+            value = compute()
+        else:
+            record = shared / f"{name}.pickle"
+            if record.is_file():
+                value = pickle.loads(record.read_bytes())
+            else:
+                value = compute()
+                partial = record.with_suffix(".partial")
+                partial.write_bytes(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
+                partial.replace(record)
+    _SHARED[name] = value
+    return value
+
+
+@pytest.fixture(scope="session")
+def embedded_comparison(tmp_path_factory):
+    """``flexshaft.comparison.compare()``: the embedded tuned and current designs, each assessed at
+    its envelope's points at the report's resolution (about 11 s of CPU, once per session). Its
+    first run is ``assess(tuned_design(), REPORT)``, the tuned design's verdict as ``flexshaft
+    run`` computes it (tests/test_compare.py, tests/test_reproduction.py)."""
+    from flexshaft.comparison import compare
+
+    return shared_result(tmp_path_factory, "embedded_comparison", compare)
+
+
+@pytest.fixture(scope="session")
+def tuned_nominal_screening(tmp_path_factory):
+    """The embedded tuned design without its ``[envelope]`` (its own operating point), assessed at
+    the screening resolution, once per session (tests/test_envelope_verdict.py,
+    tests/test_verdict.py)."""
+
+    def compute():
+        from flexshaft.design import tuned_design, with_overrides
+        from flexshaft.resolution import SCREENING
+        from flexshaft.verdict.assess import assess
+
+        return assess(with_overrides(tuned_design(), {"envelope": None}), SCREENING)
+
+    return shared_result(tmp_path_factory, "tuned_nominal_screening", compute)
+
+
+def _run_design() -> str:
+    """A small design for the ``run`` command's own behaviour (its output folder, marker, JSON):
+    the Table 3.1 baseline on a coarse mesh (4 shaft, 2 boom elements) with one point of its
+    envelope (hot_soak_start: the run still goes through the envelope's per-point steps and
+    verdict), no aluminium (no thesis-shaft comparison), and markup in the actuators' names (it
+    must reach the verdict table literally)."""
+    import re
+
+    from flexshaft.design import baseline_text
+
+    text = baseline_text()
+    small = text.replace("shaft_elements = 36", "shaft_elements = 4", 1).replace(
+        "boom_elements = 24", "boom_elements = 2", 1
+    )
+    aluminium = text[text.index("[materials.al6061_t6]") : text.index("[materials.boom_aluminium]")]
+    two_points = re.compile(r"\[\[envelope\.points\]\]\nname = \"(cold_day|standard_day)\".*?(?=\[\[envelope)", re.S)
+    return (
+        two_points.sub("", small)
+        .replace(aluminium, "", 1)
+        .replace('name = "amb_1"', 'name = "[bold]amb_1[/]"', 1)
+        .replace('name = "amb_2"', 'name = "[red]amb_2"', 1)
+    )
+
+
+#: The design of :func:`small_run` (tests/test_cli_outputs.py and others read it).
+RUN_DESIGN = _run_design()
+
+
+@pytest.fixture(scope="session")
+def small_run(tmp_path_factory) -> dict:
+    """``flexshaft run design.toml --studies none --json --out results`` of :data:`RUN_DESIGN`,
+    once per session (about 3 s of CPU, mostly the report's figures), in a folder every xdist
+    worker shares: tests read it, and a test that writes into a run folder copies ``out``
+    first (the design file stays where it is: the copy's marker names it). Keys: ``design``,
+    ``out``, ``exit_code``, ``stdout``, ``stderr``, ``results`` (results.json's bytes)."""
+
+    def compute(folder: Path) -> dict:
+        from typer.testing import CliRunner
+
+        from flexshaft.cli import app
+
+        design = folder / "design.toml"
+        design.write_text(RUN_DESIGN, encoding="utf-8")
+        result = CliRunner().invoke(
+            app, ["run", str(design), "--studies", "none", "--json", "--out", str(folder / "results")]
+        )
+        return {
+            "exit_code": result.exit_code,
+            "stdout": result.stdout,
+            "stderr": result.stderr,
+            "output": result.output,
+        }
+
+    with session_lock(tmp_path_factory, "small_run") as shared:
+        if shared is None:
+            folder = tmp_path_factory.mktemp("small_run")
+            record = compute(folder)
+        else:
+            import json
+
+            folder, saved = shared / "small_run", shared / "small_run.json"
+            if saved.is_file():
+                record = json.loads(saved.read_text(encoding="utf-8"))
+            else:
+                import shutil
+
+                shutil.rmtree(folder, ignore_errors=True)
+                folder.mkdir()
+                record = compute(folder)
+                saved.write_text(json.dumps(record), encoding="utf-8")
+    assert record["exit_code"] == 0, record["output"]
+    out = folder / "results"
+    return {"design": folder / "design.toml", "out": out, **record, "results": (out / "results.json").read_bytes()}

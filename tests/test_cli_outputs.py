@@ -8,8 +8,10 @@
 * ``results.json`` holds no timestamp and no timing (those go to ``timings.json``): two runs
   of one design write byte-identical files.
 
-``run`` is exercised twice (about 2 s of CPU each) on a small design at one envelope point
-that skips the thesis-shaft comparison and the design studies; the other cases stop before
+``run`` is exercised twice (about 3 s of CPU each) on a small design at one envelope point
+that skips the thesis-shaft comparison and the design studies: the first is the session's
+(tests/conftest.py's ``small_run``, shared with tests/test_output_guard.py and
+tests/test_run.py), the second runs again on a copy of its folder; the other cases stop before
 computing, or use ``study ply-angle`` with two angles.
 """
 
@@ -17,11 +19,12 @@ from __future__ import annotations
 
 import json
 import os
-import re
+import shutil
 import subprocess
 from pathlib import Path
 
 import pytest
+from conftest import RUN_DESIGN
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
@@ -35,36 +38,21 @@ SMALL = (
     .replace("shaft_elements = 36", "shaft_elements = 4", 1)
     .replace("boom_elements = 24", "boom_elements = 2", 1)
 )
-_ALUMINIUM = baseline_text()[
-    baseline_text().index("[materials.al6061_t6]") : baseline_text().index("[materials.boom_aluminium]")
-]
-#: One point of the baseline's envelope (hot_soak_start) is kept: the run still goes through the
-#: envelope's per-point steps and verdict, at a third of the cost of three points.
-_TWO_POINTS = re.compile(r"\[\[envelope\.points\]\]\nname = \"(cold_day|standard_day)\".*?(?=\[\[envelope)", re.S)
-RUN_DESIGN = (
-    _TWO_POINTS.sub("", SMALL)
-    .replace(_ALUMINIUM, "", 1)  # no aluminium: no thesis-shaft comparison (seconds, not a minute)
-    .replace('name = "amb_1"', 'name = "[bold]amb_1[/]"', 1)  # markup in names reaches the verdict table
-    .replace('name = "amb_2"', 'name = "[red]amb_2"', 1)
-)
 OTHER_DESIGN = SMALL.replace('name = "Thesis Table 3.1', 'name = "Another design', 1)
 
 
 @pytest.fixture(scope="module")
-def first_run(tmp_path_factory: pytest.TempPathFactory) -> dict:
-    folder = tmp_path_factory.mktemp("outputs")
-    design = folder / "design.toml"
-    design.write_text(RUN_DESIGN, encoding="utf-8")
-    out = folder / "results"
-    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--json", "--out", str(out)])
-    assert result.exit_code == 0, result.output
-    return {
-        "design": design,
-        "out": out,
-        "stdout": result.stdout,
-        "stderr": result.stderr,
-        "results": (out / "results.json").read_bytes(),
-    }
+def first_run(small_run: dict) -> dict:
+    """The session's ``run --studies none --json`` of RUN_DESIGN (tests/conftest.py): read only;
+    a test that runs into its folder copies it first (:func:`own_copy`)."""
+    return small_run
+
+
+def own_copy(run: dict, tmp_path: Path) -> Path:
+    """A copy of the run's output folder (its marker still names the run's design file)."""
+    out = tmp_path / "results"
+    shutil.copytree(run["out"], out, symlinks=True)
+    return out
 
 
 def test_run_writes_results_timings_and_marker_separately(first_run: dict) -> None:
@@ -87,26 +75,26 @@ def test_run_writes_results_timings_and_marker_separately(first_run: dict) -> No
     assert len(marker["design_fingerprint"]) == 64
 
 
-def test_a_second_run_of_the_same_design_updates_the_folder_byte_identically(first_run: dict) -> None:
-    result = runner.invoke(app, ["run", str(first_run["design"]), "--studies", "none", "--out", str(first_run["out"])])
+def test_a_second_run_of_the_same_design_updates_the_folder_byte_identically(first_run: dict, tmp_path: Path) -> None:
+    out = own_copy(first_run, tmp_path)
+    result = runner.invoke(app, ["run", str(first_run["design"]), "--studies", "none", "--out", str(out)])
     assert result.exit_code == 0, result.output
     assert "[bold]amb_1[/]," in result.stdout or "[red]amb_2," in result.stdout  # printed literally
-    assert (first_run["out"] / "results.json").read_bytes() == first_run["results"]
+    assert (out / "results.json").read_bytes() == first_run["results"]
 
 
 def test_a_folder_of_another_design_is_refused_without_force(first_run: dict, tmp_path: Path) -> None:
     other = tmp_path / "other.toml"
     other.write_text(OTHER_DESIGN, encoding="utf-8")
-    result = runner.invoke(app, ["run", str(other), "--out", str(first_run["out"])])
+    result = runner.invoke(app, ["run", str(other), "--out", str(own_copy(first_run, tmp_path))])
     assert result.exit_code == 2
     assert "holds the results of another design" in result.stderr and "--force" in result.stderr
     assert "Traceback" not in result.output
 
 
-def test_a_folder_of_another_command_is_refused(first_run: dict) -> None:
-    result = runner.invoke(
-        app, ["study", "ply-angle", str(first_run["design"]), "--step", "30", "--out", str(first_run["out"])]
-    )
+def test_a_folder_of_another_command_is_refused(first_run: dict, tmp_path: Path) -> None:
+    out = own_copy(first_run, tmp_path)
+    result = runner.invoke(app, ["study", "ply-angle", str(first_run["design"]), "--step", "30", "--out", str(out)])
     assert result.exit_code == 2
     assert "holds the output of 'flexshaft run', not of 'flexshaft study ply-angle'" in result.stderr
 

@@ -1,6 +1,7 @@
 """``compare``: the tuned FMC design against the current segmented aluminium driveline.
 
-One comparison of the two embedded designs (module fixture, about 20 s) feeds every test: both
+One comparison of the two embedded designs (a session fixture, tests/conftest.py: about 11 s of
+CPU, shared with tests/test_reproduction.py) feeds every test: both
 verdicts pass, the inventories match the design files (tube masses from ρ A L by hand), the
 dataset has both designs, and the report folder is one self-contained page whose figures all
 decode (and render in headless Chromium when it is installed).
@@ -18,15 +19,17 @@ import numpy as np
 import pytest
 
 from flexshaft.assembly import build_model
-from flexshaft.comparison import PART_KINDS, Comparison, compare, driveline_inventory
+from flexshaft.comparison import PART_KINDS, Comparison, driveline_inventory
 from flexshaft.design import design_from_dict, embedded_design
 
 PNG = b"\x89PNG\r\n\x1a\n"
 
 
 @pytest.fixture(scope="module")
-def comparison() -> Comparison:
-    return compare()
+def comparison(embedded_comparison) -> Comparison:
+    """``compare()`` of the two embedded designs (tests/conftest.py: computed once per session,
+    tests/test_reproduction.py judges the tuned design's verdict from the same run)."""
+    return embedded_comparison
 
 
 @pytest.fixture(scope="module")

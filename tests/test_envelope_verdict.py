@@ -82,11 +82,10 @@ def tuned_screening():
 
 
 @pytest.fixture(scope="module")
-def nominal_screening():
-    """The tuned design without its ``[envelope]``, at the screening resolution (shared: read only)."""
-    data = tuned_design().model_dump()
-    data["envelope"] = None
-    return assess(design_from_dict(data), SCREENING)
+def nominal_screening(tuned_nominal_screening):
+    """The tuned design without its ``[envelope]``, at the screening resolution (shared with
+    tests/test_verdict.py for the session, tests/conftest.py: read only)."""
+    return tuned_nominal_screening
 
 
 def test_a_design_without_an_envelope_is_judged_at_its_own_point(tuned_screening, nominal_screening):
@@ -186,8 +185,12 @@ def test_a_hot_soak_start_fails_only_at_the_hot_soak_point():
 
 
 def test_a_poor_loop_is_flagged_by_its_sensitivity_peak():
-    design = with_overrides(tuned_design(), {"bearings[1].kd": 250.0, "bearings[2].kd": 250.0})
-    a = assess(design, SCREENING)
+    """At the cold day alone (CPU budget, issue 23: each point is a whole assessment): the
+    loop's sensitivity barely depends on the point (peaks of 6.44 to 6.45 at the four, measured),
+    and what is checked here is the check and its Nyquist bound, not the envelope's combining."""
+    data = with_overrides(tuned_design(), {"bearings[1].kd": 250.0, "bearings[2].kd": 250.0}).model_dump()
+    data["envelope"]["points"] = [p for p in data["envelope"]["points"] if p["name"] == "cold_day"]
+    a = assess(design_from_dict(data), SCREENING)
     check = a.verdict.check("loop_sensitivity")
     assert check.status == "fail" and check.value > 4.0 and check.limit == 4.0
     assert check.location["actuator"].startswith("amb_")

@@ -12,12 +12,20 @@ figures offline; a sweep of K_p draws every check's margin; the page's full-reso
 writes the report folder with its progress; a Pareto point of an optimizer run loads its
 design. The browser may reach only the explorer's own address: every other request is refused
 and recorded, and none is made.
+
+The explorer starts from the tuned design's file with one point of its envelope, the cold day
+(:data:`COLD_DAY_TUNED`: where K_p 2e5 puts actuator 1 beyond its gap, tests/test_explore.py),
+for the CPU budget (issue 23): every update, sweep point and run here is one assessment per
+envelope point, and what this test checks is the page (its controls, messages, download, load,
+sweep, run and Pareto front), not the envelope, whose updates on the server's workers are
+tests/test_explore.py's (``test_an_envelope_update_on_two_workers_is_the_serial_update``).
 """
 
 from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import threading
@@ -27,6 +35,8 @@ from urllib.parse import urlparse
 
 import pytest
 from chromium_probe import chromium_or_skip
+
+from flexshaft.design import embedded_text, loads_design
 
 if os.environ.get("CI"):  # CI installs the extras (scripts/test.sh): a missing one is a failure there
     import playwright.sync_api as playwright_api
@@ -48,6 +58,13 @@ FLAGS = [
     "--no-first-run",
 ]
 _FLEXSHAFT = "import sys; from flexshaft.cli import app; sys.exit(app())"
+#: The embedded tuned design's file with the cold day the only point of its envelope.
+COLD_DAY_TUNED = re.sub(
+    r'\[\[envelope\.points\]\]\nname = "(standard_day|hot_day|hot_soak_start)".*?(?=\[\[envelope|\n# -+\n\[mesh\])',
+    "",
+    embedded_text("tuned"),
+    flags=re.S,
+)
 
 
 def _environment() -> dict:
@@ -56,14 +73,17 @@ def _environment() -> dict:
 
 @pytest.fixture(scope="module")
 def explorer(tmp_path_factory):
-    """``flexshaft explore`` on a free port (its address read from what it prints), with a
-    tiny optimizer run's Pareto front; stopped after the module."""
+    """``flexshaft explore`` of :data:`COLD_DAY_TUNED` on a free port (its address read from what
+    it prints), with a tiny optimizer run's Pareto front; stopped after the module."""
     chromium_or_skip()
     folder = tmp_path_factory.mktemp("explore")
+    design = folder / "tuned.toml"
+    design.write_text(COLD_DAY_TUNED, encoding="utf-8")
+    assert [p.name for p in loads_design(COLD_DAY_TUNED).envelope.points] == ["cold_day"]
     pareto = _tiny_optimizer_run(folder / "optimize")
     server = subprocess.Popen(
-        [sys.executable, "-c", _FLEXSHAFT, "explore", "--port", "0", "--workers", "2", "--studies", "none"]
-        + ["--out", str(folder / "runs"), "--pareto", str(pareto)],
+        [sys.executable, "-c", _FLEXSHAFT, "explore", str(design), "--port", "0", "--workers", "2"]
+        + ["--studies", "none", "--out", str(folder / "runs"), "--pareto", str(pareto)],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -90,14 +110,13 @@ def _first_line(process: subprocess.Popen, timeout: float) -> str:
 
 
 def _tiny_optimizer_run(folder: Path) -> Path:
-    """Four screening evaluations of the tuned design's shared K_p (about 1.5 s of CPU)."""
+    """Four screening evaluations of the explored design's shared K_p."""
     pytest.importorskip("pymoo")
-    from flexshaft.design import tuned_design
     from flexshaft.optimize import DesignProblem, DesignVariable, optimize
 
     problem = DesignProblem(
         variables=(DesignVariable(("bearings[1].kp", "bearings[2].kp"), 3e5, 1e6, log=True, name="kp"),),
-        base=tuned_design(),
+        base=loads_design(COLD_DAY_TUNED),
         fidelity="screening",
     )
     optimize(problem, 4, folder, pop_size=2).save()
@@ -142,7 +161,7 @@ def _set(page, selector: str, value: str) -> None:
     page.press(selector, "Enter")  # a committed value: the input's change event
 
 
-@pytest.mark.slow  # about 14 s of CPU: the server and its workers, a report run, two full-resolution runs
+@pytest.mark.slow  # the server and its workers, the updates, two full-resolution runs: about 13 s of CPU
 def test_the_explorer_in_a_browser(explorer, browser, tmp_path):
     url, folder = explorer
     host = urlparse(url).hostname

@@ -23,6 +23,7 @@ import json
 import os
 import re
 import resource
+import shutil
 import signal
 import subprocess
 import sys
@@ -134,23 +135,16 @@ def test_optimize_refuses_a_folder_of_user_files(tmp_path: Path) -> None:
     assert (folder / "pareto.png").read_text() == "keep"
 
 
-@pytest.fixture(scope="module")
-def run_folder(tmp_path_factory: pytest.TempPathFactory) -> dict:
-    base = tmp_path_factory.mktemp("run")
-    design = _design(base)
-    out = base / "o"
-    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--out", str(out)])
-    assert result.exit_code == 0, result.output
-    return {"base": base, "design": design, "out": out, "results": (out / "results.json").read_bytes()}
-
-
 @pytest.mark.slow(
-    reason="two `flexshaft run`s with the report's figures, each loop and root of the bearings (~5.5 s of CPU)"
+    reason="a `flexshaft run` with the report's figures, each loop and root of the bearings (~3 s of CPU), "
+    "and the session's first run of its design if it comes first (tests/conftest.py's small_run, ~3 s)"
 )
-def test_a_link_planted_in_ones_own_run_folder_is_replaced(run_folder: dict) -> None:
+def test_a_link_planted_in_ones_own_run_folder_is_replaced(small_run: dict, tmp_path: Path) -> None:
     """Was: `flexshaft run b.toml --studies none -o o; ln -sf ~/victim.txt o/results.json;
-    flexshaft run b.toml --studies none -o o` overwrote victim.txt (also via report.html)."""
-    base, out = run_folder["base"], run_folder["out"]
+    flexshaft run b.toml --studies none -o o` overwrote victim.txt (also via report.html). The
+    first run is the session's (a small design at one envelope point), in a copy of its folder."""
+    base, out = tmp_path, tmp_path / "o"
+    shutil.copytree(small_run["out"], out, symlinks=True)
     victims = {name: base / f"victim-{name}" for name in ("results.json", "report.html", "campbell.png")}
     for name, victim in victims.items():
         victim.write_text("keep")
@@ -159,12 +153,12 @@ def test_a_link_planted_in_ones_own_run_folder_is_replaced(run_folder: dict) -> 
     victim_folder = base / "victim-folder"
     victim_folder.mkdir()
     (out / "studies").symlink_to(victim_folder, target_is_directory=True)
-    result = runner.invoke(app, ["run", str(run_folder["design"]), "--studies", "none", "--out", str(out)])
+    result = runner.invoke(app, ["run", str(small_run["design"]), "--studies", "none", "--out", str(out)])
     assert result.exit_code == 0, result.output
     for name, victim in victims.items():
         assert victim.read_text() == "keep", name
         assert not (out / name).is_symlink() and (out / name).stat().st_size > 100, name
-    assert (out / "results.json").read_bytes() == run_folder["results"]
+    assert (out / "results.json").read_bytes() == small_run["results"]
     assert list(victim_folder.iterdir()) == [] and not (out / "studies").exists()
     marker = _marker(out)
     assert marker["complete"] is True and "results.json" in marker["entries"] and MARKER not in marker["entries"]

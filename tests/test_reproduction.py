@@ -577,8 +577,19 @@ def test_shaft_self_heating_is_far_below_8_kelvin() -> None:
 # The verdicts of both embedded designs
 
 
-def test_tuned_design_passes_every_requirement() -> None:
-    res = verdict_row("tuned")
+@pytest.mark.slow(
+    reason="the first test of a session to ask computes the comparison of both embedded designs at "
+    "their envelope points (~11 s of CPU, tests/conftest.py); the others read it"
+)
+def test_tuned_design_passes_every_requirement(embedded_comparison) -> None:
+    """``verdict_row("tuned")``, the packaged tuned design assessed as ``flexshaft run`` does
+    (all its envelope points, the report's resolution): the same assessment is the first run of
+    the comparison of the embedded designs, computed once per session (tests/conftest.py; CPU
+    budget, issue 23)."""
+    from flexshaft.resolution import REPORT
+
+    res = embedded_comparison.runs[0]
+    assert res.design == tuned_design() and res.resolution == REPORT  # what verdict_row("tuned") assesses
     failed = [c.key for c in res.verdict.checks if c.status == "fail"]
     assert all(c.status != "not evaluated" for c in res.verdict.checks)
     # whirl_damping may fail only on boom-only modes (ζ ≈ η_boom/2 = 0.01, δ ≈ 0.063): the lead's
