@@ -191,24 +191,24 @@ def _edit_wall(path: Path, wall: float) -> None:
     path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
 
 
-@pytest.mark.slow  # two full `flexshaft run`s of the baseline at its three envelope points: ~12 s CPU
+@pytest.mark.slow  # two full `flexshaft run`s of the baseline at its three envelope points, one with the studies: ~20 s CPU
 def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None:
     """Issue 28's bar (tests/test_rerun.py): from a fresh folder, the README's quick start
     (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture),
     then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
     my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
     folder (the fixture's is shared), as a user would (subprocesses, the whole design with its
-    envelope at the report's resolution). The two runs of ``my.toml`` skip the thesis studies
-    (``--studies none``, CPU budget, issue 23: about 9 s of CPU each): what the loop checks is
-    the output folder's ownership (its marker: the command, the design's source and
-    fingerprint, whether it is complete), which the studies do not touch; the quick start above
-    is the run with the studies, checked by ``test_run_writes_report_figures_and_numbers``.
+    envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
+    has it (with the thesis studies), so the rerun after the edit meets a folder holding the
+    studies' files as a user's does; the rerun skips them (``--studies none``, CPU budget,
+    issue 23: about 9 s of CPU): what it checks is the output folder's ownership (its marker:
+    the command, the design's source and fingerprint, whether it is complete).
     It is also tests/test_rerun.py's rerun of ``run`` after an edit (the edited wall's mass)."""
     shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
     with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
         assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
+    first = _flexshaft(tmp_path, "run", "my.toml")
     assert first.returncode == 0, first.stderr
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
