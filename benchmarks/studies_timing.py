@@ -14,7 +14,10 @@ Cases:
 * ``run-none``, ``run-report``, ``run-full``: the command ``flexshaft run --studies X --out DIR``
   as a fresh process per repeat (interpreter start, imports, every analysis and the report
   written), timed from outside; its CPU time is the child's user + system time
-  (``getrusage(RUSAGE_CHILDREN)`` difference). ``run-full`` is not in the default set (long).
+  (``getrusage(RUSAGE_CHILDREN)`` difference), split into the command's own process (main: the
+  assessment's serial part, the report's data files) and its pool workers (the studies, the
+  assessment's tasks, the figures), which the command reports at exit. ``run-full`` is not in
+  the default set (long).
 
 With ``--reference``, each ``run-*`` repeat also runs the same command on another checkout's
 code (``PYTHONPATH=OTHER/src``, e.g. ``git worktree add --detach /tmp/old <commit>``) right
@@ -28,7 +31,8 @@ not write them (``PYTHONDONTWRITEBYTECODE=1``), so every process compiles flexsh
 modules from source (the workers compile again what they import themselves). A machine that sets
 ``PYTHONDONTWRITEBYTECODE`` (this VM does) runs an editable install like ``source`` every time.
 
-Printed: median (min–max) wall time and median CPU time per case.
+Printed: median (min–max) wall time and median CPU time per case, and the CPU of the ``run-*``
+cases' main process and workers.
 """
 
 from __future__ import annotations
@@ -69,26 +73,50 @@ def time_studies(coarse: bool, repeats: int) -> dict:
     }
 
 
-def _flexshaft_command() -> list[str]:
-    exe = os.path.join(os.path.dirname(sys.executable), "flexshaft")
-    if os.path.isfile(exe):
-        return [exe]
-    return [sys.executable, "-c", "from flexshaft.cli import app; app()"]
-
-
 def _children_cpu() -> float:
     r = resource.getrusage(resource.RUSAGE_CHILDREN)
     return r.ru_utime + r.ru_stime
 
 
-def _time_command(cmd: list[str], env: dict | None) -> tuple[float, float]:
-    c0, w0 = _children_cpu(), time.perf_counter()
-    proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
-    wall, cpu = time.perf_counter() - w0, _children_cpu() - c0
-    if proc.returncode != 0:
-        sys.stderr.write(proc.stderr[-3000:])
-        raise SystemExit(f"{' '.join(cmd)} failed with status {proc.returncode}")
-    return wall, cpu
+#: ``flexshaft`` as ``python -c``, writing at exit the CPU time of its own process (the run's
+#: main process) and of its waited-for children (the run's pool workers, joined before the
+#: command ends) to the JSON file named by FLEXSHAFT_BENCH_CPU. Imports nothing before the CLI
+#: (it sets one BLAS thread only if numpy is not loaded yet).
+_SPLIT_CPU = """
+import atexit, json, os, resource, sys
+
+def _split():
+    s, c = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(os.environ["FLEXSHAFT_BENCH_CPU"], "w") as f:
+        json.dump({"main": s.ru_utime + s.ru_stime, "workers": c.ru_utime + c.ru_stime}, f)
+
+atexit.register(_split)
+sys.argv[0] = "flexshaft"
+from flexshaft.cli import main
+main()
+"""
+
+
+def _time_command(cmd: list[str], env: dict | None) -> tuple[float, float, dict]:
+    """Run ``flexshaft`` with the arguments ``cmd``: (wall [s], CPU of the process and its
+    children [s], {"main": CPU of the command's own process, "workers": CPU of its children})."""
+    env = dict(os.environ if env is None else env)
+    fd, split_file = tempfile.mkstemp(prefix="flexshaft-cpu-", suffix=".json")
+    os.close(fd)
+    env["FLEXSHAFT_BENCH_CPU"] = split_file
+    full = [sys.executable, "-c", _SPLIT_CPU, *cmd]
+    try:
+        c0, w0 = _children_cpu(), time.perf_counter()
+        proc = subprocess.run(full, capture_output=True, text=True, env=env)
+        wall, cpu = time.perf_counter() - w0, _children_cpu() - c0
+        if proc.returncode != 0:
+            sys.stderr.write(proc.stderr[-3000:])
+            raise SystemExit(f"flexshaft {' '.join(cmd)} failed with status {proc.returncode}")
+        with open(split_file) as f:
+            split = json.load(f)
+    finally:
+        os.remove(split_file)
+    return wall, cpu, split
 
 
 def speed_probe() -> float:
@@ -145,7 +173,7 @@ def time_run(
     command on that code right after (PYTHONPATH), so that both see the same machine load.
     ``bytecode``: see the module docstring."""
     codes = {"now": None} if reference is None else {"now": None, "reference": os.path.abspath(reference)}
-    times = {name: ([], []) for name in codes}
+    times = {name: ([], [], [], []) for name in codes}  # wall, CPU, CPU of the main process, of the workers
     probes = []
     for _ in range(repeats):
         probes.append(wait_for_speed(fastest))
@@ -157,20 +185,32 @@ def time_run(
             if bytecode == "source":
                 env["PYTHONDONTWRITEBYTECODE"] = "1"
             with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
-                wall, cpu = _time_command([*_flexshaft_command(), "run", "--studies", studies, "--out", out], env)
-            times[name][0].append(wall)
-            times[name][1].append(cpu)
-    walls, cpus = times["now"]
+                wall, cpu, split = _time_command(["run", "--studies", studies, "--out", out], env)
+            for series, value in zip(times[name], (wall, cpu, split["main"], split["workers"])):
+                series.append(value)
+    walls, cpus, mains, workers = times["now"]
     probes.append(speed_probe())
     result = {
-        "warm": {**bu.stats(walls), "cpu": bu.stats(cpus)},
+        "warm": {
+            **bu.stats(walls),
+            "cpu": bu.stats(cpus),
+            "main_cpu": bu.stats(mains),
+            "workers_cpu": bu.stats(workers),
+        },
         "command": f"flexshaft run --studies {studies}",
         "probe": bu.stats(probes),
         "bytecode": bytecode,
     }
     if reference is not None:
-        ref_walls, ref_cpus = times["reference"]
-        result["reference"] = {**bu.stats(ref_walls), "cpu": bu.stats(ref_cpus), "source": codes["reference"]}
+        ref_walls, ref_cpus, ref_mains, ref_workers = times["reference"]
+        result["reference"] = {
+            **bu.stats(ref_walls),
+            "cpu": bu.stats(ref_cpus),
+            "main_cpu": bu.stats(ref_mains),
+            "workers_cpu": bu.stats(ref_workers),
+            "source": codes["reference"],
+        }
+        result["cpu_ratio"] = statistics.median(r / c for r, c in zip(ref_cpus, cpus))
         result["speedup"] = statistics.median(r / w for r, w in zip(ref_walls, walls))
     return result
 
@@ -253,12 +293,30 @@ def main(argv=None) -> int:
             f"| {name} | {cold} | {bu.fmt_stats(r['warm'], 2)} | {r['warm']['cpu']['median']:.2f} | {ref} "
             f"| {r['warm']['n']} | {probe} |"
         )
+    runs = {name: r for name, r in results.items() if "main_cpu" in r["warm"]}
+    if runs:
+        print()
+        print(
+            "| case | CPU main process [s] | CPU workers [s] | CPU total [s] | reference main [s] "
+            "| reference workers [s] | reference total [s] | reference / now (CPU, paired) |"
+        )
+        print("|---|---:|---:|---:|---:|---:|---:|---:|")
+        for name, r in runs.items():
+            now = [r["warm"][k]["median"] for k in ("main_cpu", "workers_cpu", "cpu")]
+            ref = r.get("reference")
+            ref_cells = (
+                [f"{ref[k]['median']:.2f}" for k in ("main_cpu", "workers_cpu", "cpu")] + [f"{r['cpu_ratio']:.2f}×"]
+                if ref is not None
+                else ["–"] * 4
+            )
+            print(f"| {name} | " + " | ".join([*(f"{v:.2f}" for v in now), *ref_cells]) + " |")
     print()
     print(
         "studies-*: design_studies(..., 'report') in one process; cold = its first call, the "
         "others after it. run-*: `flexshaft run --studies X` as a fresh process each time "
         "(start-up, imports, analyses, report). Speed probe: a fixed pure-Python loop timed before "
-        "each repeat and after the last (wall times scale with it on the shared VM)."
+        "each repeat and after the last (wall times scale with it on the shared VM). CPU split "
+        "(medians): the command's own process (main) and its pool workers (its children)."
     )
     if a.json:
         with open(a.json, "w") as f:

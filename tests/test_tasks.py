@@ -48,6 +48,23 @@ def test_tasks_run_in_workers_and_come_back_in_task_order():
     assert all(o.error is None and o.seconds >= 0 for o in outcomes.values())
 
 
+def _collected(module: str, name: str) -> bool:
+    """Whether the collector's generations hold ``module.name`` (frozen objects are in none)."""
+    import gc
+
+    tracked = {id(o) for o in gc.get_objects()}
+    return id(getattr(sys.modules[module], name)) in tracked
+
+
+@needs_fork
+def test_a_worker_freezes_what_it_imported_at_start():
+    """The collector's full passes skip the warm imports (flexshaft.parallel.pool._start_worker)."""
+    assert "wave" not in sys.modules  # a module this process has not imported
+    assert _collected("json", "JSONDecodeError")  # a class this process has: tracked here
+    with worker_pool(2, ("wave",)) as pool:
+        assert not pool.submit(_collected, "wave", "Wave_read").result()
+
+
 @pytest.mark.parametrize("pooled", [False, pytest.param(True, marks=needs_fork)])
 def test_declared_errors_are_kept_and_others_raised(pooled):
     with worker_pool(2 if pooled else 1) as pool:

@@ -160,9 +160,9 @@ def run_pipeline(
     with_studies = studies is not Studies.none and loaded.design.operating.speed_rpm > 0
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
-    # No xarray before the first analysis: the studies' results travel as plain arrays
-    # (flexshaft.analyses.labelled); this process imports it only to write the studies' .nc
-    # files at the end (benchmarks/startup_timing.py).
+    # No xarray in this process: the studies' results travel as plain arrays
+    # (flexshaft.analyses.labelled) and their .nc files are written from them
+    # (flexshaft.netcdf.write_labelled_netcdf; xarray only when netCDF4 is installed).
     with worker_pool(_worker_processes(), FIGURE_MODULES) as pool, progress:
         # the thesis studies are no part of the assessment: they run beside it on the same workers
         pending = start_thesis_studies(loaded.design, studies.value, pool) if with_studies else None

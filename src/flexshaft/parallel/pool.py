@@ -102,7 +102,11 @@ ONE_THREAD_ENVIRONMENT = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_TH
 
 def _start_worker(parent_pid: int, modules: tuple[str, ...], pdeathsig: bool, one_thread_env: bool) -> None:
     """Worker initializer: :func:`prepare_worker`, one BLAS thread in the environment when
-    asked, then import ``modules`` once (matplotlib with the Agg backend)."""
+    asked, then import ``modules`` once (matplotlib with the Agg backend) and freeze what the
+    worker holds then, as :func:`new_pool` freezes the parent's objects for the fork: the
+    collector's full passes skip the ~44,000 objects of matplotlib and the plot modules too (a
+    ``flexshaft run --studies report`` worker spent 0.20 s of CPU in the collector, 0.15 s with
+    them frozen)."""
     if one_thread_env:
         for var in ONE_THREAD_ENVIRONMENT:
             os.environ[var] = "1"
@@ -113,6 +117,7 @@ def _start_worker(parent_pid: int, modules: tuple[str, ...], pdeathsig: bool, on
 
             matplotlib.use("Agg")
         importlib.import_module(name)
+    gc.freeze()
 
 
 def _ready() -> int:

@@ -31,7 +31,7 @@ from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.assembly import build_model
 from flexshaft.design import baseline_design
 from flexshaft.files import atomic_write_text
-from flexshaft.netcdf import write_netcdf
+from flexshaft.netcdf import write_labelled_netcdf, write_netcdf
 from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
 from flexshaft.resolution import REPORT
 from flexshaft.sweep.study import SweepError
@@ -451,7 +451,11 @@ _DATASETS = (
 
 def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Path]:
     """Write every study's Dataset to ``folder/study_NAME.nc`` (netCDF, units in attributes)
-    and the headline to ``folder/design_studies.json``; returns the paths by name."""
+    and the headline to ``folder/design_studies.json``; returns the paths by name.
+
+    Plain labelled arrays (``flexshaft run``'s) are written without building their Datasets
+    (:func:`~flexshaft.netcdf.write_labelled_netcdf`: the same files, without importing
+    xarray in the run's process)."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     paths = {}
@@ -459,7 +463,10 @@ def save_study_data(results: DesignStudies, folder: str | Path) -> dict[str, Pat
         ds = getattr(results, name)
         if ds is not None:
             paths[name] = folder / f"study_{name}.nc"
-            write_netcdf(ds.to_dataset() if isinstance(ds, LabelledArrays) else ds, paths[name])
+            if isinstance(ds, LabelledArrays):  # as flexshaft run's workers send them: xarray not needed
+                write_labelled_netcdf(ds, paths[name])
+            else:
+                write_netcdf(ds, paths[name])
     paths["headline"] = folder / "design_studies.json"
     atomic_write_text(paths["headline"], json.dumps(headline(results), indent=2))
     return paths
