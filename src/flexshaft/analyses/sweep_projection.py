@@ -68,6 +68,7 @@ AF to 0.5 %, far coarser than either.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -87,7 +88,7 @@ SWEEP_TOLERANCE = 1e-8
 #: Speeds solved in full to start the basis (evenly spread, the ends included).
 _INITIAL_SNAPSHOTS = 13
 #: Most speeds solved in full per round (the largest local maxima of the indicator).
-_SNAPSHOTS_PER_ROUND = 12
+_SNAPSHOTS_PER_ROUND = 16
 #: Scans shorter than this are solved in full (the rounds would cost more than they save).
 _SMALLEST_SCAN = 40
 #: Fraction of the speeds beyond which the greedy gives way to full solves.
@@ -120,9 +121,6 @@ class SweepResult:
         Columns of the final reduced basis (0: every speed solved in full).
     rounds : int
         Greedy rounds (enrichments) made.
-    previous : HarmonicResponse or None
-        The reduced model before the last enrichment, at every speed (the values whose error
-        the estimate measures, for the tests; None when every speed was solved in full).
     """
 
     response: HarmonicResponse
@@ -130,7 +128,19 @@ class SweepResult:
     full: np.ndarray
     basis_size: int
     rounds: int
-    previous: HarmonicResponse | None = None
+    _previous: tuple | None = None
+
+    @property
+    def previous(self) -> HarmonicResponse | None:
+        """The reduced model before the last enrichment, at every speed (the values whose error
+        the estimate measures, for the tests; None when every speed was solved in full)."""
+        if self._previous is None:
+            return None
+        basis, coordinates, free = self._previous
+        q = np.zeros_like(np.asarray(self.response))
+        q[free] = np.matmul(basis, coordinates).transpose(1, 2, 0)
+        r = self.response
+        return HarmonicResponse(q, r.frequencies, r.spin_speeds, r.dofs, r.excitation, r.internal_damping)
 
     @property
     def full_solves(self) -> int:
@@ -138,33 +148,44 @@ class SweepResult:
         return int(np.count_nonzero(self.full))
 
 
+@functools.lru_cache(maxsize=8)  # the solvers of a run (solver_for keeps as many)
+def _term_stack(solver: BandedHarmonicSolver) -> tuple[sp.csr_matrix, np.ndarray]:
+    """Every non-zero term of the solver's Z stacked (n_terms n_free, n_free), in the free-DOF
+    ordering (real when every term is), and each term's largest |entry| (1 for none)."""
+    k = len(solver.term_names)
+    stack = solver.term_matrix(np.eye(k))
+    if not np.any(stack.data.imag):
+        stack = stack.real.tocsr()
+    sizes = np.zeros(k)
+    coo = stack.tocoo()
+    np.maximum.at(sizes, coo.row // solver.n, np.abs(coo.data))
+    return stack, np.where(sizes > 0, sizes, 1.0)
+
+
 class _Terms:
     """Z(Ω, Ω) over a scan as ``Σ_j c_j(Ω) T'_j``: coefficients c (n_speeds, p) and the
-    p merged sparse terms, with ``term_weights ≈ c B`` to :data:`_WEIGHT_RANK` of ‖Z‖ (each term
-    scaled by its largest entry before the SVD, so that a small weight on a large term is kept);
-    and the terms of ∂Z/∂ω = −2ωM + i(ΩG + C) for the resonance measure. One stacked sparse
-    matrix applies them all to a basis at once."""
+    combinations B (p, n_terms) of the terms T_k with ``term_weights ≈ c B`` to
+    :data:`_WEIGHT_RANK` of ‖Z‖ (each term scaled by its largest entry before the SVD, so that a
+    small weight on a large term is kept); and which terms make ∂Z/∂ω = −2ωM + i(ΩG + C), for the
+    resonance measure."""
 
     def __init__(self, solver: BandedHarmonicSolver, speeds: np.ndarray):
         names = solver.term_names
-        k = len(names)
-        unit = np.eye(k)
-        each = solver.term_matrix(unit).tocoo()  # every term on its own, stacked
-        sizes = np.zeros(k)
-        np.maximum.at(sizes, each.row // solver.n, np.abs(each.data))
-        sizes = np.where(sizes > 0, sizes, 1.0)
+        self.stack, sizes = _term_stack(solver)
         u, s, vh = np.linalg.svd(solver.term_weights(speeds, speeds) * sizes, full_matrices=False)
         p = max(int(np.count_nonzero(s > _WEIGHT_RANK * s[0])), 1) if s.size and s[0] > 0 else 1
         self.coefficients = u[:, :p] * s[:p]
-        combos = vh[:p] / sizes
-        derivative = [unit[names.index(x)] if x in names else np.zeros(k) for x in ("M", "G", "C")]
+        self.combos = vh[:p] / sizes
+        self.derivative = [names.index(x) if x in names else None for x in ("M", "G", "C")]
         self.p = p
-        self.stack = solver.term_matrix(np.vstack([combos] + derivative))
         self.n = solver.n
 
-    def apply(self, V: np.ndarray) -> np.ndarray:
-        """(p + 3, n, r): T'_1 V … T'_p V, then M V, G V, C V."""
-        return (self.stack @ V).reshape(-1, self.n, V.shape[1])
+    def apply(self, V: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``T'_j V`` (p, n, r) and ``M V, G V, C V`` (3, n, r; zero for an absent term)."""
+        products = (self.stack @ V).reshape(-1, self.n, V.shape[1])
+        merged = np.tensordot(self.combos, products, axes=1)
+        zero = np.zeros_like(products[0])
+        return merged, np.stack([zero if k is None else products[k] for k in self.derivative])
 
 
 def _output_rows(model: Model, free: np.ndarray) -> list[sp.csr_matrix]:
@@ -192,14 +213,13 @@ class _ReducedModel:
         Q, R, _ = scipy.linalg.qr(A, mode="economic", pivoting=True, check_finite=False)
         diag = np.abs(np.diag(R))
         self.V = Q[:, : max(int(np.count_nonzero(diag > _RANK_TOLERANCE * diag[0])), 1)]
-        products = terms.apply(self.V)  # (p + 3, n, r)
-        merged = products[: terms.p]
-        projected = np.matmul(self.V.conj().T, products)  # (p + 3, r, r)
-        self.reduced, self.derivative = projected[: terms.p], projected[terms.p :]
+        merged, derivative = terms.apply(self.V)
+        self.reduced = np.matmul(self.V.conj().T, merged)  # (p, r, r)
+        self.derivative = np.matmul(self.V.conj().T, derivative)  # (3, r, r)
         self.inputs = self.V.conj().T @ rhs  # (r, c)
-        # the residual's norm: ‖[T_1 V … T_p V, Q₁] u‖ = ‖R u‖ (QR of the stacked products)
-        stacked = np.concatenate([merged.transpose(1, 0, 2).reshape(rhs.shape[0], -1), rhs], axis=1)
-        self.R = np.linalg.qr(stacked, mode="r")
+        # the residual's norm: ‖[T_1 V … T_p V, Q₁] u‖ = ‖R u‖ (QR of the stacked products,
+        # when an indicator is asked for)
+        self._stacked = np.concatenate([merged.transpose(1, 0, 2).reshape(rhs.shape[0], -1), rhs], axis=1)
 
     @property
     def size(self) -> int:
@@ -225,7 +245,8 @@ class _ReducedModel:
             + [np.broadcast_to(-(speeds * speeds)[:, None, None] * np.eye(c), (speeds.size, c, c))],
             axis=1,
         )  # (n_speeds, p r + c, c)
-        residual = np.linalg.norm(np.matmul(self.R, u), axis=1)  # (n_speeds, c)
+        R = np.linalg.qr(self._stacked, mode="r")
+        residual = np.linalg.norm(np.matmul(R, u), axis=1)  # (n_speeds, c)
         load = np.linalg.norm(self.inputs, axis=0)[None] * (speeds * speeds)[:, None]
         gain = np.linalg.norm(y, axis=1) / np.maximum(load, np.finfo(float).tiny)
         return (residual * gain).max(axis=1)
@@ -302,14 +323,14 @@ def imbalance_sweep(model: Model, speeds, loads_per_speed_squared, tolerance: fl
         require_finite("imbalance response", out)
         return HarmonicResponse(out, speeds, speeds, model.dofs, "imbalance", model.internal_damping)
 
-    previous = None if q_previous is None else response(q_previous)
+    previous = None if q_previous is None else (*q_previous, free)
     q = np.where(full[None, None, :], X, q)
     return SweepResult(response(q), np.where(full, 0.0, estimate), full, basis_size, rounds, previous)
 
 
 def _greedy(model, solver, speeds, rhs, X, full, solve_full, tolerance):
-    """The rounds of :func:`imbalance_sweep`: (q, q of the previous model (n, c, n_speeds),
-    estimate, basis size, rounds), or None when the projection gives way to full solves."""
+    """The rounds of :func:`imbalance_sweep`: (q (n, c, n_speeds), the previous model's basis
+    and coordinates, estimate, basis size, rounds), or None when the projection gives way to full solves."""
     ns, n, c = speeds.size, solver.n, rhs.shape[1]
     terms = _Terms(solver, speeds)
     coefficients = terms.coefficients
@@ -361,5 +382,4 @@ def _greedy(model, solver, speeds, rhs, X, full, solve_full, tolerance):
     if resonant.size:  # near an undamped resonance: the full solver's checks decide
         solve_full(resonant)
     q = np.matmul(reduced.V, y).transpose(1, 2, 0)
-    q_previous = np.matmul(previous[0].V, previous[1]).transpose(1, 2, 0)
-    return q, q_previous, estimate, reduced.size, rounds
+    return q, (previous[0].V, previous[1]), estimate, reduced.size, rounds
