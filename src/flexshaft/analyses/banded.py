@@ -308,6 +308,13 @@ class BandedHarmonicSolver:
         the order of :meth:`term_weights`, :meth:`project` and :meth:`term_matrix`."""
         return [self._names[k] for k in self._used]
 
+    @functools.cached_property
+    def term_stack(self) -> sp.csr_matrix:
+        """Every non-zero term of Z on its own, stacked (n_terms n_free, n_free) in the order of
+        :attr:`term_names` and the free-DOF ordering; real when every term is (built once)."""
+        stack = self.term_matrix(np.eye(self._used.size))
+        return stack.real.tocsr() if not np.any(stack.data.imag) else stack
+
     def term_matrix(self, weights) -> sp.csr_matrix:
         """``Σ_k w_k T_k`` over the non-zero terms T_k of Z, in the free-DOF ordering (CSR), for
         ``weights`` (n_terms,) in the order of :attr:`term_names` (a row of :meth:`term_weights`
