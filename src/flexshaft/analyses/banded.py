@@ -302,6 +302,34 @@ class BandedHarmonicSolver:
             out[:, j] = np.einsum("nmi,nmj->mij", left, (T @ Vp).reshape(n, m, r), optimize=True)
         return out
 
+    @property
+    def term_names(self) -> list[str]:
+        """Names of the non-zero terms ("M", "K", "G", "C", "F", "L", "S", "A<k>", "S<k>"), in
+        the order of :meth:`term_weights`, :meth:`project` and :meth:`term_matrix`."""
+        return [self._names[k] for k in self._used]
+
+    @functools.cached_property
+    def term_stack(self) -> sp.csr_matrix:
+        """Every non-zero term of Z on its own, stacked (n_terms n_free, n_free) in the order of
+        :attr:`term_names` and the free-DOF ordering; real when every term is (built once)."""
+        stack = self.term_matrix(np.eye(self._used.size))
+        return stack.real.tocsr() if not np.any(stack.data.imag) else stack
+
+    def term_matrix(self, weights) -> sp.csr_matrix:
+        """``Σ_k w_k T_k`` over the non-zero terms T_k of Z, in the free-DOF ordering (CSR), for
+        ``weights`` (n_terms,) in the order of :attr:`term_names` (a row of :meth:`term_weights`
+        gives Z(ω, Ω) itself); for weights (m, n_terms), the m sums stacked vertically
+        (m n_free, n_free)."""
+        w = np.asarray(weights)
+        if w.shape[-1:] != (self._used.size,) or w.ndim > 2:
+            raise ValueError(f"weights must have shape ([m,] {self._used.size}) (got {w.shape})")
+        w2 = np.atleast_2d(w)
+        data = w2 @ self._stack  # (m, nnz)
+        m = w2.shape[0]
+        rows = (self.perm[self._rows][None, :] + self.n * np.arange(m)[:, None]).ravel()
+        cols = np.broadcast_to(self.perm[self._cols], (m, self._cols.size)).ravel()
+        return sp.csr_matrix((data.ravel(), (rows, cols)), shape=(m * self.n, self.n))
+
     def matrix_data(self, omega: float, speed: float, weights: np.ndarray | None = None) -> np.ndarray:
         """Values of Z(ω, Ω) on the shared pattern (permuted ordering); ``weights``: its row
         of :meth:`coefficient_table`, when already computed."""

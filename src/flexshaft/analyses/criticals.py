@@ -120,6 +120,7 @@ def lateral_critical_speeds(
     n_points: int = REPORT.spinup_speeds,
     scan=None,
     projected: bool = True,
+    responses: np.ndarray | None = None,
 ) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
@@ -141,6 +142,12 @@ def lateral_critical_speeds(
         Refine each peak on a small projected model of the response around it, checked by full
         solves (:mod:`flexshaft.analyses.peak_projection`); False: a full solve at every
         refinement speed (the reference the tests compare with).
+    responses : ndarray, optional
+        The scan's complex responses (ndof, cases, speeds) [m, rad] with ``scan``: each peak's
+        projected model starts from those at the three scan speeds around it instead of solving
+        them again (from a projected scan, :mod:`flexshaft.analyses.sweep_projection`, they
+        agree with the full solutions to ~1e-11; the model is checked by full solves all the
+        same).
 
     Returns
     -------
@@ -168,7 +175,9 @@ def lateral_critical_speeds(
         rows = (int(model.dofs.shaft(int(node), "v")), int(model.dofs.shaft(int(node), "w")))
         if projected and np.all(np.isin(rows, model.dofs.free)):
             # the refinement on a projected model of the peak, checked by full solves
-            response = ProjectedOrbit(model, loads[:, case], rows, speeds[max(k - 1, 0) : k + 2])
+            near = slice(max(k - 1, 0), k + 2)
+            seed = None if responses is None else responses[model.dofs.free, case, near]
+            response = ProjectedOrbit(model, loads[:, case], rows, speeds[near], basis=seed)
 
         station = float(model.dofs.shaft_x[node])
         try:
@@ -210,12 +219,17 @@ def label_critical_speeds(criticals, campbell: Campbell | None) -> tuple[Lateral
 
 
 def scan_critical_speeds(
-    model: Model, speeds: np.ndarray, orbits: np.ndarray | None, top: float = REPORT.scan_top
+    model: Model,
+    speeds: np.ndarray,
+    orbits: np.ndarray | None,
+    top: float = REPORT.scan_top,
+    responses: np.ndarray | None = None,
 ) -> CriticalSpeeds:
     """The lateral critical speeds up to ``top`` × the operating speed, from a spin-up scan
     (speeds [rad/s], orbits (nodes, cases, speeds) [m]) when it reaches that high, else from a
     new scan; none, with a note, when the unbalance response is singular or the operating
-    speed is zero."""
+    speed is zero. ``responses``: the scan's complex responses (ndof, cases, speeds) [m, rad],
+    which start each peak's projected model instead of three full solves."""
     speed = float(model.speed)
     search_top = top * speed
     if speed <= 0.0:
@@ -224,7 +238,8 @@ def scan_critical_speeds(
     if orbits is not None and speeds[-1] >= search_top * (1 - 1e-9):
         scan = (np.asarray(speeds), np.asarray(orbits))
     try:
-        return CriticalSpeeds(lateral_critical_speeds(model, top=top, scan=scan), search_top)
+        responses = None if scan is None or responses is None else np.asarray(responses)
+        return CriticalSpeeds(lateral_critical_speeds(model, top=top, scan=scan, responses=responses), search_top)
     except SingularSystemError as exc:
         return CriticalSpeeds(None, search_top, f"the unbalance response could not be scanned: {exc}")
 

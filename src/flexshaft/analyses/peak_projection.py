@@ -29,6 +29,7 @@ with the all-full refinement.
 from __future__ import annotations
 
 import numpy as np
+import scipy.linalg
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.response import orbit_amplitude
@@ -67,12 +68,15 @@ class ProjectedOrbit:
     speeds : array_like
         Speeds [rad/s] whose full responses start the basis (e.g. the scan's samples around the
         peak).
+    basis : ndarray, optional
+        Columns (n_free, r) on the free DOFs that start the basis instead (e.g. the spin-up scan's
+        reduced basis, :mod:`flexshaft.analyses.sweep_projection`: no full solve to start).
 
     Calling it with new speeds [rad/s] returns the orbit there (checked as the module docstring
     says); ``full_solves`` counts the banded solves it made.
     """
 
-    def __init__(self, model: Model, load: np.ndarray, rows: tuple[int, int], speeds) -> None:
+    def __init__(self, model: Model, load: np.ndarray, rows: tuple[int, int], speeds, basis=None) -> None:
         self.solver = solver_for(model)
         free = self.solver.free
         local = np.full(model.dofs.size, -1, dtype=np.intp)
@@ -83,7 +87,10 @@ class ProjectedOrbit:
         self.rhs = np.asarray(load, dtype=complex)[free]
         self.full_solves = 0
         self.columns: list[np.ndarray] = []
-        self._enrich(np.asarray(speeds, dtype=float))
+        if basis is None:
+            self._enrich(np.asarray(speeds, dtype=float))
+        else:
+            self._enrich(np.zeros(0), np.asarray(basis, dtype=complex))
 
     def _full(self, speeds: np.ndarray) -> np.ndarray:
         """Full responses Z(Ω, Ω)⁻¹ Ω² Q₁ (n_free, n_speeds)."""
@@ -101,9 +108,10 @@ class ProjectedOrbit:
         self.columns.extend(X.T)
         A = np.column_stack(self.columns)
         A = A / np.maximum(np.linalg.norm(A, axis=0), np.finfo(float).tiny)
-        Q, R = np.linalg.qr(A)
+        # pivoted: dropping a column of an unpivoted Q would drop its share of every later column
+        Q, R, _ = scipy.linalg.qr(A, mode="economic", pivoting=True, check_finite=False)
         diag = np.abs(np.diag(R))
-        V = Q[:, diag > _RANK_TOLERANCE * diag.max()]
+        V = Q[:, : max(int(np.count_nonzero(diag > _RANK_TOLERANCE * diag[0])), 1)]
         self.basis = V
         self.terms = self.solver.project(V[None])[0]  # (n_terms, r, r)
         self.inputs = V.conj().T @ self.rhs

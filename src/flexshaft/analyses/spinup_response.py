@@ -1,10 +1,14 @@
 """The steady imbalance response over a spin-up: orbits along the shaft and at the actuators.
 
 :func:`spinup_response` solves the synchronous response to the design's imbalance at every
-speed of a scan (one banded solve per speed for all load cases,
-:func:`~flexshaft.analyses.response.imbalance_response`) and keeps, at each speed, the worst
-load case (the largest shaft orbit over the nodes): its orbit along the shaft and the relative
-orbit and carried force at each active bearing.
+speed of a scan and keeps, at each speed, the worst load case (the largest shaft orbit over the
+nodes): its orbit along the shaft and the relative orbit and carried force at each active
+bearing. By default the scan comes from a greedy reduced basis over speed, full banded solves at
+a few dozen speeds with an error estimate at every speed
+(:func:`~flexshaft.analyses.sweep_projection.imbalance_sweep`: the outputs agree with the
+all-full sweep to ``SWEEP_TOLERANCE`` of their peaks); ``projected=False`` solves every speed in
+full (one banded solve per speed for all load cases,
+:func:`~flexshaft.analyses.response.imbalance_response`), the reference the tests compare with.
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ import numpy as np
 
 from flexshaft.analyses.reactions import actuator_response, worst_case_orbits
 from flexshaft.analyses.response import imbalance_response
+from flexshaft.analyses.sweep_projection import imbalance_sweep
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.units import m_to_mm, rad_s_to_rpm
@@ -43,6 +48,10 @@ class SpinupResponse:
     actuator_displacement, actuator_force : mapping of str to ndarray
         Relative orbit [m] and carried force [N] of each active bearing in the worst case
         (n_speeds,).
+    error_estimate : ndarray or None
+        Estimated error of the checked outputs at each speed relative to their peaks over the
+        scan [-] (n_speeds,; 0 where solved in full), when the scan was projected
+        (:mod:`flexshaft.analyses.sweep_projection`); None for the all-full sweep.
     """
 
     speeds: np.ndarray
@@ -52,6 +61,7 @@ class SpinupResponse:
     envelope: np.ndarray
     actuator_displacement: Mapping[str, np.ndarray]
     actuator_force: Mapping[str, np.ndarray]
+    error_estimate: np.ndarray | None = None
 
     def __repr__(self) -> str:
         """One line: the scan and its peaks (the arrays are in the attributes)."""
@@ -82,13 +92,18 @@ class SpinupResponse:
         return np.flatnonzero(self.speeds <= speed * (1 + 1e-9))
 
 
-def spinup_response(model: Model, speeds: np.ndarray) -> SpinupResponse:
+def spinup_response(model: Model, speeds: np.ndarray, projected: bool = True) -> SpinupResponse:
     """The worst-case imbalance response of ``model`` at ``speeds`` [rad/s] (see the module
-    docstring)."""
+    docstring); ``projected=False``: a full banded solve at every speed."""
     speeds = np.asarray(speeds, dtype=float)
-    q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
+    estimate = None
+    if projected:
+        sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
+        q, estimate = sweep.response, sweep.error_estimate
+    else:
+        q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
     orbits, case = worst_case_orbits(model, q)
     idx = np.arange(speeds.size)
     envelope = orbits[:, case, idx]
     displacement, force = actuator_response(model, q[:, case, idx], speeds)
-    return SpinupResponse(speeds, q, orbits, case, envelope, displacement, force)
+    return SpinupResponse(speeds, q, orbits, case, envelope, displacement, force, estimate)

@@ -77,7 +77,10 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
     (not yet labelled with the Campbell modes, computed in parallel)."""
     model = _model_of(source)
     response = spinup_response(model, resolution.spin_speeds(model.speed))
-    return response, scan_critical_speeds(model, response.speeds, response.orbits, resolution.scan_top)
+    criticals = scan_critical_speeds(
+        model, response.speeds, response.orbits, resolution.scan_top, responses=response.response
+    )
+    return response, criticals
 
 
 def campbell_ceiling(model: Model, resolution: Resolution) -> float:

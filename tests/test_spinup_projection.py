@@ -1,0 +1,253 @@
+"""The spin-up scan from a greedy reduced basis over speed, against the all-full sweep.
+
+:mod:`flexshaft.analyses.sweep_projection` solves the synchronous imbalance response at a few
+dozen speeds of a scan and evaluates a Galerkin model on their span at every other speed,
+accepted when the last enrichment moved no checked output by more than ``SWEEP_TOLERANCE``
+(1e-8 of its peak). The reference is the same scan with a full banded solve at every speed
+(``spinup_response(..., projected=False)``; the banded solver is itself checked against dense
+solves in tests/test_response.py, and here against SuperLU).
+
+Designs: the three embedded ones (tuned at its own point, baseline = Table 3.1, the segmented
+aluminium ``current``), the thesis's tuned layup with a 1 mm wall (AF up to 148), the baseline
+with its loss factors divided by 100 (lightly damped: AF 5e3 to 1e6) and with no loss at all
+(undamped: every peak is a resonance).
+
+Tolerance: 1e-7 of each quantity's peak over the scan, for every number the checks read (the
+worst-case orbit along the shaft, each actuator's relative orbit and force, the critical speeds,
+amplification factors and peak orbits found on the scan). It is ten times the projection's own
+acceptance level (the margin covers a force, the displacement times a law whose magnitude
+changes by less than that factor over the scan) and far below what the checks resolve (a
+critical speed to a 20th of its bandwidth, AF to 0.5 %); two direct solvers (banded LU, SuperLU)
+agree to ~1e-11 of the peak (test below), so it is far above round-off.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+import scipy.sparse.linalg as spla
+
+from flexshaft.analyses import sweep_projection
+from flexshaft.analyses.banded import ResonanceWarning, solver_for
+from flexshaft.analyses.criticals import lateral_critical_speeds, scan_critical_speeds
+from flexshaft.analyses.response import imbalance_response
+from flexshaft.analyses.spinup_response import spinup_response
+from flexshaft.analyses.sweep_projection import imbalance_sweep
+from flexshaft.assembly import build_model
+from flexshaft.assembly.loads import imbalance_loads
+from flexshaft.design import baseline_design, with_overrides
+from flexshaft.design.io import embedded_design
+from flexshaft.resolution import REPORT, SCREENING
+from flexshaft.thesis.designs import thesis_tuned_design
+
+#: Largest difference from the all-full sweep, relative to each quantity's peak (module docstring).
+TOLERANCE = 1e-7
+#: Round-off of the full solution relative to the peak: two direct solvers differ by ~1e-11.
+FLOOR = 1e-10
+
+
+def _losses(scale: float) -> dict:
+    """Overrides scaling the baseline's material loss factors by ``scale`` (0: no loss)."""
+    return {
+        "materials.t700_adiprene.loss_E_L": 3.0e-4 * scale,
+        "materials.t700_adiprene.loss_E_T": 0.12 * scale,
+        "materials.t700_adiprene.loss_G_LT": 0.12 * scale,
+        "materials.t700_adiprene.temperature_table": None,
+        "materials.al6061_t6.loss_factor": 1e-3 * scale,
+        "materials.boom_aluminium.loss_factor": 0.02 * scale,
+    }
+
+
+def _design(name: str):
+    if name in ("tuned", "baseline", "current"):
+        return embedded_design(name).model_copy(update={"envelope": None})
+    if name.endswith("worst"):  # every in/anti-phase pattern of the bay forces: 4 or 16 load cases
+        plain = embedded_design(name.split()[0]).model_copy(update={"envelope": None})
+        return with_overrides(plain, {"loads.imbalance_placement": "worst"})
+    if name == "thin wall":
+        return with_overrides(thesis_tuned_design(), {"shaft.wall_thickness": 1.0e-3})
+    return with_overrides(baseline_design(), _losses(0.01 if name == "light loss" else 0.0))
+
+
+_MODELS: dict = {}
+
+
+def _model(name: str):
+    if name not in _MODELS:
+        _MODELS[name] = build_model(_design(name))
+    return _MODELS[name]
+
+
+DESIGNS = ["tuned", "baseline", "current", "thin wall", "light loss", "no loss"]
+CASES = [(name, SCREENING) for name in DESIGNS + ["baseline worst"]] + [("tuned", REPORT), ("light loss", REPORT)]
+
+
+def _close(a, b, what: str) -> None:
+    a, b = np.asarray(a), np.asarray(b)
+    scale = np.abs(b).max()
+    worst = np.abs(a - b).max() / scale
+    assert worst <= TOLERANCE, f"{what}: {worst:.1e} of its peak"
+
+
+@pytest.mark.parametrize("name, resolution", CASES, ids=lambda v: v if isinstance(v, str) else v.name)
+def test_scan_matches_the_all_full_sweep(name, resolution):
+    model = _model(name)
+    speeds = resolution.spin_speeds(model.speed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResonanceWarning)
+        full = spinup_response(model, speeds, projected=False)
+        fast = spinup_response(model, speeds)
+        sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
+    assert full.error_estimate is None and fast.error_estimate is not None
+    _close(fast.envelope, full.envelope, "worst-case orbit along the shaft")
+    _close(fast.orbits, full.orbits, "orbits of every load case")
+    for actuator in full.actuator_displacement:
+        _close(fast.actuator_displacement[actuator], full.actuator_displacement[actuator], f"{actuator} orbit")
+        _close(fast.actuator_force[actuator], full.actuator_force[actuator], f"{actuator} force")
+    # the worst case is the same wherever the two largest cases are told apart at all
+    top = np.sort(full.orbits.max(axis=0), axis=0)
+    distinct = top[-1] > (1 + 1e-6) * top[-2] if top.shape[0] > 1 else np.ones(speeds.size, dtype=bool)
+    assert np.array_equal(fast.worst_case[distinct], full.worst_case[distinct])
+    # it did project: a small fraction of the speeds solved in full
+    assert sweep.full_solves <= 0.25 * speeds.size, sweep.full_solves
+    assert np.all(sweep.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_critical_speeds_on_the_projected_scan_match(name):
+    model = _model(name)
+    speeds = SCREENING.spin_speeds(model.speed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResonanceWarning)
+        scan = spinup_response(model, speeds, projected=False)
+        # the all-full reference: full scan, a full solve at every refinement speed
+        full = lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
+        scan = spinup_response(model, speeds)
+        # as the assessment's spin-up task: the peaks' models start from the scan's responses
+        fast = scan_critical_speeds(model, scan.speeds, scan.orbits, SCREENING.scan_top, scan.response).criticals
+    assert full is not None and fast is not None and len(fast) == len(full) >= 3
+    for a, b in zip(fast, full):
+        assert a.speed == pytest.approx(b.speed, rel=TOLERANCE)
+        assert a.amplification_factor == pytest.approx(b.amplification_factor, rel=TOLERANCE)
+        assert a.location.get("af_method") == b.location.get("af_method")
+        assert a.location.get("detail") == b.location.get("detail")
+        if np.isfinite(b.amplification_factor):  # an undamped peak's orbit is the sample's, set by 1/δ
+            assert a.location.get("peak_orbit", 0.0) == pytest.approx(b.location.get("peak_orbit", 0.0), rel=TOLERANCE)
+
+
+def _errors(model, speeds, response, reference) -> np.ndarray:
+    """Largest error of the checked outputs at each speed, relative to each group's peak."""
+    free = model.dofs.free
+    out = np.zeros(speeds.size)
+    for rows in sweep_projection._output_rows(model, free):
+        a = (rows @ np.asarray(response)[free].reshape(free.size, -1)).reshape(rows.shape[0], -1, speeds.size)
+        b = (rows @ np.asarray(reference)[free].reshape(free.size, -1)).reshape(rows.shape[0], -1, speeds.size)
+        out = np.maximum(out, np.abs(a - b).max(axis=(0, 1)) / np.abs(b).max())
+    return out
+
+
+@pytest.mark.parametrize("name", ["tuned", "light loss"])
+def test_error_estimate_bounds_the_true_error(name, monkeypatch):
+    """The estimate is twice the change the last enrichment made: for the model before it, a
+    bound within a factor 3 of its true error once the enrichment at least halves the error
+    (|e_old − e_new| ≤ change ≤ e_old + e_new); for the returned model, a bound (to the full
+    solution's round-off). Small rounds (5 starting speeds, 3 per round) stop the greedy at
+    several accuracies to see it at errors well above round-off."""
+    monkeypatch.setattr(sweep_projection, "_INITIAL_SNAPSHOTS", 5)
+    monkeypatch.setattr(sweep_projection, "_SNAPSHOTS_PER_ROUND", 3)
+    model = _model(name)
+    speeds = SCREENING.spin_speeds(model.speed)
+    loads = imbalance_loads(model)
+    reference = imbalance_response(model, speeds, loads)
+    checked = 0
+    for tolerance in (1e-2, 1e-4, 1e-6, 1e-8):
+        sweep = imbalance_sweep(model, speeds, loads, tolerance=tolerance)
+        assert sweep.previous is not None
+        estimate = sweep.error_estimate
+        error = _errors(model, speeds, sweep.response, reference)
+        assert np.all(error <= estimate + FLOOR)  # the returned values
+        assert error.max() <= max(tolerance, FLOOR)
+        before = _errors(model, speeds, sweep.previous, reference)
+        seen = ~sweep.full & (before > 100 * FLOOR)
+        assert np.all(estimate[seen] >= before[seen])
+        assert np.all(estimate[seen] <= 10 * before[seen])
+        checked += np.count_nonzero(seen)
+    assert checked > 50  # the comparison saw errors above round-off at many speeds
+
+
+def test_full_solutions_agree_with_superlu_to_round_off():
+    """The floor the comparisons allow: the banded LU against SuperLU on the same Z(Ω, Ω)."""
+    model = _model("tuned")
+    solver = solver_for(model)
+    speeds = SCREENING.spin_speeds(model.speed)[::20]
+    rhs = imbalance_loads(model)[solver.free].astype(complex)
+    weights = solver.term_weights(speeds, speeds)
+    banded = np.stack(list(solver.sweep([(s, s) for s in speeds], rhs)), axis=-1)
+    superlu = np.stack([spla.spsolve(solver.term_matrix(w).tocsc(), rhs).reshape(rhs.shape) for w in weights], axis=-1)
+    assert np.abs(banded - superlu).max() <= FLOOR * np.abs(superlu).max()
+
+
+def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
+    """A scan speed at an undamped resonance: the all-full sweep warns there (the response
+    changes completely within the natural frequencies' accuracy), and so does the projection,
+    which solves such a speed in full."""
+    model = _model("no loss")
+    speeds = SCREENING.spin_speeds(model.speed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResonanceWarning)
+        criticals = scan_critical_speeds(model, *_scan(model, speeds), SCREENING.scan_top).criticals
+    resonance = criticals[0].speed
+    assert criticals[0].amplification_factor == float("inf")
+    speeds = np.sort(np.append(speeds, resonance))
+    loads = imbalance_loads(model)
+    with pytest.warns(ResonanceWarning, match="undamped resonance"):
+        imbalance_response(model, speeds, loads)
+    with pytest.warns(ResonanceWarning, match="undamped resonance"):
+        sweep = imbalance_sweep(model, speeds, loads)
+    assert sweep.full[np.searchsorted(speeds, resonance)]
+
+
+def _scan(model, speeds):
+    scan = spinup_response(model, speeds, projected=False)
+    return scan.speeds, scan.orbits
+
+
+def test_short_or_unordered_scans_are_solved_in_full():
+    model = _model("baseline")
+    loads = imbalance_loads(model)
+    short = np.linspace(10.0, 600.0, 30)
+    sweep = imbalance_sweep(model, short, loads)
+    assert sweep.full.all() and sweep.previous is None and not sweep.error_estimate.any()
+    assert np.array_equal(np.asarray(sweep.response), np.asarray(imbalance_response(model, short, loads)))
+    unordered = np.linspace(600.0, 10.0, 80)
+    assert imbalance_sweep(model, unordered, loads).full.all()
+
+
+def test_many_independent_load_cases_are_solved_in_full():
+    """The segmented driveline's 16 in/anti-phase patterns of 5 bay forces: the cases are
+    combined from the responses to the 5 independent loads (exactly: the response is linear in
+    the load), and a basis spanning all five would cost more than the full solves it saves."""
+    model = _model("current worst")
+    loads = imbalance_loads(model)
+    speeds = SCREENING.spin_speeds(model.speed)
+    sweep = imbalance_sweep(model, speeds, loads)
+    assert loads.shape[1] == 16 and sweep.full.all()
+    reference = np.asarray(imbalance_response(model, speeds, loads))
+    assert np.abs(np.asarray(sweep.response) - reference).max() <= FLOOR * np.abs(reference).max()
+
+
+@pytest.mark.parametrize(
+    "speeds, loads, tolerance, match",
+    [
+        (np.linspace(1, 10, 50), np.zeros((3, 1)), 1e-8, "loads_per_speed_squared must have shape"),
+        (np.linspace(1, 10, 50), None, 0.0, "tolerance must be in"),
+        (np.array([1.0, np.nan]), None, 1e-8, "speeds"),
+    ],
+)
+def test_bad_input_is_refused(speeds, loads, tolerance, match):
+    model = _model("baseline")
+    loads = imbalance_loads(model) if loads is None else loads
+    with pytest.raises(ValueError, match=match):
+        imbalance_sweep(model, speeds, loads, tolerance=tolerance)
