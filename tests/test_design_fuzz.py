@@ -448,7 +448,7 @@ def test_every_table_refuses_an_unknown_key() -> None:
 # Allowed outcomes: a validated Design and finite results, or a DesignError / ValueError whose
 # message is not empty (SingularSystemError and NonFiniteResultError are ValueErrors too).
 # Anything else (a traceback) or a NaN or inf in a result fails the test. Memory: after every
-# example the process's resident peak (getrusage ru_maxrss) must stay below MEMORY_CAP_BYTES,
+# example the resident peak since the test began (VmHWM) must stay below MEMORY_CAP_BYTES,
 # so no example went above it; every 20th analysis example is also traced (tracemalloc sees
 # every numpy array; it slows the analyses fourfold, hence not all of them) and its peak must
 # stay below TRACED_CAP_BYTES.
@@ -465,8 +465,30 @@ OUTCOMES: dict[str, dict[str, Any]] = {}
 
 
 def _resident_peak() -> int:
-    """The process's resident peak [bytes] (ru_maxrss is in KiB on Linux)."""
+    """The process's resident peak [bytes] since the test started (Linux's VmHWM, reset by
+    :func:`_fresh_resident_peak`); the peak of the process's whole life (ru_maxrss, KiB on Linux)
+    where /proc cannot say."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as status:
+            for line in status:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+
+
+@pytest.fixture(autouse=True)
+def _fresh_resident_peak() -> None:
+    """Each test's memory cap holds for its own examples: the kernel's resident high-water mark
+    is reset to the current resident size before it (``5 > /proc/self/clear_refs``, Linux 4.0+).
+    The peak of the whole process would also count what earlier tests of the same worker held
+    (the suite in one process reaches about 1 GB before this module, on no example of its own)."""
+    try:
+        with open("/proc/self/clear_refs", "w", encoding="ascii") as refs:
+            refs.write("5")
+    except OSError:  # not Linux, or not allowed: the lifetime peak stands in (ru_maxrss)
+        pass
 
 
 EXTREMES = [
@@ -755,7 +777,8 @@ def test_extreme_designs_through_run(example: tuple[Any, ...]) -> None:
 
 
 def test_fuzz_outcomes_summary() -> None:
-    """Print the outcome classes (run with -s) and the process's resident peak."""
-    OUTCOMES["resident_peak_bytes"] = _resident_peak()
+    """Print the outcome classes of the fuzz tests that ran in this process (run with -s): every
+    class counted at least once."""
     print("\nfuzz outcomes:", json.dumps(OUTCOMES, indent=1, default=str))
-    assert _resident_peak() <= MEMORY_CAP_BYTES
+    counts = [n for stage, classes in OUTCOMES.items() if stage != "traced_peak_bytes" for n in classes.values()]
+    assert all(isinstance(n, int) and n > 0 for n in counts)
