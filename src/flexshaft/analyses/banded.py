@@ -246,6 +246,7 @@ class BandedHarmonicSolver:
         # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
         # half the bytes of a complex stack.
         self._real_stack = None
+        self._terms_csr: list | None = None  # the terms' own sparse matrices (_term_matrices)
         if not np.any(self._stack.imag):
             self._real_stack = np.ascontiguousarray(self._stack.real.T)  # (nnz, n_terms)
 
@@ -286,21 +287,47 @@ class BandedHarmonicSolver:
         columns of :meth:`coefficient_table` that :meth:`project` returns terms for."""
         return self.coefficient_table(omegas, speeds)[:, self._used]
 
+    def project_pairs(self, left: np.ndarray, right: np.ndarray) -> np.ndarray:
+        """Products ``Uᴴ T_k W`` of the non-zero terms T_k of Z for m pairs of bases: ``left`` U
+        (m, n_free, a) and ``right`` W (m, n_free, b) in the free-DOF ordering; returns
+        (m, n_terms, a, b), the terms in the order of :meth:`term_weights`. Each term is
+        multiplied on its own entries (a real product when the terms are real, the usual case),
+        once per column of W."""
+        m, n, b = right.shape
+        W = np.ascontiguousarray(right[:, self.perm, :].transpose(1, 0, 2)).reshape(n, m * b)
+        Uh = left[:, self.perm, :].conj().transpose(0, 2, 1)  # (m, a, n)
+        real = self._real_stack is not None
+        out = np.empty((m, self._used.size, left.shape[2], b), dtype=complex)
+        for j, T in enumerate(self._term_matrices()):
+            # a complex array's memory is its (real, imaginary) pairs: (n, 2 m b) reals
+            TW = (T @ W.view(np.float64)).view(complex) if real else T @ W
+            out[:, j] = Uh @ TW.reshape(n, m, b).transpose(1, 0, 2)
+        return out
+
+    def _term_matrices(self) -> list[sp.csr_matrix]:
+        """Each non-zero term as a CSR matrix of its own entries (the shared pattern holds the
+        union of all terms: an actuator's term has a dozen of its thousands), real when every
+        term is (permuted ordering); made at the first call."""
+        if self._terms_csr is not None:
+            return self._terms_csr
+        real = self._real_stack is not None
+        out = []
+        for j in range(self._used.size):
+            values = self._stack[j].real if real else self._stack[j]
+            keep = values != 0
+            T = sp.csr_matrix((values[keep], (self._rows[keep], self._cols[keep])), shape=(self.n, self.n))
+            T.sort_indices()
+            out.append(T)
+        self._terms_csr = out
+        return out
+
     def project(self, bases: np.ndarray) -> np.ndarray:
         """Galerkin projections ``Vᴴ T_k V`` of the non-zero terms T_k of Z on each basis V.
 
         ``bases`` (m, n_free, r) in the free-DOF ordering; returns (m, n_terms, r, r), with
         ``Vᴴ Z(ω, Ω) V = Σ_k w_k Vᴴ T_k V`` for ``w`` a row of :meth:`term_weights`.
         """
-        m, n, r = bases.shape
-        Vp = np.ascontiguousarray(bases[:, self.perm, :].transpose(1, 0, 2)).reshape(n, m * r)
-        left = Vp.reshape(n, m, r).conj()
-        out = np.empty((m, self._used.size, r, r), dtype=complex)
-        T = self._template.copy().astype(self._stack.dtype)
-        for j in range(self._used.size):
-            T.data[:] = self._stack[j]
-            out[:, j] = np.einsum("nmi,nmj->mij", left, (T @ Vp).reshape(n, m, r), optimize=True)
-        return out
+        return self.project_pairs(bases, bases)
 
     def matrix_data(self, omega: float, speed: float, weights: np.ndarray | None = None) -> np.ndarray:
         """Values of Z(ω, Ω) on the shared pattern (permuted ordering); ``weights``: its row
