@@ -258,18 +258,27 @@ def lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.nda
 class RefinementTask:
     """One refinement of :func:`_refinements`: a ``"peak"`` (its result (ln ω, |S|)) or a
     ``"root"`` (its result (ω, L)) between grid points ``lo`` and ``hi``; ``start()`` makes
-    its steps."""
+    its steps; ``role`` says what a root is of (``"gain"``: |L| = 1, ``"phase"``: Im L = 0),
+    for the caller's release rule (:func:`projected_refinements`)."""
 
     kind: str
     lo: int
     hi: int
     start: Callable[[], Refinement]
+    role: str = ""
 
 
 def _on_local(local: LocalModels, omegas: np.ndarray, intervals: np.ndarray) -> np.ndarray:
     """L(iω) on the projected models of ``intervals``."""
     T = local.closed(omegas, intervals)
     return T / (1.0 - T)
+
+
+#: Step in ln ω of the central differences that give the derivatives d L/d ln ω and
+#: d²L/d ln ω² of a projected model at a refined frequency (the release rule's): the model is a
+#: smooth rational function of ω; the round-off of the second difference, 4e-16/h² = 4e-6
+#: of |L|, is far below what the rule reads (it needs the derivatives to a few per cent).
+SLOPE_STEP = 1e-5
 
 
 def projected_refinements(
@@ -279,6 +288,7 @@ def projected_refinements(
     local_models: Callable[[Sequence[Sequence[int]], np.ndarray], LocalModels],
     windows: list[list[int]],
     responses: list[np.ndarray],
+    settle: Callable[..., np.ndarray] | None = None,
 ) -> list:
     """The refinements on the projected models of their intervals, each checked by one full
     solve at its result (:mod:`flexshaft.analyses.local_projection`): the full model's value is
@@ -288,7 +298,13 @@ def projected_refinements(
     :data:`ENRICHMENTS` times; then on the full model, as is one whose projected model gives no
     finite frequency, is singular, or cannot be enriched. ``windows[i]``: the grid responses
     (indices into ``responses``) of task i's first basis; the checked solutions are appended to
-    ``responses`` by ``evaluate(ω, tasks, responses)``."""
+    ``responses`` by ``evaluate(ω, tasks, responses)``.
+
+    ``settle(tasks, ω, L, dL/d ln ω, d²L/d ln ω², accepted)``, when given, is called after each
+    round's checks with every checked task, its frequency, the full model's L there, the
+    projected model's first two derivatives there and whether the check passed; it returns which tasks that failed may
+    keep that result instead of being refined further (the caller's rule: a crossover that
+    cannot set a margin, :mod:`flexshaft.analyses.bearing_loops`)."""
     results: list = [None] * len(tasks)
     active = np.arange(len(tasks))
     fallback: list[int] = []  # refined on the full model at the end
@@ -310,14 +326,26 @@ def projected_refinements(
         full = np.full(at.size, np.nan, dtype=complex)
         full[finite] = evaluate(at[finite], active[finite], responses)
         slot = first + np.cumsum(finite) - 1  # where each checked solution was appended
+        passed = np.zeros(at.size, dtype=bool)
+        for n, (i, (_, value), exact) in enumerate(zip(active, found, full)):
+            if finite[n]:
+                exact = abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact
+                passed[n] = abs(value - exact) <= LOCAL_TOLERANCE * abs(exact)
+        released = np.zeros(at.size, dtype=bool)
+        if settle is not None and finite.any():
+            where = np.flatnonzero(finite)
+            h = SLOPE_STEP
+            shifted = np.concatenate([at[where] * np.exp(h), at[where], at[where] * np.exp(-h)])
+            with np.errstate(all="ignore"):
+                up, mid, down = np.split(_on_local(local, shifted, np.tile(where, 3)), 3)
+            slope, curvature = (up - down) / (2.0 * h), (up - 2.0 * mid + down) / (h * h)
+            released[where] = settle(active[where], at[where], full[where], slope, curvature, passed[where])
         retry = []
-        for n, (i, (x, value), exact) in enumerate(zip(active, found, full)):
+        for n, (i, (x, _), exact) in enumerate(zip(active, found, full)):
             if not finite[n]:
                 continue
-            if tasks[i].kind == "peak":
-                exact = abs(1.0 / (1.0 + exact))
-            if abs(value - exact) <= LOCAL_TOLERANCE * abs(exact):
-                results[i] = (x, exact)
+            if passed[n] or released[n]:
+                results[i] = (x, abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact)
             else:
                 retry.append(n)
         new = [responses[slot[n]][:, loop_of[active[n]]] for n in retry]
