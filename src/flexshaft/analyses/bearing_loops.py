@@ -537,7 +537,8 @@ def bearing_loops(
     sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
 
     def gains(omegas: np.ndarray) -> np.ndarray:
-        return np.array([a.feedback_gain(1j * omegas) for a, _ in rows])
+        laws = [a.feedback_gain(1j * omegas) for a in model.actuators]  # both axes of a bearing share it
+        return np.array([laws[k // 2] for k in range(len(rows))])
 
     def closed(omegas: np.ndarray, keep: list | None = None) -> np.ndarray:
         """G P_c (= T) of every loop at ω [rad/s]: (n_loops, n_omegas); the solutions are
@@ -564,8 +565,18 @@ def bearing_loops(
     tasks = [task for refinements, _ in plans for task in refinements]
 
     def evaluate(omegas: np.ndarray, which: np.ndarray, keep: list | None = None) -> np.ndarray:
-        """L(iω) of each task's loop at its ω: one banded sweep for every loop's refinements."""
-        T = closed(omegas, keep)[loop_of[which], np.arange(omegas.size)]
+        """L(iω) of each task's loop at its ω: one banded sweep a loop, with that loop's actuation
+        only; its responses (n_free,) are appended to ``keep`` in the order of ``omegas``."""
+        loops = loop_of[which]
+        T = np.empty(omegas.size, dtype=complex)
+        columns: list = [None] * omegas.size
+        for k in np.unique(loops):
+            at = np.flatnonzero(loops == k)
+            for i, x in zip(at, solver.sweep([(float(omegas[i]), speed) for i in at], rhs[:, k])):
+                columns[i] = x
+            T[at] = gains(omegas[at])[k] * np.array([sense[k] @ columns[i] for i in at])
+        if keep is not None:
+            keep.extend(columns)
         return T / (1.0 - T)
 
     if projected and tasks:
@@ -575,7 +586,7 @@ def bearing_loops(
 
         windows = [list(window_of(task.lo, task.hi, grid.size)) for task in tasks]
         settle = _release_rule(tasks, loop_of)
-        results = projected_refinements(tasks, loop_of, evaluate, local_models, windows, responses, settle)
+        results = projected_refinements(tasks, evaluate, local_models, windows, settle)
     else:
         results = lockstep([task.start() for task in tasks], evaluate)
     out, first = [], 0

@@ -283,11 +283,9 @@ SLOPE_STEP = 1e-5
 
 def projected_refinements(
     tasks: Sequence[RefinementTask],
-    loop_of: np.ndarray,
     evaluate: Callable[..., np.ndarray],
     local_models: Callable[[Sequence[Sequence[int]], np.ndarray], LocalModels],
-    windows: list[list[int]],
-    responses: list[np.ndarray],
+    windows: Sequence[Sequence[int]],
     settle: Callable[..., np.ndarray] | None = None,
 ) -> list:
     """The refinements on the projected models of their intervals, each checked by one full
@@ -296,9 +294,10 @@ def projected_refinements(
     :data:`LOCAL_TOLERANCE` is run again with that solution added to its basis
     (:meth:`LocalModels.enriched`: the model then interpolates there too), at most
     :data:`ENRICHMENTS` times; then on the full model, as is one whose projected model gives no
-    finite frequency, is singular, or cannot be enriched. ``windows[i]``: the grid responses
-    (indices into ``responses``) of task i's first basis; the checked solutions are appended to
-    ``responses`` by ``evaluate(ω, tasks, responses)``.
+    finite frequency, is singular, or cannot be enriched. ``local_models(windows, tasks)``
+    makes the first models, ``windows[i]`` the grid responses of task i's first basis;
+    ``evaluate(ω, tasks, keep)`` solves the full model at each task's ω and appends the
+    response of the task's loop (n_free,) to ``keep``.
 
     ``settle(tasks, ω, L, dL/d ln ω, d²L/d ln ω², accepted)``, when given, is called after each
     round's checks with every checked task, its frequency, the full model's L there, the
@@ -322,10 +321,10 @@ def projected_refinements(
         at = np.array([np.exp(x) if tasks[i].kind == "peak" else x for i, (x, _) in zip(active, found)])
         finite = np.isfinite(at) & (at >= 0)  # a projected model gone astray is refined on full solves
         fallback += [int(i) for i in active[~finite]]
-        first = len(responses)
+        checked: list[np.ndarray] = []
         full = np.full(at.size, np.nan, dtype=complex)
-        full[finite] = evaluate(at[finite], active[finite], responses)
-        slot = first + np.cumsum(finite) - 1  # where each checked solution was appended
+        full[finite] = evaluate(at[finite], active[finite], checked)
+        slot = np.cumsum(finite) - 1  # where each checked solution was appended
         passed = np.zeros(at.size, dtype=bool)
         for n, (i, (_, value), exact) in enumerate(zip(active, found, full)):
             if finite[n]:
@@ -348,7 +347,7 @@ def projected_refinements(
                 results[i] = (x, abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact)
             else:
                 retry.append(n)
-        new = [responses[slot[n]][:, loop_of[active[n]]] for n in retry]
+        new = [checked[slot[n]] for n in retry]
         active = active[retry]
         if active.size and round_ < ENRICHMENTS:  # the model enriched with the full solution there
             columns = np.column_stack(new)
