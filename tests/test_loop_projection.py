@@ -148,8 +148,9 @@ def test_projected_refinement_matches_full_solves_at_every_step(make):
 
 
 def test_a_failed_check_falls_back_to_full_solves(monkeypatch):
-    """LOCAL_TOLERANCE = 0 and no enrichment: every projected result is rejected and refined
-    again with full solves, the same steps as ``projected=False``: identical margins."""
+    """LOCAL_TOLERANCE = 0 and no enrichment: every projected result is rejected and, unless
+    the release rule shows that it cannot set a margin, refined again with full solves, the
+    same steps as ``projected=False``: identical margins."""
     monkeypatch.setattr(lp, "LOCAL_TOLERANCE", 0.0)
     monkeypatch.setattr(lp, "ENRICHMENTS", 0)
     model = _tuned_model()
