@@ -90,8 +90,8 @@ class LocalModels:
     responses : sequence of ndarray
         Full solutions ``Z(ω_j)⁻¹ Bₐ`` (n_free, n_loops) at the grid points.
     windows : sequence of sequences of int
-        Each interval's indices into ``responses`` (:func:`window_of`, and solutions added
-        since); all of one length.
+        Each interval's indices into ``responses`` (:func:`window_of`); all of one length.
+        :meth:`enriched` adds a response to a basis.
     loops : sequence of int
         The loop (column of ``rhs``, row of ``sense``) each interval refines: its basis holds
         that loop's responses only.
@@ -114,13 +114,53 @@ class LocalModels:
     ):
         self.solver, self.speed, self.gains = solver, float(speed), gains
         self.loops = np.asarray(loops, dtype=np.intp)
+        self._rhs, self._sense = rhs, sense
         stacked = np.stack(
             [np.column_stack([responses[j][:, k] for j in window]) for window, k in zip(windows, self.loops)]
         )
         bases, _ = np.linalg.qr(stacked)  # (m, n_free, r), orthonormal columns
-        self.terms = solver.project(bases)  # (m, n_terms, r, r)
-        self.inputs = np.einsum("mnr,nm->mr", bases.conj(), rhs[:, self.loops])  # Vᴴ a
-        self.outputs = np.einsum("mn,mnr->mr", sense[self.loops], bases)  # sᵀ V
+        self._set(bases, solver.project(bases))  # (m, n_terms, r, r)
+
+    def _set(self, bases: np.ndarray, terms: np.ndarray) -> None:
+        self.bases, self.terms = bases, terms
+        a = self._rhs[:, self.loops].T.conj()[:, None, :]  # (m, 1, n_free)
+        self.inputs = (a @ bases)[:, 0, :].conj()  # Vᴴ a
+        self.outputs = (self._sense[self.loops][:, None, :] @ bases)[:, 0, :]  # sᵀ V
+
+    def enriched(self, intervals: np.ndarray, columns: np.ndarray) -> LocalModels:
+        """The models of ``intervals`` with one more basis vector each: ``columns`` (n_free,
+        len(intervals)) the full responses of each interval's loop at a new frequency. The
+        column is orthogonalised against the basis (classical Gram-Schmidt, twice) and only its
+        row and column of the projected terms are computed (``[V q]ᴴ T_k q`` and ``qᴴ T_k V``).
+
+        Raises
+        ------
+        numpy.linalg.LinAlgError
+            When a column lies in its basis's span to working precision (it cannot enrich it).
+        """
+        intervals = np.asarray(intervals, dtype=np.intp)
+        Q = self.bases[intervals]  # (m, n_free, r)
+        q = np.asarray(columns, dtype=complex).T[:, :, None].copy()  # (m, n_free, 1)
+        size = np.linalg.norm(q[:, :, 0], axis=1)
+        for _ in range(2):
+            q -= Q @ (q.conj().transpose(0, 2, 1) @ Q).conj().transpose(0, 2, 1)  # Q Qᴴ q
+        norm = np.linalg.norm(q[:, :, 0], axis=1)
+        if not np.all(norm > 1e-13 * size):
+            raise np.linalg.LinAlgError("a new response lies in its projected model's basis")
+        q /= norm[:, None, None]
+        r = Q.shape[2]
+        basis = np.concatenate([Q, q], axis=2)
+        column = self.solver.project_pairs(basis, q)  # [V q]ᴴ T_k q: (m, n_terms, r + 1, 1)
+        row = self.solver.project_pairs(q, Q)  # qᴴ T_k V: (m, n_terms, 1, r)
+        terms = np.empty((Q.shape[0], column.shape[1], r + 1, r + 1), dtype=complex)
+        terms[:, :, :r, :r] = self.terms[intervals]
+        terms[:, :, :, r] = column[..., 0]
+        terms[:, :, r, :r] = row[:, :, 0]
+        out = object.__new__(LocalModels)
+        out.solver, out.speed, out.gains = self.solver, self.speed, self.gains
+        out.loops, out._rhs, out._sense = self.loops[intervals], self._rhs, self._sense
+        out._set(basis, terms)
+        return out
 
     def closed(self, omegas: np.ndarray, intervals: np.ndarray) -> np.ndarray:
         """T = G P_c of the loop of interval ``intervals[i]`` at ``omegas[i]`` [rad/s] on that
@@ -218,12 +258,14 @@ def lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.nda
 class RefinementTask:
     """One refinement of :func:`_refinements`: a ``"peak"`` (its result (ln ω, |S|)) or a
     ``"root"`` (its result (ω, L)) between grid points ``lo`` and ``hi``; ``start()`` makes
-    its steps."""
+    its steps; ``role`` says what a root is of (``"gain"``: |L| = 1, ``"phase"``: Im L = 0),
+    for the caller's release rule (:func:`projected_refinements`)."""
 
     kind: str
     lo: int
     hi: int
     start: Callable[[], Refinement]
+    role: str = ""
 
 
 def _on_local(local: LocalModels, omegas: np.ndarray, intervals: np.ndarray) -> np.ndarray:
@@ -232,53 +274,92 @@ def _on_local(local: LocalModels, omegas: np.ndarray, intervals: np.ndarray) -> 
     return T / (1.0 - T)
 
 
+#: Step in ln ω of the central differences that give the derivatives d L/d ln ω and
+#: d²L/d ln ω² of a projected model at a refined frequency (the release rule's): the model is a
+#: smooth rational function of ω; the round-off of the second difference, 4e-16/h² = 4e-6
+#: of |L|, is far below what the rule reads (it needs the derivatives to a few per cent).
+SLOPE_STEP = 1e-5
+
+
 def projected_refinements(
     tasks: Sequence[RefinementTask],
-    loop_of: np.ndarray,
     evaluate: Callable[..., np.ndarray],
     local_models: Callable[[Sequence[Sequence[int]], np.ndarray], LocalModels],
-    windows: list[list[int]],
-    responses: list[np.ndarray],
+    windows: Sequence[Sequence[int]],
+    settle: Callable[..., np.ndarray] | None = None,
 ) -> list:
     """The refinements on the projected models of their intervals, each checked by one full
     solve at its result (:mod:`flexshaft.analyses.local_projection`): the full model's value is
     returned. A refinement whose projected value differs from it by more than
-    :data:`LOCAL_TOLERANCE` is run again with that solution added to its basis (the model then
-    interpolates there too), at most :data:`ENRICHMENTS` times; then on the full model."""
+    :data:`LOCAL_TOLERANCE` is run again with that solution added to its basis
+    (:meth:`LocalModels.enriched`: the model then interpolates there too), at most
+    :data:`ENRICHMENTS` times; then on the full model, as is one whose projected model gives no
+    finite frequency, is singular, or cannot be enriched. ``local_models(windows, tasks)``
+    makes the first models, ``windows[i]`` the grid responses of task i's first basis;
+    ``evaluate(ω, tasks, keep)`` solves the full model at each task's ω and appends the
+    response of the task's loop (n_free,) to ``keep``.
+
+    ``settle(tasks, ω, L, dL/d ln ω, d²L/d ln ω², accepted)``, when given, is called after each
+    round's checks with every checked task, its frequency, the full model's L there, the
+    projected model's first two derivatives there and whether the check passed; it returns which tasks that failed may
+    keep that result instead of being refined further (the caller's rule: a crossover that
+    cannot set a margin, :mod:`flexshaft.analyses.bearing_loops`)."""
     results: list = [None] * len(tasks)
-    active = list(range(len(tasks)))
-    for _ in range(ENRICHMENTS + 1):
-        if not active:
-            return results
-        which = np.array(active)
+    active = np.arange(len(tasks))
+    fallback: list[int] = []  # refined on the full model at the end
+    local = None
+    for round_ in range(ENRICHMENTS + 1):
+        if not active.size:
+            break
         try:
             with np.errstate(all="ignore"):
-                local = local_models([windows[i] for i in active], which)
+                if local is None:
+                    local = local_models([windows[i] for i in active], active)
                 found = lockstep([tasks[i].start() for i in active], functools.partial(_on_local, local))
         except np.linalg.LinAlgError:  # a singular projected model: refine these on the full one
             break
         at = np.array([np.exp(x) if tasks[i].kind == "peak" else x for i, (x, _) in zip(active, found)])
-        finite = np.isfinite(at) & (at >= 0)  # a projected model gone astray is refined again
-        first = len(responses)
+        finite = np.isfinite(at) & (at >= 0)  # a projected model gone astray is refined on full solves
+        fallback += [int(i) for i in active[~finite]]
+        checked: list[np.ndarray] = []
         full = np.full(at.size, np.nan, dtype=complex)
-        full[finite] = evaluate(at[finite], which[finite], responses)
-        slot = first + np.cumsum(finite) - 1  # where each checked solution was appended
-        retry = []
-        for n, (i, (x, value), exact) in enumerate(zip(active, found, full)):
-            if tasks[i].kind == "peak":
-                exact = abs(1.0 / (1.0 + exact))
-            if finite[n] and abs(value - exact) <= LOCAL_TOLERANCE * abs(exact):
-                results[i] = (x, exact)
-                continue
+        full[finite] = evaluate(at[finite], active[finite], checked)
+        slot = np.cumsum(finite) - 1  # where each checked solution was appended
+        passed = np.zeros(at.size, dtype=bool)
+        for n, (i, (_, value), exact) in enumerate(zip(active, found, full)):
             if finite[n]:
-                windows[i].append(int(slot[n]))
-            retry.append(i)
-        active = retry
-        if len({len(windows[i]) for i in active}) > 1:  # enriched unevenly: one model size each round
-            break
-    if active:
-        which = np.array(active)
-        redone = lockstep([tasks[i].start() for i in active], lambda omegas, k: evaluate(omegas, which[k]))
-        for i, result in zip(active, redone):
+                exact = abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact
+                passed[n] = abs(value - exact) <= LOCAL_TOLERANCE * abs(exact)
+        released = np.zeros(at.size, dtype=bool)
+        if settle is not None and finite.any():
+            where = np.flatnonzero(finite)
+            h = SLOPE_STEP
+            shifted = np.concatenate([at[where] * np.exp(h), at[where], at[where] * np.exp(-h)])
+            with np.errstate(all="ignore"):
+                up, mid, down = np.split(_on_local(local, shifted, np.tile(where, 3)), 3)
+            slope, curvature = (up - down) / (2.0 * h), (up - 2.0 * mid + down) / (h * h)
+            released[where] = settle(active[where], at[where], full[where], slope, curvature, passed[where])
+        retry = []
+        for n, (i, (x, _), exact) in enumerate(zip(active, found, full)):
+            if not finite[n]:
+                continue
+            if passed[n] or released[n]:
+                results[i] = (x, abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact)
+            else:
+                retry.append(n)
+        new = [checked[slot[n]] for n in retry]
+        active = active[retry]
+        if active.size and round_ < ENRICHMENTS:  # the model enriched with the full solution there
+            columns = np.column_stack(new)
+            try:
+                with np.errstate(all="ignore"):
+                    local = local.enriched(np.array(retry, dtype=np.intp), columns)
+            except np.linalg.LinAlgError:
+                break
+    fallback += [int(i) for i in active]
+    if fallback:
+        which = np.array(fallback)
+        redone = lockstep([tasks[i].start() for i in fallback], lambda omegas, k: evaluate(omegas, which[k]))
+        for i, result in zip(fallback, redone):
             results[i] = result
     return results
