@@ -191,7 +191,7 @@ def _edit_wall(path: Path, wall: float) -> None:
     path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
 
 
-@pytest.mark.slow  # two full `flexshaft run`s of the baseline at its three envelope points, one with the studies: ~20 s CPU
+@pytest.mark.slow  # two full `flexshaft run`s of the baseline (three envelope points), one with the studies: ~20 s
 def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None:
     """Issue 28's bar (tests/test_rerun.py): from a fresh folder, the README's quick start
     (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture),
