@@ -446,7 +446,8 @@ def _natural_frequencies(model: Model, low: float, high: float) -> np.ndarray:
 
     K = (model.K + model.Kp)[free][:, free].toarray()
     M = model.M[free][:, free].toarray()
-    w2 = la.eigh(K, M, eigvals_only=True, subset_by_value=(low * low, high * high), driver="gvx")
+    # scipy-stubs types the eigvals_only overloads without the generalized drivers, which scipy accepts
+    w2 = la.eigh(K, M, eigvals_only=True, subset_by_value=(low * low, high * high), driver="gvx")  # type: ignore[call-overload]
     return np.sqrt(np.clip(w2, 0.0, None))
 
 

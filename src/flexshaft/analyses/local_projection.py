@@ -314,11 +314,11 @@ def projected_refinements(
         try:
             with np.errstate(all="ignore"):
                 if local is None:
-                    local = local_models([windows[i] for i in active], active)
-                found = lockstep([tasks[i].start() for i in active], functools.partial(_on_local, local))
+                    local = local_models([windows[int(i)] for i in active], active)
+                found = lockstep([tasks[int(i)].start() for i in active], functools.partial(_on_local, local))
         except np.linalg.LinAlgError:  # a singular projected model: refine these on the full one
             break
-        at = np.array([np.exp(x) if tasks[i].kind == "peak" else x for i, (x, _) in zip(active, found)])
+        at = np.array([np.exp(x) if tasks[int(i)].kind == "peak" else x for i, (x, _) in zip(active, found)])
         finite = np.isfinite(at) & (at >= 0)  # a projected model gone astray is refined on full solves
         fallback += [int(i) for i in active[~finite]]
         checked: list[np.ndarray] = []
@@ -328,7 +328,7 @@ def projected_refinements(
         passed = np.zeros(at.size, dtype=bool)
         for n, (i, (_, value), exact) in enumerate(zip(active, found, full)):
             if finite[n]:
-                exact = abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact
+                exact = abs(1.0 / (1.0 + exact)) if tasks[int(i)].kind == "peak" else exact
                 passed[n] = abs(value - exact) <= LOCAL_TOLERANCE * abs(exact)
         released = np.zeros(at.size, dtype=bool)
         if settle is not None and finite.any():
@@ -344,7 +344,7 @@ def projected_refinements(
             if not finite[n]:
                 continue
             if passed[n] or released[n]:
-                results[i] = (x, abs(1.0 / (1.0 + exact)) if tasks[i].kind == "peak" else exact)
+                results[int(i)] = (x, abs(1.0 / (1.0 + exact)) if tasks[int(i)].kind == "peak" else exact)
             else:
                 retry.append(n)
         new = [checked[slot[n]] for n in retry]
@@ -360,6 +360,6 @@ def projected_refinements(
     if fallback:
         which = np.array(fallback)
         redone = lockstep([tasks[i].start() for i in fallback], lambda omegas, k: evaluate(omegas, which[k]))
-        for i, result in zip(fallback, redone):
-            results[i] = result
+        for j, result in zip(fallback, redone):
+            results[j] = result
     return results
