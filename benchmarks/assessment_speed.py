@@ -110,13 +110,7 @@ def main() -> None:
     parser.add_argument("--blas-threads", type=int, default=1)
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
-    trees = {"this checkout": HERE.parent}
-    if args.reference:
-        trees["reference"] = args.reference.resolve()
-    runs: dict[str, list[dict]] = {name: [] for name in trees}
-    for _ in range(args.rounds):
-        for name, path in trees.items():
-            runs[name].append(bu.run_in_tree(path, JOB, args.repeats, int(args.report)))
+    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, int(args.report))
     info = bu.machine_info()
     print(f"assessment speed, tuned design, {info.get('date', '')} commit {info.get('git_commit', '?')}")
     load = info.get("load_average_1_5_15")

@@ -101,6 +101,20 @@ def run_in_tree(source, job: str, *args) -> dict:
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
+def paired_runs(checkout, reference, rounds: int, job: str, *args) -> tuple[dict, dict]:
+    """``(trees, runs)``: this checkout and, when given, the ``reference`` source tree by name,
+    and the results of :func:`run_in_tree` of ``job`` in each, the trees alternating ``rounds``
+    times (so a change of the machine's load falls on both)."""
+    trees = {"this checkout": checkout}
+    if reference:
+        trees["reference"] = reference.resolve()
+    runs: dict[str, list[dict]] = {name: [] for name in trees}
+    for _ in range(rounds):
+        for name, path in trees.items():
+            runs[name].append(run_in_tree(path, job, *args))
+    return trees, runs
+
+
 def reexec_with_threads(threads: int, script: str) -> None:
     """Restart ``script`` with the thread variables set, unless they already are.
 

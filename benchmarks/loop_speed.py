@@ -85,13 +85,7 @@ def main() -> None:
     parser.add_argument("--blas-threads", type=int, default=1)
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
-    trees = {"this checkout": HERE.parent}
-    if args.reference:
-        trees["reference"] = args.reference.resolve()
-    runs: dict[str, list[dict]] = {name: [] for name in trees}
-    for _ in range(args.rounds):
-        for name, path in trees.items():
-            runs[name].append(bu.run_in_tree(path, JOB, args.repeats))
+    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
     info = bu.machine_info()
     when = f"{info.get('date', '')} commit {info.get('git_commit', '?')}"
     print(f"bearing loops, tuned design at its operating point, {when}")
