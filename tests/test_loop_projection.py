@@ -70,24 +70,31 @@ def test_window_is_four_grid_points_around_the_interval_inside_the_grid():
     assert list(window_of(0, 2, 3)) == [0, 1, 2]
 
 
+def _loops_of(model):
+    """The four loops of ``model``'s two magnets as the bearing loops set them up: the solver,
+    the actuation columns and sensing rows on the free DOFs, the feedback gains at ω [rad/s]
+    and the operating speed."""
+    solver = solver_for(model)
+    free = solver.free
+    rows = [(a, j) for a in model.actuators for j in range(2)]
+    rhs = np.column_stack([a.lateral_rows[j].toarray().ravel()[free] for a, j in rows]).astype(complex)
+    sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
+
+    def gains(w):
+        return np.array([a.feedback_gain(1j * w) for a, _ in rows])
+
+    return solver, rhs, sense, gains, model.speed
+
+
 def test_projected_model_interpolates_the_full_one_at_its_window():
     """At the four grid points of a window (one of them beside a lightly damped pole) the
     projected closed-loop function equals the full banded solve: the full solution lies in
     the basis, so the Galerkin solution is it. Tolerance 1e-9 relative: the four responses are
     nearly parallel (2 % apart in frequency), so the QR basis and the 4×4 solve lose about
     κ ≈ 1e5 of the 1e-16 working precision."""
-    model = _tuned_model()
-    solver = solver_for(model)
-    free = solver.free
-    rows = [(a, j) for a in model.actuators for j in range(2)]
-    rhs = np.column_stack([a.lateral_rows[j].toarray().ravel()[free] for a, j in rows]).astype(complex)
-    sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
-    speed = model.speed
+    solver, rhs, sense, gains, speed = _loops_of(_tuned_model())
     omegas = 2 * np.pi * np.array([40.0, 40.5, 41.0, 41.5, 300.0, 305.0, 310.0, 316.0])
     X = list(solver.sweep([(w, speed) for w in omegas], rhs))
-
-    def gains(w):
-        return np.array([a.feedback_gain(1j * w) for a, _ in rows])
 
     full = np.stack([np.einsum("ij,ji->i", sense, x) for x in X], axis=1) * gains(omegas)
     windows = [[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 2, 3]]
@@ -104,18 +111,9 @@ def test_an_enriched_model_is_the_model_of_the_enlarged_basis():
     the model built from scratch (QR) on the five responses, and it interpolates the full model
     at the added frequency too. Tolerance 1e-9 relative, as for the interpolation above (nearly
     parallel responses: the small solves lose about κ ≈ 1e5 of the working precision)."""
-    model = _tuned_model()
-    solver = solver_for(model)
-    free = solver.free
-    rows = [(a, j) for a in model.actuators for j in range(2)]
-    rhs = np.column_stack([a.lateral_rows[j].toarray().ravel()[free] for a, j in rows]).astype(complex)
-    sense = np.vstack([a.sensing_rows[j].toarray().ravel()[free] for a, j in rows])
-    speed = model.speed
+    solver, rhs, sense, gains, speed = _loops_of(_tuned_model())
     omegas = 2 * np.pi * np.array([40.0, 40.5, 41.0, 41.5, 40.77, 300.0, 305.0, 310.0, 316.0, 307.3])
     X = list(solver.sweep([(w, speed) for w in omegas], rhs))
-
-    def gains(w):
-        return np.array([a.feedback_gain(1j * w) for a, _ in rows])
 
     loops = np.array([0, 3])
     local = LocalModels(solver, speed, X, [[0, 1, 2, 3], [5, 6, 7, 8]], loops, rhs, sense, gains)
