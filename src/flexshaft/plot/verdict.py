@@ -84,22 +84,8 @@ def margins_figure(
     ax.set_ylim(-0.7, n - 0.3)
     for yi, v, state, text, bound in zip(y, value, states, texts, bounds):
         color = STATUS_COLORS[state]
-        if v == np.inf and state == "pass":  # passed with nothing to measure (no phase crossover)
-            ax.barh(yi, hi, color=color, height=0.6, alpha=0.9)
-            ax.plot([hi], [yi], ">", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
-            ax.annotate(
-                "∞: no finite margin" + (f"  ({text})" if text else ""),
-                (hi, yi),
-                xytext=(-12, 0),
-                textcoords="offset points",
-                ha="right",
-                va="center",
-                fontsize=8,
-                color="white",
-                fontweight="bold",
-            )
-            continue
-        if not np.isfinite(v):
+        unbounded = v == np.inf and state == "pass"  # passed with nothing to measure (no phase crossover)
+        if not np.isfinite(v) and not unbounded:
             ax.barh(yi, 0.02 * span, left=-0.01 * span, color=color, height=0.6, hatch="///", edgecolor="0.5")
             ax.annotate(
                 "not evaluated",
@@ -115,7 +101,9 @@ def margins_figure(
         ax.barh(yi, shown, color=color, height=0.6, alpha=0.9)
         if shown != v:
             ax.plot([shown], [yi], ">" if v > 0 else "<", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
-        label = ("≥ " if bound else "") + f"{v:+.0%}" + (f"  ({text})" if text else "")
+        label = ("∞: no finite margin" if unbounded else ("≥ " if bound else "") + f"{v:+.0%}") + (
+            f"  ({text})" if text else ""
+        )
         if v < 0:  # failed: the text on the empty positive side, clear of the names
             ax.annotate(
                 label,
