@@ -250,7 +250,6 @@ class BandedHarmonicSolver:
         # (nnz, n_terms) × (n_terms, 2) product written straight into complex memory, reading
         # half the bytes of a complex stack.
         self._real_stack = None
-        self._terms_csr: list | None = None  # the terms' own sparse matrices (_term_matrices)
         if not np.any(self._stack.imag):
             self._real_stack = np.ascontiguousarray(self._stack.real.T)  # (nnz, n_terms)
 
@@ -306,27 +305,33 @@ class BandedHarmonicSolver:
             k = R.shape[0]
             W = np.ascontiguousarray(R[:, self.perm, :].transpose(1, 0, 2)).reshape(n, k * b)
             Uh = U[:, self.perm, :].conj().transpose(0, 2, 1)  # (k, a, n)
-            for j, T in enumerate(self._term_matrices()):
+            for j, T in enumerate(self._own_terms):
                 # a complex array's memory is its (real, imaginary) pairs: (n, 2 k b) reals
                 TW = (T @ W.view(np.float64)).view(complex) if real else T @ W
                 out[first : first + k, j] = Uh @ TW.reshape(n, k, b).transpose(1, 0, 2)
         return out
 
-    def _term_matrices(self) -> list[sp.csr_matrix]:
-        """Each non-zero term as a CSR matrix of its own entries (the shared pattern holds the
-        union of all terms: an actuator's term has a dozen of its thousands), real when every
-        term is (permuted ordering); made at the first call."""
-        if self._terms_csr is not None:
-            return self._terms_csr
+    def _own_entries(self) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        """``(values, rows, cols)`` of each non-zero term on its own entries, in the solver's
+        (permuted) ordering: the shared pattern holds the union of all terms (an actuator's term
+        has a dozen of its thousands). Real values when every term is real."""
         real = self._real_stack is not None
         out = []
         for j in range(self._used.size):
             values = self._stack[j].real if real else self._stack[j]
             keep = values != 0
-            T = sp.csr_matrix((values[keep], (self._rows[keep], self._cols[keep])), shape=(self.n, self.n))
+            out.append((values[keep], self._rows[keep], self._cols[keep]))
+        return out
+
+    @functools.cached_property
+    def _own_terms(self) -> list[sp.csr_matrix]:
+        """Each non-zero term as a CSR matrix of its own entries (:meth:`_own_entries`, permuted
+        ordering), made at the first use."""
+        out = []
+        for values, rows, cols in self._own_entries():
+            T = sp.csr_matrix((values, (rows, cols)), shape=(self.n, self.n))
             T.sort_indices()
             out.append(T)
-        self._terms_csr = out
         return out
 
     def project(self, bases: np.ndarray) -> np.ndarray:
@@ -345,10 +350,14 @@ class BandedHarmonicSolver:
 
     @functools.cached_property
     def term_stack(self) -> sp.csr_matrix:
-        """Every non-zero term of Z on its own, stacked (n_terms n_free, n_free) in the order of
-        :attr:`term_names` and the free-DOF ordering; real when every term is (built once)."""
-        stack = self.term_matrix(np.eye(self._used.size))
-        return stack.real.tocsr() if not np.any(stack.data.imag) else stack
+        """Every non-zero term of Z on its own entries (:meth:`_own_entries`), stacked (n_terms
+        n_free, n_free) in the order of :attr:`term_names` and the free-DOF ordering; real when
+        every term is (built once)."""
+        parts = self._own_entries()
+        rows = np.concatenate([self.perm[r] + j * self.n for j, (_, r, _) in enumerate(parts)])
+        cols = np.concatenate([self.perm[c] for _, _, c in parts])
+        values = np.concatenate([v for v, _, _ in parts])
+        return sp.csr_matrix((values, (rows, cols)), shape=(len(parts) * self.n, self.n))
 
     def term_matrix(self, weights) -> sp.csr_matrix:
         """``Σ_k w_k T_k`` over the non-zero terms T_k of Z, in the free-DOF ordering (CSR), for
