@@ -198,17 +198,19 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
     my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
     folder (the fixture's is shared), as a user would (subprocesses, the whole design with its
-    envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
-    has it (with the thesis studies), so the rerun after the edit meets a folder holding the
-    studies' files as a user's does; the rerun skips them (``--studies none``, CPU budget,
-    issue 23: about 9 s of CPU): what it checks is the output folder's ownership (its marker:
-    the command, the design's source and fingerprint, whether it is complete).
+    envelope at the report's resolution). Both runs of ``my.toml`` skip the thesis studies
+    (``--studies none``; CPU budget, issue 23: about 7 s of CPU each with them): what this test
+    checks is the output folder's ownership (its marker: the command, the design's source and
+    fingerprint, whether it is complete), which does not depend on them. The quick start above
+    runs them, and a rerun after an edit that replaces a subfolder the first run wrote (the
+    studies' ``studies/`` here, a study's ``chunks/`` there) is
+    tests/test_rerun.py's ``test_an_edited_design_replaces_its_own_results``.
     It is also tests/test_rerun.py's rerun of ``run`` after an edit (the edited wall's mass)."""
     shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
     with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
         assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml")
+    first = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
     assert first.returncode == 0, first.stderr
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
