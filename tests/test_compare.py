@@ -174,3 +174,25 @@ def test_cli_compare_writes_the_report(comparison, tmp_path, monkeypatch):
     assert calls == [(embedded_design("tuned").name, embedded_design("current").name, ("tuned", "current"))]
     assert (out / "report.html").is_file()
     assert "parts: total" in result.output and "current: PASS" in result.output
+
+
+def test_an_assessment_goes_in_as_it_is(comparison, monkeypatch):
+    """A design already assessed at the comparison's resolution is taken as it is (the tutorial
+    compares its assessment ``a`` with the baseline): nothing is assessed again, and the pair
+    holds the same assessments, inventories and temperatures as the comparison of the two
+    designs. An assessment at another resolution is refused before anything is computed, naming
+    the argument and both resolutions."""
+    import flexshaft.comparison as module
+    from flexshaft.resolution import REPORT, SCREENING
+
+    def no_assessment(*args, **kwargs):
+        raise AssertionError("assess() must not be called for an assessment")
+
+    monkeypatch.setattr(module, "assess", no_assessment)
+    tuned, current = comparison.runs
+    pair = module.compare(tuned, current, labels=comparison.labels, resolution=REPORT)
+    assert pair.runs[0] is tuned and pair.runs[1] is current
+    assert pair.inventories == comparison.inventories
+    assert pair.boom_temperatures == comparison.boom_temperatures
+    with pytest.raises(ValueError, match=r"design_b: an assessment at the report resolution .* at the screening"):
+        module.compare("tuned", current, resolution=SCREENING)

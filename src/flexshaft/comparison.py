@@ -1,7 +1,8 @@
 """Two drivelines side by side: the thesis's comparison (``flexshaft compare``).
 
 :func:`compare` assesses two designs at their operating points
-(:func:`flexshaft.verdict.assess.assess` at the report's resolution) and collects what a
+(:func:`flexshaft.verdict.assess.assess` at the report's resolution; a design already assessed
+is taken as it is) and collects what a
 designer weighs: mass and part count by kind (:func:`driveline_inventory`), every requirement
 of both verdicts with value, limit and margin, the lateral critical speeds with their API 684
 separation margins, whirl onset and the smallest log decrement, the spin-up peak, the strength
@@ -397,11 +398,26 @@ def _boom_temperatures(design: Design, run: Assessment) -> dict[str, float]:
 
 
 def _design(value) -> Design:
+    if isinstance(value, Assessment):
+        return value.design
     if isinstance(value, Design):
         return value
     if isinstance(value, str):
         return embedded_design(value)
-    raise TypeError(f"design: expected a Design or the name of an embedded design, got {type(value).__name__}")
+    raise TypeError(
+        f"design: expected a Design, an Assessment or the name of an embedded design, got {type(value).__name__}"
+    )
+
+
+def _check_resolution(value, resolution: Resolution, which: str) -> None:
+    """An Assessment given to :func:`compare` must be at the comparison's resolution (the two
+    columns are judged at the same grids)."""
+    if isinstance(value, Assessment) and value.resolution != resolution:
+        raise ValueError(
+            f"{which}: an assessment at the {value.resolution.name} resolution cannot be compared at the "
+            f"{resolution.name} resolution (assess it at {resolution.name}, or pass "
+            f"resolution=<its resolution> to compare)"
+        )
 
 
 def compare(
@@ -416,9 +432,11 @@ def compare(
 
     Parameters
     ----------
-    design_a, design_b : Design or str
-        Designs, or names of embedded designs (default: the tuned FMC design and the current
-        segmented aluminium driveline: the thesis's comparison).
+    design_a, design_b : Design, Assessment or str
+        Designs, names of embedded designs (default: the tuned FMC design and the current
+        segmented aluminium driveline: the thesis's comparison), or designs already assessed
+        at ``resolution`` (:func:`flexshaft.verdict.assess.assess`: used as they are, not
+        assessed again).
     labels : tuple of str, optional
         Column headings; default the embedded names, else "A" and "B".
     resolution : Resolution
@@ -431,6 +449,8 @@ def compare(
     Comparison
     """
     designs = (_design(design_a), _design(design_b))
+    for value, which in ((design_a, "design_a"), (design_b, "design_b")):
+        _check_resolution(value, resolution, which)
     if labels is None:
         labels = (design_a if isinstance(design_a, str) else "A", design_b if isinstance(design_b, str) else "B")
     if len(labels) != 2 or labels[0] == labels[1]:
@@ -440,7 +460,10 @@ def compare(
     def labelled(label: str) -> Callable[[str], None]:
         return lambda s: step(f"{label}: {s}")
 
-    runs = [assess(design, resolution, progress=labelled(label)) for label, design in zip(labels, designs)]
+    runs = [
+        value if isinstance(value, Assessment) else assess(design, resolution, progress=labelled(label))
+        for label, value, design in zip(labels, (design_a, design_b), designs)
+    ]
     return Comparison(
         labels=(str(labels[0]), str(labels[1])),
         runs=_pair(runs),
