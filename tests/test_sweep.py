@@ -1,8 +1,10 @@
 """Sweep engine: grid, validation, netCDF output, parallel runs and resume after a real kill.
 
 The kill test runs a sweep of cheap points (each sleeps 40 ms and leaves a marker file) in a
-subprocess, SIGKILLs it once a few chunks are on disk, resumes it, and checks that no point of a
-stored chunk was evaluated twice and that the final netCDF equals an uninterrupted run's.
+subprocess, SIGKILLs (or SIGTERMs) it once a few chunks are on disk, resumes it, and checks that
+no point of a stored chunk was evaluated twice and that the final netCDF equals an uninterrupted
+run's. The uninterrupted run and the resume without a pool run the script's study in this
+process (CPU budget, issue 23: each new process imports the engine again, about 1 s of CPU).
 """
 
 from __future__ import annotations
@@ -108,7 +110,7 @@ def test_undeclared_outputs_and_foreign_run_folder(tmp_path):
         run_sweep(other, tmp_path, progress=False)
 
 
-_SCRIPT = textwrap.dedent(
+_STUDY = textwrap.dedent(
     """
     import os, sys, time, uuid
     from pathlib import Path
@@ -130,6 +132,10 @@ _SCRIPT = textwrap.dedent(
         [Output("response", "1"), Output("kp_out", "N/m")],
         evaluate,
     )
+    """
+)
+_SCRIPT = _STUDY + textwrap.dedent(
+    """
     if __name__ == "__main__":
         run_sweep(study, sys.argv[1], jobs=int(sys.argv[2]), chunk_size=4, progress=False)
     """
@@ -151,14 +157,26 @@ def _markers_per_point(markers: Path) -> np.ndarray:
     return counts
 
 
+def _run_here(run_dir: Path, markers: Path) -> None:
+    """The script's sweep run to the end in this process (``jobs=1``: no worker needs the
+    script's function), as ``python killable_sweep.py run_dir 1`` runs it: the study is the
+    script's own, defined in a module named ``__main__`` (the study's fingerprint names its
+    function ``__main__.evaluate``, so a run here and one of the script share their chunks)."""
+    markers.mkdir(exist_ok=True)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("SWEEP_MARKERS", str(markers))
+        script = {"__name__": "__main__"}
+        exec(compile(_STUDY, "killable_sweep.py", "exec"), script)
+    run_sweep(script["study"], run_dir, jobs=1, chunk_size=4, progress=False)
+
+
 @pytest.fixture(scope="module")
 def uninterrupted_sweep(tmp_path_factory) -> Path:
-    """results.nc of the killable sweep run to the end, once for both kill tests: a sweep's
-    file does not depend on its worker count (the run with ``jobs=1`` and ``jobs=2`` are
-    identical, attributes included)."""
+    """results.nc of the killable sweep run to the end, once for both kill tests (in this
+    process: :func:`_run_here`): a sweep's file does not depend on its worker count (the run
+    with ``jobs=1`` and ``jobs=2`` are identical, attributes included)."""
     tmp_path = tmp_path_factory.mktemp("uninterrupted")
-    ref = _run_script(tmp_path, tmp_path / "reference", tmp_path / "ref_markers", 1)
-    assert ref.wait(timeout=60) == 0
+    _run_here(tmp_path / "reference", tmp_path / "ref_markers")
     return tmp_path / "reference" / "results.nc"
 
 
@@ -179,9 +197,15 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs, uninterru
     assert proc.returncode != 0, f"the sweep ended normally before the signal (chunks {stored})"
     assert 3 <= len(stored) < 12 and not (run_dir / "results.nc").exists(), f"stored chunks {stored}"
     before = _markers_per_point(markers)
-    # resume
-    resumed = _run_script(tmp_path, run_dir, markers, jobs)
-    assert resumed.wait(timeout=60) == 0, "the resumed sweep failed"
+    # resume: on a pool, the script in a new process (the pool pickles the study's function by
+    # its name, __main__.evaluate, which only the script's process holds); without one, in this
+    # process (a new process would hold nothing of the killed one either: the resume reads only
+    # the run folder)
+    if jobs > 1:
+        resumed = _run_script(tmp_path, run_dir, markers, jobs)
+        assert resumed.wait(timeout=60) == 0, "the resumed sweep failed"
+    else:
+        _run_here(run_dir, markers)
     after = _markers_per_point(markers)
     stored_points = np.concatenate([np.arange(4 * k, 4 * k + 4) for k in stored])
     assert np.all(after[stored_points] == 1), "a point of a finished chunk was recomputed"
