@@ -96,8 +96,8 @@ def test_wall_study_first_frequency_follows_eq_3_3():
 
 
 #: A resolution of a few points per grid (CPU budget, issue 23): the report's grids cut down to
-#: the angles the headline and Table 3.3 read (30°, 45°, 55°, 60°, the pair (55°, 0°)) and the
-#: ends of the wall and gain ranges. What the tests below check (the studies' labels, units and
+#: the angles the headline and Table 3.3 read (30°, 45°, 55°, 60°, the pair (55°, 0°)) and a
+#: few walls and gains across the report's ranges. What the tests below check (the studies' labels, units and
 #: dimensions, the headline numbers against the datasets, the pool against this process, the
 #: report section's figures and tables, the saved files) does not depend on the grids' sizes;
 #: the report's own grids run end to end in tests/test_run.py (the quick start's
