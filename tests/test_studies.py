@@ -1,5 +1,6 @@
 """Thesis chapter-3 studies: labelled outputs with units, a closed form (eq. 3.3), and the
-report-resolution ``design_studies`` on a reduced mesh with its report section rendered."""
+``design_studies`` on a reduced mesh and small grids, pooled and in process, with its report
+section rendered."""
 
 from __future__ import annotations
 
@@ -94,41 +95,53 @@ def test_wall_study_first_frequency_follows_eq_3_3():
     np.testing.assert_allclose(f.values, exact, rtol=5e-3)
 
 
+#: A resolution of a few points per grid (CPU budget, issue 23): the report's grids cut down to
+#: the angles the headline and Table 3.3 read (30°, 45°, 55°, 60°, the pair (55°, 0°)) and a
+#: few walls and gains across the report's ranges. What the tests below check (the studies' labels, units and
+#: dimensions, the headline numbers against the datasets, the pool against this process, the
+#: report section's figures and tables, the saved files) does not depend on the grids' sizes;
+#: the report's own grids run end to end in tests/test_run.py (the quick start's
+#: ``flexshaft run``, whose report holds these studies at the report resolution).
+TINY = {
+    "angles": np.array([30.0, 45.0, 55.0, 60.0]),
+    "two_angles": np.array([0.0, 45.0, 55.0]),
+    "walls": np.array([2.0, 3.0, 4.0]) * 1e-3,
+    "kp": np.logspace(5, 8, 4),
+    "map_kp": np.logspace(5, 8, 4),
+    "map_kd": np.concatenate([[0.0], np.logspace(1, 4.5, 3)]),
+    "map_speeds": 40,
+    "forced_speeds": 40,
+    "stab_kp": np.array([3e5, 2e6]),
+    "stab_kd": np.array([0.0, 300.0]),
+    "stab_speeds": 6,
+}
+
+
 @pytest.fixture(scope="module")
-def coarse_studies(coarse):
-    from flexshaft.thesis.design_studies import design_studies
+def tiny_studies(coarse):
+    """``design_studies`` of the coarse design in this process at :data:`TINY` (the report's
+    grids otherwise), set as a resolution of its own, ``"tiny"``, for the module's tests (a
+    pool's workers fork with it), and the progress labels it reported. Computed once: the pool
+    test compares its pooled run with it, the section test draws it."""
+    from flexshaft.thesis.design_studies import STUDY_GRIDS, design_studies
 
-    labels = []
-    # its run time is measured by benchmarks/studies_timing.py, not asserted here
-    return design_studies(coarse, "report", progress=labels.append), labels
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setitem(STUDY_GRIDS, "tiny", {**STUDY_GRIDS["report"], **TINY})
+        labels = []
+        # its run time is measured by benchmarks/studies_timing.py, not asserted here
+        yield design_studies(coarse, "tiny", progress=labels.append), labels
 
 
-def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, monkeypatch):
+def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, tiny_studies):
     """The studies as independent tasks on two forked workers (how `flexshaft run` computes
-    them) give exactly the datasets and headline numbers computed in this process. On grids of a
-    few points each (CPU budget, issue 23: an equivalence of two ways to run the same functions,
-    which does not depend on the grids' sizes; each study is one task either way), set as a
-    resolution of their own before the workers fork."""
+    them) give exactly the datasets and headline numbers computed in this process (the module's
+    ``tiny_studies``). On grids of a few points each (an equivalence of two ways to run the
+    same functions, which does not depend on the grids' sizes; each study is one task either
+    way)."""
     from flexshaft.parallel.pool import worker_pool
-    from flexshaft.thesis.design_studies import _DATASETS, STUDY_GRIDS, design_studies, headline
+    from flexshaft.thesis.design_studies import _DATASETS, design_studies, headline
 
-    report = STUDY_GRIDS["report"]
-    tiny = {
-        **report,
-        "angles": np.array([30.0, 45.0, 55.0, 60.0]),
-        "two_angles": np.array([0.0, 45.0, 55.0]),
-        "walls": np.array([2.0, 3.0, 4.0]) * 1e-3,
-        "kp": np.logspace(5, 8, 4),
-        "map_kp": np.logspace(5, 8, 4),
-        "map_kd": np.concatenate([[0.0], np.logspace(1, 4.5, 3)]),
-        "map_speeds": 40,
-        "forced_speeds": 40,
-        "stab_kp": report["stab_kp"][:2],
-        "stab_kd": report["stab_kd"][:2],
-        "stab_speeds": 6,
-    }
-    monkeypatch.setitem(STUDY_GRIDS, "tiny", tiny)
-    serial = design_studies(coarse, "tiny")
+    serial, _ = tiny_studies
     with worker_pool(2, ("xarray",)) as pool:
         if pool is None:
             pytest.skip("no fork on this platform")
@@ -144,13 +157,16 @@ def test_design_studies_on_a_worker_pool_equal_those_in_process(coarse, monkeypa
     assert set(pooled.timings) == set(serial.timings)
 
 
-@pytest.mark.slow(reason="computes the module's report-level design studies (about 3.5 s of CPU) and renders them")
-def test_design_studies_report_level_renders(coarse_studies, tmp_path):
+def test_design_studies_render_as_the_report_section(tiny_studies, tmp_path):
+    """The studies' labelled datasets and headline numbers; the report's "Design studies"
+    section drawn from them (its 12 figures as PNG and SVG, Table 3.3) on a page; the data
+    files written and read back. The module's ``tiny_studies``: the section draws whatever grid
+    it is given (the report resolution's section: tests/test_run.py's quick start)."""
     from flexshaft.report.html import render_report
     from flexshaft.report.studies_section import design_studies_section
     from flexshaft.thesis.design_studies import headline, save_study_data
 
-    res, labels = coarse_studies
+    res, labels = tiny_studies
     assert labels and labels[0].startswith("study 1")
     # labelled datasets with units
     assert res.ply_angle["safety_factor"].attrs["units"] == "1"

@@ -1,8 +1,10 @@
 """Sweep engine: grid, validation, netCDF output, parallel runs and resume after a real kill.
 
 The kill test runs a sweep of cheap points (each sleeps 40 ms and leaves a marker file) in a
-subprocess, SIGKILLs it once a few chunks are on disk, resumes it, and checks that no point of a
-stored chunk was evaluated twice and that the final netCDF equals an uninterrupted run's.
+subprocess, SIGKILLs (or SIGTERMs) it once a few chunks are on disk, resumes it, and checks that
+no point of a stored chunk was evaluated twice and that the final netCDF equals an uninterrupted
+run's. The uninterrupted run and the resume run the script's study in this process (CPU budget,
+issue 23: each new process imports the engine and xarray again, about 1 s of CPU).
 """
 
 from __future__ import annotations
@@ -108,17 +110,20 @@ def test_undeclared_outputs_and_foreign_run_folder(tmp_path):
         run_sweep(other, tmp_path, progress=False)
 
 
-_SCRIPT = textwrap.dedent(
+#: The killable sweep's study, a module of its own (:func:`killable`) that both the script and
+#: this process import by one name: the study's fingerprint names its function
+#: ``killable_sweep_study.evaluate``, so a run here and one of the script share their chunks, and
+#: a pool's workers find the function by that name.
+_STUDY = textwrap.dedent(
     """
-    import os, sys, time, uuid
+    import os, time, uuid
     from pathlib import Path
     import numpy as np
-    from flexshaft.sweep import Output, Study, Variable, run_sweep
-
-    MARKERS = Path(os.environ["SWEEP_MARKERS"])
+    from flexshaft.sweep import Output, Study, Variable
 
     def evaluate(point):
-        (MARKERS / f"{point.index:04d}-{uuid.uuid4().hex}").touch()   # one marker per evaluation
+        markers = Path(os.environ["SWEEP_MARKERS"])
+        (markers / f"{point.index:04d}-{uuid.uuid4().hex}").touch()   # one marker per evaluation
         time.sleep(0.04)
         kp = point.design.bearings[1].kp
         return {"response": np.sin(kp * 1e-6 + point.axes["speed"]), "kp_out": kp}
@@ -130,18 +135,41 @@ _SCRIPT = textwrap.dedent(
         [Output("response", "1"), Output("kp_out", "N/m")],
         evaluate,
     )
+    """
+)
+_SCRIPT = textwrap.dedent(
+    """
+    import sys
+    from flexshaft.sweep import run_sweep
+    from killable_sweep_study import study  # beside this script: its folder is sys.path[0]
+
     if __name__ == "__main__":
         run_sweep(study, sys.argv[1], jobs=int(sys.argv[2]), chunk_size=4, progress=False)
     """
 )
 
 
-def _run_script(tmp_path: Path, run_dir: Path, markers: Path, jobs: int = 1):
-    script = tmp_path / "killable_sweep.py"
-    script.write_text(_SCRIPT)
+@pytest.fixture(scope="module")
+def killable(tmp_path_factory):
+    """(folder, study): the folder holding the study's module and the script that runs it, and
+    the study as this process imports it from there."""
+    folder = tmp_path_factory.mktemp("killable")
+    (folder / "killable_sweep_study.py").write_text(_STUDY)
+    (folder / "killable_sweep.py").write_text(_SCRIPT)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.syspath_prepend(str(folder))
+        import killable_sweep_study
+
+        try:
+            yield folder, killable_sweep_study.study
+        finally:
+            sys.modules.pop("killable_sweep_study", None)
+
+
+def _run_script(folder: Path, run_dir: Path, markers: Path, jobs: int = 1):
     markers.mkdir(exist_ok=True)
     env = dict(os.environ, SWEEP_MARKERS=str(markers))
-    return subprocess.Popen([sys.executable, str(script), str(run_dir), str(jobs)], env=env)
+    return subprocess.Popen([sys.executable, str(folder / "killable_sweep.py"), str(run_dir), str(jobs)], env=env)
 
 
 def _markers_per_point(markers: Path) -> np.ndarray:
@@ -151,23 +179,34 @@ def _markers_per_point(markers: Path) -> np.ndarray:
     return counts
 
 
+def _run_here(study, run_dir: Path, markers: Path, jobs: int = 1) -> None:
+    """The script's sweep run to the end in this process, as ``python killable_sweep.py run_dir
+    jobs`` runs it (CPU budget, issue 23: a new process imports the engine and xarray again,
+    about 1 s of CPU; the resume reads only the run folder, and a new process would hold
+    nothing of the killed one either)."""
+    markers.mkdir(exist_ok=True)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("SWEEP_MARKERS", str(markers))  # before the pool's workers start
+        run_sweep(study, run_dir, jobs=jobs, chunk_size=4, progress=False)
+
+
 @pytest.fixture(scope="module")
-def uninterrupted_sweep(tmp_path_factory) -> Path:
-    """results.nc of the killable sweep run to the end, once for both kill tests: a sweep's
-    file does not depend on its worker count (the run with ``jobs=1`` and ``jobs=2`` are
-    identical, attributes included)."""
+def uninterrupted_sweep(tmp_path_factory, killable) -> Path:
+    """results.nc of the killable sweep run to the end, once for both kill tests (in this
+    process): a sweep's file does not depend on its worker count (the run with ``jobs=1`` and
+    ``jobs=2`` are identical, attributes included)."""
     tmp_path = tmp_path_factory.mktemp("uninterrupted")
-    ref = _run_script(tmp_path, tmp_path / "reference", tmp_path / "ref_markers", 1)
-    assert ref.wait(timeout=60) == 0
+    _run_here(killable[1], tmp_path / "reference", tmp_path / "ref_markers")
     return tmp_path / "reference" / "results.nc"
 
 
 @pytest.mark.parametrize("sig, jobs", [(signal.SIGKILL, 1), (signal.SIGTERM, 2)])
-def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs, uninterrupted_sweep):
+def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs, killable, uninterrupted_sweep):
     # interrupted run: kill once at least 3 of the 12 chunks are stored
+    folder, study = killable
     run_dir = tmp_path / "run"
     markers = tmp_path / "markers"
-    proc = _run_script(tmp_path, run_dir, markers, jobs)
+    proc = _run_script(folder, run_dir, markers, jobs)
     deadline = time.monotonic() + 60
     while len(finished_chunks(run_dir)) < 3:
         assert proc.poll() is None, "sweep finished before it could be killed"
@@ -179,9 +218,8 @@ def test_killed_sweep_resumes_without_recomputing(tmp_path, sig, jobs, uninterru
     assert proc.returncode != 0, f"the sweep ended normally before the signal (chunks {stored})"
     assert 3 <= len(stored) < 12 and not (run_dir / "results.nc").exists(), f"stored chunks {stored}"
     before = _markers_per_point(markers)
-    # resume
-    resumed = _run_script(tmp_path, run_dir, markers, jobs)
-    assert resumed.wait(timeout=60) == 0, "the resumed sweep failed"
+    # resume, with as many workers, in this process
+    _run_here(study, run_dir, markers, jobs)
     after = _markers_per_point(markers)
     stored_points = np.concatenate([np.arange(4 * k, 4 * k + 4) for k in stored])
     assert np.all(after[stored_points] == 1), "a point of a finished chunk was recomputed"

@@ -30,8 +30,11 @@ from flexshaft.resolution import REPORT
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.assess import assess
 
-#: The tuned design on a coarse mesh (the figures' wiring does not depend on it; the run is faster).
-SMALL = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
+#: The tuned design on a coarse mesh (the figures' wiring does not depend on it; the run is faster:
+#: 1.6 s of CPU instead of 2.4 s with 18 and 12 elements). Its dense reference still has 17
+#: modes below the Campbell ceiling (18 with 18 and 12 elements), and the actuator checks still
+#: govern at the cold day.
+SMALL = {"mesh.shaft_elements": 8, "mesh.boom_elements": 4}
 
 
 @pytest.fixture(scope="module")
