@@ -233,6 +233,7 @@ def _under_a_file_size_limit(limit: int, args: list[str]) -> dict:
 
     process = context.Process(target=child)
     process.start()
+    send.close()  # the child's end only: a child that dies without an answer ends recv with EOFError
     try:
         assert receive.poll(120), "the command did not end within 120 s"
         return receive.recv()
