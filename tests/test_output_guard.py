@@ -25,8 +25,6 @@ import re
 import resource
 import shutil
 import signal
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -142,7 +140,12 @@ def test_optimize_refuses_a_folder_of_user_files(tmp_path: Path) -> None:
 def test_a_link_planted_in_ones_own_run_folder_is_replaced(small_run: dict, tmp_path: Path) -> None:
     """Was: `flexshaft run b.toml --studies none -o o; ln -sf ~/victim.txt o/results.json;
     flexshaft run b.toml --studies none -o o` overwrote victim.txt (also via report.html). The
-    first run is the session's (a small design at one envelope point), in a copy of its folder."""
+    first run is the session's (a small design at one envelope point), in a copy of its folder.
+
+    The rerun is also tests/test_cli_outputs.py's second run of the same design (one run for
+    both): a folder written for the same design by the same command is updated, results.json
+    byte-identical to the first run's, and the markup in the actuators' names printed
+    literally."""
     base, out = tmp_path, tmp_path / "o"
     shutil.copytree(small_run["out"], out, symlinks=True)
     victims = {name: base / f"victim-{name}" for name in ("results.json", "report.html", "campbell.png")}
@@ -155,6 +158,7 @@ def test_a_link_planted_in_ones_own_run_folder_is_replaced(small_run: dict, tmp_
     (out / "studies").symlink_to(victim_folder, target_is_directory=True)
     result = runner.invoke(app, ["run", str(small_run["design"]), "--studies", "none", "--out", str(out)])
     assert result.exit_code == 0, result.output
+    assert "[bold]amb_1[/]," in result.stdout or "[red]amb_2," in result.stdout  # printed literally
     for name, victim in victims.items():
         assert victim.read_text() == "keep", name
         assert not (out / name).is_symlink() and (out / name).stat().st_size > 100, name
@@ -207,33 +211,52 @@ def test_the_marker_is_written_last_and_says_incomplete_after_an_error(tmp_path:
     assert _marker(out)["complete"] is True and (out / "ply_angle.png").is_file()
 
 
-def _limited_file_size(limit: int):
-    def preexec() -> None:
+def _under_a_file_size_limit(limit: int, args: list[str]) -> dict:
+    """``flexshaft *args`` in a child process whose files may not grow beyond ``limit`` bytes
+    (``RLIMIT_FSIZE`` with ``SIGXFSZ`` ignored: a write beyond it fails with ``EFBIG``, as on a
+    full disk), the limit the child's alone. The child is forked from this process, with the
+    imports it already holds (a fresh interpreter spent about 1.3 s of CPU importing them);
+    the command runs through the CLI's entry point as in every other test here. Returns the
+    exit code, stderr and output, and any exception other than the exit's."""
+    import multiprocessing
+
+    context = multiprocessing.get_context("fork")
+    receive, send = context.Pipe(duplex=False)
+
+    def child() -> None:
         signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # a write beyond the limit then fails with EFBIG
         resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+        result = runner.invoke(app, args)
+        exit_only = result.exception is None or isinstance(result.exception, SystemExit)
+        raised = None if exit_only else repr(result.exception)  # text: any exception pickles as that
+        send.send({"exit_code": result.exit_code, "stderr": result.stderr, "output": result.output, "raised": raised})
 
-    return preexec
+    process = context.Process(target=child)
+    process.start()
+    send.close()  # the child's end only: a child that dies without an answer ends recv with EOFError
+    try:
+        assert receive.poll(120), "the command did not end within 120 s"
+        return receive.recv()
+    finally:
+        process.join(timeout=30)
+        if process.is_alive():
+            process.kill()
+            process.join()
 
 
-@pytest.mark.skipif(not hasattr(signal, "SIGXFSZ"), reason="needs POSIX file-size limits")
+@pytest.mark.skipif(
+    not hasattr(signal, "SIGXFSZ") or not hasattr(os, "fork"), reason="needs POSIX file-size limits and fork"
+)
 def test_a_full_disk_names_the_file_and_leaves_no_complete_looking_folder(tmp_path: Path) -> None:
     """Was: on a full disk the error named no file and the partial folder kept the "written by
     flexshaft" marker. A file-size limit of 20 kB (the PNG figure is ~40 kB; results.nc and the
     marker fit) makes the figure's write fail the way a full disk does."""
     design = _design(tmp_path)
     out = tmp_path / "out"
-    code = "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"
-    result = subprocess.run(
-        [sys.executable, "-c", code, *PLY, str(design), "--out", str(out)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-        preexec_fn=_limited_file_size(20_000),
-        env={**os.environ, "OPENBLAS_NUM_THREADS": "1"},
-    )
-    assert result.returncode == 2, result.stderr
-    assert f"error: cannot write or read {out / 'ply_angle.png'}: File too large" in result.stderr
-    assert "Traceback" not in result.stderr
+    result = _under_a_file_size_limit(20_000, [*PLY, str(design), "--out", str(out)])
+    assert result["exit_code"] == 2, result["output"]
+    assert f"error: cannot write or read {out / 'ply_angle.png'}: File too large" in result["stderr"]
+    assert result["raised"] is None and "Traceback" not in result["output"], result
     assert _marker(out)["complete"] is False
     assert not (out / "ply_angle.png").exists()  # no half file
     assert not [p.name for p in out.iterdir() if p.name.startswith(".tmp-")]
