@@ -64,6 +64,8 @@ __all__ = [
 ]
 
 _NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
+#: Most bytes of the modes' dense matrices T_k that :func:`eigenvalue_corrections` holds at once.
+_CHUNK_BYTES = 32 * 2**20
 
 
 class _Curves(Protocol):
@@ -122,12 +124,19 @@ def eigenvalue_corrections(
         return np.full(s.size, np.nan + 0j)
     weights = [_weights(red, speed, sk, viscous) for sk in s]
     model, extra = viscous_model(red, viscous) if viscous is not None else (red, None)
-    Ts = np.empty((s.size, red.size, red.size), dtype=complex)
     dTY = np.empty_like(Y)
-    for k, (sk, w) in enumerate(zip(s, weights)):
-        T, dTY[:, k] = model.newton_terms(complex(sk), speed, w, Y[:, k])
-        Ts[k] = T if extra is None else T + extra
-    Z = _left_vectors(Ts, Y)
+    Z = np.empty_like(Y)
+    # the modes' matrices T_k (nb x nb each) a chunk at a time: all at once they held
+    # m·nb²·16 bytes (646 MB for `flexshaft modes --n-modes 500`, 343 modes of a 343-vector
+    # basis); each mode's left vector is its own solve, the same in any chunk
+    chunk = max(1, int(_CHUNK_BYTES // (16 * red.size * red.size)))
+    for start in range(0, s.size, chunk):
+        part = range(start, min(start + chunk, s.size))
+        Ts = np.empty((len(part), red.size, red.size), dtype=complex)
+        for i, k in enumerate(part):
+            T, dTY[:, k] = model.newton_terms(complex(s[k]), speed, weights[k], Y[:, k])
+            Ts[i] = T if extra is None else T + extra
+        Z[:, part.start : part.stop] = _left_vectors(Ts, Y[:, part.start : part.stop])
     den = (Z * dTY).sum(axis=0)
     products = _products(red)
     if not products.consistent:
