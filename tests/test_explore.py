@@ -292,11 +292,11 @@ def test_the_design_file_loads_back_with_provenance_and_changes_marked(tuned):
 
 @pytest.mark.filterwarnings("ignore::RuntimeWarning")
 def test_a_pareto_point_loads_the_optimizers_design(tmp_path, tuned):
-    """A tiny optimizer run (4 screening evaluations of one shared K_p): each point of
-    pareto.nc is the base with its overrides, and its shaft mass is the one the run stored. The
-    tuned design at its nominal point on a coarse mesh (CPU budget, issue 23): reading the front
-    back does not depend on how many operating points each evaluation judged, nor on the
-    model's size."""
+    """A tiny optimizer run (2 screening evaluations of one shared K_p, its first generation):
+    each point of pareto.nc is the base with its overrides, and its shaft mass is the one the run
+    stored. The tuned design at its nominal point on a coarse mesh (CPU budget, issue 23): reading
+    the front back does not depend on how many operating points each evaluation judged, nor on
+    the model's size or the number of generations."""
     pytest.importorskip("pymoo")
     from flexshaft.explore.pareto import front_design, read_front
     from flexshaft.optimize import DesignProblem, DesignVariable, optimize
@@ -307,7 +307,7 @@ def test_a_pareto_point_loads_the_optimizers_design(tmp_path, tuned):
         fidelity="screening",
         objectives=("shaft_mass", "actuator_force"),
     )
-    result = optimize(problem, 4, tmp_path / "run", pop_size=2)
+    result = optimize(problem, 2, tmp_path / "run", pop_size=2)
     result.save()
     front = read_front(tmp_path / "run")
     assert front.data["x"] == "shaft_mass" and len(front.data["pareto"]["x"]) == result.pareto.sizes["design"]
