@@ -149,6 +149,10 @@ def test_an_invalid_value_is_refused_by_the_schema_naming_the_field(tuned):
     assert "less than outer_diameter/2" in error.value.problems[0].message
 
 
+#: A coarse mesh for the tests that compute (see :func:`two_point_tuned`).
+COARSE = {"mesh.shaft_elements": 8, "mesh.boom_elements": 4}
+
+
 def _json_number(x: float) -> float | None:
     """Strict JSON has no inf or NaN: the payload sends null (the status says which)."""
     return x if math.isfinite(x) else None
@@ -159,8 +163,11 @@ def two_point_tuned(tuned):
     """The tuned design over two of its envelope points (CPU budget, issue 23: each point is a
     whole assessment): the cold day, which governs at K_p 2e5 (actuator 1 beyond its gap), and
     the hot-soak start, where the actuators pass; so the envelope's checks combine points that
-    disagree and the figures must draw the governing point's findings."""
-    data = tuned.model_dump()
+    disagree and the figures must draw the governing point's findings. On a coarse mesh (8 shaft,
+    4 boom elements; CPU budget, issue 23): every check here compares the explorer with the
+    screening assessment of the same design (the same functions on the same numbers), which
+    holds at any mesh."""
+    data = with_overrides(tuned, COARSE).model_dump()
     data["envelope"]["points"] = [p for p in data["envelope"]["points"] if p["name"] in ("cold_day", "hot_soak_start")]
     return design_from_dict(data)
 
@@ -285,21 +292,22 @@ def test_the_design_file_loads_back_with_provenance_and_changes_marked(tuned):
 
 @pytest.mark.filterwarnings("ignore::RuntimeWarning")
 def test_a_pareto_point_loads_the_optimizers_design(tmp_path, tuned):
-    """A tiny optimizer run (4 screening evaluations of one shared K_p): each point of
-    pareto.nc is the base with its overrides, and its shaft mass is the one the run stored. The
-    tuned design at its nominal point (CPU budget, issue 23): reading the front back does not
-    depend on how many operating points each evaluation judged."""
+    """A tiny optimizer run (2 screening evaluations of one shared K_p, its first generation):
+    each point of pareto.nc is the base with its overrides, and its shaft mass is the one the run
+    stored. The tuned design at its nominal point on a coarse mesh (CPU budget, issue 23): reading
+    the front back does not depend on how many operating points each evaluation judged, nor on
+    the model's size or the number of generations."""
     pytest.importorskip("pymoo")
     from flexshaft.explore.pareto import front_design, read_front
     from flexshaft.optimize import DesignProblem, DesignVariable, optimize
 
     problem = DesignProblem(
         variables=(DesignVariable(("bearings[1].kp", "bearings[2].kp"), 3e5, 1e6, log=True, name="kp"),),
-        base=with_overrides(tuned, {"envelope": None}),
+        base=with_overrides(tuned, {"envelope": None, **COARSE}),
         fidelity="screening",
         objectives=("shaft_mass", "actuator_force"),
     )
-    result = optimize(problem, 4, tmp_path / "run", pop_size=2)
+    result = optimize(problem, 2, tmp_path / "run", pop_size=2)
     result.save()
     front = read_front(tmp_path / "run")
     assert front.data["x"] == "shaft_mass" and len(front.data["pareto"]["x"]) == result.pareto.sizes["design"]
