@@ -37,7 +37,7 @@ from flexshaft.assembly.size import check_problem_size
 from flexshaft.design import Design, DesignError, Problem
 from flexshaft.design.points import design_at_point
 from flexshaft.resolution import REPORT, Resolution
-from flexshaft.thermal.envelope import point_conditions
+from flexshaft.thermal.envelope import PointConditions, point_conditions
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
@@ -167,10 +167,9 @@ def assess(
         return Assessment(
             **vars(analyses), evidence=only.evidence, verdict=only.verdict, points=(only,), governing_point=only.name
         )
-    judged = [
-        assess_point(design, index, resolution, executor=executor, progress=progress)
-        for index in range(len(design.envelope.points))
-    ]
+    # every point's design first: a point that breaks the schema is refused before any analysis
+    prepared = [_point_design(design, index) for index in range(len(design.envelope.points))]
+    judged = [_analyse_and_judge(*point, resolution, executor, progress) for point in prepared]
     return combine_points(design, judged, resolution, progress=progress)
 
 
@@ -197,8 +196,14 @@ def assess_point(
     if design.envelope is None or not 0 <= index < len(design.envelope.points):
         count = 0 if design.envelope is None else len(design.envelope.points)
         raise ValueError(f"index: the design's envelope has {count} points, got {index!r}")
+    return _analyse_and_judge(*_point_design(design, index), resolution, executor, progress)
+
+
+def _point_design(design: Design, index: int) -> tuple[str, PointConditions, Design]:
+    """The name, conditions and design of the envelope's point ``index`` (DesignError naming
+    the point when its temperature or its design is refused)."""
+    assert design.envelope is not None
     point = design.envelope.points[index]
-    step = None if progress is None else (lambda label: progress(f"{point.name}: {label}"))
     try:
         conditions = point_conditions(design, point)
     except ValueError as exc:  # a material temperature outside a lamina's table
@@ -210,10 +215,22 @@ def assess_point(
             [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
             "<envelope>",
         ) from None
+    return point.name, conditions, at_point
+
+
+def _analyse_and_judge(
+    name: str,
+    conditions: PointConditions,
+    at_point: Design,
+    resolution: Resolution,
+    executor: Executor | None,
+    progress: Callable[[str], None] | None,
+) -> PointAssessment:
+    step = None if progress is None else (lambda label: progress(f"{name}: {label}"))
     analyses = analyse_point(
         at_point, resolution, conditions=conditions, detail=False, executor=executor, progress=step
     )
-    return _judged(point.name, analyses)
+    return _judged(name, analyses)
 
 
 def combine_points(
