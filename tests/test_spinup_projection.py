@@ -84,6 +84,23 @@ DESIGNS = ["tuned", "baseline", "current", "thin wall", "light loss", "no loss"]
 CASES = [(name, SCREENING) for name in DESIGNS + ["baseline worst"]] + [("tuned", REPORT), ("light loss", REPORT)]
 
 
+_SCANS: dict = {}
+
+
+def _scans(name: str, resolution):
+    """(all-full, projected) spin-up scans of design ``name`` at ``resolution``'s speeds, computed
+    once for the tests that read them (the scan test, the critical speeds, the undamped
+    resonance: the same two computations each; CPU budget, issue 23)."""
+    key = (name, resolution.name)
+    if key not in _SCANS:
+        model = _model(name)
+        speeds = resolution.spin_speeds(model.speed)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ResonanceWarning)
+            _SCANS[key] = spinup_response(model, speeds, projected=False), spinup_response(model, speeds)
+    return _SCANS[key]
+
+
 def _close(a, b, what: str) -> None:
     a, b = np.asarray(a), np.asarray(b)
     scale = np.abs(b).max()
@@ -95,10 +112,9 @@ def _close(a, b, what: str) -> None:
 def test_scan_matches_the_all_full_sweep(name, resolution):
     model = _model(name)
     speeds = resolution.spin_speeds(model.speed)
+    full, fast = _scans(name, resolution)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        full = spinup_response(model, speeds, projected=False)
-        fast = spinup_response(model, speeds)
         sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
     assert full.error_estimate is None and fast.error_estimate is not None
     _close(fast.envelope, full.envelope, "worst-case orbit along the shaft")
@@ -118,13 +134,12 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
 @pytest.mark.parametrize("name", DESIGNS)
 def test_critical_speeds_on_the_projected_scan_match(name):
     model = _model(name)
-    speeds = SCREENING.spin_speeds(model.speed)
+    scan, projected = _scans(name, SCREENING)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        scan = spinup_response(model, speeds, projected=False)
         # the all-full reference: full scan, a full solve at every refinement speed
         full = lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
-        scan = spinup_response(model, speeds)
+        scan = projected
         # as the assessment's spin-up task: the peaks' models start from the scan's responses
         fast = scan_critical_speeds(model, scan.speeds, scan.orbits, SCREENING.scan_top, scan.response).criticals
     assert full is not None and fast is not None and len(fast) == len(full) >= 3
@@ -197,7 +212,8 @@ def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
     speeds = SCREENING.spin_speeds(model.speed)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        criticals = scan_critical_speeds(model, *_scan(model, speeds), SCREENING.scan_top).criticals
+        full = _scans("no loss", SCREENING)[0]
+        criticals = scan_critical_speeds(model, full.speeds, full.orbits, SCREENING.scan_top).criticals
     resonance = criticals[0].speed
     assert criticals[0].amplification_factor == float("inf")
     speeds = np.sort(np.append(speeds, resonance))
@@ -207,11 +223,6 @@ def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
     with pytest.warns(ResonanceWarning, match="undamped resonance"):
         sweep = imbalance_sweep(model, speeds, loads)
     assert sweep.full[np.searchsorted(speeds, resonance)]
-
-
-def _scan(model, speeds):
-    scan = spinup_response(model, speeds, projected=False)
-    return scan.speeds, scan.orbits
 
 
 def test_short_or_unordered_scans_are_solved_in_full():
