@@ -23,6 +23,7 @@ import flexshaft.analyses.local_projection as lp
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.local_projection import LocalModels, window_of
+from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly import build_model
 from flexshaft.design import tuned_design, with_overrides
 
@@ -42,10 +43,24 @@ def _magnetic_tuned_model():
 
 
 @functools.cache
+def _case(make):
+    """``make()`` and its default grid's poles (``closed_loop_poles`` at the operating speed, what
+    ``bearing_loops`` computes when given none), computed once for the tests of that model."""
+    model = make()
+    return model, closed_loop_poles(model, model.speed)
+
+
+def _loops(make, **options):
+    """``bearing_loops`` of ``make()`` on its default grid (the poles computed once)."""
+    model, poles = _case(make)
+    return bearing_loops(model, poles=poles, **options)
+
+
+@functools.cache
 def _full_loops(make):
     """The reference: ``bearing_loops(make(), projected=False)``, a full banded solve at every
     step, computed once for the tests that compare with it (it reads no patched setting)."""
-    return bearing_loops(make(), projected=False)
+    return _loops(make, projected=False)
 
 
 def _margins(loops):
@@ -139,8 +154,7 @@ def test_projected_refinement_matches_full_solves_at_every_step(make):
     (δ/ζ)²/2, below 1e-7 for ζ >= 0.003; a crossover moves by the function's 1e-9 over its
     slope, and the margin with it), the peak frequency to 2e-6 (the golden-section tolerance
     on either function)."""
-    model = make()
-    fast = bearing_loops(model)
+    fast = _loops(make)
     full = _full_loops(make)
     for a, b in zip(_margins(fast), _margins(full)):
         assert a[0] == pytest.approx(b[0], rel=1e-7)
@@ -160,7 +174,7 @@ def test_a_failed_check_falls_back_to_full_solves(monkeypatch):
     same steps as ``projected=False``: identical margins."""
     monkeypatch.setattr(lp, "LOCAL_TOLERANCE", 0.0)
     monkeypatch.setattr(lp, "ENRICHMENTS", 0)
-    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
+    assert _margins(_loops(_tuned_model)) == _margins(_full_loops(_tuned_model))
 
 
 def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
@@ -168,7 +182,7 @@ def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
     fails the check: no full solve at a non-finite frequency, the refinements are repeated on
     full solves, and the margins are the full computation's exactly."""
     monkeypatch.setattr(LocalModels, "closed", lambda self, omegas, intervals: np.full(len(omegas), np.nan + 0j))
-    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
+    assert _margins(_loops(_tuned_model)) == _margins(_full_loops(_tuned_model))
 
 
 def test_projected_terms_sum_to_the_projected_dynamic_stiffness():
