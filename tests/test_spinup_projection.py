@@ -113,9 +113,6 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
     model = _model(name)
     speeds = resolution.spin_speeds(model.speed)
     full, fast = _scans(name, resolution)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ResonanceWarning)
-        sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
     assert full.error_estimate is None and fast.error_estimate is not None
     _close(fast.envelope, full.envelope, "worst-case orbit along the shaft")
     _close(fast.orbits, full.orbits, "orbits of every load case")
@@ -126,9 +123,11 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
     top = np.sort(full.orbits.max(axis=0), axis=0)
     distinct = top[-1] > (1 + 1e-6) * top[-2] if top.shape[0] > 1 else np.ones(speeds.size, dtype=bool)
     assert np.array_equal(fast.worst_case[distinct], full.worst_case[distinct])
-    # it did project: a small fraction of the speeds solved in full
-    assert sweep.full_solves <= 0.25 * speeds.size, sweep.full_solves
-    assert np.all(sweep.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
+    # it did project: a small fraction of the speeds solved in full (the sweep's estimate is 0
+    # at each of them, so counting the zeros bounds its full_solves from above)
+    solved = np.count_nonzero(fast.error_estimate == 0.0)
+    assert solved <= 0.25 * speeds.size, solved
+    assert np.all(fast.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
 
 
 @pytest.mark.parametrize("name", DESIGNS)
@@ -175,7 +174,7 @@ def test_error_estimate_bounds_the_true_error(name, monkeypatch):
     model = _model(name)
     speeds = SCREENING.spin_speeds(model.speed)
     loads = imbalance_loads(model)
-    reference = imbalance_response(model, speeds, loads)
+    reference = _scans(name, SCREENING)[0].response  # imbalance_response(model, speeds, loads)
     checked = 0
     for tolerance in (1e-2, 1e-4, 1e-6, 1e-8):
         sweep = imbalance_sweep(model, speeds, loads, tolerance=tolerance)
