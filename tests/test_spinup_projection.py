@@ -87,18 +87,23 @@ CASES = [(name, SCREENING) for name in DESIGNS + ["baseline worst"]] + [("tuned"
 _SCANS: dict = {}
 
 
-def _scans(name: str, resolution):
-    """(all-full, projected) spin-up scans of design ``name`` at ``resolution``'s speeds, computed
-    once for the tests that read them (the scan test, the critical speeds, the undamped
-    resonance: the same two computations each; CPU budget, issue 23)."""
-    key = (name, resolution.name)
+def _scan(name: str, resolution, projected: bool):
+    """The spin-up scan of design ``name`` at ``resolution``'s speeds, all-full or projected,
+    computed once for the tests that read it (the scan test, the critical speeds, the undamped
+    resonance and the error estimate's reference: the same computation each; CPU budget,
+    issue 23). The projected one only where the sweep's settings are not patched."""
+    key = (name, resolution.name, projected)
     if key not in _SCANS:
         model = _model(name)
-        speeds = resolution.spin_speeds(model.speed)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ResonanceWarning)
-            _SCANS[key] = spinup_response(model, speeds, projected=False), spinup_response(model, speeds)
+            _SCANS[key] = spinup_response(model, resolution.spin_speeds(model.speed), projected=projected)
     return _SCANS[key]
+
+
+def _scans(name: str, resolution):
+    """(all-full, projected) spin-up scans of ``name`` at ``resolution`` (:func:`_scan`)."""
+    return _scan(name, resolution, False), _scan(name, resolution, True)
 
 
 def _close(a, b, what: str) -> None:
@@ -174,7 +179,7 @@ def test_error_estimate_bounds_the_true_error(name, monkeypatch):
     model = _model(name)
     speeds = SCREENING.spin_speeds(model.speed)
     loads = imbalance_loads(model)
-    reference = _scans(name, SCREENING)[0].response  # imbalance_response(model, speeds, loads)
+    reference = _scan(name, SCREENING, False).response  # imbalance_response(model, speeds, loads)
     checked = 0
     for tolerance in (1e-2, 1e-4, 1e-6, 1e-8):
         sweep = imbalance_sweep(model, speeds, loads, tolerance=tolerance)
@@ -211,7 +216,7 @@ def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
     speeds = SCREENING.spin_speeds(model.speed)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        full = _scans("no loss", SCREENING)[0]
+        full = _scan("no loss", SCREENING, False)
         criticals = scan_critical_speeds(model, full.speeds, full.orbits, SCREENING.scan_top).criticals
     resonance = criticals[0].speed
     assert criticals[0].amplification_factor == float("inf")
