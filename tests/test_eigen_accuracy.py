@@ -162,8 +162,11 @@ def _full_root(model, dense, s, x, speed, viscous=None):
     """Newton's method on the full dense T(s) from (s, x): loss weights of the root's side, or
     the viscous method's damping and circulatory weights. The derivative T'(s) x is the central
     difference (T(s + h) x − T(s − h) x)/2h, each T(z) x summed from the matrices' products with
-    x (T(s) itself is formed once a step, for the solve)."""
+    x (T(s) itself is formed once a step, for the solve). ``dense``: the seven matrices stacked,
+    (7, n, n) real, so that Σ c_A A is two matrix-vector products over the stack."""
     free = model.dofs.free
+    n = dense.shape[-1]
+    flat = dense.reshape(len(dense), -1)
 
     def coefficients(z):
         """(c_M, c_G, c_C, c_K, c_F, c_L, c_S) of T(z) = Σ c_A A + controller(z)."""
@@ -175,7 +178,8 @@ def _full_root(model, dense, s, x, speed, viscous=None):
         return (z * z, *damping)
 
     def T(z):
-        out = sum(c * A for c, A in zip(coefficients(z), dense))
+        c = np.array(coefficients(z), dtype=complex)
+        out = (c.real @ flat + 1j * (c.imag @ flat)).reshape(n, n)
         return out + _dense(model, model.controller_matrix(z))
 
     def T_times(z, products):
@@ -184,7 +188,7 @@ def _full_root(model, dense, s, x, speed, viscous=None):
 
     for _ in range(40):
         h = 1e-7 * abs(s)
-        products = [A @ x for A in dense] + [x]
+        products = [*(dense @ x.real + 1j * (dense @ x.imag)), x]  # real products: no complex copy of the stack
         dTx = (T_times(s + h, products) - T_times(s - h, products)) / (2 * h)
         u = la.solve(T(s), dTx, overwrite_a=True, check_finite=False)
         step = np.vdot(x, x) / np.vdot(x, u)
@@ -195,8 +199,12 @@ def _full_root(model, dense, s, x, speed, viscous=None):
 
 
 def _tuned_true_errors(model, red, tracked, viscous=None):
-    dense = [_dense(model, A) for A in (model.M, model.G, model.C, model.K)]
-    dense += [_dense(model, A) for A in (model.loss_fixed, model.loss_lateral, model.loss_circulatory)]
+    dense = np.stack(
+        [
+            _dense(model, A)
+            for A in (model.M, model.G, model.C, model.K, model.loss_fixed, model.loss_lateral, model.loss_circulatory)
+        ]
+    )
     out = np.empty(tracked.eigenvalues.shape)
     for k, speed in enumerate(TUNED_SPEEDS):
         X = red.Phi @ tracked.states[k]

@@ -14,38 +14,26 @@
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 import pytest
+from magnet_loops import default_loops, loops, magnetic_tuned_model
 
 import flexshaft.analyses.local_projection as lp
 from flexshaft.analyses.banded import solver_for
-from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.local_projection import LocalModels, window_of
 from flexshaft.assembly import build_model
-from flexshaft.design import tuned_design, with_overrides
+from flexshaft.design import tuned_design
 
 
 def _tuned_model():
     return build_model(tuned_design().model_copy(update={"envelope": None}))
 
 
-def _magnetic_tuned_model():
-    """The tuned driveline with real magnets: PID, amplifier and derivative-filter lags, the
-    sensor 4 cm beside each magnet (tests/test_loop_robustness.py's case)."""
-    keys = {"ks": 8.47e5, "ki": 177.0, "kp": 7610.0, "kd": 3.16, "integral_gain": 4.8e4, "derivative_cutoff": 500.0}
-    keys.update(amplifier_bandwidth=1000.0, sensor_offset=0.04)
-    return build_model(
-        with_overrides(tuned_design(), {f"bearings[{i}].{k}": v for i in (1, 2) for k, v in keys.items()})
-    )
-
-
-@functools.cache
 def _full_loops(make):
     """The reference: ``bearing_loops(make(), projected=False)``, a full banded solve at every
-    step, computed once for the tests that compare with it (it reads no patched setting)."""
-    return bearing_loops(make(), projected=False)
+    step, computed once for the tests that compare with it (it reads no patched setting;
+    tests/magnet_loops.py)."""
+    return default_loops(make, projected=False)
 
 
 def _margins(loops):
@@ -132,15 +120,14 @@ def test_an_enriched_model_is_the_model_of_the_enlarged_basis():
         local.enriched(np.array([0]), X[1][:, [0]])
 
 
-@pytest.mark.parametrize("make", [_tuned_model, _magnetic_tuned_model], ids=["tuned PD", "PID magnet"])
+@pytest.mark.parametrize("make", [_tuned_model, magnetic_tuned_model], ids=["tuned PD", "PID magnet"])
 def test_projected_refinement_matches_full_solves_at_every_step(make):
     """Projected against full refinements (module docstring): the peak |S| and the margins to
     1e-7 relative (a peak value at a frequency δ = 1e-6 in ln ω off its top differs by about
     (δ/ζ)²/2, below 1e-7 for ζ >= 0.003; a crossover moves by the function's 1e-9 over its
     slope, and the margin with it), the peak frequency to 2e-6 (the golden-section tolerance
     on either function)."""
-    model = make()
-    fast = bearing_loops(model)
+    fast = default_loops(make)  # shared with tests/test_loop_robustness.py (the PID magnet)
     full = _full_loops(make)
     for a, b in zip(_margins(fast), _margins(full)):
         assert a[0] == pytest.approx(b[0], rel=1e-7)
@@ -160,7 +147,7 @@ def test_a_failed_check_falls_back_to_full_solves(monkeypatch):
     same steps as ``projected=False``: identical margins."""
     monkeypatch.setattr(lp, "LOCAL_TOLERANCE", 0.0)
     monkeypatch.setattr(lp, "ENRICHMENTS", 0)
-    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
+    assert _margins(loops(_tuned_model)) == _margins(_full_loops(_tuned_model))
 
 
 def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
@@ -168,7 +155,7 @@ def test_a_projected_model_gone_astray_falls_back_to_full_solves(monkeypatch):
     fails the check: no full solve at a non-finite frequency, the refinements are repeated on
     full solves, and the margins are the full computation's exactly."""
     monkeypatch.setattr(LocalModels, "closed", lambda self, omegas, intervals: np.full(len(omegas), np.nan + 0j))
-    assert _margins(bearing_loops(_tuned_model())) == _margins(_full_loops(_tuned_model))
+    assert _margins(loops(_tuned_model)) == _margins(_full_loops(_tuned_model))
 
 
 def test_projected_terms_sum_to_the_projected_dynamic_stiffness():

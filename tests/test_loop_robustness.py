@@ -16,10 +16,12 @@ import numpy as np
 import numpy.polynomial.polynomial as P
 import pytest
 import scipy.linalg as la
+from magnet_loops import default_loops, magnetic_tuned_model
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.bearing_loops import ISO_14839_ZONE_LIMITS, bearing_loops, loop_margins, sensitivity_zone
 from flexshaft.analyses.modal import modes
+from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design, tuned_design, with_overrides
 
@@ -193,19 +195,12 @@ def test_model_loop_matches_the_rigid_rotor_plant_with_the_other_loop_closed():
         assert lp.margins.gain_margin_lower_db == pytest.approx(reference.gain_margin_lower_db, rel=1e-4)
 
 
-def _magnetic_tuned():
-    """The tuned design with a real magnet, PID, lags and a sensor 4 cm beside each magnet."""
-    keys = {"ks": 8.47e5, "ki": 177.0, "kp": 7610.0, "kd": 3.16, "integral_gain": 4.8e4, "derivative_cutoff": 500.0}
-    keys.update(amplifier_bandwidth=1000.0, sensor_offset=0.04)
-    return with_overrides(tuned_design(), {f"bearings[{i}].{k}": v for i in (1, 2) for k, v in keys.items()})
-
-
 def test_sensitivity_plus_the_open_loop_complement_is_one():
     """S from the closed-loop receptance (Sherman-Morrison) against T = L/(1 + L) with L = G P and
     P = sᵀ Z_o⁻¹ a from a direct dense solve of the open loop Z_o = Z_c − G a sᵀ, at 4800 rpm on
     the tuned driveline with a non-collocated PID magnet: S + T = 1 to round-off of the two
     solves (1e-9 of |S| + |T|)."""
-    model = build_model(_magnetic_tuned())
+    model = magnetic_tuned_model()  # the tuned design with the PID magnets (tests/magnet_loops.py)
     (first, *_) = bearing_loops(model, frequency_range=(1.0, 1000.0), n_points=40)
     solver = solver_for(model)
     actuator = model.actuators[0]
@@ -267,7 +262,7 @@ def test_the_peak_bounds_the_margins_of_the_lagged_magnet_on_the_tuned_driveline
     crossover |1 + L| = |1 − |L||, so |S|max >= 1/(2 sin(PM/2)) and >= 1/|1 − 10^(−GM/20)| for
     either gain margin. On the tuned driveline with the non-collocated PID magnet (4800 rpm) the
     loops are poor (zone D) and the bounds hold to the refinement's accuracy (1e-6)."""
-    for loop in bearing_loops(build_model(_magnetic_tuned())):
+    for loop in default_loops(magnetic_tuned_model):  # shared with tests/test_loop_projection.py
         m = loop.margins
         assert m.zone == "D"
         bounds = [1 / (2 * np.sin(np.radians(m.phase_margin_deg) / 2))]
@@ -288,7 +283,8 @@ def test_the_pole_grid_finds_what_a_fine_grid_refined_everywhere_finds(monkeypat
 
     for kd in (560.0,):
         model = build_model(with_overrides(tuned_design(), {"bearings[1].kd": kd, "bearings[2].kd": kd}))
-        fasts = [bearing_loops(model), bearing_loops(model, peak_samples=1)]
+        poles = closed_loop_poles(model, model.speed)  # the default poles, computed once for both grids
+        fasts = [bearing_loops(model, poles=poles), bearing_loops(model, poles=poles, peak_samples=1)]
         with monkeypatch.context() as patch:
             patch.setattr(bl, "PEAK_WINDOW", 0.0)
             patch.setattr(bl, "MARGIN_WINDOW_DEG", np.inf)

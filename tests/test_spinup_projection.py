@@ -84,6 +84,28 @@ DESIGNS = ["tuned", "baseline", "current", "thin wall", "light loss", "no loss"]
 CASES = [(name, SCREENING) for name in DESIGNS + ["baseline worst"]] + [("tuned", REPORT), ("light loss", REPORT)]
 
 
+_SCANS: dict = {}
+
+
+def _scan(name: str, resolution, projected: bool):
+    """The spin-up scan of design ``name`` at ``resolution``'s speeds, all-full or projected,
+    computed once for the tests that read it (the scan test, the critical speeds, the undamped
+    resonance and the error estimate's reference: the same computation each; CPU budget,
+    issue 23). The projected one only where the sweep's settings are not patched."""
+    key = (name, resolution.name, projected)
+    if key not in _SCANS:
+        model = _model(name)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ResonanceWarning)
+            _SCANS[key] = spinup_response(model, resolution.spin_speeds(model.speed), projected=projected)
+    return _SCANS[key]
+
+
+def _scans(name: str, resolution):
+    """(all-full, projected) spin-up scans of ``name`` at ``resolution`` (:func:`_scan`)."""
+    return _scan(name, resolution, False), _scan(name, resolution, True)
+
+
 def _close(a, b, what: str) -> None:
     a, b = np.asarray(a), np.asarray(b)
     scale = np.abs(b).max()
@@ -95,11 +117,7 @@ def _close(a, b, what: str) -> None:
 def test_scan_matches_the_all_full_sweep(name, resolution):
     model = _model(name)
     speeds = resolution.spin_speeds(model.speed)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ResonanceWarning)
-        full = spinup_response(model, speeds, projected=False)
-        fast = spinup_response(model, speeds)
-        sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
+    full, fast = _scans(name, resolution)
     assert full.error_estimate is None and fast.error_estimate is not None
     _close(fast.envelope, full.envelope, "worst-case orbit along the shaft")
     _close(fast.orbits, full.orbits, "orbits of every load case")
@@ -110,21 +128,22 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
     top = np.sort(full.orbits.max(axis=0), axis=0)
     distinct = top[-1] > (1 + 1e-6) * top[-2] if top.shape[0] > 1 else np.ones(speeds.size, dtype=bool)
     assert np.array_equal(fast.worst_case[distinct], full.worst_case[distinct])
-    # it did project: a small fraction of the speeds solved in full
-    assert sweep.full_solves <= 0.25 * speeds.size, sweep.full_solves
-    assert np.all(sweep.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
+    # it did project: a small fraction of the speeds solved in full (the sweep's estimate is 0
+    # at each of them, so counting the zeros bounds its full_solves from above)
+    solved = np.count_nonzero(fast.error_estimate == 0.0)
+    assert solved <= 0.25 * speeds.size, solved
+    assert np.all(fast.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
 
 
 @pytest.mark.parametrize("name", DESIGNS)
 def test_critical_speeds_on_the_projected_scan_match(name):
     model = _model(name)
-    speeds = SCREENING.spin_speeds(model.speed)
+    scan, projected = _scans(name, SCREENING)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        scan = spinup_response(model, speeds, projected=False)
         # the all-full reference: full scan, a full solve at every refinement speed
         full = lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
-        scan = spinup_response(model, speeds)
+        scan = projected
         # as the assessment's spin-up task: the peaks' models start from the scan's responses
         fast = scan_critical_speeds(model, scan.speeds, scan.orbits, SCREENING.scan_top, scan.response).criticals
     assert full is not None and fast is not None and len(fast) == len(full) >= 3
@@ -160,7 +179,7 @@ def test_error_estimate_bounds_the_true_error(name, monkeypatch):
     model = _model(name)
     speeds = SCREENING.spin_speeds(model.speed)
     loads = imbalance_loads(model)
-    reference = imbalance_response(model, speeds, loads)
+    reference = _scan(name, SCREENING, False).response  # imbalance_response(model, speeds, loads)
     checked = 0
     for tolerance in (1e-2, 1e-4, 1e-6, 1e-8):
         sweep = imbalance_sweep(model, speeds, loads, tolerance=tolerance)
@@ -197,7 +216,8 @@ def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
     speeds = SCREENING.spin_speeds(model.speed)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        criticals = scan_critical_speeds(model, *_scan(model, speeds), SCREENING.scan_top).criticals
+        full = _scan("no loss", SCREENING, False)
+        criticals = scan_critical_speeds(model, full.speeds, full.orbits, SCREENING.scan_top).criticals
     resonance = criticals[0].speed
     assert criticals[0].amplification_factor == float("inf")
     speeds = np.sort(np.append(speeds, resonance))
@@ -207,11 +227,6 @@ def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
     with pytest.warns(ResonanceWarning, match="undamped resonance"):
         sweep = imbalance_sweep(model, speeds, loads)
     assert sweep.full[np.searchsorted(speeds, resonance)]
-
-
-def _scan(model, speeds):
-    scan = spinup_response(model, speeds, projected=False)
-    return scan.speeds, scan.orbits
 
 
 def test_short_or_unordered_scans_are_solved_in_full():

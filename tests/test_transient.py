@@ -72,7 +72,9 @@ def _jeffcott(eta=0.0, c_e=0.0, internal_damping="rotating"):
     return model, red, rows
 
 
-def _reference_jeffcott(mass, stiffness, c_ext, eta, s0, alpha, duration, times, gyroscopic=None, loss=None):
+def _reference_jeffcott(
+    mass, stiffness, c_ext, eta, s0, alpha, duration, times, gyroscopic=None, loss=None, rtol=1e-12
+):
     """Independent 2-DOF Jeffcott run-up in the fixed frame, disk displacement r = (v, w):
 
     M r̈ + (c_e + Ω G) ṙ + K r + c_i(Ω) (ṙ + Ω J r) = U (Ω² cos φ + Ω̇ sin φ, Ω² sin φ − Ω̇ cos φ)
@@ -84,7 +86,7 @@ def _reference_jeffcott(mass, stiffness, c_ext, eta, s0, alpha, duration, times,
     M, K and G are 2x2 [kg], [N/m], [kg] (G: the shaft tube's tiny gyroscopic coupling,
     which matters because the v and w modes are degenerate). Starts from the steady forward whirl at s0 (on which
     the internal damping does no work). Returns v(t), w(t) at ``times`` and the number of
-    DOP853 steps.
+    DOP853 steps (at ``rtol``: the global error is at most about steps x rtol of the peak).
     """
     U = M_DISK * ECCENTRICITY
     k = 0.5 * np.trace(stiffness)
@@ -125,7 +127,7 @@ def _reference_jeffcott(mass, stiffness, c_ext, eta, s0, alpha, duration, times,
         -(s0**2) * mass + 1j * s0 * (c_ext * np.eye(2) + s0 * G) + stiffness, U * s0**2 * np.array([1.0, -1j])
     )
     x0 = np.concatenate([R.real, (1j * s0 * R).real])
-    sol = solve_ivp(rhs, (0.0, duration), x0, method="DOP853", rtol=1e-12, atol=1e-15 * ECCENTRICITY, dense_output=True)
+    sol = solve_ivp(rhs, (0.0, duration), x0, method="DOP853", rtol=rtol, atol=1e-15 * ECCENTRICITY, dense_output=True)
     return sol.sol(times)[:2], sol.t.size - 1
 
 
@@ -161,7 +163,10 @@ def test_jeffcott_passage_matches_independent_integration(c_e, eta):
     No static correction here: it would add the 3e-6 quasi-static share of the shaft's own
     modes. The peak and its speed also match the closed-form constants k = 48EI/L³,
     m = 20 kg to 3e-4 and 1e-4 (the frequency split detunes the v and w free vibrations by
-    Δω t ≈ 1e-3 rad after the passage).
+    Δω t ≈ 1e-3 rad after the passage). That closed-form reference is integrated at DOP853
+    rtol 1e-9 (CPU budget, issue 23): its own error, at most its steps (about 2100) x 1e-9 = 2e-6
+    of the peak (measured 8e-9 against rtol 1e-12), is asserted below a fortieth of the 1e-4
+    bar, which therefore keeps its meaning.
     """
     model, red, rows = _jeffcott(eta, c_e)
     Q1 = per_bay_imbalance_loads(model, M_DISK * ECCENTRICITY)
@@ -196,9 +201,10 @@ def test_jeffcott_passage_matches_independent_integration(c_e, eta):
     assert np.abs(result.shaft_orbit.max(axis=0) - np.hypot(v, w)).max() <= 2e-3 * peak
 
     fine = np.linspace(0.0, result.time[-1], 100_001)
-    (ref_v, ref_w), _ = _reference_jeffcott(
-        M_DISK * np.eye(2), M_DISK * WN**2 * np.eye(2), c_e, eta, s0, alpha, fine[-1], fine
+    (ref_v, ref_w), fine_steps = _reference_jeffcott(
+        M_DISK * np.eye(2), M_DISK * WN**2 * np.eye(2), c_e, eta, s0, alpha, fine[-1], fine, rtol=1e-9
     )
+    assert fine_steps * 1e-9 <= 1e-4 / 40  # the reference's own error, far below the bars below
     radius = np.hypot(ref_v, ref_w)
     k = int(np.argmax(radius))
     value, _, speed = result.peak()
@@ -401,10 +407,14 @@ def test_slower_run_up_tends_to_the_steady_spin_up_curve(baseline):
 
 
 def test_basis_convergence_of_the_run_up_peak(baseline):
-    """Peak of a 10-s baseline run-up for 12, 25 (default: modes below 4x the top speed) and
-    50 modes: with the static correction the default is within 0.5 % of 50 modes."""
+    """Peak of a baseline run-up for 12, 25 (default: modes below 4x the top speed) and 50
+    modes: with the static correction the default is within 0.5 % of 50 modes. The run goes
+    from 300 rad/s (on its steady state) to the operating speed in 2 s, through the range above
+    the whirl onset (~3460 rpm) where its peak builds, as the 10-s run-up from rest does (CPU
+    budget, issue 23; measured: default 3.8e-5 off 50 modes and 12 modes 1.7 %, against 3.4e-5
+    and 1.6 % for the 10-s run-up from rest, whose peak is at the same speed within 0.3 %)."""
     model, _ = baseline
-    peaks = {nb: run_up(model, 10.0, basis_size=nb, rtol=1e-6).peak()[0] for nb in (12, 25, 50)}
+    peaks = {nb: run_up(model, 2.0, start=300.0, basis_size=nb, rtol=1e-6).peak()[0] for nb in (12, 25, 50)}
     assert default_basis_size(model, model.speed) == 25
     assert abs(peaks[25] / peaks[50] - 1) < 5e-3
     assert abs(peaks[25] / peaks[50] - 1) < abs(peaks[12] / peaks[50] - 1)
