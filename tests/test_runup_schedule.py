@@ -128,3 +128,31 @@ def test_the_static_correction_carries_the_tangential_imbalance_force():
     w = (r.shaft_envelope[1, node] * np.exp(1j * r.phase)).real
     expected = U * (r.speed**2 * np.sin(r.phase) - r.acceleration * np.cos(r.phase)) / (10 * K_SHAFT)
     assert np.abs(w - expected).max() <= 2e-3 * np.abs(expected).max()
+
+
+def test_a_tables_speed_and_acceleration_at_many_times_are_those_at_each_time():
+    """The integrator evaluates a table's Ω and Ω̇ at many times at once (``speeds_at``,
+    ``accelerations_at``): bit for bit the scalar ``speed(t)`` and ``acceleration(t)``, at random
+    times, at every breakpoint and one ulp either side of it (the segment on the right of a
+    breakpoint, Ω̇ right-continuous), before the start and after the end (the first and last
+    speeds exactly: Ω is clamped). The numbers are the table's values on straight segments:
+    checked against the line through each segment's ends to round-off."""
+    profile = SpeedProfile.table([0.0, 0.7, 1.3, 2.9, 4.0], [0.0, 310.3, 310.3, 520.7, 100.1])
+    knots = profile.breakpoints
+    times = np.concatenate(
+        [
+            np.random.default_rng(1).uniform(-0.5, 4.5, 20_000),
+            knots,
+            np.nextafter(knots, np.inf),
+            np.nextafter(knots, -np.inf),
+        ]
+    )
+    speeds = np.array([profile.speed(t) for t in times])
+    accelerations = np.array([profile.acceleration(t) for t in times])
+    np.testing.assert_array_equal(profile.speeds_at(times), speeds)
+    np.testing.assert_array_equal(profile.accelerations_at(times), accelerations)
+    # the line through each segment's ends (clamped outside [0, 4]): 1e-12 of the largest speed
+    # covers the round-off of the slope times a time of order 1
+    np.testing.assert_allclose(speeds, np.interp(times, knots, [0.0, 310.3, 310.3, 520.7, 100.1]), atol=1e-12 * 520.7)
+    assert profile.speed(4.0) == 100.1 and profile.speed(5.0) == 100.1 and profile.speed(-1.0) == 0.0
+    assert profile.acceleration(1.3) == (520.7 - 310.3) / (2.9 - 1.3)  # right-continuous at 1.3

@@ -254,6 +254,7 @@ def integrate_envelope(
     rtol: float = 1e-6,
     max_step: float | None = None,
     max_speed: float | None = None,
+    vectorised: tuple[Callable[[np.ndarray], np.ndarray], Callable[[np.ndarray], np.ndarray]] | None = None,
 ) -> EnvelopeRun:
     """Integrate the envelope system from t = 0 to ``breakpoints[-1]`` [s].
 
@@ -273,6 +274,11 @@ def integrate_envelope(
         Largest step [s].
     max_speed : float, optional
         Largest speed of the run [rad/s] (sets the refresh interval).
+    vectorised : (callable, callable), optional
+        ``speed`` and ``acceleration`` of arrays of times, elementwise the same numbers (e.g.
+        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.speeds_at` and
+        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.accelerations_at`): the steps
+        evaluate Ω at many times at once.
 
     Raises
     ------
@@ -295,14 +301,21 @@ def integrate_envelope(
         states[:, k_out] = z
         k_out += 1
 
-    def speeds_at(times: np.ndarray) -> np.ndarray:
-        return np.array([speed(x) for x in times])
+    if vectorised is not None:
+        speeds_at, accelerations_at = vectorised
+    else:
+
+        def speeds_at(times: np.ndarray) -> np.ndarray:
+            return np.array([speed(x) for x in times])
+
+        def accelerations_at(times: np.ndarray) -> np.ndarray:
+            return np.array([acceleration(x) for x in times])
 
     def drift_and_load(basis: _Basis, W: np.ndarray, times: np.ndarray) -> np.ndarray:
         """N without the frame rotation, V⁻¹ S [drift Z + load], for columns W (n, k) at times (k,)."""
         s = speeds_at(times)
         Z = (basis.V @ W) / S[:, None]
-        load = system.b[:, None] * (s * s - 1j * np.array([acceleration(x) for x in times]))
+        load = system.b[:, None] * (s * s - 1j * accelerations_at(times))
         return basis.Vinv @ (S[:, None] * (system.drift(s, basis.speed, Z) + load))
 
     def rotation(t0: float, mid: np.ndarray, tau: np.ndarray) -> np.ndarray:

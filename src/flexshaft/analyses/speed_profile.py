@@ -105,8 +105,10 @@ class SpeedProfile:
     def speed(self, t: float) -> float:
         """Ω(t) [rad/s]."""
         if self.speeds is not None:
+            if t >= self.duration:  # the table's last speed exactly (as speeds_at's interpolation)
+                return float(self.speeds[-1])
             k = self._segment(t)
-            return float(self.speeds[k] + self._slopes[k] * (min(max(t, 0.0), self.duration) - self._knots[k]))
+            return float(self.speeds[k] + self._slopes[k] * (max(t, 0.0) - self._knots[k]))
         assert self.speed_function is not None  # not a table: from_callable
         return float(self.speed_function(t))
 
@@ -116,6 +118,16 @@ class SpeedProfile:
         if self.speeds is not None:
             return np.interp(t, self._knots, self.speeds)
         return np.array([self.speed(x) for x in t.ravel()]).reshape(t.shape)
+
+    def accelerations_at(self, times) -> np.ndarray:
+        """dΩ/dt at many times [rad/s²] (vectorised for a table: the segment of each time as
+        :meth:`acceleration` takes it, right-continuous at a breakpoint)."""
+        t = np.asarray(times, dtype=float)
+        if self.speeds is not None:
+            knots = np.asarray(self._knots)
+            segment = np.clip(np.searchsorted(knots, t, side="right") - 1, 0, knots.size - 2)
+            return np.asarray(self._slopes)[segment]
+        return np.array([self.acceleration(x) for x in t.ravel()]).reshape(t.shape)
 
     def acceleration(self, t: float) -> float:
         """dΩ/dt [rad/s²] (of the segment containing t; right-continuous at a breakpoint)."""

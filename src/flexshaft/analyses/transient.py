@@ -434,6 +434,7 @@ def transient_response(
         rtol=rtol,
         max_step=max_step,
         max_speed=top,
+        vectorised=(profile.speeds_at, profile.accelerations_at),
     )
     Z = run.states
     speed = profile.speeds_at(T)
