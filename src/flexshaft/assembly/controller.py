@@ -210,8 +210,9 @@ class Controller:
 
     def derivative(self, s):
         """dC/ds at ``s`` (for Newton-type eigenvalue refinement)."""
-        num, den = np.poly1d(self.numerator), np.poly1d(self.denominator)
-        return (num.deriv()(s) * den(s) - num(s) * den.deriv()(s)) / den(s) ** 2
+        num, den = np.asarray(self.numerator, dtype=float), np.asarray(self.denominator, dtype=float)
+        d = np.polyval(den, s)
+        return (np.polyval(np.polyder(num), s) * d - np.polyval(num, s) * np.polyval(np.polyder(den), s)) / d**2
 
     def realization(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float]:
         """``(A, B, C, D, E)`` with ``C(s) = E s + D + C (sI − A)⁻¹ B``, minimal.
