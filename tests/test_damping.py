@@ -208,8 +208,11 @@ def test_boom_modes_have_damping_ratio_half_the_boom_loss_factor():
 
 
 def test_frequency_response_half_power_bandwidth_equals_the_modal_damping():
-    """Two analyses of one model agree on its damping: FRF bandwidth against modes()."""
-    design = baseline_design()
+    """Two analyses of one model agree on its damping: FRF bandwidth against modes(). The
+    baseline on 12 shaft and 8 boom elements (CPU budget, issue 23): both sides are the same
+    model's, its first boom mode and the neighbour 23 % above move by 3e-4 from the design's
+    mesh, and the width's bias stays 0.11 % (measured on both meshes)."""
+    design = with_overrides(baseline_design(), {"mesh.shaft_elements": 12, "mesh.boom_elements": 8})
     model = build_model(design)
     m = modes(model, 0.0, n_modes=1)
     f0 = m.eigenvalues[0].imag
