@@ -80,17 +80,26 @@ def test_response_strength_spinup_and_verdict(model, tmp_path):
     smap = spinup_map(model, [1e6, 1e7], [0.0, 500.0], speeds=np.linspace(50.0, model.speed, 20))
     ds = round_trip(smap, tmp_path)
     np.testing.assert_array_equal(ds.shaft_peak.values, smap.shaft_peak)
-    from dataclasses import replace
-
     from flexshaft.design import design_from_dict
-    from flexshaft.resolution import REPORT
+    from flexshaft.resolution import Resolution
     from flexshaft.verdict.assess import assess
 
-    # one envelope point (CPU budget, issue 23): the verdict's dataset is one row per check, the
-    # same checks whatever the number of points
+    # one envelope point on the smallest grids a resolution accepts (CPU budget, issue 23): the
+    # verdict's dataset is one row per check, the same checks whatever the points and grids; on
+    # these grids the whirl damping is not evaluated, so all three statuses are stored
     data = model.design.model_dump()
     data["envelope"]["points"] = data["envelope"]["points"][:1]
-    verdict = assess(design_from_dict(data), replace(REPORT, spinup_speeds=40, campbell_speeds=10)).verdict
+    smallest = Resolution(
+        "smallest",
+        spinup_speeds=3,
+        whirl_speeds=3,
+        campbell_speeds=0,
+        report_detail=False,
+        modes=4,
+        loop_peak_samples=1,
+    )
+    verdict = assess(design_from_dict(data), smallest).verdict
     ds = round_trip(verdict, tmp_path)
     assert list(ds.check.values) == [c.key for c in verdict.checks]
     assert list(decode(ds.status)) == [c.status.replace(" ", "_") for c in verdict.checks]
+    assert {"pass", "fail", "not_evaluated"} <= set(decode(ds.status))

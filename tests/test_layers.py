@@ -24,6 +24,7 @@ is still an arrow).
 from __future__ import annotations
 
 import ast
+import functools
 from collections import defaultdict
 from pathlib import Path
 
@@ -64,8 +65,10 @@ def module_name(path: Path) -> str:
     return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
 
 
+@functools.cache
 def imports() -> dict[str, set[tuple[str, tuple[str, ...]]]]:
-    """module -> {(imported module, names imported from it)}."""
+    """module -> {(imported module, names imported from it)}: the package parsed once per test
+    module (the three checks below read the same graph; none changes it)."""
     out: dict[str, set] = defaultdict(set)
     for path in ROOT.rglob("*.py"):
         name = module_name(path)
