@@ -18,7 +18,7 @@ speeds), the very numbers it computes with, once per point of the design's ``[en
 report's detail once). Its time is the sum of the parts of one point, each fitted to its measured
 CPU time (``benchmarks/size_estimate.py``) in the free DOFs ``F``: the projected spin-up scan
 (``n_s F`` and ``F²``), the whirl stability (per whirl speed, ``+ F``), the every-root check and
-the bearing loops (``F``; a dense eigen-solution of the whole model at three speeds when an
+the bearing loops (``F`` and ``F²``; a dense eigen-solution of the whole model at three speeds when an
 actuator has controller states or a remote sensor), the torsional modes (a dense complex
 eigen-solution, ``(2 × twist DOFs)³``) and the rest (lateral modes, strength, buckling,
 thermal, ``F``); controller states add the cube of the states to every eigen-solution.
@@ -34,10 +34,10 @@ analysis of the assessment); ``flexshaft check`` and ``flexshaft run`` the ``run
 (the report's assessment and the thesis studies).
 
 The time constants were measured on the development machine (2 shared cores, one BLAS
-thread, 2026-12-03) and err on the slow side: the estimate is 1.2 to 1.7 times the measured CPU
-time of an assessment or a run of the tuned and baseline designs from 36 to 400 shaft elements
-(docs/limits.md, section 5). They give the order of magnitude, not a promise. The tuned design
-estimates 0.03 GB and about 21 s for ``run`` (measured: 17 s of CPU).
+thread, 2026-12-03) and err on the slow side: the estimate is 1.2 to 2.3 times the measured CPU
+time of an assessment, a run or a model of the tuned and baseline designs from 36 to 400 shaft
+elements (docs/limits.md, section 5). They give the order of magnitude, not a promise. The tuned
+design estimates 0.03 GB and about 25 s for ``run`` (measured: 17 s of CPU).
 """
 
 from __future__ import annotations
@@ -102,16 +102,18 @@ _BANDED_SOLVE = 2e-8  # banded LU, per DOF × half-bandwidth²
 _BANDED_FIXED = 2e-4
 
 # An assessment's parts, per envelope point [s] (fitted 2026-12-03 to benchmarks/size_estimate.py
-# on the tuned design at 343 to 3,730 free DOFs, with 20-30 % to spare; docs/limits.md, section 5).
+# on the tuned and baseline designs at 343 to 3,730 free DOFs, with 20 % or more to spare;
+# docs/limits.md, section 5).
 # F is the free DOFs, n_s the spin-up speeds, n_w the whirl speeds.
 _SPINUP_PER_SPEED_DOF = 1e-6  # projected spin-up scan: per speed and free DOF (× n_s F)
 _SPINUP_PER_DOF2 = 1.2e-7  # its bases, refinement and full checks (× F², measured F^1.4)
 _STABILITY_FIXED = 0.04  # whirl stability: its basis (+ per free DOF)
 _STABILITY_PER_DOF = 7e-5
-_WHIRL_SPEED = 3e-3  # one whirl speed on the reduced model (+ per free DOF)
+_WHIRL_SPEED = 1e-2  # one whirl speed on the reduced model (+ per free DOF; 3-13 ms measured)
 _WHIRL_SPEED_PER_DOF = 1.5e-6
 _ROOTS_FIXED = 0.1  # the passive every-root check and the bearing loops (+ per free DOF)
 _ROOTS_PER_DOF = 1.2e-3
+_ROOTS_PER_DOF2 = 3.5e-7  # (× F²: the baseline's loops took 8.1 s a point at 3,730 free DOFs, the tuned 3.4 s)
 _TORSION_FIXED = 0.02  # torsional modes: a dense complex eigen-solution of 2 × twist DOFs
 _TORSION_CUBIC = 3.5e-9  # (× (2 twist DOFs)³)
 _POINT_FIXED = 0.2  # lateral modes, strength, buckling, thermal (+ per free DOF)
@@ -121,7 +123,7 @@ _DETAIL_PER_DOF = 3e-4
 # ``flexshaft run``'s thesis studies and report (imports, figures, files), on top of its assessment:
 _RUN_FIXED = 6.0
 _STUDY_SPEED = 9e-3  # per whirl speed of a thesis study (+ per free DOF)
-_STUDY_SPEED_PER_DOF = 1.1e-5
+_STUDY_SPEED_PER_DOF = 1.6e-5
 
 
 def eigen_seconds(states: int) -> float:
@@ -299,10 +301,12 @@ def problem_size(
         time["spin-up scan"] = points * spinup
         time["whirl stability"] = points * (_STABILITY_FIXED + _STABILITY_PER_DOF * free + whirl_speeds * per_whirl)
         if passive:
-            roots = _ROOTS_FIXED + _ROOTS_PER_DOF * free
+            roots = _ROOTS_FIXED + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
         else:  # the exact check: a dense eigen-solution of the whole model at three speeds
             full_states = 2 * free + 2 * states
-            roots = 3 * (_EIG_FIXED + 3 * _EIG_CUBIC * full_states**3) + _ROOTS_PER_DOF * free
+            roots = (
+                3 * (_EIG_FIXED + 3 * _EIG_CUBIC * full_states**3) + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
+            )
             memory["every-root state matrix"] = 3 * 16.0 * full_states**2
         time["every-root check and loops"] = points * roots
         time["torsional modes"] = points * (_TORSION_FIXED + _TORSION_CUBIC * (2.0 * twist) ** 3)
