@@ -13,12 +13,17 @@ bays and load cases. From them it estimates the largest arrays and the run time:
 * the spin-up responses of an assessment: ``16 · DOFs · load cases · speeds`` bytes.
 
 An assessment (:func:`flexshaft.verdict.assess.assess`) is counted from the grids of its
-:class:`~flexshaft.resolution.Resolution` (spin-up, Campbell and whirl speeds, modes), the very
-numbers it computes with, once per point of the design's ``[envelope]`` (the report's extras
-once); each point adds the every-root check (a dense eigen-solution of the full model at three
-speeds when an actuator has controller states or a remote sensor) and the loops of its active
-bearings (about 600 harmonic solves); ``flexshaft run`` adds the thesis studies to the report's
-assessment.
+:class:`~flexshaft.resolution.Resolution` (spin-up and whirl speeds, the report's Campbell
+speeds), the very numbers it computes with, once per point of the design's ``[envelope]`` (the
+report's detail once). Its time is the sum of the parts of one point, each fitted to its measured
+CPU time (``benchmarks/size_estimate.py``) in the free DOFs ``F``: the projected spin-up scan
+(``n_s F`` and ``F²``), the whirl stability (per whirl speed, ``+ F``), the every-root check and
+the bearing loops (``F`` and ``F²``; a dense eigen-solution of the whole model at three speeds when an
+actuator has controller states or a remote sensor), the torsional modes (a dense complex
+eigen-solution, ``(2 × twist DOFs)³``) and the rest (lateral modes, strength, buckling,
+thermal, ``F``); controller states add the cube of the states to every eigen-solution.
+``flexshaft run`` adds the thesis studies (their whirl speeds, ``+ F``) and the report's
+figures and files to the report's assessment.
 
 :func:`check_problem_size` raises a :class:`~flexshaft.design.DesignError` naming the fields to
 change when an estimate exceeds its hard cap (:data:`HARD_MEMORY_BYTES`,
@@ -29,8 +34,10 @@ analysis of the assessment); ``flexshaft check`` and ``flexshaft run`` the ``run
 (the report's assessment and the thesis studies).
 
 The time constants were measured on the development machine (2 shared cores, one BLAS
-thread): they give the order of magnitude, not a promise. The baseline estimates 0.03 GB and
-about 20 s for ``run`` (measured: 22 s).
+thread, 2026-12-03) and err on the slow side: the estimate is 1.2 to 2.3 times the measured CPU
+time of an assessment, a run or a model of the tuned and baseline designs from 36 to 400 shaft
+elements (docs/limits.md, section 5). They give the order of magnitude, not a promise. The tuned
+design estimates 0.03 GB and about 25 s for ``run`` (measured: 17 s of CPU).
 """
 
 from __future__ import annotations
@@ -73,10 +80,6 @@ RUN_BASIS = 60
 #: active bearings the gain map's 3 K_p × 4 K_d.
 THESIS_WHIRL_SOLVES = 6
 THESIS_GAIN_MAP_SOLVES = 12
-#: Modal bases built by the run (the design's, the thesis shafts', one per K_p row, ...).
-RUN_BASES = 10
-#: Harmonic solves besides the spin-up scan (critical-speed refinement, the thesis studies).
-EXTRA_HARMONIC_SOLVES = 600
 #: Most imbalance bays the ``"worst"`` placement enumerates (2^(bays−1) = 512 load cases).
 MAX_WORST_BAYS = 10
 #: Estimated memory above which a design is refused / warned about [bytes].
@@ -97,6 +100,30 @@ _DENSE_BASIS_CUBIC = 5e-10  # dense generalised symmetric eigen-solve, per DOF³
 _SPARSE_BASIS_LINEAR = 1.6e-7  # shift-invert Lanczos, per DOF
 _BANDED_SOLVE = 2e-8  # banded LU, per DOF × half-bandwidth²
 _BANDED_FIXED = 2e-4
+
+# An assessment's parts, per envelope point [s] (fitted 2026-12-03 to benchmarks/size_estimate.py
+# on the tuned and baseline designs at 343 to 3,730 free DOFs, with 20 % or more to spare;
+# docs/limits.md, section 5).
+# F is the free DOFs, n_s the spin-up speeds, n_w the whirl speeds.
+_SPINUP_PER_SPEED_DOF = 1e-6  # projected spin-up scan: per speed and free DOF (× n_s F)
+_SPINUP_PER_DOF2 = 1.2e-7  # its bases, refinement and full checks (× F², measured F^1.4)
+_STABILITY_FIXED = 0.04  # whirl stability: its basis (+ per free DOF)
+_STABILITY_PER_DOF = 7e-5
+_WHIRL_SPEED = 1e-2  # one whirl speed on the reduced model (+ per free DOF; 3-13 ms measured)
+_WHIRL_SPEED_PER_DOF = 1.5e-6
+_ROOTS_FIXED = 0.1  # the passive every-root check and the bearing loops (+ per free DOF)
+_ROOTS_PER_DOF = 1.2e-3
+_ROOTS_PER_DOF2 = 3.5e-7  # (× F²: the baseline's loops took 8.1 s a point at 3,730 free DOFs, the tuned 3.4 s)
+_TORSION_FIXED = 0.02  # torsional modes: a dense complex eigen-solution of 2 × twist DOFs
+_TORSION_CUBIC = 3.5e-9  # (× (2 twist DOFs)³)
+_POINT_FIXED = 0.2  # lateral modes, strength, buckling, thermal (+ per free DOF)
+_POINT_PER_DOF = 1.3e-4
+_DETAIL_FIXED = 0.75  # the report's detail at the governing point (+ per free DOF, + Campbell)
+_DETAIL_PER_DOF = 3e-4
+# ``flexshaft run``'s thesis studies and report (imports, figures, files), on top of its assessment:
+_RUN_FIXED = 6.0
+_STUDY_SPEED = 9e-3  # per whirl speed of a thesis study (+ per free DOF)
+_STUDY_SPEED_PER_DOF = 1.6e-5
 
 
 def eigen_seconds(states: int) -> float:
@@ -243,7 +270,7 @@ def problem_size(
     n_states = 2 * nb + states
 
     memory = {"matrices": 8 * 12.0 * 40 * dofs}
-    time = {"assembly": 1e-4 * dofs + 0.05}
+    time = {"assembly": 2e-5 * dofs + 0.03}
     if dense:
         memory["modal basis (dense)"] = 5 * 8.0 * free**2
         basis_time = _DENSE_BASIS_CUBIC * free**3 + 0.01
@@ -252,7 +279,6 @@ def problem_size(
         basis_time = _SPARSE_BASIS_LINEAR * free + 0.05
     memory["state matrices"] = 4 * 16.0 * n_states**2
     speed_time = eigen_seconds(n_states)
-    solve_time = harmonic_seconds(free, bool(boom_x.size))
     n_speeds = campbell_speeds = whirl_speeds = 0
     if analysis == "model":
         time["modal basis"] = basis_time
@@ -263,29 +289,38 @@ def problem_size(
             resolution.campbell_speeds,
             resolution.whirl_speeds,
         )
-        # the modes at the operating speed (and at rest for the report), the Campbell diagram and
-        # the whirl stability of the assessment
-        eigen_speeds = (2 if resolution.report_detail else 1) + campbell_speeds + whirl_speeds
-        if analysis == "run":
-            pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
-            eigen_speeds += (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and pd_only else 0)) * whirl_speeds
         memory["banded harmonic solver"] = 16.0 * free * (3 * half_band + 1) * 2
         memory["spin-up responses"] = 16.0 * dofs * cases * n_speeds * 2
         points = len(design.envelope.points) if design.envelope is not None else 1
-        # per point: the spin-up scan, the verdict's eigen-solutions, the every-root check and loops
-        per_point_eigen = 1 + whirl_speeds
-        full_states = 2 * free + 2 * states
         passive = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
-        roots = 3 * (_EIG_FIXED + (speed_time if passive else 3 * _EIG_CUBIC * full_states**3))
-        loops = 600 * solve_time if active else 0.0
-        time["modal bases"] = (RUN_BASES + 2 * (points - 1)) * basis_time
-        time["eigen-solutions"] = (eigen_speeds + (points - 1) * per_point_eigen) * speed_time
-        time["every-root check and loops"] = points * (roots + loops)
-        time["harmonic solves"] = (points * n_speeds + EXTRA_HARMONIC_SOLVES) * solve_time + 16e-9 * dofs * cases * (
-            points * n_speeds
-        )
-        if not passive:
+        # per whirl speed: a reduced eigen-solution; controller states add to its dense state matrix
+        per_whirl = _WHIRL_SPEED + _WHIRL_SPEED_PER_DOF * free + _EIG_CUBIC * (n_states**3 - (2 * nb) ** 3)
+        twist = shaft_x.size + len(drive_extra_dofs(design))  # the torsional model's DOFs
+        spinup = _SPINUP_PER_SPEED_DOF * n_speeds * free + _SPINUP_PER_DOF2 * free**2
+        spinup += 16e-9 * dofs * (cases - 1) * n_speeds  # the other load cases' responses
+        time["spin-up scan"] = points * spinup
+        time["whirl stability"] = points * (_STABILITY_FIXED + _STABILITY_PER_DOF * free + whirl_speeds * per_whirl)
+        if passive:
+            roots = _ROOTS_FIXED + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
+        else:  # the exact check: a dense eigen-solution of the whole model at three speeds
+            full_states = 2 * free + 2 * states
+            roots = (
+                3 * (_EIG_FIXED + 3 * _EIG_CUBIC * full_states**3) + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
+            )
             memory["every-root state matrix"] = 3 * 16.0 * full_states**2
+        time["every-root check and loops"] = points * roots
+        time["torsional modes"] = points * (_TORSION_FIXED + _TORSION_CUBIC * (2.0 * twist) ** 3)
+        time["modes, strength, buckling, thermal"] = points * (_POINT_FIXED + _POINT_PER_DOF * free)
+        if resolution.report_detail:
+            time["report detail"] = (
+                _DETAIL_FIXED + _DETAIL_PER_DOF * free + campbell_speeds * per_whirl + 2 * basis_time
+            )
+        if analysis == "run":
+            pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
+            study_speeds = (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and pd_only else 0)) * whirl_speeds
+            time["thesis studies and report"] = _RUN_FIXED + study_speeds * (
+                _STUDY_SPEED + _STUDY_SPEED_PER_DOF * free + _EIG_CUBIC * (n_states**3 - (2 * nb) ** 3)
+            )
     return ProblemSize(
         analysis,
         int(shaft_x.size),
