@@ -248,6 +248,7 @@ def test_twist_and_axial_modes_are_labelled_and_make_no_critical_speed():
     assert set(m.whirl[~lateral]) == {"none"}
     speeds = np.linspace(0.0, 1.3 * m.eigenvalues[m.kind != "lateral"].imag.max(), 40)
     c = campbell(model, speeds, n_modes=14)
+    assert len(c.critical_speeds) == 10  # the lateral criticals in range (the same on 80 speeds)
     for crit in c.critical_speeds:
         k = int(np.argmin(np.abs(speeds - crit.speed)))
         assert c.kind[k, crit.mode] == "lateral"

@@ -255,23 +255,23 @@ def test_cli_json_and_the_blocking_table_when_nothing_passes(tmp_path):
     """The small rotor gives no max_spinup_deflection: that check is never evaluated, so no
     design passes and the table names it as what blocks every candidate. A budget of one
     population, 2 designs (CPU budget, issue 23: the counts do not depend on the generations,
-    which tests/test_optimize.py searches). ``--json`` reruns the same folder: the finished run
-    is read, not recomputed (``computed`` 0), and must report the same 2 evaluations as the
-    run that computed them."""
+    which tests/test_optimize.py searches). The ``--json`` run computes them: its stdout holds
+    the JSON alone while the evaluations run (``computed`` 2). The text run then reads the same
+    folder (nothing recomputed) and prints the table of what blocks the 2 designs."""
     design = tmp_path / "rotor.toml"
     design.write_text(SMALL, encoding="utf-8")
     args = ["optimize", str(design), "--budget", "2", "--pop-size", "2", "--seed", "3", "--fidelity", "screening"]
     args += ["--var", "bearings[1].kd=100:400"]
+    as_json = runner.invoke(app, [*args, "--out", str(tmp_path / "a"), "--json"])
+    assert as_json.exit_code == 3
+    data = json.loads(as_json.stdout)  # stdout holds the JSON alone
+    assert data["computed"] == 2  # both evaluations computed by this run
     text = runner.invoke(app, [*args, "--out", str(tmp_path / "a")])
     assert text.exit_code == 3, text.output
     assert "no design passes: what blocks the 2 evaluated designs" in text.stdout
     assert re.search(r"│ spinup_deflection\s+│\s+2 │", text.stdout), text.stdout
-    as_json = runner.invoke(app, [*args, "--out", str(tmp_path / "a"), "--json"])
-    assert as_json.exit_code == 3
-    data = json.loads(as_json.stdout)  # stdout holds the JSON alone
     assert [o["output"] for o in data["objectives"]] == ["driveline_mass", "min_margin"]
     assert data["evaluations"] == 2 and data["feasible"] == 0 and data["pareto"] == [] and not data["passed"]
-    assert data["computed"] == 0  # every evaluation read from the folder's evaluations.jsonl
     blocking = {r["check"]: r for r in data["blocking_checks"]}
     assert blocking["spinup_deflection"] == {
         "check": "spinup_deflection",

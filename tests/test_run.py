@@ -198,20 +198,21 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
     my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
     folder (the fixture's is shared), as a user would (subprocesses, the whole design with its
-    envelope at the report's resolution). Both runs of ``my.toml`` skip the thesis studies
-    (``--studies none``; CPU budget, issue 23: about 7 s of CPU each with them): what this test
-    checks is the output folder's ownership (its marker: the command, the design's source and
-    fingerprint, whether it is complete), which does not depend on them. The quick start above
-    runs them, and a rerun after an edit that replaces a subfolder the first run wrote (the
-    studies' ``studies/`` here, a study's ``chunks/`` there) is
-    tests/test_rerun.py's ``test_an_edited_design_replaces_its_own_results``.
+    envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
+    has it (with the thesis studies), so the rerun after the edit meets a folder holding the
+    studies' files as a user's does, and must replace them (the first run's ``studies/`` folder
+    goes); the rerun skips them (``--studies none``, CPU budget, issue 23: about 7 s of CPU):
+    what it checks is the output folder's ownership (its marker: the command, the design's
+    source and fingerprint, whether it is complete) and that the edited design's results
+    replace the first run's.
     It is also tests/test_rerun.py's rerun of ``run`` after an edit (the edited wall's mass)."""
     shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
     with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
         assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
+    first = _flexshaft(tmp_path, "run", "my.toml")
     assert first.returncode == 0, first.stderr
+    assert (tmp_path / "my-results" / "studies").is_dir()
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
     assert WALL.search((tmp_path / "my.toml").read_text(encoding="utf-8")).group() == "wall_thickness = 0.003"
@@ -219,6 +220,7 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
     assert second.returncode == 0, second.stderr
     assert "--force" not in second.stderr
+    assert not (tmp_path / "my-results" / "studies").exists()  # the first run's studies do not linger
     # the folder holds the edited design's results: a 0.0035 m wall instead of 0.003 m weighs
     # 7/6 as much (the tube's mass is proportional to its wall at a fixed outer diameter, up to
     # the mean-radius change: within 3 %)
