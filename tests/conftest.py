@@ -223,6 +223,26 @@ def _run_design() -> str:
 RUN_DESIGN = _run_design()
 
 
+def _smallest_grids():
+    from flexshaft.resolution import Resolution
+
+    return Resolution(
+        "smallest",
+        spinup_speeds=3,
+        whirl_speeds=3,
+        campbell_speeds=0,
+        report_detail=False,
+        modes=4,
+        loop_peak_samples=1,
+    )
+
+
+#: The smallest grids a :class:`~flexshaft.resolution.Resolution` accepts, for the tests whose
+#: checks read none of them (static loads and strength, the verdict's bookkeeping): CPU budget,
+#: issue 23 (tests/test_mutation_gaps.py, tests/test_verdict.py, tests/test_datasets.py).
+SMALLEST = _smallest_grids()
+
+
 @pytest.fixture(scope="session")
 def small_run(tmp_path_factory) -> dict:
     """``flexshaft run design.toml --studies none --json --out results`` of :data:`RUN_DESIGN`,

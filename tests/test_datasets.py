@@ -9,6 +9,7 @@ arrays, every data variable has a ``long_name``, coded labels decode through
 import numpy as np
 import pytest
 import xarray as xr
+from conftest import SMALLEST
 
 from flexshaft.analyses import campbell, imbalance_response, modes, stability
 from flexshaft.analyses.shaft_strength import shaft_safety_factor, static_load_parts
@@ -81,7 +82,6 @@ def test_response_strength_spinup_and_verdict(model, tmp_path):
     ds = round_trip(smap, tmp_path)
     np.testing.assert_array_equal(ds.shaft_peak.values, smap.shaft_peak)
     from flexshaft.design import design_from_dict
-    from flexshaft.resolution import Resolution
     from flexshaft.verdict.assess import assess
 
     # one envelope point on the smallest grids a resolution accepts (CPU budget, issue 23): the
@@ -89,16 +89,7 @@ def test_response_strength_spinup_and_verdict(model, tmp_path):
     # these grids the whirl damping is not evaluated, so all three statuses are stored
     data = model.design.model_dump()
     data["envelope"]["points"] = data["envelope"]["points"][:1]
-    smallest = Resolution(
-        "smallest",
-        spinup_speeds=3,
-        whirl_speeds=3,
-        campbell_speeds=0,
-        report_detail=False,
-        modes=4,
-        loop_peak_samples=1,
-    )
-    verdict = assess(design_from_dict(data), smallest).verdict
+    verdict = assess(design_from_dict(data), SMALLEST).verdict
     ds = round_trip(verdict, tmp_path)
     assert list(ds.check.values) == [c.key for c in verdict.checks]
     assert list(decode(ds.status)) == [c.status.replace(" ", "_") for c in verdict.checks]

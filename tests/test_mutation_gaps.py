@@ -29,6 +29,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import SMALLEST
 from rotors import K_SHAFT, M_DISK, WN, jeffcott
 from test_loop_robustness import HALF_SPAN, KI, KS, PID, rotor_text
 
@@ -37,7 +38,6 @@ from flexshaft.analyses.root_stability import root_stability
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design, tuned_design, with_overrides
 from flexshaft.laminate import hoop_strain_free, ply_stresses
-from flexshaft.resolution import Resolution
 from flexshaft.strength import compressive_strength
 from flexshaft.thermal.matrix import MatrixTemperatureLaw
 from flexshaft.verdict.operating_point import analyse_point
@@ -53,18 +53,9 @@ def test_the_ply_check_carries_the_peak_torque_of_the_torsional_response():
     On a coarse mesh (18 shaft, 12 boom elements: the twist stays exact) and the smallest grids
     a resolution accepts (the torque factor and the static strength use none of them; CPU
     budget, issue 23)."""
-    smallest = Resolution(
-        "smallest",
-        spinup_speeds=3,
-        whirl_speeds=3,
-        campbell_speeds=0,
-        report_detail=False,
-        modes=4,
-        loop_peak_samples=1,
-    )
     coarse = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}
     design = with_overrides(tuned_design(), {"tail_rotor.polar_inertia": 0.1, **coarse})
-    p = analyse_point(design, smallest, detail=False)
+    p = analyse_point(design, SMALLEST, detail=False)
     model, strength = p.model, p.strength_total
     assert p.torque_factor > 1.2  # the test needs a factor well away from 1
     tube = next(seg.properties for seg in model.segments if seg.x_start <= strength.x <= seg.x_end)

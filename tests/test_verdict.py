@@ -12,6 +12,7 @@ import json
 import math
 
 import pytest
+from conftest import SMALLEST
 
 from flexshaft.analyses.criticals import LateralCritical
 from flexshaft.design import DesignError, baseline_design, baseline_text, loads_design
@@ -403,27 +404,17 @@ def test_static_actuator_force_of_an_integrating_bearing_is_its_reaction():
     import numpy as np
 
     from flexshaft.design import tuned_design, with_overrides
-    from flexshaft.resolution import Resolution
     from flexshaft.verdict.assess import assess
 
-    smallest = Resolution(
-        "smallest",
-        spinup_speeds=3,
-        whirl_speeds=3,
-        campbell_speeds=0,
-        report_detail=False,
-        modes=4,
-        loop_peak_samples=1,
-    )
     coarse = {"mesh.shaft_elements": 10, "mesh.boom_elements": 6}
     # the nominal point: the envelope adds nothing here
     tuned = with_overrides(tuned_design(), {"envelope": None, **coarse})
-    pd = assess(tuned, smallest)
+    pd = assess(tuned, SMALLEST)
     for a, ev in zip(pd.model.actuators, pd.evidence.actuators):
         offset = float(np.hypot(*np.real(a.lateral_rows @ pd.static_displacement)))
         assert ev.static_force == pytest.approx(abs(a.law(0j)) * offset, rel=1e-9)
     pid = with_overrides(tuned, {"bearings[1].integral_gain": 2.0e6, "bearings[2].integral_gain": 2.0e6})
-    res = assess(pid, smallest)
+    res = assess(pid, SMALLEST)
     evidence = res.evidence.actuators
     for ev in evidence:
         reaction = res.bearing_reactions[ev.name].static_lateral
