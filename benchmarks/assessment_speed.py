@@ -21,7 +21,6 @@ its ``src/`` is put first on PYTHONPATH. Without ``--reference`` only this check
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 from pathlib import Path
@@ -100,21 +99,14 @@ def compare_verdicts(ours: dict, theirs: dict, tolerance: float = 1e-6) -> bool:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reference", type=Path, help="another flexshaft source tree to compare with")
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
+    parser = bu.paired_parser(__doc__.splitlines()[0], repeats=5)
     parser.add_argument("--report", action="store_true", help="also time the REPORT resolution")
     parser.add_argument("--verdicts", action="store_true", help="compare the embedded designs' verdicts")
     parser.add_argument("--tolerance", type=float, default=1e-6, help="largest relative difference of a value")
-    parser.add_argument("--blas-threads", type=int, default=1)
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
     trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, int(args.report))
-    info = bu.machine_info()
-    print(f"assessment speed, tuned design, {info.get('date', '')} commit {info.get('git_commit', '?')}")
-    load = info.get("load_average_1_5_15")
-    print(f"  {info.get('cpu', '')}, load {load}, BLAS threads {args.blas_threads}")
+    bu.print_heading("assessment speed, tuned design", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm repeats per tree")
     medians: dict[str, dict[str, float]] = {}
     for name, results in runs.items():

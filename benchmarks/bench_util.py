@@ -5,6 +5,7 @@ Pure Python (no numpy, no flexshaft, no ross) so that the ROSS interpreters impo
 
 from __future__ import annotations
 
+import argparse
 import datetime
 import json
 import os
@@ -14,6 +15,7 @@ import statistics
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 __all__ = [
     "THREAD_VARS",
@@ -113,6 +115,28 @@ def paired_runs(checkout, reference, rounds: int, job: str, *args) -> tuple[dict
         for name, path in trees.items():
             runs[name].append(run_in_tree(path, job, *args))
     return trees, runs
+
+
+def paired_parser(
+    description: str, repeats: int, repeats_help: str = "warm calls per round"
+) -> argparse.ArgumentParser:
+    """The options of a benchmark paired against a reference tree (:func:`paired_runs`):
+    ``--reference``, ``--repeats``, ``--rounds`` and ``--blas-threads``; add the script's own."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--reference", type=Path, help="another flexshaft source tree to compare with")
+    parser.add_argument("--repeats", type=int, default=repeats, help=repeats_help)
+    parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
+    parser.add_argument("--blas-threads", type=int, default=1)
+    return parser
+
+
+def print_heading(title: str, blas_threads: int) -> dict:
+    """Print a paired benchmark's first two lines (what, when, which commit; the machine, its
+    load and the BLAS threads) and return :func:`machine_info`."""
+    info = machine_info()
+    print(f"{title}, {info.get('date', '')} commit {info.get('git_commit', '?')}")
+    print(f"  {info.get('cpu', '')}, load {info.get('load_average_1_5_15')}, BLAS threads {blas_threads}")
+    return info
 
 
 def reexec_with_threads(threads: int, script: str) -> None:

@@ -16,7 +16,6 @@ frequency (a golden-section search to 1e-6 in ln ω on either side).
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 from pathlib import Path
@@ -78,18 +77,10 @@ print(json.dumps(out))
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reference", type=Path, help="another flexshaft source tree to compare with")
-    parser.add_argument("--repeats", type=int, default=7, help="warm calls per round")
-    parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
-    parser.add_argument("--blas-threads", type=int, default=1)
-    args = parser.parse_args()
+    args = bu.paired_parser(__doc__.splitlines()[0], repeats=7).parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
     trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
-    info = bu.machine_info()
-    when = f"{info.get('date', '')} commit {info.get('git_commit', '?')}"
-    print(f"bearing loops, tuned design at its operating point, {when}")
-    print(f"  {info.get('cpu', '')}, load {info.get('load_average_1_5_15')}, BLAS threads {args.blas_threads}")
+    bu.print_heading("bearing loops, tuned design at its operating point", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm calls per tree")
     medians: dict[str, dict[str, float]] = {}
     for name, results in runs.items():

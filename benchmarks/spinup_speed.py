@@ -16,7 +16,6 @@ tolerance is 1e-7, tests/test_spinup_projection.py).
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 from pathlib import Path
@@ -106,18 +105,10 @@ def _accuracy(fast: dict, full: dict) -> str:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reference", type=Path, help="another flexshaft source tree to compare with")
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--rounds", type=int, default=2, help="alternating runs of each tree")
-    parser.add_argument("--blas-threads", type=int, default=1)
-    args = parser.parse_args()
+    args = bu.paired_parser(__doc__.splitlines()[0], repeats=5).parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
     trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
-    info = bu.machine_info()
-    date, commit = info.get("date", ""), info.get("git_commit", "?")
-    print(f"spin-up scan + critical speeds, tuned design at one point, {date} commit {commit}")
-    print(f"  {info.get('cpu', '')}, load {info.get('load_average_1_5_15')}, BLAS threads {args.blas_threads}")
+    bu.print_heading("spin-up scan + critical speeds, tuned design at one point", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm repeats per tree; CPU medians [ms]; banded solves per run")
     print(f"  {'tree / scan':34s} {'spin-up':>8s} {'criticals':>10s} {'total':>8s}   solves (scan + peaks)")
     totals: dict[str, float] = {}
