@@ -245,8 +245,8 @@ class EnvelopeRun:
 
 def integrate_envelope(
     system: EnvelopeSystem,
-    speed: Callable[[float], float],
-    acceleration: Callable[[float], float],
+    speeds_at: Callable[[np.ndarray], np.ndarray],
+    accelerations_at: Callable[[np.ndarray], np.ndarray],
     breakpoints: np.ndarray,
     initial: np.ndarray,
     output_times: np.ndarray,
@@ -254,14 +254,16 @@ def integrate_envelope(
     rtol: float = 1e-6,
     max_step: float | None = None,
     max_speed: float | None = None,
-    vectorised: tuple[Callable[[np.ndarray], np.ndarray], Callable[[np.ndarray], np.ndarray]] | None = None,
 ) -> EnvelopeRun:
     """Integrate the envelope system from t = 0 to ``breakpoints[-1]`` [s].
 
     Parameters
     ----------
-    speed, acceleration : callable
-        Ω(t) [rad/s] and dΩ/dt [rad/s²].
+    speeds_at, accelerations_at : callable
+        Ω(t) [rad/s] and dΩ/dt [rad/s²] at an array of times, elementwise (e.g.
+        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.speeds_at` and
+        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.accelerations_at`): the steps
+        evaluate Ω at many times at once.
     breakpoints : ndarray
         Increasing times [s] from 0 that the steps land on (Ω̇ may jump there).
     initial : ndarray
@@ -274,11 +276,6 @@ def integrate_envelope(
         Largest step [s].
     max_speed : float, optional
         Largest speed of the run [rad/s] (sets the refresh interval).
-    vectorised : (callable, callable), optional
-        ``speed`` and ``acceleration`` of arrays of times, elementwise the same numbers (e.g.
-        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.speeds_at` and
-        :meth:`~flexshaft.analyses.speed_profile.SpeedProfile.accelerations_at`): the steps
-        evaluate Ω at many times at once.
 
     Raises
     ------
@@ -289,7 +286,11 @@ def integrate_envelope(
         unstable at its speeds), or the response overflows.
     """
     duration = float(breakpoints[-1])
-    top = max(max_speed if max_speed is not None else max(speed(t) for t in np.linspace(0, duration, 257)), 1.0)
+
+    def speed(t: float) -> float:
+        return float(speeds_at(np.array([t]))[0])
+
+    top = max(max_speed if max_speed is not None else float(np.max(speeds_at(np.linspace(0, duration, 257)))), 1.0)
     refresh_every = REFRESH_SPEED_FRACTION * top
     max_step = duration / 50 if max_step is None else float(max_step)
     S = system.scale
@@ -300,16 +301,6 @@ def integrate_envelope(
     while k_out < outputs.size and outputs[k_out] <= 0.0:
         states[:, k_out] = z
         k_out += 1
-
-    if vectorised is not None:
-        speeds_at, accelerations_at = vectorised
-    else:
-
-        def speeds_at(times: np.ndarray) -> np.ndarray:
-            return np.array([speed(x) for x in times])
-
-        def accelerations_at(times: np.ndarray) -> np.ndarray:
-            return np.array([acceleration(x) for x in times])
 
     def drift_and_load(basis: _Basis, W: np.ndarray, times: np.ndarray) -> np.ndarray:
         """N without the frame rotation, V⁻¹ S [drift Z + load], for columns W (n, k) at times (k,)."""

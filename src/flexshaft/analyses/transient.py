@@ -426,15 +426,14 @@ def transient_response(
     T = np.linspace(0.0, duration, count)
     run = integrate_envelope(
         system,
-        profile.speed,
-        profile.acceleration,
+        profile.speeds_at,
+        profile.accelerations_at,
         profile.breakpoints,
         z,
         T,
         rtol=rtol,
         max_step=max_step,
         max_speed=top,
-        vectorised=(profile.speeds_at, profile.accelerations_at),
     )
     Z = run.states
     speed = profile.speeds_at(T)
