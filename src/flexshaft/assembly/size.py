@@ -294,7 +294,8 @@ def problem_size(
         points = len(design.envelope.points) if design.envelope is not None else 1
         passive = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
         # per whirl speed: a reduced eigen-solution; controller states add to its dense state matrix
-        per_whirl = _WHIRL_SPEED + _WHIRL_SPEED_PER_DOF * free + _EIG_CUBIC * (n_states**3 - (2 * nb) ** 3)
+        with_states = _EIG_CUBIC * (n_states**3 - (2 * nb) ** 3)
+        per_whirl = _WHIRL_SPEED + _WHIRL_SPEED_PER_DOF * free + with_states
         twist = shaft_x.size + len(drive_extra_dofs(design))  # the torsional model's DOFs
         spinup = _SPINUP_PER_SPEED_DOF * n_speeds * free + _SPINUP_PER_DOF2 * free**2
         spinup += 16e-9 * dofs * (cases - 1) * n_speeds  # the other load cases' responses
@@ -316,10 +317,10 @@ def problem_size(
                 _DETAIL_FIXED + _DETAIL_PER_DOF * free + campbell_speeds * per_whirl + 2 * basis_time
             )
         if analysis == "run":
-            pd_only = all(_controller_order(b) == 0 and b.sensor_offset == 0.0 for b in active)
-            study_speeds = (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and pd_only else 0)) * whirl_speeds
+            # the gain map of a PD-only (passive) design
+            study_speeds = (THESIS_WHIRL_SOLVES + (THESIS_GAIN_MAP_SOLVES if active and passive else 0)) * whirl_speeds
             time["thesis studies and report"] = _RUN_FIXED + study_speeds * (
-                _STUDY_SPEED + _STUDY_SPEED_PER_DOF * free + _EIG_CUBIC * (n_states**3 - (2 * nb) ** 3)
+                _STUDY_SPEED + _STUDY_SPEED_PER_DOF * free + with_states
             )
     return ProblemSize(
         analysis,
