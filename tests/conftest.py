@@ -6,6 +6,11 @@ suite's total, and every test above :data:`SLOW_CPU_SECONDS` that is not marked 
 Wall-clock ``--durations`` mixes in the waits of a shared machine; this is the budget the
 suite is held to (issue 23: at most 5 s of CPU a test unless marked ``slow`` with a reason,
 about 200 s in all).
+
+A result computed once for the whole session and read by several tests (:func:`shared_result`,
+:func:`charged_to_session`: a run of the CLI, an assessment) is listed on its own line,
+``shared: <name>``, and not in the CPU of the test that happened to ask for it first (which one
+that is depends on how pytest-xdist spreads the tests over its workers); the total counts it once.
 """
 
 from __future__ import annotations
@@ -29,6 +34,9 @@ for _name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS"):
 #: A test above this CPU time [s] must carry ``@pytest.mark.slow(reason=...)``.
 SLOW_CPU_SECONDS = 5.0
 _TIMES = pytest.StashKey["_CpuTimes"]()
+#: The session's shared computations finished in this process during the current test phase:
+#: (name, CPU seconds), moved to the phase's report by :func:`pytest_runtest_makereport`.
+_SHARED_CPU: list[tuple[str, float]] = []
 
 
 def _cpu_seconds() -> float:
@@ -52,12 +60,15 @@ class _CpuTimes:
 
     def __init__(self) -> None:
         self.times: dict[str, list] = {}
+        self.shared: dict[str, float] = {}
 
     def pytest_runtest_logreport(self, report) -> None:
         props = dict(report.user_properties)
         if "cpu_seconds" in props:
             entry = self.times.setdefault(report.nodeid, [0.0, props["marked_slow"]])
             entry[0] += props["cpu_seconds"]
+        for name, seconds in props.get("shared_cpu", ()):
+            self.shared[name] = self.shared.get(name, 0.0) + seconds
 
 
 def pytest_configure(config):
@@ -75,9 +86,12 @@ _PHASE_START = pytest.StashKey[float]()
 def pytest_runtest_makereport(item, call):
     # each phase's CPU travels with its report (xdist sends user_properties to the controller)
     seconds = _cpu_seconds() - item.stash.get(_PHASE_START, _cpu_seconds())
+    shared = list(_SHARED_CPU)  # the session's computations this phase did: counted apart
+    _SHARED_CPU.clear()
     outcome = yield
     report = outcome.get_result()
-    report.user_properties.append(("cpu_seconds", seconds))
+    report.user_properties.append(("cpu_seconds", seconds - sum(s for _, s in shared)))
+    report.user_properties.append(("shared_cpu", shared))
     report.user_properties.append(("marked_slow", item.get_closest_marker("slow") is not None))
 
 
@@ -104,12 +118,19 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config):
     times = {nodeid: tuple(entry) for nodeid, entry in config.stash[_TIMES].times.items()}
     if count is None or not times:
         return
-    ranked = sorted(times.items(), key=lambda kv: -kv[1][0])
+    shared = config.stash[_TIMES].shared
+    rows = [(nodeid, seconds, "  [slow]" if slow else "") for nodeid, (seconds, slow) in times.items()]
+    rows += [
+        (f"shared: {name}", seconds, "  [computed once, read by several tests]") for name, seconds in shared.items()
+    ]
+    rows.sort(key=lambda row: -row[1])
     write = terminalreporter.write_line
     terminalreporter.section("CPU time per test (setup + call + teardown, with waited-for children)")
-    for nodeid, (seconds, slow) in ranked[: max(count, 0) or len(ranked)]:
-        write(f"{seconds:8.2f}s  {nodeid}{'  [slow]' if slow else ''}")
-    write(f"{sum(s for s, _ in times.values()):8.2f}s  total over {len(times)} tests")
+    for name, seconds, tag in rows[: max(count, 0) or len(rows)]:
+        write(f"{seconds:8.2f}s  {name}{tag}")
+    total = sum(seconds for _, seconds, _ in rows)
+    write(f"{total:8.2f}s  total over {len(times)} tests and {len(shared)} shared results")
+    ranked = sorted(times.items(), key=lambda kv: -kv[1][0])
     over = [nodeid for nodeid, (seconds, slow) in ranked if seconds > SLOW_CPU_SECONDS and not slow]
     if over:
         write(f"above {SLOW_CPU_SECONDS:g} s CPU and not marked slow: " + ", ".join(over))
@@ -144,23 +165,34 @@ def session_lock(factory: pytest.TempPathFactory, name: str) -> Iterator[Path | 
 _SHARED: dict[str, Any] = {}
 
 
+def charged_to_session(name: str, compute: Callable[..., Any], *args: Any) -> Any:
+    """``compute(*args)``, its CPU time (with the child processes it waited for) reported as the
+    session's shared result ``name`` (``--cpu-durations``) instead of the asking test's."""
+    start = _cpu_seconds()
+    try:
+        return compute(*args)
+    finally:
+        _SHARED_CPU.append((name, _cpu_seconds() - start))
+
+
 def shared_result(factory: pytest.TempPathFactory, name: str, compute: Callable[[], Any]) -> Any:
     """``compute()`` once per test session, for every test module and xdist worker that asks for
     ``name``: a read-only result (an assessment, a comparison) that several modules check.
 
-    The worker that first asks computes it (its test's CPU time counts it) and leaves it pickled
+    The worker that first asks computes it (``shared: name`` in ``--cpu-durations``, not in its
+    test's CPU time: :func:`charged_to_session`) and leaves it pickled
     in the session's shared folder; the others load that file. Callers must not mutate it."""
     if name in _SHARED:
         return _SHARED[name]
     with session_lock(factory, name) as shared:
         if shared is None:
-            value = compute()
+            value = charged_to_session(name, compute)
         else:
             record = shared / f"{name}.pickle"
             if record.is_file():
                 value = pickle.loads(record.read_bytes())
             else:
-                value = compute()
+                value = charged_to_session(name, compute)
                 partial = record.with_suffix(".partial")
                 partial.write_bytes(pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL))
                 partial.replace(record)
@@ -271,7 +303,7 @@ def small_run(tmp_path_factory) -> dict:
     with session_lock(tmp_path_factory, "small_run") as shared:
         if shared is None:
             folder = tmp_path_factory.mktemp("small_run")
-            record = compute(folder)
+            record = charged_to_session("small_run", compute, folder)
         else:
             import json
 
@@ -283,7 +315,7 @@ def small_run(tmp_path_factory) -> dict:
 
                 shutil.rmtree(folder, ignore_errors=True)
                 folder.mkdir()
-                record = compute(folder)
+                record = charged_to_session("small_run", compute, folder)
                 saved.write_text(json.dumps(record), encoding="utf-8")
     assert record["exit_code"] == 0, record["output"]
     out = folder / "results"

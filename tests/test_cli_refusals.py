@@ -313,6 +313,10 @@ def test_check_still_passes_the_embedded_designs(tmp_path: Path) -> None:
 # run: the verdict side of deferred items 4 and 5 lands on another branch
 
 
+@pytest.mark.slow(
+    reason="a whole `flexshaft run` (report and figures) of the divergent design, coarse mesh, one "
+    "point: 4-5.5 s of CPU by machine; the bug lived in the run's evidence, past the assessment"
+)
 def test_run_of_a_divergent_bearing_is_not_an_internal_error(tmp_path: Path) -> None:
     """Was: ks = 2e7 on the baseline's amb_1 (a negative stiffness beyond kp: divergence), `run
     --studies none` exit 4 (the whirl evidence added 1 to a missing mode)."""

@@ -44,7 +44,6 @@ def tube_mass(density, outer, wall, length):
     return density * math.pi * (outer**2 - (outer - 2 * wall) ** 2) / 4 * length
 
 
-@pytest.mark.slow(reason="the module's comparison: both embedded designs at their four envelope points (~7 s of CPU)")
 def test_both_embedded_drivelines_pass_their_requirements(comparison):
     tuned, current = comparison.runs
     assert comparison.labels == ("tuned", "current")

@@ -95,10 +95,6 @@ def nominal_screening(tuned_nominal_screening):
     return tuned_nominal_screening
 
 
-@pytest.mark.slow(
-    reason="the first test of the session to ask computes the embedded comparison (tests/conftest.py, "
-    "about 11 s of CPU, once per session: tests/test_compare.py reads the same); about 0.6 s otherwise"
-)
 def test_a_design_without_an_envelope_is_judged_at_its_own_point(tuned_run, nominal_screening):
     a = nominal_screening
     design = a.design

@@ -134,8 +134,8 @@ def test_optimize_refuses_a_folder_of_user_files(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow(
-    reason="a `flexshaft run` with the report's figures, each loop and root of the bearings (~3 s of CPU), "
-    "and the session's first run of its design if it comes first (tests/conftest.py's small_run, ~3 s)"
+    reason="a `flexshaft run` of its own with the report's figures, each loop and root of the bearings "
+    "(3-5 s of CPU; the session's small_run it copies is counted apart, tests/conftest.py)"
 )
 def test_a_link_planted_in_ones_own_run_folder_is_replaced(small_run: dict, tmp_path: Path) -> None:
     """Was: `flexshaft run b.toml --studies none -o o; ln -sf ~/victim.txt o/results.json;

@@ -4,10 +4,16 @@ import re
 from pathlib import Path
 
 import matplotlib
+import pytest
 
 matplotlib.use("Agg")
 
 
+@pytest.mark.slow(
+    reason="the README's Python API snippet as typed: the tuned design judged at its four envelope "
+    "points at SCREENING, a 60-speed Campbell diagram, a 400-speed response and a 41-speed stability "
+    "(4-6 s of CPU, by machine); a smaller snippet would not be the README's"
+)
 def test_readme_api_snippet_runs(tmp_path, monkeypatch):
     import matplotlib.pyplot as plt
     from matplotlib.figure import Figure

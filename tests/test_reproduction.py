@@ -608,10 +608,6 @@ def test_shaft_self_heating_is_far_below_8_kelvin() -> None:
 # The verdicts of both embedded designs
 
 
-@pytest.mark.slow(
-    reason="the first test of a session to ask computes the comparison of both embedded designs at "
-    "their envelope points (~11 s of CPU, tests/conftest.py); the others read it"
-)
 def test_tuned_design_passes_every_requirement(embedded_comparison) -> None:
     """``verdict_row("tuned")``, the packaged tuned design assessed as ``flexshaft run`` does
     (all its envelope points, the report's resolution): the same assessment is the first run of

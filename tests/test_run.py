@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 from chromium_probe import chromium_or_skip, image_load_title
-from conftest import session_lock
+from conftest import charged_to_session, session_lock
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
@@ -55,12 +55,12 @@ def quick_start(tmp_path_factory) -> dict:
     reads it: tests/conftest.py's ``session_lock``)."""
     with session_lock(tmp_path_factory, "quick_start") as shared:
         if shared is None:
-            return _quick_start(tmp_path_factory.mktemp("quick_start"))
+            return charged_to_session("quick_start", _quick_start, tmp_path_factory.mktemp("quick_start"))
         folder, record = shared / "quick_start", shared / "quick_start.json"
         if not record.is_file():
             shutil.rmtree(folder, ignore_errors=True)
             folder.mkdir()
-            run = _quick_start(folder)
+            run = charged_to_session("quick_start", _quick_start, folder)
             record.write_text(json.dumps({"stdout": run["stdout"], "stderr": run["stderr"]}), encoding="utf-8")
     return {"folder": folder, "out": folder / "flexshaft-results", **json.loads(record.read_text(encoding="utf-8"))}
 
@@ -70,11 +70,6 @@ def baseline_run(quick_start):
     return quick_start["out"], quick_start["stdout"] + quick_start["stderr"]
 
 
-@pytest.mark.slow(
-    reason="the README's main command end to end: the full run of the default design at its envelope "
-    "points with its design studies and every figure (about 15 s of CPU, the command's own cost; the "
-    "module shares it)"
-)
 def test_run_writes_report_figures_and_numbers(baseline_run):
     out, output = baseline_run
     assert "report written to" in output
@@ -175,7 +170,6 @@ def test_thermal_command_reports_boom_and_shaft_temperatures():
     assert bad.exit_code == 2 and "Traceback" not in bad.output
 
 
-@pytest.mark.slow(reason="reads the module's quick start, a full run of the tuned design (~15 s of CPU if first)")
 def test_run_names_the_design_then_the_verdict(quick_start):
     """issue 28, point 2 (tests/test_default_design.py): ``flexshaft run``'s first line names the
     default design, the second is the verdict, the third the envelope's points."""
