@@ -27,7 +27,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import flexshaft.analyses.bearing_loops as bl
+import flexshaft.analyses.loop_margins as lm
 from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.root_stability import root_stability
 from flexshaft.assembly import build_model
@@ -120,7 +120,7 @@ def test_released_crossovers_keep_their_first_checked_point(monkeypatch):
             b.margins.phase_margin_frequency, rel=1e-7
         )  # the crossover of the smallest margin is refined
     assert released > 0
-    monkeypatch.setattr(bl, "RELEASE_SAFETY", np.inf)
+    monkeypatch.setattr(lm, "RELEASE_SAFETY", np.inf)
     for a, b in zip(bearing_loops(model, poles=poles, peak_samples=1), full):
         np.testing.assert_allclose(a.margins.gain_crossovers, b.margins.gain_crossovers, rtol=1e-7)
         np.testing.assert_allclose(a.margins.phase_crossovers, b.margins.phase_crossovers, rtol=1e-7)

@@ -19,7 +19,8 @@ import scipy.linalg as la
 from magnet_loops import default_loops, magnetic_tuned_model
 
 from flexshaft.analyses.banded import solver_for
-from flexshaft.analyses.bearing_loops import ISO_14839_ZONE_LIMITS, bearing_loops, loop_margins, sensitivity_zone
+from flexshaft.analyses.bearing_loops import bearing_loops
+from flexshaft.analyses.loop_margins import ISO_14839_ZONE_LIMITS, loop_margins, sensitivity_zone
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly import build_model
@@ -279,16 +280,16 @@ def test_the_pole_grid_finds_what_a_fine_grid_refined_everywhere_finds(monkeypat
     function, so the peak, its frequency and the phase margin agree to the refinement's
     tolerance (1e-8 relative; asserted 1e-7). The screening's grid (one point at each such pole,
     ``peak_samples=1``) is held to the same reference and tolerance."""
-    import flexshaft.analyses.bearing_loops as bl
+    import flexshaft.analyses.loop_margins as lm
 
     for kd in (560.0,):
         model = build_model(with_overrides(tuned_design(), {"bearings[1].kd": kd, "bearings[2].kd": kd}))
         poles = closed_loop_poles(model, model.speed)  # the default poles, computed once for both grids
         fasts = [bearing_loops(model, poles=poles), bearing_loops(model, poles=poles, peak_samples=1)]
         with monkeypatch.context() as patch:
-            patch.setattr(bl, "PEAK_WINDOW", 0.0)
-            patch.setattr(bl, "MARGIN_WINDOW_DEG", np.inf)
-            patch.setattr(bl, "MARGIN_WINDOW_DB", np.inf)
+            patch.setattr(lm, "PEAK_WINDOW", 0.0)
+            patch.setattr(lm, "MARGIN_WINDOW_DEG", np.inf)
+            patch.setattr(lm, "MARGIN_WINDOW_DB", np.inf)
             fine = bearing_loops(model, n_points=5000, poles=np.zeros(0))
         assert fasts[1][0].frequencies.size < fasts[0][0].frequencies.size < fine[0].frequencies.size / 5
         for a, b in ((a, b) for fast in fasts for a, b in zip(fast, fine)):

@@ -256,10 +256,10 @@ def lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.nda
 
 @dataclass(frozen=True)
 class RefinementTask:
-    """One refinement of :func:`_refinements`: a ``"peak"`` (its result (ln ω, |S|)) or a
-    ``"root"`` (its result (ω, L)) between grid points ``lo`` and ``hi``; ``start()`` makes
-    its steps; ``role`` says what a root is of (``"gain"``: |L| = 1, ``"phase"``: Im L = 0),
-    for the caller's release rule (:func:`projected_refinements`)."""
+    """One refinement of :func:`~flexshaft.analyses.loop_margins.refinements`: a ``"peak"``
+    (its result (ln ω, |S|)) or a ``"root"`` (its result (ω, L)) between grid points ``lo`` and
+    ``hi``; ``start()`` makes its steps; ``role`` says what a root is of (``"gain"``: |L| = 1,
+    ``"phase"``: Im L = 0), for the caller's release rule (:func:`projected_refinements`)."""
 
     kind: str
     lo: int
@@ -303,7 +303,7 @@ def projected_refinements(
     round's checks with every checked task, its frequency, the full model's L there, the
     projected model's first two derivatives there and whether the check passed; it returns which tasks that failed may
     keep that result instead of being refined further (the caller's rule: a crossover that
-    cannot set a margin, :mod:`flexshaft.analyses.bearing_loops`)."""
+    cannot set a margin, :func:`~flexshaft.analyses.loop_margins.release_rule`)."""
     results: list = [None] * len(tasks)
     active = np.arange(len(tasks))
     fallback: list[int] = []  # refined on the full model at the end
