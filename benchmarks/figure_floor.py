@@ -24,9 +24,9 @@ measured for the first time) and ``encode+`` (the report's PNG writer above one 
 A minimal figure (one Axes, one line, labels, title; matplotlib only) is measured the same way
 and printed last, outside the totals: the ratio no figure drawn with matplotlib's Axes gets
 below, whatever the figure code does.
-CPU times of this process (``process_time``), each part timed from a collected heap (no
-figure pays for another's garbage), the floor with the collector off; the shared VM's load moves
-them less than wall times.
+CPU times of this process (``process_time``): the costs of a round drawn one after the other
+as the report draws them (collections included), then the floors with the collector off, each
+figure's garbage collected untimed; the shared VM's load moves them less than wall times.
 
     OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl
     .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl \
@@ -135,24 +135,23 @@ def _as_the_report():
     return output.one_collection() if hasattr(output, "one_collection") else contextlib.nullcontext()
 
 
-def _time_figure(job, dpi: float) -> tuple[float, ...]:
-    """(cost, floor, the cost's figure function, a first draw, the floor's zlib pass) [s CPU].
-
-    Each part starts from a collected heap (``gc.collect``, untimed), so that no figure pays
-    for another's garbage. The cost runs as the report runs it (:func:`_as_the_report`,
-    collections included); the floor and the first draw run with the collector off (the
-    least work)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    gc.collect()
+def _time_cost(job) -> tuple[float, float]:
+    """(cost, its figure function) [s CPU]: the figure drawn and written as ``render_figures``
+    does it (:func:`_as_the_report`), collections included."""
     c0 = time.process_time()
     with _as_the_report():
         fig = job.function(*job.args, **job.kwargs)
         c1 = time.process_time()
         _save_like_the_report(fig)
         del fig
-    c2 = time.process_time()
-    gc.collect()
+    return time.process_time() - c0, c1 - c0
+
+
+def _time_floor(job, dpi: float) -> tuple[float, float, float]:
+    """(floor, a first draw, the floor's zlib pass) [s CPU], the collector off (the least
+    work); the figure's garbage collected afterwards, untimed."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     gc.disable()
     try:
         fig = job.function(*job.args, **job.kwargs)
@@ -168,26 +167,40 @@ def _time_figure(job, dpi: float) -> tuple[float, ...]:
         c6 = time.process_time()
         _least_png(fig.canvas.buffer_rgba())
         c7 = time.process_time()
+        del fig
     finally:
         gc.enable()
-    return c2 - c0, c7 - c5, c1 - c0, c4 - c3, c7 - c6
+    gc.collect()
+    return c7 - c5, c4 - c3, c7 - c6
 
 
 def measure(cache: Path | None, repeats: int) -> dict:
+    """Each round draws every figure at its cost, one after the other as the report does
+    (each pays for the collections its allocations start, whatever garbage they find), then
+    every figure at its floor. Medians over the rounds of (cost, floor, build, first draw,
+    zlib pass) [s CPU]."""
     from flexshaft.plot.output import PNG_DPI
     from flexshaft.report.driveline import plan_run_report
 
     res = _results(cache)
     with tempfile.TemporaryDirectory() as folder:
         jobs = plan_run_report(res[0], folder, thesis=res[1]).jobs
+    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
     times: dict[str, list[tuple[float, ...]]] = {}
     for round_ in range(repeats + 1):  # round 0: warm-up, not counted
+        costs = {job.stem: _time_cost(job) for job in jobs}
+        gc.collect()
         for job in jobs:
-            measured = _time_figure(job, PNG_DPI)
+            floor, first, zlib_pass = _time_floor(job, PNG_DPI)
             if round_:
-                times.setdefault(job.stem, []).append(measured)
-    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
-    times[MINIMAL] = [_time_figure(minimal, PNG_DPI) for _ in range(repeats + 1)][1:]
+                cost, build = costs[job.stem]
+                times.setdefault(job.stem, []).append((cost, floor, build, first, zlib_pass))
+    for round_ in range(repeats + 1):  # on its own, from a collected heap
+        gc.collect()
+        cost, build = _time_cost(minimal)
+        floor, first, zlib_pass = _time_floor(minimal, PNG_DPI)
+        if round_:
+            times.setdefault(MINIMAL, []).append((cost, floor, build, first, zlib_pass))
     return {stem: tuple(statistics.median(t[k] for t in ts) for k in range(5)) for stem, ts in times.items()}
 
 
