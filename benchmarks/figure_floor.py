@@ -6,7 +6,9 @@ untimed round (matplotlib imported, fonts loaded). For each figure, median of ``
 
 * **cost**: what the report does: the figure function (``job.function``: figure, axes,
   artists) and the PNG writer of ``save_figure`` (``flexshaft.plot.output.write_png``; in
-  older checkouts ``Figure.savefig``) to a PNG in memory at the report's resolution and options;
+  older checkouts ``Figure.savefig``) to a PNG in memory at the report's resolution and options,
+  in the scope ``render_figures`` draws each figure in (``output.one_collection``: Python's
+  collector paused, then one young collection that frees the figure; counted in encode+);
 * **floor**: the same figure, built and drawn once untimed, its every tick then frozen
   (each axis's ticks at the positions just drawn, ``FixedLocator``, with the labels just drawn,
   ``FixedFormatter``: no locating, formatting or label measuring), drawn again (``canvas.draw``)
@@ -22,8 +24,9 @@ measured for the first time) and ``encode+`` (the report's PNG writer above one 
 A minimal figure (one Axes, one line, labels, title; matplotlib only) is measured the same way
 and printed last, outside the totals: the ratio no figure drawn with matplotlib's Axes gets
 below, whatever the figure code does.
-CPU times of this process (``process_time``);
-the shared VM's load moves them less than wall times.
+CPU times of this process (``process_time``): the costs of a round drawn one after the other
+as the report draws them (collections included), then the floors with the collector off, each
+figure's garbage collected untimed; the shared VM's load moves them less than wall times.
 
     OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl
     .venv/bin/python benchmarks/figure_floor.py --cache /tmp/run-now.pkl \
@@ -122,49 +125,82 @@ def _save_like_the_report(fig) -> None:
     fig.savefig(io.BytesIO(), dpi=output.PNG_DPI, format="png", **kwargs)
 
 
-def _time_figure(job, dpi: float) -> tuple[float, ...]:
-    """(cost, floor, the cost's figure function, a first draw, the floor's zlib pass) [s CPU]."""
+def _as_the_report():
+    """The scope ``render_figures`` draws and writes each figure in (``output.one_collection``:
+    the collector paused, then one young collection); none in older checkouts."""
+    import contextlib
+
+    from flexshaft.plot import output
+
+    return output.one_collection() if hasattr(output, "one_collection") else contextlib.nullcontext()
+
+
+def _time_cost(job) -> tuple[float, float]:
+    """(cost, its figure function) [s CPU]: the figure drawn and written as ``render_figures``
+    does it (:func:`_as_the_report`), collections included."""
+    c0 = time.process_time()
+    with _as_the_report():
+        fig = job.function(*job.args, **job.kwargs)
+        c1 = time.process_time()
+        _save_like_the_report(fig)
+        del fig
+    return time.process_time() - c0, c1 - c0
+
+
+def _time_floor(job, dpi: float) -> tuple[float, float, float]:
+    """(floor, a first draw, the floor's zlib pass) [s CPU], the collector off (the least
+    work); the figure's garbage collected afterwards, untimed."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    c0 = time.process_time()
-    fig = job.function(*job.args, **job.kwargs)
-    c1 = time.process_time()
-    _save_like_the_report(fig)
-    c2 = time.process_time()
-    fig = job.function(*job.args, **job.kwargs)
-    if not isinstance(fig.canvas, FigureCanvasAgg):
-        FigureCanvasAgg(fig)
-    fig.set_dpi(dpi)
-    c3 = time.process_time()
-    fig.canvas.draw()
-    c4 = time.process_time()
-    _freeze_ticks(fig)
-    c5 = time.process_time()
-    fig.canvas.draw()
-    c6 = time.process_time()
-    _least_png(fig.canvas.buffer_rgba())
-    c7 = time.process_time()
-    return c2 - c0, c7 - c5, c1 - c0, c4 - c3, c7 - c6
+    gc.disable()
+    try:
+        fig = job.function(*job.args, **job.kwargs)
+        if not isinstance(fig.canvas, FigureCanvasAgg):
+            FigureCanvasAgg(fig)
+        fig.set_dpi(dpi)
+        c3 = time.process_time()
+        fig.canvas.draw()
+        c4 = time.process_time()
+        _freeze_ticks(fig)
+        c5 = time.process_time()
+        fig.canvas.draw()
+        c6 = time.process_time()
+        _least_png(fig.canvas.buffer_rgba())
+        c7 = time.process_time()
+        del fig
+    finally:
+        gc.enable()
+    gc.collect()
+    return c7 - c5, c4 - c3, c7 - c6
 
 
 def measure(cache: Path | None, repeats: int) -> dict:
+    """Each round draws every figure at its cost, one after the other as the report does
+    (each pays for the collections its allocations start, whatever garbage they find), then
+    every figure at its floor. Medians over the rounds of (cost, floor, build, first draw,
+    zlib pass) [s CPU]."""
     from flexshaft.plot.output import PNG_DPI
     from flexshaft.report.driveline import plan_run_report
 
     res = _results(cache)
     with tempfile.TemporaryDirectory() as folder:
         jobs = plan_run_report(res[0], folder, thesis=res[1]).jobs
+    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
     times: dict[str, list[tuple[float, ...]]] = {}
     for round_ in range(repeats + 1):  # round 0: warm-up, not counted
+        costs = {job.stem: _time_cost(job) for job in jobs}
+        gc.collect()
         for job in jobs:
-            measured = _time_figure(job, PNG_DPI)
+            floor, first, zlib_pass = _time_floor(job, PNG_DPI)
             if round_:
-                times.setdefault(job.stem, []).append(measured)
-    # the minimal figure on its own, after a collection: the report's figures leave cycles of
-    # artists that Python's collector frees when it runs, on whichever figure is timed then
-    gc.collect()
-    minimal = SimpleNamespace(stem=MINIMAL, function=_minimal_figure, args=(), kwargs={})
-    times[MINIMAL] = [_time_figure(minimal, PNG_DPI) for _ in range(repeats + 1)][1:]
+                cost, build = costs[job.stem]
+                times.setdefault(job.stem, []).append((cost, floor, build, first, zlib_pass))
+    for round_ in range(repeats + 1):  # on its own, from a collected heap
+        gc.collect()
+        cost, build = _time_cost(minimal)
+        floor, first, zlib_pass = _time_floor(minimal, PNG_DPI)
+        if round_:
+            times.setdefault(MINIMAL, []).append((cost, floor, build, first, zlib_pass))
     return {stem: tuple(statistics.median(t[k] for t in ts) for k in range(5)) for stem, ts in times.items()}
 
 

@@ -10,6 +10,8 @@ equilibrium checks the bearing reactions the report shows.
 
 from __future__ import annotations
 
+import io
+
 import matplotlib
 import numpy as np
 import pytest
@@ -28,7 +30,7 @@ from flexshaft.assembly.loads import external_static_load, imbalance_loads, torq
 from flexshaft.design import baseline_design, with_overrides  # noqa: E402
 from flexshaft.plot.campbell import campbell_figure  # noqa: E402
 from flexshaft.plot.labels import place_point_labels, spread  # noqa: E402
-from flexshaft.plot.output import FigureJob, render_figures  # noqa: E402
+from flexshaft.plot.output import FigureJob, one_collection, render_figures  # noqa: E402
 from flexshaft.plot.response import bode_figure, orbit_ellipse, orbit_figure  # noqa: E402
 from flexshaft.plot.studies import gain_map_figure  # noqa: E402
 from flexshaft.units import rad_s_to_rpm  # noqa: E402
@@ -373,6 +375,33 @@ def test_render_figures_serial_and_in_worker_processes(tmp_path, model):
         render_figures(jobs + jobs[:1], tmp_path)
     with pytest.raises(ValueError, match="processes must be"):
         render_figures(jobs, tmp_path, processes=0)
+
+
+def test_one_collection_frees_the_released_figure_and_restores_the_collector():
+    import gc
+    import weakref
+
+    from flexshaft.plot.output import write_png
+
+    def draw() -> weakref.ref:
+        fig = bode_figure(np.arange(3.0), {"a": np.array([1e-4, 2e-4j, -1e-4])})
+        write_png(fig, io.BytesIO())
+        return weakref.ref(fig)
+
+    assert gc.isenabled()
+    with one_collection():
+        assert not gc.isenabled()
+        released = draw()
+        assert released() is not None  # its cycles wait for the block's end
+    assert gc.isenabled() and released() is None  # freed by the one young collection
+    gc.disable()
+    try:
+        with one_collection():  # the caller's setting is left alone, nothing collected
+            kept = draw()
+        assert not gc.isenabled() and kept() is not None
+    finally:
+        gc.enable()
+        gc.collect()
 
 
 def test_label_helpers_do_not_overprint():
