@@ -258,6 +258,22 @@ def _wall_strains(
 _SIGNS = np.array([1.0, -1.0])  # the two extreme fibres of the bending strain
 
 
+def _distinct_plies(*tables: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(index of each distinct ply, each ply's distinct one): plies whose rows of every table
+    (n_ply, 3) are bit for bit the same compute the same safety factors, which are then
+    computed once (the copy is exact: R of ``first[copies]`` is R of every ply)."""
+    seen: dict[bytes, int] = {}
+    first: list[int] = []
+    copies: list[int] = []
+    for ply, row in enumerate(np.hstack(tables)):
+        key = row.tobytes()
+        if key not in seen:
+            seen[key] = len(first)
+            first.append(ply)
+        copies.append(seen[key])
+    return np.array(first, dtype=np.intp), np.array(copies, dtype=np.intp)
+
+
 def shaft_safety_factor(
     model: Model,
     q_static: np.ndarray | Mapping[str, np.ndarray],
@@ -349,17 +365,20 @@ def shaft_safety_factor(
     x_ends = model.dofs.shaft_element_x
     per_axial, per_shear = _unit_ply_stresses(laminate)
     strains = {name: shaft_strains(model, q) for name, q in beam_parts.items()}
+    # plies of one angle carry the same stresses everywhere: the grid is evaluated once per
+    # distinct ply (3 of the embedded designs' 8 and 12) and copied to the others
+    first, copies = _distinct_plies(per_axial, per_shear, *uniform.values(), *([] if residual is None else [residual]))
 
     def evaluate(leave_out: str | None = None) -> tuple[np.ndarray, tuple]:
         """R over the grid (nel, 2, n_phase, 2 signs, n_ply) and the total wall strains."""
         wall = _wall_strains({k: v for k, v in strains.items() if k != leave_out}, r, x_ends.shape + (phases.size,))
-        factored = wall[0][..., None, None] * per_axial + wall[1][..., None, None] * per_shear
+        factored = wall[0][..., None, None] * per_axial[first] + wall[1][..., None, None] * per_shear[first]
         for name, stress in uniform.items():
             if name != leave_out:
-                factored = factored + stress
-        fixed = None if residual is None or leave_out == "thermal" else _components(residual.T)
+                factored = factored + stress[first]
+        fixed = None if residual is None or leave_out == "thermal" else _components(residual[first].T)
         sigma1, sigma2, tau12 = np.moveaxis(factored, -1, 0)
-        return tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths, residual=fixed), wall
+        return tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths, residual=fixed)[..., copies], wall
 
     R, (_, _, ev, ew) = evaluate()
     k = np.unravel_index(np.argmin(R), R.shape)
