@@ -44,6 +44,7 @@ over the shaft with that load removed).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -108,16 +109,27 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
     """
     dm = model.dofs
     x = dm.shaft_element_x  # (nel, 2): a coupling joint is not an element
-    L = x[:, 1] - x[:, 0]
-    s = beam_shape(np.array([0.0, 1.0]), L)  # rows (nel, 2, 12)
+    dudx, dgammadx, dbetadx, dthetadx = _end_derivatives((x[:, 1] - x[:, 0]).tobytes())
     qe = np.asarray(q)[dm.element_dofs("shaft")]  # (nel, 12, ...)
 
     def apply(rows):
         return np.einsum("epi,ei...->ep...", rows, qe)
 
     return ShaftStrains(
-        x=x, axial=apply(s.dudx), curvature_v=apply(s.dgammadx), curvature_w=-apply(s.dbetadx), twist=apply(s.dthetadx)
+        x=x, axial=apply(dudx), curvature_v=apply(dgammadx), curvature_w=-apply(dbetadx), twist=apply(dthetadx)
     )
+
+
+@functools.lru_cache(maxsize=16)
+def _end_derivatives(lengths: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Rows (nel, 2, 12) of u', γ', β', θ' at both ends of shaft elements of ``lengths``
+    (float64 bytes) [m], cached (read-only): a sweep's points, and a point's static and
+    imbalance evaluations, share the mesh."""
+    s = beam_shape(np.array([0.0, 1.0]), np.frombuffer(lengths))
+    rows = (s.dudx, s.dgammadx, s.dbetadx, s.dthetadx)
+    for row in rows:
+        row.flags.writeable = False
+    return rows
 
 
 def shaft_strengths(model: Model, kinking: bool = False) -> tuple[Laminate, Strengths]:
