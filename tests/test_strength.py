@@ -279,6 +279,31 @@ def test_baseline_load_shares_sum_to_one_and_leave_one_out_matches_switches(base
     )
 
 
+def test_plies_of_one_angle_evaluated_once_give_every_ply_bit_for_bit(baseline_strength, monkeypatch):
+    """The safety-factor grid is evaluated once per distinct ply (the baseline's 8 plies hold 3
+    angles) and copied to the others: against every ply evaluated on its own (the unreduced
+    grid), the result is the same bit for bit, critical point and leave-one-out included."""
+    import dataclasses
+
+    import flexshaft.analyses.shaft_strength as strength
+
+    model, parts, q_dyn, reduced = baseline_strength
+    first, copies = strength._distinct_plies(*strength._unit_ply_stresses(model.shaft.laminate.storage))
+    assert first.size == 3 and np.array_equal(
+        np.degrees(model.shaft.laminate.angles[first][copies]), np.degrees(model.shaft.laminate.angles)
+    )
+
+    def every_ply(*tables):
+        n = tables[0].shape[0]
+        return np.arange(n), np.arange(n)
+
+    monkeypatch.setattr(strength, "_distinct_plies", every_ply)
+    full = strength.shaft_safety_factor(model, parts, q_dyn, leave_one_out=True)
+    for f in dataclasses.fields(full):
+        a, b = getattr(full, f.name), getattr(reduced, f.name)
+        assert np.array_equal(a, b) if isinstance(a, np.ndarray) else a == b, f.name
+
+
 def test_baseline_failure_state_reaches_the_envelope(baseline_strength):
     """At the critical ply, R times the mechanical stresses plus the unscaled thermal residual
     stress lies on the Tsai-Wu envelope (independent re-evaluation of F from the parts)."""

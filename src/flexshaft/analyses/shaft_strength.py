@@ -44,6 +44,7 @@ over the shaft with that load removed).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -108,16 +109,27 @@ def shaft_strains(model: Model, q: np.ndarray) -> ShaftStrains:
     """
     dm = model.dofs
     x = dm.shaft_element_x  # (nel, 2): a coupling joint is not an element
-    L = x[:, 1] - x[:, 0]
-    s = beam_shape(np.array([0.0, 1.0]), L)  # rows (nel, 2, 12)
+    dudx, dgammadx, dbetadx, dthetadx = _end_derivatives((x[:, 1] - x[:, 0]).tobytes())
     qe = np.asarray(q)[dm.element_dofs("shaft")]  # (nel, 12, ...)
 
     def apply(rows):
         return np.einsum("epi,ei...->ep...", rows, qe)
 
     return ShaftStrains(
-        x=x, axial=apply(s.dudx), curvature_v=apply(s.dgammadx), curvature_w=-apply(s.dbetadx), twist=apply(s.dthetadx)
+        x=x, axial=apply(dudx), curvature_v=apply(dgammadx), curvature_w=-apply(dbetadx), twist=apply(dthetadx)
     )
+
+
+@functools.lru_cache(maxsize=16)
+def _end_derivatives(lengths: bytes) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Rows (nel, 2, 12) of u', γ', β', θ' at both ends of shaft elements of ``lengths``
+    (float64 bytes) [m], cached (read-only): a sweep's points, and a point's static and
+    imbalance evaluations, share the mesh."""
+    s = beam_shape(np.array([0.0, 1.0]), np.frombuffer(lengths))
+    rows = (s.dudx, s.dgammadx, s.dbetadx, s.dthetadx)
+    for row in rows:
+        row.flags.writeable = False
+    return rows
 
 
 def shaft_strengths(model: Model, kinking: bool = False) -> tuple[Laminate, Strengths]:
@@ -258,6 +270,22 @@ def _wall_strains(
 _SIGNS = np.array([1.0, -1.0])  # the two extreme fibres of the bending strain
 
 
+def _distinct_plies(*tables: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(index of each distinct ply, each ply's distinct one): plies whose rows of every table
+    (n_ply, 3) are bit for bit the same compute the same safety factors, which are then
+    computed once (the copy is exact: R of ``first[copies]`` is R of every ply)."""
+    seen: dict[bytes, int] = {}
+    first: list[int] = []
+    copies: list[int] = []
+    for ply, row in enumerate(np.hstack(tables)):
+        key = row.tobytes()
+        if key not in seen:
+            seen[key] = len(first)
+            first.append(ply)
+        copies.append(seen[key])
+    return np.array(first, dtype=np.intp), np.array(copies, dtype=np.intp)
+
+
 def shaft_safety_factor(
     model: Model,
     q_static: np.ndarray | Mapping[str, np.ndarray],
@@ -349,17 +377,20 @@ def shaft_safety_factor(
     x_ends = model.dofs.shaft_element_x
     per_axial, per_shear = _unit_ply_stresses(laminate)
     strains = {name: shaft_strains(model, q) for name, q in beam_parts.items()}
+    # plies of one angle carry the same stresses everywhere: the grid is evaluated once per
+    # distinct ply (3 of the embedded designs' 8 and 12) and copied to the others
+    first, copies = _distinct_plies(per_axial, per_shear, *uniform.values(), *([] if residual is None else [residual]))
 
     def evaluate(leave_out: str | None = None) -> tuple[np.ndarray, tuple]:
         """R over the grid (nel, 2, n_phase, 2 signs, n_ply) and the total wall strains."""
         wall = _wall_strains({k: v for k, v in strains.items() if k != leave_out}, r, x_ends.shape + (phases.size,))
-        factored = wall[0][..., None, None] * per_axial + wall[1][..., None, None] * per_shear
+        factored = wall[0][..., None, None] * per_axial[first] + wall[1][..., None, None] * per_shear[first]
         for name, stress in uniform.items():
             if name != leave_out:
-                factored = factored + stress
-        fixed = None if residual is None or leave_out == "thermal" else _components(residual.T)
+                factored = factored + stress[first]
+        fixed = None if residual is None or leave_out == "thermal" else _components(residual[first].T)
         sigma1, sigma2, tau12 = np.moveaxis(factored, -1, 0)
-        return tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths, residual=fixed), wall
+        return tsai_wu_safety_factor(sigma1, sigma2, tau12, strengths, residual=fixed)[..., copies], wall
 
     R, (_, _, ev, ew) = evaluate()
     k = np.unravel_index(np.argmin(R), R.shape)

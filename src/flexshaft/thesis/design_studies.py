@@ -173,7 +173,7 @@ COSTS = {
     "forced_response": 0.45,
     "gain": 0.65,
     "buckling": 1.7,
-    "spinup": 2.0,
+    "spinup": 1.2,
     "stability": 0.2,
 }
 

@@ -11,15 +11,19 @@ from flexshaft.sweep.study import Output
 __all__ = ["STRENGTH_OUTPUTS", "strength_outputs"]
 
 
-def strength_outputs(point) -> dict:
+def strength_outputs(point, imbalance=None) -> dict:
     """Tsai-Wu safety factor, static (external loads + torque) and with the imbalance
-    response at the operating speed (worst load case)."""
+    response at the operating speed (worst load case). ``imbalance``: that response
+    (ndof, n_cases) [m, rad] when the caller has already solved it (the gain study's actuator
+    outputs need it too)."""
     model = point.model
     q_static = static_response(model, external_static_load(model) + torque_load(model))
     static = shaft_safety_factor(model, q_static).safety_factor
     if model.design.loads.eccentricity == 0.0 or model.speed == 0.0:  # no imbalance: the total is the static
         return {"safety_factor_static": static, "safety_factor": static}
-    q_imb = imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0]
+    q_imb = (
+        imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0] if imbalance is None else imbalance
+    )
     total = min(shaft_safety_factor(model, q_static, q_imb[:, c]).safety_factor for c in range(q_imb.shape[1]))
     return {"safety_factor_static": static, "safety_factor": total}
 
