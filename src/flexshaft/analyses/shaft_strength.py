@@ -272,18 +272,10 @@ _SIGNS = np.array([1.0, -1.0])  # the two extreme fibres of the bending strain
 
 def _distinct_plies(*tables: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(index of each distinct ply, each ply's distinct one): plies whose rows of every table
-    (n_ply, 3) are bit for bit the same compute the same safety factors, which are then
-    computed once (the copy is exact: R of ``first[copies]`` is R of every ply)."""
-    seen: dict[bytes, int] = {}
-    first: list[int] = []
-    copies: list[int] = []
-    for ply, row in enumerate(np.hstack(tables)):
-        key = row.tobytes()
-        if key not in seen:
-            seen[key] = len(first)
-            first.append(ply)
-        copies.append(seen[key])
-    return np.array(first, dtype=np.intp), np.array(copies, dtype=np.intp)
+    (n_ply, 3) are the same compute the same safety factors, which are then computed once (the
+    copy is exact: R of ``first[copies]`` is R of every ply)."""
+    _, first, copies = np.unique(np.hstack(tables), axis=0, return_index=True, return_inverse=True)
+    return first, copies.reshape(-1)  # numpy 2.0.0 gave the inverse the input's rank
 
 
 def shaft_safety_factor(
