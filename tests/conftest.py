@@ -75,8 +75,66 @@ def pytest_configure(config):
     from threadpoolctl import threadpool_limits  # a BLAS already loaded (by a plugin) ignores the env
 
     threadpool_limits(limits=1, user_api="blas")
+    _build_each_cli_command_once()
     config.stash[_TIMES] = _CpuTimes()
     config.pluginmanager.register(config.stash[_TIMES], "cpu-durations")
+
+
+def _build_each_cli_command_once() -> None:
+    """Make typer's ``CliRunner`` build the click command of an app once per process.
+
+    ``typer.testing.CliRunner.invoke(app, ...)`` converts the Typer app into its click command
+    at every call (``typer.main.get_command``: the signature and type hints of every command of
+    the CLI), about 50 ms a call here, some 300 calls in the suite: 15 s of CPU spent building
+    the same command. The command is the same object between calls (typer keeps no state on
+    it; click builds a fresh context per invocation), so it is built once per app. A typer
+    version without this module-level name is left as it is."""
+    import typer.testing
+
+    build = getattr(typer.testing, "_get_command", None)
+    if build is None:
+        return
+    built: dict[int, tuple[Any, Any]] = {}
+
+    def build_once(app):
+        if id(app) not in built:
+            built[id(app)] = (app, build(app))  # the app is held: its id cannot be reused
+        return built[id(app)][1]
+
+    typer.testing._get_command = build_once
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _run_in_the_test_process():
+    """``flexshaft run`` called in the test process (typer's ``CliRunner``) works in that process:
+    no pool of forked workers (``flexshaft.cli.run._worker_processes`` returns 1).
+
+    pytest-xdist already runs one test per core, so a run's pool only oversubscribes the
+    cores, and each of its two workers imports matplotlib again: measured, three runs of
+    tests/test_cli.py's ``--strict`` tests took 13.6 s of CPU with the pool and 8.0 s without,
+    in the same wall time. The results are the same either way: tests/test_tasks.py and
+    tests/test_studies.py compare the pool's results with the ones computed in process.
+    A test marked ``run_pool`` gets the pool as a user's run does (:func:`_run_pool_if_marked`);
+    the CLI started as a subprocess (the README's quick start, its loop) always has it."""
+    import importlib
+
+    run_module = importlib.import_module("flexshaft.cli.run")  # the module: `flexshaft.cli.run` is the command
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(run_module, "_worker_processes", lambda: 1)
+        yield run_module
+
+
+@pytest.fixture(autouse=True)
+def _run_pool_if_marked(request, _run_in_the_test_process):
+    """The run's own pool of workers for a test marked ``run_pool`` (see above)."""
+    if request.node.get_closest_marker("run_pool") is None:
+        yield
+        return
+    from flexshaft.parallel.pool import available_cpus
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(_run_in_the_test_process, "_worker_processes", lambda: max(1, min(4, available_cpus())))
+        yield
 
 
 _PHASE_START = pytest.StashKey[float]()

@@ -347,6 +347,7 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
     assert "<td>bearings[amb_1].gap</td>" in page and "<td>materials.t700_adiprene.E_L</td>" in page
 
 
+@pytest.mark.run_pool  # the whole run as a user's goes: analyses, studies' slot and figures on forked workers
 def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
     design = _write(tmp_path, "passing.toml", PASSING_DESIGN)
     result = runner.invoke(
