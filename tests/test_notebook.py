@@ -30,10 +30,16 @@ def test_the_tutorial_is_stored_without_outputs():
 
 
 @pytest.mark.slow(reason="the tutorial assesses five designs at their envelope points, 19 points in all (~14 s of CPU)")
-def test_the_tutorial_runs_and_shows_the_verdict_a_campbell_diagram_a_sweep_and_a_comparison(tmp_path):
+def test_the_tutorial_runs_and_shows_the_verdict_a_campbell_diagram_a_sweep_and_a_comparison(tmp_path, monkeypatch):
     nb = nbformat.read(TUTORIAL, as_version=4)
+    # the tutorial keeps its files in a tempfile.mkdtemp() folder for the reader: here that folder
+    # goes inside the test's own (the kernel inherits TMPDIR), not into the machine's /tmp
+    work, temp = tmp_path / "work", tmp_path / "tmp"
+    work.mkdir()
+    temp.mkdir()
+    monkeypatch.setenv("TMPDIR", str(temp))
     # any error in a cell raises CellExecutionError with the cell and its traceback
-    NotebookClient(nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}).execute()
+    NotebookClient(nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(work)}}).execute()
     shown = [o for c in nb.cells if c.cell_type == "code" for o in _outputs(c)]
     html = [o["data"]["text/html"] for o in shown if "text/html" in o["data"]]
     # the edited design passes: the verdict table with its headline, then the sweep, where K_d = 0 fails
@@ -41,4 +47,5 @@ def test_the_tutorial_runs_and_shows_the_verdict_a_campbell_diagram_a_sweep_and_
     assert any("FAIL" in h and "K_d [N s/m]" in h for h in html)
     assert any("Table 3.1 baseline: FAIL" in h for h in html)  # the comparison's headline
     assert sum("image/png" in o["data"] for o in shown) == 1  # the Campbell diagram
-    assert not list(tmp_path.iterdir())  # the tutorial writes in a temporary folder of its own
+    assert not list(work.iterdir())  # the tutorial writes in a temporary folder of its own
+    assert [p.name.startswith("flexshaft-tutorial-") for p in temp.iterdir()] == [True]
