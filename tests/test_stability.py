@@ -136,6 +136,19 @@ def test_hysteretic_forward_mode_above_wn_has_real_part_eta_wn_minus_ce_over_m_o
     assert res_scan.whirl[-1, res_scan.unstable_mode] == "forward"
 
 
+def test_a_given_basis_without_the_estimate_keeps_the_closed_form_onset():
+    """``stability(..., reduced=red, estimate=False)`` (the gain map's call) on the Jeffcott rotor:
+    the onset is still ω_d of the closed-form roots (the estimate only reports, it changes no
+    eigenvalue), and no estimate is made."""
+    eta, zeta_e = 0.02, 0.005
+    c_e = 2 * zeta_e * M_DISK * WN
+    model = jeffcott(eta, c_e)
+    w_d = hysteretic_roots(c_e, eta)[0].imag
+    res = stability(model, np.array([0.6, 0.9, 1.2, 1.6]) * WN, 2, reduced=reduce(model, 8), estimate=False)
+    assert res.error_estimate is None
+    assert res.onset_speed == pytest.approx(w_d, rel=basis_round_off())
+
+
 def pencil_roots(red, speed, weights, bounds=False):
     """Roots with Im s > 0 of the branch problem [s² I + s D + K + W] y = 0 on the modal basis,
     by QZ on the linearisation A z = s B z, A = [[−K, 0], [0, I]], B = [[D, I], [I, 0]],

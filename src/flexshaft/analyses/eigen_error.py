@@ -220,7 +220,8 @@ def tracked_to_accuracy(
     transform: Callable[[ReducedModel], ReducedModel] | None = None,
     viscous: Callable[[float], LossCoefficients] | None = None,
     reduced: ReducedModel | None = None,
-) -> tuple[ReducedModel, _C, np.ndarray]:
+    estimate: bool = True,
+) -> tuple[ReducedModel, _C, np.ndarray | None]:
     """Tracked curves on a basis chosen for ``tolerance``, with their estimated errors.
 
     ``track(red)`` follows the modes on a reduced model; each point's relative error against
@@ -232,30 +233,37 @@ def tracked_to_accuracy(
     4·max(4n, 40) vectors or the whole model; the result reports what
     was reached (the estimate, not a promise). ``transform`` is applied to each reduced model
     (e.g. :meth:`~flexshaft.analyses.eigen.ReducedModel.undamped`), ``viscous(speed)`` gives the
-    viscous method's weights for the estimate.
+    viscous method's weights for the estimate. ``estimate=False`` skips the estimate on a
+    basis the caller gave (errors None), for a caller that uses no eigenvalue of its own
+    output's accuracy statement (a study that keeps only onsets over a grid); the basis chosen
+    for ``tolerance`` needs it.
 
     Returns
     -------
     red, tracked, errors
-        The reduced model used, the curves, and (n_speeds, n_modes) estimated relative errors.
+        The reduced model used, the curves, and (n_speeds, n_modes) estimated relative errors
+        (None when not estimated).
     """
     n_free = int(model.dofs.free.size)
 
-    def run(red: ReducedModel) -> tuple[ReducedModel, _C, np.ndarray]:
+    def run(red: ReducedModel, with_errors: bool = True) -> tuple[ReducedModel, _C, np.ndarray | None]:
         red = transform(red) if transform is not None else red
         tracked = track(red)
+        if not with_errors:
+            return red, tracked, None
         errors = tracked_errors(red, speeds, tracked.eigenvalues, tracked.states, viscous)
         return red, tracked, errors
 
     if reduced is not None:
-        return run(reduced)
+        return run(reduced, estimate)
     if basis_size is not None:
-        return run(reduce(model, basis_size))
+        return run(reduce(model, basis_size), estimate)
     largest = _largest_basis(n_modes)
     bases = accurate_bases(n_modes)
     for k, (size, enrich) in enumerate(bases):
         whole = size >= n_free
         out = run(accurate_reduction(model, min(size, n_free), 0 if whole else enrich))
+        assert out[2] is not None  # estimated: it chooses the basis
         worst = float(np.nanmax(out[2], initial=0.0))
         if whole or worst <= tolerance or k == len(bases) - 1 or out[0].size >= largest:
             break

@@ -263,6 +263,7 @@ def stability(
     basis_size: int | None = None,
     reduced: ReducedModel | None = None,
     tolerance: float = EIGENVALUE_TOLERANCE,
+    estimate: bool = True,
 ) -> StabilityResult:
     """Eigenvalues of the linearised driveline with internal damping over speed.
 
@@ -286,6 +287,11 @@ def stability(
         chosen for when neither ``basis_size`` nor ``reduced`` is given
         (:func:`~flexshaft.analyses.eigen_error.tracked_to_accuracy`); the estimate reached is
         :attr:`StabilityResult.error_estimate`.
+    estimate : bool
+        With ``basis_size`` or ``reduced`` given: estimate the eigenvalues' errors (default), or
+        not (``error_estimate`` None: e.g. :func:`flexshaft.thesis.whirl.gain_stability_map`,
+        which keeps only the onset and the margin at the operating speed of each grid point and
+        never reported an estimate). The basis chosen for ``tolerance`` is always estimated.
     """
     check_model(model)
     speeds = check_speeds(speeds)
@@ -312,7 +318,7 @@ def stability(
         return track_modes(model, red, speeds, int(n_modes))
 
     red, tracked, errors = tracked_to_accuracy(
-        model, speeds, int(n_modes), track, basis_size, tolerance, viscous=weights, reduced=reduced
+        model, speeds, int(n_modes), track, basis_size, tolerance, viscous=weights, reduced=reduced, estimate=estimate
     )
     eig = tracked.eigenvalues
     require_finite("stability eigenvalues", eig)
