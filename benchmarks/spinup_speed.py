@@ -47,6 +47,7 @@ modes = {"default": {}}
 if "projected" in inspect.signature(spinup_response).parameters:
     modes["all-full"] = {"projected": False}
 seeded = "responses" in inspect.signature(scan_critical_speeds).parameters
+based = "basis" in inspect.signature(scan_critical_speeds).parameters
 out = {}
 for resolution in (fs.SCREENING, fs.REPORT):
     speeds = resolution.spin_speeds(model.speed)
@@ -58,6 +59,8 @@ for resolution in (fs.SCREENING, fs.REPORT):
             c1 = time.process_time()
             n_scan = solves[0]
             extra = {"responses": scan.response} if seeded else {}  # as the assessment's spin-up task
+            if based:
+                extra["basis"] = scan.basis
             criticals = scan_critical_speeds(model, scan.speeds, scan.orbits, resolution.scan_top, **extra)
             c2 = time.process_time()
             return c1 - c0, c2 - c1, n_scan, solves[0] - n_scan, scan, criticals

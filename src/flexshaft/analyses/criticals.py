@@ -20,7 +20,7 @@ import numpy as np
 from flexshaft.analyses.banded import SingularSystemError
 from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.modal import modes
-from flexshaft.analyses.peak_projection import ProjectedOrbit
+from flexshaft.analyses.peak_projection import PeakBasis, ProjectedOrbit
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.results import dataframe, html_table
 from flexshaft.analyses.separation import resolve_peak, response_peaks
@@ -121,6 +121,7 @@ def lateral_critical_speeds(
     scan=None,
     projected: bool = True,
     responses: np.ndarray | None = None,
+    basis: np.ndarray | None = None,
 ) -> tuple[LateralCritical, ...]:
     """Peaks of the unbalance response with their amplification factors.
 
@@ -148,6 +149,13 @@ def lateral_critical_speeds(
         them again (from a projected scan, :mod:`flexshaft.analyses.sweep_projection`, they
         agree with the full solutions to ~1e-11; the model is checked by full solves all the
         same).
+    basis : ndarray, optional
+        The scan's reduced basis (n_free, r) with ``scan`` (a projected scan's
+        :attr:`~flexshaft.analyses.spinup_response.SpinupResponse.basis`): every peak's projected
+        model starts from it instead, orthonormalised and projected once for all the peaks
+        (:class:`~flexshaft.analyses.peak_projection.PeakBasis`). It spans the scan's responses to
+        the sweep's tolerance, so a round's check by full solves usually passes at once, where
+        three responses needed an enrichment first.
 
     Returns
     -------
@@ -162,6 +170,7 @@ def lateral_critical_speeds(
     else:
         speeds, orbits = scan
     envelope = orbits.max(axis=(0, 1))
+    start = PeakBasis(model, basis) if projected and basis is not None else None
     out: list[LateralCritical] = []
     for rough in response_peaks(speeds, envelope):
         k = int(np.argmin(np.abs(speeds - rough.speed)))
@@ -176,7 +185,7 @@ def lateral_critical_speeds(
         if projected and np.all(np.isin(rows, model.dofs.free)):
             # the refinement on a projected model of the peak, checked by full solves
             near = slice(max(k - 1, 0), k + 2)
-            seed = None if responses is None else responses[model.dofs.free, case, near]
+            seed = start if start is not None else None if responses is None else responses[model.dofs.free, case, near]
             response = ProjectedOrbit(model, loads[:, case], rows, speeds[near], basis=seed)
 
         station = float(model.dofs.shaft_x[node])
@@ -224,12 +233,14 @@ def scan_critical_speeds(
     orbits: np.ndarray | None,
     top: float = REPORT.scan_top,
     responses: np.ndarray | None = None,
+    basis: np.ndarray | None = None,
 ) -> CriticalSpeeds:
     """The lateral critical speeds up to ``top`` × the operating speed, from a spin-up scan
     (speeds [rad/s], orbits (nodes, cases, speeds) [m]) when it reaches that high, else from a
     new scan; none, with a note, when the unbalance response is singular or the operating
     speed is zero. ``responses``: the scan's complex responses (ndof, cases, speeds) [m, rad],
-    which start each peak's projected model instead of three full solves."""
+    which start each peak's projected model instead of three full solves; ``basis``: the scan's
+    reduced basis, which starts them instead (:func:`lateral_critical_speeds`)."""
     speed = float(model.speed)
     search_top = top * speed
     if speed <= 0.0:
@@ -239,7 +250,9 @@ def scan_critical_speeds(
         scan = (np.asarray(speeds), np.asarray(orbits))
     try:
         responses = None if scan is None or responses is None else np.asarray(responses)
-        return CriticalSpeeds(lateral_critical_speeds(model, top=top, scan=scan, responses=responses), search_top)
+        basis = None if scan is None else basis
+        found = lateral_critical_speeds(model, top=top, scan=scan, responses=responses, basis=basis)
+        return CriticalSpeeds(found, search_top)
     except SingularSystemError as exc:
         return CriticalSpeeds(None, search_top, f"the unbalance response could not be scanned: {exc}")
 

@@ -23,7 +23,8 @@ round is accepted only when the projected orbit agrees there with the full one t
 fails is evaluated again on its model enriched with those full solutions (the model then
 interpolates there too), at most :data:`PEAK_ENRICHMENTS` times, then with full solves at every
 speed. tests/test_peak_projection.py compares the critical speeds and amplification factors
-with the all-full refinement.
+with the all-full refinement; tests/test_spinup_projection.py does too with the models started
+from the spin-up scan's reduced basis (:class:`PeakBasis`), as an assessment does.
 """
 
 from __future__ import annotations
@@ -31,11 +32,11 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg
 
-from flexshaft.analyses.banded import solver_for
+from flexshaft.analyses.banded import BandedHarmonicSolver, solver_for
 from flexshaft.analyses.response import orbit_amplitude
 from flexshaft.assembly.model import Model
 
-__all__ = ["PEAK_ENRICHMENTS", "PEAK_TOLERANCE", "ProjectedOrbit"]
+__all__ = ["PEAK_ENRICHMENTS", "PEAK_TOLERANCE", "PeakBasis", "ProjectedOrbit"]
 
 #: Largest relative difference between the projected and the full orbit at a checked sample for a
 #: round to be accepted. A critical speed is resolved to a 20th of its half-power bandwidth and
@@ -68,9 +69,10 @@ class ProjectedOrbit:
     speeds : array_like
         Speeds [rad/s] whose full responses start the basis (e.g. the scan's samples around the
         peak).
-    basis : ndarray, optional
+    basis : ndarray or PeakBasis, optional
         Columns (n_free, r) on the free DOFs that start the basis instead (e.g. the spin-up scan's
-        reduced basis, :mod:`flexshaft.analyses.sweep_projection`: no full solve to start).
+        reduced basis, :mod:`flexshaft.analyses.sweep_projection`: no full solve to start), or
+        a :class:`PeakBasis` of them already projected (shared by the peaks of one scan).
 
     Calling it with new speeds [rad/s] returns the orbit there (checked as the module docstring
     says); ``full_solves`` counts the banded solves it made.
@@ -87,7 +89,10 @@ class ProjectedOrbit:
         self.rhs = np.asarray(load, dtype=complex)[free]
         self.full_solves = 0
         self.columns: list[np.ndarray] = []
-        if basis is None:
+        if isinstance(basis, PeakBasis):
+            self.columns.extend(basis.columns)
+            self._use(basis.basis, basis.terms)
+        elif basis is None:
             self._enrich(np.asarray(speeds, dtype=float))
         else:
             self._enrich(np.zeros(0), np.asarray(basis, dtype=complex))
@@ -106,21 +111,20 @@ class ProjectedOrbit:
         """Add the full responses at ``speeds`` to the basis and project the model on it."""
         X = self._full(speeds) if solutions is None else solutions
         self.columns.extend(X.T)
-        A = np.column_stack(self.columns)
-        A = A / np.maximum(np.linalg.norm(A, axis=0), np.finfo(float).tiny)
-        # pivoted: dropping a column of an unpivoted Q would drop its share of every later column
-        Q, R, _ = scipy.linalg.qr(A, mode="economic", pivoting=True, check_finite=False)
-        diag = np.abs(np.diag(R))
-        V = Q[:, : max(int(np.count_nonzero(diag > _RANK_TOLERANCE * diag[0])), 1)]
-        self.basis = V
-        self.terms = self.solver.project(V[None])[0]  # (n_terms, r, r)
-        self.inputs = V.conj().T @ self.rhs
-        self.outputs = V[self.rows]  # (2, r)
+        self._use(*_projection(self.solver, self.columns))
+
+    def _use(self, basis: np.ndarray, terms: np.ndarray) -> None:
+        """Take ``basis`` V (n_free, r) with the projected terms Vᴴ T_k V (n_terms, r, r)."""
+        self.basis = basis
+        self.terms = terms
+        self.inputs = basis.conj().T @ self.rhs
+        self.outputs = basis[self.rows]  # (2, r)
 
     def projected(self, speeds: np.ndarray) -> np.ndarray:
         """Orbit [m] at ``speeds`` on the projected model (NaN where it is singular)."""
         weights = self.solver.term_weights(speeds, speeds)
-        Z = np.einsum("ik,kab->iab", weights, self.terms)
+        r = self.basis.shape[1]
+        Z = (weights @ self.terms.reshape(-1, r * r)).reshape(-1, r, r)
         try:
             y = np.linalg.solve(Z, np.broadcast_to(self.inputs, (speeds.size, self.inputs.size))[..., None])[..., 0]
         except np.linalg.LinAlgError:
@@ -151,6 +155,28 @@ class ProjectedOrbit:
                 return values
             self._enrich(speeds[fresh], X)  # the model then interpolates there: evaluate again
         return self._orbit(self._full(speeds))
+
+
+class PeakBasis:
+    """A basis that starts many :class:`ProjectedOrbit` of one model (e.g. one per critical
+    speed of a scan), orthonormalised and projected once: ``columns`` (n_free, r) on the free
+    DOFs, e.g. the spin-up scan's reduced basis (:mod:`flexshaft.analyses.sweep_projection`)."""
+
+    def __init__(self, model: Model, columns: np.ndarray) -> None:
+        self.columns = list(np.asarray(columns, dtype=complex).T)
+        self.basis, self.terms = _projection(solver_for(model), self.columns)
+
+
+def _projection(solver: BandedHarmonicSolver, columns: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """An orthonormal basis V of the span of ``columns`` and the projected terms Vᴴ T_k V
+    (n_terms, r, r) of the solver's Z."""
+    A = np.column_stack(columns)
+    A = A / np.maximum(np.linalg.norm(A, axis=0), np.finfo(float).tiny)
+    # pivoted: dropping a column of an unpivoted Q would drop its share of every later column
+    Q, R, _ = scipy.linalg.qr(A, mode="economic", pivoting=True, check_finite=False)
+    diag = np.abs(np.diag(R))
+    V = Q[:, : max(int(np.count_nonzero(diag > _RANK_TOLERANCE * diag[0])), 1)]
+    return V, solver.project(V[None])[0]
 
 
 def _checked_samples(values: np.ndarray) -> np.ndarray:

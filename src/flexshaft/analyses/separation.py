@@ -236,7 +236,7 @@ def _vertex(s: np.ndarray, a: np.ndarray, i: int) -> tuple[float, float]:
     if np.any(a[i - 1 : i + 2] <= 0.0):
         return float(s[i]), float(a[i])
     y = 1.0 / a[i - 1 : i + 2] ** 2
-    c2, c1, c0 = np.polyfit(x - x[1], y, 2)
+    c2, c1, c0 = _parabola(x - x[1], y)
     if not c2 > 0.0:
         return float(s[i]), float(a[i])
     dx = float(np.clip(-c1 / (2.0 * c2), x[0] - x[1], x[2] - x[1]))
@@ -244,6 +244,16 @@ def _vertex(s: np.ndarray, a: np.ndarray, i: int) -> tuple[float, float]:
     if not 0.0 < y_min <= y[1] or 1.0 / np.sqrt(y_min) * _HALF_POWER > min(a[i - 1], a[i + 1]):
         return float(s[i]), float(a[i])
     return float(x[1] + dx), float(1.0 / np.sqrt(y_min))
+
+
+def _parabola(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float]:
+    """Coefficients (c2, c1, c0) of the parabola ``c2 x² + c1 x + c0`` through three points
+    with ``x[1] = 0`` (Newton's divided differences: the interpolant ``np.polyfit(x, y, 2)``
+    finds by least squares, without its overhead)."""
+    left = (y[1] - y[0]) / (x[1] - x[0])
+    right = (y[2] - y[1]) / (x[2] - x[1])
+    c2 = (right - left) / (x[2] - x[0])
+    return float(c2), float(right - c2 * x[2]), float(y[1])
 
 
 def _crossing(s0: float, a0: float, s1: float, a1: float, level: float) -> float:

@@ -52,6 +52,10 @@ class SpinupResponse:
         Estimated error of the checked outputs at each speed relative to their peaks over the
         scan [-] (n_speeds,; 0 where solved in full), when the scan was projected
         (:mod:`flexshaft.analyses.sweep_projection`); None for the all-full sweep.
+    basis : ndarray or None
+        The projected scan's reduced basis (n_free, r) on the free DOFs, orthonormal, whose span
+        holds the responses (it starts the critical speeds' peak models,
+        :func:`~flexshaft.analyses.criticals.scan_critical_speeds`); None for the all-full sweep.
     """
 
     speeds: np.ndarray
@@ -62,6 +66,7 @@ class SpinupResponse:
     actuator_displacement: Mapping[str, np.ndarray]
     actuator_force: Mapping[str, np.ndarray]
     error_estimate: np.ndarray | None = None
+    basis: np.ndarray | None = None
 
     def __repr__(self) -> str:
         """One line: the scan and its peaks (the arrays are in the attributes)."""
@@ -96,14 +101,14 @@ def spinup_response(model: Model, speeds: np.ndarray, projected: bool = True) ->
     """The worst-case imbalance response of ``model`` at ``speeds`` [rad/s] (see the module
     docstring); ``projected=False``: a full banded solve at every speed."""
     speeds = np.asarray(speeds, dtype=float)
-    estimate = None
+    estimate = basis = None
     if projected:
         sweep = imbalance_sweep(model, speeds, imbalance_loads(model))
-        q, estimate = sweep.response, sweep.error_estimate
+        q, estimate, basis = sweep.response, sweep.error_estimate, sweep.basis
     else:
         q = imbalance_response(model, speeds, imbalance_loads(model))  # (ndof, ncases, nspeeds)
     orbits, case = worst_case_orbits(model, q)
     idx = np.arange(speeds.size)
     envelope = orbits[:, case, idx]
     displacement, force = actuator_response(model, q[:, case, idx], speeds)
-    return SpinupResponse(speeds, q, orbits, case, envelope, displacement, force, estimate)
+    return SpinupResponse(speeds, q, orbits, case, envelope, displacement, force, estimate, basis)

@@ -134,6 +134,10 @@ class SweepResult:
         Columns of the final reduced basis (0: every speed solved in full).
     rounds : int
         Greedy rounds (enrichments) made.
+    basis : ndarray or None
+        The final reduced basis V (n_free, basis_size) on the free DOFs, orthonormal: every
+        response of the scan lies in its span (but those solved in full after the last
+        enrichment, near an undamped resonance); None when every speed was solved in full.
     """
 
     response: HarmonicResponse
@@ -141,6 +145,7 @@ class SweepResult:
     full: np.ndarray
     basis_size: int
     rounds: int
+    basis: np.ndarray | None = None
     _previous: tuple | None = None
 
     @property
@@ -325,8 +330,8 @@ def imbalance_sweep(model: Model, speeds, loads_per_speed_squared, tolerance: fl
         result = _greedy(model, solver, speeds, rhs, combination, X, full, solve_full, tolerance)
     if result is None:  # every speed not yet solved, in full
         solve_full(np.flatnonzero(~full))
-        result = X, None, np.zeros(ns), 0, 0
-    q, q_previous, estimate, basis_size, rounds = result
+        result = X, None, np.zeros(ns), None, 0
+    q, q_previous, estimate, basis, rounds = result
 
     def response(values):
         out = np.zeros((model.dofs.size, Q.shape[1], ns), dtype=complex)
@@ -336,7 +341,8 @@ def imbalance_sweep(model: Model, speeds, loads_per_speed_squared, tolerance: fl
 
     previous = None if q_previous is None else (*q_previous, free, combination)
     q = np.where(full[None, None, :], X, q)
-    return SweepResult(response(q), np.where(full, 0.0, estimate), full, basis_size, rounds, previous)
+    size = 0 if basis is None else basis.shape[1]
+    return SweepResult(response(q), np.where(full, 0.0, estimate), full, size, rounds, basis, previous)
 
 
 def _independent(loads: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -367,7 +373,8 @@ def _cases(values: np.ndarray, combination: np.ndarray) -> np.ndarray:
 
 def _greedy(model, solver, speeds, rhs, combination, X, full, solve_full, tolerance):
     """The rounds of :func:`imbalance_sweep`: (q (n, c, n_speeds), the previous model's basis
-    and coordinates, estimate, basis size, rounds), or None when the projection gives way to full solves."""
+    and coordinates, estimate, the final basis, rounds), or None when the projection gives way to
+    full solves."""
     ns, n, c = speeds.size, solver.n, rhs.shape[1]
     terms = _Terms(solver, speeds)
     coefficients = terms.coefficients
@@ -421,4 +428,4 @@ def _greedy(model, solver, speeds, rhs, combination, X, full, solve_full, tolera
     if resonant.size:  # near an undamped resonance: the full solver's checks decide
         solve_full(resonant)
     q = np.matmul(reduced.V, y).transpose(1, 2, 0)
-    return q, (previous[0].V, previous[1]), estimate, reduced.size, rounds
+    return q, (previous[0].V, previous[1]), estimate, reduced.V, rounds

@@ -78,7 +78,7 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
     model = _model_of(source)
     response = spinup_response(model, resolution.spin_speeds(model.speed))
     criticals = scan_critical_speeds(
-        model, response.speeds, response.orbits, resolution.scan_top, responses=response.response
+        model, response.speeds, response.orbits, resolution.scan_top, responses=response.response, basis=response.basis
     )
     return response, criticals
 
