@@ -132,6 +132,22 @@ def _ritz_operators(
     return Bs, Bc, m
 
 
+def _series(m: NDArray[np.int_]) -> list[tuple[slice, slice]]:
+    """(dofs, axial indices) of each run of consecutive axial indices in ``m``: one field's series."""
+    edges = np.concatenate([[0], np.flatnonzero(np.diff(m) != 1) + 1, [m.size]])
+    return [(slice(a, b), slice(int(m[a]), int(m[b - 1]) + 1)) for a, b in zip(edges[:-1], edges[1:])]
+
+
+def _same_index_pairs(series: list[tuple[slice, slice]]) -> tuple[NDArray[np.int_], ...]:
+    """(a, b, m): every pair of dofs a, b with the same axial index m."""
+    pairs = []
+    for dofs_a, m_a in series:
+        for dofs_b, m_b in series:
+            m = np.arange(max(m_a.start, m_b.start), min(m_a.stop, m_b.stop))
+            pairs.append((dofs_a.start + m - m_a.start, dofs_b.start + m - m_b.start, m))
+    return tuple(np.concatenate(column) for column in zip(*pairs))
+
+
 def assemble_ritz(
     Bs: NDArray[np.complex128],
     Bc: NDArray[np.complex128],
@@ -147,30 +163,47 @@ def assemble_ritz(
     unless both dofs have the same axial index m (orthogonal sines, orthogonal cosines): those
     two terms are summed on those pairs only. The cos-sin term is the conjugate transpose of the
     sin-cos one (C symmetric, I_cs = I_sc^T). The load matrix is built the same way from the
-    rotation rows.
+    rotation rows. The dofs come in series of consecutive axial indices (one per field), so the
+    integrals of a pair of series are a block of those of m = 0..max(m): the products are
+    weighted block by block, and the load's outer products only where the rotation rows have
+    entries, without an integral matrix over all the dofs.
     """
-    integrals = axial_integrals(m, length)
+    integrals = axial_integrals(np.arange(int(m.max()) + 1), length)
+    I_sc = integrals[(0, 1)]
+    series = _series(m)
+    area = 2.0 * np.pi * radius
     n_strains = C.shape[0]
     Bs_, Bc_ = Bs[:n_strains], Bc[:n_strains]
-    CBs, CBc = C @ Bs_, C @ Bc_
-    cross = (Bs_.conj().T @ CBc) * integrals[(0, 1)]
-    K = cross + cross.conj().T
-    a, b = np.nonzero(m[:, None] == m[None, :])  # same axial index: the same-parity terms
-    I_ss, I_cc = integrals[(0, 0)][a, b], integrals[(1, 1)][a, b]
+    CBs, CBc = (area * C) @ Bs_, (area * C) @ Bc_
+    K, cos_sin = Bs_.conj().T @ CBc, Bc_.conj().T @ CBs  # the sin-cos term and its conjugate transpose
+    for dofs_a, m_a in series:
+        for dofs_b, m_b in series:
+            K[dofs_a, dofs_b] *= I_sc[m_a, m_b]
+            cos_sin[dofs_a, dofs_b] *= I_sc[m_b, m_a].T
+    K += cos_sin
+    a, b, same = _same_index_pairs(series)  # the same-parity terms
+    I_ss, I_cc = integrals[(0, 0)][same, same], integrals[(1, 1)][same, same]
     K[a, b] += (
         np.einsum("ip,ip->p", Bs_[:, a].conj(), CBs[:, b]) * I_ss
         + np.einsum("ip,ip->p", Bc_[:, a].conj(), CBc[:, b]) * I_cc
     )
-    # P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
+    # G = -(P + P^H) / (2 pi R^2) area, P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
     (bx_s, by_s), (bx_c, by_c) = Bs[-2:], Bc[-2:]
-    P = (
-        np.multiply.outer(bx_s.conj(), by_c) * integrals[(0, 1)]
-        + np.multiply.outer(bx_c.conj(), by_s) * integrals[(1, 0)]
-    )
-    P[a, b] += bx_s[a].conj() * by_s[b] * I_ss + bx_c[a].conj() * by_c[b] * I_cc
-    area = 2.0 * np.pi * radius
-    G = -(P + P.conj().T) * (area / (2.0 * np.pi * radius**2))
-    return area * K, G
+    scale = -area / (2.0 * np.pi * radius**2)
+    G = np.zeros(K.shape, dtype=complex)
+    for x, y, sin_first in ((bx_s, by_c, True), (bx_c, by_s, False)):
+        for dofs_a, m_a in (series_ for series_ in series if np.any(x[series_[0]])):
+            for dofs_b, m_b in (series_ for series_ in series if np.any(y[series_[0]])):
+                I = I_sc[m_a, m_b] if sin_first else I_sc[m_b, m_a].T
+                block = np.multiply.outer(x[dofs_a].conj(), y[dofs_b]) * (scale * I)
+                G[dofs_a, dofs_b] += block
+                G[dofs_b, dofs_a] += block.conj().T
+
+    def same_index(a, b):
+        return bx_s[a].conj() * by_s[b] * I_ss + bx_c[a].conj() * by_c[b] * I_cc
+
+    G[a, b] += scale * (same_index(a, b) + same_index(b, a).conj())
+    return K, G
 
 
 def classical_galerkin_matrices(
