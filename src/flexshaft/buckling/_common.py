@@ -145,15 +145,19 @@ _GOLDEN_STEPS = 21
 _GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
-def helix_grid(torques, radius: float, n: NDArray[np.int_], log_k_offsets: NDArray[np.float64]) -> tuple:
-    """The torques of :func:`helix_minima`'s log grid, both signs of k: ``((log_k, values), ...)``
-    per sign, log_k (len(n), len(offsets)) and values (len(n), len(offsets), 2)."""
+#: Signs of the axial wavenumber: the helix leaning either way, searched together
+_HANDS = np.array([1.0, -1.0])
+
+
+def helix_grid(
+    torques, radius: float, n: NDArray[np.int_], log_k_offsets: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The torques of :func:`helix_minima`'s log grid, both signs of k, in one call of ``torques``:
+    ``(log_k, values)``, log_k (len(n), len(offsets)) and values (2, len(n), len(offsets), 2)
+    (sign of k: +, -; then n, log k, sense)."""
     n = np.atleast_1d(np.asarray(n, dtype=int))
-    grid = []
-    for hand in (1.0, -1.0):
-        log_k = np.log(n / radius)[:, None] + log_k_offsets[None, :]
-        grid.append((log_k, torques(n[:, None], hand * np.exp(log_k))))
-    return tuple(grid)
+    log_k = np.log(n / radius)[:, None] + log_k_offsets[None, :]
+    return log_k, torques(n[:, None], _HANDS[:, None, None] * np.exp(log_k))
 
 
 def helix_minima(
@@ -162,7 +166,7 @@ def helix_minima(
     n: NDArray[np.int_],
     log_k_offsets: NDArray[np.float64],
     refine: bool = True,
-    grid: tuple | None = None,
+    grid: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Minimum over the axial wavenumber k of an endless tube's helix torques, per n.
 
@@ -172,43 +176,39 @@ def helix_minima(
     computed by :func:`helix_grid`), and, with ``refine``, by golden-section search in log k
     within one grid step of the best point. The bracket shrinks to 2.2e-4 of the grid step
     (:data:`_GOLDEN_STEPS`), which leaves a relative error of order 1e-9 at a smooth minimum.
+    Both signs of k, all n and both senses are searched together (one call of ``torques`` per
+    step), each on its own bracket.
 
     Returns ``(torques, wavenumbers)``, each (len(n), 2): the minimum torque of each sense
-    [N m] and its signed axial wavenumber [rad/m].
+    [N m] and its signed axial wavenumber [rad/m] (the positive one on a tie).
     """
     n = np.atleast_1d(np.asarray(n, dtype=int))
-    rows = np.arange(n.size)[:, None]
-    senses = np.arange(2)[None, :]
-    best_torques = np.full((n.size, 2), np.inf)
-    wavenumbers = np.zeros((n.size, 2))
+    hands, rows, senses = np.arange(2)[:, None, None], np.arange(n.size)[None, :, None], np.arange(2)[None, None, :]
     step = log_k_offsets[1] - log_k_offsets[0]
-    for hand, (log_k, values) in zip(
-        (1.0, -1.0), grid if grid is not None else helix_grid(torques, radius, n, log_k_offsets)
-    ):
-        best = np.argmin(values, axis=1)  # (n, 2)
-        centre, value = log_k[rows, best], values[rows, best, senses]
-        if refine:
+    log_k, values = grid if grid is not None else helix_grid(torques, radius, n, log_k_offsets)
+    best = np.argmin(values, axis=2)  # (hand, n, sense)
+    centre, value = log_k[rows, best], values[hands, rows, best, senses]
+    if refine:
 
-            def own(x, hand=hand):  # each sense's torque at its own log k, (n, 2)
-                return torques(n[:, None], hand * np.exp(x))[rows, senses, senses]
+        def own(x):  # each (hand, n, sense)'s torque at its own log k
+            return torques(n[:, None], _HANDS[:, None, None] * np.exp(x))[hands, rows, senses, senses]
 
-            a, b = centre - step, centre + step
-            x1, x2 = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
-            f1, f2 = own(x1), own(x2)
-            for x, f in ((x1, f1), (x2, f2)):
-                better = f < value
-                centre, value = np.where(better, x, centre), np.where(better, f, value)
-            for _ in range(_GOLDEN_STEPS - 2):
-                left = f1 < f2  # the minimum is in [a, x2]
-                a, b = np.where(left, a, x1), np.where(left, x2, b)
-                kept_x, kept_f = np.where(left, x1, x2), np.where(left, f1, f2)
-                new_x = np.where(left, b - _GOLDEN * (b - a), a + _GOLDEN * (b - a))
-                new_f = own(new_x)
-                better = new_f < value
-                centre, value = np.where(better, new_x, centre), np.where(better, new_f, value)
-                x1, f1 = np.where(left, new_x, kept_x), np.where(left, new_f, kept_f)
-                x2, f2 = np.where(left, kept_x, new_x), np.where(left, kept_f, new_f)
-        improved = value < best_torques
-        best_torques = np.where(improved, value, best_torques)
-        wavenumbers = np.where(improved, hand * np.exp(centre), wavenumbers)
-    return best_torques, wavenumbers
+        a, b = centre - step, centre + step
+        x1, x2 = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+        f1, f2 = own(x1), own(x2)
+        for x, f in ((x1, f1), (x2, f2)):
+            better = f < value
+            centre, value = np.where(better, x, centre), np.where(better, f, value)
+        for _ in range(_GOLDEN_STEPS - 2):
+            left = f1 < f2  # the minimum is in [a, x2]
+            a, b = np.where(left, a, x1), np.where(left, x2, b)
+            kept_x, kept_f = np.where(left, x1, x2), np.where(left, f1, f2)
+            new_x = np.where(left, b - _GOLDEN * (b - a), a + _GOLDEN * (b - a))
+            new_f = own(new_x)
+            better = new_f < value
+            centre, value = np.where(better, new_x, centre), np.where(better, new_f, value)
+            x1, f1 = np.where(left, new_x, kept_x), np.where(left, new_f, kept_f)
+            x2, f2 = np.where(left, kept_x, new_x), np.where(left, kept_f, new_f)
+    negative = value[1] < value[0]  # the negative sign of k only when strictly lower
+    wavenumbers = np.where(negative, -np.exp(centre[1]), np.where(value[0] < np.inf, np.exp(centre[0]), 0.0))
+    return np.where(negative, value[1], value[0]), wavenumbers
