@@ -81,17 +81,18 @@ def default_terms(axial_wavenumber: float, length: float) -> int:
     return int(np.clip(np.ceil(1.25 * abs(axial_wavenumber) * length / np.pi) + 16, 24, 400))
 
 
-def extreme_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tuple[float, float]:
+def extreme_torques(K: NDArray, G: NDArray) -> tuple[float, float]:
     """Smallest positive torque and smallest negative-torque magnitude of K a = T G a [N m].
 
-    K is Hermitian positive definite, G Hermitian. The torque loads only the dofs where G has
-    entries (the rotations' v and w terms of the Ritz series): the nonzero eigenvalues mu = 1/T
-    of the pencil (G, K) are those of (G_kk, S) with S = K_kk - K_kr K_rr^-1 K_rk the Schur
-    complement of K on those dofs k (eliminate the rest r, on which G a = 0: K_rr a_r = -K_rk a_k).
-    That pencil is 40-50 % of the size, about a fifth of the work of the full one. K is scaled
-    to unit diagonal (symmetric diagonal equilibration) for the factorization, and S is formed
-    as K_kk - W^H W with W = L^-1 K_rk (K_rr = L L^H): one triangular solve and a Hermitian
-    rank-k update of the lower triangle, the only one the eigen-solver reads.
+    K is Hermitian positive definite, G Hermitian (both complex, or both real symmetric). The
+    torque loads only the dofs where G has entries (the rotations' v and w terms of the Ritz
+    series): the nonzero eigenvalues mu = 1/T of the pencil (G, K) are those of (G_kk, S) with
+    S = K_kk - K_kr K_rr^-1 K_rk the Schur complement of K on those dofs k (eliminate the rest r,
+    on which G a = 0: K_rr a_r = -K_rk a_k). That pencil is 40-50 % of the size, about a fifth of
+    the work of the full one. K is scaled to unit diagonal (symmetric diagonal equilibration) for
+    the factorization, and S is formed as K_kk - W^H W with W = L^-1 K_rk (K_rr = L L^H): one
+    triangular solve and a rank-k update of the lower triangle (BLAS zherk or dsyrk), the only
+    one the eigen-solver reads.
     """
     loaded = np.any(G != 0.0, axis=0)
     if not loaded.any():
@@ -107,8 +108,9 @@ def extreme_torques(K: NDArray[np.complex128], G: NDArray[np.complex128]) -> tup
         # cho_factor leaves the upper triangle as it was; solve_triangular reads the lower one only
         L, _ = scipy.linalg.cho_factor(scaled(K, r, r), lower=True, check_finite=False)
         W = scipy.linalg.solve_triangular(L, scaled(K, r, k), lower=True, check_finite=False)
-        # S -= W^H W on the lower triangle only (BLAS zherk, half a product), the one eigh reads
-        S = scipy.linalg.blas.zherk(-1.0, W, beta=1.0, c=S, trans=2, lower=1, overwrite_c=1)
+        # S -= W^H W on the lower triangle only (half a product), the one eigh reads
+        rank_k_update = scipy.linalg.blas.zherk if np.iscomplexobj(W) else scipy.linalg.blas.dsyrk
+        S = rank_k_update(-1.0, W, beta=1.0, c=S, trans=2, lower=1, overwrite_c=1)
     # scipy-stubs 1.17.1.5 types the eigvals_only overloads' driver without the generalized
     # drivers ("gv", "gvd", "gvx"), which scipy accepts for a (G, S) pair
     mu = scipy.linalg.eigh(G_kk, S, lower=True, eigvals_only=True, driver="gvd", check_finite=False)  # type: ignore[call-overload]

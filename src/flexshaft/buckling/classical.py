@@ -206,6 +206,42 @@ def assemble_ritz(
     return K, G
 
 
+#: Powers of i, exact: i^m = _I_POWERS[m % 4]
+_I_POWERS = np.array([1.0, 1j, -1.0, -1j])
+#: Phase of each field's Ritz coefficients (U, V, W) in the real basis of :func:`real_ritz`
+_FIELD_PHASES = (1j, 1.0, 1j)
+
+
+def real_ritz(
+    Bs: NDArray[np.complex128],
+    Bc: NDArray[np.complex128],
+    m: NDArray[np.int_],
+    C: NDArray[np.float64],
+    radius: float,
+    length: float,
+    field_phases: tuple[complex, ...],
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.complex128]]:
+    """:func:`assemble_ritz`'s K [N m] and G [-] in a basis where they are real, and its phases d.
+
+    The harmonic e^{i n theta} makes the y-derivatives imaginary and the x-derivatives of the
+    sine and cosine series stay real. Take each dof times d = phase(field) i^m (``field_phases``:
+    one per series of dofs, in their order U, V, W, ...; :data:`_FIELD_PHASES` here and in
+    :mod:`~flexshaft.buckling.shear`) and, apart from i^m, the sin part's membrane-bending rows
+    are imaginary and its transverse shear and rotation rows real, the cos part's the other way
+    round. The same-parity integrals pair equal m (factor 1: products within one part, real),
+    the sin-cos ones m of opposite parity, whose factor i^(m_b - m_a) = +-i makes the products
+    across the parts real. So D^H K D and D^H G D, D = diag(d) unitary, are real symmetric with
+    the pencil's eigenvalues, and the eigen-solves run in real arithmetic (a quarter of the
+    complex work); the imaginary parts dropped are exact zeros (products with +-1, +-i). Needs C
+    without coupling between the membrane-bending and transverse shear rows
+    (:func:`~flexshaft.buckling._common.shell_stiffness`). Returns ``(K, G, d)``; a mode's
+    coefficients in the dofs of :func:`assemble_ritz` are d a.
+    """
+    d = np.concatenate([phase * _I_POWERS[m[dofs] % 4] for phase, (dofs, _) in zip(field_phases, _series(m))])
+    K, G = assemble_ritz(Bs * d, Bc * d, m, C, radius, length)
+    return K.real, G.real, d
+
+
 def classical_galerkin_matrices(
     laminate: Laminate, radius: float, length: float, n: int, n_terms: int, kinematics: Kinematics = "sanders"
 ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
@@ -217,14 +253,17 @@ def classical_galerkin_matrices(
     return assemble_ritz(Bs, Bc, m, shell_stiffness(laminate), radius, length)
 
 
-def ritz_mode(K: NDArray[np.complex128], G: NDArray[np.complex128], torque: float, w: slice) -> NDArray[np.complex128]:
-    """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque."""
+def ritz_mode(
+    K: NDArray[np.float64], G: NDArray[np.float64], torque: float, w: slice, phases: NDArray[np.complex128]
+) -> NDArray[np.complex128]:
+    """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque,
+    with K, G in the real basis of :func:`real_ritz` (``phases`` its d): d a, normalised to max 1."""
     lu = scipy.linalg.lu_factor(K - torque * (1.0 - 1e-9) * G)
     vector = np.random.default_rng(0).standard_normal(int(K.shape[0])).astype(complex)
     for _ in range(4):
         vector = scipy.linalg.lu_solve(lu, G @ vector)
         vector /= np.linalg.norm(vector)
-    coefficients = vector[w]
+    coefficients = vector[w] * phases[w]
     return coefficients / coefficients[np.argmax(np.abs(coefficients))]
 
 
@@ -241,9 +280,15 @@ def classical_buckling(
         M = default_terms(max(abs(helix["positive"][2]), abs(helix["negative"][2])), length)
     else:
         M = int(n_terms)
+    C = shell_stiffness(laminate)
+
+    def matrices(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.complex128]]:
+        Bs, Bc, m = _ritz_operators(radius, length, n, M, kinematics)
+        return real_ritz(Bs, Bc, m, C, radius, length, _FIELD_PHASES)
+
     best = {True: (np.inf, 0), False: (np.inf, 0)}  # sense (positive?) -> (torque, n)
     for n in range(2, n_max + 1):
-        torques = extreme_torques(*classical_galerkin_matrices(laminate, radius, length, n, M, kinematics))
+        torques = extreme_torques(*matrices(n)[:2])
         for positive, torque in zip((True, False), torques):
             if torque < best[positive][0]:
                 best[positive] = (torque, n)
@@ -253,8 +298,8 @@ def classical_buckling(
     out: dict = {"n_terms": M}
     for positive, (torque, n_best) in best.items():
         if np.isfinite(torque):
-            K, G = classical_galerkin_matrices(laminate, radius, length, n_best, M, kinematics)
-            mode = ritz_mode(K, G, torque if positive else -torque, w)
+            K, G, phases = matrices(n_best)
+            mode = ritz_mode(K, G, torque if positive else -torque, w, phases)
         else:
             mode = np.full(M, np.nan, dtype=complex)
         out[positive] = (float(torque), n_best, mode)
