@@ -21,6 +21,7 @@ __all__ = [
     "helix_grid",
     "helix_minima",
     "rank_two_torques",
+    "real_helix_torques",
     "THEORIES",
     "KINEMATICS",
 ]
@@ -117,9 +118,7 @@ def extreme_torques(K: NDArray, G: NDArray) -> tuple[float, float]:
     return (1.0 / mu[-1] if mu[-1] > 0.0 else np.inf), (-1.0 / mu[0] if mu[0] < 0.0 else np.inf)
 
 
-def rank_two_torques(
-    K: NDArray[np.complex128], beta_x: NDArray[np.complex128], beta_y: NDArray[np.complex128], radius: float
-) -> NDArray[np.float64]:
+def rank_two_torques(K: NDArray, beta_x: NDArray, beta_y: NDArray, radius: float) -> NDArray[np.float64]:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of stacked helices.
 
     The load matrix has rank 2: G = -c (x y^H + y x^H) with x = conj(beta_x), y = conj(beta_y)
@@ -127,7 +126,8 @@ def rank_two_torques(
     eigenvalues mu = 1/T of K^-1 G are those of the 2x2 matrix -c J S, S = W^H K^-1 W,
     W = [x, y], J = [[0, 1], [1, 0]]: mu = -c (rho -/+ sqrt(rho^2 + det S)) with rho = Re S_01.
     So T+ = 1/(c (sqrt(rho^2 + d) - rho)) and T- = 1/(c (sqrt(rho^2 + d) + rho)), one solve
-    with two right-hand sides per helix. ``K`` (..., m, m), ``beta_x``, ``beta_y`` (..., m).
+    with two right-hand sides per helix. ``K`` (..., m, m), ``beta_x``, ``beta_y`` (..., m),
+    complex or real.
     """
     W = np.stack([beta_x.conj(), beta_y.conj()], axis=-1)  # (..., m, 2)
     S = np.swapaxes(W.conj(), -1, -2) @ np.linalg.solve(K, W)
@@ -138,6 +138,27 @@ def rank_two_torques(
         positive = np.where(root - rho > 0.0, 1.0 / (c * (root - rho)), np.inf)
         negative = np.where(root + rho > 0.0, 1.0 / (c * (root + rho)), np.inf)
     return np.stack([positive, negative], axis=-1)
+
+
+def real_helix_torques(
+    B: NDArray[np.complex128], phases: tuple[complex, ...], C: NDArray[np.float64], radius: float
+) -> NDArray[np.float64]:
+    """:func:`rank_two_torques` of stacked helices from their operator, in real arithmetic [N m].
+
+    ``B`` (..., rows, dofs): the strain rows of ``C`` then beta_x, beta_y, for the harmonics
+    exp(i(k x + n theta)), whose derivatives are all imaginary. Taken times ``phases`` (one per
+    dof: i for u, v and the normal's rotations, 1 for w), every row of B is real or imaginary:
+    the membrane-bending rows real, the transverse shear rows and the rotations imaginary, and
+    C couples rows of one kind only. Re + Im of each entry (the other
+    part an exact zero) is then the row times 1 or -i, a unit factor that cancels in
+    K = B^H C B and in S = W^H K^-1 W: so K and W are real, with the torques of the complex
+    ones (a real basis change), and the solves run in real arithmetic.
+    """
+    rows = B * np.asarray(phases)
+    real = rows.real + rows.imag
+    strains = real[..., : C.shape[0], :]
+    K = np.swapaxes(strains, -1, -2) @ (C @ strains)
+    return rank_two_torques(K, real[..., -2, :], real[..., -1, :], radius)
 
 
 #: Torque evaluations of the golden-section refinement: the bracket of ±1 grid step shrinks by

@@ -25,7 +25,7 @@ from flexshaft.buckling._common import (
     default_terms,
     extreme_torques,
     helix_minima,
-    rank_two_torques,
+    real_helix_torques,
     shell_stiffness,
 )
 from flexshaft.laminate import Laminate
@@ -62,13 +62,15 @@ def helix_operators(radius: float, n, k, kinematics: str) -> NDArray[np.complex1
     return B
 
 
+#: Phases of the helix's dofs (U, V, W) that make its operator's rows real or imaginary
+_HELIX_PHASES = (1j, 1j, 1.0)
+
+
 def _helix_torques(C: NDArray[np.float64], radius: float, n, k, kinematics: str) -> NDArray[np.float64]:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix
-    exp(i(k x + n theta)) (inf: none); :func:`~flexshaft.buckling._common.rank_two_torques`."""
-    B = helix_operators(radius, n, k, kinematics)
-    strains = B[..., :6, :]
-    K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
-    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
+    exp(i(k x + n theta)) (inf: none); one real 3x3 solve with two right-hand sides per helix
+    (:func:`~flexshaft.buckling._common.real_helix_torques`)."""
+    return real_helix_torques(helix_operators(radius, n, k, kinematics), _HELIX_PHASES, C, radius)
 
 
 def classical_helix_torque(

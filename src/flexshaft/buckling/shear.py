@@ -76,7 +76,7 @@ from flexshaft.buckling._common import (
     extreme_torques,
     helix_grid,
     helix_minima,
-    rank_two_torques,
+    real_helix_torques,
     shell_stiffness,
 )
 from flexshaft.buckling.classical import assemble_ritz, real_ritz, ritz_mode
@@ -90,6 +90,8 @@ _U, _V, _W, _PX, _PY = range(5)
 #: Phase of each field's Ritz coefficients (U, V, W, PHI_X, PHI_Y) in the real basis of
 #: :func:`~flexshaft.buckling.classical.real_ritz`
 _FIELD_PHASES = (1j, 1.0, 1j, 1j, 1.0)
+#: Phases of the helix's dofs (U, V, W, PHI_X, PHI_Y) that make its operator's rows real or imaginary
+_HELIX_PHASES = (1j, 1j, 1.0, 1j, 1j)
 #: log-spaced axial wavenumbers around eta = n/R searched on the infinite tube
 _LOG_K_OFFSETS = np.linspace(-8.0, 6.0, 57)
 #: Above this many axial terms the infinite-tube value is used at that n: the tube then holds
@@ -135,11 +137,9 @@ def _helix_operators(radius: float, n: NDArray, k: NDArray, kinematics: str) -> 
 
 def _helix_torques(C: NDArray[np.float64], radius: float, n: NDArray, k: NDArray, kinematics: str) -> NDArray:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix (inf: none);
-    one 5x5 solve with two right-hand sides per helix (:func:`~flexshaft.buckling._common.rank_two_torques`)."""
-    B = _helix_operators(radius, n, k, kinematics)
-    strains = B[..., :8, :]
-    K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
-    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
+    one real 5x5 solve with two right-hand sides per helix
+    (:func:`~flexshaft.buckling._common.real_helix_torques`)."""
+    return real_helix_torques(_helix_operators(radius, n, k, kinematics), _HELIX_PHASES, C, radius)
 
 
 def _helix_function(laminate: Laminate, radius: float, kinematics: str):
