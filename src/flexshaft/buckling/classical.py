@@ -151,14 +151,11 @@ def _same_index_pairs(series: list[tuple[slice, slice]]) -> tuple[NDArray[np.int
 
 
 def assemble_ritz(
-    Bs: NDArray[np.complex128],
-    Bc: NDArray[np.complex128],
-    m: NDArray[np.int_],
-    C: NDArray[np.float64],
-    radius: float,
-    length: float,
-) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    Bs: NDArray, Bc: NDArray, m: NDArray[np.int_], C: NDArray[np.float64], radius: float, length: float
+) -> tuple[NDArray, NDArray]:
     """K [N m] and G per unit torque [-] from sin/cos strain rows; the last two rows are beta_x, beta_y.
+
+    The rows are complex, or real (:func:`real_ritz`), and K, G of their type.
 
     K = sum over (p, q) in {sin, cos}^2 of (B_p^H C B_q) * I_pq with the axial integrals I_pq
     (:func:`~flexshaft.buckling._common.axial_integrals`). The same-parity integrals vanish
@@ -192,7 +189,7 @@ def assemble_ritz(
     # G = -(P + P^H) / (2 pi R^2) area, P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
     (bx_s, by_s), (bx_c, by_c) = Bs[-2:], Bc[-2:]
     scale = -area / (2.0 * np.pi * radius**2)
-    G = np.zeros(K.shape, dtype=complex)
+    G = np.zeros(K.shape, dtype=np.result_type(Bs, Bc))
     for x, y, sin_first in ((bx_s, by_c, True), (bx_c, by_s, False)):
         for dofs_a, m_a in (series_ for series_ in series if np.any(x[series_[0]])):
             for dofs_b, m_b in (series_ for series_ in series if np.any(y[series_[0]])):
@@ -233,15 +230,19 @@ def real_ritz(
     round. The same-parity integrals pair equal m (factor 1: products within one part, real),
     the sin-cos ones m of opposite parity, whose factor i^(m_b - m_a) = +-i makes the products
     across the parts real. So D^H K D and D^H G D, D = diag(d) unitary, are real symmetric with
-    the pencil's eigenvalues, and the eigen-solves run in real arithmetic (a quarter of the
-    complex work); the imaginary parts dropped are exact zeros (products with +-1, +-i). Needs C
-    without coupling between the membrane-bending and transverse shear rows
+    the pencil's eigenvalues. Every entry of B D is real or imaginary (the other part an exact
+    zero), and two entries that meet in a nonzero product (C and the integral nonzero) are both
+    real or both imaginary; Re + Im of each entry (the entry times 1 or -i) therefore gives the
+    same products conj(a) b, and :func:`assemble_ritz` of those real rows gives D^H K D and
+    D^H G D directly: the assembly and the eigen-solves run in real arithmetic. Needs C without
+    coupling between the membrane-bending and transverse shear rows
     (:func:`~flexshaft.buckling._common.shell_stiffness`). Returns ``(K, G, d)``; a mode's
     coefficients in the dofs of :func:`assemble_ritz` are d a.
     """
     d = np.concatenate([phase * _I_POWERS[m[dofs] % 4] for phase, (dofs, _) in zip(field_phases, _series(m))])
-    K, G = assemble_ritz(Bs * d, Bc * d, m, C, radius, length)
-    return K.real, G.real, d
+    rows_s, rows_c = Bs * d, Bc * d
+    K, G = assemble_ritz(rows_s.real + rows_s.imag, rows_c.real + rows_c.imag, m, C, radius, length)
+    return K, G, d
 
 
 def classical_galerkin_matrices(
