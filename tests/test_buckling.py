@@ -488,3 +488,82 @@ def test_helix_minima_equal_a_fine_scan_of_the_wavenumber():
         scan = values.min(axis=1)
         np.testing.assert_allclose(torques[:, sense], scan, rtol=1e-8)
         assert np.all(torques[:, sense] >= scan * (1 - 1e-12))  # a sampled value, not below the minimum
+
+
+def test_real_basis_is_a_unitary_congruence_with_the_complex_pencils_torques_and_modes():
+    """Reference: the complex Hermitian Ritz matrices (checked against their four-term
+    definition above) and scipy.linalg.eigh of the full complex pencil (G, K) for the
+    shear-deformable and the classical shell (n = 2, 3, 5; Sanders and Donnell; a ±55/0 FMC
+    wall with bending-twisting coupling). ``real_ritz`` takes every dof times a unit phase d:
+    its real K, G must equal D^H K D, D^H G D (atol 1e-14 of the largest entry: one rounding
+    of the same sums, the imaginary parts exact zeros), the Schur solve of the real pencil must
+    give the full complex pencil's extreme torques (rtol 1e-10, as the complex test above) and
+    the inverse-iteration mode d a the complex eigenvector's W part (both normalised to
+    max |W_m| = 1; atol 1e-10: the eigenvectors' round-off over the relative gap to the next
+    eigenvalue, at least 5e-3 here; 2e-13 observed)."""
+    from flexshaft.buckling._common import extreme_torques, shell_stiffness
+    from flexshaft.buckling.classical import _FIELD_PHASES as CLASSICAL_PHASES
+    from flexshaft.buckling.classical import _ritz_operators as classical_operators
+    from flexshaft.buckling.classical import assemble_ritz, real_ritz, ritz_mode
+    from flexshaft.buckling.shear import _FIELD_PHASES as SHEAR_PHASES
+    from flexshaft.buckling.shear import _ritz_operators as shear_operators
+
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    M, length = 30, 1.2
+    for operators, theory, phases in (
+        (shear_operators, "shear", SHEAR_PHASES),
+        (classical_operators, "classical", CLASSICAL_PHASES),
+    ):
+        C = shell_stiffness(laminate, theory)
+        for kinematics in ("sanders", "donnell"):
+            for n in (2, 3, 5):
+                Bs, Bc, m = operators(BASELINE_RADIUS, length, n, M, kinematics)
+                K, G = assemble_ritz(Bs, Bc, m, C, BASELINE_RADIUS, length)
+                K_real, G_real, d = real_ritz(Bs, Bc, m, C, BASELINE_RADIUS, length, phases)
+                np.testing.assert_allclose(np.abs(d), 1.0, rtol=1e-15)
+                for real, full in ((K_real, K), (G_real, G)):
+                    congruent = d.conj()[:, None] * full * d[None, :]
+                    np.testing.assert_allclose(real, congruent, rtol=0, atol=1e-14 * np.abs(full).max())
+                mu, vectors = scipy.linalg.eigh(G, K)
+                np.testing.assert_allclose(extreme_torques(K_real, G_real), [1.0 / mu[-1], -1.0 / mu[0]], rtol=1e-10)
+                w = slice(2 * M + 1, 3 * M + 1)
+                for index, torque in ((-1, 1.0 / mu[-1]), (0, 1.0 / mu[0])):
+                    expected = vectors[w, index] / vectors[w, index][np.argmax(np.abs(vectors[w, index]))]
+                    np.testing.assert_allclose(ritz_mode(K_real, G_real, torque, w, d), expected, rtol=0, atol=1e-10)
+
+
+def test_real_basis_helix_torques_equal_the_complex_generalized_eigenvalues():
+    """Reference: scipy.linalg.eigvalsh of the complex generalized problem K a = T G a of one
+    helix, G = -(P + P^H)/(2 pi R^2), P = conj(beta_x) beta_y^T, for the shear-deformable (5 x 5)
+    and the classical (3 x 3) shell, Sanders and Donnell, random n and k of either sign, a wall
+    with bending-twisting coupling. The batched torques, solved in the real basis of
+    ``real_helix_torques``, must give its extreme eigenvalues mu = 1/T to atol 1e-12 of the
+    largest |mu|: both at round-off, whose absolute size in mu is of order eps max|mu| times the
+    conditioning of K (the two senses' eigenvalues differ by up to 1e7 here, so a relative
+    tolerance would hold the smaller to more digits than either solve has)."""
+    from flexshaft.buckling._common import shell_stiffness
+    from flexshaft.buckling.classical import _helix_torques as classical_torques
+    from flexshaft.buckling.shear import _helix_operators as shear_operators
+    from flexshaft.buckling.shear import _helix_torques as shear_torques
+
+    laminate = Laminate.from_layup("(55/-55/0/0)s", 3e-3, FMC)
+    radius = BASELINE_RADIUS
+    rng = np.random.default_rng(7)
+    n = rng.integers(2, 60, 30)
+    k = np.exp(rng.uniform(-3.0, 7.0, 30)) * rng.choice([-1.0, 1.0], 30)
+    for theory, torques, operators in (
+        ("shear", shear_torques, shear_operators),
+        ("classical", classical_torques, helix_operators),
+    ):
+        C = shell_stiffness(laminate, theory)
+        strains = C.shape[0]
+        for kinematics in ("sanders", "donnell"):
+            batched = torques(C, radius, n, k, kinematics)
+            for i in range(n.size):
+                B = operators(radius, n[i], k[i], kinematics)
+                K = B[:strains].conj().T @ C @ B[:strains]
+                P = np.outer(B[-2].conj(), B[-1])
+                mu = scipy.linalg.eigvalsh(-(P + P.conj().T) / (2.0 * np.pi * radius**2), K)
+                found = [1.0 / batched[i, 0], -1.0 / batched[i, 1]]  # mu = 1/T, 0 for no buckling
+                expected = [max(mu[-1], 0.0), min(mu[0], 0.0)]
+                np.testing.assert_allclose(found, expected, rtol=0, atol=1e-12 * np.abs(mu).max())

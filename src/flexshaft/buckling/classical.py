@@ -25,7 +25,7 @@ from flexshaft.buckling._common import (
     default_terms,
     extreme_torques,
     helix_minima,
-    rank_two_torques,
+    real_helix_torques,
     shell_stiffness,
 )
 from flexshaft.laminate import Laminate
@@ -62,13 +62,15 @@ def helix_operators(radius: float, n, k, kinematics: str) -> NDArray[np.complex1
     return B
 
 
+#: Phases of the helix's dofs (U, V, W) that make its operator's rows real or imaginary
+_HELIX_PHASES = (1j, 1j, 1.0)
+
+
 def _helix_torques(C: NDArray[np.float64], radius: float, n, k, kinematics: str) -> NDArray[np.float64]:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix
-    exp(i(k x + n theta)) (inf: none); :func:`~flexshaft.buckling._common.rank_two_torques`."""
-    B = helix_operators(radius, n, k, kinematics)
-    strains = B[..., :6, :]
-    K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
-    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
+    exp(i(k x + n theta)) (inf: none); one real 3x3 solve with two right-hand sides per helix
+    (:func:`~flexshaft.buckling._common.real_helix_torques`)."""
+    return real_helix_torques(helix_operators(radius, n, k, kinematics), _HELIX_PHASES, C, radius)
 
 
 def classical_helix_torque(
@@ -132,45 +134,115 @@ def _ritz_operators(
     return Bs, Bc, m
 
 
+def _series(m: NDArray[np.int_]) -> list[tuple[slice, slice]]:
+    """(dofs, axial indices) of each run of consecutive axial indices in ``m``: one field's series."""
+    edges = np.concatenate([[0], np.flatnonzero(np.diff(m) != 1) + 1, [m.size]])
+    return [(slice(a, b), slice(int(m[a]), int(m[b - 1]) + 1)) for a, b in zip(edges[:-1], edges[1:])]
+
+
+def _same_index_pairs(series: list[tuple[slice, slice]]) -> tuple[NDArray[np.int_], ...]:
+    """(a, b, m): every pair of dofs a, b with the same axial index m."""
+    pairs = []
+    for dofs_a, m_a in series:
+        for dofs_b, m_b in series:
+            m = np.arange(max(m_a.start, m_b.start), min(m_a.stop, m_b.stop))
+            pairs.append((dofs_a.start + m - m_a.start, dofs_b.start + m - m_b.start, m))
+    return tuple(np.concatenate(column) for column in zip(*pairs))
+
+
 def assemble_ritz(
-    Bs: NDArray[np.complex128],
-    Bc: NDArray[np.complex128],
-    m: NDArray[np.int_],
-    C: NDArray[np.float64],
-    radius: float,
-    length: float,
-) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    Bs: NDArray, Bc: NDArray, m: NDArray[np.int_], C: NDArray[np.float64], radius: float, length: float
+) -> tuple[NDArray, NDArray]:
     """K [N m] and G per unit torque [-] from sin/cos strain rows; the last two rows are beta_x, beta_y.
+
+    The rows are complex, or real (:func:`real_ritz`), and K, G of their type.
 
     K = sum over (p, q) in {sin, cos}^2 of (B_p^H C B_q) * I_pq with the axial integrals I_pq
     (:func:`~flexshaft.buckling._common.axial_integrals`). The same-parity integrals vanish
     unless both dofs have the same axial index m (orthogonal sines, orthogonal cosines): those
     two terms are summed on those pairs only. The cos-sin term is the conjugate transpose of the
     sin-cos one (C symmetric, I_cs = I_sc^T). The load matrix is built the same way from the
-    rotation rows.
+    rotation rows. The dofs come in series of consecutive axial indices (one per field), so the
+    integrals of a pair of series are a block of those of m = 0..max(m): the products are
+    weighted block by block, and the load's outer products only where the rotation rows have
+    entries, without an integral matrix over all the dofs.
     """
-    integrals = axial_integrals(m, length)
+    integrals = axial_integrals(np.arange(int(m.max()) + 1), length)
+    I_sc = integrals[(0, 1)]
+    series = _series(m)
+    area = 2.0 * np.pi * radius
     n_strains = C.shape[0]
     Bs_, Bc_ = Bs[:n_strains], Bc[:n_strains]
-    CBs, CBc = C @ Bs_, C @ Bc_
-    cross = (Bs_.conj().T @ CBc) * integrals[(0, 1)]
-    K = cross + cross.conj().T
-    a, b = np.nonzero(m[:, None] == m[None, :])  # same axial index: the same-parity terms
-    I_ss, I_cc = integrals[(0, 0)][a, b], integrals[(1, 1)][a, b]
+    CBs, CBc = (area * C) @ Bs_, (area * C) @ Bc_
+    K, cos_sin = Bs_.conj().T @ CBc, Bc_.conj().T @ CBs  # the sin-cos term and its conjugate transpose
+    for dofs_a, m_a in series:
+        for dofs_b, m_b in series:
+            K[dofs_a, dofs_b] *= I_sc[m_a, m_b]
+            cos_sin[dofs_a, dofs_b] *= I_sc[m_b, m_a].T
+    K += cos_sin
+    a, b, same = _same_index_pairs(series)  # the same-parity terms
+    I_ss, I_cc = integrals[(0, 0)][same, same], integrals[(1, 1)][same, same]
     K[a, b] += (
         np.einsum("ip,ip->p", Bs_[:, a].conj(), CBs[:, b]) * I_ss
         + np.einsum("ip,ip->p", Bc_[:, a].conj(), CBc[:, b]) * I_cc
     )
-    # P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
+    # G = -(P + P^H) / (2 pi R^2) area, P = sum over (p, q) of outer(beta_x,p^*, beta_y,q) I_pq
     (bx_s, by_s), (bx_c, by_c) = Bs[-2:], Bc[-2:]
-    P = (
-        np.multiply.outer(bx_s.conj(), by_c) * integrals[(0, 1)]
-        + np.multiply.outer(bx_c.conj(), by_s) * integrals[(1, 0)]
-    )
-    P[a, b] += bx_s[a].conj() * by_s[b] * I_ss + bx_c[a].conj() * by_c[b] * I_cc
-    area = 2.0 * np.pi * radius
-    G = -(P + P.conj().T) * (area / (2.0 * np.pi * radius**2))
-    return area * K, G
+    scale = -area / (2.0 * np.pi * radius**2)
+    G = np.zeros(K.shape, dtype=np.result_type(Bs, Bc))
+    for x, y, sin_first in ((bx_s, by_c, True), (bx_c, by_s, False)):
+        for dofs_a, m_a in (series_ for series_ in series if np.any(x[series_[0]])):
+            for dofs_b, m_b in (series_ for series_ in series if np.any(y[series_[0]])):
+                I = I_sc[m_a, m_b] if sin_first else I_sc[m_b, m_a].T
+                block = np.multiply.outer(x[dofs_a].conj(), y[dofs_b]) * (scale * I)
+                G[dofs_a, dofs_b] += block
+                G[dofs_b, dofs_a] += block.conj().T
+
+    def same_index(a, b):
+        return bx_s[a].conj() * by_s[b] * I_ss + bx_c[a].conj() * by_c[b] * I_cc
+
+    G[a, b] += scale * (same_index(a, b) + same_index(b, a).conj())
+    return K, G
+
+
+#: Powers of i, exact: i^m = _I_POWERS[m % 4]
+_I_POWERS = np.array([1.0, 1j, -1.0, -1j])
+#: Phase of each field's Ritz coefficients (U, V, W) in the real basis of :func:`real_ritz`
+_FIELD_PHASES = (1j, 1.0, 1j)
+
+
+def real_ritz(
+    Bs: NDArray[np.complex128],
+    Bc: NDArray[np.complex128],
+    m: NDArray[np.int_],
+    C: NDArray[np.float64],
+    radius: float,
+    length: float,
+    field_phases: tuple[complex, ...],
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.complex128]]:
+    """:func:`assemble_ritz`'s K [N m] and G [-] in a basis where they are real, and its phases d.
+
+    The harmonic e^{i n theta} makes the y-derivatives imaginary and the x-derivatives of the
+    sine and cosine series stay real. Take each dof times d = phase(field) i^m (``field_phases``:
+    one per series of dofs, in their order U, V, W, ...; :data:`_FIELD_PHASES` here and in
+    :mod:`~flexshaft.buckling.shear`) and, apart from i^m, the sin part's membrane-bending rows
+    are imaginary and its transverse shear and rotation rows real, the cos part's the other way
+    round. The same-parity integrals pair equal m (factor 1: products within one part, real),
+    the sin-cos ones m of opposite parity, whose factor i^(m_b - m_a) = +-i makes the products
+    across the parts real. So D^H K D and D^H G D, D = diag(d) unitary, are real symmetric with
+    the pencil's eigenvalues. Every entry of B D is real or imaginary (the other part an exact
+    zero), and two entries that meet in a nonzero product (C and the integral nonzero) are both
+    real or both imaginary; Re + Im of each entry (the entry times 1 or -i) therefore gives the
+    same products conj(a) b, and :func:`assemble_ritz` of those real rows gives D^H K D and
+    D^H G D directly: the assembly and the eigen-solves run in real arithmetic. Needs C without
+    coupling between the membrane-bending and transverse shear rows
+    (:func:`~flexshaft.buckling._common.shell_stiffness`). Returns ``(K, G, d)``; a mode's
+    coefficients in the dofs of :func:`assemble_ritz` are d a.
+    """
+    d = np.concatenate([phase * _I_POWERS[m[dofs] % 4] for phase, (dofs, _) in zip(field_phases, _series(m))])
+    rows_s, rows_c = Bs * d, Bc * d
+    K, G = assemble_ritz(rows_s.real + rows_s.imag, rows_c.real + rows_c.imag, m, C, radius, length)
+    return K, G, d
 
 
 def classical_galerkin_matrices(
@@ -184,14 +256,17 @@ def classical_galerkin_matrices(
     return assemble_ritz(Bs, Bc, m, shell_stiffness(laminate), radius, length)
 
 
-def ritz_mode(K: NDArray[np.complex128], G: NDArray[np.complex128], torque: float, w: slice) -> NDArray[np.complex128]:
-    """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque."""
+def ritz_mode(
+    K: NDArray[np.float64], G: NDArray[np.float64], torque: float, w: slice, phases: NDArray[np.complex128]
+) -> NDArray[np.complex128]:
+    """W coefficients (slice ``w`` of the dofs) of the mode of K a = T G a at the signed T = torque,
+    with K, G in the real basis of :func:`real_ritz` (``phases`` its d): d a, normalised to max 1."""
     lu = scipy.linalg.lu_factor(K - torque * (1.0 - 1e-9) * G)
     vector = np.random.default_rng(0).standard_normal(int(K.shape[0])).astype(complex)
     for _ in range(4):
         vector = scipy.linalg.lu_solve(lu, G @ vector)
         vector /= np.linalg.norm(vector)
-    coefficients = vector[w]
+    coefficients = vector[w] * phases[w]
     return coefficients / coefficients[np.argmax(np.abs(coefficients))]
 
 
@@ -208,9 +283,15 @@ def classical_buckling(
         M = default_terms(max(abs(helix["positive"][2]), abs(helix["negative"][2])), length)
     else:
         M = int(n_terms)
+    C = shell_stiffness(laminate)
+
+    def matrices(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.complex128]]:
+        Bs, Bc, m = _ritz_operators(radius, length, n, M, kinematics)
+        return real_ritz(Bs, Bc, m, C, radius, length, _FIELD_PHASES)
+
     best = {True: (np.inf, 0), False: (np.inf, 0)}  # sense (positive?) -> (torque, n)
     for n in range(2, n_max + 1):
-        torques = extreme_torques(*classical_galerkin_matrices(laminate, radius, length, n, M, kinematics))
+        torques = extreme_torques(*matrices(n)[:2])
         for positive, torque in zip((True, False), torques):
             if torque < best[positive][0]:
                 best[positive] = (torque, n)
@@ -220,8 +301,8 @@ def classical_buckling(
     out: dict = {"n_terms": M}
     for positive, (torque, n_best) in best.items():
         if np.isfinite(torque):
-            K, G = classical_galerkin_matrices(laminate, radius, length, n_best, M, kinematics)
-            mode = ritz_mode(K, G, torque if positive else -torque, w)
+            K, G, phases = matrices(n_best)
+            mode = ritz_mode(K, G, torque if positive else -torque, w, phases)
         else:
             mode = np.full(M, np.nan, dtype=complex)
         out[positive] = (float(torque), n_best, mode)

@@ -76,10 +76,10 @@ from flexshaft.buckling._common import (
     extreme_torques,
     helix_grid,
     helix_minima,
-    rank_two_torques,
+    real_helix_torques,
     shell_stiffness,
 )
-from flexshaft.buckling.classical import assemble_ritz, ritz_mode
+from flexshaft.buckling.classical import assemble_ritz, real_ritz, ritz_mode
 from flexshaft.laminate import Laminate, transverse_shear_stiffness
 
 __all__ = ["crimping_torques", "shear_helix_curve", "shear_helix_torque", "shear_galerkin_matrices", "shear_buckling"]
@@ -87,6 +87,11 @@ __all__ = ["crimping_torques", "shear_helix_curve", "shear_helix_torque", "shear
 # rows of the strain operators; dofs (U, V, W, PHI_X, PHI_Y)
 _EPS_X, _EPS_Y, _GAMMA, _KAPPA_X, _KAPPA_Y, _KAPPA_XY, _GAMMA_XZ, _GAMMA_YZ, _BETA_X, _BETA_Y = range(10)
 _U, _V, _W, _PX, _PY = range(5)
+#: Phase of each field's Ritz coefficients (U, V, W, PHI_X, PHI_Y) in the real basis of
+#: :func:`~flexshaft.buckling.classical.real_ritz`
+_FIELD_PHASES = (1j, 1.0, 1j, 1j, 1.0)
+#: Phases of the helix's dofs (U, V, W, PHI_X, PHI_Y) that make its operator's rows real or imaginary
+_HELIX_PHASES = (1j, 1j, 1.0, 1j, 1j)
 #: log-spaced axial wavenumbers around eta = n/R searched on the infinite tube
 _LOG_K_OFFSETS = np.linspace(-8.0, 6.0, 57)
 #: Above this many axial terms the infinite-tube value is used at that n: the tube then holds
@@ -132,11 +137,9 @@ def _helix_operators(radius: float, n: NDArray, k: NDArray, kinematics: str) -> 
 
 def _helix_torques(C: NDArray[np.float64], radius: float, n: NDArray, k: NDArray, kinematics: str) -> NDArray:
     """(..., 2): positive-sense torque and negative-sense magnitude [N m] of each helix (inf: none);
-    one 5x5 solve with two right-hand sides per helix (:func:`~flexshaft.buckling._common.rank_two_torques`)."""
-    B = _helix_operators(radius, n, k, kinematics)
-    strains = B[..., :8, :]
-    K = np.swapaxes(strains.conj(), -1, -2) @ (C @ strains)
-    return rank_two_torques(K, B[..., _BETA_X, :], B[..., _BETA_Y, :], radius)
+    one real 5x5 solve with two right-hand sides per helix
+    (:func:`~flexshaft.buckling._common.real_helix_torques`)."""
+    return real_helix_torques(_helix_operators(radius, n, k, kinematics), _HELIX_PHASES, C, radius)
 
 
 def _helix_function(laminate: Laminate, radius: float, kinematics: str):
@@ -263,9 +266,13 @@ def shear_buckling(
             refined.append(torques)
         return refined[0][n - 2]
 
+    C = shell_stiffness(laminate, "shear")
+
     @functools.lru_cache(maxsize=2)  # the governing n's matrices again for its mode, both senses
-    def ritz(n: int, M: int) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
-        return shear_galerkin_matrices(laminate, radius, length, n, M, kinematics)
+    def ritz(n: int, M: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.complex128]]:
+        """K, G in the real basis and its phases (:func:`~flexshaft.buckling.classical.real_ritz`)."""
+        Bs, Bc, m = _ritz_operators(radius, length, n, M, kinematics)
+        return real_ritz(Bs, Bc, m, C, radius, length, _FIELD_PHASES)
 
     def terms(n: int) -> int:
         if n_terms is not None:
@@ -277,7 +284,7 @@ def shear_buckling(
         if n not in curve:
             M = terms(n)
             if M <= _MAX_RITZ_TERMS or n_terms is not None:
-                curve[n], used_terms[n] = extreme_torques(*ritz(n, M)), M
+                curve[n], used_terms[n] = extreme_torques(*ritz(n, M)[:2]), M
             else:
                 curve[n] = (float(helix(n)[0]), float(helix(n)[1]))
         return curve[n]
@@ -318,8 +325,8 @@ def shear_buckling(
         mode, half_waves = np.full(1, np.nan, dtype=complex), None
         if n_best in used_terms and np.isfinite(torque):
             M = used_terms[n_best]
-            K, G = ritz(n_best, M)
-            mode = ritz_mode(K, G, torque if positive else -torque, slice(2 * M + 1, 3 * M + 1))
+            K, G, phases = ritz(n_best, M)
+            mode = ritz_mode(K, G, torque if positive else -torque, slice(2 * M + 1, 3 * M + 1), phases)
             half_waves = int(np.argmax(np.abs(mode))) + 1
         elif n_best is not None:
             half_waves = int(round(abs(wavenumbers[n_best - 2, sense]) * length / np.pi))
