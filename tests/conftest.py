@@ -119,9 +119,10 @@ def _run_in_the_test_process():
     import importlib
 
     run_module = importlib.import_module("flexshaft.cli.run")  # the module: `flexshaft.cli.run` is the command
+    own = run_module._worker_processes
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(run_module, "_worker_processes", lambda: 1)
-        yield run_module
+        yield run_module, own
 
 
 @pytest.fixture(autouse=True)
@@ -130,10 +131,9 @@ def _run_pool_if_marked(request, _run_in_the_test_process):
     if request.node.get_closest_marker("run_pool") is None:
         yield
         return
-    from flexshaft.parallel.pool import available_cpus
-
+    run_module, own = _run_in_the_test_process
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(_run_in_the_test_process, "_worker_processes", lambda: max(1, min(4, available_cpus())))
+        patch.setattr(run_module, "_worker_processes", own)
         yield
 
 
