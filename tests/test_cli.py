@@ -348,6 +348,7 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
 
 
 @pytest.mark.run_pool  # the whole run as a user's goes: analyses, studies' slot and figures on forked workers
+@pytest.mark.slow(reason="a whole run with its pool of forked workers, their imports counted: 2.3-5.5 s CPU by load")
 def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
     design = _write(tmp_path, "passing.toml", PASSING_DESIGN)
     result = runner.invoke(

@@ -173,8 +173,9 @@ class ResonancePeak:
     lower_limit, upper_limit : float
         The half-power speed where found, else the flanking minimum or data end [rad/s].
     resolved : bool
-        The sample intervals containing N_1, N_c and N_2 are at most bandwidth/n (n = the
-        ``samples_per_band`` of :func:`response_peaks` or :func:`resolve_peak`).
+        The sample intervals containing N_c and the half-power points found (both limits of a
+        bounded peak) are at most bandwidth/n (n = the ``samples_per_band`` of
+        :func:`response_peaks` or :func:`resolve_peak`).
     """
 
     speed: float
@@ -294,8 +295,15 @@ def _peak_at(s: np.ndarray, a: np.ndarray, i: int, samples_per_band: int) -> Res
 
 
 def _coarsest_interval(s: np.ndarray, peak: ResonancePeak) -> float:
-    """Largest sample interval among those that contain N_1, N_c and N_2 (or their limits)."""
-    points = np.array([peak.lower_limit, peak.speed, peak.upper_limit])
+    """Largest sample interval among those that contain the speeds the AF is made of: N_c and
+    the half-power points found, or both limits of a bounded peak (its band). A one-sided
+    peak's other limit (a flanking minimum, or the data's end) is not one of them: counting it
+    held such a peak unresolved whenever that limit lay outside the refinement's window
+    (N_c ± the bandwidth), through every round of :func:`resolve_peak`."""
+    if peak.method == "bounded":
+        points = np.array([peak.lower_limit, peak.speed, peak.upper_limit])
+    else:
+        points = np.array([p for p in (peak.lower, peak.speed, peak.upper) if p is not None])
     j = np.clip(np.searchsorted(s, points, side="right") - 1, 0, s.size - 2)
     return float(np.max(s[j + 1] - s[j]))
 
