@@ -185,7 +185,9 @@ def lateral_critical_speeds(
         if projected and np.all(np.isin(rows, model.dofs.free)):
             # the refinement on a projected model of the peak, checked by full solves
             near = slice(max(k - 1, 0), k + 2)
-            seed = start if start is not None else None if responses is None else responses[model.dofs.free, case, near]
+            seed: PeakBasis | np.ndarray | None = start  # the scan's basis, else its responses near the peak
+            if seed is None and responses is not None:
+                seed = responses[model.dofs.free, case, near]
             response = ProjectedOrbit(model, loads[:, case], rows, speeds[near], basis=seed)
 
         station = float(model.dofs.shaft_x[node])

@@ -239,7 +239,9 @@ def real_ritz(
     (:func:`~flexshaft.buckling._common.shell_stiffness`). Returns ``(K, G, d)``; a mode's
     coefficients in the dofs of :func:`assemble_ritz` are d a.
     """
-    d = np.concatenate([phase * _I_POWERS[m[dofs] % 4] for phase, (dofs, _) in zip(field_phases, _series(m))])
+    d = np.concatenate(
+        [phase * _I_POWERS[m[dofs] % 4] for phase, (dofs, _) in zip(field_phases, _series(m), strict=True)]
+    )
     rows_s, rows_c = Bs * d, Bc * d
     K, G = assemble_ritz(rows_s.real + rows_s.imag, rows_c.real + rows_c.imag, m, C, radius, length)
     return K, G, d
