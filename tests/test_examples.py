@@ -28,6 +28,7 @@ def run_example(name: str, out: Path) -> str:
         "OPENBLAS_NUM_THREADS": "1",
         "MKL_NUM_THREADS": "1",
         "MPLBACKEND": "Agg",
+        "DASK_TEMPORARY_DIRECTORY": str(out.parent / "dask-scratch"),  # a Dask worker's scratch space, not /tmp's
     }
     completed = subprocess.run(
         [sys.executable, str(EXAMPLES / f"{name}.py"), "--quick", "--out", str(out)],

@@ -207,6 +207,7 @@ def test_same_seed_same_results_locally_and_on_dask(two_bay, tmp_path):
     datasets (each sample draws from default_rng([seed, k]) alone; chunking does not matter)."""
     xr = pytest.importorskip("xarray")
     distributed = pytest.importorskip("distributed")
+    dask = pytest.importorskip("dask")
     design, _ = two_bay
     options = {
         "seed": 42,
@@ -219,9 +220,10 @@ def test_same_seed_same_results_locally_and_on_dask(two_bay, tmp_path):
     }
     one = run_montecarlo(design, 12, jobs=1, chunk_size=5, **options)
     two = run_montecarlo(design, 12, jobs=2, chunk_size=3, **options)
-    with distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
-    ) as cluster:
+    with (
+        dask.config.set({"temporary-directory": str(tmp_path / "dask-scratch")}),  # not /tmp/dask-scratch-space
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster,
+    ):
         with distributed.Client(cluster) as client:
             remote = run_montecarlo(design, 12, client=client, chunk_size=4, run_dir=tmp_path / "mc", **options)
     xr.testing.assert_identical(one.dataset, two.dataset)

@@ -7,6 +7,7 @@ import pytest
 
 xr = pytest.importorskip("xarray")
 distributed = pytest.importorskip("distributed")
+dask = pytest.importorskip("dask")
 
 from flexshaft.sweep import Output, Study, Variable, run_sweep
 
@@ -35,9 +36,10 @@ def test_local_cluster_matches_local_run(tmp_path):
         peak_actuator_force,
     )
     local = run_sweep(study, progress=False, chunk_size=2)
-    with distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
-    ) as cluster:
+    with (
+        dask.config.set({"temporary-directory": str(tmp_path / "dask-scratch")}),  # not /tmp/dask-scratch-space
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None) as cluster,
+    ):
         with distributed.Client(cluster) as client:
             remote = run_sweep(study, tmp_path / "run", client=client, progress=False, chunk_size=2)
     xr.testing.assert_identical(local, remote)
