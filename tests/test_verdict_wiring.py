@@ -12,7 +12,7 @@ with the attributes the code reads), built so that the expected number is writte
 hand: the smaller of two safety factors, the orbit peak below the operating speed, 2π × a
 frequency in Hz, T_cr/(k T), (1 + margin) Ω, a load scaled by the point's factor. No analysis
 runs (each test takes milliseconds); exact comparisons unless a tolerance says why. They were
-written for the mutations of scripts/mutations_wire.toml that the suite did not catch.
+written for the wiring mutations of scripts/mutations.toml that the suite did not catch.
 """
 
 from __future__ import annotations
