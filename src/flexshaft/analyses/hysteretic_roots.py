@@ -234,7 +234,11 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
     ``Im s`` first; a branch root counts when it converged (Im s > 0) on its own side of the
     line and is the same mode (MAC with ``y`` at least :data:`SAME_MODE_MAC`). One such root:
     that one; two (a fold): the less stable; none, with the two branch roots straddling the
-    line the wrong way: the on-line root (:func:`line_root`). Returns ``(s, y, found)``.
+    line the wrong way: the on-line root (:func:`line_root`). Returns ``(s, y, found)``. When
+    both branches are solved and Newton's method on one of them reaches another mode (a close
+    neighbour, such as the backward whirl of a rotor without gyroscopic split), that branch's
+    root of this mode is taken from its exact roots (:func:`_branch_mode`): which of a fold's
+    two eigenvalues is kept must not depend on the one the continuation arrived at.
 
     The other branch is skipped when the first root is consistent and farther from the line
     than ten times the first-order distance between the two branch roots,
@@ -258,6 +262,8 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
             )
             if abs(root.imag - speed) > 10 * abs(np.vdot(vec, delta)) / (2 * abs(root)):
                 return root, vec, True
+    if len(found) == 2:  # near the line: a branch whose Newton reached another mode gets its exact roots
+        found = [f if f[3] else _branch_mode(red, speed, f[0], y) for f in found]
     consistent = [(root, vec) for branch, root, vec, same in found if same and on_branch(branch, root.imag, speed)]
     if consistent:
         root, vec = max(consistent, key=lambda rv: rv[0].real)
@@ -270,6 +276,25 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
             if pair is not None:
                 return pair[0], pair[1], True
     return s, y, False
+
+
+def _branch_mode(red: ReducedModel, speed: float, branch: Branch, y: np.ndarray):
+    """This mode's root on ``branch`` from the branch's exact roots, when Newton's method from the
+    mode's previous eigenvalue reached another mode (a close neighbour: the backward whirl of a
+    rotor without gyroscopic split lies 1e-6 of ω from the forward root at the line): the
+    branch root of largest MAC with ``y`` (at least :data:`SAME_MODE_MAC`), refined by Newton's
+    method. Returns ``(branch, s, Y, same)`` like :func:`mode_root`'s candidates; ``same`` is
+    False when no branch root is this mode's."""
+    s, Y = branch_roots(red, speed, branch.weights)
+    y = np.asarray(y, dtype=complex)
+    mac = np.abs(Y.conj().T @ y) ** 2 / np.vdot(y, y).real if s.size else np.zeros(0)
+    if not s.size or mac.max() < SAME_MODE_MAC:
+        return branch, s[0] if s.size else 0j, y, False
+    k = int(np.argmax(mac))
+    root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights)
+    if not (converged and abs(np.vdot(Y[:, k], vec)) ** 2 >= SAME_MODE_MAC):
+        root, vec = s[k], Y[:, k]
+    return branch, root, vec, True
 
 
 def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
