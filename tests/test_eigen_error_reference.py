@@ -25,6 +25,7 @@ import pytest
 import scipy.linalg as la
 from test_amb import PID_KEYS, rotor
 from test_boom_torsion import design_text
+from test_eigen_accuracy import SHAFT as ACCURACY_SHAFT
 
 import flexshaft
 from flexshaft.analyses.campbell import track_modes
@@ -36,39 +37,7 @@ from flexshaft.analyses.refinement import checked_solve
 from flexshaft.assembly.sparse import restrict
 from flexshaft.design import loads_design
 
-SHAFT = """
-name = "uniform steel tube on two end bearings"
-[materials.steel]
-kind = "isotropic"
-E = 211e9
-G = 81.2e9
-density = 7810.0
-[shaft]
-x_start = 0.0
-x_end = 1.5
-outer_diameter = 0.05
-wall_thickness = 0.01
-material = "steel"
-fixed_start = ["u", "theta"]
-shear_deformation = false
-[[bearings]]
-name = "left"
-kind = "contact"
-x = 0.0
-stiffness = { v = 1e7, w = 1e7 }
-damping = { v = 1e3, w = 1e3 }
-[[bearings]]
-name = "right"
-kind = "contact"
-x = 1.5
-stiffness = { v = 1e7, w = 1e7 }
-damping = { v = 1e3, w = 1e3 }
-[operating]
-speed_rpm = 0.0
-power = 0.0
-[mesh]
-shaft_elements = 8
-"""
+SHAFT = ACCURACY_SHAFT.replace("shaft_elements = 30", "shaft_elements = 8")  # the accuracy tests' tube, coarser
 
 SPEED = 2500.0  # rad/s, 2.1x the second critical speed: the gyroscopic split is large
 
