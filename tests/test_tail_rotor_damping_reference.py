@@ -14,53 +14,21 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_torsional import K_SHAFT, shaft_text
 
 from flexshaft.analyses.torsional import torsional_forced_response
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-G, DO, WALL, LENGTH, POWER = 80e9, 0.1, 0.005, 2.0, 100.0e3
-K_SHAFT = G * np.pi * (DO**4 - (DO - 2 * WALL) ** 4) / 32 / LENGTH
+POWER = 100.0e3  # W, the power of test_torsional's shaft text
 
 
 def _design(rpm: float, J_tr: float, n: float) -> str:
-    """Near-massless steel tube (ρ = 0.01 kg/m³) on two stiff bearings, a tail rotor with no
-    aerodynamic_damping key (the default applies)."""
-    return f"""
-name = "tail-rotor damping test shaft"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = {G}
-density = 0.01
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = {LENGTH}
-outer_diameter = {DO}
-wall_thickness = {WALL}
-material = "steel"
-fixed_start = ["u", "v", "w", "theta"]
-[[bearings]]
-name = "fore"
-kind = "contact"
-x = 0.0
-stiffness = {{ v = 1e8, w = 1e8 }}
-[[bearings]]
-name = "aft"
-kind = "contact"
-x = {LENGTH}
-stiffness = {{ v = 1e8, w = 1e8 }}
-[operating]
-speed_rpm = {rpm}
-power = {POWER}
-[mesh]
-shaft_elements = 8
-[tail_rotor]
-blades = 4
-polar_inertia = {J_tr}
-gearbox_ratio = {n}
-"""
+    """tests/test_torsional.py's near-massless steel tube (ρ = 0.01 kg/m³) on two stiff bearings
+    at ``rpm``, a tail rotor with no aerodynamic_damping key (the default applies)."""
+    text = shaft_text(f"[tail_rotor]\nblades = 4\npolar_inertia = {J_tr}\ngearbox_ratio = {n}\n")
+    assert "power = 100.0e3" in text and "speed_rpm = 3000.0" in text
+    return text.replace("speed_rpm = 3000.0", f"speed_rpm = {rpm}")
 
 
 def test_the_default_damping_2P_over_omega_squared_sets_the_resonance_peak():
