@@ -8,6 +8,8 @@ lengths are shown in mm, stresses in MPa and speeds in rpm, as in the HTML repor
 
 from __future__ import annotations
 
+import errno
+import functools
 import math
 import os
 import sys
@@ -94,10 +96,25 @@ def cell(value: Any, digits: int = 4) -> str:
 
 def stdout_console():
     """A rich console on stdout: no markup or highlighting of its own; 200 columns when
-    stdout is not a terminal, so that piped tables are never squeezed."""
+    stdout is not a terminal, so that piped tables are never squeezed. A reader that goes
+    away (``flexshaft run | head``) raises ``BrokenPipeError`` (:func:`_quiet_on_broken_pipe`)."""
     from rich.console import Console
 
-    return Console(highlight=False, width=None if sys.stdout.isatty() else 200)
+    console = Console(highlight=False, width=None if sys.stdout.isatty() else 200)
+    console.on_broken_pipe = functools.partial(_quiet_on_broken_pipe, console)  # type: ignore[method-assign]
+    return console
+
+
+def _quiet_on_broken_pipe(console) -> None:
+    """rich's ``Console.on_broken_pipe`` for the CLI: silence the console and raise
+    ``BrokenPipeError``, which the commands' error boundary (:func:`flexshaft.cli.common.guarded`)
+    handles as it does a write of ``typer.echo`` to a closed stdout: a reader that went away,
+    exit 0, the output folder's marker written as after a finished command (``run`` writes its
+    folder before it prints its tables). rich's own hook raises ``SystemExit(1)``, which passed by
+    the boundary: the folder of a finished ``flexshaft run | head`` stayed marked incomplete, and
+    the command exited 1 without a word."""
+    console.quiet = True
+    raise BrokenPipeError(errno.EPIPE, os.strerror(errno.EPIPE))
 
 
 def stderr_console():
