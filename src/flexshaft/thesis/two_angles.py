@@ -42,6 +42,7 @@ def two_angle_study(alphas=None, betas=None, design=None, **run):
         base=design,
         fixed={"loads.eccentricity": 0.0},
     )
+    _pair_strength.cache_clear()  # the pairs are shared within one study, never across calls
     return run_sweep(study, **run)
 
 
@@ -67,7 +68,7 @@ class _DesignKey:
         return isinstance(other, _DesignKey) and other.text == self.text
 
 
-@functools.lru_cache(maxsize=256)  # a 19 x 19 map's 190 pairs: a pair's mirror comes up to a map row later
+@functools.lru_cache(maxsize=256)  # every pair of a 19 x 19 map (190) until its mirror comes up
 def _pair_strength(base: _DesignKey, high: float, low: float) -> tuple[tuple[str, float], ...]:
     """:func:`~flexshaft.thesis.strength.strength_outputs` of (high/−high/low/−low)s [deg] on
     ``base``'s design, as (name, value) pairs."""
