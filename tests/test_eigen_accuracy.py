@@ -295,3 +295,49 @@ def test_basis_grows_while_the_estimate_exceeds_the_tolerance(shaft):
     assert tight.basis_size <= 2 * 4 * max(4 * 4, 40)  # the last doubling may pass the cap once
     assert tight.tolerance == 1e-20
     assert np.max(_true_errors(tight.eigenvalues, reference[:3])) <= EIGENVALUE_TOLERANCE
+
+
+@pytest.mark.parametrize(
+    ("layup", "damping_model", "full_tracks"),
+    [
+        ("aluminium 6061-T6", "hysteretic", 1),  # the first basis errs by 1.2e-6 from rest on
+        ("(45/-45)s FMC", "viscous", 2),  # it errs by 1e-8 at rest, 9e-6 at the top speed
+    ],
+)
+def test_first_speed_screen_chooses_the_basis_the_whole_tracks_choose(layup, damping_model, full_tracks):
+    """``tracked_to_accuracy(track_first=...)`` (what :func:`stability` passes) rejects a basis
+    whose estimate exceeds the tolerance at the first speed without tracking every speed.
+    Reference: the same accuracy loop without the screen, every basis tracked at every speed.
+    The two must choose the same basis and give the same curves and estimates (the same reduced
+    problems solved in the same order: equal to the 1e-10 of the test above, the round-off of
+    a dense solve, far below the 1e-6 stated accuracy), and the screen must spare the whole
+    track of a basis that fails at rest (thesis aluminium shaft) but not of one that passes
+    there and fails above it ((45/−45)s shaft, viscous)."""
+    import functools
+
+    from flexshaft.analyses.eigen_error import tracked_to_accuracy
+    from flexshaft.analyses.loss import viscous_equivalent
+    from flexshaft.thesis.whirl import thesis_shaft_designs
+
+    model = flexshaft.build_model(thesis_shaft_designs(embedded_design("tuned"))[layup])
+    speeds = np.linspace(0.0, 1.5 * model.speed, 9)
+    viscous = None
+    if damping_model == "viscous":  # at the reference frequency the stability analysis takes
+        viscous = functools.partial(viscous_equivalent, stability(model, [0.0], 8, "viscous").reference_frequency)
+    whole = []
+
+    def track(red, at=speeds):
+        whole.append(at.size == speeds.size)
+        if viscous is not None:
+            return track_modes(model, red, at, 8, refine_loss=False, viscous=viscous)
+        return track_modes(model, red, at, 8)
+
+    unscreened = tracked_to_accuracy(model, speeds, 8, track, viscous=viscous)
+    assert whole == [True, True]  # reference: the first basis fails (else nothing is screened)
+    whole.clear()
+    screened = tracked_to_accuracy(model, speeds, 8, track, viscous=viscous, track_first=lambda r: track(r, speeds[:1]))
+    assert whole.count(True) == full_tracks and whole[0] is False
+    assert screened[0].size == unscreened[0].size
+    np.testing.assert_allclose(screened[1].eigenvalues, unscreened[1].eigenvalues, rtol=1e-10)
+    np.testing.assert_allclose(screened[2], unscreened[2], rtol=1e-6, atol=1e-16)
+    assert np.max(screened[2]) <= EIGENVALUE_TOLERANCE
