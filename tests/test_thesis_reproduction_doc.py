@@ -34,9 +34,10 @@ import numpy as np
 import pytest
 from doc_numbers import Quote, check, regenerate
 from scipy.optimize import brentq
-from test_thermal_doc import (
+from test_thermal_doc import (  # eight_kelvin_loads: a session fixture the tests below use
     CONVECTIONS,
     LOSS_MODELS,
+    eight_kelvin_loads,  # noqa: F401
     loads_for_8_kelvin,
     rotating_strain_for_8_kelvin,
     shaft,
@@ -607,6 +608,7 @@ QUOTES = [
 
 
 @pytest.mark.parametrize("quote", QUOTES, ids=[q.name for q in QUOTES])
+@pytest.mark.usefixtures("eight_kelvin_loads")
 def test_page_quotes_the_code(quote: Quote) -> None:
     problems = check(PAGE.read_text(encoding="utf-8"), quote)
     assert not problems, (
@@ -662,6 +664,7 @@ def test_torque_for_3_5_is_near_ten_times_the_design_torque(name: str) -> None:
     assert scale_for_target(name, "torque") == pytest.approx(r / TARGET_SF, rel=0.2)
 
 
+@pytest.mark.usefixtures("eight_kelvin_loads")
 def test_eight_kelvin_is_not_the_stress_gap_of_row_1() -> None:
     """The boom loads that heat the shaft by 8 K are three times or more those of R = 3.5 and leave
     R near or below 1; at the loads of R = 3.5 the shaft warms by less than 1 K."""
