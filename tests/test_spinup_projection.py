@@ -29,6 +29,7 @@ import warnings
 import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
+from conftest import shared_result
 
 from flexshaft.analyses import sweep_projection
 from flexshaft.analyses.banded import ResonanceWarning, solver_for
@@ -150,14 +151,29 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
     assert np.all(fast.error_estimate <= sweep_projection.SWEEP_TOLERANCE)
 
 
-@pytest.mark.parametrize("name", DESIGNS)
-def test_critical_speeds_on_the_projected_scan_match(name):
-    model = _model(name)
-    scan, projected = _scans(name, SCREENING)
+def _reference_criticals(name: str):
+    """The all-full reference of the critical speeds on the screening scan of ``name``: the full
+    scan, a full solve at every refinement speed."""
+    model, scan = _model(name), _scan(name, SCREENING, False)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        # the all-full reference: full scan, a full solve at every refinement speed
-        full = lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
+        return lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
+
+
+def _undamped_reference_criticals(factory):
+    """:func:`_reference_criticals` of the undamped design, once per session: the critical-speed
+    test compares with it and the undamped-resonance test scans at its first speed (2.6 s of CPU;
+    issue 23's budget, tests/conftest.py)."""
+    return shared_result(factory, "spinup_projection_no_loss_criticals", lambda: _reference_criticals("no loss"))
+
+
+@pytest.mark.parametrize("name", DESIGNS)
+def test_critical_speeds_on_the_projected_scan_match(name, tmp_path_factory):
+    model = _model(name)
+    projected = _scan(name, SCREENING, True)
+    full = _undamped_reference_criticals(tmp_path_factory) if name == "no loss" else _reference_criticals(name)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ResonanceWarning)
         scan = projected
         assert scan.basis is not None
         # as the assessment's spin-up task: the peaks' models start from the scan's reduced
@@ -230,16 +246,14 @@ def test_full_solutions_agree_with_superlu_to_round_off():
     assert np.abs(banded - superlu).max() <= FLOOR * np.abs(superlu).max()
 
 
-def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves():
-    """A scan speed at an undamped resonance: the all-full sweep warns there (the response
-    changes completely within the natural frequencies' accuracy), and so does the projection,
-    which solves such a speed in full."""
+def test_an_undamped_resonance_on_the_scan_is_reported_as_by_full_solves(tmp_path_factory):
+    """A scan speed at an undamped resonance (the first critical speed of the all-full scan and
+    refinement, :func:`_undamped_reference_criticals`): the all-full sweep warns there (the
+    response changes completely within the natural frequencies' accuracy), and so does the
+    projection, which solves such a speed in full."""
     model = _model("no loss")
     speeds = SCREENING.spin_speeds(model.speed)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ResonanceWarning)
-        full = _scan("no loss", SCREENING, False)
-        criticals = scan_critical_speeds(model, full.speeds, full.orbits, SCREENING.scan_top).criticals
+    criticals = _undamped_reference_criticals(tmp_path_factory)
     resonance = criticals[0].speed
     assert criticals[0].amplification_factor == float("inf")
     speeds = np.sort(np.append(speeds, resonance))

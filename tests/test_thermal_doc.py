@@ -29,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import shared_result
 from doc_numbers import Quote, check, regenerate
 
 from flexshaft.analyses import imbalance_response, static_response
@@ -171,11 +172,37 @@ def static_bending_strain_at_peak(design_name: str = "baseline") -> tuple[float,
     return x_peak, float(bending.ravel()[k])
 
 
-@functools.cache
+#: :func:`loads_for_8_kelvin` by (loss model, convection): computed by it, or read from the
+#: session's shared computation (:func:`eight_kelvin_loads`).
+_LOADS_FOR_8_KELVIN: dict[tuple[str, str], float] = {}
+
+
 def loads_for_8_kelvin(loss_model: str, convection: str) -> float:
     """Multiple of the imbalance and static loads whose self-heating equilibrium (temperature-
-    dependent matrix) peaks TARGET_RISE above the shaft's air: s ← s √(8 K / rise), the rise
-    being nearly ∝ s² (converged to 1e-4)."""
+    dependent matrix) peaks TARGET_RISE above the shaft's air (:func:`_loads_for_8_kelvin`),
+    computed once."""
+    key = (loss_model, convection)
+    if key not in _LOADS_FOR_8_KELVIN:
+        _LOADS_FOR_8_KELVIN[key] = _loads_for_8_kelvin(loss_model, convection)
+    return _LOADS_FOR_8_KELVIN[key]
+
+
+@pytest.fixture(scope="session")
+def eight_kelvin_loads(tmp_path_factory) -> None:
+    """Every :func:`loads_for_8_kelvin` once per test session, for the tests of this page and of
+    docs/thesis-reproduction.md (tests/test_thesis_reproduction_doc.py) that read them: 12
+    self-heating solves, about 2 s of CPU, which pytest-xdist's workers would each repeat
+    (shared_result, tests/conftest.py; CPU budget, issue 23)."""
+
+    def compute() -> dict[tuple[str, str], float]:
+        return {(lm, c): loads_for_8_kelvin(lm, c) for lm in LOSS_MODELS for c in CONVECTIONS}
+
+    _LOADS_FOR_8_KELVIN.update(shared_result(tmp_path_factory, "loads_for_8_kelvin", compute))
+
+
+def _loads_for_8_kelvin(loss_model: str, convection: str) -> float:
+    """:func:`loads_for_8_kelvin` computed: s ← s √(8 K / rise), the rise being nearly ∝ s²
+    (converged to 1e-4)."""
     _, model, _ = baseline()
     options = options_with(convection)
     air = shaft(loss_model, convection).temperature.air_temperature
@@ -533,6 +560,7 @@ SLOW_QUOTES = {
     ],
     ids=[q.name for q in QUOTES],
 )
+@pytest.mark.usefixtures("eight_kelvin_loads")
 def test_page_quotes_the_code(quote: Quote) -> None:
     problems = check(PAGE.read_text(encoding="utf-8"), quote)
     assert not problems, "docs/thermal.md is stale (run `python tests/test_thermal_doc.py`):\n" + "\n".join(problems)
@@ -564,6 +592,7 @@ def test_rotating_bending_strain_for_8_kelvin_closed_form_against_the_model() ->
             assert eps_model == pytest.approx(closed, rel=0.03), (loss_model, convection)
 
 
+@pytest.mark.usefixtures("eight_kelvin_loads")
 def test_a_loss_factor_above_one_would_be_needed() -> None:
     """The page's conclusion: 8 K from the model's response needs η(E*) > 1 in every combination
     (heat ∝ η at a given response)."""
