@@ -60,6 +60,7 @@ from flexshaft.analyses.modal import default_basis_size
 from flexshaft.analyses.stability import STABILITY_TOLERANCE
 from flexshaft.analyses.torsional import torsional_system
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 
 __all__ = [
     "FULL_BASIS_LIMIT",
@@ -227,6 +228,7 @@ def _lateral_basis(model: Model, red: ReducedModel) -> ReducedModel:
     )
 
 
+@single_blas_thread
 def closed_loop_poles(model: Model, speed: float) -> np.ndarray:
     """The oscillatory roots (Im s > 0) of the loss-free closed loop at ``speed`` [rad/s]: step 2
     of the module docstring alone (one dense eigen-solution, no loss)."""
@@ -306,6 +308,7 @@ def _hysteretic(
     return s, done
 
 
+@single_blas_thread
 def root_stability(model: Model, speeds) -> RootStability:
     """Every root of the closed-loop driveline at each of ``speeds`` [rad/s] (module docstring).
 
