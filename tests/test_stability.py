@@ -238,6 +238,21 @@ def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side(s
         assert got.size == want.size
 
 
+def test_consistent_values_without_an_inverse_iteration_take_the_dense_vectors(monkeypatch):
+    """When the inverse iteration of the upper branch's roots below the line fails (T(s)
+    singular to working precision), ``consistent_values`` takes every vector of that branch
+    from its dense solve: then it repeats ``consistent_roots``' computation, to round-off."""
+    from flexshaft.analyses import hysteretic_roots
+
+    red = reduce(damped_baseline(), 48)
+    monkeypatch.setattr(
+        hysteretic_roots, "_null_vectors", lambda red, speed, weights, roots: np.full((red.size, roots.size), np.nan)
+    )
+    for speed in (150.0, 430.0):
+        want = hysteretic_roots.consistent_roots(red, speed)[0]
+        np.testing.assert_allclose(hysteretic_roots.consistent_values(red, speed), want, rtol=1e-14)
+
+
 @pytest.mark.parametrize("solver", SOLVERS)
 def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold(solver):
     """A forward mode's roots above and below the spin (s₊, s₋) differ by the shaft loss, their
