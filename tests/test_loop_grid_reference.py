@@ -8,7 +8,9 @@
 * Above the highest pole, the undamped natural frequencies of (K + K_a, M) stand in, with
   ζ = 1e-3: on a two-DOF model K = diag(100, 900), K_a = diag(300, 0), M = I they are
   √400 = 20 and √900 = 30 rad/s (by hand), giving the points ω_n and ω_n(1 ± 0.5e-3); without
-  K_a the first would be 10 rad/s, below the 1 Hz range.
+  K_a the first would be 10 rad/s, below the 1 Hz range. Both ways of computing them: read off
+  the model's whole shift-inverted spectrum (the modal bases', up to 400 free DOFs) and
+  LAPACK's subset solve of (K + K_a, M) (above).
 
 The expected grids are written from these closed forms; they agree to the rounding of the
 products and square roots (rel 1e-12 is a wide margin over 1e-15). CPU: a few milliseconds.
@@ -22,6 +24,7 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
+from flexshaft.analyses import loop_grid
 from flexshaft.analyses.loop_grid import AROUND, frequency_grid, natural_frequencies
 
 LOG = 2 * np.pi * np.array([1.0, np.sqrt(10.0), 10.0])  # geomspace(2π, 20π, 3) [rad/s]
@@ -31,8 +34,14 @@ def _pole(natural: float, zeta: float) -> complex:
     return natural * complex(-zeta, np.sqrt(1.0 - zeta * zeta))
 
 
+class _Model(SimpleNamespace):
+    """A stand-in model, hashable by identity like a Model (the whole-spectrum cache's key)."""
+
+    __hash__ = object.__hash__
+
+
 def _two_dof_model():
-    return SimpleNamespace(
+    return _Model(
         dofs=SimpleNamespace(free=np.arange(2)),
         K=sp.csr_matrix(np.diag([100.0, 900.0])),
         Kp=sp.csr_matrix(np.diag([300.0, 0.0])),
@@ -51,7 +60,9 @@ def test_a_lightly_damped_pole_gets_its_top_and_half_width():
     np.testing.assert_allclose(top_only, np.sort(np.concatenate([LOG, [damped]])), rtol=1e-12)
 
 
-def test_natural_frequencies_include_the_bearing_stiffness():
+@pytest.mark.parametrize("whole_up_to", [400, 0], ids=["whole spectrum", "subset solve"])
+def test_natural_frequencies_include_the_bearing_stiffness(monkeypatch, whole_up_to):
+    monkeypatch.setattr(loop_grid, "WHOLE_DENSE_BASIS_UP_TO", whole_up_to)
     model = _two_dof_model()
     np.testing.assert_allclose(natural_frequencies(model, 15.0, 35.0), [20.0, 30.0], rtol=1e-12)
     np.testing.assert_allclose(natural_frequencies(model, 25.0, 35.0), [30.0], rtol=1e-12)

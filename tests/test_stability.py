@@ -195,7 +195,21 @@ def damped_baseline():
     return build_model(with_overrides(baseline_design(), {"bearings[1].kd": 200.0, "bearings[2].kd": 200.0}))
 
 
-def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side():
+def consistent(solver: str, red, speed):
+    """The eigenvalues R(Ω) by ``solver``: ``consistent_roots`` (with every vector) or
+    ``consistent_values`` (the vectors only where the on-line pairing reads them)."""
+    from flexshaft.analyses import hysteretic_roots
+
+    if solver == "consistent_roots":
+        return hysteretic_roots.consistent_roots(red, speed)[0]
+    return hysteretic_roots.consistent_values(red, speed)
+
+
+SOLVERS = ["consistent_roots", "consistent_values"]
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side(solver):
     """The eigenvalues of the hysteretic problem (piecewise linear in s: one linear problem
     above the spin, one below) are the roots of the problem above the spin with Im s ≥ Ω and
     of the one below with Im s ≤ Ω, nothing else. Reference: each side's roots by QZ
@@ -203,11 +217,9 @@ def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side()
     checked on the damped baseline (gyroscopic, PD bearings, shaft and boom loss) at rest and at
     four speeds, so the set cannot depend on which root an iteration reaches. Tolerance: each
     root's perturbation bound (:func:`pencil_roots`)."""
-    from flexshaft.analyses.hysteretic_roots import consistent_roots
-
     red = reduce(damped_baseline(), 48)
     for speed in (0.0, 150.0, 327.3, 430.0, 600.0):
-        got, _ = consistent_roots(red, speed)
+        got = consistent(solver, red, speed)
         sides = [(ABOVE, +1)] if speed == 0 else [(ABOVE, +1), (BELOW, -1)]
         want, tol = [], []
         for weights, sign in sides:
@@ -226,14 +238,28 @@ def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side()
         assert got.size == want.size
 
 
-def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold():
+def test_consistent_values_without_an_inverse_iteration_take_the_dense_vectors(monkeypatch):
+    """When the inverse iteration of the upper branch's roots below the line fails (T(s)
+    singular to working precision), ``consistent_values`` takes every vector of that branch
+    from its dense solve: then it repeats ``consistent_roots``' computation, to round-off."""
+    from flexshaft.analyses import hysteretic_roots
+
+    red = reduce(damped_baseline(), 48)
+    monkeypatch.setattr(
+        hysteretic_roots, "_null_vectors", lambda red, speed, weights, roots: np.full((red.size, roots.size), np.nan)
+    )
+    for speed in (150.0, 430.0):
+        want = hysteretic_roots.consistent_roots(red, speed)[0]
+        np.testing.assert_allclose(hysteretic_roots.consistent_values(red, speed), want, rtol=1e-14)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold(solver):
     """A forward mode's roots above and below the spin (s₊, s₋) differ by the shaft loss, their
     frequencies by O(η²)ω: where ω₊ < Ω < ω₋ neither is consistent and the eigenvalue sits on
     the line (Im s = Ω, the loss sign set-valued at 0, its real part between those of s₊ and
     s₋); where ω₋ < Ω < ω₊ both are eigenvalues. Reference: s₊, s₋ by QZ (:func:`pencil_roots`);
     the crossing speed of each pair solved in the test by fixed-point iteration."""
-    from flexshaft.analyses.hysteretic_roots import consistent_roots
-
     red = reduce(damped_baseline(), 48)
     speed = 430.0
     above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
@@ -246,7 +272,7 @@ def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fol
             speed = 0.5 * (p.imag + q.imag)
             above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
             p, q = above[np.argmin(np.abs(above - p))], below[np.argmin(np.abs(below - q))]
-        got, _ = consistent_roots(red, speed)
+        got = consistent(solver, red, speed)
         near = got[np.abs(got - p) < 2 * abs(p - q)]
         tol = 1e-7 * abs(p)  # QZ against QR (previous test), with the fixed-point residual
         if p.imag < speed < q.imag:  # gap: one root, on the line

@@ -68,6 +68,7 @@ __all__ = [
     "branch_state_matrix",
     "branch_roots",
     "consistent_roots",
+    "consistent_values",
     "line_root",
     "mode_root",
     "damped_modes",
@@ -131,12 +132,16 @@ def branch_roots(red: ReducedModel, speed: float, weights: LossCoefficients) -> 
     """Every oscillatory root (Im s > 10⁻⁶ |s|) of one branch's linear problem, sorted by |s|:
     ``(s [rad/s], Y)`` with unit modal coordinates (nb, k), on either side of the line."""
     lam, vec = la.eig(branch_state_matrix(red, speed, weights), check_finite=False)
-    keep = lam.imag > 1e-6 * np.abs(lam)
-    lam, vec = lam[keep], vec[: red.size, keep]
-    order = np.argsort(np.abs(lam))
-    vec = vec[:, order]
+    keep = _oscillatory(lam)
+    vec = vec[: red.size, keep]
     norm = np.linalg.norm(vec, axis=0)
-    return lam[order], vec / np.where(norm > 0, norm, 1.0)
+    return lam[keep], vec / np.where(norm > 0, norm, 1.0)
+
+
+def _oscillatory(lam: np.ndarray) -> np.ndarray:
+    """Indices of the oscillatory roots (Im s > 10⁻⁶ |s|) of ``lam``, by increasing |s|."""
+    keep = np.flatnonzero(lam.imag > 1e-6 * np.abs(lam))
+    return keep[np.argsort(np.abs(lam[keep]))]
 
 
 def consistent_roots(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.ndarray]:
@@ -149,10 +154,71 @@ def consistent_roots(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.nd
     """
     if not red.has_loss:
         return candidates(red, speed)
-    parts = []
-    for branch in branches(red, speed):
-        s, Y = branch_roots(red, speed, branch.weights)
-        parts.append((branch, s, Y, on_branch(branch, s.imag, speed)))
+    return _consistent(
+        red, speed, [(branch, *branch_roots(red, speed, branch.weights)) for branch in branches(red, speed)]
+    )
+
+
+def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
+    """The eigenvalues R(Ω) of :func:`consistent_roots` alone [rad/s], sorted by |s|, for less
+    than the cost of every eigenvector.
+
+    Each branch is solved without its vectors except where the pairing of on-line roots reads
+    them: the lower branch's roots above the line (most of them: that branch is solved with its
+    vectors) and the upper branch's roots below it (the modes below the spin: each vector by
+    inverse iteration on its second-order problem, :func:`_null_vectors`). A single branch (Ω = 0,
+    the fixed-frame loss) pairs nothing: one eigenvalue solve without vectors.
+    """
+    if not red.has_loss:
+        return candidates(red, speed)[0]
+    parts = branches(red, speed)
+    if len(parts) == 1:
+        s = _branch_values(red, speed, parts[0].weights)
+        return s[on_branch(parts[0], s.imag, speed)]
+    lower, upper = parts
+    s_hi = _branch_values(red, speed, upper.weights)
+    wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
+    Y_hi = np.zeros((red.size, s_hi.size), complex)  # the pairing reads only the wrong side's
+    Y_hi[:, wrong] = _null_vectors(red, speed, upper.weights, s_hi[wrong])
+    if not np.isfinite(Y_hi).all():  # an inverse iteration failed: every vector from the dense solve
+        s_hi, Y_hi = branch_roots(red, speed, upper.weights)
+    return _consistent(red, speed, [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)])[0]
+
+
+def _branch_values(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:
+    """The roots of :func:`branch_roots` without their vectors [rad/s]."""
+    lam = la.eigvals(branch_state_matrix(red, speed, weights), check_finite=False, overwrite_a=True)
+    return lam[_oscillatory(lam)]
+
+
+def _null_vectors(red: ReducedModel, speed: float, weights: LossCoefficients, roots: np.ndarray) -> np.ndarray:
+    """Unit modal coordinates y with ``T(s) y = 0`` (one branch's second-order problem,
+    :meth:`~flexshaft.analyses.eigen.ReducedModel.newton_terms`) for each of ``roots``, eigenvalues
+    of a dense solve: two steps of inverse iteration at the root, which is accurate to round-off,
+    so the first step already holds the vector to about the root's error over its distance to
+    the next root (a column of NaN where T(s) is singular to working precision)."""
+    nb = red.size
+    out = np.empty((nb, roots.size), complex)
+    start = np.full(nb, nb**-0.5, complex)
+    for k, s in enumerate(roots):
+        T, _ = red.newton_terms(complex(s), speed, weights, start)
+        lu, piv, info = la.lapack.zgetrf(T, overwrite_a=True)
+        y = start
+        for _ in range(2):
+            if info != 0:  # singular to working precision, or a bad argument
+                y = np.full(nb, np.nan, complex)
+                break
+            y, info = la.lapack.zgetrs(lu, piv, y)
+            y = y / np.linalg.norm(y)
+        out[:, k] = y
+    return out
+
+
+def _consistent(red: ReducedModel, speed: float, solved: list) -> tuple[np.ndarray, np.ndarray]:
+    """R(Ω) and its vectors from every branch's oscillatory roots, ``solved``: ``(branch, s, Y)``
+    by branch (:func:`consistent_roots`). The pairing of on-line roots reads the vectors of the
+    roots on the wrong side of the line only; the others are passed through."""
+    parts = [(branch, s, Y, on_branch(branch, s.imag, speed)) for branch, s, Y in solved]
     out_s = [s[ok] for _, s, _, ok in parts]
     out_y = [Y[:, ok] for _, _, Y, ok in parts]
     if len(parts) == 2:

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
+from flexshaft.analyses.eigen import _BASIS_SHIFT  # the shift of the bases, whose spectrum is cached
 from flexshaft.assembly.model import Model
 
 __all__ = ["AROUND", "RESOLVED_DAMPING", "frequency_grid", "natural_frequencies"]
@@ -29,9 +31,14 @@ AROUND = {3: (-0.5, 0.0, 0.5), 1: (0.0,)}
 
 
 def natural_frequencies(model: Model, low: float, high: float) -> np.ndarray:
-    """Undamped natural frequencies of (K + K_a, M) in (low, high] [rad/s] (dense, only those
+    """Undamped natural frequencies of (K + K_a, M) in (low, high] [rad/s], ascending (dense:
+    up to :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs read off
+    the model's whole spectrum, which its modal bases have computed already; above, only those
     eigenvalues computed; empty above 900 free DOFs)."""
     free = model.dofs.free
+    if free.size <= WHOLE_DENSE_BASIS_UP_TO:
+        w2 = np.sort(1.0 / dense_spectrum(model, _BASIS_SHIFT)[0] - _BASIS_SHIFT)
+        return np.sqrt(np.clip(w2[(w2 > low * low) & (w2 <= high * high)], 0.0, None))
     if free.size > 900:
         return np.zeros(0)
     import scipy.linalg as la

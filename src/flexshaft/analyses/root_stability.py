@@ -30,7 +30,8 @@ Method (at each speed Ω):
    loss (the loss may stabilise it): each on its own side of the line
    (:mod:`flexshaft.analyses.hysteretic_roots`: ``mode_root`` below the spin, the upper branch's
    linear problem above it). On the small basis of a passive driveline (below) every root is
-   solved exactly instead, one complex eigen-solution per branch (``consistent_roots``).
+   solved exactly instead, one complex eigen-solution per branch (``consistent_values``: the
+   eigenvectors only where the pairing of on-line roots needs them).
    A driveline whose actuator laws are all collocated, without states and with non-negative
    stiffness and damping (the thesis's ideal PD bearing) is *passive*: no root above the spin
    can be unstable (the energy argument of :func:`_basis`), so only the roots below the top
@@ -53,12 +54,13 @@ import scipy.linalg as la
 
 from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel, newton, reduce
 from flexshaft.analyses.guards import check_model, check_spin_speeds, require_finite
-from flexshaft.analyses.hysteretic_roots import branches, consistent_roots, mode_root, on_branch
+from flexshaft.analyses.hysteretic_roots import branches, consistent_values, mode_root, on_branch
 from flexshaft.analyses.loss import eigen_coefficients
 from flexshaft.analyses.modal import default_basis_size
 from flexshaft.analyses.stability import STABILITY_TOLERANCE
 from flexshaft.analyses.torsional import torsional_system
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.threads import single_blas_thread
 
 __all__ = [
     "FULL_BASIS_LIMIT",
@@ -226,6 +228,7 @@ def _lateral_basis(model: Model, red: ReducedModel) -> ReducedModel:
     )
 
 
+@single_blas_thread
 def closed_loop_poles(model: Model, speed: float) -> np.ndarray:
     """The oscillatory roots (Im s > 0) of the loss-free closed loop at ``speed`` [rad/s]: step 2
     of the module docstring alone (one dense eigen-solution, no loss)."""
@@ -305,6 +308,7 @@ def _hysteretic(
     return s, done
 
 
+@single_blas_thread
 def root_stability(model: Model, speeds) -> RootStability:
     """Every root of the closed-loop driveline at each of ``speeds`` [rad/s] (module docstring).
 
@@ -339,7 +343,7 @@ def root_stability(model: Model, speeds) -> RootStability:
         divergent = real & (lam.real > DIVERGENCE_TOLERANCE * scale)
         if passive:
             # a small basis: every hysteretic root exactly, one complex eigen-solution per branch
-            s, _ = consistent_roots(red, speed)
+            s = consistent_values(red, speed)
             done = np.ones(s.size, bool)
         else:
             assert right is not None
