@@ -66,6 +66,7 @@ from flexshaft.assembly.size import (
 from flexshaft.assembly.sparse import restrict
 
 __all__ = [
+    "BASIS_SHIFT",
     "DIVERGENCE_TOLERANCE",
     "SPARSE_BASIS_ABOVE",
     "ReducedModel",
@@ -86,8 +87,10 @@ DIVERGENCE_TOLERANCE = 1e-6
 _TOL = 1e-10
 _MAX_ITER = 30
 _NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
-#: Shift −σ of the modal basis's shift-invert [rad²/s²]: below the spectrum of K + K_a >= 0.
-_BASIS_SHIFT = 1.0
+#: Shift −σ of the modal basis's shift-invert [rad²/s²]: below the spectrum of K + K_a >= 0 (the
+#: model's cached whole spectrum, :func:`~flexshaft.analyses.dense_spectrum.dense_spectrum`, is
+#: computed at it: a reader of that cache passes the same shift).
+BASIS_SHIFT = 1.0
 
 
 def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np.ndarray, np.ndarray]:
@@ -146,15 +149,15 @@ def modal_basis(model: Model, basis_size: int, method: str = "auto") -> tuple[np
             # a fixed start vector: ARPACK's own is random, which made two bases of one model
             # differ at round-off (1e-10 in ω²), so results were not reproducible bit for bit
             start = np.random.default_rng(0).standard_normal(n)
-            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-_BASIS_SHIFT, which="LM", v0=start)
-        elif n <= WHOLE_DENSE_BASIS_UP_TO and nb <= dense_spectrum(model, _BASIS_SHIFT)[2]:
-            mu, Phi, _ = dense_spectrum(model, _BASIS_SHIFT)  # every mode, once per model: bases share it
+            w2, Phi = spla.eigsh(K, k=nb, M=M, sigma=-BASIS_SHIFT, which="LM", v0=start)
+        elif n <= WHOLE_DENSE_BASIS_UP_TO and nb <= dense_spectrum(model, BASIS_SHIFT)[2]:
+            mu, Phi, _ = dense_spectrum(model, BASIS_SHIFT)  # every mode, once per model: bases share it
             mu, Phi = mu[n - nb :], Phi[:, n - nb :]
-            w2 = 1.0 / mu - _BASIS_SHIFT
+            w2 = 1.0 / mu - BASIS_SHIFT
         else:
             dense_M = M.toarray()
-            mu, Phi = la.eigh(dense_M, K.toarray() + _BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])
-            w2 = 1.0 / mu - _BASIS_SHIFT
+            mu, Phi = la.eigh(dense_M, K.toarray() + BASIS_SHIFT * dense_M, subset_by_index=[n - nb, n - 1])
+            w2 = 1.0 / mu - BASIS_SHIFT
     except (la.LinAlgError, RuntimeError):  # (RuntimeError: SuperLU's "Factor is exactly singular")
         raise RefusedInputError(
             "the modal basis cannot be computed: K + M is not positive definite to working "
@@ -400,7 +403,7 @@ def _speed_parts(
 def _reduce(model: Model, basis_size: int, method: str, enrich: int = 0) -> ReducedModel:
     free = model.dofs.free
     w2, Phi = modal_basis(model, basis_size, method)
-    full = full_operators(model, _BASIS_SHIFT)
+    full = full_operators(model, BASIS_SHIFT)
     out_rows = [np.asarray(a.lateral_rows.tocsr()[:, free].toarray()) for a in model.actuators]
     in_rows = [None if a.collocated else np.asarray(a.sensing_rows.tocsr()[:, free].toarray()) for a in model.actuators]
     if enrich:

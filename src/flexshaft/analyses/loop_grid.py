@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
-from flexshaft.analyses.eigen import _BASIS_SHIFT  # the shift of the bases, whose spectrum is cached
+from flexshaft.analyses.eigen import BASIS_SHIFT
 from flexshaft.assembly.model import Model
 
 __all__ = ["AROUND", "RESOLVED_DAMPING", "frequency_grid", "natural_frequencies"]
@@ -37,7 +37,7 @@ def natural_frequencies(model: Model, low: float, high: float) -> np.ndarray:
     eigenvalues computed; empty above 900 free DOFs)."""
     free = model.dofs.free
     if free.size <= WHOLE_DENSE_BASIS_UP_TO:
-        w2 = np.sort(1.0 / dense_spectrum(model, _BASIS_SHIFT)[0] - _BASIS_SHIFT)
+        w2 = np.sort(1.0 / dense_spectrum(model, BASIS_SHIFT)[0] - BASIS_SHIFT)
         return np.sqrt(np.clip(w2[(w2 > low * low) & (w2 <= high * high)], 0.0, None))
     if free.size > 900:
         return np.zeros(0)
