@@ -25,7 +25,7 @@ from flexshaft.assembly.sparse import restrict
 from flexshaft.design.io import embedded_design
 
 
-@pytest.mark.parametrize("name", ["baseline", "tuned"])
+@pytest.mark.parametrize("name", ["baseline", "tuned", "current"])
 def test_whole_spectrum_basis_matches_the_subset_solve(name):
     model = build_model(embedded_design(name).model_copy(update={"envelope": None}))
     free = model.dofs.free

@@ -20,8 +20,12 @@ __all__ = ["WHOLE_DENSE_BASIS_UP_TO", "dense_spectrum"]
 #: Up to this many free DOFs a dense modal basis is read off the model's whole dense spectrum,
 #: computed once (:func:`dense_spectrum`): at 343 DOFs (the tuned design) the whole solution
 #: takes 10.5 ms, one of the 60 or 84 lowest modes 11.5-13.8 ms (LAPACK's tridiagonal reduction
-#: dominates both), and an assessment asks for two such bases (the every-root check's).
-WHOLE_DENSE_BASIS_UP_TO = 400
+#: dominates both), and an assessment asks for two such bases (the every-root check's). At 435
+#: DOFs (the current design) the whole solution takes 35 ms where an assessment's point solved
+#: six bases apart for 101 ms (the every-root check's two dense subsets, 25 and 30 ms, and the
+#: modes' and the whirl stability's four sparse ones of 20-44 modes, 7-16 ms each; CPU medians);
+#: one sparse basis alone (``flexshaft modes``) is 7 ms, so the limit stays near the designs'.
+WHOLE_DENSE_BASIS_UP_TO = 500
 
 
 @functools.lru_cache(maxsize=4)  # the models of one assessment's points

@@ -291,13 +291,13 @@ def tracked_to_accuracy(
 
 
 def accurate_reduction(model: Model, size: int, enrich: int) -> ReducedModel:
-    """:func:`~flexshaft.analyses.eigen.reduce` for :func:`tracked_to_accuracy`: a basis of
-    under a quarter of 300 or more free DOFs by sparse shift-invert Lanczos (4x faster than the
-    dense solve at 604 DOFs and 28 modes, the same ω² to 3e-10; a basis error it leaves is in
-    the estimate like any other), the dense solver when ARPACK does not converge. Up to
-    :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs the dense basis is read
-    off the model's whole spectrum, solved once for every basis of the model (an assessment's
-    modes, stability and every-root check share it)."""
+    """:func:`~flexshaft.analyses.eigen.reduce` for :func:`tracked_to_accuracy`: up to
+    :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs the dense basis
+    read off the model's whole spectrum, solved once for every basis of the model (an
+    assessment's modes, stability and every-root check share it); above, a basis of under a
+    quarter of the free DOFs by sparse shift-invert Lanczos (4x faster than the dense solve at
+    604 DOFs and 28 modes, the same ω² to 3e-10; a basis error it leaves is in the estimate like
+    any other), the dense solver when ARPACK does not converge."""
     n_free = int(model.dofs.free.size)
     if WHOLE_DENSE_BASIS_UP_TO < n_free and 4 * size < n_free:
         try:
