@@ -276,3 +276,31 @@ def test_tuned_gains_are_the_best_refined_candidate(coarse):
     best = min(refined, key=refined.get)
     assert out["gains_after"] == best
     assert out["peak_after"] == refined[best]
+
+
+def test_the_two_angle_figure_marks_the_laminate_the_study_names():
+    """The two-angle map is symmetric in α ↔ β, so its best plies tie exactly in both orders:
+    ``best_pair`` names the larger angle first, and the figure marks that laminate when given
+    it (the report and ``flexshaft study two-angle`` pass it), not the first of the tie in
+    (α, β) order, which the figure marks by default. A hand-made symmetric map, R = 58 at
+    (30, 55) and (55, 30)."""
+    import matplotlib.pyplot as plt
+
+    from flexshaft.plot.studies import two_angle_figure
+    from flexshaft.thesis.two_angles import best_pair
+
+    angles = np.array([0.0, 30.0, 55.0, 90.0])
+    sf = np.array([[5.0, 10.0, 20.0, 3.0], [10.0, 40.0, 58.0, 7.0], [20.0, 58.0, 30.0, 9.0], [3.0, 7.0, 9.0, 1.0]])
+    assert np.array_equal(sf, sf.T)
+    i, j = best_pair(sf, angles, angles)
+    assert (angles[i], angles[j]) == (55.0, 30.0)
+
+    def marked(fig) -> list[str]:
+        labels = [line.get_label() for line in fig.axes[0].get_lines() if line.get_label().startswith("best")]
+        plt.close(fig)
+        return labels
+
+    assert marked(two_angle_figure(angles, angles, sf, best=(angles[i], angles[j]))) == [
+        "best (55/−55/30/−30)s: R = 58"
+    ]
+    assert marked(two_angle_figure(angles, angles, sf)) == ["best (30/−30/55/−55)s: R = 58"]

@@ -180,17 +180,18 @@ def two_angle(
 
     from flexshaft.cli.tables import matrix_table
     from flexshaft.plot.studies import two_angle_figure
-    from flexshaft.thesis.two_angles import two_angle_study
+    from flexshaft.thesis.two_angles import best_pair, two_angle_study
 
     angles = np.arange(0.0, 90.0 + 1e-9, step)
     client = dask_client(dask)  # checked and connected before anything is prepared
     loaded, folder = _prepare(design, out, "two-angle", force, points=angles.size**2, jobs=jobs, client=client)
     ds = _sweep(two_angle_study, loaded, folder, jobs, client, as_json, alphas=angles, betas=angles)
     sf = ds["safety_factor"]
-    i = np.unravel_index(int(np.nanargmax(sf.values)), sf.shape)
+    i = best_pair(sf.values, ds.alpha.values, ds.beta.values)
     a, b = ds.alpha.values[i[0]], ds.beta.values[i[1]]
     headline = f"best ({a:g}/-{a:g}/{b:g}/-{b:g})s: safety factor {float(sf.values[i]):.3g}"
-    figures = {"two_angle": _save(two_angle_figure(ds.alpha.values, ds.beta.values, sf.values), folder, "two_angle")}
+    figure = two_angle_figure(ds.alpha.values, ds.beta.values, sf.values, best=(a, b))
+    figures = {"two_angle": _save(figure, folder, "two_angle")}
     _report(
         loaded,
         "two-angle",

@@ -116,11 +116,15 @@ def two_angle_figure(
     safety_factor: ArrayLike,
     thesis_best: tuple[float, float] | None = (55.0, 0.0),
     *,
+    best: tuple[float, float] | None = None,
     ax=None,
 ) -> Figure:
     """Safety factor map of (α/−α/β/−β)s (thesis figure 3.3), best laminate marked.
 
-    ``safety_factor`` has shape (n_alpha, n_beta).
+    ``safety_factor`` has shape (n_alpha, n_beta). ``best`` = (α, β) [deg], a point of the
+    grid, is the laminate marked as the best: the study's choice among the exact ties of the
+    symmetric map (:func:`flexshaft.thesis.two_angles.best_pair`); default, the first largest
+    value in (α, β) order.
     """
     a = vector("alpha_deg", alpha_deg)
     b = vector("beta_deg", beta_deg)
@@ -132,7 +136,10 @@ def two_angle_figure(
     if a.size > 2 and b.size > 2 and np.isfinite(sf).sum() > 4:
         cs = ax.contour(a, b, sf.T, levels=8, colors="w", linewidths=0.7, alpha=0.8)
         ax.clabel(cs, fontsize=7, fmt="%.3g")
-    i, j = np.unravel_index(int(np.nanargmax(sf)), sf.shape)
+    if best is None:
+        i, j = (int(k) for k in np.unravel_index(int(np.nanargmax(sf)), sf.shape))
+    else:
+        i, j = int(np.flatnonzero(a == best[0])[0]), int(np.flatnonzero(b == best[1])[0])
     ax.plot(a[i], b[j], **_BEST, label=f"best ({a[i]:g}/−{a[i]:g}/{b[j]:g}/−{b[j]:g})s: R = {sf[i, j]:.3g}")
     if thesis_best is not None:
         ax.plot(

@@ -136,7 +136,9 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
     if r.two_angle is not None:
         ds = r.two_angle
         add(
-            job(sf.two_angle_figure, ds.alpha.values, ds.beta.values, ds["safety_factor"].values),
+            job(
+                sf.two_angle_figure, ds.alpha.values, ds.beta.values, ds["safety_factor"].values, best=r.best_two_angle
+            ),
             "study_two_angle",
             "Safety factor of (α/−α/β/−β)s laminates, no imbalance (thesis figure 3.3)",
         )

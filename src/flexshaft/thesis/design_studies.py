@@ -39,7 +39,7 @@ from flexshaft.thesis.buckling_sweep import buckling_study
 from flexshaft.thesis.gain import proportional_gain_study
 from flexshaft.thesis.ply_angle import ply_angle_study
 from flexshaft.thesis.spinup_maps import spinup_studies
-from flexshaft.thesis.two_angles import two_angle_study
+from flexshaft.thesis.two_angles import best_pair, two_angle_study
 from flexshaft.thesis.wall import FORCED_WALLS, forced_response, quietest_spinup_wall, wall_thickness_study
 from flexshaft.thesis.whirl import gain_stability_map, stability_dataset, stack_maps
 from flexshaft.units import rad_s_to_rpm
@@ -338,23 +338,12 @@ def _ply_angle_task(design, angles, run) -> dict:
 
 def _two_angle_task(design, angles, run) -> dict:
     ds = two_angle_study(angles, angles, design=design, **run)
-    i, j = _best_pair(ds["safety_factor"].values, ds.alpha.values, ds.beta.values)
+    i, j = best_pair(ds["safety_factor"].values, ds.alpha.values, ds.beta.values)
     return {
         "two_angle": ds,
         "best_two_angle": (float(ds.alpha.values[i]), float(ds.beta.values[j])),
         "best_two_angle_safety_factor": float(ds["safety_factor"].values[i, j]),
     }
-
-
-def _best_pair(sf: np.ndarray, alpha: np.ndarray, beta: np.ndarray) -> tuple[int, int]:
-    """(i, j) of the largest safety factor of the two-angle map. The map is symmetric in α ↔ β
-    (:mod:`~flexshaft.thesis.two_angles`): of the two orders of the best plies, the one with the
-    larger angle first (α >= β) is named, as in docs/studies.md."""
-    top = sf.flat[np.nanargmax(sf)]  # ValueError when every point is NaN
-    best = np.argwhere(sf == top)
-    first = [k for k, (i, j) in enumerate(best) if alpha[i] >= beta[j]]
-    i, j = best[first[0] if first else 0]
-    return int(i), int(j)
 
 
 def _wall_task(design, walls, run, laminated: bool) -> dict:

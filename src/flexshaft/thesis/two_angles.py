@@ -20,7 +20,7 @@ from flexshaft.sweep.run import run_sweep
 from flexshaft.sweep.study import Point, Study, Variable
 from flexshaft.thesis.strength import STRENGTH_OUTPUTS, strength_outputs
 
-__all__ = ["two_angle_layup", "two_angle_study"]
+__all__ = ["best_pair", "two_angle_layup", "two_angle_study"]
 
 
 def two_angle_layup(angles) -> dict:
@@ -74,3 +74,17 @@ def _pair_strength(base: _DesignKey, high: float, low: float) -> tuple[tuple[str
     ``base``'s design, as (name, value) pairs."""
     design = with_overrides(base.design, two_angle_layup((high, low)))
     return tuple(strength_outputs(Point(0, {}, {}, design)).items())
+
+
+def best_pair(sf: np.ndarray, alpha: np.ndarray, beta: np.ndarray) -> tuple[int, int]:
+    """(i, j) of the largest safety factor of a two-angle map ``sf[i, j]`` over ``alpha[i]``,
+    ``beta[j]`` [deg]. The map is symmetric in α ↔ β (module docstring): of the two orders of
+    the best plies, which tie exactly, the one with the larger angle first (α >= β) is named, as
+    in docs/studies.md: the study's headline, its figure and ``flexshaft study two-angle`` name
+    the same laminate. Raises ValueError when every point is NaN."""
+    sf = np.asarray(sf, dtype=float)
+    top = sf.flat[np.nanargmax(sf)]
+    best = np.argwhere(sf == top)
+    first = [k for k, (i, j) in enumerate(best) if alpha[i] >= beta[j]]
+    i, j = best[first[0] if first else 0]
+    return int(i), int(j)
