@@ -330,11 +330,11 @@ def test_first_speed_screen_chooses_the_basis_the_whole_tracks_choose(layup, dam
         viscous = functools.partial(viscous_equivalent, stability(model, [0.0], 8, "viscous").reference_frequency)
     whole = []
 
-    def track(red, at=speeds):
+    def track(red, at=speeds, start=None):  # a basis that passes the screen goes on from its first speed
         whole.append(at.size == speeds.size)
         if viscous is not None:
-            return track_modes(model, red, at, 8, refine_loss=False, viscous=viscous)
-        return track_modes(model, red, at, 8)
+            return track_modes(model, red, at, 8, refine_loss=False, viscous=viscous, start=start)
+        return track_modes(model, red, at, 8, start=start)
 
     unscreened = tracked_to_accuracy(model, speeds, 8, track, viscous=viscous)
     assert whole == [True, True]  # reference: the first basis fails (else nothing is screened)
@@ -345,3 +345,21 @@ def test_first_speed_screen_chooses_the_basis_the_whole_tracks_choose(layup, dam
     np.testing.assert_allclose(screened[1].eigenvalues, unscreened[1].eigenvalues, rtol=1e-10)
     np.testing.assert_allclose(screened[2], unscreened[2], rtol=1e-6, atol=1e-16)
     assert np.max(screened[2]) <= EIGENVALUE_TOLERANCE
+
+
+def test_a_track_continued_from_its_first_speed_is_the_whole_track():
+    """``track_modes(start=first)`` (the accuracy loop goes on this way from a basis that passed
+    its first-speed screen) equals the track from scratch exactly: the first speed's curves and
+    labels are taken as computed, and every later speed is reached from the earlier ones only,
+    so the same floating-point operations run in the same order (no tolerance)."""
+    from flexshaft.thesis.whirl import thesis_shaft_designs
+
+    model = flexshaft.build_model(thesis_shaft_designs(embedded_design("tuned"))["(45/-45)s FMC"])
+    speeds = np.linspace(0.0, 1.5 * model.speed, 7)
+    red = accurate_reduction(model, *accurate_basis(8))
+    whole = track_modes(model, red, speeds, 8)
+    continued = track_modes(model, red, speeds, 8, start=track_modes(model, red, speeds[:1], 8))
+    assert np.array_equal(continued.eigenvalues, whole.eigenvalues)
+    assert all(np.array_equal(a, b) for a, b in zip(continued.states, whole.states, strict=True))
+    for name in ("kind", "whirl", "whirl_ratios", "component"):
+        assert np.array_equal(getattr(continued, name), getattr(whole, name)), name

@@ -186,6 +186,7 @@ def track_modes(
     solve: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None,
     refine_loss: bool = True,
     viscous: Callable[[float], LossCoefficients] | None = None,
+    start: TrackedModes | None = None,
 ) -> TrackedModes:
     """Follow ``n_modes`` eigenvalue curves over ``speeds`` [rad/s].
 
@@ -206,6 +207,10 @@ def track_modes(
     internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
     candidates and continuation then solve that linear problem. Without ``refine_loss`` and
     ``viscous`` (the undamped Campbell diagram) every speed is matched.
+
+    ``start``: this call's curves at ``speeds[0]`` alone, tracked already (on ``red`` with the
+    same options): its first speed is taken as it is and the tracking continues from it, with
+    the same result as tracking from scratch (each speed is reached from the earlier ones only).
     """
     speeds = np.asarray(speeds, dtype=float)
     hysteretic = refine_loss and viscous is None
@@ -220,6 +225,15 @@ def track_modes(
     kinds, whirls, ratios, comps = [], [], [], []
     prev = None
     for k, speed in enumerate(speeds):
+        if k == 0 and start is not None:
+            eig[0] = start.eigenvalues[0]
+            states.append(start.states[0])
+            prev = (eig[0], states[0])
+            kinds.append(start.kind[0])
+            whirls.append(start.whirl[0])
+            ratios.append(start.whirl_ratios[0])
+            comps.append(start.component[0])
+            continue
         step = None
         if (refine_loss or viscous is not None) and k >= 1:
             step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))

@@ -312,10 +312,10 @@ def stability(
             ref = _first_shaft_frequency(model, reduced or reduce(model, basis_size or _plain_basis(n_modes)))
         weights = functools.partial(viscous_equivalent, ref)
 
-    def track(red: ReducedModel, at: np.ndarray = speeds) -> TrackedModes:
+    def track(red: ReducedModel, at: np.ndarray = speeds, start: TrackedModes | None = None) -> TrackedModes:
         if weights is not None:
-            return track_modes(model, red, at, int(n_modes), refine_loss=False, viscous=weights)
-        return track_modes(model, red, at, int(n_modes))
+            return track_modes(model, red, at, int(n_modes), refine_loss=False, viscous=weights, start=start)
+        return track_modes(model, red, at, int(n_modes), start=start)
 
     red, tracked, errors = tracked_to_accuracy(
         model,
