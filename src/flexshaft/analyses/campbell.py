@@ -467,7 +467,7 @@ def campbell(
         model,
         speeds,
         n_modes,
-        lambda r: track_modes(model, r, speeds, n_modes, refine_loss=damped),
+        lambda r, at, start: track_modes(model, r, at, n_modes, refine_loss=damped, start=start),
         basis_size,
         tolerance,
         transform=None if damped else ReducedModel.undamped,

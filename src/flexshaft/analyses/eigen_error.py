@@ -214,19 +214,20 @@ def tracked_to_accuracy(
     model: Model,
     speeds: np.ndarray,
     n_modes: int,
-    track: Callable[[ReducedModel], _C],
+    track: Callable[[ReducedModel, np.ndarray, _C | None], _C],
     basis_size: int | None = None,
     tolerance: float = EIGENVALUE_TOLERANCE,
     transform: Callable[[ReducedModel], ReducedModel] | None = None,
     viscous: Callable[[float], LossCoefficients] | None = None,
     reduced: ReducedModel | None = None,
     estimate: bool = True,
-    track_first: Callable[[ReducedModel], _C] | None = None,
 ) -> tuple[ReducedModel, _C, np.ndarray | None]:
     """Tracked curves on a basis chosen for ``tolerance``, with their estimated errors.
 
-    ``track(red)`` follows the modes on a reduced model; each point's relative error against
-    the full eigenproblem is estimated a posteriori (:mod:`flexshaft.analyses.eigen_error`).
+    ``track(red, at, start)`` follows the modes on a reduced model over the speeds ``at``, going
+    on from ``start`` (its curves at ``at[0]`` alone, tracked already) when given; each point's
+    relative error against the full eigenproblem is estimated a posteriori
+    (:mod:`flexshaft.analyses.eigen_error`).
     With ``reduced`` or ``basis_size`` given that basis is used as it is (the plain modal basis
     of ``basis_size`` modes) and the estimate only reported. Otherwise the enriched basis of
     :func:`accurate_basis` is tried first and doubled while the largest estimate exceeds
@@ -239,16 +240,13 @@ def tracked_to_accuracy(
     output's accuracy statement (a study that keeps only onsets over a grid); the basis chosen
     for ``tolerance`` needs it.
 
-    ``track_first(red)``, when given, follows the modes at ``speeds[0]`` alone: the first
-    speed's curves of ``track(red)`` (a tracking reaches each speed from the earlier ones only).
-    A basis that is not the last to try is then screened on that speed before the whole track:
-    an estimate above ``tolerance`` there is one of the whole track's, which would reject the
-    basis, so it is rejected at once. The basis chosen and the results are the same; a basis
-    that fails from rest on (the enriched first basis of the thesis shafts at 1e-6: 1.2e-6 to
-    3e-6 at every speed) costs one speed instead of all. A basis that passes the screen is
-    tracked on from it, ``track(red, start=first)`` (``track`` then takes ``start``, the first
-    speed's curves, and continues from them), and keeps its first speed's estimate: the screen
-    costs nothing more than the whole track.
+    A basis that is not the last to try is screened at ``speeds[0]`` before the whole track (a
+    tracking reaches each speed from the earlier ones only): an estimate above ``tolerance``
+    there is one of the whole track's, which would reject the basis, so it is rejected at once;
+    a basis that passes is tracked on from that speed's curves and keeps their estimate. The
+    basis chosen and the results are those of whole tracks; a basis that fails from rest on (the
+    enriched first basis of the thesis shafts at 1e-6: 1.2e-6 to 3e-6 at every speed) costs one
+    speed instead of all, and one that passes costs nothing more.
 
     Returns
     -------
@@ -260,7 +258,7 @@ def tracked_to_accuracy(
 
     def run(red: ReducedModel, with_errors: bool = True) -> tuple[ReducedModel, _C, np.ndarray | None]:
         red = transform(red) if transform is not None else red
-        tracked = track(red)
+        tracked = track(red, speeds, None)
         if not with_errors:
             return red, tracked, None
         errors = tracked_errors(red, speeds, tracked.eigenvalues, tracked.states, viscous)
@@ -268,13 +266,12 @@ def tracked_to_accuracy(
 
     def screened(red: ReducedModel) -> tuple[ReducedModel, _C, np.ndarray] | None:
         """The whole track on a basis that passes the first speed's screen, else None."""
-        assert track_first is not None
         red = transform(red) if transform is not None else red
-        first = track_first(red)
+        first = track(red, speeds[:1], None)
         errors = tracked_errors(red, speeds[:1], first.eigenvalues, first.states, viscous)
         if float(np.nanmax(errors, initial=0.0)) > tolerance:
             return None
-        tracked = track(red, start=first)  # type: ignore[call-arg]  # documented: takes start
+        tracked = track(red, speeds, first)
         rest = tracked_errors(red, speeds[1:], tracked.eigenvalues[1:], tracked.states[1:], viscous)
         return red, tracked, np.concatenate([errors, rest])
 
@@ -289,18 +286,12 @@ def tracked_to_accuracy(
         whole = size >= n_free
         red = accurate_reduction(model, min(size, n_free), 0 if whole else enrich)
         last = whole or k == len(bases) - 1 or red.size >= largest
-        if not last and track_first is not None:
-            passed = screened(red)
-            if passed is None:
-                continue
-            out: tuple[ReducedModel, _C, np.ndarray | None] = passed
-        else:
-            out = run(red)
-        assert out[2] is not None  # estimated: it chooses the basis
-        worst = float(np.nanmax(out[2], initial=0.0))
-        if last or worst <= tolerance:
-            break
-    return out
+        if last:
+            return run(red)
+        passed = screened(red)
+        if passed is not None and float(np.nanmax(passed[2], initial=0.0)) <= tolerance:
+            return passed
+    raise AssertionError("unreachable: the last basis to try is tracked whole and returned")
 
 
 def accurate_reduction(model: Model, size: int, enrich: int) -> ReducedModel:

@@ -312,22 +312,13 @@ def stability(
             ref = _first_shaft_frequency(model, reduced or reduce(model, basis_size or _plain_basis(n_modes)))
         weights = functools.partial(viscous_equivalent, ref)
 
-    def track(red: ReducedModel, at: np.ndarray = speeds, start: TrackedModes | None = None) -> TrackedModes:
+    def track(red: ReducedModel, at: np.ndarray, start: TrackedModes | None) -> TrackedModes:
         if weights is not None:
             return track_modes(model, red, at, int(n_modes), refine_loss=False, viscous=weights, start=start)
         return track_modes(model, red, at, int(n_modes), start=start)
 
     red, tracked, errors = tracked_to_accuracy(
-        model,
-        speeds,
-        int(n_modes),
-        track,
-        basis_size,
-        tolerance,
-        viscous=weights,
-        reduced=reduced,
-        estimate=estimate,
-        track_first=lambda red: track(red, speeds[:1]),
+        model, speeds, int(n_modes), track, basis_size, tolerance, viscous=weights, reduced=reduced, estimate=estimate
     )
     eig = tracked.eigenvalues
     require_finite("stability eigenvalues", eig)
