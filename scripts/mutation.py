@@ -24,7 +24,7 @@ mutation text; ``--json`` and ``--markdown`` write it to files.
 
 Usage (from the repository root, with the project's venv)::
 
-    .venv/bin/python scripts/mutation.py                      # every mutation (~30 min, 1 core)
+    .venv/bin/python scripts/mutation.py                      # every mutation (~40 min, 1 core)
     .venv/bin/python scripts/mutation.py --list               # the mutations and their tests
     .venv/bin/python scripts/mutation.py --only verdict-zero-margin-fails thermal-h-radius
     .venv/bin/python scripts/mutation.py --module thermal.shaft --timeout 120

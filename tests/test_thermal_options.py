@@ -179,6 +179,14 @@ def test_builders_convert_celsius_and_degrees_to_si():
     assert opts.allowable_temperature == law.allowable_temperature
 
 
+def test_ply_conductivities_keep_their_directions():
+    """k along the fibres and k across them reach the options each under its own name (a carbon
+    ply conducts several times better along its fibres: swapping them changes the wall's axial
+    conductivity by that factor)."""
+    opts = thermal_options(Thermal(fibre_conductivity=8.0, transverse_conductivity=0.7))
+    assert (opts.fibre_conductivity, opts.transverse_conductivity) == (8.0, 0.7)
+
+
 def test_runtime_options_refuse_bad_values_naming_the_field():
     with pytest.raises(ValueError, match="boom_convection"):
         ThermalOptions(boom_convection="dittus_boelter")
