@@ -94,10 +94,13 @@ def gain_stability_map(
 ) -> StabilityMap:
     """Onset speed over (K_p, K_d) applied to every active bearing (same values on each).
 
-    One model and modal basis per K_p (it sets the basis stiffness); each K_d only changes the
-    projected damping ``Σ K_d B̃ᵀB̃``, so the basis is reused. The map keeps the onset and the
-    margin of each point, not the eigenvalues' error estimates: none is computed (``estimate``
-    of :func:`~flexshaft.analyses.stability.stability`; the map 1.17x faster).
+    One model and modal basis per K_p (it sets the basis stiffness). Where every active bearing
+    is a collocated PD law on an ideal amplifier, each K_d only changes the projected damping
+    ``Σ k_i K_d B̃ᵀB̃`` (the force law is k_i C(s), k_i the current gain [N/A]), so the basis is
+    reused; otherwise (a derivative filter, a controller, an amplifier lag or a sensor offset put
+    K_d in the law's states) each point's model is built and reduced. The map keeps the onset
+    and the margin of each point, not the eigenvalues' error estimates: none is computed
+    (``estimate`` of :func:`~flexshaft.analyses.stability.stability`; the map 1.17x faster).
     """
     speeds = np.asarray(speeds, dtype=float)
     active = [i for i, b in enumerate(design.bearings) if b.kind == "active"]
@@ -105,18 +108,36 @@ def gain_stability_map(
         raise ValueError("the design has no active bearing")
     onset = np.full((len(kp_values), len(kd_values)), np.nan)
     margin = np.full_like(onset, np.nan)
+    basis = max(default_basis_size(n_modes), 48)
     for i, kp in enumerate(kp_values):
         ov = {f"bearings[{a}].{k}": float(v) for a in active for k, v in (("kp", kp), ("kd", 0.0))}
         model = build_model(with_overrides(design, ov))
-        base = reduce(model, max(default_basis_size(n_modes), 48))
-        unit = sum(act.rows.T @ act.rows for act in base.actuators)
+        base = reduce(model, basis)
+        unit = _unit_derivative_damping(design, model, base)
         for j, kd in enumerate(kd_values):
-            red = dataclasses.replace(base, C=base.C + float(kd) * unit)
+            if unit is None:  # K_d in the law's states: the point's own model
+                model = build_model(with_overrides(design, {**ov, **{f"bearings[{a}].kd": float(kd) for a in active}}))
+                red = reduce(model, basis)
+            else:
+                red = dataclasses.replace(base, C=base.C + float(kd) * unit)
             res = stability(model, speeds, n_modes, damping_model, reference_frequency, reduced=red, estimate=False)
             if res.onset_speed is not None:
                 onset[i, j] = res.onset_speed
             margin[i, j] = res.stability_margin[int(np.argmin(np.abs(speeds - model.speed)))]
     return StabilityMap(np.asarray(kp_values, float), np.asarray(kd_values, float), onset, margin, float(speeds[-1]))
+
+
+def _unit_derivative_damping(design, model, reduced):
+    """The projected damping of a unit K_d on every active bearing, ``Σ k_i B̃ᵀB̃`` [N s/m per
+    N s/m], when K_d enters the model only there: each active bearing a PD law (no controller,
+    no derivative filter) measured at its magnet (collocated) through an ideal amplifier; None
+    otherwise."""
+    laws = [b for b in design.bearings if b.kind == "active"]
+    if any(b.controller is not None or b.derivative_cutoff is not None for b in laws) or any(
+        not a.collocated or a.amplifier_bandwidth is not None for a in model.actuators
+    ):
+        return None
+    return sum(a.current_gain * (r.rows.T @ r.rows) for a, r in zip(model.actuators, reduced.actuators))
 
 
 def stack_maps(rows) -> StabilityMap:
