@@ -112,14 +112,16 @@ def gain_stability_map(
     for i, kp in enumerate(kp_values):
         ov = {f"bearings[{a}].{k}": float(v) for a in active for k, v in (("kp", kp), ("kd", 0.0))}
         model = build_model(with_overrides(design, ov))
-        base = reduce(model, basis)
-        unit = _unit_derivative_damping(design, model, base)
+        shared = _kd_only_damps(design, model)
+        if shared:  # the basis of K_d = 0 and the projected damping of a unit K_d, k_i B̃ᵀB̃
+            base = reduce(model, basis)
+            unit = sum(a.current_gain * (r.rows.T @ r.rows) for a, r in zip(model.actuators, base.actuators))
         for j, kd in enumerate(kd_values):
-            if unit is None:  # K_d in the law's states: the point's own model
+            if shared:
+                red = dataclasses.replace(base, C=base.C + float(kd) * unit)
+            else:  # K_d in the law's states: the point's own model
                 model = build_model(with_overrides(design, {**ov, **{f"bearings[{a}].kd": float(kd) for a in active}}))
                 red = reduce(model, basis)
-            else:
-                red = dataclasses.replace(base, C=base.C + float(kd) * unit)
             res = stability(model, speeds, n_modes, damping_model, reference_frequency, reduced=red, estimate=False)
             if res.onset_speed is not None:
                 onset[i, j] = res.onset_speed
@@ -127,17 +129,15 @@ def gain_stability_map(
     return StabilityMap(np.asarray(kp_values, float), np.asarray(kd_values, float), onset, margin, float(speeds[-1]))
 
 
-def _unit_derivative_damping(design, model, reduced):
-    """The projected damping of a unit K_d on every active bearing, ``Σ k_i B̃ᵀB̃`` [N s/m per
-    N s/m], when K_d enters the model only there: each active bearing a PD law (no controller,
-    no derivative filter) measured at its magnet (collocated) through an ideal amplifier; None
-    otherwise."""
+def _kd_only_damps(design, model) -> bool:
+    """True when K_d enters the model only as the damping ``k_i K_d B̃ᵀB̃`` of each active
+    bearing: a PD law (no controller, no derivative filter) measured at its magnet (collocated)
+    through an ideal amplifier. Otherwise K_d is in the law's states."""
     laws = [b for b in design.bearings if b.kind == "active"]
-    if any(b.controller is not None or b.derivative_cutoff is not None for b in laws) or any(
-        not a.collocated or a.amplifier_bandwidth is not None for a in model.actuators
-    ):
-        return None
-    return sum(a.current_gain * (r.rows.T @ r.rows) for a, r in zip(model.actuators, reduced.actuators))
+    return not (
+        any(b.controller is not None or b.derivative_cutoff is not None for b in laws)
+        or any(not a.collocated or a.amplifier_bandwidth is not None for a in model.actuators)
+    )
 
 
 def stack_maps(rows) -> StabilityMap:
