@@ -110,6 +110,13 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
     assert data["imbalance"]["max_shaft_orbit_spin_up_m"] == spinup["value"]
     assert data["imbalance"]["speed_of_max_rpm"] <= data["summary"]["operating_speed_rpm"] * (1 + 1e-9)
     assert data["imbalance"]["max_shaft_orbit_scan_m"] >= 0.99 * spinup["value"]  # the refined peak may exceed a sample
+    # the every-root check of the tuned design's ideal PD bearings (passive): every root stable at
+    # the three speeds, its basis within the accuracy it was chosen for (its estimate against the
+    # full model: tests/test_root_stability.py); the report's table says so
+    every = data["stability"]["every_root"]
+    assert every["method"] == "passive" and every["unstable_roots"] == [0, 0, 0]
+    assert 0 < every["estimated_relative_error"] <= every["tolerance"] == 1e-6
+    assert "Every root of the closed loop (passive bearing laws" in (out / "report.html").read_text(encoding="utf-8")
     thesis = data["stability"]["thesis_shafts"]
     # the thesis's abstract: adding 0° plies to the (45/-45)s shaft improves its stability
     # (an onset of None: stable up to the highest speed analysed)

@@ -69,6 +69,7 @@ __all__ = [
     "branch_roots",
     "consistent_roots",
     "consistent_values",
+    "consistent_values_below",
     "line_root",
     "mode_root",
     "damped_modes",
@@ -169,12 +170,23 @@ def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
     inverse iteration on its second-order problem, :func:`_null_vectors`). A single branch (Ω = 0,
     the fixed-frame loss) pairs nothing: one eigenvalue solve without vectors.
     """
+    return consistent_values_below(red, speed)[0]
+
+
+def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`consistent_values` with the unit modal coordinates (nb, k) of the roots below the
+    spin (Im s < Ω: the lower branch's and the on-line ones, which its pairing solves anyway);
+    the columns of the others may be zero. What the every-root check of a passive driveline
+    estimates the error of (:mod:`flexshaft.analyses.root_stability`)."""
     if not red.has_loss:
-        return candidates(red, speed)[0]
+        return candidates(red, speed)
     parts = branches(red, speed)
     if len(parts) == 1:
+        if speed > 0:  # the fixed-frame (thesis) loss: one branch, and roots below the spin
+            return consistent_roots(red, speed)
         s = _branch_values(red, speed, parts[0].weights)
-        return s[on_branch(parts[0], s.imag, speed)]
+        s = s[on_branch(parts[0], s.imag, speed)]
+        return s, np.zeros((red.size, s.size), complex)  # at rest no root is below the spin
     lower, upper = parts
     s_hi = _branch_values(red, speed, upper.weights)
     wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
@@ -182,7 +194,7 @@ def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
     Y_hi[:, wrong] = _null_vectors(red, speed, upper.weights, s_hi[wrong])
     if not np.isfinite(Y_hi).all():  # an inverse iteration failed: every vector from the dense solve
         s_hi, Y_hi = branch_roots(red, speed, upper.weights)
-    return _consistent(red, speed, [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)])[0]
+    return _consistent(red, speed, [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)])
 
 
 def _branch_values(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:

@@ -197,6 +197,16 @@ def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:
             label: {m: rpm_or_none(r.onset_speed) for m, r in models.items()} for label, models in comparison.items()
         },
     }
+    roots = a.roots
+    out["every_root"] = {
+        "method": roots.method,
+        "speeds_rpm": rad_s_to_rpm(roots.speeds).tolist(),
+        "least_damping_ratio": roots.least_damping_ratio.tolist(),
+        "unstable_roots": [sum(r.speed == v for r in roots.unstable) for v in roots.speeds],
+        "basis_size": roots.basis_size,
+        "estimated_relative_error": roots.error_estimate,
+        "tolerance": roots.tolerance,
+    }
     if thesis is not None and thesis.gain_map is not None:
         g = thesis.gain_map
         out["gain_map"] = {

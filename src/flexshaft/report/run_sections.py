@@ -275,6 +275,17 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
     tables.append(
         Table("Onset speed of whirl instability [rpm]", ["shaft", "viscous equivalent", "exact hysteretic"], rows)
     )
+    roots = a.roots
+    tables.append(
+        Table(
+            f"Every root of the closed loop ({roots.coverage()})",
+            ["speed [rpm]", "roots", "least damping ratio ζ", "unstable roots"],
+            [
+                [rad_s_to_rpm(v), int(n), float(z), sum(r.speed == v for r in roots.unstable)]
+                for v, n, z in zip(roots.speeds, roots.n_roots, roots.least_damping_ratio)
+            ],
+        )
+    )
     if gain_map is not None:
         g = gain_map
         onset = {f"K_p = {kp:.3g} N/m": rad_s_to_rpm(g.onset_speed[i]) for i, kp in enumerate(g.kp)}

@@ -148,10 +148,14 @@ def _roots_and_loops(
     source: Model | Design, resolution: Resolution
 ) -> tuple[RootStability, tuple[BearingLoop, ...] | None]:
     """Every root at :func:`root_speeds` and the loops at the operating speed (on a grid at the
-    every-root check's closed-loop poles there)."""
+    every-root check's closed-loop poles there: a passive check's up to the highest mode of its
+    basis, above which its static corrections' roots have no physical meaning and the grid
+    takes the natural frequencies instead, :func:`~flexshaft.analyses.loop_grid.frequency_grid`)."""
     model = _model_of(source)
     roots = root_stability(model, root_speeds(model))
     if not model.actuators:
         return roots, None
     poles = roots.roots_at(model.speed)
+    if roots.method == "passive":
+        poles = poles[np.abs(poles) <= roots.highest_frequency]
     return roots, bearing_loops(model, poles=poles, peak_samples=resolution.loop_peak_samples)
