@@ -32,6 +32,7 @@ from flexshaft.assembly.model import Model
 from flexshaft.resolution import SLOW_START
 
 __all__ = [
+    "actuator_static_state",
     "EccentricityDistribution",
     "ImbalanceDraws",
     "Placement",
@@ -224,6 +225,19 @@ def _peak_refined_speeds(proxy, speeds: np.ndarray, width: float = 2e-6, keep: i
     return np.unique(np.concatenate([speeds, np.array(extra)]))
 
 
+def actuator_static_state(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The static state the verdict's actuator checks add to the dynamic peaks: the static
+    displacement (dofs,) under the external loads and the torque, each active bearing's lateral
+    offset at its magnet [m] and its static lateral force [N] (the run's static reaction: the
+    constraint force of an integrating law too), in the order of ``model.actuators``."""
+    static_loads = external_static_load(model) + torque_load(model)
+    static = static_response(model, static_loads)
+    reactions = bearing_reactions(model, static, np.zeros((model.dofs.size, 1), complex), loads=static_loads)
+    offset = np.array([float(np.hypot(*np.real(a.lateral_rows @ static))) for a in model.actuators])
+    force = np.array([float(reactions[a.name].static_lateral) for a in model.actuators])
+    return static, offset, force
+
+
 def unit_responses(
     model: Model, speeds=None, placement: Placement = "uniform", *, n_speeds: int = 150, refine: bool = True
 ) -> UnitResponses:
@@ -287,11 +301,7 @@ def unit_responses(
     )
     operating = np.zeros((dm.size, stations.size), complex)
     operating[free] = solver.solve(model.speed, rhs, model.speed) * model.speed**2
-    static_loads = external_static_load(model) + torque_load(model)
-    static = static_response(model, static_loads)
-    reactions = bearing_reactions(model, static, np.zeros((dm.size, 1), complex), loads=static_loads)
-    static_offset = np.array([float(np.hypot(*np.real(a.lateral_rows @ static))) for a in model.actuators])
-    static_force = np.array([float(reactions[a.name].static_lateral) for a in model.actuators])
+    static, static_offset, static_force = actuator_static_state(model)
     return UnitResponses(
         speeds=speeds,
         bays=bays,
