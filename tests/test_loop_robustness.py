@@ -297,3 +297,101 @@ def test_the_pole_grid_finds_what_a_fine_grid_refined_everywhere_finds(monkeypat
             assert a.margins.peak_frequency == pytest.approx(b.margins.peak_frequency, rel=1e-5)
             assert a.margins.phase_margin_deg == pytest.approx(b.margins.phase_margin_deg, rel=1e-7)
             assert a.margins.phase_margin_frequency == pytest.approx(b.margins.phase_margin_frequency, rel=1e-7)
+
+
+# ------------------------------------------------------------------------------------------------
+# Crossovers between two grid points
+
+
+def test_a_crossover_pair_inside_one_grid_interval_is_found_from_the_refined_peak():
+    """L = −0.8 − 0.21 H(ω), H = 2iζω_rω/(ω_r² − ω² + 2iζω_rω) a resonance of ζ = 1e-3 at 100 Hz
+    that pulls L from |L| = 0.8 to −1.01 (|S| = 100 at ω_r). With q = 1/(1 + u²),
+    u = (ω_r² − ω²)/(2ζω_rω): |L|² = 0.64 + 0.3801 q, so |L| = 1 at q = 0.36/0.3801 and
+    u = ±√(1/q − 1), i.e. ω = −ζω_r u + √((ζω_r u)² + ω_r²); there L = −0.8 − 0.21q(1 + iu) and the
+    phase margin is atan(0.21 q |u| / (0.8 + 0.21 q)) = 2.69°. Both crossings lie 0.05 % apart,
+    inside one interval of a 200-point grid (4.7 % steps, ends at 97.7 and 102.3 Hz where
+    |L| ≈ 0.8): the grid shows no change of sign, and the peak refined between them does
+    (this test fails without it: no gain crossover, an infinite phase margin)."""
+    zeta, wr = 1e-3, 2 * np.pi * 100.0
+
+    def loop(w):
+        h = 2j * zeta * wr * w / (wr * wr - w * w + 2j * zeta * wr * w)
+        return -0.8 - 0.21 * h
+
+    grid = np.geomspace(2 * np.pi * 1.0, 2 * np.pi * 1e4, 200)
+    k = np.searchsorted(grid, wr)
+    assert np.all(np.abs(loop(grid[k - 1 : k + 1])) < 1)  # the interval's ends agree in sign
+    q = 0.36 / 0.3801
+    u = np.sqrt(1 / q - 1)
+    crossings = [-zeta * wr * s * u + np.sqrt((zeta * wr * u) ** 2 + wr * wr) for s in (1, -1)]
+    margins = loop_margins(loop, grid)
+    assert margins.gain_crossovers == pytest.approx([c / (2 * np.pi) for c in crossings], rel=1e-8)
+    assert margins.phase_margin_deg == pytest.approx(np.degrees(np.arctan(0.21 * q * u / (0.8 + 0.21 * q))), rel=1e-7)
+    # the peak is located to 1e-6 in ln ω (golden section): u ≤ 1e-6/ζ = 1e-3 from the top, where
+    # |S| is lower by 0.5 · 0.0399 u² / 1e-4 ≈ 2e-4 of itself
+    assert margins.peak_sensitivity == pytest.approx(100.0, rel=2e-4)
+
+
+def test_a_gain_crossover_the_first_round_passed_over_is_refined_once_the_window_moves():
+    """A loop built from its phase margin PM(x) and log|L| = −(x − x_a)(x − x_b)/(2h²) on a grid
+    x = ln(ω/ω₀) = k h, |L| = 1 at x_a = 10.5 h and x_b = 20.5 h only (both mid-interval):
+    PM = 9° − 4° g(x − x_a, 3h) + 35° g(x − x_a, 0.1h) − 2° e^{−(x − x_b)²/(2 (h/4)²)}, g(d, s) = e^{−(d/s)²}.
+    On the grid, A's interval reads about 5.1° (a narrow bump to 40° at x_a between its ends),
+    B's 8.7° (its dip to 7° at x_b is narrower than the interval): the first round refines A,
+    the smallest estimate, to 40°, and leaves B outside the 3° window. The true phase margin is
+    7° at x_b (PM' = 0 there: the root's 1e-8 moves it by ~1e-12); without the second round it
+    reads B's interpolated 8.7°."""
+    h, w0 = np.log(1.05), 2 * np.pi * 10.0
+    xa, xb = 10.5 * h, 20.5 * h
+
+    def pm(x):
+        bump = -4 * np.exp(-(((x - xa) / (3 * h)) ** 2)) + 35 * np.exp(-(((x - xa) / (0.1 * h)) ** 2))
+        return 9.0 + bump - 2 * np.exp(-0.5 * ((x - xb) / (0.25 * h)) ** 2)
+
+    def loop(w):
+        x = np.log(w / w0)
+        return np.exp(-(x - xa) * (x - xb) / (2 * h * h)) * np.exp(1j * np.radians(pm(x) - 180.0))
+
+    grid = w0 * np.exp(h * np.arange(0, 31))
+    margins = loop_margins(loop, grid)
+    assert margins.gain_crossovers == pytest.approx(
+        [w0 * np.exp(xa) / (2 * np.pi), w0 * np.exp(xb) / (2 * np.pi)], rel=1e-8
+    )
+    assert pm(xb) == pytest.approx(7.0, abs=1e-4)  # A's wide term leaves 6e-5° at x_b
+    assert margins.phase_margin_deg == pytest.approx(pm(xb), rel=1e-9)
+    assert margins.phase_margin_frequency == pytest.approx(w0 * np.exp(xb) / (2 * np.pi), rel=1e-8)
+
+
+def test_the_baselines_margins_at_its_cold_point_equal_a_fine_grids(monkeypatch):
+    """The baseline's magnetic bearings at its cold envelope point (lightly damped loops, |S| up
+    to 317): the report's and the screening's grids against 1000 logarithmic points (0.9 %
+    steps) without pole points, every peak and crossover refined. Before the second round of
+    refinements (loop_margins.MarginPlan) the default grids read amb_1 v's phase margin as 1.34°
+    at 788 Hz (the crossover pair at 451-468 Hz hid inside one interval) and amb_2's lower gain
+    margins as −25.4 dB (a crossover left at its interpolated value, kept out of the refinement
+    by another's interpolated −6 dB that refined to −26.4 dB); the fine grid finds 0.294° and
+    −26.36 dB, the values a 3000-point grid finds too. Both refine the same loop function to
+    1e-8: asserted to 1e-7."""
+    import flexshaft.analyses.loop_margins as lm
+    from flexshaft.analyses.root_stability import root_stability
+    from flexshaft.design import embedded_design
+    from flexshaft.verdict.assess import _point_design
+    from flexshaft.verdict.point_tasks import root_speeds
+
+    name, _, design = _point_design(embedded_design("baseline"), 0)
+    assert name == "cold_day"
+    model = build_model(design)
+    roots = root_stability(model, root_speeds(model))
+    poles = roots.roots_at(model.speed)
+    poles = poles[np.abs(poles) <= roots.highest_frequency]  # as the assessment passes them (passive)
+    fasts = [bearing_loops(model, poles=poles), bearing_loops(model, poles=poles, peak_samples=1)]
+    with monkeypatch.context() as patch:
+        patch.setattr(lm, "PEAK_WINDOW", 0.0)
+        patch.setattr(lm, "MARGIN_WINDOW_DEG", np.inf)
+        patch.setattr(lm, "MARGIN_WINDOW_DB", np.inf)
+        fine = bearing_loops(model, n_points=1000, poles=np.zeros(0))
+    assert min(loop.margins.peak_sensitivity for loop in fine) > 90  # lightly damped: sharp peaks
+    for a, b in ((a, b) for fast in fasts for a, b in zip(fast, fine)):
+        assert a.margins.phase_margin_deg == pytest.approx(b.margins.phase_margin_deg, rel=1e-7)
+        assert a.margins.gain_margin_db == pytest.approx(b.margins.gain_margin_db, rel=1e-7)
+        assert a.margins.peak_sensitivity == pytest.approx(b.margins.peak_sensitivity, rel=1e-7)

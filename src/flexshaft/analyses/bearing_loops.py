@@ -187,7 +187,10 @@ def bearing_loops(
     def evaluate(omegas: np.ndarray, which: np.ndarray, keep: list | None = None) -> np.ndarray:
         """L(iω) of each task's loop at its ω: one banded sweep a loop, with that loop's actuation
         only; its responses (n_free,) are appended to ``keep`` in the order of ``omegas``."""
-        loops = loop_of[which]
+        return on_loops(omegas, loop_of[which], keep)
+
+    def on_loops(omegas: np.ndarray, loops: np.ndarray, keep: list | None = None) -> np.ndarray:
+        """L(iω) of loop ``loops[i]`` at ``omegas[i]`` (:func:`evaluate`'s)."""
         T = np.empty(omegas.size, dtype=complex)
         columns: list = [None] * omegas.size
         for k in np.unique(loops):
@@ -209,10 +212,26 @@ def bearing_loops(
         results = projected_refinements(tasks, evaluate, local_models, windows, settle)
     else:
         results = lockstep([task.start() for task in tasks], evaluate)
-    out, first = [], 0
-    for k, (actuator, j) in enumerate(rows):
-        loop_tasks, finish = plans[k]
-        margins = finish(results[first : first + len(loop_tasks)])
+    # the second round (loop_margins.MarginPlan), on full solves: the crossovers the first round's
+    # results bring into the margins' window, and those a refined peak reveals inside an interval
+    peaks = np.flatnonzero([task.kind == "peak" for task in tasks])
+    at_peaks = on_loops(np.exp([results[i][0] for i in peaks]), loop_of[peaks]) if peaks.size else np.zeros(0, complex)
+    second, second_loop, first = [], [], 0
+    for k in range(len(rows)):
+        loop_tasks, plan = plans[k]
+        mine = loop_of[peaks] == k
+        more = plan.second_round(results[first : first + len(loop_tasks)], at_peaks[mine])
+        second.append(more)
+        second_loop += [k] * len(more)
         first += len(loop_tasks)
+    which_loop = np.array(second_loop, dtype=np.intp)
+    flat = [task for more in second for task in more]
+    found = lockstep([task.start() for task in flat], lambda x, which: on_loops(x, which_loop[which]))
+    out, first, first_second = [], 0, 0
+    for k, (actuator, j) in enumerate(rows):
+        loop_tasks, plan = plans[k]
+        margins = plan(results[first : first + len(loop_tasks)], found[first_second : first_second + len(second[k])])
+        first += len(loop_tasks)
+        first_second += len(second[k])
         out.append(BearingLoop(actuator.name, _AXES[j], float(speed), margins, grid / (2 * np.pi), 1.0 - T_grid[k]))
     return tuple(out)
