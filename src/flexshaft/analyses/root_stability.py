@@ -126,7 +126,8 @@ class RootStability:
     speeds : ndarray
         Ω [rad/s], (n_speeds,).
     least_damped : ndarray
-        The least-damped root at each speed [rad/s] (complex; a divergent root is real).
+        The least-damped root at each speed [rad/s] (complex; a divergent root is real); for a
+        passive check, of the roots up to :attr:`highest_frequency` (those its basis resolves).
     n_roots : ndarray
         Roots examined at each speed (oscillatory roots with Im s > 0 and real roots).
     n_refined : ndarray
@@ -399,10 +400,13 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
             unstable.append(UnstableRoot(speed, complex(s[k]), "oscillatory", bool(done[k])))
         for root in np.sort(lam[divergent].real)[::-1]:
             unstable.append(UnstableRoot(speed, complex(root), "divergence", False))
+        # a passive check's least-damped root among those its basis resolves: above its highest
+        # mode the static corrections' Ritz roots (kHz, zeta ~ 1e-4) carry no physical meaning
+        resolved = np.abs(s) <= highest * (1 + 1e-9) if method == "passive" else np.ones(s.size, bool)
         if divergent.any():
             least.append(complex(lam[divergent].real.max()))
-        elif s.size:
-            least.append(complex(s[np.argmin(zeta)]))
+        elif resolved.any():
+            least.append(complex(s[resolved][np.argmin(zeta[resolved])]))
         else:
             least.append(complex(0.0))
         counts.append(int(s.size + real.sum()))
