@@ -20,7 +20,7 @@ from magnet_loops import default_loops, magnetic_tuned_model
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.bearing_loops import bearing_loops
-from flexshaft.analyses.loop_margins import ISO_14839_ZONE_LIMITS, loop_margins, sensitivity_zone
+from flexshaft.analyses.loop_margins import ISO_14839_ZONE_LIMITS, hidden_crossovers, loop_margins, sensitivity_zone
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly import build_model
@@ -327,6 +327,11 @@ def test_a_crossover_pair_inside_one_grid_interval_is_found_from_the_refined_pea
     margins = loop_margins(loop, grid)
     assert margins.gain_crossovers == pytest.approx([c / (2 * np.pi) for c in crossings], rel=1e-8)
     assert margins.phase_margin_deg == pytest.approx(np.degrees(np.arctan(0.21 * q * u / (0.8 + 0.21 * q))), rel=1e-7)
+    # ω_r is the grid interval's geometric middle: which of its two ends is the grid's maximum of
+    # |S| is round-off (numpy 1.26 makes both local maxima, 2.x one). Two peak refinements that
+    # reach the same top split the interval once: the same two crossovers, not four
+    twice = hidden_crossovers(grid, loop(grid), np.array([wr, wr * (1 + 1e-9)]), loop(np.array([wr, wr])))
+    assert [task.role for task in twice] == ["gain", "gain"]
     # the peak is located to 1e-6 in ln ω (golden section): u ≤ 1e-6/ζ = 1e-3 from the top, where
     # |S| is lower by 0.5 · 0.0399 u² / 1e-4 ≈ 2e-4 of itself
     assert margins.peak_sensitivity == pytest.approx(100.0, rel=2e-4)

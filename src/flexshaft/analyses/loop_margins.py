@@ -186,24 +186,36 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
 
 
 def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray) -> list[RefinementTask]:
-    """Refinements of the crossovers a refined peak reveals inside a grid interval (module
-    docstring): ``peaks`` [rad/s] with L there (``at_peaks``); for |L| = 1 and for Im L = 0
+    """Refinements of the crossovers refined peaks reveal inside grid intervals (module
+    docstring): ``peaks`` [rad/s] with L there (``at_peaks``). For |L| = 1 and for Im L = 0
     (with Re L < 0 at an end, a phase crossover), each interval of the grid ``w`` whose ends
-    agree in sign while the peak's value does not gets both its halves refined."""
+    agree in sign is split at the peaks inside it and every part whose ends differ in sign is
+    refined (two grid maxima beside one sharp peak refine to the same top: the part between the
+    two splits has no change of sign, so each crossover is refined once)."""
     tasks: list[RefinementTask] = []
-    for omega, value in zip(np.asarray(peaks, dtype=float), np.asarray(at_peaks, dtype=complex)):
-        j = int(np.searchsorted(w, omega)) - 1
-        if not (0 <= j < w.size - 1 and w[j] < omega < w[j + 1]):
-            continue  # on a grid point: the grid's own signs hold
+    peaks = np.asarray(peaks, dtype=float)
+    at_peaks = np.asarray(at_peaks, dtype=complex)
+    interval = np.searchsorted(w, peaks) - 1
+    inside = (interval >= 0) & (interval < w.size - 1)
+    inside[inside] &= (w[interval[inside]] < peaks[inside]) & (peaks[inside] < w[interval[inside] + 1])
+    for j in np.unique(interval[inside]):
+        mine = np.flatnonzero(inside & (interval == j))
+        mine = mine[np.argsort(peaks[mine])]
+        points = [(float(w[j]), complex(L[j]))]
+        points += [(float(peaks[i]), complex(at_peaks[i])) for i in mine]
+        points.append((float(w[j + 1]), complex(L[j + 1])))
         for f, role in ((_log_abs, "gain"), (_imag, "phase")):
-            fa, fb, fp = f(L[j]), f(L[j + 1]), f(value)
-            if np.sign(fa) != np.sign(fb) or np.sign(fp) in (0.0, np.sign(fa)):
-                continue
-            for (a, la), (b, lb) in (((w[j], L[j]), (omega, value)), ((omega, value), (w[j + 1], L[j + 1]))):
+            if np.sign(f(points[0][1])) != np.sign(f(points[-1][1])):
+                continue  # the grid brackets a crossing here already
+            for (a, la), (b, lb) in zip(points[:-1], points[1:]):
+                if np.sign(f(la)) == np.sign(f(lb)) or f(la) == 0 or f(lb) == 0:
+                    continue
                 if role == "phase" and not (la.real < 0 or lb.real < 0):
                     continue
-                bracket = float(a), float(b), complex(la), complex(lb), 1e-8 * float(a)
-                tasks.append(RefinementTask("root", j, j + 1, functools.partial(illinois_root, f, *bracket), role))
+                bracket = a, b, la, lb, 1e-8 * a
+                tasks.append(
+                    RefinementTask("root", int(j), int(j) + 1, functools.partial(illinois_root, f, *bracket), role)
+                )
     return tasks
 
 
