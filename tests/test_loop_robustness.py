@@ -280,17 +280,11 @@ def test_the_pole_grid_finds_what_a_fine_grid_refined_everywhere_finds(monkeypat
     function, so the peak, its frequency and the phase margin agree to the refinement's
     tolerance (1e-8 relative; asserted 1e-7). The screening's grid (one point at each such pole,
     ``peak_samples=1``) is held to the same reference and tolerance."""
-    import flexshaft.analyses.loop_margins as lm
-
     for kd in (560.0,):
         model = build_model(with_overrides(tuned_design(), {"bearings[1].kd": kd, "bearings[2].kd": kd}))
         poles = closed_loop_poles(model, model.speed)  # the default poles, computed once for both grids
         fasts = [bearing_loops(model, poles=poles), bearing_loops(model, poles=poles, peak_samples=1)]
-        with monkeypatch.context() as patch:
-            patch.setattr(lm, "PEAK_WINDOW", 0.0)
-            patch.setattr(lm, "MARGIN_WINDOW_DEG", np.inf)
-            patch.setattr(lm, "MARGIN_WINDOW_DB", np.inf)
-            fine = bearing_loops(model, n_points=5000, poles=np.zeros(0))
+        fine = _refined_everywhere(model, 5000, monkeypatch)
         assert fasts[1][0].frequencies.size < fasts[0][0].frequencies.size < fine[0].frequencies.size / 5
         for a, b in ((a, b) for fast in fasts for a, b in zip(fast, fine)):
             assert a.margins.peak_sensitivity == pytest.approx(b.margins.peak_sensitivity, rel=1e-7)
@@ -377,7 +371,6 @@ def test_the_baselines_margins_at_its_cold_point_equal_a_fine_grids(monkeypatch)
     by another's interpolated −6 dB that refined to −26.4 dB); the fine grid finds 0.294° and
     −26.36 dB, the values a 3000-point grid finds too. Both refine the same loop function to
     1e-8: asserted to 1e-7."""
-    import flexshaft.analyses.loop_margins as lm
     from flexshaft.analyses.root_stability import root_stability
     from flexshaft.design import embedded_design
     from flexshaft.verdict.assess import _point_design
@@ -390,13 +383,21 @@ def test_the_baselines_margins_at_its_cold_point_equal_a_fine_grids(monkeypatch)
     poles = roots.roots_at(model.speed)
     poles = poles[np.abs(poles) <= roots.highest_frequency]  # as the assessment passes them (passive)
     fasts = [bearing_loops(model, poles=poles), bearing_loops(model, poles=poles, peak_samples=1)]
-    with monkeypatch.context() as patch:
-        patch.setattr(lm, "PEAK_WINDOW", 0.0)
-        patch.setattr(lm, "MARGIN_WINDOW_DEG", np.inf)
-        patch.setattr(lm, "MARGIN_WINDOW_DB", np.inf)
-        fine = bearing_loops(model, n_points=1000, poles=np.zeros(0))
+    fine = _refined_everywhere(model, 1000, monkeypatch)
     assert min(loop.margins.peak_sensitivity for loop in fine) > 90  # lightly damped: sharp peaks
     for a, b in ((a, b) for fast in fasts for a, b in zip(fast, fine)):
         assert a.margins.phase_margin_deg == pytest.approx(b.margins.phase_margin_deg, rel=1e-7)
         assert a.margins.gain_margin_db == pytest.approx(b.margins.gain_margin_db, rel=1e-7)
         assert a.margins.peak_sensitivity == pytest.approx(b.margins.peak_sensitivity, rel=1e-7)
+
+
+def _refined_everywhere(model, n_points: int, monkeypatch):
+    """The loops of ``model`` on ``n_points`` logarithmic points without pole points, every
+    local maximum of |S| and every crossover refined (the fine-grid reference)."""
+    import flexshaft.analyses.loop_margins as lm
+
+    with monkeypatch.context() as patch:
+        patch.setattr(lm, "PEAK_WINDOW", 0.0)
+        patch.setattr(lm, "MARGIN_WINDOW_DEG", np.inf)
+        patch.setattr(lm, "MARGIN_WINDOW_DB", np.inf)
+        return bearing_loops(model, n_points=n_points, poles=np.zeros(0))

@@ -268,7 +268,7 @@ def test_runup_samples_superpose_the_bay_transients(two_bay):
     different steps at rtol 1e-7, and the envelopes are stored in complex64: 1e-4). The run-up
     takes 0.5 s (1100 rad/s², CPU budget, issue 23): superposition holds for any speed profile,
     and each transient costs in proportion to its duration."""
-    from flexshaft.analyses.transient import SpeedProfile, transient_response
+    from flexshaft.analyses.transient import SpeedProfile
     from flexshaft.montecarlo import runup_montecarlo
 
     design, model = two_bay
@@ -276,14 +276,7 @@ def test_runup_samples_superpose_the_bay_transients(two_bay):
     dist = EccentricityDistribution("disk", 2e-5)
     samples = runup_montecarlo(model, profile, 3, seed=9, distribution=dist, rtol=1e-7, output_step=1e-3)
     for k in range(3):
-        U = samples.draws.eccentricity[k] * model.shaft_mass / 2
-        run = transient_response(
-            model,
-            profile,
-            loads_per_speed_squared=per_bay_imbalance_loads(model, U, samples.draws.angle[k]),
-            rtol=1e-7,
-            output_step=1e-3,
-        )
+        run = _direct_runup(model, profile, samples, k, rtol=1e-7, output_step=1e-3)
         assert samples.shaft_peak[k] == pytest.approx(run.shaft_peak.max(), rel=1e-4)
         assert samples.actuator_orbit_max[k] == pytest.approx(run.actuator_displacement.max(), rel=1e-4)
         assert samples.actuator_force_max[k] == pytest.approx(run.actuator_force.max(), rel=1e-4)
@@ -327,7 +320,7 @@ def test_runup_excursions_add_the_static_offset_and_force_as_the_verdict_does():
     output instants at rtol 1e-5, and the samples' envelopes are combined in complex64
     (measured: 5e-11 on the excursion, 1.4e-9 on the force; the sum of maxima is 1.4 % off)."""
     from flexshaft.analyses.response import static_response
-    from flexshaft.analyses.transient import SpeedProfile, transient_response
+    from flexshaft.analyses.transient import SpeedProfile
     from flexshaft.assembly.loads import external_static_load, torque_load
     from flexshaft.design import with_overrides
     from flexshaft.montecarlo import runup_montecarlo
@@ -345,14 +338,7 @@ def test_runup_excursions_add_the_static_offset_and_force_as_the_verdict_does():
     profile = SpeedProfile.constant_acceleration(50.0, 300.0, 2000.0)
     dist = EccentricityDistribution("disk", 2e-5)
     samples = runup_montecarlo(model, profile, 2, seed=2, distribution=dist, rtol=1e-5, output_step=2e-3)
-    U = samples.draws.eccentricity[0] * model.shaft_mass / 2  # two equal bays of the uniform tube
-    run = transient_response(
-        model,
-        profile,
-        loads_per_speed_squared=per_bay_imbalance_loads(model, U, samples.draws.angle[0]),
-        rtol=1e-5,
-        output_step=2e-3,
-    )
+    run = _direct_runup(model, profile, samples, 0, rtol=1e-5, output_step=2e-3)
     orbit, dynamic = run.actuator_displacement.max(axis=1), run.actuator_force.max(axis=1)
     assert np.argmax(force) != np.argmax(dynamic)  # the test tells the per-bearing sum from the sum of maxima
     assert samples.actuator_excursion_max[0] == pytest.approx(np.max(orbit + offset), rel=1e-6)
@@ -367,7 +353,7 @@ def test_runup_peak_speed_is_where_the_direct_transient_peaks(two_bay):
     first natural frequency at rest (597 rad/s), so that the sample peaks before the end of the
     run (measured at 618 rad/s), and a speed of the peak read anywhere else (the final speed,
     say) shows. rtol 1e-4: the peak's instant, not its value, is compared (0.3 s of CPU)."""
-    from flexshaft.analyses.transient import SpeedProfile, transient_response
+    from flexshaft.analyses.transient import SpeedProfile
     from flexshaft.montecarlo import runup_montecarlo
 
     design, model = two_bay
@@ -375,14 +361,17 @@ def test_runup_peak_speed_is_where_the_direct_transient_peaks(two_bay):
     samples = runup_montecarlo(
         model, profile, 1, seed=9, distribution=EccentricityDistribution("disk", 2e-5), rtol=1e-4, output_step=2e-3
     )
-    U = samples.draws.eccentricity[0] * model.shaft_mass / 2  # two equal bays of the uniform tube
-    run = transient_response(
-        model,
-        profile,
-        loads_per_speed_squared=per_bay_imbalance_loads(model, U, samples.draws.angle[0]),
-        rtol=1e-4,
-        output_step=2e-3,
-    )
+    run = _direct_runup(model, profile, samples, 0, rtol=1e-4, output_step=2e-3)
     peak_speed = run.speed[int(np.argmax(run.shaft_peak))]
     assert peak_speed < 690.0  # an interior peak: the test can tell it from the final speed
     assert samples.shaft_peak_speed[0] == pytest.approx(peak_speed, abs=1000.0 * 2e-3 + 1e-9)
+
+
+def _direct_runup(model, profile, samples, k: int, *, rtol: float, output_step: float):
+    """The run-up transient of sample ``k``'s loads solved directly (no superposition): the
+    two equal bays of the uniform tube each carry e_k times half the shaft's mass."""
+    from flexshaft.analyses.transient import transient_response
+
+    U = samples.draws.eccentricity[k] * model.shaft_mass / 2
+    loads = per_bay_imbalance_loads(model, U, samples.draws.angle[k])
+    return transient_response(model, profile, loads_per_speed_squared=loads, rtol=rtol, output_step=output_step)

@@ -235,7 +235,8 @@ def bearing_loops(
     out, first, first_second = [], 0, 0
     for k, (actuator, j) in enumerate(rows):
         loop_tasks, plan = plans[k]
-        margins = plan(results[first : first + len(loop_tasks)], found[first_second : first_second + len(second[k])])
+        pairs = zip(second[k], found[first_second : first_second + len(second[k])])
+        margins = plan(results[first : first + len(loop_tasks)], list(pairs))
         first += len(loop_tasks)
         first_second += len(second[k])
         out.append(BearingLoop(actuator.name, _AXES[j], float(speed), margins, grid / (2 * np.pi), 1.0 - T_grid[k]))

@@ -47,7 +47,6 @@ keeps its checked frequency (within one Newton step of it, in
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -182,7 +181,7 @@ def loop_margins(loop: Callable[[np.ndarray], np.ndarray], omegas, static_gain: 
     results = lockstep([t.start() for t in tasks], evaluate)
     peaks = np.exp([x for x, _ in results[: plan.n_peaks]])
     second = plan.second_round(results, evaluate(peaks) if peaks.size else np.zeros(0, complex))
-    return plan(results, lockstep([t.start() for t in second], evaluate))
+    return plan(results, list(zip(second, lockstep([t.start() for t in second], evaluate))))
 
 
 def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray) -> list[RefinementTask]:
@@ -362,8 +361,10 @@ class MarginPlan:
     once the first round's results are in, :meth:`second_round` refines every crossover left
     unrefined whose estimate lies within the window of the refined margins (:data:`MARGIN_WINDOW_DB`,
     :data:`MARGIN_WINDOW_DEG`), and those a refined peak reveals inside a grid interval
-    (:func:`hidden_crossovers`); :meth:`__call__` makes the margins of both rounds. Without a second
-    round's results (``second`` empty) the margins are those of the first round."""
+    (:func:`hidden_crossovers`); :meth:`__call__` makes the margins of both rounds. A second-round
+    task is known by its role and grid interval: a crossover left unrefined has a change of sign
+    there, a hidden one has none. Without a second round (``second`` empty) the margins are
+    those of the first round."""
 
     n_peaks: int
     peak: tuple[float, float]
@@ -371,7 +372,6 @@ class MarginPlan:
     phase: list  # (grid interval, ω estimate, L estimate, refined in the first round)
     gain: list  # (grid interval, ω estimate, phase margin estimate, refined in the first round)
     grid: tuple[np.ndarray, np.ndarray]
-    _second: list = dataclasses.field(default_factory=list)  # (role, index or None) of each second-round task
 
     def _first(self, results: list) -> tuple[tuple[float, float], dict, dict]:
         """The refined peak, and the refined (ω, L) of the first round's phase and gain crossovers."""
@@ -389,45 +389,41 @@ class MarginPlan:
         peaks' frequencies (``at_peaks``, in the order of the peaks)."""
         w, L = self.grid
         _, phase, gain = self._first(results)
-        static = [abs(float(self.static_gain))] if self.static_gain is not None and self._static_crossover() else []
+        static = [abs(self.static_gain)] if self.static_gain is not None and self._static_crossover() else []
         refined_gm = np.array(
             [20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for x, v in phase.values() if v.real < 0]
             + [20.0 * np.log10(1.0 / s) for s in static]
         )
-        refined_pm = [180.0 - abs(float(np.degrees(np.angle(v)))) for _, v in gain.values()]
-        tasks: list[RefinementTask] = []
-        self._second = []
-        for i, (k, _, v, refined) in enumerate(self.phase):
+        smallest = min((180.0 - abs(float(np.degrees(np.angle(v)))) for _, v in gain.values()), default=np.inf)
+        tasks = []
+        for k, _, v, refined in self.phase:
             gm = 20.0 * np.log10(1.0 / max(abs(v), 1e-300))
             if not refined and _gain_window(gm, np.append(refined_gm, gm)):
                 tasks.append(_crossover(_imag, w, L, k))
-                self._second.append(("phase", i))
-        smallest = min(refined_pm, default=np.inf)
-        for i, (k, _, pm, refined) in enumerate(self.gain):
-            if not refined and pm <= smallest + MARGIN_WINDOW_DEG:
-                tasks.append(_crossover(_log_abs, w, L, k))
-                self._second.append(("gain", i))
+        tasks += [
+            _crossover(_log_abs, w, L, k)
+            for k, _, pm, refined in self.gain
+            if not refined and pm <= smallest + MARGIN_WINDOW_DEG
+        ]
         peaks = np.array([np.exp(x) for x, _ in results[: self.n_peaks]])
-        for task in hidden_crossovers(w, L, peaks, at_peaks):
-            tasks.append(task)
-            self._second.append((task.role, None))
-        return tasks
+        return tasks + hidden_crossovers(w, L, peaks, at_peaks)
 
     def _static_crossover(self) -> bool:
         return self.static_gain is not None and bool(np.isfinite(self.static_gain)) and self.static_gain < 0
 
-    def __call__(self, results: list, second: Sequence = ()) -> LoopMargins:
+    def __call__(self, results: list, second: Sequence[tuple[RefinementTask, tuple]] = ()) -> LoopMargins:
         """The margins from the first round's ``results`` (in the order of the tasks) and the
-        second round's (in the order of :meth:`second_round`'s tasks)."""
+        second round's ``(task, result)`` pairs (:meth:`second_round`'s tasks)."""
         (top, top_w), phase, gain = self._first(results)
+        unrefined = {("phase", k): i for i, (k, *_) in enumerate(self.phase) if i not in phase}
+        unrefined.update({("gain", k): i for i, (k, *_) in enumerate(self.gain) if i not in gain})
         extra = []
-        for (role, index), result in zip(self._second, second):
-            if index is None:
-                extra.append((role, result))
-            elif role == "phase":
-                phase[index] = result
+        for task, result in second:
+            i = unrefined.get((task.role, task.lo))
+            if i is None:  # a hidden crossover: no change of sign across its grid interval
+                extra.append((task.role, result))
             else:
-                gain[index] = result
+                (phase if task.role == "phase" else gain)[i] = result
         phase_w, phase_l = [], []
         if self._static_crossover():
             assert self.static_gain is not None

@@ -61,7 +61,13 @@ import numpy as np
 import scipy.linalg as la
 
 from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel, newton, reduce
-from flexshaft.analyses.eigen_error import EIGENVALUE_TOLERANCE, accurate_reduction, check_tolerance, eigenvalue_errors
+from flexshaft.analyses.eigen_error import (
+    EIGENVALUE_TOLERANCE,
+    accurate_basis,
+    accurate_reduction,
+    check_tolerance,
+    eigenvalue_errors,
+)
 from flexshaft.analyses.guards import check_model, check_spin_speeds, require_finite
 from flexshaft.analyses.hysteretic_roots import branches, consistent_values_below, mode_root, on_branch
 from flexshaft.analyses.loss import eigen_coefficients
@@ -458,7 +464,7 @@ def _passive_bases(model: Model, top_speed: float) -> list[tuple[int, int]]:
     n_free = int(model.dofs.free.size)
     modes = reduce(model, min(n_free, default_basis_size(10)))
     below = int(np.sum(np.sqrt(np.clip(modes.w2, 0.0, None)) < max(top_speed, 1.0)))
-    size, enrich = max(2 * below, 16), max(below, 8)
+    size, enrich = accurate_basis(below)
     largest = 4 * max(4 * below, 60)
     out = []
     while size < n_free and size + enrich <= largest:
