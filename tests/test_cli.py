@@ -323,7 +323,11 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
     assert FAILING_DESIGN != PASSING_DESIGN != SMALL_DESIGN
     design = _write(tmp_path, "failing.toml", FAILING_DESIGN)
     out = tmp_path / "out"
-    result = runner.invoke(app, ["run", str(design), "--studies", "none", "--strict", "--out", str(out)])
+    # the report's text and tables are what this reads: no figures (tests/test_cli.py's
+    # test_run_without_figures_* shows that they change nothing else)
+    result = runner.invoke(
+        app, ["run", str(design), "--studies", "none", "--no-figures", "--strict", "--out", str(out)]
+    )
     assert result.exit_code == 3, result.output
     assert "requirements verdict" in result.stdout
     first, second = result.stdout.splitlines()[:2]
@@ -361,11 +365,38 @@ def test_run_strict_exits_0_on_a_passing_design(tmp_path: Path) -> None:
 
 def test_run_strict_json_exits_3_after_printing_the_results(tmp_path: Path) -> None:
     design = _write(tmp_path, "failing.toml", FAILING_DESIGN)
+    out = tmp_path / "out"
     result = runner.invoke(
-        app, ["run", str(design), "--studies", "none", "--strict", "--json", "--out", str(tmp_path / "out")]
+        app, ["run", str(design), "--studies", "none", "--no-figures", "--strict", "--json", "--out", str(out)]
     )
     assert result.exit_code == 3
     assert json.loads(result.stdout)["verdict"]["passed"] is False
+
+
+def test_run_without_figures_writes_the_same_results_and_a_page_that_says_so(small_run: dict, tmp_path: Path) -> None:
+    """``run --no-figures`` (a scripted run, a ``--strict`` gate) draws nothing and changes
+    nothing else: results.json byte-identical to the session's run of the same design with its
+    figures (tests/conftest.py's ``small_run``), the page with the same sections, no image, and
+    a sentence saying the figures were not drawn; no PNG or SVG in the folder. ``--svg`` with it
+    is refused before the design is read (a missing file is not the message)."""
+    from flexshaft.report.driveline import NO_FIGURES_NOTE
+
+    out = tmp_path / "out"
+    result = runner.invoke(app, ["run", str(small_run["design"]), "--studies", "none", "--no-figures", "-o", str(out)])
+    assert result.exit_code == small_run["exit_code"] == 0, result.output
+    assert (out / "results.json").read_bytes() == small_run["results"]
+    assert not list(out.glob("*.png")) and not list(out.glob("*.svg"))
+    page = (out / "report.html").read_text(encoding="utf-8")
+    drawn = (small_run["out"] / "report.html").read_text(encoding="utf-8")
+    headings = re.compile(r"<h2>\d+\. ([^<]+)</h2>")
+    assert headings.findall(page) == headings.findall(drawn)
+    assert "<img" in drawn and "<img" not in page and "<figure" not in page
+    assert html.escape(NO_FIGURES_NOTE) in page
+    both = runner.invoke(
+        app, ["run", str(tmp_path / "missing.toml"), "--svg", "--no-figures", "-o", str(tmp_path / "b")]
+    )
+    assert both.exit_code == 2 and "--svg" in both.stderr and "--no-figures" in both.stderr
+    assert not (tmp_path / "b").exists()
 
 
 def test_run_strict_keeps_exit_code_2_for_user_errors(files: dict[str, Path], tmp_path: Path) -> None:

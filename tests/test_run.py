@@ -202,7 +202,8 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
     has it (with the thesis studies), so the rerun after the edit meets a folder holding the
     studies' files as a user's does, and must replace them (the first run's ``studies/`` folder
-    goes); the rerun skips them (``--studies none``, CPU budget, issue 23: about 7 s of CPU):
+    goes); the rerun skips them and the figures (``--studies none --no-figures``, CPU budget,
+    issue 23: about 10 s of CPU), and must remove the first run's figures too:
     what it checks is the output folder's ownership (its marker: the command, the design's
     source and fingerprint, whether it is complete) and that the edited design's results
     replace the first run's.
@@ -213,15 +214,17 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
         assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
     first = _flexshaft(tmp_path, "run", "my.toml")
     assert first.returncode == 0, first.stderr
-    assert (tmp_path / "my-results" / "studies").is_dir()
+    assert (tmp_path / "my-results" / "studies").is_dir() and list((tmp_path / "my-results").glob("*.png"))
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
     assert WALL.search((tmp_path / "my.toml").read_text(encoding="utf-8")).group() == "wall_thickness = 0.003"
     _edit_wall(tmp_path / "my.toml", 0.0035)
-    second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
+    second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none", "--no-figures")
     assert second.returncode == 0, second.stderr
     assert "--force" not in second.stderr
-    assert not (tmp_path / "my-results" / "studies").exists()  # the first run's studies do not linger
+    # the first run's studies and figures (of the design before the edit) do not linger
+    assert not (tmp_path / "my-results" / "studies").exists()
+    assert not list((tmp_path / "my-results").glob("*.png"))
     # the folder holds the edited design's results: a 0.0035 m wall instead of 0.003 m weighs
     # 7/6 as much (the tube's mass is proportional to its wall at a fixed outer diameter, up to
     # the mean-radius change: within 3 %)

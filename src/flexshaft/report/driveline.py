@@ -314,6 +314,22 @@ def campbell_orders(model) -> dict[str, float]:
     return {e.name: e.ratio for e in torsional_excitations(model.design) if e.source == "tail_rotor"}
 
 
+#: What the first section of a report without figures says (:func:`without_figures`).
+NO_FIGURES_NOTE = (
+    "The figures of this report were not drawn (flexshaft run --no-figures): every section has its "
+    "text and tables, and results.json holds the numbers the figures would show."
+)
+
+
+def without_figures(plan: RunReportPlan) -> RunReportPlan:
+    """``plan`` with no figure to draw and none referenced by its sections; its first section
+    says so (:data:`NO_FIGURES_NOTE`)."""
+    sections = [replace(section, figures=()) for section in plan.sections]
+    if sections:
+        sections[0] = replace(sections[0], paragraphs=[*sections[0].paragraphs, NO_FIGURES_NOTE])
+    return replace(plan, sections=sections, jobs=[])
+
+
 def write_run_report(
     a: Assessment,
     folder: str | Path,
@@ -324,6 +340,7 @@ def write_run_report(
     *,
     thesis: ThesisStudies | None = None,
     svg: bool = False,
+    figures: bool = True,
     processes: int = 1,
     executor: Executor | None = None,
 ) -> Path:
@@ -337,12 +354,20 @@ def write_run_report(
     design studies' own, never to ``results.json``. ``processes`` > 1 draws the figures in
     that many forked worker processes; an ``executor`` (e.g.
     :func:`flexshaft.parallel.pool.worker_pool`) draws them in its workers while the data files are
-    written here.
+    written here. Without ``figures`` none is drawn: the page has the same sections, text and
+    tables, and says that its figures were not drawn (``flexshaft run --no-figures``).
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     plan = plan_run_report(a, folder, design_text, design_source, thesis)
-    if executor is not None:
+    if not figures:
+        plan = without_figures(plan)
+    if not plan.jobs:
+
+        def figures_done():
+            return None
+
+    elif executor is not None:
         figures_done = start_figures(plan.jobs, folder, executor, svg=svg)
     else:
 
