@@ -17,7 +17,9 @@ Cases:
   (``getrusage(RUSAGE_CHILDREN)`` difference), split into the command's own process (main: the
   assessment's serial part, the report's data files) and its pool workers (the studies, the
   assessment's tasks, the figures), which the command reports at exit. ``run-full`` is not in
-  the default set (long).
+  the default set (long);
+* ``run-nofigures``: ``flexshaft run --studies none --no-figures`` (a scripted ``--strict``
+  gate's run: the verdict and the data files, no figure drawn), beside ``run-none``.
 
 With ``--reference``, each ``run-*`` repeat also runs the same command on another checkout's
 code (``PYTHONPATH=OTHER/src``, e.g. ``git worktree add --detach /tmp/old <commit>``) right
@@ -55,7 +57,7 @@ sys.path.insert(0, HERE)
 import bench_util as bu  # noqa: E402
 
 COARSE = {"mesh.shaft_elements": 18, "mesh.boom_elements": 12}  # as in tests/test_studies.py
-CASES = ("studies-coarse", "studies-report", "run-none", "run-report", "run-full")
+CASES = ("studies-coarse", "studies-report", "run-none", "run-nofigures", "run-report", "run-full")
 DEFAULT_CASES = ("studies-coarse", "run-none", "run-report")
 
 
@@ -166,12 +168,17 @@ def _prepare_bytecode(package: str, bytecode: str) -> None:
 
 
 def time_run(
-    studies: str, repeats: int, reference: str | None = None, fastest: float | None = None, bytecode: str = "cached"
+    studies: str,
+    repeats: int,
+    reference: str | None = None,
+    fastest: float | None = None,
+    bytecode: str = "cached",
+    extra: tuple[str, ...] = (),
 ) -> dict:
     """``flexshaft run --studies X`` as a fresh process, ``repeats`` times; with a
     ``reference`` source folder (another checkout's ``src``), each repeat also runs the same
     command on that code right after (PYTHONPATH), so that both see the same machine load.
-    ``bytecode``: see the module docstring."""
+    ``bytecode``: see the module docstring; ``extra``: more options of the command."""
     codes = {"now": None} if reference is None else {"now": None, "reference": os.path.abspath(reference)}
     times = {name: ([], [], [], []) for name in codes}  # wall, CPU, CPU of the main process, of the workers
     probes = []
@@ -185,7 +192,7 @@ def time_run(
             if bytecode == "source":
                 env["PYTHONDONTWRITEBYTECODE"] = "1"
             with tempfile.TemporaryDirectory(prefix="flexshaft-timing-") as out:
-                wall, cpu, split = _time_command(["run", "--studies", studies, "--out", out], env)
+                wall, cpu, split = _time_command(["run", "--studies", studies, *extra, "--out", out], env)
             for series, value in zip(times[name], (wall, cpu, split["main"], split["workers"])):
                 series.append(value)
     walls, cpus, mains, workers = times["now"]
@@ -197,7 +204,7 @@ def time_run(
             "main_cpu": bu.stats(mains),
             "workers_cpu": bu.stats(workers),
         },
-        "command": f"flexshaft run --studies {studies}",
+        "command": " ".join(["flexshaft run --studies", studies, *extra]),
         "probe": bu.stats(probes),
         "bytecode": bytecode,
     }
@@ -251,6 +258,8 @@ def main(argv=None) -> int:
         print(f"[studies_timing] {name} ...", flush=True)
         if name.startswith("studies-"):
             results[name] = time_studies(name == "studies-coarse", a.repeats)
+        elif name == "run-nofigures":  # a scripted gate: the verdict and results.json, no figures drawn
+            results[name] = time_run("none", a.repeats, a.reference, a.fast_probe, a.bytecode, ("--no-figures",))
         else:
             results[name] = time_run(name.split("-", 1)[1], a.repeats, a.reference, a.fast_probe, a.bytecode)
         r = results[name]
