@@ -260,7 +260,7 @@ def release_rule(tasks: Sequence[RefinementTask], loop_of: np.ndarray) -> Callab
             for n, i in enumerate(which):
                 L, dL, d2L = complex(values[n]), complex(slopes[n]), complex(curvatures[n])
                 if tasks[i].role == "gain":
-                    pm = 180.0 - abs(float(np.degrees(np.angle(L))))
+                    pm = _phase_margin_deg(L)
                     g, dg = dL / L, (d2L * L - dL * dL) / (L * L)
                     step = abs(np.log(abs(L)) / g.real)
                     spread = RELEASE_SAFETY * float(np.degrees(abs(g) * step + abs(dg) * step * step))
@@ -316,7 +316,7 @@ def refinements(w: np.ndarray, L: np.ndarray, static_gain: float | None) -> tupl
     for c in crossings:
         t = L.imag[c] / (L.imag[c] - L.imag[c + 1])
         estimates.append((w[c] + t * (w[c + 1] - w[c]), L[c] + t * (L[c + 1] - L[c])))
-    margins = np.array([20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for _, v in estimates])
+    margins = np.array([_gain_margin_db(v) for _, v in estimates])
     phase_refined = [bool(_gain_window(gm, margins) or sharp[k]) for k, gm in zip(crossings, margins)]
     tasks += [_crossover(_imag, w, L, k) for k, refined in zip(crossings, phase_refined) if refined]
 
@@ -327,7 +327,7 @@ def refinements(w: np.ndarray, L: np.ndarray, static_gain: float | None) -> tupl
     for b in brackets:
         t = log_l[b] / (log_l[b] - log_l[b + 1])
         angle = phase[b] + t * np.angle(L[b + 1] / L[b])
-        estimate_pm.append(180.0 - abs(float(np.degrees(np.angle(np.exp(1j * angle))))))
+        estimate_pm.append(_phase_margin_deg(np.exp(1j * angle)))
         gain_at.append(w[b] + t * (w[b + 1] - w[b]))
     smallest = min(estimate_pm, default=np.inf)
     gain_refined = [bool(pm <= smallest + MARGIN_WINDOW_DEG or sharp[k]) for k, pm in zip(brackets, estimate_pm)]
@@ -344,6 +344,16 @@ def refinements(w: np.ndarray, L: np.ndarray, static_gain: float | None) -> tupl
     return tasks, plan
 
 
+def _gain_margin_db(value: complex) -> float:
+    """Gain margin [dB] of a phase crossover where the loop is ``value``: 20 log10(1/|L|)."""
+    return float(20.0 * np.log10(1.0 / max(abs(value), 1e-300)))
+
+
+def _phase_margin_deg(value: complex) -> float:
+    """Phase margin [°] of a gain crossover where the loop is ``value``: 180° − |arg L|."""
+    return 180.0 - abs(float(np.degrees(np.angle(value))))
+
+
 def _gain_window(gm: float, margins: np.ndarray) -> bool:
     """Whether a phase crossover's gain margin ``gm`` [dB] is within :data:`MARGIN_WINDOW_DB` of
     the smallest of its kind among ``margins`` (upper: > 0; lower: < 0, the one nearest 0 dB)."""
@@ -352,7 +362,7 @@ def _gain_window(gm: float, margins: np.ndarray) -> bool:
     return bool((gm > 0 and gm <= best_upper + MARGIN_WINDOW_DB) or (gm < 0 and gm >= best_lower - MARGIN_WINDOW_DB))
 
 
-@dataclass
+@dataclass(frozen=True)
 class MarginPlan:
     """How the margins of one loop are made from the refinements of :func:`refinements`.
 
@@ -391,13 +401,12 @@ class MarginPlan:
         _, phase, gain = self._first(results)
         static = [abs(self.static_gain)] if self.static_gain is not None and self._static_crossover() else []
         refined_gm = np.array(
-            [20.0 * np.log10(1.0 / max(abs(v), 1e-300)) for x, v in phase.values() if v.real < 0]
-            + [20.0 * np.log10(1.0 / s) for s in static]
+            [_gain_margin_db(v) for x, v in phase.values() if v.real < 0] + [_gain_margin_db(s) for s in static]
         )
-        smallest = min((180.0 - abs(float(np.degrees(np.angle(v)))) for _, v in gain.values()), default=np.inf)
+        smallest = min((_phase_margin_deg(v) for _, v in gain.values()), default=np.inf)
         tasks = []
         for k, _, v, refined in self.phase:
-            gm = 20.0 * np.log10(1.0 / max(abs(v), 1e-300))
+            gm = _gain_margin_db(v)
             if not refined and _gain_window(gm, np.append(refined_gm, gm)):
                 tasks.append(_crossover(_imag, w, L, k))
         tasks += [
@@ -438,13 +447,13 @@ class MarginPlan:
         for i, (_, x, pm, _) in enumerate(self.gain):
             if i in gain:
                 x, value = gain[i]
-                pm = 180.0 - abs(float(np.degrees(np.angle(value))))
+                pm = _phase_margin_deg(value)
             gain_w.append(x)
             phase_margins.append(pm)
         for role, (x, value) in extra:
             if role == "gain":
                 gain_w.append(x)
-                phase_margins.append(180.0 - abs(float(np.degrees(np.angle(value)))))
+                phase_margins.append(_phase_margin_deg(value))
             elif value.real < 0:
                 phase_w.append(x)
                 phase_l.append(abs(value))

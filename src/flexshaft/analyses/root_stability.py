@@ -194,6 +194,17 @@ class RootStability:
         """Every oscillatory root at the analysed speed nearest ``speed`` [rad/s]."""
         return self.roots[int(np.argmin(np.abs(self.speeds - speed)))]
 
+    def resolved_roots_at(self, speed: float) -> np.ndarray:
+        """:meth:`roots_at` without a passive check's roots above :attr:`highest_frequency`
+        (its static corrections' Ritz roots: no physical meaning; :func:`_resolved`)."""
+        s = self.roots_at(speed)
+        return s[_resolved(s, self.method, self.highest_frequency)]
+
+    @property
+    def unstable_counts(self) -> np.ndarray:
+        """Unstable roots found at each analysed speed (n_speeds,)."""
+        return np.array([sum(r.speed == v for r in self.unstable) for v in self.speeds], dtype=int)
+
     def worst_at(self, speed: float) -> UnstableRoot | None:
         """The least-damped unstable root at the analysed ``speed`` (None when stable there)."""
         roots = [r for r in self.unstable if r.speed == speed]
@@ -371,8 +382,9 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
         raise ValueError(f"speeds must be a non-empty 1-D array of spin speeds [rad/s] (got {speeds!r})")
     n_free = model.dofs.free.size
     error: float | None = None
-    if _is_passive(model):
-        red, passive_roots, error, highest = _passive_roots(model, speeds, tolerance)
+    modes = reduce(model, min(n_free, default_basis_size(10)))
+    if _is_passive(modes):
+        red, passive_roots, error, highest = _passive_roots(model, modes, speeds, tolerance)
         method = "passive"
     else:
         red = _lateral_basis(model, reduce(model, min(n_free, FULL_BASIS_LIMIT)))
@@ -408,7 +420,7 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
             unstable.append(UnstableRoot(speed, complex(root), "divergence", False))
         # a passive check's least-damped root among those its basis resolves: above its highest
         # mode the static corrections' Ritz roots (kHz, zeta ~ 1e-4) carry no physical meaning
-        resolved = np.abs(s) <= highest * (1 + 1e-9) if method == "passive" else np.ones(s.size, bool)
+        resolved = _resolved(s, method, highest)
         if divergent.any():
             least.append(complex(lam[divergent].real.max()))
         elif resolved.any():
@@ -435,7 +447,15 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
     )
 
 
-def _is_passive(model: Model) -> bool:
+def _resolved(s: np.ndarray, method: str, highest: float) -> np.ndarray:
+    """Which roots ``s`` the check's basis resolves: all of a full check's; a passive check's up
+    to the highest frequency of its modes (above it, its static corrections' Ritz roots)."""
+    if method != "passive":
+        return np.ones(s.size, bool)
+    return np.abs(s) <= highest * (1 + 1e-9)
+
+
+def _is_passive(modes: ReducedModel) -> bool:
     """Whether every actuator law is collocated, without states, with non-negative stiffness
     and damping (:attr:`~flexshaft.analyses.eigen.ReducedModel.may_diverge` False).
 
@@ -445,11 +465,11 @@ def _is_passive(model: Model) -> bool:
     imaginary stiffness i(F + K_lat) of a positive semi-definite K'', which dissipates energy in
     every harmonic motion. Only the roots below the spin can turn unstable (the rotating loss
     turns circulatory there). Any Galerkin projection keeps these properties, so the argument
-    holds on every basis."""
-    return not reduce(model, min(model.dofs.free.size, default_basis_size(10))).may_diverge
+    holds on every basis: ``modes`` is the model's modal basis of the modal analyses' size."""
+    return not modes.may_diverge
 
 
-def _passive_bases(model: Model, top_speed: float) -> list[tuple[int, int]]:
+def _passive_bases(model: Model, modes: ReducedModel, top_speed: float) -> list[tuple[int, int]]:
     """The (modes, enriched modes) bases the passive check tries, in order (module docstring).
 
     The first: twice as many modes as lie below the top speed (at least 16; :func:`accurate_basis
@@ -462,7 +482,6 @@ def _passive_bases(model: Model, top_speed: float) -> list[tuple[int, int]]:
     correction: the full model's roots) when the model has no more free DOFs than that; the
     last basis's estimate is reported whatever it is."""
     n_free = int(model.dofs.free.size)
-    modes = reduce(model, min(n_free, default_basis_size(10)))
     below = int(np.sum(np.sqrt(np.clip(modes.w2, 0.0, None)) < max(top_speed, 1.0)))
     size, enrich = accurate_basis(below)
     largest = 4 * max(4 * below, 60)
@@ -482,7 +501,7 @@ def _judged(s: np.ndarray, speed: float) -> np.ndarray:
 
 
 def _passive_roots(
-    model: Model, speeds: np.ndarray, tolerance: float
+    model: Model, modes: ReducedModel, speeds: np.ndarray, tolerance: float
 ) -> tuple[ReducedModel, dict[float, np.ndarray], float, float]:
     """The passive check's basis and roots: every loss-consistent root at each speed on the
     first basis of :func:`_passive_bases` whose roots below the spin are within ``tolerance``
@@ -492,7 +511,7 @@ def _passive_roots(
     The speeds are solved from the highest down (the most roots below the spin), so a basis
     that fails is left at its first failing speed."""
     n_free = int(model.dofs.free.size)
-    bases = _passive_bases(model, float(speeds.max()))
+    bases = _passive_bases(model, modes, float(speeds.max()))
     order = sorted({float(v) for v in speeds}, reverse=True)
     for k, (size, enrich) in enumerate(bases):
         last = k == len(bases) - 1

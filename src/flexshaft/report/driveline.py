@@ -362,12 +362,7 @@ def write_run_report(
     plan = plan_run_report(a, folder, design_text, design_source, thesis)
     if not figures:
         plan = without_figures(plan)
-    if not plan.jobs:
-
-        def figures_done():
-            return None
-
-    elif executor is not None:
+    if executor is not None:
         figures_done = start_figures(plan.jobs, folder, executor, svg=svg)
     else:
 

@@ -202,7 +202,7 @@ def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:
         "method": roots.method,
         "speeds_rpm": rad_s_to_rpm(roots.speeds).tolist(),
         "least_damping_ratio": roots.least_damping_ratio.tolist(),
-        "unstable_roots": [sum(r.speed == v for r in roots.unstable) for v in roots.speeds],
+        "unstable_roots": roots.unstable_counts.tolist(),
         "basis_size": roots.basis_size,
         "estimated_relative_error": roots.error_estimate,
         "tolerance": roots.tolerance,

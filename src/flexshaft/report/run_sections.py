@@ -281,8 +281,8 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
             f"Every root of the closed loop ({roots.coverage()})",
             ["speed [rpm]", "roots", "least damping ratio ζ", "unstable roots"],
             [
-                [rad_s_to_rpm(v), int(n), float(z), sum(r.speed == v for r in roots.unstable)]
-                for v, n, z in zip(roots.speeds, roots.n_roots, roots.least_damping_ratio)
+                [rad_s_to_rpm(v), int(n), float(z), int(u)]
+                for v, n, z, u in zip(roots.speeds, roots.n_roots, roots.least_damping_ratio, roots.unstable_counts)
             ],
         )
     )

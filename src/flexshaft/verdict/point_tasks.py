@@ -155,7 +155,5 @@ def _roots_and_loops(
     roots = root_stability(model, root_speeds(model))
     if not model.actuators:
         return roots, None
-    poles = roots.roots_at(model.speed)
-    if roots.method == "passive":
-        poles = poles[np.abs(poles) <= roots.highest_frequency]
+    poles = roots.resolved_roots_at(model.speed)
     return roots, bearing_loops(model, poles=poles, peak_samples=resolution.loop_peak_samples)
