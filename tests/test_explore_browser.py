@@ -233,10 +233,12 @@ def test_the_explorer_in_a_browser(explorer, browser, tmp_path):
     assert _verdict(page) == verdict
     assert page.input_value("[id='ctl-bearings[1].kp']") == "200000"
 
-    # flexshaft run --strict on the downloaded file: the same verdict, check by check
+    # flexshaft run --strict on the downloaded file: the same verdict, check by check; its
+    # interactive figures are what this test opens (the PNGs are the quick start's, test_run.py:
+    # --no-figures, CPU budget, issue 23)
     run = subprocess.run(
         [sys.executable, "-c", _FLEXSHAFT, "run", str(saved), "--strict", "--studies", "none", "--interactive"]
-        + ["--json", "--out", str(tmp_path / "report")],
+        + ["--no-figures", "--json", "--out", str(tmp_path / "report")],
         capture_output=True,
         text=True,
         env=_environment(),
