@@ -70,7 +70,7 @@ def test_thesis_baseline(tmp_path):
     assert figure.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and figure.stat().st_size > 10_000
 
 
-@pytest.mark.slow(reason="two variants judged at each of the tuned design's four envelope points, the verdict's resolution (~6 s of CPU)")
+@pytest.mark.slow(reason="two variants judged at each of the tuned design's four envelope points (~6 s of CPU)")
 def test_custom_fmc_design(tmp_path):
     out = run_example("custom_fmc_design", tmp_path / "out")
     rows = [line for line in out.splitlines() if line.strip().startswith("(60/-60/60/-60/0/0)s")]
