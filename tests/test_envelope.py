@@ -141,6 +141,28 @@ def test_standard_day_is_in_the_boom_hover_air(design):
     assert conditions.ambient_temperature == celsius_to_kelvin(15.0)
 
 
+def test_a_night_point_without_sun_leaves_the_boom_at_the_ambient(design):
+    """A point with no sun (``solar_fraction = 0``) under a sky at the air's temperature: the
+    boom, parked or hovering, takes no net heat from convection or radiation at T = T_ambient (the
+    heat balance h A (T − T_a) + ε σ A (T⁴ − T_sky⁴) = α q_sun A_p vanishes there with q_sun = 0
+    and T_sky = T_a), so both skin temperatures are the ambient, to the root finder's tolerance
+    (1e-6 K asserted; the design's sun parks it some 70 K above). The same point with the design's
+    sun (``solar_fraction`` left to [thermal]) is hotter: the point's fraction must reach it."""
+    ambient = design.thermal.ambient_temperature_c
+    night = EnvelopePoint(
+        name="night",
+        ambient_temperature_c=ambient,
+        sky_temperature_c=ambient,
+        solar_fraction=0.0,
+        material_temperature="parked",
+    )
+    conditions = point_conditions(design, night)
+    for condition, temperature in conditions.boom_temperatures.items():
+        assert temperature == pytest.approx(celsius_to_kelvin(ambient), abs=1e-6), condition
+    sunny = point_conditions(design, night.model_copy(update={"solar_fraction": None}))
+    assert sunny.boom_temperatures["parked"] > conditions.boom_temperatures["parked"] + 10.0
+
+
 def test_moved_reference_describes_the_same_curves(design):
     """From the point design (keys at T_m, reference at T_m) the lamina at any other temperature
     is the base design's lamina there: moving the reference does not move the curves (rel 1e-12)."""
