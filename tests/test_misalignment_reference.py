@@ -8,8 +8,9 @@ component angles add as a vector, α = √(Δβ² + Δγ²) = |P| ξ b/(L k).
 
 A forward circular whirl of that bend (the force F (1, −i) of a rotating load, the convention of
 :mod:`flexshaft.assembly.loads`) sweeps the same angle around a circle: the largest whirling
-angle, the ellipse's major semi-axis, is M/k again. The Hermite beam is exact for statics of
-point loads at nodes: tolerance 1e-8 (the hinge's round-off, as in tests/test_segments.py).
+angle, the ellipse's major semi-axis, is M/k again; of several imbalance cases, the worst
+one's. The Hermite beam is exact for statics of point loads at nodes: tolerance 1e-8 (the
+hinge's round-off, as in tests/test_segments.py).
 """
 
 from __future__ import annotations
@@ -84,3 +85,11 @@ def test_a_circular_whirl_sweeps_the_static_angle_of_its_amplitude(hinged):
     result = coupling_misalignment(hinged, np.zeros(hinged.dofs.size), _response(hinged, F, -1j * F))
     assert result.dynamic_angle[0] == pytest.approx(F * XI * B / ((A + B) * K), rel=1e-8)
     assert result.static_angle[0] == 0.0
+
+
+def test_the_whirling_angle_is_the_worst_imbalance_cases(hinged):
+    """Two imbalance cases as the columns of the response at speed (forward whirls of 20 N and
+    50 N, the larger second): the largest whirling angle is the worse case's, 50 ξ b/(L k)."""
+    whirls = np.column_stack([_response(hinged, F, -1j * F) for F in (20.0, 50.0)])
+    result = coupling_misalignment(hinged, np.zeros(hinged.dofs.size), whirls)
+    assert result.dynamic_angle[0] == pytest.approx(50.0 * XI * B / ((A + B) * K), rel=1e-8)
