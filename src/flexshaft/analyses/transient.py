@@ -278,7 +278,8 @@ def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) ->
     for a in model.actuators:
         d = a.lateral_rows @ q
         disp.append(orbit_amplitude(d[0], d[1]))
-        force.append(np.abs(a.controller(1j * speeds)) * disp[-1])
+        f = a.carried_force(q, 1j * speeds)  # G(iΩ) d_s − k_s d_a
+        force.append(orbit_amplitude(f[0], f[1]))
     empty = np.zeros((0, speeds.size))
     return SteadyEnvelope(speeds, shaft, np.array(disp) if disp else empty, np.array(force) if force else empty)
 
@@ -288,25 +289,39 @@ def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) ->
 
 def _actuator_outputs(model: Model, red: ReducedModel) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """Per actuator: (2, n) maps of the state envelope to its relative displacement and its
-    force, and its (2, n_free) rows for the residual displacement."""
+    force, and its (2, n_free) rows for the residual displacement.
+
+    The force is the bearing's whole collocated law ``G(s) − k_s = k_i A(s) C(s) − k_s``
+    (:attr:`~flexshaft.assembly.model.Actuator.collocated_law`, realised as the reduced
+    model's channel ``E s + D + C (sI − A)⁻¹ B``): its feedthrough D on the displacement, its
+    ideal-derivative part E on the velocity, its states through C. (It used to be the
+    controller C(s) alone for a PD law: the current demand, without k_i, k_s and the
+    amplifier lag, and for a law with states without E.)"""
     nb, n = red.size, red.n_states
     out = []
     start = 2 * nb
     for act, states in zip(model.actuators, red.actuators):
         D = np.zeros((2, n))
         D[:, :nb] = states.rows
-        law = act.controller
         F = np.zeros((2, n))
         m = states.A.shape[0]
-        if law.is_pd:
-            F[:, :nb] = law.kp * states.rows
-            F[:, nb : 2 * nb] = law.kd * states.rows
-        else:
-            F[:, :nb] = (states.stiffness + states.basis_stiffness) * states.rows
-            F[:, start : start + m] = states.C
+        F[:, :nb] = _law_stiffness(states) * states.rows
+        F[:, nb : 2 * nb] = _law_damping(states) * states.rows
+        F[:, start : start + m] = states.C
         start += m
         out.append((D, F, act.lateral_rows.tocsr()[:, model.dofs.free].toarray()))
     return out
+
+
+def _law_stiffness(states) -> float:
+    """Feedthrough D of an actuator channel's law [N/m] (the part in the basis included)."""
+    return states.stiffness + states.basis_stiffness
+
+
+def _law_damping(states) -> float:
+    """Ideal-derivative part E of an actuator channel's law [N s/m] (the part in the
+    projected damping included)."""
+    return states.damping + states.damping_in_basis
 
 
 def residual_flexibility(model: Model, red: ReducedModel, loads_per_speed_squared: np.ndarray) -> np.ndarray | None:
@@ -369,7 +384,7 @@ def transient_response(
         Add the quasi-static response of the modes left out of the basis
         (:func:`residual_flexibility` times ``Ω² − iΩ̇``) to every output: the modal
         truncation error of the bearing relative displacements drops from ~10 % to ~0.1 % at
-        16-32 modes on the baseline. The actuators see it through ``C(iΩ)`` (quasi-static).
+        16-32 modes on the baseline. The actuators see it through their law ``G(iΩ) − k_s`` (quasi-static).
     """
 
     check_model(model)
@@ -458,16 +473,15 @@ def transient_response(
     shaft = orbit_amplitude(*shaft_rows)
     act_disp: list[np.ndarray] = []
     act_force: list[np.ndarray] = []
-    for (D, F, B), act in zip(_actuator_outputs(model, red), model.actuators):
+    for (D, F, B), act, states in zip(_actuator_outputs(model, red), model.actuators, red.actuators):
         d, f = D @ Z, F @ Z
         if residual is not None:
             d_res = (B @ residual)[:, None]
             d = d + d_res * force_scale
-            law = act.controller
-            if law.is_pd:
-                f = f + d_res * (law.kp * force_scale + law.kd * force_rate)
+            if not states.A.size:  # a law without states (PD): D d + E ḋ of the quasi-static part
+                f = f + d_res * (_law_stiffness(states) * force_scale + _law_damping(states) * force_rate)
             else:
-                f = f + d_res * (np.asarray(law(1j * speed)) * force_scale)
+                f = f + d_res * (np.asarray(act.law(1j * speed)) * force_scale)
         act_disp.append(d)
         act_force.append(f)
     n_act = len(act_disp)
