@@ -9,6 +9,12 @@ References (derived here):
   the magnet carries |Z_b| times it; a run started in that steady state reports it at t = 0,
   and so does the steady envelope. Tolerance 1e-4: the tube's mass (7e-6 of the disk's) and the
   run's steady start on a 4-mode basis with its static correction (no truncation at the disk);
+* a sensor 0.1 m from the magnet (at x = 0.6 m): every force on the near-massless tube acts at
+  its middle, so it keeps the static shape of a central load on a pinned-pinned beam,
+  y(x) ∝ x (3L² − 4x²) for x ≤ L/2 (Euler-Bernoulli; symmetric), and the sensor reads
+  ρ = y(0.4)/y(0.5) = 0.944 of the magnet's stroke. The bearing carries G ρ d − k_s d, so the
+  disk's orbit is U Ω² / |k + ρG − k_s − mΩ²| and the force |ρG − k_s| times it; the sensor's
+  channel must be counted (without it the force was k_s d alone). Tolerance 1e-4 as above;
 * during a fast run-up from rest: the carried force of a PD magnet is by definition
   (k_i K_p − k_s) d(t) + k_i K_d ḋ(t) for the displacement d(t) the run reports at the magnet
   (here off the disk, on a heavy tube with a 2-mode basis, so that the static correction of the
@@ -41,6 +47,22 @@ def test_steady_start_force_is_the_magnet_law_times_the_orbit():
     assert run.actuator_force[0, 0] == pytest.approx(abs(active_law(speed)) * orbit, rel=1e-4)
     steady = steady_state_envelope(model, [speed], q1)
     assert steady.actuator_force[0, 0] == pytest.approx(abs(active_law(speed)) * orbit, rel=1e-4)
+
+
+def test_steady_start_force_of_a_non_collocated_sensor():
+    model = model_with(ACTIVE + "\nsensor_offset = 0.1")
+    speed = 150.0
+    q1 = imbalance_vector(model)
+    run = transient_response(
+        model, SpeedProfile.constant_acceleration(speed, speed + 1.0, 10.0), loads_per_speed_squared=q1, basis_size=4
+    )
+    ratio = 0.4 * (3.0 - 4 * 0.4**2) / (0.5 * (3.0 - 4 * 0.5**2))  # y(0.6)/y(0.5), L = 1
+    law = ratio * (active_law(speed) + KS) - KS  # ρ G − k_s
+    orbit = U * speed**2 / abs(K_SHAFT - M_DISK * speed**2 + law)
+    assert run.actuator_displacement[0, 0] == pytest.approx(orbit, rel=1e-4)
+    assert run.actuator_force[0, 0] == pytest.approx(abs(law) * orbit, rel=1e-4)
+    steady = steady_state_envelope(model, [speed], q1)
+    assert steady.actuator_force[0, 0] == pytest.approx(abs(law) * orbit, rel=1e-4)
 
 
 KD_RUN = 50.0  # A s/m: k_i K_d = 5000 N s/m, so that the derivative force matters
