@@ -278,7 +278,8 @@ def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) ->
     for a in model.actuators:
         d = a.lateral_rows @ q
         disp.append(orbit_amplitude(d[0], d[1]))
-        force.append(np.abs(a.controller(1j * speeds)) * disp[-1])
+        f = a.carried_force(q, 1j * speeds)  # G(iΩ) d_s − k_s d_a
+        force.append(orbit_amplitude(f[0], f[1]))
     empty = np.zeros((0, speeds.size))
     return SteadyEnvelope(speeds, shaft, np.array(disp) if disp else empty, np.array(force) if force else empty)
 
@@ -286,27 +287,67 @@ def steady_state_envelope(model: Model, speeds, loads_per_speed_squared=None) ->
 # ---------------------------------------------------------------------------------------------
 
 
-def _actuator_outputs(model: Model, red: ReducedModel) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-    """Per actuator: (2, n) maps of the state envelope to its relative displacement and its
-    force, and its (2, n_free) rows for the residual displacement."""
+@dataclass(frozen=True)
+class _ActuatorOutput:
+    """Maps of the state envelope to one active bearing's outputs (see :func:`_actuator_outputs`)."""
+
+    displacement: np.ndarray  # (2, n): relative displacement at the magnet
+    force: np.ndarray  # (2, n): carried force G d_s − k_s d_a
+    rows: np.ndarray  # (2, n_free): the magnet's rows B_a (the residual's displacement)
+    sensing: np.ndarray  # (2, n_free): the sensor's rows B_s (= B_a when collocated)
+    static_terms: tuple[tuple[float, float, np.ndarray], ...]  # per channel (D, E, measured rows)
+    has_states: bool  # a channel's law has states (then the residual force is quasi-static)
+
+
+def _actuator_outputs(model: Model, red: ReducedModel) -> list[_ActuatorOutput]:
+    """Per actuator: the maps of the state envelope to its relative displacement and to the
+    force it carries, with what the residual (static correction) needs.
+
+    The force is the bearing's whole law, ``G(s) d_s − k_s d_a`` with ``G = k_i A(s) C(s)``,
+    summed over the reduced model's channels of that bearing (each ``E s + D + C (sI − A)⁻¹ B``
+    on what it measures): one channel ``G − k_s`` on the magnet when the sensor is collocated,
+    else ``−k_s`` on the magnet and ``G`` on the sensor
+    (:func:`flexshaft.analyses.eigen.reduce`). Its feedthrough D acts on the displacement, its
+    ideal-derivative part E on the velocity, its states through C. (It used to be the
+    controller C(s) alone for a PD law: the current demand, without k_i, k_s and the amplifier
+    lag; without E for a law with states; and the sensor's channel was never counted, or
+    taken for the next bearing's.)"""
     nb, n = red.size, red.n_states
+    free = model.dofs.free
+    channels = iter(red.actuators)
     out = []
     start = 2 * nb
-    for act, states in zip(model.actuators, red.actuators):
+    for act in model.actuators:
         D = np.zeros((2, n))
-        D[:, :nb] = states.rows
-        law = act.controller
         F = np.zeros((2, n))
-        m = states.A.shape[0]
-        if law.is_pd:
-            F[:, :nb] = law.kp * states.rows
-            F[:, nb : 2 * nb] = law.kd * states.rows
-        else:
-            F[:, :nb] = (states.stiffness + states.basis_stiffness) * states.rows
+        rows = act.lateral_rows.tocsr()[:, free].toarray()
+        sensing = rows if act.collocated else act.sensing_rows.tocsr()[:, free].toarray()
+        terms = []
+        has_states = False
+        for measured in (rows,) if act.collocated else (rows, sensing):  # reduce()'s channel order
+            states = next(channels)
+            if measured is rows:
+                D[:, :nb] = states.rows
+            F[:, :nb] += _law_stiffness(states) * states.sensing
+            F[:, nb : 2 * nb] += _law_damping(states) * states.sensing
+            m = states.A.shape[0]
             F[:, start : start + m] = states.C
-        start += m
-        out.append((D, F, act.lateral_rows.tocsr()[:, model.dofs.free].toarray()))
+            start += m
+            has_states = has_states or m > 0
+            terms.append((_law_stiffness(states), _law_damping(states), measured))
+        out.append(_ActuatorOutput(D, F, rows, sensing, tuple(terms), has_states))
     return out
+
+
+def _law_stiffness(states) -> float:
+    """Feedthrough D of an actuator channel's law [N/m] (the part in the basis included)."""
+    return states.stiffness + states.basis_stiffness
+
+
+def _law_damping(states) -> float:
+    """Ideal-derivative part E of an actuator channel's law [N s/m] (the part in the
+    projected damping included)."""
+    return states.damping + states.damping_in_basis
 
 
 def residual_flexibility(model: Model, red: ReducedModel, loads_per_speed_squared: np.ndarray) -> np.ndarray | None:
@@ -369,7 +410,7 @@ def transient_response(
         Add the quasi-static response of the modes left out of the basis
         (:func:`residual_flexibility` times ``Ω² − iΩ̇``) to every output: the modal
         truncation error of the bearing relative displacements drops from ~10 % to ~0.1 % at
-        16-32 modes on the baseline. The actuators see it through ``C(iΩ)`` (quasi-static).
+        16-32 modes on the baseline. The actuators see it through their law ``G(iΩ) − k_s`` (quasi-static).
     """
 
     check_model(model)
@@ -458,16 +499,18 @@ def transient_response(
     shaft = orbit_amplitude(*shaft_rows)
     act_disp: list[np.ndarray] = []
     act_force: list[np.ndarray] = []
-    for (D, F, B), act in zip(_actuator_outputs(model, red), model.actuators):
-        d, f = D @ Z, F @ Z
+    for maps, act in zip(_actuator_outputs(model, red), model.actuators):
+        d, f = maps.displacement @ Z, maps.force @ Z
         if residual is not None:
-            d_res = (B @ residual)[:, None]
+            d_res = (maps.rows @ residual)[:, None]
             d = d + d_res * force_scale
-            law = act.controller
-            if law.is_pd:
-                f = f + d_res * (law.kp * force_scale + law.kd * force_rate)
-            else:
-                f = f + d_res * (np.asarray(law(1j * speed)) * force_scale)
+            if not maps.has_states:  # laws without states (PD): D d + E ḋ of the quasi-static part
+                for stiffness, damping, measured in maps.static_terms:
+                    f = f + (measured @ residual)[:, None] * (stiffness * force_scale + damping * force_rate)
+            else:  # G(iΩ) d_s − k_s d_a of the quasi-static part
+                sensed = (maps.sensing @ residual)[:, None]
+                gain = np.asarray(act.feedback_gain(1j * speed))
+                f = f + (gain * sensed - act.negative_stiffness * d_res) * force_scale
         act_disp.append(d)
         act_force.append(f)
     n_act = len(act_disp)
