@@ -9,12 +9,12 @@ each bearing's law applied to it, ``G_b(iΩ) d_s,b − k_s d_a,b`` with the bear
 that file): a run-up that starts in the steady state at Ω reports, at t = 0, the same
 displacement and force at each magnet. The two bearings have different gains and sensor
 offsets of opposite sense, so a channel taken for the other bearing's, or left out, changes
-the force by tens of per cent. Tolerance 1e-3, from the basis: with 4 modes and the static
-correction the two agree to 2.6e-3 (displacement) and 1.3e-3 (force), with 8 or 12 modes to
-2.3e-4 and 1.7e-4 at most (measured; the plateau is not derived here: the static correction of
-a law acting on a sensor off its magnet is quasi-static, transient_response's docstring). With
-16 modes the reduced model has a tube bending mode that the non-collocated PD laws drive
-unstable (growth 5.5e5 1/s on this near-massless tube; the run refuses it): 8 are used.
+the force by tens of per cent. Proportional laws (K_d = 0): with a derivative part, the
+non-collocated laws drive the near-massless tube's MHz bending modes unstable (spillover; the
+full model's largest growth rate 2.4e6 1/s at K_d = 2 and 1 A s/m), which the run refuses once
+its basis holds such a mode; the derivative part is the single-bearing file's. Tolerance 2e-4,
+from the basis: the run's steady start agrees with the full model to 2.4e-3 with 4 modes,
+2.2e-4 with 8 and 3.8e-5 with 16 (measured, displacement and force; 16 are used).
 """
 
 from __future__ import annotations
@@ -28,8 +28,8 @@ from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
 BEARINGS = [  # x [m], sensor offset [m], k_i [N/A], K_p [A/m], K_d [A s/m], k_s [N/m]
-    (0.3, 0.08, 100.0, 5.0e3, 2.0, 2.0e5),
-    (0.7, -0.06, 60.0, 9.0e3, 1.0, 1.0e5),
+    (0.3, 0.08, 100.0, 5.0e3, 0.0, 2.0e5),
+    (0.7, -0.06, 60.0, 9.0e3, 0.0, 1.0e5),
 ]
 
 
@@ -51,10 +51,10 @@ def test_each_bearing_carries_its_own_law_on_its_own_sensor():
     speed = 150.0  # rad/s
     q1 = imbalance_vector(model)
     run = transient_response(
-        model, SpeedProfile.constant_acceleration(speed, speed + 1.0, 10.0), loads_per_speed_squared=q1, basis_size=8
+        model, SpeedProfile.constant_acceleration(speed, speed + 1.0, 10.0), loads_per_speed_squared=q1, basis_size=16
     )
     steady = steady_state_envelope(model, [speed], q1)
     assert U > 0 and steady.actuator_force.shape == (2, 1)
     for k in range(2):
-        assert run.actuator_displacement[k, 0] == pytest.approx(steady.actuator_displacement[k, 0], rel=1e-3), k
-        assert run.actuator_force[k, 0] == pytest.approx(steady.actuator_force[k, 0], rel=1e-3), k
+        assert run.actuator_displacement[k, 0] == pytest.approx(steady.actuator_displacement[k, 0], rel=2e-4), k
+        assert run.actuator_force[k, 0] == pytest.approx(steady.actuator_force[k, 0], rel=2e-4), k
