@@ -112,8 +112,10 @@ class UnitResponses:
         (n_s, 2, n_nodes, n_st) complex64: shaft v and w per unit unbalance [m/(kg m)].
     actuator : ndarray
         (n_s, 2, n_act, n_st) complex64: lateral relative displacement at each active bearing.
-    actuator_gain : ndarray
-        |C(iΩ)| (n_s, n_act) [N/m].
+    actuator_force : ndarray
+        (n_s, 2, n_act, n_st) complex64: the force each active bearing carries, its whole law
+        ``G(iΩ) d_s − k_s d_a`` (:meth:`~flexshaft.assembly.model.Actuator.carried_force`) [N
+        per kg m]; linear in the imbalance like the displacement.
     operating : ndarray
         (ndof, n_st) complex response at the operating speed [m/(kg m)].
     static : ndarray
@@ -133,7 +135,7 @@ class UnitResponses:
     element_bay: np.ndarray
     shaft: np.ndarray
     actuator: np.ndarray
-    actuator_gain: np.ndarray
+    actuator_force: np.ndarray
     operating: np.ndarray
     static: np.ndarray
     actuator_names: tuple[str, ...]
@@ -291,14 +293,15 @@ def unit_responses(
     n_act = len(model.actuators)
     shaft = np.empty((speeds.size, 2, nodes.size, stations.size), np.complex64)
     actuator = np.empty((speeds.size, 2, n_act, stations.size), np.complex64)
+    carried = np.empty_like(actuator)
+    q = np.zeros((dm.size, stations.size), complex)
     for k, s in enumerate(speeds):
         x = solver.solve(s, rhs, s) * (s * s)
         shaft[k] = shaft_of(x)
-        for a, b in enumerate(B):
+        q[free] = x
+        for a, (act, b) in enumerate(zip(model.actuators, B)):
             actuator[k, :, a] = b @ x
-    gain = np.array([[abs(complex(a.controller(1j * s))) for a in model.actuators] for s in speeds]).reshape(
-        speeds.size, n_act
-    )
+            carried[k, :, a] = act.carried_force(q, 1j * s)  # G d_s − k_s d_a: the verdict's force
     operating = np.zeros((dm.size, stations.size), complex)
     operating[free] = solver.solve(model.speed, rhs, model.speed) * model.speed**2
     static, static_offset, static_force = actuator_static_state(model)
@@ -312,7 +315,7 @@ def unit_responses(
         element_bay=element_bay,
         shaft=shaft,
         actuator=actuator,
-        actuator_gain=gain,
+        actuator_force=carried,
         operating=operating,
         static=static,
         actuator_names=tuple(a.name for a in model.actuators),
@@ -437,7 +440,8 @@ def sample_outputs(
         if units.actuator_names:
             act = np.einsum("abcnj,nj->nabc", units.actuator[..., cols], w)  # (n, n_s, 2, n_act)
             orbit = orbit_amplitude(act[:, :, 0], act[:, :, 1])  # (n, n_s, n_act)
-            force = units.actuator_gain * orbit
+            carried = np.einsum("abcnj,nj->nabc", units.actuator_force[..., cols], w)
+            force = orbit_amplitude(carried[:, :, 0], carried[:, :, 1])  # the force's major semi-axis
             for a, name in enumerate(units.actuator_names):
                 out[f"actuator_orbit_{name}"][sl] = orbit[..., a].max(axis=1)
                 out[f"actuator_force_{name}"][sl] = force[..., a].max(axis=1)

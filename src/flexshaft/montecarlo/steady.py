@@ -21,7 +21,7 @@ critical (the baseline's 55-Hz forward mode meets almost no damping in synchrono
 half-power width ~4e-5 Ω) is not missed between grid points.
 
 Per sample: peak steady-state spin-up deflection over the shaft (and its speed), peak
-lateral relative orbit and force ``|C(iΩ)| × orbit`` at each active bearing (with the static
+lateral relative orbit and carried force ``G(iΩ) d_s − k_s d_a`` at each active bearing (with the static
 offset and force added, as the verdict's actuator checks do), and the ply Tsai-Wu safety factor
 at the operating speed (static loads and torque plus the sample's
 imbalance response, :func:`~flexshaft.analyses.shaft_strength.shaft_safety_factor`).
