@@ -277,7 +277,7 @@ def gain(
     from flexshaft.thesis.gain import proportional_gain_study
 
     client = dask_client(dask)  # checked and connected before anything is prepared
-    loaded, folder = _prepare(design, out, "gain", force, points=13, jobs=jobs, client=client)
+    loaded, folder = _prepare(design, out, "gain", force, points=13, jobs=jobs, client=client, check=_check_gain)
     ds = _sweep(proportional_gain_study, loaded, folder, jobs, client, as_json)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"K_p = {sig(float(ds.kp.values[i]), 3)} N/m")
@@ -374,6 +374,18 @@ def spinup_map(
     print_line(console, f"data: {folder / 'results.nc'}")
     for paths in figures.values():
         print_line(console, f"figure: {paths['png']}")
+
+
+def _check_gain(design) -> None:
+    """The K_p study varies the proportional gain of the active bearings with PD laws."""
+    from flexshaft.cli.common import fail
+    from flexshaft.thesis.gain import gain_paths
+
+    if not gain_paths(design):
+        fail(
+            'study gain: the design has no active bearing (kind = "active") with a proportional gain kp: '
+            "the study varies K_p of the active bearings (a bearing given by a controller transfer function has none)"
+        )
 
 
 def _check_spinup_map(design, n_gains: int, n_speeds: int) -> None:

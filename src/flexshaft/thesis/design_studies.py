@@ -36,7 +36,7 @@ from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
 from flexshaft.resolution import REPORT
 from flexshaft.sweep.study import SweepError
 from flexshaft.thesis.buckling_sweep import buckling_study
-from flexshaft.thesis.gain import proportional_gain_study
+from flexshaft.thesis.gain import gain_paths, proportional_gain_study
 from flexshaft.thesis.ply_angle import ply_angle_study
 from flexshaft.thesis.spinup_maps import spinup_studies
 from flexshaft.thesis.two_angles import best_pair, two_angle_study
@@ -277,10 +277,10 @@ def plan_design_studies(
         FORCED_WALLS,
         grid["forced_speeds"],
     )
-    if laminated and active and _both_actuators(design):
+    if laminated and active and gain_paths(design):
         task("gain", "study 4: proportional gain", _gain_task, design, grid["kp"], run)
     elif laminated:
-        notes.append("the K_p study needs the baseline's two active bearings (design bearings 1 and 2)")
+        notes.append("the K_p study needs active bearings with PD laws (kp); skipped")
     if laminated:
         task("buckling", "study 5: torsional buckling", _buckling_task, design, grid["walls"], run)
     if active:
@@ -380,11 +380,6 @@ def _spinup_task(design, grid, actuator_gap) -> dict:
 def _stability_row_task(design, grid, kp: float) -> dict:
     speeds = np.linspace(0.0, REPORT.whirl_top * max(design.operating.speed_rad_s, 1.0), grid["stab_speeds"])
     return {"stability_rows": [gain_stability_map(design, [kp], grid["stab_kd"], speeds, n_modes=8)]}
-
-
-def _both_actuators(design) -> bool:
-    kinds = [b.kind for b in design.bearings]
-    return len(kinds) > 2 and kinds[1] == "active" and kinds[2] == "active"
 
 
 def _f(value) -> float | None:
