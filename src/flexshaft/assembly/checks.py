@@ -36,6 +36,7 @@ import numpy as np
 from flexshaft.assembly.controller import Controller
 from flexshaft.design import DesignError, Problem
 from flexshaft.design.quantities import MAX_CONTROLLER_COEFFICIENT
+from flexshaft.elements import magnetic
 
 __all__ = [
     "MAX_CONTROLLER_POLE",
@@ -109,8 +110,8 @@ def check_bearing_stiffness(design, shaft) -> None:
                         )
                     )
         else:
-            current_gain = 1.0 if bearing.ki is None else bearing.ki
-            gains = {"kp": (bearing.kp or 0.0) * current_gain, "ks": bearing.ks or 0.0}
+            current_gain, negative_stiffness = _magnet_gains(bearing)
+            gains = {"kp": (bearing.kp or 0.0) * current_gain, "ks": negative_stiffness}
             labels = {"kp": " (k_i kp)", "ks": ""}
             law = None if bearing.controller is None else _realizable(bearing)
             if law is not None:  # its static gain is its support stiffness
@@ -126,6 +127,27 @@ def check_bearing_stiffness(design, shaft) -> None:
     if problems:
         elements = design.mesh.shaft_elements
         raise DesignError([Problem(p.path, p.message.replace("{elements}", str(elements))) for p in problems], _SOURCE)
+
+
+def _magnet_gains(bearing) -> tuple[float, float]:
+    """k_i [N/A] and k_s [N/m] the model builds an active bearing with: given (defaults 1 and 0)
+    or from its magnet geometry (:mod:`flexshaft.elements.magnetic`). Geometry gains outside the
+    ranges :func:`check_magnet` allows are left to it (it names the geometry): 1 and 0 here."""
+    if not getattr(bearing, "uses_magnet_geometry", False):  # (a bearing-like object may lack it)
+        return (1.0 if bearing.ki is None else float(bearing.ki)), (0.0 if bearing.ks is None else float(bearing.ks))
+    geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
+    try:
+        k_i, k_s = magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
+    except (ValueError, OverflowError, TypeError):
+        return 1.0, 0.0
+    if not (
+        np.isfinite(k_i)
+        and 0.0 < k_i <= _MAX_CURRENT_GAIN
+        and np.isfinite(k_s)
+        and 0.0 <= k_s <= _MAX_NEGATIVE_STIFFNESS
+    ):
+        return 1.0, 0.0
+    return float(k_i), float(k_s)
 
 
 def _realizable(bearing) -> Controller | None:
