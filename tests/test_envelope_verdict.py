@@ -321,3 +321,13 @@ def test_the_log_decrement_counts_the_lateral_vibration_modes_only():
     assert check.value == pytest.approx(m.log_decrements[worst], rel=1e-3)
     assert check.location["frequency"] == pytest.approx(abs(s[worst].imag), rel=1e-4)
     assert 54.0 < abs(s[worst].imag) / (2 * np.pi) < 55.0 and m.whirl[worst] == "forward"
+
+
+def test_the_governing_point_compares_margins_relative_to_their_limits():
+    """Checks of different units compare by margin over |limit| (the margins figure's measure):
+    Tsai-Wu 1.55 against 1.5 at "a" (margin 0.05, a thirtieth of the limit) and 372 K against
+    373.15 K at "b" (margin 1.15 K, a three-hundredth): "b" governs, although its margin's number
+    is larger (kelvin are not safety factors)."""
+    a = _point("a", safety_factor=1.55, safety_factor_location={"station": 1.0})
+    b = _point("b", max_temperature=372.0, allowable_temperature=373.15)
+    assert governing_point([a, b]) == "b" and governing_point([b, a]) == "b"
