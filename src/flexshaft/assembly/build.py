@@ -27,7 +27,13 @@ import functools
 import numpy as np
 import scipy.sparse as sp
 
-from flexshaft.assembly.checks import check_actuator_law, check_bearing_stiffness, check_finite_model, check_magnet
+from flexshaft.assembly.checks import (
+    check_actuator_law,
+    check_bearing_stiffness,
+    check_finite_model,
+    check_magnet,
+    magnet_gains,
+)
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, DofMap
 from flexshaft.assembly.drive import drive_extra_dofs, drive_terms, gearbox_holds_twist
 from flexshaft.assembly.mesh import design_mesh, design_stations, merge_tolerance, segment_mesh
@@ -248,18 +254,7 @@ def _actuator(design, dm: DofMap, bearing, link: BearingLink) -> Actuator:
     """The magnetic bearing of an active-bearing table (see :class:`~flexshaft.assembly.model.Actuator`)."""
     index = design.bearings.index(bearing)
     ctrl = Controller(*(tuple(float(c) for c in part) for part in bearing.transfer_function()))
-    if bearing.uses_magnet_geometry:
-        geometry = (
-            bearing.coil_turns,
-            bearing.pole_area,
-            bearing.bias_current,
-            bearing.air_gap,
-            bearing.pole_angle_rad,
-        )
-        k_i, k_s = magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
-    else:
-        k_i = 1.0 if bearing.ki is None else float(bearing.ki)
-        k_s = 0.0 if bearing.ks is None else float(bearing.ks)
+    k_i, k_s = magnet_gains(bearing)
     saturation = None
     if bearing.saturation_flux_density is not None:
         saturation = magnetic.saturation_force(

@@ -46,6 +46,7 @@ __all__ = [
     "check_finite_model",
     "check_magnet",
     "element_stiffness",
+    "magnet_gains",
 ]
 
 #: Largest support stiffness in units of one shaft element's stiffness (see the module docstring).
@@ -129,15 +130,21 @@ def check_bearing_stiffness(design, shaft) -> None:
         raise DesignError([Problem(p.path, p.message.replace("{elements}", str(elements))) for p in problems], _SOURCE)
 
 
-def _magnet_gains(bearing) -> tuple[float, float]:
-    """k_i [N/A] and k_s [N/m] the model builds an active bearing with: given (defaults 1 and 0)
-    or from its magnet geometry (:mod:`flexshaft.elements.magnetic`). Geometry gains outside the
-    ranges :func:`check_magnet` allows are left to it (it names the geometry): 1 and 0 here."""
+def magnet_gains(bearing) -> tuple[float, float]:
+    """k_i [N/A] and k_s [N/m] of an active bearing: given (defaults 1 and 0) or from its magnet
+    geometry (:mod:`flexshaft.elements.magnetic`): what the model is built with
+    (:func:`check_magnet` then holds them to their ranges)."""
     if not getattr(bearing, "uses_magnet_geometry", False):  # (a bearing-like object may lack it)
         return (1.0 if bearing.ki is None else float(bearing.ki)), (0.0 if bearing.ks is None else float(bearing.ks))
     geometry = (bearing.coil_turns, bearing.pole_area, bearing.bias_current, bearing.air_gap, bearing.pole_angle_rad)
+    return magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
+
+
+def _magnet_gains(bearing) -> tuple[float, float]:
+    """:func:`magnet_gains` for the support check; geometry gains outside the ranges
+    :func:`check_magnet` allows are left to it (it names the geometry): 1 and 0 here."""
     try:
-        k_i, k_s = magnetic.current_gain(*geometry), magnetic.force_slope(*geometry)
+        k_i, k_s = magnet_gains(bearing)
     except (ValueError, OverflowError, TypeError):
         return 1.0, 0.0
     if not (
