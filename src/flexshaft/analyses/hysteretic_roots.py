@@ -407,11 +407,16 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     lowest |s|: the modes every table numbers), refined by :func:`_polish`. Divergent roots
     (real s > 0, :func:`~flexshaft.analyses.eigen.spectrum`) are modes too: they are returned
     first, with Im s = 0 (ζ = −1) as computed from the loss-free state matrix (the hysteretic
-    loss is defined for harmonic motion only and cannot hold a static divergence).
+    loss is defined for harmonic motion only and cannot hold a static divergence). A model that
+    cannot diverge (:attr:`~flexshaft.analyses.eigen.ReducedModel.may_diverge` False: no real
+    root s > 0 exists) skips that solve.
     """
     out_s, out_y = consistent_roots(red, speed)
     wanted = lowest_modes(out_s, n_modes)
     out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
+    if not red.may_diverge:
+        order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
+        return out_s[order], out_y[:, order]
     _, _, Y_div, div = spectrum(red, speed)
     if div.size:
         out_s = np.concatenate([out_s, div.astype(complex)])
