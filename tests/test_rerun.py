@@ -8,11 +8,12 @@ It runs as a user would (subprocesses) in tests/test_run.py
 (``test_the_readme_loop_runs_without_force``), marked slow: it goes on from that module's quick
 start, the full run whose report the module checks (one run of the embedded design, not two),
 then two full runs of the baseline at its envelope points without the thesis studies (the
-folder's ownership does not depend on them), about 12 s of CPU: the rerun of ``run`` after an
+folder's ownership does not depend on them), about 10 s of CPU: the rerun of ``run`` after an
 edit, whose folder then holds the edited design's results (a 0.0035 m wall weighs 7/6 of the
 0.003 m one, within 3 %). The fast tests below check the same rules for the study commands on a
-coarse mesh, and that another design's folder is still refused with a message that tells the
-two designs apart.
+coarse mesh, that another design's folder is still refused with a message that tells the
+two designs apart, and that a rerun removes the folders of the earlier run (``studies/``) on the
+folder rules themselves.
 """
 
 from __future__ import annotations
@@ -89,3 +90,35 @@ def test_another_design_is_refused_and_told_apart(tmp_path: Path, monkeypatch) -
     assert "--force" in message
     forced = runner.invoke(app, ["study", "ply-angle", "b.toml", "--step", "30", "-o", "shared", "--force"])
     assert forced.exit_code == 0, forced.output
+
+
+def test_a_rerun_after_an_edit_removes_the_folders_the_earlier_run_wrote(tmp_path: Path) -> None:
+    """The rerun of an edited design removes every entry its earlier run wrote, folders with
+    their content (``flexshaft run``'s ``studies/``) as well as files, and keeps the user's own
+    files. On the folder rules themselves (:func:`~flexshaft.cli.output.prepare_output_folder`
+    and the marker it writes when the command ends), without computing the results: the
+    README's loop end to end (tests/test_run.py) runs without the thesis studies."""
+    from flexshaft.cli import common
+    from flexshaft.cli.output import prepare_output_folder
+    from flexshaft.design import loads_design
+
+    folder, source = tmp_path / "my-results", str(tmp_path / "my.toml")
+    first, edited = loads_design(SMALL), loads_design(WALL.sub("wall_thickness = 0.0035", SMALL, count=1))
+    mark = len(common._AT_END)
+    prepare_output_folder(folder, first, "run", source=source)
+    (folder / "studies" / "wall").mkdir(parents=True)
+    (folder / "studies" / "wall" / "wall.nc").write_bytes(b"results of the first design")
+    (folder / "report.html").write_text("first design", encoding="utf-8")
+    common._end_command(mark, True)  # the first run ends: its marker lists what it wrote
+    assert sorted(json.loads((folder / MARKER).read_text())["entries"]) == ["report.html", "studies"]
+    (folder / "notes.txt").write_text("the user's own file", encoding="utf-8")
+    mark = len(common._AT_END)
+    prepare_output_folder(folder, edited, "run", source=source)
+    common._end_command(mark, True)
+    assert sorted(p.name for p in folder.iterdir()) == sorted([MARKER, "notes.txt"])
+    # the same design again keeps its results (nothing to replace)
+    (folder / "report.html").write_text("edited design", encoding="utf-8")
+    mark = len(common._AT_END)
+    prepare_output_folder(folder, edited, "run", source=source)
+    common._end_command(mark, True)
+    assert (folder / "report.html").read_text(encoding="utf-8") == "edited design"
