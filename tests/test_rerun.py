@@ -7,13 +7,14 @@ run my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without 
 It runs as a user would (subprocesses) in tests/test_run.py
 (``test_the_readme_loop_runs_without_force``), marked slow: it goes on from that module's quick
 start, the full run whose report the module checks (one run of the embedded design, not two),
-then two full runs of the baseline at its envelope points without the thesis studies (the
-folder's ownership does not depend on them), about 10 s of CPU: the rerun of ``run`` after an
-edit, whose folder then holds the edited design's results (a 0.0035 m wall weighs 7/6 of the
-0.003 m one, within 3 %). The fast tests below check the same rules for the study commands on a
-coarse mesh, that another design's folder is still refused with a message that tells the
-two designs apart, and that a rerun removes the folders of the earlier run (``studies/``) on the
-folder rules themselves.
+then two full runs of the baseline at its envelope points, the first as the README types it
+(with the thesis studies), the rerun without them, about 16 s of CPU: the rerun of ``run``
+after an edit, whose folder then holds the edited design's results (a 0.0035 m wall weighs 7/6
+of the 0.003 m one, within 3 %) and no longer the first run's ``studies/``. The fast tests
+below check the same rules for the study commands on a coarse mesh, that another design's
+folder is still refused with a message that tells the two designs apart, and that a rerun
+removes the files and folders of the earlier run and keeps the user's, on the folder rules
+themselves.
 """
 
 from __future__ import annotations
@@ -96,8 +97,8 @@ def test_a_rerun_after_an_edit_removes_the_folders_the_earlier_run_wrote(tmp_pat
     """The rerun of an edited design removes every entry its earlier run wrote, folders with
     their content (``flexshaft run``'s ``studies/``) as well as files, and keeps the user's own
     files. On the folder rules themselves (:func:`~flexshaft.cli.output.prepare_output_folder`
-    and the marker it writes when the command ends), without computing the results: the
-    README's loop end to end (tests/test_run.py) runs without the thesis studies."""
+    and the marker it writes when the command ends), without computing the results; the
+    README's loop end to end is tests/test_run.py's."""
     from flexshaft.cli import common
     from flexshaft.cli.output import prepare_output_folder
     from flexshaft.design import loads_design

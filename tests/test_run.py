@@ -192,19 +192,18 @@ def _edit_wall(path: Path, wall: float) -> None:
     path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
 
 
-@pytest.mark.slow  # two `flexshaft run`s of the baseline (three envelope points each), one drawing figures: ~10 s
+@pytest.mark.slow  # two full `flexshaft run`s of the baseline (three envelope points), one with the studies: ~20 s
 def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None:
     """Issue 28's bar (tests/test_rerun.py): from a fresh folder, the README's quick start
     (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture),
     then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
     my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
     folder (the fixture's is shared), as a user would (subprocesses, the whole design with its
-    envelope at the report's resolution). The runs of ``my.toml`` leave out the thesis studies
-    (``--studies none``: 5.4 s of CPU that the folder's ownership does not depend on, CPU
-    budget, issue 23; the quick start has them, and the removal of an earlier run's
-    ``studies/`` folder is tests/test_rerun.py's
-    ``test_a_rerun_after_an_edit_removes_the_folders_the_earlier_run_wrote``); the first run
-    draws the figures, the rerun does not (``--no-figures``), and must remove the first run's:
+    envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
+    has it (with the thesis studies), so the rerun after the edit meets a folder holding the
+    studies' files as a user's does, and must replace them (the first run's ``studies/`` folder
+    goes); the rerun skips them and the figures (``--studies none --no-figures``, CPU budget,
+    issue 23: about 10 s of CPU), and must remove the first run's figures too:
     what it checks is the output folder's ownership (its marker: the command, the design's
     source and fingerprint, whether it is complete) and that the edited design's results
     replace the first run's.
@@ -213,9 +212,9 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
     with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
         assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none")
+    first = _flexshaft(tmp_path, "run", "my.toml")
     assert first.returncode == 0, first.stderr
-    assert list((tmp_path / "my-results").glob("*.png"))
+    assert (tmp_path / "my-results" / "studies").is_dir() and list((tmp_path / "my-results").glob("*.png"))
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
     assert WALL.search((tmp_path / "my.toml").read_text(encoding="utf-8")).group() == "wall_thickness = 0.003"
@@ -223,7 +222,8 @@ def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None
     second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none", "--no-figures")
     assert second.returncode == 0, second.stderr
     assert "--force" not in second.stderr
-    # the first run's figures (of the design before the edit) do not linger
+    # the first run's studies and figures (of the design before the edit) do not linger
+    assert not (tmp_path / "my-results" / "studies").exists()
     assert not list((tmp_path / "my-results").glob("*.png"))
     # the folder holds the edited design's results: a 0.0035 m wall instead of 0.003 m weighs
     # 7/6 as much (the tube's mass is proportional to its wall at a fixed outer diameter, up to
