@@ -14,7 +14,7 @@ import math
 import pytest
 from pydantic import TypeAdapter, ValidationError
 
-from flexshaft.design.quantities import Density, Eccentricity, Inertia, Mass, Modulus
+from flexshaft.design.quantities import Density, Eccentricity, Inertia, Mass, Modulus, Power
 
 
 def _accepts(kind, value) -> bool:
@@ -29,6 +29,13 @@ def test_masses_inertias_and_densities_are_not_negative():
     assert _accepts(Mass, 0.0) and not _accepts(Mass, -1.0)
     assert _accepts(Inertia, 0.0) and not _accepts(Inertia, -1e-3)
     assert not _accepts(Density, -1.0)
+
+
+def test_the_transmitted_power_is_not_negative():
+    """The tail rotor absorbs power (P ≥ 0, docs/limits.md): a negative power would reverse the
+    steady torque P/Ω the strength and buckling checks carry."""
+    assert _accepts(Power, 0.0) and _accepts(Power, 5e5)
+    assert not _accepts(Power, -1.0)
 
 
 def test_zero_density_is_refused_but_the_massless_idealisation_is_not():
