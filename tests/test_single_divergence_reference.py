@@ -52,6 +52,8 @@ def test_the_every_root_check_reports_the_divergence_as_least_damped_at_zeta_min
     result = root_stability(model, [0.0, 100.0])
     assert result.least_damped == pytest.approx([RATE, RATE], rel=1e-4)
     assert list(result.least_damping_ratio) == [-1.0, -1.0]
-    assert [r.kind for r in result.unstable] == ["divergence", "divergence"]
-    assert all(r.damping_ratio == -1.0 for r in result.unstable)
+    divergences = [r for r in result.unstable if r.kind == "divergence"]
+    assert [r.speed for r in divergences] == [0.0, 100.0]
+    assert [r.root for r in divergences] == pytest.approx([RATE, RATE], rel=1e-4)
+    assert all(r.damping_ratio == -1.0 for r in divergences)
     assert result.onset_speed == 0.0
