@@ -514,4 +514,9 @@ def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple
                 out.append(
                     CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[j, m]))
                 )
+            # a curve on the line at a sample speed (g = 0 there: no sign change on either side);
+            # at rest g = 0 is a divergent root (Im s = 0), no resonance
+            for i in np.flatnonzero((g == 0) & (speeds > 0)):
+                if kind is None or kind[i, m] == "lateral":
+                    out.append(CriticalSpeed(float(speeds[i]), m, float(h), str(whirl[i, m])))
     return tuple(sorted(out, key=lambda c: c.speed))
