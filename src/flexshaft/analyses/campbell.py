@@ -56,6 +56,7 @@ __all__ = [
     "check_speeds",
     "default_basis_size",
     "mac",
+    "rest_degenerate",
     "track_modes",
 ]
 
@@ -233,7 +234,7 @@ def track_modes(
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
     states: list[np.ndarray] = []
     kinds, whirls, ratios, comps = [], [], [], []
-    degenerate = None
+    degenerate: np.ndarray | None = None
     prev = None
     for k, speed in enumerate(speeds):
         if k == 0 and start is not None:
@@ -354,7 +355,7 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
             f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
             "ask for fewer modes or a larger basis (a finer mesh has more modes)"
         )
-    untracked = None
+    untracked: tuple[np.ndarray, np.ndarray] | None = None
     if prev is None:
         idx = lowest_modes(lam, n_modes)
         rest = np.setdiff1d(np.arange(lam.size), idx)
