@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.classify import ModalLabeler
+from flexshaft.analyses.classify import ModalLabeler, degenerate_groups
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton
 from flexshaft.analyses.eigen_error import (
@@ -56,6 +56,7 @@ __all__ = [
     "check_speeds",
     "default_basis_size",
     "mac",
+    "rest_degenerate",
     "track_modes",
 ]
 
@@ -172,6 +173,9 @@ class TrackedModes:
     whirl: np.ndarray
     whirl_ratios: np.ndarray
     component: np.ndarray
+    #: (n_modes,) bool, at a first speed of rest only: the mode shares its eigenvalue with
+    #: another root, tracked or not (:func:`rest_degenerate`); None at a first speed above rest.
+    degenerate: np.ndarray | None = None
 
 
 #: Smallest MAC between a mode's shapes at neighbouring speeds that continuation accepts.
@@ -211,6 +215,13 @@ def track_modes(
     ``start``: this call's curves at ``speeds[0]`` alone, tracked already (on ``red`` with the
     same options): its first speed is taken as it is and the tracking continues from it, with
     the same result as tracking from scratch (each speed is reached from the earlier ones only).
+
+    Labels at rest (``speeds[0] == 0`` with later speeds). A mode at rest that shares its
+    eigenvalue with another root (:func:`rest_degenerate`: the two whirls of an axisymmetric
+    mode without gyroscopic coupling) may whirl either way; it takes the whirl ratio and label
+    of its continuation at ``speeds[1]``, where the spin has split the pair. A mode alone at its
+    eigenvalue (anisotropic supports: the two bending planes are uncoupled at rest) keeps its
+    own, planar, as :func:`~flexshaft.analyses.modal.modes` labels it at rest.
     """
     speeds = np.asarray(speeds, dtype=float)
     hysteretic = refine_loss and viscous is None
@@ -223,6 +234,7 @@ def track_modes(
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
     states: list[np.ndarray] = []
     kinds, whirls, ratios, comps = [], [], [], []
+    degenerate: np.ndarray | None = None
     prev = None
     for k, speed in enumerate(speeds):
         if k == 0 and start is not None:
@@ -233,16 +245,20 @@ def track_modes(
             whirls.append(start.whirl[0])
             ratios.append(start.whirl_ratios[0])
             comps.append(start.component[0])
+            degenerate = start.degenerate
             continue
         step = None
         if (refine_loss or viscous is not None) and k >= 1:
             step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))
+        untracked = None
         if step is None:
-            step = _match(red, solve, speed, prev, n_modes, hysteretic)
+            step, untracked = _match(red, solve, speed, prev, n_modes, hysteretic)
         s_k, Y_k = step
         if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
             first = np.lexsort((np.abs(s_k), s_k.imag))
             s_k, Y_k = s_k[first], Y_k[:, first]
+            if speed == 0.0:
+                degenerate = rest_degenerate(red, s_k, untracked, hysteretic)
         Y_k = labeler.circular(s_k, Y_k)  # a degenerate pair by whirl, not by round-off
         prev = (s_k, Y_k)
         eig[k] = s_k
@@ -253,10 +269,53 @@ def track_modes(
         ratios.append(labels.whirl_ratio)
         comps.append(labels.component)
     kind, whirl, ratio = np.array(kinds), np.array(whirls), np.array(ratios)
-    if speeds.size > 1 and speeds[0] == 0.0:
-        # at rest the forward/backward pairs are degenerate: label them by their continuation
-        ratio[0], whirl[0] = ratio[1], np.where(kind[0] == "lateral", whirl[1], whirl[0])
-    return TrackedModes(speeds, eig, states, kind, whirl, ratio, np.array(comps))
+    if speeds.size > 1 and speeds[0] == 0.0 and degenerate is not None:
+        # a degenerate pair at rest may whirl either way: labelled by its continuation
+        ratio[0] = np.where(degenerate, ratio[1], ratio[0])
+        whirl[0] = np.where(degenerate & (kind[0] == "lateral"), whirl[1], whirl[0])
+    return TrackedModes(speeds, eig, states, kind, whirl, ratio, np.array(comps), degenerate)
+
+
+#: Relative distance within which an untracked root at rest is refined to be compared with a
+#: lone tracked mode by :data:`~flexshaft.analyses.classify.DEGENERATE` (a dense eigen-solve's
+#: root is far more accurate than this; the refinement is skipped for every other root).
+_NEIGHBOUR_WINDOW = 1e-4
+
+
+def rest_degenerate(red: ReducedModel, s: np.ndarray, untracked, hysteretic: bool) -> np.ndarray:
+    """Which tracked modes at rest (eigenvalues ``s``) share their eigenvalue with another root.
+
+    The criterion of :func:`~flexshaft.analyses.classify.circular_pairs`: a group of eigenvalues
+    within :data:`~flexshaft.analyses.classify.DEGENERATE` of each other, among the tracked modes
+    and the untracked roots of the same solve (``untracked``: ``(s, Y)`` of the roots not
+    tracked, or None). The untracked ones count because ``n_modes`` may cut a degenerate pair:
+    its tracked member is then the eigen-solver's arbitrary combination of the two whirls, whose
+    own label is round-off. Only the untracked roots within :data:`_NEIGHBOUR_WINDOW` of a lone
+    tracked mode are compared, refined as the tracked ones were (with the hysteretic loss by
+    :func:`~flexshaft.analyses.hysteretic_roots.mode_root`).
+    """
+    s = np.asarray(s)
+    paired = np.zeros(s.size, dtype=bool)
+    for group in degenerate_groups(s):
+        paired[group] = True
+    if untracked is None or paired.all():
+        return paired
+    lam, Y = untracked
+    near = np.flatnonzero(
+        np.any(np.abs(lam[:, None] - s[None, ~paired]) <= _NEIGHBOUR_WINDOW * np.abs(s[None, ~paired]), axis=1)
+    )
+    if near.size == 0:
+        return paired
+    others = lam[near].copy()
+    if hysteretic:
+        for i, j in enumerate(near):
+            root, _, found = mode_root(red, 0.0, lam[j], Y[:, j])
+            if found:
+                others[i] = root
+    every = np.concatenate([s, others])
+    for group in degenerate_groups(every):
+        paired[group[group < s.size]] = True
+    return paired
 
 
 def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
@@ -288,15 +347,19 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
     """All eigenvalues at ``speed`` matched to the previous curves. With the hysteretic loss
     each matched root is then polished by Newton's method on its mode's branches, the least
     stable of its consistent roots where a fold near the synchronous line has two
-    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`)."""
+    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`). Returns ``((s, Y), untracked)``:
+    without previous curves also the roots not taken, ``(s, Y)`` unpolished (else None)."""
     lam, Y = solve(speed)
     if lam.size < n_modes:  # the model has fewer modes than asked for: the request's limit, not a fault
         raise RefusedInputError(
             f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
             "ask for fewer modes or a larger basis (a finer mesh has more modes)"
         )
+    untracked: tuple[np.ndarray, np.ndarray] | None = None
     if prev is None:
         idx = lowest_modes(lam, n_modes)
+        rest = np.setdiff1d(np.arange(lam.size), idx)
+        untracked = (lam[rest], Y[:, rest])
     else:
         lam_prev, Y_prev = prev
         scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
@@ -308,7 +371,7 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
             root, vec, found = mode_root(red, speed, s_k[m], Y_k[:, m])
             if found:
                 s_k[m], Y_k[:, m] = root, vec
-    return s_k, Y_k
+    return (s_k, Y_k), untracked
 
 
 @dataclass(frozen=True)
@@ -496,7 +559,13 @@ def check_speeds(speeds) -> np.ndarray:
 
 
 def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple[CriticalSpeed, ...]:
-    """Crossings of the lateral curves with ω = kΩ, sorted by speed."""
+    """Crossings of the lateral curves with ω = kΩ, sorted by speed.
+
+    A crossing takes its whirl from the lower sample, except above rest: a crossing between
+    ``speeds[0] = 0`` and ``speeds[1]`` is at a spin, and a lone mode's planar orbit at rest
+    (no gyroscopic coupling) says nothing of its whirl there; it takes the whirl of the first
+    spinning sample (the label a degenerate pair carries at rest anyway, :func:`track_modes`).
+    """
     speeds = check_finite_array("speeds", speeds, "rad/s")
     eigenvalues = check_finite_array("eigenvalues", eigenvalues, "rad/s")
     harmonics = check_finite_array("harmonics", np.atleast_1d(np.asarray(harmonics, dtype=float)), "-")
@@ -510,6 +579,8 @@ def critical_speeds(speeds, eigenvalues, whirl, kind, harmonics=(1.0,)) -> tuple
                 j = i if kind is None or kind[i, m] == "lateral" else i + 1
                 if kind is not None and kind[j, m] != "lateral":
                     continue
+                if speeds[j] == 0.0 and (kind is None or kind[j + 1, m] == "lateral"):
+                    j += 1  # above rest: the whirl of the first spinning sample
                 t = g[i] / (g[i] - g[i + 1])
                 out.append(
                     CriticalSpeed(float(speeds[i] + t * (speeds[i + 1] - speeds[i])), m, float(h), str(whirl[j, m]))

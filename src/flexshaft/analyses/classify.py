@@ -46,6 +46,7 @@ __all__ = [
     "ModalLabeler",
     "DEGENERATE",
     "circular_pairs",
+    "degenerate_groups",
 ]
 
 #: Share of kinetic energy in the shaft's twist (or axial motion) that makes a mode torsional (axial).
@@ -126,14 +127,7 @@ def circular_pairs(s: np.ndarray, Y: np.ndarray, V: np.ndarray, W: np.ndarray) -
     """
     s = np.asarray(s)
     Y = np.array(Y, dtype=complex)
-    done = np.zeros(s.size, dtype=bool)
-    for k in range(s.size):
-        if done[k]:
-            continue
-        group = np.flatnonzero(~done & (np.abs(s - s[k]) <= DEGENERATE * np.abs(s[k])))
-        done[group] = True
-        if group.size < 2:
-            continue
+    for group in degenerate_groups(s):
         Vg, Wg = V[:, group], W[:, group]
         power = Vg.conj().T @ Vg + Wg.conj().T @ Wg  # Σ(|V|² + |W|²) as a Hermitian form
         ratio = 1j * (Vg.conj().T @ Wg - Wg.conj().T @ Vg)  # −2 Σ Im(V̄W) as a Hermitian form
@@ -145,6 +139,23 @@ def circular_pairs(s: np.ndarray, Y: np.ndarray, V: np.ndarray, W: np.ndarray) -
         norms = np.linalg.norm(Y[:, group], axis=0)
         Y[:, group] = combined * (norms / np.linalg.norm(combined, axis=0))
     return Y
+
+
+def degenerate_groups(s: np.ndarray) -> list[np.ndarray]:
+    """Indices of every group of two or more eigenvalues ``s`` within :data:`DEGENERATE` of each
+    other (relative to the group's first, in the order of ``s``): the groups
+    :func:`circular_pairs` resolves."""
+    s = np.asarray(s)
+    done = np.zeros(s.size, dtype=bool)
+    groups = []
+    for k in range(s.size):
+        if done[k]:
+            continue
+        group = np.flatnonzero(~done & (np.abs(s - s[k]) <= DEGENERATE * np.abs(s[k])))
+        done[group] = True
+        if group.size >= 2:
+            groups.append(group)
+    return groups
 
 
 @dataclass(frozen=True)
