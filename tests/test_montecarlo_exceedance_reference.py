@@ -18,54 +18,13 @@ import math
 
 import numpy as np
 import pytest
+from test_montecarlo_bounds import SMALL  # the two-bay rotor with a magnet between its bearings
 
 from flexshaft.design import loads_design
 from flexshaft.montecarlo.steady import MonteCarloResult, run_montecarlo
 from flexshaft.verdict.gather import ActuatorLimits
 
 xr = pytest.importorskip("xarray")
-
-SMALL = """
-name = "two-bay rotor"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = 80e9
-density = 7850.0
-loss_factor = 0.002
-[shaft]
-x_start = 0.0
-x_end = 2.0
-outer_diameter = 0.05
-wall_thickness = 0.005
-material = "steel"
-fixed_start = ["u", "theta"]
-[[bearings]]
-name = "left"
-kind = "contact"
-x = 0.0
-stiffness = { v = 5e7, w = 5e7 }
-[[bearings]]
-name = "amb"
-kind = "active"
-x = 1.0
-kp = 2e6
-kd = 200.0
-gap = 1.0e-3
-force_capacity = 1.0e4
-[[bearings]]
-name = "right"
-kind = "contact"
-x = 2.0
-stiffness = { v = 5e7, w = 5e7 }
-[operating]
-speed_rpm = 6000.0
-power = 0.0
-[loads]
-eccentricity = 10e-6
-[mesh]
-shaft_elements = 6
-"""
 
 
 def test_exceedance_is_the_fraction_above_the_limit():

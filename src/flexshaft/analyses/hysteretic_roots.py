@@ -414,12 +414,10 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     out_s, out_y = consistent_roots(red, speed)
     wanted = lowest_modes(out_s, n_modes)
     out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
-    if not red.may_diverge:
-        order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
-        return out_s[order], out_y[:, order]
-    _, _, Y_div, div = spectrum(red, speed)
-    if div.size:
-        out_s = np.concatenate([out_s, div.astype(complex)])
-        out_y = np.hstack([out_y, Y_div.astype(complex)])
+    if red.may_diverge:
+        _, _, Y_div, div = spectrum(red, speed)
+        if div.size:
+            out_s = np.concatenate([out_s, div.astype(complex)])
+            out_y = np.hstack([out_y, Y_div.astype(complex)])
     order = np.lexsort((np.abs(out_s), out_s.imag))[:n_modes]
     return out_s[order], out_y[:, order]
