@@ -9,7 +9,8 @@ carries, in its material axes,
 
     σ₁ = Q₁₁ (ε₀ − α_L ΔT) + Q₁₂ (ε₀ − α_T ΔT),   σ₂ = Q₁₂ (ε₀ − α_L ΔT) + Q₂₂ (ε₀ − α_T ΔT),
 
-with Q₁₁ = E_L/(1 − ν_LT ν_TL), Q₂₂ = E_T/(…), Q₁₂ = ν_LT E_T/(…) (Jones 1999, eq. 2.61). The
+with Q₁₁ = E_L/(1 − ν_LT ν_TL), Q₂₂ = E_T/(…), Q₁₂ = ν_LT E_T/(…), ν_TL = ν_LT E_T/E_L
+(derived: the inverse of the plane-stress compliance [[1/E_L, −ν_LT/E_L], [−ν_LT/E_L, 1/E_T]]). The
 temperature is absolute [K] and the design's stress-free temperature is in °C: at
 T = T_sf + 273.15 K the plies are stress free (the check equals the one without residual),
 and 80 K below it they carry the stresses above with ΔT = −80 K. The tube is bent by a

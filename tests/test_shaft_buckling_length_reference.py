@@ -5,9 +5,10 @@ L = x_end − x_start, not on where the shaft's stations are counted from: trans
 (the same tube from 0.5 to 1.5 m instead of 0 to 1 m) is a change of origin, which no physics
 can see. So the check must report L = 1 m for both, and the same critical torque and safety
 factor to round-off (the same arithmetic on the same numbers: 1e-12). The classical shell
-(Sanders), a 1 m [±45]s tube: at this length the global helical mode depends on L (the
-torque of a moderately long tube scales about as L^(−1/2), Donnell; tests/test_buckling.py),
-so a wrong length is seen. Two elements per shaft: the mesh does not enter the shell solve.
+(Sanders), a 1 m [±45]s tube: at this length the global helical mode depends on L (in
+Donnell's moderate-length range the critical torque falls about as L^(−1/2); Batdorf's curve is
+checked in tests/test_buckling.py), so a wrong length is seen. Two elements per shaft: the
+mesh does not enter the shell solve.
 """
 
 from __future__ import annotations
