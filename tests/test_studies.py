@@ -203,6 +203,7 @@ def test_design_studies_render_as_the_report_section(tiny_studies, tmp_path):
     # headline numbers: consistent with the datasets
     assert res.optimal_angle == float(res.ply_angle["safety_factor"].idxmax("alpha"))
     assert res.best_two_angle_safety_factor == pytest.approx(float(res.two_angle["safety_factor"].max()))
+    assert res.best_wall == float(res.wall["safety_factor"].idxmax("wall_thickness"))
     assert res.gains_before == (1e7, 0.0)
     assert res.peak_after <= res.peak_before
     assert float(res.tuned["refined_peak"][0]) == pytest.approx(res.peak_before)
@@ -304,3 +305,20 @@ def test_the_two_angle_figure_marks_the_laminate_the_study_names():
         "best (55/−55/30/−30)s: R = 58"
     ]
     assert marked(two_angle_figure(angles, angles, sf)) == ["best (30/−30/55/−55)s: R = 58"]
+
+
+@pytest.mark.parametrize("pair", [(55.0, 30.0), (45.0, 0.0), (0.0, 60.0), (90.0, 15.0)])
+def test_the_two_angle_studys_layup_name_is_a_balanced_symmetric_laminate(pair):
+    """The two-angle study's best layup, by name: (α/−α/β/−β)s. Balanced (every ±θ ply pair
+    has an equal and opposite partner, 0° and 90° plies their own) and symmetric: the
+    laminate's A₁₆ = A₂₆ = 0, since Q̄₁₆(θ) and Q̄₂₆(θ) are odd in θ and vanish at 0° and 90°
+    (derived), and B = 0. Parsed by the design file's own grammar."""
+    from flexshaft.design.layup import parse_layup
+    from flexshaft.thesis.design_studies import two_angle_name
+
+    angles = parse_layup(two_angle_name(pair))
+    assert list(angles) == list(angles)[::-1]  # symmetric about the mid-plane
+    half = list(angles)[: len(angles) // 2]
+    assert sorted(abs(a) for a in half) == sorted([pair[0], pair[0], pair[1], pair[1]])
+    for theta in {abs(a) for a in half if abs(a) not in (0.0, 90.0)}:
+        assert half.count(theta) == half.count(-theta)  # balanced
