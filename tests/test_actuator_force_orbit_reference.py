@@ -2,8 +2,8 @@
 of its force orbit from the linearised magnet (derived here).
 
 The Jeffcott rotor of tests/jeffcott_bearing.py with its active bearing's magnet at the disk and
-its sensor 0.125 m further on. The linearised magnet (Schweitzer & Maslen, *Magnetic Bearings*,
-2009, ch. 2: f = k_s x + k_i i) with the ideal PD law i = −(k_p + k_d s) d_s pulls the shaft
+its sensor 0.125 m further on. The linearised magnet (its
+definition in docs/magnetic-bearings.md: f = k_s x + k_i i) with the ideal PD law i = −(k_p + k_d s) d_s pulls the shaft
 with f = k_s d_a − k_i (k_p + k_d s) d_s at s = iω, so the bearing carries, per axis (v, w),
 
     F = k_i (k_p + i ω k_d) d_s − k_s d_a            (complex amplitudes at the magnet, sensor).

@@ -4,7 +4,7 @@ on the bearing-free rotor and the linearised magnet's force law (derived here).
 The Jeffcott rotor of tests/jeffcott_bearing.py (pinned-pinned tube, 20 kg disk at x = 0.5 m)
 with an active bearing whose magnet sits at the disk, x_a = 0.5 m, and whose displacement
 sensor sits ``sensor_offset`` = 0.125 m further on, x_s = 0.625 m. The linearised magnet pulls
-the shaft with (Schweitzer & Maslen, *Magnetic Bearings*, 2009, ch. 2: f = k_s x + k_i i)
+the shaft with (the linearised law that defines k_s and k_i, docs/magnetic-bearings.md: f = k_s x + k_i i)
 
     f_shaft = k_s d_a + k_i i,    i = −k_p d_s   (a PD law at ω = 0: C(0) = k_p)
 
