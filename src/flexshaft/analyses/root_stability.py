@@ -24,12 +24,16 @@ Method (at each speed Ω):
    ``i sgn(ω) (F + K_lat)``, an imaginary positive semi-definite stiffness: it removes energy
    from every harmonic motion, so to first order it can only move a root to the left. A root
    above the spin that is stable without the loss is stable with it. The roots that can change
-   side are refined to their loss-consistent value by Newton's method
-   (:func:`~flexshaft.analyses.eigen.newton`): every root below the spin (0 < ω < Ω, where the
-   rotating-frame loss of forward whirl turns circulatory) and every root unstable without the
-   loss (the loss may stabilise it): each on its own side of the line
-   (:mod:`flexshaft.analyses.hysteretic_roots`: ``mode_root`` below the spin, the upper branch's
-   linear problem above it). On the small basis of a passive driveline (below) every root is
+   side are the roots below the spin (0 < ω < Ω, where the rotating-frame loss of forward whirl
+   turns circulatory), each refined to its loss-consistent value by Newton's method
+   (:func:`~flexshaft.analyses.eigen.newton`; ``mode_root`` of
+   :mod:`flexshaft.analyses.hysteretic_roots`, on its own side of the line), and the roots
+   above the spin unstable without the loss (the loss may stabilise them). Those take the
+   first-order shift of the loss (its projection on the root's left and right eigenvectors);
+   one that half and one and a half times that shift both leave stable is settled by it, the
+   others are solved by Newton's method on the upper branch's linear problem, least stable
+   first, until :data:`MAX_SOLVED_UNSTABLE` are confirmed unstable (the rest keep their
+   first-order value, ``refined`` False). On the small basis of a passive driveline (below) every root is
    solved exactly instead, one complex eigen-solution per branch (``consistent_values``: the
    eigenvectors only where the pairing of on-line roots needs them).
    A driveline whose actuator laws are all collocated, without states and with non-negative
