@@ -50,7 +50,7 @@ def test_two_angle_study_default_grid_laminate_and_loads(monkeypatch):
     study = _study_of(monkeypatch, two_angles, lambda: two_angles.two_angle_study())
     grid = tuple(15.0 * k for k in range(7))
     assert [v.values for v in study.variables] == [grid, grid]
-    assert dict(study.fixed) == {"loads.eccentricity": 0.0}
+    assert dict(study.fixed) == {"loads.eccentricity": 0.0, "loads.balance_grade": None}
     assert two_angles.two_angle_layup((55.0, 10.0)) == {"shaft.layup": "(55/-55/10/-10)s"}
     assert two_angles.two_angle_layup((30.0, 45.0)) == {"shaft.layup": "(30/-30/45/-45)s"}
 

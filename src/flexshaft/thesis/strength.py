@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from flexshaft.analyses.response import imbalance_response, static_response
 from flexshaft.analyses.shaft_strength import shaft_safety_factor
+from flexshaft.assembly.balance import design_eccentricity
 from flexshaft.assembly.loads import external_static_load, imbalance_loads, torque_load
 from flexshaft.sweep.study import Output
 
@@ -19,7 +20,8 @@ def strength_outputs(point, imbalance=None) -> dict:
     model = point.model
     q_static = static_response(model, external_static_load(model) + torque_load(model))
     static = shaft_safety_factor(model, q_static).safety_factor
-    if model.design.loads.eccentricity == 0.0 or model.speed == 0.0:  # no imbalance: the total is the static
+    # no imbalance (neither an eccentricity nor a balance grade, or at rest): the total is the static
+    if design_eccentricity(model.design) == 0.0 or model.speed == 0.0:
         return {"safety_factor_static": static, "safety_factor": static}
     q_imb = (
         imbalance_response(model, [model.speed], imbalance_loads(model))[:, :, 0] if imbalance is None else imbalance

@@ -40,7 +40,7 @@ def two_angle_study(alphas=None, betas=None, design=None, **run):
         STRENGTH_OUTPUTS,
         _two_angle_strength,
         base=design,
-        fixed={"loads.eccentricity": 0.0},
+        fixed={"loads.eccentricity": 0.0, "loads.balance_grade": None},
     )
     _pair_strength.cache_clear()  # the pairs are shared within one study, never across calls
     return run_sweep(study, **run)
