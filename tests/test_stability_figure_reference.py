@@ -1,0 +1,55 @@
+"""The stability figures draw the requirement, the onset and the unstable side where they are.
+
+Hand-built curves (no model); references derived here:
+
+* the requirement is on the log decrement δ, the quantity on the axis: its line sits at δ_req
+  (not at ζ = δ_req/2π);
+* the onset speed [rpm] is marked at (n_onset, δ = 0) on an axis in rpm;
+* δ < 0 is unstable (a free vibration grows by e^{−δ} per cycle): the red band covers only
+  δ ≤ 0;
+* the onset map's operating-speed line sits at the operating speed [rpm].
+
+Compared to rel 1e-12 (no discretisation). Agg, no file.
+"""
+
+from __future__ import annotations
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+
+from flexshaft.plot.stability import log_decrement_figure, stability_map_figure  # noqa: E402
+
+REL = 1e-12
+
+
+def _span_y(patch) -> np.ndarray:
+    """The data y of a horizontal span's corners (a Rectangle or a Polygon, by matplotlib version)."""
+    return patch.get_patch_transform().transform(patch.get_path().vertices)[:, 1]
+
+
+def test_log_decrement_figure_marks_the_requirement_onset_and_unstable_side():
+    speeds = np.linspace(0.0, 6000.0, 7)  # [rpm]
+    delta = np.column_stack([0.4 - speeds / 10000.0, np.full(7, 0.25)])  # mode 1 crosses 0 at 4000 rpm
+    fig = log_decrement_figure(speeds, {"shaft": delta}, {"shaft": 4000.0}, operating_rpm=4800.0, required=0.1)
+    ax = fig.axes[0]
+    (req,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("required")]
+    np.testing.assert_allclose(req.get_ydata(), [0.1, 0.1], rtol=REL)
+    (cross,) = [ln for ln in ax.get_lines() if ln.get_marker() == "X"]
+    np.testing.assert_allclose([cross.get_xdata()[0], cross.get_ydata()[0]], [4000.0, 0.0], rtol=REL)
+    verticals = [list(ln.get_xdata()) for ln in ax.get_lines() if ln.get_transform() == ax.get_xaxis_transform()]
+    assert sorted(verticals) == [[4000.0, 4000.0], [4800.0, 4800.0]]  # the onset and the operating speed
+    assert "onset 4000 rpm" in [t.get_text() for t in ax.texts]
+    (band,) = ax.patches
+    y = _span_y(band)
+    assert y.max() == 0.0 and y.min() < delta.min()  # from below the lowest curve up to δ = 0
+
+
+def test_stability_map_operating_line_at_the_operating_speed():
+    kd = np.array([0.0, 100.0, 200.0])
+    ax = stability_map_figure(kd, {"shaft": [3000.0, 5000.0, np.nan]}, operating_rpm=4800.0, max_rpm=7200.0).axes[0]
+    (op,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("operating speed")]
+    np.testing.assert_allclose(op.get_ydata(), [4800.0, 4800.0], rtol=REL)
+    (bound,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("stable to")]
+    np.testing.assert_allclose(bound.get_ydata(), [7200.0, 7200.0], rtol=REL)
