@@ -13,6 +13,7 @@ a copy or one multiplication of an analysis number, so the tolerance is round-of
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -102,3 +103,28 @@ def test_thermal_air_temperature_in_celsius(run):
         assert data["thermal"][f"shaft_{model}"]["air_c"] == pytest.approx(
             s.temperature.air_temperature - 273.15, rel=1e-12, abs=1e-12
         )
+
+
+def _number_after(text: str, label: str) -> float:
+    """The number printed right after ``label`` in ``text``."""
+    match = re.search(re.escape(label) + r"\s*([-+0-9.e]+)", text)
+    assert match, label
+    return float(match.group(1))
+
+
+def test_run_command_prints_the_json_numbers_in_display_units(run, capsys, tmp_path):
+    """``flexshaft run``'s printed summary (cli/run.py) from results.json's SI numbers: the spin-up
+    peak orbit x 1000 mm/m (3 significant figures: rel 5e-3), its speed in rpm and the storage
+    moduli / 1e9 Pa/GPa (4 significant figures: rel 5e-4)."""
+    from flexshaft.cli.run import _print_run
+
+    a, data = run
+    _print_run(a, data, tmp_path / "report.html", 1.0, None)
+    text = capsys.readouterr().out
+    imb, s = data["imbalance"], data["summary"]
+    assert _number_after(text, "spin-up peak shaft orbit") == pytest.approx(
+        imb["max_shaft_orbit_spin_up_m"] * 1000.0, rel=5e-3
+    )
+    assert _number_after(text, "mm at") == pytest.approx(imb["speed_of_max_rpm"], rel=5e-4)
+    assert _number_after(text, "E* =") == pytest.approx(s["shaft_E_storage_Pa"] / 1e9, rel=5e-4)
+    assert _number_after(text, "G* =") == pytest.approx(s["shaft_G_storage_Pa"] / 1e9, rel=5e-4)
