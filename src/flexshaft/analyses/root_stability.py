@@ -33,9 +33,10 @@ Method (at each speed Ω):
    one that half and one and a half times that shift both leave stable is settled by it, the
    others are solved by Newton's method on the upper branch's linear problem, least stable
    first, until :data:`MAX_SOLVED_UNSTABLE` are confirmed unstable (the rest keep their
-   first-order value, ``refined`` False). On the small basis of a passive driveline (below) every root is
-   solved exactly instead, one complex eigen-solution per branch (``consistent_values``: the
-   eigenvectors only where the pairing of on-line roots needs them).
+   first-order value, ``refined`` False). On the small basis of a passive driveline (below)
+   every root is solved exactly instead, one complex eigen-solution per branch
+   (``consistent_values``: the eigenvectors only where the pairing of on-line roots needs
+   them).
    A driveline whose actuator laws are all collocated, without states and with non-negative
    stiffness and damping (the thesis's ideal PD bearing) is *passive*: no root above the spin
    can be unstable (the energy argument of :func:`_is_passive`), so only the roots below the
