@@ -79,16 +79,22 @@ def test_a_heavily_damped_whirl_mode_counts_and_an_overdamped_root_does_not(zeta
         assert mask.any() and np.all(np.abs(found.eigenvalues[mask]) > 10 * WN)
 
 
-def test_the_rigid_tilts_of_the_rotor_couple_by_its_whole_polar_inertia():
-    model = build_model(loads_design(DRIVELINE))
+@pytest.fixture(scope="module")
+def driveline():
+    """tests/test_rigid_body_inertia.py's driveline (three tubes, two coupling hubs, a disk, a boom)."""
+    return build_model(loads_design(DRIVELINE))
+
+
+def test_the_rigid_tilts_of_the_rotor_couple_by_its_whole_polar_inertia(driveline):
+    model = driveline
     about_z = shaft_vector(model, {"v": lambda x: x - 1.7, "gamma": np.ones_like})
     about_y = shaft_vector(model, {"w": lambda x: x - 1.7, "beta": lambda x: -np.ones_like(x)})
     coupling = float(about_y @ (model.G @ about_z))
     assert abs(coupling) == pytest.approx(shaft_polar(), rel=1e-9)
 
 
-def test_component_labels_follow_the_documented_energy_fractions():
-    model = build_model(loads_design(DRIVELINE))
+def test_component_labels_follow_the_documented_energy_fractions(driveline):
+    model = driveline
     dm = model.dofs
     i, j = dm.shaft(2, "v"), dm.boom(2, "v")
     M = model.M.toarray()
@@ -104,8 +110,8 @@ def test_component_labels_follow_the_documented_energy_fractions():
     assert labels.shares.shaft == pytest.approx([0.95, 0.6, 0.4, 0.05], rel=1e-12)
 
 
-def test_the_modal_labeller_partitions_the_kinetic_energy_as_the_definition():
-    model = build_model(loads_design(DRIVELINE))
+def test_the_modal_labeller_partitions_the_kinetic_energy_as_the_definition(driveline):
+    model = driveline
     basis = reduce(model, 24)
     rng = np.random.default_rng(7)
     Y = rng.standard_normal((basis.size, 5)) + 1j * rng.standard_normal((basis.size, 5))
