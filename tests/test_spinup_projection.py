@@ -153,11 +153,14 @@ def test_scan_matches_the_all_full_sweep(name, resolution):
 
 def _reference_criticals(name: str):
     """The all-full reference of the critical speeds on the screening scan of ``name``: the full
-    scan, a full solve at every refinement speed."""
+    scan, a full solve at every refinement speed (the resonances the scan steps over seeded from
+    the synchronous roots on its full responses' span)."""
     model, scan = _model(name), _scan(name, SCREENING, False)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ResonanceWarning)
-        return lateral_critical_speeds(model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False)
+        return lateral_critical_speeds(
+            model, top=SCREENING.scan_top, scan=(scan.speeds, scan.orbits), projected=False, responses=scan.response
+        )
 
 
 def _undamped_reference_criticals(factory):

@@ -4,7 +4,14 @@
 :class:`~flexshaft.resolution.Resolution`'s ``scan_top`` × the operating speed, beyond the largest
 margin API 684 can ask above the operating speed, 26 %) and refines each peak at the shaft
 station where it is largest until its half-power bandwidth is resolved
-(:func:`flexshaft.analyses.separation.resolve_peak`). :func:`scan_critical_speeds` reuses a scan
+(:func:`flexshaft.analyses.separation.resolve_peak`). A resonance narrower than the scan's
+spacing can fall between two samples, or share one bump with a broader neighbour whose
+refinement follows the broader one: the roots of the synchronous problem on the scan's projected
+model (:mod:`flexshaft.analyses.synchronous_roots`) say where each resonance is and how wide; one
+whose band holds no sample, whose projected orbit stands above the scan there and that no peak
+found holds is refined from samples across its band (:func:`_hidden_resonances`), so that the
+critical speeds and the spin-up's largest orbit do not depend on where the scan's samples fall
+(tests/test_hidden_resonances.py). :func:`scan_critical_speeds` reuses a scan
 already computed (the spin-up response of an assessment) and says why there is none when the
 response cannot be scanned; :func:`label_critical_speeds` names the Campbell mode of each peak.
 """
@@ -16,14 +23,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import scipy.linalg
 
-from flexshaft.analyses.banded import SingularSystemError
+from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.peak_projection import PeakBasis, ProjectedOrbit
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.results import dataframe, html_table
 from flexshaft.analyses.separation import resolve_peak, response_peaks
+from flexshaft.analyses.synchronous_roots import synchronous_roots
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.model import Model
 from flexshaft.resolution import REPORT
@@ -41,6 +50,10 @@ __all__ = [
 _UNDAMPED_CHECK_MODES = 12
 #: Largest distance [fraction of the speed] between a peak and the Campbell critical speed that labels it.
 _LABEL_TOLERANCE = 0.03
+#: Directions of the scan's responses kept for the synchronous roots: a mode present below this
+#: fraction of the largest response is not one the scan's imbalance excites.
+_SEED_RANK = 1e-8
+_UNRESOLVED = "half-power bandwidth not resolved: AF is a lower bound"
 
 
 @dataclass(frozen=True)
@@ -113,6 +126,172 @@ def _shaft_orbits(model: Model, q: np.ndarray) -> np.ndarray:
     return orbit_amplitude(q[dm.shaft(n, "v")], q[dm.shaft(n, "w")])
 
 
+def _orbit_function(model, loads, node, case, speeds, k, projected, start, responses) -> Callable:
+    """``response(speeds) -> orbit`` of shaft node ``node`` under load case ``case``: a projected
+    model of the peak near scan sample ``k`` checked by full solves, or full solves."""
+
+    def orbit_at(new_speeds):
+        if np.size(new_speeds) == 0:
+            return np.zeros(0)
+        q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
+        return _shaft_orbits(model, q)[node, 0]
+
+    rows = (int(model.dofs.shaft(node, "v")), int(model.dofs.shaft(node, "w")))
+    if not (projected and np.all(np.isin(rows, model.dofs.free))):
+        return orbit_at
+    # the refinement on a projected model of the peak, checked by full solves
+    near = slice(max(k - 1, 0), k + 2)
+    seed: PeakBasis | np.ndarray | None = start  # the scan's basis, else its responses near the peak
+    if seed is None and responses is not None:
+        seed = responses[model.dofs.free, case, near]
+    return ProjectedOrbit(model, loads[:, case], rows, speeds[near], basis=seed)
+
+
+def _refine(model: Model, response, speeds, curve, near: float, node: int) -> LateralCritical | None:
+    """The peak of ``curve`` nearest ``near`` refined (:func:`resolve_peak`); None when the
+    refined curve has no peak there (a sampling artefact)."""
+    station = float(model.dofs.shaft_x[node])
+    try:
+        peak = resolve_peak(response, speeds, curve, near=near)
+    except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
+        return _singular(near, station)
+    if peak is None:
+        return None
+    location: dict[str, Any] = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
+    amplification = peak.amplification_factor
+    if not peak.resolved:
+        if _undamped_at(model, peak.speed):
+            amplification = float("inf")
+            location["detail"] = "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+        else:
+            location["detail"] = _UNRESOLVED
+    return LateralCritical(peak.speed, amplification, location)
+
+
+def _singular(speed: float, station: float) -> LateralCritical:
+    detail = "undamped resonance: the response is singular at the peak"
+    return LateralCritical(speed, float("inf"), {"station": station, "detail": detail})
+
+
+def _known(critical: LateralCritical, out: list[LateralCritical]) -> bool:
+    """``critical`` is one of ``out`` already (the same speed to 1e-6)."""
+    return any(abs(critical.speed - c.speed) <= 1e-6 * critical.speed for c in out)
+
+
+def _peak_orbit(critical: LateralCritical) -> float:
+    return float(critical.location.get("peak_orbit", np.inf if not np.isfinite(critical.amplification_factor) else 0.0))
+
+
+def _bandwidth(critical: LateralCritical) -> float:
+    """Half-power bandwidth N_c/AF of a refined peak [rad/s] (0 for an undamped one)."""
+    af = critical.amplification_factor
+    return critical.speed / af if np.isfinite(af) and af > 0 else 0.0
+
+
+def _near_sample(critical: LateralCritical, spacing: float) -> float:
+    """How far an undamped peak, reported at the scan sample nearest its root, may lie from
+    that root [rad/s]: a scan spacing (0 for a damped peak)."""
+    return spacing if not np.isfinite(critical.amplification_factor) else 0.0
+
+
+@dataclass(frozen=True)
+class _Seed:
+    """Where to look for a peak the scan stepped over (:func:`_hidden_resonances`): the root's
+    real part and |Im| [rad/s], the node and load case, the unresolved peak it may replace."""
+
+    speed: float
+    width: float
+    node: int
+    case: int
+    replaces: LateralCritical | None
+
+
+def _seed_samples(seed: _Seed) -> np.ndarray:
+    """Speeds [rad/s] across a seed root's half-power band, Re Ω ± (1, 2, 4) |Im Ω| and Re Ω
+    itself: the refinement starts from a bandwidth it can measure (one sample at the vertex
+    gives the half-power interpolation nothing between it and the scan's far samples, and an
+    estimate orders of magnitude too small). They lie on a lattice: |Im Ω| rounded to a power
+    of two, Re Ω to a 64th of that, so that two bases whose roots agree to round-off (the scan's
+    reduced basis, the span of its full responses) start the same refinement."""
+    step = 2.0 ** np.round(np.log2(max(seed.width, 1e-9 * seed.speed)))
+    centre = np.round(seed.speed / (step / 64.0)) * (step / 64.0)
+    return centre + np.array([-4.0, -2.0, -1.0, 0.0, 1.0, 2.0, 4.0]) * step
+
+
+def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) -> list[_Seed]:
+    """Each resonance the scan stepped over: a root Ω_k of the projected synchronous problem
+    (:func:`~flexshaft.analyses.synchronous_roots.synchronous_roots`, on the scan's reduced
+    basis, else on its responses) whose half-power band ``2 |Im Ω_k|`` is narrower than the
+    scan's spacing there, where the projected model's orbit exceeds the scan's envelope
+    (interpolated) by more than √2 (the samples lie outside its half-power band: the peak is not
+    in the scan), and that no peak ``found`` holds (within its band). A peak found but left
+    unresolved whose nearest root is this one is the same resonance, its refinement stalled:
+    the seed ``replaces`` it when it refines to a larger peak. Node and case: those of the
+    projected model's largest orbit at Re Ω_k."""
+    solver = solver_for(model)
+    free = model.dofs.free
+    if basis is not None:
+        columns = np.asarray(basis, dtype=complex)
+    elif responses is not None:
+        columns = np.asarray(responses, dtype=complex)[free].reshape(free.size, -1)
+    else:
+        return []
+    V = _orthonormal(columns)
+    if V.shape[1] == 0 or speeds.size < 2:
+        return []
+    terms = solver.project(V[None])[0]
+    roots = synchronous_roots(solver, terms, float(speeds[0]), float(speeds[-1]))
+    spacing = np.diff(speeds)
+    local = np.full(model.dofs.size, -1, dtype=np.intp)
+    local[free] = np.arange(free.size)
+    n = np.arange(model.dofs.n_shaft_nodes)
+    rows = np.stack([local[model.dofs.shaft(n, "v")], local[model.dofs.shaft(n, "w")]])  # (2, nodes)
+    inputs = V.conj().T @ np.asarray(loads, dtype=complex)[free]  # (r, cases)
+    out: list[_Seed] = []
+    for root in roots:
+        speed, width = float(root.real), abs(float(root.imag))
+        j = int(np.clip(np.searchsorted(speeds, speed) - 1, 0, spacing.size - 1))
+        if width >= spacing[j]:  # its band holds a sample: the scan shows it
+            continue
+        replaces = None
+        nearest = min(found, key=lambda c: abs(c.speed - speed), default=None)
+        if nearest is not None and nearest.location.get("detail") == _UNRESOLVED:
+            if np.argmin(np.abs(roots.real - nearest.speed)) == np.argmin(np.abs(roots.real - speed)):
+                replaces = nearest
+        # a peak found holds it: within its band, or within a sample of an undamped one (those
+        # are reported at the scan sample nearest their root)
+        if replaces is None and any(
+            abs(speed - c.speed) <= max(3.0 * width, _bandwidth(c), _near_sample(c, spacing[j])) for c in found
+        ):
+            continue
+        if any(abs(speed - s.speed) <= 3.0 * width for s in out):
+            continue
+        Z = np.tensordot(solver.term_weights([speed], [speed])[0], terms, axes=1)
+        try:
+            q = V @ np.linalg.solve(Z, inputs * speed * speed)  # (n_free, cases)
+        except np.linalg.LinAlgError:
+            continue
+        q = np.concatenate([q, np.zeros((1, q.shape[1]))])  # row -1: a fixed DOF's zero
+        orbit = orbit_amplitude(q[rows[0]], q[rows[1]])  # (nodes, cases)
+        if not np.all(np.isfinite(orbit)) or orbit.max() <= np.sqrt(2.0) * np.interp(speed, speeds, envelope):
+            continue
+        node, case = np.unravel_index(int(np.argmax(orbit)), orbit.shape)
+        out.append(_Seed(speed, width, int(node), int(case), replaces))
+    return out
+
+
+def _orthonormal(columns: np.ndarray) -> np.ndarray:
+    """An orthonormal basis of the span of ``columns`` (each normalised first), directions below
+    :data:`_SEED_RANK` of the largest dropped."""
+    norms = np.linalg.norm(columns, axis=0)
+    columns = columns[:, norms > 0] / norms[norms > 0]
+    if columns.shape[1] == 0:
+        return columns
+    Q, R, _ = scipy.linalg.qr(columns, mode="economic", pivoting=True, check_finite=False)
+    diag = np.abs(np.diag(R))
+    return Q[:, : int(np.count_nonzero(diag > _SEED_RANK * diag[0]))]
+
+
 def lateral_critical_speeds(
     model: Model,
     campbell: Campbell | None = None,
@@ -166,7 +345,8 @@ def lateral_critical_speeds(
     loads = imbalance_loads(model)
     if scan is None:
         speeds = np.linspace(REPORT.scan_bottom, top, n_points) * model.speed
-        orbits = _shaft_orbits(model, imbalance_response(model, speeds, loads))
+        responses = np.asarray(imbalance_response(model, speeds, loads))
+        orbits = _shaft_orbits(model, responses)
     else:
         speeds, orbits = scan
     envelope = orbits.max(axis=(0, 1))
@@ -175,46 +355,33 @@ def lateral_critical_speeds(
     for rough in response_peaks(speeds, envelope):
         k = int(np.argmin(np.abs(speeds - rough.speed)))
         node, case = np.unravel_index(int(np.argmax(orbits[:, :, k])), orbits.shape[:2])
-
-        def orbit_at(new_speeds, node=node, case=case):
-            q = imbalance_response(model, new_speeds, loads[:, case : case + 1])
-            return _shaft_orbits(model, q)[node, 0]
-
-        response: Callable[[np.ndarray], np.ndarray] = orbit_at
-        rows = (int(model.dofs.shaft(int(node), "v")), int(model.dofs.shaft(int(node), "w")))
-        if projected and np.all(np.isin(rows, model.dofs.free)):
-            # the refinement on a projected model of the peak, checked by full solves
-            near = slice(max(k - 1, 0), k + 2)
-            seed: PeakBasis | np.ndarray | None = start  # the scan's basis, else its responses near the peak
-            if seed is None and responses is not None:
-                seed = responses[model.dofs.free, case, near]
-            response = ProjectedOrbit(model, loads[:, case], rows, speeds[near], basis=seed)
-
-        station = float(model.dofs.shaft_x[node])
+        response = _orbit_function(model, loads, int(node), int(case), speeds, k, projected, start, responses)
+        found = _refine(model, response, speeds, orbits[node, case], rough.speed, int(node))
+        if found is not None and not _known(found, out):
+            out.append(found)
+    for seed in _hidden_resonances(model, loads, speeds, envelope, out, basis, responses):
+        k = int(np.clip(np.searchsorted(speeds, seed.speed), 1, speeds.size - 1))
+        response = _orbit_function(model, loads, seed.node, seed.case, speeds, k, projected, start, responses)
+        new = _seed_samples(seed)
+        new = new[(new > speeds[k - 1]) & (new < speeds[k])]
         try:
-            peak = resolve_peak(response, speeds, orbits[node, case], near=rough.speed)
-        except SingularSystemError:  # an undamped resonance: the response is infinite at the peak
-            out.append(
-                LateralCritical(
-                    rough.speed,
-                    float("inf"),
-                    {"station": station, "detail": "undamped resonance: the response is singular at the peak"},
-                )
-            )
+            values = np.asarray(response(new), dtype=float)
+        except SingularSystemError:
+            values = np.full(new.size, np.inf)
+        if np.all(np.isfinite(values)):
+            curve_speeds = np.concatenate([speeds[:k], new, speeds[k:]])
+            curve = np.concatenate([orbits[seed.node, seed.case, :k], values, orbits[seed.node, seed.case, k:]])
+            found = _refine(model, response, curve_speeds, curve, seed.speed, seed.node)
+        else:  # an undamped resonance the scan stepped over
+            found = _singular(seed.speed, float(model.dofs.shaft_x[seed.node]))
+        if found is None:
             continue
-        if peak is None or any(abs(peak.speed - c.speed) <= 1e-6 * peak.speed for c in out):
-            continue
-        location: dict[str, Any] = {"station": station, "af_method": peak.method, "peak_orbit": float(peak.amplitude)}
-        amplification = peak.amplification_factor
-        if not peak.resolved:
-            if _undamped_at(model, peak.speed):
-                amplification = float("inf")
-                location["detail"] = (
-                    "undamped resonance: the mode at the peak has no damping, the response is unbounded"
-                )
-            else:
-                location["detail"] = "half-power bandwidth not resolved: AF is a lower bound"
-        out.append(LateralCritical(peak.speed, amplification, location))
+        if seed.replaces is not None:  # a better refinement of a peak left unresolved
+            if _peak_orbit(found) > _peak_orbit(seed.replaces):
+                out.remove(seed.replaces)
+                out.append(found)
+        elif not _known(found, out) and not any(abs(found.speed - c.speed) <= _bandwidth(c) for c in out):
+            out.append(found)
     return label_critical_speeds(tuple(sorted(out, key=lambda c: c.speed)), campbell)
 
 
