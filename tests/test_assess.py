@@ -46,13 +46,21 @@ def screening_assessment(design) -> Assessment:
     return assess(design, SCREENING)
 
 
+def _scan_speeds(a: Assessment) -> int:
+    """The spin-up response's scan speeds: its samples less the refined critical speeds added to
+    them (each a peak between the scan's samples, flexshaft.analyses.spinup_response.with_speeds)."""
+    peaks = [c.speed for c in a.criticals.criticals if np.isfinite(c.amplification_factor)]
+    assert np.isin(peaks, a.spinup.speeds).all()
+    return int(np.count_nonzero(~np.isin(a.spinup.speeds, peaks)))
+
+
 def test_the_size_estimate_counts_what_the_run_computes(report_assessment):
     """`flexshaft check` estimates `flexshaft run` from the same Resolution the run computes
     with: its counts of spin-up, Campbell and whirl speeds, modes and DOFs are the sizes of the
     arrays the run's assessment holds."""
     a = report_assessment
     size = problem_size(a.design, "run", REPORT)
-    assert size.n_speeds == a.spinup.speeds.size == a.spinup.response.shape[2]
+    assert size.n_speeds == _scan_speeds(a) and a.spinup.speeds.size == a.spinup.response.shape[2]
     assert size.campbell_speeds == a.campbell.speeds.size
     assert size.whirl_speeds == a.stability.speeds.size
     # (at the operating speed as many more as it takes to hold n_modes lateral whirl modes)
@@ -64,7 +72,7 @@ def test_the_size_estimate_counts_what_the_run_computes(report_assessment):
 def test_the_screening_estimate_counts_the_screening_assessment(design, screening_assessment):
     a = screening_assessment
     size = problem_size(design, "assess", SCREENING)
-    assert size.n_speeds == a.spinup.speeds.size and size.whirl_speeds == a.stability.speeds.size
+    assert size.n_speeds == _scan_speeds(a) and size.whirl_speeds == a.stability.speeds.size
     assert size.campbell_speeds == 0 and a.campbell is None and a.modes_at_rest is None
     # the estimate of the run adds the thesis studies to the same assessment's
     assert problem_size(design, "run", SCREENING).time_seconds > size.time_seconds

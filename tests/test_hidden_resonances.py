@@ -187,3 +187,34 @@ def test_a_peak_whose_refinement_stalls_is_replaced_by_the_seeded_one():
     assert critical.location["peak_orbit"] == pytest.approx(ECCENTRICITY / (2 * zeta * np.sqrt(1 - zeta**2)), rel=1e-4)
     assert critical.amplification_factor == pytest.approx(1 / (2 * zeta), rel=2e-3)
     assert critical.speed == pytest.approx(WN / np.sqrt(1 - 2 * zeta**2), abs=2 * zeta * WN / 20)
+
+
+def test_the_actuator_is_judged_at_a_peak_between_the_samples():
+    """The assessment's actuator excursion and force (its spin-up scan, 261 speeds, spacing
+    1.8 rad/s) at a resonance 0.0065 rad/s wide between two samples. Closed form: a magnetic
+    bearing at the disk with the law ki (kp + i kd Ω) − ks (tests/jeffcott_bearing.py's gains, kd
+    for ζ = 1e-5) adds k_a = ki kp − ks and c_a = ki kd; the disk's orbit under its imbalance
+    peaks at e/(2ζ√(1 − ζ²)) at Ω_p = ω_n/√(1 − 2ζ²) (ω_n² = (k + k_a)/m), the actuator's
+    excursion is that orbit (it sits at the disk, no static load) and its force
+    |ki (kp + i kd Ω_p) − ks| times it. Tolerance 1e-5: the tube's mass (7e-6 of the disk's) and
+    its share of the imbalance. Before the critical speeds' peaks were added to the scan
+    (flexshaft.analyses.spinup_response.with_speeds), the actuator was judged at the samples:
+    the excursion read there was below 1 % of the peak."""
+    from jeffcott_bearing import KI, KP, KS
+
+    import flexshaft as fs
+
+    zeta = 1e-5
+    k = K_SHAFT + KI * KP - KS
+    kd = 2 * zeta * np.sqrt(k * M_DISK) / KI
+    wn = np.sqrt(k / M_DISK)
+    head, tail = jeffcott_text(0.0, 0.0, elements=4).split("[[bearings]]")
+    bearing = f'name = "amb"\nx = 0.5\nkind = "active"\nkp = {KP}\nkd = {kd}\nks = {KS}\nki = {KI}\ngap = 0.1\n'
+    text = f"{head}[[bearings]]\n{bearing}force_capacity = 1e6\n{tail[tail.index('[[disks]]') :]}"
+    text = text.replace("speed_rpm = 0.0", f"speed_rpm = {rad_s_to_rpm(1.2 * wn)}")
+    verdict = fs.assess(loads_design(text + f"\n[loads]\neccentricity = {ECCENTRICITY}\n"), fs.SCREENING).verdict
+    peak, speed = ECCENTRICITY / (2 * zeta * np.sqrt(1 - zeta**2)), wn / np.sqrt(1 - 2 * zeta**2)
+    excursion, force = verdict.check("actuator_orbit"), verdict.check("actuator_force")
+    assert excursion.value == pytest.approx(peak, rel=1e-5)
+    assert force.value == pytest.approx(abs(KI * (KP + 1j * speed * kd) - KS) * peak, rel=1e-5)
+    assert excursion.location["speed"] == pytest.approx(speed, rel=1e-5)

@@ -54,6 +54,12 @@ _LABEL_TOLERANCE = 0.03
 #: fraction of the largest response is not one the scan's imbalance excites.
 _SEED_RANK = 1e-8
 _UNRESOLVED = "half-power bandwidth not resolved: AF is a lower bound"
+#: A root whose half-power band spans more scan intervals than this is left to the scan: its peak
+#: shows as a local maximum of the samples (the refinement then resolves it).
+_SHOWN_SAMPLES = 4.0
+#: Where the projected orbit is evaluated around a root, in |Im Ω| from Re Ω (its half-power
+#: points at ±1): a maximum of its own lies inside.
+_AROUND_ROOT = np.array([-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0])
 
 
 @dataclass(frozen=True)
@@ -188,6 +194,12 @@ def _bandwidth(critical: LateralCritical) -> float:
     return critical.speed / af if np.isfinite(af) and af > 0 else 0.0
 
 
+def _same_peak(a: LateralCritical, b: LateralCritical) -> bool:
+    """Two refinements of one peak: their speeds within a 20th of the wider one's bandwidth
+    (the resolution of :func:`resolve_peak`'s vertex, 20 samples a band)."""
+    return abs(a.speed - b.speed) <= max(_bandwidth(a), _bandwidth(b)) / 20.0
+
+
 def _near_sample(critical: LateralCritical, spacing: float) -> float:
     """How far an undamped peak, reported at the scan sample nearest its root, may lie from
     that root [rad/s]: a scan spacing (0 for a damped peak)."""
@@ -219,15 +231,18 @@ def _seed_samples(seed: _Seed) -> np.ndarray:
 
 
 def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) -> list[_Seed]:
-    """Each resonance the scan stepped over: a root Ω_k of the projected synchronous problem
-    (:func:`~flexshaft.analyses.synchronous_roots.synchronous_roots`, on the scan's reduced
-    basis, else on its responses) whose half-power band ``2 |Im Ω_k|`` is narrower than the
-    scan's spacing there, where the projected model's orbit exceeds the scan's envelope
-    (interpolated) by more than √2 (the samples lie outside its half-power band: the peak is not
-    in the scan), and that no peak ``found`` holds (within its band). A peak found but left
-    unresolved whose nearest root is this one is the same resonance, its refinement stalled:
-    the seed ``replaces`` it when it refines to a larger peak. Node and case: those of the
-    projected model's largest orbit at Re Ω_k."""
+    """Each resonance the scan may have stepped over: a root Ω_k of the projected synchronous
+    problem (:func:`~flexshaft.analyses.synchronous_roots.synchronous_roots`, on the scan's
+    reduced basis, else on its responses) that no peak ``found`` holds (none within its
+    half-power band Re Ω_k ± |Im Ω_k|), whose band is narrower than :data:`_SHOWN_SAMPLES`
+    scan intervals, and around which the projected model's orbit (the largest over the shaft's
+    nodes and the load cases, at Re Ω_k ± (0.5, 1, 2) |Im Ω_k|) has a maximum of its own. That
+    is a peak narrower than the samples' spacing (it falls between two of them), or one whose
+    broader neighbour swamps it on the samples (two bumps sampled as one); a root the imbalance
+    does not excite shows no such maximum. A peak found but left unresolved whose nearest root
+    is this one is the same resonance, its refinement stalled: the seed ``replaces`` it when it
+    refines to a larger peak. The seed's speed, node and case: the projected model's largest
+    orbit there."""
     solver = solver_for(model)
     free = model.dofs.free
     if basis is not None:
@@ -247,11 +262,20 @@ def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) 
     n = np.arange(model.dofs.n_shaft_nodes)
     rows = np.stack([local[model.dofs.shaft(n, "v")], local[model.dofs.shaft(n, "w")]])  # (2, nodes)
     inputs = V.conj().T @ np.asarray(loads, dtype=complex)[free]  # (r, cases)
+
+    def orbits_at(grid: np.ndarray) -> np.ndarray:
+        """The projected model's shaft orbits (nodes, cases, speeds) [m]."""
+        Z = np.tensordot(solver.term_weights(grid, grid), terms, axes=1)  # (speeds, r, r)
+        y = np.linalg.solve(Z, np.broadcast_to(inputs, (grid.size, *inputs.shape)))  # (speeds, r, cases)
+        q = np.einsum("nr,src->ncs", V, y * (grid * grid)[:, None, None])
+        q = np.concatenate([q, np.zeros((1, *q.shape[1:]))])  # row -1: a fixed DOF's zero
+        return orbit_amplitude(q[rows[0]], q[rows[1]])
+
     out: list[_Seed] = []
     for root in roots:
-        speed, width = float(root.real), abs(float(root.imag))
+        speed, width = float(root.real), max(abs(float(root.imag)), 1e-9 * float(root.real))
         j = int(np.clip(np.searchsorted(speeds, speed) - 1, 0, spacing.size - 1))
-        if width >= spacing[j]:  # its band holds a sample: the scan shows it
+        if width >= _SHOWN_SAMPLES * spacing[j]:
             continue
         replaces = None
         nearest = min(found, key=lambda c: abs(c.speed - speed), default=None)
@@ -260,23 +284,21 @@ def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) 
                 replaces = nearest
         # a peak found holds it: within its band, or within a sample of an undamped one (those
         # are reported at the scan sample nearest their root)
-        if replaces is None and any(
-            abs(speed - c.speed) <= max(3.0 * width, _bandwidth(c), _near_sample(c, spacing[j])) for c in found
-        ):
+        if replaces is None and any(abs(speed - c.speed) <= max(width, _near_sample(c, spacing[j])) for c in found):
             continue
-        if any(abs(speed - s.speed) <= 3.0 * width for s in out):
+        if any(abs(speed - s.speed) <= width for s in out):
             continue
-        Z = np.tensordot(solver.term_weights([speed], [speed])[0], terms, axes=1)
+        grid = speed + width * _AROUND_ROOT
         try:
-            q = V @ np.linalg.solve(Z, inputs * speed * speed)  # (n_free, cases)
+            orbit = orbits_at(grid)
         except np.linalg.LinAlgError:
             continue
-        q = np.concatenate([q, np.zeros((1, q.shape[1]))])  # row -1: a fixed DOF's zero
-        orbit = orbit_amplitude(q[rows[0]], q[rows[1]])  # (nodes, cases)
-        if not np.all(np.isfinite(orbit)) or orbit.max() <= np.sqrt(2.0) * np.interp(speed, speeds, envelope):
+        level = orbit.max(axis=(0, 1))
+        k = int(np.argmax(level))
+        if not np.all(np.isfinite(level)) or k in (0, grid.size - 1):  # no maximum of its own there
             continue
-        node, case = np.unravel_index(int(np.argmax(orbit)), orbit.shape)
-        out.append(_Seed(speed, width, int(node), int(case), replaces))
+        node, case = np.unravel_index(int(np.argmax(orbit[:, :, k])), orbit.shape[:2])
+        out.append(_Seed(float(grid[k]), width, int(node), int(case), replaces))
     return out
 
 
@@ -380,7 +402,7 @@ def lateral_critical_speeds(
             if _peak_orbit(found) > _peak_orbit(seed.replaces):
                 out.remove(seed.replaces)
                 out.append(found)
-        elif not _known(found, out) and not any(abs(found.speed - c.speed) <= _bandwidth(c) for c in out):
+        elif not _known(found, out) and not any(_same_peak(found, c) for c in out):
             out.append(found)
     return label_critical_speeds(tuple(sorted(out, key=lambda c: c.speed)), campbell)
 

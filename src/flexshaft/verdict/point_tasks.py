@@ -27,7 +27,7 @@ from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.modal import default_basis_size
 from flexshaft.analyses.root_stability import RootStability, root_stability
 from flexshaft.analyses.shaft_buckling import ShaftBuckling, shaft_buckling
-from flexshaft.analyses.spinup_response import SpinupResponse, spinup_response
+from flexshaft.analyses.spinup_response import SpinupResponse, spinup_response, with_speeds
 from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.assembly import build_model
@@ -80,7 +80,9 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
     criticals = scan_critical_speeds(
         model, response.speeds, response.orbits, resolution.scan_top, responses=response.response, basis=response.basis
     )
-    return response, criticals
+    # the refined peaks as samples of the response: the actuators' orbit and force there too
+    peaks = [c.speed for c in criticals.criticals or () if np.isfinite(c.amplification_factor)]
+    return with_speeds(model, response, peaks), criticals
 
 
 def campbell_ceiling(model: Model, resolution: Resolution) -> float:
