@@ -4,16 +4,17 @@ References (derived in tests/test_damping.py and the module docstring of
 flexshaft.analyses.hysteretic_roots): on the Jeffcott-like rotor of tests/rotors.py, above the
 spin (and at rest) both whirls of the disk mode solve the same equation
 ``m s² + c_e s + k(1 + iη) = 0``: a double root whose eigenspace is the whole (v, w) plane of the
-disk. Inverse iteration from one start vector would return one vector twice there, so the two
-vectors must come out independent (the guard of ``_SEPARATED``). Below the spin the forward
-whirl's loss changes sign and the pair splits. Every returned pair (s, y) must satisfy its own
-branch's defining equation ``T(s) y = 0`` (a residual check, independent of how y was found).
+disk. The two vectors returned must span that plane: a repeated vector (what inverse iteration
+from one start gives two equal roots; ``_SEPARATED`` sends roots that close to the dense solve)
+would not. Below the spin the forward whirl's loss changes sign and the pair splits. Every
+returned pair (s, y) must satisfy its own branch's defining equation ``T(s) y = 0`` (a residual
+check, independent of how y was found).
 
 Tolerances: the model's disk root differs from the closed form by the tube's mass (7e-6 of the
-disk's) and the mesh, 1e-4 relative as in tests/test_damping.py. Independence: the two unit
-disk-plane vectors of a non-defective double root from the dense solve are a basis of the plane;
-the smallest singular value of their 2 x 2 matrix is O(1) for any such basis short of round-off
-parallelism (1e-16), which is what a repeated vector gives: 1e-6 separates the two. Residual:
+disk's) and the mesh, 1e-4 relative as in tests/test_damping.py. Independence: the ratio of the
+singular values of the two unit disk-plane vectors' 2 x 2 matrix is round-off (1e-16 times the
+conditioning) for a repeated vector and of order one for a basis of the plane (the whirls of the
+isotropic disk are orthogonal: about 1 here); 1e-6 separates the two. Residual:
 a dense solve's root errs by about ε‖A‖ (ε = 2.2e-16, ‖A‖ the largest entry of the first-order
 matrix: the tube's stiff modes), and inverse iteration leaves the vector's error at round-off,
 so ‖T(s) y‖ stays below 1e-9 ‖T(s)‖ with margin. Small model (8 elements, 12 modes): each
