@@ -37,7 +37,7 @@ from flexshaft.analyses.guards import (
     check_spin_speeds,
     require_finite,
 )
-from flexshaft.analyses.hysteretic_roots import consistent_roots, mode_root
+from flexshaft.analyses.hysteretic_roots import consistent_roots, lowest_roots, mode_root
 from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.assembly.model import Model
@@ -225,11 +225,17 @@ def track_modes(
     """
     speeds = np.asarray(speeds, dtype=float)
     hysteretic = refine_loss and viscous is None
+    # the first solve (no curves yet) reads the vectors of the tracked roots and of rest_degenerate's
+    # neighbours only (within 1e-4 of the refined roots; 1e-2 of the solve's is ample)
+    opening: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None
     if viscous is not None:
         solve = lambda speed: candidates(red, speed, viscous(speed))  # noqa: E731
     elif hysteretic:
+        if solve is None:
+            opening = lambda speed: lowest_roots(red, speed, n_modes, 100 * _NEIGHBOUR_WINDOW)  # noqa: E731
         solve = solve or (lambda speed: consistent_roots(red, speed))
     solve = solve or (lambda speed: candidates(red, speed))
+    opening = opening or solve
     labeler = ModalLabeler(model, red.Phi)
     eig = np.zeros((speeds.size, n_modes), dtype=complex)
     states: list[np.ndarray] = []
@@ -252,7 +258,7 @@ def track_modes(
             step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))
         untracked = None
         if step is None:
-            step, untracked = _match(red, solve, speed, prev, n_modes, hysteretic)
+            step, untracked = _match(red, opening if prev is None else solve, speed, prev, n_modes, hysteretic)
         s_k, Y_k = step
         if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
             first = np.lexsort((np.abs(s_k), s_k.imag))

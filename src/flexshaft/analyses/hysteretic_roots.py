@@ -71,6 +71,7 @@ __all__ = [
     "consistent_values",
     "consistent_values_below",
     "line_root",
+    "lowest_roots",
     "mode_root",
     "damped_modes",
 ]
@@ -187,19 +188,34 @@ def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray
         s = _branch_values(red, speed, parts[0].weights)
         s = s[on_branch(parts[0], s.imag, speed)]
         return s, np.zeros((red.size, s.size), complex)  # at rest no root is below the spin
-    lower, upper = parts
-    s_hi = _branch_values(red, speed, upper.weights)
+    return _consistent(red, speed, _solved_below(red, speed, *parts)[0])
+
+
+def _solved_below(red: ReducedModel, speed: float, lower: Branch, upper: Branch) -> tuple[list, np.ndarray]:
+    """The two branches' oscillatory roots as :func:`consistent_values_below` solves them,
+    ``[(lower, s, Y), (upper, s, Y)]`` for :func:`_consistent`: the lower branch with every
+    vector, the upper one with those of its roots below the spin only (zero columns else); and
+    every eigenvalue of the upper branch's matrix (oscillatory or not: how far its neighbours
+    lie, :func:`_upper_vectors`)."""
+    every = _branch_spectrum(red, speed, upper.weights)
+    s_hi = every[_oscillatory(every)]
     wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
     Y_hi = np.zeros((red.size, s_hi.size), complex)  # the pairing reads only the wrong side's
     Y_hi[:, wrong] = _null_vectors(red, speed, upper.weights, s_hi[wrong])
     if not np.isfinite(Y_hi).all():  # an inverse iteration failed: every vector from the dense solve
         s_hi, Y_hi = branch_roots(red, speed, upper.weights)
-    return _consistent(red, speed, [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)])
+        every = s_hi
+    return [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)], every
+
+
+def _branch_spectrum(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:
+    """Every eigenvalue of one branch's first-order matrix [rad/s], without vectors."""
+    return la.eigvals(branch_state_matrix(red, speed, weights), check_finite=False, overwrite_a=True)
 
 
 def _branch_values(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:
     """The roots of :func:`branch_roots` without their vectors [rad/s]."""
-    lam = la.eigvals(branch_state_matrix(red, speed, weights), check_finite=False, overwrite_a=True)
+    lam = _branch_spectrum(red, speed, weights)
     return lam[_oscillatory(lam)]
 
 
@@ -397,6 +413,65 @@ def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tu
     return s, Y
 
 
+#: Smallest distance, relative to |s|, from a root to every other eigenvalue of its branch's
+#: matrix for the root's vector to be found by inverse iteration (:func:`_separated_vectors`).
+#: Two steps leave a neighbour's share at about (e/g)², e the dense solve's relative error of the
+#: root and g this gap, where the dense solve's own vector errs by about e/g; either start is
+#: refined by Newton's method wherever a root is (:func:`_polish`, the tracking's). Closer
+#: neighbours (a double root: the two whirls of an axisymmetric rotor without gyroscopic split,
+#: for which inverse iteration from one start would return one vector twice) take their vectors
+#: from the dense solve.
+_SEPARATED = 1e-6
+
+
+def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """R(Ω) of :func:`consistent_roots` with the vectors solved only where they are read: ``(s,
+    Y)`` sorted by |s|, unit modal coordinates for the ``n_modes`` of
+    :func:`~flexshaft.analyses.eigen.lowest_modes` and for the roots within ``window`` (relative
+    to |s|) of one of them, zero columns for the others.
+
+    Each branch's matrix is solved without its vectors except where :func:`_consistent` pairs
+    on-line roots (the lower branch of two, :func:`_solved_below`); the roots wanted get theirs
+    by inverse iteration (:func:`_separated_vectors`). Where that cannot be trusted (a
+    neighbour within :data:`_SEPARATED`), :func:`consistent_roots` as it is.
+    """
+    parts = branches(red, speed)
+    if red.has_loss:
+        if len(parts) == 2:
+            solved, every = _solved_below(red, speed, *parts)
+            s, Y = _consistent(red, speed, solved)
+        else:
+            every = _branch_spectrum(red, speed, parts[0].weights)
+            s = every[_oscillatory(every)]
+            s = s[on_branch(parts[0], s.imag, speed)]
+            Y = np.zeros((red.size, s.size), complex)
+        wanted = lowest_modes(s, n_modes)
+        near = np.abs(s[:, None] - s[None, wanted]) <= window * np.abs(s[None, wanted])
+        needed = np.zeros(s.size, bool)
+        needed[wanted] = True
+        needed |= near.any(axis=1)
+        missing = np.flatnonzero(needed & ~np.any(Y, axis=0))  # roots of the last branch (above the spin)
+        vectors = _separated_vectors(red, speed, parts[-1].weights, every, s[missing])
+        if vectors is not None:
+            Y[:, missing] = vectors
+            return s, Y
+    return consistent_roots(red, speed)
+
+
+def _separated_vectors(
+    red: ReducedModel, speed: float, weights: LossCoefficients, every: np.ndarray, roots: np.ndarray
+) -> np.ndarray | None:
+    """Unit modal coordinates of ``roots``, eigenvalues of one branch's matrix (``every``: all of
+    them), by :func:`_null_vectors`; None when a root lies within :data:`_SEPARATED` of another
+    eigenvalue or an inverse iteration failed."""
+    for s in roots:
+        gaps = np.sort(np.abs(every - s))  # the root itself first (the same number)
+        if gaps.size > 1 and gaps[1] <= _SEPARATED * abs(s):
+            return None
+    vectors = _null_vectors(red, speed, weights, roots)
+    return vectors if np.isfinite(vectors).all() else None
+
+
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
     """The ``n_modes`` lowest damped modes at one speed, each at its own frequency.
 
@@ -411,7 +486,7 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     cannot diverge (:attr:`~flexshaft.analyses.eigen.ReducedModel.may_diverge` False: no real
     root s > 0 exists) skips that solve.
     """
-    out_s, out_y = consistent_roots(red, speed)
+    out_s, out_y = lowest_roots(red, speed, n_modes)
     wanted = lowest_modes(out_s, n_modes)
     out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
     if red.may_diverge:
