@@ -218,3 +218,37 @@ def test_the_actuator_is_judged_at_a_peak_between_the_samples():
     assert excursion.value == pytest.approx(peak, rel=1e-5)
     assert force.value == pytest.approx(abs(KI * (KP + 1j * speed * kd) - KS) * peak, rel=1e-5)
     assert excursion.location["speed"] == pytest.approx(speed, rel=1e-5)
+
+
+def _two_resonances(separation: float, zeta: float):
+    """The rotor of this file with its v resonance ``separation`` above the w one and both
+    dashpots at ``zeta``; and the closed form's local maxima of the orbit (a grid of 2e5 speeds
+    over 0.9-1.1 ω_n: 3e-4 rad/s apart)."""
+    kv = ((1 + separation) ** 2 - 1) * K_SHAFT
+    cv, cw = 2 * zeta * np.sqrt((K_SHAFT + kv) * M_DISK), 2 * zeta * np.sqrt(K_SHAFT * M_DISK)
+    text = jeffcott_text(0.0, 0.0).replace("speed_rpm = 0.0", f"speed_rpm = {rad_s_to_rpm(1.2 * WN)}")
+    text = text.replace("stiffness = {}", f"stiffness = {{ v = {kv} }}")
+    text = text.replace("damping = { v = 0.0, w = 0.0 }", f"damping = {{ v = {cv}, w = {cw} }}")
+    model = build_model(loads_design(text + f"\n[loads]\neccentricity = {ECCENTRICITY}\n"))
+    s = np.linspace(0.9 * WN, 1.1 * WN, 200001)
+    force = M_DISK * ECCENTRICITY * s**2
+    a = force / (K_SHAFT + kv - M_DISK * s**2 + 1j * cv * s)
+    b = -1j * force / (K_SHAFT - M_DISK * s**2 + 1j * cw * s)
+    orbit = np.sqrt((abs(a) ** 2 + abs(b) ** 2 + abs(a * a + b * b)) / 2)
+    maxima = np.flatnonzero((orbit[1:-1] > orbit[:-2]) & (orbit[1:-1] >= orbit[2:])) + 1
+    return model, s[maxima]
+
+
+@pytest.mark.parametrize("n_points", [21, 31, 61])
+def test_two_resonances_sampled_as_one_bump_are_both_found(n_points):
+    """Two resonances 3 % apart, ζ = 0.005 each (bands of 3 rad/s, 9 rad/s apart), scanned at
+    14-36 rad/s: the samples show one bump. Both local maxima of the closed-form orbit are
+    critical speeds, at its speeds to a 20th of the bandwidth (the refinement's resolution);
+    before the synchronous roots seeded the search, each of these scans found one of them."""
+    zeta = 0.005
+    model, expected = _two_resonances(0.03, zeta)
+    assert expected.size == 2
+    found = [
+        c.speed for c in lateral_critical_speeds(model, top=1.3, n_points=n_points) if 0.9 * WN < c.speed < 1.1 * WN
+    ]
+    assert np.allclose(found, expected, rtol=0, atol=2 * zeta * WN / 20)
