@@ -200,6 +200,23 @@ def _same_peak(a: LateralCritical, b: LateralCritical) -> bool:
     return abs(a.speed - b.speed) <= max(_bandwidth(a), _bandwidth(b)) / 20.0
 
 
+def _envelope_peak(model: Model, loads: np.ndarray, critical: LateralCritical) -> bool:
+    """A seeded peak, refined on one node's orbit, is a maximum of the envelope too (the largest
+    orbit over the shaft's nodes and the load cases, which defines a critical speed): full
+    solves a quarter of its bandwidth to either side are not above it there. A root the
+    imbalance barely excites can make a bump at a node where the envelope, set by another
+    node, only rises. An undamped peak (its response singular) is kept."""
+    if not np.isfinite(critical.amplification_factor):
+        return True
+    step = max(_bandwidth(critical) / 4.0, 1e-9 * critical.speed)
+    speeds = critical.speed + np.array([-step, 0.0, step])
+    try:
+        envelope = _shaft_orbits(model, imbalance_response(model, speeds, loads)).max(axis=(0, 1))
+    except SingularSystemError:
+        return True
+    return bool(envelope[1] >= envelope[[0, 2]].max())
+
+
 def _near_sample(critical: LateralCritical, spacing: float) -> float:
     """How far an undamped peak, reported at the scan sample nearest its root, may lie from
     that root [rad/s]: a scan spacing (0 for a damped peak)."""
@@ -396,7 +413,7 @@ def lateral_critical_speeds(
             found = _refine(model, response, curve_speeds, curve, seed.speed, seed.node)
         else:  # an undamped resonance the scan stepped over
             found = _singular(seed.speed, float(model.dofs.shaft_x[seed.node]))
-        if found is None:
+        if found is None or not _envelope_peak(model, loads, found):
             continue
         if seed.replaces is not None:  # a better refinement of a peak left unresolved
             if _peak_orbit(found) > _peak_orbit(seed.replaces):
