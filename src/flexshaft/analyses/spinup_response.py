@@ -37,7 +37,8 @@ class SpinupResponse:
     Attributes
     ----------
     speeds : ndarray
-        Spin speeds Ω [rad/s] (n_speeds,).
+        Spin speeds Ω [rad/s] (n_speeds,), increasing; an assessment's are its resolution's scan
+        and each refined lateral critical speed (:func:`with_speeds`).
     response : ndarray
         Complex amplitudes (ndof, n_cases, n_speeds) [m, rad] of every load case.
     orbits : ndarray
