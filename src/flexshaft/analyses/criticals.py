@@ -8,10 +8,11 @@ station where it is largest until its half-power bandwidth is resolved
 spacing can fall between two samples, or share one bump with a broader neighbour whose
 refinement follows the broader one: the roots of the synchronous problem on the scan's projected
 model (:mod:`flexshaft.analyses.synchronous_roots`) say where each resonance is and how wide; one
-whose band holds no sample, whose projected orbit stands above the scan there and that no peak
-found holds is refined from samples across its band (:func:`_hidden_resonances`), so that the
-critical speeds and the spin-up's largest orbit do not depend on where the scan's samples fall
-(tests/test_hidden_resonances.py). :func:`scan_critical_speeds` reuses a scan
+whose band spans fewer than four of the scan's intervals, that no peak found holds and around
+which the projected envelope has a maximum of its own is refined from samples across its band
+(:func:`_hidden_resonances`) and kept when full solves show it a maximum of the envelope, so that
+the critical speeds and the spin-up's largest orbit do not depend on where the scan's samples
+fall (tests/test_hidden_resonances.py). :func:`scan_critical_speeds` reuses a scan
 already computed (the spin-up response of an assessment) and says why there is none when the
 response cannot be scanned; :func:`label_critical_speeds` names the Campbell mode of each peak.
 """
