@@ -186,6 +186,8 @@ def whirl_damping(ev: Evidence, req: Requirements) -> Check:
         _at_least(m.log_decrement, limit, {"mode": m.label, "frequency": m.frequency}) for m in ev.modes_at_operating
     ]
     note = "lateral modes with ≥ 10 % of their kinetic energy in the shaft, at the operating speed"
+    if ev.whirl_modes_top is not None:
+        note += f", to {ev.whirl_modes_top / (2 * math.pi):.3g} Hz (the resolution's lowest modes; none above is held)"
     if req.min_damping_ratio is not None:
         note += f"; damping ratio ≥ {req.min_damping_ratio:g} as a log decrement"
     return _from_findings(*args, findings, note)

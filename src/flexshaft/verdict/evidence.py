@@ -159,6 +159,9 @@ class Evidence:
         onset is then at or below it).
     modes_at_operating : tuple of ModeDamping or None
         The lateral whirl modes at the operating speed (shaft share at least 10 %).
+    whirl_modes_top : float or None
+        Frequency of the highest lateral whirl mode computed at the operating speed [rad/s]
+        (whatever its shaft share): the whirl-damping check holds no mode above it.
     critical_speeds : tuple of LateralCritical or None
         Lateral critical speeds (peaks of the unbalance response) with their AF.
     critical_search_max_speed : float or None
@@ -196,6 +199,7 @@ class Evidence:
     onset_speed: float | None = None
     onset_location: Location = field(default_factory=dict)
     modes_at_operating: tuple[ModeDamping, ...] | None = None
+    whirl_modes_top: float | None = None
     critical_speeds: tuple[LateralCritical, ...] | None = None
     critical_search_max_speed: float | None = None
     actuators: tuple[ActuatorEvidence, ...] = ()

@@ -78,6 +78,14 @@ def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     return tuple(out)
 
 
+def _whirl_modes_top(p: PointAnalyses) -> float | None:
+    """Frequency [rad/s] of the highest lateral whirl mode computed at the operating speed,
+    whatever its shaft share (None without one): where the whirl-damping check's scope ends."""
+    m = p.modes_at_speed
+    frequencies = np.abs(m.eigenvalues.imag)[whirl_modes(m) & (m.eigenvalues.imag > 0)]
+    return float(frequencies.max()) if frequencies.size else None
+
+
 def _strength(p: PointAnalyses, notes: dict) -> dict:
     results = [r for r in (p.strength_static, p.strength_total) if r is not None]
     if not results:
@@ -191,7 +199,11 @@ def _whirl(p: PointAnalyses) -> dict:
     """The lowest onset of the tracked modes (an oscillatory mode or a divergence) and of the
     every-root check, whichever is lower."""
     st = p.stability
-    out = {"stability_max_speed": float(st.speeds[-1]), "modes_at_operating": _modes_at_operating(p)}
+    out = {
+        "stability_max_speed": float(st.speeds[-1]),
+        "modes_at_operating": _modes_at_operating(p),
+        "whirl_modes_top": _whirl_modes_top(p),
+    }
     location: dict[str, Any]
     onset, location = None, {}
     if st.onset_speed is not None:
