@@ -24,7 +24,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-import scipy.linalg
 
 from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.campbell import Campbell
@@ -251,7 +250,7 @@ def _seed_samples(seed: _Seed) -> np.ndarray:
     return centre + np.array([-4.0, -2.0, -1.0, 0.0, 1.0, 2.0, 4.0]) * step
 
 
-def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) -> list[_Seed]:
+def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | None) -> list[_Seed]:
     """Each resonance the scan may have stepped over: a root Ω_k of the projected synchronous
     problem (:func:`~flexshaft.analyses.synchronous_roots.synchronous_roots`, on the scan's
     reduced basis, else on its responses) that no peak ``found`` holds (none within its
@@ -264,18 +263,11 @@ def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) 
     is this one is the same resonance, its refinement stalled: the seed ``replaces`` it when it
     refines to a larger peak. The seed's speed, node and case: the projected model's largest
     orbit there."""
+    if span is None or speeds.size < 2:
+        return []
     solver = solver_for(model)
     free = model.dofs.free
-    if basis is not None:
-        columns = np.asarray(basis, dtype=complex)
-    elif responses is not None:
-        columns = _response_columns(np.asarray(responses, dtype=complex)[free], np.asarray(loads)[free])
-    else:
-        return []
-    V = _orthonormal(columns)
-    if V.shape[1] == 0 or speeds.size < 2:
-        return []
-    terms = solver.project(V[None])[0]
+    V, terms = span.basis, span.terms
     roots = synchronous_roots(solver, terms, float(speeds[0]), float(speeds[-1]))
     spacing = np.diff(speeds)
     local = np.full(model.dofs.size, -1, dtype=np.intp)
@@ -323,6 +315,24 @@ def _hidden_resonances(model, loads, speeds, envelope, found, basis, responses) 
     return out
 
 
+def _seed_span(model: Model, loads, start: PeakBasis | None, basis, responses) -> PeakBasis | None:
+    """The projected model the synchronous roots are solved on: the scan's reduced basis (the
+    peaks' own :class:`PeakBasis` when they start from it), else the span of its responses
+    (:func:`_response_columns`); None without either."""
+    if start is not None:
+        return start
+    free = model.dofs.free
+    if basis is not None:
+        columns = np.asarray(basis, dtype=complex)
+    elif responses is not None:
+        columns = _response_columns(np.asarray(responses, dtype=complex)[free], np.asarray(loads)[free])
+    else:
+        return None
+    if not np.any(columns):  # no imbalance: nothing to excite a resonance
+        return None
+    return PeakBasis(model, columns, rank_tolerance=_SEED_RANK)
+
+
 def _response_columns(q: np.ndarray, loads: np.ndarray) -> np.ndarray:
     """Columns spanning the scan's responses q (n_free, cases, speeds) at fewer cost: the
     responses to the loads' independent directions (q L⁺: a ``worst`` placement's 16 cases are
@@ -335,18 +345,6 @@ def _response_columns(q: np.ndarray, loads: np.ndarray) -> np.ndarray:
     q = np.einsum("ncs,ck->nks", q, vh[keep].conj().T / sigma[keep])
     step = max(1, -(-q.shape[2] // _SEED_SPEEDS))
     return q[:, :, ::step].reshape(q.shape[0], -1)
-
-
-def _orthonormal(columns: np.ndarray) -> np.ndarray:
-    """An orthonormal basis of the span of ``columns`` (each normalised first), directions below
-    :data:`_SEED_RANK` of the largest dropped."""
-    norms = np.linalg.norm(columns, axis=0)
-    columns = columns[:, norms > 0] / norms[norms > 0]
-    if columns.shape[1] == 0:
-        return columns
-    Q, R, _ = scipy.linalg.qr(columns, mode="economic", pivoting=True, check_finite=False)
-    diag = np.abs(np.diag(R))
-    return Q[:, : int(np.count_nonzero(diag > _SEED_RANK * diag[0]))]
 
 
 def lateral_critical_speeds(
@@ -416,7 +414,9 @@ def lateral_critical_speeds(
         found = _refine(model, response, speeds, orbits[node, case], rough.speed, int(node))
         if found is not None and not _known(found, out):
             out.append(found)
-    for seed in _hidden_resonances(model, loads, speeds, envelope, out, basis, responses):
+    for seed in _hidden_resonances(
+        model, loads, speeds, envelope, out, _seed_span(model, loads, start, basis, responses)
+    ):
         k = int(np.clip(np.searchsorted(speeds, seed.speed), 1, speeds.size - 1))
         response = _orbit_function(model, loads, seed.node, seed.case, speeds, k, projected, start, responses)
         new = _seed_samples(seed)

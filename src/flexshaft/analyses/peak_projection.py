@@ -162,20 +162,23 @@ class PeakBasis:
     speed of a scan), orthonormalised and projected once: ``columns`` (n_free, r) on the free
     DOFs, e.g. the spin-up scan's reduced basis (:mod:`flexshaft.analyses.sweep_projection`)."""
 
-    def __init__(self, model: Model, columns: np.ndarray) -> None:
+    def __init__(self, model: Model, columns: np.ndarray, rank_tolerance: float = _RANK_TOLERANCE) -> None:
         self.columns = list(np.asarray(columns, dtype=complex).T)
-        self.basis, self.terms = _projection(solver_for(model), self.columns)
+        self.basis, self.terms = _projection(solver_for(model), self.columns, rank_tolerance)
 
 
-def _projection(solver: BandedHarmonicSolver, columns: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """An orthonormal basis V of the span of ``columns`` and the projected terms Vᴴ T_k V
-    (n_terms, r, r) of the solver's Z."""
+def _projection(
+    solver: BandedHarmonicSolver, columns: list[np.ndarray], rank_tolerance: float = _RANK_TOLERANCE
+) -> tuple[np.ndarray, np.ndarray]:
+    """An orthonormal basis V of the span of ``columns`` (each normalised first; directions whose
+    R-factor diagonal falls below ``rank_tolerance`` of the largest dropped) and the projected
+    terms Vᴴ T_k V (n_terms, r, r) of the solver's Z."""
     A = np.column_stack(columns)
     A = A / np.maximum(np.linalg.norm(A, axis=0), np.finfo(float).tiny)
     # pivoted: dropping a column of an unpivoted Q would drop its share of every later column
     Q, R, _ = scipy.linalg.qr(A, mode="economic", pivoting=True, check_finite=False)
     diag = np.abs(np.diag(R))
-    V = Q[:, : max(int(np.count_nonzero(diag > _RANK_TOLERANCE * diag[0])), 1)]
+    V = Q[:, : max(int(np.count_nonzero(diag > rank_tolerance * diag[0])), 1)]
     return V, solver.project(V[None])[0]
 
 
