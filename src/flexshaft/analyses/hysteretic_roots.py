@@ -165,20 +165,20 @@ def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
     """The eigenvalues R(Ω) of :func:`consistent_roots` alone [rad/s], sorted by |s|, for less
     than the cost of every eigenvector.
 
-    Each branch is solved without its vectors except where the pairing of on-line roots reads
-    them: the lower branch's roots above the line (most of them: that branch is solved with its
-    vectors) and the upper branch's roots below it (the modes below the spin: each vector by
-    inverse iteration on its second-order problem, :func:`_null_vectors`). A single branch (Ω = 0,
-    the fixed-frame loss) pairs nothing: one eigenvalue solve without vectors.
+    Each branch is solved without its vectors (:func:`_solved_below`); the pairing of on-line
+    roots reads those of the upper branch's roots below the line (the modes below the spin) and
+    of the lower branch's roots above it that may match one of them (:func:`_may_pair`), each
+    by inverse iteration on its second-order problem (:func:`_null_vectors`). A single branch
+    (Ω = 0, the fixed-frame loss) pairs nothing: one eigenvalue solve without vectors.
     """
     return consistent_values_below(red, speed)[0]
 
 
 def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.ndarray]:
     """:func:`consistent_values` with the unit modal coordinates (nb, k) of the roots below the
-    spin (Im s < Ω: the lower branch's and the on-line ones, which its pairing solves anyway);
-    the columns of the others may be zero. What the every-root check of a passive driveline
-    estimates the error of (:mod:`flexshaft.analyses.root_stability`)."""
+    spin (Im s < Ω: the lower branch's, by inverse iteration, and the on-line ones, which its
+    pairing solves anyway); the columns of the others may be zero. What the every-root check of
+    a passive driveline estimates the error of (:mod:`flexshaft.analyses.root_stability`)."""
     if not red.has_loss:
         return candidates(red, speed)
     parts = branches(red, speed)
@@ -193,10 +193,18 @@ def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray
 
 def _solved_below(red: ReducedModel, speed: float, lower: Branch, upper: Branch) -> tuple[list, np.ndarray]:
     """The two branches' oscillatory roots as :func:`consistent_values_below` solves them,
-    ``[(lower, s, Y), (upper, s, Y)]`` for :func:`_consistent`: the lower branch with every
-    vector, the upper one with those of its roots below the spin only (zero columns else); and
-    every eigenvalue of the upper branch's matrix (oscillatory or not: how far its neighbours
-    lie, :func:`_upper_vectors`)."""
+    ``[(lower, s, Y), (upper, s, Y)]`` for :func:`_consistent`, with the vectors it and the callers
+    read only (zero columns else); and every eigenvalue of the upper branch's matrix (oscillatory
+    or not: how far its neighbours lie, :func:`_separated_vectors`).
+
+    Both matrices are solved without vectors. The upper branch's roots below the spin (the wrong
+    side: read by the pairing) get theirs by inverse iteration (:func:`_null_vectors`); so do the
+    lower branch's roots on its own side (Im s <= Ω: in R(Ω), whose vectors every caller reads;
+    :func:`lowest_roots` fills only the upper branch's roots afterwards) and those of its roots
+    above the line that the pairing could match to one of the upper roots below it
+    (:func:`_may_pair`; none when there are no such upper roots). Where a lower root lies within
+    :data:`_SEPARATED` of a neighbour or an inverse iteration fails, the dense solve with every
+    vector (:func:`branch_roots`), branch by branch."""
     every = _branch_spectrum(red, speed, upper.weights)
     s_hi = every[_oscillatory(every)]
     wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
@@ -205,7 +213,62 @@ def _solved_below(red: ReducedModel, speed: float, lower: Branch, upper: Branch)
     if not np.isfinite(Y_hi).all():  # an inverse iteration failed: every vector from the dense solve
         s_hi, Y_hi = branch_roots(red, speed, upper.weights)
         every = s_hi
-    return [(lower, *branch_roots(red, speed, lower.weights)), (upper, s_hi, Y_hi)], every
+        wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
+    spectrum_lo = _branch_spectrum(red, speed, lower.weights)
+    s_lo = spectrum_lo[_oscillatory(spectrum_lo)]
+    read = on_branch(lower, s_lo.imag, speed)  # its own side (Im s > 0 by _oscillatory)
+    above = np.flatnonzero(~read & (s_lo.imag > speed))
+    if wrong.size and above.size:
+        read[above] = _may_pair(red, speed, lower.weights, s_lo[above], Y_hi[:, wrong])
+    Y_lo = np.zeros((red.size, s_lo.size), complex)
+    vectors = _separated_vectors(red, speed, lower.weights, spectrum_lo, s_lo[read])
+    if vectors is None:  # a close neighbour or a failed inverse iteration: the dense solve
+        s_lo, Y_lo = branch_roots(red, speed, lower.weights)
+    else:
+        Y_lo[:, read] = vectors
+    return [(lower, s_lo, Y_lo), (upper, s_hi, Y_hi)], every
+
+
+def _may_pair(
+    red: ReducedModel, speed: float, weights: LossCoefficients, roots: np.ndarray, Y: np.ndarray
+) -> np.ndarray:
+    """Which of ``roots`` (a branch's, weights ``weights``) may have a MAC of at least
+    :data:`SAME_MODE_MAC` with one of the unit vectors ``Y`` (columns): a bound, from the roots
+    alone, that excludes the others without their vectors.
+
+    Why a bound and not a window in |s|: in the modal coordinates (mass-normalised basis,
+    ``T(s) = s² I + s D + K``, K = Λ + the loss) the damping D of the bearing dampers couples the
+    modes strongly (a damper seen by every mode: ``|D_kl|`` up to ``√(D_kk D_ll)``; on the tuned
+    design a MAC of 0.11 between roots nearly three times apart in |s|), so no window in |s|
+    follows from the physics.
+    The bound: the unit null vector y of ``T(s)`` satisfies, row by row,
+    ``|T_kk| |y_k| = |Σ_{l≠k} T_kl y_l|``, so ``|y_k| <= u_k`` for ``u_k = min(1, ‖E_k‖₂/|T_kk|)``
+    (E = T off its diagonal, ``|E_kl| <= |s| |D_kl| + |K_kl|``) and, with |y| <= u componentwise,
+    ``|y_k| <= (|E| u)_k / |T_kk|`` again (a few such steps); then ``|yᴴ v| <= Σ_k u_k |v_k|``.
+    A root is excluded when that bound's square is below half of :data:`SAME_MODE_MAC` for
+    every column: it can then match none, and, its MAC being below the threshold, it is neither
+    the best match of a column nor a pair of :func:`_consistent`'s, so the pairs found from the
+    other roots' vectors are those from every vector. The factor of two covers a dense solve's
+    vector that mixes two nearly double roots (each within its own bound) and the round-off of
+    the roots. With an actuator channel that adds to T(s) (not bounded here), every root may
+    pair. Cost: a few products of (roots, nb) by (nb, nb), 0.1-0.15 ms for the tuned design's
+    ~50 roots above the line, which keeps 15-25 of them."""
+    if any(a.law is not None or a.stiffness or a.damping for a in red.actuators):
+        return np.ones(roots.size, bool)
+    damping, stiffness = red._speed_parts(speed, weights)
+    off_d = np.abs(damping)
+    np.fill_diagonal(off_d, 0.0)
+    off_k = np.abs(stiffness)
+    np.fill_diagonal(off_k, 0.0)
+    s = roots[:, None]
+    diagonal = np.abs(s * s + s * np.diag(damping) + np.diag(stiffness))  # |T_kk(s)| (roots, nb)
+    size = np.abs(s)
+    with np.errstate(divide="ignore", invalid="ignore"):  # T_kk = 0: the bound stays 1
+        u = np.fmin(1.0, (size * np.linalg.norm(off_d, axis=1) + np.linalg.norm(off_k, axis=1)) / diagonal)
+        for _ in range(3):
+            u = np.fmin(u, (size * (u @ off_d.T) + u @ off_k.T) / diagonal)
+    bound = u @ np.abs(Y)
+    return np.any(bound**2 >= 0.5 * SAME_MODE_MAC, axis=1)
 
 
 def _branch_spectrum(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:
@@ -430,10 +493,10 @@ def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 
     :func:`~flexshaft.analyses.eigen.lowest_modes` and for the roots within ``window`` (relative
     to |s|) of one of them, zero columns for the others.
 
-    Each branch's matrix is solved without its vectors except where :func:`_consistent` pairs
-    on-line roots (the lower branch of two, :func:`_solved_below`); the roots wanted get theirs
-    by inverse iteration (:func:`_separated_vectors`). Where that cannot be trusted (a
-    neighbour within :data:`_SEPARATED`), :func:`consistent_roots` as it is.
+    Each branch's matrix is solved without its vectors (:func:`_solved_below`: of two, the lower
+    branch's roots below the spin and those :func:`_consistent` may pair get theirs there); the
+    upper roots wanted get theirs by inverse iteration (:func:`_separated_vectors`). Where that
+    cannot be trusted (a neighbour within :data:`_SEPARATED`), :func:`consistent_roots` as it is.
     """
     parts = branches(red, speed)
     if red.has_loss:
