@@ -174,11 +174,14 @@ def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
     return consistent_values_below(red, speed)[0]
 
 
-def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`consistent_values` with the unit modal coordinates (nb, k) of the roots below the
-    spin (Im s < Ω: the lower branch's, by inverse iteration, and the on-line ones, which its
-    pairing solves anyway); the columns of the others may be zero. What the every-root check of
-    a passive driveline estimates the error of (:mod:`flexshaft.analyses.root_stability`)."""
+def consistent_values_below(red: ReducedModel, speed: float, up_to: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`consistent_values` with the unit modal coordinates (nb, k) of the roots below
+    ``up_to`` times the spin (Im s < up_to Ω, up_to >= 1: the lower branch's, by inverse
+    iteration, the on-line ones, which its pairing solves anyway, and the upper branch's roots in
+    the band Ω <= Im s < up_to Ω, by inverse iteration); the columns of the others may be zero.
+    What the every-root check of a passive driveline estimates the error of
+    (:mod:`flexshaft.analyses.root_stability`: the roots below the spin and a 1 % band above
+    it)."""
     if not red.has_loss:
         return candidates(red, speed)
     parts = branches(red, speed)
@@ -188,17 +191,22 @@ def consistent_values_below(red: ReducedModel, speed: float) -> tuple[np.ndarray
         s = _branch_values(red, speed, parts[0].weights)
         s = s[on_branch(parts[0], s.imag, speed)]
         return s, np.zeros((red.size, s.size), complex)  # at rest no root is below the spin
-    return _consistent(red, speed, _solved_below(red, speed, *parts)[0])
+    lower, upper = parts
+    return _consistent(red, speed, _solved_below(red, speed, lower, upper, up_to=up_to)[0])
 
 
-def _solved_below(red: ReducedModel, speed: float, lower: Branch, upper: Branch) -> tuple[list, np.ndarray]:
+def _solved_below(
+    red: ReducedModel, speed: float, lower: Branch, upper: Branch, up_to: float = 1.0
+) -> tuple[list, np.ndarray]:
     """The two branches' oscillatory roots as :func:`consistent_values_below` solves them,
     ``[(lower, s, Y), (upper, s, Y)]`` for :func:`_consistent`, with the vectors it and the callers
     read only (zero columns else); and every eigenvalue of the upper branch's matrix (oscillatory
     or not: how far its neighbours lie, :func:`_separated_vectors`).
 
     Both matrices are solved without vectors. The upper branch's roots below the spin (the wrong
-    side: read by the pairing) get theirs by inverse iteration (:func:`_null_vectors`); so do the
+    side: read by the pairing) and those on its own side below ``up_to`` Ω (the caller's band above
+    the spin, :func:`consistent_values_below`) get theirs by inverse iteration
+    (:func:`_null_vectors`); so do the
     lower branch's roots on its own side (Im s <= Ω: in R(Ω), whose vectors every caller reads;
     :func:`lowest_roots` fills only the upper branch's roots afterwards) and those of its roots
     above the line that the pairing could match to one of the upper roots below it
@@ -208,8 +216,11 @@ def _solved_below(red: ReducedModel, speed: float, lower: Branch, upper: Branch)
     every = _branch_spectrum(red, speed, upper.weights)
     s_hi = every[_oscillatory(every)]
     wrong = np.flatnonzero(~on_branch(upper, s_hi.imag, speed) & (s_hi.imag < speed))
-    Y_hi = np.zeros((red.size, s_hi.size), complex)  # the pairing reads only the wrong side's
-    Y_hi[:, wrong] = _null_vectors(red, speed, upper.weights, s_hi[wrong])
+    # the pairing reads only the wrong side's; the caller, those of its band above the spin too
+    band = on_branch(upper, s_hi.imag, speed) & (s_hi.imag < up_to * speed)
+    read_hi = np.union1d(wrong, np.flatnonzero(band))
+    Y_hi = np.zeros((red.size, s_hi.size), complex)
+    Y_hi[:, read_hi] = _null_vectors(red, speed, upper.weights, s_hi[read_hi])
     if not np.isfinite(Y_hi).all():  # an inverse iteration failed: every vector from the dense solve
         s_hi, Y_hi = branch_roots(red, speed, upper.weights)
         every = s_hi

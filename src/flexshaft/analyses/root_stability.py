@@ -499,10 +499,15 @@ def _passive_bases(model: Model, modes: ReducedModel, top_speed: float) -> list[
     return out or [(min(n_free, largest), 0)]
 
 
+#: The roots of a passive driveline judged at a speed: those below the spin and within this
+#: factor above it (a root the basis error could move across the spin).
+_JUDGED_BAND = 1.01
+
+
 def _judged(s: np.ndarray, speed: float) -> np.ndarray:
     """The roots of a passive driveline that can be unstable at ``speed``: below the spin (a
-    1 % band above it included, for a root the basis error could move across)."""
-    return np.flatnonzero(s.imag < 1.01 * speed)
+    1 % band above it included, :data:`_JUDGED_BAND`)."""
+    return np.flatnonzero(s.imag < _JUDGED_BAND * speed)
 
 
 def _passive_roots(
@@ -525,7 +530,7 @@ def _passive_roots(
         roots: dict[float, np.ndarray] = {}
         worst = 0.0
         for speed in order:
-            s, Y = consistent_values_below(red, speed)
+            s, Y = consistent_values_below(red, speed, _JUDGED_BAND)  # the judged roots' vectors
             judged = _judged(s, speed)
             if judged.size and size < n_free:
                 errors = eigenvalue_errors(red, speed, s[judged], Y[:, judged])
