@@ -63,8 +63,10 @@ def test_the_size_estimate_counts_what_the_run_computes(report_assessment):
     assert size.n_speeds == _scan_speeds(a) and a.spinup.speeds.size == a.spinup.response.shape[2]
     assert size.campbell_speeds == a.campbell.speeds.size
     assert size.whirl_speeds == a.stability.speeds.size
-    # (at the operating speed as many more as it takes to hold n_modes lateral whirl modes)
-    assert size.n_modes == a.modes_at_rest.eigenvalues.size == (a.modes_at_speed.kind == "lateral").sum()
+    # at the operating speed as many more as it takes to hold n_modes lateral whirl modes and
+    # every mode below the whirl-damping check's scope (the onset requirement's speed, 92 Hz on
+    # the tuned design: 14 lateral modes; tests/test_whirl_damping_frequency_scope_reference.py)
+    assert size.n_modes == a.modes_at_rest.eigenvalues.size <= (a.modes_at_speed.kind == "lateral").sum()
     assert size.dofs == a.model.dofs.size and size.free_dofs == a.model.dofs.free.size
     assert size.load_cases == a.spinup.response.shape[1]
 

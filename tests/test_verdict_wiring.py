@@ -111,11 +111,14 @@ def test_the_onset_is_the_lowest_unstable_speed_of_both_checks(tracked, every_ro
     """The onset is the lowest speed with an unstable root: the tracked modes' (600 rad/s) or the
     every-root check's, whichever is lower. The whirl damping counts the mode with a 50 % shaft
     share, not the one with 5 % (below the 10 % of WHIRL_DAMPING_SHAFT_SHARE)."""
-    p = NS(stability=_stability(tracked), roots=_roots(every_root), modes_at_speed=_modes())
+    # the model's speed and design set the scope's frequency (no design: the onset margin is 0)
+    model = NS(design=None, speed=300.0)
+    p = NS(stability=_stability(tracked), roots=_roots(every_root), modes_at_speed=_modes(), model=model)
     out = gather._whirl(p)
     assert out["onset_speed"] == onset
     assert ("root" in out["onset_location"]["mode"]) == (every_root < tracked)
     assert out["modes_at_operating"] == (ModeDamping("1 (forward, shaft)", 100.0, 0.063),)
+    assert out["whirl_scope"] == 300.0
 
 
 def test_actuator_peaks_are_up_to_the_operating_speed_each_at_its_own_speed():

@@ -168,7 +168,9 @@ class ProblemSize:
     campbell_speeds, whirl_speeds : int
         Speeds of its Campbell diagram and whirl stability (0 for ``"model"``).
     n_modes : int
-        Modes of its modal analyses.
+        Modes of its modal analyses (at the operating speed a few more where the whirl-damping
+        check's scope, every lateral mode below the onset requirement's speed, reaches past
+        them: not counted).
     dense_basis : bool
         Whether the modal basis is a dense eigen-solve.
     memory : dict of str to float

@@ -187,7 +187,10 @@ def whirl_damping(ev: Evidence, req: Requirements) -> Check:
     ]
     note = "lateral modes with ≥ 10 % of their kinetic energy in the shaft, at the operating speed"
     if ev.whirl_modes_top is not None:
-        note += f", to {ev.whirl_modes_top / (2 * math.pi):.3g} Hz (the resolution's lowest modes; none above is held)"
+        held = "the resolution's lowest modes"
+        if ev.whirl_scope:  # every one below the onset requirement's speed, and the count
+            held = f"every one below {ev.whirl_scope / (2 * math.pi):.3g} Hz and at least the resolution's lowest"
+        note += f", to {ev.whirl_modes_top / (2 * math.pi):.3g} Hz ({held}; none above is held)"
     if req.min_damping_ratio is not None:
         note += f"; damping ratio ≥ {req.min_damping_ratio:g} as a log decrement"
     return _from_findings(*args, findings, note)

@@ -162,6 +162,9 @@ class Evidence:
     whirl_modes_top : float or None
         Frequency of the highest lateral whirl mode computed at the operating speed [rad/s]
         (whatever its shaft share): the whirl-damping check holds no mode above it.
+    whirl_scope : float or None
+        Damped frequency [rad/s] below which every lateral mode at the operating speed is held
+        (:func:`~flexshaft.verdict.operating_point.whirl_scope`).
     critical_speeds : tuple of LateralCritical or None
         Lateral critical speeds (peaks of the unbalance response) with their AF.
     critical_search_max_speed : float or None
@@ -200,6 +203,7 @@ class Evidence:
     onset_location: Location = field(default_factory=dict)
     modes_at_operating: tuple[ModeDamping, ...] | None = None
     whirl_modes_top: float | None = None
+    whirl_scope: float | None = None
     critical_speeds: tuple[LateralCritical, ...] | None = None
     critical_search_max_speed: float | None = None
     actuators: tuple[ActuatorEvidence, ...] = ()

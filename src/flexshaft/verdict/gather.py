@@ -26,7 +26,7 @@ from flexshaft.verdict.evidence import (
     ModeDamping,
     TorsionalEvidence,
 )
-from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes
+from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes, whirl_scope
 
 __all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence"]
 
@@ -203,6 +203,7 @@ def _whirl(p: PointAnalyses) -> dict:
         "stability_max_speed": float(st.speeds[-1]),
         "modes_at_operating": _modes_at_operating(p),
         "whirl_modes_top": _whirl_modes_top(p),
+        "whirl_scope": whirl_scope(p.model),
     }
     location: dict[str, Any]
     onset, location = None, {}
