@@ -49,6 +49,8 @@ import numpy as np
 from flexshaft.analyses.bearing_loops import BearingLoop
 from flexshaft.analyses.campbell import Campbell
 from flexshaft.analyses.criticals import CriticalSpeeds
+from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO
+from flexshaft.analyses.loop_grid import natural_frequencies
 from flexshaft.analyses.metal_strength import MetalStrength, metal_strength
 from flexshaft.analyses.misalignment import CouplingMisalignment, coupling_misalignment
 from flexshaft.analyses.modal import Modes, modes
@@ -380,7 +382,7 @@ def lateral_modes(model: Model, speed: float, n_lateral: int, up_to: float = 0.0
     (``error_estimate``, below the modal analyses' tolerance) of the full model's, whatever the
     number of modes solved."""
     n_free = model.dofs.free.size
-    n = min(int(n_lateral) + _FIRST_EXTRA, n_free)
+    n = min(max(int(n_lateral) + _FIRST_EXTRA, _modes_below(model, up_to)), n_free)
     found = modes(model, speed, n)
     for _ in range(6):
         missing = n_lateral - int(np.sum(whirl_modes(found)))
@@ -396,6 +398,18 @@ def lateral_modes(model: Model, speed: float, n_lateral: int, up_to: float = 0.0
         return found
     below = int(np.sum(found.eigenvalues.imag < up_to))  # a prefix: the modes are in that order
     return _first_modes(found, max(int(np.searchsorted(count, n_lateral)) + 1, below))
+
+
+def _modes_below(model: Model, up_to: float) -> int:
+    """How many modes one solve takes to reach ``up_to`` [rad/s]: the undamped natural frequencies
+    at rest (of K + K_a, M: read off the model's whole spectrum, which its modal bases compute
+    anyway, :func:`~flexshaft.analyses.loop_grid.natural_frequencies`) below 1.1 × it, plus two
+    (the damping and the spin move them; :func:`lateral_modes` solves again if they fall short).
+    Above :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs, where no
+    whole spectrum is computed, 0: the solves extend until they reach it."""
+    if not up_to > 0 or model.dofs.free.size > WHOLE_DENSE_BASIS_UP_TO:
+        return 0
+    return int(natural_frequencies(model, 0.0, 1.1 * up_to).size) + 2
 
 
 def _first_modes(found: Modes, k: int) -> Modes:
