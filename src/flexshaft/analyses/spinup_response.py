@@ -136,13 +136,16 @@ def with_speeds(model: Model, response: SpinupResponse, speeds) -> SpinupRespons
     if not extra.size:
         return response
     loads = imbalance_loads(model)
-    solved, kept = [], []
-    for speed in extra:
-        try:
-            solved.append(np.asarray(imbalance_response(model, [speed], loads)))
-        except SingularSystemError:  # an undamped resonance: reported by the critical speeds
-            continue
-        kept.append(speed)
+    try:  # one sweep; speed by speed only when one of them is singular, to skip it
+        solved, kept = [np.asarray(imbalance_response(model, extra, loads))], list(extra)
+    except SingularSystemError:
+        solved, kept = [], []
+        for speed in extra:
+            try:
+                solved.append(np.asarray(imbalance_response(model, [speed], loads)))
+            except SingularSystemError:  # an undamped resonance: reported by the critical speeds
+                continue
+            kept.append(speed)
     if not kept:
         return response
     every = np.concatenate([response.speeds, kept])
