@@ -5,7 +5,7 @@ Was: the check held the ``modes`` lowest lateral modes at the operating speed (1
 resolution), which on the tuned design stop at 48.6 Hz of its 80 Hz: the forward whirl modes
 between, slower than the spin, where the rotating damping destabilises them, were not held.
 Now it holds, besides the count, every lateral mode below (1 + ``min_onset_margin``) × the
-operating speed (:func:`flexshaft.verdict.operating_point.whirl_scope`).
+operating speed (:func:`flexshaft.verdict.point_tasks.required_onset_speed`).
 
 Reference (closed form): a uniform steel tube pinned at both ends, no disk, no material loss, with
 one isotropic dashpot at midspan (c = 250 N s/m). Its bending modes are ω_k = (kπ/L)² √(EI/ρA)

@@ -164,7 +164,7 @@ class Evidence:
         (whatever its shaft share): the whirl-damping check holds no mode above it.
     whirl_scope : float or None
         Damped frequency [rad/s] below which every lateral mode at the operating speed is held
-        (:func:`~flexshaft.verdict.operating_point.whirl_scope`).
+        (:func:`~flexshaft.verdict.point_tasks.required_onset_speed`).
     critical_speeds : tuple of LateralCritical or None
         Lateral critical speeds (peaks of the unbalance response) with their AF.
     critical_search_max_speed : float or None

@@ -26,7 +26,8 @@ from flexshaft.verdict.evidence import (
     ModeDamping,
     TorsionalEvidence,
 )
-from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes, whirl_scope
+from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes
+from flexshaft.verdict.point_tasks import required_onset_speed
 
 __all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence"]
 
@@ -203,7 +204,7 @@ def _whirl(p: PointAnalyses) -> dict:
         "stability_max_speed": float(st.speeds[-1]),
         "modes_at_operating": _modes_at_operating(p),
         "whirl_modes_top": _whirl_modes_top(p),
-        "whirl_scope": whirl_scope(p.model),
+        "whirl_scope": required_onset_speed(p.model),
     }
     location: dict[str, Any]
     onset, location = None, {}

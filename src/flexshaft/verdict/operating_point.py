@@ -80,7 +80,13 @@ from flexshaft.thermal.options import matrix_law_from
 from flexshaft.thermal.residual import residual_ply_stresses
 from flexshaft.thermal.study import ThermalResults
 from flexshaft.units import celsius_to_kelvin
-from flexshaft.verdict.point_tasks import campbell_task, independent_tasks, report_buckling, report_thermal
+from flexshaft.verdict.point_tasks import (
+    campbell_task,
+    independent_tasks,
+    report_buckling,
+    report_thermal,
+    required_onset_speed,
+)
 
 __all__ = [
     "OVERDAMPED_RATIO",
@@ -237,7 +243,7 @@ def analyse_point(
     own = independent_tasks(design, model, resolution, executor, detail=detail)
     step("natural frequencies")
     at_rest = modes(model, 0.0, resolution.modes) if detail else None
-    at_speed = lateral_modes(model, speed, resolution.modes, up_to=whirl_scope(model))
+    at_speed = lateral_modes(model, speed, resolution.modes, up_to=required_onset_speed(model))
     notes: list[str] = []
     step("torsional dynamics")
     torsion, separation, response = _torsional(model, notes)
@@ -356,17 +362,6 @@ def whirl_modes(found: Modes) -> np.ndarray:
 #: torsional mode of a driveline with a free twist lies among its lowest ten (the tuned and
 #: current designs); one solve of n + 1 modes then costs less than one of n and another of n + 1.
 _FIRST_EXTRA = 1
-
-
-def whirl_scope(model: Model) -> float:
-    """The damped frequency [rad/s] below which the whirl-damping check holds every lateral mode
-    at the operating speed: the speed the whirl-onset requirement asks the design to reach,
-    (1 + ``min_onset_margin``) × the operating speed (:func:`~flexshaft.verdict.point_tasks.root_speeds`'s
-    highest). Below it lie the forward whirl modes that the rotating (internal) damping
-    destabilises, those slower than the spin; a count of the lowest modes alone can stop short of
-    them (the tuned design's ten lowest lateral modes reach 48.6 Hz of its 80 Hz)."""
-    margin = model.design.requirements.min_onset_margin if model.design is not None else 0.0
-    return (1.0 + margin) * float(model.speed)
 
 
 def lateral_modes(model: Model, speed: float, n_lateral: int, up_to: float = 0.0) -> Modes:

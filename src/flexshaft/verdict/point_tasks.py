@@ -44,6 +44,7 @@ __all__ = [
     "independent_tasks",
     "report_buckling",
     "report_thermal",
+    "required_onset_speed",
     "root_speeds",
 ]
 
@@ -139,11 +140,21 @@ def _stability(source: Model | Design, resolution: Resolution) -> StabilityResul
     return stability(model, resolution.stability_speeds(model.speed), n_modes=resolution.modes)
 
 
-def root_speeds(model: Model) -> np.ndarray:
-    """Speeds of the every-root check [rad/s]: rest, the operating speed and (1 + the required
-    onset margin) × it (the design's ``[requirements]``)."""
+def required_onset_speed(model: Model) -> float:
+    """The speed the whirl-onset requirement asks the design to reach [rad/s]: (1 + the required
+    onset margin) × the operating speed (the design's ``[requirements]``; no design: the
+    operating speed). The every-root check solves there (:func:`root_speeds`), and the
+    whirl-damping check holds every lateral mode below it (the forward whirls slower than the
+    spin are the ones the rotating damping destabilises;
+    :func:`~flexshaft.verdict.operating_point.lateral_modes`)."""
     margin = model.design.requirements.min_onset_margin if model.design is not None else 0.0
-    return np.unique([0.0, model.speed, (1.0 + margin) * model.speed])
+    return (1.0 + margin) * float(model.speed)
+
+
+def root_speeds(model: Model) -> np.ndarray:
+    """Speeds of the every-root check [rad/s]: rest, the operating speed and
+    :func:`required_onset_speed`."""
+    return np.unique([0.0, model.speed, required_onset_speed(model)])
 
 
 def _roots_and_loops(
