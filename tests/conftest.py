@@ -110,15 +110,16 @@ GC_THRESHOLDS = (10_000, 10, 10)
 
 
 def _collect_garbage_less_often() -> None:
-    """Start the garbage collector's young collection every 10,000 allocations instead of 700,
-    so that its full collections, each walking every object of the process, are some 100
-    times rarer: in a test process, not in flexshaft's.
+    """Start the garbage collector's young collection every 10,000 net allocations of tracked
+    objects instead of 700, so that its full collections, each walking every object of the
+    process, are rarer (4 or 5 a worker over the suite instead of 30 to 43): in a test process,
+    not in flexshaft's.
 
     A test process holds 300,000 objects once the suite is collected (235 test modules,
     hypothesis, playwright, pytest's own) and 420,000 to 620,000 by its end; with Python's
     defaults (700, 10, 10) each of the 30 to 43 full collections a worker makes walks them all,
     and they cost 3.2 to 5.0 s of CPU a worker, 8 to 10 s of the suite's, all charged to whatever
-    test allocated last. With these thresholds they cost 0.3 to 0.9 s (``gc.callbacks``, the
+    test allocated last. With these thresholds the full collections cost 0.3 to 0.9 s a worker (``gc.callbacks``, the
     whole suite on two workers, 2026-12-05: 2.6 s in all against 9.9 s). flexshaft's own
     processes hold some 60,000 objects: a screening assessment spends 0.2 ms of its 0.37 s in
     the collector, so the CLI keeps Python's defaults, and the commands the suite starts as
