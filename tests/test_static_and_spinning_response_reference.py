@@ -8,8 +8,8 @@ at the disk (k_i = 100 N/A, k_s = 2e5 N/m).
 1. PD law i = −(k_p + k_d s) d, sensor at the magnet. Statically s = 0, so the magnet adds
    k_i k_p − k_s to the disk's stiffness: a force F at the disk deflects it by
    F/(k + k_i k_p − k_s) (derived; the tube's stiffness condenses exactly onto the disk). The
-   beam element is exact for a point load (cubic shape functions), so the only error is
-   round-off of the stiffness, κ ε ≈ 1e-13: tolerance 1e-10.
+   Euler-Bernoulli beam element (the default) is exact for point loads (cubic shape
+   functions), so the only error is round-off, κ ε ≈ 1e-13: tolerance 1e-10.
 
 2. PID law, sensor 0.125 m beside the magnet. In static equilibrium the integrator holds the
    sensed displacement at zero. With F at the disk, both the load and the magnet's force act at
