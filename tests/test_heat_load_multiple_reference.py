@@ -17,6 +17,7 @@ linear solve and a quadratic form). CPU: two responses, a few milliseconds.
 from __future__ import annotations
 
 import pytest
+from test_shaft_heat_whirl_reference import lossy_tube
 
 from flexshaft.assembly import build_model
 from flexshaft.design import design_from_dict
@@ -25,24 +26,8 @@ from flexshaft.thermal.heat import heat_sources, shaft_response_amplitudes
 
 @pytest.fixture(scope="module")
 def model():
-    data = {
-        "name": "lossy tube under load",
-        "materials": {"al": {"kind": "isotropic", "E": 70e9, "G": 26e9, "density": 2700.0, "loss_factor": 0.02}},
-        "shaft": {
-            "x_start": 0.0,
-            "x_end": 2.0,
-            "outer_diameter": 0.05,
-            "wall_thickness": 0.002,
-            "material": "al",
-            "fixed_start": ["u", "v", "w", "theta"],
-            "fixed_end": ["v", "w"],
-        },
-        "bearings": [{"name": "far", "kind": "contact", "x": 2.0, "stiffness": {"u": 0.0}}],
-        "operating": {"speed_rpm": 3000.0, "power": 0.0},
-        "loads": {"eccentricity": 1e-4, "load_factor": [0.0, 1.0, 0.5]},
-        "mesh": {"shaft_elements": 6},
-    }
-    return build_model(design_from_dict(data))
+    loads = {"eccentricity": 1e-4, "load_factor": [0.0, 1.0, 0.5]}
+    return build_model(design_from_dict(lossy_tube(loads)))
 
 
 @pytest.mark.parametrize("loss_model", ["thesis", "rotating"])

@@ -38,7 +38,9 @@ def magnet_gains(turns, area, i0, gap, alpha=0.0):
     return 4 * k * i0 / gap**2, 4 * k * i0**2 / gap**3
 
 
-def design(do, wall, length, elements, active_keys):
+def design(do, wall, length, elements, active_keys, hanger_v=1e5):
+    """The tube's design text: a contact hanger (v stiffness ``hanger_v`` [N/m]) at its start, an
+    active bearing of ``active_keys`` at its end (also tests/test_support_limit_law_reference.py)."""
     return f"""
 name = "magnet geometry support limit"
 [materials.steel]
@@ -57,7 +59,7 @@ fixed_start = ["u", "v", "w", "theta"]
 name = "hanger"
 kind = "contact"
 x = 0.0
-stiffness = {{ v = 1e5, w = 1e5 }}
+stiffness = {{ v = {hanger_v!r}, w = 1e5 }}
 [[bearings]]
 name = "amb"
 kind = "active"

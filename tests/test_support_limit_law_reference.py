@@ -23,58 +23,27 @@ CPU: six model builds of a 2-element tube, about 0.1 s.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
+from test_magnet_geometry_support_limit import RIGID_RATIO, element_limit
+from test_magnet_geometry_support_limit import design as tube_text
 
 from flexshaft.assembly import build_model
 from flexshaft.assembly.checks import element_stiffness
 from flexshaft.design import DesignError, loads_design
 
-RIGID_RATIO = 1e8  # the documented limit, in element stiffnesses
-E, DO, WALL, LENGTH, ELEMENTS = 210e9, 0.02, 0.001, 2.0, 2
+TUBE = (0.02, 0.001, 2.0, 2)  # outer diameter, wall, length [m], elements: E I/h³ = 567 N/m
 
 
 def design(hanger_v: float, active_keys: str):
-    return loads_design(f"""
-name = "support limit edges"
-[materials.steel]
-kind = "isotropic"
-E = {E!r}
-G = 80e9
-density = 7800.0
-[shaft]
-x_start = 0.0
-x_end = {LENGTH!r}
-outer_diameter = {DO!r}
-wall_thickness = {WALL!r}
-material = "steel"
-fixed_start = ["u", "v", "w", "theta"]
-[[bearings]]
-name = "hanger"
-kind = "contact"
-x = 0.0
-stiffness = {{ v = {hanger_v!r}, w = 1e5 }}
-[[bearings]]
-name = "amb"
-kind = "active"
-x = {LENGTH!r}
-{active_keys}
-[operating]
-speed_rpm = 0.0
-power = 0.0
-[mesh]
-shaft_elements = {ELEMENTS}
-""")
-
-
-PD = "kp = 1e5\nkd = 0.0"
+    return loads_design(tube_text(*TUBE, active_keys, hanger_v=hanger_v))
 
 
 def closed_form_limit() -> float:
-    di = DO - 2 * WALL
-    return RIGID_RATIO * E * math.pi * (DO**4 - di**4) / 64 / (LENGTH / ELEMENTS) ** 3
+    return element_limit(*TUBE)
+
+
+PD = "kp = 1e5\nkd = 0.0"
 
 
 def test_a_support_at_the_limit_is_allowed_and_above_it_refused():
