@@ -105,7 +105,7 @@ def main(argv: list[str] | None = None) -> int:
     from flexshaft.report.driveline import write_run_report
 
     with tempfile.TemporaryDirectory() as folder:  # warm-up: imports, font cache, first figures
-        write_run_report(res, folder, generated=GENERATED)
+        write_run_report(res[0], folder, generated=GENERATED, thesis=res[1])
     configs = [
         ("serial, PNG", 1, False),
         (f"{args.processes} processes, PNG", args.processes, False),

@@ -20,8 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler, degenerate_groups
+from flexshaft.analyses.continuation import mode_roots, newton_many
 from flexshaft.analyses.datasets import curves_dataset
-from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes, newton
+from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes
 from flexshaft.analyses.eigen_error import (
     EIGENVALUE_TOLERANCE,
     accuracy_text,
@@ -333,15 +334,13 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     else:
         predicted = eig[k - 1]
     Y_prev = states[k - 1]
-    s_k = np.empty(n_modes, complex)
-    Y_k = np.empty_like(Y_prev)
-    for m in range(n_modes):
-        if viscous is None:
-            s_k[m], Y_k[:, m], converged = mode_root(red, speed, predicted[m], Y_prev[:, m])
-        else:
-            s_k[m], Y_k[:, m], converged = newton(red, speed, predicted[m], Y_prev[:, m], viscous=viscous)
-        if not converged or abs(np.vdot(Y_prev[:, m], Y_k[:, m])) ** 2 < _CONTINUATION_MAC:
-            return None
+    if viscous is None:
+        s_k, Y_k, converged = mode_roots(red, speed, predicted[:n_modes], Y_prev[:, :n_modes])
+    else:
+        s_k, Y_k, converged = newton_many(red, speed, predicted[:n_modes], Y_prev[:, :n_modes], viscous=viscous)
+    macs = np.abs(np.einsum("ij,ij->j", Y_prev[:, :n_modes].conj(), Y_k)) ** 2
+    if not np.all(converged) or np.any(macs < _CONTINUATION_MAC):
+        return None
     gaps = np.abs(s_k[:, None] - s_k[None, :])
     np.fill_diagonal(gaps, np.inf)
     if np.any(gaps < 1e-7 * np.abs(s_k)[:, None]):
@@ -373,10 +372,8 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
         idx = assignment(cost)
     s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
     if hysteretic:  # Newton polishes the dense eigen-solve's root (a fold: the less stable root)
-        for m in range(n_modes):
-            root, vec, found = mode_root(red, speed, s_k[m], Y_k[:, m])
-            if found:
-                s_k[m], Y_k[:, m] = root, vec
+        roots, vecs, found = mode_roots(red, speed, s_k, Y_k)
+        s_k[found], Y_k[:, found] = roots[found], vecs[:, found]
     return (s_k, Y_k), untracked
 
 
