@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from flexshaft.analyses.eigen import _MAX_ITER, _TOL, ReducedModel, newton, viscous_model
+from flexshaft.analyses.eigen import NEWTON_MAX_STEPS, NEWTON_TOLERANCE, ReducedModel, newton, viscous_model
 from flexshaft.analyses.hysteretic_roots import SAME_MODE_MAC, branches, mode_root, on_branch
 from flexshaft.analyses.loss import LossCoefficients
 
@@ -45,7 +45,7 @@ def newton_many(
     Y: np.ndarray,
     weights: LossCoefficients | None = None,
     viscous: LossCoefficients | None = None,
-    tol: float = _TOL,
+    tol: float = NEWTON_TOLERANCE,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`~flexshaft.analyses.eigen.newton` from each ``(s[k], Y[:, k])`` on one problem:
     the branch ``weights`` (held fixed) or the ``viscous`` model's. Returns ``(s, Y,
@@ -68,7 +68,7 @@ def newton_many(
     damping, stiffness = red._speed_parts(float(speed), loss)
     nb = red.size
     active = np.arange(m)
-    for _ in range(_MAX_ITER):
+    for _ in range(NEWTON_MAX_STEPS):
         sa, ya = s[active], Y[:, active]
         T = damping[None, :, :] * sa[:, None, None]
         T += stiffness

@@ -76,6 +76,8 @@ __all__ = [
     "candidates",
     "divergent_roots",
     "newton",
+    "NEWTON_MAX_STEPS",
+    "NEWTON_TOLERANCE",
     "viscous_model",
     "lowest_modes",
 ]
@@ -84,8 +86,10 @@ __all__ = [
 DIVERGENCE_TOLERANCE = 1e-6
 #: Relative convergence of the refined eigenvalue (|Δs| / |s|; a damping ratio of 1e-4 is
 #: then resolved to 1e-6 of itself).
-_TOL = 1e-10
-_MAX_ITER = 30
+NEWTON_TOLERANCE = 1e-10
+#: Most Newton steps of :func:`newton` (and of its batched form,
+#: :func:`flexshaft.analyses.continuation.newton_many`) before it gives up.
+NEWTON_MAX_STEPS = 30
 _NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
 #: Shift −σ of the modal basis's shift-invert [rad²/s²]: below the spectrum of K + K_a >= 0 (the
 #: model's cached whole spectrum, :func:`~flexshaft.analyses.dense_spectrum.dense_spectrum`, is
@@ -509,7 +513,7 @@ def newton(
     speed: float,
     s: complex,
     y: np.ndarray,
-    tol: float = _TOL,
+    tol: float = NEWTON_TOLERANCE,
     viscous: LossCoefficients | None = None,
     weights: LossCoefficients | None = None,
 ) -> tuple[complex, np.ndarray, bool]:
@@ -538,7 +542,7 @@ def newton(
             weights = eigen_coefficients(red.internal_damping, omega, speed)
         loss = weights
     y = _unit(np.asarray(y, dtype=complex))
-    for _ in range(_MAX_ITER):
+    for _ in range(NEWTON_MAX_STEPS):
         T, dTy = red.newton_terms(s, speed, loss, y)
         if extra is not None:
             T += extra
