@@ -19,6 +19,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from pathlib import Path
 
 from bench_util import machine_info
 
@@ -53,7 +54,15 @@ def measure(args: list[str], folder: str, index: int) -> dict:
     command = [sys.executable, "-c", "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"]
     command += args + (["--out", f"out{index}"] if args[0] in OUTPUT else [])
     start = time.perf_counter()
-    process = subprocess.Popen(command, cwd=folder, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    # the children run in a temporary folder: a relative PYTHONPATH (``src``) would not reach the
+    # checkout measured, so they get this process's flexshaft by its absolute path
+    import flexshaft
+
+    source = str(Path(flexshaft.__file__).resolve().parents[1])
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([source, *filter(None, [os.environ.get("PYTHONPATH")])]))
+    process = subprocess.Popen(
+        command, cwd=folder, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True
+    )
     _, status, usage = os.wait4(process.pid, 0)
     wall = time.perf_counter() - start
     stderr = process.stderr.read()
