@@ -20,9 +20,11 @@ are exactly the complement's static flexibility ``Ψ(ΨᵀK_σΨ)⁻¹Ψᵀ`` ap
 
 .. math:: δ ≈ \frac{2\, r_l^T u − v^T T(s)\, u}{z^T T_r'(s)\, y}.
 
-What is neglected: the second Neumann term, relative size ``(|s|/ω_c)⁴`` with ω_c the lowest
-frequency of the complement (above every basis frequency), and the quadratic term of the
-expansion in δ, relative size |δ|/gap. Both are small when the basis reaches well above the
+What is neglected: the second Neumann term, relative size ``((|s|/ω_c)² + η)²`` with ω_c the
+lowest frequency of the complement (above every basis frequency) and η the loss factor (the
+complement's loss stiffness is η of its stiffness, not small with a lossy member: 2-3 % of the
+correction at η = 0.2, tests/test_eigen_error_rotating_loss_reference.py), and the quadratic
+term of the expansion in δ, relative size |δ|/gap. Both are small when the basis reaches well above the
 modes tracked, which is what makes the estimate trustworthy: it is an estimate of the error
 (tests/test_eigen_accuracy.py checks it within a factor 3 of the true error against full dense
 eigensolutions), not a rigorous bound. ``|δ|/|s|`` is reported as the relative eigenvalue error.
