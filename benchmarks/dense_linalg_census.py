@@ -1,12 +1,15 @@
 """Dense linear algebra of one screening point (issue 30): each call site's calls and CPU.
 
 Wraps the dense solvers of ``scipy.linalg`` and ``numpy.linalg`` (eig, eigvals, eigh, solve,
-lu_factor, qr, svd, ...), the band solver ``lapack.zgbsv`` of :mod:`flexshaft.analyses.banded`
-and the LU of the Newton steps (``eigen._gesv``), runs one warm
+lu_factor, qr, svd, ...; the batched Newton steps' ``numpy.linalg.solve``), the band solver
+``lapack.zgbsv`` and its ``zgbtrs`` of :mod:`flexshaft.analyses.banded`, the LU of the scalar
+Newton steps (``eigen._gesv``), the inverse iterations' ``lapack.zgetrf``/``zgetrs``
+(:mod:`flexshaft.analyses.hysteretic_roots`) and the shaft's thermal ``solve_banded`` (bound at
+import in :mod:`flexshaft.thermal.shaft`, wrapped there), runs one warm
 ``flexshaft.assess(tuned design without its envelope, SCREENING)`` and prints, by call site
 (the flexshaft line that called), the calls, their CPU, and the shapes and dtypes met. The
-wrappers see the module attributes at call time, so a solver bound at import (``from
-scipy.linalg import eig``) is missed: none on this path at the time of writing. One BLAS thread.
+wrappers see the module attributes at call time, so a solver bound at import elsewhere (``from
+scipy.linalg import eig``) is missed. One BLAS thread.
 
     PYTHONPATH=src .venv/bin/python benchmarks/dense_linalg_census.py
 """
@@ -36,6 +39,7 @@ def main() -> None:
     import flexshaft as fs
     import flexshaft.analyses.banded as banded
     import flexshaft.analyses.eigen as eigen
+    import flexshaft.thermal.shaft as thermal_shaft
     from flexshaft.design.io import tuned_design
 
     one = tuned_design().model_copy(update={"envelope": None})
@@ -66,7 +70,11 @@ def main() -> None:
     for name in NUMPY:
         wrap(np.linalg, name, f"numpy.linalg.{name}")
     wrap(banded.lapack, "zgbsv", "lapack.zgbsv")
+    wrap(banded.lapack, "zgbtrs", "lapack.zgbtrs")
+    wrap(la.lapack, "zgetrf", "lapack.zgetrf")
+    wrap(la.lapack, "zgetrs", "lapack.zgetrs")
     wrap(eigen, "_gesv", "lapack.zgesv (Newton)")
+    wrap(thermal_shaft, "solve_banded", "scipy.linalg.solve_banded (bound at import)")
     t = time.process_time()
     fs.assess(one, fs.SCREENING)
     total = time.process_time() - t
