@@ -19,7 +19,9 @@ Ply (:class:`flexshaft.design.materials.Lamina`):
 
 Metal (:class:`flexshaft.design.materials.Isotropic`): ν = E/(2G) − 1 must stay below 0.5 (the
 shell formulas divide by 1 − 2ν): E = 3e9, G = 1e9 gives ν = 0.5 exactly (both in binary),
-refused; G = 1.01e9 accepted.
+refused; G = 1.01e9 accepted. A yield or fatigue strength above the ultimate strength is refused
+(the fatigue strength of a part at its design life is at most its static ultimate strength);
+equal is accepted.
 
 Active bearing (:class:`flexshaft.design.bearings`):
 
@@ -32,6 +34,10 @@ Active bearing (:class:`flexshaft.design.bearings`):
 * **Magnet geometry.** ``coil_turns`` alone asks for the geometry, which then lacks
   ``bias_current``, ``air_gap``, ``pole_area``: refused (not silently the ideal magnet).
 
+Contact bearing and mount (docstrings of the bearing classes): a direction omitted from
+``stiffness`` or ``damping`` is free (0); the damping of a direction is the ``damping`` table's,
+not its stiffness; the boom station is ``x_boom`` when given, else ``x``.
+
 Written for the h26a-materials-* and h26a-bearings-* mutations of scripts/mutations.toml. Only
 schema objects, no model: a few ms. Comparisons of a few operations on numbers of order 1 to 1e7:
 relative 1e-12.
@@ -43,7 +49,7 @@ import math
 
 import pytest
 
-from flexshaft.design.bearings import ActiveBearing, Controller
+from flexshaft.design.bearings import ActiveBearing, ContactBearing, Controller
 from flexshaft.design.materials import Isotropic, Lamina
 
 X_T, X_C, Y_T, Y_C = 2.0e9, 1.0e9, 40.0e6, 140.0e6
@@ -128,3 +134,23 @@ def test_a_biproper_controller_with_a_leading_zero_is_proper():
 def test_coil_turns_alone_asks_for_the_rest_of_the_magnet():
     with pytest.raises(ValueError, match="bias_current"):
         ActiveBearing(kind="active", name="amb", x=0.5, kp=1.0e5, coil_turns=100.0)
+
+
+@pytest.mark.parametrize("name", ["yield_strength", "fatigue_strength"])
+def test_metal_strengths_above_the_ultimate_are_refused(name):
+    metal = {"kind": "isotropic", "E": 200.0e9, "G": 80.0e9, "density": 7800.0, "ultimate_strength": 500.0e6}
+    Isotropic(**metal, **{name: 500.0e6})
+    with pytest.raises(ValueError, match=name):
+        Isotropic(**metal, **{name: 600.0e6})
+
+
+def test_contact_bearing_directions_and_boom_station():
+    bearing = ContactBearing(
+        kind="contact", name="hanger", x=0.5, stiffness={"v": 1.0e8, "w": 2.0e8}, damping={"v": 300.0}
+    )
+    assert [bearing.stiffness_of(d) for d in ("u", "v", "w")] == [0.0, 1.0e8, 2.0e8]
+    assert [bearing.damping_of(d) for d in ("u", "v", "w")] == [0.0, 300.0, 0.0]
+    assert bearing.boom_x == 0.5
+    mounted = ContactBearing(kind="contact", name="hanger", x=0.5, x_boom=0.7, stiffness={"v": 1.0e8})
+    assert mounted.boom_x == 0.7
+    assert mounted.damping_of("v") == 0.0
