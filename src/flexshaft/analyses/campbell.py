@@ -335,10 +335,10 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
         predicted = eig[k - 1]
     Y_prev = states[k - 1]
     if viscous is None:
-        s_k, Y_k, converged = mode_roots(red, speed, predicted[:n_modes], Y_prev[:, :n_modes])
+        s_k, Y_k, converged = mode_roots(red, speed, predicted, Y_prev)
     else:
-        s_k, Y_k, converged = newton_many(red, speed, predicted[:n_modes], Y_prev[:, :n_modes], viscous=viscous)
-    macs = np.abs(np.einsum("ij,ij->j", Y_prev[:, :n_modes].conj(), Y_k)) ** 2
+        s_k, Y_k, converged = newton_many(red, speed, predicted, Y_prev, viscous=viscous)
+    macs = np.abs(np.einsum("ij,ij->j", Y_prev.conj(), Y_k)) ** 2
     if not np.all(converged) or np.any(macs < _CONTINUATION_MAC):
         return None
     gaps = np.abs(s_k[:, None] - s_k[None, :])

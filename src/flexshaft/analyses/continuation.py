@@ -30,7 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.analyses.eigen import NEWTON_MAX_STEPS, NEWTON_TOLERANCE, ReducedModel, newton, viscous_model
-from flexshaft.analyses.hysteretic_roots import SAME_MODE_MAC, branches, mode_root, on_branch
+from flexshaft.analyses.hysteretic_roots import SAME_MODE_MAC, branch_distance, branches, mode_root, on_branch
 from flexshaft.analyses.loss import LossCoefficients
 
 __all__ = ["mode_roots", "newton_many"]
@@ -90,8 +90,8 @@ def newton_many(
         try:
             u = np.linalg.solve(T, dTy.T[:, :, None])[:, :, 0].T
         except np.linalg.LinAlgError:  # some step hit an eigenvalue exactly: each mode alone
+            w = None if viscous is not None else weights
             for j, k in enumerate(active):
-                w = None if viscous is not None else weights
                 s[k], Y[:, k], converged[k] = newton(given, speed, sa[j], ya[:, j], tol, viscous=viscous, weights=w)
             return s, Y, converged
         denominator = np.einsum("ij,ij->j", ya.conj(), u)
@@ -124,7 +124,6 @@ def mode_roots(
     if len(parts) == 2:
         first[~on_branch(parts[0], s0.imag, speed)] = 1
     out_s, out_Y, found = s0.copy(), Y0.copy(), np.zeros(s0.size, dtype=bool)
-    taken = np.zeros(s0.size, dtype=bool)
     for b, branch in enumerate(parts):
         idx = np.flatnonzero(first == b)
         if not idx.size:
@@ -137,16 +136,10 @@ def mode_roots(
         if len(parts) == 1:
             keep = own
         else:
-            other = parts[1 - b].weights
-            delta = (
-                (other.fixed - branch.weights.fixed) * (red.F @ vecs)
-                + (other.lateral - branch.weights.lateral) * (red.L @ vecs)
-                + (other.circulatory - branch.weights.circulatory) * (red.S @ vecs)
-            )
-            distance = np.abs(np.einsum("ij,ij->j", vecs.conj(), delta)) / (2 * np.abs(roots))
+            distance = branch_distance(red, branch.weights, parts[1 - b].weights, roots, vecs)
             keep = own & (np.abs(roots.imag - speed) > 10 * distance)
         out_s[idx[keep]], out_Y[:, idx[keep]] = roots[keep], vecs[:, keep]
-        found[idx[keep]] = taken[idx[keep]] = True
-    for k in np.flatnonzero(~taken):  # near the line, or no consistent root: the mode alone
+        found[idx[keep]] = True
+    for k in np.flatnonzero(~found):  # near the line, or no consistent root: the mode alone
         out_s[k], out_Y[:, k], found[k] = mode_root(red, speed, complex(s0[k]), Y0[:, k])
     return out_s, out_Y, found

@@ -63,6 +63,7 @@ from flexshaft.analyses.loss import SYNCHRONOUS_TOLERANCE, LossCoefficients, fre
 
 __all__ = [
     "Branch",
+    "branch_distance",
     "branches",
     "on_branch",
     "branch_state_matrix",
@@ -422,13 +423,8 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
         same = converged and abs(np.vdot(y, vec)) ** 2 >= SAME_MODE_MAC * np.vdot(y, y).real
         found.append((branch, root, vec, same))
         if i == 0 and len(parts) == 2 and same and on_branch(branch, root.imag, speed):
-            other = parts[1].weights
-            delta = (
-                (other.fixed - branch.weights.fixed) * (red.F @ vec)
-                + (other.lateral - branch.weights.lateral) * (red.L @ vec)
-                + (other.circulatory - branch.weights.circulatory) * (red.S @ vec)
-            )
-            if abs(root.imag - speed) > 10 * abs(np.vdot(vec, delta)) / (2 * abs(root)):
+            distance = branch_distance(red, branch.weights, parts[1].weights, np.array([root]), vec[:, None])[0]
+            if abs(root.imag - speed) > 10 * distance:
                 return root, vec, True
     if len(found) == 2:  # near the line: a branch whose Newton reached another mode gets its exact roots
         found = [f if f[3] else _branch_mode(red, speed, f[0], y) for f in found]
@@ -444,6 +440,21 @@ def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tup
             if pair is not None:
                 return pair[0], pair[1], True
     return s, y, False
+
+
+def branch_distance(
+    red: ReducedModel, weights: LossCoefficients, other: LossCoefficients, roots: np.ndarray, vectors: np.ndarray
+) -> np.ndarray:
+    """First-order distance [rad/s] from each root ``roots[k]`` of the branch with loss weights
+    ``weights`` (unit modal coordinates ``vectors[:, k]``) to the same mode's root on the branch
+    with weights ``other``: ``|yᴴ (W_other − W) y| / (2|s|)``, the perturbation of a root of
+    ``s² + s D + K`` by a change ΔW of K (:func:`mode_root`'s test for skipping the other branch)."""
+    delta = (
+        (other.fixed - weights.fixed) * (red.F @ vectors)
+        + (other.lateral - weights.lateral) * (red.L @ vectors)
+        + (other.circulatory - weights.circulatory) * (red.S @ vectors)
+    )
+    return np.abs(np.einsum("ij,ij->j", vectors.conj(), delta)) / (2 * np.abs(roots))
 
 
 def _branch_mode(red: ReducedModel, speed: float, branch: Branch, y: np.ndarray):
