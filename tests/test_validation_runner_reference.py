@@ -1,0 +1,121 @@
+"""How ``flexshaft validate`` judges a case (flexshaft.validation.runner), on values set by hand.
+
+A case passes when every computed value lies within the case's relative tolerance of its
+published value: |computed/published − 1| <= tolerance for *each* value, so the case is judged by
+its worst value, in either direction. The run passes only when every case passes. These tests
+feed the runner synthetic values through a stand-in quantity (no design is built, no model is
+solved: a few milliseconds of CPU) and check the verdict against that rule, worked by hand:
+
+* one value 0.3 % below its published value among values within 0.02 % fails a 0.1 % tolerance
+  (the worst |difference| is 3e-3, not the best 0 or the signed maximum 2e-4);
+* a NaN or a value too many cannot be compared and is an error, wherever it sits;
+* the display units: 1 Hz = 2π rad/s, 1 rev/min = 2π/60 rad/s, 1 kg m = 10³ g × 10³ mm = 10⁶ g mm
+  (SI definitions), so 100π rad/s is 50 Hz and 3000 rev/min exactly;
+* one failing case among passing ones fails the run and is the one listed as failed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from flexshaft.validation import runner
+from flexshaft.validation.cases import case_by_id
+from flexshaft.validation.runner import CaseResult, ValidationReport, run_case
+
+# a case on plain numbers (no design file): only its published values, unit and tolerance matter here
+TEMPLATE = case_by_id("iso21940-balance-tolerance")
+
+
+def synthetic(published, unit="-", tolerance=1e-3):
+    labels = tuple(f"v{i}" for i in range(len(published)))
+    return dataclasses.replace(
+        TEMPLATE,
+        id="synthetic",
+        quantity="synthetic",
+        published=tuple(published),
+        labels=labels,
+        unit=unit,
+        tolerance=tolerance,
+        arguments={},
+    )
+
+
+@pytest.fixture
+def computes(monkeypatch):
+    """``computes(values)``: the stand-in quantity returns ``values`` (SI) for every case."""
+
+    def set_values(values):
+        monkeypatch.setattr(runner, "quantity", lambda name: lambda design, **kwargs: np.asarray(values, dtype=float))
+
+    return set_values
+
+
+def test_a_case_is_judged_by_its_worst_value_in_either_direction(computes):
+    """Published (100, 200, 300), computed (100.02, 199.4, 300): differences +2e-4, −3e-3, 0;
+    the worst |difference| is 3e-3 > 1e-3, so the case fails; within 4e-3 it passes."""
+    computes([100.02, 199.4, 300.0])
+    result = run_case(synthetic((100.0, 200.0, 300.0), tolerance=1e-3))
+    assert result.differences == pytest.approx((2e-4, -3e-3, 0.0), abs=1e-13)
+    assert result.worst == pytest.approx(3e-3, rel=1e-10)
+    assert not result.passed
+    assert run_case(synthetic((100.0, 200.0, 300.0), tolerance=4e-3)).passed
+
+
+def test_values_below_the_published_ones_fail_as_those_above(computes):
+    """Computed 0.5 % low and 0.5 % high, tolerance 0.1 %: both fail."""
+    for factor in (0.995, 1.005):
+        computes([factor * 10.0, factor * 20.0])
+        assert not run_case(synthetic((10.0, 20.0), tolerance=1e-3)).passed
+
+
+@pytest.mark.parametrize("values", [[1.0, math.nan], [math.nan, 1.0], [1.0, math.inf]], ids=["last", "first", "inf"])
+def test_a_value_that_is_not_finite_is_an_error_wherever_it_is(computes, values):
+    computes(values)
+    with pytest.raises(ValueError, match="not finite"):
+        run_case(synthetic((1.0, 1.0)))
+
+
+@pytest.mark.parametrize("values", [[1.0, 1.0, 1.0], [1.0]], ids=["one too many", "one too few"])
+def test_a_value_count_other_than_the_published_one_is_an_error(computes, values):
+    """Two published values: three computed (a mode too many would shift the pairs) or one
+    computed cannot be compared value by value."""
+    computes(values)
+    with pytest.raises(ValueError, match="values computed, 2 published"):
+        run_case(synthetic((1.0, 1.0)))
+
+
+@pytest.mark.parametrize(
+    "unit, si, shown",
+    [("Hz", 100.0 * math.pi, 50.0), ("rpm", 100.0 * math.pi, 3000.0), ("g mm", 12.0e-6, 12.0), ("rad/s", 7.0, 7.0)],
+)
+def test_the_display_units_are_the_si_definitions(computes, unit, si, shown):
+    """100π rad/s = 50 Hz = 3000 rev/min; 12e-6 kg m = 12 g mm."""
+    computes([si])
+    result = run_case(synthetic((shown,), unit=unit, tolerance=1e-12))
+    assert result.computed[0] == pytest.approx(shown, rel=1e-14)
+    assert result.passed
+
+
+def test_one_failing_case_fails_the_run(computes):
+    """Three cases, the second 1 % off at a 0.1 % tolerance: the run fails, listing that case."""
+    computes([1.0])
+    good = run_case(synthetic((1.0,)))
+    bad = dataclasses.replace(run_case(synthetic((1.01,))), case=dataclasses.replace(synthetic((1.01,)), id="bad"))
+    report = ValidationReport((good, bad, good), cpu_seconds=0.0)
+    assert not bad.passed and good.passed
+    assert report.failed == (bad,)
+    assert not report.passed
+    assert ValidationReport((good, good), cpu_seconds=0.0).passed
+
+
+def test_case_result_rule_directly():
+    """The rule on a CaseResult: worst = max |d|; passed iff worst <= tolerance (the boundary
+    itself passes)."""
+    case = synthetic((1.0, 1.0, 1.0), tolerance=2e-3)
+    assert CaseResult(case, (1.0, 1.0, 1.0), (-2e-3, 1e-3, 0.0), 0.0).passed
+    assert not CaseResult(case, (1.0, 1.0, 1.0), (1e-4, -2.5e-3, 0.0), 0.0).passed
+    assert CaseResult(case, (1.0, 1.0, 1.0), (1e-4, -2.5e-3, 0.0), 0.0).worst == 2.5e-3
