@@ -1,0 +1,157 @@
+"""The run report's own sections (report/driveline.py, :func:`plan_run_report`) on a hand-built
+assessment.
+
+A stand-in of the assessment (plain namespaces with the attributes the page reads, SI values,
+every value distinct); the sections other modules write (verdict, inputs, imbalance,
+stability; their own reference tests cover them) and the key-number dictionary of
+``results.json`` are replaced by stubs, so what is checked is this module's text and tables.
+Displayed values are converted by hand from the unit definitions (derived): 1 m = 1000 mm;
+1 kW = 1e3 W; 1 GPa = 1e9 Pa; 1 MPa = 1e6 Pa; rpm = 60·Ω/(2π), so Ω = 2π·N/60 rad/s shows
+as N rpm. Modes and plies are numbered from 1 in the report (mode 1 is the lowest; ply 1 the
+first of the layup), while the results count them from 0. Figures are only recorded as jobs
+(never drawn). CPU about 0.01 s.
+"""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace as NS
+
+import numpy as np
+import pytest
+
+from flexshaft.report import driveline
+from flexshaft.report.html import Section
+
+
+def _rad_s(rpm: float) -> float:
+    return 2.0 * math.pi * rpm / 60.0
+
+
+def _strength(safety_factor, x, ply, stresses):
+    return NS(
+        safety_factor=safety_factor,
+        x=x,
+        ply=ply,
+        ply_angle_deg=-55.0,
+        phase_deg=90.0,
+        dominant_stress="σ2",
+        stresses=stresses,
+    )
+
+
+def _assessment():
+    design = NS(
+        name="stand-in",
+        shaft=NS(x_start=0.0, x_end=4.0, outer_diameter=0.1016, wall_thickness=0.00325, layup="(55/-55)s"),
+        operating=NS(main_rotor_frequencies=dict),
+    )
+    dofs = NS(shaft_x=np.zeros(2), n_boom_nodes=0, values=lambda q, member, which: np.zeros(2))
+    model = NS(
+        design=design,
+        dofs=dofs,
+        speed=_rad_s(6000.0),
+        power=150e3,  # 150 kW
+        bearings=[],
+        internal_damping="thesis",
+    )
+    criticals = [
+        NS(speed=_rad_s(3000.0), speed_rpm=3000.0, mode=0, whirl="forward"),  # 50 %: listed
+        NS(speed=_rad_s(7200.0), speed_rpm=7200.0, mode=2, whirl="backward"),  # 120 %: listed
+        NS(speed=_rad_s(7800.0), speed_rpm=7800.0, mode=3, whirl="forward"),  # 130 %: beyond 125 %
+    ]
+    buckling = {
+        "theory": "Donnell",
+        "critical_torque_positive_Nm": 5000.0,
+        "wave_number_positive": 2,
+        "critical_torque_negative_Nm": 3000.0,
+        "wave_number_negative": 3,
+        "torque_Nm": 1000.0,
+        "safety_factor": 3.0,
+    }
+    return NS(
+        model=model,
+        verdict=None,
+        campbell=NS(critical_speeds=criticals),
+        modes_at_rest=None,
+        modes_at_speed=None,
+        evidence=NS(critical_speeds=()),
+        points=[None],
+        governing_point=None,
+        static_displacement=None,
+        # static alone: R 4 at x 1.5 m, outer ply 0; with imbalance: R 2.5 at x 2.5 m, ply 2
+        strength_static=_strength(4.0, 1.5, 0, (20e6, 3e6, 1e6)),
+        strength_total=_strength(2.5, 2.5, 2, (40e6, 5e6, 2e6)),
+        buckling=NS(to_dict=lambda: buckling),
+        thermal=None,
+    )
+
+
+DATA = {
+    "summary": {
+        "shaft_mass_kg": 9.0,
+        "total_mass_kg": 60.0,
+        "shaft_E_storage_Pa": 30e9,
+        "shaft_E_loss_factor": 0.01,
+        "shaft_G_storage_Pa": 4e9,
+        "shaft_G_loss_factor": 0.02,
+        "torque_Nm": 1000.0,
+        "free_dofs": 400,
+    },
+    "static": {"boom_tip_v_m": 0.0123, "boom_tip_w_m": -0.0045},
+    "notes": [],
+}
+
+
+@pytest.fixture()
+def sections(monkeypatch, tmp_path):
+    def stub(title):
+        return lambda *args, **kwargs: Section(title)
+
+    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
+    monkeypatch.setattr(driveline, "verdict_section", stub("Verdict"))
+    monkeypatch.setattr(driveline, "inputs_section", stub("Inputs"))
+    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
+    monkeypatch.setattr(driveline, "imbalance_section", stub("Imbalance"))
+    monkeypatch.setattr(driveline, "stability_section", stub("Stability"))
+    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
+    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
+    plan = driveline.plan_run_report(_assessment(), tmp_path, design_text="")
+    return {s.title: s for s in plan.sections}
+
+
+def test_design_summary_in_mm_and_kw(sections):
+    """D_o 0.1016 m = 101.6 mm, wall 0.00325 m = 3.25 mm, 6000 rpm, 150e3 W = 150 kW; E* 30e9 Pa =
+    30 GPa, G* 4e9 Pa = 4 GPa."""
+    summary = sections["Design summary"]
+    (paragraph,) = summary.paragraphs
+    assert "D_o = 101.6 mm, wall 3.25 mm, layup (55/-55)s; 6000 rpm, 150 kW." in paragraph
+    key = {row[0]: row[1] for row in summary.tables[0].rows}
+    assert key["E* storage [GPa] / loss factor"] == "30.000 / 0.0100"
+    assert key["G* storage [GPa] / loss factor"] == "4.000 / 0.0200"
+
+
+def test_critical_speeds_up_to_125_percent_with_modes_from_1(sections):
+    """Criticals at 50 % and 120 % of 6000 rpm listed (tracked modes 0 and 2 shown as 1 and 3),
+    the one at 130 % not."""
+    section = sections["Natural frequencies and Campbell diagram"]
+    (table,) = [t for t in section.tables if t.caption.startswith("Critical speeds")]
+    assert table.rows == [[3000.0, 1, "forward"], [7200.0, 3, "backward"]]
+
+
+def test_boom_tip_deflection_in_mm(sections):
+    """v 0.0123 m = 12.30 mm, w −0.0045 m = −4.50 mm."""
+    (paragraph,) = sections["Deflected shape under static loads"].paragraphs
+    assert paragraph.endswith(" Boom tip: v = 12.30 mm, w = -4.50 mm.")
+
+
+def test_critical_ply_rows_by_case_in_mpa(sections):
+    """Static: R 4 at 1.5 m in ply 1 (index 0), σ 20 / 3 / 1 MPa; with imbalance: R 2.5 at 2.5 m in
+    ply 3 (index 2), σ 40 / 5 / 2 MPa. Buckling: +5000 N m (n = 2), −3000 N m (n = 3)."""
+    section = sections["Strength and torsional buckling"]
+    (table,) = section.tables
+    assert list(table.columns)[-3:] == ["σ1 [MPa]", "σ2 [MPa]", "τ12 [MPa]"]
+    static, total = table.rows
+    assert static[:4] == ["static", 4.0, 1.5, 1] and static[-3:] == pytest.approx([20.0, 3.0, 1.0], rel=1e-12)
+    assert total[:4] == ["static + imbalance", 2.5, 2.5, 3] and total[-3:] == pytest.approx([40.0, 5.0, 2.0], rel=1e-12)
+    assert "T_cr = 5000 N m (positive, n = 2), 3000 N m (negative, n = 3); applied 1000 N m" in section.paragraphs[1]
