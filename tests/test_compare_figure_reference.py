@@ -118,3 +118,37 @@ def test_mass_breakdown_stacks_the_parts_to_the_written_total():
         assert [t.get_text() for t in ax.texts] == ["4.5 kg", "4.5 kg"]
     finally:
         plt.close(fig)
+
+
+def test_each_design_is_drawn_against_its_own_limit():
+    """Each design is checked against its own [requirements]: where the two limits differ the
+    figure draws both, each in its design's colour and named after it (A 1.5 mm and B 2 mm of
+    spin-up orbit; a required safety factor of 1.5 and 2.25); where they agree, one line."""
+    speeds = np.array([1000.0, 2000.0])
+    both = {"A": (speeds, np.array([1e-4, 2e-4])), "B": (speeds, np.array([3e-4, 4e-4]))}
+    fig = spinup_overlay_figure(both, limit={"A": 1.5e-3, "B": 2e-3})
+    try:
+        ax = fig.axes[0]
+        a, b = _line(ax, "limit (A) 1.5 mm"), _line(ax, "limit (B) 2 mm")
+        np.testing.assert_allclose(a.get_ydata(), [1.5, 1.5], rtol=1e-12)
+        np.testing.assert_allclose(b.get_ydata(), [2.0, 2.0], rtol=1e-12)
+        assert (a.get_color(), b.get_color()) == (_line(ax, "A").get_color(), _line(ax, "B").get_color())
+        assert not [ln for ln in ax.get_lines() if ln.get_label().startswith("limit 1")]
+    finally:
+        plt.close(fig)
+    fig = spinup_overlay_figure(both, limit={"A": 1.5e-3, "B": 1.5e-3})
+    try:
+        labels = [ln.get_label() for ln in fig.axes[0].get_lines() if ln.get_label().startswith("limit")]
+        assert labels == ["limit 1.5 mm"]
+    finally:
+        plt.close(fig)
+    x = np.array([0.0, 1.0])
+    curves = {"A": (x, np.array([3.0, 4.0]), "Tsai-Wu"), "B": (x, np.array([5.0, 6.0]), "Tsai-Wu")}
+    fig = safety_factor_overlay_figure(curves, required={"A": 1.5, "B": 2.25})
+    try:
+        ax = fig.axes[0]
+        np.testing.assert_array_equal(_line(ax, "required (A) 1.5").get_ydata(), [1.5, 1.5])
+        np.testing.assert_array_equal(_line(ax, "required (B) 2.25").get_ydata(), [2.25, 2.25])
+        assert ax.get_ylim()[0] == pytest.approx(0.7 * 1.5, rel=1e-12)  # the lower limit in view
+    finally:
+        plt.close(fig)

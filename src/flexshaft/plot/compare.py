@@ -45,6 +45,26 @@ def _two(name: str, data: Mapping) -> list:
     return list(data.items())
 
 
+def _limit_lines(
+    ax, limit, labels: Sequence[str], scale: float, text: str, color: str, unit: str = "", fmt: str = ".3g"
+) -> list[float]:
+    """Horizontal lines at a requirement's limit: ``limit`` one number for every design, or a
+    mapping of each design's label to its own (from its ``[requirements]``, which the verdict
+    checks it against; None: no limit). One line when the designs' limits agree, else one per
+    design in its colour, labelled with its design. Returns the values drawn (times ``scale``)."""
+    if limit is None:
+        return []
+    own = limit if isinstance(limit, Mapping) else dict.fromkeys(labels, limit)
+    values = [(k, label, float(own[label]) * scale) for k, label in enumerate(labels) if own.get(label) is not None]
+    if len({value for _, _, value in values}) == 1:
+        value = values[0][2]
+        ax.axhline(value, color=color, ls="--", lw=1.2, label=f"{text} {value:{fmt}}{unit}")
+    else:
+        for k, label, value in values:
+            ax.axhline(value, color=_COLORS[k], ls="--", lw=1.2, label=f"{text} ({label}) {value:{fmt}}{unit}")
+    return [value for _, _, value in values]
+
+
 @styled
 def campbell_overlay_figure(
     curves: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]], operating_rpm: float | None = None
@@ -104,7 +124,9 @@ def campbell_overlay_figure(
 
 @styled
 def spinup_overlay_figure(
-    responses: Mapping[str, tuple[ArrayLike, ArrayLike]], operating_rpm: float | None = None, limit: float | None = None
+    responses: Mapping[str, tuple[ArrayLike, ArrayLike]],
+    operating_rpm: float | None = None,
+    limit: float | Mapping[str, float | None] | None = None,
 ) -> Figure:
     """Peak shaft orbit during spin-up of two designs (log scale).
 
@@ -114,8 +136,9 @@ def spinup_overlay_figure(
         Speeds [rpm] and the largest shaft orbit amplitude over the shaft at each speed [m].
     operating_rpm : float, optional
         Operating speed [rpm].
-    limit : float, optional
-        Spin-up orbit limit [m], drawn as a horizontal line.
+    limit : float or mapping of label to float, optional
+        Spin-up orbit limit [m], drawn as a horizontal line: one for both designs, or each
+        design's own (one line per design where they differ).
     """
     fig, axes = new_figure(1, 1, (8.0, 4.8))
     ax = axes[0, 0]
@@ -125,8 +148,7 @@ def spinup_overlay_figure(
         amplitude = vector(f"responses[{label!r}] peak", np.abs(np.asarray(peak)), speeds.size) * MM_PER_M
         ax.plot(speeds, np.where(amplitude > 0, amplitude, np.nan), color=color, label=label)
         top = max(top, speeds.max())
-    if limit is not None:
-        ax.axhline(limit * MM_PER_M, color="k", ls="--", lw=1.2, label=f"limit {limit * MM_PER_M:.3g} mm")
+    _limit_lines(ax, limit, [label for label, _ in _two("responses", responses)], MM_PER_M, "limit", "k", " mm")
     mark_operating(ax, operating_rpm)
     log_scale(ax)
     ax.set_xlim(0.0, top)
@@ -139,7 +161,7 @@ def spinup_overlay_figure(
 
 @styled
 def safety_factor_overlay_figure(
-    curves: Mapping[str, tuple[ArrayLike, ArrayLike, str]], required: float | None = None
+    curves: Mapping[str, tuple[ArrayLike, ArrayLike, str]], required: float | Mapping[str, float | None] | None = None
 ) -> Figure:
     """Strength safety factor along the driveline of two designs (log scale).
 
@@ -148,8 +170,9 @@ def safety_factor_overlay_figure(
     curves : mapping of label to (x, safety_factor, criterion)
         Stations [m], safety factor at each [-] (inf or NaN not drawn) and what it is, e.g.
         "Tsai-Wu" or "metal: min(yield, fatigue)".
-    required : float, optional
-        Required safety factor, drawn as a horizontal line.
+    required : float or mapping of label to float, optional
+        Required safety factor, drawn as a horizontal line: one for both designs, or each
+        design's own (one line per design where they differ).
     """
     fig, axes = new_figure(1, 1, (8.0, 4.6))
     ax = axes[0, 0]
@@ -171,9 +194,10 @@ def safety_factor_overlay_figure(
                 fontsize=8.5,
             )
             lo, hi = min(lo, np.nanmin(values)), max(hi, np.nanmax(values))
-    if required is not None:
-        ax.axhline(required, color="tab:red", ls="--", lw=1.2, label=f"required {required:g}")
-        lo = min(lo, required)
+    drawn = _limit_lines(
+        ax, required, [label for label, _ in _two("curves", curves)], 1.0, "required", "tab:red", fmt="g"
+    )
+    lo = min([lo, *drawn])
     log_scale(ax)
     if np.isfinite(lo):
         ax.set_ylim(0.7 * lo, 1.4 * hi if np.isfinite(hi) else None)

@@ -233,7 +233,11 @@ def _dynamics_section(comparison, folder: Path) -> Section:
         for label, run in zip(comparison.labels, comparison.runs)
     }
     campbell = save_figure(campbell_overlay_figure(curves, op_rpm), folder, "compare_campbell")
-    limit = comparison.runs[0].model.design.requirements.max_spinup_deflection
+    # each design's own limit, as the verdict checks it (one line when they agree)
+    limit = {
+        label: run.model.design.requirements.max_spinup_deflection
+        for label, run in zip(comparison.labels, comparison.runs)
+    }
     spinup = save_figure(
         spinup_overlay_figure(
             {
@@ -302,7 +306,11 @@ def _strength_section(comparison, folder: Path) -> Section:
     }
     figures, tables = [], []
     if curves:
-        required = comparison.runs[0].model.design.requirements.min_safety_factor
+        required = {
+            label: run.model.design.requirements.min_safety_factor
+            for label, run in zip(comparison.labels, comparison.runs)
+            if label in curves
+        }
         fig = save_figure(safety_factor_overlay_figure(curves, required), folder, "compare_safety_factor")
         figures.append(FigureRef(fig["png"], "Strength safety factor along the driveline"))
     for label, run in zip(comparison.labels, comparison.runs):
