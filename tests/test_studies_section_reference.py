@@ -104,7 +104,7 @@ def test_headline_rows_in_mm_and_the_55_degree_value(tmp_path):
     assert rows["1. one ply angle (α/−α/−α/α), no imbalance"] == "±45° (R = 2.9; ±55°: R = 1.7)"
     assert rows["3. wall thickness (largest R with imbalance)"] == "3.5 mm (R = 2.25)"
     assert rows["6. tuned gains: peak spin-up deflection"] == (
-        "38 mm at K_p = 1e+06, K_d = 500 → 4 mm at K_p = 3e+06 N/m, K_d = 2e+03 N s/m"
+        "38 mm at K_p = 1e+06 N/m, K_d = 500 N s/m → 4 mm at K_p = 3e+06 N/m, K_d = 2e+03 N s/m"
     )
 
 

@@ -94,7 +94,8 @@ def studies_section_and_jobs(results: DesignStudies, folder: str | Path):
         rows.append(
             [
                 "6. tuned gains: peak spin-up deflection",
-                f"{r.peak_before * 1e3:.3g} mm at K_p = {r.gains_before[0]:.3g}, K_d = {r.gains_before[1]:.3g} → "
+                f"{r.peak_before * 1e3:.3g} mm at K_p = {r.gains_before[0]:.3g} N/m, "
+                f"K_d = {r.gains_before[1]:.3g} N s/m → "
                 f"{r.peak_after * 1e3:.3g} mm at K_p = {r.gains_after[0]:.3g} N/m, K_d = {r.gains_after[1]:.3g} N s/m",
                 "38 mm → 4 mm",
             ]
