@@ -329,10 +329,11 @@ CASES: tuple[Case, ...] = (
         labels=("Nu_D",),
         published=(71.19,),
         unit="-",
-        tolerance=2e-4,
+        tolerance=3e-4,
         tolerance_basis=(
-            "the solution prints Nu to four figures (71.19: ±7e-5) from Re printed to four figures (±3e-5 in Nu, "
-            "Nu ∝ Re^0.6)"
+            "the solution prints Nu to four figures (71.19: ±7.0e-5) from Re and Pr printed to four figures: "
+            "Re ±5 (3.1e-4) moves the correlation's Nu by ±1.75e-4 (d ln Nu/d ln Re = 0.57 there), Pr ±5e-5 by "
+            "±2.7e-5; ±2.7e-4 in all"
         ),
         note="Re and Pr are the solution's; flexshaft's air properties are not involved.",
     ),
