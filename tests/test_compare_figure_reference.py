@@ -152,3 +152,30 @@ def test_each_design_is_drawn_against_its_own_limit():
         assert ax.get_ylim()[0] == pytest.approx(0.7 * 1.5, rel=1e-12)  # the lower limit in view
     finally:
         plt.close(fig)
+
+
+def test_each_design_is_marked_at_its_own_operating_speed():
+    """Two designs running at 4800 and 6000 rpm: a dash-dot line at each, in its design's colour
+    and named after it, on the Campbell and spin-up overlays; one line when they agree."""
+    speeds = np.array([0.0, 3000.0, 7000.0])
+    freqs = np.array([[40.0], [41.0], [42.0]])
+    whirl = np.full((3, 1), "forward")
+    curves = {"A": (speeds, freqs, whirl), "B": (speeds, freqs + 5.0, whirl)}
+    fig = campbell_overlay_figure(curves, {"A": 4800.0, "B": 6000.0})
+    try:
+        ax = fig.axes[0]
+        a, b = _line(ax, "operating speed (A) 4800 rpm"), _line(ax, "operating speed (B) 6000 rpm")
+        np.testing.assert_array_equal(a.get_xdata(), [4800.0, 4800.0])
+        np.testing.assert_array_equal(b.get_xdata(), [6000.0, 6000.0])
+        assert (a.get_color(), b.get_color()) == ("tab:blue", "tab:orange")
+        legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert "operating speed (A) 4800 rpm" in legend and "operating speed (B) 6000 rpm" in legend
+    finally:
+        plt.close(fig)
+    both = {"A": (speeds, np.array([1e-4, 2e-4, 1e-4])), "B": (speeds, np.array([2e-4, 3e-4, 2e-4]))}
+    fig = spinup_overlay_figure(both, {"A": 4800.0, "B": 4800.0})
+    try:
+        marks = [ln.get_label() for ln in fig.axes[0].get_lines() if ln.get_label().startswith("operating")]
+        assert marks == ["operating speed 4800 rpm"]
+    finally:
+        plt.close(fig)

@@ -65,9 +65,28 @@ def _limit_lines(
     return [value for _, _, value in values]
 
 
+def _operating_lines(ax, operating, labels: Sequence[str]) -> list:
+    """Vertical lines at the operating speed [rpm]: ``operating`` one speed for every design or a
+    mapping of each design's label to its own (None: none). One line when they agree
+    (:func:`~flexshaft.plot.style.mark_operating`), else one per design in its colour, named
+    after it. Returns the lines drawn."""
+    if operating is None:
+        return []
+    own = operating if isinstance(operating, Mapping) else dict.fromkeys(labels, operating)
+    values = [(k, label, float(own[label])) for k, label in enumerate(labels) if own.get(label) is not None]
+    if len({value for _, _, value in values}) == 1:
+        mark_operating(ax, values[0][2])
+        return [ax.get_lines()[-1]]
+    return [
+        ax.axvline(value, color=_COLORS[k], ls="-.", lw=1.2, label=f"operating speed ({label}) {value:.0f} rpm")
+        for k, label, value in values
+    ]
+
+
 @styled
 def campbell_overlay_figure(
-    curves: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]], operating_rpm: float | None = None
+    curves: Mapping[str, tuple[ArrayLike, ArrayLike, ArrayLike]],
+    operating_rpm: float | Mapping[str, float | None] | None = None,
 ) -> Figure:
     """Campbell diagrams of two designs on one axes.
 
@@ -77,8 +96,9 @@ def campbell_overlay_figure(
         ``speeds_rpm`` (n_speeds,) [rpm]; ``frequencies_hz`` (n_speeds, n_modes) [Hz] (NaN
         where a mode is not found); ``whirl`` labels of the same shape ("forward", "backward",
         "planar", "none" for torsional/axial modes, not drawn).
-    operating_rpm : float, optional
-        Operating speed [rpm].
+    operating_rpm : float or mapping of label to float, optional
+        Operating speed [rpm]: one for both designs, or each design's own (one line per design
+        where they differ).
     """
     from matplotlib.lines import Line2D
 
@@ -110,9 +130,7 @@ def campbell_overlay_figure(
         Line2D([], [], color="0.35", ls=WHIRL_LINESTYLE[name], label=f"{name} whirl")
         for name in ("forward", "backward", "planar")
     ]
-    mark_operating(ax, operating_rpm)
-    if operating_rpm is not None:
-        handles.append(ax.get_lines()[-1])
+    handles += _operating_lines(ax, operating_rpm, [label for label, _ in _two("curves", curves)])
     ax.set_xlim(0.0, top)
     ax.set_ylim(0.0, 1.08 * max(f_max, top / RPM_PER_HZ))
     ax.set_xlabel("spin speed Ω [rpm]")
@@ -125,7 +143,7 @@ def campbell_overlay_figure(
 @styled
 def spinup_overlay_figure(
     responses: Mapping[str, tuple[ArrayLike, ArrayLike]],
-    operating_rpm: float | None = None,
+    operating_rpm: float | Mapping[str, float | None] | None = None,
     limit: float | Mapping[str, float | None] | None = None,
 ) -> Figure:
     """Peak shaft orbit during spin-up of two designs (log scale).
@@ -134,8 +152,8 @@ def spinup_overlay_figure(
     ----------
     responses : mapping of label to (speeds_rpm, peak_orbit)
         Speeds [rpm] and the largest shaft orbit amplitude over the shaft at each speed [m].
-    operating_rpm : float, optional
-        Operating speed [rpm].
+    operating_rpm : float or mapping of label to float, optional
+        Operating speed [rpm], as :func:`campbell_overlay_figure`'s.
     limit : float or mapping of label to float, optional
         Spin-up orbit limit [m], drawn as a horizontal line: one for both designs, or each
         design's own (one line per design where they differ).
@@ -148,8 +166,9 @@ def spinup_overlay_figure(
         amplitude = vector(f"responses[{label!r}] peak", np.abs(np.asarray(peak)), speeds.size) * MM_PER_M
         ax.plot(speeds, np.where(amplitude > 0, amplitude, np.nan), color=color, label=label)
         top = max(top, speeds.max())
-    _limit_lines(ax, limit, [label for label, _ in _two("responses", responses)], MM_PER_M, "limit", "k", " mm")
-    mark_operating(ax, operating_rpm)
+    labels = [label for label, _ in _two("responses", responses)]
+    _limit_lines(ax, limit, labels, MM_PER_M, "limit", "k", " mm")
+    _operating_lines(ax, operating_rpm, labels)
     log_scale(ax)
     ax.set_xlim(0.0, top)
     ax.set_xlabel("spin speed Ω [rpm]")

@@ -227,7 +227,8 @@ def _parts_section(comparison, folder: Path) -> Section:
 
 def _dynamics_section(comparison, folder: Path) -> Section:
     a, b = comparison.labels
-    op_rpm = rad_s_to_rpm(comparison.runs[0].model.speed)
+    # each design's own operating speed (one line when they agree)
+    op_rpm = {label: rad_s_to_rpm(run.model.speed) for label, run in zip(comparison.labels, comparison.runs)}
     curves = {
         label: (rad_s_to_rpm(run.campbell.speeds), run.campbell.frequencies, run.campbell.whirl)
         for label, run in zip(comparison.labels, comparison.runs)
