@@ -122,3 +122,42 @@ def test_metal_tube_table_alternating_then_mean_stress_in_mpa(monkeypatch, tmp_p
     (table,) = section.tables
     assert list(table.columns)[3:6] == ["σ_a [MPa]", "σ_m [MPa]", "τ_m [MPa]"]
     assert table.rows == [["segment 1", 1.8, 0.7, 40.0, 15.0, 25.0, 3.2, 6.5]]
+
+
+def test_each_design_hands_its_own_limits_and_speed_to_the_overlays(monkeypatch, tmp_path):
+    """Each design is judged against its own [requirements] at its own operating speed, so the
+    overlays get one value per design: A at 4800 rpm with a 0.5 mm orbit limit and a required
+    safety factor of 1.5, B at 6000 rpm with 1 mm and 2.25 (Ω = 2π·N/60 rad/s)."""
+    _stub_figures(monkeypatch)
+    calls: dict = {}
+    monkeypatch.setattr(compare, "campbell_overlay_figure", lambda curves, op: calls.setdefault("campbell", op))
+    monkeypatch.setattr(
+        compare, "spinup_overlay_figure", lambda curves, op, limit: calls.setdefault("spinup", (op, limit))
+    )
+    monkeypatch.setattr(compare, "safety_factor_overlay_figure", lambda c, req: calls.setdefault("strength", req))
+
+    def run(rpm, orbit, required):
+        return NS(
+            model=NS(
+                speed=_rad_s(rpm), design=NS(requirements=NS(max_spinup_deflection=orbit, min_safety_factor=required))
+            ),
+            campbell=NS(speeds=np.zeros(1), frequencies=np.zeros((1, 1)), whirl=[["forward"]]),
+            spinup=NS(speeds=np.zeros(1), shaft_peak=np.zeros(1)),
+            strength_total=NS(x_along=np.array([0.0, 1.0]), along_shaft=np.array([3.0, 4.0])),
+            metal_strength=None,
+        )
+
+    comparison = NS(
+        labels=("A", "B"),
+        runs=(run(4800.0, 5e-4, 1.5), run(6000.0, 1e-3, 2.25)),
+        critical_speeds=lambda d: [],
+        metrics=list,
+    )
+    compare._dynamics_section(comparison, tmp_path)
+    compare._strength_section(comparison, tmp_path)
+    op, limit = calls["spinup"]
+    assert calls["campbell"] == op and set(op) == {"A", "B"}
+    # rpm back from rad/s: one multiplication and one division, 1e-12 relative
+    assert abs(op["A"] - 4800.0) <= 1e-12 * 4800.0 and abs(op["B"] - 6000.0) <= 1e-12 * 6000.0
+    assert limit == {"A": 5e-4, "B": 1e-3}
+    assert calls["strength"] == {"A": 1.5, "B": 2.25}
