@@ -99,7 +99,9 @@ _ROSS_BASIS = (
 )
 _ROSS_KIND = "textbook example, peer-code values"
 _ROSS_NOTE = (
-    "ROSS's list also holds 650.41 rad/s, the same at both speeds and on both bearing sets, so not a lateral "
+    "ROSS's run_modal also returns 650.41 rad/s (ROSS 2.3 on its tests' example-1 rotor with num_modes = 14, "
+    "re-run 2026-12-05; the tests' six-value lists stop below it), the same at both speeds and on both bearing "
+    "sets, so not a lateral "
     "mode (presumably the torsional mode of ROSS's six-DOF model); flexshaft compares the lateral modes only."
 )
 
