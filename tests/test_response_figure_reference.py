@@ -85,3 +85,14 @@ def test_strength_figure_marks_the_smallest_safety_factor():
     assert (point.get_xdata()[0], point.get_ydata()[0]) == pytest.approx((3.0, 2.0), rel=REL)
     (failure,) = _labelled(ax, "failure")
     np.testing.assert_allclose(failure.get_ydata(), [1.0, 1.0], rtol=REL)  # Tsai-Wu R = 1 fails
+
+
+def test_strength_figure_draws_the_required_factor_in_view():
+    """The verdict's limit beside failure: R ≥ 2.25 drawn at 2.25 and kept in view when every
+    drawn factor lies below it (the axis reaches past the larger of the two)."""
+    x = np.linspace(0.0, 6.0, 7)
+    r = np.array([1.9, 1.8, 1.7, 1.6, 1.7, 1.8, 1.9])
+    ax = safety_factor_figure(x, r, required=2.25).axes[0]
+    (required,) = _labelled(ax, "required (R ≥ 2.25)")
+    np.testing.assert_allclose(required.get_ydata(), [2.25, 2.25], rtol=REL)
+    assert ax.get_ylim()[1] > 2.25

@@ -45,6 +45,7 @@ def _assessment():
         name="stand-in",
         shaft=NS(x_start=0.0, x_end=4.0, outer_diameter=0.1016, wall_thickness=0.00325, layup="(55/-55)s"),
         operating=NS(main_rotor_frequencies=dict),
+        requirements=NS(min_safety_factor=1.5),
     )
     dofs = NS(shaft_x=np.zeros(2), n_boom_nodes=0, values=lambda q, member, which: np.zeros(2))
     model = NS(
@@ -69,22 +70,34 @@ def _assessment():
         "torque_Nm": 1000.0,
         "safety_factor": 3.0,
     }
-    return NS(
-        model=model,
-        verdict=None,
-        campbell=NS(critical_speeds=criticals),
-        modes_at_rest=None,
-        modes_at_speed=None,
-        evidence=NS(critical_speeds=()),
-        points=[None],
-        governing_point=None,
-        static_displacement=None,
+    analyses = NS(
         # static alone: R 4 at x 1.5 m, outer ply 0; with imbalance: R 2.5 at x 2.5 m, ply 2
         strength_static=_strength(4.0, 1.5, 0, (20e6, 3e6, 1e6)),
         strength_total=_strength(2.5, 2.5, 2, (40e6, 5e6, 2e6)),
         buckling=NS(to_dict=lambda: buckling),
+        torque_factor=1.0,
+    )
+    only = NS(name="operating point", analyses=analyses)
+    return NS(
+        model=model,
+        verdict=NS(check=_no_check),
+        campbell=NS(critical_speeds=criticals),
+        modes_at_rest=None,
+        modes_at_speed=None,
+        evidence=NS(critical_speeds=()),
+        points=[only],
+        point=lambda name: only,
+        governing_point="operating point",
+        static_displacement=None,
+        strength_static=analyses.strength_static,
+        strength_total=analyses.strength_total,
+        buckling=analyses.buckling,
         thermal=None,
     )
+
+
+def _no_check(key):
+    raise KeyError(key)
 
 
 DATA = {
@@ -155,3 +168,83 @@ def test_critical_ply_rows_by_case_in_mpa(sections):
     assert static[:4] == ["static", 4.0, 1.5, 1] and static[-3:] == pytest.approx([20.0, 3.0, 1.0], rel=1e-12)
     assert total[:4] == ["static + imbalance", 2.5, 2.5, 3] and total[-3:] == pytest.approx([40.0, 5.0, 2.0], rel=1e-12)
     assert "T_cr = 5000 N m (positive, n = 2), 3000 N m (negative, n = 3); applied 1000 N m" in section.paragraphs[1]
+
+
+def test_strength_section_shows_the_points_where_its_checks_govern(monkeypatch, tmp_path):
+    """An envelope of two points: the Tsai-Wu check governs at "hot" (R 1.6 with imbalance, ply 2
+    at x 3.0 m), the buckling check at "cold" (+4000 N m, n = 4), while the assessment's
+    governing point "cold" has R 2.5. The section's rows, its sentences, and the figure (its
+    result, its caption, and the required factor 1.5 from [requirements]) are the verdict's:
+    hot's strength and cold's buckling, each named."""
+    a = _assessment()
+    cold = a.points[0]
+    cold.name = "cold"
+    hot_buckling = {"theory": "Donnell", "critical_torque_positive_Nm": 9000.0, "wave_number_positive": 5}
+    cold_buckling = dict(
+        a.buckling.to_dict(), critical_torque_positive_Nm=4000.0, wave_number_positive=4, safety_factor=2.4
+    )
+    cold.analyses.buckling = NS(to_dict=lambda: cold_buckling)
+    cold.analyses.torque_factor = 1.25  # the torsional response's peak torque over the steady one
+    hot = NS(
+        name="hot",
+        analyses=NS(
+            strength_static=_strength(3.0, 1.0, 1, (10e6, 2e6, 1e6)),
+            strength_total=_strength(1.6, 3.0, 2, (60e6, 4e6, 3e6)),
+            buckling=NS(to_dict=lambda: hot_buckling),
+            torque_factor=1.0,
+        ),
+    )
+    governs = {"tsai_wu": "hot", "buckling": "cold"}
+    a.points = [cold, hot]
+    a.point = {"cold": cold, "hot": hot}.__getitem__
+    a.governing_point = "cold"
+    a.verdict = NS(check=lambda key: NS(location={"point": governs[key]}))
+    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
+    for name, title in (
+        ("verdict_section", "Verdict"),
+        ("inputs_section", "Inputs"),
+        ("imbalance_section", "Imbalance"),
+        ("stability_section", "Stability"),
+    ):
+        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
+    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
+    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
+    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
+    plan = driveline.plan_run_report(a, tmp_path, design_text="")
+    section = next(s for s in plan.sections if s.title == "Strength and torsional buckling")
+    static, total = section.tables[0].rows
+    assert static[:4] == ["static", 3.0, 1.0, 2] and total[:4] == ["static + imbalance", 1.6, 3.0, 3]
+    assert "at hot, where the Tsai-Wu check governs" in section.paragraphs[0]
+    assert "at cold, where the buckling check governs" in section.paragraphs[1]
+    assert "T_cr = 4000 N m (positive, n = 4)" in section.paragraphs[1]
+    # the check divides by the torque factor: 2.4 / 1.25 = 1.92
+    assert "applied 1000 N m × 1.25 (torsional response); buckling safety factor 1.92." in section.paragraphs[1]
+    assert "classical shell ignores transverse shear" in section.paragraphs[1]  # a Donnell shell
+    (figure,) = section.figures
+    assert "at hot, where the Tsai-Wu check governs" in figure.caption
+    (job,) = [j for j in plan.jobs if j.stem == "safety_factor"]
+    assert job.args[0] is hot.analyses.strength_total and job.kwargs == {"required": 1.5}
+
+
+def test_a_shear_shell_crimps_without_waves_and_needs_no_caveat(monkeypatch, tmp_path):
+    """The shear shell's crimping mode has no circumferential wave number (None): "n = ∞ (shear
+    crimping)"; the caveat on the classical shell's missing transverse shear is not printed."""
+    a = _assessment()
+    shear = dict(a.buckling.to_dict(), theory="shear", wave_number_positive=None, wave_number_negative=None)
+    a.points[0].analyses.buckling = NS(to_dict=lambda: shear)
+    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
+    for name, title in (
+        ("verdict_section", "Verdict"),
+        ("inputs_section", "Inputs"),
+        ("imbalance_section", "Imbalance"),
+        ("stability_section", "Stability"),
+    ):
+        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
+    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
+    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
+    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
+    plan = driveline.plan_run_report(a, tmp_path, design_text="")
+    section = next(s for s in plan.sections if s.title == "Strength and torsional buckling")
+    text = section.paragraphs[1]
+    assert "(positive, n = ∞ (shear crimping))" in text and "(negative, n = ∞ (shear crimping))" in text
+    assert "classical shell" not in text and "buckling safety factor 3.00." in text

@@ -119,6 +119,7 @@ def safety_factor_figure(
     label: str | None = None,
     *,
     critical_r: float | None = None,
+    required: float | None = None,
     log_y: bool | None = None,
     title: str = "Shaft strength",
     ax=None,
@@ -142,6 +143,9 @@ def safety_factor_figure(
         the drawn stations); default interpolated from ``safety_factor``.
     label : str, optional
         What fails there, e.g. "ply 3 (+55°), φ = 120°, σ2 dominates".
+    required : float, optional
+        The safety factor the requirements ask for (the verdict's limit), drawn as a second
+        dashed line beside the failure line R = 1.
     log_y : bool, optional
         Logarithmic axis; by default chosen when the finite values span more than 50:1.
     title : str
@@ -170,12 +174,15 @@ def safety_factor_figure(
     ax = axes[0, 0]
     ax.plot(xs, factor, color="C0", label="minimum safety factor R")
     ax.axhline(1.0, color="tab:red", ls="--", lw=1.3, label="failure (R = 1)")
+    if required is not None:
+        ax.axhline(required, color="tab:orange", ls="--", lw=1.3, label=f"required (R ≥ {required:g})")
     ax.plot(critical_x, critical_r, "o", color="tab:red", ms=7, label="critical point")
+    top = max(np.nanmax(factor), required or 0.0)
     if log_y:
         log_scale(ax)
-        ax.set_ylim(min(0.7, 0.8 * np.nanmin(factor)), 2.0 * np.nanmax(factor))
+        ax.set_ylim(min(0.7, 0.8 * np.nanmin(factor)), 2.0 * top)
     else:
-        ax.set_ylim(0.0, max(1.15 * np.nanmax(factor), 1.3))
+        ax.set_ylim(0.0, max(1.15 * top, 1.3))
     ax.set_xlim(xs.min(), xs.max())
     text = f"R = {critical_r:.3g} at x = {critical_x:.3g} m"
     text = f"{label}\n{text}" if label else text

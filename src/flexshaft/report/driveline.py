@@ -31,7 +31,7 @@ from flexshaft.plot.output import render_figures, start_figures
 from flexshaft.report.html import Section, Table, write_report
 from flexshaft.report.inputs import inputs_section, report_title
 from flexshaft.report.results_json import json_ready, results_json
-from flexshaft.report.run_sections import Figures, imbalance_section, stability_section, thermal_section
+from flexshaft.report.run_sections import Figures, check_point, imbalance_section, stability_section, thermal_section
 from flexshaft.report.studies_section import studies_section_and_jobs
 from flexshaft.report.verdict import verdict_section
 from flexshaft.thesis.design_studies import save_study_data
@@ -233,10 +233,22 @@ def plan_run_report(
         )
     )
 
-    # the three are computed together, for a laminated shaft (verdict.operating_point)
-    if a.strength_total is not None and a.strength_static is not None and a.buckling is not None:
+    # the three are computed together, for a laminated shaft (verdict.operating_point); shown at the
+    # point where the Tsai-Wu check governs, the buckling paragraph at the buckling check's: the
+    # verdict's numbers (the governing point's only where it is theirs)
+    strength = a.point(check_point(a, "tsai_wu"))
+    buckling = a.point(check_point(a, "buckling"))
+    several = len(a.points) > 1
+    if (
+        strength.analyses.strength_total is not None
+        and strength.analyses.strength_static is not None
+        and buckling.analyses.buckling is not None
+    ):
         rows = []
-        for name, rr in (("static", a.strength_static), ("static + imbalance", a.strength_total)):
+        for name, rr in (
+            ("static", strength.analyses.strength_static),
+            ("static + imbalance", strength.analyses.strength_total),
+        ):
             rows.append(
                 [
                     name,
@@ -251,20 +263,31 @@ def plan_run_report(
                     rr.stresses[2] / 1e6,
                 ]
             )
-        b = a.buckling.to_dict()
+        b = buckling.analyses.buckling.to_dict()
+        at_strength = f" at {strength.name}, where the Tsai-Wu check governs" if several else ""
+        at_buckling = f" at {buckling.name}, where the buckling check governs" if several else ""
+        # the check divides the steady torque's factor by the torsional response's torque factor
+        factor = float(buckling.analyses.torque_factor)
+        factor_text = f" × {factor:.4g} (torsional response)" if factor != 1.0 else ""
         sections.append(
             Section(
                 "Strength and torsional buckling",
                 paragraphs=[
                     "Tsai-Wu safety factor of every ply at both ends of every shaft element, for the static response "
                     "superposed with the imbalance response at the operating speed over the phase φ ∈ [0, 2π) and "
-                    "both signs of the bending strain.",
-                    f"Torsional buckling ({b['theory']} shell, simply supported, both torque senses): "
-                    f"T_cr = {b['critical_torque_positive_Nm']:.0f} N m (positive, n = {b['wave_number_positive']}), "
-                    f"{b['critical_torque_negative_Nm']:.0f} N m (negative, n = {b['wave_number_negative']}); "
-                    f"applied {b['torque_Nm']:.0f} N m; buckling safety factor {b['safety_factor']:.2f}. "
-                    "The classical shell ignores transverse shear of the soft matrix and is unconservative for "
-                    "FMC walls.",
+                    f"both signs of the bending strain{at_strength}.",
+                    f"Torsional buckling{at_buckling} ({b['theory']} shell, simply supported, both torque senses): "
+                    f"T_cr = {b['critical_torque_positive_Nm']:.0f} N m "
+                    f"(positive, {_waves(b['wave_number_positive'])}), "
+                    f"{b['critical_torque_negative_Nm']:.0f} N m (negative, {_waves(b['wave_number_negative'])}); "
+                    f"applied {b['torque_Nm']:.0f} N m{factor_text}; buckling safety factor "
+                    f"{b['safety_factor'] / factor:.2f}."
+                    + (
+                        ""
+                        if b["theory"] == "shear"
+                        else " The classical shell ignores transverse shear of the soft matrix and is unconservative "
+                        "for FMC walls."
+                    ),
                 ],
                 tables=[
                     Table(
@@ -287,9 +310,11 @@ def plan_run_report(
                 figures=[
                     figs.result(
                         "safety_factor",
-                        "Minimum Tsai-Wu safety factor along the shaft",
-                        a.strength_total,
+                        f"Minimum Tsai-Wu safety factor along the shaft{at_strength}, against failure (R = 1) and "
+                        "the required factor (dashed)",
+                        strength.analyses.strength_total,
                         "along_shaft",
+                        required=design.requirements.min_safety_factor,
                     )
                 ],
             )
@@ -400,3 +425,8 @@ def _damping_text(internal_damping: str) -> str:
         'acts as a fixed-frame complex stiffness (internal_damping = "thesis", thesis eqs. 2.39-2.40): it '
         "damps every whirl and never destabilises"
     )
+
+
+def _waves(n) -> str:
+    """The buckling mode's circumferential wave number, "n = ∞ (shear crimping)" for none."""
+    return "n = ∞ (shear crimping)" if n is None else f"n = {n}"

@@ -22,7 +22,7 @@ from flexshaft.units import kelvin_to_celsius, m_to_mm, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment
 from flexshaft.verdict.gather import actuator_limits
 
-__all__ = ["Figures", "imbalance_section", "plot_result", "stability_section", "thermal_section"]
+__all__ = ["Figures", "check_point", "imbalance_section", "plot_result", "stability_section", "thermal_section"]
 
 
 def plot_result(result, kind: str | None = None, **kwargs):
@@ -114,7 +114,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
         )
     if model.actuators:
         # the point where the actuator excursion check governs (its spin-up and evidence)
-        name = _check_point(a, "actuator_orbit")
+        name = check_point(a, "actuator_orbit")
         point = a.point(name)
         spinup_shown = point.analyses.spinup
         evidence = {e.name: e for e in point.evidence.actuators}
@@ -203,7 +203,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
     )
 
 
-def _check_point(a: Assessment, key: str) -> str:
+def check_point(a: Assessment, key: str) -> str:
     """The envelope point where check ``key`` governs (the governing point when it has none)."""
     try:
         return str(a.verdict.check(key).location.get("point", a.governing_point))
