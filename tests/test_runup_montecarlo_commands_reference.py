@@ -32,10 +32,11 @@ def no_files(monkeypatch):
 
 @pytest.fixture
 def runup_seen(monkeypatch, no_files):
-    """The run-up's stand-ins: a model at 4800 rpm, a run whose peak orbit 0.3 mm is at
-    2400 rpm at x = 1.5 m, and one actuator of largest orbit 0.2 mm and force 35 N."""
+    """The run-up's stand-ins: a model at 5100 rpm (not the embedded design's speed), a run
+    whose peak orbit 0.3 mm is at 2400 rpm at x = 1.5 m, and one actuator of largest orbit
+    0.2 mm and force 35 N."""
     seen: dict = {}
-    model = SimpleNamespace(speed=4800.0 * RPM)
+    model = SimpleNamespace(speed=5100.0 * RPM)
     result = SimpleNamespace(
         peak=lambda: (3.0e-4, 0.0, 2400.0 * RPM),
         shaft_x=np.array([0.5, 1.5, 2.5]),
@@ -74,9 +75,9 @@ def test_runup_passes_its_speeds_in_rad_s_and_reports_rpm(tmp_path, runup_seen):
     result = CliRunner().invoke(app, [*RUNUP, "--json", "-o", str(tmp_path / "out")])
     assert result.exit_code == 0, result.output
     # 1000 rpm · 2π/60 = 104.72 rad/s, 3000 rpm · 2π/60 = 314.16 rad/s
-    assert runup_seen["start"] == pytest.approx(104.71975511965977, rel=1e-12)
-    assert runup_seen["stop"] == pytest.approx(314.1592653589793, rel=1e-12)
-    assert runup_seen["op"] == pytest.approx(4800.0, rel=1e-12)  # the figure's operating line [rpm]
+    assert runup_seen["start"] == pytest.approx(1000.0 * RPM, rel=1e-12)
+    assert runup_seen["stop"] == pytest.approx(3000.0 * RPM, rel=1e-12)
+    assert runup_seen["op"] == pytest.approx(5100.0, rel=1e-12)  # the figure's operating line [rpm]
     data = json.loads(result.stdout)
     assert data["peak_speed_rpm"] == pytest.approx(2400.0, rel=1e-12)  # 2400 · 2π/60 rad/s back in rpm
     assert data["stop_rpm"] == pytest.approx(3000.0, rel=1e-12)
