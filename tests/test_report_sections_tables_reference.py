@@ -144,6 +144,8 @@ def _stability(tmp_path):
     speeds = np.array([_rad_s(1000), _rad_s(3000), _rad_s(6000)])
     a = NS(
         stability=_result(None, speeds),
+        modes_at_speed=None,  # no modes at the operating speed: no curve greyed out
+        model=NS(speed=_rad_s(4800)),
         design=NS(requirements=NS(required_log_decrement=0.1)),
         roots=NS(
             coverage=lambda: "every root",

@@ -53,3 +53,26 @@ def test_stability_map_operating_line_at_the_operating_speed():
     np.testing.assert_allclose(op.get_ydata(), [4800.0, 4800.0], rtol=REL)
     (bound,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("stable to")]
     np.testing.assert_allclose(bound.get_ydata(), [7200.0, 7200.0], rtol=REL)
+
+
+def test_modes_the_requirement_does_not_judge_are_grey():
+    """Three tracked modes, the first not judged by the δ requirement (a boom mode, say): drawn in
+    the grey of NOT_JUDGED_COLOR with a legend entry, the judged two in the colour cycle; a
+    mask of the wrong length is refused naming the set."""
+    import matplotlib.colors as mcolors
+    import pytest
+
+    from flexshaft.plot.stability import NOT_JUDGED_COLOR
+
+    speeds = np.array([0.0, 3000.0, 6000.0])
+    delta = np.array([[0.06, 0.2, 0.3], [0.06, 0.21, 0.31], [0.06, 0.22, 0.32]])
+    fig = log_decrement_figure(speeds, {"d": delta}, judged={"d": [False, True, True]}, required=0.1)
+    ax = fig.axes[0]  # a Figure without pyplot's state: nothing to close
+    grey = mcolors.to_rgba(NOT_JUDGED_COLOR)
+    drawn = [ln for ln in ax.get_lines() if len(ln.get_xdata()) == 3]
+    by_first = {round(float(ln.get_ydata()[0]), 3): mcolors.to_rgba(ln.get_color()) for ln in drawn}
+    assert by_first[0.06] == grey and by_first[0.2] != grey and by_first[0.3] != grey
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "not judged by the δ requirement" in legend
+    with pytest.raises(ValueError, match=r"judged\['d'\]: expected 3 entries"):
+        log_decrement_figure(speeds, {"d": delta}, judged={"d": [True, False]})

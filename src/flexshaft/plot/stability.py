@@ -25,12 +25,18 @@ def _panel_curves(speeds: np.ndarray, name: str, values: ArrayLike, what: str) -
     return array
 
 
-def _draw_modes(ax, speeds: np.ndarray, values: np.ndarray, whirl: np.ndarray | None) -> None:
+#: Colour of the modes a requirement does not judge (:func:`log_decrement_figure`'s ``judged``).
+NOT_JUDGED_COLOR = "0.72"
+
+
+def _draw_modes(
+    ax, speeds: np.ndarray, values: np.ndarray, whirl: np.ndarray | None, judged: np.ndarray | None = None
+) -> None:
     import matplotlib
 
     colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
     for m in range(values.shape[1]):
-        color = colors[m % len(colors)]
+        color = colors[m % len(colors)] if judged is None or judged[m] else NOT_JUDGED_COLOR
         if whirl is None:
             ax.plot(speeds, values[:, m], color=color, lw=1.2)
             continue
@@ -101,6 +107,7 @@ def log_decrement_figure(
     onset_text: Mapping[str, str] | None = None,
     whirl: Mapping[str, ArrayLike] | None = None,
     required: float | None = None,
+    judged: Mapping[str, ArrayLike] | None = None,
     ax=None,
 ):
     """Logarithmic decrement of the tracked modes against speed, one panel per set, the onset
@@ -123,6 +130,10 @@ def log_decrement_figure(
         Whirl label of every point, drawn as line style (solid forward, dashed backward).
     required : float, optional
         Required log decrement (e.g. 0.1), drawn as a dashed line.
+    judged : mapping of str to array_like of bool, optional
+        Which tracked modes of a set (n_modes,) the required log decrement judges (the
+        verdict's: the shaft's whirl modes); the others are drawn in light grey, with a legend
+        entry saying so.
     ax : sequence of matplotlib Axes, optional
         One axes per design.
 
@@ -149,7 +160,17 @@ def log_decrement_figure(
         a.set_ylim(bottom - pad, top + pad)
         a.set_xlim(speeds.min(), speeds.max())
         a.axhspan(bottom - pad, 0.0, color="tab:red", alpha=0.07, lw=0)
-        _draw_modes(a, speeds, delta, labels)
+        mask = None
+        if judged is not None and name in judged:
+            mask = np.asarray(judged[name], dtype=bool).ravel()
+            if mask.size != delta.shape[1]:
+                raise ValueError(f"judged[{name!r}]: expected {delta.shape[1]} entries, one per mode (got {mask.size})")
+            faded = not mask.all()
+        else:
+            faded = False
+        _draw_modes(a, speeds, delta, labels, mask)
+        if faded:  # a legend entry for the grey curves (an empty line carries it)
+            a.plot([], [], color=NOT_JUDGED_COLOR, lw=1.2, label="not judged by the δ requirement")
         a.axhline(0.0, color="k", lw=1.0)
         if required is not None:
             a.axhline(required, color="tab:green", ls=(0, (6, 3)), lw=1.2, label=f"required δ ≥ {required:g}")

@@ -20,7 +20,8 @@ from flexshaft.report.results_json import rpm_or_none
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import kelvin_to_celsius, m_to_mm, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment
-from flexshaft.verdict.gather import actuator_limits
+from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits
+from flexshaft.verdict.operating_point import whirl_modes
 
 __all__ = ["Figures", "check_point", "imbalance_section", "plot_result", "stability_section", "thermal_section"]
 
@@ -203,6 +204,32 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
     )
 
 
+def _judged_modes(a: Assessment) -> np.ndarray | None:
+    """Which tracked modes of the whirl-stability curves the whirl-damping check judges: the
+    lateral whirl modes with at least :data:`~flexshaft.verdict.gather.WHIRL_DAMPING_SHAFT_SHARE`
+    of their kinetic energy in the shaft at the operating speed (the check's modes). Each tracked
+    eigenvalue, interpolated to the operating speed, is matched to the nearest of the modes at
+    that speed; one without a match within 2 % of |s| counts as judged (drawn as it is). None
+    when the operating speed lies outside the curves' speeds."""
+    st, m = a.stability, a.modes_at_speed
+    speed = float(a.model.speed)
+    speeds = np.asarray(st.speeds, dtype=float)
+    if m is None or speeds.size < 2 or not speeds[0] <= speed <= speeds[-1]:
+        return None
+    s = np.array(
+        [np.interp(speed, speeds, col.real) + 1j * np.interp(speed, speeds, col.imag) for col in st.eigenvalues.T]
+    )
+    modes = np.asarray(m.eigenvalues)
+    whirl = whirl_modes(m) & (np.asarray(m.shaft_fractions) >= WHIRL_DAMPING_SHAFT_SHARE)
+    judged = np.ones(s.size, dtype=bool)
+    for k, root in enumerate(s):
+        distance = np.abs(modes - root)
+        j = int(np.argmin(distance))
+        if distance[j] <= 0.02 * abs(root):
+            judged[k] = bool(whirl[j])
+    return judged
+
+
 def check_point(a: Assessment, key: str) -> str:
     """The envelope point where check ``key`` governs (the governing point when it has none)."""
     try:
@@ -250,12 +277,15 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
         for extra in list(curves)[1:]:  # the four dicts have the same keys, the design first
             del curves[extra], onsets[extra], texts[extra], whirl[extra]
     required = a.design.requirements.required_log_decrement
+    judged = _judged_modes(a)
     figures.append(
         figs.add(
             "stability_log_decrement",
             "Log decrement of the tracked modes against speed, the onset of "
             "whirl instability marked ✕ (the thesis's three reference shafts "
-            "with the viscous-equivalent internal damping, figures 4.2-4.4)",
+            "with the viscous-equivalent internal damping, figures 4.2-4.4); grey: the design's modes the "
+            "whirl log-decrement requirement does not judge (torsional, or less than "
+            f"{WHIRL_DAMPING_SHAFT_SHARE:.0%} of their kinetic energy in the shaft at the operating speed)",
             log_decrement_figure,
             rad_s_to_rpm(st.speeds),
             curves,
@@ -264,6 +294,7 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
             onset_text={k: v for k, v in texts.items() if v},
             whirl=whirl,
             required=required,
+            judged=None if judged is None else {"this design (exact hysteretic loss)": judged},
         )
     )
     tables = []
