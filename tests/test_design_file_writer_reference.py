@@ -175,3 +175,24 @@ def test_the_verified_verdict_takes_each_output_from_its_check(monkeypatch):
     assert [name for name, _, _ in files.VERIFY_OUTPUTS] == list(out)
     values.pop("spinup_deflection")  # a check without a value: nan, not 0
     assert math.isnan(files.verify_outputs(SimpleNamespace(axes={"design_file": "p2.toml"}))["spinup_deflection"])
+
+
+def test_control_characters_in_a_name_are_escaped(tmp_path):
+    """TOML v1.0.0 ("String"): a basic string must escape the control characters U+0000-U+0008,
+    U+000A-U+001F and U+007F (DEL). A design whose name and material key hold each of them (a
+    valid file writes them escaped, as ``\\u007f``) is written to a file that ``tomllib`` reads
+    back to the same strings; and a comment may hold none of them either (TOML v1.0.0,
+    "Comment"), so the name in the header comment must not make the file invalid. (Was: DEL
+    written bare, and every control character bare in the header: an invalid file that
+    ``write_design_file`` then failed to read back.)"""
+    controls = "".join(chr(c) for c in [*range(1, 0x20), 0x7F])
+    material = "steel" + controls
+    text = SMALL.replace(MATERIAL, "steel" + "".join(f"\\u{ord(c):04x}" for c in controls))
+    design = with_overrides(loads_design(text), {"name": "rotor" + controls})
+    assert design.name == "rotor" + controls and list(design.materials) == [material]
+    # the optimizer's header names the base design: in a comment, which may not hold them either
+    path = write_design_file(design, tmp_path / "d.toml", [f"Base design: {design.name}", "kept"])
+    with path.open("rb") as handle:
+        data = tomllib.load(handle)
+    assert data["name"] == "rotor" + controls and "# kept" in path.read_text(encoding="utf-8").splitlines()
+    assert list(data["materials"]) == [material] and data["shaft"]["material"] == material
