@@ -32,8 +32,24 @@ __all__ = ["VERIFY_OUTPUTS", "design_toml", "verify_design_files", "verify_outpu
 _BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
 
 
+def _string(text: str) -> str:
+    """``text`` as a TOML basic string: JSON's escapes are TOML's, but JSON leaves DEL (U+007F)
+    bare, which a TOML basic string must escape (TOML v1.0.0, "String")."""
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
+
+
+#: Characters a TOML comment may not hold (TOML v1.0.0, "Comment"): the controls but tab.
+_COMMENT_CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
+
+
+def _comment_text(text: str) -> str:
+    """``text`` fit for a ``#`` comment: each control character shown as ``\\uXXXX`` (a design
+    name holding one, written into the header, would make the file invalid TOML)."""
+    return _COMMENT_CONTROL.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
 def _key(key: str) -> str:
-    return key if _BARE_KEY.fullmatch(key) else json.dumps(key, ensure_ascii=False)
+    return key if _BARE_KEY.fullmatch(key) else _string(key)
 
 
 def _float(value: float) -> str:
@@ -56,7 +72,7 @@ def _scalar(value: Any) -> str:
             return "inf" if value > 0 else "-inf"
         return _float(value)
     if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
+        return _string(value)
     if isinstance(value, Mapping):
         items = ", ".join(f"{_key(k)} = {_scalar(v)}" for k, v in value.items() if v is not None)
         return "{ " + items + " }" if items else "{}"
@@ -182,7 +198,7 @@ def design_toml(design, comments: Sequence[str] = (), *, base=None, base_text: s
     data = json.loads(design.model_dump_json())
     file_comments = read_comments(base_text) if base_text is not None else None
     notes = _Notes(file_comments, None if base is None else json.loads(base.model_dump_json()))
-    lines = [f"# {line}".rstrip() for text in comments for line in str(text).splitlines()]
+    lines = [f"# {_comment_text(line)}".rstrip() for text in comments for line in str(text).splitlines()]
     if file_comments is not None and file_comments.preamble:
         lines += [
             "#",
