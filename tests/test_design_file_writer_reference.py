@@ -196,3 +196,22 @@ def test_control_characters_in_a_name_are_escaped(tmp_path):
         data = tomllib.load(handle)
     assert data["name"] == "rotor" + controls and "# kept" in path.read_text(encoding="utf-8").splitlines()
     assert list(data["materials"]) == [material] and data["shaft"]["material"] == material
+
+
+def test_a_text_that_does_not_load_back_is_never_written(tmp_path, monkeypatch):
+    """The writer checks its text before the file exists: a text that is not valid TOML (a bare
+    DEL, TOML v1.0.0 "String") or that loads to another design (the baseline's text for the
+    tuned design) raises, and the output folder stays empty."""
+    import pytest
+
+    from flexshaft.design import DesignError, baseline_text, tuned_design
+
+    target = tmp_path / "pareto_01.toml"
+    monkeypatch.setattr(files, "design_toml", lambda *args, **kwargs: 'name = "a\x7fb"\n')
+    with pytest.raises(DesignError):
+        write_design_file(tuned_design(), target)
+    assert not target.exists() and not list(tmp_path.iterdir())
+    monkeypatch.setattr(files, "design_toml", lambda *args, **kwargs: baseline_text())
+    with pytest.raises(RuntimeError, match="does not load back to the same design"):
+        write_design_file(tuned_design(), target)
+    assert not list(tmp_path.iterdir())

@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from flexshaft.design import load_design
+from flexshaft.design import load_design, loads_design
 from flexshaft.files import atomic_write_text
 from flexshaft.optimize.toml_comments import FileComments, KeyComments, read_comments
 from flexshaft.resolution import REPORT
@@ -223,13 +223,15 @@ def design_toml(design, comments: Sequence[str] = (), *, base=None, base_text: s
 def write_design_file(
     design, path: str | Path, comments: Sequence[str] = (), *, base=None, base_text: str | None = None
 ) -> Path:
-    """Write ``design`` to ``path`` (:func:`design_toml`, the base's comments carried over) and
-    check that the file loads back to the same design."""
+    """Write ``design`` to ``path`` (:func:`design_toml`, the base's comments carried over),
+    once its text is checked to load back to the same design: a text that does not (invalid
+    TOML, another design) raises before anything is written, so no such file is left behind."""
     path = Path(path)
-    atomic_write_text(path, design_toml(design, comments, base=base, base_text=base_text))
-    loaded = load_design(path)
+    text = design_toml(design, comments, base=base, base_text=base_text)
+    loaded = loads_design(text, str(path))
     if json.loads(loaded.model_dump_json()) != json.loads(design.model_dump_json()):
-        raise RuntimeError(f"{path}: the written design file does not load back to the same design")
+        raise RuntimeError(f"{path}: the design file's text does not load back to the same design (not written)")
+    atomic_write_text(path, text)
     return path
 
 
