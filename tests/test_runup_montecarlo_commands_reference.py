@@ -135,3 +135,34 @@ def test_montecarlo_passes_the_gap_in_metres_and_reports_the_99th_percentile(tmp
     # mean of 1..100 is 50.5; 99th percentile 99.01 (see the module docstring); both · 1e-5 m
     assert data["summary"]["shaft_peak"]["mean"] == pytest.approx(50.5e-5, rel=1e-12)
     assert data["summary"]["shaft_peak"]["p99"] == pytest.approx(99.01e-5, rel=1e-12)
+
+
+def test_montecarlo_names_each_actuators_own_gap_when_they_differ(tmp_path, monkeypatch, no_files):
+    """Each actuator is counted against its own gap: amb_1's 5e-4 m (0.5 mm) and amb_2's 2.5e-4 m
+    (0.25 mm) are both printed, not the smaller alone; a force capacity both share (1500 N) is
+    printed once."""
+
+    def run(design, samples, **kw):
+        events = SimpleNamespace(describe=lambda: "3 of 100 samples", to_dict=lambda: {"exceeding": 3, "samples": 100})
+        return SimpleNamespace(
+            gap=2.5e-4,
+            force_limit=1500.0,
+            limits={
+                "amb_1": SimpleNamespace(gap=5e-4, force_capacity=1500.0),
+                "amb_2": SimpleNamespace(gap=2.5e-4, force_capacity=1500.0),
+            },
+            dataset={"shaft_peak": SimpleNamespace(values=np.arange(1.0, 101.0) * 1e-5)},
+            plot=lambda: None,
+            gap_exceedance=(0.03, 0.017),
+            force_exceedance=(0.03, 0.017),
+            gap_events=events,
+            force_events=events,
+        )
+
+    monkeypatch.setattr("flexshaft.cli.bounds.check_montecarlo", lambda *a: None)
+    monkeypatch.setitem(sys.modules, "flexshaft.montecarlo.steady", SimpleNamespace(run_montecarlo=run))
+    result = CliRunner().invoke(app, ["montecarlo", "--samples", "100", "-o", str(tmp_path / "out")])
+    assert result.exit_code == 0, result.output
+    text = " ".join(result.stdout.split())
+    assert "gap (amb_1 0.5 mm, amb_2 0.25 mm) exceeded (static + dynamic) in 3 of 100 samples" in text
+    assert "force limit 1500 N exceeded (static + dynamic) in 3 of 100 samples" in text
