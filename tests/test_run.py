@@ -134,6 +134,7 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
         "safety_factor",
         "stability_log_decrement",
         "stability_map",
+        "loop_sensitivity",
         "shaft_temperature",
         "shaft_temperature_sweeps",
     ):

@@ -76,6 +76,7 @@ def _assessment():
         strength_total=_strength(2.5, 2.5, 2, (40e6, 5e6, 2e6)),
         buckling=NS(to_dict=lambda: buckling),
         torque_factor=1.0,
+        bearing_loops=None,  # no magnetic bearing: no loop section
     )
     only = NS(name="operating point", analyses=analyses)
     return NS(
@@ -192,6 +193,7 @@ def test_strength_section_shows_the_points_where_its_checks_govern(monkeypatch, 
             strength_total=_strength(1.6, 3.0, 2, (60e6, 4e6, 3e6)),
             buckling=NS(to_dict=lambda: hot_buckling),
             torque_factor=1.0,
+            bearing_loops=None,
         ),
     )
     governs = {"tsai_wu": "hot", "buckling": "cold"}

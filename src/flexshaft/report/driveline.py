@@ -31,7 +31,14 @@ from flexshaft.plot.output import render_figures, start_figures
 from flexshaft.report.html import Section, Table, write_report
 from flexshaft.report.inputs import inputs_section, report_title
 from flexshaft.report.results_json import json_ready, results_json
-from flexshaft.report.run_sections import Figures, check_point, imbalance_section, stability_section, thermal_section
+from flexshaft.report.run_sections import (
+    Figures,
+    check_point,
+    imbalance_section,
+    loops_section,
+    stability_section,
+    thermal_section,
+)
 from flexshaft.report.studies_section import studies_section_and_jobs
 from flexshaft.report.verdict import verdict_section
 from flexshaft.thesis.design_studies import save_study_data
@@ -322,6 +329,9 @@ def plan_run_report(
     if a.thermal is not None:
         sections.append(thermal_section(a, figs))
     sections.append(stability_section(a, thesis, figs, op_rpm))
+    loops = loops_section(a, figs)
+    if loops is not None:
+        sections.append(loops)
     if thesis is not None and thesis.design_studies is not None:
         section, jobs = studies_section_and_jobs(thesis.design_studies, folder)
         figs.jobs.extend(jobs)

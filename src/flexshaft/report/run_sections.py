@@ -11,7 +11,9 @@ from pathlib import Path
 
 import numpy as np
 
+from flexshaft.analyses.loop_margins import ISO_14839_ZONE_LIMITS
 from flexshaft.plot.driveline import actuator_figure, bode_figure, imbalance_response_figure, orbit_figure
+from flexshaft.plot.loops import loop_sensitivity_figure
 from flexshaft.plot.output import FigureJob
 from flexshaft.plot.stability import log_decrement_figure, stability_map_figure
 from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
@@ -23,7 +25,15 @@ from flexshaft.verdict.assess import Assessment
 from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits
 from flexshaft.verdict.operating_point import whirl_modes
 
-__all__ = ["Figures", "check_point", "imbalance_section", "plot_result", "stability_section", "thermal_section"]
+__all__ = [
+    "Figures",
+    "check_point",
+    "imbalance_section",
+    "loops_section",
+    "plot_result",
+    "stability_section",
+    "thermal_section",
+]
 
 
 def plot_result(result, kind: str | None = None, **kwargs):
@@ -201,6 +211,79 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
         ],
         tables=tables,
         figures=figures,
+    )
+
+
+def loops_section(a: Assessment, figs: Figures) -> Section | None:
+    """The magnetic-bearing loops' robustness at the point where the sensitivity-peak check
+    governs: each loop's margins (the numbers the three loop checks read) and its sensitivity
+    function and open-loop phase, the requirements drawn. None without loops."""
+    name = check_point(a, "loop_sensitivity")
+    loops = a.point(name).analyses.bearing_loops
+    if not loops:
+        return None
+    req = a.design.requirements
+    at = f" at {name}, where the sensitivity-peak check governs" if len(a.points) > 1 else ""
+    rows, curves, peaks, margins = [], {}, {}, {}
+    for lp in loops:
+        m = lp.margins
+        label = f"{lp.actuator} ({lp.axis})"
+        rows.append(
+            [
+                label,
+                m.peak_sensitivity,
+                m.zone,
+                m.peak_frequency,
+                m.gain_margin_upper_db,
+                m.gain_margin_lower_db,
+                m.phase_margin_deg,
+                m.phase_margin_frequency,
+            ]
+        )
+        curves[label] = (np.asarray(lp.frequencies, dtype=float), np.asarray(lp.sensitivity, dtype=complex))
+        peaks[label] = (float(m.peak_frequency), float(m.peak_sensitivity))
+        if m.phase_margin_frequency is not None and np.isfinite(m.phase_margin_deg):
+            margins[label] = (float(m.phase_margin_frequency), float(m.phase_margin_deg))
+    speed = rad_s_to_rpm(loops[0].speed)
+    figure = figs.add(
+        "loop_sensitivity",
+        f"Sensitivity |S| and open-loop phase of each magnetic-bearing loop at {speed:.0f} rpm{at} (each axis "
+        "with the other loops closed): the peaks and the smallest phase margins the verdict's loop checks read "
+        "marked, the requirements dashed, ISO 14839-3's zones shaded",
+        loop_sensitivity_figure,
+        curves,
+        peaks=peaks,
+        phase_margins=margins,
+        required_peak=req.max_sensitivity_peak,
+        required_phase_margin_deg=req.min_phase_margin_deg,
+        zone_limits=ISO_14839_ZONE_LIMITS,
+    )
+    return Section(
+        "Magnetic-bearing loops",
+        paragraphs=[
+            f"Each control axis of each active bearing{at}, broken at its controller with the other loops closed "
+            f"(ISO 14839-3): the sensitivity peak |S|max and its zone, the gain margins for a gain rise and a gain "
+            f"fall, the smallest phase margin over the gain crossovers. Required: |S|max ≤ "
+            f"{req.max_sensitivity_peak:g}, gain margin ≥ {req.min_gain_margin_db:g} dB, phase margin ≥ "
+            f"{req.min_phase_margin_deg:g}°."
+        ],
+        tables=[
+            Table(
+                "Loop margins (inf: no crossover of that kind in the frequency range)",
+                [
+                    "loop",
+                    "|S|max",
+                    "zone",
+                    "at [Hz]",
+                    "gain margin, rise [dB]",
+                    "gain margin, fall [dB]",
+                    "phase margin [°]",
+                    "at [Hz]",
+                ],
+                rows,
+            )
+        ],
+        figures=[figure],
     )
 
 
