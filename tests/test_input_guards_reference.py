@@ -140,3 +140,18 @@ def test_require_finite_passes_finite_results():
     require_finite("eigenvalues", np.array([1 + 2j, -3j]))
     require_finite("frequencies", np.array([0.0, 1e300]))
     require_finite("count", np.array([1, 2]))
+
+
+def test_text_and_booleans_are_not_speeds():
+    """A speed is "a finite real number" (check_speed's docstring): the text "3", the bytes b"4"
+    and a list of texts are refused although float() would read them; booleans are refused in a
+    list as they are alone."""
+    from flexshaft.analyses.guards import RefusedInputError, check_speed, check_spin_speeds
+
+    for value in ("3", b"4"):
+        with pytest.raises(RefusedInputError, match="finite number"):
+            check_speed(value)
+    for values in (["1", "2"], "12", [True, False]):
+        with pytest.raises(RefusedInputError, match="1-D sequence of numbers"):
+            check_spin_speeds(values)
+    np.testing.assert_array_equal(check_spin_speeds([1, 2.5]), [1.0, 2.5])

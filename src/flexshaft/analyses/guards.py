@@ -74,7 +74,7 @@ def check_speed(value: Any, name: str = "speed", unit: str = "rad/s", positive: 
     except (TypeError, ValueError):
         number = float("nan")
     if (
-        isinstance(value, (bool, complex, np.complexfloating))
+        isinstance(value, (bool, complex, np.complexfloating, str, bytes, np.str_, np.bytes_))
         or not np.isfinite(number)
         or number < 0
         or (positive and number == 0)
@@ -95,6 +95,8 @@ def check_spin_speeds(values: Any, name: str = "speeds", increasing: bool = Fals
     """Spin speeds Ω [rad/s] as a non-empty 1-D float array: finite, >= 0, at most
     :data:`MAX_SPEED` (and strictly increasing with ``increasing``), or a ValueError naming them."""
     try:
+        if isinstance(values, (str, bytes)) or np.asarray(values).dtype.kind in "USb":  # text or booleans
+            raise TypeError
         speeds = np.atleast_1d(np.asarray(values, dtype=float))
     except (TypeError, ValueError):
         raise RefusedInputError(f"{name} must be a 1-D sequence of numbers [rad/s] (got {values!r})") from None
