@@ -21,7 +21,7 @@ naming a field and its value, an analysis' ``RefusedInputError``, a full disk (`
 naming the file, ``typer.Exit(3)`` of a failed requirement, a plain bug. No analysis runs.
 The BLAS default of :mod:`flexshaft.cli` is checked against its docstring ("One BLAS thread in
 the command's process and its workers, unless the user set the variables").
-Whole file: about 0.4 s of CPU (pydantic for the design's error class; no numpy, no scipy).
+Whole file: about 0.03 s of CPU (``--cpu-durations``; the solvers are never imported).
 """
 
 from __future__ import annotations

@@ -20,7 +20,7 @@ a marker of another command or file. The command is a stand-in (:func:`_command`
 the CLI's real error boundary, so the final marker is written the way every command writes it
 and no analysis runs; the designs are stand-ins with a title and a few values (the fingerprint
 is the product's hash of those values, only ever compared, never checked as a number).
-Whole file: about 0.1 s of CPU (no numpy, no pydantic).
+Whole file: about 0.06 s of CPU (``--cpu-durations``; no analysis, no pydantic model).
 """
 
 from __future__ import annotations
