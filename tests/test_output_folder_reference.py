@@ -5,7 +5,9 @@ Reference: README.md, "Output folders (``--out``)":
     ``flexshaft run my.toml`` writes ``my-results/`` (``flexshaft-results/`` for the embedded
     design; ``my-runup/``, ``my-study-wall/``, ... for the other commands). Edit ``my.toml`` and
     run it again: its folder is replaced, no ``--force`` needed (the files the earlier run wrote
-    are removed first, your own files in the folder are kept). [...] a non-empty folder that
+    are removed first, your own files in the folder are kept, but not symbolic links: every
+    link inside the folder is removed, never followed, before anything is written, so that no
+    write can land outside the folder). [...] a non-empty folder that
     flexshaft did not write, or one it wrote for another command or another design (another
     file with other values; the message names both designs by title, file and fingerprint) is
     refused (exit 2) unless ``--force`` is given. [...] a symbolic link inside the folder is
