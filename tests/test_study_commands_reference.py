@@ -144,7 +144,7 @@ def test_study_all_prints_the_gains_before_then_after_tuning(capsys):
     lines = capsys.readouterr().out.splitlines()
     (kp,) = [ln for ln in lines if "K_p before → tuned [N/m]" in ln]
     (kd,) = [ln for ln in lines if "K_d before → tuned [N s/m]" in ln]
-    assert "2e+05 → 5e+05" in kp and "100 → 1.25e+03" in kd
+    assert "200000 → 500000" in kp and "100 → 1250" in kd  # as every gain printed: sig(), no 2e+05
     # before tuning 4e-4 m = 0.4 mm (thesis 5e-4 m = 0.5 mm); after 1e-4 m = 0.1 mm (thesis 0.2 mm)
     (before,) = [ln for ln in lines if "spin-up peak orbit before tuning [mm]" in ln]
     (after,) = [ln for ln in lines if "spin-up peak orbit after tuning [mm]" in ln]

@@ -509,5 +509,8 @@ def _print_headline(data: dict, page: Path, source: str) -> None:
 
 
 def _pair(first, second) -> str:
-    """Two gains, each with three significant figures in exponent form where needed."""
-    return " → ".join("—" if v is None else f"{v:.3g}" for v in (first, second))
+    """Two gains with three significant figures, written as every other gain the commands print
+    (:func:`~flexshaft.cli.tables.sig`: 200000, not 2e+05)."""
+    from flexshaft.cli.tables import sig
+
+    return " → ".join(sig(v, 3) for v in (first, second))
