@@ -104,3 +104,25 @@ def test_gains_and_grade_step_by_a_factor(tuned) -> None:
     for key in ("bearings[1].kp", "bearings[2].kp", "loads.balance_grade"):
         assert (controls[key].log, controls[key].step) == (True, 1.1), key
     assert not controls["shaft.wall_thickness"].log
+
+
+@pytest.mark.parametrize(
+    ("layup", "angle", "first_plies"),
+    [
+        ("(∓45/0_2)s", -45.0, (-45.0, 45.0)),  # its own value: the plies stay -45/45
+        ("(∓45/0_2)s", -30.0, (-30.0, 30.0)),
+        ("(±45/0_2)s", -30.0, (-30.0, 30.0)),
+        ("(±45/0_2)s", 30.0, (30.0, -30.0)),
+    ],
+)
+def test_a_pair_symbol_keeps_the_sign_of_the_first_ply(tuned, layup, angle, first_plies) -> None:
+    """The layup grammar (flexshaft.design.layup.parse_layup): '±45' is 45/-45 and '∓45' is
+    -45/45. A ± token's control shows its first ply's angle (-45 for '∓45'), so setting a to
+    the control gives the plies a/-a, whichever sign a has (was: the token was always written
+    '±|a|', so '∓45' set to its own -45 became '±45', the mirror laminate)."""
+    from flexshaft.design.layup import parse_layup
+
+    design = with_overrides(tuned, {"shaft.layup": layup})
+    assert next(c for c in design_controls(design) if c.key == "layup.0").value == parse_layup(layup)[0]
+    written = control_overrides(design, {"layup.0": angle})["shaft.layup"]
+    assert parse_layup(written)[:2] == first_plies, written
