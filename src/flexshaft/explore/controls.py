@@ -229,7 +229,10 @@ def _layup_with(layup: str, angles: list[LayupAngle], values: Mapping[int, float
             continue
         new = float(values[index])
         for start, end, factor in angle.tokens:
-            text = f"±{_angle_text(abs(new))}" if angle.pair_symbol else _angle_text(factor * new)
+            if angle.pair_symbol:  # "±a" is a/-a, "∓a" is -a/a (the layup grammar): the first ply's sign
+                text = f"{'∓' if new < 0 else '±'}{_angle_text(abs(new))}"
+            else:
+                text = _angle_text(factor * new)
             edits.append((start, end, text))
     for start, end, text in sorted(edits, reverse=True):
         layup = layup[:start] + text + layup[end:]
