@@ -45,17 +45,23 @@ def _two(name: str, data: Mapping) -> list:
     return list(data.items())
 
 
+def _per_design(value, labels: Sequence[str]) -> list[tuple[int, str, float]]:
+    """``(index, label, value)`` of each design with a value: ``value`` one number for every
+    design, or a mapping of each design's label to its own (None: none)."""
+    if value is None:
+        return []
+    own = value if isinstance(value, Mapping) else dict.fromkeys(labels, value)
+    return [(k, label, float(own[label])) for k, label in enumerate(labels) if own.get(label) is not None]
+
+
 def _limit_lines(
     ax, limit, labels: Sequence[str], scale: float, text: str, color: str, unit: str = "", fmt: str = ".3g"
 ) -> list[float]:
-    """Horizontal lines at a requirement's limit: ``limit`` one number for every design, or a
-    mapping of each design's label to its own (from its ``[requirements]``, which the verdict
-    checks it against; None: no limit). One line when the designs' limits agree, else one per
-    design in its colour, labelled with its design. Returns the values drawn (times ``scale``)."""
-    if limit is None:
-        return []
-    own = limit if isinstance(limit, Mapping) else dict.fromkeys(labels, limit)
-    values = [(k, label, float(own[label]) * scale) for k, label in enumerate(labels) if own.get(label) is not None]
+    """Horizontal lines at a requirement's limit (:func:`_per_design`: from each design's
+    ``[requirements]``, which the verdict checks it against). One line when the designs' limits
+    agree, else one per design in its colour, labelled with its design. Returns the values drawn
+    (times ``scale``)."""
+    values = [(k, label, value * scale) for k, label, value in _per_design(limit, labels)]
     if len({value for _, _, value in values}) == 1:
         value = values[0][2]
         ax.axhline(value, color=color, ls="--", lw=1.2, label=f"{text} {value:{fmt}}{unit}")
@@ -66,14 +72,10 @@ def _limit_lines(
 
 
 def _operating_lines(ax, operating, labels: Sequence[str]) -> list:
-    """Vertical lines at the operating speed [rpm]: ``operating`` one speed for every design or a
-    mapping of each design's label to its own (None: none). One line when they agree
-    (:func:`~flexshaft.plot.style.mark_operating`), else one per design in its colour, named
-    after it. Returns the lines drawn."""
-    if operating is None:
-        return []
-    own = operating if isinstance(operating, Mapping) else dict.fromkeys(labels, operating)
-    values = [(k, label, float(own[label])) for k, label in enumerate(labels) if own.get(label) is not None]
+    """Vertical lines at the operating speed [rpm] (:func:`_per_design`). One line when the
+    designs agree (:func:`~flexshaft.plot.style.mark_operating`), else one per design in its
+    colour, named after it. Returns the lines drawn."""
+    values = _per_design(operating, labels)
     if len({value for _, _, value in values}) == 1:
         mark_operating(ax, values[0][2])
         return [ax.get_lines()[-1]]
