@@ -22,8 +22,7 @@ from flexshaft.report.results_json import rpm_or_none
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import kelvin_to_celsius, m_to_mm, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment
-from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits
-from flexshaft.verdict.operating_point import whirl_modes
+from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits, judged_whirl_modes
 
 __all__ = [
     "Figures",
@@ -303,7 +302,7 @@ def _judged_modes(a: Assessment) -> np.ndarray | None:
         [np.interp(speed, speeds, col.real) + 1j * np.interp(speed, speeds, col.imag) for col in st.eigenvalues.T]
     )
     modes = np.asarray(m.eigenvalues)
-    whirl = whirl_modes(m) & (np.asarray(m.shaft_fractions) >= WHIRL_DAMPING_SHAFT_SHARE)
+    whirl = judged_whirl_modes(m)  # the check's own selection
     judged = np.ones(s.size, dtype=bool)
     for k, root in enumerate(s):
         distance = np.abs(modes - root)

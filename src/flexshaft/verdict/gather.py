@@ -29,7 +29,7 @@ from flexshaft.verdict.evidence import (
 from flexshaft.verdict.operating_point import PointAnalyses, whirl_modes
 from flexshaft.verdict.point_tasks import required_onset_speed
 
-__all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence"]
+__all__ = ["WHIRL_DAMPING_SHAFT_SHARE", "ActuatorLimits", "actuator_limits", "gather_evidence", "judged_whirl_modes"]
 
 #: Smallest share of a mode's kinetic energy in the shaft for the whirl-damping requirement.
 WHIRL_DAMPING_SHAFT_SHARE = 0.1
@@ -58,6 +58,14 @@ def actuator_limits(model: Model) -> dict[str, ActuatorLimits]:
     return out
 
 
+def judged_whirl_modes(m) -> np.ndarray:
+    """Mask of the modes of ``m`` (:class:`~flexshaft.analyses.modal.Modes`) the whirl-damping
+    requirement judges: the lateral whirl modes (:func:`~flexshaft.verdict.operating_point.whirl_modes`)
+    with Im s > 0 and at least :data:`WHIRL_DAMPING_SHAFT_SHARE` of their kinetic energy in the shaft."""
+    s = np.asarray(m.eigenvalues)
+    return whirl_modes(m) & (np.asarray(m.shaft_fractions) >= WHIRL_DAMPING_SHAFT_SHARE) & (s.imag > 0)
+
+
 def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     """Log decrements at the operating speed of the lateral modes the shaft takes part in.
 
@@ -69,11 +77,8 @@ def _modes_at_operating(p: PointAnalyses) -> tuple[ModeDamping, ...]:
     controllers' states; a divergent root fails the onset check).
     """
     m = p.modes_at_speed
-    whirl = whirl_modes(m)
     out = []
-    for k in range(m.eigenvalues.size):
-        if not whirl[k] or m.shaft_fractions[k] < WHIRL_DAMPING_SHAFT_SHARE or m.eigenvalues[k].imag <= 0:
-            continue
+    for k in np.flatnonzero(judged_whirl_modes(m)):
         label = f"{k + 1} ({m.whirl[k]}, {m.component[k]})"
         out.append(ModeDamping(label, float(abs(m.eigenvalues[k].imag)), float(m.log_decrements[k])))
     return tuple(out)
