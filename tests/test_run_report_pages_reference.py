@@ -117,21 +117,26 @@ DATA = {
 }
 
 
-@pytest.fixture()
-def sections(monkeypatch, tmp_path):
-    def stub(title):
-        return lambda *args, **kwargs: Section(title)
-
+def _plan(monkeypatch, a, tmp_path):
+    """``plan_run_report`` of ``a`` with the sections other modules write and the key numbers of
+    ``results.json`` stubbed (this module's own text is what the tests read)."""
     monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
-    monkeypatch.setattr(driveline, "verdict_section", stub("Verdict"))
-    monkeypatch.setattr(driveline, "inputs_section", stub("Inputs"))
+    for name, title in (
+        ("verdict_section", "Verdict"),
+        ("inputs_section", "Inputs"),
+        ("imbalance_section", "Imbalance"),
+        ("stability_section", "Stability"),
+    ):
+        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
     monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
-    monkeypatch.setattr(driveline, "imbalance_section", stub("Imbalance"))
-    monkeypatch.setattr(driveline, "stability_section", stub("Stability"))
     monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
     monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
-    plan = driveline.plan_run_report(_assessment(), tmp_path, design_text="")
-    return {s.title: s for s in plan.sections}
+    return driveline.plan_run_report(a, tmp_path, design_text="")
+
+
+@pytest.fixture()
+def sections(monkeypatch, tmp_path):
+    return {s.title: s for s in _plan(monkeypatch, _assessment(), tmp_path).sections}
 
 
 def test_design_summary_in_mm_and_kw(sections):
@@ -201,18 +206,7 @@ def test_strength_section_shows_the_points_where_its_checks_govern(monkeypatch, 
     a.point = {"cold": cold, "hot": hot}.__getitem__
     a.governing_point = "cold"
     a.verdict = NS(check=lambda key: NS(location={"point": governs[key]}))
-    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
-    for name, title in (
-        ("verdict_section", "Verdict"),
-        ("inputs_section", "Inputs"),
-        ("imbalance_section", "Imbalance"),
-        ("stability_section", "Stability"),
-    ):
-        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
-    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
-    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
-    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
-    plan = driveline.plan_run_report(a, tmp_path, design_text="")
+    plan = _plan(monkeypatch, a, tmp_path)
     section = next(s for s in plan.sections if s.title == "Strength and torsional buckling")
     static, total = section.tables[0].rows
     assert static[:4] == ["static", 3.0, 1.0, 2] and total[:4] == ["static + imbalance", 1.6, 3.0, 3]
@@ -234,18 +228,7 @@ def test_a_shear_shell_crimps_without_waves_and_needs_no_caveat(monkeypatch, tmp
     a = _assessment()
     shear = dict(a.buckling.to_dict(), theory="shear", wave_number_positive=None, wave_number_negative=None)
     a.points[0].analyses.buckling = NS(to_dict=lambda: shear)
-    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
-    for name, title in (
-        ("verdict_section", "Verdict"),
-        ("inputs_section", "Inputs"),
-        ("imbalance_section", "Imbalance"),
-        ("stability_section", "Stability"),
-    ):
-        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
-    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
-    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
-    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
-    plan = driveline.plan_run_report(a, tmp_path, design_text="")
+    plan = _plan(monkeypatch, a, tmp_path)
     section = next(s for s in plan.sections if s.title == "Strength and torsional buckling")
     text = section.paragraphs[1]
     assert "(positive, n = ∞ (shear crimping))" in text and "(negative, n = ∞ (shear crimping))" in text
