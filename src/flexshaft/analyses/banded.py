@@ -11,7 +11,11 @@ each uncoupled block on its own, shaft and boom nodes interleaved by station, or
 Cuthill-McKee where that is narrower); the half band of the baseline is 19. Every term is
 stored once as the data of one shared sparse pattern, so ``Z`` at a new (ω, Ω) is one real
 product over ``nnz`` numbers, scattered into LAPACK band storage, factorised and solved by
-``zgbsv``: O(n b²) per point.
+``zgbsv``: O(n b²) per point. Only the blocks a right-hand side loads are factorised: an
+uncoupled block with no load has the exact solution zero (the shaft's torsion, 38 of the tuned
+design's 343 free DOFs, under a lateral load: an imbalance, a magnet's force), and the band LU
+of the others is the one it would be inside the whole matrix, entry for entry (partial pivoting
+never crosses an uncoupled block, whose coupling entries are exact zeros).
 
 Singularity (an undamped system excited at one of its resonances) is detected without a
 per-point condition estimate: when the factor's pivots span more than :data:`PIVOT_SCREEN`,
@@ -167,6 +171,7 @@ class _BandStructure:
     kl: int
     ku: int
     template: sp.csr_matrix
+    block: np.ndarray  # the uncoupled block of each row, in the permuted ordering (non-decreasing)
 
 
 #: Band structures by union sparsity. A sweep over materials, gains or walls builds many models
@@ -190,7 +195,14 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
         rows, cols = keys // n, keys % n
         template = sp.csr_matrix((np.zeros(keys.size), (rows, cols)), shape=(n, n))
         template.sort_indices()
-        for array in (perm, inverse, keys, rows, cols):
+        # the uncoupled blocks (band_ordering keeps each one's rows together): a block ends after
+        # row i when no entry couples a row <= i with a row > i
+        crossing = np.zeros(n + 1, dtype=np.int64)
+        np.add.at(crossing, np.minimum(rows, cols), 1)
+        np.add.at(crossing, np.maximum(rows, cols), -1)
+        ends = np.cumsum(crossing)[: max(n - 1, 0)] == 0
+        block = np.concatenate([[0], np.cumsum(ends)]).astype(np.int64)[:n]
+        for array in (perm, inverse, keys, rows, cols, block):
             array.setflags(write=False)
         band = _BandStructure(
             perm,
@@ -201,6 +213,7 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
             int(np.max(rows - cols, initial=0)),
             int(np.max(cols - rows, initial=0)),
             template,
+            block,
         )
         if len(_STRUCTURES) >= 16:
             _STRUCTURES.clear()
@@ -223,6 +236,7 @@ class BandedHarmonicSolver:
         self.perm, self.inverse = band.perm, band.inverse
         self._rows, self._cols, self.kl, self.ku = band.rows, band.cols, band.kl, band.ku
         self._template = band.template  # shared: copied before use
+        self._block = band.block
         self.data = {}
         for name, (r, c, v) in terms.items():  # each term's data on the shared pattern
             values = np.zeros(band.keys.size, dtype=complex)
@@ -423,37 +437,69 @@ class BandedHarmonicSolver:
             if not (math.isfinite(omega) and math.isfinite(speed)):
                 raise ValueError(f"frequency and speed must be finite (got ω = {omega!r}, Ω = {speed!r})")
         table = self.coefficient_table([p[0] for p in points], [p[1] for p in points])
+        span = self.loaded_span(bp)
         for (omega, speed), weights in zip(points, table):
-            yield self._solve_permuted(omega, speed, bp, weights)[self.inverse]
+            yield self._solve_permuted(omega, speed, bp, weights, span)[self.inverse]
+
+    def loaded_span(self, bp: np.ndarray) -> tuple[int, int]:
+        """The rows ``lo:hi`` (solver ordering) of the uncoupled blocks that the right-hand side
+        ``bp`` (in that ordering) loads, from the first to the last: the solution is zero
+        elsewhere (the module docstring). Every row for a zero right-hand side."""
+        loaded = np.flatnonzero(np.any(bp.reshape(self.n, -1) != 0, axis=1))
+        if loaded.size == 0:
+            return 0, self.n
+        lo = int(np.searchsorted(self._block, self._block[loaded[0]], side="left"))
+        hi = int(np.searchsorted(self._block, self._block[loaded[-1]], side="right"))
+        return lo, hi
 
     def _solve_permuted(
-        self, omega: float, speed: float, bp: np.ndarray, weights: np.ndarray | None = None
+        self,
+        omega: float,
+        speed: float,
+        bp: np.ndarray,
+        weights: np.ndarray | None = None,
+        span: tuple[int, int] | None = None,
     ) -> np.ndarray:
-        """Z(ω, Ω) x = bp in the solver's ordering: one ``zgbsv`` (band LU and solve)."""
+        """Z(ω, Ω) x = bp in the solver's ordering: one ``zgbsv`` (band LU and solve) of the rows
+        ``span`` (:meth:`loaded_span`; default all), zero elsewhere."""
+        lo, hi = (0, self.n) if span is None else span
         data = self.matrix_data(omega, speed, weights)
         ab = self._buffer
         ab.fill(0.0)
         self._buffer_memory[self._memory_index] = data
-        lu, piv, x, info = lapack.zgbsv(self.kl, self.ku, ab, bp, overwrite_ab=True, overwrite_b=False)
+        part = hi - lo < self.n
+        lu, piv, x, info = lapack.zgbsv(
+            self.kl,
+            self.ku,
+            ab[:, lo:hi] if part else ab,
+            bp[lo:hi] if part else bp,
+            overwrite_ab=True,
+            overwrite_b=False,
+        )
+        if part:  # the unloaded blocks' solution: exactly zero
+            whole = np.zeros(bp.shape, dtype=complex)
+            whole[lo:hi] = x
+            x = whole
         if info > 0:
             self._singular(omega, speed, None)
         pivots = np.abs(lu[self.kl + self.ku])
         if not np.isfinite(x).all() or pivots.min() < PIVOT_SCREEN * pivots.max():
-            x = self._refine(data, lu, piv, bp, x, omega, speed)
+            x = self._refine(data, lu, piv, bp, x, omega, speed, (lo, hi))
             if omega > 0:
-                self._check_resonance(lu, piv, x, omega, speed)
+                self._check_resonance(lu, piv, x, omega, speed, (lo, hi))
         return x
 
-    def _check_resonance(self, lu, piv, x: np.ndarray, omega: float, speed: float) -> None:
+    def _check_resonance(self, lu, piv, x: np.ndarray, omega: float, speed: float, span: tuple[int, int]) -> None:
         """Warn when the solution's sensitivity to ω exceeds ``1/RESONANCE_TOLERANCE`` (see the
-        module docstring)."""
+        module docstring); ``lu``, ``piv``: the factor of the rows ``span`` (x is zero elsewhere)."""
         size = np.linalg.norm(x.reshape(self.n, -1), axis=0)
         if not np.any(size > 0):
             return
         Zw = self._template.copy().astype(complex)
         Zw.data[:] = -2 * omega * self.data["M"] + 1j * (speed * self.data["G"] + self.data["C"])
-        dx, _ = lapack.zgbtrs(lu, self.kl, self.ku, Zw @ x, piv)
-        change = np.linalg.norm(dx.reshape(self.n, -1), axis=0)
+        lo, hi = span
+        dx, _ = lapack.zgbtrs(lu, self.kl, self.ku, (Zw @ x)[lo:hi], piv)
+        change = np.linalg.norm(dx.reshape(hi - lo, -1), axis=0)
         kappa = omega * float(np.max(np.where(size > 0, change / np.where(size > 0, size, 1.0), 0.0)))
         if kappa * RESONANCE_TOLERANCE > 1:
             import warnings
@@ -468,20 +514,23 @@ class BandedHarmonicSolver:
                 stacklevel=2,
             )
 
-    def _refine(self, data, lu, piv, b, x, omega, speed):
-        """Iterative refinement (at most :data:`REFINEMENT_STEPS` steps): returns the refined
-        solution once a correction falls below :data:`FORWARD_ERROR_LIMIT` of it; a singular
-        system's corrections do not shrink, and it is reported."""
+    def _refine(self, data, lu, piv, b, x, omega, speed, span):
+        """Iterative refinement (at most :data:`REFINEMENT_STEPS` steps) of the rows ``span``
+        (``lu``, ``piv``: their factor; x is zero elsewhere): returns the refined solution once a
+        correction falls below :data:`FORWARD_ERROR_LIMIT` of it; a singular system's corrections
+        do not shrink, and it is reported."""
         if not np.all(np.isfinite(x)):
-            self._singular(omega, speed, lu, piv)
+            self._singular(omega, speed, lu, piv, span)
         Z = self._template.copy().astype(complex)
         Z.data[:] = data
+        lo, hi = span
         previous = np.inf
         for _ in range(REFINEMENT_STEPS):
-            dx, _ = lapack.zgbtrs(lu, self.kl, self.ku, b - Z @ x, piv)
+            dx, _ = lapack.zgbtrs(lu, self.kl, self.ku, (b - Z @ x)[lo:hi], piv)
             if not np.all(np.isfinite(dx)):
                 break
-            x = x + dx
+            x = x.copy()
+            x[lo:hi] += dx
             change = float(
                 np.max(np.linalg.norm(dx, axis=0) / np.maximum(np.linalg.norm(x, axis=0), np.finfo(float).tiny))
             )
@@ -490,12 +539,13 @@ class BandedHarmonicSolver:
             if change > 0.5 * previous:  # the corrections do not contract: singular to working precision
                 break
             previous = change
-        self._singular(omega, speed, lu, piv)
+        self._singular(omega, speed, lu, piv, span)
 
-    def _singular(self, omega: float, speed: float, lu, piv=None) -> None:
+    def _singular(self, omega: float, speed: float, lu, piv=None, span: tuple[int, int] | None = None) -> None:
         note = ""
         if lu is not None:
-            anorm = np.abs(self.matrix(omega, speed)).sum(axis=0).max()
+            lo, hi = (0, self.n) if span is None else span
+            anorm = np.abs(self.matrix(omega, speed)[:, lo:hi]).sum(axis=0).max()
             rcond = lapack.zgbcon(self.kl, self.ku, lu, piv, anorm)[0]
             note = f"; reciprocal condition number {rcond:.1e}"
         raise SingularSystemError(
