@@ -8,10 +8,12 @@ grid takes no stand-in point there.
 
 * A three-DOF stand-in (M = I): DOFs 0 and 1 coupled, K = [[500, −200], [−200, 500]] with
   eigenvalues 500 ∓ 200 = 300 and 700, DOF 2 alone with K = 400: natural frequencies √300,
-  √700 and 20 rad/s by hand. The loops' rows at DOF 0 see √300 and √700 only, by both ways of
-  computing them (the whole spectrum's modes classified by their shapes, the subset solve of
-  the visible DOFs). With DOF 2's stiffness 300, its mode and the coupled block's first share
-  one eigenvalue and the eigensolver may return any rotation of the two: √300 must stay.
+  √700 and 20 rad/s by hand, and the same with K and M both 1e16 times larger (other units:
+  the mode shapes' size changes, not what is seen). The loops' rows at DOF 0 see √300 and √700
+  only, by both ways of computing them (the whole spectrum's modes classified by their shapes,
+  the subset solve of the visible DOFs). With DOF 2's stiffness 300, its mode and the coupled
+  block's first share one eigenvalue and the eigensolver may return any rotation of the two:
+  √300 must stay.
   Rel 1e-12: square roots of exact small integers.
 * A steel tube (1 m, 8 elements, a 20 kg disk) on two magnetic bearings, its axial and
   torsional motion held at its start: the loops' grid with no poles given holds every natural
@@ -47,13 +49,13 @@ class _Model(SimpleNamespace):
     __hash__ = object.__hash__
 
 
-def _three_dof_model(alone: float):
+def _three_dof_model(alone: float, scale: float = 1.0):
     K = np.array([[500.0, -200.0, 0.0], [-200.0, 500.0, 0.0], [0.0, 0.0, alone]])
     return _Model(
         dofs=SimpleNamespace(free=np.arange(3)),
-        K=sp.csr_matrix(K),
+        K=sp.csr_matrix(scale * K),
         Kp=sp.csr_matrix((3, 3)),
-        M=sp.csr_matrix(np.eye(3)),
+        M=sp.csr_matrix(scale * np.eye(3)),
     )
 
 
@@ -64,10 +66,12 @@ def test_loop_dofs_are_the_blocks_that_hold_the_rows():
     np.testing.assert_array_equal(loop_dofs(pattern, np.array([1, 2])), [True, True, True])
 
 
+@pytest.mark.parametrize("scale", [1.0, 1e16], ids=["M = I", "M = 1e16 I"])
 @pytest.mark.parametrize("whole_up_to", [400, 0], ids=["whole spectrum", "subset solve"])
-def test_only_the_visible_blocks_natural_frequencies(monkeypatch, whole_up_to):
+def test_only_the_visible_blocks_natural_frequencies(monkeypatch, whole_up_to, scale):
+    """K and M scaled together (other units) leave the frequencies and what is seen alone."""
     monkeypatch.setattr(loop_grid, "WHOLE_DENSE_BASIS_UP_TO", whole_up_to)
-    model = _three_dof_model(400.0)
+    model = _three_dof_model(400.0, scale)
     visible = np.array([True, True, False])
     np.testing.assert_allclose(natural_frequencies(model, 0.0, 100.0), np.sqrt([300.0, 400.0, 700.0]), rtol=1e-12)
     np.testing.assert_allclose(natural_frequencies(model, 0.0, 100.0, visible), np.sqrt([300.0, 700.0]), rtol=1e-12)
