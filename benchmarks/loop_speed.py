@@ -1,11 +1,12 @@
 """The magnetic-bearing loops alone (issue 30, point 2): this checkout against a reference tree.
 
 Runs ``bearing_loops`` as the assessment calls it (``_roots_and_loops``: the every-root check's
-closed-loop poles at the operating speed), on the embedded tuned design at its own operating
-point, at the screening's one grid point per lightly damped pole (``peak_samples=1``) and the
-report's three, and the all-full reference (``projected=False``, a full banded solve at every
-refinement step) for the margins' agreement. Each tree runs in its own process with one BLAS
-thread; the trees alternate ``--rounds`` times and the medians are over all their warm calls.
+resolved closed-loop poles at the operating speed, above which the natural frequencies stand
+in), on the embedded tuned design at its own operating point, at the screening's one grid point
+per lightly damped pole (``peak_samples=1``) and the report's three, and the all-full reference
+(``projected=False``, a full banded solve at every refinement step) for the margins' agreement.
+Each tree runs in its own process with one BLAS thread; the trees alternate ``--rounds`` times
+and the medians are over all their warm calls.
 Prints the CPU and wall medians, the number of full banded solves (points handed to the
 solver's sweeps) and the largest relative difference from the all-full reference of the margins
 (peak |S|, the gain and phase margins, the phase margin's frequency) and, apart, of the peak's
@@ -35,7 +36,7 @@ from flexshaft.design.io import tuned_design
 from flexshaft.verdict.point_tasks import root_speeds
 repeats = int(sys.argv[1])
 model = build_model(tuned_design().model_copy(update={"envelope": None}))
-poles = root_stability(model, root_speeds(model)).roots_at(model.speed)
+poles = root_stability(model, root_speeds(model)).resolved_roots_at(model.speed)  # as _roots_and_loops passes them
 solver = solver_for(model)
 count = [0]
 sweep = solver.sweep

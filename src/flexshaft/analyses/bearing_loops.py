@@ -29,8 +29,10 @@ is, the eigen-analysis says (:mod:`flexshaft.analyses.stability`,
 The frequency grid: :mod:`flexshaft.analyses.loop_grid`, a logarithmic one with points at the
 lightly damped closed-loop poles, those of the loss-free closed loop
 (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`) or the caller's (``poles``: the
-every-root check's). tests/test_loop_robustness.py checks the result against a 5000-point grid
-refined everywhere.
+every-root check's), and above them at the natural frequencies of the blocks of Z the loops'
+rows touch (:func:`~flexshaft.analyses.loop_grid.loop_dofs`: not the shaft's uncoupled torsion
+and axial motion, whose modes are no poles of S). tests/test_loop_robustness.py checks the
+result against a 5000-point grid refined everywhere.
 
 The refinements of all loops advance together, one banded sweep a round
 (:func:`~flexshaft.analyses.local_projection.lockstep`), each on a four-unknown projected model
@@ -39,7 +41,10 @@ solve (:mod:`flexshaft.analyses.local_projection`: accepted when the two agree t
 the model is enriched or the refinement repeated on full solves; the values reported are the
 full model's). A crossover that fails its first check is not refined further when it cannot
 set a margin (:func:`~flexshaft.analyses.loop_margins.release_rule`). On the tuned design this
-halves the refinements' full solves (147 to 75). tests/test_loop_projection.py compares the
+halves the refinements' full solves (147 to 75). No loop is solved twice at one frequency: the
+check solve at a refined peak gives the second round its L there, and a refinement run again on
+an enriched model that lands where its check was reuses that solve (the baseline's operating
+point: 105 of 673 solves). tests/test_loop_projection.py compares the
 margins with full solves at every step, tests/test_bearing_loops_accuracy.py on the embedded
 designs at every envelope point and on poor loops. A second round on full solves
 (:class:`~flexshaft.analyses.loop_margins.MarginPlan`) refines the crossovers the first one's
@@ -55,11 +60,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.sparse as sp
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed
 from flexshaft.analyses.local_projection import LocalModels, lockstep, projected_refinements, window_of
-from flexshaft.analyses.loop_grid import AROUND, frequency_grid
+from flexshaft.analyses.loop_grid import AROUND, frequency_grid, loop_dofs
 from flexshaft.analyses.loop_margins import LoopMargins, refinements, release_rule
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
@@ -176,7 +182,12 @@ def bearing_loops(
 
     if poles is None:
         poles = closed_loop_poles(model, speed)
-    grid = frequency_grid(model, (low, high), n_points, poles, AROUND[peak_samples])
+    # the natural frequencies of blocks of Z that no loop's rows touch are no poles of S (loop_grid)
+    n = free.size
+    stack = solver.term_stack.tocoo()  # every term of Z, stacked: (n_terms n, n)
+    pattern = sp.csr_matrix((np.ones(stack.nnz), (stack.row % n, stack.col)), shape=(n, n))
+    visible = loop_dofs(pattern, np.flatnonzero(np.any(rhs != 0, axis=1) | np.any(sense != 0, axis=0)))
+    grid = frequency_grid(model, (low, high), n_points, poles, AROUND[peak_samples], visible)
     responses: list[np.ndarray] = []
     T_grid = closed(grid, responses if projected else None)
     static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
@@ -194,15 +205,24 @@ def bearing_loops(
         only; its responses (n_free,) are appended to ``keep`` in the order of ``omegas``."""
         return on_loops(omegas, loop_of[which], keep)
 
+    solved: dict[tuple[float, int], np.ndarray] = {}  # (ω, loop) -> its full response
+
     def on_loops(omegas: np.ndarray, loops: np.ndarray, keep: list | None = None) -> np.ndarray:
-        """L(iω) of loop ``loops[i]`` at ``omegas[i]`` (:func:`evaluate`'s)."""
+        """L(iω) of loop ``loops[i]`` at ``omegas[i]`` (:func:`evaluate`'s). A loop's response
+        at a frequency solved before is reused, not solved again (the check solve of a refined
+        peak is the second round's L there; a refinement redone on full solves starts where
+        its check solves were): the same ω, the same right-hand side, the same solution."""
         T = np.empty(omegas.size, dtype=complex)
         columns: list = [None] * omegas.size
         for k in np.unique(loops):
             at = np.flatnonzero(loops == k)
-            for i, x in zip(at, solver.sweep([(float(omegas[i]), speed) for i in at], rhs[:, k])):
-                columns[i] = x
-            T[at] = gains(omegas[at])[k] * np.array([sense[k] @ columns[i] for i in at])
+            new = list(dict.fromkeys(float(omegas[i]) for i in at if (float(omegas[i]), int(k)) not in solved))
+            for x, column in zip(new, solver.sweep([(x, speed) for x in new], rhs[:, k])):
+                solved[(x, int(k))] = column
+            for i in at:
+                columns[i] = solved[(float(omegas[i]), int(k))]
+            law = model.actuators[k // 2].feedback_gain(1j * omegas[at])  # the loop's own law (gains')
+            T[at] = law * np.array([sense[k] @ columns[i] for i in at])
         if keep is not None:
             keep.extend(columns)
         return T / (1.0 - T)
