@@ -49,12 +49,12 @@ AROUND = {3: (-0.5, 0.0, 0.5), 1: (0.0,)}
 VISIBLE = 1e-6
 
 
-def loop_dofs(pattern: sp.spmatrix, rows: np.ndarray) -> np.ndarray:
+def loop_dofs(pattern: sp.csr_matrix, rows: np.ndarray) -> np.ndarray:
     """Mask of the free DOFs coupled to any of ``rows`` (free-DOF indices: the loops' actuation
     and sensing rows) through the sparsity ``pattern`` of Z (n_free, n_free; every term's
     entries, stored zeros included): the connected blocks of the pattern that hold them."""
-    pattern = sp.csr_matrix(pattern)
-    pattern = sp.csr_matrix((np.ones(pattern.indices.size), pattern.indices, pattern.indptr), shape=pattern.shape)
+    csr = sp.csr_matrix(pattern)
+    pattern = sp.csr_matrix((np.ones(csr.indices.size), csr.indices, csr.indptr), shape=csr.shape)
     _, label = connected_components(pattern, directed=False)
     return np.isin(label, label[np.asarray(rows, dtype=np.intp)])
 
