@@ -15,6 +15,10 @@ loosest accuracy the screening's reduced and projected models are held to; exit 
 
     .venv/bin/python benchmarks/assessment_speed.py --reference /tmp/ref-main --verdicts
 
+``--blas-threads 0`` runs the jobs with no BLAS thread variable set, as a notebook's kernel
+does (the libraries' default: one thread per core); the API's analyses limit themselves to
+one thread (:mod:`flexshaft.parallel.threads`), which this measures.
+
 The reference is any flexshaft source tree (e.g. ``git worktree add /tmp/ref-main <commit>``);
 its ``src/`` is put first on PYTHONPATH. Without ``--reference`` only this checkout is timed.
 """
@@ -105,7 +109,9 @@ def main() -> None:
     parser.add_argument("--tolerance", type=float, default=1e-6, help="largest relative difference of a value")
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
-    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, int(args.report))
+    trees, runs = bu.paired_runs(
+        HERE.parent, args.reference, args.rounds, JOB, args.repeats, int(args.report), threads=args.blas_threads
+    )
     bu.print_heading("assessment speed, tuned design", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm repeats per tree")
     medians: dict[str, dict[str, float]] = {}

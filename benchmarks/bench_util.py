@@ -92,28 +92,33 @@ def single_thread_env(threads: int) -> dict:
     return dict(os.environ, **{k: str(threads) for k in THREAD_VARS})
 
 
-def run_in_tree(source, job: str, *args) -> dict:
+def run_in_tree(source, job: str, *args, threads: int = 1) -> dict:
     """Run the Python code ``job`` (with ``args`` as its ``sys.argv[1:]``) in a fresh process
-    on the flexshaft source tree ``source`` (its ``src`` first on PYTHONPATH) with one BLAS
-    thread; returns the JSON object of its last line of output."""
-    env = dict(single_thread_env(1), PYTHONPATH=os.path.join(str(source), "src"))
+    on the flexshaft source tree ``source`` (its ``src`` first on PYTHONPATH) with ``threads``
+    BLAS threads (0: no thread variable set, the libraries' defaults, as in a notebook's
+    kernel); returns the JSON object of its last line of output."""
+    if threads:
+        base = single_thread_env(threads)
+    else:
+        base = {k: v for k, v in os.environ.items() if k not in THREAD_VARS}
+    env = dict(base, PYTHONPATH=os.path.join(str(source), "src"))
     out = subprocess.run([sys.executable, "-c", job, *map(str, args)], env=env, capture_output=True, text=True)
     if out.returncode:
         raise SystemExit(f"the job failed in {source}:\n{out.stderr}")
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
-def paired_runs(checkout, reference, rounds: int, job: str, *args) -> tuple[dict, dict]:
+def paired_runs(checkout, reference, rounds: int, job: str, *args, threads: int = 1) -> tuple[dict, dict]:
     """``(trees, runs)``: this checkout and, when given, the ``reference`` source tree by name,
-    and the results of :func:`run_in_tree` of ``job`` in each, the trees alternating ``rounds``
-    times (so a change of the machine's load falls on both)."""
+    and the results of :func:`run_in_tree` of ``job`` in each (``threads`` BLAS threads), the
+    trees alternating ``rounds`` times (so a change of the machine's load falls on both)."""
     trees = {"this checkout": checkout}
     if reference:
         trees["reference"] = reference.resolve()
     runs: dict[str, list[dict]] = {name: [] for name in trees}
     for _ in range(rounds):
         for name, path in trees.items():
-            runs[name].append(run_in_tree(path, job, *args))
+            runs[name].append(run_in_tree(path, job, *args, threads=threads))
     return trees, runs
 
 

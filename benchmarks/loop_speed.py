@@ -80,7 +80,7 @@ print(json.dumps(out))
 def main() -> None:
     args = bu.paired_parser(__doc__.splitlines()[0], repeats=7).parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
-    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
+    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, threads=args.blas_threads)
     bu.print_heading("bearing loops, tuned design at its operating point", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm calls per tree")
     medians: dict[str, dict[str, float]] = {}

@@ -110,7 +110,7 @@ def _accuracy(fast: dict, full: dict) -> str:
 def main() -> None:
     args = bu.paired_parser(__doc__.splitlines()[0], repeats=5).parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
-    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
+    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, threads=args.blas_threads)
     bu.print_heading("spin-up scan + critical speeds, tuned design at one point", args.blas_threads)
     print(f"  {args.rounds} rounds x {args.repeats} warm repeats per tree; CPU medians [ms]; banded solves per run")
     print(f"  {'tree / scan':34s} {'spin-up':>8s} {'criticals':>10s} {'total':>8s}   solves (scan + peaks)")

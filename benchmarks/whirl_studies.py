@@ -83,7 +83,7 @@ def main() -> None:
     args = parser.parse_args()
     bu.reexec_with_threads(args.blas_threads, __file__)
     bu.print_heading("whirl studies of `flexshaft run` (tuned design, REPORT)", args.blas_threads)
-    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats)
+    trees, runs = bu.paired_runs(HERE.parent, args.reference, args.rounds, JOB, args.repeats, threads=args.blas_threads)
     for name, results in runs.items():
         print(f"  {name:14s} CPU median {statistics.median(r['total'] for r in results):.3f} s")
         for task in results[0]["cpu"]:

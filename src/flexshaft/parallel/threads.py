@@ -5,13 +5,22 @@ faster, whenever the other core is busy (measured on the 2-core VM: modes of the
 speed took 0.37-0.41 s on one thread and 2.3-11 s with the default two threads under load).
 Dense analyses therefore run with one BLAS thread; parallelism comes from sweeping points in
 separate processes.
+
+The public entry points (:func:`flexshaft.assess`, :func:`flexshaft.verdict.assess.assess_point`
+and the analyses' own: modes, stability, Campbell, ...) run under :func:`single_blas_thread`, so a
+notebook or script that imports flexshaft without setting ``OPENBLAS_NUM_THREADS`` gets the
+commands' speed: on the 2-core VM with the other core busy, a screening assessment of the tuned
+design through the Python API took 0.77-2.8 s of CPU (medians of 7; up to 3 s for one call)
+where one BLAS thread takes 0.35 s (benchmarks/README.md, 2026-12-05). Each entry costs about
+10 µs (two calls into each loaded BLAS), and nested entries keep the limit.
 """
 
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable
 from contextlib import nullcontext
-from typing import Any
+from typing import Any, ParamSpec, TypeVar
 
 __all__ = ["one_blas_thread", "single_blas_thread"]
 
@@ -46,11 +55,15 @@ def _loaded_extensions() -> int:
     return len(sys.modules)
 
 
-def single_blas_thread(func):
-    """Run ``func`` with BLAS limited to one thread."""
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
+
+
+def single_blas_thread(func: Callable[_P, _R]) -> Callable[_P, _R]:
+    """Run ``func`` with BLAS limited to one thread (the limit in place before is restored)."""
 
     @functools.wraps(func)
-    def wrapper(*args, **kwargs):
+    def wrapper(*args: _P.args, **kwargs: _P.kwargs) -> _R:
         with one_blas_thread():
             return func(*args, **kwargs)
 

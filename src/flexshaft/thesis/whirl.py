@@ -15,7 +15,7 @@ import numpy as np
 from flexshaft.analyses.campbell import default_basis_size
 from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.labelled import LabelledArrays
-from flexshaft.analyses.stability import StabilityResult, stability
+from flexshaft.analyses.stability import DampingModel, StabilityResult, stability
 from flexshaft.assembly import build_model
 from flexshaft.design import with_overrides
 
@@ -46,7 +46,11 @@ def thesis_shaft_designs(design) -> dict:
 
 
 def compare_shafts(
-    design, speeds, damping_model: str = "hysteretic", n_modes: int = 10, reference_frequency: float | None = None
+    design,
+    speeds,
+    damping_model: DampingModel = "hysteretic",
+    n_modes: int = 10,
+    reference_frequency: float | None = None,
 ) -> dict[str, StabilityResult]:
     """Stability of each thesis shaft over ``speeds`` [rad/s]."""
     return {
@@ -56,7 +60,11 @@ def compare_shafts(
 
 
 def shaft_stability(
-    design, speeds, damping_model: str = "hysteretic", n_modes: int = 10, reference_frequency: float | None = None
+    design,
+    speeds,
+    damping_model: DampingModel = "hysteretic",
+    n_modes: int = 10,
+    reference_frequency: float | None = None,
 ) -> StabilityResult:
     """Stability of one design over ``speeds`` [rad/s] (one task of :func:`compare_shafts`)."""
     return stability(build_model(design), speeds, n_modes, damping_model, reference_frequency)
@@ -88,7 +96,7 @@ def gain_stability_map(
     kp_values,
     kd_values,
     speeds,
-    damping_model: str = "hysteretic",
+    damping_model: DampingModel = "hysteretic",
     n_modes: int = 10,
     reference_frequency: float | None = None,
 ) -> StabilityMap:

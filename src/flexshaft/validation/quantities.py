@@ -19,6 +19,7 @@ import numpy as np
 from flexshaft.design import Design
 
 if TYPE_CHECKING:
+    from flexshaft.analyses.stability import DampingModel
     from flexshaft.thermal.correlations import ForcedMethod
 
 __all__ = [
@@ -208,7 +209,7 @@ def whirl_onset_speed(
     max_speed: float,
     n_speeds: int,
     n_modes: int,
-    damping_model: str,
+    damping_model: DampingModel,
     reference_frequency: float | None = None,
 ) -> np.ndarray:
     """Onset speed [rad/s] of the whirl instability from the stability analysis over the speeds

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.design import Design, DesignError, Problem
 from flexshaft.design.points import design_at_point
+from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.resolution import REPORT, Resolution
 from flexshaft.thermal.envelope import PointConditions, point_conditions
 from flexshaft.units import rad_s_to_rpm
@@ -126,6 +127,7 @@ def _judged(name: str, analyses: PointAnalyses) -> PointAssessment:
     )
 
 
+@single_blas_thread
 def assess(
     design: Design,
     resolution: Resolution = REPORT,
@@ -173,6 +175,7 @@ def assess(
     return combine_points(design, judged, resolution, progress=progress)
 
 
+@single_blas_thread
 def assess_point(
     design: Design,
     index: int,
