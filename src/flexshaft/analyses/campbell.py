@@ -41,6 +41,7 @@ from flexshaft.analyses.guards import (
 from flexshaft.analyses.hysteretic_roots import consistent_roots, lowest_roots, mode_root
 from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
+from flexshaft.analyses.screened_match import match_cost, screened_match
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.campbell import campbell_figure
@@ -205,11 +206,12 @@ def track_modes(
     synchronous line and keeps the root consistent with its side. The step is accepted when
     every mode converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes
     landed on the same eigenvalue. Otherwise ``solve(speed) -> (s, Y)`` gives all eigenvalues
-    at the speed (default: with ``refine_loss`` the exact loss-consistent set,
-    :func:`~flexshaft.analyses.hysteretic_roots.consistent_roots`; else the loss-free state
-    matrix), matched to the previous curves by maximum MAC with a small frequency-distance
-    penalty (optimal assignment). ``viscous(speed)`` gives the weights of the thesis's viscous
-    internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
+    at the speed (default: with ``refine_loss`` the exact loss-consistent set, with the vectors
+    of the roots the match can pick, :func:`~flexshaft.analyses.screened_match.screened_match`,
+    or every vector, :func:`~flexshaft.analyses.hysteretic_roots.consistent_roots`; else the
+    loss-free state matrix), matched to the previous curves by maximum MAC with a small
+    frequency-distance penalty (optimal assignment). ``viscous(speed)`` gives the weights of the
+    thesis's viscous internal-damping model instead (:func:`~flexshaft.analyses.loss.viscous_equivalent`):
     candidates and continuation then solve that linear problem. Without ``refine_loss`` and
     ``viscous`` (the undamped Campbell diagram) every speed is matched.
 
@@ -229,6 +231,7 @@ def track_modes(
     # the first solve (no curves yet) reads the vectors of the tracked roots and of rest_degenerate's
     # neighbours only (within 1e-4 of the refined roots; 1e-2 of the solve's is ample)
     opening: Callable[[float], tuple[np.ndarray, np.ndarray]] | None = None
+    screen = hysteretic and solve is None  # the default solve's match, from the vectors it can pick
     if viscous is not None:
         solve = lambda speed: candidates(red, speed, viscous(speed))  # noqa: E731
     elif hysteretic:
@@ -259,7 +262,7 @@ def track_modes(
             step = _continue(red, speeds, eig, states, k, n_modes, None if viscous is None else viscous(speed))
         untracked = None
         if step is None:
-            step, untracked = _match(red, opening if prev is None else solve, speed, prev, n_modes, hysteretic)
+            step, untracked = _match(red, opening if prev is None else solve, speed, prev, n_modes, hysteretic, screen)
         s_k, Y_k = step
         if k == 0:  # numbered by damped frequency, as the modes' tables (the refinement moved them)
             first = np.lexsort((np.abs(s_k), s_k.imag))
@@ -348,13 +351,16 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     return s_k, Y_k
 
 
-def _match(red, solve, speed, prev, n_modes, hysteretic):
+def _match(red, solve, speed, prev, n_modes, hysteretic, screen=False):
     """All eigenvalues at ``speed`` matched to the previous curves. With the hysteretic loss
     each matched root is then polished by Newton's method on its mode's branches, the least
     stable of its consistent roots where a fold near the synchronous line has two
     (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`). Returns ``((s, Y), untracked)``:
-    without previous curves also the roots not taken, ``(s, Y)`` unpolished (else None)."""
-    lam, Y = solve(speed)
+    without previous curves also the roots not taken, ``(s, Y)`` unpolished (else None).
+    ``screen``: the match from the vectors of the roots it can pick when that is certain
+    (:func:`~flexshaft.analyses.screened_match.screened_match`), else from ``solve``'s."""
+    screened = screened_match(red, speed, prev[0], prev[1]) if screen and prev is not None else None
+    lam, Y, idx = screened if screened is not None else (*solve(speed), None)
     if lam.size < n_modes:  # the model has fewer modes than asked for: the request's limit, not a fault
         raise RefusedInputError(
             f"only {lam.size} oscillatory modes at {speed:.6g} rad/s for {n_modes} tracked; "
@@ -365,11 +371,8 @@ def _match(red, solve, speed, prev, n_modes, hysteretic):
         idx = lowest_modes(lam, n_modes)
         rest = np.setdiff1d(np.arange(lam.size), idx)
         untracked = (lam[rest], Y[:, rest])
-    else:
-        lam_prev, Y_prev = prev
-        scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
-        cost = 1 - mac(Y_prev, Y) + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
-        idx = assignment(cost)
+    elif idx is None:
+        idx = assignment(match_cost(prev[0], prev[1], lam, Y))
     s_k, Y_k = lam[idx].copy(), Y[:, idx].copy()
     if hysteretic:  # Newton polishes the dense eigen-solve's root (a fold: the less stable root)
         roots, vecs, found = mode_roots(red, speed, s_k, Y_k)

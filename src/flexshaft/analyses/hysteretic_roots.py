@@ -73,6 +73,7 @@ __all__ = [
     "consistent_values_below",
     "line_root",
     "lowest_roots",
+    "mac_bounds",
     "mode_root",
     "damped_modes",
 ]
@@ -265,8 +266,20 @@ def _may_pair(
     the roots. With an actuator channel that adds to T(s) (not bounded here), every root may
     pair. Cost: a few products of (roots, nb) by (nb, nb), 0.1-0.15 ms for the tuned design's
     ~50 roots above the line, which keeps 15-25 of them."""
-    if any(a.law is not None or a.stiffness or a.damping for a in red.actuators):
+    bound = mac_bounds(red, speed, weights, roots, Y)
+    if bound is None:
         return np.ones(roots.size, bool)
+    return np.any(bound**2 >= 0.5 * SAME_MODE_MAC, axis=1)
+
+
+def mac_bounds(
+    red: ReducedModel, speed: float, weights: LossCoefficients, roots: np.ndarray, Y: np.ndarray
+) -> np.ndarray | None:
+    """An upper bound of ``|yᴴ v|`` (roots, columns) for the unit null vector y of each of
+    ``roots`` (one branch's, weights ``weights``) and each column v of ``Y``, from the roots
+    alone (the bound of :func:`_may_pair`); None when an actuator channel adds to T(s)."""
+    if any(a.law is not None or a.stiffness or a.damping for a in red.actuators):
+        return None
     damping, stiffness = red._speed_parts(speed, weights)
     off_d = np.abs(damping)
     np.fill_diagonal(off_d, 0.0)
@@ -279,8 +292,7 @@ def _may_pair(
         u = np.fmin(1.0, (size * np.linalg.norm(off_d, axis=1) + np.linalg.norm(off_k, axis=1)) / diagonal)
         for _ in range(3):
             u = np.fmin(u, (size * (u @ off_d.T) + u @ off_k.T) / diagonal)
-    bound = u @ np.abs(Y)
-    return np.any(bound**2 >= 0.5 * SAME_MODE_MAC, axis=1)
+    return u @ np.abs(Y)
 
 
 def _branch_spectrum(red: ReducedModel, speed: float, weights: LossCoefficients) -> np.ndarray:

@@ -50,7 +50,11 @@ Method (at each speed Ω):
    2e-3 from the full model's (ζ off by 6e-4); this basis holds them to 1e-7 at about half
    its cost (tests/test_root_stability.py).
 4. **Divergence**: a real root s > 0 of the state matrix (a magnet whose negative stiffness
-   exceeds its control stiffness) is unstable at every loss.
+   exceeds its control stiffness) is unstable at every loss. A passive driveline has none when
+   its basis stiffness is non-negative (every ω² >= 0: for a real root s and its real
+   eigenvector φ, ``s² φᵀφ + s φᵀDφ + φᵀKφ = 0`` with D and K positive semi-definite has no
+   root s > 0, :func:`_is_passive`): with the loss its roots are solved on its branches (step
+   3), so its loss-free state matrix, whose real roots were all that was read, is not solved.
 
 A root is unstable when its damping ratio ζ = −Re s/|s| is below
 −:data:`~flexshaft.analyses.stability.STABILITY_TOLERANCE` (oscillatory) or it is a divergent
@@ -140,7 +144,9 @@ class RootStability:
         The least-damped root at each speed [rad/s] (complex; a divergent root is real); for a
         passive check, of the roots up to :attr:`highest_frequency` (those its basis resolves).
     n_roots : ndarray
-        Roots examined at each speed (oscillatory roots with Im s > 0 and real roots).
+        Roots examined at each speed (oscillatory roots with Im s > 0 and the real roots of the
+        loss-free state matrix; a passive check with the loss, which solves no loss-free state
+        matrix (module docstring, step 4), counts its loss-consistent roots).
     n_refined : ndarray
         Of those, the roots refined with the hysteretic loss at each speed.
     unstable : tuple of UnstableRoot
@@ -399,12 +405,18 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
     nb = red.size
     scale = float(np.sqrt(max(np.max(red.w2, initial=0.0), 1.0)))
     least, counts, refined_counts, unstable, all_roots = [], [], [], [], []
+    passive = method == "passive" and red.has_loss
+    # a passive driveline's roots are its branches' (below); its loss-free roots would be read
+    # for a divergence only, which a non-negative stiffness excludes (step 4): not solved then
+    loss_free = not passive or bool(np.min(red.w2, initial=0.0) < 0)
     for speed in speeds:
         speed = float(speed)
-        state = red.state_matrix(speed)
-        passive = method == "passive" and red.has_loss
-        if passive:  # every root is solved on its branches below: the loss-free vectors are unused
-            lam, right = np.asarray(la.eigvals(state, check_finite=False), dtype=complex), None
+        state = red.state_matrix(speed) if loss_free else None
+        right: np.ndarray | None = None
+        if state is None:
+            lam = np.zeros(0, complex)
+        elif passive:  # every root is solved on its branches below: the loss-free vectors are unused
+            lam = np.asarray(la.eigvals(state, check_finite=False), dtype=complex)
         else:
             lam, right = la.eig(state, check_finite=False)
         require_finite("closed-loop roots", lam)
@@ -414,9 +426,10 @@ def root_stability(model: Model, speeds, tolerance: float = EIGENVALUE_TOLERANCE
         if passive:
             # every hysteretic root exactly, one complex eigen-solution per branch
             s = passive_roots[speed]
+            require_finite("closed-loop roots", s)
             done = np.ones(s.size, bool)
         else:
-            assert right is not None
+            assert state is not None and right is not None
             s, done = _hysteretic(red, speed, state, lam[oscillatory].copy(), right[:, oscillatory])
         zeta = _damping_ratio(s)
         for k in np.flatnonzero(zeta < -STABILITY_TOLERANCE):
