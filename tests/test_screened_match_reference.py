@@ -63,7 +63,7 @@ def _branch(red: ReducedModel, speed: float, w: LossCoefficients):
     return lam[keep], Y / np.linalg.norm(Y, axis=0)
 
 
-def _consistent(red: ReducedModel, speed: float):
+def consistent_from(red: ReducedModel, speed: float):
     """R(Ω) with every vector, sorted by |s| (no mode lies near the spin: one root per mode)."""
     lo, Y_lo = _branch(red, speed, BELOW)
     hi, Y_hi = _branch(red, speed, ABOVE)
@@ -84,9 +84,9 @@ def _reference_match(lam_prev, Y_prev, s, Y):
 
 def test_the_match_from_a_few_vectors_is_the_match_from_every_vector():
     red = _model()
-    lam_prev, Y_prev = _consistent(red, PREVIOUS)
+    lam_prev, Y_prev = consistent_from(red, PREVIOUS)
     lam_prev, Y_prev = lam_prev[:N_CURVES], Y_prev[:, :N_CURVES]
-    s_ref, Y_ref = _consistent(red, SPEED)
+    s_ref, Y_ref = consistent_from(red, SPEED)
     cols = _reference_match(lam_prev, Y_prev, s_ref, Y_ref)
     found = screened_match(red, SPEED, lam_prev, Y_prev)
     assert found is not None
@@ -102,8 +102,8 @@ def test_a_curve_whose_shape_is_a_root_left_out_is_not_matched_from_the_few_vect
     """A previous shape equal to a root above the band (near 548 rad/s) costs that root least:
     the screened match must not pick a candidate instead (None: the caller solves every vector)."""
     red = _model()
-    lam_prev, Y_prev = _consistent(red, PREVIOUS)
-    s_ref, Y_ref = _consistent(red, SPEED)
+    lam_prev, Y_prev = consistent_from(red, PREVIOUS)
+    s_ref, Y_ref = consistent_from(red, SPEED)
     top = int(np.argmax(np.abs(s_ref)))
     lam, Y = lam_prev[:N_CURVES].copy(), Y_prev[:, :N_CURVES].copy()
     Y[:, -1] = Y_ref[:, top]

@@ -71,11 +71,14 @@ __all__ = [
     "consistent_roots",
     "consistent_values",
     "consistent_values_below",
+    "consistent_from",
     "line_root",
     "lowest_roots",
     "mac_bounds",
     "mode_root",
     "damped_modes",
+    "separated_vectors",
+    "solved_below",
 ]
 
 #: Smallest MAC between the starting vector and a branch root for the root to count as the
@@ -158,7 +161,7 @@ def consistent_roots(red: ReducedModel, speed: float) -> tuple[np.ndarray, np.nd
     """
     if not red.has_loss:
         return candidates(red, speed)
-    return _consistent(
+    return consistent_from(
         red, speed, [(branch, *branch_roots(red, speed, branch.weights)) for branch in branches(red, speed)]
     )
 
@@ -167,7 +170,7 @@ def consistent_values(red: ReducedModel, speed: float) -> np.ndarray:
     """The eigenvalues R(Ω) of :func:`consistent_roots` alone [rad/s], sorted by |s|, for less
     than the cost of every eigenvector.
 
-    Each branch is solved without its vectors (:func:`_solved_below`); the pairing of on-line
+    Each branch is solved without its vectors (:func:`solved_below`); the pairing of on-line
     roots reads those of the upper branch's roots below the line (the modes below the spin) and
     of the lower branch's roots above it that may match one of them (:func:`_may_pair`), each
     by inverse iteration on its second-order problem (:func:`_null_vectors`). A single branch
@@ -194,16 +197,16 @@ def consistent_values_below(red: ReducedModel, speed: float, up_to: float = 1.0)
         s = s[on_branch(parts[0], s.imag, speed)]
         return s, np.zeros((red.size, s.size), complex)  # at rest no root is below the spin
     lower, upper = parts
-    return _consistent(red, speed, _solved_below(red, speed, lower, upper, up_to=up_to)[0])
+    return consistent_from(red, speed, solved_below(red, speed, lower, upper, up_to=up_to)[0])
 
 
-def _solved_below(
+def solved_below(
     red: ReducedModel, speed: float, lower: Branch, upper: Branch, up_to: float = 1.0
 ) -> tuple[list, np.ndarray]:
     """The two branches' oscillatory roots as :func:`consistent_values_below` solves them,
-    ``[(lower, s, Y), (upper, s, Y)]`` for :func:`_consistent`, with the vectors it and the callers
+    ``[(lower, s, Y), (upper, s, Y)]`` for :func:`consistent_from`, with the vectors it and the callers
     read only (zero columns else); and every eigenvalue of the upper branch's matrix (oscillatory
-    or not: how far its neighbours lie, :func:`_separated_vectors`).
+    or not: how far its neighbours lie, :func:`separated_vectors`).
 
     Both matrices are solved without vectors. The upper branch's roots below the spin (the wrong
     side: read by the pairing) and those on its own side below ``up_to`` Ω (the caller's band above
@@ -234,7 +237,7 @@ def _solved_below(
     if wrong.size and above.size:
         read[above] = _may_pair(red, speed, lower.weights, s_lo[above], Y_hi[:, wrong])
     Y_lo = np.zeros((red.size, s_lo.size), complex)
-    vectors = _separated_vectors(red, speed, lower.weights, spectrum_lo, s_lo[read])
+    vectors = separated_vectors(red, speed, lower.weights, spectrum_lo, s_lo[read])
     if vectors is None:  # a close neighbour or a failed inverse iteration: the dense solve
         s_lo, Y_lo = branch_roots(red, speed, lower.weights)
     else:
@@ -260,7 +263,7 @@ def _may_pair(
     ``|y_k| <= (|E| u)_k / |T_kk|`` again (a few such steps); then ``|yᴴ v| <= Σ_k u_k |v_k|``.
     A root is excluded when that bound's square is below half of :data:`SAME_MODE_MAC` for
     every column: it can then match none, and, its MAC being below the threshold, it is neither
-    the best match of a column nor a pair of :func:`_consistent`'s, so the pairs found from the
+    the best match of a column nor a pair of :func:`consistent_from`'s, so the pairs found from the
     other roots' vectors are those from every vector. The factor of two covers a dense solve's
     vector that mixes two nearly double roots (each within its own bound) and the round-off of
     the roots. With an actuator channel that adds to T(s) (not bounded here), every root may
@@ -329,7 +332,7 @@ def _null_vectors(red: ReducedModel, speed: float, weights: LossCoefficients, ro
     return out
 
 
-def _consistent(red: ReducedModel, speed: float, solved: list) -> tuple[np.ndarray, np.ndarray]:
+def consistent_from(red: ReducedModel, speed: float, solved: list) -> tuple[np.ndarray, np.ndarray]:
     """R(Ω) and its vectors from every branch's oscillatory roots, ``solved``: ``(branch, s, Y)``
     by branch (:func:`consistent_roots`). The pairing of on-line roots reads the vectors of the
     roots on the wrong side of the line only; the others are passed through."""
@@ -511,7 +514,7 @@ def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tu
 
 
 #: Smallest distance, relative to |s|, from a root to every other eigenvalue of its branch's
-#: matrix for the root's vector to be found by inverse iteration (:func:`_separated_vectors`).
+#: matrix for the root's vector to be found by inverse iteration (:func:`separated_vectors`).
 #: Two steps leave a neighbour's share at about (e/g)², e the dense solve's relative error of the
 #: root and g this gap, where the dense solve's own vector errs by about e/g; either start is
 #: refined by Newton's method wherever a root is (:func:`_polish`, the tracking's). Closer
@@ -527,16 +530,16 @@ def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 
     :func:`~flexshaft.analyses.eigen.lowest_modes` and for the roots within ``window`` (relative
     to |s|) of one of them, zero columns for the others.
 
-    Each branch's matrix is solved without its vectors (:func:`_solved_below`: of two, the lower
-    branch's roots below the spin and those :func:`_consistent` may pair get theirs there); the
-    upper roots wanted get theirs by inverse iteration (:func:`_separated_vectors`). Where that
+    Each branch's matrix is solved without its vectors (:func:`solved_below`: of two, the lower
+    branch's roots below the spin and those :func:`consistent_from` may pair get theirs there); the
+    upper roots wanted get theirs by inverse iteration (:func:`separated_vectors`). Where that
     cannot be trusted (a neighbour within :data:`_SEPARATED`), :func:`consistent_roots` as it is.
     """
     parts = branches(red, speed)
     if red.has_loss:
         if len(parts) == 2:
-            solved, every = _solved_below(red, speed, *parts)
-            s, Y = _consistent(red, speed, solved)
+            solved, every = solved_below(red, speed, *parts)
+            s, Y = consistent_from(red, speed, solved)
         else:
             every = _branch_spectrum(red, speed, parts[0].weights)
             s = every[_oscillatory(every)]
@@ -548,14 +551,14 @@ def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 
         needed[wanted] = True
         needed |= near.any(axis=1)
         missing = np.flatnonzero(needed & ~np.any(Y, axis=0))  # roots of the last branch (above the spin)
-        vectors = _separated_vectors(red, speed, parts[-1].weights, every, s[missing])
+        vectors = separated_vectors(red, speed, parts[-1].weights, every, s[missing])
         if vectors is not None:
             Y[:, missing] = vectors
             return s, Y
     return consistent_roots(red, speed)
 
 
-def _separated_vectors(
+def separated_vectors(
     red: ReducedModel, speed: float, weights: LossCoefficients, every: np.ndarray, roots: np.ndarray
 ) -> np.ndarray | None:
     """Unit modal coordinates of ``roots``, eigenvalues of one branch's matrix (``every``: all of

@@ -9,10 +9,10 @@ With the hysteretic loss that solve was :func:`~flexshaft.analyses.hysteretic_ro
 a dense eigen-solve of each branch with every eigenvector, for the MAC of every root.
 
 :func:`screened_match` gives the same match from the vectors of a few roots. Each branch is
-solved without its vectors (``_solved_below`` of :mod:`flexshaft.analyses.hysteretic_roots`:
+solved without its vectors (``solved_below`` of :mod:`flexshaft.analyses.hysteretic_roots`:
 R(Ω) with the vectors of the roots below the spin and on the line, which its pairing solves
 anyway); the roots of the upper branch up to :data:`_BAND` times the largest previous |s| get
-theirs by inverse iteration (``_separated_vectors``). Those are the *candidates*: each curve's
+theirs by inverse iteration (``separated_vectors``). Those are the *candidates*: each curve's
 cheapest candidate is its match when
 
 * the curves' cheapest candidates are distinct (the assignment's usual case; else None: the
@@ -38,12 +38,12 @@ import numpy as np
 
 from flexshaft.analyses.eigen import ReducedModel
 from flexshaft.analyses.hysteretic_roots import (
-    _consistent,
-    _separated_vectors,
-    _solved_below,
     branches,
+    consistent_from,
     mac_bounds,
     on_branch,
+    separated_vectors,
+    solved_below,
 )
 
 __all__ = ["match_cost", "screened_match"]
@@ -75,12 +75,12 @@ def screened_match(
     if not red.has_loss or len(parts) != 2 or lam_prev.size == 0:
         return None
     lower, upper = parts
-    solved, every = _solved_below(red, speed, lower, upper)
-    s, Y = _consistent(red, speed, solved)
+    solved, every = solved_below(red, speed, lower, upper)
+    s, Y = consistent_from(red, speed, solved)
     if s.size < lam_prev.size:
         return None
     missing = np.flatnonzero(~np.any(Y, axis=0) & (np.abs(s) <= _BAND * np.abs(lam_prev).max()))
-    vectors = _separated_vectors(red, speed, upper.weights, every, s[missing])
+    vectors = separated_vectors(red, speed, upper.weights, every, s[missing])
     if vectors is None:
         return None
     Y[:, missing] = vectors
