@@ -31,9 +31,11 @@ __all__ = [
     "EXIT_INTERNAL_ERROR",
     "EXIT_REQUIREMENT_FAILED",
     "EXIT_USER_ERROR",
+    "LARGEST_GAP",
     "MAX_DESIGN_BYTES",
     "LoadedDesign",
     "UserError",
+    "actuator_gap",
     "at_command_end",
     "check_finite",
     "dask_client",
@@ -346,6 +348,31 @@ def check_finite(
     if maximum is not None and value > maximum:
         fail(f"{option}: must be <= {maximum:g} (got {value:g})")
     return value
+
+
+#: Largest actuator gap an option takes [m]: the design schema's largest auxiliary-bearing
+#: clearance (:data:`flexshaft.design.quantities.BackupGap`).
+LARGEST_GAP = 0.1
+
+
+def actuator_gap(gap: float | None, gap_mm: float | None) -> float | None:
+    """The actuator gap [m] of ``--gap`` [m] or ``--gap-mm`` [mm] (None without either), each
+    positive and at most :data:`LARGEST_GAP`; a user error for both, or out of range (a gap in
+    millimetres typed as ``--gap`` is refused, not taken as metres)."""
+    from flexshaft.units import m_to_mm, mm_to_m
+
+    if gap is not None and gap_mm is not None:
+        fail(f"--gap and --gap-mm: give the actuator gap once (got --gap {gap:g} m and --gap-mm {gap_mm:g} mm)")
+    if gap_mm is not None:
+        check_finite("--gap-mm", gap_mm, 1e-6, m_to_mm(LARGEST_GAP))
+        return mm_to_m(gap_mm)
+    check_finite("--gap", gap, 1e-9)
+    if gap is not None and gap > LARGEST_GAP:
+        fail(
+            f"--gap: the actuator gap in metres, at most {LARGEST_GAP:g} m, the largest auxiliary-bearing "
+            f"clearance a design takes (got {gap:g}); a gap in millimetres goes in --gap-mm"
+        )
+    return gap
 
 
 def dask_client(address: str | None) -> Any:

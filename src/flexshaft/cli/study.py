@@ -14,7 +14,7 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import LoadedDesign, check_finite, dask_client, guarded, load_design_argument, print_json
+from flexshaft.cli.common import LoadedDesign, actuator_gap, dask_client, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
 from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 
@@ -431,10 +431,14 @@ def all_studies(
     gap: Annotated[
         float | None, typer.Option("--gap", help="Actuator gap limiting the tuned gains [m].", show_default=False)
     ] = None,
+    gap_mm: Annotated[
+        float | None,
+        typer.Option("--gap-mm", help="The same gap in millimetres (as montecarlo's --gap-mm).", show_default=False),
+    ] = None,
     as_json: JsonOption = False,
 ) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
-    check_finite("--gap", gap, 1e-9)
+    gap = actuator_gap(gap, gap_mm)
     loaded, folder = _prepare(design, out, "all", force, "studies", check=_check_studies)
     from flexshaft.cli.progress import StageProgress
     from flexshaft.parallel.pool import worker_pool

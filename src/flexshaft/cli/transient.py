@@ -9,7 +9,15 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import check_finite, dask_client, fail, guarded, load_design_argument, print_json
+from flexshaft.cli.common import (
+    actuator_gap,
+    check_finite,
+    dask_client,
+    fail,
+    guarded,
+    load_design_argument,
+    print_json,
+)
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption
 from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 
@@ -209,7 +217,7 @@ def montecarlo(
     import numpy as np
 
     check_finite("--grade", grade, 1e-3, 4000.0)
-    check_finite("--gap-mm", gap_mm, 1e-6, 1e3)
+    gap = actuator_gap(None, gap_mm)
     check_finite("--force-limit", force_limit, 1e-6, 1e9)
     loaded = load_design_argument(design)
     client = dask_client(dask)  # checked and connected before anything is prepared
@@ -227,14 +235,14 @@ def montecarlo(
     )
     from flexshaft.montecarlo.steady import run_montecarlo
     from flexshaft.plot.driveline import save_figure
-    from flexshaft.units import m_to_mm, mm_to_m
+    from flexshaft.units import m_to_mm
 
     result = run_montecarlo(
         loaded.design,
         samples,
         seed=seed,
         grade_mm_s=grade,
-        gap=None if gap_mm is None else mm_to_m(gap_mm),  # default: each active bearing's own, as the verdict
+        gap=gap,  # default (None): each active bearing's own, as the verdict
         force_limit=force_limit,
         jobs=jobs,
         client=client,
