@@ -4,11 +4,11 @@ of the same file replaces its own earlier results, also after the file was edite
 The bar of the issue: from a fresh folder, the README's quick start (``flexshaft run``, the
 embedded design into ``flexshaft-results/``), then ``flexshaft baseline > my.toml && flexshaft
 run my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without ``--force``.
-It runs as a user would (subprocesses) in tests/test_run.py
-(``test_the_readme_loop_runs_without_force``), marked slow: it goes on from that module's quick
-start, the full run whose report the module checks (one run of the embedded design, not two),
-then two full runs of the baseline at its envelope points, the first as the README types it
-(with the thesis studies), the rerun without them, about 16 s of CPU: the rerun of ``run``
+It runs in tests/test_run.py (``test_the_readme_loop_runs_without_force``), marked slow: it
+goes on from that module's quick start (a subprocess, as a user types it), the full run whose
+report the module checks (one run of the embedded design, not two), then, in the test process,
+two full runs of the baseline at its envelope points, the first as the README types it (with
+the thesis studies), the rerun without them, about 9 s of CPU: the rerun of ``run``
 after an edit, whose folder then holds the edited design's results (a 0.0035 m wall weighs 7/6
 of the 0.003 m one, within 3 %) and no longer the first run's ``studies/``. The fast tests
 below check the same rules for the study commands on a coarse mesh, that another design's

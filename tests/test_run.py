@@ -7,6 +7,7 @@ the first lines' test (the design, then the verdict) and the readme loop of issu
 on from the folder the quick start left (a copy of it).
 """
 
+import contextlib
 import json
 import os
 import re
@@ -27,13 +28,12 @@ from flexshaft.design import tuned_design
 WALL = re.compile(r"^wall_thickness = [0-9.e-]+", re.M)
 
 
-def _flexshaft(cwd: Path, *args: str, stdout=None) -> subprocess.CompletedProcess:
+def _flexshaft(cwd: Path, *args: str) -> subprocess.CompletedProcess:
     code = "import sys; from flexshaft.cli import app; sys.argv[0] = 'flexshaft'; app()"
     return subprocess.run(
         [sys.executable, "-c", code, *args],
         cwd=cwd,
-        stdout=stdout if stdout is not None else subprocess.PIPE,
-        stderr=subprocess.PIPE,
+        capture_output=True,
         text=True,
         timeout=600,
         env={**os.environ, "OPENBLAS_NUM_THREADS": "1"},
@@ -193,35 +193,48 @@ def _edit_wall(path: Path, wall: float) -> None:
     path.write_text(WALL.sub(f"wall_thickness = {wall}", text, count=1), encoding="utf-8")
 
 
-@pytest.mark.slow  # two full `flexshaft run`s of the baseline (three envelope points), one with the studies: ~20 s
+def _flexshaft_here(cwd: Path, *args: str):
+    """``flexshaft ARGS`` typed in ``cwd``, run in the test process (typer's ``CliRunner``, as
+    the other CLI tests: no interpreter start, no pool of its own; tests/conftest.py)."""
+    with contextlib.chdir(cwd):
+        return CliRunner().invoke(app, list(args))
+
+
+@pytest.mark.slow  # two full `flexshaft run`s of the baseline (three envelope points), one with the studies: ~9 s
 def test_the_readme_loop_runs_without_force(quick_start, tmp_path: Path) -> None:
     """Issue 28's bar (tests/test_rerun.py): from a fresh folder, the README's quick start
-    (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture),
-    then ``flexshaft baseline > my.toml && flexshaft run my.toml``, an edit, and ``flexshaft run
-    my.toml`` again: all exit 0 without ``--force``. It goes on in a copy of the quick start's
-    folder (the fixture's is shared), as a user would (subprocesses, the whole design with its
-    envelope at the report's resolution). The first run of ``my.toml`` is typed as the README
-    has it (with the thesis studies), so the rerun after the edit meets a folder holding the
-    studies' files as a user's does, and must replace them (the first run's ``studies/`` folder
-    goes); the rerun skips them and the figures (``--studies none --no-figures``, CPU budget,
-    issue 23: about 10 s of CPU), and must remove the first run's figures too:
-    what it checks is the output folder's ownership (its marker: the command, the design's
-    source and fingerprint, whether it is complete) and that the edited design's results
-    replace the first run's.
+    (``flexshaft run``, the embedded design into ``flexshaft-results/``: the module's fixture,
+    a subprocess as a user types it), then ``flexshaft baseline > my.toml && flexshaft run
+    my.toml``, an edit, and ``flexshaft run my.toml`` again: all exit 0 without ``--force``. It
+    goes on in a copy of the quick start's folder (the fixture's is shared), with the whole
+    design and its envelope at the report's resolution. The loop's own commands run in the test
+    process, in that folder (CPU budget, issue 23: 12.6 s of CPU as subprocesses, each importing
+    flexshaft, matplotlib and the run's pool of workers again, 8.9 s in process): what they
+    check is the output folder's ownership and contents, not the process; the quick start
+    checks ``flexshaft run`` as a process, its pool included, and a run in process computes the
+    same results as on the pool (tests/test_tasks.py, tests/test_studies.py). The first run of
+    ``my.toml`` is typed as the README has it (with the thesis studies), so the rerun after the
+    edit meets a folder holding the studies' files as a user's does, and must replace them
+    (the first run's ``studies/`` folder goes); the rerun skips them and the figures
+    (``--studies none --no-figures``, CPU budget, issue 23: about 10 s of CPU), and must remove
+    the first run's figures too: what it checks is the output folder's ownership (its marker:
+    the command, the design's source and fingerprint, whether it is complete) and that the
+    edited design's results replace the first run's.
     It is also tests/test_rerun.py's rerun of ``run`` after an edit (the edited wall's mass)."""
     shutil.copytree(quick_start["folder"], tmp_path, dirs_exist_ok=True)
     assert (tmp_path / "flexshaft-results" / "report.html").is_file()
-    with open(tmp_path / "my.toml", "w", encoding="utf-8") as design:
-        assert _flexshaft(tmp_path, "baseline", stdout=design).returncode == 0
-    first = _flexshaft(tmp_path, "run", "my.toml")
-    assert first.returncode == 0, first.stderr
+    baseline = _flexshaft_here(tmp_path, "baseline")
+    assert baseline.exit_code == 0, baseline.output
+    (tmp_path / "my.toml").write_text(baseline.stdout, encoding="utf-8")  # `flexshaft baseline > my.toml`
+    first = _flexshaft_here(tmp_path, "run", "my.toml")
+    assert first.exit_code == 0, first.output
     assert (tmp_path / "my-results" / "studies").is_dir() and list((tmp_path / "my-results").glob("*.png"))
     results = tmp_path / "my-results" / "results.json"
     wall_before = json.loads(results.read_text())["summary"]
     assert WALL.search((tmp_path / "my.toml").read_text(encoding="utf-8")).group() == "wall_thickness = 0.003"
     _edit_wall(tmp_path / "my.toml", 0.0035)
-    second = _flexshaft(tmp_path, "run", "my.toml", "--studies", "none", "--no-figures")
-    assert second.returncode == 0, second.stderr
+    second = _flexshaft_here(tmp_path, "run", "my.toml", "--studies", "none", "--no-figures")
+    assert second.exit_code == 0, second.output
     assert "--force" not in second.stderr
     # the first run's studies and figures (of the design before the edit) do not linger
     assert not (tmp_path / "my-results" / "studies").exists()
