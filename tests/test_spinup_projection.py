@@ -18,7 +18,10 @@ amplification factors and peak orbits found on the scan). It is ten times the pr
 acceptance level (the margin covers a force, the displacement times a law whose magnitude
 changes by less than that factor over the scan) and far below what the checks resolve (a
 critical speed to a 20th of its bandwidth, AF to 0.5 %); two direct solvers (banded LU, SuperLU)
-agree to ~1e-11 of the peak (test below), so it is far above round-off.
+agree to ~1e-11 of the peak (test below), so it is far above round-off. Not for the undamped
+design's amplification factors: an undamped peak's true AF is infinite, and the finite value a
+sampled computation returns (1.5e10) is set by round-off; both computations must only put it
+beyond 1/RESONANCE_TOLERANCE (a half-power bandwidth below the natural frequencies' accuracy).
 """
 
 from __future__ import annotations
@@ -32,7 +35,7 @@ import scipy.sparse.linalg as spla
 from conftest import shared_result
 
 from flexshaft.analyses import sweep_projection
-from flexshaft.analyses.banded import ResonanceWarning, solver_for
+from flexshaft.analyses.banded import RESONANCE_TOLERANCE, ResonanceWarning, solver_for
 from flexshaft.analyses.criticals import lateral_critical_speeds, scan_critical_speeds
 from flexshaft.analyses.response import imbalance_response
 from flexshaft.analyses.spinup_response import spinup_response
@@ -189,11 +192,23 @@ def test_critical_speeds_on_the_projected_scan_match(name, tmp_path_factory):
         assert full is not None and fast is not None and len(fast) == len(full) >= 3
         for a, b in zip(fast, full):
             assert a.speed == pytest.approx(b.speed, rel=TOLERANCE)
-            assert a.amplification_factor == pytest.approx(b.amplification_factor, rel=TOLERANCE)
+            if name == "no loss":
+                # undamped: the true AF is infinite, and a finite one is a half-power bandwidth
+                # below 1e-5 of the speed, beyond the accuracy of the natural frequencies
+                # (RESONANCE_TOLERANCE): its digits are round-off (1.5e10 here, differing by
+                # 7e-4 between the two computations with numpy 1.26 / scipy 1.16): both must
+                # read the peak as beyond that accuracy
+                assert min(a.amplification_factor, b.amplification_factor) > 1 / RESONANCE_TOLERANCE
+            else:
+                assert a.amplification_factor == pytest.approx(b.amplification_factor, rel=TOLERANCE)
             assert a.location.get("af_method") == b.location.get("af_method")
             assert a.location.get("detail") == b.location.get("detail")
             if np.isfinite(b.amplification_factor):  # an undamped peak's orbit is the sample's, set by 1/δ
-                expected = pytest.approx(b.location.get("peak_orbit", 0.0), rel=TOLERANCE)
+                # undamped, the orbit at a sample a relative distance δ ≈ 1/AF from the resonance
+                # is ∝ 1/δ, and the two computations place the resonance apart by its round-off
+                # (1e-14 of the speed at most, 100 ulps): the orbit moves by 1e-14 AF relative
+                rel = max(TOLERANCE, 1e-14 * b.amplification_factor) if name == "no loss" else TOLERANCE
+                expected = pytest.approx(b.location.get("peak_orbit", 0.0), rel=rel)
                 assert a.location.get("peak_orbit", 0.0) == expected
 
 
