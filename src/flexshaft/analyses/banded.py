@@ -144,6 +144,12 @@ def band_ordering(pattern: sp.csr_matrix, stations: np.ndarray | None = None) ->
     and gives a half band of 19 where reverse Cuthill-McKee gives 24: the band LU costs
     ∝ kl (kl + ku), 40 % less.
     """
+    return _ordered_blocks(pattern, stations)[0]
+
+
+def _ordered_blocks(pattern: sp.csr_matrix, stations: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`band_ordering`'s ordering and each row's connected block (its label, in the
+    ordering's order: non-decreasing, the blocks following one another)."""
     n_blocks, label = connected_components(pattern, directed=False)
     blocks = [np.flatnonzero(label == b) for b in range(n_blocks)]
     order = []
@@ -154,7 +160,8 @@ def band_ordering(pattern: sp.csr_matrix, stations: np.ndarray | None = None) ->
             keys = np.asarray(stations)[rows]
             candidates.append(rows[np.lexsort(keys.T[::-1])])
         order.append(min(candidates, key=lambda o: _half_bandwidth(pattern, o)))
-    return np.concatenate(order) if order else np.zeros(0, dtype=np.int64)
+    perm = np.concatenate(order) if order else np.zeros(0, dtype=np.int64)
+    return perm, label[perm].astype(np.int64)
 
 
 @dataclass(frozen=True)
@@ -189,19 +196,12 @@ def _band_structure(n: int, terms: dict, stations: np.ndarray) -> _BandStructure
         rows, cols = union // n, union % n
         both = np.concatenate([rows, cols]), np.concatenate([cols, rows])
         pattern = sp.csr_matrix((np.ones(2 * rows.size), both), shape=(n, n))
-        perm = band_ordering(pattern, stations)
+        perm, block = _ordered_blocks(pattern, stations)  # block: each row's, in the band ordering
         inverse = np.argsort(perm)
         keys = np.sort(inverse[rows] * n + inverse[cols])  # the permuted pattern, row-major
         rows, cols = keys // n, keys % n
         template = sp.csr_matrix((np.zeros(keys.size), (rows, cols)), shape=(n, n))
         template.sort_indices()
-        # the uncoupled blocks (band_ordering keeps each one's rows together): a block ends after
-        # row i when no entry couples a row <= i with a row > i
-        crossing = np.zeros(n + 1, dtype=np.int64)
-        np.add.at(crossing, np.minimum(rows, cols), 1)
-        np.add.at(crossing, np.maximum(rows, cols), -1)
-        ends = np.cumsum(crossing)[: max(n - 1, 0)] == 0
-        block = np.concatenate([[0], np.cumsum(ends)]).astype(np.int64)[:n]
         for array in (perm, inverse, keys, rows, cols, block):
             array.setflags(write=False)
         band = _BandStructure(

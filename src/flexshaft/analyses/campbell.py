@@ -41,7 +41,7 @@ from flexshaft.analyses.guards import (
 from flexshaft.analyses.hysteretic_roots import consistent_roots, lowest_roots, mode_root
 from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
-from flexshaft.analyses.screened_match import match_cost, screened_match
+from flexshaft.analyses.screened_match import mac, match_cost, screened_match
 from flexshaft.assembly.model import Model
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.campbell import campbell_figure
@@ -67,11 +67,6 @@ def default_basis_size(n_modes: int) -> int:
     """Plain modal basis of a sweep over speed for ``n_modes`` tracked modes (an explicit
     ``basis_size``; the default is the enriched basis of :func:`tracked_to_accuracy`)."""
     return max(4 * n_modes, 40)
-
-
-def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Modal assurance criterion |aᴴb|² of unit columns (a: (n, p), b: (n, q)) → (p, q)."""
-    return np.abs(a.conj().T @ b) ** 2
 
 
 def assignment(cost: np.ndarray) -> np.ndarray:

@@ -46,7 +46,7 @@ from flexshaft.analyses.hysteretic_roots import (
     solved_below,
 )
 
-__all__ = ["match_cost", "screened_match"]
+__all__ = ["mac", "match_cost", "screened_match"]
 
 #: The upper-branch roots up to this factor times the largest |s| of the previous curves get their
 #: vectors (the candidates); the others are excluded by the bound of their MAC, or the caller
@@ -54,13 +54,22 @@ __all__ = ["match_cost", "screened_match"]
 _BAND = 2.0
 
 
+def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Modal assurance criterion |aᴴb|² of unit columns (a: (n, p), b: (n, q)) → (p, q)."""
+    return np.abs(a.conj().T @ b) ** 2
+
+
+def _distance(lam_prev: np.ndarray, lam: np.ndarray) -> np.ndarray:
+    """A tenth of the frequency distance (curves, roots), relative to each curve's frequency."""
+    scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
+    return 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
+
+
 def match_cost(lam_prev: np.ndarray, Y_prev: np.ndarray, lam: np.ndarray, Y: np.ndarray) -> np.ndarray:
     """Cost (curves, roots) of matching the previous curves (eigenvalues ``lam_prev``, unit shapes
     ``Y_prev``) to roots ``lam`` (unit shapes ``Y``): 1 − MAC plus a tenth of the frequency
     distance relative to the curve's frequency."""
-    scale = np.maximum(np.abs(lam_prev.imag)[:, None], 1e-12)
-    mac = np.abs(Y_prev.conj().T @ Y) ** 2
-    return 1 - mac + 0.1 * np.abs(lam_prev.imag[:, None] - lam.imag[None, :]) / scale
+    return 1 - mac(Y_prev, Y) + _distance(lam_prev, lam)
 
 
 def screened_match(
@@ -96,8 +105,8 @@ def screened_match(
         bound = mac_bounds(red, speed, upper.weights, s[rest], Y_prev)
         if bound is None:
             return None
-        far = match_cost(lam_prev, np.zeros_like(Y_prev), s[rest], np.zeros((red.size, rest.size), complex))
-        lowest = far - np.fmin(1.0, 2 * bound.T**2)  # (curves, rest): the least each root can cost
+        # (curves, rest): the least each root can cost, its MAC at most min(1, 2 b²)
+        lowest = 1 + _distance(lam_prev, s[rest]) - np.fmin(1.0, 2 * bound.T**2)
         if not np.all(lowest > cost[np.arange(best.size), best][:, None]):
             return None
     return s, Y, candidates[best]
