@@ -15,6 +15,7 @@ derives both).
 import numpy as np
 import pytest
 import scipy.linalg as la
+from conftest import shared_result
 from rotors import K_SHAFT, M_DISK, WN, jeffcott
 
 from flexshaft.analyses.eigen import reduce
@@ -208,18 +209,13 @@ def consistent(solver: str, red, speed):
 SOLVERS = ["consistent_roots", "consistent_values"]
 
 
-@pytest.mark.parametrize("solver", SOLVERS)
-def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side(solver):
-    """The eigenvalues of the hysteretic problem (piecewise linear in s: one linear problem
-    above the spin, one below) are the roots of the problem above the spin with Im s ≥ Ω and
-    of the one below with Im s ≤ Ω, nothing else. Reference: each side's roots by QZ
-    (:func:`pencil_roots`), filtered by their own side in the test. Both inclusions are
-    checked on the damped baseline (gyroscopic, PD bearings, shaft and boom loss) at rest and at
-    four speeds, so the set cannot depend on which root an iteration reaches. Tolerance: each
-    root's perturbation bound (:func:`pencil_roots`)."""
+def _branch_roots_on_their_own_side() -> dict[float, tuple[np.ndarray, np.ndarray]]:
+    """For the damped baseline at rest and at four speeds: each side's roots by QZ
+    (:func:`pencil_roots`) filtered by their own side (Im s ≥ Ω above the spin, ≤ Ω below),
+    with their perturbation bounds: {speed: (roots, bounds)}."""
     red = reduce(damped_baseline(), 48)
+    out = {}
     for speed in (0.0, 150.0, 327.3, 430.0, 600.0):
-        got = consistent(solver, red, speed)
         sides = [(ABOVE, +1)] if speed == 0 else [(ABOVE, +1), (BELOW, -1)]
         want, tol = [], []
         for weights, sign in sides:
@@ -227,7 +223,31 @@ def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side(s
             mine = sign * (lam.imag - speed) >= -1e-9 * speed
             want.append(lam[mine])
             tol.append(bound[mine])
-        want, tol = np.concatenate(want), np.concatenate(tol)
+        out[speed] = (np.concatenate(want), np.concatenate(tol))
+    return out
+
+
+@pytest.fixture(scope="module")
+def branch_roots(tmp_path_factory) -> dict[float, tuple[np.ndarray, np.ndarray]]:
+    """:func:`_branch_roots_on_their_own_side`, the reference of both solvers' test below: the
+    same QZ solves with their bounds for each (9 of them, 0.2 s of CPU), computed once a session
+    (tests/conftest.py's ``shared_result``; CPU budget, issue 23)."""
+    return shared_result(tmp_path_factory, "stability_branch_roots", _branch_roots_on_their_own_side)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_hysteretic_eigenvalues_are_exactly_the_branch_roots_on_their_own_side(solver, branch_roots):
+    """The eigenvalues of the hysteretic problem (piecewise linear in s: one linear problem
+    above the spin, one below) are the roots of the problem above the spin with Im s ≥ Ω and
+    of the one below with Im s ≤ Ω, nothing else. Reference: each side's roots by QZ
+    (:func:`pencil_roots`), filtered by their own side in the test
+    (:func:`_branch_roots_on_their_own_side`, shared by both solvers). Both inclusions are
+    checked on the damped baseline (gyroscopic, PD bearings, shaft and boom loss) at rest and at
+    four speeds, so the set cannot depend on which root an iteration reaches. Tolerance: each
+    root's perturbation bound (:func:`pencil_roots`)."""
+    red = reduce(damped_baseline(), 48)
+    for speed, (want, tol) in branch_roots.items():
+        got = consistent(solver, red, speed)
         band = 1e-6 * speed  # a root this close to the line may fall on either side of it
         for s in got:  # every eigenvalue found is a root on its own side
             k = np.argmin(np.abs(want - s))
@@ -253,25 +273,45 @@ def test_consistent_values_without_an_inverse_iteration_take_the_dense_vectors(m
         np.testing.assert_allclose(hysteretic_roots.consistent_values(red, speed), want, rtol=1e-14)
 
 
-@pytest.mark.parametrize("solver", SOLVERS)
-def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold(solver):
-    """A forward mode's roots above and below the spin (s₊, s₋) differ by the shaft loss, their
-    frequencies by O(η²)ω: where ω₊ < Ω < ω₋ neither is consistent and the eigenvalue sits on
-    the line (Im s = Ω, the loss sign set-valued at 0, its real part between those of s₊ and
-    s₋); where ω₋ < Ω < ω₊ both are eigenvalues. Reference: s₊, s₋ by QZ (:func:`pencil_roots`);
-    the crossing speed of each pair solved in the test by fixed-point iteration."""
+def _synchronous_pairs() -> list[tuple[complex, complex, float]]:
+    """Each forward mode's roots above and below the spin (s₊, s₋) by QZ (:func:`pencil_roots`)
+    near the synchronous line of the damped baseline, and the speed between their frequencies
+    (fixed-point iteration: the frequencies move with the speed): (s₊, s₋, Ω) for each pair."""
     red = reduce(damped_baseline(), 48)
     speed = 430.0
     above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
     pairs = [(p, below[np.argmin(np.abs(below - p))]) for p in above if 0.5 * speed < p.imag < 2 * speed]
     # the loss moves a forward root by ~ηω/2 in its real part and far less in frequency
     pairs = [(p, q) for p, q in pairs if 1e-6 < abs(p.imag - q.imag) / p.imag < 1e-3 and abs(p - q) < 0.05 * abs(p)]
-    seen = set()
+    out = []
     for p, q in pairs:
         for _ in range(4):  # the speed between the pair's frequencies, which move with the speed
             speed = 0.5 * (p.imag + q.imag)
             above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
             p, q = above[np.argmin(np.abs(above - p))], below[np.argmin(np.abs(below - q))]
+        out.append((complex(p), complex(q), float(speed)))
+    return out
+
+
+@pytest.fixture(scope="module")
+def synchronous_pairs(tmp_path_factory) -> list[tuple[complex, complex, float]]:
+    """:func:`_synchronous_pairs`, the reference of both solvers' test below: the same QZ solves
+    for each (58 of them, 0.4 s of CPU), computed once a session (tests/conftest.py's
+    ``shared_result``; CPU budget, issue 23)."""
+    return shared_result(tmp_path_factory, "stability_synchronous_pairs", _synchronous_pairs)
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_a_mode_near_the_synchronous_line_has_one_root_in_a_gap_and_two_in_a_fold(solver, synchronous_pairs):
+    """A forward mode's roots above and below the spin (s₊, s₋) differ by the shaft loss, their
+    frequencies by O(η²)ω: where ω₊ < Ω < ω₋ neither is consistent and the eigenvalue sits on
+    the line (Im s = Ω, the loss sign set-valued at 0, its real part between those of s₊ and
+    s₋); where ω₋ < Ω < ω₊ both are eigenvalues. Reference: s₊, s₋ by QZ (:func:`pencil_roots`);
+    the crossing speed of each pair solved in the test by fixed-point iteration
+    (:func:`_synchronous_pairs`, shared by both solvers)."""
+    red = reduce(damped_baseline(), 48)
+    seen = set()
+    for p, q, speed in synchronous_pairs:
         got = consistent(solver, red, speed)
         near = got[np.abs(got - p) < 2 * abs(p - q)]
         tol = 1e-7 * abs(p)  # QZ against QR (previous test), with the fixed-point residual
