@@ -19,7 +19,11 @@ Every example must
 * print strict JSON with ``--json`` (no NaN or infinity).
 
 Budget: the examples of each command are sized to about 5 s of CPU on the development machine
-(derandomized, no example database: CI runs the same examples every time); ``study all`` and
+(derandomized, no example database: CI runs the same examples every time). A command with at
+most :data:`COVERING_UP_TO` examples gets them from :func:`covering_examples` instead of from
+hypothesis, whose first example is always its simplest (the plain baseline, no edit, no option):
+with two examples ``run``, ``compare``, ``study all`` and ``optimize`` saw only the plain embedded
+designs. ``study all`` and
 ``compare`` run their assessments at the report's resolution and are marked slow, as are
 ``run`` and ``optimize``. The commands that judge a design at each point of its envelope
 (``run``, ``compare``, ``optimize``) get the design with one of its envelope's points, a
@@ -174,59 +178,63 @@ def design_text(example: tuple, one_point: bool = False) -> str:
 # than seconds, the limit is paired with a value that the command's bound refuses up front)
 
 
-def _options(*choices: list) -> st.SearchStrategy:
-    return st.tuples(*(st.sampled_from(c) for c in choices)).map(lambda parts: [a for part in parts for a in part])
-
-
-OPTIONS = {
-    "check": _options([[], ["--json"]]),
-    "modes": _options(
+#: Each command's options as independent choices: one alternative of each list is taken.
+CHOICES: dict[str, list[list[list[str]]]] = {
+    "check": [[[], ["--json"]]],
+    "modes": [
         [[], ["--speed-rpm", "0"], ["--speed-rpm", "1000000"]],
         [[], ["--n-modes", "1"], ["--n-modes", "500"]],
         [[], ["--json"]],
-    ),
-    "stability": _options(
+    ],
+    "stability": [
         [["--n-speeds", "3", "--n-modes", "2"], ["--n-speeds", "30", "--n-modes", "100"]],
         [[], ["--damping-model", "viscous"], ["--max-rpm", "1000000"]],
         [[], ["--json"]],
-    ),
-    "thermal": _options(
+    ],
+    "thermal": [
         [[], ["--self-heating"]],
         [[], ["--sweeps"]],
         [[], ["--loss-model", "rotating", "--convection", "kendoush"]],
         [[], ["--json"]],
-    ),
-    "runup": _options(
+    ],
+    "runup": [
         [["--duration", "0.05"], ["--duration", "3600"]],
         [[], ["--start-rpm", "1000"], ["--stop-rpm", "1000000"], ["--stop-rpm", "0", "--start-rpm", "2000"]],
         [[], ["--dwell", "0.05"], ["--dwell", "3600"]],
         [[], ["--json"]],
-    ),
-    "montecarlo": _options(
+    ],
+    "montecarlo": [
         [["--samples", "10"]],
         [[], ["--grade", "4000"], ["--gap-mm", "0.000001", "--force-limit", "1000000000"]],
         [[], ["--seed", "4611686018427387904"]],
         [[], ["--json"]],
-    ),
-    "study ply-angle": _options([["--step", "45"], ["--step", "30"]], [[], ["--json"]]),
-    "study two-angle": _options([["--step", "45"]], [[], ["--json"]]),
-    "study wall": _options([[], ["--json"]]),
-    "study gain": _options([[], ["--json"]]),
-    "study buckling": _options([[], ["--json"]]),
-    "study spinup-map": _options(
+    ],
+    "study ply-angle": [[["--step", "45"], ["--step", "30"]], [[], ["--json"]]],
+    "study two-angle": [[["--step", "45"]], [[], ["--json"]]],
+    "study wall": [[[], ["--json"]]],
+    "study gain": [[[], ["--json"]]],
+    "study buckling": [[[], ["--json"]]],
+    "study spinup-map": [
         [
             ["--n-gains", "2", "--n-speeds", "10"],
             ["--n-gains", "3", "--n-speeds", "20"],
             ["--n-gains", "400", "--n-speeds", "10000"],
         ],
         [[], ["--json"]],
-    ),
-    "study all": _options([[], ["--json"]]),
-    "run": _options([["--studies", "none"]], [[], ["--strict"]], [[], ["--json"]]),
-    "compare": _options([[], ["--json"]]),
-    "optimize": _options([["--budget", "2", "--fidelity", "screening", "--no-verify"]], [[], ["--seed", "7"]]),
-    "validate": _options([["--list"], ["--case", "gibert-spinning-rod"]], [[], ["--json"]]),
+    ],
+    "study all": [[[], ["--json"]]],
+    "run": [[["--studies", "none"]], [[], ["--strict"]], [[], ["--json"]]],
+    "compare": [[[], ["--json"]]],
+    "optimize": [[["--budget", "2", "--fidelity", "screening", "--no-verify"]], [[], ["--seed", "7"]]],
+    "validate": [[["--list"], ["--case", "gibert-spinning-rod"]], [[], ["--json"]]],
 }
+
+
+def _options(*choices: list) -> st.SearchStrategy:
+    return st.tuples(*(st.sampled_from(c) for c in choices)).map(lambda parts: [a for part in parts for a in part])
+
+
+OPTIONS = {command: _options(*choices) for command, choices in CHOICES.items()}
 
 #: Examples per command: about 5 s of CPU each.
 EXAMPLES = {
@@ -300,9 +308,46 @@ def run_command(root: Path, command: str, example: tuple, options: list[str]) ->
     return result.exit_code
 
 
+#: Commands with at most this many examples take :func:`covering_examples` (hypothesis's first
+#: example is its simplest: the plain baseline with no edit and the first options).
+COVERING_UP_TO = 4
+#: :data:`STRUCTURAL` in the order :func:`covering_examples` pairs them (2k with 2k + 1, modulo
+#: 7): never the two controllers together, which the schema refuses (a PID's cutoffs with a
+#: transfer function) before any command runs.
+_PAIRED = ["tf_controller", "amb_on_segments", "pid_controller", "damper", "disk", "no_tailboom", "worst"]
+
+
+def covering_examples(command: str) -> list[tuple[tuple, list[str]]]:
+    """``EXAMPLES[command]`` examples that go through the edits, the extreme values, the bases
+    and the options in turn, each command starting elsewhere in the turn (its place in
+    :data:`CHOICES`): its n-th example (k = j + n) has the base k, the structural edits 2k and
+    2k + 1 of :data:`_PAIRED`, for an odd k the extreme value (k - 1)/2 (an even k keeps the edited design's own
+    values, so that its command runs through, not refused up front), the option alternatives
+    k + i (i: the choice's place; each list modulo its length) and 3 + k % 4 shaft elements.
+    The eleven commands of at most :data:`COVERING_UP_TO` examples take 31 examples: every
+    structural edit eight times or more, every extreme value twice or more, every base ten
+    times or more (an edit that does not apply to a base leaves it as it is, as in the drawn
+    examples)."""
+    j = list(CHOICES).index(command)
+    bases = sorted(BASES)
+    out = []
+    for k in range(j, j + EXAMPLES[command]):
+        structure = sorted({_PAIRED[(2 * k) % len(_PAIRED)], _PAIRED[(2 * k + 1) % len(_PAIRED)]})
+        extreme = [EXTREME[(k // 2) % len(EXTREME)]] if k % 2 else []
+        design = (bases[k % len(bases)], structure, extreme, 3 + k % 4)
+        options = [a for i, choice in enumerate(CHOICES[command]) for a in choice[(k + i) % len(choice)]]
+        out.append((design, options))
+    return out
+
+
 def _fuzz(command: str, tmp_path_factory: pytest.TempPathFactory) -> dict[int, int]:
     root = tmp_path_factory.mktemp("fuzz")
     codes: dict[int, int] = {}
+    if EXAMPLES[command] <= COVERING_UP_TO:
+        for design, options in covering_examples(command):
+            code = run_command(root, command, design, options)
+            codes[code] = codes.get(code, 0) + 1
+        return codes
     strategy = st.tuples(designs, OPTIONS[command])
 
     @settings(
