@@ -268,11 +268,15 @@ def track_modes(
         prev = (s_k, Y_k)
         eig[k] = s_k
         states.append(Y_k)
-        labels = labeler(Y_k)
-        kinds.append(labels.kind)
-        whirls.append(labels.whirl)
-        ratios.append(labels.whirl_ratio)
-        comps.append(labels.component)
+    # every speed's labels at once (they steer nothing above): one product of each projected
+    # matrix with all the columns instead of one a speed
+    labelled = 0 if start is None else 1  # the speeds labelled already: the start's
+    if labelled < speeds.size:
+        labels = labeler(np.hstack(states[labelled:]))
+        kinds += list(labels.kind.reshape(-1, n_modes))
+        whirls += list(labels.whirl.reshape(-1, n_modes))
+        ratios += list(labels.whirl_ratio.reshape(-1, n_modes))
+        comps += list(labels.component.reshape(-1, n_modes))
     kind, whirl, ratio = np.array(kinds), np.array(whirls), np.array(ratios)
     if speeds.size > 1 and speeds[0] == 0.0 and degenerate is not None:
         # a degenerate pair at rest may whirl either way: labelled by its continuation

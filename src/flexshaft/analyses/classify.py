@@ -146,6 +146,10 @@ def degenerate_groups(s: np.ndarray) -> list[np.ndarray]:
     other (relative to the group's first, in the order of ``s``): the groups
     :func:`circular_pairs` resolves."""
     s = np.asarray(s)
+    near = np.abs(s[None, :] - s[:, None]) <= DEGENERATE * np.abs(s)[:, None]  # (k, j): the loop's test
+    np.fill_diagonal(near, False)
+    if not near.any():  # no eigenvalue has another within its tolerance (the usual case): no group
+        return []
     done = np.zeros(s.size, dtype=bool)
     groups = []
     for k in range(s.size):
