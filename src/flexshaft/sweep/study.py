@@ -11,12 +11,12 @@ processes or on a Dask cluster.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -47,8 +47,14 @@ def _plain(value: Any) -> Any:
 
 
 def _qualname(func: Callable | None) -> str | None:
+    """The callable's name for the study's fingerprint: ``module.qualname``; a
+    :func:`functools.partial` by its function's name and its bound arguments' reprs (its own
+    repr holds its memory address, which would make every run's fingerprint another)."""
     if func is None:
         return None
+    if isinstance(func, functools.partial):
+        bound = [*map(repr, func.args), *(f"{k}={v!r}" for k, v in sorted(func.keywords.items()))]
+        return f"functools.partial({_qualname(func.func)}, {', '.join(bound)})"
     return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', repr(func))}"
 
 
@@ -67,7 +73,9 @@ class Variable:
         :func:`flexshaft.design.with_overrides`).
     overrides : callable, optional
         ``value -> {path: value, ...}`` for a variable that sets several fields or a derived
-        one (e.g. a ply angle into a layup string). Must be a module-level function.
+        one (e.g. a ply angle into a layup string). Must be a module-level function, or a
+        :func:`functools.partial` of one with plain arguments (numbers, strings, tuples of
+        them): the study's fingerprint names it by its function and its arguments.
     units : str
         Units of the values, stored in the results' attributes (SI).
     long_name : str
@@ -166,7 +174,7 @@ class DesignModel:
     def __init__(self, design) -> None:
         self.design = design
 
-    @cached_property
+    @functools.cached_property
     def model(self):
         return build_model(self.design)
 
@@ -250,7 +258,7 @@ class Study:
                 f"study {self.name!r}: invalid design at {shown or 'the fixed overrides'}:\n{exc}"
             ) from exc
 
-    @cached_property
+    @functools.cached_property
     def _design_names(self) -> frozenset[str]:
         return frozenset(v.name for v in self.variables if v.is_design)
 

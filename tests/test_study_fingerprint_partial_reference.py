@@ -1,0 +1,60 @@
+"""A study's fingerprint names what it computes, not where a callable sits in memory.
+
+A run folder keeps the fingerprint of the study that wrote it (flexshaft.sweep.store), and
+running the same study on the same folder again must reuse its chunks: equal studies, equal
+fingerprints. The thesis's gain study sets K_p through ``functools.partial(_gains, paths)``,
+whose repr holds its memory address; the fingerprint took that repr, so every construction of
+the study had another fingerprint and ``flexshaft study gain --out F`` run twice refused its own
+folder ("holds a different study"). The properties checked here are exact: two constructions
+of one study fingerprint alike, in this process and in another one, and a study whose partial
+binds other arguments (other bearings) fingerprints differently.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from flexshaft.design import baseline_design
+from flexshaft.sweep import Output, Study, Variable
+
+HERE = Path(__file__).resolve().parent
+
+
+def _set(paths: tuple[str, ...], value: float) -> dict[str, float]:
+    return dict.fromkeys(paths, value)
+
+
+def _evaluate(point) -> dict[str, float]:
+    return {"kp_read": float(point.design.bearings[1].kp)}
+
+
+def _study(paths: tuple[str, ...]) -> Study:
+    variable = Variable("kp", [4e5, 5e5], overrides=functools.partial(_set, paths), units="N/m")
+    return Study("gain", (variable,), (Output("kp_read", "N/m"),), _evaluate, base=baseline_design())
+
+
+def test_equal_studies_fingerprint_alike_and_other_arguments_differ() -> None:
+    paths = ("bearings[1].kp", "bearings[2].kp")
+    first, second = _study(paths), _study(paths)
+    assert first.variables[0].overrides is not second.variables[0].overrides
+    assert first.fingerprint() == second.fingerprint()
+    assert "0x" not in str(first.spec()["variables"])  # no memory address
+    assert _study(("bearings[1].kp",)).fingerprint() != first.fingerprint()
+
+
+def test_another_process_fingerprints_the_study_alike() -> None:
+    """The folder's fingerprint was written by an earlier process: the function ``_set`` sits
+    at another address there (the partial's repr printed it)."""
+    paths = ("bearings[1].kp", "bearings[2].kp")
+    code = (
+        "import sys; sys.path.insert(0, sys.argv[1]); "
+        "import test_study_fingerprint_partial_reference as t; "
+        "print(t._study(('bearings[1].kp', 'bearings[2].kp')).fingerprint())"
+    )
+    env = {**os.environ, "PYTHONHASHSEED": "random"}
+    out = subprocess.run([sys.executable, "-c", code, str(HERE)], capture_output=True, text=True, env=env, check=True)
+    assert out.stdout.strip() == _study(paths).fingerprint()
