@@ -324,19 +324,31 @@ class ReducedModel:
         T = damping * s
         T += stiffness
         T.ravel()[:: self.size + 1] += s * s  # a view: T is a new contiguous array
-        dTy = damping @ y
-        dTy += (2 * s) * y
         for act in self.actuators:
             if act.law is not None:  # the law's dynamics: C(s) minus what Λ and C̃ already hold
                 gain = complex(act.law(s)) - act.basis_stiffness - s * act.damping_in_basis
-                slope = complex(act.law.derivative(s)) - act.damping_in_basis
             elif act.stiffness or act.damping:
-                gain, slope = act.stiffness + s * act.damping, act.damping
+                gain = act.stiffness + s * act.damping
             else:
                 continue
             T += gain * act.coupling
+        return T, self.newton_slope(s, speed, loss, y)
+
+    def newton_slope(self, s: complex, speed: float, loss: LossCoefficients, y: np.ndarray) -> np.ndarray:
+        """``dT/ds · y`` of :meth:`newton_terms` alone (a Newton step whose T(s) is factored
+        already): the damping's product, ``2 s y`` and each channel's rank-two term."""
+        damping, _ = self._speed_parts(speed, loss)
+        dTy = damping @ y
+        dTy += (2 * s) * y
+        for act in self.actuators:
+            if act.law is not None:
+                slope = complex(act.law.derivative(s)) - act.damping_in_basis
+            elif act.stiffness or act.damping:
+                slope = act.damping
+            else:
+                continue
             dTy += slope * (act.rows.T @ (act.sensing @ y))
-        return T, dTy
+        return dTy
 
 
 def _channel(
@@ -489,6 +501,7 @@ def divergent_roots(red: ReducedModel, speed: float, viscous: LossCoefficients =
 
 
 _gesv = la.lapack.zgesv  # = la.get_lapack_funcs("gesv", dtype=complex), typed
+_getrs = la.lapack.zgetrs
 
 
 def _unit(v: np.ndarray) -> np.ndarray:
@@ -516,6 +529,7 @@ def newton(
     tol: float = NEWTON_TOLERANCE,
     viscous: LossCoefficients | None = None,
     weights: LossCoefficients | None = None,
+    factor: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> tuple[complex, np.ndarray, bool]:
     """Newton's method on ``T(s) y = 0`` from ``(s, y)``: ``(s, y, converged)`` with ‖y‖ = 1.
 
@@ -528,7 +542,14 @@ def newton(
     the thesis's linear viscous one instead. Only a root with Im s > 0 counts as converged: the
     hysteretic weights hold for ω = Im s > 0, and a root of the same matrix polynomial with
     Im s < 0 is no eigenvalue of the hysteretic problem (there the loss has the opposite sign).
+
+    ``factor``: the LU factors ``(lu, piv)`` (LAPACK's getrf, nonsingular) of ``T(s)`` at the
+    starting s with ``weights``, which a caller's inverse iteration at s holds already: the
+    first step solves with them instead of factoring the same matrix again (getrf and getrs are
+    what gesv does, so the step is the same to the bit). Not with ``viscous``.
     """
+    if factor is not None and (viscous is not None or weights is None):
+        raise ValueError("newton: factor needs the loss weights it was factored with, not viscous ones")
     extra: np.ndarray | None
     if viscous is not None:
         red, extra = viscous_model(red, viscous)
@@ -543,10 +564,14 @@ def newton(
         loss = weights
     y = _unit(np.asarray(y, dtype=complex))
     for _ in range(NEWTON_MAX_STEPS):
-        T, dTy = red.newton_terms(s, speed, loss, y)
-        if extra is not None:
-            T += extra
-        _, _, u, info = _gesv(T, dTy, overwrite_a=True, overwrite_b=True)
+        if factor is not None:  # T(s) at the start, factored by the caller
+            u, info = _getrs(*factor, red.newton_slope(s, speed, loss, y))
+            factor = None
+        else:
+            T, dTy = red.newton_terms(s, speed, loss, y)
+            if extra is not None:
+                T += extra
+            _, _, u, info = _gesv(T, dTy, overwrite_a=True, overwrite_b=True)
         if info > 0:  # s is an eigenvalue to machine precision
             return s, y, s.imag > 0
         denominator = np.vdot(y, u)

@@ -315,21 +315,28 @@ def _null_vectors(red: ReducedModel, speed: float, weights: LossCoefficients, ro
     of a dense solve: two steps of inverse iteration at the root, which is accurate to round-off,
     so the first step already holds the vector to about the root's error over its distance to
     the next root (a column of NaN where T(s) is singular to working precision)."""
-    nb = red.size
-    out = np.empty((nb, roots.size), complex)
-    start = np.full(nb, nb**-0.5, complex)
+    out = np.empty((red.size, roots.size), complex)
     for k, s in enumerate(roots):
-        T, _ = red.newton_terms(complex(s), speed, weights, start)
-        lu, piv, info = la.lapack.zgetrf(T, overwrite_a=True)
-        y = start
-        for _ in range(2):
-            if info != 0:  # singular to working precision, or a bad argument
-                y = np.full(nb, np.nan, complex)
-                break
-            y, info = la.lapack.zgetrs(lu, piv, y)
-            y = y / np.linalg.norm(y)
-        out[:, k] = y
+        out[:, k] = _inverse_iteration(red, speed, weights, complex(s))[0]
     return out
+
+
+def _inverse_iteration(
+    red: ReducedModel, speed: float, weights: LossCoefficients, s: complex
+) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray] | None]:
+    """One column of :func:`_null_vectors` and the LU factors ``(lu, piv)`` of ``T(s)`` it
+    solved with (None, and a column of NaN, where T(s) is singular to working precision)."""
+    nb = red.size
+    start = np.full(nb, nb**-0.5, complex)
+    T, _ = red.newton_terms(s, speed, weights, start)
+    lu, piv, info = la.lapack.zgetrf(T, overwrite_a=True)
+    y = start
+    for _ in range(2):
+        if info != 0:  # singular to working precision, or a bad argument
+            return np.full(nb, np.nan, complex), None
+        y, info = la.lapack.zgetrs(lu, piv, y)
+        y = y / np.linalg.norm(y)
+    return y, (lu, piv)
 
 
 def consistent_from(red: ReducedModel, speed: float, solved: list) -> tuple[np.ndarray, np.ndarray]:
@@ -491,7 +498,9 @@ def _branch_mode(red: ReducedModel, speed: float, branch: Branch, y: np.ndarray)
     return branch, root, vec, True
 
 
-def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _polish(
+    red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray, deferred: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray] | None:
     """The roots ``s`` of a dense eigen-solve refined by Newton's method on their own branch's
     problem: a dense solve of the first-order matrix is accurate to about ε‖A‖ in absolute
     terms, which a nearly massless member (‖A‖ of its stiff, light modes ~1e8 rad²/s² and
@@ -499,14 +508,29 @@ def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tu
     each root to the convergence tolerance relative to its own |s|. A refined root is kept
     only when it converged on the same branch and is the same mode (MAC with the dense
     solve's vector at least :data:`SAME_MODE_MAC`); an on-line root (:func:`line_root`) and a
-    root Newton cannot refine keep the dense solve's value."""
+    root Newton cannot refine keep the dense solve's value.
+
+    ``deferred`` (boolean, by root): roots of the last branch whose vectors :func:`lowest_roots`
+    left to this refinement (``defer=True``): each gets its vector by :func:`_inverse_iteration`
+    on the last branch's problem here, and when that is its own branch's, Newton's first step
+    solves with the same LU factors (the matrix T(s) is the same: one factorisation a root where
+    there were two; the numbers are those of :func:`separated_vectors` followed by this
+    refinement, to the bit). None when one of those inverse iterations fails (the caller's
+    dense solve with every vector, as :func:`lowest_roots` falls back to)."""
     s, Y = s.copy(), Y.copy()
     parts = branches(red, speed)
     for k in range(s.size):
         branch = next((b for b in parts if on_branch(b, s[k].imag, speed)), None)
+        factor = None
+        if deferred is not None and deferred[k]:
+            Y[:, k], factor = _inverse_iteration(red, speed, parts[-1].weights, complex(s[k]))
+            if not np.isfinite(Y[:, k]).all():
+                return None
+            if branch is not parts[-1]:
+                factor = None
         if branch is None:
             continue
-        root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights)
+        root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights, factor=factor)
         same = abs(np.vdot(Y[:, k], vec)) ** 2 >= SAME_MODE_MAC * np.vdot(Y[:, k], Y[:, k]).real
         if converged and same and on_branch(branch, root.imag, speed):
             s[k], Y[:, k] = root, vec
@@ -524,7 +548,9 @@ def _polish(red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray) -> tu
 _SEPARATED = 1e-6
 
 
-def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+def lowest_roots(
+    red: ReducedModel, speed: float, n_modes: int, window: float = 0.0, defer: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
     """R(Ω) of :func:`consistent_roots` with the vectors solved only where they are read: ``(s,
     Y)`` sorted by |s|, unit modal coordinates for the ``n_modes`` of
     :func:`~flexshaft.analyses.eigen.lowest_modes` and for the roots within ``window`` (relative
@@ -534,6 +560,9 @@ def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 
     branch's roots below the spin and those :func:`consistent_from` may pair get theirs there); the
     upper roots wanted get theirs by inverse iteration (:func:`separated_vectors`). Where that
     cannot be trusted (a neighbour within :data:`_SEPARATED`), :func:`consistent_roots` as it is.
+    ``defer=True`` leaves those upper vectors to :func:`_polish` (zero columns, after the
+    :data:`_SEPARATED` check), which factors each root's T(s) once for its vector and its first
+    Newton step (:func:`damped_modes`).
     """
     parts = branches(red, speed)
     if red.has_loss:
@@ -551,6 +580,10 @@ def lowest_roots(red: ReducedModel, speed: float, n_modes: int, window: float = 
         needed[wanted] = True
         needed |= near.any(axis=1)
         missing = np.flatnonzero(needed & ~np.any(Y, axis=0))  # roots of the last branch (above the spin)
+        if defer:
+            if _separated(every, s[missing]):
+                return s, Y
+            return consistent_roots(red, speed)
         vectors = separated_vectors(red, speed, parts[-1].weights, every, s[missing])
         if vectors is not None:
             Y[:, missing] = vectors
@@ -564,12 +597,20 @@ def separated_vectors(
     """Unit modal coordinates of ``roots``, eigenvalues of one branch's matrix (``every``: all of
     them), by :func:`_null_vectors`; None when a root lies within :data:`_SEPARATED` of another
     eigenvalue or an inverse iteration failed."""
+    if not _separated(every, roots):
+        return None
+    vectors = _null_vectors(red, speed, weights, roots)
+    return vectors if np.isfinite(vectors).all() else None
+
+
+def _separated(every: np.ndarray, roots: np.ndarray) -> bool:
+    """Whether each of ``roots`` lies farther than :data:`_SEPARATED` (relative to |s|) from
+    every other eigenvalue of ``every`` (its branch's matrix: the root itself is one of them)."""
     for s in roots:
         gaps = np.sort(np.abs(every - s))  # the root itself first (the same number)
         if gaps.size > 1 and gaps[1] <= _SEPARATED * abs(s):
-            return None
-    vectors = _null_vectors(red, speed, weights, roots)
-    return vectors if np.isfinite(vectors).all() else None
+            return False
+    return True
 
 
 def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -586,9 +627,15 @@ def damped_modes(red: ReducedModel, speed: float, n_modes: int) -> tuple[np.ndar
     cannot diverge (:attr:`~flexshaft.analyses.eigen.ReducedModel.may_diverge` False: no real
     root s > 0 exists) skips that solve.
     """
-    out_s, out_y = lowest_roots(red, speed, n_modes)
+    out_s, out_y = lowest_roots(red, speed, n_modes, defer=True)
     wanted = lowest_modes(out_s, n_modes)
-    out_s, out_y = _polish(red, speed, out_s[wanted], out_y[:, wanted])
+    polished = _polish(red, speed, out_s[wanted], out_y[:, wanted], ~np.any(out_y[:, wanted], axis=0))
+    if polished is None:  # an inverse iteration failed: every vector from the dense solves
+        out_s, out_y = consistent_roots(red, speed)
+        wanted = lowest_modes(out_s, n_modes)
+        polished = _polish(red, speed, out_s[wanted], out_y[:, wanted])
+        assert polished is not None  # nothing deferred
+    out_s, out_y = polished
     if red.may_diverge:
         _, _, Y_div, div = spectrum(red, speed)
         if div.size:
