@@ -139,7 +139,7 @@ def test_a_fold_reports_the_less_stable_root():
     """With fixed-frame loss η_f the two sides' forward roots no longer share a frequency:
     Im s of s² + c s + ω₀²(1 + iα) grows with α², so s₊ (α = η_f + η) lies above s₋
     (α = η_f − η). At a spin between the two, both are consistent (a fold) and the mode's
-    eigenvalue is the less stable, s₋ (hysteretic_roots.mode_root's rule); a start at s₊ (the
+    eigenvalue is the less stable, s₋ (continuation.mode_root's rule); a start at s₊ (the
     upper side, solved first) must not stop there."""
     c, eta, eta_f = 2 * 0.002 * W0, 0.2, 0.1
     s_plus = quadratic_roots(c, W0**2 * (1 + 1j * (eta_f + eta)))[0]

@@ -8,7 +8,7 @@ are s₊ and ``s₋ = −c_e/m − s̄₊``: one damped frequency ω_d, real par
 synchronous speed Ω = ω_d both lie on their own side of the line (σ = 0 is in [−1, 1]): the mode
 has two eigenvalues, and the continuation must keep the **less stable**, s₋, whichever of the
 two it starts from (the verdict may not depend on which of two valid eigenvalues a continuation reached,
-:func:`~flexshaft.analyses.hysteretic_roots.mode_root`).
+:func:`~flexshaft.analyses.continuation.mode_root`).
 
 The model's ω_d differs from the closed form's by about 1e-6 (the tube's mass, 7e-6 of the
 disk's), more than the synchronous band (1e-9), so the fold speed is the model's own: the
@@ -23,8 +23,9 @@ import numpy as np
 import pytest
 from rotors import K_SHAFT, M_DISK, WN, jeffcott
 
+from flexshaft.analyses.continuation import mode_root
 from flexshaft.analyses.eigen import reduce
-from flexshaft.analyses.hysteretic_roots import branch_roots, branches, consistent_roots, mode_root
+from flexshaft.analyses.hysteretic_roots import branch_roots, branches, consistent_roots
 
 ETA = 0.02
 C_E = 2 * 0.003 * M_DISK * WN

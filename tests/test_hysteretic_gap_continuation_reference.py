@@ -8,7 +8,7 @@ s₊, s₋ are computed here by QZ on another linearisation (:func:`test_stabili
 the gap speed by the fixed-point iteration of that test (the baseline with K_d = 200 N s/m has
 a gap near 414-418 rad/s, its modes 8 and 9).
 
-The continuation :func:`~flexshaft.analyses.hysteretic_roots.mode_root` started from either
+The continuation :func:`~flexshaft.analyses.continuation.mode_root` started from either
 branch root must find that on-line eigenvalue (Newton's method on each branch reaches a root on
 the wrong side of the line; the two straddle it the wrong way round, so the root is followed in
 the loss between them): converged, Im s = Ω to the synchronous band (1e-9 relative) and Re s
@@ -22,8 +22,9 @@ import numpy as np
 import pytest
 from test_stability import ABOVE, BELOW, damped_baseline, pencil_roots
 
+from flexshaft.analyses.continuation import mode_root
 from flexshaft.analyses.eigen import reduce
-from flexshaft.analyses.hysteretic_roots import branch_roots, branches, mode_root
+from flexshaft.analyses.hysteretic_roots import branch_roots, branches
 
 
 def test_mode_root_follows_a_gap_mode_onto_the_synchronous_line():

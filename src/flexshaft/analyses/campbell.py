@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler, degenerate_groups
-from flexshaft.analyses.continuation import mode_roots, newton_many
+from flexshaft.analyses.continuation import mode_root, mode_roots, newton_many
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes
 from flexshaft.analyses.eigen_error import (
@@ -38,7 +38,7 @@ from flexshaft.analyses.guards import (
     check_spin_speeds,
     require_finite,
 )
-from flexshaft.analyses.hysteretic_roots import consistent_roots, lowest_roots, mode_root
+from flexshaft.analyses.hysteretic_roots import consistent_roots, lowest_roots
 from flexshaft.analyses.loss import LossCoefficients
 from flexshaft.analyses.results import ResultMixin, dataframe, html_table
 from flexshaft.analyses.screened_match import mac, match_cost, screened_match
@@ -197,7 +197,7 @@ def track_modes(
     k + 1 of its tables). Each later speed is first tried by continuation: every mode's
     eigenvalue is extrapolated linearly from the previous speeds and converged on its own
     problem; with ``refine_loss`` (the hysteretic loss) that is
-    :func:`~flexshaft.analyses.hysteretic_roots.mode_root`, which continues both sides of the
+    :func:`~flexshaft.analyses.continuation.mode_root`, which continues both sides of the
     synchronous line and keeps the root consistent with its side. The step is accepted when
     every mode converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes
     landed on the same eigenvalue. Otherwise ``solve(speed) -> (s, Y)`` gives all eigenvalues
@@ -301,7 +301,7 @@ def rest_degenerate(red: ReducedModel, s: np.ndarray, untracked, hysteretic: boo
     its tracked member is then the eigen-solver's arbitrary combination of the two whirls, whose
     own label is round-off. Only the untracked roots within :data:`_NEIGHBOUR_WINDOW` of a lone
     tracked mode are compared, refined as the tracked ones were (with the hysteretic loss by
-    :func:`~flexshaft.analyses.hysteretic_roots.mode_root`).
+    :func:`~flexshaft.analyses.continuation.mode_root`).
     """
     s = np.asarray(s)
     paired = np.zeros(s.size, dtype=bool)
@@ -354,7 +354,7 @@ def _match(red, solve, speed, prev, n_modes, hysteretic, screen=False):
     """All eigenvalues at ``speed`` matched to the previous curves. With the hysteretic loss
     each matched root is then polished by Newton's method on its mode's branches, the least
     stable of its consistent roots where a fold near the synchronous line has two
-    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`). Returns ``((s, Y), untracked)``:
+    (:func:`~flexshaft.analyses.continuation.mode_root`). Returns ``((s, Y), untracked)``:
     without previous curves also the roots not taken, ``(s, Y)`` unpolished (else None).
     ``screen``: the match from the vectors of the roots it can pick when that is certain
     (:func:`~flexshaft.analyses.screened_match.screened_match`), else from ``solve``'s."""

@@ -2,7 +2,7 @@
 
 A tracking (:func:`~flexshaft.analyses.campbell.track_modes`) continues each of its modes from
 the previous speeds with :func:`~flexshaft.analyses.eigen.newton` (the viscous model) or
-:func:`~flexshaft.analyses.hysteretic_roots.mode_root` (the hysteretic loss). At one speed
+:func:`mode_root` (the hysteretic loss). At one speed
 every mode's problem is the same matrix polynomial ``T(s)`` with one of at most two sets of
 loss weights (the two sides of the synchronous line), so the modes' iterations differ only in
 ``s`` and ``y``: :func:`newton_many` runs them side by side, each mode's step exactly the
@@ -10,13 +10,13 @@ one :func:`~flexshaft.analyses.eigen.newton` takes (the same update, tolerance, 
 and outcome), with the modes' ``nb × nb`` systems solved as one stack. A mode leaves the stack
 when it converges, so each mode takes the iterations it would take alone.
 
-:func:`mode_roots` is :func:`~flexshaft.analyses.hysteretic_roots.mode_root` for every mode:
+:func:`mode_roots` is :func:`mode_root` for every mode:
 the first branch's Newton (the branch of the mode's own side of the line) runs for all modes
 at once, and a mode whose root there is consistent and farther from the line than its
 first-order distance to the other branch's root is taken, as
-:func:`~flexshaft.analyses.hysteretic_roots.mode_root` takes it; any other mode (near the
+:func:`mode_root` takes it; any other mode (near the
 line, where both branches are solved, a fold or an on-line root is possible) is solved by
-:func:`~flexshaft.analyses.hysteretic_roots.mode_root` itself.
+:func:`mode_root` itself.
 
 Cost: the LUs are the same as one mode at a time; what goes is each mode's own Python and call
 overhead per step (measured: the whirl stability of the thesis's three shafts 4-10 % faster at
@@ -30,10 +30,10 @@ from __future__ import annotations
 import numpy as np
 
 from flexshaft.analyses.eigen import NEWTON_MAX_STEPS, NEWTON_TOLERANCE, ReducedModel, newton, viscous_model
-from flexshaft.analyses.hysteretic_roots import SAME_MODE_MAC, branch_distance, branches, mode_root, on_branch
+from flexshaft.analyses.hysteretic_roots import SAME_MODE_MAC, Branch, branch_roots, branches, line_root, on_branch
 from flexshaft.analyses.loss import LossCoefficients
 
-__all__ = ["mode_roots", "newton_many"]
+__all__ = ["branch_distance", "mode_root", "mode_roots", "newton_many"]
 
 _NO_LOSS = LossCoefficients(0.0, 0.0, 0.0)
 
@@ -115,7 +115,7 @@ def newton_many(
 def mode_roots(
     red: ReducedModel, speed: float, s: np.ndarray, Y: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`~flexshaft.analyses.hysteretic_roots.mode_root` of each mode ``(s[k], Y[:, k])``
+    """:func:`mode_root` of each mode ``(s[k], Y[:, k])``
     at ``speed`` (module docstring): ``(s, Y, found)`` arrays."""
     s0 = np.array(s, dtype=complex).ravel()
     Y0 = np.array(Y, dtype=complex).reshape(red.size, s0.size)
@@ -143,3 +143,83 @@ def mode_roots(
     for k in np.flatnonzero(~found):  # near the line, or no consistent root: the mode alone
         out_s[k], out_Y[:, k], found[k] = mode_root(red, speed, complex(s0[k]), Y0[:, k])
     return out_s, out_Y, found
+
+
+def mode_root(red: ReducedModel, speed: float, s: complex, y: np.ndarray) -> tuple[complex, np.ndarray, bool]:
+    """The eigenvalue at ``speed`` of the mode near ``(s, y)`` (continuation of both branches).
+
+    Each branch's linear problem is solved by Newton's method from ``(s, y)``, the branch of
+    ``Im s`` first; a branch root counts when it converged (Im s > 0) on its own side of the
+    line and is the same mode (MAC with ``y`` at least :data:`SAME_MODE_MAC`). One such root:
+    that one; two (a fold): the less stable; none, with the two branch roots straddling the
+    line the wrong way: the on-line root (:func:`line_root`). Returns ``(s, y, found)``. When
+    both branches are solved and Newton's method on one of them reaches another mode (a close
+    neighbour, such as the backward whirl of a rotor without gyroscopic split), that branch's
+    root of this mode is taken from its exact roots (:func:`_branch_mode`): which of a fold's
+    two eigenvalues is kept must not depend on the one the continuation arrived at.
+
+    The other branch is skipped when the first root is consistent and farther from the line
+    than ten times the first-order distance between the two branch roots,
+    ``|yᴴ (W_other − W_this) y| / (2|s|)`` (the perturbation of a root of
+    ``s² + s D + K`` by a change ΔW of K), which cannot then be consistent.
+    """
+    parts = branches(red, speed)
+    if len(parts) == 2 and not on_branch(parts[0], s.imag, speed):
+        parts = parts[::-1]
+    found = []
+    for i, branch in enumerate(parts):
+        root, vec, converged = newton(red, speed, s, y, weights=branch.weights)
+        same = converged and abs(np.vdot(y, vec)) ** 2 >= SAME_MODE_MAC * np.vdot(y, y).real
+        found.append((branch, root, vec, same))
+        if i == 0 and len(parts) == 2 and same and on_branch(branch, root.imag, speed):
+            distance = branch_distance(red, branch.weights, parts[1].weights, np.array([root]), vec[:, None])[0]
+            if abs(root.imag - speed) > 10 * distance:
+                return root, vec, True
+    if len(found) == 2:  # near the line: a branch whose Newton reached another mode gets its exact roots
+        found = [f if f[3] else _branch_mode(red, speed, f[0], y) for f in found]
+    consistent = [(root, vec) for branch, root, vec, same in found if same and on_branch(branch, root.imag, speed)]
+    if consistent:
+        root, vec = max(consistent, key=lambda rv: rv[0].real)
+        return root, vec, True
+    if len(found) == 2 and found[0][3] and found[1][3]:
+        found.sort(key=lambda f: f[0].low)
+        (lower, s_lo, y_lo, _), (upper, s_hi, y_hi, _) = found
+        if s_lo.imag > speed > s_hi.imag:
+            pair = line_root(red, speed, lower.weights, upper.weights, (s_lo, y_lo), (s_hi, y_hi))
+            if pair is not None:
+                return pair[0], pair[1], True
+    return s, y, False
+
+
+def branch_distance(
+    red: ReducedModel, weights: LossCoefficients, other: LossCoefficients, roots: np.ndarray, vectors: np.ndarray
+) -> np.ndarray:
+    """First-order distance [rad/s] from each root ``roots[k]`` of the branch with loss weights
+    ``weights`` (unit modal coordinates ``vectors[:, k]``) to the same mode's root on the branch
+    with weights ``other``: ``|yᴴ (W_other − W) y| / (2|s|)``, the perturbation of a root of
+    ``s² + s D + K`` by a change ΔW of K (:func:`mode_root`'s test for skipping the other branch)."""
+    delta = (
+        (other.fixed - weights.fixed) * (red.F @ vectors)
+        + (other.lateral - weights.lateral) * (red.L @ vectors)
+        + (other.circulatory - weights.circulatory) * (red.S @ vectors)
+    )
+    return np.abs(np.einsum("ij,ij->j", vectors.conj(), delta)) / (2 * np.abs(roots))
+
+
+def _branch_mode(red: ReducedModel, speed: float, branch: Branch, y: np.ndarray):
+    """This mode's root on ``branch`` from the branch's exact roots, when Newton's method from the
+    mode's previous eigenvalue reached another mode (a close neighbour: the backward whirl of a
+    rotor without gyroscopic split lies 1e-6 of ω from the forward root at the line): the
+    branch root of largest MAC with ``y`` (at least :data:`SAME_MODE_MAC`), refined by Newton's
+    method. Returns ``(branch, s, Y, same)`` like :func:`mode_root`'s candidates; ``same`` is
+    False when no branch root is this mode's."""
+    s, Y = branch_roots(red, speed, branch.weights)
+    y = np.asarray(y, dtype=complex)
+    mac = np.abs(Y.conj().T @ y) ** 2 / np.vdot(y, y).real if s.size else np.zeros(0)
+    if not s.size or mac.max() < SAME_MODE_MAC:
+        return branch, s[0] if s.size else 0j, y, False
+    k = int(np.argmax(mac))
+    root, vec, converged = newton(red, speed, s[k], Y[:, k], weights=branch.weights)
+    if not (converged and abs(np.vdot(Y[:, k], vec)) ** 2 >= SAME_MODE_MAC):
+        root, vec = s[k], Y[:, k]
+    return branch, root, vec, True

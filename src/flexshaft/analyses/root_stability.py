@@ -69,6 +69,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as la
 
+from flexshaft.analyses.continuation import mode_root
 from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel, newton, reduce
 from flexshaft.analyses.eigen_error import (
     EIGENVALUE_TOLERANCE,
@@ -78,7 +79,7 @@ from flexshaft.analyses.eigen_error import (
     eigenvalue_errors,
 )
 from flexshaft.analyses.guards import check_model, check_spin_speeds, require_finite
-from flexshaft.analyses.hysteretic_roots import branches, consistent_values_below, mode_root, on_branch
+from flexshaft.analyses.hysteretic_roots import branches, consistent_values_below, on_branch
 from flexshaft.analyses.loss import eigen_coefficients
 from flexshaft.analyses.modal import default_basis_size
 from flexshaft.analyses.stability import STABILITY_TOLERANCE

@@ -54,6 +54,7 @@ from typing import Literal
 import numpy as np
 
 from flexshaft.analyses.campbell import EigenvalueCurves, TrackedModes, check_speeds, default_basis_size, track_modes
+from flexshaft.analyses.continuation import mode_root
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, newton, reduce, spectrum
 from flexshaft.analyses.eigen_error import (
@@ -64,7 +65,6 @@ from flexshaft.analyses.eigen_error import (
     with_error_estimate,
 )
 from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
-from flexshaft.analyses.hysteretic_roots import mode_root
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.analyses.results import ResultMixin, html_table
 from flexshaft.assembly.model import Model
@@ -370,7 +370,7 @@ def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous
     speeds[k] (Illinois regula falsi; converged to 1e-7 of the speed). Each evaluation follows
     the mode back from its unstable end, speeds[k], whose shape identifies it: Newton's method
     on the viscous problem, or with the hysteretic loss the mode's consistent root
-    (:func:`~flexshaft.analyses.hysteretic_roots.mode_root`, both sides of the synchronous
+    (:func:`~flexshaft.analyses.continuation.mode_root`, both sides of the synchronous
     line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
     just below the forward frequency, unstable just above), the bracket closes on the jump.
     Falls back to the linear interpolation of the grid when the mode cannot be followed inside
