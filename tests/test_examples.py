@@ -54,18 +54,24 @@ def run_example_here(name: str, out: Path, monkeypatch: pytest.MonkeyPatch) -> s
     """``main(["--quick", "--out", out])`` of examples/NAME.py in this process, in ``out``'s
     parent folder as :func:`run_example` runs it: its return value is the exit code the script
     would end with (``raise SystemExit(main())``), 0 asserted; its printed output returned. The
-    figures it leaves open are closed."""
+    figures it leaves open are closed. A Dask worker's scratch space goes under the test's folder
+    as in :func:`run_example` (Dask's ``temporary-directory``: its environment variable when Dask
+    is not imported yet, Dask's config when it is: Dask reads the variable only at import)."""
     import matplotlib.pyplot as plt
 
     monkeypatch.chdir(out.parent)
-    monkeypatch.setenv("DASK_TEMPORARY_DIRECTORY", str(out.parent / "dask-scratch"))
     namespace = runpy.run_path(str(EXAMPLES / f"{name}.py"), run_name=f"example_{name}")
     printed = io.StringIO()
-    try:
+    with contextlib.ExitStack() as stack:
+        stack.callback(plt.close, "all")
+        if "dask" in sys.modules:  # its config was read at import: the variable would not reach it
+            import dask
+
+            stack.enter_context(dask.config.set({"temporary-directory": str(out.parent / "dask-scratch")}))
+        else:
+            monkeypatch.setenv("DASK_TEMPORARY_DIRECTORY", str(out.parent / "dask-scratch"))
         with contextlib.redirect_stdout(printed):
             code = namespace["main"](["--quick", "--out", str(out)])
-    finally:
-        plt.close("all")
     assert code == 0, printed.getvalue()
     return printed.getvalue()
 

@@ -324,7 +324,7 @@ def covering_examples(command: str) -> list[tuple[tuple, list[str]]]:
     2k + 1 of :data:`_PAIRED`, for an odd k the extreme value (k - 1)/2 (an even k keeps the edited design's own
     values, so that its command runs through, not refused up front), the option alternatives
     k + i (i: the choice's place; each list modulo its length) and 3 + k % 4 shaft elements.
-    The eleven commands of at most :data:`COVERING_UP_TO` examples take 31 examples: every
+    The twelve commands of at most :data:`COVERING_UP_TO` examples take 31 examples: every
     structural edit eight times or more, every extreme value twice or more, every base ten
     times or more (an edit that does not apply to a base leaves it as it is, as in the drawn
     examples)."""

@@ -7,7 +7,8 @@ whose repr holds its memory address; the fingerprint took that repr, so every co
 the study had another fingerprint and ``flexshaft study gain --out F`` run twice refused its own
 folder ("holds a different study"). The properties checked here are exact: two constructions
 of one study fingerprint alike, in this process and in another one, and a study whose partial
-binds other arguments (other bearings) fingerprints differently.
+binds other arguments (other bearings; an array of 2000 numbers differing in one, whose repr
+elides the difference) fingerprints differently.
 """
 
 from __future__ import annotations
@@ -17,6 +18,8 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+
+import numpy as np
 
 from flexshaft.design import baseline_design
 from flexshaft.sweep import Output, Study, Variable
@@ -58,3 +61,24 @@ def test_another_process_fingerprints_the_study_alike() -> None:
     env = {**os.environ, "PYTHONHASHSEED": "random"}
     out = subprocess.run([sys.executable, "-c", code, str(HERE)], capture_output=True, text=True, env=env, check=True)
     assert out.stdout.strip() == _study(paths).fingerprint()
+
+
+def _scaled(factors, value: float) -> dict[str, float]:
+    return {"bearings[1].kp": value * float(np.asarray(factors)[0])}
+
+
+def test_arguments_whose_repr_elides_them_fingerprint_by_their_content() -> None:
+    a, b = np.ones(2000), np.ones(2000)
+    b[1000] = 2.0
+    assert repr(a) == repr(b)  # numpy shows the first and last three of 2000
+    first, second = (
+        Study(
+            "gain",
+            (Variable("kp", [4e5], overrides=functools.partial(_scaled, f), units="N/m"),),
+            (Output("kp_read", "N/m"),),
+            _evaluate,
+            base=baseline_design(),
+        )
+        for f in (a, b)
+    )
+    assert first.fingerprint() != second.fingerprint()

@@ -89,13 +89,13 @@ def _reference_jeffcott(
     DOP853 steps (at ``rtol``: the global error is at most about steps x rtol of the peak).
 
     ``dense``: scipy's Python port of DOP853 (``solve_ivp``) with its 7th-order dense output at
-    ``times``. Otherwise Hairer and Wanner's own Fortran DOP853 (``scipy.integrate.ode``: the
-    same method, the same RMS error norm with the same rtol and atol, its steps taken in compiled
-    code) stopped at each of ``times`` and started again from there: every step still holds its
-    local error below rtol, the steps cut at the outputs are counted, and for a few thousand
-    outputs it takes 0.3 s of CPU where the port took 0.45 s (CPU budget, issue 23; the two
-    agree to 2e-11 of the peak). For many outputs (each one a restart) the dense output is the
-    cheaper.
+    ``times``. Otherwise Hairer and Wanner's DOP853 in compiled code (``scipy.integrate.ode``:
+    their Fortran up to scipy 1.16, a C translation of it since 1.17; the same method, the same
+    RMS error norm with the same rtol and atol) stopped at each of ``times`` and started again
+    from there: every step still holds its local error below rtol, the steps cut at the outputs
+    are counted, and for a few thousand outputs it takes 0.3 s of CPU where the port took 0.45 s
+    (CPU budget, issue 23; the two agree to 2e-11 of the peak). For many outputs (each one a
+    restart) the dense output is the cheaper.
     """
     U = M_DISK * ECCENTRICITY
     k = 0.5 * np.trace(stiffness)

@@ -39,6 +39,7 @@ computed δ was round-off, 9e-27 of |s| at most there, for about 1 s of CPU).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 from collections.abc import Callable
 from typing import NamedTuple, Protocol, TypeVar
@@ -417,8 +418,11 @@ def _left_vectors(Ts: np.ndarray, Y: np.ndarray) -> np.ndarray:
     1/σ_min); per mode, with the smallest singular vector, when a T_k is exactly singular."""
     try:
         Z = np.linalg.solve(np.swapaxes(Ts, 1, 2), Y.T[:, :, None])[:, :, 0].T
-    except np.linalg.LinAlgError:
+    except np.linalg.LinAlgError:  # one exactly singular T_k fails the stack: each on its own
         Z = np.full_like(Y, np.nan)
+        for j in range(Ts.shape[0]):
+            with contextlib.suppress(np.linalg.LinAlgError):
+                Z[:, j] = np.linalg.solve(Ts[j].T, Y[:, j])
     for k in np.flatnonzero(~np.all(np.isfinite(Z), axis=0) | ~np.any(Z, axis=0)):
         Z[:, k] = la.svd(Ts[k].T)[2][-1].conj()
     return Z / np.linalg.norm(Z, axis=0)

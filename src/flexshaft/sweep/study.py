@@ -15,6 +15,7 @@ import functools
 import hashlib
 import json
 import math
+import pickle
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -48,14 +49,29 @@ def _plain(value: Any) -> Any:
 
 def _qualname(func: Callable | None) -> str | None:
     """The callable's name for the study's fingerprint: ``module.qualname``; a
-    :func:`functools.partial` by its function's name and its bound arguments' reprs (its own
-    repr holds its memory address, which would make every run's fingerprint another)."""
+    :func:`functools.partial` by its function's name and its bound arguments (its own repr
+    holds its memory address, which would make every run's fingerprint another): their reprs
+    when every one is plain (:func:`_is_plain`: the repr is then the value), else the SHA-256 of
+    their pickle (an array's repr elides its middle above 1000 numbers: two partials of
+    different arrays would fingerprint alike and share a run folder's chunks)."""
     if func is None:
         return None
     if isinstance(func, functools.partial):
-        bound = [*map(repr, func.args), *(f"{k}={v!r}" for k, v in sorted(func.keywords.items()))]
-        return f"functools.partial({_qualname(func.func)}, {', '.join(bound)})"
+        keywords = sorted(func.keywords.items())
+        if all(map(_is_plain, (*func.args, *(v for _, v in keywords)))):
+            bound = ", ".join([*map(repr, func.args), *(f"{k}={v!r}" for k, v in keywords)])
+        else:
+            bound = "pickle sha256 " + hashlib.sha256(pickle.dumps((func.args, keywords), protocol=4)).hexdigest()
+        return f"functools.partial({_qualname(func.func)}, {bound})"
     return f"{getattr(func, '__module__', '?')}.{getattr(func, '__qualname__', repr(func))}"
+
+
+def _is_plain(value: Any) -> bool:
+    """Whether ``value``'s repr is the whole value: None, a bool, int, float or str, or a tuple
+    or list of such values."""
+    if isinstance(value, (tuple, list)):
+        return all(map(_is_plain, value))
+    return value is None or isinstance(value, (bool, int, float, str))
 
 
 @dataclass(frozen=True)
