@@ -25,8 +25,9 @@ import scipy.sparse.linalg as sla
 
 from flexshaft.analyses import frequency_response, imbalance_response, modes, static_response
 from flexshaft.analyses.campbell import campbell
-from flexshaft.analyses.eigen import modal_basis, reduce
+from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.reactions import bearing_forces
+from flexshaft.analyses.reduced_basis import modal_basis
 from flexshaft.analyses.response import orbit_amplitude, static_actuator_forces
 from flexshaft.analyses.spinup import actuator_receptance, spinup_curves, spinup_map
 from flexshaft.analyses.stability import stability

@@ -1,6 +1,6 @@
 """The dense modal basis read off the model's whole spectrum, against LAPACK's subset solve.
 
-:func:`~flexshaft.analyses.eigen.modal_basis` (dense, up to ``WHOLE_DENSE_BASIS_UP_TO`` free
+:func:`~flexshaft.analyses.reduced_basis.modal_basis` (dense, up to ``WHOLE_DENSE_BASIS_UP_TO`` free
 DOFs) takes the lowest modes from one solution of every mode of the model, computed once and
 shared by the bases of every size. The reference is the solve of the same shift-inverted
 generalised problem for the wanted modes only (``scipy.linalg.eigh(..., subset_by_index=...)``,
@@ -19,7 +19,7 @@ import scipy.linalg as la
 from rotors import M_DISK, WN, jeffcott
 
 from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
-from flexshaft.analyses.eigen import modal_basis
+from flexshaft.analyses.reduced_basis import modal_basis
 from flexshaft.assembly import build_model
 from flexshaft.assembly.sparse import restrict
 from flexshaft.design.io import embedded_design

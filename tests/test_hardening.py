@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 from flexshaft.analyses import frequency_response, imbalance_response, modes, stability
-from flexshaft.analyses.eigen import modal_basis
 from flexshaft.analyses.guards import NonFiniteResultError, require_finite
+from flexshaft.analyses.reduced_basis import modal_basis
 from flexshaft.assembly import build_model
 from flexshaft.assembly.checks import RIGID_RATIO, check_finite_model
 from flexshaft.assembly.loads import imbalance_bays, imbalance_loads

@@ -5,7 +5,7 @@ Reference (derived from the definition the module states): the basis must hold, 
 round-off, the static-correction vectors ``K_σ⁻¹ X φ_j`` of each coupling X (the gyroscope G;
 the dampers C + K_d and the loss matrices when non-zero) for each of the lowest ``n_targets``
 modes φ_j, and each actuator's static flexibility ``K_σ⁻¹ B_aᵀ``, with ``K_σ = K + K_a + σM``
-(σ = :data:`~flexshaft.analyses.eigen.BASIS_SHIFT`). Those vectors are computed here by dense
+(σ = :data:`~flexshaft.analyses.reduced_basis.BASIS_SHIFT`). Those vectors are computed here by dense
 LAPACK solves of ``K_σ`` assembled from the model's matrices (not the module's sparse factor),
 and each must lie in the span of the basis V: its M-orthogonal residual
 ``x − V Vᵀ M x`` (V is M-orthonormal) relative to ``‖x‖_M``. The rotor is tests/test_amb.py's
@@ -26,8 +26,7 @@ import pytest
 import scipy.linalg as la
 from test_amb import PID_KEYS, rotor
 
-from flexshaft.analyses.eigen import BASIS_SHIFT, modal_basis
-from flexshaft.analyses.reduced_basis import enrich_basis, full_operators
+from flexshaft.analyses.reduced_basis import BASIS_SHIFT, enrich_basis, full_operators, modal_basis
 from flexshaft.assembly.sparse import restrict
 
 N_BASIS, N_TARGETS = 8, 2

@@ -1,6 +1,6 @@
 """Every undamped mode of a model at once: the dense modal bases of one model share one solve.
 
-:func:`~flexshaft.analyses.eigen.modal_basis` (dense) reads the lowest modes off
+:func:`~flexshaft.analyses.reduced_basis.modal_basis` (dense) reads the lowest modes off
 :func:`dense_spectrum`, cached per model, instead of solving LAPACK's subset problem for each
 basis size (tests/test_dense_basis.py compares the two).
 """
@@ -32,7 +32,7 @@ WHOLE_DENSE_BASIS_UP_TO = 500
 def dense_spectrum(model: Model, shift: float) -> tuple[np.ndarray, np.ndarray, int]:
     """Every eigenpair ``(μ ascending, Φ)`` of ``M φ = μ (K + K_a + σ M) φ`` on the free DOFs,
     σ = ``shift`` [rad²/s²] (the shift-inverted problem of
-    :func:`~flexshaft.analyses.eigen.modal_basis`), read-only, and how many of the lowest
+    :func:`~flexshaft.analyses.reduced_basis.modal_basis`), read-only, and how many of the lowest
     modes a basis may take from it: the lowest 128 when they are M-orthogonal to
     :data:`_ORTHOGONALITY` after mass normalisation, else none (LAPACK's divide-and-conquer
     solution of every mode is 10-100 times less M-orthogonal than its subset solution: 1e-10

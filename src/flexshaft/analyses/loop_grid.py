@@ -29,7 +29,7 @@ import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
 from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
-from flexshaft.analyses.eigen import BASIS_SHIFT
+from flexshaft.analyses.reduced_basis import BASIS_SHIFT
 from flexshaft.assembly.model import Model
 
 __all__ = ["AROUND", "RESOLVED_DAMPING", "VISIBLE", "frequency_grid", "loop_dofs", "natural_frequencies"]

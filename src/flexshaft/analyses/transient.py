@@ -74,7 +74,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from flexshaft.analyses.actuator_maps import actuator_outputs
-from flexshaft.analyses.eigen import ReducedModel, modal_basis, reduce
+from flexshaft.analyses.eigen import ReducedModel, reduce
 from flexshaft.analyses.envelope import ETD_STABLE_STEP, MAX_GROWTH, MAX_STEPS, EnvelopeSystem, integrate_envelope
 from flexshaft.analyses.guards import (
     RefusedInputError,
@@ -83,6 +83,7 @@ from flexshaft.analyses.guards import (
     check_model,
     check_spin_speed,
 )
+from flexshaft.analyses.reduced_basis import modal_basis
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
 from flexshaft.analyses.speed_profile import SpeedProfile
 from flexshaft.assembly.loads import imbalance_loads

@@ -71,7 +71,7 @@ __all__ = [
 ]
 
 #: Free-DOF count above which the modal basis is computed by sparse shift-invert
-#: (:func:`flexshaft.analyses.eigen.modal_basis`).
+#: (:func:`flexshaft.analyses.reduced_basis.modal_basis`).
 SPARSE_BASIS_ABOVE = 900
 #: Modal basis of the run's eigen-analyses (10 to 12 modes: ``max(4 n_modes, 60)``).
 RUN_BASIS = 60
