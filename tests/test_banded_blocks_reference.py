@@ -20,7 +20,9 @@ Checked:
   the rows a load does not reach are exactly zero (a property of the block structure, exact in
   floating point);
 * the span of a lateral load covers the lateral block only, and that of a load on every block,
-  every row.
+  every row;
+* the DOFs coupled to given rows (:meth:`BandedHarmonicSolver.coupled`, the bearing loops'
+  visible DOFs) are the connected components that hold them.
 
 One tiny model: a few ms beyond its assembly.
 """
@@ -96,3 +98,17 @@ def test_the_span_of_a_load_covers_the_blocks_it_reaches(model, solver):
     assert hi - lo == np.count_nonzero(blocks == blocks[solver.inverse[_free_index(model, solver, v)]]) == 16
     assert solver.loaded_span(np.ones(solver.n, complex)) == (0, solver.n)
     assert solver.loaded_span(np.zeros(solver.n, complex)) == (0, solver.n)
+
+
+def test_the_dofs_coupled_to_rows_are_their_connected_components(model, solver):
+    """:meth:`BandedHarmonicSolver.coupled` (the bearing loops' visible DOFs) against the
+    connected components of Z's pattern, computed here in the model's free-DOF order: rows of
+    one block give that block, rows of two blocks their union."""
+    pattern = solver._template.copy()
+    pattern.data[:] = 1.0
+    _, label = connected_components(pattern, directed=False)
+    label = label[solver.inverse]  # the template is in the solver's ordering
+    for rows in ([0], [solver.n - 1], [0, solver.n - 1], list(range(solver.n))):
+        want = np.isin(label, label[rows])
+        np.testing.assert_array_equal(solver.coupled(np.array(rows)), want)
+    assert not solver.coupled(np.array([0])).all()  # the Jeffcott rotor's blocks are not one

@@ -38,7 +38,7 @@ import scipy.sparse as sp
 
 from flexshaft.analyses import loop_grid
 from flexshaft.analyses.bearing_loops import bearing_loops
-from flexshaft.analyses.loop_grid import loop_dofs, natural_frequencies
+from flexshaft.analyses.loop_grid import natural_frequencies
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
@@ -57,13 +57,6 @@ def _three_dof_model(alone: float, scale: float = 1.0):
         Kp=sp.csr_matrix((3, 3)),
         M=sp.csr_matrix(scale * np.eye(3)),
     )
-
-
-def test_loop_dofs_are_the_blocks_that_hold_the_rows():
-    pattern = _three_dof_model(400.0).K
-    np.testing.assert_array_equal(loop_dofs(pattern, np.array([0])), [True, True, False])
-    np.testing.assert_array_equal(loop_dofs(pattern, np.array([2])), [False, False, True])
-    np.testing.assert_array_equal(loop_dofs(pattern, np.array([1, 2])), [True, True, True])
 
 
 @pytest.mark.parametrize("scale", [1.0, 1e16], ids=["M = I", "M = 1e16 I"])

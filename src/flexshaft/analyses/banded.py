@@ -463,6 +463,13 @@ class BandedHarmonicSolver:
         pairs = np.ascontiguousarray(w.T).view(np.float64)
         return (self._real_stack @ pairs).view(complex)
 
+    def coupled(self, rows: np.ndarray) -> np.ndarray:
+        """Mask of the free DOFs (in the model's free-DOF order) in the uncoupled blocks of Z
+        that hold any of ``rows`` (free-DOF indices): what a load on those rows or a response
+        read there involves (the bearing loops' grid, :mod:`flexshaft.analyses.loop_grid`)."""
+        block = self._block[self.inverse]
+        return np.isin(block, block[np.asarray(rows, dtype=np.intp)])
+
     def loaded_span(self, bp: np.ndarray) -> tuple[int, int]:
         """The rows ``lo:hi`` (solver ordering) of the uncoupled blocks that the right-hand side
         ``bp`` (in that ordering) loads, from the first to the last: the solution is zero

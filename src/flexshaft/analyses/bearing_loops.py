@@ -30,7 +30,7 @@ The frequency grid: :mod:`flexshaft.analyses.loop_grid`, a logarithmic one with 
 lightly damped closed-loop poles, those of the loss-free closed loop
 (:func:`~flexshaft.analyses.root_stability.closed_loop_poles`) or the caller's (``poles``: the
 every-root check's), and above them at the natural frequencies of the blocks of Z the loops'
-rows touch (:func:`~flexshaft.analyses.loop_grid.loop_dofs`: not the shaft's uncoupled torsion
+rows touch (:meth:`~flexshaft.analyses.banded.BandedHarmonicSolver.coupled`: not the shaft's uncoupled torsion
 and axial motion, whose modes are no poles of S). tests/test_loop_robustness.py checks the
 result against a 5000-point grid refined everywhere.
 
@@ -60,12 +60,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from flexshaft.analyses.banded import solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed
 from flexshaft.analyses.local_projection import LocalModels, lockstep, projected_refinements, window_of
-from flexshaft.analyses.loop_grid import AROUND, frequency_grid, loop_dofs
+from flexshaft.analyses.loop_grid import AROUND, frequency_grid
 from flexshaft.analyses.loop_margins import LoopMargins, refinements, release_rule
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
@@ -183,10 +182,7 @@ def bearing_loops(
     if poles is None:
         poles = closed_loop_poles(model, speed)
     # the natural frequencies of blocks of Z that no loop's rows touch are no poles of S (loop_grid)
-    n = free.size
-    stack = solver.term_stack.tocoo()  # every term of Z, stacked: (n_terms n, n)
-    pattern = sp.csr_matrix((np.ones(stack.nnz), (stack.row % n, stack.col)), shape=(n, n))
-    visible = loop_dofs(pattern, np.flatnonzero(np.any(rhs != 0, axis=1) | np.any(sense != 0, axis=0)))
+    visible = solver.coupled(np.flatnonzero(np.any(rhs != 0, axis=1) | np.any(sense != 0, axis=0)))
     grid = frequency_grid(model, (low, high), n_points, poles, AROUND[peak_samples], visible)
     responses: list[np.ndarray] = []
     T_grid = closed(grid, responses if projected else None)

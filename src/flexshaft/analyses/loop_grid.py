@@ -11,28 +11,27 @@ truncated basis), the undamped natural frequencies (:func:`natural_frequencies`)
 poles with a nominal ζ = 1e-3. The margins are refined between its points
 (:mod:`flexshaft.analyses.loop_margins`).
 
-Only the natural frequencies of modes the loops can see stand in (``visible``,
-:func:`loop_dofs`): the dynamic stiffness Z(ω, Ω) of a driveline splits into uncoupled blocks
-(the shaft's torsion and axial motion: on the tuned design 38 of its 343 free DOFs, no term of
-Z couples them to the lateral DOFs), and each loop's T = G sᵀ Z_c⁻¹ a involves only the blocks
-its actuation and sensing rows a, s touch: with Z_c block diagonal, sᵀ Z_c⁻¹ a = s_Bᵀ Z_B⁻¹ a_B
-over those blocks B, so det Z_c's factor from any other block cancels from S = det Z_o/det Z_c
-(Z_o differs from Z_c in the loop's own rows only) and the natural frequencies of that block are
-no poles of any loop's S. Their grid points (10 of the tuned design's 74 above 271 Hz) would be
-mere samples of a smooth stretch, which the logarithmic grid is there to sample.
+Only the natural frequencies of modes the loops can see stand in (``visible``: the blocks of
+:meth:`~flexshaft.analyses.banded.BandedHarmonicSolver.coupled`): the dynamic stiffness Z(ω, Ω)
+of a driveline splits into uncoupled blocks (the shaft's torsion and axial motion: on the tuned
+design 38 of its 343 free DOFs, no term of Z couples them to the lateral DOFs), and each loop's
+T = G sᵀ Z_c⁻¹ a involves only the blocks its actuation and sensing rows a, s touch: with Z_c
+block diagonal, sᵀ Z_c⁻¹ a = s_Bᵀ Z_B⁻¹ a_B over those blocks B, so det Z_c's factor from any
+other block cancels from S = det Z_o/det Z_c (Z_o differs from Z_c in the loop's own rows only)
+and the natural frequencies of that block are no poles of any loop's S. Their grid points (10
+of the tuned design's 74 above 271 Hz) would be mere samples of a smooth stretch, which the
+logarithmic grid is there to sample.
 """
 
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
-from scipy.sparse.csgraph import connected_components
 
 from flexshaft.analyses.dense_spectrum import WHOLE_DENSE_BASIS_UP_TO, dense_spectrum
 from flexshaft.analyses.reduced_basis import BASIS_SHIFT
 from flexshaft.assembly.model import Model
 
-__all__ = ["AROUND", "RESOLVED_DAMPING", "VISIBLE", "frequency_grid", "loop_dofs", "natural_frequencies"]
+__all__ = ["AROUND", "RESOLVED_DAMPING", "VISIBLE", "frequency_grid", "natural_frequencies"]
 
 #: Closed-loop poles below this damping ratio get grid points at their peak (module docstring);
 #: above it the coarse grid resolves the peak (half-power width 2ζ ≥ 40 % of the frequency).
@@ -49,23 +48,15 @@ AROUND = {3: (-0.5, 0.0, 0.5), 1: (0.0,)}
 VISIBLE = 1e-6
 
 
-def loop_dofs(pattern: sp.csr_matrix, rows: np.ndarray) -> np.ndarray:
-    """Mask of the free DOFs coupled to any of ``rows`` (free-DOF indices: the loops' actuation
-    and sensing rows) through the sparsity ``pattern`` of Z (n_free, n_free; every term's
-    entries, stored zeros included): the connected blocks of the pattern that hold them."""
-    csr = sp.csr_matrix(pattern)
-    pattern = sp.csr_matrix((np.ones(csr.indices.size), csr.indices, csr.indptr), shape=csr.shape)
-    _, label = connected_components(pattern, directed=False)
-    return np.isin(label, label[np.asarray(rows, dtype=np.intp)])
-
-
 def natural_frequencies(model: Model, low: float, high: float, visible: np.ndarray | None = None) -> np.ndarray:
     """Undamped natural frequencies of (K + K_a, M) in (low, high] [rad/s], ascending (dense:
     up to :data:`~flexshaft.analyses.dense_spectrum.WHOLE_DENSE_BASIS_UP_TO` free DOFs read off
     the model's whole spectrum, which its modal bases have computed already; above, only those
-    eigenvalues computed; empty above 900 free DOFs). ``visible`` (a mask of the free DOFs,
-    a union of uncoupled blocks: :func:`loop_dofs`): only the modes of those blocks (the whole
-    spectrum's modes with a component there, :data:`VISIBLE`; the subset solve on those DOFs)."""
+    eigenvalues computed; empty above 900 free DOFs). ``visible`` (a mask of the free DOFs, a
+    union of uncoupled blocks of Z: the banded solver's
+    :meth:`~flexshaft.analyses.banded.BandedHarmonicSolver.coupled`): only the modes of those
+    blocks (the whole spectrum's modes with a component there, :data:`VISIBLE`; the subset
+    solve on those DOFs)."""
     free = model.dofs.free
     if free.size <= WHOLE_DENSE_BASIS_UP_TO:
         mu, Phi, _ = dense_spectrum(model, BASIS_SHIFT)
@@ -95,7 +86,7 @@ def frequency_grid(
     """Logarithmic grid [rad/s] with points at the peaks of the lightly damped ``poles``
     (module docstring); above the highest pole given, at the undamped natural frequencies with
     a nominal width of 1e-3 (poles of a truncated basis), those of the blocks of free DOFs
-    ``visible`` only when given (:func:`loop_dofs`)."""
+    ``visible`` only when given (:func:`natural_frequencies`)."""
     low, high = 2 * np.pi * frequency_range[0], 2 * np.pi * frequency_range[1]
     grid = [np.geomspace(low, high, n_points)]
     poles = np.asarray(poles, dtype=complex)
