@@ -152,7 +152,7 @@ def _corrections(
         return np.zeros(s.size, complex)
     loss: list[LossCoefficients | None] = [None] * s.size if viscous is None else list(viscous)
     weights = [_weights(red, float(speed), sk, v) for speed, sk, v in zip(speeds, s, loss)]
-    models: dict[int, tuple[ReducedModel, np.ndarray | None]] = {}  # the viscous model of each weights
+    models: dict[LossCoefficients, tuple[ReducedModel, np.ndarray | None]] = {}  # each weights' viscous model
     dTY = np.empty_like(Y)
     Z = np.empty_like(Y)
     # the modes' matrices T_k (nb x nb each) a chunk at a time: all at once they held
@@ -164,12 +164,9 @@ def _corrections(
         Ts = np.empty((len(part), red.size, red.size), dtype=complex)
         for i, k in enumerate(part):
             own = loss[k]
-            if own is None:
-                model, extra = red, None
-            else:
-                if id(own) not in models:
-                    models[id(own)] = viscous_model(red, own)
-                model, extra = models[id(own)]
+            if own is not None and own not in models:
+                models[own] = viscous_model(red, own)
+            model, extra = (red, None) if own is None else models[own]
             T, dTY[:, k] = model.newton_terms(complex(s[k]), float(speeds[k]), weights[k], Y[:, k])
             Ts[i] = T if extra is None else T + extra
         Z[:, part.start : part.stop] = _left_vectors(Ts, Y[:, part.start : part.stop])
