@@ -43,6 +43,7 @@ __all__ = [
     "load_design",
     "loads_design",
     "tuned_design",
+    "value_at_path",
     "with_overrides",
 ]
 
@@ -297,6 +298,23 @@ def _parse_path(path: str) -> list[str | int] | None:
             expect_key = False
         position = match.end()
     return None if expect_key or not parts else parts
+
+
+def value_at_path(data: Any, path: str, missing: Any = None) -> Any:
+    """The value at a design path of a model dump (``a.b[2]."c.d"``, the grammar of
+    :func:`with_overrides`: a quoted key may hold dots), or ``missing`` when the path is
+    malformed or absent from ``data``."""
+    parts = _parse_path(path)
+    if parts is None:
+        return missing
+    for part in parts:
+        if isinstance(part, int):
+            if not isinstance(data, list) or part >= len(data):
+                return missing
+        elif not isinstance(data, dict) or part not in data:
+            return missing
+        data = data[part]
+    return data
 
 
 def _set_path(data: dict[str, Any], path: str, value: Any) -> Problem | None:

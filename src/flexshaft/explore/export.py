@@ -11,33 +11,18 @@ the command line that judges the file as ``flexshaft run`` does.
 from __future__ import annotations
 
 import json
-import re
 import shlex
 from collections.abc import Mapping
 from typing import Any
 
 from flexshaft.design import Design
+from flexshaft.design.io import value_at_path
 from flexshaft.optimize.files import design_toml
 from flexshaft.report.inputs import marked_inputs
 
 __all__ = ["changed_keys", "explored_toml", "header_comments", "run_command"]
 
-_PATH_PART = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
 _MISSING = object()
-
-
-def _value_at(data: Any, path: str) -> Any:
-    """The value at a dotted design path of a model dump (``_MISSING`` when absent)."""
-    for key, index in _PATH_PART.findall(path):
-        if index:
-            if not isinstance(data, list) or int(index) >= len(data):
-                return _MISSING
-            data = data[int(index)]
-        else:
-            if not isinstance(data, dict) or key not in data:
-                return _MISSING
-            data = data[key]
-    return data
 
 
 def changed_keys(base: Design, design: Design, overrides: Mapping[str, Any]) -> list[tuple[str, Any, Any]]:
@@ -46,7 +31,7 @@ def changed_keys(base: Design, design: Design, overrides: Mapping[str, Any]) -> 
     after = json.loads(design.model_dump_json())
     out = []
     for path in overrides:
-        old, new = _value_at(before, path), _value_at(after, path)
+        old, new = value_at_path(before, path, _MISSING), value_at_path(after, path, _MISSING)
         if old != new:
             out.append((path, new, None if old is _MISSING else old))
     return out

@@ -27,6 +27,7 @@ from numpy.typing import ArrayLike
 
 from flexshaft import __version__
 from flexshaft.design import Design, DesignError, baseline_design, embedded_text, with_overrides
+from flexshaft.design.io import value_at_path
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
 from flexshaft.optimize.variables import DEFAULT_OBJECTIVES, DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
@@ -355,7 +356,7 @@ class DesignProblem:
         for v in self.variables:
             if v.placeholder is not None:
                 continue
-            found = {_read_path(data, p) for p in v.paths}
+            found = {value_at_path(data, p) for p in v.paths}
             if len(found) != 1 or None in found:
                 return None
             values[v.name] = found.pop()
@@ -402,20 +403,6 @@ class DesignProblem:
             "base": json.loads(self.base.model_dump_json()),
             "evaluation": self.evaluation_fingerprint(),
         }
-
-
-def _read_path(data: Any, path: str) -> Any:
-    """The value at a design path (``a.b[2].c``) of a model dump, or None."""
-    for key, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
-        if index:
-            if not isinstance(data, list) or int(index) >= len(data):
-                return None
-            data = data[int(index)]
-        else:
-            if not isinstance(data, dict) or key not in data:
-                return None
-            data = data[key]
-    return data
 
 
 def _match_layup(template: str, layup: str) -> dict[str, float] | None:
