@@ -1,7 +1,8 @@
 """The ply's transverse shear moduli G_13, G_23 follow its in-plane moduli, at any temperature.
 
-Transverse isotropy of a unidirectional ply (the 2-3 plane, across the fibres, is isotropic;
-Jones 1999 §2.2): the 1-3 plane is equivalent to the 1-2 plane, so G_13 behaves as G_LT, and
+Transverse isotropy of a unidirectional ply (the 2-3 plane, across the fibres, is isotropic, so
+any plane containing the fibres is equivalent to any other): the 1-3 plane is the 1-2 plane
+turned about the fibres, so G_13 behaves as G_LT; the 2-3 plane is isotropic, so
 G_23 = E_T / (2 (1 + ν_23)) with the matrix-dominated ν_23 held fixed, so G_23 ∝ E_T. Hence, when
 the matrix warms and a temperature table scales E_T and G_LT by different factors, an explicit
 G_13 scales by G_LT(T)/G_LT(T_ref) and an explicit G_23 by E_T(T)/E_T(T_ref) (complex ratios: the
