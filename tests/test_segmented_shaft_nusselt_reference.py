@@ -23,7 +23,7 @@ OMEGA, T_AIR = 300.0, 300.0
 
 
 def test_the_reported_nusselt_is_the_longer_tubes():
-    rigid = {k: "rigid" for k in ("angular_stiffness", "axial_stiffness", "torsional_stiffness", "lateral_stiffness")}
+    rigid = dict.fromkeys(("angular_stiffness", "axial_stiffness", "torsional_stiffness", "lateral_stiffness"), "rigid")
     data = {
         "name": "two tubes",
         "materials": {"steel": {"kind": "isotropic", "E": 200e9, "G": 80e9, "density": 7850.0, "loss_factor": 0.01}},

@@ -21,19 +21,13 @@ import numpy as np
 import pytest
 
 from flexshaft.design.materials import Lamina as LaminaMaterial
-from flexshaft.laminate import Laminate, Lamina, transverse_shear_stiffness
+from flexshaft.laminate import Lamina, Laminate, transverse_shear_stiffness
 from flexshaft.thermal.matrix import LaminaTable, MatrixTemperatureLaw
 
 T_REF, T_HOT = 293.15, 333.15
 ETA = 0.05
 TABLE = LaminaTable(
-    (T_REF, T_HOT),
-    (
-        ("E_T", (8e9, 4e9)),
-        ("G_LT", (4e9, 3e9)),
-        ("loss_E_T", (ETA, ETA)),
-        ("loss_G_LT", (ETA, ETA)),
-    ),
+    (T_REF, T_HOT), (("E_T", (8e9, 4e9)), ("G_LT", (4e9, 3e9)), ("loss_E_T", (ETA, ETA)), ("loss_G_LT", (ETA, ETA)))
 )
 LAW = MatrixTemperatureLaw(reference_temperature=T_REF, table=TABLE, allowable_temperature=400.0)
 
