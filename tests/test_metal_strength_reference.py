@@ -112,3 +112,44 @@ def test_the_segment_buckles_as_its_mid_surface_shell_under_the_torque_p_over_om
     assert b.torque == pytest.approx(POWER / OMEGA, rel=1e-12)
     assert b.critical_torque == pytest.approx(reference.critical_torque, rel=1e-12)
     assert b.safety_factor == pytest.approx(reference.critical_torque / (POWER / OMEGA), rel=1e-12)
+
+
+def test_a_static_thrust_is_a_mean_stress_f_over_a(tube):
+    """A static axial force F_x = 5 kN at the free end (u held at the start only): uniform
+    tension σ_m = F_x/A on every fibre (A = π(D_o² − D_i²)/4), no alternating stress; with the
+    mean hoop stress σ_θ the first-cycle yield factor is S_y/√(σ_m² + σ_m σ_θ + σ_θ²)
+    (von Mises of the biaxial mean state, Shigley eq. 7-16 with no shear and no alternation)."""
+    thrust = 5000.0
+    static = static_response(tube, point_load(tube, "shaft", (thrust, 0.0, 0.0), x=L))
+    result = metal_strength(tube, static, buckling=False)
+    sigma = thrust / (math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4)
+    hoop = AL["density"] * OMEGA**2 * ((D_O - WALL) / 2) ** 2
+    np.testing.assert_allclose(result.sigma_mean, sigma, rtol=1e-9)
+    np.testing.assert_allclose(result.sigma_alternating, 0.0, atol=1e-9 * sigma)
+    n_y = AL["yield_strength"] / math.sqrt(sigma**2 + sigma * hoop + hoop**2)
+    np.testing.assert_allclose(result.yield_safety_factor, n_y, rtol=1e-9)
+
+
+def test_an_alternating_axial_force_is_an_alternating_stress_f_over_a(tube):
+    """The response's axial part alternates: an axial force of amplitude F_x = 5 kN at the free
+    end, solved statically as the response's shape, gives σ_a = F_x/A everywhere, σ_m = 0."""
+    thrust = 5000.0
+    dynamic = static_response(tube, point_load(tube, "shaft", (thrust, 0.0, 0.0), x=L)).astype(complex)
+    result = metal_strength(tube, np.zeros(tube.dofs.size), dynamic, buckling=False)
+    sigma = thrust / (math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4)
+    np.testing.assert_allclose(result.sigma_alternating, sigma, rtol=1e-9)
+    np.testing.assert_allclose(result.sigma_mean, 0.0, atol=1e-9 * sigma)
+
+
+def test_the_worst_imbalance_case_is_kept(tube):
+    """Two imbalance cases, one at rest (no response) and the backward whirl of the first test:
+    at midspan the check keeps the whirl, σ_a = M c/I with M = F L/4, and the smaller n_f."""
+    dynamic = np.column_stack([np.zeros(tube.dofs.size, complex), _whirl(tube, 1.0)])
+    result = metal_strength(tube, np.zeros(tube.dofs.size), dynamic, buckling=False)
+    stress = F * L / 4 * (D_O / 2) / INERTIA
+    middle = int(np.argmin(np.abs(result.x - L / 2)))
+    e, end = np.unravel_index(middle, result.x.shape)
+    assert result.sigma_alternating[e, end] == pytest.approx(stress, rel=1e-9)
+    hoop = AL["density"] * OMEGA**2 * ((D_O - WALL) / 2) ** 2
+    n_f = 1.0 / (stress / AL["fatigue_strength"] + hoop / AL["ultimate_strength"])
+    assert result.fatigue_safety_factor[e, end] == pytest.approx(n_f, rel=1e-9)
