@@ -61,7 +61,7 @@ def test_tip_flexibility_of_each_element_is_bending_plus_shear():
     L = LENGTH / N_EL
     Es, Gs = E * (1 + 1j * ETA), G * (1 + 1j * ETA)
     expected = L**3 / (3 * Es * inertia) + L / (kappa * Gs * area)
-    tip = [7, 11]  # node 2's v and γ = dv/dx, node 1 clamped (DOF order [u v w θ β γ] × 2)
+    tip = [7, 11]  # node 2's v and γ (the section's rotation about z), node 1 clamped ([u v w θ β γ] × 2)
     for element in K:
         flexibility = np.linalg.inv(element[np.ix_(tip, tip)])[0, 0]
         assert abs(flexibility - expected) < 1e-9 * abs(expected)

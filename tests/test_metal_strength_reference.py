@@ -115,14 +115,17 @@ def test_the_segment_buckles_as_its_mid_surface_shell_under_the_torque_p_over_om
 
 
 def test_a_static_thrust_is_a_mean_stress_f_over_a(tube):
-    """A static axial force F_x = 5 kN at the free end (u held at the start only): uniform
-    tension σ_m = F_x/A on every fibre (A = π(D_o² − D_i²)/4), no alternating stress; with the
-    mean hoop stress σ_θ the first-cycle yield factor is S_y/√(σ_m² + σ_m σ_θ + σ_θ²)
-    (von Mises of the biaxial mean state, Shigley eq. 7-16 with no shear and no alternation)."""
-    thrust = 5000.0
+    """A static axial compression F_x = −5 kN at the free end (u held at the start only): a
+    uniform axial stress σ_x = F_x/A on every fibre (A = π(D_o² − D_i²)/4), reported as its
+    magnitude σ_m = |σ_x|, no alternating stress. Beside the tensile mean hoop stress σ_θ, the
+    biaxial von Mises stress is √(σ_x² − σ_x σ_θ + σ_θ²) = √(σ_m² + σ_m σ_θ + σ_θ²) for a
+    compression (Shigley eq. 7-16 with no shear and no alternation), so the first-cycle yield
+    factor is S_y over it: a compression is the sign for which the module's worst-sign form is
+    the plain von Mises stress (a tension would give √(σ_m² − σ_m σ_θ + σ_θ²), less)."""
+    thrust = -5000.0
     static = static_response(tube, point_load(tube, "shaft", (thrust, 0.0, 0.0), x=L))
     result = metal_strength(tube, static, buckling=False)
-    sigma = thrust / (math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4)
+    sigma = abs(thrust) / (math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4)
     hoop = AL["density"] * OMEGA**2 * ((D_O - WALL) / 2) ** 2
     np.testing.assert_allclose(result.sigma_mean, sigma, rtol=1e-9)
     np.testing.assert_allclose(result.sigma_alternating, 0.0, atol=1e-9 * sigma)
