@@ -26,10 +26,7 @@ ALLOWABLE = 400.0  # K
 
 def _check(max_temperature: float, runaway: bool):
     ev = Evidence(
-        operating_speed=300.0,
-        max_temperature=max_temperature,
-        allowable_temperature=ALLOWABLE,
-        thermal_runaway=runaway,
+        operating_speed=300.0, max_temperature=max_temperature, allowable_temperature=ALLOWABLE, thermal_runaway=runaway
     )
     return temperature(ev, Requirements())
 

@@ -29,7 +29,7 @@ rtol 1e-8 (measured 2.3e-6 in all). About 0.2 s.
 from __future__ import annotations
 
 import numpy as np
-from test_overhung_disk_whirl import EI, I_D, I_P, L, MASS, design_text
+from test_overhung_disk_whirl import EI, I_D, I_P, MASS, L, design_text
 
 from flexshaft.analyses.transient import SpeedProfile, transient_response
 from flexshaft.assembly import build_model
@@ -43,10 +43,7 @@ K11, K12, K22 = 12 * EI / L**3, -6 * EI / L**2, 4 * EI / L
 def steady_r(speed: float, gyroscopic_speed: float) -> complex:
     """r of the 2×2 system above; the gyroscopic tilt stiffness at ``gyroscopic_speed``."""
     A = np.array(
-        [
-            [K11 - MASS * speed**2 + 1j * C * speed, K12],
-            [K12, K22 - I_D * speed**2 + I_P * gyroscopic_speed * speed],
-        ]
+        [[K11 - MASS * speed**2 + 1j * C * speed, K12], [K12, K22 - I_D * speed**2 + I_P * gyroscopic_speed * speed]]
     )
     return complex(np.linalg.solve(A, [U * speed**2, 0.0])[0])
 
@@ -60,7 +57,10 @@ def test_the_run_settles_on_the_steady_gyroscopic_response_through_the_drift():
     wrong = steady_r(top, 2 * start - top)
     assert abs(wrong - exact) > 0.02 * abs(exact)  # the premise: a wrong-signed drift is seen
 
-    damper = f'[[bearings]]\nname = "damper"\nkind = "contact"\nx = {L}\nstiffness = {{}}\ndamping = {{ v = {C}, w = {C} }}\n'
+    damper = (
+        f'[[bearings]]\nname = "damper"\nkind = "contact"\nx = {L}\n'
+        f"stiffness = {{}}\ndamping = {{ v = {C}, w = {C} }}\n"
+    )
     text = design_text(top * 60 / (2 * np.pi)).replace("[[disks]]", damper + "[[disks]]")
     model = build_model(loads_design(text))
     dm = model.dofs

@@ -78,7 +78,8 @@ def test_reference_frequency_is_the_first_mode_more_than_half_shaft():
     phi = np.zeros((dm.size, V.shape[1]))
     phi[free] = V
     shaft = np.zeros(dm.size, dtype=bool)
-    shaft[np.concatenate([dm.shaft(np.arange(dm.n_shaft_nodes), f) for f in ("u", "v", "w", "theta", "beta", "gamma")])] = True
+    nodes = np.arange(dm.n_shaft_nodes)
+    shaft[np.concatenate([dm.shaft(nodes, f) for f in ("u", "v", "w", "theta", "beta", "gamma")])] = True
     Mphi = model.M @ phi
     share = np.einsum("ij,ij->j", phi[shaft], Mphi[shaft]) / np.einsum("ij,ij->j", phi, Mphi)
     assert 0.05 < share[0] < 0.5 and w2[0] > 0  # the premise: a lower mode the shaft shares
