@@ -1,0 +1,23 @@
+"""A speed table's rate at its breakpoints (mutation hunt h33c).
+
+:class:`~flexshaft.analyses.speed_profile.SpeedProfile` documents a table's Ω̇ as
+right-continuous at a breakpoint: the rate of the segment that starts there. The table
+(0, 0) → (2, 100) → (5, 160) → (6, 160) [s, rad/s] has slopes 50, 20 and 0 rad/s² (by hand), so
+at t = 2 s the run is already on the 20 rad/s² ramp and at t = 5 s in its dwell (Ω̇ = 0: the
+imbalance force there is Ω² alone, no −iΩ̇ part); the speed is continuous, 100 and 160 rad/s.
+Exact binary arithmetic: the rates compared exactly, the interpolated speeds to 1e-12.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from flexshaft.analyses.speed_profile import SpeedProfile
+
+
+def test_the_rate_at_a_breakpoint_is_the_next_segments():
+    p = SpeedProfile.table([0.0, 2.0, 5.0, 6.0], [0.0, 100.0, 160.0, 160.0])
+    assert p.acceleration(2.0) == 20.0
+    assert p.acceleration(5.0) == 0.0
+    assert p.acceleration(0.0) == 50.0
+    assert [p.speed(t) for t in (2.0, 5.0)] == pytest.approx([100.0, 160.0], rel=1e-12)
