@@ -96,6 +96,17 @@ def test_each_objective_reads_its_own_check(metrics):
     assert metrics["shaft_mass"] == pytest.approx(7850.0 * math.pi / 4 * (0.05**2 - 0.04**2) * 2.0, rel=1e-12)
 
 
+def test_the_strength_objective_is_the_weaker_of_ply_and_metal():
+    """The docstring's rule, min(ply, metal), with the metal the weaker (1.3 against 1.8) and with
+    no ply check at all (an all-metal driveline: the metal's 1.3 alone)."""
+    model = build_model(loads_design(SMALL))
+    ply = _check("tsai_wu", "ratio", "at least", 1.8, 1.5)
+    metal = _check("metal_strength", "ratio", "at least", 1.3, 1.5, status="fail")
+    for checks in ((ply, metal), (metal,)):
+        assessment = SimpleNamespace(verdict=Verdict(checks), operating_speed=OMEGA, model=model)
+        assert assessment_metrics(assessment)["safety_factor"] == 1.3
+
+
 def test_margins_and_status_codes_of_every_check(metrics):
     """tsai_wu fails by 0.2/2.0; the force passes by 100/1000; coupling_angle is not listed:
     not applicable (−2), margin NaN."""

@@ -78,6 +78,22 @@ def test_strength_keys_are_the_total_result_ply_numbered_from_one(run):
         assert entry["ply_angle_deg"] == LAYUP[entry["ply"] - 1]
 
 
+def test_static_boom_tip_is_the_cantilevers_largest_deflection(run):
+    """``static.boom_tip_v_m``/``_w_m`` [m]: the static displacement of the boom's tip node (its
+    last node, x = L from the root). The tailboom is a cantilever from the fuselage under the
+    3.5 g load factor and the end mass (one sign along it): a cantilever's deflection under
+    loads of one sign grows monotonically from the clamped root (zero slope and deflection
+    there) to the tip, so the tip holds the largest |v| of the boom's nodes and is not zero."""
+    a, data = run
+    dm, qs = a.model.dofs, a.static_displacement
+    v = np.array([qs[dm.boom(i, "v")] for i in range(dm.n_boom_nodes)])
+    w = np.array([qs[dm.boom(i, "w")] for i in range(dm.n_boom_nodes)])
+    assert data["static"]["boom_tip_v_m"] == pytest.approx(v[-1], rel=1e-12)
+    assert data["static"]["boom_tip_w_m"] == pytest.approx(w[-1], rel=1e-12)
+    assert abs(v[-1]) == np.max(np.abs(v)) > 0.0
+    assert np.all(np.diff(np.abs(v)) >= 0.0)  # monotone from root to tip
+
+
 def test_rpm_or_none_converts_rad_s():
     """4800 rpm = 502.6548 rad/s comes back as 4800 rpm; None and NaN as None."""
     assert rpm_or_none(4800.0 * 2.0 * math.pi / 60.0) == pytest.approx(4800.0, rel=1e-12)
