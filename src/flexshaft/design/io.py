@@ -19,7 +19,7 @@ import copy
 import os
 import re
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from importlib import resources
 from typing import Any
 
@@ -300,18 +300,18 @@ def _parse_path(path: str) -> list[str | int] | None:
     return None if expect_key or not parts else parts
 
 
-def value_at_path(data: Any, path: str, missing: Any = None) -> Any:
+def value_at_path(data: Any, path: str | Sequence[str | int], missing: Any = None) -> Any:
     """The value at a design path of a model dump (``a.b[2]."c.d"``, the grammar of
-    :func:`with_overrides`: a quoted key may hold dots), or ``missing`` when the path is
-    malformed or absent from ``data``."""
-    parts = _parse_path(path)
+    :func:`with_overrides`: a quoted key may hold dots; or the path's keys and indices, already
+    split), or ``missing`` when the path is malformed or absent from ``data``."""
+    parts = _parse_path(path) if isinstance(path, str) else list(path)
     if parts is None:
         return missing
     for part in parts:
         if isinstance(part, int):
             if not isinstance(data, list) or part >= len(data):
                 return missing
-        elif not isinstance(data, dict) or part not in data:
+        elif not isinstance(data, Mapping) or part not in data:
             return missing
         data = data[part]
     return data

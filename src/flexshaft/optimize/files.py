@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from flexshaft.design import load_design, loads_design
+from flexshaft.design.io import value_at_path
 from flexshaft.files import atomic_write_text
 from flexshaft.optimize.toml_comments import FileComments, KeyComments, read_comments
 from flexshaft.resolution import REPORT
@@ -88,17 +89,6 @@ def _is_table_list(value: Any) -> bool:
 _MISSING = object()
 
 
-def _lookup(data: Any, path: tuple) -> Any:
-    for part in path:
-        if isinstance(part, int):
-            if not isinstance(data, list) or part >= len(data):
-                return _MISSING
-        elif not isinstance(data, Mapping) or part not in data:
-            return _MISSING
-        data = data[part]
-    return data
-
-
 class _Notes:
     """The base file's comments by path (:mod:`flexshaft.optimize.toml_comments`) and the base
     design's values, to annotate the lines of the file written."""
@@ -125,7 +115,7 @@ class _Notes:
         entry = self._entry(path)
         notes = list(entry.inline) if entry is not None else []
         if value is not _MISSING and self.base is not None and path != ("name",):
-            was = _lookup(self.base, path)
+            was = value_at_path(self.base, path, _MISSING)
             if was is _MISSING or was is None:
                 marker = "optimized: not set in the base design"
             elif was != value:
