@@ -1,0 +1,111 @@
+"""The thesis studies' definitions that no physics test pins: the units of the headline
+numbers, the order of stacked stability-map rows, the sign of the critical ply's angle.
+
+References (derived, no golden number of flexshaft):
+
+* rpm = 60·Ω/(2π) (the definition of the unit): a spin-up peak at Ω = 2π·1800/60 rad/s is
+  reported as 1800 rpm (to 1e-12: one multiplication);
+* :func:`~flexshaft.thesis.whirl.stack_maps` concatenates rows in the order given (its
+  docstring): K_p row k of the stack is row k's onset and margin, hand-built maps below;
+* the critical ply of a (α/−α/−α/α) tube is one of its plies, signed: ±α, and the one the
+  Tsai-Wu check of :func:`~flexshaft.analyses.shaft_strength.shaft_safety_factor` names on the
+  static response (external loads + torque, the study's definition, study 1 runs without
+  imbalance). At α = 60° on the baseline it is the −60° ply, so a lost sign shows.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+
+from flexshaft.analyses.response import static_response
+from flexshaft.analyses.shaft_strength import shaft_safety_factor
+from flexshaft.assembly.loads import external_static_load, torque_load
+from flexshaft.design import baseline_design, with_overrides
+from flexshaft.sweep.study import Point
+from flexshaft.thesis.design_studies import DesignStudies, headline
+from flexshaft.thesis.ply_angle import critical_ply_outputs, one_angle_layup
+from flexshaft.thesis.whirl import StabilityMap, stack_maps
+
+
+def _rad_s(rpm: float) -> float:
+    return 2.0 * math.pi * rpm / 60.0
+
+
+def test_headline_peak_speeds_are_in_rpm():
+    """The headline's peak speeds: Ω [rad/s] shown as 60 Ω/(2π) rpm, to 1e-12."""
+    r = DesignStudies(
+        design_name="x",
+        resolution="coarse",
+        operating_speed=_rad_s(6000.0),
+        peak_speed_before=_rad_s(1800.0),
+        peak_speed_after=_rad_s(2400.0),
+    )
+    out = headline(r)
+    assert out["peak_speed_before_rpm"] == pytest.approx(1800.0, rel=1e-12)
+    assert out["peak_speed_after_rpm"] == pytest.approx(2400.0, rel=1e-12)
+
+
+def _row(kp: float, onset, margin) -> StabilityMap:
+    return StabilityMap(np.array([kp]), np.array([0.0, 1e3]), np.array([onset]), np.array([margin]), 900.0)
+
+
+def test_stacked_maps_keep_each_rows_gains_with_its_values():
+    """Rows stacked in the given order: K_p row k holds row k's own onset and margin (exact)."""
+    rows = [_row(3e5, [100.0, np.nan], [0.01, 0.02]), _row(2e6, [300.0, 400.0], [0.03, 0.04])]
+    out = stack_maps(rows)
+    np.testing.assert_array_equal(out.kp, [3e5, 2e6])
+    np.testing.assert_array_equal(out.onset_speed, [[100.0, np.nan], [300.0, 400.0]])
+    np.testing.assert_array_equal(out.margin_at_operating, [[0.01, 0.02], [0.03, 0.04]])
+    assert out.max_speed == 900.0
+
+
+def test_critical_ply_angle_is_the_signed_ply_the_tsai_wu_check_names():
+    """Study 1 at α = 60° (baseline, coarse 18/12 mesh, no imbalance): the critical ply is ±60°,
+    and exactly the one (with its sign) Tsai-Wu names on the static response; here −60°."""
+    design = with_overrides(
+        baseline_design(),
+        {"mesh.shaft_elements": 18, "mesh.boom_elements": 12, "loads.eccentricity": 0.0, **one_angle_layup(60.0)},
+    )
+    point = Point(0, {}, {}, design)
+    out = critical_ply_outputs(point)
+    model = point.model
+    r = shaft_safety_factor(model, static_response(model, external_static_load(model) + torque_load(model)))
+    assert abs(out["critical_ply_angle"]) == pytest.approx(60.0, abs=1e-9)
+    assert out["critical_ply_angle"] == pytest.approx(r.ply_angle_deg, abs=1e-9)
+    assert out["critical_ply_angle"] < 0.0
+    assert out["sigma1"] == pytest.approx(r.stresses[0], rel=1e-12)
+    assert out["sigma2"] == pytest.approx(r.stresses[1], rel=1e-12)
+
+
+@pytest.mark.parametrize("resolution", ["report", "full"])
+def test_wall_grids_are_in_metres_around_the_thesis_best_wall(resolution):
+    """Study 3's walls [m] (docs/studies.md: the report's nine walls from 1 mm; the module's
+    docstring: 23 at full resolution) span 0.5-6 mm and hold the thesis's best wall, 3 mm
+    (THESIS["best_wall_m"]): a mm→m slip puts them 10x off."""
+    from flexshaft.thesis.design_studies import STUDY_GRIDS, THESIS
+
+    walls = np.asarray(STUDY_GRIDS[resolution]["walls"])
+    assert walls.size == {"report": 9, "full": 23}[resolution]
+    assert 0.5e-3 - 1e-12 <= walls.min() and walls.max() == pytest.approx(6e-3, rel=1e-12)
+    assert np.isclose(walls, THESIS["best_wall_m"], rtol=1e-12).any()
+
+
+def test_surface_gains_are_those_of_thesis_figures_3_13_and_3_14():
+    """The two frequency-response surfaces are the thesis's figures 3.13 (K_p 2e6, K_d 1170) and
+    3.14 (K_p 3e5, K_d 1170), as docs/thesis-reproduction.md's claims 10 and 11 quote them
+    (the second, lower K_p damps the resonance the first excites): parsed from that table."""
+    from pathlib import Path
+
+    from flexshaft.thesis.spinup_maps import SURFACE_GAINS
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "thesis-reproduction.md").read_text()
+    quoted = {}
+    for fig in ("3.13", "3.14"):
+        (row,) = [line for line in text.splitlines() if f"(fig. {fig})" in line and line.startswith("|")]
+        kp, kd = re.search(r"K_p ([0-9.e+]+), K_d ([0-9.]+)", row).groups()
+        quoted[fig] = (float(kp), float(kd))
+    assert tuple(SURFACE_GAINS) == (quoted["3.13"], quoted["3.14"])
