@@ -109,3 +109,38 @@ def test_surface_gains_are_those_of_thesis_figures_3_13_and_3_14():
         kp, kd = re.search(r"K_p ([0-9.e+]+), K_d ([0-9.]+)", row).groups()
         quoted[fig] = (float(kp), float(kd))
     assert tuple(SURFACE_GAINS) == (quoted["3.13"], quoted["3.14"])
+
+
+def test_tuned_gains_are_the_smallest_refined_peak_not_the_smallest_sampled(monkeypatch):
+    """Thesis §3.3's criterion on the refined peaks: on the hand-made map of
+    tests/test_spinup_tuning_selection.py (stubs; within the gap the sampled peaks are 2, 3,
+    4 ... mm), the best sampled pair (1e5 N/m, 100 N s/m) hides a resonance between samples,
+    refined to 6 mm, while (1e5, 1000) refines to 3.5 mm: the tuned pair is (1e5, 1000), 3.5 mm
+    (every other pair's refined peak is its sampled one, at least 4 mm)."""
+    from types import SimpleNamespace
+
+    from test_spinup_tuning_selection import GAP, KD, KP, ORBIT, PEAK, _curves
+
+    from flexshaft.assembly.model import Controller
+    from flexshaft.thesis import spinup_maps
+
+    rec = SimpleNamespace(
+        n_actuators=2, speeds=np.array([100.0]), shaft_x=np.array([0.0]), actuator_names=("amb_1", "amb_2")
+    )
+    smap = SimpleNamespace(
+        kp=KP, kd=KD, shaft_peak=PEAK, actuator_displacement_peak=ORBIT, to_arrays=lambda: SimpleNamespace(attrs={})
+    )
+    refined = {2e-3: 6e-3, 3e-3: 3.5e-3}
+
+    def refine(model, law, speeds, curve):
+        return refined.get(float(curve.max()), float(curve.max())), 100.0
+
+    monkeypatch.setattr(spinup_maps, "spinup_speeds", lambda model, n: None)
+    monkeypatch.setattr(spinup_maps, "clustered_receptance", lambda model, laws, speeds: rec)
+    monkeypatch.setattr(spinup_maps, "spinup_map", lambda model, kp, kd, receptance: smap)
+    monkeypatch.setattr(spinup_maps, "spinup_curves", _curves)
+    monkeypatch.setattr(spinup_maps, "_refined_peak", refine)
+    model = SimpleNamespace(actuators=[SimpleNamespace(controller=Controller.pd(1e6, 1000.0))] * 2)
+    out = spinup_maps.spinup_studies(model, {"map_speeds": 10, "map_kp": KP, "map_kd": KD}, GAP)
+    assert out["gains_after"] == (1e5, 1000.0)
+    assert out["peak_after"] == 3.5e-3
