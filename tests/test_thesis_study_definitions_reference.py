@@ -144,3 +144,23 @@ def test_tuned_gains_are_the_smallest_refined_peak_not_the_smallest_sampled(monk
     out = spinup_maps.spinup_studies(model, {"map_speeds": 10, "map_kp": KP, "map_kd": KD}, GAP)
     assert out["gains_after"] == (1e5, 1000.0)
     assert out["peak_after"] == 3.5e-3
+
+
+def test_ply_angle_study_flag_selects_the_thesis_load_set(monkeypatch):
+    """``ply_angle_study(added_loads=False)`` evaluates the thesis's load set (no centrifugal
+    hoop stress): doubling speed and power (same torque T = P/Ω, same external loads) leaves its
+    safety factor unchanged (to 1e-12, the same solve); flexshaft's added hoop stress (∝ Ω²)
+    would move it by 14 % on this design (tests/test_thesis_study_outputs_reference.py). The
+    study's point function is taken from the Study handed to the sweep engine (not run: CPU)."""
+    from flexshaft.thesis import ply_angle
+
+    monkeypatch.setattr(ply_angle, "run_sweep", lambda study, **run: study)
+    study = ply_angle.ply_angle_study([45.0], added_loads=False)
+    design = with_overrides(
+        baseline_design(), {"mesh.shaft_elements": 18, "mesh.boom_elements": 12, "loads.eccentricity": 0.0}
+    )
+    faster = with_overrides(
+        design, {"operating.speed_rpm": 2 * design.operating.speed_rpm, "operating.power": 2 * design.operating.power}
+    )
+    slow, fast = (study.evaluate(Point(0, {}, {}, d))["safety_factor"] for d in (design, faster))
+    assert fast == pytest.approx(slow, rel=1e-12)
