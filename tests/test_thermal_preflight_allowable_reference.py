@@ -1,18 +1,20 @@
 """The thermal preflight checks the matrix law at both ends of the self-heating's range.
 
 :func:`flexshaft.thermal.preflight.thermal_guards` must find a ply the matrix temperature law
-makes invalid anywhere the self-heating visits, from the shaft's air to the allowable
-temperature (its module docstring). The law (docs/model.md, ``[thermal] matrix_*``) scales E_T
-by f = exp(-(T - T_ref)/theta_E). A plane-stress orthotropic ply is positive definite only while
-its normal compliance [[1/E_L, -nu_LT/E_L], [-nu_LT/E_L, 1/E_T]] has a positive determinant,
-(1 - nu_LT^2 E_T/E_L)/(E_L E_T) > 0, i.e. nu_LT^2 E_T / E_L < 1 (derived here).
+makes invalid at either end of the self-heating's range, the shaft's air and the allowable
+temperature, in either order (its module docstring: an allowable below the air, which the
+self-heating itself never reaches, contradicts the material data and is checked too). The law
+(docs/model.md, ``[thermal] matrix_*``) scales E_T by f = exp(-(T - T_ref)/theta_E). A
+plane-stress orthotropic ply is positive definite only while its normal compliance [[1/E_L,
+-nu_LT/E_L], [-nu_LT/E_L, 1/E_T]] has a positive determinant, (1 - nu_LT^2 E_T/E_L)/(E_L E_T) >
+0, i.e. nu_LT^2 E_T / E_L < 1 (derived here).
 
-Worked by hand for the baseline lamina t700_adiprene (E_L = 115 GPa, E_T = 0.1 GPa,
-nu_LT = 0.35), with T_ref = 0 degC and theta_E = 5 K: at an allowable temperature of -50 degC,
-f = e^10 = 22026 and nu_LT^2 E_T f / E_L = 0.1225 * 0.1e9 * 22026 / 115e9 = 2.35 > 1: invalid.
-At the shaft's air (the boom's hover skin, above the 20 degC ambient set here, so f < 1) the
-ply is softer than at T_ref and valid (the limit would need air below -45.7 degC). The law is
-therefore invalid only at the allowable end: a check at the air alone misses it.
+Worked by hand for the baseline lamina t700_adiprene (E_L = 115 GPa, E_T = 0.1 GPa, nu_LT =
+0.35), with T_ref = 0 degC and theta_E = 5 K: at an allowable temperature of -50 degC, f = e^10
+= 22026 and nu_LT^2 E_T f / E_L = 0.1225 * 0.1e9 * 22026 / 115e9 = 2.35 > 1: invalid. At the
+shaft's air (the boom's hover skin, above the 20 degC ambient set here, so f < 1) the ply is
+softer than at T_ref and valid (the limit would need air below -45.7 degC). The law is therefore
+invalid only at the allowable end, here below the air: a check at the air alone misses it.
 """
 
 from __future__ import annotations

@@ -9,9 +9,13 @@ first, cheaply, and returns the problems, each naming the fields that set it:
   400 °C, have no such skin temperature);
 * the shaft's air (the boom's hover skin temperature, or the ambient without a tailboom),
   where the spinning shaft's convection is evaluated;
-* the matrix temperature law over the temperatures the self-heating visits (the shaft's air to
-  the allowable temperature): the ply must stay valid (a reference of 400 °C with θ_E = 5 K
-  multiplied E_T by 1e31 at the shaft's air and made the ply indefinite).
+* the matrix temperature law over the self-heating's range, from the shaft's air to the
+  allowable temperature, checked at both ends in either order: the ply must stay valid there
+  (a reference of 400 °C with θ_E = 5 K multiplied E_T by 1e31 at the shaft's air and made the
+  ply indefinite). The law is monotone (θ_E ≥ 5 K), so the ends bound the range. An allowable
+  below the air, which the self-heating never reaches (it stops at once as a runaway), is
+  checked too: a law that makes the ply invalid at the matrix's own allowable contradicts the
+  material data, whatever the air.
 
 With :func:`flexshaft.analyses.preflight.model_guards` (the model's build checks and the solves
 every command starts from) it is what ``flexshaft check`` needs so that a design it accepts
@@ -90,8 +94,8 @@ def thermal_guards(design: Any) -> list[Problem]:
                     Problem(
                         "thermal.matrix_reference_temperature_c",
                         f"the matrix temperature law makes material {name!r} an invalid ply at "
-                        f"{temperature:.6g} K, a temperature the self-heating visits (from the shaft's air to "
-                        f"the allowable temperature): {error}; thermal.matrix_reference_temperature_c and "
+                        f"{temperature:.6g} K, an end of the self-heating's range (the shaft's air and the allowable "
+                        f"temperature): {error}; thermal.matrix_reference_temperature_c and "
                         "thermal.matrix_modulus_decay set it",
                     )
                 )
