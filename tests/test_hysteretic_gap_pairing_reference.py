@@ -20,8 +20,9 @@ the spin near 2479 rad/s by 3.2e-7 Ω (ω₊ < ω₋: a gap), 300 times the sync
 
 Asserted, for :func:`consistent_roots` and :func:`damped_modes` (whose Newton polish must not
 carry the on-line root off the line onto s₋, the wrong side): exactly one eigenvalue of the mode
-(within |s₊ − s₋| of their midpoint; the next eigenvalue is 350 rad/s away), with Im s = Ω to the band (1e-9) and Re s between Re s₊ and Re s₋
-(with the QZ-against-QR tolerance 1e-7 |s| of tests/test_hysteretic_gap_continuation_reference.py).
+(within |s₊ − s₋| of their midpoint; the next eigenvalue is 350 rad/s away), with Im s = Ω to
+the band (1e-9) and Re s between Re s₊ and Re s₋ (with the QZ-against-QR tolerance 1e-7 |s| of
+tests/test_hysteretic_gap_continuation_reference.py).
 CPU: one 8-mode reduction and a few 16 × 16 solves, about 0.1 s.
 """
 

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 import pytest
-from rotors import K_SHAFT, L, M_DISK, jeffcott_text
+from rotors import K_SHAFT, M_DISK, L, jeffcott_text
 
 from flexshaft.analyses.transient import SpeedProfile, transient_response
 from flexshaft.assembly import build_model
