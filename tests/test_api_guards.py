@@ -279,7 +279,46 @@ def test_an_ambient_beyond_the_air_properties_is_refused_by_the_schema():
             variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
     for value in (176.0, -73.0):  # the limits themselves are evaluated
         design = variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
-        assert thermal_guards(design) == []
+        assert _thermal_table_problems(design) == []
+    # at 176 °C the envelope's hot-soak point parks the shaft at 130 °C, beyond the lamina's
+    # table (-60 to 120 °C): `run` refuses it there, and so does `check` (the envelope's problems)
+    hot = variant("baseline", lambda d: d["thermal"].update(ambient_temperature_c=176.0))
+    assert [p.path for p in thermal_guards(hot)] == ["envelope.points[2]"]
+    assert "'hot_soak_start'" in thermal_guards(hot)[0].message
+
+
+def test_check_refuses_what_an_envelope_point_refuses_in_one_line():
+    """Was: a matrix law with T_ref = 0 °C and θ_E = 5 K passed ``check``, then ``run`` refused the
+    design at its hot-soak point in a pydantic message of several lines with a web link. At the
+    point's material temperature T_m the law gives E_T = G_LT = 0.1 GPa · exp(−T_m/5 K) (the
+    baseline lamina's 0.1 GPa at 0 °C), 1.9 Pa at the parked shaft's 88.8 °C: below the schema's
+    1 kPa. ``check`` now reports each envelope point the verdict would refuse, naming the point,
+    the fields, the values they would take and the keys that set them, on one line."""
+    import math
+
+    from flexshaft.thermal.envelope import point_conditions
+
+    design = variant(
+        "baseline",
+        lambda d: without_tables(d)["thermal"].update(matrix_reference_temperature_c=0.0, matrix_modulus_decay=5.0),
+    )
+    problems = thermal_guards(design)
+    assert [p.path for p in problems] == ["envelope.points[2]"]
+    message = problems[0].message
+    assert "'hot_soak_start'" in message and "'t700_adiprene'" in message
+    assert "\n" not in message and "pydantic" not in message
+    # T_m: the parked tailboom's skin, from the thermal model (at the design's own law, valid)
+    no_envelope = variant("baseline", lambda d: d.update(envelope=None))
+    parked = point_conditions(no_envelope, design.envelope.points[2]).material_temperature_c
+    assert 80.0 < parked < 100.0
+    e_t = 0.1e9 * math.exp(-parked / 5.0)
+    assert f"E_T would be {e_t:.6g}" in message and f"G_LT would be {e_t:.6g}" in message
+    assert "greater than or equal to 1000" in message and "matrix_modulus_decay" in message
+
+
+def _thermal_table_problems(design) -> list:
+    """The problems of the ``[thermal]`` table itself (not of the envelope's points)."""
+    return [p for p in thermal_guards(design) if not p.path.startswith("envelope.")]
 
 
 @pytest.mark.parametrize(
@@ -296,7 +335,7 @@ def test_thermal_combinations_the_correlations_cannot_evaluate_are_reported(chan
     the shaft's air, beyond a valid ply. Each is a problem naming the fields (was a ValueError
     from inside the analysis)."""
     design = variant("baseline", lambda d: without_tables(d)["thermal"].update(change))
-    problems = thermal_guards(design)
+    problems = _thermal_table_problems(design)
     assert len(problems) == 1 and field in problems[0].message
 
 

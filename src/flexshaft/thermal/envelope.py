@@ -37,15 +37,26 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from pydantic import ValidationError
+
+from flexshaft.design import DesignError, Problem
 from flexshaft.design.envelope import DEFAULT_ENVELOPE_POINTS, EnvelopePoint, envelope_point
 from flexshaft.design.materials import Lamina
+from flexshaft.design.points import design_at_point
 from flexshaft.design.schema import Design
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.thermal.options import matrix_law_from, thermal_options
 from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
 from flexshaft.units import celsius_to_kelvin, kelvin_to_celsius
 
-__all__ = ["SKY_EXPONENT", "PointConditions", "envelope_conditions", "point_conditions", "point_thermal"]
+__all__ = [
+    "SKY_EXPONENT",
+    "PointConditions",
+    "envelope_conditions",
+    "point_conditions",
+    "point_design",
+    "point_thermal",
+]
 
 #: Exponent of Swinbank's (1963) clear-sky temperature, T_sky = 0.0552 T_amb^1.5 [K].
 SKY_EXPONENT = 1.5
@@ -163,7 +174,7 @@ def point_conditions(design: Design, point: EnvelopePoint | str) -> PointConditi
         try:
             at_T = matrix_law_from(design.thermal, material).material(material, T_m)
         except ValueError as exc:
-            raise ValueError(f"envelope point {point.name!r}, lamina {name!r}: {exc}") from None
+            raise ValueError(f"envelope point {point.name!r}, lamina {name!r}: {_refusal(exc, T_m)}") from None
         if at_T is not material:
             materials[name] = at_T
     if materials:
@@ -177,3 +188,52 @@ def envelope_conditions(design: Design) -> tuple[PointConditions, ...]:
     ``[envelope]`` (which the verdict judges at its own operating point only)."""
     points = design.envelope.points if design.envelope is not None else DEFAULT_ENVELOPE_POINTS
     return tuple(point_conditions(design, point) for point in points)
+
+
+def point_design(design: Design, index: int) -> tuple[PointConditions, Design]:
+    """The conditions and the design at point ``index`` of ``design.envelope`` (the module's
+    recipe), for the verdict and for ``flexshaft check`` alike.
+
+    Raises
+    ------
+    DesignError
+        Naming the point (``envelope.points[i]``) when its material temperature lies outside a
+        lamina's table, the matrix law takes a lamina out of the schema's bounds there, or the
+        design at the point breaks the schema (e.g. power without speed).
+    """
+    assert design.envelope is not None
+    point = design.envelope.points[index]
+    try:
+        conditions = point_conditions(design, point)
+    except ValueError as exc:
+        raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
+    try:
+        at_point = design_at_point(design, point, conditions)
+    except DesignError as exc:
+        raise DesignError(
+            [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
+            "<envelope>",
+        ) from None
+    return conditions, at_point
+
+
+def _refusal(exc: ValueError, temperature: float) -> str:
+    """One line for a lamina refused at ``temperature`` [K]: a table's message as it is (it names
+    the temperature); for the matrix law's lamina out of the schema's bounds (a pydantic
+    ValidationError, whose text spans lines and links a web page), the temperature, each field
+    with the value it would take and its bound, and the keys that set them."""
+    if not isinstance(exc, ValidationError):
+        return str(exc)
+    fields = [f"at {kelvin_to_celsius(temperature):.4g} °C"]
+    for error in exc.errors():
+        key = ".".join(str(part) for part in error.get("loc", ())) or "value"
+        value = error.get("input")
+        shown = f"{value:.6g}" if isinstance(value, float) else repr(value)
+        fields.append(f"{key} would be {shown} ({str(error.get('msg', '')).lower()})")
+    return (
+        fields[0]
+        + " "
+        + "; ".join(fields[1:])
+        + "; the [thermal] matrix law sets it there (matrix_reference_temperature_c, matrix_modulus_decay, "
+        "matrix_loss_growth), or a [materials.<name>.temperature_table]"
+    )

@@ -34,11 +34,10 @@ from concurrent.futures import Executor
 from dataclasses import dataclass
 
 from flexshaft.assembly.size import check_problem_size
-from flexshaft.design import Design, DesignError, Problem
-from flexshaft.design.points import design_at_point
+from flexshaft.design import Design
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.resolution import REPORT, Resolution
-from flexshaft.thermal.envelope import PointConditions, point_conditions
+from flexshaft.thermal.envelope import PointConditions, point_design
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
@@ -204,21 +203,10 @@ def assess_point(
 
 def _point_design(design: Design, index: int) -> tuple[str, PointConditions, Design]:
     """The name, conditions and design of the envelope's point ``index`` (DesignError naming
-    the point when its temperature or its design is refused)."""
+    the point when its temperature or its design is refused:
+    :func:`~flexshaft.thermal.envelope.point_design`)."""
     assert design.envelope is not None
-    point = design.envelope.points[index]
-    try:
-        conditions = point_conditions(design, point)
-    except ValueError as exc:  # a material temperature outside a lamina's table
-        raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
-    try:
-        at_point = design_at_point(design, point, conditions)
-    except DesignError as exc:  # the design at the point breaks the schema (e.g. power without speed)
-        raise DesignError(
-            [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
-            "<envelope>",
-        ) from None
-    return point.name, conditions, at_point
+    return (design.envelope.points[index].name, *point_design(design, index))
 
 
 def _analyse_and_judge(
