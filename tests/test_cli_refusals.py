@@ -159,6 +159,39 @@ def test_an_unreachable_scheduler_is_refused_within_seconds(command, tmp_path: P
 
 
 # ------------------------------------------------------------------------------------------------
+# --jobs
+
+
+JOBS_COMMANDS = [*DASK_COMMANDS, ["study", "all"]]
+
+
+@pytest.mark.parametrize("command", JOBS_COMMANDS, ids=lambda c: " ".join(c[:2]))
+def test_more_jobs_than_the_limit_are_refused_before_any_process_starts(command, tmp_path: Path) -> None:
+    """Was: `study wall --jobs 100000` forked 4,400 worker processes (load average 146 on two
+    cores) before it was stopped: the pool starts every worker at once. The limit is
+    flexshaft.cli.options.MAX_JOBS, checked by the option parser before anything else."""
+    from flexshaft.cli.options import MAX_JOBS
+
+    out = tmp_path / "o"
+    refused(runner.invoke(app, [*command, "--jobs", str(MAX_JOBS + 1), "--out", str(out)]), "--jobs", str(MAX_JOBS))
+    assert not out.exists()
+
+
+def test_the_work_bound_counts_no_more_workers_than_cpus() -> None:
+    """Was: `optimize --budget 100000 --jobs 64` on two CPUs was estimated at 173 h / 64 = 2.7 h
+    per worker and accepted (it would have run about 86 h): processes beyond the CPUs do not
+    shorten a run, so the bound divides by at most the CPUs this process may use."""
+    import os
+
+    from flexshaft.cli.bounds import workers_of
+    from flexshaft.cli.options import MAX_JOBS
+
+    cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    assert workers_of(MAX_JOBS, None) == min(MAX_JOBS, cpus)
+    assert workers_of(1, None) == 1
+
+
+# ------------------------------------------------------------------------------------------------
 # study, montecarlo, optimize
 
 

@@ -249,9 +249,12 @@ def check_optimize(design: Any, budget: int, fidelity: str, workers: int) -> Non
 
 
 def workers_of(jobs: int, client: Any) -> int:
-    """Workers of a command: ``--jobs``, or the threads of the Dask cluster."""
+    """Workers of a command: ``--jobs`` up to this machine's CPUs (more processes than CPUs
+    do not shorten the run), or the threads of the Dask cluster."""
     if client is None:
-        return max(int(jobs), 1)
+        from flexshaft.parallel.pool import available_cpus
+
+        return max(min(int(jobs), available_cpus()), 1)
     try:
         return max(1, sum(client.nthreads().values()))
     except Exception:  # noqa: BLE001 - any client-like object without the call

@@ -20,7 +20,7 @@ from typing import NoReturn
 import typer
 
 from flexshaft.cli.common import dask_client, fail, guarded, plain, print_json
-from flexshaft.cli.options import JsonOption
+from flexshaft.cli.options import JOBS_HELP, MAX_JOBS, JsonOption
 
 
 class Fidelity(str, Enum):
@@ -144,7 +144,7 @@ def optimize(
         "--force",
         help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design.",
     ),
-    jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
+    jobs: int = typer.Option(1, "--jobs", "-j", min=1, max=MAX_JOBS, help=JOBS_HELP),
     dask: str | None = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
     var: list[str] | None = typer.Option(
         None,
