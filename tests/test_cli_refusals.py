@@ -195,6 +195,21 @@ def test_the_work_bound_counts_no_more_workers_than_cpus() -> None:
 # study, montecarlo, optimize
 
 
+def test_a_population_larger_than_the_budget_is_refused_before_anything(tmp_path: Path) -> None:
+    """Was: `optimize --budget 4 --pop-size 100000000` sampled an initial population growing by
+    about 170 MB/s (3.2 GB after 20 s) before evaluating anything: the first generation alone
+    is the population, so it cannot exceed the budget (at most --budget evaluations)."""
+    from flexshaft.optimize import OptimizeError, optimize
+    from flexshaft.optimize.reference import zdt1_problem
+
+    out = tmp_path / "o"
+    result = runner.invoke(app, ["optimize", "--budget", "4", "--pop-size", "5", "--out", str(out)])
+    refused(result, "--pop-size", "--budget (4)", "got 5")
+    assert not out.exists()
+    with pytest.raises(OptimizeError, match=r"pop_size: must be at most the budget \(4 evaluations\).*got 5"):
+        optimize(zdt1_problem(), 4, pop_size=5)
+
+
 def test_a_spinup_map_without_an_active_bearing_is_refused(tmp_path: Path) -> None:
     """Was: `study spinup-map` on a driveline with no active bearing: exit 4 ("nothing to tune")."""
     from flexshaft.design import embedded_text

@@ -172,7 +172,7 @@ def optimize(
     fidelity: Fidelity = typer.Option(
         Fidelity.verdict, "--fidelity", help="verdict (the run's resolution) or screening (coarser, for ranking)."
     ),
-    pop_size: int | None = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
+    pop_size: int | None = typer.Option(None, "--pop-size", min=2, help="NSGA-II population, at most --budget."),
     seed: int = typer.Option(1, "--seed", min=0, help="Seed of the search (>= 0)."),
     reference: list[str] | None = typer.Option(
         None, "--reference", help="Design marked on the figure: embedded name or file."
@@ -213,6 +213,11 @@ def optimize(
     for key in ignore_check or []:
         if key not in CHECK_KEYS:
             _fail(f"--ignore-check: unknown check {key!r} (allowed: {', '.join(CHECK_KEYS)})")
+    if pop_size is not None and pop_size > budget:  # before the run folder (flexshaft.optimize.nsga.optimize)
+        _fail(
+            f"--pop-size: at most --budget ({budget:,}): a larger population cannot finish its first generation "
+            f"(got {pop_size:,})"
+        )
     if ply_thickness_mm is not None and not (math.isfinite(ply_thickness_mm) and ply_thickness_mm > 0):
         _fail(f"--ply-thickness-mm: must be a positive thickness (got {ply_thickness_mm})")
     try:
