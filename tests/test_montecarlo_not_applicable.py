@@ -1,4 +1,4 @@
-"""A Monte-Carlo output that cannot apply to the design is said to be so, never a bare NaN.
+"""An output that cannot apply to the design is said to be so, never a bare NaN.
 
 Was: ``flexshaft montecarlo`` on the embedded current driveline (no active bearing, aluminium
 tubes) wrote samples.nc with ``actuator_*_max`` and ``safety_factor`` NaN in every sample and
@@ -17,6 +17,7 @@ from rotors import jeffcott_text
 
 from flexshaft.design import loads_design
 from flexshaft.montecarlo.steady import run_montecarlo
+from flexshaft.sweep import Study, Variable, run_sweep
 
 
 def test_outputs_that_cannot_apply_carry_their_reason_and_the_rest_are_finite() -> None:
@@ -31,3 +32,24 @@ def test_outputs_that_cannot_apply_carry_their_reason_and_the_rest_are_finite() 
         else:
             assert np.isfinite(values).all() and "comment" not in variable.attrs, name
     assert np.all(ds["shaft_peak"].values > 0)
+
+
+def _half_defined(point) -> dict:
+    """``x`` where a > 2 (the closed form: NaN at a = 1 and 2), ``y`` everywhere."""
+    a = point.axes["a"]
+    return {"x": a if a > 2 else float("nan"), "y": 2.0 * a}
+
+
+def test_a_sweep_output_with_nan_points_counts_them_in_its_comment(tmp_path) -> None:
+    """Was: `flexshaft study wall` on the current (aluminium) driveline wrote results.nc with
+    its three Tsai-Wu factors and the spin-up peak NaN at every wall and nothing saying why.
+    Every sweep output with NaN points now says how many and what they stand for."""
+    import xarray as xr
+
+    study = Study("half", [Variable("a", [1.0, 2.0, 3.0, 4.0])], ["x", "y"], _half_defined)
+    ds = run_sweep(study, tmp_path / "run", progress=False)
+    on_disk = xr.load_dataset(tmp_path / "run" / "results.nc")
+    for result in (ds, on_disk):
+        assert result["x"].attrs["comment"].startswith("NaN at 2 of 4 points: the output does not apply")
+        assert "comment" not in result["y"].attrs
+        np.testing.assert_array_equal(result["y"].values, [2.0, 4.0, 6.0, 8.0])
