@@ -210,6 +210,15 @@ def test_a_population_larger_than_the_budget_is_refused_before_anything(tmp_path
         optimize(zdt1_problem(), 4, pop_size=5)
 
 
+def test_explore_refuses_a_file_as_its_out_folder_before_serving(tmp_path: Path) -> None:
+    """Was: `explore -o notes.txt` (an existing file) started the server; the folder of the
+    full runs was checked only when a run was started from the page."""
+    notes = tmp_path / "notes.txt"
+    notes.write_text("mine", encoding="utf-8")
+    refused(runner.invoke(app, ["explore", "--out", str(notes)]), "--out", "is a file, not a folder")
+    assert notes.read_text(encoding="utf-8") == "mine"
+
+
 def test_a_spinup_map_without_an_active_bearing_is_refused(tmp_path: Path) -> None:
     """Was: `study spinup-map` on a driveline with no active bearing: exit 4 ("nothing to tune")."""
     from flexshaft.design import embedded_text
