@@ -210,6 +210,28 @@ def test_a_population_larger_than_the_budget_is_refused_before_anything(tmp_path
         optimize(zdt1_problem(), 4, pop_size=5)
 
 
+def test_the_verification_of_the_written_designs_is_bounded(tmp_path: Path) -> None:
+    """Was: `optimize --designs N` (no upper bound) verified up to N Pareto designs with a full
+    run each, in one go and not resumable, outside every bound: --designs 100 on the tuned
+    design is about 13 min. The rule of the commands that run in one go (docs/limits.md
+    section 7): refused above 10 minutes, estimated, before anything; --no-verify runs."""
+    import math
+
+    from flexshaft.assembly.size import problem_size
+    from flexshaft.cli.bounds import MAX_SECONDS, check_verification
+    from flexshaft.resolution import REPORT
+
+    tuned = embedded_design("tuned")
+    each = problem_size(tuned, "assess", REPORT).time_seconds
+    most = math.floor(MAX_SECONDS / each)
+    check_verification(tuned, most, 10**6, 1)  # no refusal at the limit
+    check_verification(tuned, 10**6, most, 1)  # at most one written design per evaluation
+    out = tmp_path / "o"
+    args = ["optimize", "--budget", str(10 * most), "--designs", str(most + 1), "--out", str(out)]
+    refused(runner.invoke(app, args), "--designs", f"up to {most + 1} written designs", "--no-verify")
+    assert not out.exists()
+
+
 def test_explore_refuses_a_file_as_its_out_folder_before_serving(tmp_path: Path) -> None:
     """Was: `explore -o notes.txt` (an existing file) started the server; the folder of the
     full runs was checked only when a run was started from the page."""

@@ -33,6 +33,7 @@ __all__ = [
     "check_spinup_map",
     "check_stability",
     "check_sweep",
+    "check_verification",
     "eigen_basis_range",
 ]
 
@@ -245,6 +246,29 @@ def check_optimize(design: Any, budget: int, fidelity: str, workers: int) -> Non
         "lower --budget, use --fidelity screening, or more workers (--jobs, --dask)",
         MAX_RESUMABLE_SECONDS,
         f" on {workers} worker(s)",
+    )
+
+
+def check_verification(design: Any, designs: int, budget: int, workers: int) -> None:
+    """``flexshaft optimize --verify``: a full-run assessment (at the report's resolution) of
+    each written design, at most ``--designs`` and at most one per evaluation, in one go (not
+    resumable: :data:`MAX_SECONDS`)."""
+    import warnings
+
+    from flexshaft.assembly.size import ProblemSizeWarning, problem_size
+    from flexshaft.resolution import REPORT
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ProblemSizeWarning)
+        size = problem_size(design, "assess", REPORT)
+    count = min(designs, budget)
+    _refuse_if_large(
+        f"--verify of up to {count:,} written designs (--designs {designs:,}; a full run of about "
+        f"{_duration(size.time_seconds)} each)",
+        count * size.time_seconds / max(workers, 1),
+        size.memory_bytes,
+        "lower --designs, or pass --no-verify and run the design files you want with flexshaft run",
+        per_worker=f" on {workers} worker(s)",
     )
 
 

@@ -238,10 +238,12 @@ def optimize(
             name=f"flexshaft optimize: {base.name}",
             base_text=_base_text(design, DEFAULT_DESIGN),
         )
-        from flexshaft.cli.bounds import check_optimize, workers_of
+        from flexshaft.cli.bounds import check_optimize, check_verification, workers_of
         from flexshaft.optimize.nsga import optimize as run_optimization
 
         check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client))
+        if verify:
+            check_verification(base, designs, budget, workers_of(jobs, client))
         name = str(design) if embedded and design is not None else DEFAULT_DESIGN
         out = prepare_output_folder(
             default_output_folder(None if embedded else design, "optimize", name if design else "flexshaft")
