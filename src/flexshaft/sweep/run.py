@@ -178,7 +178,11 @@ def to_arrays(study: Study, values: np.ndarray) -> LabelledArrays:
         attrs["kind"] = "design variable" if v.is_design else "axis"
         coords[v.name] = (v.name, np.asarray(v.values), attrs)
     data = {
-        o.name: (dims, grid[..., i], {"units": o.units, "long_name": o.long_name or o.name, **_nan_comment(grid[..., i])})
+        o.name: (
+            dims,
+            grid[..., i],
+            {"units": o.units, "long_name": o.long_name or o.name, **_nan_comment(grid[..., i])},
+        )
         for i, o in enumerate(study.outputs)
     }
     attrs = {
