@@ -241,6 +241,19 @@ def test_explore_refuses_a_file_as_its_out_folder_before_serving(tmp_path: Path)
     assert notes.read_text(encoding="utf-8") == "mine"
 
 
+@pytest.mark.parametrize("study", ["ply-angle", "two-angle", "buckling"])
+def test_a_laminate_study_of_a_metal_shaft_is_refused_before_its_folder(study, tmp_path: Path) -> None:
+    """Was: `study ply-angle|two-angle|buckling` on the current (aluminium) driveline made the
+    output folder, then failed ("layup must be omitted for the isotropic material" / "not one
+    laminated tube"), leaving an empty folder marked incomplete. The studies vary a laminate's
+    ply angles or its laminated-shell wall: refused before the folder, as `study gain` without
+    an active bearing."""
+    design = variant(tmp_path, "current", lambda data: None)
+    out = tmp_path / "o"
+    refused(runner.invoke(app, ["study", study, str(design), "--out", str(out)]), f"study {study}", "isotropic")
+    assert not out.exists()
+
+
 def test_a_spinup_map_without_an_active_bearing_is_refused(tmp_path: Path) -> None:
     """Was: `study spinup-map` on a driveline with no active bearing: exit 4 ("nothing to tune")."""
     from flexshaft.design import embedded_text
