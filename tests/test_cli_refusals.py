@@ -159,7 +159,99 @@ def test_an_unreachable_scheduler_is_refused_within_seconds(command, tmp_path: P
 
 
 # ------------------------------------------------------------------------------------------------
+# --jobs
+
+
+JOBS_COMMANDS = [*DASK_COMMANDS, ["study", "all"]]
+
+
+@pytest.mark.parametrize("command", JOBS_COMMANDS, ids=lambda c: " ".join(c[:2]))
+def test_more_jobs_than_the_limit_are_refused_before_any_process_starts(command, tmp_path: Path) -> None:
+    """Was: `study wall --jobs 100000` forked 4,400 worker processes (load average 146 on two
+    cores) before it was stopped: the pool starts every worker at once. The limit is
+    flexshaft.cli.options.MAX_JOBS, checked by the option parser before anything else."""
+    from flexshaft.cli.options import MAX_JOBS
+
+    out = tmp_path / "o"
+    refused(runner.invoke(app, [*command, "--jobs", str(MAX_JOBS + 1), "--out", str(out)]), "--jobs", str(MAX_JOBS))
+    assert not out.exists()
+
+
+def test_the_work_bound_counts_no_more_workers_than_cpus() -> None:
+    """Was: `optimize --budget 100000 --jobs 64` on two CPUs was estimated at 173 h / 64 = 2.7 h
+    per worker and accepted (it would have run about 86 h): processes beyond the CPUs do not
+    shorten a run, so the bound divides by at most the CPUs this process may use."""
+    import os
+
+    from flexshaft.cli.bounds import workers_of
+    from flexshaft.cli.options import MAX_JOBS
+
+    cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    assert workers_of(MAX_JOBS, None) == min(MAX_JOBS, cpus)
+    assert workers_of(1, None) == 1
+
+
+# ------------------------------------------------------------------------------------------------
 # study, montecarlo, optimize
+
+
+def test_a_population_larger_than_the_budget_is_refused_before_anything(tmp_path: Path) -> None:
+    """Was: `optimize --budget 4 --pop-size 100000000` sampled an initial population growing by
+    about 170 MB/s (3.2 GB after 20 s) before evaluating anything: the first generation alone
+    is the population, so it cannot exceed the budget (at most --budget evaluations)."""
+    from flexshaft.optimize import OptimizeError, optimize
+    from flexshaft.optimize.reference import zdt1_problem
+
+    out = tmp_path / "o"
+    result = runner.invoke(app, ["optimize", "--budget", "4", "--pop-size", "5", "--out", str(out)])
+    refused(result, "--pop-size", "--budget (4)", "got 5")
+    assert not out.exists()
+    with pytest.raises(OptimizeError, match=r"pop_size: must be at most the budget \(4 evaluations\).*got 5"):
+        optimize(zdt1_problem(), 4, pop_size=5)
+
+
+def test_the_verification_of_the_written_designs_is_bounded(tmp_path: Path) -> None:
+    """Was: `optimize --designs N` (no upper bound) verified up to N Pareto designs with a full
+    run each, in one go and not resumable, outside every bound: --designs 100 on the tuned
+    design is about 13 min. The rule of the commands that run in one go (docs/limits.md
+    section 7): refused above 10 minutes, estimated, before anything; --no-verify runs."""
+    import math
+
+    from flexshaft.assembly.size import problem_size
+    from flexshaft.cli.bounds import MAX_SECONDS, check_verification
+    from flexshaft.resolution import REPORT
+
+    tuned = embedded_design("tuned")
+    each = problem_size(tuned, "assess", REPORT).time_seconds
+    most = math.floor(MAX_SECONDS / each)
+    check_verification(tuned, most, 10**6, 1)  # no refusal at the limit
+    check_verification(tuned, 10**6, most, 1)  # at most one written design per evaluation
+    out = tmp_path / "o"
+    args = ["optimize", "--budget", str(10 * most), "--designs", str(most + 1), "--out", str(out)]
+    refused(runner.invoke(app, args), "--designs", f"up to {most + 1} written designs", "--no-verify")
+    assert not out.exists()
+
+
+def test_explore_refuses_a_file_as_its_out_folder_before_serving(tmp_path: Path) -> None:
+    """Was: `explore -o notes.txt` (an existing file) started the server; the folder of the
+    full runs was checked only when a run was started from the page."""
+    notes = tmp_path / "notes.txt"
+    notes.write_text("mine", encoding="utf-8")
+    refused(runner.invoke(app, ["explore", "--out", str(notes)]), "--out", "is a file, not a folder")
+    assert notes.read_text(encoding="utf-8") == "mine"
+
+
+@pytest.mark.parametrize("study", ["ply-angle", "two-angle", "buckling"])
+def test_a_laminate_study_of_a_metal_shaft_is_refused_before_its_folder(study, tmp_path: Path) -> None:
+    """Was: `study ply-angle|two-angle|buckling` on the current (aluminium) driveline made the
+    output folder, then failed ("layup must be omitted for the isotropic material" / "not one
+    laminated tube"), leaving an empty folder marked incomplete. The studies vary a laminate's
+    ply angles or its laminated-shell wall: refused before the folder, as `study gain` without
+    an active bearing."""
+    design = variant(tmp_path, "current", lambda data: None)
+    out = tmp_path / "o"
+    refused(runner.invoke(app, ["study", study, str(design), "--out", str(out)]), f"study {study}", "isotropic")
+    assert not out.exists()
 
 
 def test_a_spinup_map_without_an_active_bearing_is_refused(tmp_path: Path) -> None:

@@ -6,8 +6,9 @@ Reference: README.md, "Output folders (``--out``)":
     design; ``my-runup/``, ``my-study-wall/``, ... for the other commands). Edit ``my.toml`` and
     run it again: its folder is replaced, no ``--force`` needed (the files the earlier run wrote
     are removed first, your own files in the folder are kept, but not symbolic links: every
-    link inside the folder is removed, never followed, before anything is written, so that no
-    write can land outside the folder). [...] a non-empty folder that
+    link inside the folder, and inside the subfolders flexshaft wrote, is removed, never
+    followed, before anything is written, so that no write can land outside the folder; your
+    own subfolders are not entered). [...] a non-empty folder that
     flexshaft did not write, or one it wrote for another command or another design (another
     file with other values; the message names both designs by title, file and fingerprint) is
     refused (exit 2) unless ``--force`` is given. [...] a symbolic link inside the folder is
@@ -203,6 +204,29 @@ def test_links_in_the_folder_are_removed_never_followed(files: dict, tmp_path: P
     assert _run(out, MINE, a) == 0
     assert not (out / "results.json").is_symlink() and not (out / "studies").exists()
     assert victim_file.read_text() == "keep" and _names(victim_folder) == ["thesis.docx"]
+
+
+def test_force_into_a_project_folder_keeps_the_links_of_its_subfolders(files: dict, tmp_path: Path) -> None:
+    """Was: `flexshaft runup --out . --force` in a project folder deleted every symbolic link of
+    the whole tree, a virtual environment's `.venv/bin/python` included. README: "every link
+    inside the folder, and inside the subfolders flexshaft wrote, is removed ...; your own
+    subfolders are not entered" (writes are atomic renames, which replace a file link)."""
+    out, a = files["out"], files["a"]
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep")
+    (out / ".venv" / "bin").mkdir(parents=True)
+    (out / ".venv" / "bin" / "python").symlink_to(victim)
+    (out / "top-link").symlink_to(victim)
+    assert _run(out, MINE, a, force=True, writes=["results.json"]) == 0
+    assert (out / ".venv" / "bin" / "python").is_symlink() and not (out / "top-link").is_symlink()
+    # a subfolder an earlier run wrote (listed in the marker) is flexshaft's: its links go
+    (out / "studies").mkdir()
+    marker = _marker(out)
+    (out / MARKER).write_text(json.dumps({**marker, "entries": [*marker["entries"], "studies"]}), encoding="utf-8")
+    (out / "studies" / "planted").symlink_to(victim)
+    assert _run(out, MINE, a) == 0
+    assert not (out / "studies" / "planted").is_symlink() and victim.read_text() == "keep"
+    assert (out / ".venv" / "bin" / "python").is_symlink()
 
 
 def test_a_linked_marker_does_not_make_a_folder_flexshafts(files: dict, tmp_path: Path) -> None:

@@ -51,7 +51,7 @@ import numpy as np
 from flexshaft.assembly.drive import drive_extra_dofs
 from flexshaft.assembly.mesh import design_mesh, merge_stations, merge_tolerance
 from flexshaft.design import DesignError, Problem
-from flexshaft.resolution import REPORT, Resolution
+from flexshaft.resolution import FINE, REPORT, Resolution
 
 __all__ = [
     "HARD_MEMORY_BYTES",
@@ -389,6 +389,18 @@ def _what_to_change(size: ProblemSize, design) -> list[tuple[str, str]]:
     return advice
 
 
+def _finer_than_fine(resolution: Resolution) -> tuple[str, str] | None:
+    """(``"resolution"``, advice) when a grid of ``resolution`` is finer than :data:`FINE`'s:
+    a refusal then names the resolution (``spinup_speeds = 10**9`` was refused as "use fewer
+    shaft elements" on the 36-element tuned design)."""
+    names = ("spinup_speeds", "whirl_speeds", "campbell_speeds")
+    finer = [(n, getattr(resolution, n), getattr(FINE, n)) for n in names if getattr(resolution, n) > getattr(FINE, n)]
+    if not finer:
+        return None
+    grids = ", ".join(f"{n} = {v:,} (fs.FINE: {f:,})" for n, v, f in finer)
+    return ("resolution", f"{grids}: use coarser grids (the presets fs.SCREENING to fs.FINE)")
+
+
 def check_problem_size(
     design,
     analysis: Literal["model", "assess", "run"] = "run",
@@ -438,7 +450,11 @@ def check_problem_size(
             f"takes about {_duration(size.time_seconds)} (mostly {size.largest_time}; allowed: {_duration(hard_time)})"
         )
     if over:
-        for path, advice in _what_to_change(size, design):
+        changes = _what_to_change(size, design)
+        finer = _finer_than_fine(resolution) if analysis != "model" else None
+        if finer is not None:  # a custom resolution's grids, not the mesh (fs.assess(design, replace(SCREENING, ...)))
+            changes = [finer, *(c for c in changes if c[0] != "mesh.shaft_elements" or size.dofs > SOFT_DOFS)]
+        for path, advice in changes:
             problems.append(
                 Problem(
                     path,

@@ -33,6 +33,7 @@ __all__ = [
     "check_spinup_map",
     "check_stability",
     "check_sweep",
+    "check_verification",
     "eigen_basis_range",
 ]
 
@@ -248,10 +249,36 @@ def check_optimize(design: Any, budget: int, fidelity: str, workers: int) -> Non
     )
 
 
+def check_verification(design: Any, designs: int, budget: int, workers: int) -> None:
+    """``flexshaft optimize --verify``: a full-run assessment (at the report's resolution) of
+    each written design, at most ``--designs`` and at most one per evaluation, in one go (not
+    resumable: :data:`MAX_SECONDS`)."""
+    import warnings
+
+    from flexshaft.assembly.size import ProblemSizeWarning, problem_size
+    from flexshaft.resolution import REPORT
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ProblemSizeWarning)
+        size = problem_size(design, "assess", REPORT)
+    count = min(designs, budget)
+    _refuse_if_large(
+        f"--verify of up to {count:,} written designs (--designs {designs:,}; a full run of about "
+        f"{_duration(size.time_seconds)} each)",
+        count * size.time_seconds / max(workers, 1),
+        size.memory_bytes,
+        "lower --designs, or pass --no-verify and run the design files you want with flexshaft run",
+        per_worker=f" on {workers} worker(s)",
+    )
+
+
 def workers_of(jobs: int, client: Any) -> int:
-    """Workers of a command: ``--jobs``, or the threads of the Dask cluster."""
+    """Workers of a command: ``--jobs`` up to this machine's CPUs (more processes than CPUs
+    do not shorten the run), or the threads of the Dask cluster."""
     if client is None:
-        return max(int(jobs), 1)
+        from flexshaft.parallel.pool import available_cpus
+
+        return max(min(int(jobs), available_cpus()), 1)
     try:
         return max(1, sum(client.nthreads().values()))
     except Exception:  # noqa: BLE001 - any client-like object without the call

@@ -64,6 +64,8 @@ def explore(
 ) -> None:
     """Explore a design in the browser: change the driveline, see the verdict move (screening
     grids, about 0.3 s per update). Prints the page's address; Ctrl-C stops."""
+    if out.exists() and not out.is_dir():  # the full runs write below it: refused before the server starts
+        fail(f"--out: {out} is a file, not a folder; give a folder path (it is created if missing)")
     missing = missing_packages()
     if missing:
         fail(

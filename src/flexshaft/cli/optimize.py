@@ -20,7 +20,7 @@ from typing import NoReturn
 import typer
 
 from flexshaft.cli.common import dask_client, fail, guarded, plain, print_json
-from flexshaft.cli.options import JsonOption
+from flexshaft.cli.options import JOBS_HELP, MAX_JOBS, JsonOption
 
 
 class Fidelity(str, Enum):
@@ -144,7 +144,7 @@ def optimize(
         "--force",
         help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design.",
     ),
-    jobs: int = typer.Option(1, "--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each)."),
+    jobs: int = typer.Option(1, "--jobs", "-j", min=1, max=MAX_JOBS, help=JOBS_HELP),
     dask: str | None = typer.Option(None, "--dask", help="Dask scheduler address, e.g. tcp://host:8786."),
     var: list[str] | None = typer.Option(
         None,
@@ -172,7 +172,7 @@ def optimize(
     fidelity: Fidelity = typer.Option(
         Fidelity.verdict, "--fidelity", help="verdict (the run's resolution) or screening (coarser, for ranking)."
     ),
-    pop_size: int | None = typer.Option(None, "--pop-size", min=2, help="NSGA-II population."),
+    pop_size: int | None = typer.Option(None, "--pop-size", min=2, help="NSGA-II population, at most --budget."),
     seed: int = typer.Option(1, "--seed", min=0, help="Seed of the search (>= 0)."),
     reference: list[str] | None = typer.Option(
         None, "--reference", help="Design marked on the figure: embedded name or file."
@@ -213,6 +213,11 @@ def optimize(
     for key in ignore_check or []:
         if key not in CHECK_KEYS:
             _fail(f"--ignore-check: unknown check {key!r} (allowed: {', '.join(CHECK_KEYS)})")
+    if pop_size is not None and pop_size > budget:  # before the run folder (flexshaft.optimize.nsga.optimize)
+        _fail(
+            f"--pop-size: at most --budget ({budget:,}): a larger population cannot finish its first generation "
+            f"(got {pop_size:,})"
+        )
     if ply_thickness_mm is not None and not (math.isfinite(ply_thickness_mm) and ply_thickness_mm > 0):
         _fail(f"--ply-thickness-mm: must be a positive thickness (got {ply_thickness_mm})")
     try:
@@ -233,10 +238,12 @@ def optimize(
             name=f"flexshaft optimize: {base.name}",
             base_text=_base_text(design, DEFAULT_DESIGN),
         )
-        from flexshaft.cli.bounds import check_optimize, workers_of
+        from flexshaft.cli.bounds import check_optimize, check_verification, workers_of
         from flexshaft.optimize.nsga import optimize as run_optimization
 
         check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client))
+        if verify:
+            check_verification(base, designs, budget, workers_of(jobs, client))
         name = str(design) if embedded and design is not None else DEFAULT_DESIGN
         out = prepare_output_folder(
             default_output_folder(None if embedded else design, "optimize", name if design else "flexshaft")

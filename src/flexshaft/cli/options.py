@@ -20,7 +20,9 @@ __all__ = [
     "DaskOption",
     "DesignArgument",
     "ForceOption",
+    "JOBS_HELP",
     "JobsOption",
+    "MAX_JOBS",
     "JsonOption",
     "LossModel",
     "NModesOption",
@@ -96,7 +98,14 @@ ForceOption = Annotated[
         "--force", help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design."
     ),
 ]
-JobsOption = Annotated[int, typer.Option("--jobs", "-j", min=1, help="Local worker processes (one BLAS thread each).")]
+#: Most local worker processes a command starts: each is a forked process, all started at once
+#: (``--jobs 100000`` forked 4,400 processes before it was stopped).
+MAX_JOBS = 64
+JOBS_HELP = (
+    f"Local worker processes (one BLAS thread each), at most {MAX_JOBS}; the work bound counts at "
+    "most this machine's CPUs."
+)
+JobsOption = Annotated[int, typer.Option("--jobs", "-j", min=1, max=MAX_JOBS, help=JOBS_HELP)]
 DaskOption = Annotated[
     str | None, typer.Option("--dask", help="Dask scheduler address, e.g. tcp://host:8786 (needs flexshaft[dask]).")
 ]

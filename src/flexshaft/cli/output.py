@@ -10,8 +10,9 @@
   (its resolved path): a rerun of an edited design file replaces its own earlier results (the
   files that run wrote are removed first, so none of the old design's results linger); the
   message of a refusal names both designs by title, file and fingerprint;
-* removes every symbolic link inside the folder (never following it: the file it points to is
-  untouched), and removes the temporary files a crash left;
+* removes every symbolic link inside the folder and inside the subfolders an earlier run wrote
+  (never following it: the file it points to is untouched; the user's own subfolders are not
+  entered), and removes the temporary files a crash left;
 * writes the marker file :data:`MARKER` (``.flexshaft-output.json``: command, design name,
   fingerprint and source, flexshaft version, no timestamp) with ``"complete": false``.
 
@@ -112,14 +113,22 @@ def _describe(name: Any, source: Any, fingerprint: Any) -> str:
     return f"{plain(name)!r} ({where}, fingerprint {str(fingerprint)[:12]})"
 
 
-def _remove_links(folder: Path) -> None:
-    """Remove every symbolic link below ``folder`` (links are never followed: the file or
-    folder a link points to is untouched)."""
-    for root, dirs, files in os.walk(folder, followlinks=False):
-        for name in dirs + files:
-            path = Path(root) / name
-            if path.is_symlink():
-                path.unlink()
+def _remove_links(folder: Path, own: list[str]) -> None:
+    """Remove every symbolic link among the entries of ``folder`` and below its subfolders
+    ``own`` (those an earlier run of flexshaft wrote); links are never followed: the file or
+    folder a link points to is untouched. The user's own subfolders (``--force`` into a project
+    folder) are not entered: their links are not flexshaft's to remove (``runup --out .
+    --force`` used to delete every link of the tree, a virtual environment's ``bin/python``
+    included)."""
+    for name in os.listdir(folder):
+        path = folder / name
+        if path.is_symlink():
+            path.unlink()
+        elif name in own and path.is_dir():
+            for root, dirs, files in os.walk(path, followlinks=False):
+                for inner in dirs + files:
+                    if (Path(root) / inner).is_symlink():
+                        (Path(root) / inner).unlink()
 
 
 def _remove_entries(folder: Path, names: list[str]) -> None:
@@ -205,7 +214,7 @@ def prepare_output_folder(
                     replace = previous  # results of another version of the design (same file, or --force)
             else:  # a marker of an earlier flexshaft, without its list: nothing is removed
                 previous = [n for n in entries if n != MARKER]
-        _remove_links(folder)
+        _remove_links(folder, previous)
         if marker is not None:
             for name in _entries(folder, option):
                 if name.startswith(_TEMPORARY):  # left by a crash during an atomic write

@@ -144,7 +144,16 @@ def ply_angle(
 
     angles = np.arange(step, 90.0, step)
     client = dask_client(dask)  # checked and connected before anything is prepared
-    loaded, folder = _prepare(design, out, "ply-angle", force, points=angles.size, jobs=jobs, client=client)
+    loaded, folder = _prepare(
+        design,
+        out,
+        "ply-angle",
+        force,
+        points=angles.size,
+        jobs=jobs,
+        client=client,
+        check=_check_laminated("ply-angle", segments=False),
+    )
     ds = _sweep(ply_angle_study, loaded, folder, jobs, client, as_json, angles=angles)
     best = float(ds["safety_factor"].idxmax("alpha").item())
     headline = f"best α = ±{best:g}°: safety factor {float(ds['safety_factor'].max().item()):.3g}"
@@ -184,7 +193,16 @@ def two_angle(
 
     angles = np.arange(0.0, 90.0 + 1e-9, step)
     client = dask_client(dask)  # checked and connected before anything is prepared
-    loaded, folder = _prepare(design, out, "two-angle", force, points=angles.size**2, jobs=jobs, client=client)
+    loaded, folder = _prepare(
+        design,
+        out,
+        "two-angle",
+        force,
+        points=angles.size**2,
+        jobs=jobs,
+        client=client,
+        check=_check_laminated("two-angle", segments=False),
+    )
     ds = _sweep(two_angle_study, loaded, folder, jobs, client, as_json, alphas=angles, betas=angles)
     sf = ds["safety_factor"]
     i = best_pair(sf.values, ds.alpha.values, ds.beta.values)
@@ -301,7 +319,9 @@ def buckling(
     from flexshaft.units import m_to_mm
 
     client = dask_client(dask)  # checked and connected before anything is prepared
-    loaded, folder = _prepare(design, out, "buckling", force, points=10, jobs=jobs, client=client)
+    loaded, folder = _prepare(
+        design, out, "buckling", force, points=10, jobs=jobs, client=client, check=_check_laminated("buckling")
+    )
     ds = _sweep(buckling_study, loaded, folder, jobs, client, as_json)
     sf = ds["buckling_safety_factor"].values
     thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
@@ -374,6 +394,28 @@ def spinup_map(
     print_line(console, f"data: {folder / 'results.nc'}")
     for paths in figures.values():
         print_line(console, f"figure: {paths['png']}")
+
+
+def _check_laminated(name: str, *, segments: bool = True):
+    """The ply-angle studies vary the layup of a laminated shaft, the buckling study its wall in
+    the laminated-shell model (one laminated tube): refused before the output folder is made
+    (they used to fail after it, leaving an empty folder marked incomplete)."""
+
+    def check(design) -> None:
+        from flexshaft.cli.common import fail, plain
+
+        kind = design.materials[design.shaft.material].kind
+        if kind != "lamina" or (segments and design.segmented):
+            reason = (
+                f"its material {plain(design.shaft.material)!r} is {kind}" if kind != "lamina" else "it is segmented"
+            )
+            varied = "the wall of the laminated-shell buckling model" if name == "buckling" else "its ply angles"
+            fail(
+                f"study {name}: the shaft of {plain(design.name)!r} is not one laminated tube ({reason}); "
+                f"the study varies {varied}"
+            )
+
+    return check
 
 
 def _check_gain(design) -> None:

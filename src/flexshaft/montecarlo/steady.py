@@ -282,13 +282,14 @@ def run_montecarlo(
     for name, value in (("gap", gap), ("force_limit", force_limit)):
         if value is not None and not (np.isfinite(value) and value > 0):
             raise ValueError(f"{name} must be > 0, got {value!r}")
+    model = build_model(design)
     limits = {
         name: replace(
             lim,
             gap=lim.gap if gap is None else float(gap),
             force_capacity=lim.force_capacity if force_limit is None else float(force_limit),
         )
-        for name, lim in actuator_limits(build_model(design)).items()
+        for name, lim in actuator_limits(model).items()
     }
     sampler = MonteCarloSampler(int(seed), distribution, placement, int(n_speeds), strength=bool(strength))
     study = montecarlo_study(design, n_samples, sampler)
@@ -303,4 +304,21 @@ def run_montecarlo(
             "placement": placement,
         }
     )
+    _mark_not_applicable(ds, has_actuators=bool(limits), laminated=bool(strength) and model.shaft.laminate is not None)
     return MonteCarloResult(ds, limits)
+
+
+def _mark_not_applicable(ds: Dataset, *, has_actuators: bool, laminated: bool) -> None:
+    """Say why an output is NaN in every sample (in its ``comment``, as CF has it): the
+    actuator outputs of a design without an active bearing and the Tsai-Wu safety factor of a
+    shaft that is not laminated (or not asked for) are not applicable; samples.nc used to
+    carry them as bare NaN columns."""
+    reasons = {}
+    if not has_actuators:
+        reasons.update(
+            {name: "the design has no active bearing" for name in ds.data_vars if str(name).startswith("actuator_")}
+        )
+    if not laminated and "safety_factor" in ds.data_vars:
+        reasons["safety_factor"] = "the shaft is not laminated (Tsai-Wu), or strength was not asked for"
+    for name, why in reasons.items():
+        ds[name].attrs["comment"] = f"not applicable, NaN in every sample: {why}"

@@ -172,6 +172,13 @@ def optimize(
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise OptimizeError(f"seed: must be a whole number >= 0 (got {seed!r})")
     n_var = len(problem.variables)
+    if pop_size is not None and not isinstance(pop_size, bool) and int(pop_size) > budget:
+        # its first generation alone would not fit: pop_size = 1e8 with a budget of 4 sampled an
+        # initial population growing by 170 MB/s before evaluating anything
+        raise OptimizeError(
+            f"pop_size: must be at most the budget ({budget:,} evaluations): a larger population cannot "
+            f"finish its first generation (got {int(pop_size):,})"
+        )
     if pop_size is None:
         # a resumed or extended run keeps the population it started with (the default depends on the budget)
         pop_size = _stored_pop_size(Path(run_dir)) if run_dir is not None and method == "nsga2" else None

@@ -178,7 +178,11 @@ def to_arrays(study: Study, values: np.ndarray) -> LabelledArrays:
         attrs["kind"] = "design variable" if v.is_design else "axis"
         coords[v.name] = (v.name, np.asarray(v.values), attrs)
     data = {
-        o.name: (dims, grid[..., i], {"units": o.units, "long_name": o.long_name or o.name})
+        o.name: (
+            dims,
+            grid[..., i],
+            {"units": o.units, "long_name": o.long_name or o.name, **_nan_comment(grid[..., i])},
+        )
         for i, o in enumerate(study.outputs)
     }
     attrs = {
@@ -189,6 +193,22 @@ def to_arrays(study: Study, values: np.ndarray) -> LabelledArrays:
         "study_fingerprint": study.fingerprint(),
     }
     return LabelledArrays(data, coords, attrs)
+
+
+def _nan_comment(values: np.ndarray) -> dict[str, str]:
+    """A ``comment`` (CF) on an output with NaN points saying what the NaN stands for: a
+    study's output that does not apply to the design (the Tsai-Wu factors of `study wall` on a
+    metal shaft, its spin-up peak without an active bearing) used to be a bare NaN column."""
+    missing = int(np.count_nonzero(np.isnan(values)))
+    if not missing:
+        return {}
+    return {
+        "comment": (
+            f"NaN at {missing} of {values.size} points: the output does not apply to the design there "
+            "(e.g. a Tsai-Wu factor of a metal shaft, an actuator output without an active bearing) "
+            "or its evaluation failed"
+        )
+    }
 
 
 def run_sweep(

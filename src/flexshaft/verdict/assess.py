@@ -33,6 +33,7 @@ from collections.abc import Callable
 from concurrent.futures import Executor
 from dataclasses import dataclass
 
+from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.assembly.size import check_problem_size
 from flexshaft.design import Design
 from flexshaft.parallel.threads import single_blas_thread
@@ -158,7 +159,10 @@ def assess(
         :func:`~flexshaft.assembly.size.check_problem_size`; a ProblemSizeWarning when it is
         large), or an envelope point puts the shaft outside a lamina's temperature table or the
         design at a point breaks the schema.
+    RefusedInputError
+        (a ValueError) When ``design`` is not a Design or ``resolution`` not a Resolution.
     """
+    _check_arguments(design, resolution)
     check_problem_size(design, "assess", resolution, stacklevel=3)  # refuses what cannot finish; warns when large
     if design.envelope is None:
         analyses = analyse_point(design, resolution, executor=executor, progress=progress)
@@ -195,10 +199,26 @@ def assess_point(
         As :func:`assess` for that point; ValueError when the design has no envelope or no such
         point.
     """
+    _check_arguments(design, resolution)
     if design.envelope is None or not 0 <= index < len(design.envelope.points):
         count = 0 if design.envelope is None else len(design.envelope.points)
         raise ValueError(f"index: the design's envelope has {count} points, got {index!r}")
     return _analyse_and_judge(*_point_design(design, index), resolution, executor, progress)
+
+
+def _check_arguments(design: object, resolution: object) -> None:
+    """Refuse anything but a validated Design and a Resolution (a preset's name such as
+    "screening" used to fail deep inside with an AttributeError)."""
+    if not isinstance(design, Design):
+        raise RefusedInputError(
+            f"design must be a validated flexshaft.design.Design (got {type(design).__name__}); "
+            "use load_design, loads_design or design_from_dict"
+        )
+    if not isinstance(resolution, Resolution):
+        raise RefusedInputError(
+            f"resolution must be a flexshaft.Resolution (got {resolution!r}); allowed: "
+            "fs.SCREENING, fs.VERDICT, fs.REPORT, fs.FINE or dataclasses.replace(one of them, ...)"
+        )
 
 
 def _point_design(design: Design, index: int) -> tuple[str, PointConditions, Design]:
