@@ -43,6 +43,7 @@ from flexshaft.design import DesignError, design_from_dict, embedded_design, loa
 from flexshaft.design.schema import MAX_SPEED_RPM
 from flexshaft.thermal.preflight import thermal_guards
 from flexshaft.units import rpm_to_rad_s
+from flexshaft.verdict.assess import envelope_problems
 
 DENSITY = 1e-6  # the massless-tube idealisation: the tube is 3.5e-11 of the disk's mass
 M_E = effective_mass(DENSITY)
@@ -279,12 +280,12 @@ def test_an_ambient_beyond_the_air_properties_is_refused_by_the_schema():
             variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
     for value in (176.0, -73.0):  # the limits themselves are evaluated
         design = variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
-        assert _thermal_table_problems(design) == []
+        assert thermal_guards(design) == []
     # at 176 °C the envelope's hot-soak point parks the shaft at 130 °C, beyond the lamina's
     # table (-60 to 120 °C): `run` refuses it there, and so does `check` (the envelope's problems)
     hot = variant("baseline", lambda d: d["thermal"].update(ambient_temperature_c=176.0))
-    assert [p.path for p in thermal_guards(hot)] == ["envelope.points[2]"]
-    assert "'hot_soak_start'" in thermal_guards(hot)[0].message
+    assert [p.path for p in envelope_problems(hot)] == ["envelope.points[2]"]
+    assert "'hot_soak_start'" in envelope_problems(hot)[0].message
 
 
 def test_check_refuses_what_an_envelope_point_refuses_in_one_line():
@@ -302,7 +303,8 @@ def test_check_refuses_what_an_envelope_point_refuses_in_one_line():
         "baseline",
         lambda d: without_tables(d)["thermal"].update(matrix_reference_temperature_c=0.0, matrix_modulus_decay=5.0),
     )
-    problems = thermal_guards(design)
+    assert thermal_guards(design) == []  # valid from the shaft's air to the allowable 100 °C
+    problems = envelope_problems(design)
     assert [p.path for p in problems] == ["envelope.points[2]"]
     message = problems[0].message
     assert "'hot_soak_start'" in message and "'t700_adiprene'" in message
@@ -314,11 +316,6 @@ def test_check_refuses_what_an_envelope_point_refuses_in_one_line():
     e_t = 0.1e9 * math.exp(-parked / 5.0)
     assert f"E_T would be {e_t:.6g}" in message and f"G_LT would be {e_t:.6g}" in message
     assert "greater than or equal to 1000" in message and "matrix_modulus_decay" in message
-
-
-def _thermal_table_problems(design) -> list:
-    """The problems of the ``[thermal]`` table itself (not of the envelope's points)."""
-    return [p for p in thermal_guards(design) if not p.path.startswith("envelope.")]
 
 
 @pytest.mark.parametrize(
@@ -335,7 +332,7 @@ def test_thermal_combinations_the_correlations_cannot_evaluate_are_reported(chan
     the shaft's air, beyond a valid ply. Each is a problem naming the fields (was a ValueError
     from inside the analysis)."""
     design = variant("baseline", lambda d: without_tables(d)["thermal"].update(change))
-    problems = _thermal_table_problems(design)
+    problems = thermal_guards(design)
     assert len(problems) == 1 and field in problems[0].message
 
 

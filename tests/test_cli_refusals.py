@@ -448,3 +448,28 @@ def test_flexshafts_own_warnings_print_as_one_plain_line() -> None:
     assert ours == "warning: near a resonance\\x1b[2J\n"  # plain: control characters escaped
     assert "/x/lib.py:7" in theirs and "DeprecationWarning" in theirs
     assert "/x/" in warnings.formatwarning("w", ResonanceWarning, "/x/a.py", 1)  # restored after the command
+
+
+# ------------------------------------------------------------------------------------------------
+# check: what the verdict refuses at an envelope point
+
+
+def test_check_refuses_a_design_run_refuses_at_an_envelope_point(tmp_path: Path) -> None:
+    """Was: ``check`` printed ok for a matrix law (T_ref = 0 °C, θ_E = 5 K, the laws without the
+    lamina's table) that takes E_T below the schema's 1 kPa at the hot-soak point, and ``run``
+    then refused it there (tests/test_api_guards.py works the numbers). Both now refuse it with
+    the point's name, exit 2."""
+
+    def law(data: dict) -> None:
+        for material in data["materials"].values():
+            material.pop("temperature_table", None)
+        data["thermal"].update(matrix_reference_temperature_c=0.0, matrix_modulus_decay=5.0)
+
+    path = variant(tmp_path, "baseline", lambda d: law(coarse(d)))
+    refused(runner.invoke(app, ["check", str(path)]), "envelope.points[2]", "'hot_soak_start'", "E_T would be")
+    out = tmp_path / "r"
+    refused(runner.invoke(app, ["run", str(path), "--studies", "none", "-o", str(out)]), "'hot_soak_start'")
+    assert not out.exists()  # refused before its folder is made
+    out = tmp_path / "c"
+    refused(runner.invoke(app, ["compare", str(path), "-o", str(out)]), "'hot_soak_start'")
+    assert not out.exists()

@@ -472,8 +472,9 @@ def load_design_argument(path: Path | None, default: str | None = None) -> Loade
 def refused_by_analyses(loaded: LoadedDesign) -> None:
     """Raise the :class:`~flexshaft.design.DesignError` of what the analyses refuse in a
     schema-valid design (:func:`flexshaft.analyses.preflight.model_guards`, then
-    :func:`flexshaft.thermal.preflight.thermal_guards`), each problem naming its fields; return
-    when every analysis can run. About 0.2 s on the baseline."""
+    :func:`flexshaft.thermal.preflight.thermal_guards`, then what the verdict refuses at the
+    envelope's points, :func:`flexshaft.verdict.assess.envelope_problems`), each problem naming
+    its fields; return when every analysis can run. About 0.2 s on the baseline."""
     import warnings
 
     from flexshaft.analyses.preflight import model_guards
@@ -486,8 +487,23 @@ def refused_by_analyses(loaded: LoadedDesign) -> None:
             from flexshaft.thermal.preflight import thermal_guards
 
             problems = thermal_guards(loaded.design)
+        if not problems:
+            from flexshaft.verdict.assess import envelope_problems
+
+            problems = envelope_problems(loaded.design)
     if problems:
         raise DesignError(problems, loaded.source)
+
+
+def refuse_envelope_points(design: Any, source: str) -> None:
+    """Raise the :class:`~flexshaft.design.DesignError` of the envelope points the verdict would
+    refuse (:func:`flexshaft.verdict.assess.envelope_problems`, a few ms a point), before a
+    command that judges the design makes its output folder."""
+    from flexshaft.design import DesignError
+    from flexshaft.verdict.assess import envelope_problems
+
+    if problems := envelope_problems(design):
+        raise DesignError(problems, source)
 
 
 def design_fingerprint(design: Any) -> str:

@@ -9,7 +9,7 @@ from typing import Annotated, Any
 
 import typer
 
-from flexshaft.cli.common import guarded, load_design_argument, print_json
+from flexshaft.cli.common import guarded, load_design_argument, print_json, refuse_envelope_points
 from flexshaft.cli.options import ForceOption, JsonOption
 from flexshaft.cli.output import marker_source, prepare_output_folder
 from flexshaft.cli.progress import StageProgress
@@ -99,6 +99,7 @@ def compare(
 
     for each in loaded:  # both assessments bounded before the folder is touched
         check_problem_size(each.design, "assess", REPORT)
+        refuse_envelope_points(each.design, each.source)
     sources = [marker_source(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     folder = prepare_output_folder(
         _default_folder((design_a, design_b)) if out is None else out,

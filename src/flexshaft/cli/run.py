@@ -9,7 +9,14 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import EXIT_REQUIREMENT_FAILED, fail, guarded, load_design_argument, print_json
+from flexshaft.cli.common import (
+    EXIT_REQUIREMENT_FAILED,
+    fail,
+    guarded,
+    load_design_argument,
+    print_json,
+    refuse_envelope_points,
+)
 from flexshaft.cli.options import ForceOption, JsonOption, Studies
 from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
 from flexshaft.cli.progress import StageProgress
@@ -106,6 +113,7 @@ def run(
 
     # refuses what cannot finish before the folder is touched: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if studies is not Studies.none else "assess", REPORT)
+    refuse_envelope_points(loaded.design, loaded.source)
     folder = prepare_output_folder(
         default_output_folder(design, "results") if out is None else out,
         loaded.design,

@@ -39,24 +39,15 @@ from dataclasses import dataclass, field
 
 from pydantic import ValidationError
 
-from flexshaft.design import DesignError, Problem
 from flexshaft.design.envelope import DEFAULT_ENVELOPE_POINTS, EnvelopePoint, envelope_point
 from flexshaft.design.materials import Lamina
-from flexshaft.design.points import design_at_point
 from flexshaft.design.schema import Design
 from flexshaft.design.thermal_schema import Thermal
 from flexshaft.thermal.options import matrix_law_from, thermal_options
 from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
 from flexshaft.units import celsius_to_kelvin, kelvin_to_celsius
 
-__all__ = [
-    "SKY_EXPONENT",
-    "PointConditions",
-    "envelope_conditions",
-    "point_conditions",
-    "point_design",
-    "point_thermal",
-]
+__all__ = ["SKY_EXPONENT", "PointConditions", "envelope_conditions", "point_conditions", "point_thermal"]
 
 #: Exponent of Swinbank's (1963) clear-sky temperature, T_sky = 0.0552 T_amb^1.5 [K].
 SKY_EXPONENT = 1.5
@@ -188,33 +179,6 @@ def envelope_conditions(design: Design) -> tuple[PointConditions, ...]:
     ``[envelope]`` (which the verdict judges at its own operating point only)."""
     points = design.envelope.points if design.envelope is not None else DEFAULT_ENVELOPE_POINTS
     return tuple(point_conditions(design, point) for point in points)
-
-
-def point_design(design: Design, index: int) -> tuple[PointConditions, Design]:
-    """The conditions and the design at point ``index`` of ``design.envelope`` (the module's
-    recipe), for the verdict and for ``flexshaft check`` alike.
-
-    Raises
-    ------
-    DesignError
-        Naming the point (``envelope.points[i]``) when its material temperature lies outside a
-        lamina's table, the matrix law takes a lamina out of the schema's bounds there, or the
-        design at the point breaks the schema (e.g. power without speed).
-    """
-    assert design.envelope is not None
-    point = design.envelope.points[index]
-    try:
-        conditions = point_conditions(design, point)
-    except ValueError as exc:
-        raise DesignError([Problem(f"envelope.points[{index}]", str(exc))], "<envelope>") from None
-    try:
-        at_point = design_at_point(design, point, conditions)
-    except DesignError as exc:
-        raise DesignError(
-            [Problem(f"envelope.points[{index}] ({point.name})", str(problem)) for problem in exc.problems],
-            "<envelope>",
-        ) from None
-    return conditions, at_point
 
 
 def _refusal(exc: ValueError, temperature: float) -> str:

@@ -15,12 +15,7 @@ first, cheaply, and returns the problems, each naming the fields that set it:
   ply indefinite). The law is monotone (θ_E ≥ 5 K), so the ends bound the range. An allowable
   below the air, which the self-heating never reaches (it stops at once as a runaway), is
   checked too: a law that makes the ply invalid at the matrix's own allowable contradicts the
-  material data, whatever the air;
-* each point of the design's ``[envelope]``: its material temperature within every lamina's
-  table, the matrix law keeping every lamina within the schema's bounds there, and the design
-  at the point valid (:func:`flexshaft.thermal.envelope.point_design`, the verdict's own
-  recipe: a hot-soak point at 100 °C with θ_E = 5 K took E_T below the schema's 1 kPa and
-  ``run`` refused a design ``check`` had accepted).
+  material data, whatever the air.
 
 With :func:`flexshaft.analyses.preflight.model_guards` (the model's build checks and the solves
 every command starts from) it is what ``flexshaft check`` needs so that a design it accepts
@@ -105,20 +100,6 @@ def thermal_guards(design: Any) -> list[Problem]:
                     )
                 )
                 break
-    return problems + _envelope_problems(design)
-
-
-def _envelope_problems(design: Any) -> list[Problem]:
-    """The problems of the design's envelope points (module docstring), each naming its point."""
-    from flexshaft.design import DesignError
-    from flexshaft.thermal.envelope import point_design
-
-    problems: list[Problem] = []
-    for index in range(0 if design.envelope is None else len(design.envelope.points)):
-        try:
-            point_design(design, index)
-        except DesignError as error:
-            problems.extend(error.problems)
     return problems
 
 
