@@ -78,3 +78,18 @@ def test_above_the_poles_the_natural_frequencies_stand_in_with_a_nominal_width()
 def test_the_coarse_grid_spans_the_range_in_rad_s(n_points):
     grid = frequency_grid(None, (1.0, 10.0), n_points, np.array([_pole(100.0, 0.01)]))
     np.testing.assert_allclose(grid, np.geomspace(2 * np.pi, 20 * np.pi, n_points), rtol=1e-12)
+
+
+def test_only_the_natural_frequencies_above_the_highest_pole_stand_in():
+    """A pole given at 25 rad/s (ζ = 0.01: points ω_d and ω_d ± ζω_n/2 = ω_d ± 0.125 rad/s) is
+    the top of a truncated basis's poles: of the two natural frequencies 20 and 30 rad/s (by
+    hand, above) only 30 rad/s, above it, stands in; the mode at 20 rad/s is one of the poles
+    given (module docstring: "above the highest pole given"). A real pole (a derivative
+    filter's at −1000 rad/s, or its conjugate pair's lower half) is no peak and no top: it makes
+    no grid point and keeps no natural frequency out."""
+    damped = 25.0 * np.sqrt(1.0 - 1e-4)
+    poles = np.array([_pole(25.0, 0.01), np.conj(_pole(25.0, 0.01)), -1000.0 + 0j])
+    grid = frequency_grid(_two_dof_model(), (1.0, 10.0), 3, poles)
+    above = [30.0 * (1.0 + k * 1e-3) for k in (-0.5, 0.0, 0.5)]
+    expected = np.sort(np.concatenate([LOG, [damped - 0.125, damped, damped + 0.125], above]))
+    np.testing.assert_allclose(grid, expected, rtol=1e-12)

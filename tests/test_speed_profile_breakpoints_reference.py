@@ -21,3 +21,11 @@ def test_the_rate_at_a_breakpoint_is_the_next_segments():
     assert p.acceleration(5.0) == 0.0
     assert p.acceleration(0.0) == 50.0
     assert [p.speed(t) for t in (2.0, 5.0)] == pytest.approx([100.0, 160.0], rel=1e-12)
+
+
+def test_the_largest_speed_of_a_run_down_and_of_a_rise_and_fall():
+    """``max_speed`` (the Monte-Carlo run-up's basis size and output step read it) is the
+    table's largest speed, not its last: a run-down from 300 to 100 rad/s peaks at its start,
+    the table (0, 0) → (1, 250) → (3, 40) at its breakpoint t = 1 s (read off the tables)."""
+    assert SpeedProfile.constant_acceleration(300.0, 100.0, 50.0).max_speed == 300.0
+    assert SpeedProfile.table([0.0, 1.0, 3.0], [0.0, 250.0, 40.0]).max_speed == 250.0
