@@ -30,7 +30,12 @@ an undamped mode is ~1e-13); the crossing found on the speed grid is then solved
 speed where that mode's damping ratio changes sign (regula falsi, each evaluation the mode
 followed back from its first unstable speed): a zero crossing, or with the rotating-frame loss
 the jump where the mode's consistent root passes from one side of the line to the other (the
-hysteretic Jeffcott rotor: Ω = ω_d). The onset does not depend on the grid spacing.
+hysteretic Jeffcott rotor: Ω = ω_d). Once the grid brackets a crossing, the onset does not
+depend on the grid spacing; a window of instability that opens and closes between two grid
+speeds, both stable, is not seen (the coarse baseline on ``flexshaft stability --max-rpm 1e5
+--n-speeds 2``: stable at 0 and 1e5 rpm, unstable from 3126 rpm to below 1e5): the grid must
+resolve the speeds of interest (``--n-speeds``; the verdict's whirl speeds,
+:class:`~flexshaft.resolution.Resolution`).
 
 Divergence. A real eigenvalue s > 0 (an aperiodic instability: e.g. a magnetic bearing whose
 negative stiffness k_s exceeds its control stiffness, or C = 0) is no oscillatory mode and is
