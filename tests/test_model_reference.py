@@ -143,3 +143,23 @@ def test_magnet_carries_force_in_v_and_w():
     for f in ("v", "w"):
         expected[dofs.shaft(1, f), dofs.shaft(1, f)] = 1.0
     np.testing.assert_array_equal(gram, expected)
+
+
+def test_tube_mass_of_a_shaft_starting_aft_of_the_origin():
+    """The same tube between x = 1 m and x = 3 m: L = x_end − x_start = 2 m, 8.0582 kg (not the
+    3 m of its aft station)."""
+    by_hand = 2700.0 * math.pi * (0.05**2 - 0.045**2) * 2.0
+    dofs = DofMap(shaft_x=np.linspace(1.0, 3.0, 3), boom_x=np.zeros(0))
+    assert _model(dofs).shaft_mass == pytest.approx(by_hand, rel=TOL)
+
+
+def test_a_torsional_loss_alone_is_a_loss():
+    """A shaft whose only loss is torsional (K''_θθ = 1e3 N m/rad at one node) has loss: the
+    module docstring puts the shaft's torsional strains in the fixed-frame loss matrix."""
+    dofs = _dofs()
+    t = dofs.shaft(1, "theta")
+    loss = sp.csr_matrix(([1.0e3], ([t], [t])), shape=(dofs.size, dofs.size))
+    model = _model(dofs, shaft_loss_stiffness=loss)
+    assert model.loss_lateral.nnz == 0 and model.loss_fixed.nnz == 1
+    assert model.has_loss
+    assert not _model(dofs).has_loss
