@@ -187,3 +187,18 @@ def test_one_blas_thread_unless_the_user_chose(monkeypatch, numpy_loaded: bool) 
     expected = None if numpy_loaded else "1"  # only effective before numpy loads: left alone after
     assert os.environ.get("OPENBLAS_NUM_THREADS") == expected and os.environ.get("MKL_NUM_THREADS") == expected
     assert os.environ["OMP_NUM_THREADS"] == "4"
+
+
+def test_an_interruption_says_what_was_kept_and_marks_the_folder_incomplete(tmp_path: Path) -> None:
+    """Ctrl-C (KeyboardInterrupt) ends the command at once, as the user asked; what the
+    interrupted work kept, attached to the exception as a note (the sweep engine's stored chunks,
+    tests/test_sweep_chunks_reference.py), is printed on stderr as ``interrupted: …``; the
+    output folder stays marked incomplete. Never an internal error (exit 4) or a traceback."""
+    interrupted = KeyboardInterrupt()
+    interrupted.add_note("2 of 3 chunks are stored in runs/x: the same command with the same options resumes from them")
+    folder = tmp_path / "out"
+    result = _invoke(_raiser(interrupted), folder=folder)
+    assert result.exit_code not in (OK, USER_ERROR, REQUIREMENT_FAILED, INTERNAL_ERROR)
+    assert "interrupted: 2 of 3 chunks are stored in runs/x" in result.stderr
+    assert "Traceback" not in result.output and "internal error" not in result.stderr
+    assert not _complete(folder)

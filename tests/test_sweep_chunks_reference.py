@@ -90,8 +90,12 @@ def test_interrupted_sweep_resumes_point_by_point(tmp_path):
     run = tmp_path / "run"
     CALLS.clear()
     STOP_AT.append(4)  # Ctrl-C at the first point of the third chunk [4, 6)
-    with pytest.raises(KeyboardInterrupt):
+    with pytest.raises(KeyboardInterrupt) as interrupted:
         run_sweep(_study(), run, chunk_size=2, progress=False)
+    # what is kept, for the command to say (two chunks of three: [0, 2) and [2, 4))
+    assert interrupted.value.__notes__ == [
+        f"2 of 3 chunks are stored in {run}: the same command with the same options resumes from them"
+    ]
     assert CALLS == [0, 1, 2, 3]
     assert finished_chunks(run) == [0, 1] and not (run / "results.nc").exists()
     for k, (start, stop) in enumerate([(0, 2), (2, 4)]):

@@ -305,6 +305,10 @@ def guarded(func: F) -> F:
                 raise
             _end_command(mark, True)
             return value
+        except KeyboardInterrupt as exc:  # Ctrl-C: what the interrupted work kept, if it says
+            for note in getattr(exc, "__notes__", ()):
+                _stderr(plain(f"interrupted: {note}"))
+            raise
         except _PASS_THROUGH:
             raise
         except BrokenPipeError:

@@ -302,7 +302,15 @@ def run_sweep(
             values[a:b] = chunk
             if run_path is not None:
                 write_chunk(chunk_path(run_path, k), chunk, fingerprint=fingerprint, index=k, start=a, stop=b)
+                done.add(k)
             bar.advance()
+    except KeyboardInterrupt as exc:  # Ctrl-C or SIGTERM: say what is kept (the CLI prints the note)
+        if run_path is not None:
+            exc.add_note(
+                f"{len(done)} of {len(bounds)} chunks are stored in {run_path}: "
+                "the same command with the same options resumes from them"
+            )
+        raise
     finally:
         close = getattr(stream, "close", None)
         if close is not None:
