@@ -57,6 +57,7 @@ LAYERS = {
     "report": 9,
     "cli": 10,
     "explore": 10,
+    "__main__": 10,  # ``python -m flexshaft``: the cli's app
 }
 
 
