@@ -241,6 +241,13 @@ def test_explore_refuses_a_file_as_its_out_folder_before_serving(tmp_path: Path)
     assert notes.read_text(encoding="utf-8") == "mine"
 
 
+def test_explore_names_pareto_when_its_folder_is_no_optimizer_run(tmp_path: Path) -> None:
+    """Was: `explore --pareto /nonexistent` said "invalid design /nonexistent", not naming the
+    option. The folder is read before the server starts."""
+    message = refused(runner.invoke(app, ["explore", "--pareto", str(tmp_path / "none")]), "--pareto")
+    assert "not a finished `flexshaft optimize` run folder" in message and "invalid design" not in message
+
+
 @pytest.mark.parametrize("study", ["ply-angle", "two-angle", "buckling"])
 def test_a_laminate_study_of_a_metal_shaft_is_refused_before_its_folder(study, tmp_path: Path) -> None:
     """Was: `study ply-angle|two-angle|buckling` on the current (aluminium) driveline made the
