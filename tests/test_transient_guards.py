@@ -182,3 +182,16 @@ STUDY = Study(
 def test_run_sweep_refuses_its_options_before_computing(options, words):
     with pytest.raises(SweepError, match=words):
         run_sweep(STUDY, progress=False, **options)
+
+
+def test_run_sweep_refuses_more_workers_than_the_cpus_or_64(monkeypatch):
+    """Was: ``run_sweep(jobs=100000)`` started that many processes (the CLI's ``--jobs`` stops at
+    64). The API allows the machine's CPUs, at least 64: here a 2-CPU machine, so 64 and not 65."""
+    import flexshaft.sweep.run as sweep_run
+
+    monkeypatch.setattr(sweep_run.os, "cpu_count", lambda: 2)
+    with pytest.raises(SweepError, match=r"jobs must be a whole number from 1 to 64 .*got 65"):
+        run_sweep(STUDY, progress=False, jobs=65)
+    monkeypatch.setattr(sweep_run.os, "cpu_count", lambda: 96)
+    with pytest.raises(SweepError, match=r"from 1 to 96 .*got 97"):
+        run_sweep(STUDY, progress=False, jobs=97)

@@ -263,8 +263,8 @@ def run_sweep(
     """
     if on_error not in ("raise", "nan"):
         raise SweepError(f"on_error must be 'raise' or 'nan', got {on_error!r}")
-    if not _whole(jobs) or jobs < 1:
-        raise SweepError(f"jobs must be a whole number >= 1, got {jobs!r}")
+    if not _whole(jobs) or not 1 <= jobs <= max_jobs():
+        raise SweepError(f"jobs must be a whole number from 1 to {max_jobs()} (the CPUs, at least 64), got {jobs!r}")
     if chunk_size is not None and (not _whole(chunk_size) or chunk_size < 1):
         raise SweepError(f"chunk_size must be a whole number >= 1, got {chunk_size!r}")
     if isinstance(client, str):
@@ -322,6 +322,12 @@ def run_sweep(
     if run_path is not None:
         write_netcdf(arrays.to_dataset(), run_path / RESULTS)
     return arrays if as_arrays else arrays.to_dataset()
+
+
+def max_jobs() -> int:
+    """Most local worker processes a sweep starts: the machine's CPUs, at least 64 (the CLI's
+    ``--jobs`` limit); ``jobs=100000`` used to start that many processes."""
+    return max(64, os.cpu_count() or 1)
 
 
 def _whole(value: Any) -> bool:
