@@ -38,8 +38,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq
 from rotors import jeffcott_text
+from scipy.optimize import brentq
 from test_stability import ABOVE, BELOW, pencil_roots
 
 from flexshaft.analyses.eigen import reduce

@@ -42,4 +42,3 @@ def test_a_zero_bandwidth_peak_is_undamped_and_takes_the_capped_margins(lower, u
     assert peak.amplification_factor == math.inf
     assert required_separation_margin(peak.amplification_factor, "below") == 0.16
     assert required_separation_margin(peak.amplification_factor, "above") == 0.26
-
