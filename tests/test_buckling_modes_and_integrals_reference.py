@@ -39,6 +39,7 @@ def test_axial_integrals_equal_gauss_legendre_quadrature():
     phase = np.outer(m, x) * np.pi / length  # (m, points)
     functions = (np.sin(phase), np.cos(phase))
     integrals = axial_integrals(m, length)
+    assert set(integrals) == {(0, 0), (0, 1), (1, 0), (1, 1)}  # sin-sin, sin-cos, cos-sin, cos-cos
     for (p, q), value in integrals.items():
         reference = (functions[p] * w) @ functions[q].T
         np.testing.assert_allclose(value, reference, rtol=0.0, atol=1e-12 * length)

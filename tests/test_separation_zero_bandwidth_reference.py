@@ -11,7 +11,9 @@ instead read as "critically damped" (AF < 2.5) and need no margin at all: the un
 Checked on :class:`~flexshaft.analyses.separation.ResonancePeak` built by hand (its
 ``bandwidth`` is N_2 − N_1 for a two-sided peak, 2 (N_c − N_1) or 2 (N_2 − N_c) for a one-sided
 one, the limits' span for a bounded one): all four ways to a zero bandwidth. Exact arithmetic:
-no tolerance.
+no tolerance. That AF = N_c/B equals Q = 1/(2ζ) on a physical peak is checked in
+tests/test_separation.py::test_af_of_a_single_dof_unbalance_response_is_its_q (the single-DOF
+unbalance response's peak resolved from samples, against the closed form).
 """
 
 from __future__ import annotations
@@ -40,11 +42,3 @@ def test_a_zero_bandwidth_peak_is_undamped_and_takes_the_capped_margins(lower, u
     assert peak.amplification_factor == math.inf
     assert required_separation_margin(peak.amplification_factor, "below") == 0.16
     assert required_separation_margin(peak.amplification_factor, "above") == 0.26
-
-
-def test_the_af_grows_as_one_over_two_zeta_towards_zero_bandwidth():
-    # B = 2 zeta N_c on a two-sided peak: AF = 1/(2 zeta) exactly in the dataclass's arithmetic
-    for zeta in (0.1, 0.01, 0.001):
-        half = zeta * N_C
-        peak = ResonancePeak(N_C, 1.0, N_C - half, N_C + half, N_C - half, N_C + half)
-        assert peak.amplification_factor == pytest.approx(1.0 / (2.0 * zeta), rel=1e-12)
