@@ -30,7 +30,7 @@ not bound that group's error: in the first case a shaft group reading v alone cu
 to about 27 % and the w plane's error of the previous model, half the estimate, exceeds it.
 Allowance 1e-12 of the peak for the round-off of the full solves (κ ε with κ ≲ 1e4; it passes
 with none), far below the 3e-11 by which the w plane's error exceeds the cut estimate (measured
-6.2e-11 against 3.4e-11). CPU: about 0.2 s.
+6.2e-11 against 3.4e-11). CPU: about 0.1 s.
 """
 
 from __future__ import annotations
