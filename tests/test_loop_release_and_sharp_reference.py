@@ -26,10 +26,20 @@ each is checked here on a loop function whose answer is written by hand.
   crossover's of the same loop by 3°. For the integrator L = c/(iω) (g = −1, g' = 0, phase
   margin 90° at every ω) checked at |L| = e^{−δ}: δ = 0.1 gives 10 × 0.1 rad = 57.30°, a lower
   end 32.70° below 30° + 3° of an accepted crossover with a 30° margin: kept; δ = 0.05 gives
-  28.65°, a lower end 61.35° > 33°: released. A phase crossing (Im L = 0) with L = −2 + 0.01i,
-  L' = i, L'' = 0 lies δ = 0.01 away, L moves by at most 10 × 0.01 = 0.1: Re L = −2 stays
-  negative, a real phase crossover, kept; L = +2 + 0.01i stays positive by more than 0.1:
-  released.
+  28.65°, a lower end 61.35° > 33°: released. The lagged integrator L = c/(iω(1 + iω/p)) has,
+  from ln L = ln c − ln(iω) − ln(1 + iω/p) and d/dx = ω d/dω, g = −1 − iω/(p + iω) and
+  g' = −iωp/(p + iω)²; at ω = p/2: g = −1.2 − 0.4i (|g| = √1.6, Re g = −1.2), g' = −0.32 − 0.24i
+  (|g'| = 0.4), phase margin 90° − atan(1/2) = 63.435°, and the trust test |g'|δ ≤ 0.1 |Re g|
+  holds for δ ≤ 0.3. With c set so |L| = e^{−1.2δ} (step δ) and an accepted crossover with a 2°
+  margin (window: released above 5°): δ = 0.08 gives 10 (√1.6 × 0.08 + 0.4 × 0.0064) rad =
+  57.98° + 1.47° = 59.45°, a lower end 3.99° ≤ 5°: kept — without the δ² term it would be 5.46°,
+  released, so the curvature term decides; δ = 0.075 gives 54.36° + 1.29°, a lower end
+  7.79° > 5°: released.
+  A phase crossing (Im L = 0) with L = x + 0.01i, L' = i, L'' = 0 lies δ = 0.01 away and L moves
+  by at most 10 × 0.01 = 0.1, released only if Re L > 0.1 (it then stays positive): Re L = −2
+  stays negative, a real phase crossover, kept; Re L = 0.09, just inside the bound, kept;
+  Re L = 0.11 and +2, released. (0.09 and 0.11 pin RELEASE_SAFETY × |L'|δ to (0.09, 0.11):
+  a safety other than about 10, or a test of Re L > 0 in place of Re L > bound, fails.)
 
 Tolerances: frequencies refined by regula falsi to 1e-8 ω (rtol 1e-7); the refined |L| on the
 circle of radius 0.5 is exact to round-off, its margin to 1e-9 dB; the interpolated crossover
@@ -101,10 +111,33 @@ def test_the_release_rule_bounds_a_gain_crossovers_phase_in_degrees():
 
 
 def test_the_release_rule_keeps_a_phase_crossing_on_the_negative_side():
-    tasks = [_task("phase"), _task("phase")]
-    settle = release_rule(tasks, np.zeros(2, dtype=int))
-    values = np.array([-2.0 + 0.01j, 2.0 + 0.01j])
+    values = np.array([-2.0 + 0.01j, 2.0 + 0.01j, 0.09 + 0.01j, 0.11 + 0.01j])
+    n = values.size
+    settle = release_rule([_task("phase") for _ in range(n)], np.zeros(n, dtype=int))
+    release = settle(np.arange(n), np.ones(n), values, np.full(n, 1j), np.zeros(n, complex), np.zeros(n, dtype=bool))
+    assert list(release) == [False, True, False, True]
+
+
+def test_the_release_rule_counts_the_curvature_of_a_lagged_integrator():
+    tasks = [_task("gain"), _task("gain"), _task("gain")]
+    settle = release_rule(tasks, np.zeros(3, dtype=int))  # one loop
+    p = 10.0
+    omega = p / 2
+    g = -1.0 - 1j * omega / (p + 1j * omega)  # d ln L / d ln ω, by hand
+    dg = -1j * omega * p / (p + 1j * omega) ** 2  # its derivative in ln ω, by hand
+    values, slopes, curvatures = [np.exp(1j * np.radians(-178.0))], [0j], [0j]  # phase margin 2°
+    for delta in (0.08, 0.075):
+        shape = 1.0 / (1j * omega * (1.0 + 1j * omega / p))
+        L = np.exp(-1.2 * delta) * shape / abs(shape)  # c chosen so |L| = e^{-1.2 δ}: step δ
+        values.append(L)
+        slopes.append(g * L)
+        curvatures.append((dg + g * g) * L)
     release = settle(
-        np.arange(2), np.array([1.0, 1.0]), values, np.array([1j, 1j]), np.zeros(2, complex), np.array([False, False])
+        np.arange(3),
+        np.full(3, omega),
+        np.array(values),
+        np.array(slopes),
+        np.array(curvatures),
+        np.array([True, False, False]),
     )
-    assert list(release) == [False, True]
+    assert list(release) == [False, False, True]

@@ -12,14 +12,16 @@ single-degree-of-freedom systems, ω_v = ω_n and ω_w = 1.01 ω_n, with dashpot
 ζ_v = 1e-3 and ζ_w = 1e-5. The forces U Ω² in v and 0.006 U Ω² in w give, in each plane,
 x_p = F_p Ω²/(k_p − mΩ² + i c_p Ω) and ``Z⁻¹ ∂Z/∂ω x_p = x_p (−2mΩ + i c_p)/(k_p − mΩ² + i c_pΩ)``,
 so κ_ω = Ω √Σ|x_p a_p|² / √Σ|x_p|² with a_p that ratio. Speeds (0.55 + 0.01 j) ω_n, j = 0..100:
-at j = 45 (Ω = ω_v) |v| = U/(2ζ_v) = 500 U dominates, κ_ω ≈ 1/(2ζ_v) = 500; at j = 46 (Ω = ω_w)
-|v| ≈ 50 U but |w| ≈ 0.006 U/(2ζ_w) = 300 U: ‖y‖ is smaller than at j = 45 (no local maximum)
-but κ_ω ≈ 4e4 > 1e4 (both computed below from these formulas). So j = 46 must be solved in
-full. The tube's density is cut to 1e-6 kg/m³ (its mass 7e-11 of the disk's): the response then
-lies in the two planes' static shapes at every speed, the scan's two ends span it to round-off
-and the scan is accepted without a greedy round (which would otherwise pick j = 46 for its
-residual), so only the resonance check can send j = 46 to a full solve. The closed-form κ is a
-guide for the setup, checked against its threshold by a factor 4. CPU: about 50 ms.
+at j = 45 (Ω = ω_v) |v| = U/(2ζ_v m) = 500 U/m dominates, κ_ω ≈ 2mΩ/c_v = 1/ζ_v = 1000; at
+j = 46 (Ω = ω_w) |v| ≈ 50 U/m but |w| = 0.006 U/(2ζ_w m) = 300 U/m: ‖y‖ is smaller than at
+j = 45 (no local maximum) but κ_ω ≈ 9.86e4 > 1e4 (both computed below from these formulas).
+So j = 46 must be solved in full. The tube's density is cut to 1e-6 kg/m³ (its mass 7e-11 of
+the disk's): the response then lies in the two planes' static shapes at every speed, the scan's
+two ends span it to round-off and the scan is accepted without a greedy round (which would
+otherwise pick j = 46 for its residual), so only the resonance check can send j = 46 to a full
+solve. There |w| is checked against 0.006 U/(2ζ_w m) with rtol 1e-8: the tube's mass moves it
+by about its share (measured 7e-11), the full solve's round-off κ_ω ε by about 1e-11. The
+closed-form κ is a guide for the setup, checked against its threshold by a factor 4. CPU: about 50 ms.
 """
 
 from __future__ import annotations
@@ -63,3 +65,4 @@ def test_a_sharp_resonance_beside_the_peak_is_solved_in_full():
     q = np.abs(np.asarray(sweep.response)[[v, w], 0])
     assert q[0, 45] > np.hypot(*q[:, 46]) > 4 * q[0, 46]  # the peak of ‖y‖ at 45; w dominates at 46
     assert sweep.rounds == 0 and sweep.basis_size > 0 and sweep.full[46]
+    np.testing.assert_allclose(q[1, 46], SHARE * U / (2 * 1e-5 * M_DISK), rtol=1e-8)  # resonant |w|
