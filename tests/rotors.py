@@ -1,11 +1,11 @@
 """Test rotors with closed-form answers, shared by the damping, stability and response tests.
 
 Jeffcott-like rotor: a heavy midspan disk (mass m) on a near-massless pinned-pinned steel tube
-(3.5e-6 of the disk mass: 0.1 kg/m³ × π(D_o² − D_i²)/4 × L = 7.1e-5 kg; lighter makes the first-order problem ill-conditioned), an optional
-external dashpot c_e at the disk and an isotropic loss factor η of the shaft material. The
-shaft's loss stiffness is η K', which condenses exactly onto the disk, so in complex
-coordinates r = v + i w the disk obeys m r̈ + c_e ṙ + k r + (internal loss) = f with
-k = 48 E I / L³.
+(3.5e-6 of the disk mass: 0.1 kg/m³ × π(D_o² − D_i²)/4 × L = 7.1e-5 kg; lighter makes the
+first-order problem ill-conditioned), an optional external dashpot c_e at the disk and an
+isotropic loss factor η of the shaft material. The shaft's loss stiffness is η K', which
+condenses exactly onto the disk, so in complex coordinates r = v + i w the disk obeys m r̈ + c_e
+ṙ + k r + (internal loss) = f with k = 48 E I / L³.
 """
 
 from __future__ import annotations
