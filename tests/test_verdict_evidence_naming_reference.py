@@ -37,6 +37,7 @@ from flexshaft.analyses.criticals import LateralCritical
 from flexshaft.analyses.datasets import strength_dataset
 from flexshaft.design.requirements import Requirements
 from flexshaft.design.segments import Coupling
+from flexshaft.units import format_quantity
 from flexshaft.verdict import checks, gather
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
 from flexshaft.verdict.evidence import ActuatorEvidence, CouplingEvidence, Evidence, LoopEvidence
@@ -87,15 +88,21 @@ def test_phase_limit_without_crossover_is_in_radians():
     loop = LoopEvidence("A", "y", OMEGA, 2.0, 300.0)
     c = checks.loop_phase_margin(Evidence(OMEGA, loops=(loop,)), REQ)
     assert c.status == "pass" and c.limit == pytest.approx(math.radians(REQ.min_phase_margin_deg), rel=1e-12)
+    # SI inside (docs/requirements.md: the results in SI units, a unit per check), degrees shown
+    assert c.to_dict()["unit"] == "rad" and format_quantity("angle", c.limit) == f"{REQ.min_phase_margin_deg:g}°"
 
 
 def test_which_checks_apply():
+    """Tsai-Wu and the temperature apply to a laminated shaft, whatever its couplings; the
+    coupling angle to a driveline with couplings, whatever its shaft (all four combinations, so
+    that neither condition can stand in for the other)."""
     rules = {r.key: r for r in checks.CHECKS}
-    metal = NS(shaft=NS(laminate=None), couplings=())
-    laminated = NS(shaft=NS(laminate=object()), couplings=(object(),))
-    assert not rules["tsai_wu"].applies(metal) and rules["tsai_wu"].applies(laminated)
-    assert not rules["temperature"].applies(metal) and rules["temperature"].applies(laminated)
-    assert not rules["coupling_angle"].applies(metal) and rules["coupling_angle"].applies(laminated)
+    for laminated in (False, True):
+        for coupled in (False, True):
+            model = NS(shaft=NS(laminate=object() if laminated else None), couplings=(object(),) if coupled else ())
+            assert rules["tsai_wu"].applies(model) is laminated
+            assert rules["temperature"].applies(model) is laminated
+            assert rules["coupling_angle"].applies(model) is coupled
 
 
 # ------------------------------------------------------------------------------------------------
@@ -103,7 +110,7 @@ def test_which_checks_apply():
 
 
 def _modes():
-    s = np.array([-1.0 + 30.0j, -2.0 + 80.0j, -0.5 + 50.0j])
+    s = np.array([-1.0 + 30.0j, -2.0 + 80.0j, -0.5 + 120.0j])  # the torsional mode above the whirl modes
     return NS(
         eigenvalues=s,
         kind=np.array(["lateral", "lateral", "torsional"]),
@@ -115,10 +122,11 @@ def _modes():
 
 
 def test_gather_whirl_numbers_modes_from_one_and_reads_the_top_speed():
+    speeds = np.array([0.0, 100.0, 200.0, 300.0])
     st = NS(
-        speeds=np.array([0.0, 100.0, 200.0, 300.0]),
-        onset_speed=250.0,
-        at_speed=lambda s: 3,
+        speeds=speeds,
+        onset_speed=280.0,  # nearest analysed speed 300 (StabilityResult.at_speed's rule), no tie
+        at_speed=lambda s: int(np.argmin(np.abs(speeds - s))),
         unstable_mode=1,
         onset_kind="whirl",
         whirl=np.array([["backward", "forward"]] * 4),
@@ -170,18 +178,28 @@ def test_gather_temperature_names_the_hottest_station():
 
 
 def test_gather_spinup_peak_station_and_a_smaller_refined_peak():
-    envelope = np.array([[9.0, 1.0, 0.0], [1.0, 4.0, 0.0], [0.0, 2.0, 2.0]])  # (node, speed)
+    """The largest sampled orbit up to the operating speed, at its station and speed (the shaft's
+    peak per speed is the envelope's largest node, as SpinupResponse computes it); a critical
+    speed's refined peak replaces it only when larger and at or below the operating speed."""
+    envelope = np.array([[1.0, 1.0, 0.0, 9.0], [3.0, 4.0, 0.0, 0.0], [0.0, 2.0, 2.0, 0.0]])  # (node, speed)
+    speeds = np.array([10.0, 20.0, 30.0, 40.0])
     spinup = NS(
-        up_to=lambda s: np.arange(3),
-        shaft_peak=np.array([1.0, 4.0, 2.0]),
-        envelope=envelope,
-        speeds=np.array([10.0, 20.0, 30.0]),
+        up_to=lambda s: np.flatnonzero(speeds <= s), shaft_peak=envelope.max(axis=0), envelope=envelope, speeds=speeds
     )
     p = NS(spinup=spinup, operating_speed=30.0, model=NS(dofs=NS(shaft_x=np.array([0.0, 0.5, 1.0]))))
-    critical = NS(speed=15.0, location={"peak_orbit": 2.5, "station": 0.0})
-    out = gather._spinup_peak(p, [critical])
-    assert out["spinup_peak"] == 4.0
+    smaller = NS(speed=15.0, location={"peak_orbit": 2.5, "station": 0.0})
+    above = NS(speed=35.0, location={"peak_orbit": 50.0, "station": 1.0})  # beyond the operating speed
+    out = gather._spinup_peak(p, [smaller, above])
+    assert out["spinup_peak"] == 4.0  # the 9.0 at 40 rad/s lies above the operating speed
     assert out["spinup_location"] == {"station": 0.5, "speed": 20.0}
+    larger = NS(speed=25.0, location={"peak_orbit": 5.0, "station": 1.0})
+    out = gather._spinup_peak(p, [smaller, larger, above])
+    assert out["spinup_peak"] == 5.0
+    assert out["spinup_location"] == {
+        "station": 1.0,
+        "speed": 25.0,
+        "detail": "peak refined between the sampled speeds",
+    }
 
 
 def test_gather_torsional_in_rad_s_from_t1():
@@ -251,6 +269,28 @@ def test_a_coupling_rated_for_two_degrees_is_accepted():
         name="c", x=1.0, angular_stiffness=1e3, axial_stiffness=1e6, torsional_stiffness=1e5, allowable_angle_deg=2.0
     )
     assert c.allowable_angle_deg == 2.0
+    # docs/design-reference.md: (0, 90) deg, open at both ends (a bound in radians refused 2 deg)
+    for refused in (0.0, 90.0):
+        with pytest.raises(ValueError, match="allowable_angle_deg"):
+            Coupling(
+                name="c",
+                x=1.0,
+                angular_stiffness=1e3,
+                axial_stiffness=1e6,
+                torsional_stiffness=1e5,
+                allowable_angle_deg=refused,
+            )
+    assert (
+        Coupling(
+            name="c",
+            x=1.0,
+            angular_stiffness=1e3,
+            axial_stiffness=1e6,
+            torsional_stiffness=1e5,
+            allowable_angle_deg=89.9,
+        ).allowable_angle_deg
+        == 89.9
+    )
 
 
 def test_strength_file_has_the_smallest_factor_and_the_angle_in_degrees():
