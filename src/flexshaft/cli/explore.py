@@ -73,14 +73,15 @@ def explore(
             "install them with pip install 'flexshaft[explore]'"
         )
     loaded = load_design_argument(design, "tuned")
+    front = None
     if pareto is not None:  # read before the server starts; the refusal names the option
         from flexshaft.design import DesignError
         from flexshaft.explore.pareto import read_front
 
         try:
-            read_front(pareto)
+            front = read_front(pareto)
         except DesignError as exc:
             fail(f"--pareto {pareto}: " + "; ".join(problem.message for problem in exc.problems))
     from flexshaft.explore.launch import serve  # the web stack: only this command loads it
 
-    serve(loaded, host=host, port=port, pareto=pareto, out=out, studies=studies.value, processes=workers)
+    serve(loaded, host=host, port=port, front=front, out=out, studies=studies.value, processes=workers)

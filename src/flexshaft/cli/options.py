@@ -14,6 +14,8 @@ from typing import Annotated
 
 import typer
 
+from flexshaft.parallel import MAX_JOBS
+
 __all__ = [
     "Convection",
     "DampingModel",
@@ -98,9 +100,6 @@ ForceOption = Annotated[
         "--force", help="Write into a non-empty --out folder that flexshaft did not write, or wrote for another design."
     ),
 ]
-#: Most local worker processes a command starts: each is a forked process, all started at once
-#: (``--jobs 100000`` forked 4,400 processes before it was stopped).
-MAX_JOBS = 64
 JOBS_HELP = (
     f"Local worker processes (one BLAS thread each), at most {MAX_JOBS}; the work bound counts at "
     "most this machine's CPUs."

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 from flexshaft.cli.common import LoadedDesign, fail
-from flexshaft.explore.pareto import read_front
+from flexshaft.explore.pareto import Front
 from flexshaft.explore.server import Explorer, build_app
 from flexshaft.explore.workers import Workers
 
@@ -58,15 +58,16 @@ def serve(
     *,
     host: str = "127.0.0.1",
     port: int = 0,
-    pareto: Path | None = None,
+    front: Front | None = None,
     out: Path = Path("flexshaft-explore"),
     studies: str = "report",
     processes: int | None = None,
 ) -> None:
-    """Serve the explorer of ``loaded`` until interrupted (see the module docstring)."""
+    """Serve the explorer of ``loaded`` until interrupted (see the module docstring); ``front``
+    the Pareto front of an optimizer run (:func:`~flexshaft.explore.pareto.read_front`, read by
+    the command before, so that a refusal names ``--pareto``)."""
     import uvicorn  # the extra flexshaft[explore]; checked by the command before
 
-    front = read_front(pareto) if pareto is not None else None
     if not is_local(host):
         print(
             f"warning: --host {host} is not a loopback address: anyone who can reach this machine on the "

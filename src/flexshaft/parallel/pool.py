@@ -30,7 +30,9 @@ from concurrent.futures import Executor, ProcessPoolExecutor
 from contextlib import contextmanager
 from multiprocessing.context import BaseContext
 
-__all__ = ["available_cpus", "die_with_parent", "new_pool", "prepare_worker", "stop_pool", "worker_pool"]
+from flexshaft.parallel import MAX_JOBS
+
+__all__ = ["available_cpus", "die_with_parent", "max_jobs", "new_pool", "prepare_worker", "stop_pool", "worker_pool"]
 
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 #: How often the portable watchdog thread looks at the parent [s].
@@ -43,6 +45,13 @@ def available_cpus() -> int:
         return len(os.sched_getaffinity(0))
     except (AttributeError, OSError):
         return os.cpu_count() or 1
+
+
+def max_jobs() -> int:
+    """Most local worker processes a sweep of the Python API starts: the machine's CPUs, at least
+    :data:`~flexshaft.parallel.MAX_JOBS` (the CLI's ``--jobs`` limit); ``jobs=100000`` used to
+    start that many processes."""
+    return max(MAX_JOBS, os.cpu_count() or 1)
 
 
 def _set_parent_death_signal(sig: int) -> bool:

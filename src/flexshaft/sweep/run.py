@@ -39,7 +39,7 @@ import numpy as np
 from flexshaft import __version__
 from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.netcdf import write_netcdf
-from flexshaft.parallel.pool import die_with_parent, new_pool, stop_pool
+from flexshaft.parallel.pool import die_with_parent, max_jobs, new_pool, stop_pool
 from flexshaft.sweep.dask import check_scheduler_address, connect, evaluate_chunk_on_worker
 from flexshaft.sweep.store import chunk_path, finished_chunks, load_chunks, open_run, write_chunk
 from flexshaft.sweep.study import Study, SweepError, evaluate_chunk
@@ -322,12 +322,6 @@ def run_sweep(
     if run_path is not None:
         write_netcdf(arrays.to_dataset(), run_path / RESULTS)
     return arrays if as_arrays else arrays.to_dataset()
-
-
-def max_jobs() -> int:
-    """Most local worker processes a sweep starts: the machine's CPUs, at least 64 (the CLI's
-    ``--jobs`` limit); ``jobs=100000`` used to start that many processes."""
-    return max(64, os.cpu_count() or 1)
 
 
 def _whole(value: Any) -> bool:
