@@ -265,7 +265,8 @@ def test_a_full_disk_names_the_file_and_leaves_no_complete_looking_folder(tmp_pa
 def test_a_folder_marked_by_an_earlier_flexshaft_is_kept(tmp_path: Path) -> None:
     """A marker without ``entries`` and ``design_source`` (written before this change): the same
     design updates the folder; another one is refused, and with --force nothing is removed
-    (there is no list of what the earlier run wrote; the user's notes must not go)."""
+    (there is no list of what the earlier run wrote; the user's notes must not go): the sweep
+    finds the other design's chunks and, --force given, moves them aside (kept, not deleted)."""
     design = _design(tmp_path)
     other = _design(tmp_path, "other.toml", SMALL.replace("wall_thickness = 0.003", "wall_thickness = 0.0035", 1))
     out = tmp_path / "out"
@@ -277,7 +278,32 @@ def test_a_folder_marked_by_an_earlier_flexshaft_is_kept(tmp_path: Path) -> None
     (out / MARKER).write_text(json.dumps(legacy), encoding="utf-8")
     refused = runner.invoke(app, [*PLY, str(other), "--out", str(out)])
     assert refused.exit_code == 2 and "source not recorded" in refused.stderr
+    before = sorted(p.name for p in (out / "chunks").iterdir())
     forced = runner.invoke(app, [*PLY, str(other), "--out", str(out), "--force"])
-    # nothing removed: the sweep then finds the other study's chunks and says so (as before)
-    assert forced.exit_code == 2 and "holds a different study" in forced.stderr, forced.output
-    assert (out / "notes.txt").read_text() == "mine" and (out / "chunks").is_dir()
+    assert forced.exit_code == 0, forced.output
+    assert (out / "notes.txt").read_text() == "mine"
+    assert before and sorted(p.name for p in (out / "chunks.discarded-1").iterdir()) == before
+
+
+def test_a_rerun_with_other_options_is_refused_and_starts_afresh_with_force(tmp_path: Path) -> None:
+    """The same command on the same design with other options (here the ply-angle step: 2
+    angles, then 1) finds the folder's chunks belong to another study. Was: refused even with
+    --force ("use a new folder"). Now refused without it, naming --force; with it the old
+    chunks are moved aside, never deleted, and the new study's are the only ones read: its
+    results hold the new grid (α = 45° only) and the stored chunks of the old grid are intact."""
+    design = _design(tmp_path)
+    out = tmp_path / "out"
+    assert runner.invoke(app, [*PLY, str(design), "--out", str(out)]).exit_code == 0
+    old_chunks = {p.name: p.read_bytes() for p in (out / "chunks").iterdir()}
+    other_step = ["study", "ply-angle", "--step", "45", str(design), "--out", str(out)]
+    refused = runner.invoke(app, other_step)
+    assert refused.exit_code == 2 and "holds a different study" in refused.stderr, refused.output
+    assert "pass --force to start afresh" in refused.stderr and "Traceback" not in refused.output
+    assert {p.name: p.read_bytes() for p in (out / "chunks").iterdir()} == old_chunks  # untouched
+    forced = runner.invoke(app, [*other_step, "--force"])
+    assert forced.exit_code == 0, forced.output
+    assert {p.name: p.read_bytes() for p in (out / "chunks.discarded-1").iterdir()} == old_chunks
+    import xarray as xr
+
+    with xr.open_dataset(out / "results.nc") as ds:
+        assert ds["alpha"].values.tolist() == [45.0]

@@ -256,6 +256,27 @@ def prepare_output_folder(
     return folder
 
 
+def into_run_folder(compute, run_dir: Path, force: bool):
+    """``compute()``, a sweep into ``run_dir`` (a study's folder, or montecarlo's ``sweep/``).
+
+    A folder holding the chunks of the same command on the same design with other options (a
+    Monte-Carlo of 20 samples rerun with 30, other ply angles) is refused, as the sweep engine
+    does, with the way out: ``--force`` moves its chunks aside (``chunks.discarded-N/``: finished
+    work is never deleted) and starts afresh, as a rerun of an edited design does.
+    """
+    from flexshaft.sweep import DifferentStudyError
+
+    try:
+        return compute()
+    except DifferentStudyError as exc:
+        if not force:
+            fail(f"{exc}, or pass --force to start afresh in it (its chunks are moved aside, not deleted)")
+        from flexshaft.sweep.store import start_afresh
+
+        start_afresh(run_dir, f"it held another study ({exc.held}) and --force was given")
+        return compute()
+
+
 def _version() -> str:
     from flexshaft import __version__
 

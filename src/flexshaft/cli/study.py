@@ -16,7 +16,7 @@ import typer
 
 from flexshaft.cli.common import LoadedDesign, actuator_gap, dask_client, guarded, load_design_argument, print_json
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
-from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
+from flexshaft.cli.output import default_output_folder, into_run_folder, marker_source, prepare_output_folder
 
 __all__ = ["study_app"]
 
@@ -80,8 +80,15 @@ def _prepare(
     )
 
 
-def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, client, as_json: bool, **kw):
-    return func(design=loaded.design, run_dir=folder, jobs=jobs, client=client, progress=_show_progress(as_json), **kw)
+def _sweep(func, loaded: LoadedDesign, folder: Path, jobs: int, client, as_json: bool, force: bool, **kw):
+    """The study's sweep into its output folder (:func:`~flexshaft.cli.output.into_run_folder`)."""
+
+    def compute():
+        return func(
+            design=loaded.design, run_dir=folder, jobs=jobs, client=client, progress=_show_progress(as_json), **kw
+        )
+
+    return into_run_folder(compute, folder, force)
 
 
 def _save(fig, folder: Path, stem: str) -> dict:
@@ -154,7 +161,7 @@ def ply_angle(
         client=client,
         check=_check_laminated("ply-angle", segments=False),
     )
-    ds = _sweep(ply_angle_study, loaded, folder, jobs, client, as_json, angles=angles)
+    ds = _sweep(ply_angle_study, loaded, folder, jobs, client, as_json, force, angles=angles)
     best = float(ds["safety_factor"].idxmax("alpha").item())
     headline = f"best α = ±{best:g}°: safety factor {float(ds['safety_factor'].max().item()):.3g}"
     dominant = [DOMINANT_STRESS_CODES.get(int(c), "?") if np.isfinite(c) else "?" for c in ds["dominant_stress"].values]
@@ -203,7 +210,7 @@ def two_angle(
         client=client,
         check=_check_laminated("two-angle", segments=False),
     )
-    ds = _sweep(two_angle_study, loaded, folder, jobs, client, as_json, alphas=angles, betas=angles)
+    ds = _sweep(two_angle_study, loaded, folder, jobs, client, as_json, force, alphas=angles, betas=angles)
     sf = ds["safety_factor"]
     i = best_pair(sf.values, ds.alpha.values, ds.beta.values)
     a, b = ds.alpha.values[i[0]], ds.beta.values[i[1]]
@@ -251,7 +258,7 @@ def wall(
 
     client = dask_client(dask)  # checked and connected before anything is prepared
     loaded, folder = _prepare(design, out, "wall", force, points=10, jobs=jobs, client=client)
-    ds = _sweep(wall_thickness_study, loaded, folder, jobs, client, as_json)
+    ds = _sweep(wall_thickness_study, loaded, folder, jobs, client, as_json, force)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"a {m_to_mm(float(ds.wall_thickness.values[i])):.3g} mm wall")
     figures = {
@@ -296,7 +303,7 @@ def gain(
 
     client = dask_client(dask)  # checked and connected before anything is prepared
     loaded, folder = _prepare(design, out, "gain", force, points=13, jobs=jobs, client=client, check=_check_gain)
-    ds = _sweep(proportional_gain_study, loaded, folder, jobs, client, as_json)
+    ds = _sweep(proportional_gain_study, loaded, folder, jobs, client, as_json, force)
     sf = ds["safety_factor"].values
     headline = _largest_safety_factor(sf, lambda i: f"K_p = {sig(float(ds.kp.values[i]), 3)} N/m")
     figures = {"gain": _save(gain_figure(ds.kp.values, sf, ds["actuator_displacement"].values), folder, "gain")}
@@ -322,7 +329,7 @@ def buckling(
     loaded, folder = _prepare(
         design, out, "buckling", force, points=10, jobs=jobs, client=client, check=_check_laminated("buckling")
     )
-    ds = _sweep(buckling_study, loaded, folder, jobs, client, as_json)
+    ds = _sweep(buckling_study, loaded, folder, jobs, client, as_json, force)
     sf = ds["buckling_safety_factor"].values
     thin = [w for w, s in zip(ds.wall_thickness.values, sf) if s < 1.0]
     headline = (

@@ -19,7 +19,7 @@ from flexshaft.cli.common import (
     print_json,
 )
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption
-from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
+from flexshaft.cli.output import default_output_folder, into_run_folder, marker_source, prepare_output_folder
 
 __all__ = ["montecarlo", "runup"]
 
@@ -237,17 +237,21 @@ def montecarlo(
     from flexshaft.plot.driveline import save_figure
     from flexshaft.units import m_to_mm
 
-    result = run_montecarlo(
-        loaded.design,
-        samples,
-        seed=seed,
-        grade_mm_s=grade,
-        gap=gap,  # default (None): each active bearing's own, as the verdict
-        force_limit=force_limit,
-        jobs=jobs,
-        client=client,
-        run_dir=folder / "sweep",
-        progress=not as_json and sys.stderr.isatty(),  # the bar is drawn on stderr, only on a terminal
+    result = into_run_folder(
+        lambda: run_montecarlo(
+            loaded.design,
+            samples,
+            seed=seed,
+            grade_mm_s=grade,
+            gap=gap,  # default (None): each active bearing's own, as the verdict
+            force_limit=force_limit,
+            jobs=jobs,
+            client=client,
+            run_dir=folder / "sweep",
+            progress=not as_json and sys.stderr.isatty(),  # the bar is drawn on stderr, only on a terminal
+        ),
+        folder / "sweep",
+        force,
     )
     gap, capacity = result.gap, result.force_limit
     from flexshaft.netcdf import write_netcdf

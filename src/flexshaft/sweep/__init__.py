@@ -19,9 +19,19 @@ given.
 """
 
 from flexshaft.sweep.run import chunk_bounds, finished_chunks, run_sweep, to_dataset
-from flexshaft.sweep.study import Output, Point, Study, SweepError, SweepWarning, Variable, evaluate_chunk
+from flexshaft.sweep.study import (
+    DifferentStudyError,
+    Output,
+    Point,
+    Study,
+    SweepError,
+    SweepWarning,
+    Variable,
+    evaluate_chunk,
+)
 
 __all__ = [
+    "DifferentStudyError",
     "Output",
     "Point",
     "Study",

@@ -36,7 +36,7 @@ from typing import IO, Any
 import numpy as np
 
 from flexshaft.files import atomic_write as write_file
-from flexshaft.sweep.study import Study, SweepError, SweepWarning
+from flexshaft.sweep.study import DifferentStudyError, Study, SweepError, SweepWarning
 
 __all__ = [
     "ChunkError",
@@ -46,6 +46,7 @@ __all__ = [
     "load_chunks",
     "open_run",
     "read_chunk",
+    "start_afresh",
     "write_chunk",
 ]
 
@@ -267,7 +268,7 @@ def _write_manifest(path: Path, fields: dict) -> None:
     atomic_write(path, lambda fh: fh.write(json.dumps(record, indent=1).encode()))
 
 
-def _discard_chunks(run_dir: Path, reason: str | None) -> None:
+def _discard_chunks(run_dir: Path, reason: str | None, moved: str = "its chunks cannot be trusted and were") -> None:
     """Start a run folder afresh: move ``RUN/chunks`` aside so none of it is ever reused.
 
     ``reason`` (why the folder's history is unknown) is warned about when chunks were moved
@@ -280,8 +281,7 @@ def _discard_chunks(run_dir: Path, reason: str | None) -> None:
             n += 1
         os.replace(folder, aside)
         warnings.warn(
-            f"run folder {run_dir}: {reason}; its chunks cannot be trusted and were moved to "
-            f"{aside.name}/; computing every chunk afresh",
+            f"run folder {run_dir}: {reason}; {moved} moved to {aside.name}/; computing every chunk afresh",
             SweepWarning,
             stacklevel=4,
         )
@@ -289,11 +289,21 @@ def _discard_chunks(run_dir: Path, reason: str | None) -> None:
         warnings.warn(f"run folder {run_dir}: {reason}; starting afresh", SweepWarning, stacklevel=4)
 
 
+def start_afresh(run_dir: str | os.PathLike, reason: str) -> None:
+    """Let the next run in ``run_dir`` start afresh: its chunks moved aside to
+    ``chunks.discarded-N/`` (kept, never deleted; warned with ``reason``) and its manifest
+    removed (e.g. ``flexshaft montecarlo --force`` with other options than the folder's)."""
+    run_dir = Path(run_dir)
+    _discard_chunks(run_dir, reason, "its chunks were")
+    (run_dir / MANIFEST).unlink(missing_ok=True)
+
+
 def open_run(run_dir: Path, study: Study, fingerprint: str, chunk_size: int | None, default_chunk_size: int) -> int:
     """Create or check a run folder; returns the chunk size in force.
 
     A folder whose manifest reads and matches ``study`` resumes with its stored chunk size. A
-    manifest that reads but belongs to another study is refused (:class:`SweepError`). A
+    manifest that reads but belongs to another study is refused (:class:`~flexshaft.sweep.study.DifferentStudyError`;
+    :func:`start_afresh` moves its chunks aside). A
     missing or untrustworthy manifest starts the run afresh, its chunks moved aside.
     """
     manifest = run_dir / MANIFEST
@@ -305,9 +315,9 @@ def open_run(run_dir: Path, study: Study, fingerprint: str, chunk_size: int | No
         else:
             if stored["fingerprint"] != fingerprint:
                 name = stored["study"].get("name") if isinstance(stored["study"], dict) else None
-                raise SweepError(
-                    f"run folder {run_dir} holds a different study ({name!r}, fingerprint "
-                    f"{str(stored['fingerprint'])[:12]}); use a new folder to run this one"
+                held = f"{name!r}, fingerprint {str(stored['fingerprint'])[:12]}"
+                raise DifferentStudyError(
+                    f"run folder {run_dir} holds a different study ({held}); use a new folder to run this one", held
                 )
             if chunk_size is not None and chunk_size != stored["chunk_size"]:
                 raise SweepError(

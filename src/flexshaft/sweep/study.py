@@ -36,6 +36,16 @@ class SweepError(ValueError):
     """A study that cannot run: bad variable, value, output or run folder."""
 
 
+class DifferentStudyError(SweepError):
+    """The run folder holds the chunks of another study (other options, values or outputs):
+    they are never mixed with this one's (:func:`flexshaft.sweep.store.start_afresh` moves them
+    aside). ``held`` names the stored study (its name and fingerprint)."""
+
+    def __init__(self, message: str, held: str = "") -> None:
+        super().__init__(message)
+        self.held = held
+
+
 class SweepWarning(UserWarning):
     """Stored results that were not reused (named, with the reason) and are recomputed."""
 
