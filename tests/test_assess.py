@@ -47,11 +47,16 @@ def screening_assessment(design) -> Assessment:
 
 
 def _scan_speeds(a: Assessment) -> int:
-    """The spin-up response's scan speeds: its samples less the refined critical speeds added to
-    them (each a peak between the scan's samples, flexshaft.analyses.spinup_response.with_speeds)."""
+    """The spin-up response's scan speeds: its samples less those added to them
+    (flexshaft.analyses.spinup_response.with_speeds): the refined critical speeds (each a peak
+    between the scan's samples), the operating speed and the highest operating speed (where
+    the spin-up checks end)."""
     peaks = [c.speed for c in a.criticals.criticals if np.isfinite(c.amplification_factor)]
-    assert np.isin(peaks, a.spinup.speeds).all()
-    return int(np.count_nonzero(~np.isin(a.spinup.speeds, peaks)))
+    operating = a.model.design.operating
+    ends = [operating.speed_rad_s, operating.speed_limits[1]]
+    added = [*peaks, *ends]
+    assert np.isin(added, a.spinup.speeds).all()
+    return int(np.count_nonzero(~np.isin(a.spinup.speeds, added)))
 
 
 def test_the_size_estimate_counts_what_the_run_computes(report_assessment):

@@ -75,4 +75,4 @@ def test_no_critical_in_range_says_how_far_it_was_searched():
     verdict = assess(design, SCREENING).verdict
     check = verdict.check("separation")
     assert check.status == "pass" and "no resonance peak" in check.note
-    assert f"up to {1.3 * WN / 2:.6g} rad/s" in check.note, check.note
+    assert f"up to {rad_s_to_rpm(1.3 * WN / 2):.0f} rpm" in check.note, check.note

@@ -157,6 +157,8 @@ def _actuator_point(saturation=None):
         spinup=spinup,
         static_displacement=np.array([3e-6, 4e-6]),
         bearing_reactions={"A": NS(static_lateral=7.0)},
+        operating_speed=OMEGA,
+        design=NS(operating=NS(speed_range=None)),
     )
 
 
@@ -186,7 +188,12 @@ def test_gather_spinup_peak_station_and_a_smaller_refined_peak():
     spinup = NS(
         up_to=lambda s: np.flatnonzero(speeds <= s), shaft_peak=envelope.max(axis=0), envelope=envelope, speeds=speeds
     )
-    p = NS(spinup=spinup, operating_speed=30.0, model=NS(dofs=NS(shaft_x=np.array([0.0, 0.5, 1.0]))))
+    p = NS(
+        spinup=spinup,
+        operating_speed=30.0,
+        model=NS(dofs=NS(shaft_x=np.array([0.0, 0.5, 1.0]))),
+        design=NS(operating=NS(speed_range=None)),  # one operating speed: the spin-up ends at it
+    )
     smaller = NS(speed=15.0, location={"peak_orbit": 2.5, "station": 0.0})
     above = NS(speed=35.0, location={"peak_orbit": 50.0, "station": 1.0})  # beyond the operating speed
     out = gather._spinup_peak(p, [smaller, above])

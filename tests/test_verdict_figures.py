@@ -70,8 +70,13 @@ def test_actuator_figure_draws_what_the_actuator_checks_judge(assessed, jobs):
     top, bottom = fig.axes[:2]
     orbit, force = assessed.verdict.check("actuator_orbit"), assessed.verdict.check("actuator_force")
     point = orbit.location["point"]
-    op_rpm = rad_s_to_rpm(assessed.operating_speed)
+    # the spin-up checks end at the highest operating speed, shaded on both panels
+    low, high = assessed.point(point).evidence.operating_range
+    top_rpm = rad_s_to_rpm(high)
     for panel, check, scale in ((top, orbit, 1e3), (bottom, force, 1.0)):
+        (band,) = [p for p in panel.patches if str(p.get_label()).startswith("operating speed range")]
+        assert band.get_x() == pytest.approx(rad_s_to_rpm(low), rel=1e-12)
+        assert band.get_x() + band.get_width() == pytest.approx(top_rpm, rel=1e-12)
         findings = {f.location["actuator"]: f for f in check.findings if f.location["point"] == point}
         assert findings  # the figure shows the excursion check's point; the force has findings there too
         for name, finding in findings.items():
@@ -81,7 +86,7 @@ def test_actuator_figure_draws_what_the_actuator_checks_judge(assessed, jobs):
             assert x == pytest.approx(rad_s_to_rpm(finding.location["speed"]), rel=1e-9)
             (curve,) = _lines(panel, f"{name}: static + spin-up")
             xs, ys = np.asarray(curve.get_xdata()), np.asarray(curve.get_ydata())
-            assert ys[xs <= op_rpm * (1 + 1e-12)].max() == pytest.approx(finding.value * scale, rel=1e-9)
+            assert ys[xs <= top_rpm * (1 + 1e-12)].max() == pytest.approx(finding.value * scale, rel=1e-9)
             limit = [
                 line.get_ydata()[0] for line in panel.get_lines() if str(line.get_label()).startswith(("gap", "force"))
             ]

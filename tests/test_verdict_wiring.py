@@ -121,10 +121,18 @@ def test_the_onset_is_the_lowest_unstable_speed_of_both_checks(tracked, every_ro
     assert out["whirl_scope"] == 300.0
 
 
-def test_actuator_peaks_are_up_to_the_operating_speed_each_at_its_own_speed():
+#: One operating speed, and a speed range to 400 rad/s (its highest speed 4/3 × 300).
+ONE_SPEED, RANGE_TO_400 = NS(speed_range=None), NS(speed_range=(0.9, 4.0 / 3.0), speed_limits=(270.0, 400.0))
+
+
+@pytest.mark.parametrize(
+    ("operating", "expected"), [(ONE_SPEED, (3e-5, 200.0, 50.0, 100.0)), (RANGE_TO_400, (9e-5, 400.0, 90.0, 400.0))]
+)
+def test_actuator_peaks_are_up_to_the_highest_operating_speed_each_at_its_own_speed(operating, expected):
     """Orbit [0, 1, 3, 2, 9] × 1e-5 m and force [0, 50, 20, 10, 90] N over 0-400 rad/s, operating at
     300: the orbit peak 3e-5 m at 200 rad/s, the force peak 50 N at 100 rad/s (the overspeed
-    point at 400 rad/s is not part of the spin-up to the operating speed)."""
+    point at 400 rad/s is not part of the spin-up to the operating speed). With a speed range to
+    400 rad/s (the maximum continuous speed) the shaft runs there too: 9e-5 m and 90 N at 400."""
     actuator = NS(name="amb", lateral_rows=np.array([[3.0, 0.0], [0.0, 4.0]]), saturation_force=None)
     bearing = NS(gap=1e-3, force_capacity=500.0)
     spinup = _spinup(
@@ -136,19 +144,23 @@ def test_actuator_peaks_are_up_to_the_operating_speed_each_at_its_own_speed():
         spinup=spinup,
         static_displacement=np.array([1e-6, 1e-6]),
         bearing_reactions={"amb": NS(static_lateral=7.0)},
+        operating_speed=300.0,
+        design=NS(operating=operating),
     )
     (ev,) = gather._actuators(p)
-    assert (ev.peak_orbit, ev.orbit_speed, ev.peak_force, ev.force_speed) == (3e-5, 200.0, 50.0, 100.0)
+    assert (ev.peak_orbit, ev.orbit_speed, ev.peak_force, ev.force_speed) == expected
     assert ev.static_offset == pytest.approx(5e-6, rel=1e-15)  # |(3, 4)| × 1e-6 m
     assert (ev.static_force, ev.gap, ev.force_capacity) == (7.0, 1e-3, 500.0)
 
 
-def test_the_spinup_peak_counts_refined_criticals_below_the_operating_speed_only():
+def test_the_spinup_peak_counts_refined_criticals_below_the_highest_operating_speed_only():
     """Sampled peaks [0, 1, 2, 1.5, 5] × 1e-4 m; a refined critical at 150 rad/s (2.5e-4 m, between
     the samples) raises the peak below the operating speed 300; one at 350 rad/s (9e-4 m) lies
-    above it and does not count."""
+    above it and does not count, unless the speed range reaches 400 rad/s: then it does, and
+    so does the sample at 400 (5e-4 m) without it."""
     spinup = _spinup(shaft_peak=np.array([0.0, 1e-4, 2e-4, 1.5e-4, 5e-4]), envelope=np.eye(3, 5))
-    p = NS(spinup=spinup, operating_speed=300.0, model=NS(dofs=NS(shaft_x=np.array([0.0, 1.0, 2.0]))))
+    model = NS(dofs=NS(shaft_x=np.array([0.0, 1.0, 2.0])))
+    p = NS(spinup=spinup, operating_speed=300.0, model=model, design=NS(operating=ONE_SPEED))
     criticals = [
         NS(speed=350.0, location={"peak_orbit": 9e-4, "station": 1.5}),
         NS(speed=150.0, location={"peak_orbit": 2.5e-4, "station": 0.5}),
@@ -157,6 +169,15 @@ def test_the_spinup_peak_counts_refined_criticals_below_the_operating_speed_only
     assert out["spinup_peak"] == 2.5e-4 and out["spinup_location"]["speed"] == 150.0
     sampled = gather._spinup_peak(p, criticals[:1])
     assert sampled["spinup_peak"] == 2e-4 and sampled["spinup_location"] == {"station": 2.0, "speed": 200.0}
+    ranged = NS(spinup=spinup, operating_speed=300.0, model=model, design=NS(operating=RANGE_TO_400))
+    out = gather._spinup_peak(ranged, criticals)
+    assert out["spinup_peak"] == 9e-4 and (out["spinup_location"]["station"], out["spinup_location"]["speed"]) == (
+        1.5,
+        350.0,
+    )
+    sampled = gather._spinup_peak(ranged, [])
+    # (the envelope's column at 400 rad/s is zero at every node: its first station, 0.0)
+    assert sampled["spinup_peak"] == 5e-4 and sampled["spinup_location"] == {"station": 0.0, "speed": 400.0}
 
 
 @pytest.mark.parametrize(("material", "peak", "detail"), [(362.0, 362.0, "material"), (280.0, 320.0, "equilibrium")])

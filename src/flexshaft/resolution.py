@@ -21,8 +21,9 @@ Presets (:data:`RESOLUTIONS`, by name):
 * :data:`FINE`: twice the report's density, to check that its numbers have converged.
 
 Speed ranges are fractions of the operating speed Ω_op (1 rad/s when it is zero): the spin-up
-scan runs from a slow start to 30 % over Ω_op (the largest separation margin API 684 requires
-above it is 26 %), and it is also the range searched for lateral critical speeds; the whirl
+scan runs from a slow start to 30 % over Ω_op, or over the highest speed of the design's
+``[operating] speed_range`` (the largest separation margin API 684 requires above the maximum
+continuous speed is 26 %), and it is also the range searched for lateral critical speeds; the whirl
 stability runs from rest to 1.5 Ω_op, beyond the onset margins a requirement asks for.
 """
 
@@ -104,9 +105,12 @@ class Resolution:
                 f"{self.scan_bottom!r}, scan_top {self.scan_top!r}, whirl_top {self.whirl_top!r})"
             )
 
-    def spin_speeds(self, operating_speed: float) -> np.ndarray:
-        """The spin-up scan [rad/s] of a design turning at ``operating_speed`` [rad/s]."""
-        return np.linspace(self.scan_bottom, self.scan_top, self.spinup_speeds) * _reference(operating_speed)
+    def spin_speeds(self, operating_speed: float, highest: float = 1.0) -> np.ndarray:
+        """The spin-up scan [rad/s] of a design turning at ``operating_speed`` [rad/s] whose
+        highest operating speed is ``highest`` × it (``[operating] speed_range``): to
+        ``scan_top`` × the highest speed (API measures a critical above the range from it)."""
+        top = self.scan_top * max(float(highest), 1.0)
+        return np.linspace(self.scan_bottom, top, self.spinup_speeds) * _reference(operating_speed)
 
     def stability_speeds(self, operating_speed: float) -> np.ndarray:
         """Speeds of the whirl-stability analyses [rad/s] (the onset is solved between them)."""

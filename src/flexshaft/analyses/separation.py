@@ -120,10 +120,15 @@ class Separation:
     amplification_factor : float
         AF [-].
     position : {"below", "above"}
+        The critical speed lies below or above the operating speed.
     margin : float
-        Actual margin |N_c − N_op| / N_op [-].
+        Actual margin [-]: |N_c − N_ref| / N_ref from the reference speed N_ref, 0 inside the
+        operating speed range.
     required_margin : float
         Margin required for this AF [-].
+    reference_speed : float or None
+        N_ref [rad/s]: the lowest operating speed for a critical below, the highest for one
+        above (both N_op without a speed range); None: N_op.
     """
 
     critical_speed: float
@@ -132,6 +137,7 @@ class Separation:
     position: Position
     margin: float
     required_margin: float
+    reference_speed: float | None = None
 
     @property
     def passed(self) -> bool:
@@ -139,16 +145,36 @@ class Separation:
         return self.margin >= self.required_margin
 
 
-def api684_separation(critical_speed: float, amplification: float, operating_speed: float) -> Separation:
-    """Actual and required separation margin of one critical speed [rad/s] with its AF [-]."""
+def api684_separation(
+    critical_speed: float, amplification: float, operating_speed: float, speed_range: tuple[float, float] | None = None
+) -> Separation:
+    """Actual and required separation margin of one critical speed [rad/s] with its AF [-].
+
+    ``speed_range`` (lowest, highest) [rad/s] is the operating speed range (default: the
+    operating speed alone). API measures the margin of a critical below the range from its
+    lowest speed (the minimum operating speed) and of one above from its highest (the maximum
+    continuous speed); a critical inside the range has no separation (margin 0: it passes only
+    when its AF needs none).
+    """
+    low, high = (operating_speed, operating_speed) if speed_range is None else (float(v) for v in speed_range)
+    if not (np.isfinite(low) and np.isfinite(high) and 0.0 < low <= operating_speed <= high):
+        raise ValueError(
+            f"speed_range must hold the operating speed {operating_speed!r}: 0 < lowest <= it <= highest "
+            f"(got {speed_range!r})"
+        )
     position: Position = "below" if critical_speed < operating_speed else "above"
+    reference = low if position == "below" else high
+    margin = (
+        (reference - critical_speed) / reference if position == "below" else (critical_speed - reference) / reference
+    )
     return Separation(
         float(critical_speed),
         float(operating_speed),
         float(amplification),
         position,
-        separation_margin(critical_speed, operating_speed),
+        max(0.0, float(margin)),
         required_separation_margin(amplification, position),
+        float(reference),
     )
 
 

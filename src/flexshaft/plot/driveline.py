@@ -48,6 +48,7 @@ def imbalance_response_figure(
     *,
     log_y: bool = False,
     title: str = "Imbalance response",
+    speed_range_rpm: tuple[float, float] | None = None,
     ax=None,
 ) -> Figure:
     """Imbalance response amplitude against spin speed, one curve per named output.
@@ -67,6 +68,8 @@ def imbalance_response_figure(
         Logarithmic amplitude axis.
     title : str
         Axes title.
+    speed_range_rpm : (float, float), optional
+        The operating speed range [rpm], shaded (the spin-up checks end at its top).
     ax : matplotlib Axes, optional
         Draw into this axes.
 
@@ -77,14 +80,17 @@ def imbalance_response_figure(
     speeds = vector("speeds_rpm", speeds_rpm)
     fig, axes = new_figure(1, 1, (8.0, 4.8), ax=ax)
     ax = axes[0, 0]
+    positive = gap is not None and gap > 0  # something a log axis can show
     for name, values in amplitudes.items():
         amplitude_mm = magnitude(f"amplitudes[{name!r}]", values, speeds.size) * MM_PER_M
+        positive = positive or bool(np.any(amplitude_mm > 0.0))
         if log_y:
             amplitude_mm = np.where(amplitude_mm > 0.0, amplitude_mm, np.nan)
         ax.plot(speeds, amplitude_mm, label=name)
+    log_y = log_y and positive  # a zero response (a design without imbalance): a linear axis
     if gap is not None:
         ax.axhline(gap * MM_PER_M, color="k", ls="--", lw=1.2, label=f"auxiliary-bearing gap {gap * MM_PER_M:.3g} mm")
-    mark_operating(ax, operating_rpm)
+    mark_operating(ax, operating_rpm, speed_range_rpm=speed_range_rpm)
     if log_y:
         log_scale(ax)
     else:
@@ -219,6 +225,7 @@ def actuator_figure(
     static_offset: Mapping[str, float] | None = None,
     static_force: Mapping[str, float] | None = None,
     checked: Mapping[str, tuple[float, float, float, float]] | None = None,
+    speed_range_rpm: tuple[float, float] | None = None,
     ax=None,
 ) -> Figure:
     """Actuator (magnetic bearing) excursion and force against spin speed: static + spin-up
@@ -244,7 +251,10 @@ def actuator_figure(
         centred on the static position, so the excursion is static + dynamic (the dynamic part
         alone is drawn thin and dashed beside it). Omitted: 0.
     checked : mapping of str to (speed [rpm], excursion [m], speed [rpm], force [N]), optional
-        The peaks the actuator checks judge (static + spin-up, to the operating speed), marked.
+        The peaks the actuator checks judge (static + spin-up, to the highest operating speed),
+        marked.
+    speed_range_rpm : (float, float), optional
+        The operating speed range [rpm], shaded (the checks end at its top).
     ax : sequence of two matplotlib Axes, optional
         Excursion and force panels.
 
@@ -294,7 +304,7 @@ def actuator_figure(
         top.plot([orbit_rpm], [orbit * MM_PER_M], "D", color=colour, ms=7, mec="k", label=f"{name}: checked peak")
         bottom.plot([force_rpm], [force_value], "D", color=colour, ms=7, mec="k", label=f"{name}: checked peak")
     for panel, high in zip((top, bottom), highest):
-        mark_operating(panel, operating_rpm)
+        mark_operating(panel, operating_rpm, speed_range_rpm=speed_range_rpm)
         panel.set_ylim(0.0, 1.12 * high if high > 0 else 1.0)
         panel.legend(loc="best", fontsize=7.5, ncols=3)
     top.set_xlim(speeds.min(), speeds.max())

@@ -59,11 +59,13 @@ def bode_figure(
         raise ValueError("responses: at least one complex response is required")
     fig, axes = new_figure(2, 1, (8.0, 6.2), ax=ax, hspace=0.3)
     amp_ax, phase_ax = axes[0, 0], axes[1, 0]
+    positive = gap is not None and gap > 0  # something the log axis can show
     for name, values in responses.items():
         z = np.asarray(values, dtype=complex).ravel()
         if z.size != x.size:
             raise ValueError(f"responses[{name!r}]: expected {x.size} values to match the speed axis, got {z.size}")
         amplitude = np.abs(z) * MM_PER_M
+        positive = positive or bool(np.any(amplitude > 0))
         (line,) = amp_ax.plot(x, np.where(amplitude > 0, amplitude, np.nan), label=name)
         phase = np.degrees(np.unwrap(np.angle(z)))
         phase -= 360.0 * np.round(phase[np.flatnonzero(amplitude > 0)[0]] / 360.0) if np.any(amplitude > 0) else 0.0
@@ -74,7 +76,8 @@ def bode_figure(
         )
     for a in (amp_ax, phase_ax):
         mark_operating(a, operating_rpm, label=a is amp_ax)
-    log_scale(amp_ax)
+    if positive:  # else a zero response (a design without imbalance): a linear axis
+        log_scale(amp_ax)
     amp_ax.set_ylabel("amplitude [mm]")
     amp_ax.set_title(title)
     amp_ax.legend(loc="best", fontsize=7.5)

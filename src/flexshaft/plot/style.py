@@ -209,8 +209,22 @@ def magnitude(name: str, values: ArrayLike, size: int) -> NDArray[np.float64]:
     return array
 
 
-def mark_operating(ax: Axes, operating_rpm: float | None, label: bool = True) -> None:
-    """Vertical line at the operating speed [rpm], if given."""
+def mark_operating(
+    ax: Axes, operating_rpm: float | None, label: bool = True, speed_range_rpm: tuple[float, float] | None = None
+) -> None:
+    """Vertical line at the operating speed [rpm], if given; with ``speed_range_rpm`` (lowest,
+    highest) [rpm] the operating speed range shaded too (the spin-up checks end at its highest
+    speed, the separation margins are measured from its ends)."""
+    if speed_range_rpm is not None and speed_range_rpm[0] < speed_range_rpm[1]:
+        low, high = (float(v) for v in speed_range_rpm)
+        ax.axvspan(
+            low,
+            high,
+            color="tab:red",
+            alpha=0.1,
+            lw=0,
+            label=f"operating speed range {low:.0f}-{high:.0f} rpm" if label else None,
+        )
     if operating_rpm is not None:
         ax.axvline(
             operating_rpm,

@@ -55,6 +55,12 @@ class Figures:
         return self.add(stem, caption, plot_result, result, kind, **kwargs)
 
 
+def _speed_range_rpm(evidence) -> tuple[float, float] | None:
+    """The point's operating speed range [rpm] (None: one operating speed)."""
+    found = evidence.operating_range
+    return None if found is None else (rad_s_to_rpm(found[0]), rad_s_to_rpm(found[1]))
+
+
 def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -> Section:
     """The spin-up response: figures of the orbits, Bode plot, bearing orbits and actuators,
     tables of the actuator peaks and bearing loads."""
@@ -78,6 +84,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
             amps,
             op_rpm,
             log_y=True,
+            speed_range_rpm=_speed_range_rpm(a.evidence),
         )
     ]
     q = spinup.response
@@ -103,7 +110,9 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                 curves,
                 op_rpm,
                 min(act_gaps) if act_gaps else None,
-                title="Imbalance response at the actuators (Bode)",
+                title="Imbalance response at the actuators (Bode)"
+                if model.actuators
+                else "Imbalance response at the largest orbit (Bode)",
             )
         )
     reactions = a.bearing_reactions
@@ -141,6 +150,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                 spinup_shown.actuator_force,
                 {n: lim.gap for n, lim in limits.items() if lim.gap is not None} or None,
                 operating_rpm=op_rpm,
+                speed_range_rpm=_speed_range_rpm(point.evidence),
                 force_capacity={n: lim.force_capacity for n, lim in limits.items() if lim.force_capacity is not None}
                 or None,
                 static_offset={n: e.static_offset for n, e in evidence.items()},

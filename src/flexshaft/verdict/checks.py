@@ -45,6 +45,7 @@ from typing import Literal
 from flexshaft.analyses.separation import api684_separation
 from flexshaft.assembly.model import Model
 from flexshaft.design.requirements import Requirements
+from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.evidence import Evidence, Location
 from flexshaft.verdict.result import Check, Finding, Kind, Status, Verdict
 
@@ -208,19 +209,28 @@ def separation(ev: Evidence, req: Requirements) -> Check:
             *args,
             "pass",
             note="no resonance peak in the unbalance response"
-            + (f" up to {ev.critical_search_max_speed:.6g} rad/s" if ev.critical_search_max_speed else ""),
+            + (f" up to {rad_s_to_rpm(ev.critical_search_max_speed):.0f} rpm" if ev.critical_search_max_speed else ""),
         )
     findings = []
     for critical in ev.critical_speeds:
-        sep = api684_separation(critical.speed, critical.amplification_factor, ev.operating_speed)
+        sep = api684_separation(critical.speed, critical.amplification_factor, ev.operating_speed, ev.operating_range)
         location = {
             **critical.location,
             "speed": critical.speed,
             "amplification_factor": sep.amplification_factor,
             "position": sep.position,
+            "reference_speed": sep.reference_speed,
         }
         findings.append(_at_least(sep.margin, sep.required_margin, location))
-    return _from_findings(*args, findings, "margin as a fraction of the operating speed")
+    within = ev.operating_range is not None and ev.operating_range[0] < ev.operating_range[1]
+    return _from_findings(
+        *args,
+        findings,
+        "margin from the nearest end of the operating speed range (API: the minimum operating speed below "
+        "it, the maximum continuous speed above)"
+        if within
+        else "margin as a fraction of the operating speed",
+    )
 
 
 def _actuator_check(ev: Evidence, key: str) -> Check:

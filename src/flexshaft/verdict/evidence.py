@@ -146,6 +146,10 @@ class Evidence:
     ----------
     operating_speed : float
         Ω_op [rad/s].
+    operating_range : (float, float) or None
+        The lowest and highest operating speeds [rad/s] (``[operating] speed_range``; None:
+        Ω_op alone): the separation margins are measured from them, the spin-up peaks taken
+        up to the highest.
     safety_factor, safety_factor_location
         Minimum Tsai-Wu safety factor [-] and where it occurs.
     buckling_safety_factor, buckling_location
@@ -194,6 +198,7 @@ class Evidence:
     """
 
     operating_speed: float
+    operating_range: tuple[float, float] | None = None
     safety_factor: float | None = None
     safety_factor_location: Location = field(default_factory=dict)
     buckling_safety_factor: float | None = None

@@ -248,12 +248,12 @@ def _whirl(p: PointAnalyses) -> dict:
 
 
 def _actuators(p: PointAnalyses) -> tuple[ActuatorEvidence, ...]:
-    """The spin-up peaks (to the operating speed) of each active bearing, its static offset and
+    """The spin-up peaks (to the highest operating speed) of each active bearing, its static offset and
     force (the run's static reaction: the constraint force of an integrating law too), limits."""
     model = p.model
     spinup = p.spinup
     limits = actuator_limits(model)
-    up = spinup.up_to(model.speed)
+    up = spinup.up_to(_highest_speed(p))
     out = []
     for a in model.actuators:
         d = np.asarray(spinup.actuator_displacement[a.name])
@@ -307,10 +307,10 @@ def _temperature(p: PointAnalyses, notes: dict) -> dict:
 
 
 def _spinup_peak(p: PointAnalyses, criticals) -> dict:
-    """The largest shaft orbit of the spin-up to the operating speed and where; a sharp resonance
+    """The largest shaft orbit of the spin-up to the highest operating speed and where; a sharp resonance
     falls between the sampled speeds: its refined peak when that is larger."""
     spinup = p.spinup
-    speed = p.operating_speed
+    speed = _highest_speed(p)
     up = spinup.up_to(speed)
     peaks = spinup.shaft_peak
     if not up.size:
@@ -406,4 +406,27 @@ def gather_evidence(p: PointAnalyses) -> Evidence:
     values.update(_spinup_peak(p, found.criticals))
     values.update(_torsional(p, notes))
     values.update(_loops(p))
-    return Evidence(operating_speed=p.operating_speed, actuators=_actuators(p), notes=notes, **values)
+    return Evidence(
+        operating_speed=p.operating_speed,
+        operating_range=operating_range(p),
+        actuators=_actuators(p),
+        notes=notes,
+        **values,
+    )
+
+
+def _highest_speed(p: PointAnalyses) -> float:
+    """Where the spin-up checks end [rad/s]: the highest operating speed (the operating speed
+    without a ``speed_range``)."""
+    found = operating_range(p)
+    return p.operating_speed if found is None else found[1]
+
+
+def operating_range(p: PointAnalyses) -> tuple[float, float] | None:
+    """The lowest and highest operating speeds of the point [rad/s] (``[operating] speed_range``
+    of the design at the point); None at rest or without a range."""
+    operating = p.design.operating
+    if operating.speed_range is None or not p.operating_speed > 0.0:
+        return None
+    low, high = operating.speed_limits
+    return float(low), float(high)

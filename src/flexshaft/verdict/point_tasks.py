@@ -16,6 +16,7 @@ gearbox, the main rotor's harmonics; :func:`campbell_ceiling`).
 
 from __future__ import annotations
 
+import dataclasses
 from concurrent.futures import Executor
 
 import numpy as np
@@ -31,6 +32,7 @@ from flexshaft.analyses.spinup_response import SpinupResponse, spinup_response, 
 from flexshaft.analyses.stability import StabilityResult, stability
 from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.assembly import build_model
+from flexshaft.assembly.balance import design_eccentricity
 from flexshaft.assembly.model import Model
 from flexshaft.design import Design
 from flexshaft.parallel.tasks import Task, TaskRun, start_tasks
@@ -77,13 +79,51 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
     """The spin-up response over the resolution's scan and the lateral critical speeds on it
     (not yet labelled with the Campbell modes, computed in parallel)."""
     model = _model_of(source)
-    response = spinup_response(model, resolution.spin_speeds(model.speed))
-    criticals = scan_critical_speeds(
-        model, response.speeds, response.orbits, resolution.scan_top, responses=response.response, basis=response.basis
-    )
-    # the refined peaks as samples of the response: the actuators' orbit and force there too
+    highest = highest_speed_fraction(model)
+    response = spinup_response(model, resolution.spin_speeds(model.speed, highest))
+    top = resolution.scan_top * highest
+    if model.design is not None and not design_eccentricity(model.design) > 0.0:
+        criticals = _criticals_without_imbalance(model, top)
+    else:
+        criticals = scan_critical_speeds(
+            model, response.speeds, response.orbits, top, responses=response.response, basis=response.basis
+        )
+    # the refined peaks as samples of the response: the actuators' orbit and force there too;
+    # and the operating speed and the highest one, where the spin-up checks end
     peaks = [c.speed for c in criticals.criticals or () if np.isfinite(c.amplification_factor)]
-    return with_speeds(model, response, peaks), criticals
+    return with_speeds(model, response, [*peaks, model.speed, highest * model.speed]), criticals
+
+
+#: The mass eccentricity [m] the critical speeds of a design without imbalance are found with.
+UNIT_ECCENTRICITY = 1e-6
+
+
+def _criticals_without_imbalance(model: Model, top: float) -> CriticalSpeeds:
+    """The lateral critical speeds of a design without imbalance (``eccentricity = 0``, no
+    ``balance_grade``: its spin-up response is zero and has no peak). Its critical speeds still
+    exist and API still asks their separation: the response is linear in the eccentricity, so
+    the peaks' speeds and amplification factors do not depend on its size; they are found with
+    :data:`UNIT_ECCENTRICITY`, and the peak orbits of that eccentricity are dropped (the
+    spin-up checks read the design's own, zero, response)."""
+    assert model.design is not None
+    loads = model.design.loads.model_copy(update={"eccentricity": UNIT_ECCENTRICITY, "balance_grade": None})
+    unit = dataclasses.replace(model, design=model.design.model_copy(update={"loads": loads}))
+    found = scan_critical_speeds(unit, np.zeros(0), None, top)
+    if found.criticals is None:
+        return found
+    kept = tuple(
+        dataclasses.replace(c, location={k: v for k, v in c.location.items() if k != "peak_orbit"})
+        for c in found.criticals
+    )
+    return dataclasses.replace(found, criticals=kept)
+
+
+def highest_speed_fraction(model: Model) -> float:
+    """The highest operating speed as a fraction of the operating speed (``[operating]
+    speed_range``; 1 without one): the spin-up checks run to it, the separation margins of the
+    criticals above the range are measured from it."""
+    operating = None if model.design is None else model.design.operating
+    return 1.0 if operating is None or operating.speed_range is None else max(1.0, float(operating.speed_range[1]))
 
 
 def campbell_ceiling(model: Model, resolution: Resolution) -> float:
