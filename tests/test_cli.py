@@ -338,7 +338,7 @@ def test_run_strict_exits_3_on_a_failing_design_and_reports_the_verdict_first(tm
     assert verdict["passed"] is False
     assert [c["key"] for c in verdict["checks"] if c["status"] == "fail"] == ["tsai_wu"]
     tsai_wu = verdict["checks"][0]
-    assert tsai_wu["limit"] == 100.0 and tsai_wu["margin"] < 0 and tsai_wu["location"]["station"] > 0
+    assert tsai_wu["limit"] == 100.0 and tsai_wu["margin"] < 0 and tsai_wu["location"]["station_m"] > 0
     assert tsai_wu["value"] == pytest.approx(data["strength_static_plus_imbalance"]["safety_factor"])
 
     page = (out / "report.html").read_text(encoding="utf-8")

@@ -40,19 +40,21 @@ def _strength(safety_factor, x, ply, stresses):
     )
 
 
-def _assessment():
+def _assessment(points=("operating point",), point_power=150e3):
     design = NS(
         name="stand-in",
         shaft=NS(x_start=0.0, x_end=4.0, outer_diameter=0.1016, wall_thickness=0.00325, layup="(55/-55)s"),
-        operating=NS(main_rotor_frequencies=dict),
+        operating=NS(main_rotor_frequencies=dict, speed_rad_s=_rad_s(6000.0), power=150e3),
         requirements=NS(min_safety_factor=1.5),
     )
     dofs = NS(shaft_x=np.zeros(2), n_boom_nodes=0, values=lambda q, member, which: np.zeros(2))
+    # the design at the governing point (another object, as the verdict's design_at_point makes)
+    at_point = design if point_power == 150e3 else NS(**{**vars(design), "name": "stand-in at the point"})
     model = NS(
-        design=design,
+        design=at_point,
         dofs=dofs,
         speed=_rad_s(6000.0),
-        power=150e3,  # 150 kW
+        power=point_power,  # the governing point's (150 kW: the design's own)
         bearings=[],
         internal_damping="thesis",
     )
@@ -78,17 +80,18 @@ def _assessment():
         torque_factor=1.0,
         bearing_loops=None,  # no magnetic bearing: no loop section
     )
-    only = NS(name="operating point", analyses=analyses)
+    judged = [NS(name=name, analyses=analyses) for name in points]
     return NS(
+        design=design,
         model=model,
         verdict=NS(check=_no_check),
         campbell=NS(critical_speeds=criticals),
         modes_at_rest=None,
         modes_at_speed=None,
         evidence=NS(critical_speeds=()),
-        points=[only],
-        point=lambda name: only,
-        governing_point="operating point",
+        points=judged,
+        point=lambda name: next(p for p in judged if p.name == name),
+        governing_point=points[-1],
         static_displacement=None,
         strength_static=analyses.strength_static,
         strength_total=analyses.strength_total,
@@ -148,6 +151,21 @@ def test_design_summary_in_mm_and_kw(sections):
     key = {row[0]: row[1] for row in summary.tables[0].rows}
     assert key["E* storage [GPa] / loss factor"] == "30.000 / 0.0100"
     assert key["G* storage [GPa] / loss factor"] == "4.000 / 0.0200"
+
+
+def test_the_summary_gives_the_designs_own_speed_and_power_and_names_the_governing_point(monkeypatch, tmp_path):
+    """Was: the summary (and the title) gave the governing point's power as the design's (the
+    tuned design's hot-soak start, a 75 kW ground run, titled its 246 kW design "75 kW"). The
+    design's 150 kW heads the summary; the point's 75 kW is named with the point, and the key
+    numbers read at it say so."""
+    a = _assessment(points=("cruise", "ground_run"), point_power=75e3)
+    summary = {s.title: s for s in _plan(monkeypatch, a, tmp_path).sections}["Design summary"]
+    (paragraph,) = summary.paragraphs
+    assert "layup (55/-55)s; 6000 rpm, 150 kW. " in paragraph
+    assert paragraph.endswith("The analyses below are at the governing point, ground_run: 6000 rpm, 75 kW.")
+    key = {row[0]: row[1] for row in summary.tables[0].rows}
+    assert key["torque at ground_run [N m]"] == 1000.0 and "E* storage at ground_run [GPa] / loss factor" in key
+    assert _plan(monkeypatch, a, tmp_path).title == "flexshaft report: stand-in"
 
 
 def test_critical_speeds_up_to_125_percent_with_modes_from_1(sections):

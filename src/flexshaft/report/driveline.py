@@ -100,21 +100,31 @@ def plan_run_report(
     )
     sections.append(replace(section, figures=[*section.figures, ref]))
     if design_text is None:
-        if design == baseline_design():
+        if a.design == baseline_design():
             design_text, design_source = baseline_text(), "embedded thesis baseline"
-    sections.append(inputs_section(design, design_text, design_source))
+    sections.append(inputs_section(a.design, design_text, design_source))
 
     bearings = [
         [b.name, b.kind, b.x_shaft, b.x_boom if b.x_boom is not None else "ground", b.offset] for b in model.bearings
     ]
+    # the design as written heads the summary; the analyses below are the governing point's
+    at_point, where = "", ""
+    if len(a.points) > 1:
+        where = f" at {a.governing_point}"
+        at_point = (
+            f" The analyses below are at the governing point, {a.governing_point}: {op_rpm:.0f} rpm, "
+            f"{model.power / 1e3:.0f} kW."
+        )
     sections.append(
         Section(
             "Design summary",
             paragraphs=[
-                f"{design.name}. Shaft {design.shaft.x_start:g}–{design.shaft.x_end:g} m, "
-                f"D_o = {m_to_mm(design.shaft.outer_diameter):.1f} mm, "
-                f"wall {m_to_mm(design.shaft.wall_thickness):.2f} mm, "
-                f"layup {design.shaft.layup or 'isotropic'}; {op_rpm:.0f} rpm, {model.power / 1e3:.0f} kW."
+                f"{a.design.name}. Shaft {a.design.shaft.x_start:g}–{a.design.shaft.x_end:g} m, "
+                f"D_o = {m_to_mm(a.design.shaft.outer_diameter):.1f} mm, "
+                f"wall {m_to_mm(a.design.shaft.wall_thickness):.2f} mm, "
+                f"layup {a.design.shaft.layup or 'isotropic'}; "
+                f"{rad_s_to_rpm(a.design.operating.speed_rad_s):.0f} rpm, {a.design.operating.power / 1e3:.0f} kW."
+                + at_point
             ],
             tables=[
                 Table(
@@ -124,14 +134,14 @@ def plan_run_report(
                         ["shaft mass [kg]", s["shaft_mass_kg"]],
                         ["total mass (shaft, boom, end mass) [kg]", s["total_mass_kg"]],
                         [
-                            "E* storage [GPa] / loss factor",
+                            f"E* storage{where} [GPa] / loss factor",
                             f"{s['shaft_E_storage_Pa'] / 1e9:.3f} / {s['shaft_E_loss_factor']:.4f}",
                         ],
                         [
-                            "G* storage [GPa] / loss factor",
+                            f"G* storage{where} [GPa] / loss factor",
                             f"{s['shaft_G_storage_Pa'] / 1e9:.3f} / {s['shaft_G_loss_factor']:.4f}",
                         ],
-                        ["torque [N m]", s["torque_Nm"]],
+                        [f"torque{where} [N m]", s["torque_Nm"]],
                         ["free DOFs", s["free_dofs"]],
                     ],
                 ),
@@ -338,7 +348,7 @@ def plan_run_report(
         sections.append(section)
     if data["notes"]:
         sections.append(Section("Notes", paragraphs=list(data["notes"])))
-    return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(design)}", design.name)
+    return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(a.design)}", a.design.name)
 
 
 def campbell_orders(model) -> dict[str, float]:

@@ -11,8 +11,9 @@ report (:mod:`flexshaft.report.verdict`) converts and prints them.
 from __future__ import annotations
 
 import html
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
@@ -22,7 +23,7 @@ from flexshaft.units import format_quantity
 from flexshaft.verdict.evidence import Location
 from flexshaft.verdict.text import VERDICT_COLUMNS, location_text, verdict_headline, verdict_rows
 
-__all__ = ["Check", "Finding", "Kind", "SI_UNITS", "Status", "Verdict"]
+__all__ = ["Check", "Finding", "Kind", "LOCATION_UNITS", "SI_UNITS", "Status", "Verdict", "location_with_units"]
 
 
 #: Outcome of one check.
@@ -53,6 +54,16 @@ _STATUS_STYLE = {
 }
 
 
+#: The SI unit of each numeric key of a location, written into its key in a results file
+#: (``speed_rad_s``; the CLI's ``--json`` promises each unit in its key).
+LOCATION_UNITS = {"speed": "rad_s", "frequency": "rad_s", "station": "m", "peak_orbit": "m", "reference_speed": "rad_s"}
+
+
+def location_with_units(location: Mapping[str, Any]) -> dict:
+    """``location`` for a results file: each key of :data:`LOCATION_UNITS` with its unit."""
+    return {(f"{k}_{LOCATION_UNITS[k]}" if k in LOCATION_UNITS else k): v for k, v in location.items()}
+
+
 @dataclass(frozen=True)
 class Finding:
     """One instance of a requirement (one mode, one critical, one actuator...).
@@ -79,7 +90,7 @@ class Finding:
             "margin": self.margin,
             "passed": self.passed,
             "lower_bound": self.lower_bound,
-            "location": dict(self.location),
+            "location": location_with_units(self.location),
         }
 
 
@@ -142,7 +153,7 @@ class Check:
             "limit": self.limit,
             "margin": self.margin,
             "lower_bound": self.lower_bound,
-            "location": dict(self.location),
+            "location": location_with_units(self.location),
             "note": self.note,
             "findings": [f.to_dict() for f in self.findings],
         }
