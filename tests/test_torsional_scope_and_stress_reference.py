@@ -8,7 +8,7 @@
   kg/m³, 2.7e-6 of J) by Rayleigh's quotient on the linear twist, ω² = k/(J + J_s/3) (a shift
   of 4.5e-7; what is left is of order (J_s/J)² ~ 1e-11 and the solver's round-off, 1e-13
   measured; asserted to 3e-7 as tests/test_torsional.py), above twice the highest excitation
-  (the 3/rev of the rotor, 3Ω/(2n) = 75 Hz at 3000 rpm, so 150 Hz). That mode is still
+  (the 3/rev of the rotor, 3Ω/(2πn) = 75 Hz at 3000 rpm, so 150 Hz). That mode is still
   reported, against the 3/rev, with the margin f/75 Hz − 1 (the rule above a band,
   m = f_n/f_hi − 1).
 * **The governing element is the one of the largest stress, not of the largest torque.** The
