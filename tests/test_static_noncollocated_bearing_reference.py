@@ -97,6 +97,8 @@ def test_the_verdicts_static_offset_is_the_deflection_at_the_magnet(rotors):
         spinup=spinup,
         static_displacement=static_response(held, _load(held), speed=0.0),
         bearing_reactions={name: NS(static_lateral=0.0)},
+        operating_speed=held.speed,
+        design=held.design,  # its [operating]: the spin-up checks end at its highest speed
     )
     (evidence,) = gather._actuators(p)
     offset = np.hypot(_superposed(bare, 0)[1], _superposed(bare, 1)[1])
