@@ -16,7 +16,7 @@ plane's (334 < 437): ``track_modes`` numbers the first speed's modes by damped f
 dampers go (``campbell``'s docstring: ``damped`` includes the bearing dampers), so the v plane's
 root is iω_n = 437.4i with Re s = 0.
 
-Tolerance 1e-5 relative (the tube's 7e-6 share of the disk's mass; measured 1e-6). Three speeds,
+Tolerance 1e-5 relative (the tube's 3.5e-6 share of the disk's mass; measured 1e-6). Three speeds,
 two modes: about 0.03 s of CPU.
 """
 
@@ -48,7 +48,7 @@ def test_modes_are_numbered_by_damped_frequency(model):
     assert c.eigenvalues[:, 0] == pytest.approx(np.full(3, sv), rel=1e-5)
     assert c.eigenvalues[:, 1].imag == pytest.approx(np.full(3, WW), rel=1e-5)
     assert np.abs(c.eigenvalues[:, 1].real).max() <= 1e-9 * WW
-    assert modes(model, 0.0, n_modes=2).eigenvalues == pytest.approx(c.eigenvalues[0], rel=1e-5)
+    assert modes(model, 0.0, n_modes=2).eigenvalues == pytest.approx([sv, 1j * WW], rel=1e-5, abs=1e-9 * WW)
 
 
 def test_the_undamped_diagram_has_no_dampers(model):

@@ -5,9 +5,10 @@
    speed is nearest, if that one is within 3 % of the peak's speed (its docstring and
    ``lateral_critical_speeds``'s: "nearest (within 3 %)"), as "<mode from 1> (<whirl>)". A
    hand-built Campbell diagram with critical speeds at 70 rad/s (mode 0, forward) and 125 rad/s
-   (mode 1, backward): a peak at 72 rad/s is 2/70 = 2.9 % from the first (and 42 % from the
-   second): "1 (forward)"; a peak at 120 rad/s is 5/125 = 4.0 % from the second: no label. A
-   peak at 100 rad/s is 30 % and 20 % away from them: no label.
+   (mode 1, backward), distances relative to the peak's speed as the code measures them: a peak
+   at 72 rad/s is 2/72 = 2.8 % from the first (and 74 % from the second): "1 (forward)"; a peak
+   at 120 rad/s is 5/120 = 4.2 % from the second: no label. A peak at 100 rad/s is 30 % and 25 %
+   away from them: no label.
 
 2. ``scan_critical_speeds`` at a zero operating speed: no scan (its speeds would all be 0), so
    no critical speeds (None, not an empty tuple: nothing was searched) with the note "the

@@ -4,9 +4,8 @@ modes nearest a frequency, against closed forms (mutation hunt h35a).
 1. Default ``damped=True``. tests/rotors.py's Jeffcott rotor (20 kg disk at midspan of a
    near-massless pinned-pinned tube, k = 48EI/L³) with a dashpot c_e at the disk, no loss:
    the disk obeys m s² + c_e s + k = 0, so s = −c_e/(2m) + i√(k/m − (c_e/2m)²) with ζ = 0.2
-   (derived; the undamped problem would give s = i√(k/m)). Tolerance 1e-4 relative: the tube's
-   7e-6 share of the disk's mass (the same rotor is asserted at 1e-4 in
-   tests/test_campbell_jeffcott_reference.py).
+   (derived; the undamped problem would give s = i√(k/m)). Tolerance 1e-5 relative: the tube's
+   3.5e-6 share of the disk's mass (measured 8.8e-7).
 
 2. A divergent root. tests/jeffcott_bearing.py's rotor with a magnetic bearing at the disk
    whose negative stiffness k_s = 4e6 N/m beats the tube and the law's static stiffness
@@ -45,8 +44,8 @@ def test_modes_are_damped_by_default():
     m = modes(jeffcott(0.0, C_E), n_modes=2)
     a = C_E / (2 * M_DISK)
     s = complex(-a, np.sqrt(K_SHAFT / M_DISK - a * a))
-    assert m.eigenvalues == pytest.approx([s, s], rel=1e-4)
-    assert m.damping_ratios == pytest.approx([ZETA, ZETA], rel=1e-4)
+    assert m.eigenvalues == pytest.approx([s, s], rel=1e-5)
+    assert m.damping_ratios == pytest.approx([ZETA, ZETA], rel=1e-5)
 
 
 @pytest.fixture(scope="module")
