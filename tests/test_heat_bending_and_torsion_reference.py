@@ -5,15 +5,18 @@ loss factor eta has E* = E(1 + i eta), G* = G(1 + i eta), so K'' = eta K and the
 harmonic amplitude X cycled at omega is (omega/2) X^H K'' X = omega eta U(X) with the elastic
 strain energy U = X^H K X / 2 (thesis eq. 2.60). Take shapes the elements represent exactly:
 
-* bending, Euler-Bernoulli (shear deformation off): a quadratic deflection v = A x^2 is a cubic,
-  exact in the Hermite elements, with v'' = 2A, so over the shaft length L
-  U = (EI/2) int (v'')^2 dx = 2 EI A^2 L. The nodal slopes are the derivatives of the deflection:
-  gamma = dv/dx, beta = -dw/dx (the flexshaft convention (gamma, -beta) = d(v, w)/dx).
-  - thesis model, static deflection v = A x^2 (cycled as a vibration at Omega):
-    P = Omega eta U = 2 Omega eta EI A^2 L;
+* bending, Euler-Bernoulli (shear deformation off): the quadratic deflection s(x) = A x (x - L),
+  zero at both pinned ends as a real deflection of the shaft is, is exact in the cubic Hermite
+  elements, with s'' = 2A, so over the shaft length L U = (EI/2) int (s'')^2 dx = 2 EI A^2 L per
+  bent plane. The nodal slopes are the derivatives of the deflection, ds/dx = A (2x - L):
+  gamma = dv/dx, beta = -dw/dx (the flexshaft convention (gamma, -beta) = d(v, w)/dx); with the
+  wrong sign of beta the elements would bend w into another shape with another energy.
+  - thesis model, a static deflection in v, in w, or in both (v = w = s: U of both planes, the
+    planes uncoupled in an isotropic tube) cycled as a vibration at Omega: P = Omega eta U,
+    2 Omega eta EI A^2 L per bent plane;
   - rotating model, the same static deflection becomes a circular orbit of the same radius at
     Omega (every fibre passes the extreme strain each turn): twice that, 4 Omega eta EI A^2 L;
-  - a circular whirl of radius A x^2 (v = A x^2, w = -/+ i A x^2 with consistent slopes): the
+  - a circular whirl of radius |s| (v = s, w = -/+ i s with consistent slopes): the
     thesis model sees both planes at Omega, P = Omega eta (2 U) = 4 Omega eta EI A^2 L; the
     rotating model freezes the forward whirl (P = 0) and cycles the backward one at 2 Omega,
     P = 2 Omega eta (2 U) = 8 Omega eta EI A^2 L.
@@ -40,7 +43,7 @@ E, G, ETA, LENGTH = 70e9, 26e9, 0.02, 2.0
 DO, DI = 0.05, 0.046
 I = np.pi * (DO**4 - DI**4) / 64
 J = np.pi * (DO**4 - DI**4) / 32
-A = 1e-4  # [1/m]: v = A x^2
+A = 1e-4  # [1/m]: s = A x (x - L)
 OMEGA = 3000.0 * 2 * np.pi / 60
 
 
@@ -50,22 +53,32 @@ def model():
 
 
 def whirl(model, sense: complex) -> np.ndarray:
-    """v = A x^2, w = sense * v, slopes gamma = dv/dx, beta = -dw/dx."""
+    """v = s, w = sense * s, slopes gamma = dv/dx, beta = -dw/dx."""
     return field_vector(
-        model,
-        {
-            "v": lambda x: A * x**2,
-            "gamma": lambda x: 2 * A * x,
-            "w": lambda x: sense * A * x**2,
-            "beta": lambda x: -sense * 2 * A * x,
-        },
+        model, {"v": shape, "gamma": slope, "w": lambda x: sense * shape(x), "beta": lambda x: -sense * slope(x)}
     )
 
 
-def test_static_bending_heat_is_the_closed_form_strain_energy(model):
+def shape(x):
+    return A * x * (x - LENGTH)  # s = A x (x - L): zero at the pinned ends
+
+
+def slope(x):
+    return A * (2 * x - LENGTH)  # ds/dx
+
+
+PLANES = {
+    "v": {"v": shape, "gamma": slope},
+    "w": {"w": shape, "beta": lambda x: -slope(x)},
+    "v and w": {"v": shape, "gamma": slope, "w": shape, "beta": lambda x: -slope(x)},
+}
+
+
+@pytest.mark.parametrize("planes", PLANES)
+def test_static_bending_heat_is_the_closed_form_strain_energy(model, planes):
     zero = np.zeros(model.dofs.size, dtype=complex)
-    bend = field_vector(model, {"v": lambda x: A * x**2, "gamma": lambda x: 2 * A * x}).real
-    energy = 2 * E * I * A**2 * LENGTH  # U of v = A x^2
+    bend = field_vector(model, PLANES[planes]).real
+    energy = 2 * E * I * A**2 * LENGTH * (2 if planes == "v and w" else 1)  # U of the bent planes
     thesis = heat_sources(model, "thesis", zero, bend).static.sum()
     rotating = heat_sources(model, "rotating", zero, bend).static.sum()
     assert thesis == pytest.approx(OMEGA * ETA * energy, rel=1e-10)
