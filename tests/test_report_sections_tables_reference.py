@@ -50,7 +50,7 @@ def _imbalance(tmp_path):
             gap=5.0e-4,  # 0.5 mm
         )
     }
-    a = NS(model=model, spinup=spinup, bearing_reactions=reactions)
+    a = NS(model=model, spinup=spinup, bearing_reactions=reactions, evidence=NS(operating_range=None))
     data = {
         "imbalance": {
             "actuator_max_displacement_m": {"amb_1": 2.5e-4},
@@ -120,7 +120,9 @@ def test_bode_curve_of_the_largest_orbit_at_the_operating_speed(tmp_path):
         }
     }
     figs = Figures(tmp_path)
-    imbalance_section(NS(model=model, spinup=spinup, bearing_reactions={}), figs, data, 6000.0)
+    imbalance_section(
+        NS(model=model, spinup=spinup, bearing_reactions={}, evidence=NS(operating_range=None)), figs, data, 6000.0
+    )
     (job,) = [j for j in figs.jobs if j.stem == "imbalance_bode"]
     curves = job.args[1]
     assert list(curves) == ["largest orbit at 6000 rpm (x = 1.00 m), v, case 2"]

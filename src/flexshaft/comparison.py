@@ -216,9 +216,7 @@ class Comparison(ResultMixin):
         out.append(self._from_checks("buckling", "torsional buckling safety factor", "1", ("buckling",)))
         out.append(self._critical("critical_below", "highest lateral critical below the operating speed", below=True))
         out.append(self._critical("critical_above", "lowest lateral critical above the operating speed", below=False))
-        out.append(
-            self._from_checks("separation", "smallest separation margin (fraction of Ω_op)", "1", ("separation",))
-        )
+        out.append(self._from_checks("separation", "smallest API 684 separation margin", "1", ("separation",)))
         out.append(self._from_checks("whirl_onset", "whirl onset speed", "rad/s", ("whirl_onset",)))
         out.append(self._from_checks("log_decrement", "smallest log decrement at Ω_op", "1", ("whirl_damping",)))
         out.append(
