@@ -14,7 +14,10 @@ not.
 Numbers (tests/jeffcott_bearing.py): k_i = 100 N/A, k_p = 5e3 A/m, k_s = 2e5 N/m, so
 k_i k_p − k_s = 3e5 N/m; with k_p = 1e3 A/m, 1e5 − 2e5 < 0: 0. A rigid unit translation of the
 shaft in v (d_a = (1, 0)) then stores qᵀ K_p q = 3e5 N/m in the model's basis stiffness matrix.
-Products of binary-exact decimals: 1e-12 relative asserted. Cheap: four 4-element models.
+A unit v at the magnet's node alone stores the same (module below: it tells the magnet's rows
+from the sensor's). The clip to 0 of a negative spring is the code's documented convention (the
+basis problem must stay positive semi-definite), not physics. Products of binary-exact decimals:
+1e-12 relative asserted. Cheap: four 4-element models.
 
 Written for the mutation h35c-model-basis-stiffness-ks-sign of scripts/mutations.toml.
 """
@@ -42,3 +45,10 @@ def test_the_basis_stiffness_is_the_static_stiffness(sensor, kp, expected):
     q = np.zeros(model.dofs.size)
     q[model.dofs.values(np.arange(model.dofs.size), "shaft", "v")] = 1.0  # rigid unit translation in v
     assert q @ (model.Kp @ q) == pytest.approx(expected, rel=1e-12, abs=1e-12)
+    # a unit v at the magnet's node alone (slopes 0): the spring acts on the magnet's own
+    # displacement, qᵀK_p q = k (B_a q)² = k. A remote sensor 0.125 m away, mid-element of the
+    # 0.25 m elements, would read the Hermite value 1/2 there (N₁(½) = 1/2): a basis built on
+    # B_aᵀB_s instead of B_aᵀB_a would store k/2 (a review: the rigid translation reads 1 at both)
+    at_magnet = np.asarray(actuator.lateral_rows[0].toarray()).ravel()
+    assert np.count_nonzero(at_magnet) == 1 and at_magnet.max() == 1.0
+    assert at_magnet @ (model.Kp @ at_magnet) == pytest.approx(expected, rel=1e-12, abs=1e-12)

@@ -13,8 +13,9 @@
   or a bearing reaches the next station's, so at most 2 · 11 − 1 = 21, and more than the
   boom-less 7 (17 measured on the boomed test rotor). An estimate is
   useful when it neither undercounts the band (k ≥ measured) nor doubles it (k ≤ 2 measured).
-  Only ratios are asserted, so the constant factors of the estimate do not enter:
-  - banded memory 16 F (3k + 1) bytes (per solve): per free DOF, the boomed design over the
+  The memory is also bounded absolutely (below: LAPACK's band storage); otherwise ratios, so
+  the constant factors of the estimate do not enter:
+  - banded memory 16 F (3k + 1) bytes a band array (the estimate counts two): per free DOF, the boomed design over the
     boom-less one is (3 k_b + 1)/(3 k_s + 1), within a factor 2 of the measured widths' ratio;
   - banded LU time ∝ F k² (band Gaussian elimination costs about 2 n p q flops for bandwidths
     p, q: Golub & Van Loan, Matrix Computations, §4.3): the increment of
@@ -139,6 +140,18 @@ def test_the_banded_memory_per_dof_follows_the_measured_band(designs, measured):
     k_s, k_b = measured
     true = (3 * k_b + 1) / (3 * k_s + 1)
     assert true / 2 <= ratio <= 2 * true
+
+
+def test_the_banded_memory_holds_one_lapack_band_of_the_measured_width(designs, measured):
+    """Absolute, not a ratio (a review: scaling both estimated widths alike passed the ratio):
+    LAPACK's zgbsv stores a band of kl = ku = k in LDAB = 2 kl + ku + 1 = 3k + 1 rows of N complex
+    numbers, 16 bytes each (LAPACK Users' Guide, "Band storage"). The solver holds at least that
+    for the measured k, and an estimate that neither undercounts nor doubles the band holds at
+    most two such arrays (the band and its factor) of twice the measured width."""
+    for design, k in zip(designs, measured):
+        size = _size(design)
+        band = 16.0 * size.free_dofs
+        assert band * (3 * k + 1) <= size.memory["banded harmonic solver"] <= 2 * band * (3 * 2 * k + 1)
 
 
 def test_the_banded_solve_time_grows_with_the_square_of_the_measured_band(measured):
