@@ -83,7 +83,7 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
     response = spinup_response(model, resolution.spin_speeds(model.speed, highest))
     top = resolution.scan_top * highest
     if model.design is not None and not design_eccentricity(model.design) > 0.0:
-        criticals = _criticals_without_imbalance(model, top)
+        criticals = _criticals_without_imbalance(model, response.speeds, top)
     else:
         criticals = scan_critical_speeds(
             model, response.speeds, response.orbits, top, responses=response.response, basis=response.basis
@@ -98,17 +98,18 @@ def _spinup(source: Model | Design, resolution: Resolution) -> tuple[SpinupRespo
 UNIT_ECCENTRICITY = 1e-6
 
 
-def _criticals_without_imbalance(model: Model, top: float) -> CriticalSpeeds:
+def _criticals_without_imbalance(model: Model, speeds: np.ndarray, top: float) -> CriticalSpeeds:
     """The lateral critical speeds of a design without imbalance (``eccentricity = 0``, no
     ``balance_grade``: its spin-up response is zero and has no peak). Its critical speeds still
     exist and API still asks their separation: the response is linear in the eccentricity, so
     the peaks' speeds and amplification factors do not depend on its size; they are found with
-    :data:`UNIT_ECCENTRICITY`, and the peak orbits of that eccentricity are dropped (the
-    spin-up checks read the design's own, zero, response)."""
+    :data:`UNIT_ECCENTRICITY` on the design's own scan ``speeds`` [rad/s], and the peak orbits
+    of that eccentricity are dropped (the spin-up checks read the design's own, zero, response)."""
     assert model.design is not None
     loads = model.design.loads.model_copy(update={"eccentricity": UNIT_ECCENTRICITY, "balance_grade": None})
     unit = dataclasses.replace(model, design=model.design.model_copy(update={"loads": loads}))
-    found = scan_critical_speeds(unit, np.zeros(0), None, top)
+    scan = spinup_response(unit, speeds)  # the design's scan speeds, projected as its own
+    found = scan_critical_speeds(unit, scan.speeds, scan.orbits, top, responses=scan.response, basis=scan.basis)
     if found.criticals is None:
         return found
     kept = tuple(
