@@ -200,7 +200,10 @@ class Modes(ResultMixin):
                 f"mode {k + 1}: {self.frequencies[k]:.2f} Hz ({ratio}{self.whirl[k]})\n"
                 f"{self.kind[k]}, {self.component[k]}, δ = {delta[k]:.3g}"
             )
-            shaft.append({"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]})
+            shape = {"label": label, "v": phi[dm.shaft(ns, "v")], "w": phi[dm.shaft(ns, "w")]}
+            if self.kind[k] in ("torsional", "axial"):  # its lateral v, w are round-off: draw what moves
+                shape["along"] = (self.kind[k], phi[dm.shaft(ns, "theta" if self.kind[k] == "torsional" else "u")])
+            shaft.append(shape)
             if dm.n_boom_nodes:
                 boom.append({"v": phi[dm.boom(nb, "v")], "w": phi[dm.boom(nb, "w")]})
         if modes is None and f_spin > 0:

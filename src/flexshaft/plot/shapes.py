@@ -97,6 +97,40 @@ def _normalise(parts: list[np.ndarray]) -> list[np.ndarray]:
     return [p / scale for p in parts]
 
 
+def _draw_lateral(ax, x, shape, bx, boom, k: int) -> None:
+    """The two planes of a lateral mode, scaled by its largest orbit radius (and the boom's)."""
+    parts = [np.asarray(shape["v"], dtype=complex).ravel(), np.asarray(shape["w"], dtype=complex).ravel()]
+    if parts[0].size != x.size or parts[1].size != x.size:
+        raise ValueError(f"shapes[{k}]: v and w need {x.size} values like shaft_x")
+    if boom is not None:
+        parts += [np.asarray(boom["v"], dtype=complex).ravel(), np.asarray(boom["w"], dtype=complex).ravel()]
+    parts = _normalise(parts)
+    envelope = np.hypot(np.abs(parts[0]), np.abs(parts[1]))
+    ax.fill_between(x, -envelope, envelope, color="0.88", lw=0, label="shaft orbit size ±|(v, w)|")
+    ax.plot(x, parts[0].real, color="C0", label="shaft v (vertical)")
+    ax.plot(x, parts[1].real, color="C1", label="shaft w (lateral)")
+    if boom is not None:
+        ax.plot(bx, parts[2].real, color="C0", ls="--", lw=1.1, label="boom v")
+        ax.plot(bx, parts[3].real, color="C1", ls="--", lw=1.1, label="boom w")
+
+
+#: What a torsional or axial mode's curve is (the "along" entry of a shape).
+_ALONG = {"torsional": ("C3", "shaft twist θ (torsion)"), "axial": ("C4", "shaft axial u")}
+
+
+def _draw_along(ax, x, kind: str, values, k: int) -> None:
+    """A torsional mode's twist or an axial mode's u along the shaft, scaled by its largest value
+    and turned so that it is real."""
+    if kind not in _ALONG:
+        raise ValueError(f"shapes[{k}]: 'along' must be torsional or axial (got {kind!r})")
+    z = np.asarray(values, dtype=complex).ravel()
+    if z.size != x.size:
+        raise ValueError(f"shapes[{k}]: {kind} values need {x.size} values like shaft_x")
+    biggest = z[np.argmax(np.abs(z))] if z.size else 0.0
+    colour, label = _ALONG[kind]
+    ax.plot(x, (z / biggest).real if biggest != 0 else z.real, color=colour, label=label)
+
+
 @styled
 def mode_shapes_figure(
     shaft_x: ArrayLike,
@@ -121,7 +155,10 @@ def mode_shapes_figure(
         Shaft node positions [m].
     shapes : sequence of mapping
         One per mode, with "label" (str, e.g. "mode 3, 41.2 Hz, forward") and "v", "w"
-        (array_like, shape (n,), real or complex) shaft displacements [any length unit].
+        (array_like, shape (n,), real or complex) shaft displacements [any length unit]; a
+        torsional or axial mode may carry "along": ("torsional", twist θ) or ("axial", u), each
+        shape (n,): that is drawn instead (its v and w are round-off, which normalised to 1
+        would look like a lateral shape).
     boom_x : array_like, optional
         Tailboom node positions [m].
     boom_shapes : sequence of mapping, optional
@@ -162,22 +199,11 @@ def mode_shapes_figure(
     handles: dict[str, Any] = {}
     for k, shape in enumerate(shapes):
         ax_k = axes.flat[k]
-        parts = [np.asarray(shape["v"], dtype=complex).ravel(), np.asarray(shape["w"], dtype=complex).ravel()]
-        if parts[0].size != x.size or parts[1].size != x.size:
-            raise ValueError(f"shapes[{k}]: v and w need {x.size} values like shaft_x")
-        if boom_shapes is not None:
-            parts += [
-                np.asarray(boom_shapes[k]["v"], dtype=complex).ravel(),
-                np.asarray(boom_shapes[k]["w"], dtype=complex).ravel(),
-            ]
-        parts = _normalise(parts)
-        envelope = np.hypot(np.abs(parts[0]), np.abs(parts[1]))
-        ax_k.fill_between(x, -envelope, envelope, color="0.88", lw=0, label="shaft orbit size ±|(v, w)|")
-        ax_k.plot(x, parts[0].real, color="C0", label="shaft v (vertical)")
-        ax_k.plot(x, parts[1].real, color="C1", label="shaft w (lateral)")
-        if boom_shapes is not None:
-            ax_k.plot(bx, parts[2].real, color="C0", ls="--", lw=1.1, label="boom v")
-            ax_k.plot(bx, parts[3].real, color="C1", ls="--", lw=1.1, label="boom w")
+        if "along" in shape:
+            kind, values = shape["along"]
+            _draw_along(ax_k, x, kind, values, k)
+        else:
+            _draw_lateral(ax_k, x, shape, bx, None if boom_shapes is None else boom_shapes[k], k)
         if stations.size:
             ax_k.plot(stations, np.full(stations.size, -1.12), "^", color="k", ms=6, clip_on=False, label="bearing")
         ax_k.axhline(0.0, color="0.3", lw=0.6)
