@@ -5,9 +5,10 @@ Was: a torsional mode's panel drew its lateral v and w, round-off normalised to 
 a bending shape (the twist not drawn at all). A uniform shaft held in twist and axially at x = 0
 and free at x = L has the quarter sines sin(πx/2L) for its first torsional mode (√(G/ρ)/4L) and
 its first axial mode (√(E/ρ)/4L): the wave equation φ'' + (ω/c)² φ = 0 with φ(0) = 0 and
-φ'(L) = 0 gives φ = sin(πx/2L), ω = πc/(2L), c = √(G/ρ) or √(E/ρ) (derived here). The design: an aluminium tube, 2 m, Ø100 × 3 mm, on stiff pins (the aft one
-axially free), 40 elements. The FE nodal values of a fixed-free bar's first mode with linear
-elements err by O(h²) (h = 1/40 of the quarter wave): 2e-3 absolute on the normalised shape.
+φ'(L) = 0 gives φ = sin(πx/2L), ω = πc/(2L), c = √(G/ρ) or √(E/ρ) (derived here). The design:
+an aluminium tube, 2 m, Ø100 × 3 mm, on stiff pins (the aft one axially free), 40 elements.
+The FE nodal values of a fixed-free bar's first mode with linear elements err by O(h²)
+(h = 1/40 of the quarter wave): 2e-3 absolute on the normalised shape.
 """
 
 from __future__ import annotations

@@ -210,7 +210,8 @@ def plan_run_report(
                 figs.result(
                     "mode_shapes",
                     f"Mode shapes at {op_rpm:.0f} rpm of the modes nearest the spin frequency "
-                    f"{f_spin:.1f} Hz (v vertical, w lateral; a torsional mode its twist θ, an axial one u; ▲ bearings)",
+                    f"{f_spin:.1f} Hz (v vertical, w lateral; a torsional mode its twist θ, an axial one u; "
+                    "▲ bearings)",
                     a.modes_at_speed,
                     "shapes",
                     bearings_x=bearing_x,
