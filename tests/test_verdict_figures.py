@@ -125,6 +125,18 @@ def test_campbell_covers_every_mode_the_checks_use_and_marks_the_verdicts_critic
         (ray,) = _lines(ax, e.name)
         x, y = np.asarray(ray.get_xdata()), np.asarray(ray.get_ydata())
         assert (y[-1] - y[0]) / (x[-1] - x[0]) == pytest.approx(e.ratio / 60.0, rel=1e-9)
+    # every main-rotor k/rev the torsional check uses, its governing one included (the tuned
+    # design's main rotor 2/rev: was drawn only as 1/rev and N/rev), as a ray of slope k·n_MR/n
+    # (the main rotor geared to the shaft: 4800 rpm against the design's main_rotor_speed_rpm)
+    main = [e for e in torsional_excitations(model.design) if e.source == "main_rotor"]
+    assert [e.order for e in main] == list(range(1, model.design.operating.main_rotor_blades + 1))
+    governing = assessed.verdict.check("torsional_separation").location["case"]
+    assert governing in [e.name for e in main]
+    once = model.design.operating.main_rotor_speed_rpm / rad_s_to_rpm(model.speed)
+    for e in main:
+        (ray,) = _lines(ax, e.name)
+        x, y = np.asarray(ray.get_xdata()), np.asarray(ray.get_ydata())
+        assert (y[-1] - y[0]) / (x[-1] - x[0]) == pytest.approx(e.order * once / 60.0, rel=1e-9)
 
 
 def test_the_margins_figure_draws_a_pass_without_a_finite_margin_as_passed():

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import datetime as dt
 import json
+import math
 from collections.abc import Mapping
 from concurrent.futures import Executor
 from dataclasses import dataclass, replace
@@ -152,7 +153,7 @@ def plan_run_report(
 
     camp = a.campbell
     crit = [c for c in camp.critical_speeds if c.speed <= model.speed * 1.25] if camp is not None else []
-    main_rotor = model.design.operating.main_rotor_frequencies() if model.design is not None else {}
+    main_rotor = main_rotor_lines(model)
     bearing_x = [b.x_shaft for b in model.bearings]
     f_spin = rpm_to_hz(op_rpm)
     campbell_figure = []
@@ -167,7 +168,8 @@ def plan_run_report(
                 "modes cross 1×; red squares: the critical speeds of the verdict (unbalance-response peaks, "
                 "with their AF); brown: the tail rotor's 1/rev and N/rev (torsional separation)"
                 + (
-                    "; the main rotor's 1/rev and N/rev lines (geared to the shaft) for the boom modes"
+                    "; purple: the main rotor's 1/rev to N/rev (geared to the shaft; the boom modes' forcing "
+                    "and the torsional separation's)"
                     if main_rotor
                     else ""
                 ),
@@ -350,6 +352,19 @@ def plan_run_report(
     if data["notes"]:
         sections.append(Section("Notes", paragraphs=list(data["notes"])))
     return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(a.design)}", a.design.name)
+
+
+def main_rotor_lines(model) -> dict[str, float]:
+    """The main rotor's excitations the torsional separation check uses, 1/rev to N/rev, as
+    frequencies at the operating speed [Hz] (the Campbell diagram draws each as a ray geared to
+    the shaft): name → frequency. Was 1/rev and N/rev only, so the tuned design's governing
+    torsional excitation, the main rotor's 2/rev, was on no figure."""
+    if model.design is None or not model.speed > 0:
+        return {}
+    shaft_hz = model.speed / (2.0 * math.pi)
+    return {
+        f"{e.order}/rev": e.ratio * shaft_hz for e in torsional_excitations(model.design) if e.source == "main_rotor"
+    }
 
 
 def campbell_orders(model) -> dict[str, float]:
