@@ -103,7 +103,8 @@ def required_separation_margin(amplification: float, position: Position) -> floa
 
 
 def separation_margin(critical_speed: float, operating_speed: float) -> float:
-    """Actual separation margin |N_c − N_op| / N_op [fraction]."""
+    """Actual separation margin |N_c − N_op| / N_op [fraction], from the speed N_op it is measured from
+    (the operating speed, or an end of the operating speed range: :func:`api684_separation`)."""
     if not (np.isfinite(operating_speed) and operating_speed > 0.0):
         raise ValueError(f"operating speed must be a finite number > 0 (got {operating_speed!r})")
     return float(abs(critical_speed - operating_speed) / operating_speed)
@@ -164,15 +165,13 @@ def api684_separation(
         )
     position: Position = "below" if critical_speed < operating_speed else "above"
     reference = low if position == "below" else high
-    margin = (
-        (reference - critical_speed) / reference if position == "below" else (critical_speed - reference) / reference
-    )
+    inside = low < critical_speed < high  # never with one operating speed
     return Separation(
         float(critical_speed),
         float(operating_speed),
         float(amplification),
         position,
-        max(0.0, float(margin)),
+        0.0 if inside else separation_margin(critical_speed, reference),
         required_separation_margin(amplification, position),
         float(reference),
     )
