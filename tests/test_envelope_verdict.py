@@ -119,6 +119,11 @@ def test_the_tuned_design_passes_at_every_point_and_says_where_each_check_govern
                 worst = min(same, key=lambda c: c.margin / abs(c.limit) if c.limit else c.margin)
                 assert check.margin == pytest.approx(worst.margin)
     assert a.governing_point in names and a.point(a.governing_point).analyses is not None
+    # the temperature check's scale is the rise above each point's own ambient (the design file:
+    # −40 °C, 15 °C, and the [thermal] hot day's 25.6 °C at the two hot points)
+    ambient_c = {"cold_day": -40.0, "standard_day": 15.0, "hot_day": 25.6, "hot_soak_start": 25.6}
+    for p in a.points:
+        assert p.evidence.ambient_temperature == pytest.approx(ambient_c[p.name] + 273.15, rel=1e-12)
 
 
 def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(tuned_run, nominal_screening):
@@ -126,8 +131,9 @@ def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(
     table one row per point, the terminal's line the governing point: all read the same
     assessment, whose governing point has the tightest check of any point."""
     from flexshaft.report.results_json import results_json
-    from flexshaft.verdict.envelope import relative_margin, tightest_check
+    from flexshaft.verdict.envelope import tightest_check
     from flexshaft.verdict.envelope_text import envelope_line, envelope_rows
+    from flexshaft.verdict.result import normalised_margin
 
     a = tuned_run
     data = results_json(a)["envelope"]
@@ -139,7 +145,7 @@ def test_the_report_json_and_terminal_say_each_points_verdict_and_which_governs(
         for c in point.verdict.checks:
             assert entry["checks"][c.key]["status"] == c.status and entry["checks"][c.key]["value"] == c.value
     # the governing point's tightest check is the tightest of all points' (relative margin)
-    tightest = {p.name: relative_margin(tightest_check(p.verdict)) for p in a.points}
+    tightest = {p.name: normalised_margin(tightest_check(p.verdict)) for p in a.points}
     assert tightest[a.governing_point] == min(tightest.values())
     assert data["points"][[p.name for p in a.points].index(a.governing_point)]["tightest_check"] == (
         tightest_check(a.point(a.governing_point).verdict).key

@@ -32,8 +32,8 @@ from flexshaft.explore.compute import EXPLORE, design_update, sweep_point, updat
 from flexshaft.explore.controls import advanced_overrides, control_overrides, design_controls, layup_angles
 from flexshaft.explore.export import explored_toml, header_comments, run_command
 from flexshaft.explore.workers import Workers
-from flexshaft.optimize.evaluate import normalised_margin
 from flexshaft.report.interactive import actuator_figure, interactive_page, margins_figure
+from flexshaft.verdict.result import normalised_margin
 
 SCHEMA = json.loads((Path(__file__).parents[1] / "docs" / "design.schema.json").read_text(encoding="utf-8"))
 
@@ -186,7 +186,7 @@ def test_an_update_shows_the_screening_verdict(update_and_screening):
     assert EXPLORE.campbell_speeds > 0 and EXPLORE.spinup_speeds == SCREENING.spinup_speeds
     assert [c["status"] for c in payload["checks"]] == [c.status for c in screening.verdict.checks]
     assert [c["normalised_margin"] for c in payload["checks"]] == [
-        _json_number(normalised_margin(c, screening.operating_speed)) for c in screening.verdict.checks
+        _json_number(normalised_margin(c)) for c in screening.verdict.checks
     ]
     assert payload["summary"] == screening.verdict.summary
     assert not payload["passed"]  # K_p 2e5 lets actuator 1 reach its gap
@@ -234,7 +234,7 @@ def test_figures_draw_what_the_checks_judge(update_and_screening):
     is static offset + spin-up orbit, and its marked peak is the actuator check's finding."""
     design, _, a = update_and_screening
     bars = margins_figure(a)["data"][0]
-    expected = [normalised_margin(c, a.operating_speed) for c in a.verdict.checks]
+    expected = [normalised_margin(c) for c in a.verdict.checks]
     # +inf (passed, nothing to measure: no phase crossover) is drawn at the axis end, 3
     expected = [3.0 if m == math.inf else m for m in expected]
     assert bars["x"] == pytest.approx([float(f"{m:.6g}") for m in expected], rel=1e-6)
@@ -269,7 +269,7 @@ def test_a_sweep_point_gives_every_checks_normalised_margin(tuned, two_point_tun
     assert with_overrides(two_point_tuned, {"bearings[1].kp": 2e5}) == design
     point = sweep_point(two_point_tuned, {"bearings[1].kp": 2e5})
     for c in screening.verdict.checks:
-        assert point["margins"][c.key] == _json_number(normalised_margin(c, screening.operating_speed))
+        assert point["margins"][c.key] == _json_number(normalised_margin(c))
     assert "wall_thickness" in sweep_point(tuned, {"shaft.wall_thickness": 0.06})["error"]
 
 

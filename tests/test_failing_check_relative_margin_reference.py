@@ -1,6 +1,6 @@
 """A failing check never shows a positive relative margin (mutation hunt h33c).
 
-:func:`flexshaft.verdict.envelope.relative_margin` is the margins figure's measure, margin/|limit|,
+:func:`flexshaft.verdict.result.normalised_margin` is the margins figure's measure, margin/|limit|,
 read as "how far inside the requirement" (positive) or "how far outside" (negative). A check can
 fail with a margin that is not negative: the temperature check of a thermal runaway (no
 self-heating equilibrium below the allowable temperature) keeps the largest temperature computed
@@ -18,8 +18,8 @@ from __future__ import annotations
 
 from flexshaft.design.requirements import Requirements
 from flexshaft.verdict.checks import temperature
-from flexshaft.verdict.envelope import relative_margin
 from flexshaft.verdict.evidence import Evidence
+from flexshaft.verdict.result import normalised_margin as relative_margin
 
 ALLOWABLE = 400.0  # K
 

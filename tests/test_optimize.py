@@ -124,11 +124,13 @@ def test_not_evaluated_counts_as_violated():
             [0.5, 0.4, 0.4, np.nan],  # margin_probe not evaluated
             [0.5, 0.4, -0.2, 1.0],  # margin_lower fails
             [np.nan, np.nan, np.nan, np.nan],
+            [0.5, 0.4, -np.inf, 1.0],  # margin_lower fails with no finite margin
         ]
     )  # the evaluation failed
     assert names == ("f1", "f2", "margin_lower", "margin_probe")
-    F, G = objectives_and_constraints(problem, rows, [True, True, True, True])
+    F, G = objectives_and_constraints(problem, rows, [True, True, True, True, True])
     assert np.all(G[0] <= 0)
+    assert G[4, 0] == NOT_EVALUATED_VIOLATION  # a failure by its whole limit, not an infinite one
     assert G[1, 1] == NOT_EVALUATED_VIOLATION and G[1, 2] == 0.0
     assert G[2, 0] == pytest.approx(0.2)
     assert G[3, -1] == 1.0 and np.all(G[3] > 0) and np.all(F[3] > 1e29)
@@ -175,7 +177,7 @@ def current_screening(tmp_path_factory):
 
 
 def _margins(res) -> np.ndarray:
-    return np.array([normalised_margin(c, res.model.speed) for c in res.verdict.checks])
+    return np.array([normalised_margin(c) for c in res.verdict.checks])
 
 
 @pytest.mark.parametrize("name", ["baseline", "current"])
@@ -260,7 +262,7 @@ def test_the_optimizer_judges_a_design_as_the_run_does_at_the_same_resolution(mo
         for key in CHECK_KEYS:
             check = listed.get(key)
             assert metrics[f"status_{key}"] == CHECK_STATUS_CODES["not applicable" if check is None else check.status]
-            margin = float("nan") if check is None else normalised_margin(check, run.model.speed)
+            margin = float("nan") if check is None else normalised_margin(check)
             np.testing.assert_array_equal(metrics[f"margin_{key}"], margin, err_msg=key)
         for key, output in values.items():
             check = listed[key]

@@ -27,13 +27,14 @@ from typing import Any, Protocol
 
 from flexshaft.comparison import driveline_inventory
 from flexshaft.design import Design, DesignError, with_overrides
-from flexshaft.optimize.evaluate import assessment_metrics, normalised_margin
+from flexshaft.optimize.evaluate import assessment_metrics
 from flexshaft.report.interactive import assessment_figures
 from flexshaft.report.verdict import VERDICT_COLUMNS, verdict_rows
 from flexshaft.resolution import SCREENING
 from flexshaft.units import rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment, PointAssessment, assess, assess_point, combine_points
 from flexshaft.verdict.checks import CHECK_KEYS
+from flexshaft.verdict.result import normalised_margin
 
 __all__ = [
     "EXPLORE",
@@ -69,7 +70,7 @@ def update_payload(a: Assessment) -> dict[str, Any]:
             {
                 "key": c.key,
                 "status": c.status,
-                "normalised_margin": _number(normalised_margin(c, a.operating_speed)),
+                "normalised_margin": _number(normalised_margin(c)),
                 "cells": dict(zip(VERDICT_COLUMNS, row)),
             }
         )

@@ -27,7 +27,7 @@ from flexshaft.optimize.mass import driveline_mass
 from flexshaft.resolution import SCREENING, VERDICT, Resolution
 from flexshaft.verdict.assess import Assessment, assess
 from flexshaft.verdict.checks import CHECK_KEYS, CHECKS
-from flexshaft.verdict.result import Check
+from flexshaft.verdict.result import normalised_margin
 
 __all__ = [
     "CHECK_KEYS",
@@ -89,27 +89,6 @@ def evaluate_design(design, fidelity: str | Resolution = "screening") -> Assessm
     return assess(design, _resolution(fidelity))
 
 
-def normalised_margin(check: Check, operating_speed: float) -> float:
-    """A check's margin as a dimensionless number (negative: fails; NaN: not evaluated; +inf:
-    passed with nothing to measure, e.g. no phase crossover of any magnetic-bearing loop).
-
-    Scales: the limit for safety factors, log decrements, lengths, forces and temperatures
-    [K]; the operating speed for speeds; none for separation (its margin is already a fraction
-    of the operating speed).
-    """
-    if check.status == "pass" and check.margin is None:
-        return float("inf")  # passed without a number: no critical speed, no phase crossover
-    if check.status == "not evaluated" or check.margin is None:
-        return float("nan")
-    if check.kind == "fraction":
-        scale = 1.0
-    elif check.kind == "speed":
-        scale = operating_speed
-    else:
-        scale = abs(check.limit) if check.limit else 1.0
-    return float(check.margin) / scale
-
-
 def check_outputs() -> list[tuple[str, str, str]]:
     """``(name, unit, long name)`` of the per-check outputs: normalised margin and status."""
     out = []
@@ -143,7 +122,6 @@ def design_metrics(design, fidelity: str | Resolution = "screening") -> dict[str
 def assessment_metrics(assessment: Assessment) -> dict[str, float]:
     """:func:`design_metrics` of an assessment already computed."""
     verdict = assessment.verdict
-    speed = assessment.operating_speed
     present = {c.key: c for c in verdict.checks}
 
     def value(key: str) -> float:
@@ -164,7 +142,7 @@ def assessment_metrics(assessment: Assessment) -> dict[str, float]:
     }
     for key in CHECK_KEYS:
         c = present.get(key)
-        out[f"margin_{key}"] = float("nan") if c is None else normalised_margin(c, speed)
+        out[f"margin_{key}"] = float("nan") if c is None else normalised_margin(c)
         out[f"status_{key}"] = CHECK_STATUS_CODES["not applicable" if c is None else c.status]
     return out
 

@@ -2,7 +2,7 @@
 (:mod:`flexshaft.optimize.variables`), objectives and constraints on a base design.
 
 Constraints are outputs that must be ``>= 0``: the verdict checks' normalised margins
-(:func:`~flexshaft.optimize.evaluate.normalised_margin`).
+(:func:`~flexshaft.verdict.result.normalised_margin`).
 
 A check that is **not evaluated** (its margin is NaN) is a violated constraint, never a
 satisfied one: it counts as a violation of :data:`NOT_EVALUATED_VIOLATION` (the margin of a
@@ -443,7 +443,8 @@ def objectives_and_constraints(
         (n, n_objectives): the objective, negated when maximised.
     G : ndarray
         (n, n_constraints + 1): −margin of each constraint (:data:`NOT_EVALUATED_VIOLATION`
-        where the margin is NaN, i.e. not evaluated), then 0 for a valid design with a finite
+        where the margin is NaN, i.e. not evaluated, or −inf, a failure with no finite margin),
+        then 0 for a valid design with a finite
         value of every objective and 1 otherwise.
     """
     outputs = np.atleast_2d(np.asarray(outputs, dtype=float))
@@ -455,7 +456,7 @@ def objectives_and_constraints(
     columns = []
     for name in problem.constraints:
         margin = outputs[:, index[name]]
-        columns.append(np.where(np.isnan(margin), NOT_EVALUATED_VIOLATION, -margin))
+        columns.append(np.where(np.isnan(margin) | np.isneginf(margin), NOT_EVALUATED_VIOLATION, -margin))
     columns.append(np.where(ok, 0.0, 1.0))
     G = np.column_stack(columns)
     G[~ok, :-1] = np.where(np.isnan(G[~ok, :-1]), NOT_EVALUATED_VIOLATION, G[~ok, :-1])

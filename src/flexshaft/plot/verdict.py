@@ -29,6 +29,7 @@ def margins_figure(
     *,
     limits: tuple[float, float] = (-2.0, 3.0),
     title: str = "Requirements: margin / limit",
+    xlabel: str = "margin / limit [%]  (negative fails)",
     ax=None,
 ) -> Figure:
     """One horizontal bar per requirement: its margin divided by its limit, green when it
@@ -52,6 +53,8 @@ def margins_figure(
         Axis range [-]; longer bars are cut with an arrow and their value written.
     title : str
         Axes title.
+    xlabel : str
+        Label of the margin axis (what each margin is divided by).
     ax : matplotlib Axes, optional
         Draw into this axes.
 
@@ -85,7 +88,8 @@ def margins_figure(
     for yi, v, state, text, bound in zip(y, value, states, texts, bounds):
         color = STATUS_COLORS[state]
         unbounded = v == np.inf and state == "pass"  # passed with nothing to measure (no phase crossover)
-        if not np.isfinite(v) and not unbounded:
+        no_margin = v == -np.inf and state == "fail"  # failed with nothing to measure
+        if not np.isfinite(v) and not (unbounded or no_margin):
             ax.barh(yi, 0.02 * span, left=-0.01 * span, color=color, height=0.6, hatch="///", edgecolor="0.5")
             ax.annotate(
                 "not evaluated",
@@ -101,9 +105,8 @@ def margins_figure(
         ax.barh(yi, shown, color=color, height=0.6, alpha=0.9)
         if shown != v:
             ax.plot([shown], [yi], ">" if v > 0 else "<", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
-        label = ("∞: no finite margin" if unbounded else ("≥ " if bound else "") + f"{v:+.0%}") + (
-            f"  ({text})" if text else ""
-        )
+        number = "fails: no finite margin" if no_margin else ("≥ " if bound else "") + f"{v:+.0%}"
+        label = ("∞: no finite margin" if unbounded else number) + (f"  ({text})" if text else "")
         if v < 0:  # failed: the text on the empty positive side, clear of the names
             ax.annotate(
                 label,
@@ -137,6 +140,6 @@ def margins_figure(
     from matplotlib.ticker import PercentFormatter
 
     ax.xaxis.set_major_formatter(PercentFormatter(1.0, decimals=0))
-    ax.set_xlabel("margin / limit [%]  (negative fails)")
+    ax.set_xlabel(xlabel)
     ax.set_title(title)
     return fig

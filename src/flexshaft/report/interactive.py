@@ -26,11 +26,11 @@ from typing import Any
 import numpy as np
 
 from flexshaft import __version__
-from flexshaft.optimize.evaluate import normalised_margin
 from flexshaft.report.verdict import VERDICT_COLUMNS, location_text, verdict_rows
 from flexshaft.units import m_to_mm, rad_s_to_hz, rad_s_to_rpm, rpm_to_hz
 from flexshaft.verdict.assess import Assessment
 from flexshaft.verdict.gather import actuator_limits
+from flexshaft.verdict.result import normalised_margin
 
 __all__ = [
     "EXPLORE_EXTRA",
@@ -152,11 +152,11 @@ _AXIS_END = 3.0  # where the margin axis stops [-]
 
 
 def margins_figure(a: Assessment) -> dict:
-    """Every check's normalised margin (:func:`~flexshaft.optimize.evaluate.normalised_margin`:
+    """Every check's normalised margin (:func:`~flexshaft.verdict.result.normalised_margin`:
     negative fails) as a bar, green pass, red fail, grey not evaluated."""
     checks = a.verdict.checks
     rows = verdict_rows(a.verdict, compact=True)
-    margins = [normalised_margin(c, a.operating_speed) for c in checks]
+    margins = [normalised_margin(c) for c in checks]
     # a pass with nothing to measure (+inf: no phase crossover, no critical speed) reaches the
     # axis end, not zero, which would read "at the limit"; not evaluated (NaN) draws no bar
     shown = [_AXIS_END if m == math.inf else (m if math.isfinite(m) else 0.0) for m in margins]

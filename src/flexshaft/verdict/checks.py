@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 from flexshaft.analyses.separation import api684_separation
@@ -264,16 +264,14 @@ def temperature(ev: Evidence, req: Requirements) -> Check:
     if ev.allowable_temperature is None:
         return _not_evaluated(*args, "no allowable temperature given")
     check = _from_findings(*args, [_at_most(ev.max_temperature, ev.allowable_temperature, ev.temperature_location)])
+    # compared with other checks as a share of the rise above the ambient that the limit allows
+    # (11 K below 100 °C on a 50 °C day is 22 % of it, not 3 % of 373 K)
+    ambient = ev.ambient_temperature
+    rise = None if ambient is None or not ev.allowable_temperature > ambient else ev.allowable_temperature - ambient
+    check = replace(check, scale=rise)
     if ev.thermal_runaway:
-        return Check(
-            *args,
-            "fail",
-            check.value,
-            check.limit,
-            check.margin,
-            check.location,
-            "thermal runaway: no self-heating equilibrium below the allowable temperature",
-            check.findings,
+        return replace(
+            check, status="fail", note="thermal runaway: no self-heating equilibrium below the allowable temperature"
         )
     return check
 

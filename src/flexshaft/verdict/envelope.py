@@ -7,8 +7,8 @@ evaluated, and is not evaluated when it could be evaluated nowhere. Its value, l
 location are the worst point's (a failing point first, then the smallest margin; the margins of
 one check share a unit, so they compare across points), its location says the point
 (``"point"``), and its findings are every point's, each with its point. :func:`governing_point`
-names the point of the tightest check (the smallest margin relative to its limit), whose
-analyses the report's figures show.
+names the point of the tightest check (the smallest normalised margin,
+:func:`~flexshaft.verdict.result.normalised_margin`), whose analyses the report's figures show.
 """
 
 from __future__ import annotations
@@ -18,9 +18,9 @@ from dataclasses import dataclass, replace
 
 from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.operating_point import PointAnalyses
-from flexshaft.verdict.result import Check, Finding, Verdict
+from flexshaft.verdict.result import Check, Finding, Verdict, normalised_margin
 
-__all__ = ["PointAssessment", "envelope_verdict", "governing_point", "relative_margin", "tightest_check"]
+__all__ = ["PointAssessment", "envelope_verdict", "governing_point", "tightest_check"]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -33,20 +33,17 @@ class PointAssessment:
     verdict: Verdict
 
 
-def relative_margin(check: Check) -> float:
-    """A check's margin divided by |limit| (the margins figure's measure); −inf for a check that
-    fails without a margin, +inf for one passed without a value, NaN when not evaluated."""
-    if check.status == "not evaluated":
-        return float("nan")
-    if check.margin is None:
-        return float("-inf") if check.status == "fail" else float("inf")
-    relative = check.margin / abs(check.limit) if check.limit else check.margin
-    return min(relative, -1e-300) if check.status == "fail" and relative >= 0 else relative
-
-
 def _severity(check: Check) -> tuple[int, float]:
-    """Sort key of the worst point's check: failing first, then the smallest relative margin."""
-    return (0 if check.status == "fail" else 1, relative_margin(check))
+    """Sort key of the tightest check of a verdict: failing first, then the smallest normalised
+    margin."""
+    return (0 if check.status == "fail" else 1, normalised_margin(check))
+
+
+def _worse_point(check: Check) -> tuple[int, float]:
+    """Sort key of one check's worst point: failing first, then the smallest margin over |limit|
+    (the temperature's too: the highest temperature against the allowable, whatever the
+    point's ambient)."""
+    return _severity(replace(check, scale=None))
 
 
 def _at_point(finding: Finding, name: str) -> Finding:
@@ -68,7 +65,7 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
             notes = sorted({c.note for _, c in checks if c.note})
             combined.append(replace(c, note="; ".join(notes) + f" (at every point: {', '.join(n for n, _ in checks)})"))
             continue
-        name, worst = min(evaluated, key=lambda item: _severity(item[1]))
+        name, worst = min(evaluated, key=lambda item: _worse_point(item[1]))
         findings = tuple(_at_point(f, n) for n, c in evaluated for f in c.findings)
         skipped = [n for n, c in checks if c.status == "not evaluated"]
         if worst.value is None and worst.status == "pass":  # passed without a number everywhere: no worst point
@@ -85,7 +82,8 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
 
 def tightest_check(verdict: Verdict) -> Check | None:
     """The verdict's tightest evaluated check: failing first, then the smallest margin relative to
-    its limit (:func:`relative_margin`); None when no check was evaluated."""
+    its scale (:func:`~flexshaft.verdict.result.normalised_margin`); None when no check was
+    evaluated."""
     evaluated = [c for c in verdict.checks if c.status != "not evaluated"]
     return min(evaluated, key=_severity, default=None)
 

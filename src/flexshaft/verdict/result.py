@@ -23,7 +23,17 @@ from flexshaft.units import format_quantity
 from flexshaft.verdict.evidence import Location
 from flexshaft.verdict.text import VERDICT_COLUMNS, location_text, verdict_headline, verdict_rows
 
-__all__ = ["Check", "Finding", "Kind", "LOCATION_UNITS", "SI_UNITS", "Status", "Verdict", "location_with_units"]
+__all__ = [
+    "Check",
+    "Finding",
+    "Kind",
+    "LOCATION_UNITS",
+    "SI_UNITS",
+    "Status",
+    "Verdict",
+    "location_with_units",
+    "normalised_margin",
+]
 
 
 #: Outcome of one check.
@@ -117,6 +127,10 @@ class Check:
     findings : tuple of Finding
         Every instance checked; the governing one has the smallest margin (for separation the
         margins are fractions of the operating speed, so they compare across criticals).
+    scale : float or None
+        What the margin is measured against when checks are compared
+        (:func:`normalised_margin`): |limit| when None; the temperature check's is the rise
+        above the point's ambient that the limit allows.
     """
 
     key: str
@@ -131,6 +145,7 @@ class Check:
     note: str = ""
     findings: tuple[Finding, ...] = ()
     lower_bound: bool = False
+    scale: float | None = None
 
     @property
     def passed(self) -> bool | None:
@@ -159,6 +174,27 @@ class Check:
         }
 
 
+def normalised_margin(check: Check) -> float:
+    """A check's margin as a dimensionless number, the one measure by which checks of different
+    kinds are compared: the governing point and each check's worst point of an envelope, the
+    margins figures, the optimizer's constraints and the explorer.
+
+    margin / scale, the scale being the check's :attr:`Check.scale` when given (the temperature
+    check's: the allowed rise above the ambient, so 11 K below a 100 °C allowable on a 50 °C day
+    reads 22 %, not the 3 % of 11 K over 373 K), else |limit| (a zero limit: the margin itself).
+    A failing check never reads as positive (a thermal runaway fails with the margin of the last
+    temperature computed): −1e-300 then. +inf: passed with nothing to measure (no critical speed,
+    no phase crossover); NaN: not evaluated.
+    """
+    if check.status == "not evaluated":
+        return float("nan")
+    if check.margin is None:
+        return float("-inf") if check.status == "fail" else float("inf")
+    scale = check.scale if check.scale else (abs(check.limit) if check.limit else 1.0)
+    relative = float(check.margin) / scale
+    return min(relative, -1e-300) if check.status == "fail" and relative >= 0 else relative
+
+
 @dataclass(frozen=True)
 class Verdict(ResultMixin):
     """Every requirement check of one design; ``passed`` when none fails."""
@@ -168,17 +204,17 @@ class Verdict(ResultMixin):
     plots = {"margins": "plot_margins"}
 
     def plot_margins(self, ax=None, **kwargs):
-        """Bar chart of every check's margin divided by its limit, green pass (to the axis end
-        when it passed with no finite margin), red fail, grey not evaluated, with the margin in
-        engineering units beside each bar (keywords to :func:`flexshaft.plot.verdict.margins_figure`)."""
-        normalised = [
-            float("inf")  # passed with nothing to measure (no phase crossover of any loop)
-            if c.status == "pass" and c.margin is None
-            else float("nan")
-            if c.margin is None or not c.limit
-            else c.margin / abs(c.limit)
-            for c in self.checks
-        ]
+        """Bar chart of every check's normalised margin (:func:`normalised_margin`: its margin
+        divided by its limit, the temperature's by the rise the limit allows), green pass (to the
+        axis end when it passed with no finite margin), red fail, grey not evaluated, with the
+        margin in engineering units beside each bar (keywords to
+        :func:`flexshaft.plot.verdict.margins_figure`)."""
+        normalised = [normalised_margin(c) for c in self.checks]
+        scaled = sorted({c.title for c in self.checks if c.scale and c.status != "not evaluated"})
+        if scaled:
+            kwargs.setdefault(
+                "xlabel", f"margin / limit [%]  ({', '.join(scaled)}: / the rise above ambient it allows; < 0 fails)"
+            )
         return margins_figure(
             [c.title for c in self.checks],
             normalised,
@@ -187,7 +223,7 @@ class Verdict(ResultMixin):
             [c.lower_bound for c in self.checks],
             ax=ax,
             **{
-                "title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} (margin / limit of each)",
+                "title": f"Requirements verdict: {'PASS' if self.passed else 'FAIL'} (normalised margin of each)",
                 **kwargs,
             },
         )
