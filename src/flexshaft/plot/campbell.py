@@ -30,6 +30,10 @@ __all__ = ["campbell_figure", "damping_colormap"]
 
 #: Colour range of the log decrement [-]: beyond these the colour saturates (colour bar arrows).
 LOG_DECREMENT_RANGE = (-0.5, 1.0)
+#: A log decrement smaller than this in magnitude is drawn as zero [-]: far above the round-off
+#: of an undamped mode's 2πσ/ω (~1e-15: its ±1e-18 is a sign of round-off, not damping) and far
+#: below the damping of any structure.
+ROUNDOFF_LOG_DECREMENT = 1e-9
 
 
 def damping_colormap(vmin: float, vmax: float):
@@ -210,6 +214,9 @@ def campbell_figure(
                 )
             )
     if delta is not None:
+        # |δ| below ROUNDOFF_LOG_DECREMENT is an undamped mode's round-off: drawn as 0, not as
+        # a colour bar from −1e-18 to 1e-18 that paints its sign
+        delta = np.where(np.abs(delta) < ROUNDOFF_LOG_DECREMENT, 0.0, delta)
         finite = delta[np.isfinite(delta) & np.isfinite(freqs)]
         lo = max(float(finite.min()), LOG_DECREMENT_RANGE[0]) if finite.size else 0.0
         hi = min(float(finite.max()), LOG_DECREMENT_RANGE[1]) if finite.size else 1.0

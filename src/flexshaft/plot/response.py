@@ -84,6 +84,10 @@ def bode_figure(
     from matplotlib.ticker import MultipleLocator
 
     lo, hi = phase_ax.get_ylim()
+    if hi - lo < 90.0:  # a phase that does not turn (an undamped response: 0 or −180° and round-off)
+        centre = 90.0 * np.round(0.5 * (lo + hi) / 90.0)
+        lo, hi = centre - 100.0, centre + 100.0
+        phase_ax.set_ylim(lo, hi)
     phase_ax.yaxis.set_major_locator(MultipleLocator(90.0 if hi - lo <= 1080 else 180.0))
     phase_ax.set_ylabel("phase [deg]")
     phase_ax.set_xlabel(x_label)
