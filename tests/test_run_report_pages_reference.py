@@ -251,3 +251,25 @@ def test_a_shear_shell_crimps_without_waves_and_needs_no_caveat(monkeypatch, tmp
     text = section.paragraphs[1]
     assert "(positive, n = ∞ (shear crimping))" in text and "(negative, n = ∞ (shear crimping))" in text
     assert "classical shell" not in text and "buckling safety factor 3.00." in text
+
+
+def _campbell_caption(plan) -> str:
+    (caption,) = [f.caption for s in plan.sections for f in s.figures if f.caption.startswith("Campbell diagram")]
+    return caption
+
+
+def test_the_campbell_caption_names_the_tail_rotors_lines_only_where_the_design_has_them(monkeypatch, tmp_path):
+    """Was: the caption promised "brown: the tail rotor's 1/rev and N/rev" on every design,
+    although the diagram draws them only from the design's ``[tail_rotor]`` (a design without one
+    has none). Without tail-rotor excitations (the stub: none at all) the caption says nothing
+    of them; with the tail rotor's 1/rev and 4/rev (at 1/1.17 and 4/1.17 of the shaft's speed)
+    it names them."""
+    plan = _plan(monkeypatch, _assessment(), tmp_path)
+    assert "tail rotor" not in _campbell_caption(plan)
+    rotor = [
+        NS(name="tail rotor 1/rev", source="tail_rotor", order=1, ratio=1.0 / 1.17),
+        NS(name="tail rotor 4/rev", source="tail_rotor", order=4, ratio=4.0 / 1.17),
+    ]
+    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: rotor)
+    plan = driveline.plan_run_report(_assessment(), tmp_path, design_text="")
+    assert "brown: the tail rotor's 1/rev and N/rev" in _campbell_caption(plan)

@@ -154,6 +154,7 @@ def plan_run_report(
     camp = a.campbell
     crit = [c for c in camp.critical_speeds if c.speed <= model.speed * 1.25] if camp is not None else []
     main_rotor = main_rotor_lines(model)
+    tail_rotor = campbell_orders(model)
     bearing_x = [b.x_shaft for b in model.bearings]
     f_spin = rpm_to_hz(op_rpm)
     campbell_figure = []
@@ -166,7 +167,8 @@ def plan_run_report(
                 + ": whirl as line style and marker, log decrement as colour; every mode up to 1.1 × the "
                 "highest excitation the checks use at 130 % of the operating speed; circles: where the lateral "
                 "modes cross 1×; red squares: the critical speeds of the verdict (unbalance-response peaks, "
-                "with their AF); brown: the tail rotor's 1/rev and N/rev (torsional separation)"
+                "with their AF)"
+                + ("; brown: the tail rotor's 1/rev and N/rev (torsional separation)" if tail_rotor else "")
                 + (
                     "; purple: the main rotor's 1/rev to N/rev (geared to the shaft; the boom modes' forcing "
                     "and the torsional separation's)"
@@ -178,7 +180,7 @@ def plan_run_report(
                 operating_rpm=op_rpm,
                 max_critical_rpm=1.25 * op_rpm,
                 main_rotor_hz=main_rotor or None,
-                excitation_orders=campbell_orders(model) or None,
+                excitation_orders=tail_rotor or None,
                 response_criticals=[
                     (rad_s_to_rpm(c.speed), c.amplification_factor) for c in a.evidence.critical_speeds or ()
                 ],
