@@ -7,10 +7,12 @@ bays and load cases. From them it estimates the largest arrays and the run time:
 * modal basis: a dense generalised eigen-solve (``8 n²`` bytes per matrix, about five such
   arrays) up to :data:`SPARSE_BASIS_ABOVE` free DOFs, else sparse shift-invert Lanczos (a
   banded factor and the Lanczos vectors, ``O(n)``);
-* banded harmonic solves: ``16 n (3 k + 1)`` bytes for a half-bandwidth ``k``;
+* banded harmonic solves: ``16 n (3 k + 1)`` bytes for a half-bandwidth ``k``, counted twice (the
+  LU buffer and the matrix's values on the band's pattern);
 * first-order eigen-problems of ``2 nb + s`` states (``nb`` modal coordinates, ``s``
   controller states): ``16 (2 nb + s)²`` bytes and ``~5e-9 (2 nb + s)³`` s each;
-* the spin-up responses of an assessment: ``16 · DOFs · load cases · speeds`` bytes.
+* the spin-up responses of an assessment: ``16 · DOFs · load cases · speeds`` bytes, counted
+  twice (room for one copy).
 
 An assessment (:func:`flexshaft.verdict.assess.assess`) is counted from the grids of its
 :class:`~flexshaft.resolution.Resolution` (spin-up and whirl speeds, the report's Campbell
