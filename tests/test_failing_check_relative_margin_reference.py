@@ -7,10 +7,11 @@ self-heating equilibrium below the allowable temperature) keeps the largest temp
 and its margin to the allowable, which may be positive, yet the check fails
 (:func:`flexshaft.verdict.checks.temperature`). Its relative margin must then be below zero, so
 that no figure or ranking shows a failed requirement as met; it is the smallest negative number
-the rule writes (−1e-300), not the positive margin/|limit| (0.125 here). The numbers are
-binary-exact: 350 K against 400 K, margin 50 K, 50/400 = 0.125.
+the rule writes (−1e-300), not the positive normalised margin (0.5 here). The numbers are
+binary-exact: 64 K below a 416.15 K allowable, whose rise above the 288.15 K standard day (the
+temperature's scale) is 128 K: 64/128 = 0.5.
 
-A check that fails with a negative margin keeps its own relative margin (−50/400 = −0.125), and a
+A check that fails with a negative margin keeps its own relative margin (−64/128 = −0.5), and a
 passing one its positive one (no floor applies).
 """
 
@@ -21,7 +22,7 @@ from flexshaft.verdict.checks import temperature
 from flexshaft.verdict.evidence import Evidence
 from flexshaft.verdict.result import normalised_margin as relative_margin
 
-ALLOWABLE = 400.0  # K
+ALLOWABLE = 416.15  # K: 128 K above the standard day
 
 
 def _check(max_temperature: float, runaway: bool):
@@ -32,15 +33,15 @@ def _check(max_temperature: float, runaway: bool):
 
 
 def test_a_runaway_below_the_allowable_fails_with_a_negative_relative_margin():
-    check = _check(350.0, runaway=True)
-    assert check.status == "fail" and check.margin == 50.0  # the reference: fails, margin positive
+    check = _check(ALLOWABLE - 64.0, runaway=True)
+    assert check.status == "fail" and check.margin == 64.0  # the reference: fails, margin positive
     r = relative_margin(check)
     assert r < 0.0
     assert r == -1e-300
 
 
 def test_other_checks_keep_margin_over_limit():
-    hot = _check(450.0, runaway=False)
-    assert hot.status == "fail" and relative_margin(hot) == -0.125
-    cool = _check(350.0, runaway=False)
-    assert cool.status == "pass" and relative_margin(cool) == 0.125
+    hot = _check(ALLOWABLE + 64.0, runaway=False)
+    assert hot.status == "fail" and relative_margin(hot) == -0.5
+    cool = _check(ALLOWABLE - 64.0, runaway=False)
+    assert cool.status == "pass" and relative_margin(cool) == 0.5

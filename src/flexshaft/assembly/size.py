@@ -10,7 +10,7 @@ bays and load cases. From them it estimates the largest arrays and the run time:
 * banded harmonic solves: ``16 n (3 k + 1)`` bytes for a half-bandwidth ``k``, counted twice (the
   LU buffer and the matrix's values on the band's pattern);
 * first-order eigen-problems of ``2 nb + s`` states (``nb`` modal coordinates, ``s``
-  controller states): ``16 (2 nb + s)²`` bytes and ``~5e-9 (2 nb + s)³`` s each;
+  controller states): four arrays of ``16 (2 nb + s)²`` bytes and ``~5e-9 (2 nb + s)³`` s each;
 * the spin-up responses of an assessment: ``16 · DOFs · load cases · speeds`` bytes, counted
   twice (room for one copy).
 

@@ -27,7 +27,7 @@ from flexshaft.optimize.mass import driveline_mass
 from flexshaft.resolution import SCREENING, VERDICT, Resolution
 from flexshaft.verdict.assess import Assessment, assess
 from flexshaft.verdict.checks import CHECK_KEYS, CHECKS
-from flexshaft.verdict.result import normalised_margin
+from flexshaft.verdict.result import Check, normalised_margin
 
 __all__ = [
     "CHECK_KEYS",
@@ -119,6 +119,14 @@ def design_metrics(design, fidelity: str | Resolution = "screening") -> dict[str
     return assessment_metrics(evaluate_design(design, fidelity))
 
 
+def _constraint_margin(check: Check) -> float:
+    """The check's normalised margin as a constraint: a failure without a negative margin (a
+    thermal runaway below the allowable, −1e-300 in the figures) is −inf, a violation by the
+    whole limit (:data:`~flexshaft.optimize.problem.NOT_EVALUATED_VIOLATION`), not by 1e-300."""
+    margin = normalised_margin(check)
+    return float("-inf") if check.status == "fail" and margin > -1e-299 else margin
+
+
 def assessment_metrics(assessment: Assessment) -> dict[str, float]:
     """:func:`design_metrics` of an assessment already computed."""
     verdict = assessment.verdict
@@ -142,7 +150,7 @@ def assessment_metrics(assessment: Assessment) -> dict[str, float]:
     }
     for key in CHECK_KEYS:
         c = present.get(key)
-        out[f"margin_{key}"] = float("nan") if c is None else normalised_margin(c)
+        out[f"margin_{key}"] = float("nan") if c is None else _constraint_margin(c)
         out[f"status_{key}"] = CHECK_STATUS_CODES["not applicable" if c is None else c.status]
     return out
 

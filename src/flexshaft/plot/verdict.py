@@ -105,7 +105,12 @@ def margins_figure(
         ax.barh(yi, shown, color=color, height=0.6, alpha=0.9)
         if shown != v:
             ax.plot([shown], [yi], ">" if v > 0 else "<", color=color, ms=9, mec="k", mew=0.6, clip_on=False)
-        number = "fails: no finite margin" if no_margin else ("≥ " if bound else "") + f"{v:+.0%}"
+        if no_margin:
+            number = "fails: no finite margin"
+        elif state == "fail" and v > -0.005:  # fails without a margin to show (a thermal runaway): not "-0%"
+            number = "fails"
+        else:
+            number = ("≥ " if bound else "") + f"{v:+.0%}"
         label = ("∞: no finite margin" if unbounded else number) + (f"  ({text})" if text else "")
         if v < 0:  # failed: the text on the empty positive side, clear of the names
             ax.annotate(

@@ -95,7 +95,8 @@ def plan_run_report(
     section = verdict_section(a.verdict, op_rpm, a)
     ref = figs.result(
         "verdict_margins",
-        "Margin of each requirement divided by its limit (green pass, red fail)",
+        "Normalised margin of each requirement: its margin divided by its limit, the shaft temperature's "
+        "by the allowable's rise above 15 °C (green pass, red fail)",
         a.verdict,
         "margins",
     )

@@ -56,8 +56,8 @@ def verdict_section(verdict, operating_rpm: float, assessment=None) -> Section:
             "(each point's material temperature sets the laminae's properties and the thermal residual stress; "
             "its speed, power and load scale the loads); the table above gives each check's worst point in "
             "brackets. The governing point has the tightest check (a failing one first, then the smallest "
-            f"margin relative to its limit): {governing_text(assessment)}. The analyses and figures below are "
-            "at it unless their caption names another point."
+            f"normalised margin, as in the margins figure): {governing_text(assessment)}. The analyses and "
+            "figures below are at it unless their caption names another point."
         )
         tables.append(Table("Envelope points (each point's own verdict)", list(ENVELOPE_COLUMNS), points))
     return Section("Verdict against the requirements", paragraphs=paragraphs, tables=tables)

@@ -256,6 +256,11 @@ def _actuator_check(ev: Evidence, key: str) -> Check:
     return _from_findings(*args, findings, note)
 
 
+#: The ISA standard day at sea level (ISO 2533: 15 °C) [K]: the temperature check's margin is
+#: compared with other checks' as a share of the allowable's rise above it.
+STANDARD_DAY = 288.15
+
+
 def temperature(ev: Evidence, req: Requirements) -> Check:
     """The largest shaft temperature at most the matrix allowable; a thermal runaway fails."""
     args: _Args = ("temperature", "shaft temperature", "temperature", "at most")
@@ -264,11 +269,10 @@ def temperature(ev: Evidence, req: Requirements) -> Check:
     if ev.allowable_temperature is None:
         return _not_evaluated(*args, "no allowable temperature given")
     check = _from_findings(*args, [_at_most(ev.max_temperature, ev.allowable_temperature, ev.temperature_location)])
-    # compared with other checks as a share of the rise above the ambient that the limit allows
-    # (11 K below 100 °C on a 50 °C day is 22 % of it, not 3 % of 373 K)
-    ambient = ev.ambient_temperature
-    rise = None if ambient is None or not ev.allowable_temperature > ambient else ev.allowable_temperature - ambient
-    check = replace(check, scale=rise)
+    # compared with other checks as a share of the allowable's rise above the ISA standard day
+    # (11 K below 100 °C is 13 % of its 85 K, not 3 % of 373 K), the same at every point
+    rise = ev.allowable_temperature - STANDARD_DAY
+    check = replace(check, scale=rise if rise > 0.0 else None)
     if ev.thermal_runaway:
         return replace(
             check, status="fail", note="thermal runaway: no self-heating equilibrium below the allowable temperature"

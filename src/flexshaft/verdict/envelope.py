@@ -4,8 +4,8 @@ Each point of a design's ``[envelope]`` is judged on its own (:class:`PointAsses
 analyses, evidence and verdict). :func:`envelope_verdict` combines them check by check: a check
 fails when it fails at some point, passes when it passes at every point where it could be
 evaluated, and is not evaluated when it could be evaluated nowhere. Its value, limit, margin and
-location are the worst point's (a failing point first, then the smallest margin; the margins of
-one check share a unit, so they compare across points), its location says the point
+location are the worst point's (a failing point first, then the smallest normalised margin,
+:func:`~flexshaft.verdict.result.normalised_margin`), its location says the point
 (``"point"``), and its findings are every point's, each with its point. :func:`governing_point`
 names the point of the tightest check (the smallest normalised margin,
 :func:`~flexshaft.verdict.result.normalised_margin`), whose analyses the report's figures show.
@@ -34,16 +34,9 @@ class PointAssessment:
 
 
 def _severity(check: Check) -> tuple[int, float]:
-    """Sort key of the tightest check of a verdict: failing first, then the smallest normalised
-    margin."""
+    """Sort key of the tightest check of a verdict, and of one check's worst point: failing
+    first, then the smallest normalised margin."""
     return (0 if check.status == "fail" else 1, normalised_margin(check))
-
-
-def _worse_point(check: Check) -> tuple[int, float]:
-    """Sort key of one check's worst point: failing first, then the smallest margin over |limit|
-    (the temperature's too: the highest temperature against the allowable, whatever the
-    point's ambient)."""
-    return _severity(replace(check, scale=None))
 
 
 def _at_point(finding: Finding, name: str) -> Finding:
@@ -65,7 +58,7 @@ def envelope_verdict(points: Sequence[PointAssessment]) -> Verdict:
             notes = sorted({c.note for _, c in checks if c.note})
             combined.append(replace(c, note="; ".join(notes) + f" (at every point: {', '.join(n for n, _ in checks)})"))
             continue
-        name, worst = min(evaluated, key=lambda item: _worse_point(item[1]))
+        name, worst = min(evaluated, key=lambda item: _severity(item[1]))
         findings = tuple(_at_point(f, n) for n, c in evaluated for f in c.findings)
         skipped = [n for n, c in checks if c.status == "not evaluated"]
         if worst.value is None and worst.status == "pass":  # passed without a number everywhere: no worst point

@@ -35,7 +35,7 @@ def _tightest_text(check) -> str:
 def envelope_rows(assessment) -> list[list[str]]:
     """One row of text per envelope point of an :class:`~flexshaft.verdict.assess.Assessment`,
     in :data:`ENVELOPE_COLUMNS` order: its conditions, its own verdict and its tightest check
-    (failing first, then the smallest margin relative to its limit); empty for a design judged at
+    (failing first, then the smallest normalised margin); empty for a design judged at
     its own operating point."""
     if assessment.design.envelope is None:
         return []

@@ -178,9 +178,6 @@ class Evidence:
         Maximum shaft temperature [K], where, and whether the self-heating ran away.
     allowable_temperature : float or None
         Matrix allowable temperature [K].
-    ambient_temperature : float or None
-        The point's ambient air temperature [K] (the temperature check's margin is compared
-        with other checks' as a share of the rise above it that the allowable leaves).
     spinup_peak, spinup_location
         Largest shaft orbit amplitude during spin-up [m] and where (station, speed).
     metal_strength : tuple of MetalEvidence or None
@@ -219,7 +216,6 @@ class Evidence:
     temperature_location: Location = field(default_factory=dict)
     thermal_runaway: bool = False
     allowable_temperature: float | None = None
-    ambient_temperature: float | None = None
     spinup_peak: float | None = None
     spinup_location: Location = field(default_factory=dict)
     metal_strength: tuple[MetalEvidence, ...] | None = None

@@ -403,11 +403,6 @@ def gather_evidence(p: PointAnalyses) -> Evidence:
         notes["separation"] = found.note
     values.update(_temperature(p, notes))
     values["allowable_temperature"] = celsius_to_kelvin(p.design.thermal.allowable_temperature_c)
-    values["ambient_temperature"] = (
-        p.conditions.ambient_temperature
-        if p.conditions is not None
-        else celsius_to_kelvin(p.design.thermal.ambient_temperature_c)
-    )
     values.update(_spinup_peak(p, found.criticals))
     values.update(_torsional(p, notes))
     values.update(_loops(p))

@@ -129,8 +129,8 @@ class Check:
         margins are fractions of the operating speed, so they compare across criticals).
     scale : float or None
         What the margin is measured against when checks are compared
-        (:func:`normalised_margin`): |limit| when None; the temperature check's is the rise
-        above the point's ambient that the limit allows.
+        (:func:`normalised_margin`): each finding's |limit| when None; the temperature check's
+        is the allowable's rise above the ISA standard day (15 °C).
     """
 
     key: str
@@ -176,23 +176,32 @@ class Check:
 
 def normalised_margin(check: Check) -> float:
     """A check's margin as a dimensionless number, the one measure by which checks of different
-    kinds are compared: the governing point and each check's worst point of an envelope, the
-    margins figures, the optimizer's constraints and the explorer.
+    kinds are compared: the governing point of an envelope, the margins figures, the optimizer's
+    constraints and the explorer.
 
-    margin / scale, the scale being the check's :attr:`Check.scale` when given (the temperature
-    check's: the allowed rise above the ambient, so 11 K below a 100 °C allowable on a 50 °C day
-    reads 22 %, not the 3 % of 11 K over 373 K), else |limit| (a zero limit: the margin itself).
-    A failing check never reads as positive (a thermal runaway fails with the margin of the last
-    temperature computed): −1e-300 then. +inf: passed with nothing to measure (no critical speed,
-    no phase crossover); NaN: not evaluated.
+    The smallest margin / scale of the check's findings (of every point, for an envelope's
+    check), the scale being the check's :attr:`Check.scale` when given (the temperature's: the
+    allowable's rise above 15 °C, so 11 K below a 100 °C allowable reads 13 %, not the 3 % of
+    373 K), else each finding's own |limit| (a separation's required margin depends on its
+    critical's AF; a finding with a zero limit, a critically damped peak, cannot approach it:
+    ±inf). A failing check never reads as positive (a thermal runaway fails with the margin of
+    the last temperature computed): −1e-300 then. +inf: passed with nothing to measure (no
+    critical speed, no phase crossover); NaN: not evaluated.
     """
     if check.status == "not evaluated":
         return float("nan")
     if check.margin is None:
         return float("-inf") if check.status == "fail" else float("inf")
-    scale = check.scale if check.scale else (abs(check.limit) if check.limit else 1.0)
-    relative = float(check.margin) / scale
+    pairs: list[tuple[float, float | None]] = [(f.margin, f.limit) for f in check.findings]
+    pairs = pairs or [(check.margin, check.limit)]
+    relative = min(_share(margin, check.scale if check.scale else abs(limit or 0.0)) for margin, limit in pairs)
     return min(relative, -1e-300) if check.status == "fail" and relative >= 0 else relative
+
+
+def _share(margin: float, scale: float) -> float:
+    if scale:
+        return float(margin) / scale
+    return float("inf") if margin >= 0 else float("-inf")
 
 
 @dataclass(frozen=True)
@@ -212,9 +221,7 @@ class Verdict(ResultMixin):
         normalised = [normalised_margin(c) for c in self.checks]
         scaled = sorted({c.title for c in self.checks if c.scale and c.status != "not evaluated"})
         if scaled:
-            kwargs.setdefault(
-                "xlabel", f"margin / limit [%]  ({', '.join(scaled)}: / the rise above ambient it allows; < 0 fails)"
-            )
+            kwargs.setdefault("xlabel", f"margin / limit [%]; {', '.join(scaled)}: margin / (limit − 15 °C); < 0 fails")
         return margins_figure(
             [c.title for c in self.checks],
             normalised,
