@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.classify import ModalLabeler, degenerate_groups
-from flexshaft.analyses.continuation import mode_root, mode_roots, newton_many
+from flexshaft.analyses.continuation import mode_root, mode_roots, newton_many, predicted_start
 from flexshaft.analyses.datasets import curves_dataset
 from flexshaft.analyses.eigen import ReducedModel, candidates, lowest_modes
 from flexshaft.analyses.eigen_error import (
@@ -177,9 +177,6 @@ class TrackedModes:
 
 #: Smallest MAC between a mode's shapes at neighbouring speeds that continuation accepts.
 _CONTINUATION_MAC = 0.9
-#: Smallest MAC between a mode's shapes at the last two speeds for which :func:`_prediction`
-#: extrapolates the shape (else Newton starts from the last shape).
-_EXTRAPOLATED_SHAPE_MAC = 0.9
 
 
 def track_modes(
@@ -198,8 +195,9 @@ def track_modes(
     :func:`~flexshaft.analyses.eigen.lowest_modes`, refined and numbered by damped frequency, as
     :func:`~flexshaft.analyses.modal.modes` numbers the modes at that speed (column k is mode
     k + 1 of its tables). Each later speed is first tried by continuation: every mode's
-    eigenvalue and shape are extrapolated from the previous speeds (:func:`_prediction`) and
-    converged on its own problem; with ``refine_loss`` (the hysteretic loss) that is
+    eigenvalue and shape are extrapolated from the previous speeds
+    (:func:`~flexshaft.analyses.continuation.predicted_start`) and converged on its own problem;
+    with ``refine_loss`` (the hysteretic loss) that is
     :func:`~flexshaft.analyses.continuation.mode_root`, which continues both sides of the
     synchronous line and keeps the root consistent with its side. The step is accepted when
     every mode converged, kept its shape (MAC ≥ 0.9 with the previous speed) and no two modes
@@ -333,7 +331,7 @@ def rest_degenerate(red: ReducedModel, s: np.ndarray, untracked, hysteretic: boo
 def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     """Continuation step to speeds[k]; None when it cannot be trusted."""
     speed = speeds[k]
-    predicted, start = _prediction(speeds, eig, states, k)
+    predicted, start = predicted_start(speeds, eig, states, k)
     Y_prev = states[k - 1]
     if viscous is None:
         s_k, Y_k, converged = mode_roots(red, speed, predicted, start)
@@ -347,38 +345,6 @@ def _continue(red, speeds, eig, states, k, n_modes, viscous=None):
     if np.any(gaps < 1e-7 * np.abs(s_k)[:, None]):
         return None
     return s_k, Y_k
-
-
-def _prediction(speeds, eig, states, k):
-    """Newton's starting point at speeds[k] for every mode ``(s, Y)``: the eigenvalues
-    extrapolated from the previous speeds (quadratic through three, linear through two, the
-    last one alone at k = 1) and the shapes extrapolated linearly from the last two (each
-    column of speeds[k − 2] turned to the phase of its successor first), where a mode's two
-    shapes agree (MAC at least :data:`_EXTRAPOLATED_SHAPE_MAC`; else the last shape). What converges
-    is the root Newton's method reaches from there, to its tolerance, as from the last speed's
-    point: the better start saves a step where the curve bends (16 % of the steps of the
-    thesis shafts' and the embedded designs' stability and Campbell tracking)."""
-    speed = speeds[k]
-    Y_prev = states[k - 1]
-    if k == 1:
-        return eig[0], Y_prev
-    x0, x1, x2 = speeds[k - 3 : k] if k >= 3 else (None, *speeds[k - 2 : k])
-    if x0 is None:
-        predicted = eig[k - 1] + (speed - x2) / (x2 - x1) * (eig[k - 1] - eig[k - 2])
-    else:  # Lagrange's quadratic through the last three speeds
-        predicted = (
-            (speed - x1) * (speed - x2) / ((x0 - x1) * (x0 - x2)) * eig[k - 3]
-            + (speed - x0) * (speed - x2) / ((x1 - x0) * (x1 - x2)) * eig[k - 2]
-            + (speed - x0) * (speed - x1) / ((x2 - x0) * (x2 - x1)) * eig[k - 1]
-        )
-    Y_old = states[k - 2]
-    inner = np.einsum("ij,ij->j", Y_old.conj(), Y_prev)
-    norms = (np.abs(Y_old) ** 2).sum(axis=0) * (np.abs(Y_prev) ** 2).sum(axis=0)
-    same = np.abs(inner) ** 2 >= _EXTRAPOLATED_SHAPE_MAC * norms
-    phase = np.where(same, inner / np.where(same, np.abs(inner), 1.0), 0.0)
-    t = (speed - x2) / (x2 - x1)
-    start = np.where(same, Y_prev + t * (Y_prev - Y_old * phase), Y_prev)
-    return predicted, start
 
 
 def _match(red, solve, speed, prev, n_modes, hysteretic, screen=False):
