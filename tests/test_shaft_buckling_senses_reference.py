@@ -1,0 +1,91 @@
+"""The laminated shaft's buckling numbers in each sense of the torque, by mirror symmetry.
+
+An unbalanced laminate buckles at different torques in the two senses (the fibres of a [+45]
+ply are stretched by one sense and compressed by the other; the laminated shell of
+:mod:`flexshaft.buckling`). Reflecting the tube in a plane through its axis maps the ply angle θ to −θ and the
+torque T to −T, and leaves a simply supported tube, its radius and length unchanged: the [−45]
+tube's positive-sense numbers (critical, global and crimping torques, wave number) are the [+45]
+tube's negative-sense numbers and the other way round. So each sense of the [+45] tube is
+checked against the other tube's opposite sense, for the shear-deformable shell and for the
+classical one, whose critical torque in the weaker sense is min(T₊, T₋) = min(T₊[+45], T₊[−45]).
+The tube (0.2 m long, 101.6 mm, 3 mm of a carbon/epoxy ply) is short enough that the two senses
+differ by a factor 2 and buckle in different wave numbers (4 and 2). Tolerance 1e-9: the mirror
+image is the same Ritz problem with its coupling terms' signs reversed, solved to round-off.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from flexshaft.analyses.shaft_buckling import shaft_buckling
+from flexshaft.assembly import build_model
+from flexshaft.design import loads_design
+
+L = 0.2
+
+TUBE = f"""
+name = "one-ply tube"
+[materials.ply]
+kind = "lamina"
+density = 1600.0
+E_L = 120.0e9
+E_T = 8.0e9
+G_LT = 4.0e9
+nu_LT = 0.3
+X_t = 2000.0e6
+X_c = 1000.0e6
+Y_t = 40.0e6
+Y_c = 140.0e6
+S = 60.0e6
+[shaft]
+x_start = 0.0
+x_end = {L}
+outer_diameter = 0.1016
+wall_thickness = 0.003
+material = "ply"
+layup = "ANGLE"
+fixed_start = ["u", "v", "w", "theta"]
+fixed_end = ["v", "w"]
+[[bearings]]
+name = "stop"
+kind = "contact"
+x = {L}
+stiffness = {{}}
+[operating]
+speed_rpm = 4000.0
+power = 150e3
+[mesh]
+shaft_elements = 4
+"""
+
+
+def _model(angle: str):
+    return build_model(loads_design(TUBE.replace("ANGLE", angle)))
+
+
+@pytest.fixture(scope="module")
+def pair():
+    plus, minus = _model("45"), _model("-45")
+    return plus, minus, shaft_buckling(plus).to_dict(), shaft_buckling(minus).to_dict()
+
+
+def test_each_sense_is_the_mirror_tubes_other_sense(pair):
+    _, _, plus, minus = pair
+    for key in ("critical_torque", "global_torque", "crimping_torque"):
+        assert plus[f"{key}_negative_Nm"] == pytest.approx(minus[f"{key}_positive_Nm"], rel=1e-9)
+        assert plus[f"{key}_positive_Nm"] == pytest.approx(minus[f"{key}_negative_Nm"], rel=1e-9)
+    assert plus["wave_number_negative"] == minus["wave_number_positive"]
+    assert plus["wave_number_positive"] == minus["wave_number_negative"]
+    # the senses differ, so a sense read for the other cannot pass the above
+    assert plus["critical_torque_negative_Nm"] > 1.5 * plus["critical_torque_positive_Nm"]
+    assert plus["wave_number_positive"] != plus["wave_number_negative"]
+    assert plus["global_torque_positive_Nm"] < 0.5 * plus["crimping_torque_positive_Nm"]
+
+
+def test_the_classical_comparison_is_the_weaker_sense(pair):
+    plus_model, minus_model, plus, _ = pair
+    senses = [
+        shaft_buckling(m, theory="classical").result.torque_positive for m in (plus_model, minus_model)
+    ]  # T₊ of [+45] and T₊ of [−45] = T₋ of [+45]
+    assert max(senses) > 1.5 * min(senses)
+    assert plus["classical_critical_torque_Nm"] == pytest.approx(min(senses), rel=1e-9)
