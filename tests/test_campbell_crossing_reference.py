@@ -16,10 +16,11 @@ disk's). In complex coordinates (r = v + i w, φ likewise) a whirl e^{st} obeys
     det [[m s² + K₁₁ c, K₁₂ c], [K₁₂ c, I_d s² − i I_p Ω s + K₂₂ c]] = 0,
 
 a quartic in s, with c = 1 + i η for a whirl faster than the spin (Im s > Ω: the rotating loss
-sees ω − Ω > 0) and c = 1 − i η below it (backward whirl, Im s < 0; tests/test_campbell_jeffcott
-_reference.py). Roots with Im s > 0 whirl forward; a backward root is reported as its conjugate.
+sees ω − Ω > 0) and c = 1 − i η below it (Im s < Ω, backward whirl included; forward whirl
+slower than the spin also sees ω − Ω < 0; tests/test_campbell_jeffcott_reference.py). Roots
+with Im s > 0 whirl forward; a backward root is reported as its conjugate.
 
-At rest the tilt pair (0.86 ω_n) lies below the translation pair (≈ 1.0 ω_n, ω_n = √(k/m) of the
+At rest the tilt pair (0.86 ω_n) lies below the translation pair (1.08 ω_n, ω_n = √(k/m) of the
 midspan Jeffcott rotor); with spin the forward tilt rises through the forward translation. Three
 tracked modes (the torsion and the tilt pair: the translation is not tracked) at Ω = 0, 0.5, 1.0
 ω_n: the first step starts the forward tilt from its rest root 0.86 ω_n, nearer the forward

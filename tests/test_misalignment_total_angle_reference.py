@@ -1,4 +1,6 @@
-"""The largest angle a coupling sees: the static bend plus the whirl's amplitude.
+"""The largest angle a coupling sees: the static bend plus the whirl's amplitude (circular whirl).
+
+For a circular whirl the sum is exact; for an ellipse static + major semi-axis is an upper bound.
 
 Two aluminium tubes on pinned ends joined at x = a by a hinge of angular stiffness k (the model
 of tests/test_misalignment_reference.py): a force P at ξ < a bends the hinge by the span's

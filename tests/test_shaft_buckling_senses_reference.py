@@ -2,18 +2,38 @@
 
 An unbalanced laminate buckles at different torques in the two senses (the fibres of a [+45]
 ply are stretched by one sense and compressed by the other; the laminated shell of
-:mod:`flexshaft.buckling`). Reflecting the tube in a plane through its axis maps the ply angle θ to −θ and the
-torque T to −T, and leaves a simply supported tube, its radius and length unchanged: the [−45]
-tube's positive-sense numbers (critical, global and crimping torques, wave number) are the [+45]
-tube's negative-sense numbers and the other way round. So each sense of the [+45] tube is
-checked against the other tube's opposite sense, for the shear-deformable shell and for the
-classical one, whose critical torque in the weaker sense is min(T₊, T₋) = min(T₊[+45], T₊[−45]).
-The tube (0.2 m long, 101.6 mm, 3 mm of a carbon/epoxy ply) is short enough that the two senses
-differ by a factor 2 and buckle in different wave numbers (4 and 2). Tolerance 1e-9: the mirror
-image is the same Ritz problem with its coupling terms' signs reversed, solved to round-off.
+:mod:`flexshaft.buckling`). Reflecting the tube in a plane through its axis maps the ply angle
+θ to −θ and the torque T to −T, and leaves a simply supported tube, its radius and length
+unchanged: the [−45] tube's positive-sense numbers (critical, global and crimping torques, wave
+number) are the [+45] tube's negative-sense numbers and the other way round. So each sense of
+the [+45] tube is checked against the other tube's opposite sense, for the shear-deformable
+shell and for the classical one, whose critical torque in the weaker sense is
+min(T₊, T₋) = min(T₊[+45], T₊[−45]). The tube (0.2 m long, 101.6 mm, 3 mm of a carbon/epoxy
+ply) is short enough that the two senses differ by a factor 2 and buckle in different wave
+numbers (4 and 2). Tolerance 1e-9: the mirror image is the same Ritz problem with its coupling
+terms' signs reversed, solved to round-off.
+
+The mirror cannot tell which sense is which (a convention flipped in both tubes passes it), so
+the senses are anchored independently by the crimping closed form of
+tests/test_buckling_weaker_sense_reference.py: for plies at +45°, T₊ = 2πR² k t G₂₃ and
+T₋ = 2πR² k t G₁₃, R = (D − t)/2 = 49.3 mm the mid-surface radius, k = 5/6 the lamina's default
+shear correction, and the ply's defaults in :mod:`flexshaft.design.materials` G₁₃ = G_LT = 4 GPa,
+G₂₃ = E_T/(2(1 + ν₂₃)) = E_T/3 = 2.667 GPa (ν₂₃ = 0.5): T₊ = 101 808.127 N m,
+T₋ = 152 712.191 N m. The package evaluates the same closed form of A (A44 = A55 =
+k t (G₁₃ + G₂₃)/2, A45 = k t (G₁₃ − G₂₃)/2, T = 2πR²(√(A44 A55) ∓ A45)); the difference loses
+about G₁₃/G₂₃ = 1.5 ulp, so 1e-12 relative. Each sense's critical torque is the lowest of its
+global helix, its crimping limit and any shorter wave below both (:mod:`flexshaft.buckling.shear`);
+this tube has none, so it is min(global, crimping): the global helix, 9.2 and 19.4 kN m, far
+below crimping. The positive sense is the weaker: a positive torque (vector
+along +x on the end x = L, the convention of :mod:`flexshaft.buckling`) stretches the +45°
+fibres and compresses the −45° diagonal, across the fibres, where only the matrix carries
+(E_T = 8 GPa against E_L = 120 GPa), so the compressed diagonal buckles sooner; for crimping
+the positive sense takes the smaller transverse shear modulus, G₂₃ < G₁₃.
 """
 
 from __future__ import annotations
+
+import math
 
 import pytest
 
@@ -21,7 +41,7 @@ from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-L = 0.2
+L, D, WALL = 0.2, 0.1016, 0.003
 
 TUBE = f"""
 name = "one-ply tube"
@@ -40,8 +60,8 @@ S = 60.0e6
 [shaft]
 x_start = 0.0
 x_end = {L}
-outer_diameter = 0.1016
-wall_thickness = 0.003
+outer_diameter = {D}
+wall_thickness = {WALL}
 material = "ply"
 layup = "ANGLE"
 fixed_start = ["u", "v", "w", "theta"]
@@ -89,3 +109,15 @@ def test_the_classical_comparison_is_the_weaker_sense(pair):
     ]  # T₊ of [+45] and T₊ of [−45] = T₋ of [+45]
     assert max(senses) > 1.5 * min(senses)
     assert plus["classical_critical_torque_Nm"] == pytest.approx(min(senses), rel=1e-9)
+
+
+def test_the_senses_crimping_limits_and_critical_torques_by_closed_form(pair):
+    _, _, plus, _ = pair
+    crimping = 2 * math.pi * ((D - WALL) / 2) ** 2 * (5 / 6) * WALL  # 2πR² k t, per pascal of G
+    g13, g23 = 4.0e9, 8.0e9 / 3  # G_LT and E_T/3, the lamina's defaults
+    assert plus["crimping_torque_positive_Nm"] == pytest.approx(crimping * g23, rel=1e-12)  # 101 808.127
+    assert plus["crimping_torque_negative_Nm"] == pytest.approx(crimping * g13, rel=1e-12)  # 152 712.191
+    for sense in ("positive", "negative"):
+        lower = min(plus[f"global_torque_{sense}_Nm"], plus[f"crimping_torque_{sense}_Nm"])
+        assert plus[f"critical_torque_{sense}_Nm"] == pytest.approx(lower, rel=1e-12)
+    assert plus["critical_torque_positive_Nm"] < plus["critical_torque_negative_Nm"]  # the weaker sense

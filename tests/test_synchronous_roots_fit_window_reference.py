@@ -10,11 +10,13 @@ ends x = ±1 but only 1/8 on the inner half |x| ≤ 1/2 (its extremum, x² = 3/8
 A stand-in solver with one weight w(Ω) = 1 + ε x⁴ on [100, 300] rad/s, ε = 5e-8: the fit on the
 whole range errs by ε/4 = 1.25e-8 at the ends, more than 1e-8 of the weight's size (1 + ε), so
 the range must be halved (checked on the inner half only it would pass: ε/8 = 6.25e-9). On each
-half, w = 1 + (ε/16)(x' ∓ 1)⁴ and the error is at most (ε/16)(1 + 1/4 + 1) ≈ 7e-9 (the quartic's
-x'⁴ − (3/4)x'² and its cubic's T₃(x')/4 part), so the halves are kept. Every kept window's fit
-is then checked here on 401 points against the weight itself: within ``FIT_TOLERANCE`` of its
-size (the tolerance the module states, no slack needed: both errors are exact polynomials
-evaluated to round-off, ~1e-16).
+half, w = 1 + (ε/16)(x' ∓ 1)⁴ = 1 + (ε/16)(x'⁴ ∓ 4x'³ + ...), the quadratic part fitted exactly;
+x'⁴ leaves x'⁴ − (3/4)x'² (at most 1/4) and the cubic ∓4x'³ leaves ∓4·T₃(x')/4 = ∓T₃(x') (x'³
+less its fit is the nodes' polynomial x'(x'² − 3/4) = T₃(x')/4; at most 1), so the error is at
+most (ε/16)(1/4 + 1) = (ε/16)(5/4) ≈ 3.9e-9 (reached at the range's ends Ω = 100, 300 rad/s)
+and the halves are kept. Every kept window's fit is then checked here on 401 points against the
+weight itself: within ``FIT_TOLERANCE`` of its size (the tolerance the module states, no slack
+needed: both errors are exact polynomials evaluated to round-off, ~1e-16).
 """
 
 from __future__ import annotations
