@@ -7,7 +7,8 @@ References:
   two-angle (0, 15, 30, 45, 55, 60, 75, 90); 9 walls 1–6 mm; 13 K_p"; ``full``: "α every 1°;
   19 × 19 two-angle; 23 walls; 31 K_p". The K_p grids span 1e5 to 1e8 N/m (study 4's default,
   :func:`~flexshaft.thesis.gain.proportional_gain_study`) even in log10: 13 gains are 4 per
-  decade, K_p,i = 10^(5 + i/4);
+  decade, K_p,i = 10^(5 + i/4); the report's two-angle grid holds the thesis's optimum
+  (module constant ``THESIS["best_two_angle_deg"]``, 55° and 0°);
 * the headline reports each spin-up peak as the study found it (:class:`DesignStudies`:
   ``peak_before`` the design's gains, ``peak_after`` the tuned ones): hand-set 38 mm and 4 mm
   (the thesis's numbers, module constant ``THESIS``) come back as 0.038 and 0.004 m.
@@ -22,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from flexshaft.thesis.design_studies import STUDY_GRIDS, DesignStudies, headline
+from flexshaft.thesis.design_studies import STUDY_GRIDS, THESIS, DesignStudies, headline
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "studies.md"
 
@@ -34,19 +35,29 @@ def _row(resolution: str) -> str:
     raise AssertionError(f"no {resolution} row in {DOCS}")
 
 
+def _find(pattern: str, row: str) -> str:
+    m = re.search(pattern, row)
+    assert m, f"docs/studies.md row changed: no match for {pattern!r} in {row!r}"
+    return m.group(1)
+
+
 def test_report_grids_are_those_the_docs_state():
     row = _row("report")
     grid = STUDY_GRIDS["report"]
-    step = float(re.search(r"α every ([\d.]+)°", row).group(1))
+    step = float(_find(r"α every ([\d.]+)°", row))
     angles = grid["angles"]
     np.testing.assert_allclose(np.diff(angles), step, rtol=1e-12)
-    assert angles[0] == step and angles[-1] < 90.0 <= angles[-1] + step  # 2.5 ... 87.5
-    listed = [float(a) for a in re.search(r"two-angle \(([\d, ]+)\)", row).group(1).split(",")]
+    # the grid's ends are the code's convention (the docs give only the step): from one step
+    # to the last below 90 deg, 2.5 ... 87.5
+    assert angles[0] == step and angles[-1] < 90.0 <= angles[-1] + step
+    listed = [float(a) for a in _find(r"two-angle \(([\d, ]+)\)", row).split(",")]
     assert len(listed) == 8 and grid["two_angles"].tolist() == listed
-    n_kp = int(re.search(r"(\d+) K_p", row).group(1))
+    # the thesis's two-angle optimum (module constant THESIS, "best_two_angle_deg") is a grid point
+    assert set(THESIS["best_two_angle_deg"]) <= set(grid["two_angles"].tolist())
+    n_kp = int(_find(r"(\d+) K_p", row))
     np.testing.assert_allclose(grid["kp"], 10.0 ** (5 + 3 * np.arange(n_kp) / (n_kp - 1)), rtol=1e-12)
     assert n_kp == 13  # 4 per decade: the decades 1e5, 1e6, 1e7, 1e8 are grid points
-    n_walls = int(re.search(r"(\d+) walls 1–6 mm", row).group(1))
+    n_walls = int(_find(r"(\d+) walls 1–6 mm", row))
     walls = grid["walls"]
     assert walls.size == n_walls and walls.min() == 1e-3 and walls.max() == 6e-3
 
@@ -54,12 +65,12 @@ def test_report_grids_are_those_the_docs_state():
 def test_full_grids_are_those_the_docs_state():
     row = _row("full")
     grid = STUDY_GRIDS["full"]
-    step = float(re.search(r"α every ([\d.]+)°", row).group(1))
+    step = float(_find(r"α every ([\d.]+)°", row))
     np.testing.assert_allclose(np.diff(grid["angles"]), step, rtol=1e-12)
-    n_two = int(re.search(r"(\d+) × \d+ two-angle", row).group(1))
+    n_two = int(_find(r"(\d+) × \d+ two-angle", row))
     assert grid["two_angles"].size == n_two and grid["two_angles"][[0, -1]].tolist() == [0.0, 90.0]
-    assert grid["walls"].size == int(re.search(r"(\d+) walls", row).group(1))
-    n_kp = int(re.search(r"(\d+) K_p", row).group(1))
+    assert grid["walls"].size == int(_find(r"(\d+) walls", row))
+    n_kp = int(_find(r"(\d+) K_p", row))
     np.testing.assert_allclose(grid["kp"], 10.0 ** (5 + 3 * np.arange(n_kp) / (n_kp - 1)), rtol=1e-12)
 
 

@@ -15,6 +15,10 @@ For the ideal PD law the onset (Re s = 0, s = iω) is in closed form: ω² = (k 
 tests/test_stability.py); with the filter it is the Ω where the largest real part of the cubic's
 roots crosses zero (Brent's method on the polynomial's roots). The map's margin at the
 operating speed is the smallest damping ratio −Re s/|s| of the roots there.
+
+The bearings carry a design K_d of 500 N s/m: each map point's K_d is the bearings' whole
+derivative gain (the function builds the shared basis at K_d = 0), so the onset above uses the
+map's K_d alone; a basis keeping the design's K_d would add 500 N s/m to every point.
 """
 
 from __future__ import annotations
@@ -34,7 +38,8 @@ OPERATING = 0.8 * WN  # [rad/s], on the map's speed grid below
 
 def _rotor_with_two_ambs(extra: str = ""):
     amb = "\n".join(
-        f'[[bearings]]\nname = "amb_{k}"\nkind = "active"\nx = {L / 2}\nkp = 1.0\n{extra}' for k in ("a", "b")
+        f'[[bearings]]\nname = "amb_{k}"\nkind = "active"\nx = {L / 2}\nkp = 1.0\nkd = 500.0\n{extra}'
+        for k in ("a", "b")
     )
     text = jeffcott_text(ETA, 0.0).replace("speed_rpm = 0.0", f"speed_rpm = {float(OPERATING * 30 / np.pi)!r}")
     return loads_design(text + amb)

@@ -7,13 +7,13 @@ transient of each bay is a stand-in whose envelopes are written down, so every o
 by hand (no transient is integrated; milliseconds):
 
 * two bays of rotating mass m = (2, 3) kg, a fixed eccentricity e = 1e-4 m (the ``"fixed"``
-  distribution: |U_b| = e m_b whatever the angle);
-* bay 0 moves only shaft node 0 and bearing 0, bay 1 only node 1 and bearing 1, so each
-  output is one bay's |U_b| times its own unit envelope, independent of the angles;
-* shaft nodes whirl in circles (w = −i v): the orbit's major semi-axis is |v|;
-* bearing b's unit orbit is the ellipse v = 0.6 c_b(t), w = −0.8 i c_b(t): semi-axes
-  0.8 |c_b| and 0.6 |c_b|, the major one 0.8 |c_b| (an ellipse's major semi-axis, not the
-  v amplitude);
+  distribution: |U_b| = e m_b, the phase ψ_b drawn);
+* both bays move shaft node 0, so its envelope Σ_b e m_b e^{iψ_b} h_b(t) depends on the drawn
+  angles and each sample's peak differs; bay 1 alone also moves node 1;
+* shaft nodes whirl on in-phase straight lines (w = v): the orbit's major semi-axis is √2 |v|
+  (not |v|);
+* bearing b is moved by bay b alone, on the in-phase line v = 0.6 c_b(t), w = 0.8 c_b(t): major
+  semi-axis |c_b| (not max(|v|, |w|) = 0.8 |c_b|, nor the v amplitude 0.6 |c_b|);
 * bearing forces are circles of radius |f_b(t)|; the largest force is the largest bearing's,
   not a sum over bearings;
 * static offsets (1e-4, 2e-4) m and static forces (30, 5) N are added per bearing before the
@@ -49,19 +49,22 @@ SPEEDS = np.array([10.0, 20.0, 30.0])  # rad/s, the run's speed at each output t
 OFFSET = np.array([1e-4, 2e-4])  # m
 STATIC = np.array([30.0, 5.0])  # N
 # unit envelopes per bay over the three times [m/(kg m)], [N/(kg m)]
-SHAFT = (np.array([1.0, 4.0, 2.0]), np.array([3.0, 1.0, 0.5]))  # node b, bay b
-ORBIT = (np.array([0.5, 1.0, 0.25]), np.array([0.2, 0.1, 0.6]))  # c_b(t)
+SHAFT0 = (np.array([1.0, 4.0, 2.0]), np.array([3.0, 1.0, 0.5]) * np.exp(0.3j))  # node 0, bay b
+SHAFT1 = np.array([0.5, 0.2, 0.1])  # node 1, bay 1 only
+ORBIT = (np.array([0.5, 1.0, 0.25]), np.array([0.2, 0.1, 0.6]))  # c_b(t), bearing b, bay b
 FORCE = (np.array([100.0, 50.0, 20.0]), np.array([10.0, 300.0, 40.0]))
 
 
 def _fake_run(bay: int) -> SimpleNamespace:
     n_t = SPEEDS.size
     shaft = np.zeros((2, 2, n_t), complex)  # (v/w, node, time)
-    shaft[0, bay] = SHAFT[bay] * np.exp(0.3j)
-    shaft[1, bay] = -1j * shaft[0, bay]
+    shaft[0, 0] = SHAFT0[bay]
+    if bay == 1:
+        shaft[0, 1] = SHAFT1
+    shaft[1] = shaft[0]  # w = v: a straight line at 45 deg
     act = np.zeros((2, 2, n_t), complex)  # (bearing, v/w, time)
     act[bay, 0] = 0.6 * ORBIT[bay]
-    act[bay, 1] = -0.8j * ORBIT[bay]
+    act[bay, 1] = 0.8 * ORBIT[bay]
     force = np.zeros((2, 2, n_t), complex)
     force[bay, 0] = FORCE[bay]
     force[bay, 1] = -1j * FORCE[bay]
@@ -72,9 +75,9 @@ def _fake_run(bay: int) -> SimpleNamespace:
 def run(monkeypatch):
     steps = []
 
-    def transient(model, profile, *, loads_per_speed_squared, reduced, rtol, output_step):
-        steps.append(output_step)
-        return _fake_run(int(np.flatnonzero(loads_per_speed_squared)[0]))
+    def transient(model, profile, **kw):
+        steps.append(kw["output_step"])
+        return _fake_run(int(np.flatnonzero(kw["loads_per_speed_squared"])[0]))
 
     monkeypatch.setattr(runup, "imbalance_bays", lambda model: [(0.0, 1.0), (1.0, 2.0)])
     monkeypatch.setattr(runup, "bay_rotating_masses", lambda model: MASS)
@@ -88,11 +91,14 @@ def run(monkeypatch):
     return out, steps
 
 
+def _angles(k: int) -> np.ndarray:
+    return np.random.default_rng([7, k]).uniform(0.0, 2 * np.pi, 2)
+
+
 def test_each_sample_uses_its_own_stream_of_the_steady_study(run):
     out, _ = run
     for k in range(3):
-        angles = np.random.default_rng([7, k]).uniform(0.0, 2 * np.pi, 2)
-        np.testing.assert_allclose(out.draws.angle[k], angles, rtol=1e-15)
+        np.testing.assert_allclose(out.draws.angle[k], _angles(k), rtol=1e-15)
     np.testing.assert_array_equal(out.draws.eccentricity, np.full((3, 2), ECC))
 
 
@@ -101,19 +107,29 @@ def test_default_output_step_is_a_quarter_period_of_the_top_speed(run):
     assert steps == [pytest.approx(math.pi / (2 * 30.0), rel=1e-15)] * 2
 
 
-def test_peaks_are_the_largest_node_and_bearing_of_the_bays_sum(run):
+def test_shaft_peak_of_each_sample_sums_the_bays_with_their_drawn_phases(run):
     out, _ = run
-    u = ECC * MASS  # |U_b| [kg m]
-    # shaft: node 0 peaks 4 u0 at t1 (20 rad/s) = 8e-4; node 1 peaks 3 u1 at t0 = 9e-4
-    shaft_t = np.maximum(u[0] * SHAFT[0], u[1] * SHAFT[1])
-    np.testing.assert_allclose(out.shaft_peak, shaft_t.max(), rtol=1e-6)
-    np.testing.assert_allclose(out.shaft_peak_speed, SPEEDS[int(np.argmax(shaft_t))], rtol=0)
-    # bearings: major semi-axis 0.8 |c_b| u_b: 0.8 * 1.0 * 2e-4 = 1.6e-4, 0.8 * 0.6 * 3e-4 = 1.44e-4
-    orbit = np.array([0.8 * u[0] * ORBIT[0].max(), 0.8 * u[1] * ORBIT[1].max()])
+    peaks = []
+    for k in range(3):
+        u = ECC * MASS * np.exp(1j * _angles(k))  # U_b = e m_b e^{iψ_b} [kg m]
+        node0 = math.sqrt(2) * np.abs(u[0] * SHAFT0[0] + u[1] * SHAFT0[1])  # w = v: √2 |v|
+        node1 = math.sqrt(2) * np.abs(u[1] * SHAFT1)
+        per_time = np.maximum(node0, node1)
+        np.testing.assert_allclose(out.shaft_peak[k], per_time.max(), rtol=1e-6)
+        assert out.shaft_peak_speed[k] == SPEEDS[int(np.argmax(per_time))]
+        peaks.append(per_time.max())
+    assert np.ptp(peaks) > 1e-2 * max(peaks)  # the phases matter: the samples differ
+
+
+def test_bearing_peaks_are_the_largest_bearing_of_the_bays_sum(run):
+    out, _ = run
+    u = ECC * MASS  # |U_b| [kg m]; bearing b sees bay b alone, so the phase drops out
+    # major semi-axis of v = 0.6 c, w = 0.8 c is |c|: 1.0 * 2e-4 = 2e-4, 0.6 * 3e-4 = 1.8e-4
+    orbit = np.array([u[0] * ORBIT[0].max(), u[1] * ORBIT[1].max()])
     load = np.array([u[0] * FORCE[0].max(), u[1] * FORCE[1].max()])  # 0.02, 0.09 N
     np.testing.assert_allclose(out.actuator_orbit_max, orbit.max(), rtol=1e-6)
     np.testing.assert_allclose(out.actuator_force_max, load.max(), rtol=1e-6)
-    # static + dynamic per bearing, then the largest: 2.6e-4 vs 3.44e-4 m; 30.02 vs 5.09 N
+    # static + dynamic per bearing, then the largest: 3e-4 vs 3.8e-4 m; 30.02 vs 5.09 N
     np.testing.assert_allclose(out.actuator_excursion_max, (orbit + OFFSET).max(), rtol=1e-6)
     np.testing.assert_allclose(out.actuator_load_max, (load + STATIC).max(), rtol=1e-6)
 

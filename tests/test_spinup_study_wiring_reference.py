@@ -29,15 +29,19 @@ import numpy as np
 from flexshaft.assembly.model import Controller
 from flexshaft.thesis import spinup_maps
 
-KP = np.array([1e5, 1e6])  # [N/m]
+KP = np.array([1e5, 1e6, 1e7])  # [N/m]
 KD = np.array([0.0, 100.0, 1000.0])  # [N s/m]
-PEAK = np.array([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]) * 1e-3  # spin-up shaft peak [m]
+# spin-up shaft peak [m], (n_kp, n_kd), asymmetric: a law built from the other axis's indices
+# (K_p,j, K_d,i) would read the transposed entry
+PEAK = np.array([[3.0, 1.0, 5.0], [9.0, 4.0, 6.0], [7.0, 8.0, 2.0]]) * 1e-3
 GAP = 2.0**-12  # [m]
-# each actuator's peak orbit [m] (n_kp, n_kd, 2): the quietest pair (1e5, 0) reaches the gap
-# exactly at its second actuator; (1e5, 100) is below the gap; the rest far beyond it
-ORBIT = np.full((2, 3, 2), 1.0)
-ORBIT[0, 0] = (GAP / 2, GAP)
-ORBIT[0, 1] = (GAP / 4, GAP / 4)
+# each actuator's peak orbit [m] (n_kp, n_kd, 2): the quietest allowed pair (1e5, 100), off the
+# diagonal, reaches the gap exactly at its second actuator; (1e5, 1000) and (1e6, 1000) are
+# below the gap; the rest (the quieter diagonal (1e7, 1000) included) far beyond it
+ORBIT = np.full((3, 3, 2), 1.0)
+ORBIT[0, 1] = (GAP / 2, GAP)
+ORBIT[0, 2] = (GAP / 4, GAP / 4)
+ORBIT[1, 2] = (GAP / 8, GAP / 8)
 
 
 def _study(monkeypatch, gap):
@@ -48,7 +52,7 @@ def _study(monkeypatch, gap):
             seen.append(law)
             peak = 0.0
         else:
-            kd, kp = law[0].numerator
+            kp, kd = law[0].kp, law[0].kd
             peak = float(PEAK[np.flatnonzero(KP == kp)[0], np.flatnonzero(KD == kd)[0]])
         return SimpleNamespace(
             shaft_peak=np.array([peak]),
@@ -75,10 +79,10 @@ def _study(monkeypatch, gap):
 
 def test_a_pair_whose_orbit_equals_the_gap_is_allowed(monkeypatch):
     out, _ = _study(monkeypatch, GAP)
-    assert out["gains_after"] == (1e5, 0.0) and out["peak_after"] == 1e-3
-    # just below the gap that pair is out: the next quietest within it, (1e5, 100), 2 mm
+    assert out["gains_after"] == (1e5, 100.0) and out["peak_after"] == 1e-3
+    # just below the gap that pair is out: the next quietest within it, (1e5, 1000), 5 mm
     out, _ = _study(monkeypatch, np.nextafter(GAP, 0.0))
-    assert out["gains_after"] == (1e5, 100.0) and out["peak_after"] == 2e-3
+    assert out["gains_after"] == (1e5, 1000.0) and out["peak_after"] == 5e-3
 
 
 def test_surfaces_are_the_curves_of_the_gain_pairs_they_name(monkeypatch):
