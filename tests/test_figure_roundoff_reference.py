@@ -55,3 +55,16 @@ def test_an_undamped_modes_round_off_gets_the_colour_of_zero_damping():
     assert norm.vmin >= 0.0  # no unstable (red) half on the colour bar
     np.testing.assert_array_equal(colours, np.tile(zero, (colours.shape[0], 1)))
     _close(fig)
+
+
+def test_a_failed_check_with_no_margin_to_show_reads_fails_not_minus_zero():
+    """A thermal runaway fails with the margin of its last temperature, drawn at −1e-300 (below
+    zero, :func:`~flexshaft.verdict.result.normalised_margin`), which "{:+.0%}" prints as "-0%":
+    a failure that reads as exactly at the limit. A failure with no finite margin (−inf) is no
+    "not evaluated" either. Both bars must say they fail; a real −25 % keeps its number."""
+    from flexshaft.plot.verdict import margins_figure
+
+    fig = margins_figure(["runaway", "no margin", "orbit"], [-1e-300, -np.inf, -0.25], ["fail", "fail", "fail"])
+    texts = [t.get_text() for t in fig.axes[0].texts]
+    assert texts == ["fails", "fails: no finite margin", "-25%"]
+    _close(fig)

@@ -214,7 +214,7 @@ class Verdict(ResultMixin):
 
     def plot_margins(self, ax=None, **kwargs):
         """Bar chart of every check's normalised margin (:func:`normalised_margin`: its margin
-        divided by its limit, the temperature's by the rise the limit allows), green pass (to the
+        divided by its limit, the temperature's by the allowable's rise above 15 °C), green pass (to the
         axis end when it passed with no finite margin), red fail, grey not evaluated, with the
         margin in engineering units beside each bar (keywords to
         :func:`flexshaft.plot.verdict.margins_figure`)."""
