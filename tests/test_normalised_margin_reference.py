@@ -119,3 +119,12 @@ def test_an_envelopes_temperature_is_its_hottest_shaft_and_governs_by_it():
     assert normalised_margin(combined["temperature"]) == 0.25
     assert min(combined.values(), key=normalised_margin).key == "temperature"
     assert governing_point([cold, hot]) == "hot_day"
+
+
+def test_the_results_file_carries_the_figures_number():
+    """results.json's check entry (``Check.to_dict``) gives the normalised margin the figure
+    draws: 32 K below the allowable, 0.25 of its rise; ``null`` (strict JSON has no infinity)
+    for a critically damped peak's separation, which has nothing to approach."""
+    entry = _temperature(ALLOWABLE - 32.0).to_dict()
+    assert entry["margin"] == 32.0 and entry["normalised_margin"] == 0.25
+    assert _separation([(0.015625, 0.0)]).to_dict()["normalised_margin"] is None

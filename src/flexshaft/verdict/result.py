@@ -11,6 +11,7 @@ report (:mod:`flexshaft.report.verdict`) converts and prints them.
 from __future__ import annotations
 
 import html
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
@@ -168,6 +169,7 @@ class Check:
             "limit": self.limit,
             "margin": self.margin,
             "lower_bound": self.lower_bound,
+            "normalised_margin": _finite_or_none(normalised_margin(self)),
             "location": location_with_units(self.location),
             "note": self.note,
             "findings": [f.to_dict() for f in self.findings],
@@ -196,6 +198,12 @@ def normalised_margin(check: Check) -> float:
     pairs = pairs or [(check.margin, check.limit)]
     relative = min(_share(margin, check.scale if check.scale else abs(limit or 0.0)) for margin, limit in pairs)
     return min(relative, -1e-300) if check.status == "fail" and relative >= 0 else relative
+
+
+def _finite_or_none(x: float) -> float | None:
+    """``x``, or None when it is not finite (strict JSON has no NaN or infinity; the status says
+    whether a check without a finite normalised margin passed, failed or was not evaluated)."""
+    return x if math.isfinite(x) else None
 
 
 def _share(margin: float, scale: float) -> float:
