@@ -27,7 +27,7 @@ from flexshaft.optimize.mass import driveline_mass
 from flexshaft.resolution import SCREENING, VERDICT, Resolution
 from flexshaft.verdict.assess import Assessment, assess
 from flexshaft.verdict.checks import CHECK_KEYS, CHECKS
-from flexshaft.verdict.result import Check, normalised_margin
+from flexshaft.verdict.result import FAILED_WITHOUT_MARGIN, Check, normalised_margin
 
 __all__ = [
     "CHECK_KEYS",
@@ -121,10 +121,11 @@ def design_metrics(design, fidelity: str | Resolution = "screening") -> dict[str
 
 def _constraint_margin(check: Check) -> float:
     """The check's normalised margin as a constraint: a failure without a negative margin (a
-    thermal runaway below the allowable, −1e-300 in the figures) is −inf, a violation by the
-    whole limit (:data:`~flexshaft.optimize.problem.NOT_EVALUATED_VIOLATION`), not by 1e-300."""
+    thermal runaway below the allowable, :data:`~flexshaft.verdict.result.FAILED_WITHOUT_MARGIN`
+    in the figures) is −inf, a violation by the whole limit
+    (:data:`~flexshaft.optimize.problem.NOT_EVALUATED_VIOLATION`), not by 1e-300."""
     margin = normalised_margin(check)
-    return float("-inf") if check.status == "fail" and margin > -1e-299 else margin
+    return float("-inf") if check.status == "fail" and margin == FAILED_WITHOUT_MARGIN else margin
 
 
 def assessment_metrics(assessment: Assessment) -> dict[str, float]:

@@ -34,6 +34,7 @@ __all__ = [
     "Verdict",
     "location_with_units",
     "normalised_margin",
+    "FAILED_WITHOUT_MARGIN",
 ]
 
 
@@ -176,6 +177,12 @@ class Check:
         }
 
 
+#: The normalised margin of a check that fails with a margin that is not negative (a thermal
+#: runaway keeps the margin of its last temperature): the largest number below zero a figure
+#: draws; the optimizer reads it as a whole-limit violation.
+FAILED_WITHOUT_MARGIN = -1e-300
+
+
 def normalised_margin(check: Check) -> float:
     """A check's margin as a dimensionless number, the one measure by which checks of different
     kinds are compared: the governing point of an envelope, the margins figures, the optimizer's
@@ -197,7 +204,7 @@ def normalised_margin(check: Check) -> float:
     pairs: list[tuple[float, float | None]] = [(f.margin, f.limit) for f in check.findings]
     pairs = pairs or [(check.margin, check.limit)]
     relative = min(_share(margin, check.scale if check.scale else abs(limit or 0.0)) for margin, limit in pairs)
-    return min(relative, -1e-300) if check.status == "fail" and relative >= 0 else relative
+    return min(relative, FAILED_WITHOUT_MARGIN) if check.status == "fail" and relative >= 0 else relative
 
 
 def _finite_or_none(x: float) -> float | None:
