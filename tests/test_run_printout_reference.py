@@ -32,8 +32,8 @@ def _mode(frequency_hz: float) -> dict:
     }
 
 
-def test_each_printed_number_is_its_own_field(capsys: pytest.CaptureFixture) -> None:
-    data = {
+def _data() -> dict:
+    return {
         "summary": {
             "name": "stand-in",
             "shaft_mass_kg": 3.0,
@@ -57,8 +57,11 @@ def test_each_printed_number_is_its_own_field(capsys: pytest.CaptureFixture) -> 
         "buckling": {"safety_factor": 7.25},
         "imbalance": {"max_shaft_orbit_spin_up_m": 1.5e-4, "speed_of_max_rpm": 4200.0},
     }
+
+
+def test_each_printed_number_is_its_own_field(capsys: pytest.CaptureFixture) -> None:
     assessment = SimpleNamespace(verdict=Verdict(checks=()), design=SimpleNamespace(envelope=None))
-    _print_run(assessment, data, Path("report.html"), 1.0, None)
+    _print_run(assessment, _data(), Path("report.html"), 1.0, None)
     printed = capsys.readouterr().out
     assert "E* = 100 GPa (loss factor 0.01), G* = 5 GPa (loss factor 0.02)" in printed
     assert "spin-up peak shaft orbit 0.15 mm at 4200 rpm" in printed
@@ -68,3 +71,27 @@ def test_each_printed_number_is_its_own_field(capsys: pytest.CaptureFixture) -> 
     rest_table, speed_table = printed[rest:at_speed], printed[at_speed:]
     assert "12.5" in rest_table and "37.5" not in rest_table  # 12.5 Hz = 750 rev/min at rest
     assert "37.5" in speed_table and "12.5" not in speed_table
+
+
+def test_with_an_envelope_each_headline_names_the_point_it_is_at(capsys: pytest.CaptureFixture) -> None:
+    """With an envelope the headline numbers are the governing point's analyses, while the
+    verdict table holds each check's worst point: a Tsai-Wu factor of the cold day printed bare
+    above the hot day's smaller one in the table reads as a contradiction. Each headline (both
+    mode tables, the strength and the spin-up lines) names the governing point, here the second
+    of two stand-in points; a design without an envelope names none (the test above)."""
+    point = SimpleNamespace(name="cold_day", verdict=Verdict(checks=()))
+    other = SimpleNamespace(name="hot_day", verdict=Verdict(checks=()))
+    assessment = SimpleNamespace(
+        verdict=Verdict(checks=()),
+        design=SimpleNamespace(envelope=object()),
+        points=(other, point),
+        governing_point="cold_day",
+        point=lambda name: {"cold_day": point, "hot_day": other}[name],
+    )
+    _print_run(assessment, _data(), Path("report.html"), 1.0, None)
+    printed = capsys.readouterr().out
+    assert "natural frequencies at rest [cold_day]" in printed
+    assert "natural frequencies at 4800 rpm [cold_day]" in printed
+    assert "buckling safety factor 7.25 [cold_day]" in printed
+    assert "spin-up peak shaft orbit 0.15 mm at 4200 rpm [cold_day]" in printed
+    assert "[hot_day]" not in printed.split("governed by")[-1]
