@@ -12,7 +12,7 @@ carries P/2 and gives P/(2k), and the tube bends between its supports by P L³/(
 the planes uncoupled at rest. Cubic beam elements are exact under nodal point loads, so only the
 round-off of a ~70-DOF solve is left: 1e-10 relative. The bearings give 25 and 6.25 µm beside
 the bending's 54.8 µm, so a stiffness read in the wrong plane moves either deflection by about
-a quarter (80.0 ↔ 61.0 µm).
+a quarter (79.8 ↔ 61.0 µm).
 """
 
 from __future__ import annotations

@@ -26,6 +26,9 @@ def test_state_matrices_count_two_states_per_mode_plus_the_controllers():
     with_law = size(jeffcott(bearings=[active()]))
     assert with_law.controller_states == 4
     assert with_law.memory["state matrices"] == 4 * 16.0 * (2 * 48 + 4) ** 2
+    # independent of the bytes per entry: four states more than 96 scale it by 100²/96²
+    # (each side one rounding of the same ratio: equal)
+    assert with_law.memory["state matrices"] / plain.memory["state matrices"] == 100**2 / 96**2
 
 
 def test_a_model_below_the_sparse_limit_takes_the_dense_basis():

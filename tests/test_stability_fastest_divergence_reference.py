@@ -4,7 +4,8 @@ h37c).
 Reference (derived), the rotor of tests/test_root_stability_two_divergences_reference.py: the
 Jeffcott rotor of tests/rotors.py (a 20 kg disk on a near-massless pinned-pinned tube,
 k = 48EI/L³) with, at the disk, an open-loop magnet (K_p = 0, negative stiffness k_s = 3k in both
-planes) and a contact bearing of stiffness k_c = k in w only. No damping, no loss, no polar
+planes; its ``ki`` = 100 N/A is the current gain, no integrator: no controller states) and a
+contact bearing of stiffness k_c = k in w only. No damping, no loss, no polar
 inertia, so each plane is one mass:
 
 * v: m s² + (k − k_s) = 0, s = √(2k/m): a divergence;

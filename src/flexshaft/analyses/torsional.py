@@ -388,7 +388,8 @@ class TorsionalForcedResponse:
     peak_shear_stress : float
         Largest (T + Σ_k |T_k|) r_o/J over the elements [Pa].
     x : float
-        Station of the largest peak torque (element midpoint) [m].
+        Station of the largest peak stress (element midpoint; on a stepped shaft not always that
+        of the largest peak torque) [m].
     """
 
     speed: float
