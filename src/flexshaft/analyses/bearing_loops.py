@@ -114,6 +114,8 @@ def _static_closed(model: Model, rows: list, speed: float) -> np.ndarray:
     finite loop beside it has the finite L(0) of that constrained static problem (a PD bearing
     beside a PID one: its lower gain margin at ω = 0; the solve at ω = 0 of the loops' banded
     solver is singular there). A singular static problem gives nan too (no crossover read)."""
+    if all(a.integrates for a, _ in rows):
+        return np.full(len(rows), np.nan)
     loads = np.column_stack([a.lateral_rows[j].toarray().ravel() for a, j in rows])
     try:
         q = static_response(model, loads, speed)
