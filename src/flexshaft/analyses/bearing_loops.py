@@ -61,11 +61,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexshaft.analyses.banded import solver_for
+from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.guards import check_count, check_model, check_speed
 from flexshaft.analyses.local_projection import LocalModels, lockstep, projected_refinements, window_of
 from flexshaft.analyses.loop_grid import AROUND, frequency_grid
 from flexshaft.analyses.loop_margins import LoopMargins, refinements, release_rule
+from flexshaft.analyses.response import static_response
 from flexshaft.analyses.root_stability import closed_loop_poles
 from flexshaft.assembly.model import Model
 
@@ -104,6 +105,28 @@ class BearingLoop:
     margins: LoopMargins
     frequencies: np.ndarray
     sensitivity: np.ndarray
+
+
+def _static_closed(model: Model, rows: list, speed: float) -> np.ndarray:
+    """T = G P_c of every loop at ω = 0 when a bearing integrates, nan for a loop whose own law
+    integrates (its L(0) is infinite: no crossover at 0). An integrating bearing holds its sensed
+    displacement at zero at ω = 0 (:func:`~flexshaft.analyses.response.static_response`), so a
+    finite loop beside it has the finite L(0) of that constrained static problem (a PD bearing
+    beside a PID one: its lower gain margin at ω = 0; the solve at ω = 0 of the loops' banded
+    solver is singular there). A singular static problem gives nan too (no crossover read)."""
+    if all(a.integrates for a, _ in rows):
+        return np.full(len(rows), np.nan)
+    loads = np.column_stack([a.lateral_rows[j].toarray().ravel() for a, j in rows])
+    try:
+        q = static_response(model, loads, speed)
+    except SingularSystemError:
+        return np.full(len(rows), np.nan)
+    return np.array(
+        [
+            np.nan if a.integrates else float(a.feedback.static_gain * (a.sensing_rows[j] @ q[:, k])[0])
+            for k, (a, j) in enumerate(rows)
+        ]
+    )
 
 
 def bearing_loops(
@@ -186,11 +209,14 @@ def bearing_loops(
     grid = frequency_grid(model, (low, high), n_points, poles, AROUND[peak_samples], visible)
     responses: list[np.ndarray] = []
     T_grid = closed(grid, responses if projected else None)
-    static = None if any(a.integrates for a in model.actuators) else closed(np.array([0.0]))[:, 0].real
+    if any(a.integrates for a in model.actuators):
+        static = _static_closed(model, rows, speed)
+    else:
+        static = closed(np.array([0.0]))[:, 0].real
     L_grid = T_grid / (1.0 - T_grid)
     plans, owner = [], []
     for k in range(len(rows)):
-        gain0 = None if static is None else float(static[k] / (1.0 - static[k]))
+        gain0 = None if not np.isfinite(static[k]) else float(static[k] / (1.0 - static[k]))
         plans.append(refinements(grid, L_grid[k], gain0))
         owner += [k] * len(plans[-1][0])
     loop_of = np.array(owner, dtype=np.intp)

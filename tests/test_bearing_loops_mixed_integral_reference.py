@@ -1,0 +1,93 @@
+"""The loops of two magnetic bearings of which only one integrates: bearing 1 runs the PID law of
+tests/test_loop_robustness.py, bearing 2 a filtered PD law without integral action (k_p 2.5e4
+A/m, k_d 16 A s/m). The loop analysis must still run and give each loop's margins.
+
+Derived as in tests/test_bearing_loops_two_laws_reference.py (one plane, at rest, the rotor
+rigid: b_j = (1, x_j) about its centre, x = ∓0.4 m): loop j's plant with the other bearing i
+closed is P_j = b_jᵀ Z_j⁻¹ b_j with Z_j = diag(m s², I_t s²) − k_s b_j b_jᵀ + (G_i − k_s) b_i b_iᵀ
+and L_j = G_j P_j, G(s) = k_i (k_p + k_I/s + k_d s/(1 + s/ω_d))/(1 + s/ω_a), k_I = 0 for
+bearing 2. The FE rotor is 1e4 times stiffer than steel: the margins agree to 1e-4 as there.
+
+The static loop gain L(0): bearing 1's is infinite (C(0) = ∞: no crossover at ω = 0), and at
+ω = 0 its integrator holds its sensed displacement at zero, so the rotor pivots about bearing 1
+and bearing 2's plant is P₂(0) = −1/k_s (its magnet's negative stiffness alone):
+L₂(0) = −k_i k_p₂/k_s = −100 × 2.5e4/5e5 = −5, a phase crossover at ω = 0 with the lower gain
+margin −20 log10 5 = −13.98 dB (the PD bearing's gain may fall by that before the magnet pulls
+the rotor over). It used to be dropped (no static crossover of any loop when any bearing
+integrates: the lower margin read −inf, a gain-margin check blind to it). The references
+below give bearing 1's loop no static crossover (``static_gain=None``) and bearing 2's this
+L₂(0).
+
+Written for the mutations h37a-loop-static-gain-any-integrator (the static gain solved on the
+loops' banded solver unless every bearing integrates: singular at ω = 0) and
+h37a-loop-static-dropped-beside-integrator (the old gap) of scripts/mutations.toml. CPU: the
+model and its loops on the default grid, about 0.3 s.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_loop_robustness import HALF_SPAN, I_T, KI, KS, M_ROTOR, PID, rotor_text
+
+from flexshaft.analyses.bearing_loops import bearing_loops
+from flexshaft.analyses.loop_margins import loop_margins
+from flexshaft.assembly import build_model
+from flexshaft.design import loads_design, with_overrides
+
+PD_LAW = {"kp": 2.5e4, "kd": 16.0, "integral_gain": 0.0}
+
+
+def _law(s, kp: float, kd: float, k_integral: float):
+    wd, wa = 2 * np.pi * PID["derivative_cutoff"], 2 * np.pi * PID["amplifier_bandwidth"]
+    return KI * (kp + k_integral / s + kd * s / (1 + s / wd)) / (1 + s / wa)
+
+
+@pytest.fixture(scope="module")
+def loops():
+    design = loads_design(rotor_text(2.1e15, PID))
+    model = build_model(with_overrides(design, {f"bearings[1].{k}": v for k, v in PD_LAW.items()}))
+    assert [a.integrates for a in model.actuators] == [True, False]
+    return bearing_loops(model, frequency_range=(0.5, 2000.0))
+
+
+def test_a_pd_bearing_beside_an_integrating_one_has_its_own_margins(loops):
+    b = {"amb_1": np.array([1.0, -HALF_SPAN]), "amb_2": np.array([1.0, HALF_SPAN])}
+    laws = {
+        "amb_1": (PID["kp"], PID["kd"], PID["integral_gain"]),
+        "amb_2": (PD_LAW["kp"], PD_LAW["kd"], PD_LAW["integral_gain"]),
+    }
+
+    def loop_of(own: str, other: str):
+        def loop(w):
+            out = []
+            for s in 1j * np.asarray(w, dtype=float):
+                Z = np.diag([M_ROTOR * s * s, I_T * s * s]) - KS * np.outer(b[own], b[own])
+                Z += (_law(s, *laws[other]) - KS) * np.outer(b[other], b[other])
+                out.append(_law(s, *laws[own]) * (b[own] @ np.linalg.solve(Z, b[own])))
+            return np.array(out)
+
+        return loop
+
+    grid = 2 * np.pi * loops[0].frequencies
+    static = {"amb_1": None, "amb_2": -KI * PD_LAW["kp"] / KS}  # L(0): pivoting about bearing 1
+    references = {
+        own: loop_margins(loop_of(own, other), grid, static[own])
+        for own, other in (("amb_1", "amb_2"), ("amb_2", "amb_1"))
+    }
+    for lp in loops:
+        m, r = lp.margins, references[lp.actuator]
+        assert m.peak_sensitivity == pytest.approx(r.peak_sensitivity, rel=1e-4)
+        assert m.phase_margin_deg == pytest.approx(r.phase_margin_deg, rel=1e-4)
+        assert m.gain_margin_upper_db == pytest.approx(r.gain_margin_upper_db, rel=1e-4)
+        assert np.isfinite(m.gain_margin_lower_db)  # bearing 1's at a finite ω, bearing 2's at 0
+        assert m.gain_margin_lower_db == pytest.approx(r.gain_margin_lower_db, rel=1e-4)
+
+
+def test_the_pd_loops_lower_gain_margin_at_zero_frequency(loops):
+    expected = -20.0 * np.log10(KI * PD_LAW["kp"] / KS)  # L(0) = −k_i k_p/k_s, pivoting about bearing 1
+    two = [lp.margins for lp in loops if lp.actuator == "amb_2"]
+    assert len(two) == 2 and expected == pytest.approx(-13.979400, abs=1e-6)
+    for m in two:
+        assert m.gain_margin_lower_db == pytest.approx(expected, rel=1e-4)
+        assert m.phase_crossovers[0] == 0.0
