@@ -13,7 +13,7 @@ A loop function written by construction (no control code): with x = ln(ω/ω₀)
 the smallest is 35° at ω = ω₀ e. Between the crossovers θ stays above 7° (|L| > 1), so no
 phase crossover with Re L < 0 falls there, and outside them θ passes 180° only with Re L > 0
 (no phase crossover either). On the grid u = −2.4, −2.1, …, 2.4 (17 points, 0.3 apart) the
-crossing at u = 1 lies 30 % into [0.9, 1.2], where θ turns from 29.3° to 48.4° (19°: not a
+crossing at u = 1 lies a third of the way into [0.9, 1.2], where θ turns from 29.3° to 48.4° (19°: not a
 "sharp" interval, which is refined whatever its estimate). The grid estimate interpolated to
 the crossing is 35.0° and it is refined; the phase at the interval's far end, 48.4°, would
 leave it unrefined beside the other crossover's 34.3° end value, and the margin would read 40°.
