@@ -20,8 +20,11 @@ L₂(0).
 
 Written for the mutations h37a-loop-static-gain-any-integrator (the static gain solved on the
 loops' banded solver unless every bearing integrates: singular at ω = 0) and
-h37a-loop-static-dropped-beside-integrator (the old gap) of scripts/mutations.toml. CPU: the
-model and its loops on the default grid, about 0.3 s.
+h37a-loop-static-dropped-beside-integrator (the old gap) of scripts/mutations.toml. The same L₂(0)
+holds for the rotor free to twist: its torsion is a block of its own that no loop touches, and
+the static problem is solved on the loops' blocks (mutation lead18-loop-static-whole-model: the
+whole model's static problem, singular there, and the margin lost again). CPU: each model and
+its loops on the default grid, about 0.3 s.
 """
 
 from __future__ import annotations
@@ -43,12 +46,24 @@ def _law(s, kp: float, kd: float, k_integral: float):
     return KI * (kp + k_integral / s + kd * s / (1 + s / wd)) / (1 + s / wa)
 
 
-@pytest.fixture(scope="module")
-def loops():
-    design = loads_design(rotor_text(2.1e15, PID))
-    model = build_model(with_overrides(design, {f"bearings[1].{k}": v for k, v in PD_LAW.items()}))
+def _loops(text: str):
+    model = build_model(with_overrides(loads_design(text), {f"bearings[1].{k}": v for k, v in PD_LAW.items()}))
     assert [a.integrates for a in model.actuators] == [True, False]
     return bearing_loops(model, frequency_range=(0.5, 2000.0))
+
+
+@pytest.fixture(scope="module")
+def loops():
+    return _loops(rotor_text(2.1e15, PID))
+
+
+@pytest.fixture(scope="module")
+def free_twist_loops():
+    """The same rotor free to twist (no fixed θ): its whole static problem is singular (the
+    torsional rigid-body motion), its lateral one, where the loops are, is not."""
+    text = rotor_text(2.1e15, PID)
+    assert 'fixed_start = ["u", "theta"]' in text
+    return _loops(text.replace('fixed_start = ["u", "theta"]', 'fixed_start = ["u"]'))
 
 
 def test_a_pd_bearing_beside_an_integrating_one_has_its_own_margins(loops):
@@ -84,7 +99,9 @@ def test_a_pd_bearing_beside_an_integrating_one_has_its_own_margins(loops):
         assert m.gain_margin_lower_db == pytest.approx(r.gain_margin_lower_db, rel=1e-4)
 
 
-def test_the_pd_loops_lower_gain_margin_at_zero_frequency(loops):
+@pytest.mark.parametrize("which", ["twist held", "free to twist"])
+def test_the_pd_loops_lower_gain_margin_at_zero_frequency(which, request):
+    loops = request.getfixturevalue("loops" if which == "twist held" else "free_twist_loops")
     expected = -20.0 * np.log10(KI * PD_LAW["kp"] / KS)  # L(0) = −k_i k_p/k_s, pivoting about bearing 1
     two = [lp.margins for lp in loops if lp.actuator == "amb_2"]
     assert len(two) == 2 and expected == pytest.approx(-13.979400, abs=1e-6)

@@ -107,18 +107,20 @@ class BearingLoop:
     sensitivity: np.ndarray
 
 
-def _static_closed(model: Model, rows: list, speed: float) -> np.ndarray:
+def _static_closed(model: Model, rows: list, speed: float, within: np.ndarray) -> np.ndarray:
     """T = G P_c of every loop at ω = 0 when a bearing integrates, nan for a loop whose own law
     integrates (its L(0) is infinite: no crossover at 0). An integrating bearing holds its sensed
     displacement at zero at ω = 0 (:func:`~flexshaft.analyses.response.static_response`), so a
     finite loop beside it has the finite L(0) of that constrained static problem (a PD bearing
     beside a PID one: its lower gain margin at ω = 0; the solve at ω = 0 of the loops' banded
-    solver is singular there). A singular static problem gives nan too (no crossover read)."""
+    solver is singular there). It is solved on the loops' blocks ``within`` (free-DOF mask): a
+    driveline free to twist is singular as a whole but not in its lateral blocks. A singular
+    static problem gives nan too (no crossover read)."""
     if all(a.integrates for a, _ in rows):
         return np.full(len(rows), np.nan)
     loads = np.column_stack([a.lateral_rows[j].toarray().ravel() for a, j in rows])
     try:
-        q = static_response(model, loads, speed)
+        q = static_response(model, loads, speed, within=within)
     except SingularSystemError:
         return np.full(len(rows), np.nan)
     return np.array(
@@ -210,7 +212,7 @@ def bearing_loops(
     responses: list[np.ndarray] = []
     T_grid = closed(grid, responses if projected else None)
     if any(a.integrates for a in model.actuators):
-        static = _static_closed(model, rows, speed)
+        static = _static_closed(model, rows, speed, visible)
     else:
         static = closed(np.array([0.0]))[:, 0].real
     L_grid = T_grid / (1.0 - T_grid)

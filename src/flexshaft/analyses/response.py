@@ -336,7 +336,7 @@ def _static_parts(model: Model, speed: float):
     return K.tocsr(), [a for a in model.actuators if a.integrates]
 
 
-def static_response(model: Model, loads, speed: float | None = None) -> np.ndarray:
+def static_response(model: Model, loads, speed: float | None = None, *, within: np.ndarray | None = None) -> np.ndarray:
     """Static displacement of the spinning driveline under constant loads [m, rad].
 
     ``(K + K_a(0) + L(0, Ω)) q = Q`` with the storage stiffness K, the actuators' static
@@ -360,8 +360,14 @@ def static_response(model: Model, loads, speed: float | None = None) -> np.ndarr
         Load vector(s) on the full DOF vector (ndof,) or (ndof, ncases) [N, N m].
     speed : float or None
         Spin speed Ω [rad/s] (the model's operating speed when None).
+    within : ndarray of bool, optional
+        Solve on these free DOFs only (a mask in the model's free-DOF order), zero elsewhere:
+        exact when they are whole blocks the stiffness does not couple to the rest and the loads
+        are zero outside them (e.g. :meth:`~flexshaft.analyses.banded.BandedHarmonicSolver.coupled`:
+        the lateral blocks of a driveline whose torsion is free, so that the whole problem is
+        singular while the lateral one is not).
     """
-    return _static_solve(model, loads, speed)[0]
+    return _static_solve(model, loads, speed, within)[0]
 
 
 def static_actuator_forces(model: Model, loads, speed: float | None = None) -> dict[str, np.ndarray]:
@@ -374,12 +380,12 @@ def static_actuator_forces(model: Model, loads, speed: float | None = None) -> d
     return out
 
 
-def _static_solve(model: Model, loads, speed: float | None):
+def _static_solve(model: Model, loads, speed: float | None, within: np.ndarray | None = None):
     import scipy.sparse as sp
     import scipy.sparse.linalg as spla
 
     check_model(model)
-    free = model.dofs.free
+    free = model.dofs.free if within is None else model.dofs.free[np.asarray(within, dtype=bool)]
     speed = check_spin_speed(model.speed if speed is None else speed)
     _check_loads(model, loads)
     Q = np.asarray(loads)
