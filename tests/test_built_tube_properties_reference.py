@@ -15,11 +15,20 @@ its transverse shear stiffness, for one-ply tubes whose answers are written by h
   (transverse isotropy: G₂₃ = E_T/(2(1 + ν₂₃)) with ν₂₃ real). G₁₃ = 5 GPa and G₂₃ = 3 GPa
   are given explicitly, both above the schema's bound E_T/(4(1 − ν_LT ν_TL)) ≈ 2 GPa.
 
+* **A 45° ply: the Poisson ratio enters.** The rotated compliance (Jones 1999, eqs. 2.98 and
+  2.99; S₁₁ = 1/E_L, S₂₂ = 1/E_T, S₁₂ = −ν_LT/E_L, S₆₆ = 1/G_LT) at θ = 45° (sin²θ cos²θ = ¼,
+  sin⁴θ + cos⁴θ = ½) is S̄₁₁ = ¼ (S₁₁ + S₂₂ + 2 S₁₂ + S₆₆) and
+  S̄₆₆ = ½ (2 S₁₁ + 2 S₂₂ − 4 S₁₂ − S₆₆) + ½ S₆₆ = S₁₁ + S₂₂ − 2 S₁₂, so
+  E* = 1/(¼ (1/E_L* + 1/E_T* + 1/G_LT* − 2 ν_LT/E_L*)) and G* = 1/(1/E_L* + 1/E_T* + 2 ν_LT/E_L*),
+  with the major Poisson ratio ν_LT (real) and the complex moduli. The minor ratio
+  ν_TL = ν_LT E_T/E_L in its place moves E* by 1.2 % and G* by 3.5 %.
+
 Each answer is a product or quotient of a few decimal inputs (one 1×1 or 3×3 inversion of a
 well-conditioned ply matrix): 1e-12 relative asserted. Cheap: three 4-element models.
 
 Written for the mutations h35c-build-lamina-transverse-loss-is-fibre-loss and
-h35c-build-lamina-g13-g23-swapped of scripts/mutations.toml.
+h35c-build-lamina-g13-g23-swapped of scripts/mutations.toml; the 45° test for
+h38b-build-lamina-minor-poisson.
 """
 
 from __future__ import annotations
@@ -99,3 +108,14 @@ def test_a_zero_ply_tube_shears_through_g13_in_xz_and_g23_across_the_fibres():
     assert stiffness[1, 1] == pytest.approx(k * WALL * G_23 * (1 + 1j * ETA_T), rel=1e-12)  # A44
     assert abs(stiffness[0, 1]) <= 1e-12 * abs(stiffness[0, 0])  # A45 = 0 for a ply along x
     assert np.isfinite(stiffness).all()
+
+
+def test_a_45_degree_ply_tube_has_the_off_axis_moduli_with_the_major_poisson_ratio():
+    shaft = _shaft("45")
+    nu = 0.3
+    e_l, e_t, g_lt = E_L * (1 + 1j * ETA_L), E_T * (1 + 1j * ETA_T), G_LT * (1 + 1j * ETA_G)
+    youngs = 1.0 / (0.25 * (1 / e_l + 1 / e_t + 1 / g_lt - 2 * nu / e_l))
+    shear = 1.0 / (1 / e_l + 1 / e_t + 2 * nu / e_l)
+    # one 3x3 inversion of the rotated ply stiffness (condition number about 20): 1e-12 relative
+    assert shaft.youngs_modulus == pytest.approx(youngs, rel=1e-12)
+    assert shaft.shear_modulus == pytest.approx(shear, rel=1e-12)
