@@ -31,6 +31,8 @@ from flexshaft.montecarlo.samples import ImbalanceDraws, _peak_refined_speeds, s
 from flexshaft.montecarlo.steady import MonteCarloResult
 from flexshaft.verdict.gather import ActuatorLimits
 
+xr = pytest.importorskip("xarray")
+
 
 def test_each_bearings_load_is_its_static_reaction_plus_its_peak_force():
     shaft = np.zeros((3, 2, 2, 1))
@@ -57,7 +59,6 @@ def test_the_refinement_finds_a_peak_below_its_largest_sample():
 
 
 def test_the_gap_events_count_only_samples_finite_at_every_bearing():
-    xr = pytest.importorskip("xarray")
     ds = xr.Dataset(
         {
             "actuator_excursion_a": ("sample", [1.0, 3.0, np.nan, 2.0]),
