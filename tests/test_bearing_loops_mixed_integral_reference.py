@@ -108,3 +108,21 @@ def test_the_pd_loops_lower_gain_margin_at_zero_frequency(which, request):
     for m in two:
         assert m.gain_margin_lower_db == pytest.approx(expected, rel=1e-4)
         assert m.phase_crossovers[0] == 0.0
+
+
+def test_a_restricted_static_solve_refuses_a_mask_that_drops_a_load():
+    """``static_response(within=)`` solves on a subset of the free DOFs and is exact only when the
+    loads are zero outside it: a mask of the wrong length, or one that leaves out a loaded DOF,
+    is refused by name rather than solved wrong."""
+    from flexshaft.analyses.response import static_response
+
+    model = build_model(loads_design(rotor_text(2.1e15, PID)))
+    free = model.dofs.free
+    loads = np.zeros(model.dofs.size)
+    loads[free[0]] = 1.0
+    keep = np.ones(free.size, dtype=bool)
+    with pytest.raises(ValueError, match="mask of the"):
+        static_response(model, loads, 0.0, within=keep[:-1])
+    keep[0] = False
+    with pytest.raises(ValueError, match="every loaded DOF"):
+        static_response(model, loads, 0.0, within=keep)

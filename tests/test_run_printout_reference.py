@@ -77,7 +77,7 @@ def test_with_an_envelope_each_headline_names_the_point_it_is_at(capsys: pytest.
     """With an envelope the headline numbers are the governing point's analyses, while the
     verdict table holds each check's worst point: a Tsai-Wu factor of the cold day printed bare
     above the hot day's smaller one in the table reads as a contradiction. Each headline (both
-    mode tables, the strength and the spin-up lines) names the governing point, here the second
+    mode tables, the moduli, the strength and the spin-up lines) names the governing point, here the second
     of two stand-in points; a design without an envelope names none (the test above)."""
     point = SimpleNamespace(name="cold_day", verdict=Verdict(checks=()))
     other = SimpleNamespace(name="hot_day", verdict=Verdict(checks=()))
@@ -90,6 +90,7 @@ def test_with_an_envelope_each_headline_names_the_point_it_is_at(capsys: pytest.
     )
     _print_run(assessment, _data(), Path("report.html"), 1.0, None)
     printed = capsys.readouterr().out
+    assert "120 free DOFs [cold_day]" in printed  # E* and G* at the point's temperature
     assert "natural frequencies at rest [cold_day]" in printed
     assert "natural frequencies at 4800 rpm [cold_day]" in printed
     assert "buckling safety factor 7.25 [cold_day]" in printed

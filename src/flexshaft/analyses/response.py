@@ -385,9 +385,16 @@ def _static_solve(model: Model, loads, speed: float | None, within: np.ndarray |
     import scipy.sparse.linalg as spla
 
     check_model(model)
-    free = model.dofs.free if within is None else model.dofs.free[np.asarray(within, dtype=bool)]
+    free = model.dofs.free
     speed = check_spin_speed(model.speed if speed is None else speed)
     _check_loads(model, loads)
+    if within is not None:
+        within = np.asarray(within, dtype=bool)
+        if within.shape != free.shape:
+            raise ValueError(f"within must be a mask of the {free.size} free DOFs (got shape {within.shape})")
+        if np.any(np.asarray(loads)[free[~within]] != 0):
+            raise ValueError("within must hold every loaded DOF: the loads are not zero outside it")
+        free = free[within]
     Q = np.asarray(loads)
     if np.iscomplexobj(Q) and np.any(Q.imag != 0):
         raise ValueError("static loads must be real [N, N m] (got complex values)")

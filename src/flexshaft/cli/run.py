@@ -238,16 +238,16 @@ def _print_run(assessment, data: dict, page: Path, seconds: float, path: Path | 
     envelope = envelope_line(assessment)
     if envelope:
         print_line(console, envelope)
+    # with an envelope, the analyses shown are the governing point's: each headline names it, so
+    # that its numbers are not read as the verdict's worst case (the verdict table's [point])
+    at = "" if assessment.design.envelope is None else f" [{assessment.governing_point}]"
     print_line(
         console,
         f"shaft mass {sig(s['shaft_mass_kg'])} kg, E* = {sig(s['shaft_E_storage_Pa'] / 1e9)} GPa "
         f"(loss factor {sig(s['shaft_E_loss_factor'], 3)}), G* = {sig(s['shaft_G_storage_Pa'] / 1e9)} GPa "
         f"(loss factor {sig(s['shaft_G_loss_factor'], 3)}), torque {sig(s['torque_Nm'])} N m, "
-        f"{s['free_dofs']} free DOFs",
+        f"{s['free_dofs']} free DOFs{at}",
     )
-    # with an envelope, the analyses shown are the governing point's: each headline names it, so
-    # that its numbers are not read as the verdict's worst case (the verdict table's [point])
-    at = "" if assessment.design.envelope is None else f" [{assessment.governing_point}]"
     console.print(modes_table(f"natural frequencies at rest{at}", data["modes_at_rest"]))
     console.print(
         modes_table(f"natural frequencies at {sig(s['operating_speed_rpm'])} rpm{at}", data["modes_at_operating_speed"])
