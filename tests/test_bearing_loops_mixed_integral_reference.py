@@ -31,7 +31,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_loop_robustness import HALF_SPAN, I_T, KI, KS, M_ROTOR, PID, rotor_text
+from test_bearing_loops_two_laws_reference import rigid_loop
+from test_loop_robustness import KI, KS, PID, rotor_text
 
 from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.loop_margins import loop_margins
@@ -39,11 +40,6 @@ from flexshaft.assembly import build_model
 from flexshaft.design import loads_design, with_overrides
 
 PD_LAW = {"kp": 2.5e4, "kd": 16.0, "integral_gain": 0.0}
-
-
-def _law(s, kp: float, kd: float, k_integral: float):
-    wd, wa = 2 * np.pi * PID["derivative_cutoff"], 2 * np.pi * PID["amplifier_bandwidth"]
-    return KI * (kp + k_integral / s + kd * s / (1 + s / wd)) / (1 + s / wa)
 
 
 def _loops(text: str):
@@ -67,27 +63,14 @@ def free_twist_loops():
 
 
 def test_a_pd_bearing_beside_an_integrating_one_has_its_own_margins(loops):
-    b = {"amb_1": np.array([1.0, -HALF_SPAN]), "amb_2": np.array([1.0, HALF_SPAN])}
     laws = {
         "amb_1": (PID["kp"], PID["kd"], PID["integral_gain"]),
         "amb_2": (PD_LAW["kp"], PD_LAW["kd"], PD_LAW["integral_gain"]),
     }
-
-    def loop_of(own: str, other: str):
-        def loop(w):
-            out = []
-            for s in 1j * np.asarray(w, dtype=float):
-                Z = np.diag([M_ROTOR * s * s, I_T * s * s]) - KS * np.outer(b[own], b[own])
-                Z += (_law(s, *laws[other]) - KS) * np.outer(b[other], b[other])
-                out.append(_law(s, *laws[own]) * (b[own] @ np.linalg.solve(Z, b[own])))
-            return np.array(out)
-
-        return loop
-
     grid = 2 * np.pi * loops[0].frequencies
     static = {"amb_1": None, "amb_2": -KI * PD_LAW["kp"] / KS}  # L(0): pivoting about bearing 1
     references = {
-        own: loop_margins(loop_of(own, other), grid, static[own])
+        own: loop_margins(rigid_loop(laws, own, other), grid, static[own])
         for own, other in (("amb_1", "amb_2"), ("amb_2", "amb_1"))
     }
     for lp in loops:

@@ -29,11 +29,29 @@ from flexshaft.assembly import build_model
 from flexshaft.design import loads_design, with_overrides
 
 SECOND_LAW = {"kp": 2.5e4, "kd": 16.0}
+#: b_j of each bearing on the rigid rotor, (1, x_j) about its centre
+LEVER = {"amb_1": np.array([1.0, -HALF_SPAN]), "amb_2": np.array([1.0, HALF_SPAN])}
 
 
-def _law(s, kp: float, kd: float):
+def law(s, kp: float, kd: float, k_integral: float = PID["integral_gain"]):
+    """G(s) of the docstring with PID's filter and amplifier, at gains (k_p, k_d, k_I)."""
     wd, wa = 2 * np.pi * PID["derivative_cutoff"], 2 * np.pi * PID["amplifier_bandwidth"]
-    return KI * (kp + PID["integral_gain"] / s + kd * s / (1 + s / wd)) / (1 + s / wa)
+    return KI * (kp + k_integral / s + kd * s / (1 + s / wd)) / (1 + s / wa)
+
+
+def rigid_loop(laws: dict, own: str, other: str):
+    """L_j(iω) of bearing ``own``'s loop with ``other`` closed on the rigid rotor (docstring);
+    ``laws`` maps each bearing to the gains of :func:`law`."""
+
+    def loop(w):
+        out = []
+        for s in 1j * np.asarray(w, dtype=float):
+            Z = np.diag([M_ROTOR * s * s, I_T * s * s]) - KS * np.outer(LEVER[own], LEVER[own])
+            Z += (law(s, *laws[other]) - KS) * np.outer(LEVER[other], LEVER[other])
+            out.append(law(s, *laws[own]) * (LEVER[own] @ np.linalg.solve(Z, LEVER[own])))
+        return np.array(out)
+
+    return loop
 
 
 def test_each_loop_is_refined_with_its_own_bearings_law():
@@ -41,22 +59,9 @@ def test_each_loop_is_refined_with_its_own_bearings_law():
     model = build_model(with_overrides(design, {f"bearings[1].{k}": v for k, v in SECOND_LAW.items()}))
     loops = bearing_loops(model, frequency_range=(0.5, 2000.0))
     assert [(lp.actuator, lp.axis) for lp in loops] == [("amb_1", "v"), ("amb_1", "w"), ("amb_2", "v"), ("amb_2", "w")]
-    b = {"amb_1": np.array([1.0, -HALF_SPAN]), "amb_2": np.array([1.0, HALF_SPAN])}
     laws = {"amb_1": (PID["kp"], PID["kd"]), "amb_2": (SECOND_LAW["kp"], SECOND_LAW["kd"])}
-
-    def loop_of(own: str, other: str):
-        def loop(w):
-            out = []
-            for s in 1j * np.asarray(w, dtype=float):
-                Z = np.diag([M_ROTOR * s * s, I_T * s * s]) - KS * np.outer(b[own], b[own])
-                Z += (_law(s, *laws[other]) - KS) * np.outer(b[other], b[other])
-                out.append(_law(s, *laws[own]) * (b[own] @ np.linalg.solve(Z, b[own])))
-            return np.array(out)
-
-        return loop
-
     references = {
-        own: loop_margins(loop_of(own, other), 2 * np.pi * loops[0].frequencies)
+        own: loop_margins(rigid_loop(laws, own, other), 2 * np.pi * loops[0].frequencies)
         for own, other in (("amb_1", "amb_2"), ("amb_2", "amb_1"))
     }
     one, two = references["amb_1"], references["amb_2"]
