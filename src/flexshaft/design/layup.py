@@ -9,8 +9,9 @@ count as numbers (a layup written with other scripts' digits is refused, not gue
 from __future__ import annotations
 
 import re
+from typing import NamedTuple
 
-__all__ = ["parse_layup"]
+__all__ = ["AngleToken", "angle_tokens", "parse_layup"]
 
 # --------------------------------------------------------------------------------------------
 # Layup strings (the only place where angles are in degrees)
@@ -59,6 +60,19 @@ _SIGNS = {
 _CLOSING = {"(": ")", "[": "]"}
 
 
+class AngleToken(NamedTuple):
+    """Where one ply angle is written in a layup string (:func:`angle_tokens`)."""
+
+    start: int
+    """Index of the angle's first digit in the string."""
+    end: int
+    """Index just after its last digit."""
+    magnitude: float
+    """The number as written [deg], without its sign."""
+    signed: bool
+    """True when a sign or a pair (``-``, ``+``, ``±``, ``∓``, ...) is written before it."""
+
+
 class _LayupParser:
     """Recursive-descent parser of the stacking notation; whitespace is ignored.
 
@@ -73,6 +87,7 @@ class _LayupParser:
     def __init__(self, text: str) -> None:
         self.tokens: list[tuple[str, str, int]] = []  # (kind, text, position)
         self.index = 0
+        self.angle_tokens: list[AngleToken] = []  # every ply angle's number, in the order written
         stripped, position = text.rstrip(), 0
         while position < len(stripped):
             match = _TOKEN.match(stripped, position)
@@ -145,17 +160,21 @@ class _LayupParser:
 
     def angle(self) -> list[float]:
         signs: tuple[float, ...] = (1.0,)
+        signed = False
         if self.peek("pair") or self.peek("sign"):
+            signed = True
             symbol = self.take()
             signs = _SIGNS[symbol]
             if len(signs) == 2 and (self.peek("sign") or self.peek("pair")):
                 raise self.error(f"a signed angle cannot follow {symbol!r}")
         if not self.peek("number"):
             raise self.expected("a ply angle in degrees")
+        position = self.tokens[self.index][2]
         text = self.take()
         value = float(text)
         if not value <= 90.0:  # also refuses inf from a huge exponent
             raise self.error(f"ply angle {'-' if signs[0] < 0 else ''}{text} deg is outside [-90, 90] deg")
+        self.angle_tokens.append(AngleToken(position, position + len(text), value, signed))
         if self.peek("deg"):
             self.take()
         angles = [sign * value + 0.0 for sign in signs]  # + 0.0 turns -0.0 into 0.0
@@ -197,3 +216,20 @@ def parse_layup(text: str) -> tuple[float, ...]:
     if not isinstance(text, str):
         raise ValueError(f"layup must be a string, got {type(text).__name__}; {_ALLOWED}")
     return _LayupParser(text).parse()
+
+
+def angle_tokens(text: str) -> tuple[AngleToken, ...]:
+    """Where each ply angle is written in a valid layup string, in the order written (repeat
+    and ply counts are not angles): what a template that rewrites a layup's angles and keeps
+    its notation needs (:func:`flexshaft.optimize.variables.layup_template`).
+
+    Raises
+    ------
+    ValueError
+        As :func:`parse_layup`.
+    """
+    if not isinstance(text, str):
+        raise ValueError(f"layup must be a string, got {type(text).__name__}; {_ALLOWED}")
+    parser = _LayupParser(text)
+    parser.parse()
+    return tuple(parser.angle_tokens)

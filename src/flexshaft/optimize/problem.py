@@ -30,7 +30,15 @@ from flexshaft.design import Design, DesignError, baseline_design, embedded_text
 from flexshaft.design.io import value_at_path
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
-from flexshaft.optimize.variables import DEFAULT_OBJECTIVES, DESIGN_OBJECTIVES, DesignVariable, Objective, OptimizeError
+from flexshaft.optimize.variables import (
+    DEFAULT_OBJECTIVES,
+    DESIGN_OBJECTIVES,
+    LAYUP_PLACEHOLDER,
+    DesignVariable,
+    Objective,
+    OptimizeError,
+    match_layup,
+)
 
 __all__ = ["DERIVED_OUTPUTS", "DesignProblem", "NOT_EVALUATED_VIOLATION", "objectives_and_constraints"]
 
@@ -49,7 +57,6 @@ DERIVED_OUTPUTS = {
 }
 #: Objective value given to a design without a result (never compared: it is infeasible).
 _NO_RESULT = 1e30
-_PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
 
 
 def _output_triple(output: Sequence[str]) -> tuple[str, str, str]:
@@ -271,13 +278,13 @@ class DesignProblem:
             if self.ply_thickness is not None:
                 raise OptimizeError("ply_thickness needs a layup template (the ply count comes from it)")
             return
-        used = {m.group(2) for m in _PLACEHOLDER.finditer(self.layup)}
+        used = {m.group(2) for m in LAYUP_PLACEHOLDER.finditer(self.layup)}
         if used != set(layup_vars):
             raise OptimizeError(
                 f"layup template {self.layup!r}: placeholders {sorted(used)} must match the layup "
                 f"variables {sorted(layup_vars)} (paths layup.<name>)"
             )
-        for m in _PLACEHOLDER.finditer(self.layup):
+        for m in LAYUP_PLACEHOLDER.finditer(self.layup):
             if self.layup[: m.start()].endswith("_") and not layup_vars[m.group(2)].integer:
                 raise OptimizeError(
                     f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable must be integer"
@@ -346,7 +353,7 @@ class DesignProblem:
                 return str(-value if m.group(1) else value)
             return _format_angle(-value if m.group(1) else value)
 
-        return _PLACEHOLDER.sub(fill, self.layup or "")
+        return LAYUP_PLACEHOLDER.sub(fill, self.layup or "")
 
     def base_values(self) -> dict[str, float | int] | None:
         """The base design's variable values (to seed the search), or None when a variable
@@ -361,7 +368,7 @@ class DesignProblem:
                 return None
             values[v.name] = found.pop()
         if self.layup is not None:
-            from_layup = _match_layup(self.layup, self.base.shaft.layup or "")
+            from_layup = match_layup(self.layup, self.base.shaft.layup or "")
             if from_layup is None:
                 return None
             for v in self.variables:
@@ -403,26 +410,6 @@ class DesignProblem:
             "base": json.loads(self.base.model_dump_json()),
             "evaluation": self.evaluation_fingerprint(),
         }
-
-
-def _match_layup(template: str, layup: str) -> dict[str, float] | None:
-    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
-    pattern, groups, position = "", [], 0
-    for m in _PLACEHOLDER.finditer(template):
-        pattern += re.escape(template[position : m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
-        groups.append((m.group(1) == "-", m.group(2)))
-        position = m.end()
-    pattern += re.escape(template[position:])
-    found = re.fullmatch(pattern.replace(r"\ ", r"\s*"), layup.replace(" ", ""))
-    if found is None:
-        return None
-    out: dict[str, float] = {}
-    for (negated, name), text in zip(groups, found.groups()):
-        value = -float(text) if negated else float(text)
-        if name in out and not math.isclose(out[name], value, abs_tol=1e-9):
-            return None
-        out[name] = value + 0.0  # -0.0 -> 0.0
-    return out
 
 
 def objectives_and_constraints(

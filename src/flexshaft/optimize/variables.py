@@ -31,12 +31,21 @@ __all__ = [
     "LAYUP_PREFIX",
     "Objective",
     "OptimizeError",
+    "LAYUP_PLACEHOLDER",
+    "MOST_PLY_ANGLES",
+    "PLY_ANGLE_SPREAD",
+    "TWO_ANGLE_BOUNDS",
+    "TWO_ANGLE_TEMPLATE",
     "default_variables",
+    "layup_template",
+    "match_layup",
 ]
 
 
 #: Prefix of a variable that fills a placeholder of the layup template.
 LAYUP_PREFIX = "layup."
+#: A placeholder of a layup template: ``{a}`` (the value) or ``{-a}`` (its negative).
+LAYUP_PLACEHOLDER = re.compile(r"\{(-?)([A-Za-z_][A-Za-z0-9_]*)\}")
 
 
 class OptimizeError(ValueError):
@@ -204,37 +213,138 @@ DESIGN_OBJECTIVES = {
 }
 
 
+def match_layup(template: str, layup: str) -> dict[str, float] | None:
+    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
+    pattern, groups, position = "", [], 0
+    for m in LAYUP_PLACEHOLDER.finditer(template):
+        pattern += re.escape(template[position : m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
+        groups.append((m.group(1) == "-", m.group(2)))
+        position = m.end()
+    pattern += re.escape(template[position:])
+    found = re.fullmatch(pattern.replace(r"\ ", r"\s*"), layup.replace(" ", ""))
+    if found is None:
+        return None
+    out: dict[str, float] = {}
+    for (negated, name), text in zip(groups, found.groups()):
+        value = -float(text) if negated else float(text)
+        if name in out and not math.isclose(out[name], value, abs_tol=1e-9):
+            return None
+        out[name] = value + 0.0  # -0.0 -> 0.0
+    return out
+
+
 #: The default objectives of ``flexshaft optimize``: total mass against the margin that limits.
 DEFAULT_OBJECTIVES = ("driveline_mass", "min_margin")
+
+
+#: The thesis's two-angle layup family: the default search of a design whose layup is in it.
+TWO_ANGLE_TEMPLATE = "({a}/{-a}/{b}/{-b})s"
+#: Bounds of the two-angle family's ply angles a and b [deg].
+TWO_ANGLE_BOUNDS = {"a": (30.0, 75.0), "b": (0.0, 30.0)}
+#: How far a derived template's ply angle may move from the design's own [deg] (:func:`layup_template`).
+PLY_ANGLE_SPREAD = 15.0
+#: Most distinct ply angles a derived template varies (more: the two-angle family instead).
+MOST_PLY_ANGLES = 4
+
+
+def layup_template(layup: str, spread: float = PLY_ANGLE_SPREAD) -> tuple[str, tuple[DesignVariable, ...]] | None:
+    """A layup template that writes ``layup`` in its own notation with one placeholder per
+    distinct ply-angle magnitude, and its ply-angle variables, each within ``spread`` degrees of
+    the design's own angle (and within [0, 90]); None with more than :data:`MOST_PLY_ANGLES`
+    magnitudes.
+
+    ``"(60/-60/60/-60/0/0)s"`` gives ``"({a}/-{a}/{a}/-{a}/{b}/{-b})s"`` with a in [45, 75]°
+    and b in [0, 15]°: a sign written stays in front of its placeholder, and the unsigned 0°
+    (and 90°) plies alternate in sign, so that turning them keeps the laminate balanced. Filled
+    with the design's own angles the template is the design's layup string.
+    """
+    from flexshaft.design.layup import angle_tokens  # the design layer's parser
+
+    letters: dict[float, str] = {}
+    unsigned_seen: dict[float, int] = {}
+    pieces, position = [], 0
+    for token in angle_tokens(layup):
+        if token.magnitude not in letters:
+            if len(letters) == MOST_PLY_ANGLES:
+                return None
+            letters[token.magnitude] = "abcdefgh"[len(letters)]
+        letter = letters[token.magnitude]
+        negate = False
+        if not token.signed and token.magnitude in (0.0, 90.0):
+            unsigned_seen[token.magnitude] = unsigned_seen.get(token.magnitude, 0) + 1
+            negate = unsigned_seen[token.magnitude] % 2 == 0
+        pieces.append(layup[position : token.start] + ("{-" if negate else "{") + letter + "}")
+        position = token.end
+    pieces.append(layup[position:])
+    variables = tuple(
+        DesignVariable(
+            f"{LAYUP_PREFIX}{letter}",
+            max(0.0, magnitude - spread),
+            min(90.0, magnitude + spread),
+            name=f"ply_angle_{letter}",
+            units="degree",
+        )
+        for magnitude, letter in letters.items()
+    )
+    return "".join(pieces), variables
 
 
 def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
     """The default search of ``flexshaft optimize`` on a design, and its layup template.
 
-    * ply angles of a ``(a/−a/b/−b)s`` laminate: a in [30, 75]°, b in [0, 30]° (the thesis's
-      two-angle family, optimum (55/−55/0/0)s);
-    * wall thickness from 1 mm to 4 mm at the design's outer diameter;
-    * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m) and K_d (shared, 0 to
-      3000 N s/m);
+    The search contains the design it starts from (the optimizer seeds its first generation
+    with it):
+
+    * ply angles: of the thesis's two-angle family ``(a/−a/b/−b)s``, a in [30, 75]°, b in
+      [0, 30]° (optimum (55/−55/0/0)s), when the design's layup is written in it with its
+      angles in those bounds; else of the design's own layup, each distinct angle within
+      ±15° of its own (:func:`layup_template`);
+    * wall thickness from 1 mm to 4 mm (or to the design's own), at the design's outer diameter;
+    * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m, or to the design's own) and
+      K_d (shared, 0 to 3000 N s/m, or to the design's own);
     * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
     """
     variables = []
     template = None
-    if design.shaft.layup is not None:
-        template = "({a}/{-a}/{b}/{-b})s"
-        variables += [
-            DesignVariable("layup.a", 30.0, 75.0, name="ply_angle_a", units="degree"),
-            DesignVariable("layup.b", 0.0, 30.0, name="ply_angle_b", units="degree"),
-        ]
-    variables.append(DesignVariable("shaft.wall_thickness", 0.001, 0.004, name="wall_thickness", units="m"))
+    layup = design.shaft.layup
+    if layup is not None:
+        two_angle = match_layup(TWO_ANGLE_TEMPLATE, layup)
+        derived = layup_template(layup)
+        if derived is None or (
+            two_angle is not None
+            and all(lower <= two_angle[k] <= upper for k, (lower, upper) in TWO_ANGLE_BOUNDS.items())
+        ):
+            template = TWO_ANGLE_TEMPLATE
+            variables += [
+                DesignVariable(f"{LAYUP_PREFIX}{k}", lower, upper, name=f"ply_angle_{k}", units="degree")
+                for k, (lower, upper) in TWO_ANGLE_BOUNDS.items()
+            ]
+        else:
+            template, angles = derived
+            variables += angles
+    wall = design.shaft.wall_thickness
+    variables.append(
+        DesignVariable("shaft.wall_thickness", min(0.001, wall), max(0.004, wall), name="wall_thickness", units="m")
+    )
     bearings = list(design.bearings)
     active = [i for i, b in enumerate(bearings) if b.kind == "active"]
     if active:
+        gains = [bearings[i].kp for i in active if bearings[i].kp is not None and bearings[i].kp > 0]
+        damping = [bearings[i].kd for i in active if bearings[i].kd is not None]
         variables.append(
-            DesignVariable(tuple(f"bearings[{i}].kp" for i in active), 1e5, 1e7, log=True, name="kp", units="N m-1")
+            DesignVariable(
+                tuple(f"bearings[{i}].kp" for i in active),
+                min([1e5, *gains]),
+                max([1e7, *gains]),
+                log=True,
+                name="kp",
+                units="N m-1",
+            )
         )
         variables.append(
-            DesignVariable(tuple(f"bearings[{i}].kd" for i in active), 0.0, 3000.0, name="kd", units="N s m-1")
+            DesignVariable(
+                tuple(f"bearings[{i}].kd" for i in active), 0.0, max([3000.0, *damping]), name="kd", units="N s m-1"
+            )
         )
         stations = sorted(b.x for b in bearings)
         for i in active:
