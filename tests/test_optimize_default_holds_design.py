@@ -8,12 +8,12 @@ evaluations (docs/optimizer.md, the run of 2026-12-06) while a search of its own
 found 52. The references here are the rules of ``default_variables``'s docstring, checked on
 ply lists expanded by hand:
 
-* the two-angle family (a in [30, 75]°, b in [0, 30]°) when the layup is written in it with
-  its angles inside those bounds; else the design's own layup in its own notation, one
-  variable per distinct angle within ±15° of its own (clamped to [0, 90]°), the unsigned 0°
-  and 90° plies alternating in sign so that turning them keeps the laminate balanced (every
-  +θ ply has a -θ partner: A16 = A26 = 0, Jones, Mechanics of Composite Materials, 2nd ed.,
-  sec. 4.3.2);
+* the two-angle family (a in [30, 75]°, b in [0, 30]°) when the layup is in it with its
+  angles inside those bounds (or a template is given); else the design's own layup in its own
+  notation, one variable per distinct angle within ±15° of its own (clamped to [0, 90]°), the
+  unsigned 0° and 90° plies alternating in sign so that turning them keeps the laminate
+  balanced, and held as written where they cannot pair off. Balanced: every +θ ply has a −θ
+  partner, so A16 = A26 = 0 (Q̄16 and Q̄26 are odd in θ: the pair's terms cancel);
 * wall, K_p and K_d ranges widened to the design's own values.
 
 Everything is exact: angles and bounds are decimal numbers compared as written.
@@ -27,6 +27,11 @@ from flexshaft.design import embedded_design, with_overrides
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize import DesignProblem, default_variables
 from flexshaft.optimize.variables import layup_template
+
+
+def _same_plies(a, b) -> bool:
+    """Equal ply by ply, a ply at -90° being the one at 90° (the fibre direction is a line)."""
+    return len(a) == len(b) and all(p == q or abs(p) == abs(q) == 90.0 for p, q in zip(a, b))
 
 
 def _problem(design) -> DesignProblem:
@@ -68,32 +73,89 @@ def test_the_baseline_keeps_the_two_angle_family():
 
 
 @pytest.mark.parametrize(
-    ("layup", "template", "turned", "plies"),
+    ("layup", "template", "bounds", "turned", "plies"),
     [
         # a family layup with a out of [30, 75]: its own family, 80 within [65, 90]
-        ("(80/-80/0/0)s", "({a}/-{a}/{b}/{-b})s", {"a": 70.0, "b": 5.0}, (70, -70, 5, -5, -5, 5, -70, 70)),
-        # shorthand kept: the pair and the ply count are notation, not angles
-        ("[±45_2/0]s", "[±{a}_2/{b}]s", {"a": 40.0, "b": 12.0}, (40, -40, 40, -40, 12, 12, -40, 40, -40, 40)),
-        # the repeat count 2 is not an angle; 0 and 90 are two magnitudes, each written once
-        ("(0/90)2s", "({a}/{b})2s", {"a": 15.0, "b": 75.0}, (15, 75, 15, 75, 75, 15, 75, 15)),
+        (
+            "(80/-80/0/0)s",
+            "({a}/-{a}/{b}/{-b})s",
+            {"a": (65.0, 90.0), "b": (0.0, 15.0)},
+            {"a": 70.0, "b": 5.0},
+            (70, -70, 5, -5, -5, 5, -70, 70),
+        ),
+        # shorthand kept (the pair and the ply count are notation, not angles); the one 0° ply
+        # of each half has no partner to turn against: it stays
+        ("[±45_2/0]s", "[±{a}_2/0]s", {"a": (30.0, 60.0)}, {"a": 40.0}, (40, -40, 40, -40, 0, 0, -40, 40, -40, 40)),
         # a written -90 keeps its sign (it is not one of the unsigned 90° plies that alternate)
-        ("(45/-45/90/-90)s", "({a}/-{a}/{b}/-{b})s", {"a": 50.0, "b": 80.0}, (50, -50, 80, -80, -80, 80, -50, 50)),
-        # a written sign stays; the unsigned zeros alternate
-        ("30/-30/0/0/0", "{a}/-{a}/{b}/{-b}/{b}", {"a": 20.0, "b": 3.0}, (20, -20, 3, -3, 3)),
+        (
+            "(45/-45/90/-90)s",
+            "({a}/-{a}/{b}/-{b})s",
+            {"a": (30.0, 60.0), "b": (75.0, 90.0)},
+            {"a": 50.0, "b": 80.0},
+            (50, -50, 80, -80, -80, 80, -50, 50),
+        ),
+        # two unsigned 90° plies: 90 and -90 are one ply, read back as 90
+        (
+            "(45/-45/90/90)s",
+            "({a}/-{a}/{b}/{-b})s",
+            {"a": (30.0, 60.0), "b": (75.0, 90.0)},
+            {"a": 50.0, "b": 80.0},
+            (50, -50, 80, -80, -80, 80, -50, 50),
+        ),
+        # a written sign stays; three unsigned zeros cannot pair off: they stay
+        ("30/-30/0/0/0", "{a}/-{a}/0/0/0", {"a": (15.0, 45.0)}, {"a": 20.0}, (20, -20, 0, 0, 0)),
+        # angles written with an exponent
+        (
+            "4.5e1/-4.5e1/0/0",
+            "{a}/-{a}/{b}/{-b}",
+            {"a": (30.0, 60.0), "b": (0.0, 15.0)},
+            {"a": 40.0, "b": 10.0},
+            (40, -40, 10, -10),
+        ),
     ],
 )
-def test_a_derived_template_keeps_the_notation_and_turns_each_angle(layup, template, turned, plies):
+def test_a_derived_template_keeps_the_notation_and_turns_each_angle(layup, template, bounds, turned, plies):
     found = layup_template(layup)
     assert found is not None and found[0] == template
-    bounds = {v.placeholder: (v.lower, v.upper) for v in found[1]}
-    for letter, magnitude in zip("ab", dict.fromkeys(abs(p) for p in parse_layup(layup))):
-        assert bounds[letter] == (max(0.0, magnitude - 15.0), min(90.0, magnitude + 15.0))
+    assert {v.placeholder: (v.lower, v.upper) for v in found[1]} == bounds
     design = with_overrides(embedded_design("tuned"), {"shaft.layup": layup})
-    problem = DesignProblem(found[1], layup=found[0], base=design)
+    problem = _problem(design)
+    assert problem.layup == template
     base = problem.base_values()
-    assert base is not None and problem.layup_of(base) == layup.replace(" ", "")
+    assert base is not None
+    assert _same_plies(parse_layup(problem.layup_of(base)), parse_layup(layup))
     values = {f"ply_angle_{k}": v for k, v in turned.items()}
     assert parse_layup(problem.layup_of(values)) == tuple(float(p) for p in plies)
+
+
+def test_a_repeated_zero_ninety_group_is_not_searched():
+    """(0/90)2s: each angle is written once and repeated, so no turn of it pairs off; the
+    search keeps the layup as written (no template, no ply-angle variable)."""
+    assert layup_template("(0/90)2s") == ("(0/90)2s", ())
+    design = with_overrides(embedded_design("tuned"), {"shaft.layup": "(0/90)2s"})
+    variables, template = default_variables(design)
+    assert template is None and not [v for v in variables if v.name.startswith("ply_angle")]
+    assert _problem(design).base_values() is not None
+
+
+def test_the_family_written_otherwise_keeps_the_familys_bounds():
+    """[55/-55/0/0]s is the baseline's (55/-55/0/0)s written with brackets: the family's
+    bounds, in the design's own notation (so that the design is read back)."""
+    design = with_overrides(embedded_design("tuned"), {"shaft.layup": "[55/-55/0/0]s"})
+    variables, template = default_variables(design)
+    assert template == "[{a}/-{a}/{b}/{-b}]s"
+    angles = {v.name: (v.lower, v.upper) for v in variables if v.name.startswith("ply_angle")}
+    assert angles == {"ply_angle_a": (30.0, 75.0), "ply_angle_b": (0.0, 30.0)}
+    assert _problem(design).base_values() is not None
+
+
+def test_a_given_template_gets_the_familys_bounds():
+    """``flexshaft optimize --layup T`` without ``--var``: T's a and b within the family's
+    bounds, whatever the design's own layup (the meaning the option had before)."""
+    variables, template = default_variables(embedded_design("tuned"), "({a}/{-a}/{b}/{-b})s")
+    assert template == "({a}/{-a}/{b}/{-b})s"
+    angles = {v.name: (v.lower, v.upper) for v in variables if v.name.startswith("ply_angle")}
+    assert angles == {"ply_angle_a": (30.0, 75.0), "ply_angle_b": (0.0, 30.0)}
 
 
 def test_more_than_four_angles_fall_back_to_the_two_angle_family():

@@ -225,8 +225,7 @@ def optimize(
         if var:
             variables, template = tuple(parse_variable(s) for s in var), layup
         else:
-            variables, template = default_variables(base)
-            template = layup or template
+            variables, template = default_variables(base, layup)
         problem = DesignProblem(
             variables,
             base=base,

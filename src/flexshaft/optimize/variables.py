@@ -22,18 +22,24 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
+
+from flexshaft.design.bearings import ActiveBearing
+from flexshaft.design.layup import AngleToken, angle_tokens, parse_layup
+
+if TYPE_CHECKING:
+    from flexshaft.design import Design
 
 __all__ = [
     "DEFAULT_OBJECTIVES",
     "DESIGN_OBJECTIVES",
-    "DesignVariable",
-    "LAYUP_PREFIX",
-    "Objective",
-    "OptimizeError",
     "LAYUP_PLACEHOLDER",
+    "LAYUP_PREFIX",
     "MOST_PLY_ANGLES",
     "PLY_ANGLE_SPREAD",
+    "DesignVariable",
+    "Objective",
+    "OptimizeError",
     "TWO_ANGLE_BOUNDS",
     "TWO_ANGLE_TEMPLATE",
     "default_variables",
@@ -213,11 +219,16 @@ DESIGN_OBJECTIVES = {
 }
 
 
+#: An angle as a layup writes it, captured (with an optional sign and exponent).
+_ANGLE_TEXT = r"\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*"
+
+
 def match_layup(template: str, layup: str) -> dict[str, float] | None:
-    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit)."""
+    """Placeholder values that turn ``template`` into ``layup`` (None if it does not fit); a
+    placeholder read as 90° in one place and −90° in another is 90° (the same ply)."""
     pattern, groups, position = "", [], 0
     for m in LAYUP_PLACEHOLDER.finditer(template):
-        pattern += re.escape(template[position : m.start()]) + r"\s*([-+]?[0-9.]+)\s*"
+        pattern += re.escape(template[position : m.start()]) + _ANGLE_TEXT
         groups.append((m.group(1) == "-", m.group(2)))
         position = m.end()
     pattern += re.escape(template[position:])
@@ -228,6 +239,8 @@ def match_layup(template: str, layup: str) -> dict[str, float] | None:
     for (negated, name), text in zip(groups, found.groups()):
         value = -float(text) if negated else float(text)
         if name in out and not math.isclose(out[name], value, abs_tol=1e-9):
+            if abs(out[name]) == abs(value) == 90.0:
+                continue
             return None
         out[name] = value + 0.0  # -0.0 -> 0.0
     return out
@@ -245,6 +258,48 @@ TWO_ANGLE_BOUNDS = {"a": (30.0, 75.0), "b": (0.0, 30.0)}
 PLY_ANGLE_SPREAD = 15.0
 #: Most distinct ply angles a derived template varies (more: the two-angle family instead).
 MOST_PLY_ANGLES = 4
+#: A ply angle no layup is expected to hold [deg]: turned to it, a 0° or 90° group shows
+#: whether turning keeps the laminate balanced (:func:`layup_template`).
+_PROBE_TURN = 7.123456789
+
+
+def _balanced_when_turned(tokens: Sequence[AngleToken], letters: dict[float, str], layup: str, turned: float) -> bool:
+    """Whether the plies of magnitude ``turned`` (0 or 90), turned by a small angle with their
+    signs alternating as :func:`layup_template` writes them, pair off as +θ/−θ."""
+    probe = _PROBE_TURN if turned == 0.0 else 90.0 - _PROBE_TURN
+    values = {letter: (probe if magnitude == turned else magnitude) for magnitude, letter in letters.items()}
+    plies = parse_layup(_render(tokens, letters, layup, values, frozenset()))
+    return plies.count(probe) == plies.count(-probe)
+
+
+def _render(
+    tokens: Sequence[AngleToken],
+    letters: dict[float, str],
+    layup: str,
+    values: dict[str, float] | None,
+    held: frozenset[float],
+) -> str:
+    """``layup`` with each angle token replaced: by its placeholder (``values`` None) or by a
+    value; the magnitudes in ``held`` stay as written. Unsigned 0° and 90° tokens alternate
+    in sign, the first positive."""
+    pieces, position, seen = [], 0, dict.fromkeys(letters, 0)
+    for token in tokens:
+        pieces.append(layup[position : token.start])
+        position = token.end
+        if token.magnitude in held:
+            pieces.append(layup[token.start : token.end])
+            continue
+        letter = letters[token.magnitude]
+        negate = False
+        if not token.signed and token.magnitude in (0.0, 90.0):
+            seen[token.magnitude] += 1
+            negate = seen[token.magnitude] % 2 == 0
+        if values is None:
+            pieces.append(("{-" if negate else "{") + letter + "}")
+        else:
+            pieces.append(repr(-values[letter] if negate else values[letter]))
+    pieces.append(layup[position:])
+    return "".join(pieces)
 
 
 def layup_template(layup: str, spread: float = PLY_ANGLE_SPREAD) -> tuple[str, tuple[DesignVariable, ...]] | None:
@@ -255,27 +310,23 @@ def layup_template(layup: str, spread: float = PLY_ANGLE_SPREAD) -> tuple[str, t
 
     ``"(60/-60/60/-60/0/0)s"`` gives ``"({a}/-{a}/{a}/-{a}/{b}/{-b})s"`` with a in [45, 75]°
     and b in [0, 15]°: a sign written stays in front of its placeholder, and the unsigned 0°
-    (and 90°) plies alternate in sign, so that turning them keeps the laminate balanced. Filled
+    (and 90°) plies alternate in sign, so that turning them keeps the laminate balanced. Where
+    they cannot pair off (an odd number, a ply count ``0_3``, a repeated group ``(0/90)2s``:
+    checked on the plies the template expands to) they stay as written, not searched. Filled
     with the design's own angles the template is the design's layup string.
     """
-    from flexshaft.design.layup import angle_tokens  # the design layer's parser
-
+    tokens = angle_tokens(layup)
     letters: dict[float, str] = {}
-    unsigned_seen: dict[float, int] = {}
-    pieces, position = [], 0
-    for token in angle_tokens(layup):
+    for token in tokens:
         if token.magnitude not in letters:
             if len(letters) == MOST_PLY_ANGLES:
                 return None
-            letters[token.magnitude] = "abcdefgh"[len(letters)]
-        letter = letters[token.magnitude]
-        negate = False
-        if not token.signed and token.magnitude in (0.0, 90.0):
-            unsigned_seen[token.magnitude] = unsigned_seen.get(token.magnitude, 0) + 1
-            negate = unsigned_seen[token.magnitude] % 2 == 0
-        pieces.append(layup[position : token.start] + ("{-" if negate else "{") + letter + "}")
-        position = token.end
-    pieces.append(layup[position:])
+            letters[token.magnitude] = "abcd"[len(letters)]
+    held = frozenset(m for m in (0.0, 90.0) if m in letters and not _balanced_when_turned(tokens, letters, layup, m))
+    searched = {m: letter for m, letter in letters.items() if m not in held}
+    # letters in order of first appearance among the searched magnitudes: a, b, ...
+    searched = {m: "abcd"[k] for k, m in enumerate(searched)}
+    template = _render(tokens, {**searched, **dict.fromkeys(held, "")}, layup, None, held)
     variables = tuple(
         DesignVariable(
             f"{LAYUP_PREFIX}{letter}",
@@ -284,42 +335,65 @@ def layup_template(layup: str, spread: float = PLY_ANGLE_SPREAD) -> tuple[str, t
             name=f"ply_angle_{letter}",
             units="degree",
         )
-        for magnitude, letter in letters.items()
+        for magnitude, letter in searched.items()
     )
-    return "".join(pieces), variables
+    return template, variables
 
 
-def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
+def _in_two_angle_family(layup: str) -> bool:
+    """Whether ``layup`` expands to (a/−a/b/−b)s with a and b within :data:`TWO_ANGLE_BOUNDS`."""
+    plies = parse_layup(layup)
+    if len(plies) != 8:
+        return False
+    a, b = plies[0], plies[2]
+    family = (a, -a, b, -b, -b, b, -a, a)
+    (a_low, a_high), (b_low, b_high) = TWO_ANGLE_BOUNDS["a"], TWO_ANGLE_BOUNDS["b"]
+    return all(p == q or abs(p) == abs(q) == 90.0 for p, q in zip(plies, family)) and (
+        a_low <= a <= a_high and b_low <= b <= b_high
+    )
+
+
+def _two_angle_variables() -> list[DesignVariable]:
+    return [
+        DesignVariable(f"{LAYUP_PREFIX}{k}", lower, upper, name=f"ply_angle_{k}", units="degree")
+        for k, (lower, upper) in TWO_ANGLE_BOUNDS.items()
+    ]
+
+
+def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[DesignVariable, ...], str | None]:
     """The default search of ``flexshaft optimize`` on a design, and its layup template.
 
-    The search contains the design it starts from (the optimizer seeds its first generation
-    with it):
+    Built to hold the design it starts from (the optimizer seeds its first generation with it):
 
-    * ply angles: of the thesis's two-angle family ``(a/−a/b/−b)s``, a in [30, 75]°, b in
-      [0, 30]° (optimum (55/−55/0/0)s), when the design's layup is written in it with its
-      angles in those bounds; else of the design's own layup, each distinct angle within
-      ±15° of its own (:func:`layup_template`);
+    * ply angles: with a template ``layup`` given, its placeholders a and b within the bounds
+      of the thesis's two-angle family ``(a/−a/b/−b)s``, a in [30, 75]°, b in [0, 30]°
+      (optimum (55/−55/0/0)s). Else the family itself when the design's layup is in it with its
+      angles in those bounds (written as the family's template when the text fits it, else in
+      the design's own notation); else the design's own layup, each distinct angle within ±15°
+      of its own (:func:`layup_template`; more than four angles: the family);
     * wall thickness from 1 mm to 4 mm (or to the design's own), at the design's outer diameter;
     * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m, or to the design's own) and
       K_d (shared, 0 to 3000 N s/m, or to the design's own);
     * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
+
+    The design is not held when its active bearings differ in K_p or K_d (one shared variable
+    each), a K_p is 0 (a log scale), or a bearing stands within 0.3 m of its neighbour.
     """
-    variables = []
+    variables: list[DesignVariable] = []
     template = None
-    layup = design.shaft.layup
+    own = design.shaft.layup
     if layup is not None:
-        two_angle = match_layup(TWO_ANGLE_TEMPLATE, layup)
-        derived = layup_template(layup)
-        if derived is None or (
-            two_angle is not None
-            and all(lower <= two_angle[k] <= upper for k, (lower, upper) in TWO_ANGLE_BOUNDS.items())
-        ):
+        template = layup
+        variables += _two_angle_variables()
+    elif own is not None:
+        derived = layup_template(own)
+        if match_layup(TWO_ANGLE_TEMPLATE, own) is not None and _in_two_angle_family(own) or derived is None:
             template = TWO_ANGLE_TEMPLATE
-            variables += [
-                DesignVariable(f"{LAYUP_PREFIX}{k}", lower, upper, name=f"ply_angle_{k}", units="degree")
-                for k, (lower, upper) in TWO_ANGLE_BOUNDS.items()
-            ]
-        else:
+            variables += _two_angle_variables()
+        elif _in_two_angle_family(own) and [v.placeholder for v in derived[1]] == ["a", "b"]:
+            template = derived[0]
+            variables += _two_angle_variables()
+        elif derived[1]:
             template, angles = derived
             variables += angles
     wall = design.shaft.wall_thickness
@@ -327,10 +401,11 @@ def default_variables(design) -> tuple[tuple[DesignVariable, ...], str | None]:
         DesignVariable("shaft.wall_thickness", min(0.001, wall), max(0.004, wall), name="wall_thickness", units="m")
     )
     bearings = list(design.bearings)
-    active = [i for i, b in enumerate(bearings) if b.kind == "active"]
+    magnets = {i: b for i, b in enumerate(bearings) if isinstance(b, ActiveBearing)}
+    active = list(magnets)
     if active:
-        gains = [bearings[i].kp for i in active if bearings[i].kp is not None and bearings[i].kp > 0]
-        damping = [bearings[i].kd for i in active if bearings[i].kd is not None]
+        gains = [float(b.kp) for b in magnets.values() if b.kp is not None and b.kp > 0]
+        damping = [float(b.kd) for b in magnets.values() if b.kd is not None]
         variables.append(
             DesignVariable(
                 tuple(f"bearings[{i}].kp" for i in active),
