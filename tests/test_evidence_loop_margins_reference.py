@@ -43,6 +43,9 @@ def test_a_lower_margin_that_exists_is_judged_by_its_size():
     assert check.status == "fail"
     assert check.value == pytest.approx(4.0, abs=1e-12)
     assert check.margin == pytest.approx(4.0 - LIMIT_DB, abs=1e-12)
+    # both directions are findings, and the governing one is the gain fall
+    assert sorted(f.location["case"] for f in check.findings) == ["gain fall", "gain rise"]
+    assert check.location["case"] == "gain fall"
 
 
 def test_a_loop_without_any_crossover_has_no_finding():

@@ -48,6 +48,8 @@ def test_imbalance_alone_heats_only_through_the_vibration_mechanism(model):
     assert sources.vibration.max() > 0.0
 
 
+# inf is above the allowable and a runaway by the comparison alone; nan compares false with every
+# number, so only the nan case needs the rule "not finite: runaway"
 @pytest.mark.parametrize("bad", [np.nan, np.inf], ids=["nan", "inf"])
 def test_a_non_finite_iterate_is_a_runaway_at_that_iterate(bad):
     T_inf, allowable = 300.0, 400.0

@@ -3,9 +3,10 @@
 docs/design-reference.md (``[shaft] layup``): "Ply angles [deg] from the shaft axis, inner ply
 first". :attr:`flexshaft.design.components.Shaft.ply_angles_deg` is the public reading of that
 string (the package docstring's example, the optimizer's reference designs); the model's
-laminate is built from the resolved tube (:attr:`Shaft.tubes`). Both must list the angles of
-the string in its order: reversed, an unsymmetric layup is another laminate (the sign of its
-bending-extension coupling B flips). By hand, "30/-60/0/90" is the four angles 30, -60, 0, 90
+nominal tube (``model.shaft``: strength and buckling) is built from it, and each segment's
+tube from :attr:`Shaft.tubes`. All must list the angles of the string in its order: reversed,
+an unsymmetric layup is another laminate (z -> -z: the bending-extension coupling B changes
+sign, D is unchanged). By hand, "30/-60/0/90" is the four angles 30, -60, 0, 90
 from the inner surface out; "(30/-60)s" is 30, -60, -60, 30 (the ``s`` mirrors the group).
 """
 
@@ -36,6 +37,8 @@ def test_the_shaft_lists_its_plies_inner_ply_first(layup, angles):
 
 
 def test_the_model_laminate_carries_the_shafts_angles():
-    design = _baseline_with_layup("30/-60/0/90")
-    laminate = build_model(design).shaft.laminate
-    np.testing.assert_array_equal(laminate.angles, np.radians(design.shaft.ply_angles_deg))
+    """Against the angles expanded by hand (not the design's own reading of them)."""
+    model = build_model(_baseline_with_layup("30/-60/0/90"))
+    by_hand = np.radians([30.0, -60.0, 0.0, 90.0])
+    np.testing.assert_array_equal(model.shaft.laminate.angles, by_hand)
+    np.testing.assert_array_equal(model.segments[0].properties.laminate.angles, by_hand)
