@@ -77,6 +77,29 @@ def test_the_on_line_root_does_not_depend_on_the_vectors_phase(gap, phi):
     assert abs(found[0] - reference) <= 1e-7 * abs(reference) + 40 * 1e-9 * speed
 
 
+def test_the_on_line_root_from_a_vector_a_quarter_turn_out_at_the_midpoint(gap):
+    """The worst start: the upper root's vector is the lower's own turned by a quarter turn
+    (y₊ = i y₋, the same mode, phase π/2) and the two roots straddle the line by exactly
+    ±1 rad/s, so regula falsi's first trial is μ = ½ exactly (1 / (1 − (−1)); speed ± 1 and
+    back are exact in binary: 1 is a multiple of the speed's ulp). Aligned to the lower's
+    phase, y₊ is y₋ and the blended start (1 − μ) y₋ + μ y₊ is y₋; turned the other way it
+    would be ½ y₋ − ½ y₋ = 0 exactly, from which no Newton solve starts. The root must be the
+    QZ on-line root of :func:`gap`, to the same tolerance as above."""
+    red, speed, p, q, reference = gap
+    lower, upper = branches(red, speed)
+    s_lo, Y_lo = branch_roots(red, speed, lower.weights)
+    s_hi, _ = branch_roots(red, speed, upper.weights)
+    i, j = np.argmin(np.abs(s_lo - q)), np.argmin(np.abs(s_hi - p))
+    y_lo = Y_lo[:, i]
+    low = (complex(s_lo[i].real, speed + 1.0), y_lo)
+    high = (complex(s_hi[j].real, speed - 1.0), 1j * y_lo)
+    assert (low[0].imag - speed) / ((low[0].imag - speed) - (high[0].imag - speed)) == 0.5
+    found = line_root(red, speed, lower.weights, upper.weights, low, high)
+    assert found is not None
+    assert found[0].imag == pytest.approx(speed, rel=1e-9)
+    assert abs(found[0] - reference) <= 1e-7 * abs(reference) + 40 * 1e-9 * speed
+
+
 def test_the_thesis_losss_roots_below_the_spin_have_their_null_vectors():
     text = jeffcott_text(0.05, 50.0, "thesis", elements=6).replace("density = 0.1", "density = 7800.0")
     red = reduce(build_model(loads_design(text)), 8)

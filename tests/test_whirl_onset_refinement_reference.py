@@ -18,8 +18,9 @@ References (derived).
    closed-form root s(Ω) = |s| (−ζ(Ω) + i √(1 − ζ²)) with ζ(Ω) = 0.01 (e^{−3(Ω/W − 1)} − 1),
    stable at Ω = 0, unstable at 2W, and ζ(W) = 0 exactly. ζ is convex, the case where plain
    regula falsi keeps one end fixed and crawls; the Illinois step (halving the stale end's value)
-   must reach W to the refinement's 1e-7 of the speed within its 80 evaluations (a hand
-   computation of plain regula falsi from this bracket ends 2e-3 away after 80).
+   must reach W to the refinement's 1e-7 of the speed within its 80 evaluations (it does in
+   12; plain regula falsi from this bracket ends 2.5e-6 away after 80, and halving the end
+   just replaced instead of the stale one 2.4e-3 away).
    When the mode cannot be followed at all (Newton fails), the onset is the linear interpolation
    of ζ between the two grid speeds, a + ζ_a/(ζ_a − ζ_b)(b − a) (the documented fallback).
 """
