@@ -12,13 +12,13 @@ References, counted by hand:
   static offset + peak orbit equals its gap, or whose load equals its capacity, passes. Two
   bearings, three samples: sample 0 at both limits exactly (no event), sample 1 above the gap of
   "a" only, sample 2 above the capacity of "b" only: one gap event and one force event of 3.
-
 * :func:`run_montecarlo`'s ``placement="mid_bay"`` puts each bay's unbalance at its middle
-  (docs/transient.md, the module docstring: "at axial position x_b, mid-bay or uniform along the
-  bay"): every reported ``position_bay{b}`` is the fraction 0.5 exactly, and the run says
-  ``placement = "mid_bay"``. Run on the two-bay rotor of tests/test_montecarlo_bounds.py with two
-  samples on a 2-speed grid and no strength evaluation (as
-  tests/test_montecarlo_draws_reported_reference.py, for CPU).
+  (docs/transient.md: "at mid-bay or uniformly along the bay (`placement`)"; the module
+  docstring: "at axial position x_b, mid-bay or uniform along the bay"): every reported
+  ``position_bay{b}`` is the fraction 0.5 exactly, and the run says ``placement = "mid_bay"``.
+  Run on the two-bay rotor of tests/test_montecarlo_bounds.py with two samples on a 2-speed
+  grid and no strength evaluation (as tests/test_montecarlo_draws_reported_reference.py, for
+  CPU).
 
 Exact integer counts and fractions: no tolerance.
 """
