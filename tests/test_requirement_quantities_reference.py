@@ -36,7 +36,7 @@ def _accepts(kind, value: float) -> bool:
 
 def test_the_rigid_member_idealisation_is_a_modulus():
     assert _accepts(Modulus, 1.2e12)  # diamond
-    assert _accepts(Modulus, 1e16)  # the rigid member, 5e4 × steel's 210 GPa ≈ 1.05e16
+    assert _accepts(Modulus, 1e16)  # the rigid member's cap, 5e4 × 200 GPa = 1e16 (docs/limits.md)
     assert not _accepts(Modulus, math.nextafter(1e16, math.inf))
 
 
