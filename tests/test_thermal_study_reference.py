@@ -48,8 +48,10 @@ def baseline():
     return design, fs.build_model(design)
 
 
-def _residual(x, rise, element_heat, k, wall, outer, h):
-    """The control-volume balance above at every interior node, over the largest node heat."""
+def control_volumes(x, element_heat, k, wall, outer):
+    """The control volumes of the balance above: each element's axial conductance G = kA/L
+    [W/K], each node's share of the length ℓ (half of each element it touches) and of the heat
+    s (half of each element's)."""
     L = np.diff(x)
     G = k * np.pi * (outer**2 - (outer - 2.0 * wall) ** 2) / 4.0 / L
     ell = np.zeros(x.size)
@@ -58,6 +60,12 @@ def _residual(x, rise, element_heat, k, wall, outer, h):
     s = np.zeros(x.size)
     s[:-1] += element_heat / 2
     s[1:] += element_heat / 2
+    return G, ell, s
+
+
+def _residual(x, rise, element_heat, k, wall, outer, h):
+    """The control-volume balance above at every interior node, over the largest node heat."""
+    G, ell, s = control_volumes(x, element_heat, k, wall, outer)
     i = np.arange(1, x.size - 1)
     conducted = G[i - 1] * (rise[i - 1] - rise[i]) + G[i] * (rise[i + 1] - rise[i])
     r = conducted - h * np.pi * outer * ell[i] * rise[i] + s[i]

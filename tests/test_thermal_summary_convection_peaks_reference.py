@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_thermal_study_reference import control_volumes
 
 import flexshaft as fs
 from flexshaft.design import with_overrides
@@ -34,14 +35,7 @@ from flexshaft.thermal.study import thermal_summary
 
 
 def _hand_profile(x, element_heat, k, wall, outer, h):
-    L = np.diff(x)
-    G = k * np.pi * (outer**2 - (outer - 2.0 * wall) ** 2) / 4.0 / L
-    ell = np.zeros(x.size)
-    ell[:-1] += L / 2
-    ell[1:] += L / 2
-    s = np.zeros(x.size)
-    s[:-1] += element_heat / 2
-    s[1:] += element_heat / 2
+    G, ell, s = control_volumes(x, element_heat, k, wall, outer)
     n = x.size
     A = np.zeros((n, n))
     rhs = np.zeros(n)
