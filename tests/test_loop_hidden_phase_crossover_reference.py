@@ -16,7 +16,9 @@ its nearest point to −1 lies at distance d − r, d = |0.55 − 0.1i|, so |S|m
 3.2361 (below the real axis, between the two crossings). The crossings lie 0.46 % apart
 inside one interval of a 200-point logarithmic grid (4.7 % steps); at the interval's ends
 (|u| ≈ 23) Im L = 0.1 ∓ 0.013 > 0: the grid shows no change of sign of Im L, only the refined
-peak, where Im L < 0, does. |L| ≤ 0.7 everywhere: no gain crossover, phase margin ∞.
+peak, where Im L < 0, does. |L| ≤ |c| + r = 0.711 < 1 everywhere: no gain crossover, phase
+margin ∞. The grid has no point near the peak's top (which :func:`loop_margins` asks of its
+grid); the peak is found by the refinement of its neighbours.
 
 Tolerances: the crossovers are refined to 1e-8 ω (Illinois), so the frequencies and the gain
 margin to 1e-7; the peak is located to 1e-6 in ln ω (golden section), where |S| is flat to

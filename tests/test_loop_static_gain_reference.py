@@ -23,8 +23,11 @@ determinate, so each loop's static plant follows from moments alone, the other b
   rotor statically stiff). The loop's static value is the closed loop T(0) = L/(1 + L) =
   −2/3 < 0, and its sign carries the crossover: |T| = 2/3 reads L = 2, no crossover.
 
-Tolerance 1e-4 relative: the FE rotor differs from the rigid one by ~1e-4 in its static
-flexibility at these spans (tests/test_loop_robustness.py compares its loops to 1e-4 too).
+Both references are exact for a flexible shaft too: the loads leave it unloaded (no net force
+at the loaded magnet, no reaction at the pin), so its stiffness does not enter; measured
+1.5e-12 relative on a steel rotor, 1e-8 to 2e-8 on this 1e4-times-stiffened one (round-off of
+its stiffness). Tolerance 1e-6 relative. The rotor is at rest: the speed-dependent
+(circulatory) part of the static solve is not exercised here.
 CPU: two small models and their loops on the default grid, about 0.1 s of test time.
 """
 
@@ -61,7 +64,7 @@ def test_a_remote_sensor_beside_an_integrating_bearing_scales_the_static_loop_by
     for axis in ("v", "w"):
         m = margins[("amb_2", axis)]
         assert m.phase_crossovers[0] == 0.0
-        assert m.gain_margin_lower_db == pytest.approx(expected, rel=1e-4)
+        assert m.gain_margin_lower_db == pytest.approx(expected, rel=1e-6)
 
 
 def test_a_pd_loop_weaker_than_its_magnet_crosses_minus_180_degrees_at_zero_frequency():
@@ -75,4 +78,4 @@ def test_a_pd_loop_weaker_than_its_magnet_crosses_minus_180_degrees_at_zero_freq
     assert len(margins) == 4
     for m in margins.values():
         assert m.phase_crossovers[0] == 0.0
-        assert m.gain_margin_upper_db == pytest.approx(expected, rel=1e-4)  # the ω = 0 crossover sets it
+        assert m.gain_margin_upper_db == pytest.approx(expected, rel=1e-6)  # the ω = 0 crossover sets it
