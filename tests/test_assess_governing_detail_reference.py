@@ -5,7 +5,8 @@ report's detail (modes at rest, the strength's leave-one-out, …) to ONE point,
 one, and the assessment shows that point's analyses. The tuned design's four envelope points
 are given Tsai-Wu factors 3.0, 1.8, 2.5, 4.0 against the 1.5 limit (docs/requirements.md): the
 governing point, by hand, is the one of the smallest margin / limit, (1.8 − 1.5)/1.5 = 0.2, the
-second, ``standard_day``; the first (``cold_day``, 1.0) must not be the one detailed. The
+second, ``standard_day``; the first (``cold_day``, margin / limit (3.0 − 1.5)/1.5 = 1.0) must
+not be the one detailed. The
 analyses themselves are stand-ins that carry their point's name in ``notes`` (no step of the
 combining reads them), and the detail step appends "detail" to what it is given.
 """

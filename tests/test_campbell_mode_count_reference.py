@@ -6,8 +6,8 @@ the ceiling is the diagram's top speed (the grid's last, ``scan_top`` × Ω_op) 
 excitation order (1/rev here: no rotor is given).
 
 The model: a pinned-pinned steel tube (D 50 mm, wall 5 mm, L = 1 m, ρ 7850 kg/m³, E 210 GPa),
-whose bending frequencies are Rayleigh's beam (Timoshenko & Young, *Vibration Problems in
-Engineering*, §5.10: rotary inertia; pinned ends give sin(nπx/L) exactly)
+whose bending frequencies are Rayleigh's beam (Euler-Bernoulli with rotary inertia, EI w'''' +
+ρA ẅ − ρI ẅ'' = 0; pinned ends give sin(nπx/L) exactly, and with it)
 
     ω_n² = EI k⁴ / (ρA (1 + k² r²)),  k = nπ/L,  r² = I/A,
 

@@ -22,7 +22,8 @@ s = −k_i k_d ρ/(2m) ± i √((k − k_s + k_i k_p ρ)/m − (k_i k_d ρ/2m)²
 The 4-element mesh's cubic shape functions hold that static shape exactly (one load at a node).
 The continuation starts 1 % off the reduced model's two disk roots (a pair: isotropic, no
 spin) with the viscous model and with the hysteretic branches, and must come back to it.
-Tolerance 5e-6 relative: the tube's mass moves the root by about half that; Newton stops at
+Tolerance 5e-6 relative: the tube's mass (not in the closed form) moves the root by 8.6e-7,
+about a sixth of that; Newton stops at
 1e-10 |s|. A damping term entered with the wrong sign moves Re s to +4.57 (a factor 2 on |Re s|
 is 1.4e-2 of |s|). CPU: one small model, a few ms.
 """
