@@ -386,11 +386,12 @@ def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[D
         template = layup
         variables += _two_angle_variables()
     elif own is not None:
+        in_family = _in_two_angle_family(own)
         derived = layup_template(own)
-        if match_layup(TWO_ANGLE_TEMPLATE, own) is not None and _in_two_angle_family(own) or derived is None:
+        if (in_family and match_layup(TWO_ANGLE_TEMPLATE, own) is not None) or derived is None:
             template = TWO_ANGLE_TEMPLATE
             variables += _two_angle_variables()
-        elif _in_two_angle_family(own) and [v.placeholder for v in derived[1]] == ["a", "b"]:
+        elif in_family and [v.placeholder for v in derived[1]] == ["a", "b"]:
             template = derived[0]
             variables += _two_angle_variables()
         elif derived[1]:
