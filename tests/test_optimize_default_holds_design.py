@@ -192,3 +192,15 @@ def test_a_two_angle_layup_outside_the_familys_bounds_gets_its_own_box():
     angles = {v.name: (v.lower, v.upper) for v in variables if v.name.startswith("ply_angle")}
     assert angles == {"ply_angle_a": (65.0, 90.0), "ply_angle_b": (0.0, 15.0)}
     assert _problem(design).base_values() is not None
+
+
+def test_bearings_with_their_own_gains_get_their_own_variables():
+    """amb_1 at K_p 5e5, amb_2 at 8e5 (K_d 1250 both): one shared K_p cannot hold both, so each
+    bearing gets its own (``amb_1_kp``, ``amb_2_kp``), K_d stays shared; the design is read back."""
+    design = with_overrides(embedded_design("tuned"), {"bearings[2].kp": 8e5})
+    found = {v.name: v for v in default_variables(design)[0]}
+    assert found["amb_1_kp"].paths == ("bearings[1].kp",) and found["amb_2_kp"].paths == ("bearings[2].kp",)
+    assert (found["amb_1_kp"].lower, found["amb_1_kp"].upper) == (1e5, 1e7)
+    assert "kp" not in found and found["kd"].paths == ("bearings[1].kd", "bearings[2].kd")
+    base = _problem(design).base_values()
+    assert base is not None and (base["amb_1_kp"], base["amb_2_kp"], base["kd"]) == (5e5, 8e5, 1250.0)

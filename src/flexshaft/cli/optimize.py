@@ -151,8 +151,8 @@ def optimize(
         "--var",
         help="Variable PATH[,PATH...]=LOWER:UPPER[:int|:log] in the design file's units (SI, "
         "ply angles in degrees); layup.NAME fills {NAME} of --layup. Default: a search that holds the design: "
-        "ply angles (a/-a/b/-b)s, or each of the design's own within 15 deg; wall thickness, shared K_p and "
-        "K_d of the active bearings, their stations.",
+        "ply angles (a/-a/b/-b)s, or each of the design's own within 15 deg; wall thickness, K_p and K_d of "
+        "the active bearings (shared when equal), their stations.",
     ),
     layup: str | None = typer.Option(None, "--layup", help="Layup template, e.g. '({a}/{-a}/0_{n})s'."),
     ply_thickness_mm: float | None = typer.Option(

@@ -360,6 +360,15 @@ def _two_angle_variables() -> list[DesignVariable]:
     ]
 
 
+def _gain_groups(magnets: dict[int, ActiveBearing], key: str) -> list[tuple[tuple[int, ...], str]]:
+    """The active bearings that share one gain variable ``key`` ("kp" or "kd"), with its name:
+    all of them (``key``) when they have the same gain, else each its own (``<name>_<key>``),
+    so that the search holds the design either way."""
+    if len({getattr(b, key) for b in magnets.values()}) <= 1:
+        return [(tuple(magnets), key)]
+    return [((i,), _name_of(f"{b.name}_{key}")) for i, b in magnets.items()]
+
+
 def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[DesignVariable, ...], str | None]:
     """The default search of ``flexshaft optimize`` on a design, and its layup template.
 
@@ -372,12 +381,13 @@ def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[D
       the design's own notation); else the design's own layup, each distinct angle within ±15°
       of its own (:func:`layup_template`; more than four angles: the family);
     * wall thickness from 1 mm to 4 mm (or to the design's own), at the design's outer diameter;
-    * the active bearings' K_p (shared, log scale, 1e5 to 1e7 N/m, or to the design's own) and
-      K_d (shared, 0 to 3000 N s/m, or to the design's own);
+    * the active bearings' K_p (log scale, 1e5 to 1e7 N/m, or to the design's own) and K_d (0 to
+      3000 N s/m, or to the design's own), each one variable shared by every active bearing when
+      their gains are equal, else one a bearing (``<name>_kp``, ``<name>_kd``);
     * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
 
-    The design is not held when its active bearings differ in K_p or K_d (one shared variable
-    each), a K_p is 0 (a log scale), or a bearing stands within 0.3 m of its neighbour.
+    The design is not held when a K_p is 0 (a log scale) or a bearing stands within 0.3 m of its
+    neighbour.
     """
     variables: list[DesignVariable] = []
     template = None
@@ -407,21 +417,23 @@ def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[D
     if active:
         gains = [float(b.kp) for b in magnets.values() if b.kp is not None and b.kp > 0]
         damping = [float(b.kd) for b in magnets.values() if b.kd is not None]
-        variables.append(
-            DesignVariable(
-                tuple(f"bearings[{i}].kp" for i in active),
-                min([1e5, *gains]),
-                max([1e7, *gains]),
-                log=True,
-                name="kp",
-                units="N m-1",
+        for group, name in _gain_groups(magnets, "kp"):
+            variables.append(
+                DesignVariable(
+                    tuple(f"bearings[{i}].kp" for i in group),
+                    min([1e5, *gains]),
+                    max([1e7, *gains]),
+                    log=True,
+                    name=name,
+                    units="N m-1",
+                )
             )
-        )
-        variables.append(
-            DesignVariable(
-                tuple(f"bearings[{i}].kd" for i in active), 0.0, max([3000.0, *damping]), name="kd", units="N s m-1"
+        for group, name in _gain_groups(magnets, "kd"):
+            variables.append(
+                DesignVariable(
+                    tuple(f"bearings[{i}].kd" for i in group), 0.0, max([3000.0, *damping]), name=name, units="N s m-1"
+                )
             )
-        )
         stations = sorted(b.x for b in bearings)
         for i in active:
             x = bearings[i].x
