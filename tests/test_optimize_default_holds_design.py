@@ -204,3 +204,15 @@ def test_bearings_with_their_own_gains_get_their_own_variables():
     assert "kp" not in found and found["kd"].paths == ("bearings[1].kd", "bearings[2].kd")
     base = _problem(design).base_values()
     assert base is not None and (base["amb_1_kp"], base["amb_2_kp"], base["kd"]) == (5e5, 8e5, 1250.0)
+
+
+def test_bearings_with_their_own_damping_and_unusual_names():
+    """K_d 1250 and 900 N s/m: one K_d a bearing; a bearing named "1" (no identifier of its own)
+    gets ``bearings_1_kd`` and ``bearings_1_x``. K_p (5e5 both) stays shared."""
+    design = with_overrides(embedded_design("tuned"), {"bearings[1].name": "1", "bearings[2].kd": 900.0})
+    found = {v.name: v for v in default_variables(design)[0]}
+    assert found["bearings_1_kd"].paths == ("bearings[1].kd",) and found["amb_2_kd"].paths == ("bearings[2].kd",)
+    assert found["kp"].paths == ("bearings[1].kp", "bearings[2].kp")
+    assert found["bearings_1_x"].paths == ("bearings[1].x",) and "amb_2_x" in found
+    base = _problem(design).base_values()
+    assert base is not None and (base["bearings_1_kd"], base["amb_2_kd"]) == (1250.0, 900.0)

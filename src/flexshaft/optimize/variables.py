@@ -366,7 +366,14 @@ def _gain_groups(magnets: dict[int, ActiveBearing], key: str) -> list[tuple[tupl
     so that the search holds the design either way."""
     if len({getattr(b, key) for b in magnets.values()}) <= 1:
         return [(tuple(magnets), key)]
-    return [((i,), _name_of(f"{b.name}_{key}")) for i, b in magnets.items()]
+    return [((i,), _own_name(b.name, i, key)) for i, b in magnets.items()]
+
+
+def _own_name(bearing: str, index: int, key: str) -> str:
+    """``<bearing>_<key>`` as an identifier, or ``bearings_<index>_<key>`` for a bearing whose
+    name does not start one (e.g. "1")."""
+    name = _name_of(f"{bearing}_{key}")
+    return name if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name) else f"bearings_{index}_{key}"
 
 
 def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[DesignVariable, ...], str | None]:
@@ -386,8 +393,8 @@ def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[D
       their gains are equal, else one a bearing (``<name>_kp``, ``<name>_kd``);
     * each active bearing's station within ±1 m of its own, at least 0.3 m from its neighbours.
 
-    The design is not held when a K_p is 0 (a log scale) or a bearing stands within 0.3 m of its
-    neighbour.
+    The design is not held when a K_p is 0 (a log scale), a bearing stands within 0.3 m of its
+    neighbour, or an active bearing has a controller transfer function instead of K_p and K_d.
     """
     variables: list[DesignVariable] = []
     template = None
@@ -447,7 +454,7 @@ def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[D
                         f"bearings[{i}].x",
                         round(lower, 3),
                         round(upper, 3),
-                        name=_name_of(f"{bearings[i].name}_x"),
+                        name=_own_name(bearings[i].name, i, "x"),
                         units="m",
                     )
                 )
