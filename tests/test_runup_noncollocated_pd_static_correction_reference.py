@@ -25,24 +25,18 @@ Written for the mutation h37a-maps-residual-on-magnet of scripts/mutations.toml.
 from __future__ import annotations
 
 import numpy as np
-from rotors import jeffcott_text
+from test_runup_noncollocated_static_correction_reference import MAGNET, SENSOR, one_magnet_model
 
 from flexshaft.analyses.transient import SpeedProfile, transient_response
-from flexshaft.assembly import build_model
-from flexshaft.design import loads_design
 
 KI, KP, KD, KS = 100.0, 5.0e3, 2.0, 2.0e5  # N/A, A/m, A s/m, N/m
 U = 1e-4  # kg m
 SPEED = 40.0  # rad/s
-MAGNET, SENSOR = 0.25, 0.5  # m
 
 
 def test_a_pd_laws_force_reads_the_static_correction_at_its_sensor():
-    text = jeffcott_text(0.0, 0.0, elements=6).replace("density = 0.1", "density = 7800.0")
-    head, tail = text.split("[[bearings]]")
-    tail = tail[tail.index("[[disks]]") :]
     keys = f'kind = "active"\nkp = {KP}\nkd = {KD}\nks = {KS}\nki = {KI}\nsensor_offset = {SENSOR - MAGNET}'
-    model = build_model(loads_design(f'{head}[[bearings]]\nname = "b"\nx = {MAGNET}\n{keys}\n{tail}'))
+    model = one_magnet_model(keys)
     act = model.actuators[0]
     assert not act.collocated and act.amplifier_bandwidth is None
     dm = model.dofs

@@ -46,15 +46,21 @@ SPEED = 40.0  # rad/s
 MAGNET, SENSOR = 0.25, 0.5  # m
 
 
-def test_the_stroke_and_the_law_read_the_static_correction_at_their_own_stations():
+def one_magnet_model(keys: str):
+    """The steel Jeffcott rotor (6 elements) with its bearings replaced by one magnet "b" at
+    MAGNET with the bearing keys ``keys`` (its law, sensor offset, ...)."""
     text = jeffcott_text(0.0, 0.0, elements=6).replace("density = 0.1", "density = 7800.0")
     head, tail = text.split("[[bearings]]")
     tail = tail[tail.index("[[disks]]") :]
+    return build_model(loads_design(f'{head}[[bearings]]\nname = "b"\nx = {MAGNET}\n{keys}\n{tail}'))
+
+
+def test_the_stroke_and_the_law_read_the_static_correction_at_their_own_stations():
     keys = (
         f'kind = "active"\nkp = {KP}\nkd = 0.0\nks = {KS}\nki = {KI}\namplifier_bandwidth = {FA}\n'
         f"sensor_offset = {SENSOR - MAGNET}"
     )
-    model = build_model(loads_design(f'{head}[[bearings]]\nname = "b"\nx = {MAGNET}\n{keys}\n{tail}'))
+    model = one_magnet_model(keys)
     assert not model.actuators[0].collocated
     dm = model.dofs
     magnet, sensor = dm.node_at("shaft", MAGNET), dm.node_at("shaft", SENSOR)

@@ -98,15 +98,28 @@ shaft_elements = 20
 """
 
 
-def test_two_integrating_bearings_carry_the_beam_reactions():
-    model = build_model(loads_design(TWO_MAGNETS))
+def two_point_loads(model) -> np.ndarray:
+    """F in v at x = 0.4 m and F/2 in w at x = 0.6 m."""
     dm = model.dofs
     Q = np.zeros(dm.size)
     Q[dm.shaft(dm.node_at("shaft", 0.4), "v")] = F
     Q[dm.shaft(dm.node_at("shaft", 0.6), "w")] = F / 2
+    return Q
+
+
+def assert_beam_reactions(model, Q) -> None:
+    """Magnets a (x = 0.25 m) and b (0.75 m) carry the simply supported beam's reactions of
+    :func:`two_point_loads`: v 70/30 N, w 15/35 N (moments about each support)."""
     forces = static_actuator_forces(model, Q)
     assert forces["a"] == pytest.approx([70.0, 15.0], rel=1e-9)
     assert forces["b"] == pytest.approx([30.0, 35.0], rel=1e-9)
+
+
+def test_two_integrating_bearings_carry_the_beam_reactions():
+    model = build_model(loads_design(TWO_MAGNETS))
+    dm = model.dofs
+    Q = two_point_loads(model)
+    assert_beam_reactions(model, Q)
     q = static_response(model, Q)
     held = [q[dm.shaft(dm.node_at("shaft", x), f)] for x in (0.25, 0.75) for f in ("v", "w")]
     assert np.abs(held).max() <= 1e-12 * F / K_SHAFT

@@ -58,6 +58,10 @@ class OptimizeError(ValueError):
     """An optimization that cannot run: bad variable, objective, constraint or run folder."""
 
 
+#: A variable's name: an identifier (letters, digits, _).
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
 def _name_of(path: str) -> str:
     return re.sub(r"[^A-Za-z0-9_]+", "_", path).strip("_")
 
@@ -142,7 +146,7 @@ class DesignVariable:
         if any(p.startswith(LAYUP_PREFIX) for p in paths) and len(paths) > 1:
             raise OptimizeError(f"{where}: a layup placeholder cannot share a variable with other paths")
         name = name if name is not None else _name_of(paths[0])
-        if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name or ""):
+        if not _IDENTIFIER.fullmatch(name or ""):
             raise OptimizeError(f"{where}: name must be an identifier (letters, digits, _), got {name!r}")
         object.__setattr__(self, "name", name)
 
@@ -323,9 +327,8 @@ def layup_template(layup: str, spread: float = PLY_ANGLE_SPREAD) -> tuple[str, t
                 return None
             letters[token.magnitude] = "abcd"[len(letters)]
     held = frozenset(m for m in (0.0, 90.0) if m in letters and not _balanced_when_turned(tokens, letters, layup, m))
-    searched = {m: letter for m, letter in letters.items() if m not in held}
     # letters in order of first appearance among the searched magnitudes: a, b, ...
-    searched = {m: "abcd"[k] for k, m in enumerate(searched)}
+    searched = {m: "abcd"[k] for k, m in enumerate(m for m in letters if m not in held)}
     template = _render(tokens, {**searched, **dict.fromkeys(held, "")}, layup, None, held)
     variables = tuple(
         DesignVariable(
@@ -373,7 +376,7 @@ def _own_name(bearing: str, index: int, key: str) -> str:
     """``<bearing>_<key>`` as an identifier, or ``bearings_<index>_<key>`` for a bearing whose
     name does not start one (e.g. "1")."""
     name = _name_of(f"{bearing}_{key}")
-    return name if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name) else f"bearings_{index}_{key}"
+    return name if _IDENTIFIER.fullmatch(name) else f"bearings_{index}_{key}"
 
 
 def default_variables(design: Design, layup: str | None = None) -> tuple[tuple[DesignVariable, ...], str | None]:
