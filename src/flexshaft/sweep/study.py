@@ -16,6 +16,7 @@ import hashlib
 import json
 import math
 import pickle
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -334,7 +335,10 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     """Outputs of grid points ``start..stop-1``: float64 (stop − start, n_outputs).
 
     Runs with one BLAS thread; the model is built once per distinct design (consecutive
-    points differing only in special axes share it).
+    points differing only in special axes share it). A warning an evaluation raises (a
+    response near an undamped resonance, a problem size) is raised again naming its point
+    (:func:`_warn_at_point`): in a sweep of hundreds of designs, a warning without its design
+    cannot be acted on.
     """
 
     names = [o.name for o in study.outputs]
@@ -355,11 +359,14 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
                 shared=shared,
             )
             try:
-                result = study.evaluate(point)
+                with warnings.catch_warnings(record=True) as caught:
+                    result = study.evaluate(point)
             except Exception:
                 if on_error == "nan":
                     continue
                 raise
+            finally:
+                _warn_at_point(study, values, caught)
             missing = [n for n in names if n not in result]
             extra = [n for n in result if n not in names]
             if missing or extra:
@@ -369,3 +376,18 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
                 )
             out[row] = [float(result[n]) for n in names]
     return out
+
+
+def _warn_at_point(study: Study, values: Mapping[str, Any], caught: Sequence[warnings.WarningMessage]) -> None:
+    """Raise each warning of ``caught`` again, of its own category, its message prefixed with
+    the point it came from: the variables that take more than one value in ``study`` (all of
+    them if none does), ``name = value``; an optimizer's candidate is its JSON overrides."""
+    if not caught:
+        return
+    varying = [v.name for v in study.variables if len(v.values) > 1] or [v.name for v in study.variables]
+    shown = ", ".join(f"{name} = {values[name]}" for name in varying)
+    for record in caught:
+        category = record.category
+        warnings.warn_explicit(
+            category(f"at {shown}: {record.message}"), category, record.filename, record.lineno, source=record.source
+        )
