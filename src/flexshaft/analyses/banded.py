@@ -56,6 +56,7 @@ from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
 from flexshaft.analyses.guards import RefusedInputError
 from flexshaft.analyses.loss import frequency_coefficient_arrays
 from flexshaft.assembly.model import Model
+from flexshaft.parallel.point_label import labelled
 
 __all__ = [
     "SingularSystemError",
@@ -533,10 +534,12 @@ class BandedHarmonicSolver:
 
             warnings.warn(
                 ResonanceWarning(
-                    f"the response at ω = {omega:.6g} rad/s, Ω = {speed:.6g} rad/s lies within about "
-                    f"{1 / kappa:.1e} (relative) of an undamped resonance: moving ω by that fraction "
-                    f"changes it completely, and the natural frequencies are known to about "
-                    f"{RESONANCE_TOLERANCE:g}; add damping or move the frequency"
+                    labelled(
+                        f"the response at ω = {omega:.6g} rad/s, Ω = {speed:.6g} rad/s lies within about "
+                        f"{1 / kappa:.1e} (relative) of an undamped resonance: moving ω by that fraction "
+                        f"changes it completely, and the natural frequencies are known to about "
+                        f"{RESONANCE_TOLERANCE:g}; add damping or move the frequency"
+                    )
                 ),
                 stacklevel=2,
             )

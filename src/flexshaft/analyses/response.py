@@ -26,6 +26,7 @@ from flexshaft.analyses.results import ResultMixin, StationWarning, html_table
 from flexshaft.assembly.dofs import DofMap
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.sparse import restrict
+from flexshaft.parallel.point_label import labelled
 from flexshaft.plot.response import bode_figure, orbit_figure
 from flexshaft.units import rad_s_to_rpm
 
@@ -144,8 +145,10 @@ class HarmonicResponse(np.ndarray, ResultMixin):
             node = dm.node_at("shaft", float(x))
             if abs(dm.shaft_x[node] - x) > 1e-9 * max(hi - lo, 1.0):
                 warnings.warn(
-                    f"station {x:g} m is not a shaft node: shown at the nearest node, x = {dm.shaft_x[node]:g} m "
-                    "(the response is computed at the nodes; mesh.shaft_elements sets them)",
+                    labelled(
+                        f"station {x:g} m is not a shaft node: shown at the nearest node, x = {dm.shaft_x[node]:g} m "
+                        "(the response is computed at the nodes; mesh.shaft_elements sets them)"
+                    ),
                     StationWarning,
                     stacklevel=4,
                 )

@@ -53,6 +53,7 @@ import numpy as np
 from flexshaft.assembly.drive import drive_extra_dofs
 from flexshaft.assembly.mesh import design_mesh, merge_stations, merge_tolerance
 from flexshaft.design import DesignError, Problem
+from flexshaft.parallel.point_label import labelled
 from flexshaft.resolution import FINE, REPORT, Resolution
 
 __all__ = [
@@ -476,7 +477,7 @@ def check_problem_size(
     if notes:
         advice = "; ".join(f"{path}: {text}" for path, text in _what_to_change(size, design))
         warnings.warn(
-            f"{size.summary()}; the analysis {' and '.join(notes)}. To reduce it: {advice}",
+            labelled(f"{size.summary()}; the analysis {' and '.join(notes)}. To reduce it: {advice}"),
             ProblemSizeWarning,
             stacklevel=stacklevel,
         )

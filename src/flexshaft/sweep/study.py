@@ -16,7 +16,6 @@ import hashlib
 import json
 import math
 import pickle
-import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -25,6 +24,7 @@ import numpy as np
 
 from flexshaft.assembly import build_model
 from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.parallel.point_label import at_point
 from flexshaft.parallel.threads import one_blas_thread
 
 __all__ = ["DesignModel", "Output", "Point", "Study", "SweepError", "SweepWarning", "Variable"]
@@ -335,10 +335,9 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     """Outputs of grid points ``start..stop-1``: float64 (stop − start, n_outputs).
 
     Runs with one BLAS thread; the model is built once per distinct design (consecutive
-    points differing only in special axes share it). A warning an evaluation raises (a
-    response near an undamped resonance, a problem size) is raised again naming its point
-    (:func:`_warn_at_point`): in a sweep of hundreds of designs, a warning without its design
-    cannot be acted on.
+    points differing only in special axes share it). flexshaft's warnings raised while a point
+    is evaluated (a response near an undamped resonance, a problem size) name the point
+    (:mod:`flexshaft.parallel.point_label`, :func:`_point_label`).
     """
 
     names = [o.name for o in study.outputs]
@@ -359,14 +358,12 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
                 shared=shared,
             )
             try:
-                with warnings.catch_warnings(record=True) as caught:
+                with at_point(_point_label(study, values)):
                     result = study.evaluate(point)
             except Exception:
                 if on_error == "nan":
                     continue
                 raise
-            finally:
-                _warn_at_point(study, values, caught)
             missing = [n for n in names if n not in result]
             extra = [n for n in result if n not in names]
             if missing or extra:
@@ -378,16 +375,8 @@ def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise")
     return out
 
 
-def _warn_at_point(study: Study, values: Mapping[str, Any], caught: Sequence[warnings.WarningMessage]) -> None:
-    """Raise each warning of ``caught`` again, of its own category, its message prefixed with
-    the point it came from: the variables that take more than one value in ``study`` (all of
-    them if none does), ``name = value``; an optimizer's candidate is its JSON overrides."""
-    if not caught:
-        return
+def _point_label(study: Study, values: Mapping[str, Any]) -> str:
+    """A point as its warnings name it: ``name = value`` of the variables that take more than one
+    value in ``study`` (all of them if none does); an optimizer's candidate is its JSON overrides."""
     varying = [v.name for v in study.variables if len(v.values) > 1] or [v.name for v in study.variables]
-    shown = ", ".join(f"{name} = {values[name]}" for name in varying)
-    for record in caught:
-        category = record.category
-        warnings.warn_explicit(
-            category(f"at {shown}: {record.message}"), category, record.filename, record.lineno, source=record.source
-        )
+    return ", ".join(f"{name} = {values[name]}" for name in varying)
