@@ -28,16 +28,18 @@ distance |s₊ − s₋| ≈ 107 rad/s. For 247.4 < Ω < 264.7 both are eigenval
 unstable (a fold keeps its less stable root); below 247.4 only s₊ is, and every other root is
 stable (asserted): the whirl onset is Ω* = Im s₋ exactly, where s₋ turns consistent. A
 continuation arriving from below on s₊ that kept it without solving the σ = −1 side once s₊ lay
-more than a tenth of that distance above the line would miss s₋ for 247.4 < Ω < 264.7 − 11 and
-report the onset late (measured: 253.2 rad/s instead of 247.37). (A mode with a root on its own
+more than a tenth of its distance above the line (the code's first-order estimate of the
+distance, about 93 rad/s here) would miss s₋ for 247.4 < Ω < 264.7 − 9.3 and report the onset
+late (measured by an independent review: 255.4 rad/s with the single step's factor changed to a
+tenth, 250.0 with the batched step's, instead of 247.37). (A mode with a root on its own
 side has no on-line root in R(Ω): the quartic with −1 ≤ μ < −0.83 has roots with Re s > 0 down
 to Im s = 246.0, which that convention does not count.)
 
 Tolerances: the quartics' roots by numpy.roots are exact to round-off (about 1e-12 relative); the
 tube's mass (3.5e-5 kg against 70 kg of disks) moves the model's roots by about 1e-6 relative
 (measured 8e-8 at the onset) and the onset refinement stops within 1e-7 of the speed: the onset is
-checked to 1e-5 relative (2.5e-3 rad/s, 2000 times below the 6 rad/s a late fold acceptance
-makes), each damping ratio to 1e-5 absolute (the roots agree to 1e-6 relative; the on-line
+checked to 1e-5 relative (2.5e-3 rad/s, over 1000 times below the 2.6-8 rad/s a late fold
+acceptance makes), each damping ratio to 1e-5 absolute (the roots agree to 1e-6 relative; the on-line
 root's frequency is held to the synchronous band, 1e-9 relative, its real part to that times
 |dRe s/dIm s| along μ, about 0.3 at 150 rad/s). One 4-mode stability run on an 8-vector basis,
 about 0.25 s of CPU.
