@@ -53,7 +53,9 @@ def test_the_negative_senses_mode_numbers_are_the_mirror_laminates_positive_ones
     the +30° tube buckle in different helices (n = 3 and 2, m = 2 and 1), so a negative sense
     that repeats the positive sense's numbers is seen. Integers: compared exactly. Written for
     h41b-torque-half-waves-negative-from-positive (one classical search per laminate, 0.05 s)."""
-    plus = torsional_buckling_torque(Laminate.from_layup("(30/30/30/30)s", WALL, CARBON), RADIUS, LENGTH, theory="classical")
+    plus = torsional_buckling_torque(
+        Laminate.from_layup("(30/30/30/30)s", WALL, CARBON), RADIUS, LENGTH, theory="classical"
+    )
     mirror = torsional_buckling_torque(
         Laminate.from_layup("(-30/-30/-30/-30)s", WALL, CARBON), RADIUS, LENGTH, theory="classical"
     )

@@ -111,8 +111,7 @@ def test_headline_quietest_wall_is_a_thickness_and_its_peak_an_orbit():
     2e-3 m and 1e-3 m (h41b-studies-quietest-wall-is-peak)."""
     walls = np.array([1e-3, 2e-3, 3e-3])
     wall = xr.Dataset(
-        {"spinup_peak_deflection": ("wall_thickness", np.array([5e-3, 1e-3, 4e-3]))},
-        coords={"wall_thickness": walls},
+        {"spinup_peak_deflection": ("wall_thickness", np.array([5e-3, 1e-3, 4e-3]))}, coords={"wall_thickness": walls}
     )
     out = headline(DesignStudies(design_name="d", resolution="report", operating_speed=300.0, wall=wall))
     assert out["quietest_spinup_wall_m"] == 2e-3

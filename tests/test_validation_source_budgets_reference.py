@@ -33,7 +33,9 @@ only says the page is current, not that a number was typed right. These tests re
   d ln Nu/d ln Re and d ln Nu/d ln Pr (central differences here): 2.7e-4; tolerance in
   [budget, 2 budget].
 * ``runner.significant``: n significant figures are the n digits from the first non-zero one
-  (716.789 → 716.79 at five; 11338.4 → 11338; 0.0123456 → 0.012346), as its docstring shows.
+  (716.789 → 716.79 at five; 11338.4 → 11338; 0.0123456 → 0.012346), as its docstring shows;
+  ``runner.percent``: "a relative difference in percent to 0.001 %": 2e-5 is +0.002 %, −1.2e-4
+  −0.012 %, and only what rounds to 0.000 % (below 5e-6) is shown as "< 0.001 %".
 
 No model is computed (one 5 × 5 eigen-solve): milliseconds of CPU.
 """
@@ -47,7 +49,7 @@ import pytest
 import scipy.linalg
 
 from flexshaft.validation.cases import case_by_id
-from flexshaft.validation.runner import significant
+from flexshaft.validation.runner import percent, significant
 
 OPENTORSION_EX971 = (0.0, 81.21, 141.21, 378.95, 536.36)
 CHAIN_INERTIAS = (3.5e-3, 3.5e-3, 3.5e-3, 0.15, 0.05)  # [kg m²]
@@ -131,3 +133,10 @@ def test_the_cengel_7_53_tolerance_is_its_printed_figures():
 )
 def test_five_significant_figures(value, text):
     assert significant(value, 5) == text
+
+
+@pytest.mark.parametrize(
+    ("difference", "text"), [(2e-5, "+0.002 %"), (-1.2e-4, "-0.012 %"), (6e-6, "+0.001 %"), (4e-6, "< 0.001 %")]
+)
+def test_differences_in_percent_to_a_thousandth(difference, text):
+    assert percent(difference) == text
