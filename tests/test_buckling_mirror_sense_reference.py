@@ -44,3 +44,21 @@ def test_the_weaker_global_sense_is_the_mirror_laminates_positive_sense(theory):
     torque = 100.0  # [N m], either sense
     assert buckling_safety_factor(plus, -torque, signed=True) == pytest.approx(negative / torque, rel=1e-9)
     assert buckling_safety_factor(plus, torque) == pytest.approx(weaker / torque, rel=1e-9)
+
+
+def test_the_negative_senses_mode_numbers_are_the_mirror_laminates_positive_ones():
+    """By the same reflection, the negative sense's critical mode of the +30° tube is the
+    positive sense's mode of the −30° tube: the same circumferential wave number n and axial
+    half-wave count m (the index of the largest sine term of w). At L = 1 m the two senses of
+    the +30° tube buckle in different helices (n = 3 and 2, m = 2 and 1), so a negative sense
+    that repeats the positive sense's numbers is seen. Integers: compared exactly. Written for
+    h41b-torque-half-waves-negative-from-positive (one classical search per laminate, 0.05 s)."""
+    plus = torsional_buckling_torque(
+        Laminate.from_layup("(30/30/30/30)s", WALL, CARBON), RADIUS, LENGTH, theory="classical"
+    )
+    mirror = torsional_buckling_torque(
+        Laminate.from_layup("(-30/-30/-30/-30)s", WALL, CARBON), RADIUS, LENGTH, theory="classical"
+    )
+    assert (plus.n_negative, plus.axial_half_waves_negative) == (mirror.n_positive, mirror.axial_half_waves_positive)
+    assert (plus.n_positive, plus.axial_half_waves_positive) == (mirror.n_negative, mirror.axial_half_waves_negative)
+    assert (plus.n_positive, plus.axial_half_waves_positive) != (plus.n_negative, plus.axial_half_waves_negative)

@@ -22,6 +22,7 @@ import re
 from pathlib import Path
 
 import numpy as np
+import xarray as xr
 
 from flexshaft.thesis.design_studies import STUDY_GRIDS, THESIS, DesignStudies, headline
 
@@ -67,6 +68,10 @@ def test_full_grids_are_those_the_docs_state():
     grid = STUDY_GRIDS["full"]
     step = float(_find(r"α every ([\d.]+)°", row))
     np.testing.assert_allclose(np.diff(grid["angles"]), step, rtol=1e-12)
+    # the whole quadrant, both ends: a ±α pair at α and at 180° − α is the same laminate, so
+    # α in [0°, 90°] holds every balanced pair once, at the two-angle grid's ends 0 and 90
+    # (h41b-studies-full-angles-without-90)
+    assert grid["angles"][[0, -1]].tolist() == [0.0, 90.0] and grid["angles"].size == round(90.0 / step) + 1
     n_two = int(_find(r"(\d+) × \d+ two-angle", row))
     assert grid["two_angles"].size == n_two and grid["two_angles"][[0, -1]].tolist() == [0.0, 90.0]
     assert grid["walls"].size == int(_find(r"(\d+) walls", row))
@@ -79,3 +84,35 @@ def test_headline_peaks_are_before_and_after_tuning():
     out = headline(r)
     assert out["peak_deflection_before_m"] == 0.038
     assert out["peak_deflection_after_m"] == 0.004
+
+
+def test_headline_reads_the_thesis_layups_at_their_own_angles():
+    """The headline's ``ply_angle_safety_factor_at_55_deg`` is the ply-angle study's value at
+    α = 55° (the thesis's ±55°), and ``two_angle_safety_factor_at_55_0`` the two-angle map's
+    at (α, β) = (55°, 0°), the thesis's (55/−55/0/0)s. Hand-built studies whose safety factor
+    is a different number at every grid point, R(α) = α/10 and R(α, β) = α + β/100, so that
+    55° reads 5.5 and (55°, 0°) reads 55.0 exactly (h41b-studies-sf-at-45-not-55,
+    h41b-studies-two-angle-at-55-55)."""
+    angles = np.array([0.0, 15.0, 30.0, 45.0, 55.0, 60.0, 75.0, 90.0])
+    ply = xr.Dataset({"safety_factor": ("alpha", angles / 10.0)}, coords={"alpha": angles})
+    pair = xr.Dataset(
+        {"safety_factor": (("alpha", "beta"), angles[:, None] + angles[None, :] / 100.0)},
+        coords={"alpha": angles, "beta": angles},
+    )
+    r = DesignStudies(design_name="d", resolution="report", operating_speed=300.0, ply_angle=ply, two_angle=pair)
+    out = headline(r)
+    assert out["ply_angle_safety_factor_at_55_deg"] == 5.5
+    assert out["two_angle_safety_factor_at_55_0"] == 55.0
+
+
+def test_headline_quietest_wall_is_a_thickness_and_its_peak_an_orbit():
+    """``quietest_spinup_wall_m`` is the wall [m] of the smallest spin-up peak and
+    ``quietest_spinup_peak_m`` that peak [m]: walls 1, 2, 3 mm with peaks 5, 1, 4 mm give
+    2e-3 m and 1e-3 m (h41b-studies-quietest-wall-is-peak)."""
+    walls = np.array([1e-3, 2e-3, 3e-3])
+    wall = xr.Dataset(
+        {"spinup_peak_deflection": ("wall_thickness", np.array([5e-3, 1e-3, 4e-3]))}, coords={"wall_thickness": walls}
+    )
+    out = headline(DesignStudies(design_name="d", resolution="report", operating_speed=300.0, wall=wall))
+    assert out["quietest_spinup_wall_m"] == 2e-3
+    assert out["quietest_spinup_peak_m"] == 1e-3

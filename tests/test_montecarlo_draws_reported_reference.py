@@ -55,3 +55,11 @@ def test_each_bay_reports_its_own_draws(run):
             assert ds[f"position_bay{b + 1}"].values[k] == pytest.approx(draws.position[0, b], rel=1e-15)
             assert 0.0 <= ds[f"eccentricity_bay{b + 1}"].values[k] <= dist.scale
         assert ds["eccentricity_bay1"].values[k] != ds["eccentricity_bay2"].values[k]
+
+
+def test_the_scale_is_recorded_in_metres(run):
+    """The dataset's ``eccentricity_scale_m`` is e_per = G/Ω_max in metres (ISO 21940-11 §5.3):
+    G 6.3 mm/s at 6000 rev/min (no speed range: Ω_max = 6000 · 2π/60 = 628.32 rad/s) is
+    6.3e-3 / 628.32 = 10.03 µm. Written for h41b-mc-scale-attribute-in-mm."""
+    _, result = run
+    assert result.dataset.attrs["eccentricity_scale_m"] == pytest.approx(6.3e-3 / (6000.0 * np.pi / 30.0), rel=1e-12)

@@ -1,0 +1,142 @@
+"""More validation cases held to their sources' text and to budgets derived by hand
+(flexshaft.validation.cases, cases_vm, runner; mutation hunt h41b).
+
+``tests/test_validation.py`` compares docs/validation.md with the table the cases produce, which
+only says the page is current, not that a number was typed right. These tests read the sources:
+
+* openTorsion (Aalto-Arotor/openTorsion, ``tests/tests.py``, ``test_friswell_ex971``, read at
+  commit 51287074, the commit the case cites): ``correct = [0, 81.21, 141.21, 378.95, 536.36]``
+  for ``Ip1to3 = 3.5e-3``, ``Ip4 = 0.15``, ``Ip5 = 0.05``, ``k1 = k2 = 12e3``, ``k3 = 14e3``,
+  ``k4 = 10e3``. Independently, the free-free chain K θ = ω² J θ of those five inertias and four
+  springs, solved here with a dense symmetric eigen-solver, gives 81.2076, 141.2141, 378.9530
+  and 536.3633 Hz, which round to the printed values.
+  Tolerance budget: the printing, half of 0.01 Hz over 81.21 Hz = 6.2e-5, plus what the design
+  file's links (shaft pieces standing for massless rigid links) take: each 1 m piece of
+  D = 0.05 m (bore 2e-7 m: J = π D⁴/32 = 6.136e-7 m⁴), G = 4e14 Pa, ρ = 1 kg/m³ has a twist
+  stiffness G J/L = 2.45e8 N m/rad, 14e3/2.45e8 = 5.7e-5 of the stiffest spring's compliance,
+  and a polar inertia ρ J L = 6.1e-7 kg m², 1.75e-4 of the smallest disk's; a frequency
+  ω ∝ sqrt(k/J) moves by at most half their sum, 1.16e-4. Budget 1.78e-4; the case's
+  tolerance must lie in [budget, 2 budget], as in test_validation_published_values_reference.
+* ANSYS VM263 (ansys/pymapdl, ``src/ansys/mapdl/core/examples/verif/vm263.dat``, read at commit
+  29270f14): ``*VFILL,VALUE(1..6,1),DATA,7929 / 8350 / 23760 / 24602 / 34820 / 42776 !
+  CRITICAL SPEED VALUE OBTAINED FROM REFERENCE/2``.
+* ANSYS VM261 (same folder, ``vm261.dat``, read at commit 1c24d5ca): ``E = 2.1E+11``,
+  ``DENS = 7800``, ``VALUE(1,1) 4950`` and ``VALUE(2,1) 10500`` rev/min. Budget of the
+  Zorzi-Nelson cases as their basis states it: E to two figures, ±0.05e11/2.1e11 = 2.38 %,
+  is ±1.19 % in a frequency ∝ sqrt(E/ρ); ρ to three figures, ±5/7800 = 0.064 %, is ±0.032 %;
+  4950 to three figures ±0.101 %: 1.32 % in all, tolerance in [budget, 2 budget].
+* Çengel's Problem 7-53 (the case quotes Re = 1.632 × 10⁴, Pr = 0.7255, Nu = 71.19, Churchill-
+  Bernstein). The correlation, typed from Churchill & Bernstein (1977) as Incropera's eq. 7.54
+  gives it, Nu = 0.3 + 0.62 Re^½ Pr^⅓ [1 + (0.4/Pr)^⅔]^−¼ [1 + (Re/282 000)^⅝]^⅘, gives 71.186
+  there (rounds to 71.19). Budget from the printed figures, as the case's basis states it:
+  Nu ±0.005/71.19 = 7.0e-5, plus Re ±5 and Pr ±5e-5 through the correlation's slopes
+  d ln Nu/d ln Re and d ln Nu/d ln Pr (central differences here): 2.7e-4; tolerance in
+  [budget, 2 budget].
+* ``runner.significant``: n significant figures are the n digits from the first non-zero one
+  (716.789 → 716.79 at five; 11338.4 → 11338; 0.0123456 → 0.012346), as its docstring shows;
+  ``runner.percent``: "a relative difference in percent to 0.001 %": 2e-5 is +0.002 %, −1.2e-4
+  −0.012 %, and only what rounds to 0.000 % (below 5e-6) is shown as "< 0.001 %".
+
+No model is computed (one 5 × 5 eigen-solve): milliseconds of CPU.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import scipy.linalg
+
+from flexshaft.validation.cases import case_by_id
+from flexshaft.validation.runner import percent, significant
+
+OPENTORSION_EX971 = (0.0, 81.21, 141.21, 378.95, 536.36)
+CHAIN_INERTIAS = (3.5e-3, 3.5e-3, 3.5e-3, 0.15, 0.05)  # [kg m²]
+CHAIN_SPRINGS = (12e3, 12e3, 14e3, 10e3)  # [N m/rad]
+VM263_SLOPE_2 = (7929.0, 8350.0, 23760.0, 24602.0, 34820.0, 42776.0)
+VM261_CRITICAL = (4950.0, 10500.0)
+
+
+def _chain_frequencies_hz() -> np.ndarray:
+    stiffness = np.zeros((5, 5))
+    for i, k in enumerate(CHAIN_SPRINGS):
+        stiffness[i : i + 2, i : i + 2] += k * np.array([[1.0, -1.0], [-1.0, 1.0]])
+    squared = scipy.linalg.eigh(stiffness, np.diag(CHAIN_INERTIAS), eigvals_only=True)
+    return np.sqrt(np.clip(squared, 0.0, None)) / (2.0 * math.pi)
+
+
+def test_the_torsion_chain_values_are_opentorsions_and_the_chains():
+    case = case_by_id("friswell-9.7.1-torsion")
+    assert case.published == OPENTORSION_EX971[1:]
+    # the chain itself, solved here: each printed value is its frequency rounded to 0.01 Hz
+    np.testing.assert_allclose(_chain_frequencies_hz()[1:], OPENTORSION_EX971[1:], rtol=0, atol=0.005)
+
+
+def test_the_torsion_chain_tolerance_is_its_printing_and_links():
+    printing = 0.005 / 81.21
+    polar = math.pi * 0.05**4 / 32.0  # [m^4], the bore of 2e-7 m is negligible
+    compliance_ratio = max(CHAIN_SPRINGS) / (4e14 * polar / 1.0)
+    inertia_ratio = 1.0 * polar * 1.0 / min(CHAIN_INERTIAS)
+    links = (compliance_ratio + inertia_ratio) / 2.0
+    assert links == pytest.approx(1.16e-4, rel=0.01)
+    budget = printing + links
+    tolerance = case_by_id("friswell-9.7.1-torsion").tolerance
+    assert budget <= tolerance <= 2.0 * budget, (budget, tolerance)
+
+
+def test_the_half_harmonic_values_are_vm263s():
+    assert case_by_id("nelson-mcvaugh-1976-half").published == VM263_SLOPE_2
+
+
+@pytest.mark.parametrize("case_id", ["zorzi-nelson-1976-critical", "zorzi-nelson-1976-onset"])
+def test_the_zorzi_nelson_tolerance_is_its_rounded_inputs(case_id):
+    modulus = 0.05e11 / 2.1e11 / 2.0  # half the relative rounding of E, in a frequency
+    density = 5.0 / 7800.0 / 2.0
+    printed = 5.0 / 4950.0
+    budget = modulus + density + printed
+    assert budget == pytest.approx(1.32e-2, rel=0.01)
+    case = case_by_id(case_id)
+    assert case.published == VM261_CRITICAL[: len(case.published)]
+    assert budget <= case.tolerance <= 2.0 * budget, (budget, case.tolerance)
+
+
+def _churchill_bernstein(reynolds: float, prandtl: float) -> float:
+    return 0.3 + (
+        0.62
+        * reynolds**0.5
+        * prandtl ** (1.0 / 3.0)
+        / (1.0 + (0.4 / prandtl) ** (2.0 / 3.0)) ** 0.25
+        * (1.0 + (reynolds / 282000.0) ** (5.0 / 8.0)) ** 0.8
+    )
+
+
+def test_the_cengel_7_53_tolerance_is_its_printed_figures():
+    case = case_by_id("cengel-7-53-crossflow")
+    re_, pr = case.arguments["reynolds"], case.arguments["prandtl"]
+    assert (re_, pr, case.published) == (1.632e4, 0.7255, (71.19,))
+    assert round(_churchill_bernstein(re_, pr), 2) == 71.19
+
+    def slope(f, x, h=1e-4):  # d ln Nu / d ln x, central difference
+        return (math.log(f(x * (1 + h))) - math.log(f(x * (1 - h)))) / (2 * h)
+
+    d_re = slope(lambda r: _churchill_bernstein(r, pr), re_)
+    d_pr = slope(lambda p: _churchill_bernstein(re_, p), pr)
+    assert d_re == pytest.approx(0.57, abs=0.01)
+    budget = 0.005 / 71.19 + d_re * 5.0 / re_ + d_pr * 5e-5 / pr
+    assert budget == pytest.approx(2.7e-4, rel=0.03)
+    assert budget <= case.tolerance <= 2.0 * budget, (budget, case.tolerance)
+
+
+@pytest.mark.parametrize(
+    ("value", "text"), [(716.789, "716.79"), (11338.4, "11338"), (0.0123456, "0.012346"), (86.6612, "86.661")]
+)
+def test_five_significant_figures(value, text):
+    assert significant(value, 5) == text
+
+
+@pytest.mark.parametrize(
+    ("difference", "text"), [(2e-5, "+0.002 %"), (-1.2e-4, "-0.012 %"), (6e-6, "+0.001 %"), (4e-6, "< 0.001 %")]
+)
+def test_differences_in_percent_to_a_thousandth(difference, text):
+    assert percent(difference) == text
