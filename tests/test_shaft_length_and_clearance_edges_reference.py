@@ -3,10 +3,10 @@
 References (the documented limits, each with its physical content):
 
 * ``MIN_SHAFT_LENGTH`` (:mod:`flexshaft.design.quantities`, docs/limits.md): "Shortest shaft
-  x_end − x_start [m]" is 1 mm, *at least* that length being allowed (the message says
-  "allowed: at least 1 m"…). A shaft of exactly 1e-3 m (binary-inexact but the same double on
-  both sides of the comparison: 0.001 − 0 is 0.001 exactly) and one of 0.5 m are accepted; one
-  of 0.9 mm is refused.
+  x_end − x_start [m]" is 1 mm, *at least* that length being allowed (the refusal says
+  "allowed: at least 0.001 m"). A shaft of exactly 1e-3 m (binary-inexact, but the same double
+  on both sides of the comparison: 0.001 − 0 is 0.001 exactly) and one of 0.5 m are accepted;
+  one of 0.9 mm is refused.
 * Segments tile the shaft "without gap or overlap" (:class:`~flexshaft.design.components.Shaft`):
   the tolerance is round-off, 1e-9 of the length. A 0.5 mm gap between two zones of a 2 m
   shaft is 2.5e-4 of it, a real gap: refused, as is a last zone 0.5 mm short.
