@@ -45,6 +45,9 @@ only says the page is current, not that a number was typed right. These tests re
   [budget, 2 budget].
 * ``runner.significant``: n significant figures are the n digits from the first non-zero one
   (716.789 → 716.79 at five; 11338.4 → 11338; 0.0123456 → 0.012346), as its docstring shows;
+  above five digits the rest are zeros (123456.7 → 123460, not the six-figure 123457), and a
+  rounding that carries into a new leading digit keeps five (9.99997 → 10.000, not 10.0000;
+  99999.7 → 100000, i.e. 1.0000e5, the only plain-notation form);
   ``runner.percent``: "a relative difference in percent to 0.001 %": 2e-5 is +0.002 %, −1.2e-4
   −0.012 %, and only what rounds to 0.000 % (below 5e-6) is shown as "< 0.001 %".
 
@@ -176,7 +179,16 @@ def test_the_cengel_7_53_tolerance_is_its_printed_figures():
 
 
 @pytest.mark.parametrize(
-    ("value", "text"), [(716.789, "716.79"), (11338.4, "11338"), (0.0123456, "0.012346"), (86.6612, "86.661")]
+    ("value", "text"),
+    [
+        (716.789, "716.79"),
+        (11338.4, "11338"),
+        (0.0123456, "0.012346"),
+        (86.6612, "86.661"),
+        (123456.7, "123460"),
+        (99999.7, "100000"),
+        (9.99997, "10.000"),
+    ],
 )
 def test_five_significant_figures(value, text):
     assert significant(value, 5) == text
