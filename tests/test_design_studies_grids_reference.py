@@ -5,7 +5,10 @@ References:
 
 * docs/studies.md, "Time" table, read here from the file: ``report``: "α every 2.5°; 8 × 8
   two-angle (0, 15, 30, 45, 55, 60, 75, 90); 9 walls 1–6 mm; 13 K_p"; ``full``: "α every 1°;
-  19 × 19 two-angle; 23 walls; 31 K_p". The K_p grids span 1e5 to 1e8 N/m (study 4's default,
+  from 0° to 90°, both ends included; 19 × 19 two-angle, 0° to 90° every 5°; 23 walls; 31 K_p"
+  (the full grid's contract: the whole quadrant; a ±α pair at 180° − α is the mirror laminate
+  of the pair at α, its coupling terms of opposite sign and its torque senses swapped, which
+  the studies' outputs do not tell apart). The K_p grids span 1e5 to 1e8 N/m (study 4's default,
   :func:`~flexshaft.thesis.gain.proportional_gain_study`) even in log10: 13 gains are 4 per
   decade, K_p,i = 10^(5 + i/4); the report's two-angle grid holds the thesis's optimum
   (module constant ``THESIS["best_two_angle_deg"]``, 55° and 0°);
@@ -68,12 +71,16 @@ def test_full_grids_are_those_the_docs_state():
     grid = STUDY_GRIDS["full"]
     step = float(_find(r"α every ([\d.]+)°", row))
     np.testing.assert_allclose(np.diff(grid["angles"]), step, rtol=1e-12)
-    # the whole quadrant, both ends: a ±α pair at α and at 180° − α is the same laminate, so
-    # α in [0°, 90°] holds every balanced pair once, at the two-angle grid's ends 0 and 90
-    # (h41b-studies-full-angles-without-90)
-    assert grid["angles"][[0, -1]].tolist() == [0.0, 90.0] and grid["angles"].size == round(90.0 / step) + 1
+    # the whole quadrant, both ends, as the row states (h41b-studies-full-angles-without-90)
+    stated = re.search(r"α every [\d.]+° from (\d+)° to (\d+)°, both ends included", row)
+    assert stated, row
+    ends = [float(a) for a in stated.groups()]
+    assert ends == [0.0, 90.0]
+    assert grid["angles"][[0, -1]].tolist() == ends and grid["angles"].size == round(90.0 / step) + 1
     n_two = int(_find(r"(\d+) × \d+ two-angle", row))
-    assert grid["two_angles"].size == n_two and grid["two_angles"][[0, -1]].tolist() == [0.0, 90.0]
+    two_step = float(_find(r"two-angle, 0° to 90° every (\d+)°", row))
+    assert grid["two_angles"].size == n_two == round(90.0 / two_step) + 1
+    np.testing.assert_allclose(grid["two_angles"], np.arange(n_two) * two_step, rtol=0, atol=1e-12)
     assert grid["walls"].size == int(_find(r"(\d+) walls", row))
     n_kp = int(_find(r"(\d+) K_p", row))
     np.testing.assert_allclose(grid["kp"], 10.0 ** (5 + 3 * np.arange(n_kp) / (n_kp - 1)), rtol=1e-12)

@@ -2,11 +2,14 @@
 
 * ``[materials.<name>.temperature_table]``: every column "2 to 100 items", and "every column
   has one value per temperature". A DMA sweep every 5 K from −100 to +200 °C has
-  (200 − (−100))/5 + 1 = 61 rows and must be accepted; one row (no variation to interpolate),
-  101 rows, and a column longer than ``temperature_c`` are refused.
-* ``[[couplings]] torsional_stiffness``: "greater than 0", at most 1e12 N m/rad like every
-  coupling stiffness (the schema's description: "above 0 and at most 1e12 N m/rad"): 1e12 is
-  accepted, 1e10 too (a stiff disc pack), 0 refused.
+  (200 − (−100))/5 + 1 = 61 rows and must be accepted; one row (no variation to interpolate)
+  and 101 rows are refused as too short and too long, and a column longer than
+  ``temperature_c`` is refused.
+* ``[[couplings]] torsional_stiffness``: docs/design.schema.json, the field's numeric branch,
+  "torsional stiffness above 0 and at most 1e12 N m/rad (it carries the torque)" (its
+  ``exclusiveMinimum`` 0 and ``maximum`` 1e12; the row of docs/design-reference.md shows no
+  range, as the reference renders none for a number-or-"rigid" field): 1e12 is accepted, 1e10
+  too (a stiff disc pack), 0 and 1.0000001e12 refused by those two bounds.
 * "floats are strict (``"3"`` and ``true`` are refused; integers are accepted)" (the
   reference's preamble), on the ``Finite`` field type every finite float key uses.
 
@@ -47,10 +50,11 @@ def test_two_to_a_hundred_rows_are_accepted(rows):
     assert len(_table(np.linspace(-50.0, 150.0, rows)).temperature_c) == rows
 
 
-@pytest.mark.parametrize("rows", [1, 101])
-def test_one_or_101_rows_are_refused(rows):
-    with pytest.raises(pydantic.ValidationError):
+@pytest.mark.parametrize(("rows", "error"), [(1, "too_short"), (101, "too_long")])
+def test_one_or_101_rows_are_refused(rows, error):
+    with pytest.raises(pydantic.ValidationError) as refused:
         _table(np.linspace(-50.0, 150.0, rows))
+    assert {e["loc"][0] for e in refused.value.errors() if e["type"] == error} >= {"temperature_c"}
 
 
 def test_a_column_longer_than_the_temperatures_is_refused():
@@ -67,10 +71,12 @@ def test_a_stiff_torsional_coupling_up_to_1e12_is_accepted(torsional):
     assert _coupling(torsional).torsional_stiffness == torsional
 
 
-@pytest.mark.parametrize("torsional", [0.0, 1.0000001e12])
-def test_torsional_stiffness_outside_0_1e12_is_refused(torsional):
-    with pytest.raises(pydantic.ValidationError):
+@pytest.mark.parametrize(("torsional", "error"), [(0.0, "greater_than"), (1.0000001e12, "less_than_equal")])
+def test_torsional_stiffness_outside_0_1e12_is_refused(torsional, error):
+    with pytest.raises(pydantic.ValidationError) as refused:
         _coupling(torsional)
+    numeric = [e for e in refused.value.errors() if e["loc"][-1] != "literal['rigid']"]
+    assert [(e["loc"][0], e["type"]) for e in numeric] == [("torsional_stiffness", error)]
 
 
 @pytest.mark.parametrize("value", ["3", True])

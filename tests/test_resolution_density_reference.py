@@ -1,15 +1,19 @@
 """The resolution presets' grid densities as documented, and the smallest grid (hunt h41a).
 
-References (:mod:`flexshaft.resolution`'s docstring, the contract of ``flexshaft run`` and of
-the optimizer; the spin-up peak is refined between samples, so the spacing bounds what the
-refinement must bridge):
+A documented contract, not a derivation: the densities are restated from
+:mod:`flexshaft.resolution`'s docstring and from where users read them, docs/optimizer.md:128-129
+(the fidelity table: "651 speeds (0.2 % of Ω_op apart)", "261 speeds (0.5 %)") and
+docs/architecture.md:63-69 (``FINE``: "twice the report's density, to check convergence"). The
+spin-up peak is refined between samples, so the spacing bounds what the refinement must bridge.
 
 * SCREENING: "261 spin speeds (0.5 % of the operating speed apart)"; REPORT: "651 spin speeds
   (0.2 % apart)". The scan runs from 0.02 to 1.30 Ω_op, so the spacing is 1.28/260 = 0.49 %
   and 1.28/650 = 0.197 % of Ω_op: at most the documented figure.
 * FINE: "twice the report's density, to check that its numbers have converged": the spin-up
   and the whirl-stability spacings are exactly half the report's (1300 = 2 · 650 and
-  80 = 2 · 40 intervals over the same ranges); 1e-12 relative (linspace round-off).
+  80 = 2 · 40 intervals over the same ranges); 1e-12 relative (linspace round-off). Not
+  checked here: FINE's Campbell grid has 120 speeds against the report's 60, 119 against 59
+  intervals, 2.02 times as dense rather than exactly twice.
 * A grid needs two points: ``linspace(a, b, 1)`` is ``[a]`` alone (no range, no refinement
   between samples) and one mode tracks nothing to compare; 2 is the smallest count accepted.
 

@@ -1,9 +1,9 @@
 """Result tables' integer cells and the netCDF file name (flexshaft.analyses.results; mutation
 hunt h41b).
 
-* ``cell_text``: "a number with ``digits`` significant figures (``g`` format)" is for floats;
-  an integer (a node number, a count, a 12345 rev/min speed given as an int) is shown whole,
-  so 12345 stays "12345", not the four-figure "1.234e+04".
+* ``cell_text``, its docstring: "a float with ``digits`` significant figures (``g`` format), an
+  integer (Python or NumPy) whole (12345 stays "12345")": a node number, a count, a 12345
+  rev/min speed given as an int is not the four-figure "1.234e+04".
 * ``netcdf_path``: "``path`` with ``.nc`` added when it has no suffix (``"campbell"`` →
   ``campbell.nc``)": a path that has a suffix is kept, so ``save("modes.nc")`` writes
   ``modes.nc``, not ``modes.nc.nc``.

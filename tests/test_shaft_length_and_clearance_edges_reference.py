@@ -13,8 +13,8 @@ References (the documented limits, each with its physical content):
 * The boom's clearance (:mod:`flexshaft.design.quantities`): "distance between the shaft and
   boom axes from 0 to 10 m". Zero is a shaft axis on the boom's top surface: the offset h of
   :meth:`~flexshaft.design.components.Tailboom.shaft_offset_at` is then the vertical semi-axis
-  alone, a(x) = a_root + (x/L)(a_tip − a_root) by hand (exact binary numbers: 0.4 → 0.1 over
-  6 m at x = 3 m is 0.25 m).
+  alone, a(x) = a_root + (x/L)(a_tip − a_root) by hand, in numbers exact in binary so that
+  every step of it is exact: 0.5 → 0.125 over 6 m at x = 3 m is 0.5 + 0.5 · (−0.375) = 0.3125 m.
 
 Exact comparisons; no model is solved (validation only), well under 10 ms.
 Written for h41a-comp-min-length-exclusive, h41a-q-min-shaft-length-metre,
@@ -79,11 +79,11 @@ def test_a_last_segment_half_a_millimetre_short_is_refused():
 def test_a_shaft_on_the_booms_top_has_the_vertical_semi_axis_as_offset():
     boom = Tailboom(
         length=6.0,
-        root_semi_axes=(0.4, 0.3),
-        tip_semi_axes=(0.1, 0.06),
+        root_semi_axes=(0.5, 0.25),
+        tip_semi_axes=(0.125, 0.0625),
         wall_thickness=0.002,
         material="al",
         shaft_clearance=0.0,
     )
-    assert boom.shaft_offset_at(3.0) == 0.25
-    assert boom.shaft_offset_at(0.0) == 0.4
+    assert boom.shaft_offset_at(3.0) == 0.3125
+    assert boom.shaft_offset_at(0.0) == 0.5

@@ -84,7 +84,8 @@ class StationWarning(UserWarning):
 
 
 def cell_text(value: Any, digits: int = 4) -> str:
-    """A table cell: a number with ``digits`` significant figures (``g`` format), None as an
+    """A table cell: a float with ``digits`` significant figures (``g`` format), an integer
+    (Python or NumPy) whole (12345 stays "12345"), a boolean as ``true``/``false``, None as an
     em dash, anything else as text."""
     if value is None:
         return "—"

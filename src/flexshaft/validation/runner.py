@@ -158,12 +158,15 @@ def run_validation(case_ids: tuple[str, ...] | list[str] | None = None) -> Valid
 
 
 def significant(value: float, digits: int) -> str:
-    """``value`` to ``digits`` significant figures, fixed-point (``716.79``, ``11338``, ``0.01235``)."""
+    """``value`` to ``digits`` significant figures, fixed-point (``716.79``, ``11338``, ``0.01235``;
+    at five, 123456.7 is ``123460`` and 9.99997 is ``10.000``)."""
     if value == 0.0 or not math.isfinite(value):
         return str(value)
     exponent = math.floor(math.log10(abs(value)))
+    if abs(round(value, digits - 1 - exponent)) >= 10.0 ** (exponent + 1):
+        exponent += 1  # the rounding carried into a new leading digit
     decimals = max(digits - 1 - exponent, 0)
-    return f"{round(value, decimals):.{decimals}f}"
+    return f"{round(value, digits - 1 - exponent):.{decimals}f}"
 
 
 def published_text(value: float) -> str:
