@@ -61,9 +61,14 @@ _NM_NOTE = (
 )
 
 _ZN_BASIS = (
-    "the VM's inputs are rounded: E = 2.1e11 Pa carries two significant figures (±2.4 %, ±1.2 % in a "
-    "frequency, which scales as sqrt(E/ρ)), ρ = 7800 kg/m³ three (±0.06 %); the published speeds three "
-    "figures (4950: ±0.1 %). Five elements as the VM; 80 elements change the two speeds by 5e-5 and 2e-4"
+    "the published 4950 rev/min differs by 1.0 % from an exact solution of the VM's own inputs (an "
+    "Euler-Bernoulli beam of 20 elements on its bearings: 4998.6 and 10501 rev/min, "
+    "tests/test_validation_source_budgets_reference.py), the paper's model and not its inputs; the "
+    "published speeds carry three figures (10500: ±0.48 %). The inputs are rounded: E = 2.1e11 Pa two "
+    "significant figures (±2.4 %), which moves the speeds by ±0.46 % and ±0.09 % only (the bearings, "
+    "1.75e7 N/m, are about as stiff as the shaft: d ln f/d ln E = 0.195 and 0.039, not ½), ρ = 7800 "
+    "kg/m³ three (±0.03 % in a speed). Five elements as the VM; 80 elements change the two speeds by "
+    "5e-5 and 2e-4"
 )
 
 VM_CASES: tuple[Case, ...] = (
