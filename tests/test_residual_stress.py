@@ -121,3 +121,26 @@ def test_bad_temperatures_are_refused():
     law = MatrixTemperatureLaw()
     with pytest.raises(ValueError, match="temperature"):
         residual_ply_stresses(laminate(), law, T_SF, -5.0)
+
+
+def test_a_cool_down_from_above_the_table_holds_its_top_row_there():
+    """A table whose top row (80 °C) lies below T_sf = 100 °C: the moduli are held at the top row
+    above it (module docstring, no extrapolation), so with every modulus on f(T) (as above)
+    σ(T) = σ₁_ref [f(T_top) (T_top − T_sf) − θ (f(T) − f(T_top))] for T below the top row, and
+    σ₁_ref f(T_top) (T − T_sf) for T above it. Held at the row below the top (60 °C) the first
+    part would be e^{0.5} = 1.65 times larger; 1e-9 asserted as above."""
+    rows = np.arange(-20.0, 81.0, 20.0) + 273.15
+    top = rows[-1]
+    law = MatrixTemperatureLaw(reference_temperature=T_REF, table=scaled_table(rows))
+    lam = laminate()
+    per_kelvin = thermal_ply_stresses(lam, 1.0)
+
+    def f(t):
+        return math.exp(-(t - T_REF) / THETA)
+
+    for T, expected in (
+        (363.15, per_kelvin * f(top) * (363.15 - T_SF)),
+        (313.15, per_kelvin * (f(top) * (top - T_SF) - THETA * (f(313.15) - f(top)))),
+    ):
+        got = residual_ply_stresses(lam, law, T_SF, T)
+        assert np.allclose(got, expected, rtol=1e-9, atol=1e-9 * np.abs(expected).max())
