@@ -32,16 +32,28 @@ point read 1.34° at 788 Hz on the 200-point grid where a 3000-point grid finds 
 451 Hz, its lower gain margin −25.4 dB where it is −26.4 dB. Each refined peak is therefore
 evaluated (L at its frequency ω_p) and where it splits a grid interval whose ends agree in sign
 into two that do not, both halves are refined too (:func:`hidden_crossovers`): the crossings
-closest to the peak, where L nears −1, are the ones that set the margins. A limit of this: a
-pair of phase crossovers is found only when L at the peak lies on the other side of the real
-axis than at the interval's ends. A resonance circle whose centre lies above the negative real
-axis and whose radius only just reaches below it has its point nearest −1 above the axis; if
-its dip below the axis is narrower than the grid around the peak, the pair is not found and
-that circle's upper gain margin is missed (read as no crossover: optimistic). With the pole
-samples of :mod:`flexshaft.analyses.loop_grid` only such shallow dips escape (a test loop of
-a 6.35 dB true margin, its Im L below zero over a fraction of the peak's half width); the
-tuned driveline's loops agree with a 5000-point grid refined everywhere
-(tests/test_loop_robustness.py).
+closest to the peak, where L nears −1, are the ones that set the margins. That finds a pair of
+phase crossovers only when L at the peak lies on the other side of the real axis than at the
+interval's ends. A resonance circle whose centre lies above the negative real axis and whose
+radius only just reaches below it has its point nearest −1 above the axis, and its dip below
+the axis may be narrower than the grid around the peak (a test loop of a 6.35 dB upper margin,
+its Im L below zero over a fraction of the peak's half width, read no crossover even with the
+pole samples of :mod:`flexshaft.analyses.loop_grid`). So in the :data:`DIP_REACH` grid
+intervals each side of a refined peak, split at the peak, every part whose ends agree in the
+sign of Im L is tested (:func:`may_dip`) on the circle through L at its ends and at its
+neighbour toward the peak (a single lightly damped mode's L traces a circle: three points fix
+it): where its arc between the ends holds the circle's extreme point toward the other sign,
+within :data:`DIP_SLACK` of its radius of the axis, and crosses (or nears) the axis at
+Re L < 0, a golden-section search in ln ω for that extremum of Im L, stopped at the first point
+across the axis, splits the part there and both crossings are refined
+(:func:`dip_crossovers`). The test costs no evaluation; on the tuned design at its operating
+point it passes no part (no extra solve). Its limit: the circle is fitted to L at points up to a grid interval apart,
+where a background that varies across the interval moves it (the two points beside a peak the
+grid does not sample lie close together on the circle, far from the peak); a dip shallower than
+that error, beyond :data:`DIP_SLACK`, can still escape (a loop with a background of 0.2i per
+unit of ln ω and a dip 4 % of its radius deep on a coarse grid), as can a pair of gain
+crossovers (|L| = 1) that the refined peak does not reveal. The tuned driveline's loops agree
+with a 5000-point grid refined everywhere (tests/test_loop_robustness.py).
 
 Refined on projected models (:mod:`flexshaft.analyses.local_projection`), a crossover that fails
 its first check by a full solve is not refined further when it cannot set a margin
@@ -63,9 +75,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.guards import require_finite
-from flexshaft.analyses.local_projection import RefinementTask, golden_maximum, illinois_root, lockstep
+from flexshaft.analyses.local_projection import (
+    _GOLDEN,
+    Refinement,
+    RefinementTask,
+    golden_maximum,
+    illinois_root,
+    lockstep,
+)
 
 __all__ = [
+    "DIP_REACH",
+    "DIP_SLACK",
     "ISO_14839_ZONE_LIMITS",
     "MARGIN_WINDOW_DB",
     "MARGIN_WINDOW_DEG",
@@ -78,6 +99,8 @@ __all__ = [
     "refinements",
     "release_rule",
     "hidden_crossovers",
+    "may_dip",
+    "dip_crossovers",
     "sensitivity_zone",
 ]
 
@@ -94,6 +117,12 @@ MARGIN_WINDOW_DB = 2.0
 NEWTON_TRUST = 0.1
 #: Factor on the bound of the change of the phase margin or of L over that step.
 RELEASE_SAFETY = 10.0
+#: How near the real axis, and Re L = 0, the circle through L at a part's ends and beside them
+#: must come, in its radius, for a dip across the axis to be searched (:func:`may_dip`).
+DIP_SLACK = 0.05
+#: Grid intervals each side of the one holding a refined peak searched for a dip: those of the
+#: three points at a lightly damped pole's top and half width and their coarse neighbours.
+DIP_REACH = 2
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -199,7 +228,9 @@ def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks:
     (with Re L < 0 at an end, a phase crossover), each interval of the grid ``w`` whose ends
     agree in sign is split at the peaks inside it and every part whose ends differ in sign is
     refined (two grid maxima beside one sharp peak refine to the same top: the part between the
-    two splits has no change of sign, so each crossover is refined once)."""
+    two splits has no change of sign, so each crossover is refined once); near each peak, a
+    search for a dip of Im L across the negative real axis where the circle test allows one
+    (task kind ``"dip"``, role ``"phase"``: :func:`dip_crossovers`)."""
     tasks: list[RefinementTask] = []
     peaks = np.asarray(peaks, dtype=float)
     at_peaks = np.asarray(at_peaks, dtype=complex)
@@ -224,7 +255,99 @@ def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks:
                 tasks.append(
                     RefinementTask("root", int(j), int(j) + 1, functools.partial(illinois_root, f, *bracket), role)
                 )
+    return tasks + _dips(w, L, peaks, at_peaks)
+
+
+def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray) -> list[RefinementTask]:
+    """The searches for a dip of Im L across the negative real axis (:func:`dip_crossovers`)
+    in the parts, between the grid ``w`` and the ``peaks`` [rad/s], of the :data:`DIP_REACH`
+    grid intervals each side of a peak where Im L keeps its sign and the circle through L at
+    the part's ends and its neighbour toward the peak may dip (:func:`may_dip`)."""
+    near = np.zeros(w.size, dtype=bool)
+    for p in peaks:
+        i = int(np.searchsorted(w, p))
+        near[max(i - DIP_REACH - 1, 0) : i + DIP_REACH] = True
+    tasks: list[RefinementTask] = []
+    runs = np.split(np.flatnonzero(near), np.flatnonzero(np.diff(np.flatnonzero(near)) > 1) + 1)
+    for run in runs:
+        if run.size == 0:
+            continue
+        points = [(float(w[n]), complex(L[n])) for n in run]
+        points += [(float(p), complex(v)) for p, v in zip(peaks, at_peaks) if w[run[0]] < p < w[run[-1]] and p not in w]
+        points.sort(key=lambda point: point[0])
+        for k, ((a, la), (b, lb)) in enumerate(zip(points[:-1], points[1:])):
+            if la.imag == 0 or np.sign(la.imag) != np.sign(lb.imag):
+                continue  # a crossing the grid or a peak brackets
+            if len(points) < 3:
+                continue
+            toward = k == 0 or (k + 2 < len(points) and bool(np.any((b <= peaks) & (peaks <= points[-1][0]))))
+            third = points[k + 2][1] if toward else points[k - 1][1]  # the neighbour toward a peak
+            if may_dip(la, lb, third):
+                j = int(np.searchsorted(w, a, side="right")) - 1
+                dip = functools.partial(dip_crossovers, a, b, la, lb)
+                tasks.append(RefinementTask("dip", j, j + 1, dip, "phase"))
     return tasks
+
+
+def may_dip(la: complex, lb: complex, third: complex) -> bool:
+    """Whether L can cross the negative real axis twice between two frequencies where it is
+    ``la`` and ``lb`` (Im L of one sign), by the circle a lightly damped mode's L traces through
+    them and L at a third frequency beside them (``third``, outside the part): its arc from
+    ``la`` to ``lb`` (the one without ``third``) must hold the circle's extreme point toward the
+    other sign, within :data:`DIP_SLACK` of its radius of the axis, and its leftmost crossing of
+    the axis (or that extreme point) within as much of Re L = 0 (module docstring)."""
+    ratio = (third - la) / (lb - la)
+    if not (np.isfinite(ratio) and ratio.imag != 0):
+        return False  # on one line: Im L between la and lb is monotonic
+    centre = la + (lb - la) * (ratio - abs(ratio) ** 2) / (2j * ratio.imag)
+    radius = abs(la - centre)
+    side = np.sign(la.imag)
+    if side * centre.imag - radius > DIP_SLACK * radius:
+        return False  # the circle stays on the side of the ends
+    leftmost = centre.real - np.sqrt(max(radius**2 - centre.imag**2, 0.0))
+    if leftmost > DIP_SLACK * radius:
+        return False  # it would cross the real axis at Re L > 0 only: no phase crossover
+    turn = functools.partial(_turn, centre)
+    extreme = centre - 1j * side * radius
+    if turn(la, third) < turn(la, lb):  # the arc from la to lb without third runs clockwise
+        return turn(lb, extreme) <= turn(lb, la)
+    return turn(la, extreme) <= turn(la, lb)
+
+
+def _turn(centre: complex, start: complex, end: complex) -> float:
+    """The counter-clockwise angle about ``centre`` from ``start`` to ``end`` in [0, 2π)."""
+    return float(np.angle((end - centre) / (start - centre)) % (2.0 * np.pi))
+
+
+def dip_crossovers(a: float, b: float, la: complex, lb: complex) -> Refinement:
+    """The two crossings of the real axis of a dip of L between ``a`` and ``b`` [rad/s] (where
+    L is ``la``, ``lb``, Im L of one sign): a golden-section search in ln ω for the extremum of
+    Im L toward the other sign, to 1e-8, stopped at the first point across the axis; the part
+    is split there and both crossings are refined (:func:`illinois_root`, 1e-8 ω relative).
+    Returns their (ω, L(iω)), none when no point crosses."""
+    side = np.sign(la.imag)
+    lo, hi = float(np.log(a)), float(np.log(b))
+    c, d = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
+    lc = yield float(np.exp(c))
+    ld = lc if side * lc.imag <= 0 else (yield float(np.exp(d)))
+    while side * lc.imag > 0 and side * ld.imag > 0 and hi - lo > 1e-8:
+        if side * lc.imag <= side * ld.imag:
+            hi, d, ld = d, c, lc
+            c = hi - _GOLDEN * (hi - lo)
+            lc = yield float(np.exp(c))
+        else:
+            lo, c, lc = c, d, ld
+            d = lo + _GOLDEN * (hi - lo)
+            ld = yield float(np.exp(d))
+    x, lx = (c, lc) if side * lc.imag <= 0 else (d, ld)
+    if side * lx.imag > 0:
+        return []
+    m = float(np.exp(x))
+    if lx.imag == 0:
+        return [(m, lx)]
+    first = yield from illinois_root(_imag, a, m, la, lx, 1e-8 * a)
+    second = yield from illinois_root(_imag, m, b, lx, lb, 1e-8 * m)
+    return [first, second]
 
 
 def _imag(value: complex) -> float:
@@ -382,7 +505,8 @@ class MarginPlan:
     :data:`MARGIN_WINDOW_DEG`), and those a refined peak reveals inside a grid interval
     (:func:`hidden_crossovers`); :meth:`__call__` makes the margins of both rounds. A second-round
     task is known by its role and grid interval: a crossover left unrefined has a change of sign
-    there, a hidden one has none. Without a second round (``second`` empty) the margins are
+    there, a hidden one has none; a dip's search (kind ``"dip"``) gives a pair of hidden phase
+    crossovers or none. Without a second round (``second`` empty) the margins are
     those of the first round."""
 
     n_peaks: int
@@ -437,6 +561,9 @@ class MarginPlan:
         unrefined.update({("gain", k): i for i, (k, *_) in enumerate(self.gain) if i not in gain})
         extra = []
         for task, result in second:
+            if task.kind == "dip":  # a pair of hidden phase crossovers, or none
+                extra += [("phase", crossing) for crossing in result]
+                continue
             i = unrefined.get((task.role, task.lo))
             if i is None:  # a hidden crossover: no change of sign across its grid interval
                 extra.append((task.role, result))
