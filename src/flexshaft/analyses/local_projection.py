@@ -257,7 +257,9 @@ def lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.nda
 @dataclass(frozen=True)
 class RefinementTask:
     """One refinement of :func:`~flexshaft.analyses.loop_margins.refinements`: a ``"peak"``
-    (its result (ln ω, |S|)) or a ``"root"`` (its result (ω, L)) between grid points ``lo`` and
+    (its result (ln ω, |S|)), a ``"root"`` (its result (ω, L)) or, in the margins' second
+    round, a ``"dip"`` (its result a list of (ω, L):
+    :func:`~flexshaft.analyses.loop_margins.dip_crossovers`) between grid points ``lo`` and
     ``hi``; ``start()`` makes its steps; ``role`` says what a root is of (``"gain"``: |L| = 1,
     ``"phase"``: Im L = 0), for the caller's release rule (:func:`projected_refinements`)."""
 

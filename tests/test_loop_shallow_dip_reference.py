@@ -1,0 +1,130 @@
+r"""A resonance circle that only just dips across the real axis between two grid points
+(flexshaft.analyses.loop_margins: ``hidden_crossovers``, ``may_dip``, ``dip_crossovers`` and
+the margins made of them), against the crossings of the circle solved by hand.
+
+The loop, built by formula: L(ω) = a + iε + b H(ω), H = 2iζω_rω/(ω_r² − ω² + 2iζω_rω) a
+resonance of ζ = 1e-3 at ω_r = 2π·100 rad/s. With u = (ω_r² − ω²)/(2ζω_rω), H = i/(u + i)
+= q(1 + iu), q = 1/(1 + u²): H runs over the circle of diameter [0, 1] exactly, so L over the
+circle of centre c = a + iε + b/2 and radius |b|/2, and
+
+    Im L = ε + q(b_i + b_r u),   Re L = a + q(b_r − b_i u).
+
+Im L = 0 where ε(1 + u²) + b_i + b_r u = 0, i.e. ε u² + b_r u + (ε + b_i) = 0; ω from u is the
+positive root of ω² + 2ζω_r u ω − ω_r² = 0, ω = −ζω_r u + √((ζω_r u)² + ω_r²). The point of the
+circle nearest −1 is p = c + r(−1 − c)/|−1 − c| (|S|max = 1/(|−1 − c| − r)); its u is
+Im H/Re H there, H = (p − a − iε)/b.
+
+With a = −0.3, b = −0.3 − 0.4i, ε = 0.448: c = −0.45 + 0.248i, r = 0.25, the circle reaches
+0.002 (0.8 % of r) below the axis: 0.448u² − 0.3u + 0.048 = 0, u = (0.3 ± √0.003984)/0.896 =
+0.40527, 0.26438, Re L = −0.41844, −0.48156 (both phase crossovers), the upper gain margin
+20 log₁₀(1/0.48156) = 6.347 dB. Both lie 1.4e-4 apart in ω inside one interval of a 200-point
+logarithmic grid (4.7 % steps) and Im p = +0.145: neither the grid nor L at the refined peak
+lies across the axis (what hidden_crossovers needed alone). With ε = 0.46 the circle stops
+0.01 above the axis (the discriminant 0.09 − 4·0.46·0.06 < 0: no crossing); mirrored,
+a = +0.3, b = +0.3 + 0.4i, ε = 0.048, c = 0.45 + 0.248i, it dips across at Re L > 0
+(0.048u² + 0.3u + 0.448 = 0): no phase crossover.
+
+Tolerances: the crossings are refined by regula falsi to a bracket of 1e-8 ω (the point
+returned lies in it), so the frequencies to 1e-8 relative (2e-8 with the conversions). The gain
+margin is |L| there: |dL/d ln ω| = |b| |dH/du| |du/d ln ω| ≤ 0.5 · 1 · (ω_r² + ω²)/(2ζω_rω)
+≈ 500 near ω_r, so |L| to 5e-6 and the margin to 20/ln 10 · 5e-6/0.48 ≈ 1e-4 dB.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from flexshaft.analyses.local_projection import lockstep
+from flexshaft.analyses.loop_margins import dip_crossovers, hidden_crossovers, loop_margins, may_dip
+
+ZETA, WR = 1e-3, 2 * np.pi * 100.0
+GRID = np.geomspace(2 * np.pi * 1.0, 2 * np.pi * 1e4, 200)
+
+
+def _loop(a, eps, b):
+    def loop(w):
+        h = 2j * ZETA * WR * w / (WR * WR - w * w + 2j * ZETA * WR * w)
+        return a + 1j * eps + b * h
+
+    return loop
+
+
+def _omega(u):
+    u = np.asarray(u, dtype=float)
+    return -ZETA * WR * u + np.sqrt((ZETA * WR * u) ** 2 + WR * WR)
+
+
+def _crossings(a, eps, b):
+    """u, ω and L at the circle's crossings of the real axis (closed form, module docstring)."""
+    u = np.roots([eps, b.real, eps + b.imag])
+    u = np.sort(u[np.isreal(u)].real)
+    q = 1 / (1 + u * u)
+    return u, _omega(u), a + q * (b.real - b.imag * u)
+
+
+def _nearest(a, eps, b):
+    """ω and |S| of the circle's point nearest −1 (the sensitivity peak)."""
+    c, r = a + 1j * eps + b / 2, abs(b) / 2
+    p = c + r * (-1 - c) / abs(-1 - c)
+    h = (p - a - 1j * eps) / b
+    return float(_omega(h.imag / h.real)), 1 / (abs(-1 - c) - r), p
+
+
+def test_a_shallow_dip_between_two_grid_points_sets_the_upper_gain_margin():
+    a, eps, b = -0.3, 0.448, -0.3 - 0.4j
+    loop = _loop(a, eps, b)
+    u, w, real = _crossings(a, eps, b)
+    assert u == pytest.approx([0.26437619, 0.40526667], abs=1e-8)
+    assert real == pytest.approx([-0.48155947, -0.41844053], abs=1e-8)
+    gm = 20 * np.log10(1 / abs(real).max())
+    assert gm == pytest.approx(6.3470, abs=1e-4)
+    k = np.searchsorted(GRID, w[0])
+    assert GRID[k - 1] < w.min() and w.max() < GRID[k]  # one grid interval holds both
+    assert np.all(loop(GRID).imag > 0)
+    w_peak, peak, p = _nearest(a, eps, b)
+    assert p.imag > 0.1  # the peak's L lies on the grid's side of the axis
+    # the coarse grid, and one with points at the peak's top and half width (loop_grid's)
+    for grid in (GRID, np.sort(np.append(GRID, w_peak * np.array([1 - ZETA / 2, 1, 1 + ZETA / 2])))):
+        m = loop_margins(loop, grid)
+        assert m.phase_crossovers == pytest.approx(w[::-1] / (2 * np.pi), rel=2e-8)
+        assert abs(m.gain_margin_upper_db - gm) < 1e-4
+        assert m.gain_margin_frequency == pytest.approx(w[0] / (2 * np.pi), rel=2e-8)
+        assert m.gain_margin_lower_db == -np.inf and m.phase_margin_deg == np.inf  # |L| <= 0.75
+        assert m.peak_sensitivity == pytest.approx(peak, rel=1e-6)
+
+
+def test_a_circle_that_stops_short_of_the_axis_has_no_crossover():
+    a, eps, b = -0.3, 0.46, -0.3 - 0.4j
+    loop = _loop(a, eps, b)
+    assert _crossings(a, eps, b)[0].size == 0
+    w_peak, peak, _ = _nearest(a, eps, b)
+    # the circle test cannot exclude a dip 4 % of r away: the search runs and finds none
+    tasks = hidden_crossovers(GRID, loop(GRID), np.array([w_peak]), loop(np.array([w_peak])))
+    dips = [t for t in tasks if t.kind == "dip"]
+    assert len(dips) == 1
+    assert lockstep([t.start() for t in dips], lambda x, _: loop(x)) == [[]]
+    m = loop_margins(loop, GRID)
+    assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
+    assert m.peak_sensitivity == pytest.approx(peak, rel=1e-6)
+
+
+def test_a_dip_across_the_positive_real_axis_is_no_phase_crossover():
+    a, eps, b = 0.3, 0.048, 0.3 + 0.4j
+    loop = _loop(a, eps, b)
+    u, w, real = _crossings(a, eps, b)
+    assert u.size == 2 and np.all(real > 0)
+    k = np.searchsorted(GRID, w[0])
+    assert GRID[k - 1] < w.min() and w.max() < GRID[k]
+    # the search itself finds the two crossings (closed form) ...
+    part = GRID[k - 1], GRID[k], complex(loop(GRID[k - 1])), complex(loop(GRID[k]))
+    found = lockstep([dip_crossovers(*part)], lambda x, _: loop(x))[0]
+    assert [x for x, _ in found] == pytest.approx(sorted(w), rel=2e-8)
+    assert [v.real for _, v in found] == pytest.approx(list(real[np.argsort(w)]), abs=1e-5)
+    # ... but the circle test spends none on them (its crossings lie at Re L > 0)
+    assert not may_dip(part[2], part[3], complex(loop(GRID[k + 1])))
+    w_peak, _, _ = _nearest(a, eps, b)
+    tasks = hidden_crossovers(GRID, loop(GRID), np.array([w_peak]), loop(np.array([w_peak])))
+    assert [t for t in tasks if t.kind == "dip"] == []
+    m = loop_margins(loop, GRID)
+    assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
