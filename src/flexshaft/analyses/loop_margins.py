@@ -324,7 +324,12 @@ def dip_crossovers(a: float, b: float, la: complex, lb: complex) -> Refinement:
     L is ``la``, ``lb``, Im L of one sign): a golden-section search in ln ω for the extremum of
     Im L toward the other sign, to 1e-8, stopped at the first point across the axis; the part
     is split there and both crossings are refined (:func:`illinois_root`, 1e-8 ω relative).
-    Returns their (ω, L(iω)), none when no point crosses."""
+    Returns their (ω, L(iω)), none when no point crosses. The search takes Im L to have one
+    extremum toward the other sign in the part and none the other way (a unimodal search), as
+    on an arc of the circle that holds that extreme point (:func:`may_dip`) but not the
+    opposite one (not checked); a dip narrower than 1e-8 in ln ω (shallower than about 1e-10
+    of the circle's radius at ζ = 1e-3) is not resolved. Every crossing returned is bracketed
+    by a change of sign of the loop's own Im L: none is spurious."""
     side = np.sign(la.imag)
     lo, hi = float(np.log(a)), float(np.log(b))
     c, d = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
