@@ -128,3 +128,11 @@ def test_a_dip_across_the_positive_real_axis_is_no_phase_crossover():
     assert [t for t in tasks if t.kind == "dip"] == []
     m = loop_margins(loop, GRID)
     assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
+
+
+def test_a_loop_constant_between_grid_points_has_no_circle_and_no_crossover():
+    """L ≡ −0.5 + 0.1i: every grid point is a flat maximum of |S| = 1/|0.5 + 0.1i|, refined,
+    and no three values of L make a circle; Im L > 0 everywhere, so no phase crossover."""
+    m = loop_margins(lambda w: np.full(np.shape(w), -0.5 + 0.1j), np.geomspace(1.0, 1e3, 40))
+    assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
+    assert m.peak_sensitivity == pytest.approx(1 / abs(0.5 + 0.1j), rel=1e-15)

@@ -296,6 +296,8 @@ def may_dip(la: complex, lb: complex, third: complex) -> bool:
     ``la`` to ``lb`` (the one without ``third``) must hold the circle's extreme point toward the
     other sign, within :data:`DIP_SLACK` of its radius of the axis, and its leftmost crossing of
     the axis (or that extreme point) within as much of Re L = 0 (module docstring)."""
+    if lb == la:
+        return False
     ratio = (third - la) / (lb - la)
     if not (np.isfinite(ratio) and ratio.imag != 0):
         return False  # on one line: Im L between la and lb is monotonic
