@@ -99,11 +99,19 @@ def test_a_circle_that_stops_short_of_the_axis_has_no_crossover():
     loop = _loop(a, eps, b)
     assert _crossings(a, eps, b)[0].size == 0
     w_peak, peak, _ = _nearest(a, eps, b)
-    # the circle test cannot exclude a dip 4 % of r away: the search runs and finds none
+    # the circle through three grid values cannot exclude a dip 4 % of r away (DIP_SLACK),
+    # but the Möbius map through them, exact here up to the cube of ln(ω/ω_r), checked at a
+    # fourth grid point does: no search
+    k = np.searchsorted(GRID, w_peak)
+    part = GRID[k - 1], GRID[k], complex(loop(GRID[k - 1])), complex(loop(GRID[k]))
+    assert may_dip(part[2], part[3], complex(loop(GRID[k + 1])))
     tasks = hidden_crossovers(GRID, loop(GRID), np.array([w_peak]), loop(np.array([w_peak])))
-    dips = [t for t in tasks if t.kind == "dip"]
-    assert len(dips) == 1
-    assert lockstep([t.start() for t in dips], lambda x, _: loop(x)) == [[]]
+    assert [t for t in tasks if t.kind == "dip"] == []
+    # the search itself, asked, stops on the refitted extreme after one evaluation
+    calls = []
+    search = dip_crossovers(*part, GRID[k + 1], complex(loop(GRID[k + 1])))
+    assert lockstep([search], lambda x, _: calls.append(x) or loop(x)) == [[]]
+    assert len(calls) == 1
     m = loop_margins(loop, GRID)
     assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
     assert m.peak_sensitivity == pytest.approx(peak, rel=1e-6)
@@ -118,7 +126,7 @@ def test_a_dip_across_the_positive_real_axis_is_no_phase_crossover():
     assert GRID[k - 1] < w.min() and w.max() < GRID[k]
     # the search itself finds the two crossings (closed form) ...
     part = GRID[k - 1], GRID[k], complex(loop(GRID[k - 1])), complex(loop(GRID[k]))
-    found = lockstep([dip_crossovers(*part)], lambda x, _: loop(x))[0]
+    found = lockstep([dip_crossovers(*part, GRID[k + 1], complex(loop(GRID[k + 1])))], lambda x, _: loop(x))[0]
     assert [x for x, _ in found] == pytest.approx(sorted(w), rel=2e-8)
     assert [v.real for _, v in found] == pytest.approx(list(real[np.argsort(w)]), abs=1e-5)
     # ... but the circle test spends none on them (its crossings lie at Re L > 0)

@@ -85,6 +85,7 @@ from flexshaft.analyses.local_projection import (
 )
 
 __all__ = [
+    "DIP_CONFIRM",
     "DIP_REACH",
     "DIP_SLACK",
     "ISO_14839_ZONE_LIMITS",
@@ -123,6 +124,9 @@ DIP_SLACK = 0.05
 #: Grid intervals each side of the one holding a refined peak searched for a dip: those of the
 #: three points at a lightly damped pole's top and half width and their coarse neighbours.
 DIP_REACH = 2
+#: How many times the error of the circle's fit the refitted extreme must stay on its side of
+#: the axis for a dip's search to stop without a crossing (:func:`dip_crossovers`).
+DIP_CONFIRM = 2.0
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -282,11 +286,37 @@ def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray)
                 continue
             toward = k == 0 or (k + 2 < len(points) and bool(np.any((b <= peaks) & (peaks <= points[-1][0]))))
             third = points[k + 2][1] if toward else points[k - 1][1]  # the neighbour toward a peak
+            c = points[k + 2][0] if toward else points[k - 1][0]
             if may_dip(la, lb, third):
+                fit = [(float(np.log(a)), la), (float(np.log(b)), lb), (float(np.log(c)), third)]
+                fourth = k - 1 if toward else k + 2  # the neighbour on the other side
+                n = run[0] - 1 if fourth < 0 else run[-1] + 1  # beyond the run: the grid's
+                extra = points[fourth] if 0 <= fourth < len(points) else (float(w[n]), complex(L[n])) if 0 <= n < w.size else None
+                if extra is not None and _clear_of_axis(fit, extra):
+                    continue
                 j = int(np.searchsorted(w, a, side="right")) - 1
-                dip = functools.partial(dip_crossovers, a, b, la, lb)
+                dip = functools.partial(dip_crossovers, a, b, la, lb, c, third)
                 tasks.append(RefinementTask("dip", j, j + 1, dip, "phase"))
     return tasks
+
+
+def _mobius(points: Sequence[tuple[float, complex]], x: float) -> complex:
+    """L at ``x`` by the Möbius map x ↦ L through three ``points`` (x, L) (cross-ratio)."""
+    (x1, l1), (x2, l2), (x3, l3) = points
+    z = (x - x1) * (x2 - x3) / ((x - x3) * (x2 - x1))
+    m = (l2 - l1) / (l2 - l3)
+    return complex((l1 - z * m * l3) / (1.0 - z * m))
+
+
+def _clear_of_axis(fit: Sequence[tuple[float, complex]], fourth: tuple[float, complex]) -> bool:
+    """Whether the circle of the Möbius map through ``fit`` (x = ln ω, L: a part's ends first,
+    Im L of one sign there) keeps its extreme point on that side by more than :data:`DIP_CONFIRM`
+    times the error of the map's Im L at a ``fourth`` point (ω, L) of the grid (no evaluation)."""
+    side = float(np.sign(fit[0][1].imag))
+    predicted = _predicted_extreme(fit, side)
+    with np.errstate(all="ignore"):
+        error = abs(_mobius(fit, float(np.log(fourth[0]))).imag - fourth[1].imag)
+    return predicted is not None and bool(side * predicted[1].imag > DIP_CONFIRM * error)
 
 
 def may_dip(la: complex, lb: complex, third: complex) -> bool:
@@ -321,39 +351,101 @@ def _turn(centre: complex, start: complex, end: complex) -> float:
     return float(np.angle((end - centre) / (start - centre)) % (2.0 * np.pi))
 
 
-def dip_crossovers(a: float, b: float, la: complex, lb: complex) -> Refinement:
+def _circle(l1: complex, l2: complex, l3: complex) -> tuple[complex, float] | None:
+    """Centre and radius of the circle through three values of L (None when on one line)."""
+    ratio = (l3 - l1) / (l2 - l1) if l2 != l1 else np.nan
+    if not (np.isfinite(ratio) and ratio.imag != 0):
+        return None
+    centre = l1 + (l2 - l1) * (ratio - abs(ratio) ** 2) / (2j * ratio.imag)
+    return centre, float(abs(l1 - centre))
+
+
+def _predicted_extreme(points: Sequence[tuple[float, complex]], side: float) -> tuple[float, complex, float] | None:
+    """From L at three ``points`` (x = ln ω, L): the x where the Möbius map x ↦ L through them
+    (a lightly damped mode's L about its resonance, x = ln ω, up to the cube of x − ln ω_r)
+    reaches its circle's extreme point toward −``side``, that point and the circle's radius;
+    None when the points lie on one line or the prediction is not finite."""
+    (x1, l1), (x2, l2), (x3, l3) = points
+    circle = _circle(l1, l2, l3)
+    if circle is None:
+        return None
+    centre, radius = circle
+    extreme = centre - 1j * side * radius
+    with np.errstate(all="ignore"):  # cross-ratio: L1 -> 0, L2 -> 1, L3 -> inf and the same in x
+        z = ((extreme - l1) * (l2 - l3) / ((extreme - l3) * (l2 - l1))).real
+        k = (x2 - x1) / (x2 - x3)
+        x = (x1 - z * k * x3) / (1.0 - z * k)
+    return (float(x), extreme, radius) if np.isfinite(x) else None
+
+
+def dip_crossovers(a: float, b: float, la: complex, lb: complex, c: float, lc: complex) -> Refinement:
     """The two crossings of the real axis of a dip of L between ``a`` and ``b`` [rad/s] (where
-    L is ``la``, ``lb``, Im L of one sign): a golden-section search in ln ω for the extremum of
-    Im L toward the other sign, to 1e-8, stopped at the first point across the axis; the part
-    is split there and both crossings are refined (:func:`illinois_root`, 1e-8 ω relative).
-    Returns their (ω, L(iω)), none when no point crosses. The search takes Im L to have one
-    extremum toward the other sign in the part and none the other way (a unimodal search), as
-    on an arc of the circle that holds that extreme point (:func:`may_dip`) but not the
-    opposite one (not checked); a dip narrower than 1e-8 in ln ω (shallower than about 1e-10
-    of the circle's radius at ζ = 1e-3) is not resolved. Every crossing returned is bracketed
-    by a change of sign of the loop's own Im L: none is spurious."""
-    side = np.sign(la.imag)
-    lo, hi = float(np.log(a)), float(np.log(b))
-    c, d = hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo)
-    lc = yield float(np.exp(c))
-    ld = lc if side * lc.imag <= 0 else (yield float(np.exp(d)))
-    while side * lc.imag > 0 and side * ld.imag > 0 and hi - lo > 1e-8:
-        if side * lc.imag <= side * ld.imag:
-            hi, d, ld = d, c, lc
-            c = hi - _GOLDEN * (hi - lo)
-            lc = yield float(np.exp(c))
+    L is ``la``, ``lb``, Im L of one sign; ``c``, ``lc`` a third frequency beside the part and
+    L there). The circle of a lightly damped mode is the image of the frequency axis under a
+    Möbius map in x = ln ω (L = A + B/(1 − i(x_r − x)/ζ) near the resonance, module
+    docstring), which three points fix: L is evaluated where the map through the three points
+    nearest the lowest Im L found (toward the other sign) reaches its circle's extreme point
+    toward the other sign (:func:`_predicted_extreme`), or, where that lies outside their
+    bracket, at the golden section of the bracket's larger half. At the first point across
+    the axis the part is split and both crossings are refined (:func:`illinois_root`, 1e-8 ω
+    relative). The search stops without a crossing when the extreme of the map refitted
+    through the new point and its neighbours (or, outside the bracket, the lowest point) stays
+    on its side by more than :data:`DIP_CONFIRM` times the error of the previous map's Im L at
+    the new point, or when the bracket is 1e-8 in ln ω wide (a dip narrower is not resolved).
+    On a single mode's circle the first point lands on the extreme and the refit confirms it
+    (one evaluation); where the map fits badly (another mode, a varying background) the
+    golden steps narrow the bracket until it fits. Returns the crossings' (ω, L(iω)), none
+    when no point crosses; a point exactly on the axis is returned alone (a circle touching
+    it). Every crossing returned is bracketed by a change of sign of the loop's own Im L: none
+    is spurious; a dip the search steps past (two extrema of Im L in a bracket the map does not
+    follow) can be missed."""
+    side = float(np.sign(la.imag))
+    known = sorted([(float(np.log(a)), la), (float(np.log(b)), lb)], key=lambda point: point[0])
+    fit = [known[0], known[1], (float(np.log(c)), lc)]
+    lo, best, hi = known[0], known[0] if side * la.imag <= side * lb.imag else known[1], known[1]
+    while hi[0] - lo[0] > 1e-8:
+        predicted = _predicted_extreme(fit, side)
+        if predicted is not None and lo[0] < predicted[0] < hi[0] and predicted[0] != best[0]:
+            x = predicted[0]
+        elif best[0] - lo[0] >= hi[0] - best[0]:  # the golden section of the larger half
+            x = best[0] - (1.0 - _GOLDEN) * (best[0] - lo[0])
         else:
-            lo, c, lc = c, d, ld
-            d = lo + _GOLDEN * (hi - lo)
-            ld = yield float(np.exp(d))
-    x, lx = (c, lc) if side * lc.imag <= 0 else (d, ld)
-    if side * lx.imag > 0:
-        return []
+            x = best[0] + (1.0 - _GOLDEN) * (hi[0] - best[0])
+        with np.errstate(all="ignore"):
+            model = _mobius(fit, x)
+        lx = yield float(np.exp(x))
+        if side * lx.imag <= 0:
+            return (yield from _split(known, x, lx))
+        known.append((x, lx))
+        known.sort(key=lambda point: point[0])
+        i = min(range(len(known)), key=lambda n: side * known[n][1].imag)
+        best = known[i]
+        i = min(max(i, 1), len(known) - 2)
+        lo, hi = known[i - 1], known[i + 1]
+        fit = [lo, known[i], hi]
+        refit = _predicted_extreme(fit, side)
+        if refit is not None and lo[0] < refit[0] < hi[0]:
+            margin = side * refit[1].imag
+        else:  # on the refitted circle Im L is monotonic about the bracket: its lowest point is known
+            margin = side * best[1].imag
+        if margin > DIP_CONFIRM * abs(lx.imag - model.imag):
+            return []
+        if best is not known[i]:  # the lowest point is an end: bracket it with its neighbour
+            lo, hi = (known[0], known[1]) if best is known[0] else (known[-2], known[-1])
+    return []
+
+
+def _split(known: list[tuple[float, complex]], x: float, lx: complex) -> Refinement:
+    """The two crossings each side of a point ``x`` (ln ω, L there ``lx``) across the axis,
+    bracketed by the nearest ``known`` points (ln ω, L; on the other side)."""
     m = float(np.exp(x))
     if lx.imag == 0:
         return [(m, lx)]
-    first = yield from illinois_root(_imag, a, m, la, lx, 1e-8 * a)
-    second = yield from illinois_root(_imag, m, b, lx, lb, 1e-8 * m)
+    below = max((point for point in known if point[0] < x), key=lambda point: point[0])
+    above = min((point for point in known if point[0] > x), key=lambda point: point[0])
+    low, high = float(np.exp(below[0])), float(np.exp(above[0]))
+    first = yield from illinois_root(_imag, low, m, below[1], lx, 1e-8 * low)
+    second = yield from illinois_root(_imag, m, high, lx, above[1], 1e-8 * m)
     return [first, second]
 
 
