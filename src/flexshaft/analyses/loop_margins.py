@@ -86,7 +86,7 @@ from flexshaft.analyses.local_projection import (
 
 __all__ = [
     "DIP_CONFIRM",
-    "DIP_REACH",
+    "DIP_WIDTHS",
     "DIP_SLACK",
     "ISO_14839_ZONE_LIMITS",
     "MARGIN_WINDOW_DB",
@@ -121,12 +121,12 @@ RELEASE_SAFETY = 10.0
 #: How near the real axis, and Re L = 0, the circle through L at a part's ends and beside them
 #: must come, in its radius, for a dip across the axis to be searched (:func:`may_dip`).
 DIP_SLACK = 0.05
-#: Grid intervals each side of the one holding a refined peak searched for a dip: those of the
-#: three points at a lightly damped pole's top and half width and their coarse neighbours.
-DIP_REACH = 2
+#: Half widths of a refined sensitivity peak each side of it searched for a dip (the grid
+#: intervals that reach into that band and one more each side; :func:`_dips`).
+DIP_WIDTHS = 3.0
 #: How many times the error of the circle's fit the refitted extreme must stay on its side of
 #: the axis for a dip's search to stop without a crossing (:func:`dip_crossovers`).
-DIP_CONFIRM = 2.0
+DIP_CONFIRM = 1.0
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -268,9 +268,11 @@ def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray)
     grid intervals each side of a peak where Im L keeps its sign and the circle through L at
     the part's ends and its neighbour toward the peak may dip (:func:`may_dip`)."""
     near = np.zeros(w.size, dtype=bool)
-    for p in peaks:
-        i = int(np.searchsorted(w, p))
-        near[max(i - DIP_REACH - 1, 0) : i + DIP_REACH] = True
+    for p, lp in zip(peaks, at_peaks):
+        band = DIP_WIDTHS * _half_width(w, L, float(p), complex(lp))
+        low = int(np.searchsorted(w, p - band, side="right")) - 1  # a grid point beyond the band
+        high = int(np.searchsorted(w, p + band))
+        near[max(low, 0) : high + 1] = True
     tasks: list[RefinementTask] = []
     runs = np.split(np.flatnonzero(near), np.flatnonzero(np.diff(np.flatnonzero(near)) > 1) + 1)
     for run in runs:
@@ -298,6 +300,19 @@ def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray)
                 dip = functools.partial(dip_crossovers, a, b, la, lb, c, third)
                 tasks.append(RefinementTask("dip", j, j + 1, dip, "phase"))
     return tasks
+
+
+def _half_width(w: np.ndarray, L: np.ndarray, p: float, lp: complex) -> float:
+    """The half width [rad/s] of a sensitivity peak at ``p`` (L there ``lp``) from |S| there and
+    at the grid points beside it, as a resonance's |S|p/√(1 + ((ω − p)/h)²) would give it (the
+    wider of the two; the peak's grid interval where |S| is not lower beside it)."""
+    top = abs(1.0 / (1.0 + lp))
+    i = int(np.searchsorted(w, p))
+    widths = [abs(w[0] - p) + abs(w[-1] - p)]
+    for n in (i - 1, i) if 0 < i < w.size else ():
+        ratio = top * abs(1.0 + L[n])
+        widths.append(abs(w[n] - p) / np.sqrt(ratio**2 - 1.0) if ratio > 1.0 else abs(w[n] - p))
+    return float(max(widths[1:], default=widths[0]))
 
 
 def _mobius(points: Sequence[tuple[float, complex]], x: float) -> complex:
