@@ -71,9 +71,14 @@ def _nearest(a, eps, b):
     return float(_omega(h.imag / h.real)), 1 / (abs(-1 - c) - r), p
 
 
-def test_a_shallow_dip_between_two_grid_points_sets_the_upper_gain_margin():
+@pytest.mark.parametrize("mirrored", [False, True], ids=["above", "below"])
+def test_a_shallow_dip_between_two_grid_points_sets_the_upper_gain_margin(mirrored):
+    """Mirrored: conj L, the same circle reflected in the real axis (Im L < 0 at the grid,
+    the same crossings and margins)."""
     a, eps, b = -0.3, 0.448, -0.3 - 0.4j
     loop = _loop(a, eps, b)
+    if mirrored:
+        loop = (lambda f: lambda w: np.conj(f(w)))(loop)
     u, w, real = _crossings(a, eps, b)
     assert u == pytest.approx([0.26437619, 0.40526667], abs=1e-8)
     assert real == pytest.approx([-0.48155947, -0.41844053], abs=1e-8)
@@ -81,7 +86,7 @@ def test_a_shallow_dip_between_two_grid_points_sets_the_upper_gain_margin():
     assert gm == pytest.approx(6.3470, abs=1e-4)
     k = np.searchsorted(GRID, w[0])
     assert GRID[k - 1] < w.min() and w.max() < GRID[k]  # one grid interval holds both
-    assert np.all(loop(GRID).imag > 0)
+    assert np.all((-1) ** mirrored * loop(GRID).imag > 0)
     w_peak, peak, p = _nearest(a, eps, b)
     assert p.imag > 0.1  # the peak's L lies on the grid's side of the axis
     # the coarse grid, and one with points at the peak's top and half width (loop_grid's)
@@ -144,3 +149,23 @@ def test_a_loop_constant_between_grid_points_has_no_circle_and_no_crossover():
     m = loop_margins(lambda w: np.full(np.shape(w), -0.5 + 0.1j), np.geomspace(1.0, 1e3, 40))
     assert m.phase_crossovers == () and m.gain_margin_upper_db == np.inf
     assert m.peak_sensitivity == pytest.approx(1 / abs(0.5 + 0.1j), rel=1e-15)
+
+
+def test_a_part_whose_arc_holds_both_extreme_points_is_searched_to_its_dip():
+    """Im L = ε + q(b_i + b_r u) is extreme where b_r u² + 2b_i u − b_r = 0: with b = −0.3 − 0.4i,
+    0.3u² + 0.8u − 0.3 = 0, u = 1/3 (the dip, between the crossings at u = 0.264 and 0.405)
+    and u = −3 (the top). A part from u = 1 to u = −10 (ω rising, ln ω nearly linear in u)
+    holds both, its arc more than half the circle, the dip in its first 6 % (a search for one
+    extremum of Im L, whose first two points at 38 % and 62 % lie beyond the top, goes the
+    wrong way); the search finds the two crossings of the closed form."""
+    a, eps, b = -0.3, 0.448, -0.3 - 0.4j
+    loop = _loop(a, eps, b)
+    assert np.roots([0.3, 0.8, -0.3]) == pytest.approx([-3.0, 1 / 3])
+    _, w, real = _crossings(a, eps, b)
+    lo, hi, beside = _omega([1.0, -10.0, 3.0])
+    ends = loop(np.array([lo, hi]))
+    assert ends.imag.min() > 0 and lo < w.min() and w.max() < hi
+    search = dip_crossovers(lo, hi, ends[0], ends[1], beside, complex(loop(beside)))
+    found = lockstep([search], lambda x, _: loop(x))[0]
+    assert [x for x, _ in found] == pytest.approx(sorted(w), rel=2e-8)
+    assert [v.real for _, v in found] == pytest.approx(list(real[np.argsort(w)]), abs=1e-5)

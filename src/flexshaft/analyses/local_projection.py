@@ -306,6 +306,8 @@ def projected_refinements(
     projected model's first two derivatives there and whether the check passed; it returns which tasks that failed may
     keep that result instead of being refined further (the caller's rule: a crossover that
     cannot set a margin, :func:`~flexshaft.analyses.loop_margins.release_rule`)."""
+    # a dip's search returns a list of crossings, not one (ω, L): it runs on full solves
+    assert all(task.kind != "dip" for task in tasks), "dip searches are not projected"
     results: list = [None] * len(tasks)
     active = np.arange(len(tasks))
     fallback: list[int] = []  # refined on the full model at the end
