@@ -169,3 +169,22 @@ def test_a_part_whose_arc_holds_both_extreme_points_is_searched_to_its_dip():
     found = lockstep([search], lambda x, _: loop(x))[0]
     assert [x for x, _ in found] == pytest.approx(sorted(w), rel=2e-8)
     assert [v.real for _, v in found] == pytest.approx(list(real[np.argsort(w)]), abs=1e-5)
+
+
+def test_a_dip_several_grid_intervals_from_the_refined_peak_is_searched():
+    """The peak lies at ω/ω_r − 1 = +0.257ζ, the dip at −0.264ζ…−0.405ζ (closed forms above);
+    a grid with the peak and three points each side between it and the dip (as a loop grid's
+    samples about a pole) puts the dip four intervals below the peak: beyond a reach counted
+    in grid intervals, within one of three half widths of the peak (about ζω_r each)."""
+    a, eps, b = -0.3, 0.448, -0.3 - 0.4j
+    loop = _loop(a, eps, b)
+    _, w, real = _crossings(a, eps, b)
+    w_peak, peak, _ = _nearest(a, eps, b)
+    assert (w_peak / WR - 1) / ZETA == pytest.approx(0.2573, abs=1e-4) and w_peak > w.max()
+    steps = np.array([-0.75, -0.5, -0.25, 0.0, 0.25, 0.5, 0.75])
+    grid = np.sort(np.append(GRID, w_peak + (w.max() - w_peak) * steps))
+    k = np.searchsorted(grid, w_peak)
+    assert grid[k - 4] < w.min() and w.max() < grid[k - 3]  # four intervals below the peak's point
+    m = loop_margins(loop, grid)
+    assert m.phase_crossovers == pytest.approx(w[::-1] / (2 * np.pi), rel=2e-8)
+    assert abs(m.gain_margin_upper_db - 20 * np.log10(1 / abs(real).max())) < 1e-4
