@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from flexshaft.analyses.local_projection import lockstep
 from flexshaft.analyses.loop_margins import dip_crossovers, hidden_crossovers, loop_margins, may_dip
@@ -188,3 +189,45 @@ def test_a_dip_several_grid_intervals_from_the_refined_peak_is_searched():
     m = loop_margins(loop, grid)
     assert m.phase_crossovers == pytest.approx(w[::-1] / (2 * np.pi), rel=2e-8)
     assert abs(m.gain_margin_upper_db - 20 * np.log10(1 / abs(real).max())) < 1e-4
+
+
+def _dense_upper_margin(loop, centre):
+    """The smallest upper gain margin by an independent route: Im L sampled on 200001 points
+    over the grid's range and 200001 within ±2 % of ``centre``, each change of sign solved by
+    scipy's brentq to 1e-13 rad/s."""
+    ws = np.unique(np.concatenate([np.geomspace(GRID[0], GRID[-1], 200001), np.geomspace(0.98, 1.02, 200001) * centre]))
+    im = loop(ws).imag
+    roots = [brentq(lambda x: loop(np.array([x]))[0].imag, ws[k], ws[k + 1], xtol=1e-13) for k in np.flatnonzero(im[:-1] * im[1:] < 0)]
+    values = loop(np.array(roots))
+    margins = 20 * np.log10(1 / np.abs(values[(values.real < 0) & (np.abs(values) < 1)]))
+    return margins.min()
+
+
+@pytest.mark.parametrize(
+    "eps, slope, second, sep, samples",
+    [
+        (0.44451486, -0.04744716, -0.06396522 + 0.01817943j, 0.02397604, 0),
+        (0.44614186, 0.27027822, 0.01367210 - 0.00457096j, 0.00928426, 2),
+    ],
+    ids=["second-mode", "slope-and-samples"],
+)
+def test_a_shallow_dip_on_a_background_the_circle_does_not_fit(eps, slope, second, sep, samples):
+    """The shallow dip with a background: i·slope·ln(ω/ω_r) and a second mode of ζ = 1e-3 at
+    ω_r(1 + sep), so that three grid values fix no exact circle (the search takes more than
+    one point; the check at a fourth grid point sees the map's error); with, in the second
+    case, points at the peak and ±ζ of it (a loop grid's samples). The margin against a dense
+    sampling solved by brentq (:func:`_dense_upper_margin`); 1e-4 dB as above."""
+    base = _loop(-0.3, eps, -0.3 - 0.4j)
+
+    def loop(w):
+        h2 = 2j * ZETA * WR * (1 + sep) * w / ((WR * (1 + sep)) ** 2 - w * w + 2j * ZETA * WR * (1 + sep) * w)
+        return base(w) + 1j * slope * np.log(w / WR) + second * h2
+
+    grid = GRID
+    if samples:
+        fine = np.geomspace(0.99 * WR, 1.01 * WR, 200001)
+        top = fine[np.argmax(1 / np.abs(1 + loop(fine)))]
+        grid = np.sort(np.append(GRID, top * (1 + ZETA * np.array([-1.0, 0.0, 1.0]))))
+    true = _dense_upper_margin(loop, WR)
+    assert 5.5 < true < 6.5  # a dip, with Re L < 0, below 6.5 dB
+    assert abs(loop_margins(loop, grid).gain_margin_upper_db - true) < 1e-4
