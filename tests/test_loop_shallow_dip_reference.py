@@ -197,7 +197,8 @@ def _dense_upper_margin(loop, centre):
     scipy's brentq to 1e-13 rad/s."""
     ws = np.unique(np.concatenate([np.geomspace(GRID[0], GRID[-1], 200001), np.geomspace(0.98, 1.02, 200001) * centre]))
     im = loop(ws).imag
-    roots = [brentq(lambda x: loop(np.array([x]))[0].imag, ws[k], ws[k + 1], xtol=1e-13) for k in np.flatnonzero(im[:-1] * im[1:] < 0)]
+    changes = np.flatnonzero(im[:-1] * im[1:] < 0)
+    roots = [brentq(lambda x: loop(np.array([x]))[0].imag, ws[k], ws[k + 1], xtol=1e-13) for k in changes]
     values = loop(np.array(roots))
     margins = 20 * np.log10(1 / np.abs(values[(values.real < 0) & (np.abs(values) < 1)]))
     return margins.min()

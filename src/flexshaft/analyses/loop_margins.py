@@ -301,7 +301,9 @@ def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray)
                 fit = [(float(np.log(a)), la), (float(np.log(b)), lb), (float(np.log(c)), third)]
                 fourth = k - 1 if toward else k + 2  # the neighbour on the other side
                 n = run[0] - 1 if fourth < 0 else run[-1] + 1  # beyond the run: the grid's
-                extra = points[fourth] if 0 <= fourth < len(points) else (float(w[n]), complex(L[n])) if 0 <= n < w.size else None
+                extra = None if not 0 <= n < w.size else (float(w[n]), complex(L[n]))
+                if 0 <= fourth < len(points):
+                    extra = points[fourth]
                 if extra is not None and _clear_of_axis(fit, extra):
                     continue
                 j = int(np.searchsorted(w, a, side="right")) - 1
