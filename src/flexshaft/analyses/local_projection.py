@@ -257,7 +257,9 @@ def lockstep(tasks: Sequence[Refinement], evaluate: Callable[[np.ndarray, np.nda
 @dataclass(frozen=True)
 class RefinementTask:
     """One refinement of :func:`~flexshaft.analyses.loop_margins.refinements`: a ``"peak"``
-    (its result (ln ω, |S|)) or a ``"root"`` (its result (ω, L)) between grid points ``lo`` and
+    (its result (ln ω, |S|)), a ``"root"`` (its result (ω, L)) or, in the margins' second
+    round, a ``"dip"`` (its result a list of (ω, L):
+    :func:`~flexshaft.analyses.loop_margins.dip_crossovers`) between grid points ``lo`` and
     ``hi``; ``start()`` makes its steps; ``role`` says what a root is of (``"gain"``: |L| = 1,
     ``"phase"``: Im L = 0), for the caller's release rule (:func:`projected_refinements`)."""
 
@@ -304,6 +306,8 @@ def projected_refinements(
     projected model's first two derivatives there and whether the check passed; it returns which tasks that failed may
     keep that result instead of being refined further (the caller's rule: a crossover that
     cannot set a margin, :func:`~flexshaft.analyses.loop_margins.release_rule`)."""
+    # a dip's search returns a list of crossings, not one (ω, L): it runs on full solves
+    assert all(task.kind != "dip" for task in tasks), "dip searches are not projected"
     results: list = [None] * len(tasks)
     active = np.arange(len(tasks))
     fallback: list[int] = []  # refined on the full model at the end
