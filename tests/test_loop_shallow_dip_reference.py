@@ -1,6 +1,6 @@
 r"""A resonance circle that only just dips across the real axis between two grid points
-(flexshaft.analyses.loop_margins: ``hidden_crossovers``, ``may_dip``, ``dip_crossovers`` and
-the margins made of them), against the crossings of the circle solved by hand.
+(``hidden_crossovers`` of flexshaft.analyses.loop_margins, ``may_dip`` and ``dip_crossovers`` of
+flexshaft.analyses.loop_dips, and the margins made of them), against the crossings of the circle solved by hand.
 
 The loop, built by formula: L(ω) = a + iε + b H(ω), H = 2iζω_rω/(ω_r² − ω² + 2iζω_rω) a
 resonance of ζ = 1e-3 at ω_r = 2π·100 rad/s. With u = (ω_r² − ω²)/(2ζω_rω), H = i/(u + i)
@@ -37,7 +37,8 @@ import pytest
 from scipy.optimize import brentq
 
 from flexshaft.analyses.local_projection import lockstep
-from flexshaft.analyses.loop_margins import dip_crossovers, hidden_crossovers, loop_margins, may_dip
+from flexshaft.analyses.loop_dips import dip_crossovers, may_dip
+from flexshaft.analyses.loop_margins import hidden_crossovers, loop_margins
 
 ZETA, WR = 1e-3, 2 * np.pi * 100.0
 GRID = np.geomspace(2 * np.pi * 1.0, 2 * np.pi * 1e4, 200)

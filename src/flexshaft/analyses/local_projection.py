@@ -44,6 +44,7 @@ from flexshaft.analyses.banded import BandedHarmonicSolver
 
 __all__ = [
     "ENRICHMENTS",
+    "GOLDEN",
     "LOCAL_TOLERANCE",
     "WINDOW",
     "LocalModels",
@@ -209,23 +210,24 @@ def illinois_root(
     return x, (last[1] if x == last[0] else (yield x))
 
 
-_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
+#: The golden section's inverse ratio (√5 − 1)/2 of a bracket's step.
+GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
 
 
 def golden_maximum(f: Callable[[complex], float], a: float, b: float, tol: float) -> Refinement:
     """(log ω, f(L(iω))) of the largest value of a unimodal ``f`` of L on log ω in [a, b],
     golden-section search to ``tol``."""
-    c, d = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+    c, d = b - GOLDEN * (b - a), a + GOLDEN * (b - a)
     fc = f((yield float(np.exp(c))))
     fd = f((yield float(np.exp(d))))
     while b - a > tol:
         if fc >= fd:
             b, d, fd = d, c, fc
-            c = b - _GOLDEN * (b - a)
+            c = b - GOLDEN * (b - a)
             fc = f((yield float(np.exp(c))))
         else:
             a, c, fc = c, d, fd
-            d = a + _GOLDEN * (b - a)
+            d = a + GOLDEN * (b - a)
             fd = f((yield float(np.exp(d))))
     return (c, fc) if fc >= fd else (d, fd)
 
@@ -259,7 +261,7 @@ class RefinementTask:
     """One refinement of :func:`~flexshaft.analyses.loop_margins.refinements`: a ``"peak"``
     (its result (ln ω, |S|)), a ``"root"`` (its result (ω, L)) or, in the margins' second
     round, a ``"dip"`` (its result a list of (ω, L):
-    :func:`~flexshaft.analyses.loop_margins.dip_crossovers`) between grid points ``lo`` and
+    :func:`~flexshaft.analyses.loop_dips.dip_crossovers`) between grid points ``lo`` and
     ``hi``; ``start()`` makes its steps; ``role`` says what a root is of (``"gain"``: |L| = 1,
     ``"phase"``: Im L = 0), for the caller's release rule (:func:`projected_refinements`)."""
 

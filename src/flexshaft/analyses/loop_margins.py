@@ -38,28 +38,11 @@ interval's ends. A resonance circle whose centre lies above the negative real ax
 radius only just reaches below it has its point nearest −1 above the axis, and its dip below
 the axis may be narrower than the grid around the peak (a test loop of a 6.35 dB upper margin,
 its Im L below zero over a fraction of the peak's half width, read no crossover even with the
-pole samples of :mod:`flexshaft.analyses.loop_grid`). So in the grid intervals within
-:data:`DIP_WIDTHS` half widths of each refined peak (from |S| at the peak and beside it) and one
-more each side, split at the peaks, every part whose ends agree in the sign of Im L is tested
-(:func:`may_dip`) on the circle through L at its ends and at its neighbour toward the peak (a
-single lightly damped mode's L traces a circle: three points fix it): its arc between the ends
-must hold the circle's extreme point toward the other sign, within :data:`DIP_SLACK` of its
-radius of the axis, and cross (or near) the axis at Re L < 0. The same three points fix the
-Möbius map ln ω ↦ L of such a mode; checked at the grid point on the part's other side, the
-part is dropped when the extreme stays on its side by more than :data:`DIP_FOURTH_SAFETY`
-times that map's error there (no evaluation). A part left is searched (:func:`dip_crossovers`): L is
-evaluated where the map predicts the extreme, the map refitted, and the search stops once the
-refitted extreme stays on its side by more than :data:`DIP_CONFIRM` times the previous map's
-error (one or two solves on a clean circle), or splits the part at the first point across the
-axis and refines both crossings. On the baseline design's accuracy test (L near −1 over wide
-bands) 246 parts are searched for 468 solves (6 % of its loops' solves), none crossing. Its
-limits: a dip outside the band (a peak whose |S| beside it the
-background distorts, so its half width is underestimated), or one the fit's error hides: the
-maps are fitted to L at points up to a grid interval apart, where a background that varies
-across the interval, or a second mode near the first, moves them (random loops with a second
-mode within 10 % of the first: 11 of 200 missed in a random sweep against a dense grid); and a
-pair of gain crossovers (|L| = 1) that the refined peak does not reveal. The tuned driveline's
-loops agree with a 5000-point grid refined everywhere (tests/test_loop_robustness.py).
+pole samples of :mod:`flexshaft.analyses.loop_grid`). So near each refined peak every part of
+the grid whose ends agree in the sign of Im L is tested for such a dip, and searched where one
+may be (:mod:`flexshaft.analyses.loop_dips`, which states what can still escape). The tuned
+driveline's loops agree with a 5000-point grid refined everywhere
+(tests/test_loop_robustness.py).
 
 Refined on projected models (:mod:`flexshaft.analyses.local_projection`), a crossover that fails
 its first check by a full solve is not refined further when it cannot set a margin
@@ -81,20 +64,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from flexshaft.analyses.guards import require_finite
-from flexshaft.analyses.local_projection import (
-    _GOLDEN,
-    Refinement,
-    RefinementTask,
-    golden_maximum,
-    illinois_root,
-    lockstep,
-)
+from flexshaft.analyses.local_projection import RefinementTask, golden_maximum, illinois_root, lockstep
+from flexshaft.analyses.loop_dips import dip_searches
 
 __all__ = [
-    "DIP_CONFIRM",
-    "DIP_FOURTH_SAFETY",
-    "DIP_WIDTHS",
-    "DIP_SLACK",
     "ISO_14839_ZONE_LIMITS",
     "MARGIN_WINDOW_DB",
     "MARGIN_WINDOW_DEG",
@@ -107,8 +80,6 @@ __all__ = [
     "refinements",
     "release_rule",
     "hidden_crossovers",
-    "may_dip",
-    "dip_crossovers",
     "sensitivity_zone",
 ]
 
@@ -125,19 +96,6 @@ MARGIN_WINDOW_DB = 2.0
 NEWTON_TRUST = 0.1
 #: Factor on the bound of the change of the phase margin or of L over that step.
 RELEASE_SAFETY = 10.0
-#: How near the real axis, and Re L = 0, the circle through L at a part's ends and beside them
-#: must come, in its radius, for a dip across the axis to be searched (:func:`may_dip`).
-DIP_SLACK = 0.05
-#: Half widths of a refined sensitivity peak each side of it searched for a dip (the grid
-#: intervals that reach into that band and one more each side; :func:`_dips`).
-DIP_WIDTHS = 3.0
-#: How many times the error of the circle's fit the refitted extreme must stay on its side of
-#: the axis for a dip's search to stop without a crossing (:func:`dip_crossovers`).
-DIP_CONFIRM = 1.0
-#: The same for a part to be dropped unsearched, on the error of the map at the grid point on
-#: the part's other side (an extrapolation, which can fit there and not at the extreme: at 4
-#: times, random loops on a background slope missed dips the search finds; :func:`_dips`).
-DIP_FOURTH_SAFETY = 10.0
 
 
 def sensitivity_zone(peak: float) -> str:
@@ -245,7 +203,8 @@ def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks:
     refined (two grid maxima beside one sharp peak refine to the same top: the part between the
     two splits has no change of sign, so each crossover is refined once); near each peak, a
     search for a dip of Im L across the negative real axis where the circle test allows one
-    (task kind ``"dip"``, role ``"phase"``: :func:`dip_crossovers`)."""
+    (task kind ``"dip"``, role ``"phase"``:
+    :func:`~flexshaft.analyses.loop_dips.dip_searches`)."""
     tasks: list[RefinementTask] = []
     peaks = np.asarray(peaks, dtype=float)
     at_peaks = np.asarray(at_peaks, dtype=complex)
@@ -270,214 +229,7 @@ def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks:
                 tasks.append(
                     RefinementTask("root", int(j), int(j) + 1, functools.partial(illinois_root, f, *bracket), role)
                 )
-    return tasks + _dips(w, L, peaks, at_peaks)
-
-
-def _dips(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray) -> list[RefinementTask]:
-    """The searches for a dip of Im L across the negative real axis (:func:`dip_crossovers`)
-    in the parts, between the grid ``w`` and the ``peaks`` [rad/s], of the grid intervals
-    within :data:`DIP_WIDTHS` half widths of a peak (:func:`_half_width`) and one more each
-    side where Im L keeps its sign, the circle through L at the part's ends and its neighbour
-    toward the peak may dip (:func:`may_dip`) and the Möbius map through them, checked at the
-    grid point on the other side, does not clear the axis (:func:`_clear_of_axis`)."""
-    near = np.zeros(w.size, dtype=bool)
-    for p, lp in zip(peaks, at_peaks):
-        band = DIP_WIDTHS * _half_width(w, L, float(p), complex(lp))
-        low = int(np.searchsorted(w, p - band, side="right")) - 1  # a grid point beyond the band
-        high = int(np.searchsorted(w, p + band))
-        near[max(low, 0) : high + 1] = True
-    tasks: list[RefinementTask] = []
-    runs = np.split(np.flatnonzero(near), np.flatnonzero(np.diff(np.flatnonzero(near)) > 1) + 1)
-    for run in runs:
-        if run.size == 0:
-            continue
-        points = [(float(w[n]), complex(L[n])) for n in run]
-        points += [(float(p), complex(v)) for p, v in zip(peaks, at_peaks) if w[run[0]] < p < w[run[-1]] and p not in w]
-        points.sort(key=lambda point: point[0])
-        for k, ((a, la), (b, lb)) in enumerate(zip(points[:-1], points[1:])):
-            if la.imag == 0 or np.sign(la.imag) != np.sign(lb.imag):
-                continue  # a crossing the grid or a peak brackets
-            if len(points) < 3:
-                continue
-            toward = k == 0 or (k + 2 < len(points) and bool(np.any((b <= peaks) & (peaks <= points[-1][0]))))
-            third = points[k + 2][1] if toward else points[k - 1][1]  # the neighbour toward a peak
-            c = points[k + 2][0] if toward else points[k - 1][0]
-            if may_dip(la, lb, third):
-                fit = [(float(np.log(a)), la), (float(np.log(b)), lb), (float(np.log(c)), third)]
-                fourth = k - 1 if toward else k + 2  # the neighbour on the other side
-                n = run[0] - 1 if fourth < 0 else run[-1] + 1  # beyond the run: the grid's
-                extra = None if not 0 <= n < w.size else (float(w[n]), complex(L[n]))
-                if 0 <= fourth < len(points):
-                    extra = points[fourth]
-                if extra is not None and _clear_of_axis(fit, extra):
-                    continue
-                j = int(np.searchsorted(w, a, side="right")) - 1
-                dip = functools.partial(dip_crossovers, a, b, la, lb, c, third)
-                tasks.append(RefinementTask("dip", j, j + 1, dip, "phase"))
-    return tasks
-
-
-def _half_width(w: np.ndarray, L: np.ndarray, p: float, lp: complex) -> float:
-    """The half width [rad/s] of a sensitivity peak at ``p`` (L there ``lp``) from |S| there and
-    at the grid points beside it, as a resonance's |S|p/√(1 + ((ω − p)/h)²) would give it (the
-    wider of the two; the peak's grid interval where |S| is not lower beside it)."""
-    top = abs(1.0 / (1.0 + lp))
-    i = int(np.searchsorted(w, p))
-    widths = [abs(w[0] - p) + abs(w[-1] - p)]
-    for n in (i - 1, i) if 0 < i < w.size else ():
-        ratio = top * abs(1.0 + L[n])
-        widths.append(abs(w[n] - p) / np.sqrt(ratio**2 - 1.0) if ratio > 1.0 else abs(w[n] - p))
-    return float(max(widths[1:], default=widths[0]))
-
-
-def _mobius(points: Sequence[tuple[float, complex]], x: float) -> complex:
-    """L at ``x`` by the Möbius map x ↦ L through three ``points`` (x, L) (cross-ratio)."""
-    (x1, l1), (x2, l2), (x3, l3) = points
-    z = (x - x1) * (x2 - x3) / ((x - x3) * (x2 - x1))
-    m = (l2 - l1) / (l2 - l3)
-    return complex((l1 - z * m * l3) / (1.0 - z * m))
-
-
-def _clear_of_axis(fit: Sequence[tuple[float, complex]], fourth: tuple[float, complex]) -> bool:
-    """Whether the circle of the Möbius map through ``fit`` (x = ln ω, L: a part's ends first,
-    Im L of one sign there) keeps its extreme point on that side by more than
-    :data:`DIP_FOURTH_SAFETY` times the error of the map's Im L at a ``fourth`` point (ω, L) of
-    the grid (no evaluation)."""
-    side = float(np.sign(fit[0][1].imag))
-    predicted = _predicted_extreme(fit, side)
-    with np.errstate(all="ignore"):
-        error = abs(_mobius(fit, float(np.log(fourth[0]))).imag - fourth[1].imag)
-    return predicted is not None and bool(side * predicted[1].imag > DIP_FOURTH_SAFETY * error)
-
-
-def may_dip(la: complex, lb: complex, third: complex) -> bool:
-    """Whether L can cross the negative real axis twice between two frequencies where it is
-    ``la`` and ``lb`` (Im L of one sign), by the circle a lightly damped mode's L traces through
-    them and L at a third frequency beside them (``third``, outside the part): its arc from
-    ``la`` to ``lb`` (the one without ``third``) must hold the circle's extreme point toward the
-    other sign, within :data:`DIP_SLACK` of its radius of the axis, and its leftmost crossing of
-    the axis (or that extreme point) within as much of Re L = 0 (module docstring)."""
-    if lb == la:
-        return False
-    ratio = (third - la) / (lb - la)
-    if not (np.isfinite(ratio) and ratio.imag != 0):
-        return False  # on one line: Im L between la and lb is monotonic
-    centre = la + (lb - la) * (ratio - abs(ratio) ** 2) / (2j * ratio.imag)
-    radius = abs(la - centre)
-    side = np.sign(la.imag)
-    if side * centre.imag - radius > DIP_SLACK * radius:
-        return False  # the circle stays on the side of the ends
-    leftmost = centre.real - np.sqrt(max(radius**2 - centre.imag**2, 0.0))
-    if leftmost > DIP_SLACK * radius:
-        return False  # it would cross the real axis at Re L > 0 only: no phase crossover
-    turn = functools.partial(_turn, centre)
-    extreme = centre - 1j * side * radius
-    if turn(la, third) < turn(la, lb):  # the arc from la to lb without third runs clockwise
-        return turn(lb, extreme) <= turn(lb, la)
-    return turn(la, extreme) <= turn(la, lb)
-
-
-def _turn(centre: complex, start: complex, end: complex) -> float:
-    """The counter-clockwise angle about ``centre`` from ``start`` to ``end`` in [0, 2π)."""
-    return float(np.angle((end - centre) / (start - centre)) % (2.0 * np.pi))
-
-
-def _circle(l1: complex, l2: complex, l3: complex) -> tuple[complex, float] | None:
-    """Centre and radius of the circle through three values of L (None when on one line)."""
-    ratio = (l3 - l1) / (l2 - l1) if l2 != l1 else np.nan
-    if not (np.isfinite(ratio) and ratio.imag != 0):
-        return None
-    centre = l1 + (l2 - l1) * (ratio - abs(ratio) ** 2) / (2j * ratio.imag)
-    return centre, float(abs(l1 - centre))
-
-
-def _predicted_extreme(points: Sequence[tuple[float, complex]], side: float) -> tuple[float, complex, float] | None:
-    """From L at three ``points`` (x = ln ω, L): the x where the Möbius map x ↦ L through them
-    (a lightly damped mode's L about its resonance, x = ln ω, up to the cube of x − ln ω_r)
-    reaches its circle's extreme point toward −``side``, that point and the circle's radius;
-    None when the points lie on one line or the prediction is not finite."""
-    (x1, l1), (x2, l2), (x3, l3) = points
-    circle = _circle(l1, l2, l3)
-    if circle is None:
-        return None
-    centre, radius = circle
-    extreme = centre - side * radius * 1j
-    with np.errstate(all="ignore"):  # cross-ratio: L1 -> 0, L2 -> 1, L3 -> inf and the same in x
-        z = ((extreme - l1) * (l2 - l3) / ((extreme - l3) * (l2 - l1))).real
-        k = (x2 - x1) / (x2 - x3)
-        x = (x1 - z * k * x3) / (1.0 - z * k)
-    return (float(x), extreme, radius) if np.isfinite(x) else None
-
-
-def dip_crossovers(a: float, b: float, la: complex, lb: complex, c: float, lc: complex) -> Refinement:
-    """The two crossings of the real axis of a dip of L between ``a`` and ``b`` [rad/s] (where
-    L is ``la``, ``lb``, Im L of one sign; ``c``, ``lc`` a third frequency beside the part and
-    L there). The circle of a lightly damped mode is the image of the frequency axis under a
-    Möbius map in x = ln ω (L = A + B/(1 − i(x_r − x)/ζ) near the resonance, module
-    docstring), which three points fix: L is evaluated where the map through the three points
-    nearest the lowest Im L found (toward the other sign) reaches its circle's extreme point
-    toward the other sign (:func:`_predicted_extreme`), or, where that lies outside their
-    bracket, at the golden section of the bracket's larger half. At the first point across
-    the axis the part is split and both crossings are refined (:func:`illinois_root`, 1e-8 ω
-    relative). The search stops without a crossing when the extreme of the map refitted
-    through the new point and its neighbours (or, outside the bracket, the lowest point) stays
-    on its side by more than :data:`DIP_CONFIRM` times the error of the previous map's Im L at
-    the new point, or when the bracket is 1e-8 in ln ω wide (a dip narrower is not resolved).
-    On a single mode's circle the first point lands on the extreme and the refit confirms it
-    (one evaluation); where the map fits badly (another mode, a varying background) the
-    golden steps narrow the bracket until it fits. Returns the crossings' (ω, L(iω)), none
-    when no point crosses; a point exactly on the axis is returned alone (a circle touching
-    it). Every crossing returned is bracketed by a change of sign of the loop's own Im L: none
-    is spurious; a dip the search steps past (two extrema of Im L in a bracket the map does not
-    follow) can be missed."""
-    side = float(np.sign(la.imag))
-    known = sorted([(float(np.log(a)), la), (float(np.log(b)), lb)], key=lambda point: point[0])
-    fit = [known[0], known[1], (float(np.log(c)), lc)]
-    lo, best, hi = known[0], known[0] if side * la.imag <= side * lb.imag else known[1], known[1]
-    while hi[0] - lo[0] > 1e-8:
-        predicted = _predicted_extreme(fit, side)
-        if predicted is not None and lo[0] < predicted[0] < hi[0] and predicted[0] != best[0]:
-            x = predicted[0]
-        elif best[0] - lo[0] >= hi[0] - best[0]:  # the golden section of the larger half
-            x = best[0] - (1.0 - _GOLDEN) * (best[0] - lo[0])
-        else:
-            x = best[0] + (1.0 - _GOLDEN) * (hi[0] - best[0])
-        with np.errstate(all="ignore"):
-            model = _mobius(fit, x)
-        lx = yield float(np.exp(x))
-        if side * lx.imag <= 0:
-            return (yield from _split(known, x, lx))
-        known.append((x, lx))
-        known.sort(key=lambda point: point[0])
-        i = min(range(len(known)), key=lambda n: side * known[n][1].imag)
-        best = known[i]
-        i = min(max(i, 1), len(known) - 2)
-        lo, hi = known[i - 1], known[i + 1]
-        fit = [lo, known[i], hi]
-        refit = _predicted_extreme(fit, side)
-        if refit is not None and lo[0] < refit[0] < hi[0]:
-            margin = side * refit[1].imag
-        else:  # on the refitted circle Im L is monotonic about the bracket: its lowest point is known
-            margin = side * best[1].imag
-        if margin > DIP_CONFIRM * abs(lx.imag - model.imag):
-            return []
-        if best is not known[i]:  # the lowest point is an end: bracket it with its neighbour
-            lo, hi = (known[0], known[1]) if best is known[0] else (known[-2], known[-1])
-    return []
-
-
-def _split(known: list[tuple[float, complex]], x: float, lx: complex) -> Refinement:
-    """The two crossings each side of a point ``x`` (ln ω, L there ``lx``) across the axis,
-    bracketed by the nearest ``known`` points (ln ω, L; on the other side)."""
-    m = float(np.exp(x))
-    if lx.imag == 0:
-        return [(m, lx)]
-    below = max((point for point in known if point[0] < x), key=lambda point: point[0])
-    above = min((point for point in known if point[0] > x), key=lambda point: point[0])
-    low, high = float(np.exp(below[0])), float(np.exp(above[0]))
-    first = yield from illinois_root(_imag, low, m, below[1], lx, 1e-8 * low)
-    second = yield from illinois_root(_imag, m, high, lx, above[1], 1e-8 * m)
-    return [first, second]
+    return tasks + dip_searches(w, L, peaks, at_peaks)
 
 
 def _imag(value: complex) -> float:
