@@ -9,8 +9,9 @@ datasheet X_c = 1.5 GPa exceeds its Budiansky-Fleck (1993) kink-band strength
 closed-surface bound sqrt(F11 F22) of either X_c) has the opposite sign of the default.
 
 Under the biaxial compression σ1 = σ2 = −40 MPa, τ12 = 2 MPa the Tsai-Wu safety factor is
-the positive root of a R² + b R − 1 = 0 (Jones, *Mechanics of Composite Materials*, 2nd ed.,
-1999, eq. 2.159 scaled by R; Tsai & Hahn 1980) with F1 = 1/X_t − 1/X_c, F11 = 1/(X_t X_c),
+the positive root of a R² + b R − 1 = 0 (the criterion F(R σ) = 1 as :mod:`flexshaft.strength`
+states it after Jones 1999, eq. 2.159, and Tsai & Hahn 1980, solved here by the textbook
+quadratic formula) with F1 = 1/X_t − 1/X_c, F11 = 1/(X_t X_c),
 F2, F22 likewise, F66 = 1/S², a = F11 σ1² + F22 σ2² + F66 τ12² + 2 F12 σ1 σ2, b = F1 σ1 + F2 σ2,
 typed here from those formulas with X_c = σ_c; with the default F12 instead the factor
 is 11 % larger. Tolerance: the textbook quadratic formula against the code's cancellation-free

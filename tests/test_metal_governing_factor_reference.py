@@ -3,8 +3,9 @@
 A pinned aluminium tube (S_y = 276 MPa, S_ut = 310 MPa, S_e = 100 MPa) under a static axial
 compression F_x = −5 kN at its free end, no imbalance response: a uniform mean stress
 σ_m = |F_x|/A on every fibre, A = π(D_o² − D_i²)/4, no alternating stress, beside the mean hoop
-stress σ_θ = ρ Ω² r_m² of a thin ring (r_m = (D_o − t)/2). With no alternation, Shigley
-(Budynas & Nisbett, 10th ed., 2015) eqs. 7-7 and 7-16 give the same von Mises stress
+stress σ_θ = ρ Ω² r_m² of a thin ring (r_m = (D_o − t)/2). With no alternation, the DE-Goodman
+and first-cycle yield forms of Shigley (Budynas & Nisbett, 10th ed., 2015) eqs. 7-7 and 7-16, as
+the module's docstring and tests/test_metal_strength_reference.py state them, give the same von Mises stress
 σ' = √(σ_m² + σ_m σ_θ + σ_θ²) (a compression beside a tensile hoop stress) for both checks:
 n_f = S_ut/σ' (DE-Goodman with σ_a' = 0) and n_y = S_y/σ' (first-cycle yield). Since
 S_y < S_ut, yield governs: the factor drawn along the shaft is n_y = S_y/σ' at every element

@@ -1,7 +1,9 @@
 """The design file's ply refused exactly on its positive-definiteness bounds, not only beyond them.
 
-Jones, *Mechanics of Composite Materials*, 2nd ed. (1999), restrictions on the elastic constants
-of an orthotropic material: the compliance is positive definite only when
+Restrictions on the elastic constants of an orthotropic material (as quoted from Jones,
+*Mechanics of Composite Materials*, 2nd ed., 1999, in tests/test_lamina_and_layup_reference.py;
+Δ is the determinant of the normal compliance times E_1 E_2 E_3, derived): the compliance is
+positive definite only when
 
 * in the plane, 1 − ν_12 ν_21 > 0, i.e. |ν_12| < sqrt(E_1/E_2) (with ν_21 = ν_12 E_2/E_1);
 * in three dimensions, Δ = 1 − ν_12ν_21 − ν_23ν_32 − ν_31ν_13 − 2ν_21ν_32ν_13 > 0.
