@@ -1,0 +1,63 @@
+"""A resonance is held by a found peak only within its own half-power band Re Ω ± |Im Ω|.
+
+:func:`flexshaft.analyses.criticals._hidden_resonances` seeds a refinement at each root Ω_k of
+the synchronous problem that no peak found holds, "none within its half-power band
+Re Ω_k ± |Im Ω_k|" (its docstring), and records |Im Ω_k| as the seed's width.
+
+Reference (closed form): the Jeffcott-like rotor of tests/rotors.py with a dashpot
+c = 2ζ m ω_n at the disk (ζ = 0.002, no loss) under a forward imbalance u (1, −i) at the disk.
+Its response is one circular whirl, so the span of the scan's responses is one vector and the
+projected synchronous problem is the single-degree-of-freedom k − mΩ² + i c Ω = 0, whose root
+with Re > 0 is Ω = (i c + √(4 m k − c²))/(2m) = ω_n (√(1 − ζ²) + i ζ): half-power half-width
+|Im Ω| = ζ ω_n (derived: |k − mΩ² + icΩ|² doubles from its minimum at Ω ≈ ω_n(1 ± ζ) to
+first order in ζ), centre Re Ω = ω_n √(1 − ζ²). On a scan of spacing 0.01 ω_n the band
+(0.004 ω_n wide) spans fewer than four intervals, so the root is a candidate. A damped peak
+"found" 1.5 ζ ω_n from Re Ω is outside that band: the root is seeded, with width ζ ω_n at
+Re Ω (the projected orbit's largest sample of Re Ω + ζω_n (0, ±0.5, ±1, ±2); the peak
+Ω_p = ω_n/√(1 − 2ζ²) lies 6e-6 ω_n from the centre); one found 0.5 ζ ω_n away holds it.
+Tolerance: the tube's mass, 3.5e-6 of the disk's, shifts ω_n and ζ by about that (ω_n by 9e-7
+here): rtol 1e-4 on the width, 1e-5 on the speed, far below the grid's 0.5 ζ = 1e-3 relative.
+CPU: 3 banded solves and a 1-column projection, a few milliseconds.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from rotors import M_DISK, WN, disk_dofs, jeffcott
+
+from flexshaft.analyses.criticals import LateralCritical, _hidden_resonances
+from flexshaft.analyses.peak_projection import PeakBasis
+from flexshaft.analyses.response import imbalance_response
+
+ZETA = 0.002
+CENTRE, HALF_WIDTH = WN * np.sqrt(1 - ZETA**2), ZETA * WN
+
+
+@pytest.fixture(scope="module")
+def setting():
+    model = jeffcott(0.0, 2 * ZETA * M_DISK * WN)
+    v, w = disk_dofs(model)
+    loads = np.zeros((model.dofs.size, 1), complex)
+    loads[v, 0], loads[w, 0] = 1e-4, -1e-4j  # forward imbalance u = 1e-4 kg m
+    speeds = np.linspace(0.5, 1.5, 101) * WN  # spacing 0.01 ω_n
+    columns = np.asarray(imbalance_response(model, speeds[[10, 50, 90]], loads))[model.dofs.free, 0, :]
+    return model, loads, speeds, PeakBasis(model, columns)
+
+
+def _found(offset: float) -> list[LateralCritical]:
+    return [LateralCritical(CENTRE + offset * HALF_WIDTH, 1.0 / (2 * ZETA), {"af_method": "half-power"})]
+
+
+def test_a_peak_outside_the_half_power_band_leaves_the_root_seeded(setting):
+    model, loads, speeds, span = setting
+    (seed,) = _hidden_resonances(model, loads, speeds, None, _found(1.5), span)
+    assert seed.width == pytest.approx(HALF_WIDTH, rel=1e-4)
+    assert seed.speed == pytest.approx(CENTRE, rel=1e-5)  # the grid's next sample is 1e-3 away
+    assert seed.replaces is None
+
+
+def test_a_peak_inside_the_half_power_band_holds_the_root(setting):
+    model, loads, speeds, span = setting
+    assert _hidden_resonances(model, loads, speeds, None, _found(0.5), span) == []
+    assert _hidden_resonances(model, loads, speeds, None, _found(-0.5), span) == []
