@@ -233,3 +233,42 @@ def test_a_shallow_dip_on_a_background_the_circle_does_not_fit(eps, slope, secon
     true = _dense_upper_margin(loop, WR)
     assert 5.5 < true < 6.5  # a dip, with Re L < 0, below 6.5 dB
     assert abs(loop_margins(loop, grid).gain_margin_upper_db - true) < 1e-4
+
+
+def test_a_clean_circle_whose_dip_lies_beyond_the_peaks_band_is_found():
+    """A single mode's clean circle (ζ = 0.02, no background) of radius r = 0.3 and centre
+    c = −0.85 + 0.294i, entered at θ = 2.793 (b = 2r e^{iθ}, a + iε = c − b/2): it dips 0.006
+    (2 % of r) across the axis at u = 1.1604 and 1.7838 (the closed form of the module
+    docstring with this ζ), Re L = −0.90970 and −0.79030: an upper gain margin of
+    20 log₁₀(1/0.90970) = 0.8220 dB, at 97.706 and 96.496 Hz. The grid is the coarse one plus
+    the three samples loop_grid places at a closed-loop pole (its frequency and ± half its decay
+    rate; the pole from (1 + a + iε)(s² + 2ζω_r s + ω_r²) + 2bζω_r s = 0), at 98.17-98.34 Hz:
+    the sensitivity peak (|S| = 33.3 at 98.25 Hz) lies more than three of its half widths
+    above the dip, whose grid interval (93.29-97.71 Hz) only the extra interval beyond that band
+    reaches. (An independent review found it read as no crossover when the band stopped at the
+    intervals touching it.) Tolerance: |dL/d ln ω| ≤ |b|/(2ζ) = 15 here, so the refined
+    crossings' 1e-8 brackets put |L| within 1.5e-7 and the margin within 2e-6 dB; 1e-4 dB
+    asserted, the frequencies to 2e-8 relative."""
+    zeta, r, theta, c = 0.02, 0.3, 2.793, -0.85 + 0.294j
+    b = 2 * r * np.exp(1j * theta)
+    a_eps = c - b / 2
+
+    def loop(w):
+        return a_eps + b * 2j * zeta * WR * w / (WR * WR - w * w + 2j * zeta * WR * w)
+
+    u = np.roots([a_eps.imag, b.real, a_eps.imag + b.imag])
+    u = np.sort(u[np.isreal(u)].real)
+    real = a_eps.real + (b.real - b.imag * u) / (1 + u * u)
+    w = -zeta * WR * u + np.sqrt((zeta * WR * u) ** 2 + WR * WR)
+    assert u == pytest.approx([1.16044545, 1.78384719], abs=1e-7)
+    assert real == pytest.approx([-0.90969925, -0.79030075], abs=1e-7)
+    gm = 20 * np.log10(1 / abs(real[0]))
+    s = np.roots([1, 2 * zeta * WR * (1 + b / (1 + a_eps)), WR * WR])
+    s = s[np.argmax(s.imag)]
+    grid = np.unique(np.append(GRID, s.imag - s.real * np.array([-0.5, 0.0, 0.5])))
+    k = np.searchsorted(grid, w[0])
+    assert grid[k - 1] < w.min() and w.max() < grid[k]  # one grid interval holds both crossings
+    m = loop_margins(loop, grid)
+    assert m.peak_sensitivity > 30 and m.peak_frequency > 98.2  # the peak, far above the dip
+    assert abs(m.gain_margin_upper_db - gm) < 1e-4
+    assert m.phase_crossovers == pytest.approx(np.sort(w) / (2 * np.pi), rel=2e-8)
