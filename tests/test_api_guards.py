@@ -278,12 +278,22 @@ def test_an_ambient_beyond_the_air_properties_is_refused_by_the_schema():
     for value in (400.0, 177.0, -74.0):
         with pytest.raises(DesignError, match=r"thermal.ambient_temperature_c: .*allowed: \[-73, 176\] degC"):
             variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
+
+    def law(data: dict, value: float) -> None:  # the assumed law: no table to cover the air
+        for material in data["materials"].values():
+            material.pop("temperature_table", None)
+        data["envelope"] = None
+        data["thermal"].update(ambient_temperature_c=value)
+
     for value in (176.0, -73.0):  # the limits themselves are evaluated
-        design = variant("baseline", lambda d, v=value: d["thermal"].update(ambient_temperature_c=v))
-        assert thermal_guards(design) == []
-    # at 176 °C the envelope's hot-soak point parks the shaft at 130 °C, beyond the lamina's
-    # table (-60 to 120 °C): `run` refuses it there, and so does `check` (the envelope's problems)
+        assert thermal_guards(variant("baseline", lambda d, v=value: law(d, v))) == []
+    # at 176 °C the sunlit hover air (156.6 °C) lies beyond the lamina's table (-60 to 120 °C),
+    # where the self-heating starts and refuses the ply (the table is not extrapolated): the
+    # preflight says so, naming the table; the envelope's hot-soak point parks the shaft at
+    # 130 °C, beyond it too: `run` refuses it there, and so does `check` (the envelope's problems)
     hot = variant("baseline", lambda d: d["thermal"].update(ambient_temperature_c=176.0))
+    assert [p.path for p in thermal_guards(hot)] == ["materials.t700_adiprene.temperature_table.temperature_c"]
+    assert thermal_guards(variant("baseline", lambda d: d["thermal"].update(ambient_temperature_c=-73.0))) == []
     assert [p.path for p in envelope_problems(hot)] == ["envelope.points[2]"]
     assert "'hot_soak_start'" in envelope_problems(hot)[0].message
 

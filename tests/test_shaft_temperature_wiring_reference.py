@@ -5,23 +5,27 @@ References, each typed here:
 
 * the discrete maximum principle: a conducting, convecting wall with no heat source has no
   interior extremum, so its hottest node is its hotter Dirichlet end (ends at 300 K and 320 K
-  in air at 300 K: the maximum is 320 K = 46.85 °C, 0 °C = 273.15 K by definition);
+  in air at 300 K: the maximum is 320 K = 46.85 °C, 0 °C = 273.15 K by definition), whichever
+  end it is (the fore end hot as well as the aft one: the hottest node, not the last);
 * without a tailboom the shaft's air is the ambient (the docstrings of ``shaft_air_temperature``
   and of the envelope's step 2), not the sky's radiative temperature;
 * the hover boom's skin balance, as tests/test_boom_energy_balance_reference.py types it (thesis
   eq. 2.55) alpha_s G s = eps sigma (T^4 - T_sky^4) + h (T - T_amb), G = S_c f cos(theta_s), at the
   momentum-theory downwash V = sqrt(m g / (2 rho pi R^2)), with the correlation the options name:
-  Hilpert's Nu_D = C Re^m Pr^(1/3), C = 0.027, m = 0.805 (the 4e4-4e5 row that file types; the
-  baseline boom's Re = 5.3e5 takes that last row, as flexshaft.thermal.correlations documents),
-  or Churchill & Bernstein's (1977) cross-flow form
+  Hilpert's Nu_D = C Re^m Pr^(1/3) (Incropera & DeWitt, Fundamentals of Heat and Mass Transfer,
+  eq. 7.52 with Table 7.2), C = 0.027, m = 0.805 (the 4e4-4e5 row that file types; the baseline
+  boom's Re = 5.3e5 takes that last row, as flexshaft.thermal.correlations documents), or
+  Churchill & Bernstein's (1977) cross-flow form (ibid. eq. 7.54)
   Nu_D = 0.3 + 0.62 Re^(1/2) Pr^(1/3) / [1 + (0.4/Pr)^(2/3)]^(1/4) [1 + (Re/282000)^(5/8)]^(4/5)
   (air properties from flexshaft.thermal.air at the film temperature, tested against tables
   elsewhere); the balance's slope in T is < 100 W/(m^2 K) and the code solves T to 1e-10 K, so
   it closes to 1e-8 of the absorbed flux; the other correlation puts the skin 5 K away (317.3 K
   against 322.3 K), far outside it;
 * the envelope's points as the baseline design lists them, in order (cold_day, standard_day,
-  hot_soak_start), the hot-soak start's material temperature the parked boom's (thesis Table 2.1:
-  89 °C parked, as tests/test_thermal.py states and calibrates);
+  hot_soak_start), the hot-soak start's material temperature the parked boom's: the thesis's
+  Table 2.1 finding of 89 °C parked, stated to the degree (±0.5 °C), to which the baseline's
+  sunlit share is calibrated (tests/test_thermal.py); the hover skin (Table 2.1: 44 °C) or the
+  ambient (25.6 °C) in its place is 45 K or 63 K away;
 * a given air temperature is the shaft's end temperature (Dirichlet ends at T_infinity, docs
   of ``self_heating``): the ends come back at exactly it;
 * an isotropic (metal) segment keeps its own E and G at any temperature (the matrix law acts
@@ -47,20 +51,21 @@ from flexshaft.thermal.envelope import envelope_conditions
 from flexshaft.thermal.matrix import MatrixTemperatureLaw
 from flexshaft.thermal.options import thermal_options
 from flexshaft.thermal.shaft import solve_shaft_temperature
-from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperature
+from flexshaft.thermal.tailboom import boom_equivalent_diameter
 
 SIGMA = 5.670374419e-8  # W/(m^2 K^4), CODATA 2018
 G0 = 9.80665
 
 
-def no_heat_wall() -> ShaftThermal:
+def no_heat_wall(ends: tuple[float, float]) -> ShaftThermal:
     x = np.linspace(0.0, 2.0, 21)
-    temp = solve_shaft_temperature(x, np.zeros(20), 5.0, 1e-4, 0.2, 10.0, 300.0, (300.0, 320.0))
+    temp = solve_shaft_temperature(x, np.zeros(20), 5.0, 1e-4, 0.2, 10.0, 300.0, ends)
     return ShaftThermal(None, temp, None, 5.0)  # type: ignore[arg-type]
 
 
-def test_the_hottest_point_of_a_sourceless_wall_is_its_hot_end_in_kelvin_and_celsius():
-    thermal = no_heat_wall()
+@pytest.mark.parametrize("ends", [(300.0, 320.0), (320.0, 300.0)], ids=["aft-hot", "fore-hot"])
+def test_the_hottest_point_of_a_sourceless_wall_is_its_hot_end_in_kelvin_and_celsius(ends):
+    thermal = no_heat_wall(ends)
     assert thermal.max_temperature == pytest.approx(320.0, rel=1e-12)
     assert thermal.max_temperature_c == pytest.approx(46.85, rel=1e-12)
     result = selfheating.SelfHeating("converged", np.full(20, 305.0), thermal, 1, 373.15, np.array([320.0]))
@@ -112,12 +117,9 @@ def test_every_envelope_point_is_evaluated_in_order_and_the_hot_soak_is_the_park
     conditions = envelope_conditions(design)
     assert [c.name for c in conditions] == ["cold_day", "standard_day", "hot_soak_start"]
     hot = conditions[-1]
-    parked = tailboom_temperature(
-        "parked", boom_equivalent_diameter(design.tailboom), thermal_options(design.thermal).environment
-    )
-    assert hot.material_temperature == pytest.approx(parked.temperature, rel=1e-12)
+    assert hot.material_temperature_c == pytest.approx(89.0, abs=0.5)  # thesis Table 2.1, parked
+    assert hot.material_temperature == pytest.approx(89.0 + 273.15, abs=0.5)
     assert hot.material_temperature == max(c.material_temperature for c in conditions)
-    assert hot.material_temperature_c > 80.0  # the 89 °C parked boom of tests/test_thermal.py
 
 
 def test_a_given_air_temperature_is_the_shaft_ends_temperature():

@@ -16,6 +16,13 @@ first, cheaply, and returns the problems, each naming the fields that set it:
   below the air, which the self-heating never reaches (it stops at once as a runaway), is
   checked too: a law that makes the ply invalid at the matrix's own allowable contradicts the
   material data, whatever the air.
+* a lamina's own temperature table, which replaces the law for it as in every analysis
+  (:func:`~flexshaft.thermal.matrix.matrix_law_for`): the table is not extrapolated, so it
+  must cover the self-heating's range (the schema makes it reach the allowable; the shaft's
+  air may lie below its first row), and the ply must stay valid at the range's ends and at
+  every row inside it. Between rows E_T and E_L are log-linear in T, so ν_LT² E_T/E_L is
+  monotone there and the ends and the rows bound it; the moduli stay positive by
+  construction.
 
 With :func:`flexshaft.analyses.preflight.model_guards` (the model's build checks and the solves
 every command starts from) it is what ``flexshaft check`` needs so that a design it accepts
@@ -50,6 +57,7 @@ def thermal_guards(design: Any) -> list[Problem]:
     from flexshaft.laminate import Lamina, Laminate, equivalent_moduli
     from flexshaft.thermal.air import AIR_TEMPERATURE_RANGE
     from flexshaft.thermal.analysis import shaft_air_temperature
+    from flexshaft.thermal.matrix import matrix_law_for
     from flexshaft.thermal.options import thermal_options
     from flexshaft.thermal.tailboom import boom_equivalent_diameter, tailboom_temperatures
 
@@ -71,11 +79,11 @@ def thermal_guards(design: Any) -> list[Problem]:
                 f"{low:g}-{high:g} K where the air properties are evaluated ({', '.join(_ENVIRONMENT)})",
             )
         ]
-    law = options.matrix_law
     problems = []
     for name, material in design.materials.items():
         if material.kind != "lamina" or not _used(design, name):
             continue
+        law = matrix_law_for(material, options.matrix_law)
         lamina = Lamina.from_loss_factors(
             E_L=material.E_L,
             E_T=material.E_T,
@@ -86,10 +94,36 @@ def thermal_guards(design: Any) -> list[Problem]:
             loss_E_T=material.loss_E_T,
             loss_G_LT=material.loss_G_LT,
         )
-        for temperature in sorted({min(air, law.allowable_temperature), max(air, law.allowable_temperature)}):
+        ends = sorted({min(air, law.allowable_temperature), max(air, law.allowable_temperature)})
+        temperatures = ends
+        if law.table is not None:
+            rows = law.table.temperatures
+            field = f"materials.{name}.temperature_table"
+            if not (rows[0] <= ends[0] and ends[-1] <= rows[-1]):
+                problems.append(
+                    Problem(
+                        f"{field}.temperature_c",
+                        f"must cover the self-heating's range {ends[0]:.6g}-{ends[-1]:.6g} K (the shaft's air and "
+                        f"the allowable temperature) for material {name!r}; the table runs from {rows[0]:.6g} to "
+                        f"{rows[-1]:.6g} K and is not extrapolated ({', '.join(_ENVIRONMENT)} set the air)",
+                    )
+                )
+                continue
+            temperatures = sorted({*ends, *(t for t in rows if ends[0] < t < ends[-1])})
+        for temperature in temperatures:
             try:
                 equivalent_moduli(Laminate(np.array([0.0]), np.array([1.0]), law.lamina(lamina, temperature)))
             except ValueError as error:
+                if law.table is not None:
+                    problems.append(
+                        Problem(
+                            f"materials.{name}.temperature_table",
+                            f"makes material {name!r} an invalid ply at {temperature:.6g} K, within the "
+                            f"self-heating's range {ends[0]:.6g}-{ends[-1]:.6g} K (the shaft's air and the allowable "
+                            f"temperature): {error}",
+                        )
+                    )
+                    break
                 problems.append(
                     Problem(
                         "thermal.matrix_reference_temperature_c",
