@@ -6,18 +6,29 @@ Re Ω_k ± |Im Ω_k|" (its docstring), and records |Im Ω_k| as the seed's width
 
 Reference (closed form): the Jeffcott-like rotor of tests/rotors.py with a dashpot
 c = 2ζ m ω_n at the disk (ζ = 0.002, no loss) under a forward imbalance u (1, −i) at the disk.
-Its response is one circular whirl, so the span of the scan's responses is one vector and the
-projected synchronous problem is the single-degree-of-freedom k − mΩ² + i c Ω = 0, whose root
+Its response is one circular whirl, so the span of the scan's responses is one vector (to
+5e-10, below) and the projected synchronous problem is the single-degree-of-freedom
+k − mΩ² + i c Ω = 0, whose root
 with Re > 0 is Ω = (i c + √(4 m k − c²))/(2m) = ω_n (√(1 − ζ²) + i ζ): half-power half-width
 |Im Ω| = ζ ω_n (derived: |k − mΩ² + icΩ|² doubles from its minimum at Ω ≈ ω_n(1 ± ζ) to
 first order in ζ), centre Re Ω = ω_n √(1 − ζ²). On a scan of spacing 0.01 ω_n the band
 (0.004 ω_n wide) spans fewer than four intervals, so the root is a candidate. A damped peak
-"found" 1.5 ζ ω_n from Re Ω is outside that band: the root is seeded, with width ζ ω_n at
-Re Ω (the projected orbit's largest sample of Re Ω + ζω_n (0, ±0.5, ±1, ±2); the peak
-Ω_p = ω_n/√(1 − 2ζ²) lies 6e-6 ω_n from the centre); one found 0.5 ζ ω_n away holds it.
-Tolerance: the tube's mass, 3.5e-6 of the disk's, shifts ω_n and ζ by about that (ω_n by 9e-7
-here): rtol 1e-4 on the width, 1e-5 on the speed, far below the grid's 0.5 ζ = 1e-3 relative.
-CPU: 3 banded solves and a 1-column projection, a few milliseconds.
+"found" 1.1 ζω_n from Re Ω (either side) is outside that band: the root is seeded, with width
+ζω_n at Re Ω (the projected orbit's largest sample of Re Ω + ζω_n (0, ±0.5, ±1, ±2); the peak
+Ω_p = ω_n/√(1 − 2ζ²) lies 6e-6 ω_n from the centre); one found 0.9 ζω_n above it holds it.
+The offsets sit 0.1 ζω_n either side of the band's edge, so a hold comparison scaled by 0.8
+or 1.2 fails one of the tests.
+
+Model's departure from the closed form: the tube's mass, 3.5e-6 of the disk's, shifts ω_n and
+ζ by about that: measured, the projected root lies 4.3e-4 ζω_n (9e-7 ω_n) below the closed
+form's Re Ω and its |Im Ω| is 1.7e-6 below ζω_n, both far inside the 0.1 ζω_n margin. The
+projected problem (three responses, their span's second direction 5e-10 of the first) also
+has a second root of the same width 0.093 ζω_n above the first: it is held with the first
+(0.81 ζω_n from the peak found at +0.9) and, within the first seed's band, not seeded twice;
+a peak found 0.9 ζω_n *below* is left out, 0.993 ζω_n from that second root, too near its
+band's edge to assert on any machine. Tolerance: rtol 1e-4 on the width, 1e-5 on the speed,
+far below the grid's 0.5 ζ = 1e-3 relative. CPU: 3 banded solves and a 3-column projection, a
+few milliseconds per call.
 """
 
 from __future__ import annotations
@@ -51,13 +62,13 @@ def _found(offset: float) -> list[LateralCritical]:
 
 def test_a_peak_outside_the_half_power_band_leaves_the_root_seeded(setting):
     model, loads, speeds, span = setting
-    (seed,) = _hidden_resonances(model, loads, speeds, None, _found(1.5), span)
-    assert seed.width == pytest.approx(HALF_WIDTH, rel=1e-4)
-    assert seed.speed == pytest.approx(CENTRE, rel=1e-5)  # the grid's next sample is 1e-3 away
-    assert seed.replaces is None
+    for offset in (1.1, -1.1):
+        (seed,) = _hidden_resonances(model, loads, speeds, None, _found(offset), span)
+        assert seed.width == pytest.approx(HALF_WIDTH, rel=1e-4)
+        assert seed.speed == pytest.approx(CENTRE, rel=1e-5)  # the grid's next sample is 1e-3 away
+        assert seed.replaces is None
 
 
 def test_a_peak_inside_the_half_power_band_holds_the_root(setting):
     model, loads, speeds, span = setting
-    assert _hidden_resonances(model, loads, speeds, None, _found(0.5), span) == []
-    assert _hidden_resonances(model, loads, speeds, None, _found(-0.5), span) == []
+    assert _hidden_resonances(model, loads, speeds, None, _found(0.9), span) == []

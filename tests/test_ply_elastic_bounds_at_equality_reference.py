@@ -10,13 +10,15 @@ positive definite only when
 
 The inequalities are strict: on the bound the compliance is singular (Δ = 0), a ply with a
 zero-energy strain, so a design at the bound must be refused like one beyond it. The numbers
-are chosen so that every quantity is exact in binary floating point (ratios of powers of two),
-so "at the bound" is exactly at it, and Δ is checked to be 0 in exact rational arithmetic
-(:class:`fractions.Fraction`) before the ply is built:
+are chosen so that every quantity, and every intermediate of the module's bound arithmetic, is
+a binary floating-point number, so "at the bound" is exactly at it; the bounds are derived
+here in exact rational arithmetic (:class:`fractions.Fraction`), Δ = 0 is checked there, and
+the float given to the ply is asserted equal to the exact value:
 
-* ν_23 bound of a transversely isotropic ply (ν_13 = ν_12 = ν_LT, ν_32 = ν_23): E_L = 128 GPa,
-  E_T = 8 GPa, ν_LT = 1/4 give ν_TL = 1/64 and Δ = (1 + ν_23)(1 − ν_23 − 2 ν_LT ν_TL) = 0 at
-  ν_23 = 1 − 1/128 = 127/128, i.e. G_23 = E_T/(2 (1 + ν_23)) = E_T/(255/64);
+* ν_23 bound of a transversely isotropic ply (ν_13 = ν_12 = ν_LT, ν_32 = ν_23): E_T = 255·2²⁵
+  Pa, E_L = 16 E_T, ν_LT = 1/4 give ν_TL = ν_LT E_T/E_L = 1/64 and Δ = (1 + ν_23)(1 − ν_23 −
+  2 ν_LT ν_TL) = 0 at ν_23 = 1 − 1/128 = 127/128, i.e. G_23 = E_T/(2 (1 + ν_23)) =
+  E_T/(4 (1 − ν_LT ν_TL)) = 64 E_T/255 = 2³¹ Pa;
 * ν_LT bound: E_L = 8 GPa, E_T = 32 GPa give sqrt(E_L/E_T) = 1/2, and ν_LT = 1/2 gives
   ν_TL = 2, 1 − ν_LT ν_TL = 0.
 
@@ -46,14 +48,19 @@ def _jones_determinant(nu_12: Fraction, nu_21: Fraction, nu_23: Fraction) -> Fra
 
 
 def test_g23_exactly_on_the_positive_definite_bound_is_refused():
-    E_L, E_T, nu_LT = 128.0e9, 8.0e9, 0.25
-    nu_TL = Fraction(1, 4) * Fraction(8, 128)
-    nu_23 = Fraction(127, 128)
-    assert _jones_determinant(Fraction(1, 4), nu_TL, nu_23) == 0  # singular compliance
-    G_23 = E_T / float(2 * (1 + nu_23))  # E_T / 3.984375, one rounding
+    E_T = Fraction(255 * 2**25)  # Pa
+    E_L, nu_LT = 16 * E_T, Fraction(1, 4)
+    nu_TL = nu_LT * E_T / E_L
+    assert nu_TL == Fraction(1, 64)
+    nu_23 = 1 - 2 * nu_LT * nu_TL
+    assert _jones_determinant(nu_LT, nu_TL, nu_23) == 0  # singular compliance
+    G_23 = E_T / (2 * (1 + nu_23))
+    assert G_23 == E_T / (4 * (1 - nu_LT * nu_TL)) == 2**31
+    assert Fraction(float(G_23)) == G_23 and Fraction(float(E_T)) == E_T  # exact in binary
     with pytest.raises(ValueError, match="G_23"):
-        _ply(E_L, E_T, nu_LT, G_23=G_23)
-    assert _ply(E_L, E_T, nu_LT, G_23=G_23 * (1.0 + 1e-9)).G_23 == G_23 * (1.0 + 1e-9)
+        _ply(float(E_L), float(E_T), float(nu_LT), G_23=float(G_23))
+    inside = float(G_23) * (1.0 + 1e-9)
+    assert _ply(float(E_L), float(E_T), float(nu_LT), G_23=inside).G_23 == inside
 
 
 def test_nu_lt_exactly_sqrt_el_over_et_is_refused():
