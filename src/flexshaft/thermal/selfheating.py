@@ -2,8 +2,9 @@
 
 The matrix properties follow the options' :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw`
 (E_T, G_LT soften and their loss factors grow with temperature; fibre properties fixed), or the
-temperature table of the model's shaft lamina when it has one (the table wins,
-:func:`~flexshaft.thermal.matrix.matrix_law_for`).
+temperature table of each element's own lamina when it has one (the table wins,
+:func:`~flexshaft.thermal.matrix.matrix_law_for`): a segment of another lamina than the
+``[shaft]``'s follows its own table, or the law without the ``[shaft]`` lamina's table.
 
 Fixed point, per element: each element e carries its own temperature T_e (mean of its nodes),
 hence its own lamina, laminate E*_e, G*_e and element stiffness. The model variant is the
@@ -115,12 +116,32 @@ def model_with_shaft_moduli(model: Model, youngs_moduli, shear_moduli) -> Model:
     return dataclasses.replace(model, K=K, shaft_loss_stiffness=scatter(Ke.imag, sdofs, n))
 
 
+def _element_laws(model: Model, law: MatrixTemperatureLaw, tubes: tuple) -> list[MatrixTemperatureLaw]:
+    """The matrix law of each element's tube (``tubes``, :func:`element_tubes`): ``law`` (the
+    ``[shaft]`` lamina's, its table attached) for the ``[shaft]``'s material; for a segment of
+    another lamina, ``law`` with that lamina's own table, or without any table."""
+    design = model.design
+    if design is None or len(model.segments) <= 1:
+        return [law] * len(tubes)
+    material = {id(segment.properties): segment.material for segment in model.segments}
+    others = dataclasses.replace(law, table=None)
+    laws = {design.shaft.material: law}
+    out = []
+    for tube in tubes:
+        name = material[id(tube)]
+        if name not in laws:
+            laws[name] = matrix_law_for(design.materials[name], others)
+        out.append(laws[name])
+    return out
+
+
 def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.ndarray):
     """Complex moduli (nel,) of each element's tube at its temperature: a laminated tube's from
-    the law's lamina, an isotropic tube's (a metal segment) unchanged."""
+    its law's lamina (:func:`_element_laws`), an isotropic tube's (a metal segment) unchanged."""
     tubes = element_tubes(model)
     if all(t.laminate is None for t in tubes):
         raise RefusedInputError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
+    laws = _element_laws(model, law, tubes)
     E = np.array([t.youngs_modulus for t in tubes], dtype=complex)
     G = np.array([t.shear_modulus for t in tubes], dtype=complex)
     rounded = np.round(np.asarray(temperatures, dtype=float), 6)
@@ -133,9 +154,14 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
         if key not in cache:
             try:
                 cache[key] = equivalent_moduli(
-                    Laminate(lam.angles, lam.thicknesses, law.lamina(lam.lamina, rounded[e]))
+                    Laminate(lam.angles, lam.thicknesses, laws[e].lamina(lam.lamina, rounded[e]))
                 )
             except ValueError as error:  # the law took the matrix beyond a valid ply
+                if laws[e].table is not None:
+                    raise RefusedInputError(
+                        f"the temperature table of the shaft's lamina gives no valid ply at {rounded[e]:.6g} K: "
+                        f"{error}; the lamina's [materials.<name>.temperature_table] sets it"
+                    ) from None
                 raise RefusedInputError(
                     f"the matrix temperature law gives no valid ply at {rounded[e]:.6g} K (reference "
                     f"{law.reference_temperature:.6g} K, θ_E {law.modulus_decay:g} K: E_T scaled by "
