@@ -71,6 +71,7 @@ __all__ = [
     "static_circular_amplitude",
     "shaft_loss_matrices",
     "shaft_stiffness_matrices",
+    "element_segments",
     "element_tubes",
     "thermal_stations",
     "element_amplitudes",
@@ -166,17 +167,25 @@ def static_circular_amplitude(X_static: np.ndarray) -> np.ndarray:
     return out
 
 
-def element_tubes(model: Model) -> tuple:
-    """The tube of every shaft element, (nel,) tuple of
-    :class:`~flexshaft.assembly.model.ShaftProperties`: its segment's (the ``[shaft]`` tube for
-    a one-piece shaft or a model without segments)."""
+def element_segments(model: Model) -> np.ndarray:
+    """The index in ``model.segments`` of every shaft element's segment, (nel,) int: the one
+    holding the element's midpoint (all 0 with at most one segment)."""
     ends = model.dofs.shaft_element_x
     segments = model.segments
     if len(segments) <= 1:
-        tube = segments[0].properties if segments else model.shaft
-        return (tube,) * len(ends)
+        return np.zeros(len(ends), dtype=int)
     zone = np.searchsorted([seg.x_end for seg in segments[:-1]], 0.5 * (ends[:, 0] + ends[:, 1]))
-    return tuple(segments[k].properties for k in zone)
+    return zone
+
+
+def element_tubes(model: Model) -> tuple:
+    """The tube of every shaft element, (nel,) tuple of
+    :class:`~flexshaft.assembly.model.ShaftProperties`: its segment's (:func:`element_segments`;
+    the ``[shaft]`` tube for a model without segments)."""
+    segments = model.segments
+    if not segments:
+        return (model.shaft,) * len(model.dofs.shaft_element_x)
+    return tuple(segments[k].properties for k in element_segments(model))
 
 
 def thermal_stations(model: Model) -> np.ndarray:

@@ -119,7 +119,7 @@ def thermal_options(thermal: Thermal, material=None) -> ThermalOptions:
 
     ``material``: the shaft's design-file material, whose temperature table (if any) the
     matrix law then carries (:func:`matrix_law_from`). The self-heating analysis attaches the
-    table of its model's shaft lamina in any case.
+    table of each element's own lamina in any case.
     """
     return ThermalOptions(
         environment=environment_from(thermal),

@@ -32,6 +32,7 @@ from flexshaft.laminate import Laminate, equivalent_moduli
 from flexshaft.thermal.analysis import ShaftThermal, shaft_air_temperature, shaft_thermal
 from flexshaft.thermal.heat import (
     LossModel,
+    element_segments,
     element_tubes,
     heat_sources,
     resolve_loss_model,
@@ -116,23 +117,22 @@ def model_with_shaft_moduli(model: Model, youngs_moduli, shear_moduli) -> Model:
     return dataclasses.replace(model, K=K, shaft_loss_stiffness=scatter(Ke.imag, sdofs, n))
 
 
-def _element_laws(model: Model, law: MatrixTemperatureLaw, tubes: tuple) -> list[MatrixTemperatureLaw]:
-    """The matrix law of each element's tube (``tubes``, :func:`element_tubes`): ``law`` (the
-    ``[shaft]`` lamina's, its table attached) for the ``[shaft]``'s material; for a segment of
-    another lamina, ``law`` with that lamina's own table, or without any table."""
+def _element_laws(model: Model, law: MatrixTemperatureLaw) -> tuple[list[MatrixTemperatureLaw], list[str | None]]:
+    """The matrix law of every shaft element and the name of its lamina (None without a design):
+    ``law`` (the ``[shaft]`` lamina's, its table attached) for an element of the ``[shaft]``'s
+    material; for a segment of another lamina, ``law`` with that lamina's own table, or without
+    any table (:func:`~flexshaft.thermal.heat.element_segments`)."""
+    nel = len(model.dofs.shaft_element_x)
     design = model.design
-    if design is None or len(model.segments) <= 1:
-        return [law] * len(tubes)
-    material = {id(segment.properties): segment.material for segment in model.segments}
+    if design is None or not model.segments:
+        return [law] * nel, [None] * nel
     others = dataclasses.replace(law, table=None)
     laws = {design.shaft.material: law}
-    out = []
-    for tube in tubes:
-        name = material[id(tube)]
+    names = [model.segments[k].material for k in element_segments(model)]
+    for name in names:
         if name not in laws:
             laws[name] = matrix_law_for(design.materials[name], others)
-        out.append(laws[name])
-    return out
+    return [laws[name] for name in names], list(names)
 
 
 def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.ndarray):
@@ -141,7 +141,7 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
     tubes = element_tubes(model)
     if all(t.laminate is None for t in tubes):
         raise RefusedInputError("self-heating needs a laminated (FMC) shaft; the model's shaft is isotropic")
-    laws = _element_laws(model, law, tubes)
+    laws, names = _element_laws(model, law)
     E = np.array([t.youngs_modulus for t in tubes], dtype=complex)
     G = np.array([t.shear_modulus for t in tubes], dtype=complex)
     rounded = np.round(np.asarray(temperatures, dtype=float), 6)
@@ -159,8 +159,8 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
             except ValueError as error:  # the law took the matrix beyond a valid ply
                 if laws[e].table is not None:
                     raise RefusedInputError(
-                        f"the temperature table of the shaft's lamina gives no valid ply at {rounded[e]:.6g} K: "
-                        f"{error}; the lamina's [materials.<name>.temperature_table] sets it"
+                        f"the temperature table of lamina {names[e]!r} gives no valid ply at {rounded[e]:.6g} K: "
+                        f"{error}; its [materials.{names[e]}.temperature_table] sets it"
                     ) from None
                 raise RefusedInputError(
                     f"the matrix temperature law gives no valid ply at {rounded[e]:.6g} K (reference "
@@ -235,8 +235,8 @@ def self_heating(
         Assembled model with a laminated shaft.
     options : ThermalOptions
         Environment, correlations, ply conductivities and the matrix temperature law with its
-        allowable temperature (default: the baseline's). The temperature table of the model's
-        shaft lamina, when it has one, replaces the law's exponentials.
+        allowable temperature (default: the baseline's). The temperature table of each
+        element's own lamina, when it has one, replaces the law's exponentials.
     loss_model : {"thesis", "rotating"} or None
         None: the design's ``[analysis] internal_damping``.
     imbalance_scale, static_scale : float
