@@ -13,6 +13,7 @@ the ``[shaft]``'s. (Before: every element followed the ``[shaft]`` lamina's tabl
 
 from __future__ import annotations
 
+import dataclasses
 import re
 
 import numpy as np
@@ -105,3 +106,28 @@ def test_a_one_segment_shaft_of_another_lamina_follows_that_lamina(tabled):
         assert np.array_equal(E60, E20) and np.array_equal(G60, G20)
     else:  # no table of its own: the law, not the unused [shaft] lamina's table
         assert np.all(E60.real < (1 - 5e-4) * E20.real) and np.all(G60.real < (1 - 1e-3) * G20.real)
+
+
+def test_laminae_of_equal_values_keep_their_own_laws():
+    """Both laminae without a table and of equal values (the model builds one tube object for
+    both), the caller's law carrying a constant table of its own (``options.matrix_law``): the
+    ``[shaft]`` lamina's elements follow that table (unchanged between 20 and 60 °C), the other
+    lamina's the law without it (softened), whichever element is computed first."""
+    from flexshaft.thermal.matrix import LaminaTable
+
+    design = _design("neither")
+    model = build_model(design)
+    tubes = [s.properties for s in model.segments]
+    assert tubes[0] is tubes[1]  # the premise: one tube object for the two laminae
+    table = LaminaTable(
+        tuple(celsius_to_kelvin(t) for t in ROWS),
+        tuple((name, (value,) * len(ROWS)) for name, value in (("E_T", 0.10e9), ("G_LT", 0.10e9))),
+    )
+    law = dataclasses.replace(thermal_options(design.thermal).matrix_law, table=table)
+    mid = 0.5 * (model.dofs.shaft_element_x[:, 0] + model.dofs.shaft_element_x[:, 1])
+    aft = mid > 4.0
+    n = aft.size
+    E20, _ = _element_moduli(model, law, np.full(n, celsius_to_kelvin(20.0)))
+    E60, _ = _element_moduli(model, law, np.full(n, celsius_to_kelvin(60.0)))
+    assert np.array_equal(E60[~aft], E20[~aft])
+    assert np.all(E60[aft].real < (1 - 5e-4) * E20[aft].real)

@@ -150,7 +150,7 @@ def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.nd
         lam = tube.laminate
         if lam is None:
             continue
-        key = (id(tube), rounded[e])
+        key = (id(tube), id(laws[e]), rounded[e])  # laminae of equal values share a tube, not a law
         if key not in cache:
             try:
                 cache[key] = equivalent_moduli(
