@@ -85,11 +85,11 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
         points = [(float(w[n]), complex(L[n])) for n in run]
         points += [(float(p), complex(v)) for p, v in zip(peaks, at_peaks) if w[run[0]] < p < w[run[-1]] and p not in w]
         points.sort(key=lambda point: point[0])
+        if len(points) < 3:
+            continue  # no third point to fit a circle through
         for k, ((a, la), (b, lb)) in enumerate(zip(points[:-1], points[1:])):
             if la.imag == 0 or np.sign(la.imag) != np.sign(lb.imag):
                 continue  # a crossing the grid or a peak brackets
-            if len(points) < 3:
-                continue
             toward = k == 0 or (k + 2 < len(points) and bool(np.any((b <= peaks) & (peaks <= points[-1][0]))))
             third = points[k + 2][1] if toward else points[k - 1][1]  # the neighbour toward a peak
             c = points[k + 2][0] if toward else points[k - 1][0]
@@ -97,9 +97,9 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
                 fit = [(float(np.log(a)), la), (float(np.log(b)), lb), (float(np.log(c)), third)]
                 fourth = k - 1 if toward else k + 2  # the neighbour on the other side
                 n = run[0] - 1 if fourth < 0 else run[-1] + 1  # beyond the run: the grid's
-                extra = None if not 0 <= n < w.size else (float(w[n]), complex(L[n]))
-                if 0 <= fourth < len(points):
-                    extra = points[fourth]
+                extra = points[fourth] if 0 <= fourth < len(points) else None
+                if extra is None and 0 <= n < w.size:
+                    extra = (float(w[n]), complex(L[n]))
                 if extra is not None and _clear_of_axis(fit, extra):
                     continue
                 j = int(np.searchsorted(w, a, side="right")) - 1

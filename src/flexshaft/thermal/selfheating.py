@@ -132,7 +132,7 @@ def _element_laws(model: Model, law: MatrixTemperatureLaw) -> tuple[list[MatrixT
     for name in names:
         if name not in laws:
             laws[name] = matrix_law_for(design.materials[name], others)
-    return [laws[name] for name in names], list(names)
+    return [laws[name] for name in names], names
 
 
 def _element_moduli(model: Model, law: MatrixTemperatureLaw, temperatures: np.ndarray):
