@@ -1,7 +1,7 @@
 """Thermal analysis of the driveline (thesis §2.8, §3.5 and beyond).
 
 * :mod:`~flexshaft.thermal.options` — a design's ``[thermal]`` table as SI runtime objects
-  (:class:`ThermalOptions`, :func:`thermal_options`);
+  (:class:`ThermalOptions`, :func:`thermal_options`, :func:`options_of`);
 * :mod:`~flexshaft.thermal.tailboom` — steady tailboom skin temperature, hover and parked;
 * :mod:`~flexshaft.thermal.heat` — hysteretic heat generation, thesis (fixed-frame) and
   rotating-frame loss models;
@@ -26,7 +26,7 @@ from flexshaft.thermal.envelope import PointConditions, envelope_conditions, poi
 from flexshaft.thermal.environment import ThermalEnvironment
 from flexshaft.thermal.heat import HeatSources, heat_sources
 from flexshaft.thermal.matrix import LaminaTable, MatrixTemperatureLaw
-from flexshaft.thermal.options import ThermalOptions, environment_from, matrix_law_from, thermal_options
+from flexshaft.thermal.options import ThermalOptions, environment_from, matrix_law_from, options_of, thermal_options
 from flexshaft.thermal.shaft import ShaftTemperature, solve_shaft_temperature
 from flexshaft.thermal.tailboom import (
     BoomTemperature,
@@ -45,6 +45,7 @@ __all__ = [
     "envelope_conditions",
     "environment_from",
     "matrix_law_from",
+    "options_of",
     "thermal_options",
     "BoomTemperature",
     "boom_equivalent_diameter",

@@ -15,7 +15,7 @@ import numpy as np
 from flexshaft.assembly.model import Model
 from flexshaft.thermal.correlations import Nusselt
 from flexshaft.thermal.heat import HeatSources, LossModel, element_tubes, heat_sources
-from flexshaft.thermal.options import ThermalOptions
+from flexshaft.thermal.options import ThermalOptions, options_of
 from flexshaft.thermal.shaft import (
     ShaftTemperature,
     laminate_axial_conductivity,
@@ -103,7 +103,7 @@ def shaft_conductivity(
     """Axial wall conductivity [W/(m K)]: the laminate rule with the options' ply
     conductivities, or ``isotropic`` for a metal shaft; one value per element (nel,) when the
     tubes of a segmented shaft differ in it."""
-    options = options or ThermalOptions()
+    options = options or options_of(model)
     values = {}
     for tube in element_tubes(model):
         if id(tube) not in values:
@@ -134,8 +134,9 @@ def shaft_thermal(
     model : Model
         Assembled model (heat from its imbalance response and static deflection).
     options : ThermalOptions
-        Environment, correlations and ply conductivities (default: the baseline's); build them
-        from a design with :func:`flexshaft.thermal.options.thermal_options`.
+        Environment, correlations and ply conductivities (default: the model's design's
+        ``[thermal]`` table, :func:`~flexshaft.thermal.options.options_of`); build them from a
+        design with :func:`flexshaft.thermal.options.thermal_options`.
     loss_model : {"thesis", "rotating"} or None
         Heat-generation model (:mod:`flexshaft.thermal.heat`); None: the design's
         ``[analysis] internal_damping``.
@@ -148,7 +149,7 @@ def shaft_thermal(
     sources : HeatSources, optional
         Precomputed heat sources (e.g. from per-element properties).
     """
-    options = options or ThermalOptions()
+    options = options or options_of(model)
     tailboom = None if model.design is None else model.design.tailboom
     T_air = shaft_air_temperature(tailboom, options) if air_temperature is None else float(air_temperature)
     tubes = element_tubes(model)

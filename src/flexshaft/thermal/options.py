@@ -7,7 +7,10 @@ The design package is a data-only leaf; this module is where its plain ``[therma
 * :func:`matrix_law_from` → :class:`~flexshaft.thermal.matrix.MatrixTemperatureLaw` (with the
   lamina's temperature table when a material with one is given);
 * :func:`thermal_options` → :class:`ThermalOptions`, both of them plus the correlation choices
-  and the ply conductivities.
+  and the ply conductivities;
+* :func:`options_of` → the :class:`ThermalOptions` of a model's own design (the default of the
+  thermal analyses that take a model, so a notebook's ``self_heating(model)`` solves with the
+  design file's ``[thermal]`` table as ``flexshaft run`` does).
 
 Each builder reads attributes only, so it takes the schema's
 :class:`~flexshaft.design.thermal_schema.Thermal` or any object with the same fields.
@@ -29,7 +32,7 @@ from flexshaft.units import celsius_to_kelvin
 if TYPE_CHECKING:
     from flexshaft.design.thermal_schema import Thermal
 
-__all__ = ["ThermalOptions", "environment_from", "matrix_law_from", "thermal_options"]
+__all__ = ["ThermalOptions", "environment_from", "matrix_law_from", "options_of", "thermal_options"]
 
 _BOOM_METHODS = ("hilpert", "churchill_bernstein")
 _SHAFT_METHODS = ("becker", "kendoush")
@@ -129,3 +132,10 @@ def thermal_options(thermal: Thermal, material=None) -> ThermalOptions:
         transverse_conductivity=thermal.transverse_conductivity,
         matrix_law=matrix_law_from(thermal, material),
     )
+
+
+def options_of(model) -> ThermalOptions:
+    """The :class:`ThermalOptions` of ``model``'s own design file (its ``[thermal]`` table), or
+    the defaults (the baseline's) for a model built without a design."""
+    design = getattr(model, "design", None)
+    return ThermalOptions() if design is None else thermal_options(design.thermal)

@@ -40,7 +40,7 @@ from flexshaft.thermal.heat import (
     shaft_stiffness_matrices,
 )
 from flexshaft.thermal.matrix import MatrixTemperatureLaw, matrix_law_for
-from flexshaft.thermal.options import ThermalOptions
+from flexshaft.thermal.options import ThermalOptions, options_of
 from flexshaft.units import kelvin_to_celsius
 
 __all__ = [
@@ -235,7 +235,8 @@ def self_heating(
         Assembled model with a laminated shaft.
     options : ThermalOptions
         Environment, correlations, ply conductivities and the matrix temperature law with its
-        allowable temperature (default: the baseline's). The temperature table of each
+        allowable temperature (default: the model's design's ``[thermal]`` table,
+        :func:`~flexshaft.thermal.options.options_of`, as ``flexshaft run`` solves it). The temperature table of each
         element's own lamina, when it has one, replaces the law's exponentials.
     loss_model : {"thesis", "rotating"} or None
         None: the design's ``[analysis] internal_damping``.
@@ -250,7 +251,7 @@ def self_heating(
     **thermal_kwargs
         Passed to :func:`~flexshaft.thermal.analysis.shaft_thermal`.
     """
-    options = options or ThermalOptions()
+    options = options or options_of(model)
     shaft_material = None if model.design is None else model.design.shaft_material
     law = matrix_law_for(shaft_material, options.matrix_law)
     loss_model = resolve_loss_model(model, loss_model)
