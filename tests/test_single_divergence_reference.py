@@ -12,9 +12,10 @@ So the two lowest damped modes are exactly one divergence (returned first, Im s 
 w vibration at ω_n, at every speed; and the every-root check's least-damped root is the
 divergence, ζ = −1 (a real root s > 0 grows without oscillating).
 
-Tolerance 1e-4 relative: the tube's mass (7e-6 of the disk's) leaves ~1e-6 on these roots
-(asserted at 1e-4 in tests/test_jeffcott_modes_closed_form.py for the same rotor). Four tube
-elements (tests/jeffcott_bearing.py): the planes' equations are exact at any mesh. About 0.05 s.
+Tolerance 1e-4 relative: the tube's mass (3.5e-6 of the disk's: 0.1 kg/m³ × π(D_o² − D_i²)/4
+× 1 m = 7.1e-5 kg) leaves ~1e-6 on these roots (asserted at 1e-4 in
+tests/test_jeffcott_modes_closed_form.py for the same rotor). Four tube elements
+(tests/jeffcott_bearing.py): the planes' equations are exact at any mesh. About 0.05 s.
 """
 
 from __future__ import annotations

@@ -13,7 +13,8 @@ stiffness ±Ωc coupling them. The disk's characteristic equation is then (deriv
 the skew coupling giving +(Ωc)² for either sign. Its one real root s > 0 is the divergence
 rate: 412.455 1/s at rest, 409.208 1/s at Ω = 3ω_n (ω_ref = ω_n given), 0.8 % apart; the
 quartic is solved here by numpy.roots. Tolerance 1e-4 relative, as the single-divergence test on
-this rotor: the tube's mass (7e-6 of the disk's) leaves ~1e-6 (measured 8e-7).
+this rotor: the tube's mass (3.5e-6 of the disk's: 0.1 kg/m³ × π(D_o² − D_i²)/4 × 1 m =
+7.1e-5 kg) leaves ~1e-6 (measured 8e-7).
 """
 
 from __future__ import annotations
