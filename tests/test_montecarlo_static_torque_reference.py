@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 import pytest
-from test_load_patterns_reference import D_O, WALL, G, L, _text
+from test_load_patterns_reference import D_O, ECC, WALL, G, L, _text
 
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
@@ -28,7 +28,9 @@ POWER, RPM = 50.0e3, 3000.0
 
 
 def test_the_static_state_of_the_samples_holds_the_torque_twist():
-    text = _text().replace("power = 0.0", f"power = {POWER}").replace(f"eccentricity = {3.0e-5}", "eccentricity = 0.0")
+    base = _text()
+    assert "power = 0.0" in base and f"eccentricity = {ECC}" in base  # both edits below take effect
+    text = base.replace("power = 0.0", f"power = {POWER}").replace(f"eccentricity = {ECC}", "eccentricity = 0.0")
     model = build_model(loads_design(text))
     units = unit_responses(model, speeds=[100.0, 200.0], refine=False, placement="mid_bay")
     T = POWER / (RPM * 2 * math.pi / 60)

@@ -4,7 +4,10 @@ The baseline design (coarse mesh, as tests/test_thermal_study_reference.py) has
 ``internal_damping = "rotating"`` and the Becker shaft convection; a comparison asks for the
 "thesis" loss model and Kendoush's correlation:
 
-* **Kendoush (1996)**, Nu_D = 0.6366 (Re_ω Pr)^{1/2}, Re_ω = Ω D²/ν, typed here: the shaft's h
+* **the code's Kendoush correlation**, Nu_D = 0.6366 (Re_ω Pr)^{1/2}, Re_ω = Ω D²/ν, typed
+  here as :mod:`flexshaft.thermal.correlations` states it (a wiring check of the override, not
+  a check of the correlation: its 2/π and its Reynolds number are unverified against Kendoush
+  1996, docs/testing.md, the two surviving mutations): the shaft's h
   is Nu k_air/D with the air's properties at the shaft air temperature (Becker's
   0.133 Re^{2/3} Pr^{1/3} gives 1.8 times Kendoush's h on this shaft (checked), so an ignored override
   is visible);

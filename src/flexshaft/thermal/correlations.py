@@ -18,7 +18,9 @@ Cylinder rotating in still air (the drive shaft):
   Re_ω < 4.3e5, 0.7 < Pr < 670;
 * :func:`rotating_cylinder_nusselt_kendoush` — Nu = 0.6366 (Re_ω Pr)^{1/2} (Kendoush 1996, the
   thesis's eq. 2.63 reference; constant 2/π from his approximate boundary-layer solution, as
-  recalled from the paper's abstract, not re-derived here — treat as unverified).
+  recalled from the paper's abstract, not re-derived here — treat as unverified; so is its
+  Reynolds number: a penetration-theory estimate gives (2/π)(Re Pr)^{1/2} with the surface
+  speed's Re = Ω D²/(2ν), which would make h √2 lower than coded, docs/testing.md).
 
 :func:`forced_cylinder_nusselt` and :func:`rotating_cylinder_nusselt` dispatch by name. Every
 function returns a :class:`Nusselt` carrying the value and whether the inputs lay inside the
