@@ -17,10 +17,11 @@ statement (no number the code produced):
   boom's hover air, on a design with a tailboom, whose hover air is warmer than the ambient;
 * envelope_point finds a design's own point before the default of that name;
 * a coupling without ``allowable_angle_deg`` is not checked (Coupling's docstring: "omitted: not
-  checked").
+  checked"): through the model, its misalignment, gather and evaluate, the coupling_angle check
+  is "not evaluated" and names the coupling, and judged once an allowable angle is given.
 
-All cheap: synthetic evidence, verdicts and modes, one design dump and the boom's closed-form
-temperatures (well under 0.5 s together).
+All cheap: synthetic evidence, verdicts and modes, one design dump, the boom's closed-form
+temperatures and two 20-element hinged tubes (well under 0.5 s together).
 """
 
 from __future__ import annotations
@@ -30,15 +31,16 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from flexshaft.design import baseline_design, with_overrides
+from flexshaft.analyses.misalignment import coupling_misalignment
+from flexshaft.assembly import build_model
+from flexshaft.design import baseline_design, design_from_dict, with_overrides
 from flexshaft.design.envelope import EnvelopePoint, envelope_point
 from flexshaft.design.requirements import Requirements
-from flexshaft.design.segments import Coupling
 from flexshaft.thermal.envelope import point_conditions
 from flexshaft.verdict.checks import evaluate
 from flexshaft.verdict.envelope import PointAssessment, envelope_verdict, governing_point
 from flexshaft.verdict.evidence import Evidence, ModeDamping
-from flexshaft.verdict.gather import _whirl_modes_top
+from flexshaft.verdict.gather import _couplings, _whirl_modes_top
 from flexshaft.verdict.result import Verdict
 
 OP = 500.0  # rad/s
@@ -106,6 +108,44 @@ def test_a_designs_own_point_comes_before_the_default_of_its_name():
     assert envelope_point(design, "cold_day").ambient_temperature_c == -55.0
 
 
+def _coupling_angle_check(**coupling):
+    """The coupling_angle check of a 20-element tube on pinned ends with a hinge ``c`` at 0.5 m
+    (the hinged tubes of tests/test_misalignment_total_angle_reference.py), from the design's
+    coupling through the model, its misalignment (at rest: zero angles), gather and evaluate."""
+    length = 1.2
+    data = {
+        "name": "hinged tube",
+        "materials": {"al": {"kind": "isotropic", "E": 70.0e9, "G": 26.0e9, "density": 2700.0}},
+        "shaft": {
+            "x_start": 0.0,
+            "x_end": length,
+            "outer_diameter": 0.05,
+            "wall_thickness": 0.002,
+            "material": "al",
+            "fixed_start": ["u", "v", "w", "theta"],
+            "fixed_end": ["v", "w"],
+        },
+        "bearings": [{"name": "far", "kind": "contact", "x": length, "stiffness": {"u": 0.0}}],
+        "couplings": [
+            {"name": "c", "x": 0.5, "angular_stiffness": 1e4, "axial_stiffness": "rigid", "torsional_stiffness": 1e5}
+            | coupling
+        ],
+        "operating": {"speed_rpm": 3000.0, "power": 0.0},
+        "loads": {"eccentricity": 0.0},
+        "mesh": {"shaft_elements": 20},
+    }
+    model = build_model(design_from_dict(data))
+    angles = coupling_misalignment(model, np.zeros(model.dofs.size))
+    evidence = Evidence(operating_speed=OP, **_couplings(SimpleNamespace(coupling_misalignment=angles)))
+    return evaluate(evidence).check("coupling_angle")
+
+
 def test_a_coupling_without_an_allowable_angle_is_not_checked():
-    coupling = Coupling(name="c", x=0.5, angular_stiffness=1e4, axial_stiffness="rigid", torsional_stiffness=1e5)
-    assert coupling.allowable_angle_deg is None
+    """Coupling's docstring: ``allowable_angle_deg`` "omitted: not checked". Omitted, the check is
+    not evaluated and its note names the coupling; given (1°), the same coupling's zero angle is
+    judged (a pass with the limit in radians): the omission is what leaves it unjudged."""
+    omitted = _coupling_angle_check()
+    assert omitted.status == "not evaluated" and omitted.value is None
+    assert "allowable_angle_deg" in omitted.note and "(c)" in omitted.note
+    given = _coupling_angle_check(allowable_angle_deg=1.0)
+    assert given.status == "pass" and given.limit == pytest.approx(np.radians(1.0), rel=1e-12)
