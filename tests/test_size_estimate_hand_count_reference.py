@@ -13,11 +13,12 @@ validation's Jeffcott rotor (``validation/designs/jeffcott_internal_damping.toml
 * fixed DOFs: ``fixed_start = [u, v, w, theta]`` (4) and ``fixed_end = [v, w]`` (2), and the
   boom's root clamp (its 5 DOFs): 6 and 11, so 48 and 68 free DOFs;
 * controller states: a controller C(s) = N(s)/D(s) of order deg D has deg D states per lateral
-  direction (v and w), doubled when the sensor is not collocated (the first-order model then
-  realises two channels, the magnet's own law at the bearing and the controller law from the
-  sensing station, each with the controller's states); an amplifier lag adds one order. So
-  D = s² + 3s + 2 gives 2 · 2 = 4 states, with a remote sensor 8, with an amplifier 2 · 3 = 6,
-  and a PD law (D = 1) none;
+  direction (v and w); an amplifier lag adds one order. A remote sensor adds none: the
+  first-order model then realises two channels (module docstring of flexshaft.analyses.eigen),
+  the magnet's own −k_s at the bearing, static, and the law from the sensing station, with the
+  law's states. So D = s² + 3s + 2 gives 2 · 2 = 4 states, with a remote sensor 4 as well, with
+  an amplifier 2 · 3 = 6, and a PD law (D = 1) none (the built state matrices are counted in
+  tests/test_size_estimate_costs_reference.py);
 * the "worst" imbalance placement: the bearings at n distinct stations bound n − 1 bays, and the
   worst case over the signs of the bays' imbalances, the first bay's sign being free (a global
   sign flip gives the same peak), is 2^(bays − 1) load cases; at most MAX_WORST_BAYS = 10 bays
@@ -105,7 +106,7 @@ def test_a_tailboom_adds_five_dofs_a_node_and_its_clamped_root():
     "fields, states",
     [
         ({}, 2 * 2),  # order 2, two lateral directions
-        ({"sensor_offset": 0.1}, 2 * 2 * 2),  # a remote sensor doubles them
+        ({"sensor_offset": 0.1}, 2 * 2),  # a remote sensor adds none (its magnet's −k_s is static)
         ({"amplifier_bandwidth": 500.0}, 2 * 3),  # the amplifier lag adds one order
         ({"controller": None, "kp": 1.0e5, "kd": 10.0}, 0),  # PD: C(s) = kd s + kp over 1
     ],

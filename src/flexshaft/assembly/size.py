@@ -163,7 +163,9 @@ class ProblemSize:
         Mesh size (after merging close stations).
     bearings, actuators, disks : int
     controller_states : int
-        States added by the actuators' controllers (both lateral directions).
+        States added by the actuators' controllers: the law's order (plus one for an
+        amplifier lag) on each of the two lateral directions, collocated or not (a remote
+        sensor's magnet adds only its static ``−k_s``).
     bays, load_cases : int
         Imbalance bays and the load cases of the imbalance placement.
     n_speeds : int
@@ -264,7 +266,8 @@ def problem_size(
     fixed = len(design.shaft.fixed_start) + len(design.shaft.fixed_end) + (5 if boom_x.size else 0)
     free = dofs - fixed
     active = [b for b in design.bearings if b.kind == "active"]
-    states = sum(2 * _controller_order(b) * (1 if b.sensor_offset == 0.0 else 2) for b in active)
+    # the law's states on each lateral direction; a remote sensor adds none (its magnet's −k_s is static)
+    states = sum(2 * _controller_order(b) for b in active)
     span = design.shaft.x_end - design.shaft.x_start
     bays = len(bearing_bays([b.x for b in design.bearings], merge_tolerance(span, design.mesh.shaft_elements))) or 1
     worst = design.loads.imbalance_placement == "worst"
@@ -309,7 +312,7 @@ def problem_size(
         if passive:
             roots = _ROOTS_FIXED + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
         else:  # the exact check: a dense eigen-solution of the whole model at three speeds
-            full_states = 2 * free + 2 * states
+            full_states = 2 * free + states  # states: both lateral directions already
             roots = (
                 3 * (_EIG_FIXED + 3 * _EIG_CUBIC * full_states**3) + _ROOTS_PER_DOF * free + _ROOTS_PER_DOF2 * free**2
             )
