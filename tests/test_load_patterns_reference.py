@@ -14,8 +14,9 @@
   combination of the bays' mid-bay forces, the first bay's sign fixed: with two bays (three
   bearings) the two cases F₁ + F₂ and F₁ − F₂, F_b = e_c m/2 per unit Ω² at each bay's
   midpoint (the permissible e_c m shared equally between the bays: flexshaft's convention,
-  ``imbalance_loads``' docstring; ISO 21940-11 itself splits by the planes' distances). Their resultants are e_c m and 0, their first
-  moments about x = 0 e_c m (x₁ + x₂)/2 and e_c m (x₁ − x₂)/2.
+  ``imbalance_loads``' docstring; ISO 21940-11 itself splits by the planes' distances).
+  Their resultants are e_c m and 0, their first moments about x = 0 e_c m (x₁ + x₂)/2 and
+  e_c m (x₁ − x₂)/2.
 * **A point load on the end mass takes no station** (``[[loads.point]]``, docs/design-reference.md):
   one that gives ``x`` is refused rather than its station silently ignored.
 
