@@ -121,3 +121,19 @@ def test_the_senses_crimping_limits_and_critical_torques_by_closed_form(pair):
         lower = min(plus[f"global_torque_{sense}_Nm"], plus[f"crimping_torque_{sense}_Nm"])
         assert plus[f"critical_torque_{sense}_Nm"] == pytest.approx(lower, rel=1e-12)
     assert plus["critical_torque_positive_Nm"] < plus["critical_torque_negative_Nm"]  # the weaker sense
+
+
+def test_the_safety_factor_takes_the_weaker_sense_whichever_way_the_plies_lean(pair):
+    """The drive's handedness is not known to the check, so its safety factor is the weaker
+    sense's T_cr over T = P/Ω (:mod:`flexshaft.analyses.shaft_buckling`): the same for the
+    [+45] tube, whose positive sense is the weaker, and its mirror image [−45], whose negative
+    sense is. T = 150 kW/(4000 rpm · 2π/60) = 358.098622 N m by hand. Tolerance 1e-12: one
+    division of the numbers checked by the mirror above."""
+    _, _, plus, minus = pair
+    torque = 150e3 / (4000.0 * 2.0 * math.pi / 60.0)
+    assert minus["torque_Nm"] == pytest.approx(torque, rel=1e-12)
+    assert minus["critical_torque_negative_Nm"] < minus["critical_torque_positive_Nm"]  # the mirror's weaker sense
+    for tube in (plus, minus):
+        weaker = min(tube["critical_torque_positive_Nm"], tube["critical_torque_negative_Nm"])
+        assert tube["safety_factor"] == pytest.approx(weaker / torque, rel=1e-12)
+    assert minus["safety_factor"] == pytest.approx(plus["safety_factor"], rel=1e-9)
