@@ -43,3 +43,19 @@ def test_a_filtered_pd_law_with_negative_kp_adds_nothing_to_the_basis():
     law = Controller.pid(-2.0e4, 0.0, 12.0, 2 * np.pi * 500.0)
     assert not law.is_pd and law.proportional_gain == pytest.approx(-2.0e4, rel=1e-12)
     assert law.basis_stiffness == 0.0
+
+
+def test_a_common_factor_at_megaradians_per_second_cancels():
+    """``C(s) = k (s + p₁)(s + p₂)/((s + p₁)(s + p₂)(s + a))`` is ``k/(s + a)`` (cancelled by
+    hand): one state, pole −a, residue k. With p₁ = 3e6, p₂ = 5.1e6 rad/s and a = 2.7e6 rad/s the
+    computed roots of numerator and denominator differ by about 1e-8 rad/s (round-off ε|p| times
+    the conditioning of three close roots): the pole-zero match must be relative to |p| (the
+    code's 1e-9 |p| ≈ 3e-3 rad/s), not absolute. rel 1e-9 on the state's pole and residue: a
+    root of a cubic with roots of order 1e6, computed to ~1e-14 relative."""
+    k, p1, p2, a = 4.0e9, 3.0e6, 5.1e6, 2.7e6
+    num = k * np.polymul([1.0, p1], [1.0, p2])
+    law = Controller(tuple(num), tuple(np.polymul(np.polymul([1.0, p1], [1.0, p2]), [1.0, a])))
+    A, B, C, D, E = law.realization()
+    assert A.shape == (1, 1) and (D, E) == (0.0, 0.0)
+    assert A[0, 0] == pytest.approx(-a, rel=1e-9)
+    assert (C @ B).item() == pytest.approx(k, rel=1e-9)
