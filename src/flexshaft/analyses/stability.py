@@ -378,16 +378,17 @@ def _plain_basis(n_modes: int) -> int:
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:
     """Speed where the tracked ``mode``'s damping ratio crosses zero between speeds[k−1] and
     speeds[k] (Illinois regula falsi; converged to 1e-7 of the speed). Each evaluation follows
-    the mode back from its unstable end, speeds[k], whose shape identifies it: Newton's method
-    on the viscous problem, or with the hysteretic loss the mode's consistent root
-    (:func:`~flexshaft.analyses.continuation.mode_root`, both sides of the synchronous
-    line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
+    the mode back from its unstable end, speeds[k], whose shape identifies it (MAC ≥ 0.8,
+    :func:`_mode_at`): Newton's method on the viscous problem, or with the hysteretic loss the
+    mode's consistent root (:func:`~flexshaft.analyses.continuation.mode_root`, both sides of
+    the synchronous line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
     just below the forward frequency, unstable just above), the bracket closes on the jump.
 
     When an evaluation cannot follow the mode from the bracket's end (on a wide bracket the
     mode's shape at the trial speed can differ too much from the end's to identify it: the
     anisotropic overhung rotor of tests/test_onset_wide_bracket_reference.py on [0, 4000]
-    rad/s, overlap 0.66 < 0.8), the mode is followed from speeds[k] down to speeds[k−1] in
+    rad/s, overlap 0.66 < 0.8; hysteretic, tests/test_onset_refinement_anisotropic_reference.py
+    on [0, 8000]), the mode is followed from speeds[k] down to speeds[k−1] in
     sub-steps (:func:`_follow_down`, each root seeded by and checked against the last) and the
     regula falsi is solved again in the lowest sub-step where its damping ratio changes sign.
     Only when that fails too (no sub-step of 1/1024 of the bracket follows the mode, or the mode
@@ -410,11 +411,20 @@ def _zeta(s: complex) -> float:
 
 
 def _mode_at(red: ReducedModel, speed: float, guess: complex, y, viscous) -> tuple[complex, np.ndarray, bool]:
-    """The root at ``speed`` of the mode with shape ``y`` (unit), from ``guess``: ``(s, y, found)``."""
-    if viscous is None:  # the same mode: its test is mode_root's
-        return mode_root(red, speed, guess, y)
-    s, vec, converged = newton(red, speed, guess, y, viscous=viscous(speed))
-    return s, vec, converged and abs(np.vdot(y, vec)) ** 2 >= 0.8
+    """The root at ``speed`` of the mode with shape ``y``, from ``guess``: ``(s, y, found)``.
+
+    Newton's method on the viscous problem, or the hysteretic mode's consistent root
+    (:func:`~flexshaft.analyses.continuation.mode_root`); either counts as the mode only when
+    its MAC with ``y`` is at least 0.8. ``mode_root``'s own test, MAC ≥ 0.25
+    (:data:`~flexshaft.analyses.hysteretic_roots.SAME_MODE_MAC`), is too weak across a wide
+    bracket: on the anisotropic rotor of tests/test_onset_refinement_anisotropic_reference.py
+    the regula falsi on [0, 8000] rad/s took another mode's roots (MAC 0.43) and settled on a
+    false jump, 428 rad/s instead of 322.1."""
+    if viscous is None:
+        s, vec, found = mode_root(red, speed, guess, y)
+    else:
+        s, vec, found = newton(red, speed, guess, y, viscous=viscous(speed))
+    return s, vec, found and abs(np.vdot(y, vec)) ** 2 >= 0.8 * np.vdot(y, y).real * np.vdot(vec, vec).real
 
 
 def _regula_falsi(red: ReducedModel, a: float, b: float, sa: complex, sb: complex, yb, viscous) -> tuple[float, bool]:
@@ -449,19 +459,33 @@ def _regula_falsi(red: ReducedModel, a: float, b: float, sa: complex, sb: comple
     return float(estimate), True
 
 
+#: Most evaluations :func:`_follow_down` makes (2 × 1024 + 7 in the worst case of exact steps).
+_FOLLOW_EVALUATIONS = 2 * 1024 + 16
+
+
 def _follow_down(
     red: ReducedModel, a: float, b: float, sb: complex, yb, viscous
 ) -> tuple[float, float, complex, complex, np.ndarray] | None:
     """The mode followed from its unstable end b down to a in sub-steps (first 1/8 of the
     bracket, halved where a step's root is not the last step's mode, doubled back after a
     success, at least 1/1024): the lowest sub-bracket ``(a', b', s(a'), s(b'), y(b'))`` where
-    its damping ratio falls below −:data:`STABILITY_TOLERANCE`, or None (lost, or unstable at a)."""
+    its damping ratio falls below −:data:`STABILITY_TOLERANCE`, or None (lost, unstable at a,
+    or a bracket too narrow for a sub-step to move the speed).
+
+    Cost: at most 1024 successful sub-steps (each at least 1/1024 of the bracket) and one
+    failed step per success (the doubled step lost, then halved back) plus the seven halvings
+    from 1/8 to 1/1024: ~2 × 1024 evaluations of :func:`_mode_at` in the worst case, and
+    never more than :data:`_FOLLOW_EVALUATIONS` (rounding on a bracket of a few ulp)."""
     largest = (b - a) / 8
     step = largest
     speed, s, y = b, sb, yb
     path = [(speed, s, y)]
+    evaluations = 0
     while speed > a:
         below = max(speed - step, a)
+        if below >= speed or evaluations >= _FOLLOW_EVALUATIONS:  # speed − step rounds to speed
+            return None
+        evaluations += 1
         s_new, y_new, found = _mode_at(red, below, s, y, viscous)
         if not found:
             step *= 0.5
