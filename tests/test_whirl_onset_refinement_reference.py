@@ -21,8 +21,9 @@ References (derived).
    must reach W to the refinement's 1e-7 of the speed within its 80 evaluations (it does in
    12; plain regula falsi from this bracket ends 2.5e-6 away after 80, and halving the end
    just replaced instead of the stale one 2.4e-3 away).
-   When the mode cannot be followed at all (Newton fails), the onset is the linear interpolation
-   of ζ between the two grid speeds, a + ζ_a/(ζ_a − ζ_b)(b − a) (the documented fallback).
+   When the mode cannot be followed at all (Newton fails at every trial speed and in every
+   sub-step of the bracket), the onset is the linear interpolation of ζ between the two grid
+   speeds, a + ζ_a/(ζ_a − ζ_b)(b − a) (the documented last resort).
 """
 
 from __future__ import annotations

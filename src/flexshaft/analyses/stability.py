@@ -31,10 +31,15 @@ speed where that mode's damping ratio changes sign (regula falsi, each evaluatio
 followed back from its first unstable speed): a zero crossing, or with the rotating-frame loss
 the jump where the mode's consistent root passes from one side of the line to the other (the
 hysteretic Jeffcott rotor: Ω = ω_d). Once the grid brackets a crossing, the onset does not
-depend on the grid spacing; a window of instability that opens and closes between two grid
-speeds, both stable, is not seen (the coarse baseline on ``flexshaft stability --max-rpm 1e5
---n-speeds 2``: stable at 0 and 1e5 rpm, unstable from 3126 rpm to below 1e5): the grid must
-resolve the speeds of interest (``--n-speeds``; the verdict's whirl speeds,
+depend on the grid spacing as long as the mode can be followed across the bracket: where the
+root at a trial speed is not the mode of the bracket's unstable end (a wide bracket on an
+anisotropic rotor, whose whirl changes shape with speed), the mode is followed down the bracket
+in sub-steps (down to 1/1024 of it) and the crossing solved in the sub-step where it changes
+sign; only a mode lost even then falls back to the linear interpolation of the grid's damping
+ratios, which does depend on the grid. A window of instability that opens and closes between
+two grid speeds, both stable, is not seen (the coarse baseline on ``flexshaft stability
+--max-rpm 1e5 --n-speeds 2``: stable at 0 and 1e5 rpm, unstable from 3126 rpm to below 1e5):
+the grid must resolve the speeds of interest (``--n-speeds``; the verdict's whirl speeds,
 :class:`~flexshaft.resolution.Resolution`).
 
 Divergence. A real eigenvalue s > 0 (an aperiodic instability: e.g. a magnetic bearing whose
@@ -373,35 +378,71 @@ def _plain_basis(n_modes: int) -> int:
 def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous) -> float:
     """Speed where the tracked ``mode``'s damping ratio crosses zero between speeds[k−1] and
     speeds[k] (Illinois regula falsi; converged to 1e-7 of the speed). Each evaluation follows
-    the mode back from its unstable end, speeds[k], whose shape identifies it: Newton's method
-    on the viscous problem, or with the hysteretic loss the mode's consistent root
-    (:func:`~flexshaft.analyses.continuation.mode_root`, both sides of the synchronous
-    line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
+    the mode back from its unstable end, speeds[k], whose shape identifies it (MAC ≥ 0.8,
+    :func:`_mode_at`): Newton's method on the viscous problem, or with the hysteretic loss the
+    mode's consistent root (:func:`~flexshaft.analyses.continuation.mode_root`, both sides of
+    the synchronous line). Where the root jumps between the two sides (the hysteretic Jeffcott rotor: stable
     just below the forward frequency, unstable just above), the bracket closes on the jump.
-    Falls back to the linear interpolation of the grid when the mode cannot be followed inside
-    the bracket."""
 
-    def zeta(s):
-        return -s.real / abs(s)
-
+    When an evaluation cannot follow the mode from the bracket's end (on a wide bracket the
+    mode's shape at the trial speed can differ too much from the end's to identify it: the
+    anisotropic overhung rotor of tests/test_onset_wide_bracket_reference.py on [0, 4000]
+    rad/s, overlap 0.66 < 0.8; hysteretic, tests/test_onset_refinement_anisotropic_reference.py
+    on [0, 8000]), the mode is followed from speeds[k] down to speeds[k−1] in
+    sub-steps (:func:`_follow_down`, each root seeded by and checked against the last) and the
+    regula falsi is solved again in the lowest sub-step where its damping ratio changes sign.
+    Only when that fails too (no sub-step of 1/1024 of the bracket follows the mode, or the mode
+    followed down is already unstable at speeds[k−1]) is the result the first regula falsi's:
+    the linear interpolation of the grid's damping ratios, or its last trial speed."""
     a, b = float(speeds[k - 1]), float(speeds[k])
     sa, sb = tracked.eigenvalues[k - 1, mode], tracked.eigenvalues[k, mode]
     yb = tracked.states[k][:, mode]
-    za, zb = zeta(sa), zeta(sb)
+    estimate, found = _regula_falsi(red, a, b, sa, sb, yb, viscous)
+    if found:
+        return estimate
+    bracket = _follow_down(red, a, b, sb, yb, viscous)
+    if bracket is None:
+        return estimate
+    return _regula_falsi(red, *bracket, viscous)[0]
+
+
+def _zeta(s: complex) -> float:
+    return -s.real / abs(s)
+
+
+def _mode_at(red: ReducedModel, speed: float, guess: complex, y, viscous) -> tuple[complex, np.ndarray, bool]:
+    """The root at ``speed`` of the mode with shape ``y``, from ``guess``: ``(s, y, found)``.
+
+    Newton's method on the viscous problem, or the hysteretic mode's consistent root
+    (:func:`~flexshaft.analyses.continuation.mode_root`); either counts as the mode only when
+    its MAC with ``y`` is at least 0.8. ``mode_root``'s own test, MAC ≥ 0.25
+    (:data:`~flexshaft.analyses.hysteretic_roots.SAME_MODE_MAC`), is too weak across a wide
+    bracket: on the anisotropic rotor of tests/test_onset_refinement_anisotropic_reference.py
+    the regula falsi on [0, 8000] rad/s took another mode's roots (MAC 0.43) and settled on a
+    false jump, 428 rad/s instead of 322.1."""
+    if viscous is None:
+        s, vec, found = mode_root(red, speed, guess, y)
+    else:
+        s, vec, found = newton(red, speed, guess, y, viscous=viscous(speed))
+    return s, vec, found and abs(np.vdot(y, vec)) ** 2 >= 0.8 * np.vdot(y, y).real * np.vdot(vec, vec).real
+
+
+def _regula_falsi(red: ReducedModel, a: float, b: float, sa: complex, sb: complex, yb, viscous) -> tuple[float, bool]:
+    """:func:`_refine_onset`'s regula falsi on [a, b] (stable at a, unstable at b with shape
+    ``yb``): ``(speed, found)``, found False when a trial speed's root is not the mode (the
+    speed is then the linear interpolation, or the last trial speed whose root was)."""
+    a0, b0 = a, b
+    za, zb = _zeta(sa), _zeta(sb)
     estimate = a + za / (za - zb) * (b - a) if za != zb else b
     side = 0
     for _ in range(80):
         c = a + za / (za - zb) * (b - a) if za != zb else 0.5 * (a + b)
-        t = (c - float(speeds[k - 1])) / (float(speeds[k]) - float(speeds[k - 1]))
+        t = (c - a0) / (b0 - a0)
         guess = sa + t * (sb - sa)
-        if viscous is None:  # the same mode: its test is mode_root's
-            sc, _, found = mode_root(red, c, guess, yb)
-        else:
-            sc, yc, converged = newton(red, c, guess, yb, viscous=viscous(c))
-            found = converged and abs(np.vdot(yb, yc)) ** 2 >= 0.8
+        sc, _, found = _mode_at(red, c, guess, yb, viscous)
         if not found:
-            return float(estimate)
-        zc = zeta(sc)
+            return float(estimate), False
+        zc = _zeta(sc)
         estimate = c
         if b - a <= 1e-7 * b or zc == 0.0:
             break
@@ -415,7 +456,51 @@ def _refine_onset(red: ReducedModel, speeds, tracked, mode: int, k: int, viscous
             if side == +1:
                 zb *= 0.5
             side = +1
-    return float(estimate)
+    return float(estimate), True
+
+
+#: Most evaluations :func:`_follow_down` makes (2 × 1024 + 7 in the worst case of exact steps).
+_FOLLOW_EVALUATIONS = 2 * 1024 + 16
+
+
+def _follow_down(
+    red: ReducedModel, a: float, b: float, sb: complex, yb, viscous
+) -> tuple[float, float, complex, complex, np.ndarray] | None:
+    """The mode followed from its unstable end b down to a in sub-steps (first 1/8 of the
+    bracket, halved where a step's root is not the last step's mode, doubled back after a
+    success, at least 1/1024): the lowest sub-bracket ``(a', b', s(a'), s(b'), y(b'))`` where
+    its damping ratio falls below −:data:`STABILITY_TOLERANCE`, or None (lost, unstable at a,
+    or a bracket too narrow for a sub-step to move the speed).
+
+    Cost: at most 1024 successful sub-steps (each at least 1/1024 of the bracket) and one
+    failed step per success (the doubled step lost, then halved back) plus the seven halvings
+    from 1/8 to 1/1024: ~2 × 1024 evaluations of :func:`_mode_at` in the worst case, and
+    never more than :data:`_FOLLOW_EVALUATIONS` (rounding on a bracket of a few ulp)."""
+    largest = (b - a) / 8
+    step = largest
+    speed, s, y = b, sb, yb
+    path = [(speed, s, y)]
+    evaluations = 0
+    while speed > a:
+        below = max(speed - step, a)
+        if below >= speed or evaluations >= _FOLLOW_EVALUATIONS:  # speed − step rounds to speed
+            return None
+        evaluations += 1
+        s_new, y_new, found = _mode_at(red, below, s, y, viscous)
+        if not found:
+            step *= 0.5
+            if step < (b - a) / 1024:
+                return None
+            continue
+        speed, s, y = below, s_new, y_new
+        path.append((speed, s, y))
+        step = min(2 * step, largest)
+    path.reverse()  # increasing speed, path[0] at a
+    unstable = [i for i, (_, s, _) in enumerate(path) if _zeta(s) < -STABILITY_TOLERANCE]
+    if unstable[0] == 0:
+        return None
+    (lo, s_lo, _), (hi, s_hi, y_hi) = path[unstable[0] - 1], path[unstable[0]]
+    return lo, hi, s_lo, s_hi, y_hi
 
 
 def _first_shaft_frequency(model: Model, red: ReducedModel) -> float:
