@@ -21,25 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from rotors import M_DISK, WN, disk_dofs, jeffcott
+from test_hidden_seed_half_width_reference import CENTRE, HALF_WIDTH, setting
 
 import flexshaft.analyses.criticals as criticals
-from flexshaft.analyses.peak_projection import PeakBasis
-from flexshaft.analyses.response import imbalance_response
 
-ZETA = 0.002
-CENTRE, HALF_WIDTH = WN * np.sqrt(1 - ZETA**2), ZETA * WN
-
-
-@pytest.fixture(scope="module")
-def setting():
-    model = jeffcott(0.0, 2 * ZETA * M_DISK * WN)
-    v, w = disk_dofs(model)
-    loads = np.zeros((model.dofs.size, 1), complex)
-    loads[v, 0], loads[w, 0] = 1e-4, -1e-4j  # forward imbalance u = 1e-4 kg m
-    speeds = np.linspace(0.5, 1.5, 101) * WN  # spacing 0.01 ω_n
-    columns = np.asarray(imbalance_response(model, speeds[[10, 50, 90]], loads))[model.dofs.free, 0, :]
-    return model, loads, speeds, PeakBasis(model, columns)
+__all__ = ["setting"]  # the Jeffcott rotor, its loads, speeds and peak basis of the half-width file
 
 
 @pytest.mark.parametrize("offset", [-3.0, 3.0])
