@@ -4,7 +4,7 @@ Two aluminium tubes joined at x = a by a coupling of axial stiffness 0 (a slidin
 held axially at its outer end (x = 0 and x = L). An axial force P at ξ₂ on the aft tube
 (a < ξ₂ < L) goes to the aft end only: the aft tube's part from ξ₂ to L is compressed by P,
 the part from a to ξ₂ carries nothing, so its flange moves by u_b = P (L − ξ₂)/(E A) with
-A = π (D² − d²)/4 (a bar in tension, statics); the forward tube carries nothing, u_a = 0. The
+A = π (D² − d²)/4 (a bar under an end load, statics); the forward tube carries nothing, u_a = 0. The
 coupling's axial offset is Δu = u_b − u_a = P (L − ξ₂)/(E A) and its axial force k_ax Δu is
 exactly 0: a free direction is flexible with zero stiffness (a number, not the NaN of a rigid
 direction, :mod:`flexshaft.analyses.misalignment`). The rigid torsional direction reports NaN.
