@@ -20,6 +20,7 @@ import math
 import pytest
 
 from flexshaft.units import (
+    RPM_PER_HZ,
     celsius_to_kelvin,
     format_quantity,
     hz_to_rpm,
@@ -43,6 +44,7 @@ def test_one_revolution_per_second_in_every_unit():
     assert rad_s_to_hz(two_pi) == pytest.approx(1.0, rel=REL)
     assert rpm_to_hz(60.0) == pytest.approx(1.0, rel=REL)
     assert hz_to_rpm(1.0) == pytest.approx(60.0, rel=REL)
+    assert RPM_PER_HZ == 60.0  # the Campbell diagrams' 1× line: f [Hz] = speed [rpm] / RPM_PER_HZ
 
 
 def test_one_rpm_is_two_pi_over_sixty_rad_s():
@@ -70,3 +72,10 @@ def test_displayed_temperature_is_celsius():
     assert format_quantity("temperature", 373.15) == "100.0 °C"
     assert format_quantity("temperature", 12.0, margin=True) == "+12.0 K"
     assert format_quantity("speed", 2.0 * math.pi * 80.0) == "4800 rpm"
+
+
+def test_displayed_angles_are_degrees_and_lengths_millimetres():
+    """π/4 rad is 45° (180° = π rad); 2.5e-3 m is 2.5 mm."""
+    assert format_quantity("angle", math.pi / 4) == "45°"
+    assert format_quantity("angle", -math.pi / 36, margin=True) == "-5°"
+    assert format_quantity("length", 2.5e-3) == "2.5 mm"

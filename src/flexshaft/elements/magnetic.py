@@ -15,7 +15,10 @@ The opposed pair is driven by the bias current ``i_0`` plus and minus the contro
           ≈ k_i\, i + k_s\, x,\qquad k_i = \frac{4 k i_0}{g_0^2},\quad k_s = \frac{4 k i_0^2}{g_0^3}
 
 (linearised about x = 0, i = 0). ``k_s > 0`` is the open-loop *negative* stiffness: the
-magnets pull the shaft further off centre; ``k_s = k_i i_0 / g_0``.
+magnets pull the shaft further off centre; ``k_s = k_i i_0 / g_0``. The gaps ``g_0 ∓ x`` take
+the shaft's displacement as the gaps' change, as the textbook's forms (and ROSS) do; with the
+poles inclined by α each gap changes by ``x cos α``, which would scale ``k_s`` by cos²α rather
+than cos α: at α = 22.5° the coded ``k_s`` is 8 % higher, the more destabilising side.
 
 Saturation. The gap flux density of a horseshoe is ``B = μ0 N i / (2 g)``; the iron saturates
 at ``B_sat``. The largest net force of the pair is reached with one magnet at ``B_sat`` and
