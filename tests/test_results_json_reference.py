@@ -176,9 +176,16 @@ def test_bearing_loads_each_under_its_key(run):
 
 def test_stability_top_speed_and_every_root_speeds_in_rpm(run):
     """``analysed_to_rpm``: the stability analysis's highest speed (its last) × 60/(2π);
-    ``every_root.speeds_rpm``: each speed of the every-root check × 60/(2π)."""
+    ``every_root.speeds_rpm``: each speed of the every-root check × 60/(2π). Pinned also from
+    the documented rules (docs/requirements.md, "The stability checks"): the tracked modes run
+    from rest to 1.5 × the operating speed, 1.5 × 4800 rpm = 7200 rpm (the baseline's
+    ``[operating] speed_rpm``); the every-root check holds rest, the operating speed and
+    (1 + ``min_onset_margin``) × it, 0, 4800 and 1.15 × 4800 = 5520 rpm. Tolerance 1e-12: one
+    product and one unit conversion of doubles."""
     a, data = run
     st = data["stability"]
+    assert st["analysed_to_rpm"] == pytest.approx(1.5 * 4800.0, rel=1e-12)
+    assert st["every_root"]["speeds_rpm"] == pytest.approx([0.0, 4800.0, 1.15 * 4800.0], rel=1e-12, abs=1e-9)
     assert st["analysed_to_rpm"] == pytest.approx(max(a.stability.speeds) * RPM_PER_RAD_S, rel=1e-12)
     assert st["every_root"]["speeds_rpm"] == pytest.approx([s * RPM_PER_RAD_S for s in a.roots.speeds], rel=1e-12)
     assert max(a.roots.speeds) > 2 * math.pi  # rad/s and rpm differ

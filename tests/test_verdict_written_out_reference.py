@@ -23,6 +23,7 @@ import pytest
 from flexshaft.design.requirements import Requirements
 from flexshaft.verdict.checks import CHECKS, evaluate, whirl_onset_check
 from flexshaft.verdict.envelope import tightest_check
+from flexshaft.verdict.envelope_text import governing_text
 from flexshaft.verdict.evidence import Evidence, LoopEvidence, ModeDamping
 from flexshaft.verdict.result import Check, Verdict
 from flexshaft.verdict.text import limit_text, location_text
@@ -70,7 +71,7 @@ def test_a_check_not_evaluated_does_not_fail_the_verdict():
     assert verdict.to_dict()["passed"] is True
 
 
-def test_tightest_check_is_the_smallest_relative_margin_then_a_failing_one():
+def test_tightest_check_is_a_failing_one_then_the_smallest_relative_margin():
     """Margins relative to the limit: 125/575 = 0.217 and (1.6 − 1.5)/1.5 = 0.067: the safety
     factor is the tighter; a failing check (1.2 < 1.5) is tighter than both."""
     onset = _onset_lower_bound()
@@ -126,7 +127,7 @@ def test_no_critical_speed_note_gives_the_search_top_in_rpm():
 def _model(*, laminated: bool, actuators: tuple, couplings: tuple):
     """What the check table's rules read of a model: a metal (isotropic) one-segment shaft or a
     laminated one, its actuators and couplings."""
-    kind = "orthotropic" if laminated else "isotropic"
+    kind = "lamina" if laminated else "isotropic"
     return SimpleNamespace(
         shaft=SimpleNamespace(laminate=object() if laminated else None),
         design=SimpleNamespace(materials={"m": SimpleNamespace(kind=kind)}),
@@ -137,9 +138,12 @@ def _model(*, laminated: bool, actuators: tuple, couplings: tuple):
 
 
 def test_checks_applying_to_each_kind_of_driveline():
-    """The module docstring of verdict/checks.py: buckling, whirl, separation and spin-up for
-    every shaft; Tsai-Wu and temperature for a laminated one; metal strength for a metal one;
-    the actuator and loop checks with active bearings; the coupling angle with couplings."""
+    """Which checks the optimizer constrains (``CheckRule.applies``, read by
+    ``flexshaft.optimize.evaluate.applicable_checks``, whose docstring states the rule):
+    buckling, whirl, separation and spin-up for every shaft; Tsai-Wu and temperature for a
+    one-piece laminated one; metal strength for a metal one; the actuator and loop checks with
+    active bearings; the coupling angle with couplings. (The verdict itself lists every check
+    and reports one it cannot compute as not evaluated: docs/requirements.md.)"""
     every = ["buckling", "whirl_onset", "whirl_damping", "separation", "torsional_separation", "spinup_deflection"]
     active = ["actuator_orbit", "actuator_force", "loop_sensitivity", "loop_gain_margin", "loop_phase_margin"]
 
@@ -155,8 +159,6 @@ def test_checks_applying_to_each_kind_of_driveline():
 def test_governing_text_names_the_governing_points_own_tightest_check():
     """Two points: at "cold" the onset passes by 125 rad/s of 575 (22 %); at "hot" (governing) a
     safety factor 1.6 ≥ 1.5 passes by 7 %: the line names hot and its safety factor, ≥ 1.5."""
-    from flexshaft.verdict.envelope_text import governing_text
-
     cold = SimpleNamespace(name="cold", verdict=Verdict((_onset_lower_bound(),)))
     sf = Check("tsai_wu", "Tsai-Wu safety factor", "ratio", "at least", "pass", 1.6, 1.5, 1.6 - 1.5)
     hot = SimpleNamespace(name="hot", verdict=Verdict((sf,)))
