@@ -14,15 +14,18 @@ from __future__ import annotations
 
 import math
 import re
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 from conftest import RUN_DESIGN
 
+from flexshaft.analyses.spinup_response import SpinupResponse
 from flexshaft.design import loads_design, with_overrides
-from flexshaft.report.results_json import results_json, rpm_or_none
+from flexshaft.report.results_json import _spinup_peak, results_json, rpm_or_none
 from flexshaft.resolution import Resolution
 from flexshaft.verdict.assess import assess
+from flexshaft.verdict.result import Check, Verdict
 
 RPM_PER_RAD_S = 60.0 / (2.0 * math.pi)
 #: The design's layup (55/-55/0/0)s, ply by ply from the inside, expanded by hand.
@@ -144,3 +147,60 @@ def test_run_command_prints_the_json_numbers_in_display_units(run, capsys, tmp_p
     assert _number_after(text, "mm at") == pytest.approx(imb["speed_of_max_rpm"], rel=5e-4)
     assert _number_after(text, "E* =") == pytest.approx(s["shaft_E_storage_Pa"] / 1e9, rel=5e-4)
     assert _number_after(text, "G* =") == pytest.approx(s["shaft_G_storage_Pa"] / 1e9, rel=5e-4)
+
+
+def test_static_shaft_deflection_is_the_largest_radial_one(run):
+    """``static.max_shaft_deflection_m``: the largest radial static deflection √(v² + w²) over the
+    shaft's nodes (both components load this design: the largest |v| and |w| are both non-zero,
+    so a single component reads short)."""
+    a, data = run
+    dm, qs = a.model.dofs, a.static_displacement
+    v, w = dm.values(qs, "shaft", "v"), dm.values(qs, "shaft", "w")
+    radial = max(math.sqrt(vi * vi + wi * wi) for vi, wi in zip(v, w))
+    assert data["static"]["max_shaft_deflection_m"] == pytest.approx(radial, rel=1e-12)
+    assert radial > max(np.max(np.abs(v)), np.max(np.abs(w))) * (1 + 1e-6)
+
+
+def test_bearing_loads_each_under_its_key(run):
+    """Each bearing's static lateral [N], static axial [N] and imbalance amplitude [N] copied from
+    its reactions (the hangers carry the drive's axial load, so lateral and axial differ)."""
+    a, data = run
+    assert set(data["bearings"]) == set(a.bearing_reactions)
+    for name, r in a.bearing_reactions.items():
+        entry = data["bearings"][name]
+        assert entry["static_lateral_N"] == pytest.approx(r.static_lateral, rel=1e-12)
+        assert entry["static_axial_N"] == pytest.approx(r.static_axial, rel=1e-12)
+        assert entry["imbalance_lateral_amplitude_N"] == pytest.approx(r.imbalance_lateral_amplitude, rel=1e-12)
+    assert any(r.static_lateral != r.static_axial for r in a.bearing_reactions.values())
+
+
+def test_stability_top_speed_and_every_root_speeds_in_rpm(run):
+    """``analysed_to_rpm``: the stability analysis's highest speed (its last) × 60/(2π);
+    ``every_root.speeds_rpm``: each speed of the every-root check × 60/(2π). Pinned also from
+    the documented rules (docs/requirements.md, "The stability checks"): the tracked modes run
+    from rest to 1.5 × the operating speed, 1.5 × 4800 rpm = 7200 rpm (the baseline's
+    ``[operating] speed_rpm``); the every-root check holds rest, the operating speed and
+    (1 + ``min_onset_margin``) × it, 0, 4800 and 1.15 × 4800 = 5520 rpm. Tolerance 1e-12: one
+    product and one unit conversion of doubles."""
+    a, data = run
+    st = data["stability"]
+    assert st["analysed_to_rpm"] == pytest.approx(1.5 * 4800.0, rel=1e-12)
+    assert st["every_root"]["speeds_rpm"] == pytest.approx([0.0, 4800.0, 1.15 * 4800.0], rel=1e-12, abs=1e-9)
+    assert st["analysed_to_rpm"] == pytest.approx(max(a.stability.speeds) * RPM_PER_RAD_S, rel=1e-12)
+    assert st["every_root"]["speeds_rpm"] == pytest.approx([s * RPM_PER_RAD_S for s in a.roots.speeds], rel=1e-12)
+    assert max(a.roots.speeds) > 2 * math.pi  # rad/s and rpm differ
+
+
+def test_spin_up_peak_without_a_limit_is_the_largest_orbit_up_to_the_operating_speed():
+    """Without a spin-up limit (the check not evaluated) the peak is the largest sampled shaft
+    orbit up to the operating speed: speeds 1000, 3000, 6000 (operating), 7800 rpm with shaft
+    orbits 0.01, 0.04, 0.02, 0.09 mm give 0.04 mm at 3000 rpm (not 0.09 mm at 7800 rpm, above
+    the spin-up; not the smallest, 0.01 mm)."""
+    rpm = np.array([1000.0, 3000.0, 6000.0, 7800.0])
+    envelope = np.array([[1e-5, 4e-5, 2e-5, 9e-5], [0.5e-5, 1e-5, 1e-5, 1e-5]])  # two nodes, the first largest
+    spinup = SpinupResponse(rpm / RPM_PER_RAD_S, None, None, None, envelope, {}, {})
+    skipped = Check("spinup_deflection", "spin-up shaft orbit", "length", "at most", "not evaluated")
+    a = SimpleNamespace(verdict=Verdict((skipped,)), spinup=spinup, model=SimpleNamespace(speed=6000.0 / RPM_PER_RAD_S))
+    peak = _spinup_peak(a)
+    assert peak["max_shaft_orbit_spin_up_m"] == pytest.approx(4e-5, rel=1e-12)
+    assert peak["speed_of_max_rpm"] == pytest.approx(3000.0, rel=1e-12)
