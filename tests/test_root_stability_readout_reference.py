@@ -12,7 +12,8 @@ below the spin and is unstable, ζ = −Re s/|s| ≈ −0.14; read as −Re s/Im
 negative (1/√(1 − ζ²) − 1). At 0.6 ω_n every root is above the spin: the forward root is the
 "+" one, stable, and the least damped roots are the tube's own antisymmetric bending modes,
 whose node at midspan the disk's damper cannot reach: the loss alone, s² = −ω²(1 + iη),
-ζ = −Re s/|s| = sin(atan(η)/2) = 0.1452 (the backward root, above the spin at both speeds, is the "+" one at both). :meth:`RootStability.roots_at` returns the roots of the speed analysed nearest
+ζ = −Re s/|s| = sin(atan(η)/2) = 0.1452 (the backward root, above the spin at both speeds, is
+the "+" one at both). :meth:`RootStability.roots_at` returns the roots of the speed analysed nearest
 to the one asked.
 
 The order of R(Ω) (:func:`~flexshaft.analyses.hysteretic_roots.consistent_roots`: sorted by
@@ -63,7 +64,8 @@ def test_the_least_damped_root_and_its_damping_ratio_minus_re_s_over_modulus(res
     assert result.least_damped[1] == pytest.approx(below, rel=1e-4)
     assert result.least_damping_ratio[1] == pytest.approx(zeta, rel=5e-4)
     assert result.worst_at(1.6 * WN).damping_ratio == pytest.approx(zeta, rel=5e-4)
-    # at 0.6 ω_n the least damped are the tube's antisymmetric modes (a node at the damper): s = iω √(1 + iη), ζ = sin(atan(η)/2) (−Re s/Im s = tan(atan(η)/2), 1.6 % more)
+    # at 0.6 ω_n the least damped are the tube's antisymmetric modes (a node at the damper):
+    # s = iω √(1 + iη), ζ = sin(atan(η)/2) (−Re s/Im s = tan(atan(η)/2), 1.6 % more)
     assert result.least_damping_ratio[0] == pytest.approx(np.sin(np.arctan(ETA) / 2), rel=5e-4)
 
 
