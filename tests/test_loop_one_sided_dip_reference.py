@@ -28,8 +28,11 @@ axis is possible (its leftmost crossing at Re L < 0), though the rightmost lies 
 **Half width.** A loop with 1/(1 + L) = S_p/(1 + i(ω − p)/h) has |S| = S_p/√(1 + ((ω − p)/h)²):
 the half width read from |S| at the peak and at any grid point beside it is h.
 
-Tolerances: the crossovers are refined to 1e-8 ω (regula falsi), so the frequency and the
-margin to 1e-7 (tests/test_loop_hidden_phase_crossover_reference.py), the peak to 1e-6; the half
+Tolerances: the crossovers are bracketed to 1e-8 ω and then solved by the Illinois method's
+last secant step inside the bracket, which lands on the crossing of this smooth circle to
+round-off (measured 1e-14; the bracket alone, through du/dω = 1/(ζ ω_r), would allow ~1e-5 on
+the margin): 1e-7 on the frequency and the margin (as
+tests/test_loop_hidden_phase_crossover_reference.py), the peak to 1e-6; the half
 width is a square root of differences of numbers of order 1: 1e-9. Written for the
 h46b-loop-* and h46b-dip-* mutations of scripts/mutations.toml; about 20 ms.
 """
