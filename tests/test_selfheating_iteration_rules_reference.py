@@ -12,8 +12,15 @@ history and the onset's bisection count (hunt h46c).
   scale. A stand-in self-heating that runs away above 3.7 with the scales (1, 2, 4): bracket
   [2, 4], mids 3 (stable), 3.5 (stable), 3.75 (runaway) for refine = 3, so the onset is 3.75
   exactly; with one step fewer it would stay at 4. 3 + refine self-heating runs are returned.
+* The iteration starts at the shaft's air (the module docstring: from below, so that it cannot
+  jump over a lower fixed point). An unloaded shaft (both load scales 0) dissipates exactly
+  0 W (tests/test_selfheating_load_scales_reference.py), so by the maximum principle its
+  temperature is the air at the Dirichlet ends and everywhere: the first iterate equals the
+  start, and the iteration converges at once (1 iteration, history [T_air]); a start anywhere
+  else needs a second iterate.
 
-Exact arithmetic (binary fractions), compared exactly. Microseconds.
+Exact arithmetic (binary fractions), compared exactly; the unloaded shaft to 1e-9 K (a
+sourceless tridiagonal solve, round-off). Microseconds, and ~0.1 s for the coarse baseline.
 """
 
 from __future__ import annotations
@@ -22,7 +29,11 @@ from types import SimpleNamespace
 
 import numpy as np
 
+import flexshaft as fs
 import flexshaft.thermal.selfheating as selfheating
+from flexshaft.design import with_overrides
+from flexshaft.thermal.analysis import shaft_air_temperature
+from flexshaft.thermal.options import thermal_options
 from flexshaft.thermal.selfheating import fixed_point
 
 
@@ -59,3 +70,13 @@ def test_onset_bisection_takes_exactly_refine_steps(monkeypatch):
     assert onset == 3.75
     assert asked == [1.0, 2.0, 4.0, 3.0, 3.5, 3.75]
     assert len(results) == 6
+
+
+def test_the_iteration_starts_at_the_shafts_air():
+    design = with_overrides(fs.baseline_design(), {"mesh.shaft_elements": 12, "mesh.boom_elements": 6})
+    air = shaft_air_temperature(design.tailboom, thermal_options(design.thermal))
+    result = selfheating.self_heating(fs.build_model(design), imbalance_scale=0.0, static_scale=0.0)
+    assert result.status == "converged"
+    assert result.iterations == 1
+    np.testing.assert_allclose(result.history, [air], rtol=0.0, atol=1e-9)
+    np.testing.assert_allclose(result.element_temperature, air, rtol=0.0, atol=1e-9)
