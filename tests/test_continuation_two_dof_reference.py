@@ -171,8 +171,9 @@ def test_the_viscous_method_takes_its_circulatory_stiffness():
     ``C + a F + b K_lat`` and the circulatory stiffness ``d K_lat S``
     (:func:`~flexshaft.analyses.eigen.viscous_model`). On y± (J y = ±i y) the roots solve
     s² + s(c + a η_f ω₀² + b η ω₀² ± iΩγ) + ω₀² ± i d η ω₀² = 0 (mutation hunt 46a: without
-    the circulatory term the forward root y₋'s real part moves by about d η ω₀²/(2 Im s) = 0.48 rad/s,
-    from −1.45 to −1.93)."""
+    the circulatory term the forward root y₋'s real part moves from −1.45 to −1.93; to first
+    order by d η ω₀²/|2s + c′ − iΩγ| ≈ d η ω₀²/(2 Im s − Ωγ) = 100/(268.8 − 60) = 0.48 rad/s,
+    c′ the damping coefficient above)."""
     c, gamma, eta, eta_f, speed = 2 * 0.01 * W0, 0.4, 0.02, 0.01, 1.5 * W0
     viscous = LossCoefficients(2e-3, 4e-3, 0.5)
     damping = c + viscous.fixed * eta_f * W0**2 + viscous.lateral * eta * W0**2

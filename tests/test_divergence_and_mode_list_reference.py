@@ -10,9 +10,9 @@ mode list (mutation hunt 46a).
        i.e.  m s³ + k_i k_d s² + (k + k_i k_p − k_s) s + k_i k_I = 0,
 
    whose largest real root (np.roots of the cubic) is positive: an aperiodic instability. The
-   whirl stability must search the state matrix for it (a controller with states can move a
-   root onto the positive real axis, unlike a static collocated spring and dashpot) and report
-   it as the divergence at every speed and the onset at the first speed. Tolerance 1e-5
+   static stiffness k + k_i k_p − k_s is negative, which alone tells the stability that a real
+   root may lie in the right half-plane; this case checks the divergence's value, reported at
+   every speed, and the onset at the first speed. Tolerance 1e-5
    relative: the tube's mass and flexibility move the disk's root by 8.5e-7 (measured against
    the cubic); the 8-mode basis holds the static shape under the magnet's force.
 
@@ -22,8 +22,8 @@ mode list (mutation hunt 46a).
    feedthrough is all the basis stiffness: no channel stiffness is left negative), but on the
    real axis C(s) dips to k/30 at s = b, where the magnet's −k_s wins: the cubic's
    counterpart (m s² + k_shaft − k_s)(s² + 2c s + b²) + k (s² − 2a s + b²) = 0 has two positive
-   real roots; the larger is the divergence. Only the controller's states tell the stability
-   that a real root can lie there.
+   real roots; the larger is the divergence. Here only the controller's states tell the
+   stability that a real root can lie there (mutation h46a-eigen-states-never-diverge).
 
 2. :func:`~flexshaft.analyses.eigen.lowest_modes` keeps a divergent root: eigenvalues of three
    uncoupled single-DOF oscillators m s² + c s + k = 0 (m = 1): k = 100 and 400 with c = 2
