@@ -164,3 +164,25 @@ def test_a_newton_root_of_the_other_whirl_is_not_this_modes():
     s, _, found = mode_roots(model(c, 0.0, eta), speed, [s_plus * (1 + 1e-6)], start_y[:, None])
     assert found[0]
     assert s[0] == pytest.approx(s_minus, rel=1e-12)
+
+
+def test_the_viscous_method_takes_its_circulatory_stiffness():
+    """The viscous internal-damping method (weights w = (a, b, d) real): damping
+    ``C + a F + b K_lat`` and the circulatory stiffness ``d K_lat S``
+    (:func:`~flexshaft.analyses.eigen.viscous_model`). On y± (J y = ±i y) the roots solve
+    s² + s(c + a η_f ω₀² + b η ω₀² ± iΩγ) + ω₀² ± i d η ω₀² = 0 (mutation hunt 46a: without
+    the circulatory term the forward root y₋'s real part moves from −1.45 to −1.93; to first
+    order by d η ω₀²/|2s + c′ − iΩγ| ≈ d η ω₀²/(2 Im s − Ωγ) = 100/(268.8 − 60) = 0.48 rad/s,
+    c′ the damping coefficient above)."""
+    c, gamma, eta, eta_f, speed = 2 * 0.01 * W0, 0.4, 0.02, 0.01, 1.5 * W0
+    viscous = LossCoefficients(2e-3, 4e-3, 0.5)
+    damping = c + viscous.fixed * eta_f * W0**2 + viscous.lateral * eta * W0**2
+    plus = quadratic_roots(damping + 1j * speed * gamma, W0**2 + 1j * viscous.circulatory * eta * W0**2)[0]
+    minus = quadratic_roots(damping - 1j * speed * gamma, W0**2 - 1j * viscous.circulatory * eta * W0**2)[0]
+    want = np.array([plus, minus])
+    start = want * (1 + 1e-3 * np.exp(0.3j))
+    s, _, converged = newton_many(
+        model(c, gamma, eta, eta_f), speed, start, np.column_stack([Y_PLUS, Y_MINUS]), viscous=viscous
+    )
+    assert list(converged) == [True, True]
+    np.testing.assert_allclose(s, want, rtol=1e-12, atol=0)
