@@ -13,9 +13,12 @@ when c_i Ω = (c_e + c_i) ω_n (insert s = iω: real part k − m ω² = 0, imag
 The rotor is the validation case ``jeffcott-rotating-damping-onset``'s (k = 75 398 N/m, m = 10 kg,
 c_e = 8.6832 N s/m = 2 ζ_e m ω_n with ζ_e = 0.005, η = 0.02). With ω_ref = 2 ω_n, c_e ω_ref/(η k) =
 2 ζ_e m ω_n · 2 ω_n / (η m ω_n²) = 4 ζ_e / η = 1, so Ω_onset = 2 ω_n; the study's default ω_ref
-(the first shaft mode, ω_n here) would give 1.5 ω_n. Tolerance 5e-4: the design's shaft carries
-3 g under the 10 kg disk (ω_n about 1e-4 lower than the massless closed form's), and the onset is
-solved to 1e-9 between the analysed speeds. CPU: about 0.1 s.
+(the first shaft mode, ω_n here) would give 1.5 ω_n. Tolerance 1e-6: the design's shaft carries
+0.01 kg/m³ × π/4 (0.02 m)² × 1 m = 3.1 mg under the 10 kg disk, so ω_n (and the onset with it)
+is lower than the massless closed form's by ½ (17/35) 3.1e-6/10 = 7.6e-8 (Rayleigh's effective
+mass of a pinned-pinned shaft at its middle), and the onset is solved to 1e-7 of the speed
+between the analysed speeds (analyses/stability.py's regula falsi): ~2e-7 at most. CPU: about
+0.1 s.
 """
 
 from __future__ import annotations
@@ -41,4 +44,4 @@ def test_the_viscous_study_uses_the_reference_frequency_it_is_given():
     res = shaft_stability(
         design, np.linspace(0.0, 3.0 * omega_n, 31), "viscous", n_modes=2, reference_frequency=omega_ref
     )
-    assert res.onset_speed == pytest.approx(expected, rel=5e-4)
+    assert res.onset_speed == pytest.approx(expected, rel=1e-6)
