@@ -60,3 +60,22 @@ def test_the_stability_map_runs_from_rest_past_the_required_onset_speed(monkeypa
     required = (1.0 + design.requirements.min_onset_margin) * design.operating.speed_rad_s
     assert speeds[0] == 0.0 and speeds.size == grid["stab_speeds"]
     assert speeds[-1] >= required
+
+
+def test_the_optimal_ply_angle_reports_its_own_safety_factor(monkeypatch):
+    """A hand-built ply-angle curve over 10°, 30°, 55°, 70° with safety factors 1.1, 1.6, 2.4,
+    1.9: the optimum is 55° and the factor reported with it is that angle's, 2.4 (not the
+    sweep's first, 1.1)."""
+    angles = np.array([10.0, 30.0, 55.0, 70.0])
+    sf = np.array([1.1, 1.6, 2.4, 1.9])
+
+    class Curve(dict):
+        alpha = SimpleNamespace(values=angles)
+
+    def fake_study(alpha, design=None, **run):
+        return Curve(safety_factor=SimpleNamespace(values=sf))
+
+    monkeypatch.setattr(studies, "ply_angle_study", fake_study)
+    found = studies._ply_angle_task(None, angles, {})
+    assert found["optimal_angle"] == 55.0
+    assert found["optimal_angle_safety_factor"] == 2.4

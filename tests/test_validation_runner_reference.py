@@ -119,3 +119,14 @@ def test_case_result_rule_directly():
     assert CaseResult(case, (1.0, 1.0, 1.0), (-2e-3, 1e-3, 0.0), 0.0).passed
     assert not CaseResult(case, (1.0, 1.0, 1.0), (1e-4, -2.5e-3, 0.0), 0.0).passed
     assert CaseResult(case, (1.0, 1.0, 1.0), (1e-4, -2.5e-3, 0.0), 0.0).worst == 2.5e-3
+
+
+def test_the_json_worst_difference_is_the_largest_in_magnitude(computes):
+    """Published (100, 200, 300), computed (100.02, 199.4, 300): differences +2e-4, −3e-3, 0
+    (worked above); the JSON report's worst_relative_difference is max |d| = 3e-3, not the first
+    value's +2e-4, and its verdict is the case's (3e-3 > 1e-3: failed)."""
+    computes([100.02, 199.4, 300.0])
+    report = ValidationReport((run_case(synthetic((100.0, 200.0, 300.0), tolerance=1e-3)),), 0.0)
+    (case,) = runner.report_json(report)["cases"]
+    assert case["worst_relative_difference"] == pytest.approx(3e-3, rel=1e-10)
+    assert case["passed"] is False
