@@ -18,13 +18,16 @@ References, worked by hand from the definitions (derived):
   [5, 7] (the decades the module docstring names).
 * A derived template's ply angle stays within [0, 90] deg: 85 deg +- 15 gives [70, 90].
 
-No design is evaluated: the searches below stop at their first evaluation. CPU about 0.2 s.
+No physics is evaluated (the searches stop at their first evaluation, or run a hand mass and
+margin law); about 0.8 s of CPU, most of it importing pymoo and xarray on first use.
 """
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+
+pytest.importorskip("pymoo")  # the optimizer's search (the `optimize` and `test` extras)
 
 from flexshaft.design import load_design, with_overrides
 from flexshaft.optimize import DesignProblem, DesignVariable, optimize
