@@ -93,3 +93,14 @@ def test_the_tailboom_temperatures_are_kelvin_above_the_ambient_air():
     assert set(found) == {"hover", "parked"}
     for value in found.values():
         assert env.ambient_temperature < value < env.ambient_temperature + 150.0
+
+
+def test_a_tailboom_temperature_computed_for_the_comparison_is_kelvin_too():
+    """A run without a thermal result: the comparison computes the boom's balance itself (the
+    same kelvin band as above, from the same residual)."""
+    design = fs.baseline_design()
+    ambient = thermal_options(design.thermal).environment.ambient_temperature
+    found = _boom_temperatures(design, SimpleNamespace(thermal=None))
+    assert set(found) == {"hover", "parked"}
+    for value in found.values():
+        assert ambient < value < ambient + 150.0
