@@ -110,18 +110,27 @@ def test_coupling_table_static_then_whirl_angle_in_degrees(monkeypatch, tmp_path
     assert loads == [12.0, 40.0, 250.0]
 
 
-def test_campbell_overlay_against_rpm(monkeypatch, tmp_path):
-    """Campbell samples at Ω = 2π·1200/60 and 2π·4800/60 rad/s are drawn at 1200 and 4800 rpm."""
+def test_campbell_overlay_against_rpm_each_design_its_own(monkeypatch, tmp_path):
+    """A's Campbell samples at Ω = 2π·1200/60 and 2π·4800/60 rad/s are drawn at 1200 and
+    4800 rpm, B's at 2π·1500/60 and 2π·5400/60 rad/s at 1500 and 5400 rpm, each with its own
+    frequencies (A 10 Hz, B 20 Hz) and whirl; the operating speeds 4800 and 5400 rpm."""
     monkeypatch.setattr(compare, "save_figure", lambda fig, folder, stem: {"png": Path(folder) / f"{stem}.png"})
     calls = {}
-    monkeypatch.setattr(compare, "campbell_overlay_figure", lambda curves, op: calls.setdefault("curves", curves))
+    monkeypatch.setattr(compare, "campbell_overlay_figure", lambda curves, op: calls.update(curves=curves, op=op))
     monkeypatch.setattr(compare, "spinup_overlay_figure", lambda *args: None)
-    speeds = np.array([1200.0, 4800.0]) * 2.0 * math.pi / 60.0
-    run = NS(
-        model=NS(speed=speeds[1], design=NS(requirements=NS(max_spinup_deflection=1e-3))),
-        campbell=NS(speeds=speeds, frequencies=np.ones((2, 1)), whirl=[["forward"]] * 2),
-        spinup=NS(speeds=speeds, shaft_peak=np.zeros(2)),
-    )
-    compare._dynamics_section(_comparison(runs=(run, run)), tmp_path)
-    rpm, frequencies, whirl = calls["curves"]["A"]
-    assert rpm == pytest.approx([1200.0, 4800.0], rel=1e-12)
+
+    def run(rpm, hz, whirl):
+        speeds = np.array(rpm) * 2.0 * math.pi / 60.0
+        return NS(
+            model=NS(speed=speeds[1], design=NS(requirements=NS(max_spinup_deflection=1e-3))),
+            campbell=NS(speeds=speeds, frequencies=np.full((2, 1), hz), whirl=[[whirl]] * 2),
+            spinup=NS(speeds=speeds, shaft_peak=np.zeros(2)),
+        )
+
+    runs = (run([1200.0, 4800.0], 10.0, "forward"), run([1500.0, 5400.0], 20.0, "backward"))
+    compare._dynamics_section(_comparison(runs=runs), tmp_path)
+    for label, rpm, hz, whirl in (("A", [1200.0, 4800.0], 10.0, "forward"), ("B", [1500.0, 5400.0], 20.0, "backward")):
+        speeds, frequencies, whirls = calls["curves"][label]
+        assert speeds == pytest.approx(rpm, rel=1e-12)
+        assert frequencies.tolist() == [[hz], [hz]] and whirls == [[whirl]] * 2
+    assert calls["op"] == pytest.approx({"A": 4800.0, "B": 5400.0}, rel=1e-12)

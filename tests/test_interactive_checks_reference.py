@@ -6,9 +6,11 @@ to measure on the margins chart.
 
 References (derived, by hand) on that file's stand-in assessment: rpm = Ω·60/(2π), Hz = Ω/(2π)
 = rpm/60, so a critical speed sits on the 1× line (f = N/60 Hz at N rpm). The margins chart's
-rule is its docstring's: +inf (passed, nothing to measure) reaches the axis end 3, not 0 (which
-reads "at the limit"); NaN (not evaluated) draws no bar (0). Figures are JSON data, rounded to
-6 significant digits: rel=1e-6. CPU about 0.01 s.
+rule is the static chart's (plot/verdict.py ``margins_figure``, its docstring's "+inf when it
+passed with nothing to measure (a bar to the axis end)"; verdict/result.py ``normalised_margin``
+and ``Verdict.plot_margins``: +inf passed with nothing to measure, "to the axis end", NaN not
+evaluated): +inf reaches the axis end, not 0 (which reads "at the limit"); NaN draws no bar (0).
+Figures are JSON data, rounded to 6 significant digits: rel=1e-6. CPU about 0.01 s.
 """
 
 from __future__ import annotations
@@ -78,8 +80,8 @@ def test_actuator_panels_at_the_excursion_checks_point_each_peak_at_its_speed(mo
 
 
 def test_a_margin_with_nothing_to_measure_reaches_the_axis_end(monkeypatch):
-    """Three checks: passed with no margin (+inf) → bar at 3; margin 0.75 against a limit 1.5 →
-    0.5; not evaluated (NaN) → no bar, 0."""
+    """Three checks: passed with no margin (+inf) → a bar to the x axis's end (beyond the finite
+    0.5); margin 0.75 against a limit 1.5 → 0.5; not evaluated (NaN) → no bar, 0."""
 
     def check(title, status, margin, limit):
         return NS(title=title, status=status, margin=margin, limit=limit, findings=[], scale=None)
@@ -92,5 +94,6 @@ def test_a_margin_with_nothing_to_measure_reaches_the_axis_end(monkeypatch):
     monkeypatch.setattr(interactive, "verdict_rows", lambda verdict, compact: [["t", "v", "l", "m", "s", ""]] * 3)
     figure = margins_figure(NS(verdict=NS(checks=checks, passed=True)))
     (bars,) = figure["data"]
-    assert bars["x"] == [3.0, 0.5, 0.0]
-    assert figure["layout"]["xaxis"]["range"] == [-1.0, 3.0]
+    axis_end = figure["layout"]["xaxis"]["range"][1]
+    assert bars["x"][0] == axis_end and bars["x"][0] > 0.5
+    assert bars["x"][1:] == [0.5, 0.0]

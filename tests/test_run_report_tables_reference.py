@@ -15,25 +15,7 @@ from types import SimpleNamespace as NS
 
 import numpy as np
 import pytest
-from test_run_report_pages_reference import DATA, _assessment, _rad_s
-
-from flexshaft.report import driveline
-from flexshaft.report.html import Section
-
-
-def _plan(monkeypatch, a, tmp_path, modes_rows=(), excitations=()):
-    monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
-    for name, title in (
-        ("verdict_section", "Verdict"),
-        ("inputs_section", "Inputs"),
-        ("imbalance_section", "Imbalance"),
-        ("stability_section", "Stability"),
-    ):
-        monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
-    monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
-    monkeypatch.setattr(driveline, "modes_table", lambda modes: list(modes_rows))
-    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: list(excitations))
-    return driveline.plan_run_report(a, tmp_path, design_text="")
+from test_run_report_pages_reference import _assessment, _plan, _rad_s
 
 
 def _section(plan, title):
@@ -100,11 +82,20 @@ def test_campbell_job_gets_main_rotor_lines_in_hz_and_criticals_in_rpm(monkeypat
 
 
 def test_static_deflection_figure_vertical_then_lateral(monkeypatch, tmp_path):
-    """The shaft's v (vertical) and w (lateral) go to the figure in that order, each its own
-    plane's values (stand-in DOF values v = 1, 2 mm, w = −3, −4 mm), with the bearings' stations."""
+    """The shaft's v (vertical) and w (lateral) of the static displacement go to the figure in
+    that order, each its own plane's values (stand-in DOF values v = 1, 2 mm, w = −3, −4 mm),
+    with the bearings' stations. The stand-in's values exist only for the assessment's static
+    displacement (a sentinel): any other vector raises."""
     a = _assessment()
+    a.static_displacement = static = object()
     planes = {"v": np.array([1e-3, 2e-3]), "w": np.array([-3e-3, -4e-3])}
-    a.model.dofs = NS(shaft_x=np.array([0.0, 4.0]), n_boom_nodes=0, values=lambda q, member, which: planes[which])
+
+    def values(q, member, which):
+        if q is not static:
+            raise AssertionError(f"the deflected shape drawn from {q!r}, not the static displacement")
+        return planes[which]
+
+    a.model.dofs = NS(shaft_x=np.array([0.0, 4.0]), n_boom_nodes=0, values=values)
     a.model.bearings = [NS(name="b", kind="passive", x_shaft=2.0, x_boom=None, offset=0.0)]
     plan = _plan(monkeypatch, a, tmp_path)
     (job,) = [j for j in plan.jobs if j.stem == "static_deflection"]
