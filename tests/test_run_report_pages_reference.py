@@ -120,9 +120,10 @@ DATA = {
 }
 
 
-def _plan(monkeypatch, a, tmp_path):
+def _plan(monkeypatch, a, tmp_path, modes_rows=(), excitations=()):
     """``plan_run_report`` of ``a`` with the sections other modules write and the key numbers of
-    ``results.json`` stubbed (this module's own text is what the tests read)."""
+    ``results.json`` stubbed (this module's own text is what the tests read); the modes tables'
+    rows and the torsional excitations are ``modes_rows`` and ``excitations``."""
     monkeypatch.setattr(driveline, "results_json", lambda a, thesis: DATA)
     for name, title in (
         ("verdict_section", "Verdict"),
@@ -132,8 +133,8 @@ def _plan(monkeypatch, a, tmp_path):
     ):
         monkeypatch.setattr(driveline, name, lambda *args, title=title, **kwargs: Section(title))
     monkeypatch.setattr(driveline, "report_title", lambda design: design.name)
-    monkeypatch.setattr(driveline, "modes_table", lambda modes: [])
-    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: [])
+    monkeypatch.setattr(driveline, "modes_table", lambda modes: list(modes_rows))
+    monkeypatch.setattr(driveline, "torsional_excitations", lambda design: list(excitations))
     return driveline.plan_run_report(a, tmp_path, design_text="")
 
 

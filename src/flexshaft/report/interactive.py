@@ -153,7 +153,8 @@ _AXIS_END = 3.0  # where the margin axis stops [-]
 
 def margins_figure(a: Assessment) -> dict:
     """Every check's normalised margin (:func:`~flexshaft.verdict.result.normalised_margin`:
-    negative fails) as a bar, green pass, red fail, grey not evaluated."""
+    negative fails) as a bar, green pass, red fail, grey not evaluated; a pass with nothing to
+    measure (+inf) is a bar to the axis end, a check not evaluated (NaN) draws no bar (0)."""
     checks = a.verdict.checks
     rows = verdict_rows(a.verdict, compact=True)
     margins = [normalised_margin(c) for c in checks]
