@@ -22,15 +22,8 @@ CPU: one 8-element rotor, 4 full Newton solves on about 50 DOFs: about 0.1 s.
 
 from __future__ import annotations
 
-import numpy as np
-import scipy.linalg as la
 from test_amb import K_INT, KD, KI, KP, KS, rotor
-from test_eigen_error_reference import _full_root
-
-from flexshaft.analyses.campbell import track_modes
-from flexshaft.analyses.eigen import reduce
-from flexshaft.analyses.eigen_error import eigenvalue_corrections
-from flexshaft.assembly.sparse import restrict
+from test_eigen_error_reference import assert_corrections_reach_the_full_roots
 
 IDEAL_PID = f"kp = {KP}\nkd = {KD}\nintegral_gain = {K_INT}\nks = {KS}\nki = {KI}"
 
@@ -38,26 +31,4 @@ IDEAL_PID = f"kp = {KP}\nkd = {KD}\nintegral_gain = {K_INT}\nks = {KS}\nki = {KI
 def test_correction_with_an_ideal_derivative_pid_is_the_distance_to_the_full_root():
     model = rotor(IDEAL_PID, 0.0, 2.1e11)  # a steel shaft: flexible modes above the rigid ones
     assert model.Kd.nnz > 0  # the ideal derivative sits in the damping
-    speed = 300.0
-    free = model.dofs.free
-
-    def dense(A):
-        return restrict(A.tocsr(), free).toarray()
-
-    M, G, C, K = dense(model.M), dense(model.G), dense(model.C), dense(model.K)
-
-    def T(z):
-        return z * z * M + z * (speed * G + C) + K + dense(model.controller_matrix(z))
-
-    red = reduce(model, 8)
-    tracked = track_modes(model, red, np.array([speed]), 4)
-    s, Y = tracked.eigenvalues[0], tracked.states[0]
-    delta = eigenvalue_corrections(red, speed, s, Y)
-    X = red.Phi @ Y
-    omega_c = np.sqrt(la.eigh(dense(model.K + model.Kp), M, eigvals_only=True)[8])
-    for k, sk in enumerate(s):
-        true = _full_root(T, sk, X[:, k] / np.linalg.norm(X[:, k])) - sk
-        assert abs(true) > 1e-7 * abs(sk)
-        gap = np.min(np.abs(np.delete(s, k) - sk))
-        neglected = (abs(sk) / omega_c) ** 4 + abs(true) / gap
-        assert abs(delta[k] - true) <= 3 * neglected * abs(true), (k, abs(delta[k] - true) / abs(true), neglected)
+    assert_corrections_reach_the_full_roots(model)

@@ -17,24 +17,12 @@ Schema objects only, no model: a few ms. Exact comparisons except the Kelvin sum
 from __future__ import annotations
 
 import pytest
+from test_schema_bounds_reference import PLY
 
 from flexshaft.design.bearings import ActiveBearing
 from flexshaft.design.components import Shaft
 from flexshaft.design.materials import Lamina
 
-PLY = {
-    "kind": "lamina",
-    "density": 1600.0,
-    "E_L": 128.0e9,
-    "E_T": 8.0e9,
-    "G_LT": 4.0e9,
-    "nu_LT": 0.3,
-    "X_t": 2.0e9,
-    "X_c": 1.0e9,
-    "Y_t": 40.0e6,
-    "Y_c": 140.0e6,
-    "S": 60.0e6,
-}
 SHAFT = {"x_start": 0.0, "x_end": 1.0, "outer_diameter": 0.05, "material": "ply", "layup": "(45/-45)s"}
 
 
