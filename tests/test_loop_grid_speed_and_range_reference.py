@@ -28,54 +28,21 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_amb import HALF_SPAN, I_T, MASS, rotor_text
 
 from flexshaft.analyses.bearing_loops import bearing_loops
 from flexshaft.analyses.loop_grid import frequency_grid
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-L_ROTOR, DO, WALL, RHO = 1.0, 0.1, 0.01, 7800.0
-M_DISK, I_DISK, IP_DISK = 20.0, 0.5, 1.0
-K_BEARING, C_BEARING, A_HALF = 1.0e5, 20.0, 0.4
-AREA = np.pi * (DO**2 - (DO - 2 * WALL) ** 2) / 4
-SECOND = np.pi * (DO**4 - (DO - 2 * WALL) ** 4) / 64
-M_ROTOR = RHO * AREA * L_ROTOR + M_DISK
-I_T = RHO * AREA * L_ROTOR**3 / 12 + RHO * SECOND * L_ROTOR + I_DISK
+K_BEARING, C_BEARING = 1.0e5, 20.0
+M_ROTOR, A_HALF = MASS, HALF_SPAN  # the tube's and disk's mass; the bearings at 0.5 ∓ 0.4 m
 
 
 def _text() -> str:
-    bearings = "".join(
-        f'\n[[bearings]]\nname = "amb_{k + 1}"\nkind = "active"\nx = {x}\nkp = {K_BEARING}\nkd = {C_BEARING}\n'
-        for k, x in enumerate((0.5 - A_HALF, 0.5 + A_HALF))
-    )
-    return f"""
-name = "rigid rotor on two PD magnetic bearings"
-[materials.stiff]
-kind = "isotropic"
-E = 2.1e15
-G = {2.1e15 / 2.6}
-density = {RHO}
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = {L_ROTOR}
-outer_diameter = {DO}
-wall_thickness = {WALL}
-material = "stiff"
-fixed_start = ["u", "theta"]
-{bearings}
-[[disks]]
-name = "disk"
-x = 0.5
-mass = {M_DISK}
-diametral_inertia = {I_DISK}
-polar_inertia = {IP_DISK}
-[operating]
-speed_rpm = 6000.0
-power = 0.0
-[mesh]
-shaft_elements = 8
-"""
+    """test_amb's rigid rotor (the same tube, disk and bearing stations) on PD bearings, whose
+    operating speed is 6000 rpm."""
+    return rotor_text(f"kp = {K_BEARING}\nkd = {C_BEARING}", speed_rpm=6000.0)
 
 
 def test_a_pole_point_above_the_range_is_left_out():
