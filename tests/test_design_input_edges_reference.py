@@ -154,3 +154,20 @@ def test_envelope_ambient_point_uses_the_thermal_ambient() -> None:
 def test_longdouble_override_is_its_float_value() -> None:
     design = with_overrides(TUNED, {"shaft.wall_thickness": np.longdouble("0.0025")})
     assert abs(design.shaft.wall_thickness - 0.0025) <= 1e-18  # one double rounding of 2.5e-3
+
+
+def test_sensor_boom_station_lies_on_the_boom() -> None:
+    """A 5.7 m boom: amb_2 at x = x_boom = 5.63 with its sensor 0.1 m aft reads boom station
+    5.73, beyond the tip; 0.05 m aft (5.68) is on the boom (the aft hanger mounted at the tip)."""
+    short = {"tailboom.length": 5.7, "bearings[3].x_boom": 5.7}
+    assert TUNED.bearings[2].name == "amb_2" and TUNED.bearings[2].x == 5.63
+    assert _problems({**short, "bearings[2].sensor_offset": 0.05}) == []
+    assert _refused_at({**short, "bearings[2].sensor_offset": 0.1}, "bearings[2].sensor_offset")
+
+
+def test_bearing_height_needs_a_tailboom() -> None:
+    """`offset` is the shaft's height above the boom's neutral axis: without a boom it means
+    nothing and is refused (the hanger of a boomless design joins the ground)."""
+    boomless = {"tailboom": None, "loads.point": [], "envelope": None}
+    assert _problems(boomless) == []
+    assert _refused_at({**boomless, "bearings[0].offset": 0.1}, "bearings[0].offset")
