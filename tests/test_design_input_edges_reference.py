@@ -6,15 +6,19 @@ References, read from the documentation, not from the code's output:
 * docs/design-reference.md ``[mesh]`` and ``[analysis]`` rows: ``shaft_elements`` defaults to
   36, ``boom_elements`` to 24, ``internal_damping`` to ``"rotating"``;
 * a bearing's boom station ``x_boom`` (default ``x``) lies on the tailboom [0, length], both
-  ends included; a coupling's station is strictly inside the shaft and no two couplings share
-  one (their order in the file is free); a disk, like a bearing, sits on one side of a joint,
+  ends included (the packaged baseline's aft hanger sits at the 8.05 m boom's tip); a sensor's
+  boom station ``x_boom + sensor_offset`` lies on it too (docs/magnetic-bearings.md), and a
+  bearing's ``offset`` needs a tailboom (docs/design-reference.md: "Only with a tailboom"); a
+  coupling's station is strictly inside the shaft and no two couplings share one (their order
+  in the file is not restricted); a disk, like a bearing, sits on one side of a joint,
   not at its station (docs/segmented-driveline.md);
 * a segment without a material of its own inherits the ``[shaft]`` material and may give its
   own layup when that material is a lamina (a metal takes none); a shaft cut by couplings is
   segmented even when it is one tube (``Design.segmented``, docs/segmented-driveline.md);
 * ``[materials.<name>.temperature_table]`` (docs/thermal.md): the table must span the matrix
   reference temperature and reach the allowable temperature (its last row may be the
-  allowable itself); rows lie in (−273.15, 400] °C; a loss factor lies in the open (0, 1);
+  allowable itself); rows lie in (−273.15, 400] °C and a loss factor in the open (0, 1)
+  (docs/design-reference.md, the table's ``temperature_c`` and ``loss_*`` rows);
   the optional ``E_L`` column makes the fibre modulus vary (exact at a row);
 * an ``[envelope]`` point with ``material_temperature = "ambient"`` and no ambient of its own
   puts the shaft at ``[thermal] ambient_temperature_c``, which must lie in the tables;
@@ -153,7 +157,11 @@ def test_envelope_ambient_point_uses_the_thermal_ambient() -> None:
 
 def test_longdouble_override_is_its_float_value() -> None:
     design = with_overrides(TUNED, {"shaft.wall_thickness": np.longdouble("0.0025")})
-    assert abs(design.shaft.wall_thickness - 0.0025) <= 1e-18  # one double rounding of 2.5e-3
+    # decimal -> long double -> double: two roundings, each within half an ulp of 2.5e-3 (4.3e-19)
+    assert abs(design.shaft.wall_thickness - 0.0025) <= 1e-18
+    # (where np.longdouble is a double, as on Windows or arm64 macOS, the value is a Python float
+    # before the override sees it: this still passes, and the mutation it guards is caught on
+    # x86-64 Linux, CI's platform)
 
 
 def test_sensor_boom_station_lies_on_the_boom() -> None:

@@ -32,4 +32,5 @@ def test_many_closed_inline_tables_are_not_nesting() -> None:
     text = "".join(f"t{i} = {{a = 1, b = [2, 3]}}\n" for i in range(40))
     assert text_problems(text) == []
     nested = "x = " + "{a = " * 33 + "1" + "}" * 33 + "\n"
-    assert len(text_problems(nested)) == 1
+    problems = text_problems(nested)
+    assert len(problems) == 1 and "nested more than 32" in problems[0]
