@@ -13,8 +13,9 @@ References (the rows of docs/design-reference.md, quoted):
   a design without ``[envelope]`` still finds each of the three default points by name, the
   cold day at -40 °C with the shaft at the ambient;
 * a point's known material temperature is checked against each lamina's temperature_table,
-  "tables are not extrapolated": a temperature equal to the table's first or last row lies
-  inside it (closed interval), 0.01 °C beyond either does not;
+  "outside the table nothing is extrapolated" (docs/design-reference.md): a temperature equal
+  to the table's first or last row lies inside it (closed interval), 0.01 °C beyond either
+  does not;
 * ``shaft_elements``: "[1, 2000]"; a controller's ``numerator``/``denominator``: "1 to 21
   items"; a bearing's ``stiffness``: "keys u, v, w, beta, gamma" (no twist, theta);
   ``fixed_start``: "each one of u, v, w, theta, beta, gamma".
