@@ -56,13 +56,19 @@ def test_campbell_job_gets_main_rotor_lines_in_hz_and_criticals_in_rpm(monkeypat
     """Shaft at 6000 rpm = 100 Hz: the main rotor's 1/rev at ratio 0.05 is 5 Hz, its 4/rev
     (ratio 0.2) 20 Hz; the tail rotor's 1/rev (ratio 1/1.17) is an order, passed as it is. The
     verdict's critical speeds Ω = 2π·3300/60 and 2π·7000/60 rad/s are 3300 and 7000 rpm, with
-    their AF 8 and 2.5."""
+    their AF 8 and 2.5. With the operating speed range 5700-6300 rpm (shaded), their separation
+    readings, worked by hand from API 684's rule (docs/requirements.md; the check measures a
+    critical below the range from its lowest speed, one above from its highest): 3300 rpm is
+    (5700 − 3300)/5700 = 42.1 % below 5700 and needs min(16, 17 (1 − 1/(8 − 1.5))) = 14.38 %;
+    7000 rpm is 700/6300 = 11.1 % above 6300 and needs min(26, 10 + 17 (1 − 1/(2.5 − 1.5))) = 10 %."""
     a = _assessment()
     a.evidence = NS(
         critical_speeds=[
             NS(speed=_rad_s(3300.0), amplification_factor=8.0),
             NS(speed=_rad_s(7000.0), amplification_factor=2.5),
-        ]
+        ],
+        operating_speed=_rad_s(6000.0),
+        operating_range=(_rad_s(5700.0), _rad_s(6300.0)),
     )
     excitations = [
         NS(name="main rotor 1/rev", source="main_rotor", order=1, ratio=0.05),
@@ -79,6 +85,10 @@ def test_campbell_job_gets_main_rotor_lines_in_hz_and_criticals_in_rpm(monkeypat
     (c1, af1), (c2, af2) = kw["response_criticals"]
     assert (c1, c2) == (pytest.approx(3300.0, rel=1e-12), pytest.approx(7000.0, rel=1e-12))
     assert (af1, af2) == (8.0, 2.5)
+    assert kw["speed_range_rpm"] == pytest.approx((5700.0, 6300.0), rel=1e-12)
+    below, above = kw["separation"]
+    assert below == pytest.approx((5700.0, 2400.0 / 5700.0, 0.17 * (1.0 - 1.0 / 6.5)), rel=1e-12)
+    assert above == pytest.approx((6300.0, 700.0 / 6300.0, 0.10), rel=1e-12)
 
 
 def test_static_deflection_figure_vertical_then_lateral(monkeypatch, tmp_path):

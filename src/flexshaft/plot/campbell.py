@@ -76,6 +76,8 @@ def campbell_figure(
     main_rotor_hz: Mapping[str, float] | None = None,
     excitation_orders: Mapping[str, float] | None = None,
     response_criticals: Sequence[tuple[float, float]] = (),
+    separation: Sequence[tuple[float, float, float]] = (),
+    speed_range_rpm: tuple[float, float] | None = None,
     ax=None,
 ) -> Figure:
     """Campbell diagram: tracked natural frequencies against spin speed.
@@ -115,6 +117,16 @@ def campbell_figure(
         response) as (speed [rpm], amplification factor): marked on the 1× line as squares and
         labelled with their speed and AF (the crossings of ``critical_speeds_rpm`` are then drawn
         unlabelled).
+    separation : sequence of (float, float, float), optional
+        For each of ``response_criticals``, in its order, the separation check's reading: the
+        speed its margin is measured from [rpm] (the operating speed range's nearest end), its
+        margin and the margin API 684 requires for its AF [fractions of that speed]. Each
+        critical's label then gives both margins, and the required one is drawn as a bar on the
+        critical's frequency from that speed to the nearest speed the critical may have: a
+        critical inside its bar fails the check.
+    speed_range_rpm : (float, float), optional
+        The operating speed range (lowest, highest) [rpm], shaded (the separation margins are
+        measured from its ends).
     ax : matplotlib Axes, optional
         Draw into this axes (its figure is returned).
 
@@ -301,8 +313,18 @@ def campbell_figure(
         handles.append(marker)
         if not len(response_criticals):  # the verdict's criticals carry the labels when given
             _label_criticals(ax, critical)
+    peaks = np.asarray(response_criticals, dtype=float).reshape(-1, 2)
+    sep = np.asarray(separation, dtype=float).reshape(-1, 3)
+    if len(separation) and sep.shape[0] != peaks.shape[0]:
+        raise ValueError(
+            f"separation: one (reference, margin, required) per response critical, got {sep.shape[0]} for "
+            f"{peaks.shape[0]}"
+        )
     if len(response_criticals):
-        peaks = np.asarray(response_criticals, dtype=float).reshape(-1, 2)
+        texts = [f"{rpm:.0f} rpm, AF {af:.3g}" if np.isfinite(af) else f"{rpm:.0f} rpm, AF ∞" for rpm, af in peaks]
+        if sep.size:
+            texts = [f"{t}, margin {m:.1%} (needs {r:.1%})" for t, (_, m, r) in zip(texts, sep)]
+            handles += _required_separation(ax, peaks[:, 0], sep, operating_rpm)
         (marker,) = ax.plot(
             peaks[:, 0],
             peaks[:, 0] / RPM_PER_HZ,
@@ -319,13 +341,15 @@ def campbell_figure(
             ax,
             peaks[:, 0],
             peaks[:, 0] / RPM_PER_HZ,
-            [f"{rpm:.0f} rpm, AF {af:.3g}" if np.isfinite(af) else f"{rpm:.0f} rpm, AF ∞" for rpm, af in peaks],
+            texts,
             fontsize=7.0,
             avoid=[(c, c / RPM_PER_HZ) for c in critical],
             color="tab:red",
             bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8},
         )
-    mark_operating(ax, operating_rpm)
+    mark_operating(ax, operating_rpm, speed_range_rpm=speed_range_rpm)
+    if speed_range_rpm is not None and speed_range_rpm[0] < speed_range_rpm[1]:
+        handles.append(ax.patches[-1])
     if operating_rpm is not None:
         handles.append(ax.get_lines()[-1])
     _mode_numbers(ax, speeds, freqs)
@@ -337,6 +361,34 @@ def campbell_figure(
     else:
         ax.legend(handles=handles, loc="best", fontsize=7.5)
     return fig
+
+
+def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray, operating_rpm: float | None) -> list:
+    """The required separation of each verdict critical as a bar on its frequency (f = N_c/60):
+    from the speed its margin is measured from, N_ref, to N_ref (1 − required) for a critical
+    below the operating speed, N_ref (1 + required) above it; a critical inside its bar (or
+    inside the operating range) fails. Returns the legend handle (none when no critical needs a
+    margin)."""
+    handle = []
+    for n_c, (reference, _, required) in zip(critical_rpm, sep):
+        if not (np.isfinite(reference) and required > 0.0):
+            continue
+        below = n_c < (reference if operating_rpm is None else operating_rpm)
+        bound = reference * (1.0 - required if below else 1.0 + required)
+        (bar,) = ax.plot(
+            [reference, bound],
+            [n_c / RPM_PER_HZ] * 2,
+            color="tab:red",
+            lw=2.2,
+            alpha=0.55,
+            marker="|",
+            ms=9,
+            solid_capstyle="butt",
+            zorder=4,
+            label="required separation, API 684 (a critical inside its bar fails)",
+        )
+        handle = [bar]
+    return handle
 
 
 def _label_rays(ax, labels: list[tuple[str, float, float, str]]) -> None:

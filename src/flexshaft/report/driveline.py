@@ -23,6 +23,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from flexshaft.analyses.modal import Modes
+from flexshaft.analyses.separation import api684_separation
 from flexshaft.analyses.summary import modes_table
 from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.design import baseline_design, baseline_text
@@ -159,6 +160,9 @@ def plan_run_report(
     bearing_x = [b.x_shaft for b in model.bearings]
     f_spin = rpm_to_hz(op_rpm)
     campbell_figure = []
+    verdict_criticals = a.evidence.critical_speeds or ()
+    low, high = a.evidence.operating_range or (a.evidence.operating_speed,) * 2
+    speed_range_rpm = (rad_s_to_rpm(low), rad_s_to_rpm(high)) if low < high else None
     if camp is not None:
         campbell_figure.append(
             figs.result(
@@ -168,7 +172,8 @@ def plan_run_report(
                 + ": whirl as line style and marker, log decrement as colour; every mode up to 1.1 × the "
                 "highest excitation the checks use at 130 % of the operating speed; circles: where the lateral "
                 "modes cross 1×; red squares: the critical speeds of the verdict (unbalance-response peaks, "
-                "with their AF)"
+                "with their AF and separation margin); red bars: the margin API 684 requires of each, from the "
+                "end of the operating speed range (shaded) its margin is measured from"
                 + ("; brown: the tail rotor's 1/rev and N/rev (torsional separation)" if tail_rotor else "")
                 + (
                     "; purple: the main rotor's 1/rev to N/rev (geared to the shaft; the boom modes' forcing "
@@ -182,9 +187,9 @@ def plan_run_report(
                 max_critical_rpm=1.25 * op_rpm,
                 main_rotor_hz=main_rotor or None,
                 excitation_orders=tail_rotor or None,
-                response_criticals=[
-                    (rad_s_to_rpm(c.speed), c.amplification_factor) for c in a.evidence.critical_speeds or ()
-                ],
+                response_criticals=[(rad_s_to_rpm(c.speed), c.amplification_factor) for c in verdict_criticals],
+                separation=_separation_readings(a.evidence, verdict_criticals),
+                speed_range_rpm=speed_range_rpm,
             )
         )
     sections.append(
@@ -376,6 +381,19 @@ def campbell_orders(model) -> dict[str, float]:
     if model.design is None:
         return {}
     return {e.name: e.ratio for e in torsional_excitations(model.design) if e.source == "tail_rotor"}
+
+
+def _separation_readings(evidence, criticals) -> list[tuple[float, float, float]]:
+    """What the separation check reads for each verdict critical, for the Campbell diagram: the
+    speed its margin is measured from [rpm], its margin and API 684's required margin [-]
+    (:func:`~flexshaft.analyses.separation.api684_separation`, as :func:`flexshaft.verdict.checks.
+    separation` calls it)."""
+    out = []
+    for c in criticals:
+        sep = api684_separation(c.speed, c.amplification_factor, evidence.operating_speed, evidence.operating_range)
+        reference = evidence.operating_speed if sep.reference_speed is None else sep.reference_speed
+        out.append((rad_s_to_rpm(reference), sep.margin, sep.required_margin))
+    return out
 
 
 #: What the first section of a report without figures says (:func:`without_figures`).
