@@ -33,8 +33,6 @@ from __future__ import annotations
 
 import tomllib
 
-import numpy as np
-
 import flexshaft.thesis.design_studies as studies
 from flexshaft.analyses.labelled import LabelledArrays
 from flexshaft.design import baseline_design, design_from_dict
@@ -54,8 +52,7 @@ def test_the_headline_gives_each_gain_under_its_name():
 
 def test_the_quietest_wall_and_its_peak():
     wall = LabelledArrays(
-        {"spinup_peak_deflection": ("wall_thickness", [5e-3, 1e-3, 3e-3])},
-        {"wall_thickness": [2e-3, 3e-3, 4e-3]},
+        {"spinup_peak_deflection": ("wall_thickness", [5e-3, 1e-3, 3e-3])}, {"wall_thickness": [2e-3, 3e-3, 4e-3]}
     )
     out = studies.headline(_result(wall=wall))
     assert out["quietest_spinup_wall_m"] == 3e-3
