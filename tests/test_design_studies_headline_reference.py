@@ -20,9 +20,10 @@
   design's own undamped column at both resolutions.
 * **A study's time is the sum of its tasks.** The stability map runs one task per K_p row;
   two rows of 1.5 s and 2.0 s are 3.5 s of ``stability`` and of ``elapsed``.
-* **No actuator, no gain studies.** docs/studies.md: studies 4 and 6 and the stability map
-  need PD active bearings; the Jeffcott rotor (isotropic steel, one contact damper) plans the
-  wall and forced-response studies only.
+* **No actuator, no gain studies.** The gain studies (4 and 6) and the stability map are
+  studies of the active bearings' PD gains, which a design without actuators does not have:
+  the Jeffcott rotor (isotropic steel, one contact damper) plans the wall and forced-response
+  studies only (the planned task keys are asserted).
 
 Hand-built inputs and one 8-element model: about 0.1 s of CPU.
 
