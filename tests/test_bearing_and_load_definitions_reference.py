@@ -58,3 +58,17 @@ def test_an_overflowing_static_gain_is_refused_as_a_support():
     (problem,) = refused.value.problems
     assert problem.path == "bearings[1].controller"
     assert "static gain of C(s)" in problem.message and f"at most {limit:.3g} N/m" in problem.message
+
+
+def test_an_overflowing_static_gain_with_an_integrator_is_refused_as_a_support():
+    """The same overflow behind an integrator: C(s) = 1e90 (s + 1)/(s (s + 1e-250)). The law's
+    frequency check finds nothing wrong at s = iω ≠ 0 (finite there), so only the support rule
+    (k_i C(0) ≤ 1e8 E I/h³, the checks module's docstring) refuses it: a design accepted with
+    an infinite support stiffness would be solved with an overflowed matrix."""
+    limit = 1e8 * 210e9 * (math.pi * (0.05**4 - 0.04**4) / 64.0) / (2.0 / 6.0) ** 3
+    law = "controller = { numerator = [1e90, 1e90], denominator = [1.0, 1e-250, 0.0] }\n"
+    with pytest.raises(DesignError) as refused:
+        build_model(loads_design(SMALL.replace("kp = 2e6\nkd = 200.0\n", law)))
+    (problem,) = refused.value.problems
+    assert problem.path == "bearings[1].controller"
+    assert "static gain of C(s)" in problem.message and f"at most {limit:.3g} N/m" in problem.message

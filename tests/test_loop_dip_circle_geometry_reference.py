@@ -7,9 +7,10 @@ References, derived here:
   ``b − c`` in [0, 2π): about 0, from 1 to −i is 3π/2 and from 1 to i is π/2 (a full turn is
   2π, not π).
 * **Möbius map through three points.** A Möbius map f(x) = (p x + q)/(r x + s) is fixed by three
-  points (cross-ratio invariance, e.g. Needham, *Visual Complex Analysis*, §3.IV): the map through
-  f at x = 0.1, 0.4, 0.9 must give f itself at any fourth x, to round-off.
-* **A lightly damped mode's circle** (the module docstring): L = A + B/(1 − i(x_r − x)/ζ) with
+  points (the invariance of the cross-ratio under Möbius maps; f is built directly from p, q,
+  r, s, not from a cross-ratio): the map through f at x = 0.1, 0.4, 0.9 must give f itself at
+  any fourth x, to round-off.
+* **A lightly damped mode's circle** (``dip_crossovers``' docstring): L = A + B/(1 − i(x_r − x)/ζ) with
   x = ln ω. With y = (x − x_r)/ζ, 1/(1 + iy) = (1 − iy)/(1 + y²): a circle of centre 1/2 and
   radius 1/2, Im = −y/(1 + y²), lowest (−1/2) at y = 1. For real B > 0 the circle's lowest point
   is A + B/2 − iB/2, reached at x = x_r + ζ, radius B/2.
@@ -22,7 +23,7 @@ References, derived here:
   arg b)/2) = −0.3782, ω = −ζω_r u + √((ζω_r u)² + ω_r²), i.e. 0.378 to 0.452 ζω_r *above* the
   peak, both crossings at Re L ≈ −1.5 (negative: phase crossovers). On a grid of step 0.1 ζω_r
   with points at 0.36 and 0.46 ζω_r past ω_r, every grid point has Im L > 0: the dip hides in
-  that one interval, four intervals above the peak, within 3 half widths of it (the peak's
+  that one interval, four intervals above the first grid point past the peak, within 3 half widths of it (the peak's
   |S| halves its square 20° of circle away, about 0.17 ζω_r). The search must hold that
   interval and, run on L, return the two crossings.
 * **Which arc may dip.** On the circle of centre −0.5 + 0.4i and radius 0.5 (it dips 0.1 below
