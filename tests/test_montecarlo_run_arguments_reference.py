@@ -9,9 +9,9 @@ References, from the documentation and counted by hand:
 * **Speeds.** A spin-up of one speed has no peak to find (docs/transient.md "Speeds": uniform
   speeds to the operating speed, refined around every local peak): ``n_speeds`` < 2 refused.
 * **Seed.** numpy's generators take any non-negative integer and the run records the seed as
-  text because netCDF3 holds at most 32-bit integers (``MAX_SEED = 2**63 − 1``, the
-  comment beside it and in ``run_montecarlo``): a seed of 2³¹ is a valid seed, so a run with it and a zero gap is refused for the
-  gap, not the seed; 2⁶³ is beyond the largest seed and refused.
+  text because netCDF3 holds at most 32-bit integers (``MAX_SEED = 2**63 − 1``, the comment
+  beside it and in ``run_montecarlo``): a seed of 2³¹ is a valid seed, so a run with it and a
+  zero gap is refused for the gap, not the seed; 2⁶³ is beyond the largest seed and refused.
 * **Bays.** docs/transient.md "Unbalance per bay": each bay is the span between consecutive
   bearings; the two-bay rotor of tests/test_montecarlo_bounds.py (bearings at 0, 1 and 2 m)
   has two, so the study declares ``eccentricity_bay1``, ``eccentricity_bay2`` and no third.
