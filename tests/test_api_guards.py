@@ -405,14 +405,19 @@ def test_model_guards_report_a_statically_singular_driveline():
     assert "static deflection" in problems[0].message and "rigid-body motion" in problems[0].message
 
 
-def test_model_guards_report_a_free_massless_member():
-    text = (
+def free_massless_jeffcott_text() -> str:
+    """The Jeffcott rotor of tests/rotors.py with a nearly massless tube (1e-6 kg/m³) and no
+    supports: a free member with almost no mass, whose modal basis the preflight refuses."""
+    return (
         jeffcott_text(0.0, 0.0)
         .replace("density = 0.1", "density = 1e-6")
         .replace('fixed_start = ["u", "v", "w", "theta"]', "")
         .replace('fixed_end = ["v", "w"]', "")
     )
-    problems = model_guards(loads_design(text))
+
+
+def test_model_guards_report_a_free_massless_member():
+    problems = model_guards(loads_design(free_massless_jeffcott_text()))
     assert problems[0].path == "shaft.material" and "almost no mass" in problems[0].message
 
 

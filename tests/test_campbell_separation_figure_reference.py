@@ -37,22 +37,25 @@ SEPARATION = [(4560.0, 560.0 / 4560.0, BASE), (5040.0, 960.0 / 5040.0, 0.10 + BA
 REL = 1e-12
 
 
-@pytest.fixture(scope="module")
-def ax():
+def _draw(criticals, separation, **extra):
+    """The one-mode diagram (90 Hz, forward) with these verdict criticals and readings."""
     freqs = np.full((SPEEDS.size, 1), 90.0)
-    fig = campbell_figure(
-        SPEEDS,
-        freqs,
-        np.full(freqs.shape, "forward"),
-        operating_rpm=4800.0,
-        response_criticals=CRITICALS,
-        separation=SEPARATION,
-        speed_range_rpm=RANGE,
+    return campbell_figure(
+        SPEEDS, freqs, np.full(freqs.shape, "forward"), response_criticals=criticals, separation=separation, **extra
     )
-    yield fig.axes[0]
+
+
+def _close(fig) -> None:
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+@pytest.fixture(scope="module")
+def ax():
+    fig = _draw(CRITICALS, SEPARATION, operating_rpm=4800.0, speed_range_rpm=RANGE)
+    yield fig.axes[0]
+    _close(fig)
 
 
 def _bars(ax):
@@ -87,31 +90,17 @@ def test_each_critical_is_labelled_with_its_margin_and_the_required_one(ax):
 def test_a_critical_that_needs_no_margin_gets_no_bar():
     """AF 2 < 2.5: API 684 requires no separation (a critically damped peak): no bar, the label
     says 0 %."""
-    freqs = np.full((SPEEDS.size, 1), 90.0)
-    fig = campbell_figure(
-        SPEEDS,
-        freqs,
-        np.full(freqs.shape, "forward"),
-        operating_rpm=4800.0,
-        response_criticals=[(4500.0, 2.0)],
-        separation=[(4560.0, 60.0 / 4560.0, 0.0)],
-        speed_range_rpm=RANGE,
-    )
+    fig = _draw([(4500.0, 2.0)], [(4560.0, 60.0 / 4560.0, 0.0)], operating_rpm=4800.0, speed_range_rpm=RANGE)
     ax = fig.axes[0]
     assert _bars(ax) == []
     assert any("needs 0.0%" in t.get_text() for t in ax.texts)
-    import matplotlib.pyplot as plt
-
-    plt.close(fig)
+    _close(fig)
 
 
 def test_the_separation_readings_must_match_the_criticals():
     """One reading per verdict critical, or none (the figure without the separation check)."""
-    freqs = np.full((SPEEDS.size, 1), 90.0)
     with pytest.raises(ValueError, match="one \\(reference, margin, required\\) per response critical, got 1 for 2"):
-        campbell_figure(
-            SPEEDS, freqs, np.full(freqs.shape, "forward"), response_criticals=CRITICALS, separation=SEPARATION[:1]
-        )
+        _draw(CRITICALS, SEPARATION[:1])
 
 
 def test_a_critical_inside_the_range_gets_the_bar_of_its_side_of_the_operating_speed():
@@ -119,18 +108,7 @@ def test_a_critical_inside_the_range_gets_the_bar_of_its_side_of_the_operating_s
     (its margin 0: inside the range), and the speeds it may have end at 4560 (1 − 0.12405): the
     bar runs down from 4560 rpm, not up (the critical is above 4560, its side is the operating
     speed's)."""
-    freqs = np.full((SPEEDS.size, 1), 90.0)
-    fig = campbell_figure(
-        SPEEDS,
-        freqs,
-        np.full(freqs.shape, "forward"),
-        operating_rpm=4800.0,
-        response_criticals=[(4700.0, 5.2)],
-        separation=[(4560.0, 0.0, BASE)],
-        speed_range_rpm=RANGE,
-    )
+    fig = _draw([(4700.0, 5.2)], [(4560.0, 0.0, BASE)], operating_rpm=4800.0, speed_range_rpm=RANGE)
     (bar,) = _bars(fig.axes[0])
     assert tuple(bar.get_xdata()) == pytest.approx((4560.0, 4560.0 * (1.0 - 0.12405405405405405)), rel=REL)
-    import matplotlib.pyplot as plt
-
-    plt.close(fig)
+    _close(fig)

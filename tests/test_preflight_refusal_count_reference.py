@@ -13,20 +13,14 @@ eigen-solver refuses (tests/test_api_guards.py shows the first problem; here, th
 
 from __future__ import annotations
 
-from rotors import jeffcott_text
+from test_api_guards import free_massless_jeffcott_text
 
 from flexshaft.analyses.preflight import model_guards
 from flexshaft.design import loads_design
 
 
 def test_a_refused_basis_is_the_only_problem() -> None:
-    text = (
-        jeffcott_text(0.0, 0.0)
-        .replace("density = 0.1", "density = 1e-6")
-        .replace('fixed_start = ["u", "v", "w", "theta"]', "")
-        .replace('fixed_end = ["v", "w"]', "")
-    )
-    problems = model_guards(loads_design(text))
+    problems = model_guards(loads_design(free_massless_jeffcott_text()))
     paths = [problem.path for problem in problems]
     assert paths[0] == "shaft.material" and paths.count("shaft.material") == 1
     assert "design" not in paths  # the modes' refusal of the same basis is not reported
