@@ -42,12 +42,11 @@ import pytest
 from rotors import DI, DO, K_SHAFT, M_DISK, WN, G, L, jeffcott, jeffcott_text
 
 import flexshaft as fs
-
 from flexshaft.analyses.campbell import Campbell, campbell
-from flexshaft.assembly import build_model
-from flexshaft.design import loads_design
 from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.hysteretic_roots import branch_roots, branches
+from flexshaft.assembly import build_model
+from flexshaft.design import loads_design
 
 ETA = 0.02
 C_E = 2 * 0.003 * M_DISK * WN
@@ -120,7 +119,8 @@ def test_heavily_damped_pair_is_tracked_before_a_mode_lower_by_modulus():
     zeta = 0.95
     k_t = G * np.pi * (DO**4 - DI**4) / 32 / (L / 2)
     w_t = 0.6 * WN
-    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", f"mass = 20.0\npolar_inertia = {k_t / w_t**2}")
+    inertia = f"mass = 20.0\npolar_inertia = {k_t / w_t**2}"
+    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", inertia)
     diagram = campbell(build_model(loads_design(text)), np.array([0.0, 0.01 * WN]), n_modes=2)
     lateral = WN * complex(-zeta, np.sqrt(1 - zeta**2))
     assert abs(lateral) > w_t > lateral.imag  # |s| and Im s order the modes differently

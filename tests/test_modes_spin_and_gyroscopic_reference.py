@@ -50,7 +50,8 @@ def test_shapes_figure_draws_the_mode_nearest_the_spin_frequency():
     zeta = 0.95
     k_t = G * np.pi * (DO**4 - DI**4) / 32 / (L / 2)
     w_t = 0.6 * WN
-    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", f"mass = 20.0\npolar_inertia = {k_t / w_t**2}")
+    inertia = f"mass = 20.0\npolar_inertia = {k_t / w_t**2}"
+    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", inertia)
     speed = 0.3 * WN
     found = fs.modes(fs.build_model(loads_design(text)), speed=speed, n_modes=4)
     f_lateral, f_torsion = WN * np.sqrt(1 - zeta**2) / (2 * np.pi), w_t / (2 * np.pi)
