@@ -15,7 +15,7 @@ References
   ω_n√(1 − ζ²) = 0.312 ω_n, 15.0 Hz) and a disk polar inertia J giving a torsional mode
   ω_t = √(G J_p/(L/2)/J) = 0.6 ω_n (28.9 Hz; the tube held in twist at x = 0, free at L), spun at
   Ω = 0.3 ω_n (14.4 Hz): the nearest mode is a lateral one of the pair. (Ω read as a frequency
-  in Hz, 90.5, would pick the torsional mode.) Frequencies 1e-4 relative (the tube's mass).
+  in Hz, 90.6, would pick the torsional mode.) Frequencies 1e-4 relative (the tube's mass).
 """
 
 from __future__ import annotations
