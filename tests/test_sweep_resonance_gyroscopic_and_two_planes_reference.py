@@ -28,8 +28,11 @@ shape, with ``κ_ω = ω|−2mω + ic|/|k_j − mω² + icω|`` per plane (tests
 test_resonance_sensitivity_reference.py), ≈ 1/ζ_j at ω_j = √(k_j/m). With ζ_v = 3e-5 and ζ_w =
 2.5e-5 both resonant speeds (scan points) exceed 1e4 and stay below the full solver's warning
 (1e5); their neighbours, ≥0.75 % away, are below 100. Both must be solved in full, the smaller
-of the two response peaks included. 120 speeds: the greedy's round (16 full solves after the
-13 initial ones, the tube's mass amplified 1/ζ near the peaks) stays below its 40 % of the scan.
+of the two response peaks included (κ_ω is measured at every local maximum of the response,
+not at the largest alone). The scan is accepted on its 13 initial full solves (``rounds == 0``,
+tolerance 1e-6: the two planes' shapes move with speed only by the tube's 3.5e-6 mass ratio),
+so that the resonant speeds are solved in full by the κ_ω rule and not by a greedy round; one of
+them (sample 81) is an initial snapshot, the other (sample 53, the smaller peak) is not.
 """
 
 from __future__ import annotations
@@ -94,9 +97,9 @@ def test_both_sharp_criticals_of_a_scan_are_solved_in_full():
     assert sharp.tolist() == at  # the two resonant speeds, nothing else
     assert np.all(kappa[at] * RESONANCE_TOLERANCE < 1)  # the full solver does not warn
 
-    sweep = imbalance_sweep(model, speeds, Q)
+    sweep = imbalance_sweep(model, speeds, Q, tolerance=1e-6)
 
-    assert sweep.basis_size > 0
+    assert sweep.rounds == 0 and sweep.basis_size > 0  # accepted on the 13 initial snapshots
     assert sweep.full[at].all()
     # and the values: a dense LAPACK solve of the full (K − Ω²M + iΩ(ΩG + C)) q = Ω² Q₁ (at these
     # resonances the tube's mass, amplified 1/ζ, moves the closed form itself by ~1e-1, so the
