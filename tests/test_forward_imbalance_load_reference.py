@@ -14,8 +14,8 @@ forward whirl at ω = Ω, seen by the rotating shaft as a static bend, so the lo
 
 whereas the conjugate load (Q_w = +i, a backward turning force, ω = −Ω in complex
 coordinates, cycled at −2Ω in the rotating frame) would give ``Ω²/|k(1 − iη) − mΩ² − i c_e Ω|``,
-which with η = 0.2 is a factor up to 5 smaller near ω_n. The orbit's major semi-axis of a
-circular whirl is |r|.
+which with η = 0.2 is a factor up to 6 smaller near ω_n ((η + 2ζ)/(2ζ) = 0.24/0.04 at ω_n).
+The orbit's major semi-axis of a circular whirl is |r|.
 
 Tolerance 1e-4 relative: the tube's own mass (3.5e-6 of the disk's, tests/rotors.py) moves the
 response by 2.1e-5 relative at ζ = 0.02 (measured; the same allowance as

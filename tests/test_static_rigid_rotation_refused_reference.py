@@ -5,7 +5,7 @@ Reference (statics). The tube of tests/rotors.py pinned at its start only (v, w 
 tilts free) has a rigid rotation about the pin that no stiffness resists: a transverse load P at
 the middle has a moment P L/2 about the pin that nothing balances, so no static equilibrium
 exists. The assembled K is singular in exact arithmetic; in floating point the LU leaves a pivot
-of round-off size (not an exact zero: measured, the solve then returned 2.7e10 m for 100 N),
+of round-off size (not an exact zero: measured, the solve then returned ~1e10 m for 100 N, a round-off result),
 which :func:`~flexshaft.analyses.response.static_response` must screen and report as
 :class:`~flexshaft.analyses.banded.SingularSystemError`. The same tube pinned at both ends
 deflects at the middle by the simply supported beam's ``P L³/(48 EI)`` (Hermite cubic elements
