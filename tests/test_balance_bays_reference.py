@@ -10,11 +10,14 @@ instead of x_end − x_start is then 20 % low.
   model assembled by hand carries) splits the tube mass m_s by bay length: m_s/2 per bay.
 * **A part on an inner bearing's station** counts in the bay that ends there (the forward
   one): a 3 kg disk at 1.5 m adds to bay 1, not bay 2; the bays still sum to the rotating mass.
+* **ISO 21940-11's U = e m of a massless bay** is 0 (e = G/Ω = 6.3e-3/100 m), not refused;
+  a negative mass is.
 
 Sums of a few products, asserted to 1e-12 (round-off only).
 
-Written for the mutations h51b-balance-handbuilt-length-from-origin and
-h51b-balance-part-at-bearing-to-aft-bay of scripts/mutations.toml.
+Written for the mutations h51b-balance-handbuilt-length-from-origin,
+h51b-balance-part-at-bearing-to-aft-bay and h51b-balance-massless-unbalance-refused of
+scripts/mutations.toml.
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ import numpy as np
 import pytest
 
 from flexshaft.assembly import build_model
-from flexshaft.assembly.balance import bay_rotating_masses, imbalance_bays, rotating_mass
+from flexshaft.assembly.balance import bay_rotating_masses, imbalance_bays, permissible_unbalance, rotating_mass
 from flexshaft.design import design_from_dict
 
 RHO, DO, WALL = 2700.0, 0.05, 0.002
@@ -66,3 +69,10 @@ def test_a_disk_on_an_inner_bearing_counts_in_the_bay_ending_there():
     np.testing.assert_allclose(masses, [PER_METRE + 3.0, PER_METRE], rtol=1e-12)
     assert masses.sum() == pytest.approx(rotating_mass(model), rel=1e-12)
     assert rotating_mass(model) == pytest.approx(2.0 * PER_METRE + 3.0, rel=1e-12)
+
+
+def test_a_massless_bay_may_carry_no_unbalance():
+    assert permissible_unbalance(6.3, 100.0, 0.0) == 0.0
+    assert permissible_unbalance(6.3, 100.0, 2.0) == pytest.approx(6.3e-3 / 100.0 * 2.0, rel=1e-12)
+    with pytest.raises(ValueError, match="mass"):
+        permissible_unbalance(6.3, 100.0, -1.0)

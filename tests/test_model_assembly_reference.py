@@ -45,9 +45,7 @@ def _coupled_dofs() -> DofMap:
     """Four shaft nodes, nodes 1 and 2 at the coupling's station; v, w, β, γ of node 2 tied to
     node 1's (a coupling rigid in bending and shear)."""
     tied = np.array([[6 * 2 + f, 6 * 1 + f] for f in (1, 2, 4, 5)])
-    return DofMap(
-        shaft_x=np.array([0.0, 1.0, 1.0, 2.0]), boom_x=np.zeros(0), shaft_joints=np.array([1]), tied=tied
-    )
+    return DofMap(shaft_x=np.array([0.0, 1.0, 1.0, 2.0]), boom_x=np.zeros(0), shaft_joints=np.array([1]), tied=tied)
 
 
 def _tube(density=2700.0, outer=0.1, inner=0.09) -> ShaftProperties:
@@ -58,7 +56,7 @@ def _tube(density=2700.0, outer=0.1, inner=0.09) -> ShaftProperties:
 
 def _model(dofs: DofMap, **kwargs) -> Model:
     zero = sp.csr_matrix((dofs.size, dofs.size))
-    defaults = dict(bearings=(), actuators=(), shaft=_tube(), speed=0.0, power=0.0)
+    defaults = {"bearings": (), "actuators": (), "shaft": _tube(), "speed": 0.0, "power": 0.0}
     defaults.update(kwargs)
     return Model(dofs=dofs, M=zero, K=zero, C=zero, G=zero, **defaults)
 
