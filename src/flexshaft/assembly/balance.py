@@ -131,7 +131,9 @@ def _tube_mass_between(model, a: float, b: float) -> float:
 def bay_rotating_masses(model) -> np.ndarray:
     """Rotating mass of each bay (:func:`imbalance_bays`) [kg]: the tubes between its bearings
     and the disks and coupling hubs on it; an overhang (ahead of the first bearing, behind the
-    last) joins its end bay, so that the bays' masses sum to :func:`rotating_mass`. One bay (the
+    last) joins its end bay, so that the bays' masses sum to :func:`rotating_mass` (a part at
+    exactly an inner bearing's x is counted once, in the bay ending there: a tie-break, not a
+    physical rule, as the bay's unbalance acts at its middle). One bay (the
     whole shaft) when the shaft has fewer than two bearing stations.
 
     The Monte-Carlo unbalance of bay b is ``U_b = e_b m_b`` with this m_b.
