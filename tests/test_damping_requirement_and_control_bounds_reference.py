@@ -13,14 +13,16 @@ References, independent of flexshaft's code:
   (the closed-form inverse ζ = δ/√(4π² + δ²)), checked to 1e-15 (a few roundings).
 * docs/limits.md's range table: ``Damping`` "0 to 1e9 N s/m" (an undamped bearing, c = 0, is
   the usual idealisation of a rolling-element support), ``IntegralGain`` "0 to 1e15" (K_I = 0 is
-  a PD law written out, as an omitted ``integral_gain`` is), ``Current`` "up to 10 kA" above 0: a magnet's
-  current gain k_i = 4 k i_0/g_0² (docs/magnetic-bearings.md) vanishes at i_0 = 0, and the
-  schema's ``CurrentGain`` refuses k_i = 0 ("above 0"), so a zero bias current is refused too.
+  a PD law written out, as an omitted ``integral_gain`` is), ``Current`` "above 0, up to 10 kA":
+  a magnet's current gain k_i = 4 k i_0/g_0² (docs/magnetic-bearings.md) vanishes at i_0 = 0,
+  and the schema's ``CurrentGain`` refuses k_i = 0 ("above 0"), so a zero bias current is
+  refused too.
 
 Each check validates one number (pydantic) or reads one property: exact, no tolerance beyond
 the stated one. Written for the mutations h51c-req-damping-ratio-one-accepted,
 h51c-req-zero-damping-ratio-falls-to-default, h51c-q-zero-bias-current,
-h51c-q-zero-integral-gain-refused and h51c-q-undamped-bearing-refused of scripts/mutations.toml.
+h51c-q-zero-integral-gain-refused and h51c-q-undamped-bearing-refused of scripts/mutations.toml
+(it also catches h51c-req-zero-log-decrement-refused and -falls-to-default).
 """
 
 from __future__ import annotations
