@@ -15,7 +15,9 @@
 * **Accumulated growth.** A run is refused when ∫ max(0, largest Re λ) dt over its dwells
   exceeds ln MAX_GROWTH (the docstring of ``_refuse_growth_at_constant_speed``: the growth of
   a free whirl held there). Two dwells of 5 s at the Jeffcott rotor's unstable Ω = 2ω_n
-  (growth rate ≈ 1.0 1/s, tests/test_runup_unstable_dwell_reference.py: ηω_n/6) grow e^5 each,
+  (growth rate ≈ 1.0 1/s: ηω_n/6 from the run-up's causal loss model, whose reference
+  frequency is ω_n + Ω, tests/test_runup_unstable_dwell_reference.py; the hysteretic
+  eigen-analysis's branch gives ηω_n/2) grow e^5 each,
   below MAX_GROWTH = 1e3 = e^6.9 alone, e^10 together: refused.
 
 * **Every free DOF.** A shaft whose first free DOF (index 0 of the free set) is its start node's
@@ -24,9 +26,10 @@
   included, is the steady orbit of the direct frequency-domain solve
   (:func:`steady_state_envelope`, banded LU of the full model; the rotor's only loss is a
   viscous dashpot, the same in both). Four basis modes and no static correction: 1e-6 relative
-  (measured: they agree to 1e-8; the tube's modes left out are far above Ω because the tube is
-  nearly massless, so their dynamic part is negligible; with the first free DOF's row dropped
-  the start node would read 0).
+  (measured: they agree to 1e-8: the disk is the only mass, so the static shape under a disk
+  load lies in the span of the first v and w modes and the tube's modes, left out with no
+  static correction, take almost none of the load; with the first free DOF's row dropped the
+  start node would read 0).
 
 Tolerances: the instants are float64 arithmetic (1e-12); the eigenvalue count is exact (the
 cut-off is chosen at the middle of the gap between two modes, far from either, 5 %).
@@ -58,7 +61,7 @@ from flexshaft.assembly.sparse import restrict
 from flexshaft.design import loads_design
 
 
-def test_the_outputs_run_from_rest_to_the_end_of_the_ramp():
+def test_the_outputs_run_from_t0_to_the_end_of_the_ramp():
     model = jeffcott(0.0, 200.0)  # ζ ≈ 0.016 external damping, stable at every speed
     start, stop, duration, step = 0.2 * WN, 0.5 * WN, 0.05, 0.0031  # T/step = 16.1: not a whole number
     run = run_up(model, duration, start=start, stop=stop, basis_size=2, output_step=step)
