@@ -2,9 +2,9 @@
 margins are measured from, and the margin API 684 requires of each of the verdict's critical
 speeds (issue: "the Campbell diagram shows less than the verdict uses").
 
-A hand-built diagram (one mode, no model) with the embedded designs' range: operating speed
-4800 rpm, range 4560-5040 rpm (0.95-1.05 of it). Two verdict criticals, both with AF 5.2, whose
-API 684 readings are worked here by hand (docs/requirements.md, "Separation margin"):
+A hand-built diagram (one mode, no model) with the tuned and current designs' range: operating
+speed 4800 rpm, range 4560-5040 rpm (0.95-1.05 of it). Two verdict criticals, both with AF 5.2,
+whose API 684 readings are worked here by hand (docs/requirements.md, "Separation margin"):
 
 * 17 (1 − 1/(AF − 1.5)) = 17 (1 − 1/3.7) = 12.405 %; below the operating speed the required
   margin is min(16, 12.405) = 12.405 %, above it min(26, 10 + 12.405) = 22.405 %;
@@ -27,13 +27,19 @@ import pytest
 
 matplotlib.use("Agg")
 
+from types import SimpleNamespace as NS  # noqa: E402
+
 from flexshaft.plot.campbell import campbell_figure  # noqa: E402
+from flexshaft.report.driveline import _separation_readings  # noqa: E402
 
 SPEEDS = np.linspace(0.0, 7000.0, 8)  # [rpm]
 RANGE = (4560.0, 5040.0)  # [rpm]
 BASE = 17.0 * (1.0 - 1.0 / 3.7) / 100.0  # 0.12405
 CRITICALS = [(4000.0, 5.2), (6000.0, 5.2)]
-SEPARATION = [(4560.0, 560.0 / 4560.0, BASE), (5040.0, 960.0 / 5040.0, 0.10 + BASE)]
+SEPARATION = [
+    (4560.0, 4560.0 * (1.0 - BASE), 560.0 / 4560.0, BASE),
+    (5040.0, 5040.0 * (1.0 + 0.10 + BASE), 960.0 / 5040.0, 0.10 + BASE),
+]
 REL = 1e-12
 
 
@@ -90,7 +96,7 @@ def test_each_critical_is_labelled_with_its_margin_and_the_required_one(ax):
 def test_a_critical_that_needs_no_margin_gets_no_bar():
     """AF 2 < 2.5: API 684 requires no separation (a critically damped peak): no bar, the label
     says 0 %."""
-    fig = _draw([(4500.0, 2.0)], [(4560.0, 60.0 / 4560.0, 0.0)], operating_rpm=4800.0, speed_range_rpm=RANGE)
+    fig = _draw([(4500.0, 2.0)], [(4560.0, 4560.0, 60.0 / 4560.0, 0.0)], operating_rpm=4800.0, speed_range_rpm=RANGE)
     ax = fig.axes[0]
     assert _bars(ax) == []
     assert any("needs 0.0%" in t.get_text() for t in ax.texts)
@@ -99,16 +105,27 @@ def test_a_critical_that_needs_no_margin_gets_no_bar():
 
 def test_the_separation_readings_must_match_the_criticals():
     """One reading per verdict critical, or none (the figure without the separation check)."""
-    with pytest.raises(ValueError, match="one \\(reference, margin, required\\) per response critical, got 1 for 2"):
+    with pytest.raises(
+        ValueError, match="one \\(reference, bound, margin, required\\) per response critical, got 1 for 2"
+    ):
         _draw(CRITICALS, SEPARATION[:1])
 
 
 def test_a_critical_inside_the_range_gets_the_bar_of_its_side_of_the_operating_speed():
-    """4700 rpm lies inside 4560-5040 rpm, below 4800: API 684 measures it from the lowest speed
-    (its margin 0: inside the range), and the speeds it may have end at 4560 (1 − 0.12405): the
-    bar runs down from 4560 rpm, not up (the critical is above 4560, its side is the operating
-    speed's)."""
-    fig = _draw([(4700.0, 5.2)], [(4560.0, 0.0, BASE)], operating_rpm=4800.0, speed_range_rpm=RANGE)
-    (bar,) = _bars(fig.axes[0])
-    assert tuple(bar.get_xdata()) == pytest.approx((4560.0, 4560.0 * (1.0 - 0.12405405405405405)), rel=REL)
-    _close(fig)
+    """The report's readings (report.driveline) as the check takes them: 4700 rpm lies inside
+    4560-5040 rpm, below 4800: API 684 measures it from the lowest speed (its margin 0: inside
+    the range), and the speeds it may have end at 4560 (1 − 0.12405): its bar runs down from
+    4560 rpm, not up (the critical is above 4560; its side is the operating speed's). A
+    critical exactly at the operating speed, at the range's lowest end (range 4800-5040), is
+    inside the range too: margin 0."""
+    rad = 2.0 * np.pi / 60.0  # rad/s per rpm
+    inside = [NS(speed=4700.0 * rad, amplification_factor=5.2)]
+    (reading,) = _separation_readings(
+        NS(operating_speed=4800.0 * rad, operating_range=(4560.0 * rad, 5040.0 * rad)), inside
+    )
+    assert reading == pytest.approx((4560.0, 4560.0 * (1.0 - 0.12405405405405405), 0.0, 0.12405405405405405), rel=REL)
+    at_end = [NS(speed=4800.0 * rad, amplification_factor=5.2)]
+    (reading,) = _separation_readings(
+        NS(operating_speed=4800.0 * rad, operating_range=(4800.0 * rad, 5040.0 * rad)), at_end
+    )
+    assert reading[2] == 0.0

@@ -45,7 +45,7 @@ def _assessment(points=("operating point",), point_power=150e3):
         name="stand-in",
         shaft=NS(x_start=0.0, x_end=4.0, outer_diameter=0.1016, wall_thickness=0.00325, layup="(55/-55)s"),
         operating=NS(main_rotor_frequencies=dict, speed_rad_s=_rad_s(6000.0), power=150e3),
-        requirements=NS(min_safety_factor=1.5),
+        requirements=NS(min_safety_factor=1.5, separation="api684"),
     )
     dofs = NS(shaft_x=np.zeros(2), n_boom_nodes=0, values=lambda q, member, which: np.zeros(2))
     # the design at the governing point (another object, as the verdict's design_at_point makes)

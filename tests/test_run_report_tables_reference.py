@@ -87,8 +87,14 @@ def test_campbell_job_gets_main_rotor_lines_in_hz_and_criticals_in_rpm(monkeypat
     assert (af1, af2) == (8.0, 2.5)
     assert kw["speed_range_rpm"] == pytest.approx((5700.0, 6300.0), rel=1e-12)
     below, above = kw["separation"]
-    assert below == pytest.approx((5700.0, 2400.0 / 5700.0, 0.17 * (1.0 - 1.0 / 6.5)), rel=1e-12)
-    assert above == pytest.approx((6300.0, 700.0 / 6300.0, 0.10), rel=1e-12)
+    needs = 0.17 * (1.0 - 1.0 / 6.5)
+    assert below == pytest.approx((5700.0, 5700.0 * (1.0 - needs), 2400.0 / 5700.0, needs), rel=1e-12)
+    assert above == pytest.approx((6300.0, 6300.0 * 1.10, 700.0 / 6300.0, 0.10), rel=1e-12)
+    # with the separation check off ([requirements] separation = "off": not evaluated), no bars
+    a.design.requirements.separation = "off"
+    plan = _plan(monkeypatch, a, tmp_path, excitations=excitations)
+    (job,) = [j for j in plan.jobs if j.stem == "campbell"]
+    assert job.kwargs["separation"] == () and len(job.kwargs["response_criticals"]) == 2
 
 
 def test_static_deflection_figure_vertical_then_lateral(monkeypatch, tmp_path):

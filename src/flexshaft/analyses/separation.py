@@ -165,7 +165,7 @@ def api684_separation(
         )
     position: Position = "below" if critical_speed < operating_speed else "above"
     reference = low if position == "below" else high
-    inside = low < critical_speed < high  # never with one operating speed
+    inside = low <= critical_speed <= high  # with one operating speed: only a critical at it
     return Separation(
         float(critical_speed),
         float(operating_speed),

@@ -117,13 +117,15 @@ def campbell_figure(
         response) as (speed [rpm], amplification factor): marked on the 1× line as squares and
         labelled with their speed and AF (the crossings of ``critical_speeds_rpm`` are then drawn
         unlabelled).
-    separation : sequence of (float, float, float), optional
+    separation : sequence of (float, float, float, float), optional
         For each of ``response_criticals``, in its order, the separation check's reading: the
-        speed its margin is measured from [rpm] (the operating speed range's nearest end), its
-        margin and the margin API 684 requires for its AF [fractions of that speed]. Each
-        critical's label then gives both margins, and the required one is drawn as a bar on the
-        critical's frequency from that speed to the nearest speed the critical may have: a
-        critical inside its bar fails the check.
+        speed its margin is measured from [rpm] (the operating speed range's nearest end), the
+        nearest speed the critical may have [rpm] (that speed moved by the required margin,
+        toward the critical's side of the operating speed), its margin and the margin API 684
+        requires for its AF [fractions of the first speed]. Each critical's label then gives
+        both margins, and the required one is drawn as a bar on the critical's frequency between
+        the two speeds (none where no margin is required): a critical inside its bar, or inside
+        the operating range, fails the check.
     speed_range_rpm : (float, float), optional
         The operating speed range (lowest, highest) [rpm], shaded (the separation margins are
         measured from its ends).
@@ -314,17 +316,17 @@ def campbell_figure(
         if not len(response_criticals):  # the verdict's criticals carry the labels when given
             _label_criticals(ax, critical)
     peaks = np.asarray(response_criticals, dtype=float).reshape(-1, 2)
-    sep = np.asarray(separation, dtype=float).reshape(-1, 3)
+    sep = np.asarray(separation, dtype=float).reshape(-1, 4)
     if len(separation) and sep.shape[0] != peaks.shape[0]:
         raise ValueError(
-            f"separation: one (reference, margin, required) per response critical, got {sep.shape[0]} for "
+            f"separation: one (reference, bound, margin, required) per response critical, got {sep.shape[0]} for "
             f"{peaks.shape[0]}"
         )
     if len(response_criticals):
         texts = [f"{rpm:.0f} rpm, AF {af:.3g}" if np.isfinite(af) else f"{rpm:.0f} rpm, AF ∞" for rpm, af in peaks]
         if sep.size:
-            texts = [f"{t}, margin {m:.1%} (needs {r:.1%})" for t, (_, m, r) in zip(texts, sep)]
-            handles += _required_separation(ax, peaks[:, 0], sep, operating_rpm)
+            texts = [f"{t}, margin {m:.1%} (needs {r:.1%})" for t, (_, _, m, r) in zip(texts, sep)]
+            handles += _required_separation(ax, peaks[:, 0], sep)
         (marker,) = ax.plot(
             peaks[:, 0],
             peaks[:, 0] / RPM_PER_HZ,
@@ -346,6 +348,7 @@ def campbell_figure(
             avoid=[(c, c / RPM_PER_HZ) for c in critical],
             color="tab:red",
             bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8},
+            zorder=6,
         )
     mark_operating(ax, operating_rpm, speed_range_rpm=speed_range_rpm)
     if speed_range_rpm is not None and speed_range_rpm[0] < speed_range_rpm[1]:
@@ -363,29 +366,26 @@ def campbell_figure(
     return fig
 
 
-def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray, operating_rpm: float | None) -> list:
-    """The required separation of each verdict critical as a bar on its frequency (f = N_c/60):
-    from the speed its margin is measured from, N_ref, to N_ref (1 − required) for a critical
-    below the operating speed, N_ref (1 + required) above it; a critical inside its bar (or
-    inside the operating range) fails. Returns the legend handle (none when no critical needs a
-    margin)."""
+def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray) -> list:
+    """The required separation of each verdict critical as a bar on its frequency (f = N_c/60)
+    from the speed its margin is measured from to the nearest speed it may have (``separation``
+    of :func:`campbell_figure`); drawn beneath the modes' points (a bar is no mode) in grey.
+    Returns the legend handle (none when no critical needs a margin)."""
     handle = []
-    for n_c, (reference, _, required) in zip(critical_rpm, sep):
-        if not (np.isfinite(reference) and required > 0.0):
+    for n_c, (reference, bound, _, required) in zip(critical_rpm, sep):
+        if not (np.isfinite(reference) and np.isfinite(bound) and required > 0.0):
             continue
-        below = n_c < (reference if operating_rpm is None else operating_rpm)
-        bound = reference * (1.0 - required if below else 1.0 + required)
         (bar,) = ax.plot(
             [reference, bound],
             [n_c / RPM_PER_HZ] * 2,
-            color="tab:red",
+            color="0.15",
             lw=2.2,
-            alpha=0.55,
+            alpha=0.45,
             marker="|",
             ms=9,
             solid_capstyle="butt",
-            zorder=4,
-            label="required separation, API 684 (a critical inside its bar fails)",
+            zorder=1.5,
+            label="required separation (API 684)",
         )
         handle = [bar]
     return handle

@@ -161,6 +161,7 @@ def plan_run_report(
     f_spin = rpm_to_hz(op_rpm)
     campbell_figure = []
     verdict_criticals = a.evidence.critical_speeds or ()
+    judged_off = a.design.requirements.separation == "off"  # the check not evaluated: no bars
     low, high = a.evidence.operating_range or (a.evidence.operating_speed,) * 2
     speed_range_rpm = (rad_s_to_rpm(low), rad_s_to_rpm(high)) if low < high else None
     if camp is not None:
@@ -172,8 +173,17 @@ def plan_run_report(
                 + ": whirl as line style and marker, log decrement as colour; every mode up to 1.1 × the "
                 "highest excitation the checks use at 130 % of the operating speed; circles: where the lateral "
                 "modes cross 1×; red squares: the critical speeds of the verdict (unbalance-response peaks, "
-                "with their AF and separation margin); red bars: the margin API 684 requires of each, from the "
-                "end of the operating speed range (shaded) its margin is measured from"
+                "with their AF"
+                + (
+                    ")"
+                    if judged_off
+                    else " and separation margin); grey bars: the margin API 684 requires of each, from "
+                    + (
+                        "the end of the operating speed range (shaded) its margin is measured from"
+                        if speed_range_rpm
+                        else "the operating speed"
+                    )
+                )
                 + ("; brown: the tail rotor's 1/rev and N/rev (torsional separation)" if tail_rotor else "")
                 + (
                     "; purple: the main rotor's 1/rev to N/rev (geared to the shaft; the boom modes' forcing "
@@ -188,7 +198,7 @@ def plan_run_report(
                 main_rotor_hz=main_rotor or None,
                 excitation_orders=tail_rotor or None,
                 response_criticals=[(rad_s_to_rpm(c.speed), c.amplification_factor) for c in verdict_criticals],
-                separation=_separation_readings(a.evidence, verdict_criticals),
+                separation=() if judged_off else _separation_readings(a.evidence, verdict_criticals),
                 speed_range_rpm=speed_range_rpm,
             )
         )
@@ -383,16 +393,18 @@ def campbell_orders(model) -> dict[str, float]:
     return {e.name: e.ratio for e in torsional_excitations(model.design) if e.source == "tail_rotor"}
 
 
-def _separation_readings(evidence, criticals) -> list[tuple[float, float, float]]:
+def _separation_readings(evidence, criticals) -> list[tuple[float, float, float, float]]:
     """What the separation check reads for each verdict critical, for the Campbell diagram: the
-    speed its margin is measured from [rpm], its margin and API 684's required margin [-]
-    (:func:`~flexshaft.analyses.separation.api684_separation`, as :func:`flexshaft.verdict.checks.
-    separation` calls it)."""
+    speed its margin is measured from and the nearest speed the critical may have [rpm] (that
+    speed moved by the required margin toward the critical's side), its margin and API 684's
+    required margin [-] (:func:`~flexshaft.analyses.separation.api684_separation`, as
+    :func:`flexshaft.verdict.checks.separation` calls it)."""
     out = []
     for c in criticals:
         sep = api684_separation(c.speed, c.amplification_factor, evidence.operating_speed, evidence.operating_range)
         reference = evidence.operating_speed if sep.reference_speed is None else sep.reference_speed
-        out.append((rad_s_to_rpm(reference), sep.margin, sep.required_margin))
+        bound = reference * (1.0 - sep.required_margin if sep.position == "below" else 1.0 + sep.required_margin)
+        out.append((rad_s_to_rpm(reference), rad_s_to_rpm(bound), sep.margin, sep.required_margin))
     return out
 
 
