@@ -127,12 +127,18 @@ def test_a_degenerate_pair_at_rest_alone_is_labelled_by_whirl():
     assert sorted(at_rest.whirl) == ["backward", "forward"]
 
 
-def test_heavily_damped_pair_is_tracked_before_a_mode_lower_by_modulus():
-    zeta = 0.95
+def heavily_damped_with_torsion_text(zeta: float = 0.95) -> str:
+    """The Jeffcott rotor with a dashpot of damping ratio ``zeta`` and a disk polar inertia that
+    puts its torsional mode at ω_t = √(G J_p/(L/2)/J) = 0.6 ω_n (module docstring)."""
     k_t = G * np.pi * (DO**4 - DI**4) / 32 / (L / 2)
     w_t = 0.6 * WN
     inertia = f"mass = 20.0\npolar_inertia = {k_t / w_t**2}"
-    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", inertia)
+    return jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", inertia)
+
+
+def test_heavily_damped_pair_is_tracked_before_a_mode_lower_by_modulus():
+    zeta, w_t = 0.95, 0.6 * WN
+    text = heavily_damped_with_torsion_text(zeta)
     diagram = campbell(build_model(loads_design(text)), np.array([0.0, 0.01 * WN]), n_modes=2)
     lateral = WN * complex(-zeta, np.sqrt(1 - zeta**2))
     assert abs(lateral) > w_t > lateral.imag  # |s| and Im s order the modes differently

@@ -30,18 +30,11 @@ from __future__ import annotations
 import math
 
 import pytest
-from pydantic import TypeAdapter, ValidationError
+from pydantic import ValidationError
+from test_requirement_quantities_reference import _accepts
 
 from flexshaft.design.quantities import Current, CurrentGain, Damping, IntegralGain
 from flexshaft.design.requirements import Requirements
-
-
-def _accepts(kind, value: float) -> bool:
-    try:
-        TypeAdapter(kind).validate_python(value)
-    except ValidationError:
-        return False
-    return True
 
 
 def test_a_zero_damping_ratio_requires_bare_stability():

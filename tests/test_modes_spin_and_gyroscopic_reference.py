@@ -27,7 +27,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from rotors import DI, DO, M_DISK, WN, G, L, jeffcott_text  # noqa: E402
+from rotors import WN  # noqa: E402
+from test_campbell_core_reference import heavily_damped_with_torsion_text  # noqa: E402
 from test_overhung_disk_whirl import closed_form, design_text  # noqa: E402
 
 import flexshaft as fs  # noqa: E402
@@ -47,11 +48,8 @@ def test_modes_at_speed_carry_the_gyroscopic_split(damped):
 
 
 def test_shapes_figure_draws_the_mode_nearest_the_spin_frequency():
-    zeta = 0.95
-    k_t = G * np.pi * (DO**4 - DI**4) / 32 / (L / 2)
-    w_t = 0.6 * WN
-    inertia = f"mass = 20.0\npolar_inertia = {k_t / w_t**2}"
-    text = jeffcott_text(0.0, 2 * zeta * M_DISK * WN).replace("mass = 20.0", inertia)
+    zeta, w_t = 0.95, 0.6 * WN
+    text = heavily_damped_with_torsion_text(zeta)
     speed = 0.3 * WN
     found = fs.modes(fs.build_model(loads_design(text)), speed=speed, n_modes=4)
     f_lateral, f_torsion = WN * np.sqrt(1 - zeta**2) / (2 * np.pi), w_t / (2 * np.pi)

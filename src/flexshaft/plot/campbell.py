@@ -76,7 +76,7 @@ def campbell_figure(
     main_rotor_hz: Mapping[str, float] | None = None,
     excitation_orders: Mapping[str, float] | None = None,
     response_criticals: Sequence[tuple[float, float]] = (),
-    separation: Sequence[tuple[float, float, float]] = (),
+    separation: Sequence[tuple[float, float, float, float]] = (),
     speed_range_rpm: tuple[float, float] | None = None,
     ax=None,
 ) -> Figure:
