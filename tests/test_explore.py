@@ -32,7 +32,8 @@ from flexshaft.explore.compute import EXPLORE, design_update, sweep_point, updat
 from flexshaft.explore.controls import advanced_overrides, control_overrides, design_controls, layup_angles
 from flexshaft.explore.export import explored_toml, header_comments, run_command
 from flexshaft.explore.workers import Workers
-from flexshaft.report.interactive import actuator_figure, interactive_page, margins_figure
+from flexshaft.report.interactive import actuator_figure, margins_figure
+from flexshaft.report.interactive_page import interactive_page
 from flexshaft.verdict.result import normalised_margin
 
 SCHEMA = json.loads((Path(__file__).parents[1] / "docs" / "design.schema.json").read_text(encoding="utf-8"))

@@ -100,7 +100,7 @@ def run(
         fail("--svg writes every figure as SVG as well, and --no-figures draws none: give one of them")
     loaded = load_design_argument(design)
     if interactive:
-        from flexshaft.report.interactive import missing_extra
+        from flexshaft.report.interactive_page import missing_extra
 
         if (message := missing_extra("flexshaft run --interactive")) is not None:  # before any computation
             fail(message)  # how to install the extra
@@ -163,7 +163,7 @@ def run_pipeline(
     studies, svg, figures
         As ``flexshaft run``'s options.
     interactive : bool
-        Also write ``interactive.html`` (:func:`flexshaft.report.interactive.write_interactive_report`).
+        Also write ``interactive.html`` (:func:`flexshaft.report.interactive_page.write_interactive_report`).
 
     Returns
     -------
@@ -207,7 +207,7 @@ def run_pipeline(
             executor=pool,
         )
         if interactive:
-            from flexshaft.report.interactive import write_interactive_report
+            from flexshaft.report.interactive_page import write_interactive_report
 
             progress.step("writing the interactive figures")
             write_interactive_report(assessment, folder)

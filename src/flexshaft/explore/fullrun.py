@@ -17,7 +17,7 @@ from flexshaft.cli.options import Studies
 from flexshaft.cli.progress import StageProgress
 from flexshaft.cli.run import run_pipeline
 from flexshaft.design import Design
-from flexshaft.report.interactive import missing_extra
+from flexshaft.report.interactive_page import missing_extra
 
 __all__ = ["RelayProgress", "full_run", "relay", "set_relay"]
 

@@ -45,7 +45,7 @@ from flexshaft.explore.export import explored_toml, run_command
 from flexshaft.explore.fullrun import full_run
 from flexshaft.explore.pareto import Front, front_design
 from flexshaft.explore.workers import Job, Sessions, Workers
-from flexshaft.report.interactive import plotly_js_path
+from flexshaft.report.interactive_page import plotly_js_path
 
 __all__ = ["Base", "Explorer", "build_app"]
 
