@@ -30,7 +30,7 @@ matplotlib.use("Agg")
 from types import SimpleNamespace as NS  # noqa: E402
 
 from flexshaft.plot.campbell import campbell_figure  # noqa: E402
-from flexshaft.report.driveline import _separation_readings  # noqa: E402
+from flexshaft.report.verdict import separation_readings  # noqa: E402
 
 SPEEDS = np.linspace(0.0, 7000.0, 8)  # [rpm]
 RANGE = (4560.0, 5040.0)  # [rpm]
@@ -120,12 +120,12 @@ def test_a_critical_inside_the_range_gets_the_bar_of_its_side_of_the_operating_s
     inside the range too: margin 0."""
     rad = 2.0 * np.pi / 60.0  # rad/s per rpm
     inside = [NS(speed=4700.0 * rad, amplification_factor=5.2)]
-    (reading,) = _separation_readings(
+    (reading,) = separation_readings(
         NS(operating_speed=4800.0 * rad, operating_range=(4560.0 * rad, 5040.0 * rad)), inside
     )
     assert reading == pytest.approx((4560.0, 4560.0 * (1.0 - 0.12405405405405405), 0.0, 0.12405405405405405), rel=REL)
     at_end = [NS(speed=4800.0 * rad, amplification_factor=5.2)]
-    (reading,) = _separation_readings(
+    (reading,) = separation_readings(
         NS(operating_speed=4800.0 * rad, operating_range=(4800.0 * rad, 5040.0 * rad)), at_end
     )
     assert reading[2] == 0.0

@@ -25,15 +25,19 @@ from flexshaft.report.interactive import actuator_figure, campbell_figure, margi
 
 
 def test_critical_speeds_sit_on_the_1x_line_in_rpm_and_hz():
-    """Criticals at 2400 and 5400 rpm: (2400, 40 Hz) and (5400, 90 Hz), AF 6 and 3."""
+    """The verdict's criticals at 2400 and 5400 rpm: (2400, 40 Hz) and (5400, 90 Hz), AF 6 and 3
+    (the separation check off: their AF alone on hover; its readings:
+    tests/test_interactive_campbell_separation_reference.py)."""
     a = _assessment()
-    a.criticals = NS(
-        criticals=[NS(speed=2400.0 * RPM, amplification_factor=6.0), NS(speed=5400.0 * RPM, amplification_factor=3.0)]
-    )
+    a.design.requirements.separation = "off"
+    a.evidence.critical_speeds = [
+        NS(speed=2400.0 * RPM, amplification_factor=6.0),
+        NS(speed=5400.0 * RPM, amplification_factor=3.0),
+    ]
     marks = _trace(campbell_figure(a), "lateral critical speeds (unbalance peaks)")
     assert marks["x"] == pytest.approx([2400.0, 5400.0], rel=1e-6)
     assert marks["y"] == pytest.approx([40.0, 90.0], rel=1e-6)
-    assert marks["customdata"] == [6.0, 3.0]
+    assert marks["customdata"] == [[6.0], [3.0]]
 
 
 def test_whirl_onset_line_in_rpm_and_judged_modes_in_hz():

@@ -46,7 +46,9 @@ def _assessment() -> SimpleNamespace:
         peak_force=40.0,
     )
     point = SimpleNamespace(analyses=SimpleNamespace(spinup=spinup), evidence=SimpleNamespace(actuators=[evidence]))
-    requirements = SimpleNamespace(max_spinup_deflection=5.0e-4, required_log_decrement=0.1, min_onset_margin=0.15)
+    requirements = SimpleNamespace(
+        max_spinup_deflection=5.0e-4, required_log_decrement=0.1, min_onset_margin=0.15, separation="api684"
+    )
     return SimpleNamespace(
         model=model,
         spinup=spinup,
@@ -73,7 +75,12 @@ def _assessment() -> SimpleNamespace:
             kind=None,
             onset_speed=None,
         ),
-        evidence=SimpleNamespace(modes_at_operating=()),
+        evidence=SimpleNamespace(
+            modes_at_operating=(),
+            operating_speed=OMEGA,
+            operating_range=(0.9 * OMEGA, 1.1 * OMEGA),
+            critical_speeds=None,  # no critical speed found (tests set their own)
+        ),
     )
 
 

@@ -23,7 +23,6 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from flexshaft.analyses.modal import Modes
-from flexshaft.analyses.separation import api684_separation
 from flexshaft.analyses.summary import modes_table
 from flexshaft.analyses.torsional import torsional_excitations
 from flexshaft.design import baseline_design, baseline_text
@@ -42,7 +41,7 @@ from flexshaft.report.run_sections import (
     thermal_section,
 )
 from flexshaft.report.studies_section import studies_section_and_jobs
-from flexshaft.report.verdict import verdict_section
+from flexshaft.report.verdict import separation_readings, verdict_section
 from flexshaft.thesis.design_studies import save_study_data
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import m_to_mm, rad_s_to_rpm, rpm_to_hz
@@ -198,7 +197,7 @@ def plan_run_report(
                 main_rotor_hz=main_rotor or None,
                 excitation_orders=tail_rotor or None,
                 response_criticals=[(rad_s_to_rpm(c.speed), c.amplification_factor) for c in verdict_criticals],
-                separation=() if judged_off else _separation_readings(a.evidence, verdict_criticals),
+                separation=() if judged_off else separation_readings(a.evidence, verdict_criticals),
                 speed_range_rpm=speed_range_rpm,
             )
         )
@@ -391,21 +390,6 @@ def campbell_orders(model) -> dict[str, float]:
     if model.design is None:
         return {}
     return {e.name: e.ratio for e in torsional_excitations(model.design) if e.source == "tail_rotor"}
-
-
-def _separation_readings(evidence, criticals) -> list[tuple[float, float, float, float]]:
-    """What the separation check reads for each verdict critical, for the Campbell diagram: the
-    speed its margin is measured from and the nearest speed the critical may have [rpm] (that
-    speed moved by the required margin toward the critical's side), its margin and API 684's
-    required margin [-] (:func:`~flexshaft.analyses.separation.api684_separation`, as
-    :func:`flexshaft.verdict.checks.separation` calls it)."""
-    out = []
-    for c in criticals:
-        sep = api684_separation(c.speed, c.amplification_factor, evidence.operating_speed, evidence.operating_range)
-        reference = evidence.operating_speed if sep.reference_speed is None else sep.reference_speed
-        bound = reference * (1.0 - sep.required_margin if sep.position == "below" else 1.0 + sep.required_margin)
-        out.append((rad_s_to_rpm(reference), rad_s_to_rpm(bound), sep.margin, sep.required_margin))
-    return out
 
 
 #: What the first section of a report without figures says (:func:`without_figures`).

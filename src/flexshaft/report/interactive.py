@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from flexshaft.report.verdict import verdict_rows
+from flexshaft.report.verdict import separation_readings, verdict_rows
 from flexshaft.units import m_to_mm, rad_s_to_hz, rad_s_to_rpm, rpm_to_hz
 from flexshaft.verdict.assess import Assessment
 from flexshaft.verdict.gather import actuator_limits
@@ -167,14 +167,17 @@ def margins_figure(a: Assessment) -> dict:
 def campbell_figure(a: Assessment) -> dict | None:
     """Campbell diagram [Hz over rpm] of the tracked modes (whirl as line style), the 1× line,
     the operating speed (and its range) and the lateral critical speeds the separation check
-    judges (peaks of the unbalance response, with their AF). None without a Campbell diagram."""
+    judges (peaks of the unbalance response, with their AF, and, when the check is on, their
+    separation margin and API 684's required margin on hover and the required margin as a grey
+    bar from the speed it is measured from, as in the report's diagram). None without a
+    Campbell diagram."""
     camp = a.campbell
     if camp is None:
         return None
     rpm = rad_s_to_rpm(camp.speeds)
     freq = camp.frequencies
     logdec = camp.log_decrements
-    data = []
+    data: list[dict[str, Any]] = []
     for k in range(freq.shape[1]):
         whirl = _dominant(camp.whirl[:, k])
         kind = _dominant(camp.kind[:, k]) if camp.kind is not None else "lateral"
@@ -205,8 +208,39 @@ def campbell_figure(a: Assessment) -> dict | None:
             "hoverinfo": "skip",
         }
     )
-    criticals = a.criticals.criticals if a.criticals is not None else ()
+    criticals = a.evidence.critical_speeds or ()  # the verdict's (the separation check judges these)
+    judged = bool(criticals) and a.design.requirements.separation != "off"
+    readings = separation_readings(a.evidence, criticals) if judged else []
+    if readings:
+        # API 684's required separation of each critical: a grey bar at its frequency from the
+        # speed its margin is measured from to the nearest speed it may have (the static
+        # diagram's bars); first in the data, so drawn beneath the modes
+        xs: list[float | None] = []
+        ys: list[float | None] = []
+        for c, (reference, bound, _margin, _required) in zip(criticals, readings):
+            xs += [*_values([reference, bound]), None]
+            ys += [*_values([rad_s_to_hz(c.speed)] * 2), None]
+        data.insert(
+            0,
+            {
+                "type": "scatter",
+                "mode": "lines",
+                "x": xs,
+                "y": ys,
+                "name": "separation API 684 requires",
+                "line": {"color": "#9e9e9e", "width": 7},
+                "opacity": 0.6,
+                "hoverinfo": "skip",
+            },
+        )
     if criticals:
+        hover = "critical %{x:.0f} rpm<br>AF %{customdata[0]}"
+        custom = [[af] for af in _values([c.amplification_factor for c in criticals], 3)]
+        if readings:
+            hover += "<br>separation margin %{customdata[1]:.1%} (needs %{customdata[2]:.1%})"
+            margins = _values([r[2] for r in readings], 4)
+            required = _values([r[3] for r in readings], 4)
+            custom = [[*row, m, r] for row, m, r in zip(custom, margins, required)]
         data.append(
             {
                 "type": "scatter",
@@ -215,8 +249,8 @@ def campbell_figure(a: Assessment) -> dict | None:
                 "y": _values([rad_s_to_hz(c.speed) for c in criticals]),
                 "name": "lateral critical speeds (unbalance peaks)",
                 "marker": {"symbol": "x", "size": 11, "color": "#c62828", "line": {"width": 2}},
-                "customdata": _values([c.amplification_factor for c in criticals], 3),
-                "hovertemplate": "critical %{x:.0f} rpm<br>AF %{customdata}<extra></extra>",
+                "customdata": custom,
+                "hovertemplate": hover + "<extra></extra>",
             }
         )
     op = rad_s_to_rpm(a.operating_speed)

@@ -6,8 +6,9 @@ the terminal and the notebook display of a verdict.
 
 from __future__ import annotations
 
+from flexshaft.analyses.separation import api684_separation
 from flexshaft.report.html import Section, Table
-from flexshaft.units import format_quantity  # re-exported
+from flexshaft.units import format_quantity, rad_s_to_rpm  # format_quantity re-exported
 from flexshaft.verdict.envelope_text import (
     ENVELOPE_COLUMNS,
     envelope_line,
@@ -24,6 +25,7 @@ __all__ = [
     "format_quantity",
     "governing_text",
     "location_text",
+    "separation_readings",
     "verdict_rows",
     "verdict_section",
 ]
@@ -61,3 +63,19 @@ def verdict_section(verdict, operating_rpm: float, assessment=None) -> Section:
         )
         tables.append(Table("Envelope points (each point's own verdict)", list(ENVELOPE_COLUMNS), points))
     return Section("Verdict against the requirements", paragraphs=paragraphs, tables=tables)
+
+
+def separation_readings(evidence, criticals) -> list[tuple[float, float, float, float]]:
+    """What the separation check reads for each of ``criticals`` (the verdict's lateral critical
+    speeds), for the Campbell diagrams: the speed its margin is measured from and the nearest
+    speed the critical may have [rpm] (that speed moved by the required margin toward the
+    critical's side), its margin and API 684's required margin [-]
+    (:func:`~flexshaft.analyses.separation.api684_separation`, as
+    :func:`flexshaft.verdict.checks.separation` calls it)."""
+    out = []
+    for c in criticals:
+        sep = api684_separation(c.speed, c.amplification_factor, evidence.operating_speed, evidence.operating_range)
+        reference = evidence.operating_speed if sep.reference_speed is None else sep.reference_speed
+        bound = reference * (1.0 - sep.required_margin if sep.position == "below" else 1.0 + sep.required_margin)
+        out.append((rad_s_to_rpm(reference), rad_s_to_rpm(bound), sep.margin, sep.required_margin))
+    return out
