@@ -1,8 +1,9 @@
 """The lamina's transverse shear correction factor k reaches the first-order shear stiffness.
 
-First-order shear deformation theory (Reddy 2004, eq. 3.3.9; Jones 1999, sec. 4.6) gives the
-wall's transverse shear stiffness A_ij = k Σ_k Q_ij,k t_k, where each ply's transverse shear
-moduli rotate with the ply angle α like a vector:
+First-order shear deformation theory gives the wall's transverse shear stiffness
+A_ij = k Σ_k Q_ij,k t_k (derived here: the transverse shear strains (γ_xz, γ_yz) rotate by the
+ply angle α like a vector, γ13 = cγxz + sγyz, γ23 = −sγxz + cγyz, and the stresses back), so each
+ply's transverse shear moduli give:
 
     Q55 = G13 cos²α + G23 sin²α,  Q44 = G13 sin²α + G23 cos²α,  Q45 = (G13 − G23) cos α sin α.
 
@@ -12,9 +13,8 @@ Derived here for the stacks used below:
 * **A balanced [+45/−45] stack**, each ply t/2 (cos²α = sin²α = ½, cos α sin α = ±½):
   A55 = A44 = k t (G13* + G23*)/2 and A45 = k (t/2)(G13* − G23*)(½ − ½) = 0.
 
-The factor k is the design's ``shear_correction`` (docs: "first-order shear deformation factor
-k in (0, 1]; default 5/6", design/materials.py, hand-written field documentation), not the 5/6
-default whenever the user gives another value. Moduli are complex through the correspondence
+The factor k is the design field ``shear_correction`` (default 5/6): the user's value, not the
+default, whenever the user gives another. Moduli are complex through the correspondence
 principle: G13* = G13 (1 + iη_G) and G23* = G23 (1 + iη_T) (the loss factors of G_LT and E_T,
 as :meth:`flexshaft.laminate.Lamina.from_loss_factors` documents).
 
