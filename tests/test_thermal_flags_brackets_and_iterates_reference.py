@@ -4,13 +4,13 @@ status and iterate, a loss-only temperature table, and an envelope point's own s
 
 References, each stated at its test:
 
-* Hilpert's cross-flow correlation Nu = C Re^m Pr^(1/3) is given for 0.4 <= Re <= 4e5 and
-  Pr >= 0.7 (Incropera & DeWitt eq. 7.52 and Table 7.2, as the module's docstring states them;
-  the book itself was not read for this test). The Pr^(1/3) factor is the thin-thermal-layer
-  form; below Pr = 0.7 the correlation is an extrapolation and must be flagged.
+* docs/thermal.md, Tailboom: Hilpert's cross-flow correlation Nu = C Re^m Pr^(1/3) is valid for
+  0.4 <= Re <= 4e5 and Pr >= 0.7 (the "Pr ≳ 0.7" it is commonly quoted with, Incropera & DeWitt
+  eq. 7.52 and Table 7.2, not read for this test; flexshaft holds it as a hard limit), and air
+  below Pr = 0.7 is flagged.
 * docs/thermal.md, Tailboom: the skin temperature is "bracketed between 100 K below the colder
   of sky and ambient (at least 200 K) and 300 K above ambient", so a balance whose root lies
-  150 K above the ambient must be found; the root is checked against the surface balance
+  about 159 K above the ambient must be found; the root is checked against the surface balance
   alpha_s G s = eps sigma (T^4 - T_sky^4) + h (T - T_amb) typed here.
 * The Picard iteration T <- f(T) on the affine maps f(T) = T + c has the closed-form iterates
   T_k = T_0 + k c: it never meets a tolerance below |c| (not converged after max_iter), and it
@@ -55,7 +55,7 @@ G0 = 9.80665  # m/s^2
 
 @pytest.mark.parametrize("Re", [2.0, 100.0, 1e4])
 def test_hilpert_flags_a_prandtl_number_below_its_range(Re):
-    """Re inside Table 7.2 (0.4-4e5): Pr = 0.71 is in range, Pr = 0.69 (air above ~350 K) is an
+    """Re inside Table 7.2 (0.4-4e5): Pr = 0.71 is in range, Pr = 0.69 (air near 390 K) is an
     extrapolation of the Pr^(1/3) form and flagged; the value itself is still C Re^m Pr^(1/3)
     (the flag does not change it, rel 1e-14: one power each)."""
     inside, outside = hilpert_nusselt(Re, 0.71), hilpert_nusselt(Re, 0.69)
@@ -66,14 +66,16 @@ def test_hilpert_flags_a_prandtl_number_below_its_range(Re):
 
 
 # ------------------------------------------------------------------------------------------------
-# Tailboom bracket: a skin 150 K above the ambient
+# Tailboom bracket: a skin 159 K above the ambient
 
 
-def test_a_hot_parked_skin_150_kelvin_above_ambient_is_found_and_closes_the_balance():
+def test_a_hot_parked_skin_159_kelvin_above_ambient_is_found_and_closes_the_balance():
     """A polished, sun-absorbing skin (alpha_s 0.9, eps 0.1, whole skin lit, s = 1) parked in
-    still air: radiation hardly cools it, h ~ 7 W/(m^2 K), so the balance's root lies ~150 K
-    above the ambient (hand estimate: 0.9 * 1353 = 1218 W/m^2 against 0.1 sigma (450^4 - 285^4)
-    = 195 plus 6.8 * 151 = 1027 W/m^2), inside the documented bracket T_amb + 300 K. The root is
+    still air: radiation hardly cools it, h ~ 6.3 W/(m^2 K), so the balance's root lies ~159 K
+    above the ambient 298.75 K (hand estimate at 458 K: 0.9 * 1353 = 1218 W/m^2 against
+    0.1 sigma (458^4 - 285^4) = 212 plus 6.3 * 159 = 1002, 1214 W/m^2; an independent
+    bisection with Incropera Table A.4's air gave 159.9 K), inside the documented bracket
+    T_amb + 300 K and beyond a 100 K one. The root is
     checked against the balance typed here: h from ``ht``'s Churchill-Chu with Ra = g beta dT
     D^3/(nu alpha) at the film temperature (the same air properties, tested elsewhere). Brent
     solves to 1e-10 K; the balance's slope is < 20 W/(m^2 K) there, so it closes to < 1e-8 of
