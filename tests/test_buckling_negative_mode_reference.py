@@ -7,7 +7,10 @@ sense. The pencil K a = T G a (``classical_galerkin_matrices``, dofs U_0..U_M, V
 W_1..W_M) has that mode's eigenvalue at T = -T_cr^-. For an isotropic tube the two senses have
 the same |T| (mirror symmetry theta -> -theta, derived here) but mirror-image modes: the positive
 sense leans along the +45 deg tension diagonal, the negative along -45 deg, so the W blocks of
-the two eigenvectors differ (here |<W+, W->| / (|W+| |W->|) is far from 1).
+the two eigenvectors differ (here |<W+, W->| / (|W+| |W->|) is far from 1). With
+w(x, theta) = Re sum W_m sin(m pi x / L) e^(i n theta), the mirror theta -> -theta maps the
+coefficients W_m to conj(W_m): for an isotropic tube W- = conj(W+) up to a complex factor, in
+either shell theory (derived here; measured 1 - overlap of 2e-16 by review).
 """
 
 from __future__ import annotations
@@ -47,5 +50,17 @@ def test_negative_sense_mode_is_the_pencil_eigenvector_at_minus_the_critical_tor
     mode = result.mode_negative
     assert np.max(np.abs(mode)) == pytest.approx(1.0, abs=1e-12)
     assert 1.0 - _overlap(W, mode) < 1e-10
-    # and it is not the positive sense's mode (the mirror image)
+    # and it is the positive sense's mirror image, not that mode itself
+    assert 1.0 - _overlap(np.conj(result.mode_positive), mode) < 1e-10
     assert _overlap(result.mode_positive, mode) < 0.1  # measured 1.5e-4
+
+
+def test_shear_theorys_negative_sense_mode_is_the_mirror_image_of_the_positive():
+    """The same tube in the shear-deformable theory (the verdict's): equal torques of both senses
+    and W- = conj(W+) up to a complex factor (the mirror symmetry above); both modes are
+    eigenvectors of well separated eigenvalues, to rounding: 1e-10."""
+    tube = Laminate([0.0], [1.0 / 200.0], ALUMINIUM)
+    result = torsional_buckling_torque(tube, 1.0, 5.0, theory="shear")
+    assert result.torque_negative == pytest.approx(result.torque_positive, rel=1e-9)
+    assert 1.0 - _overlap(np.conj(result.mode_positive), result.mode_negative) < 1e-10
+    assert _overlap(result.mode_positive, result.mode_negative) < 0.1
