@@ -15,9 +15,9 @@ forward orbit ``W = −iV``. Derived here for shapes with entries at the disk no
   whirl label.
 
 Degenerate pairs: the grouping of eigenvalues into pairs to resolve must not depend on the
-unit of time (a round-off split of a double eigenvalue is relative, ~ε‖A‖): a pair split by
-1e-10 of its value is one pair at 1 rad/s and at 1e4 rad/s alike (the module's DEGENERATE is
-1e-8 relative), and a root 2e-8 away is none at either scale.
+unit of time (the module's docstring: DEGENERATE is relative; a double eigenvalue's split by
+Newton's 1e-10 relative convergence is relative too): a pair split by 1e-10 of its value is one
+pair at 1 rad/s and at 1e4 rad/s alike, and a root 100 DEGENERATE away is none at either scale.
 
 Tolerance 1e-5 on the shares: the near-massless tube adds 1.3e-5 kg to the node's 20 kg
 diagonal (6.7e-7 relative).
@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 from rotors import jeffcott_text
 
-from flexshaft.analyses.classify import degenerate_groups, label_modes
+from flexshaft.analyses.classify import DEGENERATE, degenerate_groups, label_modes
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
@@ -73,6 +73,9 @@ def test_forward_orbit_is_forward(model):
 
 @pytest.mark.parametrize("scale", [1.0, 1e4])
 def test_degenerate_pairs_are_grouped_at_any_frequency_scale(scale):
-    s = scale * np.array([1j, 1j * (1 + 1e-10), 2j, 2j * (1 + 2e-8)]) - scale * 0.01
+    """The grouping is relative (classify's docstring and its DEGENERATE: a pair split by
+    Newton's 1e-10 relative convergence is one circular pair): the same relative splits give the
+    same groups at 1 and 1e4 rad/s, a split of 1e-10 grouped, one of 100 DEGENERATE not."""
+    s = scale * np.array([1j, 1j * (1 + 1e-10), 2j, 2j * (1 + 100 * DEGENERATE)]) - scale * 0.01
     groups = degenerate_groups(s)
     assert [list(g) for g in groups] == [[0, 1]]

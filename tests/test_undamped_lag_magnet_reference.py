@@ -8,10 +8,12 @@ the whirl ratio of the Campbell labeler on a circular orbit (mutation hunt h52d)
    and an amplifier lag of bandwidth ω_a: the law ``G(s) − k_s = k_i (k_p + k_d s)/(1 + s/ω_a) − k_s``
    has the static stiffness ``k_i k_p − k_s`` = 3e5 N/m, so, derived here, the disk's pair is
    ``s = ±i √((k + k_i k_p − k_s)/m)`` with k = 48EI/L³ the tube's stiffness at midspan, purely
-   imaginary (no damping: the lag's dynamics, which add a phase and so damping, are left out).
-   Tolerance 1e-5 relative on the frequency (the tube's 3.5e-6 mass share) and |Re s| below
-   1e-8 |s| (round-off of a symmetric undamped problem solved in first-order form: ~ε‖A‖/|s|
-   ≈ 1e-12); with the lag's state kept, its phase would damp the pair.
+   imaginary (no damping: the lag's dynamics, whose phase moves the pair off the imaginary axis,
+   are left out). Tolerance 1e-5 relative on the frequency (the tube's 3.5e-6 mass share) and
+   |Re s| below 1e-8 |s|: at rest the undamped first-order matrix [[0, I], [−M⁻¹K, 0]] splits
+   into 2×2 blocks whose roots LAPACK returns with Re s = 0 exactly on both kernels tried
+   (review r52d); with the lag's state kept, Re s = +7.3 rad/s (2.2e-2 |s|: the lag on
+   k_i k_p outweighs k_d's lead).
 
 2. :class:`flexshaft.analyses.classify.ModalLabeler` (the Campbell diagram's labels): a basis
    holding the disk node's v and w alone and the modal coordinates ``(1, −i)``, the forward
