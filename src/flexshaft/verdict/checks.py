@@ -262,7 +262,11 @@ STANDARD_DAY = 288.15
 
 
 def temperature(ev: Evidence, req: Requirements) -> Check:
-    """The largest shaft temperature at most the matrix allowable; a thermal runaway fails."""
+    """The largest shaft temperature at most the matrix allowable; a thermal runaway fails, and so
+    does a self-heating iteration that did not converge: from the air's temperature the iterates
+    of a heating that grows with temperature rise toward the equilibrium, so the last one is no
+    equilibrium but a value below it (one whose equilibrium lies above the allowable can stop
+    below it, still rising)."""
     args: _Args = ("temperature", "shaft temperature", "temperature", "at most")
     if ev.max_temperature is None:
         return _not_evaluated(*args, ev.notes.get("temperature", "no shaft thermal result"))
@@ -276,6 +280,13 @@ def temperature(ev: Evidence, req: Requirements) -> Check:
     if ev.thermal_runaway:
         return replace(
             check, status="fail", note="thermal runaway: no self-heating equilibrium below the allowable temperature"
+        )
+    if ev.self_heating_status == "not_converged":
+        return replace(
+            check,
+            status="fail",
+            note="the self-heating iteration did not converge: its last temperature is no equilibrium "
+            "(the iterates still rose toward one that may lie above the allowable)",
         )
     return check
 

@@ -176,6 +176,9 @@ class Evidence:
     actuators : tuple of ActuatorEvidence
     max_temperature, temperature_location, thermal_runaway
         Maximum shaft temperature [K], where, and whether the self-heating ran away.
+    self_heating_status : str or None
+        The self-heating iteration's status ("converged", "runaway", "not_converged"); None
+        without self-heating (constant properties).
     allowable_temperature : float or None
         Matrix allowable temperature [K].
     spinup_peak, spinup_location
@@ -215,6 +218,7 @@ class Evidence:
     max_temperature: float | None = None
     temperature_location: Location = field(default_factory=dict)
     thermal_runaway: bool = False
+    self_heating_status: str | None = None
     allowable_temperature: float | None = None
     spinup_peak: float | None = None
     spinup_location: Location = field(default_factory=dict)

@@ -294,6 +294,7 @@ def _temperature(p: PointAnalyses, notes: dict) -> dict:
         "max_temperature": float(temperature.temperature[i]),
         "temperature_location": {"station": float(temperature.x[i]), "detail": detail},
         "thermal_runaway": sh is not None and sh.status == "runaway",
+        "self_heating_status": None if sh is None else sh.status,
     }
     c = p.conditions
     if c is not None and c.material_temperature > out["max_temperature"]:
