@@ -10,8 +10,10 @@ damping, no loss, no polar inertia, so the planes do not couple and each is one 
 * w: m s² + (k − k_s + k_c) = 0, s = √(k/m): the slower one, its shape pure w.
 
 The stability analysis reports the divergence that decides (the largest real root, e^{st}
-grows fastest) and, as the onset's shape, that root's shape: at the disk all v, no w. The
-tube's mass (7e-6 of the disk's) and the round-off of the real eigenvectors leave the w
+grows fastest; docs/magnetic-bearings.md, *Divergence*) and, as the onset's shape, that root's
+shape (the rule that docs page states, derived here: the fastest-growing motion is the one
+seen first): at the disk all v, no w. The tube's mass (3.5e-6 of the disk's, tests/rotors.py)
+and the round-off of the real eigenvectors leave the w
 share of the v-plane shape far below 1e-6 (the two planes' equations are exactly decoupled
 in the assembled matrices, so the w part is round-off only); the bound 1e-6 on |w|/|v| is
 both far above that and far below the 1 the other root's shape would show (|v|/|w| → ∞).
