@@ -13,12 +13,15 @@ the first bay, behind that bay's middle (0.6 m). Hand sums:
 * m = 2 · 0.814301 + 1.5 kg; the mid-bay imbalance per unit Ω², e_c m, is the sum of the
   load vector's v entries (the Hermite v shape functions sum to 1 at any point), and its w
   entries sum to −i e_c m (``Q_w = −iF``);
-* m_1 = 1.2 · 0.814301 + 1.5 kg, m_2 = 0.8 · 0.814301 kg.
+* m_1 = 1.2 · 0.814301 + 1.5 kg, m_2 = 0.8 · 0.814301 kg;
+* a design that gives ``balance_grade`` G = 6.3 mm/s instead of an eccentricity, run over
+  0.95-1.05 of 3000 rpm: e_c = G/Ω_max = 6.3e-3 m/s / (1.05 · 100π rad/s) (ISO 21940-11 §5.3,
+  as docs/model.md quotes it), and the imbalance per unit Ω² sums to e_c m.
 
 Sums of a few products: 1e-12 relative (round-off only).
 
-Written for the mutations h53a-coupling-link-mass-zero and h53a-bay-parts-split-at-midbay of
-scripts/mutations.toml.
+Written for the mutations h53a-coupling-link-mass-zero, h53a-bay-parts-split-at-midbay and
+h53a-imbalance-balance-grade-ignored of scripts/mutations.toml.
 """
 
 from __future__ import annotations
@@ -37,9 +40,10 @@ RHO, DO, WALL = 2700.0, 0.05, 0.002
 PER_METRE = RHO * math.pi / 4 * (DO**2 - (DO - 2 * WALL) ** 2)
 HUB = 1.5
 ECC = 1.0e-4
+SPEED_RPM = 3000.0
 
 
-def _model():
+def _model(loads=None, speed_range=None):
     bearing = {"kind": "contact", "stiffness": {"v": 1e7, "w": 1e7}}
     coupling = {
         "name": "c",
@@ -64,10 +68,12 @@ def _model():
         },
         "bearings": [dict(bearing, name=f"b{i}", x=x) for i, x in enumerate((0.0, 1.2, 2.0))],
         "couplings": [coupling],
-        "operating": {"speed_rpm": 3000.0, "power": 0.0},
-        "loads": {"eccentricity": ECC, "imbalance_placement": "mid_bay"},
+        "operating": {"speed_rpm": SPEED_RPM, "power": 0.0},
+        "loads": loads or {"eccentricity": ECC, "imbalance_placement": "mid_bay"},
         "mesh": {"shaft_elements": 10},
     }
+    if speed_range is not None:
+        data["operating"]["speed_range"] = list(speed_range)
     return build_model(design_from_dict(data))
 
 
@@ -89,3 +95,11 @@ def test_a_hub_behind_its_bays_middle_stays_in_its_bay():
     model = _model()
     np.testing.assert_allclose(imbalance_bays(model), [(0.0, 1.2), (1.2, 2.0)], rtol=1e-12)
     np.testing.assert_allclose(bay_rotating_masses(model), [1.2 * PER_METRE + HUB, 0.8 * PER_METRE], rtol=1e-12)
+
+
+def test_a_balance_grade_sets_the_runs_eccentricity_at_the_top_speed():
+    model = _model(loads={"balance_grade": 6.3, "imbalance_placement": "mid_bay"}, speed_range=(0.95, 1.05))
+    e_c = 6.3e-3 / (1.05 * SPEED_RPM * 2.0 * math.pi / 60.0)
+    Q = imbalance_loads(model)[:, 0]
+    nodes = np.arange(model.dofs.n_shaft_nodes)
+    assert Q[model.dofs.shaft(nodes, "v")].sum().real == pytest.approx(e_c * (2.0 * PER_METRE + HUB), rel=1e-12)
