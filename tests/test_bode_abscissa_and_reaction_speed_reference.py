@@ -10,7 +10,7 @@ bearing, whose far side is the ground, carries Z_b(Ω) A with Z_b = k_b + iΩc.
   (Ω · 60/(2π)), its amplitude panel in mm (the plot's documented axes,
   flexshaft.plot.response.bode_figure): the abscissa of each curve is the speeds in rpm
   exactly (an affine map of the inputs: 1e-12 relative), the ordinate 1000|A_v| (1e-3: the
-  tube's mass, 7e-6 of the disk's, is the model's only departure from the closed form, at
+  tube's mass, 3.5e-6 of the disk's (tests/rotors.py), is the model's only departure from the closed form, at
   speeds a factor 1.4 and more from the resonance).
 * The orbit plot of a harmonic (non-synchronous) response picks the excitation frequency f [Hz]
   nearest the requested ``speed_rpm`` as f · 60 (rpm = rev/min); a 1000 N load on v at the
