@@ -25,7 +25,7 @@ import numpy as np
 from flexshaft import __version__
 from flexshaft.files import atomic_write_text
 
-__all__ = ["Table", "FigureRef", "Preformatted", "Section", "format_cell", "render_report", "write_report"]
+__all__ = ["Table", "FigureRef", "Preformatted", "Section", "format_cell", "page_head", "render_report", "write_report"]
 
 _PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 _DEFAULT_DPI = 150.0  # a PNG without a pHYs chunk is assumed at this resolution; shown at 96 CSS px per inch
@@ -289,16 +289,7 @@ def render_report(
         )
         parts.append("</section>")
     body = "\n".join(parts)
-    return f"""<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta http-equiv="Content-Security-Policy" content="{_CSP}">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<meta name="generator" content="flexshaft {e(version)}">
-<title>{e(title)}</title>
-<style>{_CSS}</style>
-</head>
+    return f"""{page_head(title, _CSS, _CSP, version)}
 <body>
 <main>
 <header class="report">
@@ -322,6 +313,24 @@ files beside this page (named in each caption).</footer>
 </body>
 </html>
 """
+
+
+def page_head(title: str, css: str, csp: str, version: str = __version__, script: str = "") -> str:
+    """A flexshaft page's doctype and ``<head>``: its content security policy ``csp``, its
+    stylesheet ``css`` and, when given, an inline ``<script>`` (text safe inside the element),
+    ending with ``</head>`` (the report's page and the interactive page's)."""
+    e = html.escape
+    script_line = f"\n<script>{script}</script>" if script else ""
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta http-equiv="Content-Security-Policy" content="{csp}">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta name="generator" content="flexshaft {e(version)}">
+<title>{e(title)}</title>
+<style>{css}</style>{script_line}
+</head>"""
 
 
 def write_report(folder: str | Path, title: str, sections: Sequence[Section], **options: Any) -> Path:

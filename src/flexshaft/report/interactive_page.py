@@ -12,7 +12,7 @@ import json
 from importlib import resources
 from pathlib import Path
 
-from flexshaft import __version__
+from flexshaft.report.html import page_head
 from flexshaft.report.interactive import assessment_figures
 from flexshaft.report.verdict import VERDICT_COLUMNS, location_text, verdict_rows
 from flexshaft.verdict.assess import Assessment
@@ -97,17 +97,7 @@ def interactive_page(a: Assessment, plotly_js: str, title: str | None = None) ->
     )
     data = _script_text(json.dumps(figures, allow_nan=False, separators=(",", ":")))
     heading = title or f"flexshaft interactive figures: {a.design.name}"
-    return f"""<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<meta http-equiv="Content-Security-Policy" content="{_CSP}">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<meta name="generator" content="flexshaft {e(__version__)}">
-<title>{e(heading)}</title>
-<style>{_CSS}</style>
-<script>{_script_text(plotly_js)}</script>
-</head>
+    return f"""{page_head(heading, _CSS, _CSP, script=_script_text(plotly_js))}
 <body>
 <main>
 <h1>{e(heading)}</h1>
