@@ -21,9 +21,10 @@ Excitations (:func:`torsional_excitations`), each a fixed multiple of the shaft 
 
 Gear-mesh frequencies are not included (the design has no tooth counts).
 
-Separation (the rule used). Every torsional natural frequency f_n stays at least
-:data:`TORSIONAL_SEPARATION` = 10 % away from every excitation frequency in the operating speed
-range [Ω_lo, Ω_hi] (``[operating] speed_range``). An excitation of ratio r sweeps the band
+Separation (the rule used). Every torsional natural frequency f_n stays at least the design's
+``[requirements] min_torsional_separation`` (:data:`TORSIONAL_SEPARATION` = 10 % by default) away
+from every excitation frequency in the operating speed range [Ω_lo, Ω_hi]
+(``[operating] speed_range``). An excitation of ratio r sweeps the band
 [f_lo, f_hi] = r [Ω_lo, Ω_hi]/2π, and the margin ``min |f_n − f_e|/f_e`` over the band is
 
 .. math:: m = 1 - f_n/f_{lo} \;(f_n < f_{lo}),\qquad m = f_n/f_{hi} - 1 \;(f_n > f_{hi}),\qquad m = 0 \text{ inside.}
@@ -287,7 +288,7 @@ def torsional_separation(
     model: Model,
     modes: TorsionalModes | None = None,
     speed_range: tuple[float, float] | None = None,
-    required: float = TORSIONAL_SEPARATION,
+    required: float | None = None,
 ) -> tuple[TorsionalSeparation, ...]:
     """Separation margin of every torsional mode below twice the highest excitation frequency
     (at least the lowest flexible mode) from its nearest excitation.
@@ -299,13 +300,16 @@ def torsional_separation(
     speed_range : (float, float) or None
         Lowest and highest shaft speeds [rad/s]; default the design's
         (:attr:`~flexshaft.design.loads.Operating.speed_limits`).
-    required : float
-        Required margin [-] (default 10 %).
+    required : float or None
+        Required margin [-]; default the design's ``[requirements] min_torsional_separation``
+        (10 % unless the design sets it), the margin the verdict's check holds each mode to.
     """
     check_model(model)
     if model.design is None:
         raise ValueError("the model has no design: its excitations are not known")
     low, high = model.design.operating.speed_limits if speed_range is None else speed_range
+    if required is None:
+        required = model.design.requirements.min_torsional_separation
     if not (np.isfinite(low) and np.isfinite(high) and 0 < low <= high):
         raise ValueError(f"speed_range must be 0 < lowest <= highest [rad/s] (got ({low!r}, {high!r}))")
     if not (np.isfinite(required) and required >= 0):
