@@ -495,9 +495,12 @@ def _undamped_at(model: Model, speed: float) -> bool:
 
 
 def _campbell_label(campbell: Campbell | None, speed: float) -> str:
-    if campbell is None or not campbell.critical_speeds:
+    """The label of the tracked mode whose 1× critical speed is within 3 % of ``speed`` (a
+    diagram drawn with further harmonics has crossings of 2×, 3×, ... too: not this peak's)."""
+    synchronous = [c for c in campbell.critical_speeds if c.harmonic == 1.0] if campbell is not None else []
+    if not synchronous:
         return ""
-    nearest = min(campbell.critical_speeds, key=lambda c: abs(c.speed - speed))
+    nearest = min(synchronous, key=lambda c: abs(c.speed - speed))
     if abs(nearest.speed - speed) > _LABEL_TOLERANCE * speed:
         return ""
     return f"{nearest.mode + 1} ({nearest.whirl})"
