@@ -18,10 +18,13 @@ exact).
 * ``max_critical_rpm`` marks "the critical speeds (up to ``max_critical_rpm``)", a limit in
   rpm: half the critical speed in rpm hides the marker (N/2 rpm is still 4.8 times the
   critical speed's value in rad/s, so a limit compared in rad/s would keep it); 1.5 N shows it.
-* ``CriticalSpeeds.labelled(campbell)`` names each resolved peak (one with an AF method) by "the
-  tracked mode of ``campbell`` whose 1× critical speed is within 3 %" (label_critical_speeds):
-  a peak 1 % above ω_d takes the mode number (from 1) and whirl of one of the two crossings
-  there; one 10 % above ω_d, or an undamped one (no AF method), takes none.
+* ``CriticalSpeeds.labelled(campbell)`` labels the unbalance-response peaks by the documented
+  rule of docs/requirements.md ("How flexshaft computes AF", step 5): "Each peak is labelled
+  with the tracked Campbell mode whose 1× critical speed is within 3 %". A peak 1 % above ω_d
+  takes the mode number (from 1) and whirl of one of the two crossings there; one 10 % above
+  ω_d takes none. The peaks of that rule are those steps 2–4 resolve and give an AF; an
+  undamped critical (no AF method) is not one and takes none either (this restriction rests
+  only on label_critical_speeds's docstring, "the resolved peaks", not on a hand-written doc).
 * ``CriticalSpeeds.to_dataframe`` gives each critical's "speed [rpm] and [rad/s]": 100π rad/s
   is 3000 rpm exactly (1 rev = 2π rad, 1 min = 60 s; 1e-12).
 

@@ -27,7 +27,11 @@ axes are in μm for an orbit below 0.1 mm (flexshaft.plot.response.orbit_figure)
 
 ``frequency_response(..., speed=Ω)`` computes a non-synchronous response at the spin Ω: it
 records Ω as the spin of every frequency (``spin_speeds``, which the dataset's ``spin_speed``
-copies), an exact copy of the input (1e-12). Four solves of a 4-element rotor: well under 0.5 s of CPU.
+copies), an exact copy of the input (1e-12). Its Bode plot is drawn against the excitation
+frequency (plot_bode's docstring) in Hz (bode_figure's documented abscissa, "excitation
+frequency [Hz] with ``x_label`` saying so", and the axis label): f = ω/(2π), here 5, 10 and
+20 Hz (1e-12: one division of the inputs by 2π). Four solves of a 4-element rotor: well under
+0.5 s of CPU.
 """
 
 from __future__ import annotations
@@ -99,6 +103,15 @@ def test_harmonic_response_records_the_spin_it_was_computed_at():
     q = frequency_response(model, load, omegas, speed=spin)
     assert np.asarray(q.frequencies) == pytest.approx(omegas, rel=1e-12)
     assert np.asarray(q.spin_speeds) == pytest.approx(np.full(omegas.size, spin), rel=1e-12)
+    import matplotlib.pyplot as plt
+
+    fig = q.plot_bode(direction="v")
+    try:
+        assert "[Hz]" in fig.axes[1].get_xlabel()
+        line = fig.axes[0].get_lines()[0]
+        assert np.asarray(line.get_xdata()) == pytest.approx([5.0, 10.0, 20.0], rel=1e-12)
+    finally:
+        plt.close(fig)
     # the response itself: the v plane's single degree of freedom (the spin does not enter it)
     expected = 1000.0 / (K_SHAFT + KB + 1j * omegas * CV - M_DISK * omegas**2)
     assert np.asarray(q)[v] == pytest.approx(expected, rel=1e-3)
