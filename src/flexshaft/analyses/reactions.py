@@ -198,7 +198,14 @@ def bearing_reactions(
     if loads is None and any(a.integrates for a in model.actuators):
         loads = external_static_load(model) + torque_load(model)
     static = bearing_forces(model, q_static, loads=loads)  # the static response is at the operating speed
-    dynamic = bearing_forces(model, q_dyn, speed)
+    if speed == 0.0 and any(a.integrates for a in model.actuators):
+        # at rest an integrating actuator's force is not a function of q (C(0) is infinite); no
+        # synchronous load acts there, so the response at speed is zero and so are its forces
+        if np.any(q_dyn != 0):
+            raise ValueError("at rest (speed 0) with an integrating actuator q_at_speed must be zero")
+        dynamic = {link.name: np.zeros((link.rows.shape[0], q_dyn.shape[1]), complex) for link in model.bearings}
+    else:
+        dynamic = bearing_forces(model, q_dyn, speed)
     gaps = {b.name: getattr(b, "gap", None) for b in model.design.bearings} if model.design is not None else {}
     return {
         link.name: BearingReaction(
