@@ -115,7 +115,8 @@ _DECOUPLED = 1e-7
 class UnstableRoot:
     """One unstable root: speed Ω [rad/s], root s [rad/s] (real for a divergence), ``kind``
     ``"oscillatory"`` or ``"divergence"``, and whether the loss-consistent value was solved
-    (``refined``; False: the loss-free value, for a divergence or a root Newton did not settle)."""
+    (``refined``; False: for a divergence, the loss-free value; for a root below the spin that
+    Newton did not settle, the loss-free value; above the spin, the first-order estimate)."""
 
     speed: float
     root: complex
@@ -149,7 +150,8 @@ class RootStability:
         loss-free state matrix; a passive check with the loss, which solves no loss-free state
         matrix (module docstring, step 4), counts its loss-consistent roots).
     n_refined : ndarray
-        Of those, the roots refined with the hysteretic loss at each speed.
+        Of those, the roots whose loss-consistent value was solved at each speed (every root of
+        a model without loss).
     unstable : tuple of UnstableRoot
         Every unstable root, by speed then frequency.
     roots : tuple of ndarray
@@ -338,10 +340,11 @@ def _hysteretic(
 ) -> tuple[np.ndarray, np.ndarray]:
     """The loss-free roots ``s`` (right eigenvectors ``right``) of the full basis with the
     hysteretic loss where it can change a root's side (module docstring, step 3); returns the
-    roots and which were solved with the loss."""
-    done = np.zeros(s.size, bool)
+    roots and which were solved with the loss (all of them without a loss: the loss-free roots
+    are then the loss-consistent ones)."""
     if not red.has_loss:
-        return s, done
+        return s, np.ones(s.size, bool)
+    done = np.zeros(s.size, bool)
     nb = red.size
     zeta = _damping_ratio(s)
     below = np.flatnonzero(s.imag < speed)  # the rotating loss of forward whirl can destabilise them
