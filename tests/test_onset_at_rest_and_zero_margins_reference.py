@@ -25,7 +25,9 @@ conversion rounds (273.15 and π are not binary fractions) the tolerance is a fe
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import re
 from types import SimpleNamespace as NS
 
 import numpy as np
@@ -36,6 +38,7 @@ from flexshaft.units import celsius_to_kelvin
 from flexshaft.verdict import gather
 from flexshaft.verdict.checks import evaluate, whirl_onset_check
 from flexshaft.verdict.evidence import Evidence, LoopEvidence, TorsionalEvidence
+from flexshaft.verdict.operating_point import PointAnalyses
 
 # ------------------------------------------------------------------------ an onset at standstill
 
@@ -94,8 +97,15 @@ def test_a_zero_phase_margin_against_a_zero_requirement_passes_at_margin_zero():
 
 def _point(allowable_c: float, material_temperature: float) -> NS:
     """A point at 500 rad/s (no speed range) whose every analysis but the thermal one is
-    absent; the shaft's self-heating equilibrium peaks at 330 K, its material starts at
-    ``material_temperature`` [K] (a hot-soaked start)."""
+    absent or empty: stability and the every-root check find no onset, there are no modes at
+    speed and no criticals (no unbalance response), and the spin-up is stubbed empty (no
+    speeds), so no spin-up peak is gathered. The shaft's self-heating equilibrium peaks at
+    330 K, its material starts at ``material_temperature`` [K] (a hot-soaked start).
+
+    ``model.design`` is None while the point's ``design`` is set (in a real
+    :class:`PointAnalyses` the model's design is the design): the only effects are
+    ``whirl_scope`` (500 rad/s instead of 1.15 × 500) and ``actuator_limits`` (no actuators),
+    which these tests do not read."""
     temperature = NS(temperature=np.array([320.0, 330.0, 325.0]), x=np.array([0.0, 1.0, 2.0]))
     thermal = NS(self_heating=NS(status="converged"), shaft_temperature=temperature, loss_model="rotating")
     no_modes = NS(
@@ -121,7 +131,7 @@ def _point(allowable_c: float, material_temperature: float) -> NS:
         criticals=NS(criticals=None, note="no unbalance response"),
         thermal=thermal,
         conditions=NS(material_temperature=material_temperature, point=NS(material_temperature="given")),
-        spinup=NS(speeds=np.array([0.0]), shaft_peak=np.zeros(1), up_to=lambda speed: np.zeros(0, dtype=int)),
+        spinup=NS(speeds=np.zeros(0), shaft_peak=np.zeros(0), up_to=lambda speed: np.flatnonzero(np.zeros(0) <= speed)),
         torsional_separation=None,
         torsional_modes=None,
         bearing_loops=None,
@@ -132,7 +142,10 @@ def test_the_allowable_temperature_is_handed_over_in_kelvin():
     """``allowable_temperature_c`` 100 °C is 100 + 273.15 = 373.15 K; the equilibrium peak 330 K
     (the material starts cooler, at 300 K) is 43.15 K below it. 273.15 is no binary fraction:
     the sum rounds once, a few ulps of 373 (an error of 0.15 K, 273 for 273.15, is 4e-4)."""
-    ev = gather.gather_evidence(_point(100.0, 300.0))
+    point = _point(100.0, 300.0)
+    # the stand-in carries only attributes of a real point (operating_speed is its property)
+    assert set(vars(point)) - {"operating_speed"} <= {f.name for f in dataclasses.fields(PointAnalyses)}
+    ev = gather.gather_evidence(point)
     assert ev.allowable_temperature == pytest.approx(373.15, rel=4e-16)
     assert ev.max_temperature == 330.0
     check = evaluate(ev).check("temperature")
@@ -145,7 +158,9 @@ def test_a_hot_soaked_start_exactly_at_the_allowable_passes_with_zero_margin():
     same Kelvin temperature (T = t + 273.15 K, the envelope's conversion of a given material
     temperature, flexshaft.thermal.envelope), above the 330 K equilibrium, so the check's value
     is the allowable itself: margin exactly 0, which passes ("negative fails")."""
-    ev = gather.gather_evidence(_point(120.0, celsius_to_kelvin(120.0)))
+    point = _point(120.0, celsius_to_kelvin(120.0))
+    assert set(vars(point)) - {"operating_speed"} <= {f.name for f in dataclasses.fields(PointAnalyses)}
+    ev = gather.gather_evidence(point)
     check = evaluate(ev).check("temperature")
     assert check.value == check.limit and check.margin == 0.0
     assert check.status == "pass"
@@ -167,7 +182,12 @@ def test_a_torsional_mode_inside_its_excitation_band_fails_and_names_the_band_in
     check = evaluate(ev, Requirements(min_torsional_separation=0.1)).check("torsional_separation")
     assert check.status == "fail" and (check.value, check.limit, check.margin) == (0.0, 0.1, -0.1)
     assert check.location["case"] == "main rotor 2/rev"
-    # 2π·9.15/(2π) rounds to 9.15 within an ulp; 4 significant digits print it exactly
-    assert check.location["detail"] == "excitation 9.15-10.1 Hz over the speed range"
+    # the band's edges in Hz, parsed rather than matched word for word: 2π·9.15/(2π) is 9.15
+    # within an ulp; rel=5e-4 admits printing to 4 significant digits (half a unit of the 4th
+    # digit is at most 5e-4 relative), while rad/s labelled Hz is off by the factor 2π
+    m = re.fullmatch(r"excitation ([\d.]+)-([\d.]+) Hz\b.*", check.location["detail"])
+    assert m, check.location["detail"]
+    assert float(m[1]) == pytest.approx(9.15, rel=5e-4)
+    assert float(m[2]) == pytest.approx(10.1, rel=5e-4)
     at_zero = evaluate(ev, Requirements(min_torsional_separation=0.0)).check("torsional_separation")
     assert at_zero.status == "pass" and at_zero.margin == 0.0
