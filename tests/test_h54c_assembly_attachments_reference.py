@@ -2,27 +2,35 @@
 stiffness, and couplings listed out of station order, against closed forms derived here.
 
 * **A bearing's boom station.** docs/model.md ("Bearing"): the bearing joins the shaft point at
-  x to the boom point at its own boom station (``x_boom``, docs/design-reference.md), with the
+  x to the boom point at its own boom station (``x_boom``: "Boom station the bearing is mounted
+  on [m]; defaults to ``x``", the Bearing docstring, src/flexshaft/design/bearings.py), with the
   attachment kinematics v = v_b, w = w_b + hθ_b. Give the boom alone a rigid rotation φ = 1
   about z (every boom node v_b = x, γ_b = 1; the Hermite shape functions hold it exactly): the
   attachment point moves by v = x_boom, so the bearing's relative v (shaft minus attachment) is
   −x_boom, not −x. A rigid rotation about y (w_b = −x, β_b = 1, docs/model.md: β = −∂w/∂x)
   gives relative w = +x_boom. With a contact spring k_v only, the rigid boom rotation about z
   strains nothing but that spring: qᵀ K q = k_v x_boom².
-* **The loss of an isotropic tube.** ``E* = E (1 + iη)``, ``G* = G (1 + iη)`` (docs/model.md,
-  "Equations": shaft E*, G*), so the shaft's loss stiffness is η times its storage stiffness.
-  On the bending field v = x² (v_i = x_i², γ_i = 2 x_i, exact in the cubic Hermite element) the
-  curvature is 2 everywhere: qᵀ K_loss q = η E I ∫ 2² dx = 4 η E I L; on the twist field θ = x
-  (exact in the linear twist) qᵀ K_loss q = η G J L.
+* **The loss of an isotropic tube.** ``E* = E (1 + iη)``, ``G* = G (1 + iη)`` (the isotropic
+  material's ``loss_factor``: "both moduli are complex, E(1 + iη)", its docstring in
+  src/flexshaft/design/materials.py), so the shaft's loss stiffness is η times its storage
+  stiffness. On the bending field v = x² (v_i = x_i², γ_i = 2 x_i, exact in the cubic Hermite
+  element) the curvature is 2 everywhere: qᵀ K_loss q = η E I ∫ 2² dx = 4 η E I L; on the
+  twist field θ = x (exact in the linear twist) qᵀ K_loss q = η G J L.
 * **Couplings listed aft first.** A tube held in twist at its forward end, two torsionally
   flexible couplings, torque T at the aft end: the springs are in series, so
   θ_aft = −T (L/(G J) + 1/k_1 + 1/k_2) whatever order the design lists them in
-  (docs/segmented-driveline.md: each coupling joins the two nodes at its station).
+  (docs/segmented-driveline.md: each coupling joins the two nodes at its station). The design
+  must first be accepted: splitting the shaft in listed order turns the doubled station of the
+  aft joint into a zero-length element and refuses this valid design (DesignError, non-finite
+  matrices); that refusal, failed explicitly, is what catches the mutation.
 
-Tolerances: the rows are shape-function values of order 1 (1e-12 asserted); qᵀ K q sums terms
-up to about 1e7 to a result of order 1e3 to 1e5 (cancellation below 1e4): 1e-9 relative. The
-twist solves the free stiffness matrix (condition number below 1e8 for this 10-element tube):
-1e-9 relative (the same statics as tests/test_segments.py's chain test, whose tolerance this is).
+Tolerances: the rows are shape-function values of order 1 (1e-12 asserted). qᵀ K q sums
+terms q_i K_ij q_j whose largest magnitude is at most about 200 times the result (measured:
+boom rotation 4.4e8 to a result of 5.05e7, bending loss 1.1e5 to 584.7, twist loss 489 to
+108.6), so its round-off is near 1e-13 relative: 1e-9 relative leaves a wide margin and is
+still far below any physical slip. The twist solves the free stiffness matrix (condition
+number below 1e8 for this 10-element tube): 1e-9 relative (the same statics as
+tests/test_segments.py's chain test, whose tolerance this is).
 
 Written for the mutations h54c-build-bearing-boom-side-at-shaft-station,
 h54c-build-metal-bending-loss-dropped and h54c-build-couplings-split-unsorted of
@@ -39,7 +47,7 @@ import pytest
 from flexshaft.analyses.response import static_response
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import torque_load
-from flexshaft.design import design_from_dict, loads_design
+from flexshaft.design import DesignError, design_from_dict, loads_design
 
 E_AL, G_AL, ETA = 70.0e9, 26.0e9, 0.012
 D_O, WALL = 0.05, 0.002
@@ -173,7 +181,11 @@ def test_couplings_listed_aft_first_still_sum_their_compliances():
         {"name": f"c{x}", "x": x, "angular_stiffness": 500.0, "axial_stiffness": "rigid", "torsional_stiffness": k}
         for x, k in sorted(k_t.items(), reverse=True)
     ]
-    model = build_model(design_from_dict(_tube(couplings=couplings, mesh={"shaft_elements": 10})))
+    design = design_from_dict(_tube(couplings=couplings, mesh={"shaft_elements": 10}))
+    try:
+        model = build_model(design)
+    except DesignError as e:
+        pytest.fail(f"a valid design listing its couplings aft first was refused: {e}")
     dm = model.dofs
     for link in model.couplings:
         assert dm.shaft_x[link.node_a] == pytest.approx(link.x, abs=1e-12)

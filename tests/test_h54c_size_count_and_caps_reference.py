@@ -10,7 +10,9 @@ and which warns, against the numbering and the rule of the hand-written docs.
 * **Caps.** docs/limits.md (section 5): ``check_problem_size`` "refuses a design above 2 GiB
   or 4 hours (estimated) ... and warns (``ProblemSizeWarning``) above 512 MiB, 10 minutes" —
   the hard cap refuses, the soft cap only warns. With the time caps given explicitly
-  (soft 1e-9 s, hard 1e9 s) any estimate lies between them: a warning and the size, no error.
+  (soft 1e-9 s, hard 1e9 s) any estimate lies between them: a warning and the size, no error;
+  a refusal (DesignError) is failed explicitly, which is what catches a time held to the soft
+  cap.
 
 Counts are integers (exact); no floating-point tolerance.
 
@@ -23,7 +25,7 @@ from __future__ import annotations
 import pytest
 
 from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size, problem_size
-from flexshaft.design import design_from_dict
+from flexshaft.design import DesignError, design_from_dict
 
 
 def _design(**extra):
@@ -63,5 +65,8 @@ def test_the_estimate_counts_the_tail_rotor_twist():
 def test_an_estimate_between_the_time_caps_warns_and_is_not_refused():
     design = _design()
     with pytest.warns(ProblemSizeWarning):
-        size = check_problem_size(design, "model", soft_time=1e-9, hard_time=1e9)
+        try:
+            size = check_problem_size(design, "model", soft_time=1e-9, hard_time=1e9)
+        except DesignError as e:
+            pytest.fail(f"an estimate below the hard time cap was refused: {e}")
     assert 1e-9 < size.time_seconds < 1e9
