@@ -9,13 +9,18 @@ segment) but one :class:`~flexshaft.analyses.metal_strength.SegmentBuckling` rec
 is the transmitted P/Ω (P = 12 kW, Ω = 3000 rpm = 314.16 rad/s: 38.197 N m) and whose
 critical torque is that of the same tube with strengths (the strengths do not enter the shell).
 
-Reference for the critical torque's size: Donnell's long-tube limit of the shear buckling stress,
-τ_cr = 0.272 E/(1 − ν²)^{3/4} (t/r)^{3/2} (as quoted in tests/test_buckling.py), times the
-torque arm 2π r² t of the mid-surface r = (D_o − t)/2: T_cr = 3.65 kN m here; this thick
-(r/t = 12) 2 m tube is outside that thin-shell limit's range, so T_cr is asserted only to lie
-within a factor 2 of it: a wiring slip (no record) is what the test is for, the shell is checked in
-tests/test_buckling.py. The equality with the strengths-given tube is to 1e-12 (the same
-computation on the same numbers).
+Reference for the critical torque's size: the code's shell is Sanders' (``theory="classical"``,
+default kinematics), whose long-tube limit is Timoshenko & Gere (1961) sec. 11.12's τ_cr =
+E/(3√2 (1 − ν²)^{3/4}) (t/r)^{3/2} = 0.2357 E/(1 − ν²)^{3/4} (t/r)^{3/2} (n = 2, as quoted and
+used in tests/test_buckling.py), times the torque arm 2π r² t of the mid-surface r =
+(D_o − t)/2: T_cr = 3.16 kN m here (ν = E/2G − 1 = 0.346). That formula is a thin-shell result;
+this tube has r/t = 12, so its thickness corrections are O(t/r) ≈ 1/12, and L/r = 83 ≫ √(r/t) =
+3.5 puts it in the long-tube regime: the critical torque is asserted within 10 % of it (measured
++6.5 %, of which the finite length is +0.9 %: the same tube 20 m long gives +5.5 %). Donnell's
+coefficient 0.272 lies 15 % higher: that is Donnell's kinematics' known error at n = 2 (it drops
+the v/r terms), not a tolerance to use here. A wiring slip (no record) is what the test is for;
+the shell itself is checked in tests/test_buckling.py. The equality with the strengths-given
+tube is to 1e-12 (the same computation on the same numbers).
 """
 
 from __future__ import annotations
@@ -68,5 +73,6 @@ def test_a_tube_without_strengths_is_still_checked_for_buckling():
     assert b.critical_torque == pytest.approx(reference.critical_torque, rel=1e-12)
     assert b.safety_factor == pytest.approx(b.critical_torque / torque, rel=1e-12)
     r, nu = (D_O - WALL) / 2, E / (2 * G) - 1
-    long_tube = 2 * math.pi * r**2 * WALL * 0.272 * E * (WALL / r) ** 1.5 / (1 - nu**2) ** 0.75
-    assert 0.5 * long_tube < b.critical_torque < 2.0 * long_tube
+    tau_long = E / (3 * math.sqrt(2) * (1 - nu**2) ** 0.75) * (WALL / r) ** 1.5
+    long_tube = 2 * math.pi * r**2 * WALL * tau_long
+    assert b.critical_torque == pytest.approx(long_tube, rel=0.10)
