@@ -2,8 +2,8 @@
 
 A [0/90] tube under a pure bend (v = a x², κ_v = 2a everywhere, the Hermite element exact) with
 a prescribed residual stress per ply, ``residual_stress`` (n_ply, 3) [Pa] in material axes, a
-fixed initial state the safety factor R does not scale: F(σ_T + R σ) = 1 (Tsai 1992, ch. 9).
-The residuals are chosen so that the two plies' rows differ in every component.
+fixed initial state the safety factor R does not scale: F(σ_T + R σ) = 1 (docs/model.md,
+line 255). The residuals are chosen so that the two plies' rows differ in every component.
 
 References used (none is a number the code produced):
 
@@ -14,9 +14,10 @@ References used (none is a number the code produced):
 * at the failure state σ* = σ_T + R Σ σ_j the Tsai-Wu index is 1 by the definition of R, and
   the load shares, which split that index additively (Aumann-Shapley, module docstring "The
   shares sum to 1"), sum to 1; evaluated directly as F(σ*) from the strengths by hand here:
-  F(σ*) = F₁σ₁ + F₂σ₂ + F₁₁σ₁² + F₂₂σ₂² + F₆₆τ² + 2F₁₂σ₁σ₂ (Jones 1999, eq. 2.159), with
-  F₁₂ = −½√(F₁₁F₂₂). Tolerance 1e-9: the quadratic's root is well conditioned (the failure state
-  is not near a tangency), round-off only.
+  F(σ*) = F₁σ₁ + F₂σ₂ + F₁₁σ₁² + F₂₂σ₂² + F₆₆τ² + 2F₁₂σ₁σ₂ (the criterion as stated in
+  src/flexshaft/strength.py's docstring), with F₁₂ = −½√(F₁₁F₂₂). Tolerance 1e-9: the
+  quadratic's root is well conditioned (the failure state is not near a tangency), round-off
+  only.
 
 The critical ply is the 90° ply (index 1): its transverse strength Y_t = 40 MPa, loaded by the
 bend's axial strain at E_T, governs long before the 0° ply's fibres (X_c = 1000 MPa at E_L);

@@ -1,9 +1,11 @@
 """A two-bladed tail rotor excites the driveline at 2/rev too (documented rule, closed form derived here).
 
-The module docstring of :mod:`flexshaft.analyses.torsional` lists the excitations: "the tail
-rotor's 1/rev and N/rev (blade passage) at Ω/n". For N = 2 blades behind a gearbox of ratio
-n = 2.5 the excitation ratios to the shaft speed are therefore exactly 1 (shaft 1/rev), 1/n = 0.4
-and N/n = 0.8 (tail rotor 1/rev and 2/rev); no main rotor is given.
+docs/model.md (lines 350-353, hand-written) lists the excitations: "shaft 1/rev, tail rotor
+1/rev and N/rev, main rotor 1…N/rev at `main_rotor_speed_rpm`, each a fixed multiple of Ω", with
+"the gear ratio n = shaft speed / rotor speed" (line 331), so the tail rotor turns at Ω/n. For
+N = 2 blades behind a gearbox of ratio n = 2.5 the excitation ratios to the shaft speed are
+therefore exactly 1 (shaft 1/rev), 1/n = 0.4 and N/n = 0.8 (tail rotor 1/rev and 2/rev); no main
+rotor is given.
 
 The separation check is then set on a mode placed inside the 2/rev band. A near-massless steel
 tube (k = G J_p/L = 1.350e5 N m/rad) between a disk J₁ = 0.3 kg m² and the tail rotor's reflected
