@@ -32,7 +32,7 @@ linear in ω: Im L = −0.045, −0.005, 0.005, 0.005, −0.005, −0.15 at 0, 4
 Re L = −0.5 except a dip to −0.56 at 4.5 rad/s (−0.5 at 4 and 5) and −0.53 from 14 to
 14.5 rad/s (−0.5 at 15). The true upper gain margins 20 log10(1/|L|) are 5.036 dB at 4.5 rad/s
 (the smallest) and 5.514 dB at 14.5 rad/s; the grid's chords read |L| = 0.5 (6.021 dB) and
-0.515 (5.763 dB). Within the 2 dB window both are refined and the margin is 20 log10(1/0.56)
+0.515 (5.764 dB). Within the 2 dB window both are refined and the margin is 20 log10(1/0.56)
 at 4.5 rad/s; a narrower window refines only the second. |L| < 1 everywhere: no gain crossover.
 
 Tolerances: the golden-section search stops at 1e-6 in ln ω: the frequency of a smooth maximum
