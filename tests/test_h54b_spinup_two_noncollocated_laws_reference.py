@@ -15,9 +15,11 @@ coordinates (each law the same on v and w) the disk's forward circle and the car
 and the relative orbit at both magnets (at the disk, the ground fixed) is r. The speeds 100, 300
 and 500 rad/s straddle the undamped resonance √((k + φ_a 1e5 + φ_b 4e5)/m) = 337 rad/s.
 
-Tolerance 1e-3 relative, as tests/test_spinup_map_noncollocated_force_reference.py on the same
-rotor: the tube's mass (3.5e-6 of the disk's) shifts the resonance by ~1e-6 relative, which the
-11 % distance of 300 rad/s from it amplifies a few-fold (measured 6e-6).
+Tolerance 1e-4 relative: the tube's mass (3.5e-6 of the disk's) shifts the resonance by ~1e-6
+relative, which the 11 % distance of 300 rad/s from it amplifies a few-fold (measured 6.4e-6 on
+every output, OpenBLAS Prescott and Haswell alike); 1e-4 is 15× that. The laws differ 4×, so a law
+put on the other bearing's axis moves the outputs by 30 % or more (measured): the catch is
+unaffected by the tighter bound.
 
 Written for the mutation h54b-spinup-noncollocated-gain-order of scripts/mutations.toml.
 """
@@ -64,7 +66,7 @@ def test_two_different_noncollocated_laws_on_one_disk():
     assert seen["a"] == pytest.approx(0.6875, rel=1e-12) and seen["b"] == pytest.approx(0.944, rel=1e-12)
     r = U * SPEEDS**2 / np.abs(K_SHAFT - M_DISK * SPEEDS**2 + sum(seen[n] * laws[n] for n in LAWS))
     node = model.dofs.node_at("shaft", 0.5)
-    assert curves.shaft_orbit[node] == pytest.approx(r, rel=1e-3)
+    assert curves.shaft_orbit[node] == pytest.approx(r, rel=1e-4)
     for k, name in enumerate(LAWS):
-        assert curves.actuator_displacement[k] == pytest.approx(r, rel=1e-3)
-        assert curves.actuator_force[k] == pytest.approx(np.abs(laws[name]) * seen[name] * r, rel=1e-3)
+        assert curves.actuator_displacement[k] == pytest.approx(r, rel=1e-4)
+        assert curves.actuator_force[k] == pytest.approx(np.abs(laws[name]) * seen[name] * r, rel=1e-4)
