@@ -20,7 +20,7 @@ References, from the hand-written docs and derived here:
   + h (T − T_amb) πD per unit length, T in kelvin). The reported °C, turned back into kelvin,
   must close that balance per unit area with the absorbed sun and the h at the solution; the
   summary rounds to 0.01 K, so the residual is at most 0.005 K times dR/dT = 4εσT³ + h (0.006 K
-  allowed). A kelvin figure labelled °C would be 273 K too hot and miss by ~2e3 W/m².
+  allowed). A kelvin figure labelled °C would be 273 K too hot and miss by ~1e4 W/m².
 """
 
 from __future__ import annotations
