@@ -15,7 +15,7 @@ References (the definitions of :mod:`flexshaft.analyses.separation` and docs/req
        N_1 = 9 − (2 − 1.15625)/(3 − 1.15625) = 9 − 0.84375/1.84375,
        N_2 = 11 + (2 − 1.05625)/(3 − 1.05625) = 11 + 0.94375/1.94375,
 
-   AF = 10.25/(N_2 − N_1) = 3.4858... A level taken from the sample (y = 2.0125) moves each
+   AF = 10.25/(N_2 − N_1) = 3.4827... A level taken from the sample (y = 2.0125) moves each
    crossing by ~0.007 and the AF by 0.5 %. Tolerance 1e-12 relative: a handful of divided
    differences of O(1) numbers, round-off ~1e-15.
 
@@ -24,10 +24,11 @@ References (the definitions of :mod:`flexshaft.analyses.separation` and docs/req
    band's speeds are at most 1/20 of it. A(s) = 10 + cos s has its peak at 2π (A_c = 11, level
    7.78, below the minimum 9: never reached) and its flanking minima at π and 3π exactly, so
    the band is 2π and the AF bound 2π/2π = 1. Started from samples fine at the top (0.07-0.15
-   apart) but 2-2.4 apart at the minima, the refined limits are the sampled minima; the true
+   apart) but 1.9-2.4 apart at the minima, the refined limits are the sampled minima; the true
    minimum lies within one resolved interval (≤ band/20 = π/10 ≈ 0.31) of each, so
    |N_left − π|, |N_right − 3π| ≤ 0.33 (the band itself known to ± that) and the AF within
-   ±12 % of 1. The starting samples' minima 2.5 and 9.9 miss π and 3π by 0.64 and 0.48.
+   ±12 % of 1 (the peak's speed, sampled 0.07-0.15 apart at the top, is exact to about 1e-9, so
+   the band's error is the limits' alone). The starting samples' minima 2.5 and 9.9 miss π and 3π by 0.64 and 0.48.
 CPU: a few hundred evaluations of a cosine, well under 10 ms.
 """
 
