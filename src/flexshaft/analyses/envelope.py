@@ -302,11 +302,14 @@ def integrate_envelope(
         states[:, k_out] = z
         k_out += 1
 
-    def drift_and_load(basis: _Basis, W: np.ndarray, times: np.ndarray) -> np.ndarray:
-        """N without the frame rotation, V⁻¹ S [drift Z + load], for columns W (n, k) at times (k,)."""
+    def drift_and_load(basis: _Basis, W: np.ndarray, times: np.ndarray, until: float) -> np.ndarray:
+        """N without the frame rotation, V⁻¹ S [drift Z + load], for columns W (n, k) at times (k,)
+        of a step that ends at or before ``until``, just below the next breakpoint: Ω̇ there is
+        its own segment's (the profile's Ω̇ is right-continuous, the next segment's at the
+        breakpoint itself)."""
         s = speeds_at(times)
         Z = (basis.V @ W) / S[:, None]
-        load = system.b[:, None] * (s * s - 1j * accelerations_at(times))
+        load = system.b[:, None] * (s * s - 1j * accelerations_at(np.minimum(times, until)))
         return basis.Vinv @ (S[:, None] * (system.drift(s, basis.speed, Z) + load))
 
     def rotation(t0: float, mid: np.ndarray, tau: np.ndarray) -> np.ndarray:
@@ -314,7 +317,7 @@ def integrate_envelope(
         f = [speeds_at(t0 + c * tau) - mid for c in (0.0, 0.5, 1.0)]
         return tau / 6.0 * (f[0] + 4.0 * f[1] + f[2])
 
-    def etd(basis: _Basis, w: np.ndarray, t: float, h: np.ndarray, N0: np.ndarray) -> np.ndarray:
+    def etd(basis: _Basis, w: np.ndarray, t: float, h: np.ndarray, N0: np.ndarray, until: float) -> np.ndarray:
         """ETDRK4 from (t, w) over each step length h_k (k,) at once, (n, k): on u = w e^{iθ}
         with L = Λ − i(Ω(t + h/2) − Ω_ref) and the rotation θ since t exact; N0 = N(w, t)."""
         h = np.asarray(h, dtype=float)
@@ -327,11 +330,11 @@ def integrate_envelope(
         half = 0.5 * h * q1
         w, N0 = w[:, None], N0[:, None]
         a = e2 * w + half * N0
-        Na = r_half * drift_and_load(basis, a / r_half, t + 0.5 * h)
+        Na = r_half * drift_and_load(basis, a / r_half, t + 0.5 * h, until)
         b = e2 * w + half * Na
-        Nb = r_half * drift_and_load(basis, b / r_half, t + 0.5 * h)
+        Nb = r_half * drift_and_load(basis, b / r_half, t + 0.5 * h, until)
         c = e2 * a + half * (2 * Nb - N0)
-        Nc = r_end * drift_and_load(basis, c / r_end, t + h)
+        Nc = r_end * drift_and_load(basis, c / r_end, t + h, until)
         u = e * w + h * ((p1 - 3 * p2 + 4 * p3) * N0 + 2 * (p2 - 2 * p3) * (Na + Nb) + (4 * p3 - p2) * Nc)
         return u / r_end
 
@@ -346,6 +349,7 @@ def integrate_envelope(
     h = _quantise(min(max_step, 0.25 / top))
     t, steps, rejected = 0.0, 0, 0
     for stop in breakpoints[1:]:
+        until = float(np.nextafter(stop, -np.inf))  # the steps' segment ends here (Ω̇ may jump at stop)
         while t < stop - 1e-12 * duration:
             if abs(speed(t) - basis.speed) > refresh_every:
                 new = _Basis(system, speed(t))
@@ -355,10 +359,10 @@ def integrate_envelope(
                 max_condition = max(max_condition, basis.condition)
                 growth = max(growth, float(basis.lam.real.max()))
             h = min(h, stop - t)
-            N_start = drift_and_load(basis, w[:, None], np.array([t]))[:, 0]
-            big, half = etd(basis, w, t, np.array([h, 0.5 * h]), N_start).T
-            N_half = drift_and_load(basis, half[:, None], np.array([t + 0.5 * h]))[:, 0]
-            small = etd(basis, half, t + 0.5 * h, np.array([0.5 * h]), N_half)[:, 0]
+            N_start = drift_and_load(basis, w[:, None], np.array([t]), until)[:, 0]
+            big, half = etd(basis, w, t, np.array([h, 0.5 * h]), N_start, until).T
+            N_half = drift_and_load(basis, half[:, None], np.array([t + 0.5 * h]), until)[:, 0]
+            small = etd(basis, half, t + 0.5 * h, np.array([0.5 * h]), N_half, until)[:, 0]
             error = np.linalg.norm(basis.V @ (small - big)) / 15.0
             size = float(np.linalg.norm(basis.V @ small))
             if not (np.isfinite(error) and np.isfinite(size)):
@@ -390,7 +394,7 @@ def integrate_envelope(
                 for t0, w0, N0 in ((t, w, N_start), (t + 0.5 * h, half, N_half)):
                     k_end = int(np.searchsorted(outputs, t0 + 0.5 * h, side="right"))
                     if k_end > k_out:  # outputs inside this half step: ETDRK4 from its start
-                        dense = etd(basis, w0, t0, outputs[k_out:k_end] - t0, N0)
+                        dense = etd(basis, w0, t0, outputs[k_out:k_end] - t0, N0, until)
                         states[:, k_out:k_end] = (basis.V @ dense) / S[:, None]
                         k_out = k_end
                 t, w = t + h, small
