@@ -2,7 +2,7 @@
 
 Unequal plies, derived here by hand from the definitions in :mod:`flexshaft.laminate`: a 0° ply of
 t1 = 1 mm inside a 90° ply of t2 = 3 mm (total t = 4 mm) has its interfaces at
-z = (-2, -1, +2) mm from the mid-surface, so (Jones 1999, eq. 4.28 for the sums)
+z = (-2, -1, +2) mm from the mid-surface, so (the sums as abd_matrices' docstring states them, derived here)
 
 * A = Q0 t1 + Q90 t2,
 * B = 1/2 [Q0 ((-1)^2 - (-2)^2) + Q90 (2^2 - (-1)^2)] mm^2 = 3/2 (Q90 - Q0) mm^2,
@@ -94,7 +94,7 @@ def test_a_ply_beyond_nu_squared_below_EL_over_ET_is_refused(nu_LT):
 def test_a_ply_inside_the_bound_is_accepted_with_a_positive_definite_Q():
     """E_T = 4 E_L, nu_LT = 0.499: nu_LT nu_TL = 0.996 < 1, so Q is positive definite.
 
-    Q11 = 2.5e12, Q22 = 1e13, Q12 = 4.99e12 Pa: the normal block's smaller eigenvalue is about
+    Q11 = 2.5e12, Q22 = 1e13, Q12 = 4.995e12 Pa: the normal block's smaller eigenvalue is about
     det/trace = 1e23/1.25e13 = 8e9 Pa and Q66 = G_LT = 4e9 Pa, far above the rounding of a
     1e13 Pa matrix (about 1e-3 Pa), so the sign is certain.
     """
