@@ -158,7 +158,7 @@ def runup(
     if result.max_growth_rate > 0:
         print_line(
             console,
-            f"free whirl grows at {sig(result.max_growth_rate)} 1/s at the end speed: unstable there",
+            f"free whirl grows at up to {sig(result.max_growth_rate)} 1/s inside the run's speed range: unstable there",
             style="bold red",
         )
     print_line(console, f"written to {folder}")
