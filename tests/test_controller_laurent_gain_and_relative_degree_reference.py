@@ -17,7 +17,8 @@ Derived reference.
   allowed); a PD law kp + kd s has −1 (the one improper degree allowed); a lag has 1.
 
 Tolerances: the gains are a handful of floating-point operations on the given coefficients
-(no root finding: the laws share no root), so 1e-12 relative. CPU: one 4-element build, ms.
+(root finding cancels nothing: the laws share no root), so 1e-12 relative. CPU: one 4-element
+build, ms.
 """
 
 from __future__ import annotations
