@@ -57,6 +57,7 @@ import scipy.linalg as la
 
 from flexshaft.analyses.guards import check_count, check_model, require_finite
 from flexshaft.assembly.model import Model
+from flexshaft.design.requirements import DEFAULT_MIN_TORSIONAL_SEPARATION
 
 __all__ = [
     "TORSIONAL_SEPARATION",
@@ -75,8 +76,9 @@ __all__ = [
 ]
 
 #: Required separation of a torsional natural frequency from every excitation frequency in the
-#: operating range, a fraction of the excitation frequency (API's 10 %, see the module docstring).
-TORSIONAL_SEPARATION = 0.10
+#: operating range, a fraction of the excitation frequency, when the design does not set one: the
+#: requirement's default (API's 10 %, see the module docstring).
+TORSIONAL_SEPARATION = DEFAULT_MIN_TORSIONAL_SEPARATION
 #: An eigenvalue ω² below this fraction of the largest is a rigid-body twist (0 Hz): zero to the
 #: accuracy of the generalized eigen-solver (a few hundred ε times the largest eigenvalue when a
 #: near-massless node makes the mass matrix ill-conditioned).
