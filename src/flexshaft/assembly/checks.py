@@ -119,7 +119,7 @@ def check_bearing_stiffness(design, shaft) -> None:
                 with np.errstate(all="ignore"):
                     static = abs(law.proportional_gain) * current_gain
                 gains["controller"] = static if np.isfinite(static) else np.inf
-                labels["controller"] = " (k_i times the static gain of C(s))"
+                labels["controller"] = " (k_i times the size of the static gain of C(s), either sign)"
             for name, value in gains.items():
                 if value > RIGID_RATIO * reference["v"]:
                     problems.append(
