@@ -43,11 +43,11 @@ def _stand_in(model, options=None, loss_model=None, *, imbalance_scale=1.0, stat
 def test_an_unconverged_scale_below_the_allowable_is_not_the_onset(monkeypatch):
     monkeypatch.setattr(selfheating, "self_heating", _stand_in)
     onset, results = selfheating.runaway_onset(object(), [1.0, 3.0])
+    assert onset == 3.0  # the onset rule: the first scale that runs away
     # the stand-in behaves as derived in the docstring (guards the reference itself)
     assert [r.status for r in results] == ["not_converged", "runaway"]
     assert results[0].max_temperature < ALLOWABLE
     assert results[1].iterations == 3
-    assert onset == 3.0
 
 
 def test_a_list_of_only_unconverged_scales_has_no_onset(monkeypatch):
