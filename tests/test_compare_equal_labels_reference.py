@@ -3,7 +3,7 @@
 :func:`~flexshaft.comparison.compare`'s ``labels`` are the column headings of the two designs
 and the ``design`` coordinate of :meth:`~flexshaft.comparison.Comparison.to_dataset`; two equal
 labels would give two columns with the same heading and a coordinate whose two entries cannot
-be told apart, so the function documents its refusal: "labels: expected two different names".
+be told apart (the rule reasoned here; its error text is "labels: expected two different names").
 The refusal comes before either design is assessed, so the test costs milliseconds (the
 message is the user-facing rule and the only observable of a refusal).
 """

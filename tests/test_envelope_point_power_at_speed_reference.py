@@ -1,8 +1,10 @@
 """An envelope point that gives only a speed keeps the design's power: the torque is P/Ω at it.
 
-:class:`~flexshaft.design.envelope.EnvelopePoint` (its documented attributes): ``speed_rpm``
-omitted takes the ``[operating]`` speed, ``power`` omitted takes the ``[operating]`` power, and
-the main-rotor speed scales with the shaft speed (the two are geared). The reference is that
+docs/thermal.md (the envelope's points: "``speed_rpm``, ``power`` … omitted: ``[operating]`` (the
+main-rotor speed scales with the shaft's)"), as :class:`~flexshaft.design.envelope.EnvelopePoint`'s
+attributes state it: ``speed_rpm`` omitted takes the ``[operating]`` speed, ``power`` omitted
+takes the ``[operating]`` power, and the main-rotor speed scales with the shaft speed (the two are
+geared). The reference is that
 rule applied by hand to the baseline design (4800 rev/min, 246 kW, main rotor 289 rev/min) at
 an overspeed point of 5280 rev/min (110 %) that gives no power:
 
