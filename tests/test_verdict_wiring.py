@@ -26,6 +26,7 @@ import pytest
 from flexshaft.design import DesignError, design_from_dict, tuned_design
 from flexshaft.design.requirements import Requirements
 from flexshaft.verdict import gather
+from flexshaft.verdict.checks import whirl_onset_check
 from flexshaft.verdict.evidence import Evidence, ModeDamping
 from flexshaft.verdict.operating_point import PointAnalyses
 from flexshaft.verdict.point_tasks import campbell_ceiling, root_speeds
@@ -89,9 +90,12 @@ def _stability(onset: float) -> NS:
     )
 
 
-def _roots(onset: float) -> NS:
+def _roots(onset: float, speeds=(0.0, 300.0)) -> NS:
+    """The every-root check solved stable at ``speeds`` and unstable at ``onset``."""
     worst = NS(kind="whirl", refined=True, frequency=240.0, root=0.5 + 240.0j, damping_ratio=-0.002)
-    return NS(onset_speed=onset, worst_at=lambda s: worst, unstable=(NS(speed=onset),))
+    return NS(
+        onset_speed=onset, worst_at=lambda s: worst, unstable=(NS(speed=onset),), speeds=np.array([*speeds, onset])
+    )
 
 
 def _modes() -> NS:
@@ -106,11 +110,13 @@ def _modes() -> NS:
     )
 
 
-@pytest.mark.parametrize(("tracked", "every_root", "onset"), [(600.0, 550.0, 550.0), (600.0, 650.0, 600.0)])
+@pytest.mark.parametrize(("tracked", "every_root", "onset"), [(600.0, 550.0, 300.0), (600.0, 650.0, 600.0)])
 def test_the_onset_is_the_lowest_unstable_speed_of_both_checks(tracked, every_root, onset):
     """The onset is the lowest speed with an unstable root: the tracked modes' (600 rad/s) or the
-    every-root check's, whichever is lower. The whirl damping counts the mode with a 50 % shaft
-    share, not the one with 5 % (below the 10 % of WHIRL_DAMPING_SHAFT_SHARE)."""
+    every-root check's, whichever is lower; the every-root check's lies above the last speed it
+    solved stable (300 rad/s) and at or below its first unstable one, and is held to that lower
+    end. The whirl damping counts the mode with a 50 % shaft share, not the one with 5 % (below
+    the 10 % of WHIRL_DAMPING_SHAFT_SHARE)."""
     # the model's speed and design set the scope's frequency (no design: the onset margin is 0)
     model = NS(design=None, speed=300.0)
     p = NS(stability=_stability(tracked), roots=_roots(every_root), modes_at_speed=_modes(), model=model)
@@ -119,6 +125,21 @@ def test_the_onset_is_the_lowest_unstable_speed_of_both_checks(tracked, every_ro
     assert ("root" in out["onset_location"]["mode"]) == (every_root < tracked)
     assert out["modes_at_operating"] == (ModeDamping("1 (forward, shaft)", 100.0, 0.063),)
     assert out["whirl_scope"] == 300.0
+
+
+def test_an_unstable_root_at_the_required_speed_fails_the_onset_check():
+    """docs/requirements.md: no whirl onset below (1 + min_onset_margin) × Ω_op, and the
+    every-root check's onset lies at or below the lowest speed with an unstable root. Solved
+    stable at rest and at Ω_op = 300 rad/s, unstable at the required 1.15 × 300 = 345 rad/s itself:
+    the onset lies in (300, 345] rad/s, below the requirement (until the twenty-fifth session it
+    was read as 345 rad/s, a margin of exactly 0, and passed)."""
+    model = NS(design=None, speed=300.0)
+    p = NS(stability=_stability(None), roots=_roots(345.0), modes_at_speed=_modes(), model=model)
+    out = gather._whirl(p)
+    assert out["onset_speed"] == 300.0
+    assert "between 2865 and 3295 rpm" in out["onset_location"]["detail"]
+    check = whirl_onset_check(out["onset_speed"], 345.0, 300.0, 0.15, out["onset_location"])
+    assert check.status == "fail" and check.margin == pytest.approx(300.0 - 345.0, rel=1e-12)
 
 
 #: One operating speed, and a speed range to 400 rad/s (its highest speed 4/3 × 300).

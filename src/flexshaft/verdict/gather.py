@@ -234,12 +234,17 @@ def _whirl(p: PointAnalyses) -> dict:
         kind = "divergence (real root)" if worst.kind == "divergence" else "untracked root"
         solved = "" if worst.refined or worst.kind == "divergence" else " (first-order loss estimate)"
         n = sum(r.speed == first for r in roots.unstable)
-        onset = first
+        # the onset lies above the last speed solved stable and at or below `first`: held to the
+        # lower end, so an unstable root at the required speed itself fails (margin < 0)
+        below = roots.speeds[roots.speeds < first]
+        onset = float(below.max()) if below.size else first
+        bracket = f"between {rad_s_to_rpm(onset):.0f} and " if below.size else "at or below "
         location = {
             "mode": kind,
             "frequency": worst.frequency,
-            "detail": f"{n} unstable root(s) of the closed loop at {rad_s_to_rpm(first):.0f} rpm (onset at or below), "
-            f"worst s = {worst.root.real:.4g} {worst.root.imag:+.4g}j 1/s, ζ = {worst.damping_ratio:.3g}{solved}",
+            "detail": f"{n} unstable root(s) of the closed loop at {rad_s_to_rpm(first):.0f} rpm (onset {bracket}"
+            f"{rad_s_to_rpm(first):.0f} rpm), worst s = {worst.root.real:.4g} {worst.root.imag:+.4g}j 1/s, "
+            f"ζ = {worst.damping_ratio:.3g}{solved}",
         }
     if onset is not None:
         out["onset_speed"] = onset
