@@ -1,15 +1,16 @@
 """The spin-up scan of an operating point runs to scan_top × its highest operating speed.
 
-The rule (:meth:`flexshaft.resolution.Resolution.spin_speeds`: API 684 measures a critical
-above the range from the highest operating speed): the scan runs "to ``scan_top`` × the highest
-speed", here 1.3 × 1.1 Ω_op with ``speed_range = [0.9, 1.1]``, not to 1.3 Ω_op (a scan ending
-there would end at the refined critical, 1.36 Ω_op, where the orbit is five times larger).
+The rule (docs/requirements.md: the response is scanned "to 130 % of the highest operating
+speed"; API 684 measures a critical above the range from the highest operating speed): here
+1.3 × 1.1 Ω_op with ``speed_range = [0.9, 1.1]``, not 1.3 Ω_op (the mutant's scan stops at
+1.3 Ω_op = 0.956 ω_n, and the refined peak at ω_n = 1.36 Ω_op becomes its last sample, where the
+orbit is five times larger).
 
 Reference for the response there (derived here; the Jeffcott rotor of tests/rotors.py, Den
 Hartog's rotating-unbalance response): a disk of eccentricity e on a massless shaft with
 external damping ratio ζ whirls at r = Ω/ω_n with the orbit e r²/√((1 − r²)² + (2ζr)²). With
 ζ = 0.01 and Ω_op = ω_n/1.36, the scan's top r = 1.43/1.36 lies just above the resonance
-(amplitude 9.8 e): the disk's orbit there is checked to 1e-3 (the tube's mass, 3.5e-6 of the
+(amplitude 10.27 e): the disk's orbit there is checked to 1e-3 (the tube's mass, 3.5e-6 of the
 disk's, moves ω_n by 2e-6 and the orbit by about ten times that near resonance; measured 1.4e-5).
 """
 
