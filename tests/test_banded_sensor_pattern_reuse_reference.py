@@ -3,8 +3,8 @@
 The Jeffcott rotor of tests/jeffcott_bearing.py (8 elements, its shaft also held axially at
 the far end, so that this mesh is used by no other test) carries its magnetic bearing at the
 disk (x = 0.5), first collocated, then with its sensor 0.25 m outboard (x = 0.75, already a
-node: both models have the same DOFs and stations). On the free DOFs (docstring of
-:mod:`flexshaft.analyses.banded` and of :class:`flexshaft.assembly.model.Actuator`)
+node: both models have the same DOFs and stations). On the free DOFs (docs/magnetic-bearings.md,
+"The element": Z += B_aᵀ G(s) B_s − k_s B_aᵀ B_a with G = k_i A C, here A = 1 and C = k_p + k_d s)
 
     Z(ω, Ω) = K − ω² M + iωΩ G + iω C + k_i (k_p + iω k_d) B_aᵀ B_s − k_s B_aᵀ B_a,
 
@@ -17,8 +17,9 @@ the same mesh but a narrower pattern.
 
 Tolerance 1e-9 relative (2-norm): Z's condition number is about 1e6 at these points (measured
 with numpy.linalg.cond, tube stiffness against the disk's), so both LU solves carry relative
-errors of order 1e-10 at most (measured differences 1e-13); a coupling written on the wrong
-entries changes the response at order one.
+errors of order 1e-10 at most (measured differences 1e-13). The two layouts' responses differ
+by 10 % at ω = 150 rad/s and 2 % at 700 rad/s (measured), and a solver that reused the
+collocated pattern for the sensed bearing was off by 180 % and 10 % there.
 """
 
 from __future__ import annotations
@@ -34,7 +35,9 @@ from flexshaft.design import loads_design
 
 
 def bearing_model(bearing: str):
-    text = jeffcott_text(0.0, 0.0, elements=8).replace('fixed_end = ["v", "w"]', 'fixed_end = ["u", "v", "w"]')
+    text = jeffcott_text(0.0, 0.0, elements=8)
+    assert 'fixed_end = ["v", "w"]' in text  # the axial hold below keeps this mesh unique to this test
+    text = text.replace('fixed_end = ["v", "w"]', 'fixed_end = ["u", "v", "w"]')
     head, tail = text.split("[[bearings]]")
     tail = tail[tail.index("[[disks]]") :]
     return build_model(loads_design(f'{head}[[bearings]]\nname = "b"\nx = 0.5\n{bearing}\n{tail}'))
@@ -68,7 +71,6 @@ def test_a_sensed_bearing_after_a_collocated_one_on_the_same_mesh(omega, speed):
         force, reference = dense_response(model, omega, speed)
         x = BandedHarmonicSolver(model).solve(omega, force, speed)
         assert np.linalg.norm(x - reference) <= 1e-9 * np.linalg.norm(reference)
-    # the sensor's position matters at order one here: the check above separates the layouts
-    assert np.linalg.norm(dense_response(sensed, omega, speed)[1] - dense_response(collocated, omega, speed)[1]) > (
-        0.01 * np.linalg.norm(dense_response(collocated, omega, speed)[1])
-    )
+    # the sensor's position moves the response by 2-10 % here: the check above separates the layouts
+    apart, near = dense_response(sensed, omega, speed)[1], dense_response(collocated, omega, speed)[1]
+    assert np.linalg.norm(apart - near) > 0.01 * np.linalg.norm(near)
