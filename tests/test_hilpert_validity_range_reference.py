@@ -4,7 +4,7 @@ Reference: documented rule, docs/thermal.md ("Hover"): Hilpert with Incropera Ta
 constants is "valid 0.4 ≤ Re ≤ 4×10⁵ and Pr ≥ 0.7"; outside it the last row is extrapolated and
 flagged (``nusselt.in_range = False``). Air's Pr = 0.71 is inside the Pr limit, so the flag
 follows Re alone here: in range for Re from 0.4 through the whole top row 4×10⁴..4×10⁵ (a
-hovering boom: Re_D ~ 1e5), out of range above 4×10⁵ and below 0.4. The Re values are a factor
+cross-flow at Re ~ 1e5), out of range above 4×10⁵ and below 0.4. The Re values are a factor
 ≥ 1.25 from the limits (no tie with a limit; the flag is an exact comparison).
 """
 

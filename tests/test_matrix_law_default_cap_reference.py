@@ -6,8 +6,8 @@ T_ref = 20 °C. A law built with these documented constants and no explicit cap,
 ΔT = +120 K on loss factors 0.3 (η_T) and 0.1 (η_LT), gives by hand:
 
 * η_T: 0.3 e^{2} = 2.217 > 1, so exactly 1 (the cap);
-* η_LT: 0.1 e^{2} = 0.7389 < 1, so 0.1 e^{2} (above 0.5, below the cap: a cap at any value
-  between 0.74 and 1 would show there);
+* η_LT: 0.1 e^{2} = 0.7389 < 1, so 0.1 e^{2} (a cap below 0.739, the mutant's 0.5
+  among them, would show here; any other cap below 2.2 shows in η_T above);
 * E_T, G_LT: × e^{−3}; E_L and η_L unchanged.
 
 Tolerance 1e-14 relative: one exp and one product in double precision.
