@@ -1,9 +1,9 @@
-"""Which unstable roots above the spin are solved with the loss: the most unstable first.
+"""Which unstable roots above the spin are solved with the loss: the least stable first.
 
-Rule (module docstring of :mod:`flexshaft.analyses.root_stability`, step 3): the roots above
-the spin that the loss's first-order shift does not settle are "solved on the upper branch,
-most unstable first, until MAX_SOLVED_UNSTABLE are confirmed unstable (the rest keep their
-first-order value, refined False)". The verdict reads the worst root, so it is the one that
+Rule (module docstring of :mod:`flexshaft.analyses.root_stability`): the roots above the spin
+that the loss's first-order shift does not settle "are solved by Newton's method on the upper
+branch's linear problem, least stable first, until MAX_SOLVED_UNSTABLE are confirmed unstable
+(the rest keep their first-order value, refined False)". The verdict reads the worst root, so it is the one that
 must be solved when the budget is short. The budget is set to one here (monkeypatch) so that
 two roots suffice to tell the order.
 

@@ -9,7 +9,7 @@ term, so nothing couples the two bending planes (isotropic tube, a bearing in v 
 without polar inertia). Each disk root on that side is then a single plane's:
 ``m s² + k(1 + iη) + k_plane = 0`` with k_plane = 0 (w) or k_v (v), and its shape has no
 displacement of the disk in the other plane. (Below the spin the weights (i, 0, 1) add the
-circulatory i η K_lat S, which does couple the planes: a vector of that problem leans
+circulatory K_lat S (= η K′ S, real), which does couple the planes: a vector of that problem leans
 |w|/|v| ~ 0.2 into the other plane at η = 0.05, measured, which is what the assertion tells
 apart.)
 
