@@ -5,8 +5,9 @@
   written next to a transfer-function controller would be dropped without a word (the
   controller is the whole law C(s)), so the damping the user meant to add is missing: refused.
 * **One magnet, stated once** (same table: the magnet geometry, "give all four (then not
-  ``ks``, ``ki``)"). The geometry gives k_i = 4 μ0 N² A_a i_0 cos α / g_0² (∝ 1/g_0²) and
-  k_s ∝ 1/g_0³: without the air gap g_0 neither exists, and a ``ki`` given beside the
+  ``ks``, ``ki``)"). The geometry gives k = ¼ μ0 N² A_a cos α and k_i = 4 k i_0/g_0² =
+  μ0 N² A_a i_0 cos α/g_0² (∝ 1/g_0²), k_s = k_i i_0/g_0 ∝ 1/g_0³ (docs/magnetic-bearings.md,
+  "Magnet physics"): without the air gap g_0 neither exists, and a ``ki`` given beside the
   geometry would be replaced by the geometry's. Both are refused.
 * **A proper law** (same table: ``controller`` "highest power first, proper"): the degree of
   the numerator is the index of its first non-zero coefficient from the top, whatever its
@@ -16,7 +17,9 @@
   first-order Padé model of a controller's delay τ, (1 − sτ/2)/(1 + sτ/2), has a negative
   coefficient; it is accepted and kept as written, and at s = iω its magnitude is 1 and its
   phase −2 atan(ωτ/2) (derived here: the numerator is the conjugate of the denominator).
-  Evaluated by hand with a few operations: relative 1e-14.
+  The law is evaluated by the product's ``Controller`` (flexshaft.assembly.controller), built
+  from ``transfer_function()`` as the model build does, at s = iω: two polyvals of degree 1
+  and a division, relative 1e-14.
 * **Sensor on either side** (docs/limits.md: ``Coordinate`` for ``sensor_offset``, ±1000 m;
   docs/magnetic-bearings.md: "sensor at ``x + sensor_offset``"): δ = −0.04 m puts the sensor
   4 cm ahead of the magnet, at x − 0.04 (one subtraction: 1e-15).
@@ -38,6 +41,7 @@ import math
 import pydantic
 import pytest
 
+from flexshaft.assembly.controller import Controller
 from flexshaft.design.bearings import ActiveBearing
 
 X = 0.5  # magnet station [m]
@@ -84,9 +88,9 @@ def test_a_pade_delay_law_with_a_negative_coefficient_is_kept_as_written():
     bearing = active(controller={"numerator": num, "denominator": den})
     got_num, got_den = bearing.transfer_function()
     assert (tuple(got_num), tuple(got_den)) == (num, den)
+    law = Controller(tuple(map(float, got_num)), tuple(map(float, got_den)))  # as build_model does
     for omega in (100.0, 2.0 * math.pi * 1000.0, 3.0e4):
-        s = 1j * omega
-        value = (got_num[0] * s + got_num[1]) / (got_den[0] * s + got_den[1])
+        value = complex(law(1j * omega))
         assert abs(value) == pytest.approx(1.0, rel=1e-14)
         assert math.atan2(value.imag, value.real) == pytest.approx(-2.0 * math.atan(omega * tau / 2.0), rel=1e-14)
 
