@@ -17,9 +17,12 @@ or derived forms.
   rounding of 1e-17 gives rel 1e-13, so rel 1e-9.
 * **The report's detail runs a whirl solve at each Campbell speed.** The module docstring of
   flexshaft.assembly.size: an assessment is counted "from the grids of its Resolution (spin-up
-  and whirl speeds, the report's Campbell speeds)"; the report's Campbell diagram is a reduced
-  whirl solve at each of its ``campbell_speeds``, whose cost docs/limits.md gives as
-  "1e-2 s + 1.5e-6 s × F" per whirl speed (no controller states here). Two resolutions that
+  and whirl speeds, the report's Campbell speeds)". Derived here: the report's Campbell
+  diagram (flexshaft.analyses.campbell.campbell → track_modes) is a solve on the reduced basis
+  at each of its ``campbell_speeds``, the solve docs/limits.md costs per whirl speed at
+  "1e-2 s + 1.5e-6 s × F" (no controller states here). The structural part, the detail's time
+  linear in campbell_speeds with a positive slope (10, 30, 50: equal increments), rests on
+  that count alone. Two resolutions that
   differ only in campbell_speeds (10 and 30) differ in the detail's time by 20 · (1e-2 + 1.5e-6
   · 48) s, and not at all in the whirl grid. Difference of two sums near 1 s: rel 1e-9.
 
@@ -81,3 +84,6 @@ def test_the_report_detail_costs_one_whirl_solve_per_campbell_speed():
     assert (few.campbell_speeds, many.campbell_speeds) == (10, 30)
     extra = many.time["report detail"] - few.time["report detail"]
     assert extra == pytest.approx(20 * (1e-2 + 1.5e-6 * 48), rel=1e-9)
+    more = _size(JEFFCOTT, "assess", dataclasses.replace(REPORT, campbell_speeds=50))
+    assert more.time["report detail"] - many.time["report detail"] == pytest.approx(extra, rel=1e-9)
+    assert extra > 0

@@ -9,6 +9,12 @@ Jeffcott rotor (tests/validation design ``jeffcott_internal_damping.toml``: shaf
 one damper at 0.5 m, 8 elements) has no bay, so its imbalance force F = e m (per unit Ω²) sits
 at x = 0.5 m.
 
+Physically (derived here): with no bay the rotor's static unbalance e m acts at its mass
+centre, which for this rotor (10 kg disk at 0.5 m on a uniform tube over 0-1 m) is x = 0.5 m
+by symmetry, the shaft's middle too. The two rules agree for this rotor only; the loads
+module's rule (the middle of the whole shaft) is what the test holds, the mass centre what
+makes it the right answer here.
+
 Derived here: a consistent nodal load vector of a point force F in y at x_F has the resultant
 Σ Q_v = F and the moment about z at x = 0, Σ x_i Q_v,i + Σ Q_γ,i = F x_F (the cubic shape
 functions reproduce rigid translation and rotation exactly; the same resultants as
