@@ -12,7 +12,11 @@ exactly (the tanh term is 2e-22 there, far below round-off), where the phase mar
 180° − |arg L| is T(d + s) = 1.265° and T(d − s) = 0.632°. A third gain crossover lies near
 x_h (phase margin about 50°). On the grid x = −1.05, −0.95, …, 1.45 (0.1 apart) the pair lies
 inside [−0.05, 0.05], whose ends both read ln|L| = −0.354: no change of sign, only the refined
-peak of |S| (near x_r + s, where arg L = −180° and |L| > 1) reveals the pair. So the grid's
+peak of |S| reveals the pair. That peak lies at x ≈ 0.00929, 2.0e-4 inside the upper crossover
+d = 0.00949 (near x = d, |1 + L|² ≈ g′²(x − d)² + φ′²(x − s)² with g′ = d ln|L|/dx = −9.58 and
+φ′ = 1.745 rad per unit, so x_p ≈ d − φ′²(d − s)/(g′² + φ′²); a 400 001-point scan agrees):
+inside the pair by far more than the peak's refinement tolerance (1e-6), which is what the
+test rests on. So the grid's
 crossover near x_h is listed before the hidden pair, and the smallest phase margin, 0.632°, is
 read at ω₀ e^d, the pair's upper crossover (the docstring of :class:`LoopMargins`:
 ``phase_margin_frequency`` is "the gain crossover of the smallest phase margin").
