@@ -2,8 +2,10 @@ r"""Monte-Carlo imbalance: random residual unbalance per bay, on the sweep engin
 spin-up; :mod:`flexshaft.montecarlo.runup` the same samples over a run-up).
 
 Each shaft bay b (the span between consecutive bearings) carries a point unbalance
-``U_b = e_b m_b`` [kg m] (m_b the bay's share of the shaft mass, in proportion to its length)
-at angle ψ_b, uniform on [0, 2π), at axial position x_b, mid-bay or uniform along the bay.
+``U_b = e_b m_b`` [kg m] (m_b the bay's rotating mass by ISO 21940-11,
+:func:`flexshaft.assembly.balance.bay_rotating_masses`: its tubes, disks and coupling hubs, the
+overhangs with the end bays; Σ m_b = m, the rotor's rotating mass) at angle ψ_b, uniform on
+[0, 2π), at axial position x_b, mid-bay or uniform along the bay.
 The eccentricity e_b follows an :class:`EccentricityDistribution`, typically scaled by the
 permissible residual specific unbalance of a balance quality grade (ISO 21940-11:2016, §5.3,
 formerly ISO 1940-1): ``e_per Ω = G``, G the grade in mm/s (G 6.3 for most machinery, G 2.5
