@@ -6,7 +6,7 @@ order), meets the line ω = kΩ where ω₀ + aΩ = kΩ, at Ω* = ω₀/(k − a
 samples the distance g(Ω) = Im s − kΩ is linear in Ω, so the linear interpolation of
 :func:`~flexshaft.analyses.campbell.critical_speeds` is exact and the crossing is Ω* to
 round-off; the excitation order it reports is k itself (half-order and 1.5-order lines are the
-sub-synchronous rub and gearbox-sideband excitations a designer draws on a Campbell diagram).
+sub-synchronous ½× and 3/2× rub orders a designer draws on a Campbell diagram).
 """
 
 from __future__ import annotations
