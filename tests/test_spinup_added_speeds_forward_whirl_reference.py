@@ -4,7 +4,8 @@ on a Jeffcott rotor whose rotating loss tells forward from backward whirl (deriv
 The Jeffcott rotor of tests/rotors.py (a 20 kg disk at the middle of a near-massless
 pinned-pinned tube, k = 48EI/L³) with a shaft loss factor η = 0.1 acting in the rotating frame
 (``internal_damping = "rotating"``) and an external dashpot c_e = 2ζ√(km), ζ = 0.02, at the
-disk. The design's imbalance, eccentricity e = 1e-5 m, one bay ("mid_bay"), is the force
+disk. The design's imbalance, eccentricity e = 1e-5 m, the whole shaft as its one bay (a lone
+damper makes no bearing span; "mid_bay"), is the force
 e M Ω² at the disk (M the rotating mass: the disk and the tube, 0.1 kg/m³ × π(D_o² − D_i²)/4 × L)
 turning with the shaft (docs: ``Q_v = F, Q_w = −iF``). In complex coordinates r = v + iw the
 forward synchronous whirl does not cycle the material (it turns at ω − Ω = 0 in the rotating
@@ -43,7 +44,8 @@ M_ROTATING = M_DISK + 0.1 * np.pi * (DO**2 - DI**2) / 4 * L
 def test_added_speed_sees_the_forward_imbalance():
     text = jeffcott_text(ETA, C_E).replace("speed_rpm = 0.0", f"speed_rpm = {1.5 * WN * 30 / np.pi}")
     model = build_model(loads_design(f'{text}[loads]\neccentricity = {ECC}\nimbalance_placement = "mid_bay"\n'))
-    scan = spinup_response(model, np.linspace(0.2, 1.2, 11) * model.speed)
+    scan = spinup_response(model, np.linspace(0.2, 1.2, 41) * model.speed)
+    assert scan.basis is not None  # a projected scan (41 speeds: 0.995 ω_n between 0.975 and 1.0125 ω_n)
     speed = 0.995 * WN
     assert not np.isin(speed, scan.speeds)
     added = with_speeds(model, scan, [speed])
