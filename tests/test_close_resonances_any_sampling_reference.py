@@ -18,11 +18,11 @@ m e Ω² (cos Ωt, sin Ωt) their complex amplitudes are
 and the orbit's major semi-axis is √((|a|² + |b|² + |a² + b²|)/2) (the largest over θ of
 |Re(a e^{iθ})|² + |Re(b e^{iθ})|²). With s = 0.004, ζ_v = ζ_w = 0.002 the half-power bands
 (2ζ ω_n = 0.004 ω_n wide) touch: the orbit has two local maxima, 1.000281 and 1.003725 ω_n,
-the upper 0.08 % taller, with a dip of 10 % between them. The references are those maxima,
+the upper 0.08 % taller, with a dip of 8 % between them. The references are those maxima,
 bracketed on a grid of the formula and located by a bounded scalar search on the formula
 itself (no flexshaft code).
 
-Before the fix (hunt f58), the 21-point scan (spacing 0.06 ω_n) found only the upper maximum:
+Before the fix (hunt f58), the 21-point scan (spacing 0.077 ω_n) found only the upper maximum:
 the w root's window Re Ω + |Im Ω| (0, ±0.5, ±1, ±2) reaches the v peak at its +2 edge, whose
 orbit is the window's largest, and the seed was dropped as having "no maximum of its own"
 although the window's samples rise to a maximum at Re Ω and fall after it. Likewise s = 0.002
@@ -31,11 +31,11 @@ with ζ = 0.001 (21 and 41 points), and ζ_v = 1e-4, ζ_w = 2e-3 with s = 0.004 
 Tolerance: a 20th of the resonance's own half-power bandwidth 2ζω_n, the refinement's stated
 resolution (docs/requirements.md step 3: sample intervals at most 1/20 of the bandwidth, the
 vertex of a parabola through 1/A²). Measured: at most 0.017 of it for the equal dampings and
-0.09 for the sharp v peak at ζ_v = 1e-4 (tolerance 3e-3 rad/s; the tube's mass, 7e-6 of the
-disk's, moves the model's resonance off the closed form's by about 1e-3 rad/s), the same at
+0.09 for the sharp v peak at ζ_v = 1e-4 (tolerance 3e-3 rad/s; the tube's mass, 3.5e-6 of the
+disk's, moves the model's resonance off the closed form's by about 2.6e-4 rad/s), the same at
 every scan size, so the margin does not rest on round-off. Exactly two criticals are reported in the
 band (no duplicate of a peak found by both the scan and a seed). CPU: one scan of 21-61 banded
-solves of a 4-element model and a few refinements, about 0.1-0.3 s per case.
+solves of an 8-element model and a few refinements, about 0.1-0.3 s per case.
 """
 
 from __future__ import annotations
@@ -78,7 +78,7 @@ def _closed_form_maxima(separation: float, zeta_v: float, zeta_w: float) -> np.n
         b = -1j * force / (K_SHAFT - M_DISK * speed**2 + 1j * c_w * speed)
         return np.sqrt((abs(a) ** 2 + abs(b) ** 2 + abs(a * a + b * b)) / 2)
 
-    grid = np.linspace(0.99 * WN, 1.01 * WN, 20001)  # 3e-4 rad/s apart, 1/20 of the v band at ζ_v = 1e-4
+    grid = np.linspace(0.99 * WN, 1.01 * WN, 20001)  # 3e-4 rad/s apart, 1/200 of the v band at ζ_v = 1e-4
     level = orbit(grid)
     bracketed = np.flatnonzero((level[1:-1] > level[:-2]) & (level[1:-1] > level[2:])) + 1
     maxima = [
