@@ -1,8 +1,9 @@
 """A root is seeded only where the projected orbit has a maximum of its own (hunt h45a).
 
 :func:`flexshaft.analyses.criticals._hidden_resonances` samples the projected orbit at
-Re Ω_k + |Im Ω_k| (0, ±0.5, ±1, ±2) and seeds the root only when the largest sample is interior
-("no maximum of its own there" otherwise): a root the imbalance does not excite shows only the
+Re Ω_k + |Im Ω_k| (0, ±0.5, ±1, ±2) and seeds the root only when some interior sample is above
+both its neighbours (a taller neighbour may set the window's edge; "no maximum of its own there"
+otherwise): a root the imbalance does not excite shows only the
 flank of a neighbour's resonance.
 
 Reference (closed form): the damped Jeffcott rotor of tests/test_hidden_seed_half_width_reference.py
@@ -10,9 +11,9 @@ Reference (closed form): the damped Jeffcott rotor of tests/test_hidden_seed_hal
 single-degree-of-freedom k − mΩ² + icΩ, whose orbit |q| = u Ω² / |k − mΩ² + icΩ| rises
 monotonically up to its peak Ω_p = ω_n/√(1 − 2ζ²) and falls beyond (its derivative's sign is
 that of Ω_p − Ω). A root placed (by substituting the root finder) 3 half-widths ζω_n below the
-resonance samples Ω ∈ ω_n + ζω_n (−5 … −1), all below Ω_p: the orbit's largest sample is the
-grid's right end, no maximum of its own, not seeded; the mirror root 3 half-widths above has
-its largest sample at the left end, not seeded either. The true root (the control) is seeded.
+resonance samples Ω ∈ ω_n + ζω_n (−5 … −1), all below Ω_p: the samples rise monotonically to the
+grid's right end, no interior maximum of its own, not seeded; the mirror root 3 half-widths above
+falls monotonically from the left end, not seeded either. The true root (the control) is seeded.
 The samples differ by ≥ 8 % between neighbours (|q| ∝ 1/|Ω − Ω̃| near resonance), so the
 comparisons are far from round-off. CPU: a few 3-column projections, milliseconds.
 """

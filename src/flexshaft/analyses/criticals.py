@@ -256,7 +256,8 @@ def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | 
     reduced basis, else on its responses) that no peak ``found`` holds (none within its
     half-power band Re Ω_k ± |Im Ω_k|), whose band is narrower than :data:`_SHOWN_SAMPLES`
     scan intervals, and around which the projected model's orbit (the largest over the shaft's
-    nodes and the load cases, at Re Ω_k ± (0.5, 1, 2) |Im Ω_k|) has a maximum of its own. That
+    nodes and the load cases, at Re Ω_k ± (0.5, 1, 2) |Im Ω_k|) has a maximum of its own (a
+    sample above its neighbours, though a taller neighbour may set the window's edge). That
     is a peak narrower than the samples' spacing (it falls between two of them), or one whose
     broader neighbour swamps it on the samples (two bumps sampled as one); a root the imbalance
     does not excite shows no such maximum. A peak found but left unresolved whose nearest root
@@ -307,9 +308,15 @@ def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | 
         except np.linalg.LinAlgError:
             continue
         level = orbit.max(axis=(0, 1))
-        k = int(np.argmax(level))
-        if not np.all(np.isfinite(level)) or k in (0, grid.size - 1):  # no maximum of its own there
+        if not np.all(np.isfinite(level)):
             continue
+        # its own maximum: the largest sample above its neighbours, even where a taller resonance
+        # nearby sets the window's edge (that one has its root; docs/requirements.md: each local
+        # maximum of the envelope is a critical speed)
+        own = np.flatnonzero((level[1:-1] > level[:-2]) & (level[1:-1] >= level[2:])) + 1
+        if own.size == 0:  # no maximum of its own there
+            continue
+        k = int(own[np.argmax(level[own])])
         node, case = np.unravel_index(int(np.argmax(orbit[:, :, k])), orbit.shape[:2])
         out.append(_Seed(float(grid[k]), width, int(node), int(case), replaces))
     return out
