@@ -1,6 +1,7 @@
 """Where the evidence of a point reads its numbers: each active bearing's own orbit, each metal
-segment's own safety factors, the refined peak of a resonance between the spin-up's samples, and
-the point's operating speed (not the top of its range) for the whirl-onset requirement.
+segment's own safety factors, the refined peak of an undamped resonance between the spin-up's
+samples, and the point's operating speed (not the top of its range) for the whirl-onset
+requirement.
 
 References (documented rules of docs/requirements.md, hand computations derived here):
 
@@ -134,13 +135,21 @@ def _point(criticals: tuple) -> NS:
     )
 
 
-def test_a_refined_resonance_peak_between_the_samples_governs_the_spinup_orbit(monkeypatch):
-    """A critical at 3000 rpm, between the samples 2500 and 3500 rpm, whose refined peak orbit
-    is 5 mm at station 1.2 m: the spin-up deflection is 5 mm there, not the sampled 3 mm (nor the
-    9 mm at 6000 rpm, above the highest operating speed 5040 rpm); against a 4 mm limit it fails
-    by 1 mm (the samples alone would pass it)."""
+def test_an_undamped_resonance_peak_between_the_samples_governs_the_spinup_orbit(monkeypatch):
+    """An undamped critical (AF = ∞) at 3000 rpm, between the samples 2500 and 3500 rpm, whose
+    refined peak orbit is 5 mm at station 1.2 m: the spin-up deflection is 5 mm there, not the
+    sampled 3 mm (nor the 9 mm at 6000 rpm, above the highest operating speed 5040 rpm); against
+    a 4 mm limit it fails by 1 mm (the samples alone would pass it).
+
+    Undamped, as the only case the product leaves between the samples: the point's spin-up adds
+    the speed of each critical with a finite amplification factor to its scan (``with_speeds`` in
+    ``point_tasks._spinup``), so a damped peak is a sample itself; an undamped one (AF = ∞) is
+    skipped there and reaches the verdict only through its refined peak orbit. Its fields are the
+    ones ``criticals._refine`` writes for a peak on an undamped mode."""
     monkeypatch.setattr(gather, "_whirl", lambda p: {})  # no stability result: the onset is not judged here
-    critical = LateralCritical(3000.0 * RPM, 5.0, {"station": 1.2, "peak_orbit": 5.0e-3})
+    undamped = "undamped resonance: the mode at the peak has no damping, the response is unbounded"
+    location = {"station": 1.2, "af_method": "two-sided", "peak_orbit": 5.0e-3, "detail": undamped}
+    critical = LateralCritical(3000.0 * RPM, float("inf"), location)
     evidence = gather.gather_evidence(_point((critical,)))
     assert evidence.spinup_peak == 5.0e-3
     assert evidence.spinup_location["station"] == 1.2
