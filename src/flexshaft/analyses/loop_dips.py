@@ -38,10 +38,14 @@ searched, none crossing: 339 solves on the projected route the assessment takes,
 2420 (2081 without the searches), 678 of 8649 with every solve full; on the tuned design's, 2
 searches, each finding a pair, 20 of 1497 (counted by an independent review). The gain searches
 (counted when they were added, bearing_loops' banded solves at the three envelope points)
-add 2 to 4 searches and 4 to 8 solves on the tuned design's loops (0.3 % of 1351 to 1682); on
-the baseline's, 36 to 41 searches finding 20 to 32 pairs of gain crossovers that were missed
-before (none setting its phase margin; at the cold point a 20 000-point grid finds them too),
-437 to 664 solves (18 to 28 % over 2364 to 2404). Its limits,
+add at most a few searches and 4 to 8 solves on the tuned design's loops (0.3 % of 1351 to
+1682); on the baseline's, tens of searches a point finding 15 to 32 pairs of gain crossovers that
+were missed before (the count depends on the call: 17 to 22 searches and 15 to 19 pairs a point
+by an independent review's count of the second round's gain tasks; 54 searches and 39 pairs in
+all through ``assess(baseline, SCREENING)``; none setting its phase margin; at the cold point a
+20 000-point grid finds them too, and 7 to 10 more pairs a loop beside close mode pairs, none
+setting the phase margin either), 437 to 664 solves (18 to 28 % over 2364 to 2404; bearing_loops
+12 to 17 % more CPU on the baseline). Its limits,
 measured by that review against a 200 001-point scan on random single-mode loops (200 a family,
 on the coarse 200-point grid with loop_grid's three samples at each closed-loop pole): a dip
 beyond the band (clean circles: none of 200 after the band gained its extra interval each side;
