@@ -1,7 +1,17 @@
-r"""Pairs of phase crossovers a loop's grid hides near a lightly damped peak: a dip of Im L
-across the negative real axis between two grid points whose Im L agree in sign, found without
-evaluating the loop where it cannot be (:func:`dip_searches`, used by
-:func:`flexshaft.analyses.loop_margins.hidden_crossovers`).
+r"""Pairs of phase or gain crossovers a loop's grid hides near a lightly damped peak: a dip of
+Im L across the negative real axis between two grid points whose Im L agree in sign, or a bump
+of |L| across 1 between two whose ln|L| do, found without evaluating the loop where it cannot
+be (:func:`dip_searches`, used by :func:`flexshaft.analyses.loop_margins.hidden_crossovers`).
+
+Gain crossovers are searched as dips too, of u = i(S − 1/2) = i(1/(1 + L) − 1/2)
+(:func:`gain_image`): |L| = 1 is |1 − S| = |S|, Re S = 1/2, so Im u changes sign exactly where
+|L| crosses 1 (Im u > 0 where |L| < 1); u is a Möbius map of L, so a lightly damped mode's u
+traces a circle, the image of ln ω under a Möbius map, as its L does, and the same tests and
+search apply (without the test of Re L, which only phase crossovers need). It finds the pair of
+tests/test_loop_hidden_gain_pair_reference.py: a delayed integrator and a mode whose |L| exceeds
+1 only over 99.92-100.08 Hz, one grid interval, while the |S| peak lies at 100.155 Hz where
+|L| = 0.958 (so the split at the peak shows no change of sign): the grid read a phase margin of
+27.8° at 78 Hz, the search finds the pair's 6.0° at 100.08 Hz.
 
 A resonance circle whose centre lies above the negative real axis and whose radius only just
 reaches below it has its point nearest −1 above the axis, and its dip below the axis may be
@@ -26,7 +36,16 @@ splits the part at the first point across the axis and refines both crossings. O
 design's loops at its envelope points (tests/test_bearing_loops_accuracy.py) 392 parts are
 searched, none crossing: 339 solves on the projected route the assessment takes, 14 % of its
 2420 (2081 without the searches), 678 of 8649 with every solve full; on the tuned design's, 2
-searches, each finding a pair, 20 of 1497 (counted by an independent review). Its limits,
+searches, each finding a pair, 20 of 1497 (counted by an independent review). The gain searches
+(counted when they were added, bearing_loops' banded solves at the three envelope points)
+add at most a few searches and 4 to 8 solves on the tuned design's loops (0.3 % of 1351 to
+1682); on the baseline's, tens of searches a point finding 15 to 32 pairs of gain crossovers that
+were missed before (the count depends on the call: 17 to 22 searches and 15 to 19 pairs a point
+by an independent review's count of the second round's gain tasks; 54 searches and 39 pairs in
+all through ``assess(baseline, SCREENING)``; none setting its phase margin; at the cold point a
+20 000-point grid finds them too, and 7 to 10 more pairs a loop beside close mode pairs, none
+setting the phase margin either), 437 to 664 solves (18 to 28 % over 2364 to 2404; bearing_loops
+12 to 17 % more CPU on the baseline). Its limits,
 measured by that review against a 200 001-point scan on random single-mode loops (200 a family,
 on the coarse 200-point grid with loop_grid's three samples at each closed-loop pole): a dip
 beyond the band (clean circles: none of 200 after the band gained its extra interval each side;
@@ -35,19 +54,29 @@ error hides, the maps fitted to L at points up to a grid interval apart, where a
 background or a second mode moves them (two modes within 10 % of each other, both poles sampled:
 2 to 4 of 200); with one sample a pole (as on a screening grid) more escape (11 of 200 on a
 background slope, 16 to 22 with two modes), the peak's refinement then sometimes ending below
-the grid's top; and a pair of gain crossovers (|L| = 1) that the refined peak does not reveal.
+the grid's top. The gain searches share these limits (measured only on the test loop above and
+the embedded designs' loops, not on random loops).
 """
 
 from __future__ import annotations
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from flexshaft.analyses.local_projection import GOLDEN, Refinement, RefinementTask, illinois_root
 
-__all__ = ["DIP_CONFIRM", "DIP_FOURTH_SAFETY", "DIP_SLACK", "DIP_WIDTHS", "dip_crossovers", "dip_searches", "may_dip"]
+__all__ = [
+    "DIP_CONFIRM",
+    "DIP_FOURTH_SAFETY",
+    "DIP_SLACK",
+    "DIP_WIDTHS",
+    "dip_crossovers",
+    "dip_searches",
+    "gain_image",
+    "may_dip",
+]
 
 #: How near the real axis, and Re L = 0, the circle through L at a part's ends and beside them
 #: must come, in its radius, for a dip across the axis to be searched (:func:`may_dip`).
@@ -70,7 +99,26 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
     within :data:`DIP_WIDTHS` half widths of a peak (:func:`_half_width`) and one more each
     side where Im L keeps its sign, the circle through L at the part's ends and its neighbour
     toward the peak may dip (:func:`may_dip`) and the Möbius map through them, checked at the
-    grid point on the other side, does not clear the axis (:func:`_clear_of_axis`)."""
+    grid point on the other side, does not clear the axis (:func:`_clear_of_axis`); and the
+    same searches for a pair of gain crossovers (|L| = 1, task role ``"gain"``) on
+    u = i(S − 1/2) (:func:`gain_image`, module docstring), without the test of Re L."""
+    tasks = _searches(w, L, peaks, at_peaks, "phase")
+    return tasks + _searches(w, L, peaks, at_peaks, "gain")
+
+
+def gain_image(L: np.ndarray) -> np.ndarray:
+    """u = i(S − 1/2), S = 1/(1 + L): Im u = Re S − 1/2 is zero where |L| = 1 (|1 − S| = |S|),
+    positive where |L| < 1, and u is a Möbius map of L (module docstring)."""
+    with np.errstate(all="ignore"):
+        return 1j * (1.0 / (1.0 + np.asarray(L, dtype=complex)) - 0.5)
+
+
+def _searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray, role: str) -> list[RefinementTask]:
+    """:func:`dip_searches` for the crossings of Im V = 0 of V = L (``role`` ``"phase"``) or
+    V = :func:`gain_image` of L (``"gain"``)."""
+    phase = role == "phase"
+    V = L if phase else gain_image(L)
+    V_at_peaks = at_peaks if phase else gain_image(at_peaks)
     near = np.zeros(w.size, dtype=bool)
     for p, lp in zip(peaks, at_peaks):
         band = DIP_WIDTHS * _half_width(w, L, float(p), complex(lp))
@@ -82,8 +130,10 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
     for run in runs:
         if run.size == 0:
             continue
-        points = [(float(w[n]), complex(L[n])) for n in run]
-        points += [(float(p), complex(v)) for p, v in zip(peaks, at_peaks) if w[run[0]] < p < w[run[-1]] and p not in w]
+        points = [(float(w[n]), complex(V[n])) for n in run]
+        points += [
+            (float(p), complex(v)) for p, v in zip(peaks, V_at_peaks) if w[run[0]] < p < w[run[-1]] and p not in w
+        ]
         points.sort(key=lambda point: point[0])
         if len(points) < 3:
             continue  # no third point to fit a circle through
@@ -93,19 +143,36 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
             toward = k == 0 or (k + 2 < len(points) and bool(np.any((b <= peaks) & (peaks <= points[-1][0]))))
             third = points[k + 2][1] if toward else points[k - 1][1]  # the neighbour toward a peak
             c = points[k + 2][0] if toward else points[k - 1][0]
-            if may_dip(la, lb, third):
+            if may_dip(la, lb, third, phase):
                 fit = [(float(np.log(a)), la), (float(np.log(b)), lb), (float(np.log(c)), third)]
                 fourth = k - 1 if toward else k + 2  # the neighbour on the other side
                 n = run[0] - 1 if fourth < 0 else run[-1] + 1  # beyond the run: the grid's
                 extra = points[fourth] if 0 <= fourth < len(points) else None
                 if extra is None and 0 <= n < w.size:
-                    extra = (float(w[n]), complex(L[n]))
+                    extra = (float(w[n]), complex(V[n]))
                 if extra is not None and _clear_of_axis(fit, extra):
                     continue
                 j = int(np.searchsorted(w, a, side="right")) - 1
                 dip = functools.partial(dip_crossovers, a, b, la, lb, c, third)
-                tasks.append(RefinementTask("dip", j, j + 1, dip, "phase"))
+                if not phase:
+                    dip = functools.partial(_on_gain_image, dip)
+                tasks.append(RefinementTask("dip", j, j + 1, dip, role))
     return tasks
+
+
+def _on_gain_image(search: Callable[[], Refinement]) -> Refinement:
+    """A :func:`dip_crossovers` ``search`` on u = :func:`gain_image` of L: each L the caller
+    sends is mapped to u, and the crossings found are returned with L (as evaluated)."""
+    steps = search()
+    seen: dict[float, complex] = {}
+    try:
+        x = next(steps)
+        while True:
+            value = yield x
+            seen[x] = complex(value)
+            x = steps.send(complex(gain_image(np.asarray(value))))
+    except StopIteration as stop:
+        return [(x, seen[x]) for x, _ in stop.value]
 
 
 def _half_width(w: np.ndarray, L: np.ndarray, p: float, lp: complex) -> float:
@@ -141,13 +208,14 @@ def _clear_of_axis(fit: Sequence[tuple[float, complex]], fourth: tuple[float, co
     return predicted is not None and bool(side * predicted[1].imag > DIP_FOURTH_SAFETY * error)
 
 
-def may_dip(la: complex, lb: complex, third: complex) -> bool:
+def may_dip(la: complex, lb: complex, third: complex, phase: bool = True) -> bool:
     """Whether L can cross the negative real axis twice between two frequencies where it is
     ``la`` and ``lb`` (Im L of one sign), by the circle a lightly damped mode's L traces through
     them and L at a third frequency beside them (``third``, outside the part): its arc from
     ``la`` to ``lb`` (the one without ``third``) must hold the circle's extreme point toward the
     other sign, within :data:`DIP_SLACK` of its radius of the axis, and its leftmost crossing of
-    the axis (or that extreme point) within as much of Re L = 0 (module docstring)."""
+    the axis (or that extreme point) within as much of Re L = 0 (module docstring); without
+    that last test when not ``phase`` (the values are then :func:`gain_image`'s)."""
     circle = _circle(la, lb, third)
     if circle is None:
         return False  # on one line: Im L between la and lb is monotonic
@@ -156,7 +224,7 @@ def may_dip(la: complex, lb: complex, third: complex) -> bool:
     if side * centre.imag - radius > DIP_SLACK * radius:
         return False  # the circle stays on the side of the ends
     leftmost = centre.real - np.sqrt(max(radius**2 - centre.imag**2, 0.0))
-    if leftmost > DIP_SLACK * radius:
+    if phase and leftmost > DIP_SLACK * radius:
         return False  # it would cross the real axis at Re L > 0 only: no phase crossover
     turn = functools.partial(_turn, centre)
     extreme = centre - 1j * side * radius

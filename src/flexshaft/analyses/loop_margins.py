@@ -31,16 +31,21 @@ two grid points, which then show no change of sign: the baseline's phase margin 
 point read 1.34° at 788 Hz on the 200-point grid where a 3000-point grid finds 0.294° at
 451 Hz, its lower gain margin −25.4 dB where it is −26.4 dB. Each refined peak is therefore
 evaluated (L at its frequency ω_p) and where it splits a grid interval whose ends agree in sign
-into two that do not, both halves are refined too (:func:`hidden_crossovers`): the crossings
-closest to the peak, where L nears −1, are the ones that set the margins. That finds a pair of
-phase crossovers only when L at the peak lies on the other side of the real axis than at the
-interval's ends. A resonance circle whose centre lies above the negative real axis and whose
-radius only just reaches below it has its point nearest −1 above the axis, and its dip below
-the axis may be narrower than the grid around the peak (a test loop of a 6.35 dB upper margin,
-its Im L below zero over a fraction of the peak's half width, read no crossover even with the
-pole samples of :mod:`flexshaft.analyses.loop_grid`). So near each refined peak every part of
+into two that do not, both halves are refined too (:func:`hidden_crossovers`). That finds a
+pair only when L at the peak lies on the other side (of the real axis, or of |L| = 1) than at
+the interval's ends, and the peak of |S| (L nearest −1) need not lie inside the pair: in
+tests/test_loop_hidden_gain_pair_reference.py |L| exceeds 1 only over 99.92-100.08 Hz, and
+the |S| peak at 100.155 Hz has |L| = 0.958 (splitting there shows no change of sign; the grid
+read a phase margin of 27.8° at 78 Hz where the pair's is 6.0° at 100.08 Hz). A resonance
+circle whose centre lies above the negative real axis and whose radius only just reaches below
+it has its point nearest −1 above the axis, and its dip below the axis may be narrower than the
+grid around the peak (a test loop of a 6.35 dB upper margin, its Im L below zero over a
+fraction of the peak's half width, read no crossover even with the pole samples of
+:mod:`flexshaft.analyses.loop_grid`). So near each refined peak every part of
 the grid whose ends agree in the sign of Im L is tested for such a dip, and searched where one
-may be (:mod:`flexshaft.analyses.loop_dips`, which states what can still escape). The tuned
+may be; likewise for a pair of gain crossovers, every part whose ends agree in the sign of
+ln|L|, on the Möbius image u = i(S − 1/2) of L, whose Im u = Re S − 1/2 changes sign where
+|L| crosses 1 (:mod:`flexshaft.analyses.loop_dips`, which states what can still escape). The tuned
 driveline's loops agree with a 5000-point grid refined everywhere
 (tests/test_loop_robustness.py).
 
@@ -203,8 +208,8 @@ def hidden_crossovers(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks:
     refined (two grid maxima beside one sharp peak refine to the same top: the part between the
     two splits has no change of sign, so each crossover is refined once); near each peak, a
     search for a dip of Im L across the negative real axis where the circle test allows one
-    (task kind ``"dip"``, role ``"phase"``:
-    :func:`~flexshaft.analyses.loop_dips.dip_searches`)."""
+    (task kind ``"dip"``, role ``"phase"``), and for a pair of gain crossovers (role
+    ``"gain"``: :func:`~flexshaft.analyses.loop_dips.dip_searches`)."""
     tasks: list[RefinementTask] = []
     peaks = np.asarray(peaks, dtype=float)
     at_peaks = np.asarray(at_peaks, dtype=complex)
@@ -388,7 +393,7 @@ class MarginPlan:
     (:func:`hidden_crossovers`); :meth:`__call__` makes the margins of both rounds. A second-round
     task is known by its role and grid interval: a crossover left unrefined has a change of sign
     there, a hidden one has none; a dip's search (kind ``"dip"``) gives a pair of hidden phase
-    crossovers or none. Without a second round (``second`` empty) the margins are
+    or gain crossovers (its role) or none. Without a second round (``second`` empty) the margins are
     those of the first round."""
 
     n_peaks: int
@@ -443,8 +448,8 @@ class MarginPlan:
         unrefined.update({("gain", k): i for i, (k, *_) in enumerate(self.gain) if i not in gain})
         extra = []
         for task, result in second:
-            if task.kind == "dip":  # a pair of hidden phase crossovers, or none
-                extra += [("phase", crossing) for crossing in result]
+            if task.kind == "dip":  # a pair of hidden phase or gain crossovers, or none
+                extra += [(task.role, crossing) for crossing in result]
                 continue
             i = unrefined.get((task.role, task.lo))
             if i is None:  # a hidden crossover: no change of sign across its grid interval
