@@ -100,6 +100,22 @@ def test_the_default_search_reaches_the_half_wavelength_of_the_wall_thickness():
     assert result.n_negative == n_lowest[1]
 
 
+def test_a_sense_still_falling_at_n_max_keeps_its_lowest_solved_torque():
+    """The same wall with n_max = 13: the negative sense still falls at n = 13 (no first minimum
+    up to n_max) and its Ritz torque there lies below its crimping limit (470.4 against 479.6 N m,
+    measured), so the critical torque is that lowest solved value (the rule: the lowest over
+    every n up to n_max), not the crimping limit. Brute force over n = 2..13 (tolerance as
+    above)."""
+    thickness, n_max = 6e-3, 13
+    wall = Laminate.from_layup("(70)s", thickness, LAMINA)
+    lowest, n_lowest = brute_force(wall, 0.05, n_max)
+    crimping = crimping_by_hand(70.0, thickness)
+    assert n_lowest[1] == n_max and lowest[1] < crimping[1]
+    result = torsional_buckling_torque(wall, RADIUS, 0.05, n_terms=M, n_max=n_max)
+    assert result.torque_negative == pytest.approx(lowest[1], rel=1e-7)
+    assert result.n_negative == n_max
+
+
 def test_an_endless_path_short_wave_of_one_sense_is_solved():
     """A 60 m tube of 85-deg plies holds more than 100 axial half-waves at every n, so each n's
     value is the endless-tube helix torque (documented rule; the helix curve itself is checked
