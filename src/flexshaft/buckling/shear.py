@@ -308,6 +308,12 @@ def shear_buckling(
         best[sense] = (
             (T_global, n_global, "global") if T_global <= crimping[sense] else (crimping[sense], None, "crimp")
         )
+        # n above this sense's first minimum already solved while the other sense still fell (or,
+        # for a sense still falling at n_max, every n solved): short-wave candidates too (the
+        # loop below starts after them)
+        for n in range(2 if n_global is None else n_global + 1, last + 1):
+            if curve[n][sense] < best[sense][0]:
+                best[sense] = (curve[n][sense], n, "short")
 
     # 2. short-wave branch: n above the global branch whose infinite-tube lower bound is lower
     for n in range(last + 1, n_max + 1):
