@@ -102,8 +102,8 @@ def dip_searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.n
     grid point on the other side, does not clear the axis (:func:`_clear_of_axis`); and the
     same searches for a pair of gain crossovers (|L| = 1, task role ``"gain"``) on
     u = i(S − 1/2) (:func:`gain_image`, module docstring), without the test of Re L."""
-    tasks = _searches(w, L, peaks, at_peaks, "phase")
-    return tasks + _searches(w, L, peaks, at_peaks, "gain")
+    near = _near_peaks(w, L, peaks, at_peaks)
+    return _searches(w, L, peaks, at_peaks, near, "phase") + _searches(w, L, peaks, at_peaks, near, "gain")
 
 
 def gain_image(L: np.ndarray) -> np.ndarray:
@@ -113,18 +113,26 @@ def gain_image(L: np.ndarray) -> np.ndarray:
         return 1j * (1.0 / (1.0 + np.asarray(L, dtype=complex)) - 0.5)
 
 
-def _searches(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray, role: str) -> list[RefinementTask]:
-    """:func:`dip_searches` for the crossings of Im V = 0 of V = L (``role`` ``"phase"``) or
-    V = :func:`gain_image` of L (``"gain"``)."""
-    phase = role == "phase"
-    V = L if phase else gain_image(L)
-    V_at_peaks = at_peaks if phase else gain_image(at_peaks)
+def _near_peaks(w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray) -> np.ndarray:
+    """The grid points within :data:`DIP_WIDTHS` half widths of a peak and one interval more
+    each side (a mask of ``w``): where :func:`dip_searches` looks, for either role."""
     near = np.zeros(w.size, dtype=bool)
     for p, lp in zip(peaks, at_peaks):
         band = DIP_WIDTHS * _half_width(w, L, float(p), complex(lp))
         low = int(np.searchsorted(w, p - band, side="right")) - 1  # a grid point beyond the band
         high = int(np.searchsorted(w, p + band))
         near[max(low - 1, 0) : high + 2] = True  # and one interval more each side
+    return near
+
+
+def _searches(
+    w: np.ndarray, L: np.ndarray, peaks: np.ndarray, at_peaks: np.ndarray, near: np.ndarray, role: str
+) -> list[RefinementTask]:
+    """:func:`dip_searches` for the crossings of Im V = 0 of V = L (``role`` ``"phase"``) or
+    V = :func:`gain_image` of L (``"gain"``), on the grid points ``near`` the peaks."""
+    phase = role == "phase"
+    V = L if phase else gain_image(L)
+    V_at_peaks = at_peaks if phase else gain_image(at_peaks)
     tasks: list[RefinementTask] = []
     runs = np.split(np.flatnonzero(near), np.flatnonzero(np.diff(np.flatnonzero(near)) > 1) + 1)
     for run in runs:
