@@ -7,7 +7,8 @@ design, and the orbit of every shaft node (the last one included) in the worst-c
   float copied, no arithmetic); a contact bearing has no gap (None).
 * **Worst-case orbit over all nodes.** tests/jeffcott_bearing.py's rotor (4 elements, 5 shaft
   nodes from x = 0 to 1 m). Two load cases: case 0 a forward circle of radius 10 µm at the disk
-  node only, case 1 a forward circle of radius 30 µm at the LAST shaft node (the free end) only.
+  node only, case 1 a forward circle of radius 30 µm at the LAST shaft node (x = 1 m; the responses are
+  synthetic, so the rotor's pin there does not matter to the scan) only.
   A forward circle v = r, w = −ir has major semi-axis r (√((|a|² + |b|² + |a² + b²|)/2) with
   a² + b² = 0), so the orbit table has one row per shaft node, 30 µm at the last node in case 1,
   and the worst case is 1. Sums of two squares of exact inputs: 1e-12 relative asserted
