@@ -29,49 +29,26 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from boomed_rotor import shaft_and_boom
 
 from flexshaft.analyses.response import static_response
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import point_load
 from flexshaft.design import loads_design
 
-BOOMED = """
+BOOMED = f"""
 name = "shaft on a tapered boom"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = 80e9
-density = 7800.0
-[materials.al]
-kind = "isotropic"
-E = 70e9
-G = 26e9
-density = 2700.0
-[shaft]
-x_start = 0.0
-x_end = 2.0
-outer_diameter = 0.08
-wall_thickness = 0.003
-material = "steel"
-fixed_start = ["u", "theta"]
-[tailboom]
-length = 2.0
-root_semi_axes = [0.25, 0.18]
-tip_semi_axes = [0.12, 0.09]
-wall_thickness = 0.002
-material = "al"
-shaft_clearance = 0.05
-[[bearings]]
+{shaft_and_boom(2.0)}[[bearings]]
 name = "hanger"
 kind = "contact"
 x = 0.7
-stiffness = { u = 1e6, v = 1e7, w = 2e7, beta = 3e4, gamma = 5e4 }
+stiffness = {{ u = 1e6, v = 1e7, w = 2e7, beta = 3e4, gamma = 5e4 }}
 [[bearings]]
 name = "mount"
 kind = "contact"
 x = 1.55
 offset = 0.31
-stiffness = { v = 1e7, w = 1e7, beta = 1e4, gamma = 1e4 }
+stiffness = {{ v = 1e7, w = 1e7, beta = 1e4, gamma = 1e4 }}
 [operating]
 speed_rpm = 3000.0
 power = 0.0

@@ -43,6 +43,7 @@ import math
 
 import numpy as np
 import pytest
+from boomed_rotor import shaft_and_boom
 
 from flexshaft.analyses.response import static_response
 from flexshaft.assembly import build_model
@@ -59,31 +60,7 @@ X_SHAFT, X_BOOM, K_V = 0.7, 1.2, 1.0e7
 
 BOOMED = f"""
 name = "bearing with its own boom station"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = 80e9
-density = 7800.0
-[materials.al]
-kind = "isotropic"
-E = 70e9
-G = 26e9
-density = 2700.0
-[shaft]
-x_start = 0.0
-x_end = 2.0
-outer_diameter = 0.08
-wall_thickness = 0.003
-material = "steel"
-fixed_start = ["u", "theta"]
-[tailboom]
-length = 2.5
-root_semi_axes = [0.25, 0.18]
-tip_semi_axes = [0.12, 0.09]
-wall_thickness = 0.002
-material = "al"
-shaft_clearance = 0.05
-[[bearings]]
+{shaft_and_boom(2.5)}[[bearings]]
 name = "hanger"
 kind = "contact"
 x = {X_SHAFT}
