@@ -74,3 +74,9 @@ def test_both_stiff_directions_are_reported():
 def test_one_stiff_direction_is_reported_once():
     problems = model_guards(soft_tube("{ v = 1e9, w = 1e8 }"))
     assert [p.path for p in problems] == ["bearings[0].stiffness.v"], problems
+
+
+def test_the_limit_sits_where_the_hand_sum_puts_it():
+    """Within ±1 % of the hand limit 9.274e8 N/m: 9.2e8 is accepted, 9.35e8 refused."""
+    problems = model_guards(soft_tube("{ v = 9.2e8, w = 9.35e8 }"))
+    assert [p.path for p in problems] == ["bearings[0].stiffness.w"], problems

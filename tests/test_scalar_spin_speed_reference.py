@@ -1,9 +1,9 @@
 """A spin speed given as one number is a one-speed sweep: the imbalance response at a scalar Ω
 equals the Jeffcott rotor's closed form at that speed.
 
-The rule (``flexshaft.analyses.guards.check_spin_speeds``: speeds are taken "as a non-empty
-1-D float array"; ``imbalance_response`` documents ``speeds : array_like``, and a number is
-array-like). Reference (closed form, as in tests/test_forward_imbalance_load_reference.py): the
+The rule: ``imbalance_response`` takes ``speeds : array_like``, and numpy's glossary defines an
+array_like as anything ``numpy.array`` accepts, scalars included (a 0-d array); the guard turns
+it into a 1-D float array. Reference (closed form, as in tests/test_forward_imbalance_load_reference.py): the
 Jeffcott-like rotor of tests/rotors.py (disk m at midspan of a near-massless pinned-pinned tube,
 k = 48EI/L³, a dashpot c_e at the disk, rotating loss η) under the forward imbalance load
 ``Q_v = 1, Q_w = −i`` per Ω² whirls at
