@@ -7,15 +7,16 @@ References (documented rules and geometry derived here):
   (``Model.segments``, the metal strength per segment); two zones of one name could not be told
   apart, so the second use of a name is refused at ``shaft.segments[1].name``.
 * docs/model.md: "shaft ends are constrained in the DOFs listed in shaft.fixed_start /
-  shaft.fixed_end": a list that names a DOF twice is a mistake of the file, refused at the
-  end it concerns, fixed_end as well as fixed_start.
+  shaft.fixed_end". That a list naming a DOF twice is refused (at the end it concerns,
+  fixed_end as well as fixed_start) is derived here, the validator's rule: the build would
+  constrain the DOF once, but the size estimate of the model would count it twice.
 * A layup is a stacking sequence in the notation of ``[shaft] layup`` (groups in parentheses):
   "(55/-55" opens a group it never closes, so it is no layup; a segment's layup is refused on
   load at ``shaft.segments[0].layup``, as the shaft's is, not later by the model build.
-* An elliptical boom skin of thickness t inside semi-axes (a, b) leaves an inner ellipse of
-  semi-axes (a − t, b − t): with t equal to the smallest semi-axis that ellipse has no extent on
-  that axis (no hole), so t must stay strictly below it (the Tailboom docstring: "less than the
-  smallest semi-axis"); 0.999 of it is accepted.
+* docs/limits.md, section 2: a boom's wall must be thinner than its radius (smallest
+  semi-axis), and the Tailboom docstring: "less than the smallest semi-axis". Only the
+  refusal at exactly t = s is tested at the boundary (0.999 s accepted); the skin is built
+  directly as a ``Tailboom``, not through a design file.
 
 CPU about 20 ms (design files are parsed, no model is built).
 """
