@@ -130,3 +130,21 @@ def test_the_json_worst_difference_is_the_largest_in_magnitude(computes):
     (case,) = runner.report_json(report)["cases"]
     assert case["worst_relative_difference"] == pytest.approx(3e-3, rel=1e-10)
     assert case["passed"] is False
+
+
+@pytest.mark.parametrize(
+    ("unit", "published_key", "flexshaft_key"),
+    [
+        ("-", "published", "flexshaft"),
+        ("Hz", "published_Hz", "flexshaft_Hz"),
+        ("g mm", "published_g_mm", "flexshaft_g_mm"),
+    ],
+)
+def test_the_json_value_keys_carry_the_unit_and_none_without_one(computes, unit, published_key, flexshaft_key):
+    """The JSON keys name their unit as every command's do (docs/optimizer.md: "the unit in each
+    key: driveline_mass_kg, kp_N_per_m"); a dimensionless value (a Nusselt number, unit "-") has
+    no unit to name: "published" and "flexshaft", not "published_" with a dangling underscore."""
+    computes([1.0])
+    (case,) = runner.report_json(ValidationReport((run_case(synthetic((1.0,), unit=unit)),), 0.0))["cases"]
+    (value,) = case["values"]
+    assert set(value) == {"label", published_key, flexshaft_key, "relative_difference"}

@@ -211,7 +211,7 @@ def report_json(report: ValidationReport) -> dict:
                 "worst_relative_difference": r.worst,
                 "cpu_s": r.cpu_seconds,
                 "values": [
-                    {"label": label, f"published_{suffix}": p, f"flexshaft_{suffix}": v, "relative_difference": d}
+                    {"label": label, published_key: p, flexshaft_key: v, "relative_difference": d}
                     for label, p, v, d in zip(c.labels, c.published, r.computed, r.differences)
                 ],
             }
