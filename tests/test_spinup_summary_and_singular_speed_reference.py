@@ -12,15 +12,20 @@ Singular speed (closed form, the undamped rigid rotor of
 tests/test_critical_search_load_cases_reference.py without its dashpots): the in-phase
 imbalance case drives the pure translation M ẍ + 3k x = e M Ω² (no rotation, so no gyroscopic
 coupling), x = e M Ω²/(3k − M Ω²), singular at ω_t = √(3k/M). The model's own singular speed
-(its near-rigid tube's flexibility moves it by ~1e-6 relative) is found by bisection on the
-reciprocal of the disk's response, which changes sign through the resonance, and is confirmed
-singular (:class:`~flexshaft.analyses.banded.SingularSystemError`). ``with_speeds`` documents
-that such a speed is skipped, and the other added speeds kept: 0.9 ω_t below it and 1.1 ω_t
-above, where every node moves by |x| (the anti-phase case's rocking, e M/(4I) · 0.5 m ≈ 2e-7 m,
-is about 200 times smaller, so the in-phase case is the worst). Tolerance 1e-4 relative on |x|:
-the model's translation frequency differs from ω_t by ~1e-6 relative, which moves x by
-~1e-6 · 2/|1 − (Ω/ω_t)²| ≈ 1e-5 at 0.9 and 1.1 ω_t (measured 1.2e-5 and 1.6e-5, the tube's
-flexibility included). CPU about 0.1 s.
+(its near-rigid tube's flexibility moves it by ~1e-6 relative) is found by Brent's method
+(``brentq``) on the reciprocal of the disk's response, which changes sign through the
+resonance, and is confirmed singular (:class:`~flexshaft.analyses.banded.SingularSystemError`).
+This rests on no exact float: the near-rigid tube (E = 2.1e15 Pa) makes the dynamic stiffness
+so ill-conditioned that SingularSystemError is raised throughout about ±1.5e-7 relative of
+the root (regular at ±2e-7 and beyond; measured with OpenBLAS Prescott and Haswell), and
+Brent's method stops at the first singular speed it meets, where ``reciprocal`` returns 0
+(its fourth evaluation, after one at 1.5e-6 from the root), so xtol and rtol play no role.
+``with_speeds`` documents that such a speed is skipped, and the other added speeds kept:
+0.9 ω_t below it and 1.1 ω_t above, where every node moves by |x| (the anti-phase case's
+rocking, e M/(4I) · 0.5 m ≈ 2e-7 m, is about 200 times smaller, so the in-phase case is the
+worst). Tolerance 1e-4 relative on |x|: the model's translation frequency differs from ω_t by
+~1e-6 relative, which moves x by ~1e-6 · 2/|1 − (Ω/ω_t)²| ≈ 1e-5 at 0.9 and 1.1 ω_t
+(measured 1.2e-5 and 1.6e-5, the tube's flexibility included). CPU about 0.1 s.
 """
 
 from __future__ import annotations
@@ -60,8 +65,9 @@ def _summary_of_a_hand_scan() -> SpinupResponse:
 
 
 def test_the_summary_names_the_peak_orbit_its_speed_and_the_actuators_in_mm():
-    """The shaft's peak is 0.12 mm at 150 rad/s = 1432 rpm (not the 0.05 mm reached at the top
-    speed, nor the smallest); the bearing's peak orbit 4e-5 m = 0.04 mm, its force 50 N."""
+    """The shaft's peak is 0.12 mm at 150 rad/s = 1432 rpm (not the 0.09 mm = max(0.05, 0.09) mm
+    reached at the top speed, nor the smallest); the bearing's peak orbit 4e-5 m = 0.04 mm, its
+    force 50 N."""
     text = repr(_summary_of_a_hand_scan())
     assert text == (
         "SpinupResponse(3 speeds 955 to 1910 rpm, peak shaft orbit 0.12 mm at 1432 rpm; actuators b 0.04 mm, 50 N)"
@@ -88,6 +94,7 @@ def _singular_speed(model) -> float:
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the resonance warnings of the speeds near the root
+        # Brent's method: it ends at the first singular speed it meets (reciprocal = 0 there)
         return brentq(reciprocal, W_T * (1 - 1e-3), W_T * (1 + 1e-3), xtol=1e-14, rtol=4 * np.finfo(float).eps)
 
 
