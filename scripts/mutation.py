@@ -44,6 +44,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import hashlib
 import json
 import os
 import platform
@@ -177,9 +178,11 @@ def mutate(text: str, m: Mutation) -> str:
 
 
 def check(mutations: list[Mutation]) -> None:
-    """Every mutation applies to the current source and compiles; refuses with every stale
+    """Every mutation applies to the current source and compiles, and no two make the same
+    program (an exact copy scores one blind spot twice); refuses with every stale or copied
     mutation listed (not only the first), so that one pass after a refactor finds them all."""
     problems = []
+    programs: dict[tuple[str, str], str] = {}  # (module path, digest of the mutated text) -> first id
     for m in mutations:
         source = PACKAGE / m.path
         if not source.is_file():
@@ -188,6 +191,9 @@ def check(mutations: list[Mutation]) -> None:
         try:
             mutated = mutate(source.read_text(encoding="utf-8"), m)
             compile(mutated, str(source), "exec")
+            first = programs.setdefault((m.path, hashlib.sha256(mutated.encode()).hexdigest()), m.id)
+            if first != m.id:
+                problems.append(f"{m.id}: makes the same program as {first} (drop one of them)")
         except ValueError as error:
             problems.append(str(error))
         except SyntaxError as error:
