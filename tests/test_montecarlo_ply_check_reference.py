@@ -7,8 +7,9 @@ References:
   per sample "the ply Tsai-Wu safety factor at the operating speed (static loads and torque plus
   the sample's imbalance response)" (module docstring). On a single [0] ply tube with no
   power, no external load and every bay's eccentricity 0 nothing bends or twists: the ply
-  carries the spin's hoop stress alone, σ₂ = N_y/t = ρ Ω² r_m² (ring equilibrium, N_y = ρ t
-  Ω² r_m², Timoshenko & Goodier 1970 §32, as in tests/test_montecarlo_outputs_reference.py),
+  carries the spin's hoop stress alone, σ₂ = N_y/t = ρ Ω² r_m² (derived here: thin-ring
+  equilibrium, N_y = ρ t Ω² r_m², the product's documented free-thin-tube model of the
+  shaft_strength module; the exact thick ring peaks ~4 % higher at the inner wall),
   so Tsai-Wu under a uniaxial transverse tension meets the envelope at σ₂ = Y_t:
   R = Y_t/(ρ Ω² r_m²) (derived there), 107.7 for the tube below at 3000 rpm.
 * **The ply check not asked for.** ``strength=False``: ``safety_factor`` is "NaN when
@@ -20,8 +21,8 @@ References:
 Tolerance 1e-9: with zero eccentricity every imbalance weight is exactly 0, so the operating
 field is exactly the spin's; the factor is float64 algebra on the ply stiffness and the Tsai-Wu
 quadratic (round-off ~1e-14, conditioning O(1)), as in the cited test. Two spin-up speeds and
-three samples: about 0.1 s each (the first run in a process also pays the sweep engine's
-one-time imports, ~2 s, shared with every Monte-Carlo test).
+three samples: about 0.05 s each (the first Monte-Carlo run in a process also pays ~0.5 s of
+lazy imports, xarray, already paid in the suite by the other Monte-Carlo tests).
 """
 
 from __future__ import annotations
@@ -71,7 +72,7 @@ def _run(design, strength: bool):
 
 
 def test_each_sample_carries_the_spinning_plys_hoop_safety_factor(unidirectional_tube):
-    """strength=True (the default): every sample's factor is Y_t/(ρ Ω² r_m²)."""
+    """strength=True: every sample's factor is Y_t/(ρ Ω² r_m²)."""
     omega = SPEED_RPM * np.pi / 30.0
     r_m = R_O - WALL / 2.0
     expected = Y_T / (RHO * omega**2 * r_m**2)
