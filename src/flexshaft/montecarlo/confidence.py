@@ -73,7 +73,7 @@ class Exceedance:
 
     def describe(self, confidence: float = CONFIDENCE) -> str:
         """``"0 of 200 samples: P < 0.0149 (95 % upper bound)"`` or ``"3 of 200 samples: P =
-        0.015, < 0.0387 (95 % upper bound)"``."""
+        0.015, < 0.0383 (95 % upper bound)"``."""
         if not self.samples:
             return "no samples"
         bound = f"{self.upper_bound(confidence):.3g} ({100 * confidence:g} % upper bound)"
