@@ -1,4 +1,4 @@
-"""The layup parser's size limits at their documented edges (docs/limits.md, section 4).
+"""The layup parser's size limits at their documented edges (docs/limits.md, section 1, "Text").
 
 docs/limits.md: "a layup at most 2000 [characters] (and the parser at most 1000 plies, repeat
 counts 1–100, nesting 20, ...)". So a layup that expands to exactly 1000 plies and a repeat count
