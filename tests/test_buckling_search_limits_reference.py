@@ -11,9 +11,13 @@ References (derived here):
   vanishes, no torque buckles the tube (T = inf in both senses), whatever n.
 * Rayleigh-Ritz upper bound on nested trial spaces: the M = 2 series is contained in the
   default one (M >= 24, ``default_terms``), so T(M = 2) >= T(default) at every n and so for the
-  minimum over n. A helix of a tube L = 5 R needs several half-waves (the default search finds
-  n = 5; a helix with k of order n/R has k L/pi of order 8 half-waves), which two sine terms cannot
-  represent: T(M = 2) is well above (measured +30 %; asserted > 10 %, a margin far from both).
+  minimum over n. That inequality is all the reference gives, and all that is asserted. Its
+  relative tolerance 1e-9 is the round-off of two eigen-solves of differently sized problems,
+  should both spaces give equal values: not a few ulp (1e-12), since the default pencil is
+  larger and its stiffness spans the m^4 growth of M >= 24 terms; far below any physical
+  difference. At L = 5 R, R/t = 100 the bound is not tight (measured T(M = 2) about
+  1.3 T(default)): the default mode (n = 5) has 2 axial half-waves, with |W_1..W_4| = 0.90,
+  1.00, 0.48, 0.08 of the largest, more than two sine terms can represent.
 * n_max is "the largest circumferential wave number tried" (the docstring): the critical mode
   of a capped search has n <= n_max, and the minimum over the subset n <= n_max is at least
   the minimum over all n. At L = 3 R, R/t = 50 the free search finds n = 5.
@@ -42,7 +46,7 @@ def test_one_axial_term_carries_no_torque_work_in_the_classical_shell():
 
 
 def test_two_axial_terms_bound_the_classical_torque_from_above():
-    """Nested Ritz spaces: T(M = 2) >= T(default M), by more than 10 % at L = 5 R (docstring)."""
+    """Nested Ritz spaces: T(M = 2) >= T(default M) up to eigen-solve round-off (docstring)."""
     tube, length = _tube(100.0), 5.0
     default = torsional_buckling_torque(tube, 1.0, length, theory="classical")
     two = torsional_buckling_torque(tube, 1.0, length, theory="classical", n_terms=2)
@@ -52,7 +56,7 @@ def test_two_axial_terms_bound_the_classical_torque_from_above():
         (two.torque_negative, default.torque_negative),
     ):
         assert np.isfinite(coarse)
-        assert coarse > 1.1 * fine
+        assert coarse >= fine * (1 - 1e-9)  # round-off of two eigen-solves (docstring)
 
 
 def test_capped_wave_number_search_stays_below_the_cap_in_shear():
