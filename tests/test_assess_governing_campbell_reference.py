@@ -1,10 +1,12 @@
 """Reference: the explorer's Campbell diagram is computed at the governing point.
 
-docs/explorer.md: the explorer judges a design at the screening grids "plus a Campbell diagram
-of 25 speeds to draw", and with an envelope "the verdict judges every check at each [point] ...
-and the Campbell diagram and figures at the governing point". :func:`combine_points` at a
-resolution with Campbell speeds and no report detail (the explorer's ``EXPLORE``) therefore
-adds the Campbell diagram to ONE point, the governing one, and the assessment shows it.
+docs/explorer.md:53-54: the explorer judges a design at the screening grids "plus a Campbell
+diagram of 25 speeds to draw" (one of its "five figures", :56-57), and :119-122: "A design with
+several ``[envelope]`` points has them judged in the workers side by side (...), then one
+worker combines them into the verdict and draws the figures at the governing point
+(``combine_points``)". :func:`combine_points` at a resolution with Campbell speeds and no
+report detail (the explorer's ``EXPLORE``) therefore adds the Campbell diagram to ONE point,
+the governing one, and the assessment shows it.
 
 The tuned design's four envelope points are given Tsai-Wu factors 3.0, 2.5, 1.8, 4.0 against
 the 1.5 limit (docs/requirements.md): the governing point, by hand, is the one of the smallest

@@ -2,22 +2,25 @@
 
 * **The "worst" imbalance placement's bays** (docs/limits.md, section 5): "The ``"worst"``
   imbalance placement enumerates all 2^(bays−1) sign patterns of the bay forces; it is limited
-  to 10 bays (512 load cases ...)", and "``assess`` [applies] the ``"assess"`` estimate at its
-  resolution". So ``fs.assess`` of a design with 12 bearings at distinct stations (11 bays,
-  2^10 = 1024 load cases) is refused with a DesignError naming ``loads.imbalance_placement``
-  before its first analysis, while 11 bearings (10 bays, 512 cases, the documented maximum)
-  reach it. The estimate of building the model alone (``"model"``) does not apply the rule: the
-  model itself is not too large to build.
-* **Every refused envelope point** (docs/limits.md, section 4): ``envelope_problems`` lists
-  "every ``[envelope]`` point the verdict would refuse (... a law taking a lamina out of the
-  schema's bounds there ...)". Without a temperature table the baseline's lamina follows the
-  matrix law E_T = G_LT = 0.1 GPa · exp(−(T − T_ref)/θ_E); with T_ref = 0 °C and θ_E = 5 K it
-  falls below the schema's 1 kPa above T = 5 K · ln(0.1 GPa / 1 kPa) = 5 ln 1e5 = 57.6 °C
-  (derived here). The shaft of a boom parked in the sun is at 80-100 °C (the case
-  tests/test_api_guards.py measures at 88.8 °C), beyond it, at the design's 25.6 °C ambient
-  and at 30 °C; a standard day's shaft at 15 °C keeps E_T = 0.1 GPa · e⁻³ = 5.0 MPa. An
-  envelope of a parked point, a standard day and a second parked point is refused at points 0
-  and 2, each named, not at 1.
+  to 10 bays (512 load cases ...)", and "``build_model`` applies the ``"model"`` estimate; ...
+  ``assess`` the ``"assess"`` one at its resolution". So ``fs.assess`` of a design with 12
+  bearings at distinct stations (11 bays, 2^10 = 1024 load cases) is refused with a DesignError
+  naming ``loads.imbalance_placement`` before its first analysis, while 11 bearings (10 bays,
+  512 cases, the documented maximum) reach it. The estimate of building the model alone
+  (``"model"``) does not apply the rule: the model itself is not too large to build.
+* **Every refused envelope point** (docs/limits.md, section 2, "Checks of several numbers"):
+  ``envelope_problems`` lists "every ``[envelope]`` point the verdict would refuse (... a law
+  taking a lamina out of the schema's bounds there ...)". Without a temperature table the
+  baseline's lamina follows the matrix law E_T = G_LT = 0.1 GPa · exp(−(T − T_ref)/θ_E); with
+  T_ref = 0 °C and θ_E = 5 K it falls below the schema's 1 kPa above
+  T = 5 K · ln(0.1 GPa / 1 kPa) = 5 ln 1e5 = 57.56 °C (derived here). The points give their
+  material temperature (``material_temperature = "given"``) on either side of it, 0.64 K
+  above and 0.56 K below; by hand, at 58.2 °C E_T = 1e8 · e^(−11.64) = 1e8 · 8.807e-6 =
+  880.7 Pa, refused, and at 57.0 °C E_T = 1e8 · e^(−11.4) = 1e8 · 1.1195e-5 = 1119.5 Pa,
+  accepted: 12 % either side of the bound, no rounding decides (the matrix loss factors,
+  0.12 · e^((T − T_ref)/θ_η) with θ_η = 60 K, are at most 0.12 · e^(58.2/60) = 0.32, below
+  the schema's 1: the law takes nothing else out of bounds).
+  An envelope of 58.2, 57.0 and 58.2 °C is refused at points 0 and 2, each named, not at 1.
 
 No analysis is run (the first one is replaced by a stand-in that stops the recipe); each design
 is validated from a dictionary: a few tens of ms of CPU in all.
@@ -74,11 +77,11 @@ def test_every_refused_envelope_point_is_listed():
     data["thermal"].update(matrix_reference_temperature_c=0.0, matrix_modulus_decay=5.0)
     data["envelope"] = {
         "points": [
-            {"name": "parked_a", "material_temperature": "parked"},
-            {"name": "standard_day", "ambient_temperature_c": 15.0},
-            {"name": "parked_b", "material_temperature": "parked", "ambient_temperature_c": 30.0},
+            {"name": "hot_a", "material_temperature": "given", "material_temperature_c": 58.2},
+            {"name": "just_below", "material_temperature": "given", "material_temperature_c": 57.0},
+            {"name": "hot_b", "material_temperature": "given", "material_temperature_c": 58.2},
         ]
     }
     problems = envelope_problems(design_from_dict(data))
     assert [p.path for p in problems] == ["envelope.points[0]", "envelope.points[2]"]
-    assert "'parked_a'" in problems[0].message and "'parked_b'" in problems[1].message
+    assert "'hot_a'" in problems[0].message and "'hot_b'" in problems[1].message
