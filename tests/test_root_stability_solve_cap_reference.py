@@ -13,8 +13,8 @@ With the cap lowered to one (monkeypatched) the two planes tell the rule apart:
 
 * η = 0.2, k_p = 0.3 k: both roots unsettled by the first-order shift (half of it leaves them
   unstable) and both stable when solved: none is confirmed unstable, so both are solved, and
-  each is its exact cubic root (2.6e-3 |s| from s₀ + Δs, 1e-5 asserted: the tube's mass and
-  mesh leave 8e-7, measured in the lagged-magnet test);
+  each is its exact cubic root (2.6e-3 to 3.0e-3 |s| from s₀ + Δs, 1e-5 asserted: the tube's
+  mass and mesh leave 8e-7, measured in the lagged-magnet test);
 * η = 0.02, k_p = 0.2 k: both roots unstable with the loss: the first solved is confirmed, so
   the second keeps its first-order value (refined False), 3e-5 |s| from the exact root at this
   small η (closed forms above: asserted > 2e-5), told from it at 5e-6 (the model's 8e-7 mesh
