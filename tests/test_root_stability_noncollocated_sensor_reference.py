@@ -26,10 +26,11 @@ the dense basis leaves a round-off coupling between the twist and the bending ab
 (``_DECOUPLED``) the check accepts, and the torsional modes are kept (nothing to test). Even
 here the margin is thin: the largest coupling of the projected matrices and actuator rows,
 measured, is 7.9e-8 with OpenBLAS's Prescott kernels (1.26× below 1e-7), 2.5e-8 with
-Haswell's, 7.6e-9 with SkylakeX's (numpy 1.26 and its OpenBLAS: 8.5e-9 to 2.1e-8). So the
-test first asserts that the three torsional modes were left out (``basis_size`` = free DOFs
-− 3): a kernel that kept them fails there, loudly, rather than passing without exercising
-the sensor rows.
+Haswell's, 7.6e-9 with SkylakeX's (numpy 1.26 and its OpenBLAS: 8.5e-9 to 2.1e-8). The roots
+are checked on every machine (they are right whether or not the torsional modes are kept);
+where a kernel's round-off keeps them (``basis_size`` ≠ free DOFs − 3) the test then reports
+itself skipped, visibly, rather than passing as if it had exercised the restricted sensor rows
+(a failure there would be a test fragile to the BLAS build, not a wrong result).
 Cubic Hermite beam elements hold the point-load static shape exactly; the tube's mass (7e-6 of
 the disk's) leaves the model's roots 8e-7 from the cubic's (measured): 1e-5 asserted, 300 times
 below the collocated roots' distance.
@@ -73,8 +74,9 @@ def test_the_sensor_off_the_magnet_reads_the_static_shape_of_the_tube():
     model = sensed_rotor(eta, kp)
     result = root_stability(model, [SPEED])
     assert result.method == "full"
-    assert result.basis_size == model.dofs.free.size - 3  # the three free twist DOFs' modes left out
     for k in (0.0, K_V):
         want, collocated = cubic_root(eta, RATIO * kp, k), cubic_root(eta, kp, k)
         assert abs(want - collocated) > 1e-3 * abs(want)
         assert nearest(result.roots[0], want) == pytest.approx(want, rel=1e-5)
+    if result.basis_size != model.dofs.free.size - 3:  # the three free twist DOFs' modes kept
+        pytest.skip("this BLAS kernel's round-off kept the torsional modes: the sensor rows were not restricted")
