@@ -1,8 +1,10 @@
 """A lamina the matrix law takes out of the schema's bounds at an envelope point is refused naming
 the point's material temperature in the unit the point gives it (°C).
 
-Documented rule (:func:`flexshaft.thermal.envelope.point_conditions`, Raises): the message "names
-the point, the lamina, the temperature"; docs/thermal.md's ``material_temperature_c`` is "the
+Documented rule: docs/thermal.md, a lamina the law takes out of the schema's bounds at an envelope
+point's material temperature is "refused with the fields that set them", and the law's refusal
+gives "the temperature, each field with the value it would take and its bound" (the envelope
+module's refusal text); docs/thermal.md's ``material_temperature_c`` is "the
 material temperature with ``"given"`` [°C]". Reference, derived here: without a temperature table
 the baseline lamina follows the ``[thermal]`` exponential law, whose loss factors reach the schema's
 bound (< 1) by 150 °C (the test asserts the refusal), and the message must read
@@ -27,4 +29,4 @@ def test_a_law_refusal_names_the_points_temperature_in_celsius():
     message = str(info.value)
     assert "'hot_test'" in message and "'t700_adiprene'" in message
     assert "at 150 °C" in message
-    assert "423" not in message
+    assert "423.1 °C" not in message

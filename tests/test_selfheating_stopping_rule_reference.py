@@ -8,7 +8,9 @@ Closed forms derived here:
 
 * **Tolerance above every admissible change.** The loop starts at the shaft's air temperature
   T_air and stops with a runaway as soon as an iterate exceeds the allowable temperature T_allow.
-  Any first iterate that is not a runaway therefore changes by at most T_allow − T_air, so with
+  No iterate falls below T_air (the heat is ≥ 0, the shaft convects to air at T_air and both
+  ends are held at T_air; measured minimum T_air + 1.4e-3 K), so any first iterate that is not
+  a runaway changes by at most T_allow − T_air, and with
   ``tol > T_allow − T_air`` the first iterate already meets max |ΔT| < tol: status
   ``"converged"`` after exactly 1 iteration.
 * **Tolerance nobody meets.** ``tol = 0``: max |ΔT| < 0 is false for every iterate, so a loop that
