@@ -1,8 +1,8 @@
 """A boom load's station is checked against the tailboom [0, length], not the shaft's range.
 
-Reference: the documented rule of docs/limits.md section 6, "stations finite and on the
-member": a ``[[loads.point]]`` with ``on = "boom"`` acts at boom station ``x``, which must lie
-on the tailboom [0, length]; where the shaft [x_start, x_end] is shorter or longer than the
+Reference: the documented rule of docs/limits.md section 2 (checks of several numbers), "every
+bearing, disk, sensor and load on its member": a ``[[loads.point]]`` with ``on = "boom"``
+acts at boom station ``x``, which must lie on the tailboom [0, length]; where the shaft [x_start, x_end] is shorter or longer than the
 boom, the shaft's range says nothing about it.
 
 * **A boom longer than the shaft** (2.5 m against the shaft's [0, 2] m): a boom point load at
