@@ -2,8 +2,8 @@
 
 Reference: the documented rule of docs/limits.md section 2 (checks of several numbers), "every
 bearing, disk, sensor and load on its member": a ``[[loads.point]]`` with ``on = "boom"``
-acts at boom station ``x``, which must lie on the tailboom [0, length]; where the shaft [x_start, x_end] is shorter or longer than the
-boom, the shaft's range says nothing about it.
+acts at boom station ``x``, which must lie on the tailboom [0, length]; where the shaft
+[x_start, x_end] is shorter or longer than the boom, the shaft's range says nothing about it.
 
 * **A boom longer than the shaft** (2.5 m against the shaft's [0, 2] m): a boom point load at
   x = 2.3 m is on its member and the design loads. Its physics is then checked too: the
