@@ -12,6 +12,10 @@ damper sit at the midspan node: 3 shaft nodes) on a 2-element tail boom (3 boom 
 rotor (no extra DOF). Total 6·3 + 5·3 = 33; constrained: ``fixed_start`` (u, v, w, θ) 4 +
 ``fixed_end`` (v, w) 2 + the clamped boom root's 5 = 11; free 33 − 11 = 22. The counts are
 integers: exact equality.
+
+That ``dofs`` means all the DOFs, the constrained ones included, is inferred here from the key
+beside it: the summary also reports ``free_dofs``, which would be redundant if ``dofs`` counted
+only the free ones (no document states it).
 """
 
 from __future__ import annotations
