@@ -6,8 +6,10 @@ The responses are written by hand (no solve): at a node, v = a and w = −i a is
 circular orbit of radius |a| (derived here: (Re(a e^{iφ}), Re(−i a e^{iφ})) = |a| (cos ψ, sin ψ)
 with ψ = φ + arg a), so every orbit's size is known exactly.
 
-* ``worst_case_orbits`` documents "the worst load case at each speed (the largest orbit over
-  the nodes)". Case 1 has a 1 μm orbit at x = 0.25 m and nothing elsewhere; case 2 has 0.6 μm
+* docs/requirements.md: the spin-up deflection is "the orbit envelope (largest over shaft
+  stations and imbalance cases)", so ``worst_case_orbits`` takes at each speed the case whose
+  largest orbit over the nodes is largest (its docstring: "the worst load case at each speed
+  (the largest orbit over the nodes)"). Case 1 has a 1 μm orbit at x = 0.25 m and nothing elsewhere; case 2 has 0.6 μm
   at every node. The largest orbit is case 1's (1 > 0.6), although case 2's orbits summed over
   the 5 nodes (3 μm) exceed case 1's (1 μm): the worst case is case 1 (index 0).
 * ``HarmonicResponse.plot_orbit`` documents its default station as "the node of the largest
