@@ -72,7 +72,7 @@ def _studies(monkeypatch):
         actuator_displacement_peak=np.zeros((2, 2, 2)),
         to_arrays=lambda: SimpleNamespace(attrs={}),
     )
-    monkeypatch.setattr(spinup_maps, "spinup_speeds", lambda model, n: None)
+    monkeypatch.setattr(spinup_maps, "spinup_speeds", lambda model, n, **range_: None)  # any range
     monkeypatch.setattr(spinup_maps, "clustered_receptance", lambda model, laws, speeds: rec)
     monkeypatch.setattr(spinup_maps, "spinup_map", lambda model, kp, kd, receptance: smap)
     monkeypatch.setattr(spinup_maps, "spinup_curves", _curves)
