@@ -4,14 +4,20 @@
 References (documented rules, derived here where stated):
 
 * **Total time is the sum over the studies.** ``DesignStudies.elapsed`` is documented as the
-  "Total time of the studies [s]"; the studies run one after another on one worker (jobs=1),
-  so the total of a ply-angle study of 1.25 s, a wall study of 2.5 s and a buckling study of
-  0.5 s is 1.25 + 2.5 + 0.5 = 4.25 s (binary-exact sums: exact equality).
-* **The headline is JSON.** :func:`~flexshaft.thesis.design_studies.headline` is documented
-  as "JSON-ready"; JSON (RFC 8259, §6) has no Infinity or NaN, so a non-finite number (an
-  infinite safety factor of an unloaded ply, a NaN peak) must come out as ``null``: the
-  headline of such a result passes ``json.dumps(..., allow_nan=False)`` with those fields
-  None, the finite ones unchanged.
+  "Total time of the studies [s]": the studies' total work, each study's task seconds added
+  (not the wall time of a run whose tasks overlap on several workers), so the total of a
+  ply-angle study of 1.25 s, a wall study of 2.5 s and a buckling study of 0.5 s is
+  1.25 + 2.5 + 0.5 = 4.25 s, not the longest study's 2.5 s (binary-exact sums: exact
+  equality). tests/test_design_studies_headline_reference.py adds up the tasks of one study,
+  where the longest study is the sum too; here three studies tell them apart.
+* **The headline is JSON.** docs/studies.md (line 203) documents ``headline(res)`` as
+  "JSON-ready numbers beside the thesis's" (its docstring: "JSON-ready (SI units)"); JSON
+  (RFC 8259, §6) forbids only the Infinity and NaN tokens, and the project's convention for
+  them is ``None`` (``json_ready`` in :mod:`flexshaft.cli.common` and
+  :mod:`flexshaft.report.results_json`: "non-finite floats as ``None`` (strict JSON has no
+  NaN or infinity)"), so a non-finite number (an infinite safety factor of an unloaded ply, a
+  NaN peak) must come out as ``null``: the headline of such a result passes
+  ``json.dumps(..., allow_nan=False)`` with those fields None, the finite ones unchanged.
 * **A failed study leaves the others.** :func:`~flexshaft.thesis.design_studies.finish_design_studies`
   is documented: "A study that cannot run on the design ... is left None with the reason in
   notes". So a failed buckling study (a ``ValueError``) must not remove a stability map all
