@@ -17,15 +17,20 @@ Reference (derived here, independent of the search): Im L sampled on 200001 loga
 over [ω_a, ω_b] changes sign exactly twice, each change solved by scipy's brentq to 1e-12 rad/s
 (ω = 625.918 and 626.910 rad/s, Re L = −0.652, −0.757 there: a phase crossover pair).
 
-The first point the search evaluates, the extreme predicted by the map through the three given
-points, lies above the axis, and the map refitted through it and its neighbours puts its
-extreme outside their bracket: the search must then weigh the lowest Im L found (0.0996, at ω_a), not
-the new point's (0.259), against the previous map's error there (0.255) before stopping; it goes
-on and finds the dip.
+The first point the search evaluates is not the extreme of the map through the three given
+points (at 619.1 rad/s, outside the part [ω_a, ω_b] = [625.18, 632.73] rad/s) but a golden-
+section point of the part, 628.06 rad/s, where Im L = 0.259, above the axis; the map refitted
+through it and its neighbours puts its extreme outside their bracket (592.8 rad/s). The search
+must then weigh the lowest Im L found (0.0996, at ω_a), not the new point's (0.259), against
+the previous map's error there (0.2554) before stopping; it goes on and finds the dip. A margin
+taken from the newest point would stop it: that catch rests on 0.259 > 0.2554 (1.5 % apart, in
+deterministic scalar arithmetic, no LAPACK/BLAS).
 
 Tolerance: the search refines each crossing by regula falsi to a bracket of 1e-8 ω holding the
 point returned, brentq's roots are exact to 1e-12 rad/s: 2e-8 relative. Im L at the points
-returned: |dL/dx| ≤ |B|/ζ + |q|·(7ζ)² ≈ 250 + 0.3, so a 1e-8 step in x moves Im L by < 3e-6.
+returned: with t = x/ζ, (x − x_a)(x − x_b)(x − x_c) = ζ³ p(t), p'(t) = 3t² − 11.6t − 3.95, whose
+largest magnitude on t in [−2.5, 3.5] is 43.8 (at t = −2.5), so |dL/dx| ≤ |B|/ζ + |q| ζ² max|p'|
+= 250 + 139 ≈ 389 and a 1e-8 step in x moves Im L by at most 3.9e-6, hence 4e-6.
 """
 
 from __future__ import annotations
@@ -74,4 +79,4 @@ def test_a_dip_the_background_bends_is_searched_past_a_misfitting_refit():
     assert [x for x, _ in found] == pytest.approx(true, rel=2e-8)
     for x, value in found:
         assert value == pytest.approx(complex(_loop(x)), abs=1e-15)
-        assert abs(value.imag) < 3e-6 and value.real < -0.6
+        assert abs(value.imag) < 4e-6 and value.real < -0.6
