@@ -12,12 +12,15 @@ lower positive root ω of the massless-cantilever closed form (k11 − m ω²)(k
 Tolerance 5e-5 relative: the tube's mass is 1e-6 of the disk's, so the FE frequency agrees
 with the massless closed form to a few 1e-6 (the same bound as test_overhung_disk_whirl.py).
 
-Rest crossing (reference: the rule of :func:`critical_speeds`' docstring, derived here for the
-sample data): a critical speed is the crossing of a **lateral** curve with ω = kΩ, linearly
-interpolated, g(Ω) = Im s(Ω) − kΩ, t = g₀/(g₀ − g₁). Between rest and the first spinning sample
-it takes that sample's whirl only when the mode is still lateral there; a curve lateral at
-rest and torsional at the next sample (a kind change) keeps its lateral label at rest — never
-the "none" of a non-lateral point, which no critical speed of a lateral curve can carry. Data:
+Rest crossing (reference: docs/model.md, "only lateral modes make 1× critical speeds" and the
+whirl is "none" only for the other kinds, so a critical speed of a lateral curve never carries
+"none"; derived here for the sample data): a critical speed is the crossing of a lateral curve
+with ω = kΩ, linearly interpolated, g(Ω) = Im s(Ω) − kΩ, t = g₀/(g₀ − g₁). On a curve lateral at
+rest and torsional at the first spinning sample (a kind change) the only lateral sample of the
+interval is rest, labelled "planar": the crossing keeps that whirl. (The critical_speeds
+docstring says a crossing below the first spinning sample takes that sample's whirl, with no
+condition on its kind; the code steps up only to a lateral sample, which is what the rule
+above needs.) Data:
 Im s = 50, 60 rad/s at Ω = 0, 100 rad/s, k = 1: g = 50, −40, t = 5/9, Ω_c = 500/9 rad/s; the
 interpolation is exact up to one rounding of a few operations (1e-12 relative asserted).
 """
@@ -52,4 +55,5 @@ def test_rest_crossing_of_a_curve_leaving_the_lateral_kind_keeps_its_lateral_whi
     (crossing,) = critical_speeds(speeds, eigenvalues, whirl, kind)
     assert crossing.speed == pytest.approx(500.0 / 9.0, rel=1e-12)
     assert crossing.mode == 0
+    assert crossing.whirl != "none"
     assert crossing.whirl == "planar"
