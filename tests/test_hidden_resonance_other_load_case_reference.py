@@ -39,14 +39,13 @@ from __future__ import annotations
 import math
 
 import pytest
+from test_critical_search_load_cases_reference import DI, DO, KB, M_DISK, RHO, three_spring_rotor
 
 from flexshaft.analyses.criticals import lateral_critical_speeds
 from flexshaft.assembly import build_model
 from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.design import loads_design
 
-KB, RHO, M_DISK = 1.0e6, 7800.0, 20.0
-DO, DI = 0.1, 0.08
 M_TUBE = RHO * math.pi / 4 * (DO**2 - DI**2)
 M_TOTAL = M_TUBE + M_DISK
 RHO_IA = RHO * math.pi / 64 * (DO**4 - DI**4)  # the tube's diametral inertia [kg m²] over 1 m
@@ -60,43 +59,9 @@ C_END = 4 * ZETA_ROCK * math.sqrt(KB / 2 * I_EFFECTIVE)
 C_MIDDLE = 2 * ZETA_TRANS * math.sqrt(3 * KB * M_TOTAL) - 2 * C_END
 
 
-def _spring(name: str, x: float, c: float) -> str:
-    return (
-        f'[[bearings]]\nname = "{name}"\nkind = "contact"\nx = {x}\n'
-        f"stiffness = {{ v = {KB}, w = {KB} }}\ndamping = {{ v = {c}, w = {c} }}\n"
-    )
-
-
-TEXT = f"""
-name = "rigid rotor rocking just above its translation"
-[materials.stiff]
-kind = "isotropic"
-E = 2.1e15
-G = 8e14
-density = {RHO}
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = 1.0
-outer_diameter = {DO}
-wall_thickness = {(DO - DI) / 2}
-material = "stiff"
-fixed_start = ["u", "theta"]
-{_spring("left", 0.0, C_END)}{_spring("middle", 0.5, C_MIDDLE)}{_spring("right", 1.0, C_END)}
-[[disks]]
-name = "disk"
-x = 0.5
-mass = {M_DISK}
-diametral_inertia = {I_DISK}
-[operating]
-speed_rpm = {W_TRANS / 1.2 * 30 / math.pi}
-power = 0.0
-[loads]
-eccentricity = 1e-5
-imbalance_placement = "worst"
-[mesh]
-shaft_elements = 2
-"""
+# the rigid rotor of tests/test_critical_search_load_cases_reference.py (KB = 1e6 N/m springs at
+# 0, 0.5, 1 m; a 20 kg disk on a stiff 0.1 x 0.08 m steel tube), its disk's inertia tuned here
+TEXT = three_spring_rotor("rigid rotor rocking just above its translation", (C_END, C_MIDDLE, C_END), I_DISK, 2)
 
 
 @pytest.fixture(scope="module")
