@@ -11,9 +11,11 @@ gamma = ds/dx) has s'' = 2A, exact in the cubic Hermite elements, so an element 
 stores U_e = (EI/2) int (s'')^2 dx = 2 EI A^2 L_e. With a loss factor eta_e in that element
 (E* = E(1 + i eta_e), K'' = eta_e K) its heat is
   - thesis model (the deflection cycled as a planar vibration at Omega): P_e = Omega eta_e U_e,
-  - rotating model (a circular orbit of the same radius at Omega): P_e = 2 Omega eta_e U_e.
-The self-heating passes each element's loss stiffness at its temperature (``loss_stiffness``);
-the heat must use that one, so a loss factor varying along the shaft shows element by element.
+  - rotating model (a circular orbit of the same radius at Omega): P_e = 2 Omega eta_e U_e
+    (each fibre cycles kappa r, so the energy per cycle goes with J = 2I; docs/thermal.md,
+    "Shaft heat generation": the rotating model "dissipates **twice** the thesis's value").
+The API's ``loss_stiffness`` (the self-heating passes each element's at its temperature) sets
+the heat element by element: a loss factor varying along the shaft shows in it.
 
 Tolerance 1e-10 relative: the shape is exact in the elements; what remains is rounding of sums
 of order 1e2 terms of a well-scaled quadratic form.
@@ -55,7 +57,8 @@ def closed_form(model, etas, loss_model: str) -> np.ndarray:
 
 @pytest.mark.parametrize("choice", ["thesis", "rotating", None])
 def test_no_loss_model_given_means_the_designs_internal_damping(choice):
-    """Default of ``[analysis] internal_damping`` is "rotating" (design/schema.py's field)."""
+    """Default of ``[analysis] internal_damping`` is "rotating" (docs/model.md: `"rotating"`
+    (default; exact for an axisymmetric shaft))."""
     model = model_with(choice)
     expected_model = choice or "rotating"
     zero = np.zeros(model.dofs.size, dtype=complex)
