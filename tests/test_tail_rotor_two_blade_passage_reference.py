@@ -22,54 +22,21 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_torsional import DO, G_STEEL, LENGTH, WALL, shaft_text
 
 from flexshaft.analyses.torsional import torsional_excitations, torsional_modes, torsional_separation
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-G_STEEL, DO, WALL, LENGTH = 80e9, 0.1, 0.005, 2.0
 J1, J_TR, N_GEAR = 0.3, 4.0, 2.5
 
-TEXT = f"""
-name = "two-bladed tail rotor"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = {G_STEEL}
-density = 0.01
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = {LENGTH}
-outer_diameter = {DO}
-wall_thickness = {WALL}
-material = "steel"
-fixed_start = ["u", "v", "w"]
-[[bearings]]
-name = "fore"
-kind = "contact"
-x = 0.0
-stiffness = {{ v = 1e8, w = 1e8 }}
-[[bearings]]
-name = "aft"
-kind = "contact"
-x = {LENGTH}
-stiffness = {{ v = 1e8, w = 1e8 }}
-[operating]
-speed_rpm = 9550.0
-power = 100.0e3
-[mesh]
-shaft_elements = 4
-[[disks]]
-name = "hub"
-x = 0.0
-mass = 1.0
-polar_inertia = {J1}
-[tail_rotor]
-blades = 2
-polar_inertia = {J_TR}
-gearbox_ratio = {N_GEAR}
-"""
+TEXT = shaft_text(
+    f'[[disks]]\nname = "hub"\nx = 0.0\nmass = 1.0\npolar_inertia = {J1}\n'
+    f"[tail_rotor]\nblades = 2\npolar_inertia = {J_TR}\ngearbox_ratio = {N_GEAR}\n",
+    '["u", "v", "w"]',
+    elements=4,
+    rpm=9550.0,
+)
 
 
 def test_a_two_bladed_tail_rotor_adds_its_2_per_rev():

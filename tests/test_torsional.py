@@ -37,9 +37,16 @@ K_SHAFT = G_STEEL * J_POLAR / LENGTH
 
 
 def shaft_text(
-    tables: str = "", fixed_start: str = '["u", "v", "w", "theta"]', density: float = 1e-2, elements: int = 8
+    tables: str = "",
+    fixed_start: str = '["u", "v", "w", "theta"]',
+    density: float = 1e-2,
+    elements: int = 8,
+    rpm: float = 3000.0,
+    operating: str = "",
 ) -> str:
-    """A shaft on two stiff contact bearings; ``tables`` adds disks, [tail_rotor], [main_gearbox]."""
+    """A shaft on two stiff contact bearings; ``tables`` adds disks, [tail_rotor], [main_gearbox],
+    ``operating`` more lines of [operating] (e.g. a speed_range). Also the torsional reference
+    files' shaft (tests/test_torsional_shapes_and_band_reference.py and two more)."""
     return f"""
 name = "torsion test shaft"
 [materials.steel]
@@ -66,8 +73,9 @@ kind = "contact"
 x = {LENGTH}
 stiffness = {{ v = 1e8, w = 1e8 }}
 [operating]
-speed_rpm = 3000.0
+speed_rpm = {rpm}
 power = 100.0e3
+{operating}
 [mesh]
 shaft_elements = {elements}
 {tables}

@@ -31,56 +31,17 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_torsional import K_SHAFT, shaft_text
 
 from flexshaft.analyses.torsional import torsional_modes
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-G_STEEL = 80e9
-DO, WALL, LENGTH = 0.1, 0.005, 2.0
-J_POLAR = np.pi * (DO**4 - (DO - 2 * WALL) ** 4) / 32
-K_SHAFT = G_STEEL * J_POLAR / LENGTH
-
 
 def _free_free(elements: int, disk: float, density: float, rotor: str = ""):
     """A steel tube on two contact bearings, twist free at both ends, a disk on the forward end."""
-    text = f"""
-name = "free twist"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = {G_STEEL}
-density = {density}
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = {LENGTH}
-outer_diameter = {DO}
-wall_thickness = {WALL}
-material = "steel"
-fixed_start = ["u", "v", "w"]
-[[bearings]]
-name = "fore"
-kind = "contact"
-x = 0.0
-stiffness = {{ v = 1e8, w = 1e8 }}
-[[bearings]]
-name = "aft"
-kind = "contact"
-x = {LENGTH}
-stiffness = {{ v = 1e8, w = 1e8 }}
-[operating]
-speed_rpm = 3000.0
-power = 100.0e3
-[mesh]
-shaft_elements = {elements}
-[[disks]]
-name = "hub"
-x = 0.0
-mass = 1.0
-polar_inertia = {disk}
-{rotor}
-"""
+    disk_table = f'[[disks]]\nname = "hub"\nx = 0.0\nmass = 1.0\npolar_inertia = {disk}\n'
+    text = shaft_text(disk_table + rotor, '["u", "v", "w"]', density=density, elements=elements)
     return build_model(loads_design(text))
 
 

@@ -33,52 +33,16 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_torsional import K_SHAFT, shaft_text
 
 from flexshaft.analyses.torsional import torsional_modes, torsional_separation
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 
-G_STEEL = 80e9
-DO, WALL, LENGTH = 0.1, 0.005, 2.0
-J_POLAR = np.pi * (DO**4 - (DO - 2 * WALL) ** 4) / 32
-K_SHAFT = G_STEEL * J_POLAR / LENGTH
-
 
 def _text(tables: str, fixed_start: str, rpm: float = 3000.0, speed_range: str = "") -> str:
     """A steel tube on two stiff contact bearings, 8 elements, nearly massless."""
-    return f"""
-name = "torsion shapes shaft"
-[materials.steel]
-kind = "isotropic"
-E = 210e9
-G = {G_STEEL}
-density = 1e-2
-loss_factor = 0.0
-[shaft]
-x_start = 0.0
-x_end = {LENGTH}
-outer_diameter = {DO}
-wall_thickness = {WALL}
-material = "steel"
-fixed_start = {fixed_start}
-[[bearings]]
-name = "fore"
-kind = "contact"
-x = 0.0
-stiffness = {{ v = 1e8, w = 1e8 }}
-[[bearings]]
-name = "aft"
-kind = "contact"
-x = {LENGTH}
-stiffness = {{ v = 1e8, w = 1e8 }}
-[operating]
-speed_rpm = {rpm}
-power = 100.0e3
-{speed_range}
-[mesh]
-shaft_elements = 8
-{tables}
-"""
+    return shaft_text(tables, fixed_start, rpm=rpm, operating=speed_range)
 
 
 def test_two_inertia_mode_shapes_are_mass_normalised():
