@@ -5,13 +5,14 @@ References (the module's documented contract, expected strings written out by ha
 
 * ``text_table``: "numbers right-aligned, text left-aligned"; ``cell_text`` shows None as an
   em dash. A missing value in a column of numbers (a damping ratio not computed, a margin not
-  applicable) is still a column of numbers: its cells end in one column. Rows (1, 55.3219),
+  applicable) is still a column of numbers: its cells end in one column (the per-column reading
+  of the rule, derived here: the rule does not say where the dash goes). Rows (1, 55.3219),
   (2, None), (3, 120.5) under "mode" and "f [Hz]": widths max(4, 1) = 4 and max(6, 5, 1, 5) = 6,
   two spaces between columns, every cell right-justified, so
   ``"   1   55.32"``, ``"   2       —"``, ``"   3   120.5"``.
-* ``ResultMixin.plots``: "kind -> name of the method that draws it; the first entry is the
-  default": a result listing ("bode", "orbit") draws the Bode plot when no kind is given, and
-  an unknown kind is refused naming the kinds.
+* ``ResultMixin.plots`` (its ``#:`` comment, results.py): "kind -> name of the method that
+  draws it; the first entry is the default": a result listing ("bode", "orbit") draws the
+  Bode plot when no kind is given, and an unknown kind is refused naming the kinds.
 
 Exact strings (no arithmetic beyond 4-significant-figure formatting); CPU about 1 ms.
 """
@@ -29,7 +30,7 @@ def test_missing_value_keeps_a_column_of_numbers_right_aligned():
 
 
 def test_text_column_stays_left_aligned():
-    """A column of words is text even next to numbers: "FAIL" padded on the right to "status"."""
+    """A column of words is left-aligned: "FAIL" padded on the right to the width of "status"."""
     text = text_table(["check", "status"], [["onset", "FAIL"], ["strength", "PASS"]])
     assert text.splitlines()[2:] == ["onset     FAIL", "strength  PASS"]
 
