@@ -3,8 +3,9 @@
 docs/limits.md, "4. The design file" (hand-written): "``load_design`` reads regular files only
 ... of at most 1 MB (the baseline is 9 KB). Before the TOML parser runs, the text is refused if a
 line is longer than 10,000 characters, a dotted key or table header has more than 32 parts, or
-arrays and inline tables nest more than 32 deep". The project rule: a bad design file gets a
-message naming the value found and what is allowed, with the line where it is.
+arrays and inline tables nest more than 32 deep". The guards' own documented rule
+(flexshaft.design.reading's module docstring): "Each limit is reported as one Problem line naming
+the file (and the line), the value found and the limit".
 
 Each test builds its input by hand, so the expected line numbers and sizes are counted here, not
 taken from the code. No numerics: the comparisons are exact integers and strings.
@@ -19,8 +20,8 @@ import pytest
 from flexshaft.design.io import DesignError, load_design, loads_design, tuned_design
 from flexshaft.design.reading import text_problems
 
-#: Both readings of the documented size limit: docs/limits.md says 1 MB (10^6 bytes), README.md
-#: says 1 MiB (2^20 bytes); a file one byte above the larger is too large under either.
+#: docs/limits.md's "1 MB", read as SI 10^6 bytes (README: 1,000,000 bytes); one byte above
+#: 2^20 is too large under either reading of "MB".
 ABOVE_BOTH_LIMITS = 2**20 + 1
 #: Well below either reading (the baseline is 9 KB).
 BELOW_BOTH_LIMITS = 900_000
@@ -48,10 +49,10 @@ def _padded_design(total: int) -> str:
 
 
 def test_a_design_file_over_one_megabyte_is_refused_naming_the_limit(tmp_path: Path) -> None:
-    """A valid design padded to 2^20 + 1 bytes of comments exceeds the documented "at most 1 MB"
-    (1,000,000 or 1,048,576 bytes, whichever is meant): load_design and loads_design refuse it
-    with one problem naming the limit, before parsing. The same design padded to 900,000 bytes
-    is below both readings and loads."""
+    """A valid design padded to 2^20 + 1 bytes of comments exceeds the documented "at most 1 MB":
+    load_design and loads_design refuse it with one problem naming the limit as docs/limits.md
+    states it, SI 10^6 = "1,000,000" bytes, before parsing. The same design padded to 900,000
+    bytes is below the limit and loads (where between the two the refusal starts is left open)."""
     big = _padded_design(ABOVE_BOTH_LIMITS)
     path = tmp_path / "big.toml"
     path.write_text(big, encoding="utf-8")
