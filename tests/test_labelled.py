@@ -57,6 +57,21 @@ def test_nearest_selection_is_xarrays(alpha, beta):
     assert row.to_dataset().identical(want)
 
 
+@pytest.mark.parametrize("speed", [2.1, -5.0, 2.6])
+def test_selection_reduces_every_coordinate_on_the_selected_dimension(speed):
+    """A coordinate that is not its dimension's own (``rpm`` on ``speed``) is selected with it,
+    as xarray's ``sel(..., method="nearest")`` does (the reference: the Dataset built from the
+    same spec); coordinates given as ``(dim, values)`` without attributes, the form the class
+    docstring allows, are accepted. Speeds 2.1, -5 and 2.6 lie nearest 2, 1 and 3: no ties."""
+    data = {"y": ("speed", np.arange(3.0), {"units": "m"})}
+    coords = {"speed": ("speed", [1.0, 2.0, 3.0]), "rpm": ("speed", [10.0, 20.0, 30.0], {"units": "rpm"})}
+    arrays, ds = LabelledArrays(data, coords), xr.Dataset(data, coords=coords)
+    assert arrays.to_dataset().identical(ds)
+    got, want = arrays.sel(speed=speed), ds.sel(speed=speed, method="nearest")
+    assert got.to_dataset().identical(want)
+    assert float(got.rpm) == float(want.rpm) and got.sizes == dict(want.sizes) == {}
+
+
 def test_other_dataset_attributes_come_from_the_dataset(tmp_path):
     data, coords, attrs = _spec()
     arrays = LabelledArrays(data, coords, attrs)

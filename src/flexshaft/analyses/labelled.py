@@ -116,13 +116,14 @@ class LabelledArrays(Mapping[str, LabelledArray]):
         self.attrs: dict[str, Any] = dict(attrs or {})
         self._coords: dict[str, LabelledArray] = {}
         for name, spec in (coords or {}).items():
-            dims, values, cattrs = spec if isinstance(spec, tuple) else (name, spec, {})
+            dims, values, *extra = spec if isinstance(spec, tuple) else (name, spec)
             dims = (dims,) if isinstance(dims, str) else tuple(dims)
+            cattrs = extra[0] if extra else {}
             coord = LabelledArray(dims, values, cattrs)
-            if coord.dims == (name,):  # a dimension coordinate selects on itself
-                coord.coords[name] = coord.values
             self._coords[name] = coord
         axes = {name: c.values for name, c in self._coords.items() if c.dims == (name,)}
+        for coord in self._coords.values():  # every coordinate selects on its dimensions' axes
+            coord.coords.update({d: axes[d] for d in coord.dims if d in axes})
         self._vars: dict[str, LabelledArray] = {}
         for name, spec in data_vars.items():
             dims, values, *rest = spec
@@ -175,7 +176,7 @@ class LabelledArrays(Mapping[str, LabelledArray]):
             data[name] = (s.dims, s.values, s.attrs)
         coords = {}
         for name, c in self._coords.items():
-            s = c.sel({d: x for d, x in picks.items() if d in c.dims}, method=method) if c.dims == (name,) else c
+            s = c.sel({d: x for d, x in picks.items() if d in c.dims}, method=method)
             coords[name] = (s.dims, s.values, s.attrs)
         return LabelledArrays(data, coords, self.attrs)
 
