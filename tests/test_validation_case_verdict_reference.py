@@ -1,11 +1,13 @@
 """Each case's own verdict in the validation outputs (JSON report and docs/validation.md's table).
 
-The rule (flexshaft.validation.runner's module docstring, docs/validation.md "How to read a
-case"): a case passes when every one of *its* values lies within *its* relative tolerance,
-|computed/published − 1| <= tolerance; the run passes when every case does. So in a run where one
-case fails, the outputs that list the cases one by one (``report_json``'s ``cases[i]["passed"]``
-and the "result" column of :func:`~flexshaft.validation.runner.markdown`) must single that case
-out and still show the others as passing, while the run's own verdict is the failure.
+The rule (flexshaft.validation.runner's module docstring; docs/validation.md: "The command exits 0
+when every case lies within its tolerance and 3 ... when one does not", and its "Results": "the
+differences (flexshaft / published − 1) to 0.001 %"): a case passes when every one of *its* values
+lies within *its* relative tolerance, |computed/published − 1| <= tolerance; the run passes when
+every case does. So in a run where one case fails, the outputs that list the cases one by one
+(``report_json``'s ``cases[i]["passed"]`` and the "result" column of
+:func:`~flexshaft.validation.runner.markdown`) must single that case out and still show the others
+as passing, while the run's own verdict is the failure.
 
 The values are set by hand through a stand-in quantity (no design is built): every case computes
 1.0; the published values 1.0, 1.01, 1.0002 with a 0.1 % tolerance give the differences
@@ -68,8 +70,13 @@ def test_the_json_verdict_of_each_case_is_its_own(mixed_report):
 
 
 def test_the_markdown_result_column_marks_only_the_failing_case(mixed_report):
-    """The last column of each case's first row reads "pass", "**FAIL**", "pass"."""
+    """The last column of each case's first row reads "pass", "**FAIL**", "pass"; the tolerance
+    column reads 1e-3 as "0.1 %" and the failing and last cases' differences, rounded by hand to
+    0.001 % (docs/validation.md, "Results"), read "-0.990 %" and "-0.020 %"."""
     table = runner.markdown(mixed_report).split("\n### Cases")[0]
     rows = [line for line in table.splitlines() if line.startswith("| [`")]
     verdicts = {row.split("`")[1]: row.rstrip(" |").rsplit("| ", 1)[1] for row in rows}
+    cells = [[cell.strip() for cell in row.strip("| ").split("|")] for row in rows]
+    assert [c[-2] for c in cells] == ["0.1 %"] * 3
+    assert [c[-3] for c in cells[1:]] == ["-0.990 %", "-0.020 %"]
     assert verdicts == {"first": "pass", "off": "**FAIL**", "last": "pass"}
