@@ -23,7 +23,7 @@ Tolerance 2e-3 (derived): 36 phases sample the revolution every δ = 10°, so th
 instant lies within δ/2 of the true worst. With a circular whirl (isotropic supports) the bending
 strain there, √(a² + b² + 2ab cos(δ/2)) with a = |κ_s|, b = |κ_d|, is below the peak a + b by a
 relative ab(δ/2)²/(2(a + b)²) ≤ (δ/2)²/8 = 9.5e-4; the factor varies at most like 1/strain, so
-the samples agree to ~1e-3 (measured 4e-4). Six samples on a 2-speed grid: ~0.07 s after the
+the samples agree to ~1e-3 (measured 1.6e-4). Six samples on a 2-speed grid: ~0.07 s after the
 suite's first Monte-Carlo run has paid the lazy imports.
 """
 
