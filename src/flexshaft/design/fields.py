@@ -119,7 +119,7 @@ ZERO3 = (0.0, 0.0, 0.0)
 class FrozenModel(BaseModel):
     """Base of every design-file model: unknown keys are refused, instances are immutable."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
 
 
 # ------------------------------------------------------------------------------------------------
