@@ -3,8 +3,9 @@ peaks, against the documented key rules and the assessment's SI results.
 
 References: README ("Interfaces", ``--json``): absolute temperatures in °C under ``_c`` keys, so a
 boom skin temperature T [K] appears as T − 273.15 (the Celsius scale's definition); a ``_W`` key
-is a power, and the shaft's heat is the power dissipated over the whole shaft, the integral of
-the heat per unit length, Σ q'ᵢ Δxᵢ over the elements (derived here); ``actuator_max_*`` are the
+is a power, and the shaft's heat is the power dissipated over the whole shaft: docs/thermal.md,
+"Shaft heat generation", P = (ω/2) Re(Xᴴ K'' X) per element, summed over the elements;
+``actuator_max_*`` are the
 largest values over the spin-up scan (the key's name: the maximum, not the value at the
 operating speed). The design is the tests' small run design (conftest.RUN_DESIGN: the Table 3.1
 baseline on 4 shaft and 2 boom elements, two magnetic bearings) judged at its own operating
@@ -52,16 +53,15 @@ def test_tailboom_temperatures_in_celsius(run):
 
 
 def test_shaft_heat_is_the_power_over_the_whole_shaft(run):
-    """``thermal.shaft_<model>.heat_W``: the dissipated power of the whole shaft, Σ q'ᵢ Δxᵢ of
-    the heat per unit length over the elements; several elements carry heat, so one element's
-    heat (the largest) is less than the total."""
+    """``thermal.shaft_<model>.heat_W``: the dissipated power of the whole shaft, the sum of the
+    elements' powers P = (ω/2) Re(Xᴴ K'' X); several elements carry heat, so one element's heat
+    (the largest) is less than the total."""
     a, data = run
     assert a.thermal.shaft
     for model, s in a.thermal.shaft.items():
-        q_per_length, dx = s.sources.per_length, np.diff(s.sources.x)
-        total = float(np.sum(q_per_length * dx))
+        heats = np.asarray(s.sources.total, dtype=float)
+        total = float(np.sum(heats))
         assert data["thermal"][f"shaft_{model}"]["heat_W"] == pytest.approx(total, rel=1e-12)
-        heats = q_per_length * dx
         assert np.count_nonzero(heats > 0.0) >= 2
         assert float(np.max(heats)) < total * (1.0 - 1e-6)
 
@@ -69,7 +69,7 @@ def test_shaft_heat_is_the_power_over_the_whole_shaft(run):
 def test_actuator_peaks_are_the_largest_over_the_scan(run):
     """``imbalance.actuator_max_force_N`` / ``actuator_max_displacement_m``: each magnetic
     bearing's largest force [N] and displacement [m] over the spin-up scan's speeds. On this
-    design the force is not largest at the operating speed (the scan goes past it), so the
+    design the force is not largest at the operating speed (a critical below the operating speed), so the
     force at the operating sample would read short."""
     a, data = run
     sp, imb = a.spinup, data["imbalance"]
