@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 from types import SimpleNamespace
 
+from flexshaft.design.loads import Operating
 from flexshaft.verdict.envelope_text import envelope_rows
 from flexshaft.verdict.result import Check, Verdict
 from flexshaft.verdict.text import location_text, verdict_headline, verdict_rows
@@ -75,7 +76,7 @@ def _point(name: str, verdict: Verdict, ambient_c: float, material_c: float, pow
     conditions = SimpleNamespace(
         ambient_temperature_c=ambient_c, material_temperature_c=material_c, point=SimpleNamespace(load_scale=1.25)
     )
-    design = SimpleNamespace(operating=SimpleNamespace(speed_rpm=4800.0, power=power_w))
+    design = SimpleNamespace(operating=Operating(speed_rpm=4800.0, power=power_w))  # the schema's own
     return SimpleNamespace(name=name, verdict=verdict, analyses=SimpleNamespace(design=design, conditions=conditions))
 
 

@@ -104,9 +104,9 @@ def run(
 
         if (message := missing_extra("flexshaft run --interactive")) is not None:  # before any computation
             fail(message)  # how to install the extra
-    if studies is not Studies.none and not loaded.design.operating.speed_rpm > 0:
+    if studies is not Studies.none and not loaded.design.operating.speed_rad_s > 0:
         # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
-        typer.echo("note: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0): skipped", err=True)
+        typer.echo("note: the thesis studies need an operating speed > 0 (the design's is 0): skipped", err=True)
         studies = Studies.none
     from flexshaft.assembly.size import check_problem_size
     from flexshaft.resolution import REPORT
@@ -178,7 +178,7 @@ def run_pipeline(
     from flexshaft.verdict.assess import assess
 
     # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
-    with_studies = studies is not Studies.none and loaded.design.operating.speed_rpm > 0
+    with_studies = studies is not Studies.none and loaded.design.operating.speed_rad_s > 0
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
     check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
     # No xarray in this process: the studies' results travel as plain arrays

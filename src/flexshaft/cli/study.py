@@ -448,8 +448,10 @@ def _check_spinup_map(design, n_gains: int, n_speeds: int) -> None:
             'study spinup-map: the design has no active bearing (kind = "active"): the map varies the '
             "proportional and derivative gains of the active bearings"
         )
-    if not design.operating.speed_rpm > 0:
-        fail("study spinup-map: the design's operating speed is 0 (operating.speed_rpm = 0): the spin-up ends there")
+    if not design.operating.speed_rad_s > 0:
+        fail(
+            "study spinup-map: the design's operating speed is 0 (operating.speed_rpm or speed): the spin-up ends there"
+        )
     check_spinup_map(design, n_gains, n_speeds)
 
 
@@ -516,8 +518,8 @@ def _check_studies(design) -> None:
     from flexshaft.assembly.size import check_problem_size
     from flexshaft.cli.common import fail
 
-    if not design.operating.speed_rpm > 0:
-        fail("study all: the thesis studies need an operating speed > 0 (operating.speed_rpm = 0)")
+    if not design.operating.speed_rad_s > 0:
+        fail("study all: the thesis studies need an operating speed > 0 (operating.speed_rpm or speed is 0)")
     check_problem_size(design, "run")
 
 

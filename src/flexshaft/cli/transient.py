@@ -223,8 +223,8 @@ def montecarlo(
     client = dask_client(dask)  # checked and connected before anything is prepared
     from flexshaft.cli.bounds import check_montecarlo, workers_of
 
-    if not loaded.design.operating.speed_rpm > 0:
-        fail("--grade: a balance grade G = e Ω needs an operating speed (the design has operating.speed_rpm = 0)")
+    if not loaded.design.operating.speed_rad_s > 0:
+        fail("--grade: a balance grade G = e Ω needs an operating speed (the design's operating speed is 0)")
     check_montecarlo(loaded.design, samples, workers_of(jobs, client))
     folder = prepare_output_folder(
         default_output_folder(design, "montecarlo") if out is None else out,

@@ -34,7 +34,7 @@ from flexshaft.design.quantities import (
     Station,
     quantity_field,
 )
-from flexshaft.units import rpm_to_rad_s
+from flexshaft.units import rad_s_to_rpm, rpm_to_rad_s
 
 __all__ = ["MAX_SPEED_RPM", "LineLoad", "Loads", "Operating", "PointLoad"]
 
@@ -170,6 +170,11 @@ class Operating(FrozenModel):
             return self.speed
         assert self.speed_rpm is not None
         return rpm_to_rad_s(self.speed_rpm)
+
+    @property
+    def rpm(self) -> float:
+        """Shaft speed [rpm]: ``speed_rpm`` as written, else ``speed`` converted."""
+        return self.speed_rpm if self.speed_rpm is not None else rad_s_to_rpm(self.speed_rad_s)
 
     @property
     def speed_limits(self) -> tuple[float, float]:

@@ -170,7 +170,7 @@ def _envelope_dict(a: Assessment) -> dict | None:
                 "name": p.name,
                 "ambient_temperature_c": conditions.ambient_temperature_c,
                 "material_temperature_c": conditions.material_temperature_c,
-                "speed_rpm": rpm_or_none(operating.speed) if operating.speed_rpm is None else operating.speed_rpm,
+                "speed_rpm": operating.rpm,
                 "power_W": operating.power,
                 "load_scale": conditions.point.load_scale,
                 "passed": p.verdict.passed,

@@ -4,7 +4,7 @@ tightest check) and the governing point in one line, for the HTML report and the
 
 from __future__ import annotations
 
-from flexshaft.units import format_quantity, rad_s_to_rpm
+from flexshaft.units import format_quantity
 from flexshaft.verdict.envelope import tightest_check
 from flexshaft.verdict.text import limit_text
 
@@ -48,7 +48,7 @@ def envelope_rows(assessment) -> list[list[str]]:
                 p.name + (" (governs)" if p.name == assessment.governing_point else ""),
                 f"{conditions.ambient_temperature_c:.1f}",
                 f"{conditions.material_temperature_c:.1f}",
-                f"{rad_s_to_rpm(operating.speed) if operating.speed_rpm is None else operating.speed_rpm:.0f}",
+                f"{operating.rpm:.0f}",
                 f"{operating.power / 1e3:.1f}",
                 f"{conditions.point.load_scale:.3g}",
                 f"FAIL {failed}/{len(p.verdict.checks)}" if failed else "PASS",
