@@ -1,13 +1,16 @@
 """The run report shows the numbers its verdict uses (report/run_sections.py, report/driveline.py).
 
-The project's rule for the report: its figures and text show what the verdict uses. The
-reference of each test is the assessment's own verdict, read through its public checks (value,
-limit, location) and converted by hand from the unit definitions (derived): rpm = 60·Ω/(2π);
-°C = K − 273.15; degrees = radians·180/π. The hand-written docs/requirements.md says which
-requirement each check reads (``loop_sensitivity`` → ``max_sensitivity_peak``,
-``loop_gain_margin`` → ``min_gain_margin_db``, ``loop_phase_margin`` → ``min_phase_margin_deg``)
-and that the actuator checks judge the static offset plus the spin-up orbit (force) of each
-active bearing.
+The rule, from the hand-written docs: "The report formats an `Assessment` (and the thesis studies
+beside it); it computes nothing physical." (docs/architecture.md:99-100); "The assessment's own
+analyses (the report's figures, `results.json`'s numbers) are those of the **governing point**"
+(docs/requirements.md:142-143), and the report's "Magnetic-bearing loops" section (each loop's
+sensitivity peak, margins and a figure with the requirements) is drawn "where the
+sensitivity-peak check governs" (docs/requirements.md:160-163). Here the design has one
+operating point, so the report's numbers are those of the verdict's checks. The reference of
+each test is the assessment's own verdict, read through its public checks (value, limit,
+location) and converted by hand from the unit definitions (derived): rpm = 60·Ω/(2π);
+°C = K − 273.15; degrees = radians·180/π. Where a test rests on a row of the requirements table
+(docs/requirements.md) it quotes it.
 
 The assessment is the session's ``tuned_nominal_screening`` (the embedded tuned design at its
 own operating point, SCREENING resolution: two magnetic bearings, loops, the self-heating
@@ -17,6 +20,7 @@ plan only records figure jobs (nothing is drawn): each test takes a few millisec
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from types import SimpleNamespace as NS
@@ -42,8 +46,11 @@ def _rpm(rad_s: float) -> float:
 def test_loop_paragraph_states_the_limits_of_the_loop_checks(tuned_nominal_screening, tmp_path):
     """The "Required:" sentence of the loops section gives each loop check's own limit: |S|max ≤
     the loop_sensitivity limit, gain margin ≥ the loop_gain_margin limit [dB], phase margin ≥ the
-    loop_phase_margin limit converted from radians to degrees. The sentence prints them with
-    ``:g`` (6 significant digits), so the comparison is to 1e-5 relative."""
+    loop_phase_margin limit converted from radians to degrees. docs/requirements.md:109-111 says
+    which requirement each check reads: ``loop_sensitivity`` … ``max_sensitivity_peak``,
+    ``loop_gain_margin`` … ``min_gain_margin_db``, ``loop_phase_margin`` …
+    ``min_phase_margin_deg``. The sentence prints them with ``:g`` (6 significant digits), so
+    the comparison is to 1e-5 relative."""
     a = tuned_nominal_screening
     section = loops_section(a, Figures(tmp_path))
     assert section is not None
@@ -62,7 +69,10 @@ def test_loop_paragraph_states_the_limits_of_the_loop_checks(tuned_nominal_scree
 def test_loop_table_peak_is_the_sensitivity_checks_reading(tuned_nominal_screening, tmp_path):
     """The Loop margins table's |S|max of the loop where the loop_sensitivity check governs is the
     check's value, the ratio max |S(iω)| it compares with max_sensitivity_peak (not in dB), and
-    its "at [Hz]" the check's frequency [rad/s] / 2π. The same doubles pass through (1e-12)."""
+    its "at [Hz]" the check's frequency [rad/s] / 2π. The ratio is what the requirement grades:
+    "zone A below 3 (9.5 dB), B below 4 (12 dB)" (docs/requirements.md:75), and the
+    loop_sensitivity check reads ``max_sensitivity_peak`` (docs/requirements.md:109). The same
+    doubles pass through (1e-12)."""
     a = tuned_nominal_screening
     check = a.verdict.check("loop_sensitivity")
     (table,) = loops_section(a, Figures(tmp_path)).tables
@@ -75,8 +85,9 @@ def test_loop_table_peak_is_the_sensitivity_checks_reading(tuned_nominal_screeni
 
 def test_stable_to_is_the_whirl_onset_checks_reading(tuned_nominal_screening, tmp_path):
     """The tuned design has no whirl onset in its scan: the whirl_onset check's value is the top of
-    the scan it found stable [rad/s] (above its limit, (1 + margin) × Ω_op), and the onset table
-    says "stable to" that speed in rpm = 60·Ω/(2π), printed to the rpm."""
+    the scan it found stable [rad/s] (above its limit, (1 + margin) × Ω_op): "with no onset up to
+    the highest speed analysed, that speed as a lower bound" (docs/requirements.md:103). The
+    onset table says "stable to" that speed in rpm = 60·Ω/(2π), printed to the rpm."""
     a = tuned_nominal_screening
     check = a.verdict.check("whirl_onset")
     assert a.stability.onset_speed is None and check.value > check.limit
@@ -88,7 +99,9 @@ def test_stable_to_is_the_whirl_onset_checks_reading(tuned_nominal_screening, tm
 
 def test_actuator_figure_marks_what_the_actuator_checks_judge(tuned_nominal_screening, tmp_path):
     """The actuator figure marks, per bearing, the excursion (static offset + spin-up orbit) and
-    the force (static + spin-up) the actuator checks judge, at their speeds in rpm. For the
+    the force (static + spin-up) the actuator checks judge, at their speeds in rpm: "The static
+    offset is added to the orbit amplitude (and the static force to the force amplitude)"
+    (docs/requirements.md:116-117). For the
     bearing where each check governs the mark is the check's value and speed. The mark is the
     same sum of the same two doubles as the check's value (1 ulp at most, hence 1e-12 relative);
     the speed is converted here, rpm = 60·Ω/(2π) (1e-12 relative: one multiplication)."""
@@ -109,7 +122,9 @@ def test_actuator_figure_marks_what_the_actuator_checks_judge(tuned_nominal_scre
 
 def test_safety_factor_figure_dashes_the_tsai_wu_limit(tuned_nominal_screening, tmp_path):
     """The strength figure's dashed required factor is the tsai_wu check's limit (the design's
-    min_safety_factor), not another requirement's (the buckling factor's 2.0 differs from it)."""
+    min_safety_factor: the tsai_wu row reads ``min_safety_factor``, the buckling row
+    ``min_buckling_safety_factor``, docs/requirements.md:100, 102), not another requirement's
+    (the buckling factor's 2.0 differs from it)."""
     a = tuned_nominal_screening
     required = _job(plan_run_report(a, tmp_path), "safety_factor").kwargs["required"]
     assert required == a.verdict.check("tsai_wu").limit
@@ -123,11 +138,18 @@ def _margin(text: str) -> float:
 
 
 def test_self_heating_margin_is_the_temperature_checks(tuned_nominal_screening, tmp_path):
-    """The thermal section's "margin to the allowable temperature" is the temperature check's
-    limit − value [K] (the allowable above the largest shaft temperature: positive when the check
-    passes), in both of the section's forms: the screening one (the self-heating equilibrium
-    alone) and the report's (with shaft profiles; a stand-in profile, the assessment's own
-    self-heating result). Printed with one decimal: to 0.05 K."""
+    """The thermal section's "margin to the allowable temperature" is the self-heating
+    equilibrium's margin. Here it equals the temperature check's limit − value [K] (the allowable
+    above the largest shaft temperature: positive when the check passes) because at the design's
+    own operating point, with no hot-soaked start, the check's value is the self-heating
+    equilibrium ("maximum shaft temperature: the self-heating equilibrium, or the material
+    temperature of a hot-soaked start when it is higher", docs/requirements.md:112); with a
+    hotter hot-soak start or another governing point the two would differ. Both of the section's
+    forms are read: the screening one (the self-heating equilibrium alone) and the report's (with
+    shaft profiles; a stand-in profile, the assessment's own self-heating result). The stand-in
+    is the fixture's assessment with only its thermal result's shaft profiles replaced
+    (``dataclasses.replace``), so every other field (points, governing point) is real. Printed
+    with one decimal: to 0.05 K."""
     a = tuned_nominal_screening
     check = a.verdict.check("temperature")
     expected = check.limit - check.value
@@ -142,22 +164,19 @@ def test_self_heating_margin_is_the_temperature_checks(tuned_nominal_screening, 
         sources=NS(total=np.array([1.0]), vibration=np.array([0.5]), static=np.array([0.5])),
         peak_rise=2.85,
     )
-    thermal = NS(
-        environment=NS(ambient_temperature=303.15),
-        shaft={"rotating": shaft},
-        tailboom={},
-        self_heating=a.thermal.self_heating,
-        profiles=None,
-        loss_model="rotating",
-    )
-    report = thermal_section(NS(thermal=thermal), Figures(tmp_path))
+    assert a.thermal is not None and a.thermal.self_heating is not None
+    thermal = dataclasses.replace(a.thermal, shaft={"rotating": shaft}, tailboom={}, profiles=None)
+    report = thermal_section(dataclasses.replace(a, thermal=thermal), Figures(tmp_path))
     assert _margin(" ".join(report.paragraphs)) == pytest.approx(expected, abs=0.05 + 1e-9)
 
 
-def test_tailboom_table_in_celsius(tmp_path):
+def test_tailboom_table_in_celsius(tuned_nominal_screening, tmp_path):
     """The tailboom table's [°C] column: a hover skin at 317.15 K is 44.0 °C (the thesis's hover
     value the caption quotes), a parked one at 362.15 K 89.0 °C; °C = K − 273.15 (1e-9: one
-    subtraction of numbers of order 300)."""
+    subtraction of numbers of order 300). The stand-in is the fixture's assessment with its
+    thermal result's shaft profiles and tailboom replaced (``dataclasses.replace``): its other
+    fields (points, governing point) are real."""
+    a = tuned_nominal_screening
     x = np.array([0.0, 1.0])
     shaft = NS(
         temperature=NS(
@@ -174,15 +193,11 @@ def test_tailboom_table_in_celsius(tmp_path):
         "hover": boom("hover", 317.15, 30.0, "churchill_bernstein"),
         "parked": boom("parked", 362.15, 5.0, "morgan"),
     }
-    thermal = NS(
-        environment=NS(ambient_temperature=303.15),
-        shaft={"rotating": shaft},
-        tailboom=tailboom,
-        self_heating=None,
-        profiles=None,
-        loss_model="rotating",
+    assert a.thermal is not None
+    thermal = dataclasses.replace(
+        a.thermal, shaft={"rotating": shaft}, tailboom=tailboom, self_heating=None, profiles=None
     )
-    section = thermal_section(NS(thermal=thermal), Figures(tmp_path))
+    section = thermal_section(dataclasses.replace(a, thermal=thermal), Figures(tmp_path))
     (table,) = [t for t in section.tables if t.caption.startswith("Tailboom skin temperature")]
     assert list(table.columns)[:3] == ["condition", "temperature [°C]", "h [W/m² K]"]
     rows = {row[0]: row for row in table.rows}
