@@ -145,6 +145,7 @@ def _result(onset_rpm, speeds):
 def _stability(tmp_path):
     speeds = np.array([_rad_s(1000), _rad_s(3000), _rad_s(6000)])
     a = NS(
+        points=(),  # one operating point: the sections show the assessment's own analyses
         stability=_result(None, speeds),
         modes_at_speed=None,  # no modes at the operating speed: no curve greyed out
         model=NS(speed=_rad_s(4800)),
@@ -217,7 +218,7 @@ def test_self_heating_table_in_celsius_and_watts(tmp_path):
     """Air 313.15 K = 40 °C, h 25, vibration heat 1 + 2 = 3 W, static 0.5 + 1 = 1.5 W, rise 6.85 K;
     ambient 303.15 K = 30.0 °C."""
     sh = NS(status="converged", iterations=4, margin=12.5, max_temperature=353.15)
-    section = thermal_section(NS(thermal=_thermal({"rotating": _shaft()}, sh)), Figures(tmp_path))
+    section = thermal_section(NS(points=(), thermal=_thermal({"rotating": _shaft()}, sh)), Figures(tmp_path))
     table = _table(section, "Shaft self-heating")
     assert list(table.columns) == [
         "loss model",
@@ -236,6 +237,6 @@ def test_self_heating_table_in_celsius_and_watts(tmp_path):
 def test_self_heating_alone_peak_in_celsius(tmp_path):
     """Without shaft profiles: the peak 353.15 K is 80.0 °C."""
     sh = NS(status="converged", iterations=4, margin=12.5, max_temperature=353.15)
-    section = thermal_section(NS(thermal=_thermal({}, sh)), Figures(tmp_path))
+    section = thermal_section(NS(points=(), thermal=_thermal({}, sh)), Figures(tmp_path))
     (text,) = section.paragraphs
     assert "peak 80.0 °C" in text and "margin to the allowable temperature 12.5 K" in text

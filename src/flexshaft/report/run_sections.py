@@ -8,6 +8,7 @@ Each returns a :class:`~flexshaft.report.html.Section` and adds its figures' job
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -20,9 +21,10 @@ from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profile
 from flexshaft.report.html import FigureRef, Section, Table
 from flexshaft.report.results_json import rpm_or_none
 from flexshaft.thesis.report_studies import ThesisStudies
-from flexshaft.units import kelvin_to_celsius, m_to_mm, rad_s_to_rpm
+from flexshaft.units import format_quantity, kelvin_to_celsius, m_to_mm, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment
 from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits, judged_whirl_modes
+from flexshaft.verdict.text import limit_text, location_text
 
 __all__ = [
     "Figures",
@@ -330,6 +332,36 @@ def check_point(a: Assessment, key: str) -> str:
         return a.governing_point
 
 
+def _where_governs(a: Assessment, key: str, what: str) -> tuple[Any, str]:
+    """The analyses of the point where check ``key`` governs (the assessment's own, the governing
+    point's, when it is that point or the design has one) and a caption clause naming the point
+    (empty for one point): ``what`` is the check's name in the clause."""
+    if len(a.points) <= 1:
+        return a, ""
+    name = check_point(a, key)
+    analyses = a if name == a.governing_point else a.point(name).analyses
+    return analyses, f" ({name}, where the {what} check governs)"
+
+
+def _governing_sentence(a: Assessment, key: str) -> str:
+    """' The <check> governs at <point>: <value> (required <limit>), <where>.' for a design with
+    several points (empty otherwise, or without that check): the verdict's number beside a
+    section drawn at another point."""
+    if len(a.points) <= 1:
+        return ""
+    try:
+        c = a.verdict.check(key)
+    except KeyError:
+        return ""
+    if c.value is None:
+        return ""
+    where = location_text({k: v for k, v in c.location.items() if k != "point"})
+    return (
+        f" The {c.title} check governs at {c.location.get('point', a.governing_point)}: "
+        f"{format_quantity(c.kind, c.value)} (required {limit_text(c)})" + (f", {where}" if where else "") + "."
+    )
+
+
 def _orbit_mm(pair) -> float:
     """Major semi-axis of the orbit of a (v, w) amplitude pair [m], in mm."""
     v, w = pair
@@ -345,7 +377,11 @@ def _onset_text(speed: float | None, top: float) -> str:
 def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures, op_rpm: float) -> Section:
     """Whirl stability: the design's log decrements beside the thesis's three shafts, the onset
     speeds and the onset over the actuator gains."""
-    st = a.stability
+    # the log decrements where the whirl-damping check governs, the onset and the every-root
+    # check where the onset check does (the governing point's analyses when it is theirs)
+    damped, damped_at = _where_governs(a, "whirl_damping", "whirl-damping")
+    onset, onset_at = _where_governs(a, "whirl_onset", "whirl-onset")
+    st = damped.stability
     comparison = thesis.shaft_comparison if thesis is not None else {}
     gain_map = thesis.gain_map if thesis is not None else None
     top = st.speeds[-1]
@@ -369,11 +405,11 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
         for extra in list(curves)[1:]:  # the four dicts have the same keys, the design first
             del curves[extra], onsets[extra], texts[extra], whirl[extra]
     required = a.design.requirements.required_log_decrement
-    judged = _judged_modes(a)
+    judged = _judged_modes(damped)
     figures.append(
         figs.add(
             "stability_log_decrement",
-            "Log decrement of the tracked modes against speed, the onset of "
+            f"Log decrement of the tracked modes against speed{damped_at}, the onset of "
             "whirl instability marked ✕ (the thesis's three reference shafts "
             "with the viscous-equivalent internal damping, figures 4.2-4.4); grey: the design's modes the "
             "whirl log-decrement requirement does not judge (torsional, or less than "
@@ -390,7 +426,7 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
         )
     )
     tables = []
-    rows = [["this design", _onset_text(st.onset_speed, top), "—"]]
+    rows = [["this design" + onset_at, _onset_text(onset.stability.onset_speed, onset.stability.speeds[-1]), "—"]]
     rows += [
         [label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]
         for label, m in comparison.items()
@@ -398,10 +434,10 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
     tables.append(
         Table("Onset speed of whirl instability [rpm]", ["shaft", "viscous equivalent", "exact hysteretic"], rows)
     )
-    roots = a.roots
+    roots = onset.roots
     tables.append(
         Table(
-            f"Every root of the closed loop ({roots.coverage()})",
+            f"Every root of the closed loop{onset_at} ({roots.coverage()})",
             ["speed [rpm]", "roots", "least damping ratio ζ", "unstable roots"],
             [
                 [rad_s_to_rpm(v), int(n), float(z), int(u)]
@@ -449,6 +485,13 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
     """Tailboom and shaft temperatures, the self-heating equilibrium and the thermal sweeps."""
     th = a.thermal
     assert th is not None  # the report adds this section only with a thermal result (report/driveline.py)
+    # the thermal results are the governing point's (only it has the report's detail): the
+    # temperature check's own value is named beside them when it governs elsewhere
+    at, verdict = "", ""
+    if len(a.points) > 1:
+        at = f" at {a.governing_point}"
+        if check_point(a, "temperature") != a.governing_point:
+            verdict = _governing_sentence(a, "temperature")
     env = th.environment
     shafts = th.shaft
     if not shafts:  # below the report's detail: the self-heating equilibrium alone
@@ -457,10 +500,10 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
         return Section(
             "Thermal",
             paragraphs=[
-                f"Self-heating with temperature-dependent matrix properties ({th.loss_model} loss model): "
+                f"Self-heating{at} with temperature-dependent matrix properties ({th.loss_model} loss model): "
                 f"{sh.status} after {sh.iterations} iterations; peak {kelvin_to_celsius(sh.max_temperature):.1f} °C, "
-                f"margin to the allowable temperature {sh.margin:.1f} K. The report's resolution adds the tailboom, "
-                "both loss models and the thermal-design sweeps."
+                f"margin to the allowable temperature {sh.margin:.1f} K.{verdict} The report's resolution adds the "
+                "tailboom, both loss models and the thermal-design sweeps."
             ],
         )
     first = next(iter(shafts.values()))
@@ -506,13 +549,13 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
     sh = th.self_heating
     if sh is not None:
         paragraphs.append(
-            f"Self-heating with temperature-dependent matrix properties: {sh.status} after "
-            f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K."
+            f"Self-heating{at} with temperature-dependent matrix properties: {sh.status} after "
+            f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.{verdict}"
         )
     figures = [
         figs.add(
             "shaft_temperature",
-            "Shaft temperature rise and heat generation along the shaft",
+            f"Shaft temperature rise and heat generation along the shaft{at}",
             shaft_temperature_figure,
             x,
             rise,
