@@ -1,7 +1,8 @@
 """The screened match must not leave out an upper-branch root that a curve matches best.
 
 Reference: the match of the previous curves to every hysteretic root with every vector, built
-here from dense eigen-solutions (scipy.linalg.eig) of the two branches' first-order matrices
+from dense eigen-solutions (scipy.linalg.eig; the reference and the match are those of
+tests/test_screened_match_reference.py, imported) of the two branches' first-order matrices
 ``[[0, I], [−K, −D]]``, K = Λ + w_F F + w_L L + w_S S, D = ΩG + C, with the rotating-frame loss
 weights derived in tests/test_damping.py and the docstring of
 flexshaft.analyses.hysteretic_roots: ``(i, i, 0)`` above the spin, ``(i, 0, 1)`` below it; R(Ω)
@@ -13,18 +14,18 @@ The model: six modal coordinates (Λ = diag ω², ω 100-548 rad/s), gyroscopic 
 lowest only, a dashpot ``c b bᵀ`` that the top mode barely sees (b₆ = 0.01), loss matrices
 F = 0.005 Λ, L = 0.02 Λ (diagonal) and a circulatory S in the gyroscopic pairs. So the top
 mode (ω₆ ≈ 548 rad/s) is nearly decoupled: its upper-branch root s₆ is left out of the
-screened match's candidates (|s₆| > 2 × the largest curve's |s| ≈ 2 × 244 rad/s) and only the
-bound of its MAC can keep it.
+screened match's candidates (|s₆| > _BAND × the largest curve's |s| ≈ 2 × 240 rad/s) and only
+the bound of its MAC can keep it.
 
 Why the bound must be the upper branch's (derived here). The screen bounds |y₆ᴴv| for the unit
 null vector y₆ of the upper branch's ``T₊(s₆)``: its diagonal term T₊,66(s₆) vanishes to first
 order in the weak coupling (y₆ ≈ e₆), so the row bound is u₆ = 1 and a curve whose shape is
-y₆ may cost s₆ only 0.1 |Δω|/ω ≈ 0.16, below every candidate's ≈ 1: the match is not certain
+y₆ may cost s₆ only 0.1 |Δω|/ω ≈ 0.13, below every candidate's ≈ 1: the match is not certain
 and the screen returns None (the caller solves every vector). The lower branch's ``T₋(s₆)``
 differs on the diagonal by the loss, T₋,66 − T₊,66 = −i·0.02 ω₆² ≈ −6000i rad²/s², against an
 off-diagonal row of |s₆| c b₆ ‖b‖ ≈ 548 · 20 · 0.01 · 1.5 ≈ 170 rad²/s², so a bound taken from it
-would be u₆ ≈ 0.03 and would exclude s₆: the screen would then hand that curve a wrong
-candidate.
+would be u₆ ≤ 0.03 on the first step (2e-4 after the iteration) and would exclude s₆: the
+screen would then hand that curve a wrong candidate.
 
 Tolerances: the dense roots err by about ε‖A‖ ≈ 7e-11 rad/s (1e-12 relative to |s| >= 80);
 1e-9 relative is asserted on the roots; the match is a set of indices (exact), chosen by cost
@@ -34,20 +35,15 @@ margins of 0.8 and more (no ties).
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as la
-from scipy.optimize import linear_sum_assignment
+from test_screened_match_reference import N_CURVES, PREVIOUS, SPEED, _reference_match, consistent_from
 
 from flexshaft.analyses.eigen import ReducedModel
-from flexshaft.analyses.loss import LossCoefficients
-from flexshaft.analyses.screened_match import screened_match
-
-ABOVE = LossCoefficients(1j, 1j, 0.0)
-BELOW = LossCoefficients(1j, 0.0, 1.0)
-SPEED, PREVIOUS = 150.0, 135.0
-N_CURVES = 4
+from flexshaft.analyses.screened_match import _BAND, screened_match
 
 
 def _model() -> ReducedModel:
+    """The model of tests/test_screened_match_reference.py but for b₆ = 0.01 (the dashpot barely
+    reaches the top mode) and no third gyroscopic pair (the top mode is not paired)."""
     w2 = np.array([1.0, 1.05, 4.0, 4.3, 16.0, 30.0]) * 1e4
     G = np.zeros((6, 6))
     for i, g in ((0, 0.3), (2, 0.5)):
@@ -59,42 +55,12 @@ def _model() -> ReducedModel:
     )
 
 
-def _branch(red: ReducedModel, speed: float, w: LossCoefficients):
-    """Every root with Im s > 0 of one branch and its unit modal coordinates (dense)."""
-    K = np.diag(red.w2) + w.fixed * red.F + w.lateral * red.L + w.circulatory * red.S
-    D = speed * red.G + red.C
-    n = red.size
-    lam, V = la.eig(np.block([[np.zeros((n, n)), np.eye(n)], [-K, -D]]))
-    keep = lam.imag > 0
-    Y = V[:n, keep]
-    return lam[keep], Y / np.linalg.norm(Y, axis=0)
-
-
-def _every_root(red: ReducedModel, speed: float):
-    """R(Ω) with every vector, sorted by |s| (no mode near the spin: one root per mode)."""
-    lo, Y_lo = _branch(red, speed, BELOW)
-    hi, Y_hi = _branch(red, speed, ABOVE)
-    keep_lo, keep_hi = lo.imag <= speed, hi.imag >= speed
-    s = np.concatenate([lo[keep_lo], hi[keep_hi]])
-    Y = np.hstack([Y_lo[:, keep_lo], Y_hi[:, keep_hi]])
-    assert s.size == red.size
-    order = np.argsort(np.abs(s))
-    return s[order], Y[:, order]
-
-
-def _reference_match(lam_prev, Y_prev, s, Y):
-    cost = 1 - np.abs(Y_prev.conj().T @ Y) ** 2
-    cost = cost + 0.1 * np.abs(lam_prev.imag[:, None] - s.imag[None, :]) / np.abs(lam_prev.imag)[:, None]
-    rows, cols = linear_sum_assignment(cost)
-    return cols[np.argsort(rows)]
-
-
 def test_a_nearly_decoupled_root_left_out_is_bounded_on_its_own_branch():
     red = _model()
-    lam_prev, Y_prev = _every_root(red, PREVIOUS)
-    s_ref, Y_ref = _every_root(red, SPEED)
+    lam_prev, Y_prev = consistent_from(red, PREVIOUS)
+    s_ref, Y_ref = consistent_from(red, SPEED)
     top = int(np.argmax(np.abs(s_ref)))
-    assert abs(s_ref[top]) > 2 * np.abs(lam_prev[:N_CURVES]).max()  # the premise: left out of the candidates
+    assert abs(s_ref[top]) > _BAND * np.abs(lam_prev[:N_CURVES]).max()  # the premise: left out of the candidates
     lam, Y = lam_prev[:N_CURVES].copy(), Y_prev[:, :N_CURVES].copy()
     Y[:, -1] = Y_ref[:, top]  # the last curve has the top root's shape
     cols = _reference_match(lam, Y, s_ref, Y_ref)
