@@ -16,6 +16,9 @@ the soaked material temperature).
   the two points apart 16 times over.
 * Thermal section: its self-heating analyses are the governing point's (named); the temperature
   check's own value, in °C (T − 273.15), and its point are stated beside them.
+* Spin-up: the imbalance section's response is the governing point's (its figure says so); the
+  spin-up deflection check, governing at ``hot_soak_start`` too, is stated with its value in mm
+  (m × 1000, three significant figures as the verdict table prints it).
 """
 
 from __future__ import annotations
@@ -26,7 +29,8 @@ import numpy as np
 import pytest
 
 from flexshaft.design import tuned_design
-from flexshaft.report.run_sections import Figures, stability_section, thermal_section
+from flexshaft.report.results_json import results_json
+from flexshaft.report.run_sections import Figures, imbalance_section, stability_section, thermal_section
 from flexshaft.resolution import REPORT
 from flexshaft.units import rad_s_to_rpm
 
@@ -39,6 +43,7 @@ def tuned(embedded_comparison):
     assert run.governing_point == "cold_day"
     assert run.verdict.check("whirl_damping").location["point"] == "hot_soak_start"
     assert run.verdict.check("temperature").location["point"] == "hot_soak_start"
+    assert run.verdict.check("spinup_deflection").location["point"] == "hot_soak_start"
     return run
 
 
@@ -62,3 +67,11 @@ def test_the_thermal_section_states_the_temperature_checks_own_value_and_point(t
     check = tuned.verdict.check("temperature")
     assert f"at {tuned.governing_point}" in text  # the self-heating shown is the governing point's
     assert f"governs at hot_soak_start: {check.value - 273.15:.1f} °C" in text
+
+
+def test_the_spin_up_paragraph_states_the_deflection_checks_own_value_and_point(tuned, tmp_path):
+    op_rpm = rad_s_to_rpm(tuned.model.speed)
+    section = imbalance_section(tuned, Figures(tmp_path), results_json(tuned), op_rpm)
+    check = tuned.verdict.check("spinup_deflection")
+    assert f"governs at hot_soak_start: {check.value * 1e3:.3g} mm" in section.paragraphs[0]
+    assert f"at the governing point {tuned.governing_point}" in section.figures[0].caption

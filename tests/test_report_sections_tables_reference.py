@@ -50,7 +50,7 @@ def _imbalance(tmp_path):
             gap=5.0e-4,  # 0.5 mm
         )
     }
-    a = NS(model=model, spinup=spinup, bearing_reactions=reactions, evidence=NS(operating_range=None))
+    a = NS(points=(), model=model, spinup=spinup, bearing_reactions=reactions, evidence=NS(operating_range=None))
     data = {
         "imbalance": {
             "actuator_max_displacement_m": {"amb_1": 2.5e-4},
@@ -121,7 +121,10 @@ def test_bode_curve_of_the_largest_orbit_at_the_operating_speed(tmp_path):
     }
     figs = Figures(tmp_path)
     imbalance_section(
-        NS(model=model, spinup=spinup, bearing_reactions={}, evidence=NS(operating_range=None)), figs, data, 6000.0
+        NS(points=(), model=model, spinup=spinup, bearing_reactions={}, evidence=NS(operating_range=None)),
+        figs,
+        data,
+        6000.0,
     )
     (job,) = [j for j in figs.jobs if j.stem == "imbalance_bode"]
     curves = job.args[1]

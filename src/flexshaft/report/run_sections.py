@@ -80,7 +80,8 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
     figures = [
         figs.add(
             "imbalance_response",
-            "Synchronous imbalance response during spin-up (orbit major semi-axis)",
+            "Synchronous imbalance response during spin-up (orbit major semi-axis"
+            + (f", at the governing point {a.governing_point})" if len(a.points) > 1 else ")"),
             imbalance_response_figure,
             rpm,
             amps,
@@ -169,6 +170,9 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
             )
         )
     imb = data["imbalance"]
+    # the spin-up above is the governing point's: the deflection check's own value beside it
+    # when that check governs at another point
+    verdict = _governing_sentence(a, "spinup_deflection")
     tables = [
         Table(
             "Actuators (spin-up maxima)",
@@ -218,7 +222,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
             f"{imb['speed_of_max_rpm']:.0f} rpm (refined between the sampled speeds); "
             f"{m_to_mm(imb['max_shaft_orbit_at_operating_m']):.4f} mm at the operating speed; "
             f"largest over the whole scan {m_to_mm(imb['max_shaft_orbit_scan_m']):.3f} mm at "
-            f"{imb['speed_of_max_scan_rpm']:.0f} rpm."
+            f"{imb['speed_of_max_scan_rpm']:.0f} rpm." + verdict
         ],
         tables=tables,
         figures=figures,
@@ -344,10 +348,10 @@ def _where_governs(a: Assessment, key: str, what: str) -> tuple[Any, str]:
 
 
 def _governing_sentence(a: Assessment, key: str) -> str:
-    """' The <check> governs at <point>: <value> (required <limit>), <where>.' for a design with
-    several points (empty otherwise, or without that check): the verdict's number beside a
-    section drawn at another point."""
-    if len(a.points) <= 1:
+    """' The <check> governs at <point>: <value> (required <limit>), <where>.' when check ``key``
+    governs at another point than the governing one, whose analyses a section shows (empty for
+    one point, the governing point, or without that check): the verdict's number beside it."""
+    if len(a.points) <= 1 or check_point(a, key) == a.governing_point:
         return ""
     try:
         c = a.verdict.check(key)
@@ -487,11 +491,8 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
     assert th is not None  # the report adds this section only with a thermal result (report/driveline.py)
     # the thermal results are the governing point's (only it has the report's detail): the
     # temperature check's own value is named beside them when it governs elsewhere
-    at, verdict = "", ""
-    if len(a.points) > 1:
-        at = f" at {a.governing_point}"
-        if check_point(a, "temperature") != a.governing_point:
-            verdict = _governing_sentence(a, "temperature")
+    at = f" at {a.governing_point}" if len(a.points) > 1 else ""
+    verdict = _governing_sentence(a, "temperature")
     env = th.environment
     shafts = th.shaft
     if not shafts:  # below the report's detail: the self-heating equilibrium alone
