@@ -20,11 +20,12 @@ which peaks at ω_n/√(1 − 2ζ²) = 1.0001 ω_n. The tube's mass, 3.5e-6 of t
   says how far it looked.
 * **The spin-up checks end at the highest operating speed, sampled there.** docs/requirements.md
   defines the spin-up orbit "from 2 % of the operating speed to the highest operating speed (the
-  top of ``[operating] speed_range``; the scan's speeds, each refined critical speed's peak, the
-  operating speed and the highest one)". With Ω_op = ω_n/1.36 and ``speed_range = [0.9, 1.1]``
-  the response still rises at 1.1 Ω_op (r = 0.809, below the resonance), so the largest orbit up
-  to it is the one at 1.1 Ω_op, by the closed form above; the screening scan has no sample
-  there: its nearest lies 7.3e-4 below in relative speed, where the orbit is smaller by
+  top of ``[operating] speed_range`` …; the scan's speeds, each refined critical speed's peak,
+  the operating speed and the highest one)". With Ω_op = ω_n/1.36, ``speed_range = [0.9, 1.1]``
+  and ``[loads] eccentricity`` = e = 1e-5 m (``ECC``) the response still rises at 1.1 Ω_op
+  (r = 0.809, below the resonance), so the largest orbit up to it is the one at 1.1 Ω_op, by the
+  closed form above; the screening scan has no sample there: its nearest lies 7.3e-4 below in
+  relative speed, where the orbit is smaller by
   d ln(orbit)/d ln r × 7.3e-4 = (2 + 2r²/(1 − r²)) × 7.3e-4 ≈ 5.8 × 7.3e-4 = 4.2e-3 (ζ → 0;
   measured 4.2e-3), four times the 1e-3 asserted.
 """
@@ -36,6 +37,7 @@ from rotors import M_DISK, WN, jeffcott_text
 
 import flexshaft as fs
 from flexshaft.assembly import build_model
+from flexshaft.assembly.balance import design_eccentricity
 from flexshaft.design import loads_design
 from flexshaft.resolution import SCREENING
 from flexshaft.units import rad_s_to_rpm
@@ -57,7 +59,7 @@ def test_a_design_without_imbalance_is_searched_to_the_scan_top():
     "no resonance peak in the unbalance response up to … rpm") is that, not Ω_op."""
     design = loads_design(_text(2.0, "\nspeed_range = [0.9, 1.1]"))
     model = build_model(design)
-    assert model.design is not None and model.design.loads.eccentricity == 0.0
+    assert model.design is not None and design_eccentricity(model.design) == 0.0
     _, criticals = point_tasks._spinup(model, SCREENING)
     top = SCREENING.scan_top * 1.1 * model.speed
     assert criticals.criticals == () and top < WN
