@@ -6,11 +6,13 @@ References, quoted:
 * README.md, "Output folders (``--out``)": "every link inside the folder, and inside the
   subfolders flexshaft wrote, is removed, never followed, before anything is written, so that
   no write can land outside the folder"; "Files are written under a temporary name and renamed
-  into place, so a crash or a full disk never leaves half a file".
+  into place, so a crash or a full disk never leaves half a file"; "The temporary files
+  (``.tmp-*``) a crash left directly in a folder flexshaft wrote are removed on the next run
+  into it."
 * :mod:`flexshaft.cli.output`'s docstring: the folder check "removes every symbolic link
   inside the folder and inside the subfolders an earlier run wrote [...] and removes the
-  temporary files a crash left"; :mod:`flexshaft.files`: the temporary files are named
-  ``.tmp-*``.
+  temporary files a crash left"; at the end the marker records "``"complete": true`` and the
+  entries the command wrote".
 
 Folders are built by hand (a planted link to a folder, a half-written ``.tmp-`` file); the
 command is a stand-in wrapped by the CLI's real error boundary (as in
@@ -79,9 +81,9 @@ def test_a_linked_folder_inside_a_subfolder_flexshaft_wrote_is_removed(tmp_path:
 
 
 def test_a_temporary_file_a_crash_left_is_removed_on_the_next_run(tmp_path: Path) -> None:
-    """A ``.tmp-*`` file in flexshaft's own folder is half a file of a write that never
-    finished: the next run of the same design removes it, keeps the results and the user's
-    own file, and does not list the temporary file in the marker."""
+    """A ``.tmp-*`` file directly in flexshaft's own folder is half a file of a write that
+    never finished: the next run of the same design removes it (README), keeps the results and
+    the user's own file, and the marker lists only the entries the command wrote."""
     out, source = tmp_path / "my-results", str(tmp_path / "my.toml")
     assert _run(out, source, writes=["results.json"]) == 0
     (out / ".tmp-k2j4x9.json").write_bytes(b'{"half": ')  # a killed atomic write

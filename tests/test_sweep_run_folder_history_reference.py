@@ -3,9 +3,16 @@
 References (hand-written docs and docstrings, quoted):
 
 * docs/studies.md, "Resume": a stored chunk is recomputed when it fails a check, among them
-  "another chunk's range"; "A missing or damaged manifest means the folder's history is
-  unknown: the old chunks are moved to ``RUN/chunks.discarded-N/``, never reused, and everything
-  is recomputed. A folder whose intact manifest is another study's is refused."
+  "another chunk's range", "each named with its reason in a `SweepWarning`"; "A missing or
+  damaged manifest means the folder's history is unknown: the old chunks are moved to
+  ``RUN/chunks.discarded-N/``, never reused, and everything is recomputed. A folder whose intact
+  manifest is another study's is refused. The commands that sweep into a folder (``flexshaft
+  study ...``, ``flexshaft montecarlo``) refuse it too; with ``--force`` they move its chunks
+  aside to ``RUN/chunks.discarded-N/`` (kept, never deleted) and run the new study afresh in it."
+* :mod:`flexshaft.sweep.store`'s docstring: "On resume a chunk is reused only if it reads,
+  carries this study's fingerprint, this chunk's index and point range, the expected shape, and
+  a checksum that matches its bytes. Any other chunk is deleted and recomputed with a
+  :class:`~flexshaft.sweep.study.SweepWarning` naming the file and the reason".
 * :func:`flexshaft.cli.output.into_run_folder` (the path of ``flexshaft montecarlo`` and every
   ``flexshaft study`` command): a folder holding another study's chunks "is refused [...] with
   the way out: ``--force`` moves its chunks aside (``chunks.discarded-N/``: finished work is
@@ -25,6 +32,7 @@ costs well under 1 s of CPU.
 from __future__ import annotations
 
 import json
+import shutil
 import warnings
 from pathlib import Path
 
@@ -36,7 +44,7 @@ pytest.importorskip("xarray")
 from flexshaft.cli.common import UserError
 from flexshaft.cli.output import into_run_folder
 from flexshaft.sweep import Output, Study, SweepWarning, Variable, run_sweep
-from flexshaft.sweep.store import ChunkError, chunk_path, load_chunks, read_chunk, write_chunk
+from flexshaft.sweep.store import chunk_path, read_chunk
 
 A = [1.0, 2.0]
 B = [10.0, 20.0, 30.0]
@@ -60,26 +68,31 @@ def _f(points) -> np.ndarray:
 
 
 def test_a_chunk_of_the_same_index_but_another_range_is_not_reused(tmp_path: Path) -> None:
-    """Chunk 1 of a 12-point sweep in chunks of 10 holds points 10..11; in chunks of 2 it holds
-    points 2..3: both have 2 rows and the same index, so only the stored point range tells them
-    apart (docs/studies.md: "another chunk's range" fails the check)."""
-    run = tmp_path / "run"
-    path = chunk_path(run, 1)
-    path.parent.mkdir(parents=True)
-    stored = np.array([[10.0, 1.0], [11.0, 1.0]])  # the outputs of points 10 and 11
-    write_chunk(path, stored, fingerprint="f" * 64, index=1, start=10, stop=12)
-    # the chunk as it was written reads back exactly
+    """Chunk 1 of the grid holds points 4..5 in chunks of 4 ([0, 4), [4, 6)) and points 2..3 in
+    chunks of 2 ([0, 2), [2, 4), [4, 6)): both have 2 rows, the same index and the same study
+    fingerprint, so only the stored point range tells them apart. Folder A is run in chunks of
+    4, folder B in chunks of 2; B's chunk 1 copied over A's and A run again: the chunk fails the
+    check ("another chunk's range"), a SweepWarning names it, and it is recomputed, so that
+    ``f`` is 100 a + b at every point (reused, it would put f(2..3) = 130, 210 at points 4..5,
+    whose values are 220, 230). The file then holds A's own chunk 1 again: points 4..5, f = 220,
+    230 (store.py: the rejected chunk "is deleted and recomputed")."""
+    first, second = tmp_path / "A", tmp_path / "B"
+    run_sweep(_study(), first, chunk_size=4, progress=False)
+    run_sweep(_study(), second, chunk_size=2, progress=False)
+    fingerprint = json.loads((first / "manifest.json").read_text())["fingerprint"]
+    # B's chunk 1, by hand: points 2..3 = (1, 30), (2, 10)
     np.testing.assert_array_equal(
-        read_chunk(path, fingerprint="f" * 64, index=1, start=10, stop=12, n_outputs=2), stored
+        read_chunk(chunk_path(second, 1), fingerprint=fingerprint, index=1, start=2, stop=4, n_outputs=1),
+        _f(POINTS[2:4]),
     )
-    with pytest.raises(ChunkError, match="points 10..12"):
-        read_chunk(path, fingerprint="f" * 64, index=1, start=2, stop=4, n_outputs=2)
-    # on resume with the chunks of 2 (bounds [0, 2), [2, 4), ...) it is deleted, with a warning
-    # naming it, and nothing is reused for points 2..3
-    bounds = [(0, 2), (2, 4), (4, 6), (6, 8), (8, 10), (10, 12)]
+    shutil.copyfile(chunk_path(second, 1), chunk_path(first, 1))
     with pytest.warns(SweepWarning, match="chunk_000001.npz"):
-        good = load_chunks(run, bounds, fingerprint="f" * 64, n_outputs=2)
-    assert good == {} and not path.exists()
+        ds = run_sweep(_study(), first, progress=False)  # resumes with the stored chunk size, 4
+    np.testing.assert_array_equal(ds["f"].values.reshape(-1, 1), _f(POINTS))
+    np.testing.assert_array_equal(
+        read_chunk(chunk_path(first, 1), fingerprint=fingerprint, index=1, start=4, stop=6, n_outputs=1),
+        _f(POINTS[4:6]),
+    )
 
 
 def _discarded_values(folder: Path) -> np.ndarray:
@@ -93,8 +106,9 @@ def _discarded_values(folder: Path) -> np.ndarray:
 
 def test_each_fresh_start_moves_the_old_chunks_to_a_new_folder(tmp_path: Path) -> None:
     """Three runs after a deleted manifest: each set of finished chunks goes to its own
-    ``chunks.discarded-N`` (N = 1, 2, 3), none is merged into or renamed onto an earlier one,
-    and every set still holds the values f = 100 a + b of the points it computed."""
+    ``chunks.discarded-N`` (N = 1, 2, 3), never renamed onto an earlier one (which fails on a
+    non-empty folder and replaces an empty one), and every set still holds the values
+    f = 100 a + b of the points it computed."""
     run = tmp_path / "run"
     first = _study()
     ds = run_sweep(first, run, chunk_size=3, progress=False)
