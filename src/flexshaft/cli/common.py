@@ -27,6 +27,9 @@ from typing import Any, NoReturn, TypeVar
 
 import typer
 
+# the design layer's limit (1 MB), checked here before the file is opened as well
+from flexshaft.design.reading import MAX_DESIGN_BYTES
+
 __all__ = [
     "EXIT_INTERNAL_ERROR",
     "EXIT_REQUIREMENT_FAILED",
@@ -64,8 +67,6 @@ EXIT_REQUIREMENT_FAILED = 3
 #: Exit code of an internal fault (a bug in flexshaft).
 EXIT_INTERNAL_ERROR = 4
 
-#: Largest design file read [bytes]: the embedded baseline is about 9 kB.
-MAX_DESIGN_BYTES = 1 << 20
 
 #: Where an internal fault should be reported (pyproject.toml has no project URL yet).
 BUG_REPORT_TARGET = "the flexshaft issue tracker"
