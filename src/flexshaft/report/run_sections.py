@@ -441,7 +441,7 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
     roots = onset.roots
     tables.append(
         Table(
-            f"Every root of the closed loop{onset_at} ({roots.coverage()})",
+            f"Every root of the closed loop ({roots.coverage()}){onset_at}",
             ["speed [rpm]", "roots", "least damping ratio ζ", "unstable roots"],
             [
                 [rad_s_to_rpm(v), int(n), float(z), int(u)]
