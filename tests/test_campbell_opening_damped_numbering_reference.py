@@ -30,35 +30,15 @@ speeds, under 0.1 s.
 from __future__ import annotations
 
 import numpy as np
-from rotors import DI, DO, K_SHAFT, M_DISK, E, L, jeffcott_text
+
+# the heavily-damped-bearing rotor of the numbering test at rest, its closed-form disk pair
+from test_heavily_damped_bearing_mode_numbering_reference import ETA, W2, _disk_root, _model
 
 from flexshaft.analyses import campbell
 from flexshaft.analyses.eigen import lowest_modes, reduce
 from flexshaft.analyses.hysteretic_roots import lowest_roots
-from flexshaft.assembly import build_model
-from flexshaft.design import loads_design
 
-ETA, MASS, ZETA_B = 0.02, 0.5, 0.45
-EI = E * np.pi * (DO**4 - DI**4) / 64
-RHO_A = 0.1 * np.pi * (DO**2 - DI**2) / 4  # the tube's density 0.1 kg/m³ (tests/rotors.py)
-W2 = (2 * np.pi / L) ** 2 * np.sqrt(EI / RHO_A)  # second pinned-pinned bending frequency
-W_B = 1.08 * W2
-K_B = MASS * W_B**2 - K_SHAFT
-C_B = 2 * ZETA_B * MASS * W_B
 SPEEDS = np.array([0.05, 0.08, 0.11]) * W2
-
-
-def _model():
-    text = jeffcott_text(ETA, C_B)
-    text = text.replace(f"mass = {M_DISK}", f"mass = {MASS}")
-    text = text.replace("stiffness = {}", f"stiffness = {{ v = {K_B}, w = {K_B} }}")
-    assert f"mass = {MASS}" in text and str(K_B) in text
-    return build_model(loads_design(text))
-
-
-def _disk_root() -> complex:
-    roots = np.roots([MASS, C_B, K_B + K_SHAFT * (1 + 1j * ETA)])
-    return complex(roots[np.argmax(roots.imag)])
 
 
 def test_the_first_speed_tracks_the_damped_bearing_pair_with_its_whirl():

@@ -42,28 +42,31 @@ SPEED_RPM = 3000.0
 @pytest.fixture(scope="module")
 def unidirectional_tube():
     """A [0] ply tube, clamped at x = 0 and pinned at a contact stop at its end: one bay."""
+    return design_from_dict(unidirectional_tube_data())
+
+
+def unidirectional_tube_data() -> dict:
+    """The design-file data of :func:`unidirectional_tube` (for variants of it)."""
     ply = {"kind": "lamina", "density": RHO, "E_L": E_L, "E_T": E_T, "G_LT": G_LT, "nu_LT": NU}
     ply |= {"X_t": X_T, "X_c": X_C, "Y_t": Y_T, "Y_c": Y_C, "S": S}
-    return design_from_dict(
-        {
-            "name": "[0] tube",
-            "materials": {"ply": ply},
-            "shaft": {
-                "x_start": X0,
-                "x_end": X1,
-                "outer_diameter": D,
-                "wall_thickness": WALL,
-                "material": "ply",
-                "layup": "0",
-                "fixed_start": ["u", "v", "w", "theta"],
-                "fixed_end": ["v", "w"],
-            },
-            "bearings": [{"name": "stop", "kind": "contact", "x": X1, "stiffness": {}}],
-            "operating": {"speed_rpm": SPEED_RPM, "power": 0.0},
-            "loads": {"eccentricity": 0.0},
-            "mesh": {"shaft_elements": 4},
-        }
-    )
+    return {
+        "name": "[0] tube",
+        "materials": {"ply": ply},
+        "shaft": {
+            "x_start": X0,
+            "x_end": X1,
+            "outer_diameter": D,
+            "wall_thickness": WALL,
+            "material": "ply",
+            "layup": "0",
+            "fixed_start": ["u", "v", "w", "theta"],
+            "fixed_end": ["v", "w"],
+        },
+        "bearings": [{"name": "stop", "kind": "contact", "x": X1, "stiffness": {}}],
+        "operating": {"speed_rpm": SPEED_RPM, "power": 0.0},
+        "loads": {"eccentricity": 0.0},
+        "mesh": {"shaft_elements": 4},
+    }
 
 
 def _run(design, strength: bool):

@@ -31,44 +31,26 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_shaft_strength_fields_reference import E_L, E_T, G_LT, NU, WALL, X0, X1, X_C, X_T, Y_C, Y_T, D, S
+from test_montecarlo_ply_check_reference import unidirectional_tube_data
+from test_shaft_strength_fields_reference import X0, X1
 
 from flexshaft.design import design_from_dict
 from flexshaft.montecarlo import run_montecarlo
 from flexshaft.montecarlo.samples import EccentricityDistribution
 
-RHO = 1600.0  # kg/m^3
 SIDE_FORCE = 500.0  # N, static, at mid-span
 ECCENTRICITY = 2e-3  # m, every sample
 
 
 @pytest.fixture(scope="module")
 def side_loaded_tube():
-    """A [0] ply tube, clamped at x = 0 and pinned at a contact stop at its end (one bay),
-    pushed sideways at mid-span."""
-    ply = {"kind": "lamina", "density": RHO, "E_L": E_L, "E_T": E_T, "G_LT": G_LT, "nu_LT": NU}
-    ply |= {"X_t": X_T, "X_c": X_C, "Y_t": Y_T, "Y_c": Y_C, "S": S}
+    """The [0] ply tube of tests/test_montecarlo_ply_check_reference.py (clamped at x = 0,
+    pinned at a contact stop at its end: one bay), pushed sideways at mid-span."""
+    data = unidirectional_tube_data()
+    data["name"] = "side-loaded [0] tube"
     side = {"name": "side", "on": "shaft", "x": (X0 + X1) / 2, "force": [0.0, SIDE_FORCE, 0.0]}
-    return design_from_dict(
-        {
-            "name": "side-loaded [0] tube",
-            "materials": {"ply": ply},
-            "shaft": {
-                "x_start": X0,
-                "x_end": X1,
-                "outer_diameter": D,
-                "wall_thickness": WALL,
-                "material": "ply",
-                "layup": "0",
-                "fixed_start": ["u", "v", "w", "theta"],
-                "fixed_end": ["v", "w"],
-            },
-            "bearings": [{"name": "stop", "kind": "contact", "x": X1, "stiffness": {}}],
-            "operating": {"speed_rpm": 3000.0, "power": 0.0},
-            "loads": {"eccentricity": 0.0, "point": [side]},
-            "mesh": {"shaft_elements": 4},
-        }
-    )
+    data["loads"]["point"] = [side]
+    return design_from_dict(data)
 
 
 def test_the_ply_factor_does_not_depend_on_the_unbalance_angle(side_loaded_tube):
