@@ -19,26 +19,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import RUN_DESIGN
 
-from flexshaft.design import loads_design, with_overrides
-from flexshaft.report.results_json import results_json
-from flexshaft.resolution import Resolution
-from flexshaft.verdict.assess import assess
-
-#: Tiny grids with the report's detail (the thermal study and its tailboom temperatures).
-TINY = Resolution(
-    "tiny", spinup_speeds=3, whirl_speeds=3, campbell_speeds=4, report_detail=True, modes=4, loop_peak_samples=1
-)
+# the run design on tiny grids with the report's detail, assessed once per module, and its
+# results.json (the thermal study and its tailboom temperatures included)
+from test_results_json_reference import run  # noqa: F401 (pytest fixture)
 
 
-@pytest.fixture(scope="module")
-def run():
-    a = assess(with_overrides(loads_design(RUN_DESIGN), {"envelope": None}), TINY)
-    return a, results_json(a)
-
-
-def test_tailboom_temperatures_in_celsius(run):
+def test_tailboom_temperatures_in_celsius(run):  # noqa: F811
     """``thermal.tailboom_c``: each condition's boom skin temperature T [K] as T − 273.15 °C; the
     hover and parked skins are above 0 °C on the design's hot day, so kelvin would read 273 too
     high."""
@@ -52,7 +39,7 @@ def test_tailboom_temperatures_in_celsius(run):
         assert 0.0 < written[condition] < 150.0  # a skin temperature in °C, not kelvin
 
 
-def test_shaft_heat_is_the_power_over_the_whole_shaft(run):
+def test_shaft_heat_is_the_power_over_the_whole_shaft(run):  # noqa: F811
     """``thermal.shaft_<model>.heat_W``: the dissipated power of the whole shaft, the sum of the
     elements' powers P = (ω/2) Re(Xᴴ K'' X); several elements carry heat, so one element's heat
     (the largest) is less than the total."""
@@ -66,7 +53,7 @@ def test_shaft_heat_is_the_power_over_the_whole_shaft(run):
         assert float(np.max(heats)) < total * (1.0 - 1e-6)
 
 
-def test_actuator_peaks_are_the_largest_over_the_scan(run):
+def test_actuator_peaks_are_the_largest_over_the_scan(run):  # noqa: F811
     """``imbalance.actuator_max_force_N`` / ``actuator_max_displacement_m``: each magnetic
     bearing's largest force [N] and displacement [m] over the spin-up scan's speeds. On this
     design the force is not largest at the operating speed (a critical below the operating speed), so the
