@@ -27,22 +27,11 @@ from pathlib import Path
 import click
 import typer
 
+# a validated design as the folder rules see it (a title and its values)
+from test_output_folder_reference import MINE
+
 from flexshaft.cli.common import guarded
 from flexshaft.cli.output import MARKER, prepare_output_folder
-
-
-class _Design:
-    """A validated design as the folder rules see it: a title and its values."""
-
-    def __init__(self, name: str, wall: float) -> None:
-        self.name = name
-        self._values = {"name": name, "shaft": {"wall_thickness": wall}}
-
-    def model_dump(self, mode: str = "json") -> dict:
-        return self._values
-
-
-MINE = _Design("My design", 0.003)
 
 
 @guarded
