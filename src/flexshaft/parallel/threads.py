@@ -18,6 +18,7 @@ where one BLAS thread takes 0.35 s (benchmarks/README.md, 2026-12-05). Each entr
 from __future__ import annotations
 
 import functools
+import threading
 from collections.abc import Callable
 from contextlib import nullcontext
 from typing import Any, ParamSpec, TypeVar
@@ -26,17 +27,31 @@ __all__ = ["one_blas_thread", "single_blas_thread"]
 
 
 _CONTROLLER: list[tuple[int, Any]] = []  # (libraries, the process's ThreadpoolController), found once
+_FINDING = threading.Lock()  # one search of the loaded libraries at a time
 
 
 def _controller(libraries: int):
     """A ThreadpoolController of the loaded BLAS libraries, found again only when the process
     has loaded more shared libraries since (finding them reads /proc: 0.5 ms a call, while the
-    analyses enter this context a few hundred times a run)."""
-    if not _CONTROLLER or _CONTROLLER[0][0] != libraries:
+    analyses enter this context a few hundred times a run).
+
+    Only the main thread looks again. Finding the libraries walks them with ``dl_iterate_phdr``,
+    which holds the dynamic loader's lock while it calls back into Python (and so waits for the
+    GIL); a thread that holds the GIL and needs that lock (a first touch of a library's
+    thread-local storage, a ``dlopen``) then waits for it: both stop for good. It stopped a Dask
+    sweep on a threaded LocalCluster (``processes=False``) whose workers imported modules (the
+    count changed) and built models at once. Other threads reuse the controller found before,
+    which limits every BLAS loaded then (a BLAS loaded later, rare, keeps its own threads)."""
+    with _FINDING:
+        current = _CONTROLLER[0] if _CONTROLLER else None
+        if current is not None and (
+            current[0] == libraries or threading.current_thread() is not threading.main_thread()
+        ):
+            return current[1]
         from threadpoolctl import ThreadpoolController
 
         _CONTROLLER[:] = [(libraries, ThreadpoolController())]
-    return _CONTROLLER[0][1]
+        return _CONTROLLER[0][1]
 
 
 def one_blas_thread():
