@@ -6,9 +6,11 @@ carry "none", which the table prints as a dash. So a gyroscopically split pair o
 rotor prints its lower branch as backward and its upper one as forward, a mode of anisotropic
 supports as planar, and only the torsional mode as a dash.
 
-The rows are hand-made (the modes table is fed the rows of ``Modes.table()``): frequencies in
-rev/min are 60 × the Hz, log decrements δ = 2πζ/√(1 − ζ²) of ζ = 0.01 (0.06283); the numbers
-are round so that the printed cells (4 significant figures) compare as exact strings.
+The rows are hand-made (the modes table is fed the rows of ``Modes.table()``): their rev/min,
+ζ and δ columns are inputs the table echoes (made consistent here, 60 × Hz and δ = 2πζ/√(1 − ζ²)
+of ζ = 0.01, but not what is checked); what is checked is docs/model.md's labels and the 1-based
+numbering. The numbers are round so that the printed cells (4 significant figures) compare as
+exact strings.
 """
 
 from __future__ import annotations
