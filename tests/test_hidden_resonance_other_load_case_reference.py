@@ -51,12 +51,24 @@ M_TOTAL = M_TUBE + M_DISK
 RHO_IA = RHO * math.pi / 64 * (DO**4 - DI**4)  # the tube's diametral inertia [kg m²] over 1 m
 I_POLAR = 2 * RHO_IA
 W_TRANS = math.sqrt(3 * KB / M_TOTAL)
-I_EFFECTIVE = KB / 2 / (1.01 * W_TRANS) ** 2  # I − I_p: ω_r = 1.01 ω_t
-I_DISK = I_EFFECTIVE + I_POLAR - M_TUBE / 12 - RHO_IA
-W_ROCK = math.sqrt(KB / 2 / I_EFFECTIVE)
+
+
+def tuned_rocking(ratio: float, zeta_rock: float, zeta_trans: float) -> tuple[float, float, float, float]:
+    """(I_DISK, W_ROCK, C_END, C_MIDDLE): the disk's diametral inertia that puts the rigid rotor's
+    rocking at ``ratio`` × its translation, its rocking frequency, and the end and middle dampers
+    that give the rocking ζ_r and the translation ζ_t."""
+    i_effective = KB / 2 / (ratio * W_TRANS) ** 2  # I − I_p
+    c_end = 4 * zeta_rock * math.sqrt(KB / 2 * i_effective)
+    return (
+        i_effective + I_POLAR - M_TUBE / 12 - RHO_IA,
+        math.sqrt(KB / 2 / i_effective),
+        c_end,
+        2 * zeta_trans * math.sqrt(3 * KB * M_TOTAL) - 2 * c_end,
+    )
+
+
 ZETA_ROCK, ZETA_TRANS = 1e-4, 0.002
-C_END = 4 * ZETA_ROCK * math.sqrt(KB / 2 * I_EFFECTIVE)
-C_MIDDLE = 2 * ZETA_TRANS * math.sqrt(3 * KB * M_TOTAL) - 2 * C_END
+I_DISK, W_ROCK, C_END, C_MIDDLE = tuned_rocking(1.01, ZETA_ROCK, ZETA_TRANS)  # ω_r = 1.01 ω_t
 
 
 # the rigid rotor of tests/test_critical_search_load_cases_reference.py (KB = 1e6 N/m springs at
