@@ -337,31 +337,31 @@ def check_point(a: Assessment, key: str) -> str:
 
 
 def _where_governs(a: Assessment, key: str, what: str) -> tuple[Any, str]:
-    """The analyses of the point where check ``key`` governs (the assessment's own, the governing
-    point's, when it is that point or the design has one) and a caption clause naming the point
-    (empty for one point): ``what`` is the check's name in the clause."""
+    """The analyses of the point where check ``key`` governs (the assessment's own for a design
+    of one point) and a caption clause naming the point (empty for one point): ``what`` is the
+    check's name in the clause."""
     if len(a.points) <= 1:
         return a, ""
     name = check_point(a, key)
-    analyses = a if name == a.governing_point else a.point(name).analyses
-    return analyses, f" ({name}, where the {what} check governs)"
+    return a.point(name).analyses, f" ({name}, where the {what} check governs)"
 
 
 def _governing_sentence(a: Assessment, key: str) -> str:
     """' The <check> governs at <point>: <value> (required <limit>), <where>.' when check ``key``
     governs at another point than the governing one, whose analyses a section shows (empty for
     one point, the governing point, or without that check): the verdict's number beside it."""
-    if len(a.points) <= 1 or check_point(a, key) == a.governing_point:
+    if len(a.points) <= 1:
         return ""
     try:
         c = a.verdict.check(key)
     except KeyError:
         return ""
-    if c.value is None:
+    point = c.location.get("point", a.governing_point)
+    if point == a.governing_point or c.value is None:
         return ""
     where = location_text({k: v for k, v in c.location.items() if k != "point"})
     return (
-        f" The {c.title} check governs at {c.location.get('point', a.governing_point)}: "
+        f" The {c.title} check governs at {point}: "
         f"{format_quantity(c.kind, c.value)} (required {limit_text(c)})" + (f", {where}" if where else "") + "."
     )
 
