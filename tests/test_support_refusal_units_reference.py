@@ -18,21 +18,16 @@ CPU: two refused builds of a 4-element tube, well under 0.1 s.
 
 from __future__ import annotations
 
-import math
 import re
 
 import pytest
 
+# the steel tube of the rotational-support test (4 elements over 2 m) and its E I, and the
+# documented ratio 1e8 of the support limit
+from test_rotational_support_and_pid_law_reference import DO, ELEMENTS, LENGTH, RIGID_RATIO, WALL, E, _ei
+
 from flexshaft.assembly import build_model
 from flexshaft.design import DesignError, loads_design
-
-E, DO, WALL, LENGTH, ELEMENTS = 210e9, 0.02, 0.001, 2.0, 4
-RIGID_RATIO = 1e8
-
-
-def _ei() -> float:
-    di = DO - 2 * WALL
-    return E * math.pi * (DO**4 - di**4) / 64
 
 
 def _text(stiffness: str) -> str:
