@@ -8,7 +8,8 @@ command's own arithmetic and choice of field, not the analyses (tested elsewhere
 * rev/min -> rad/s is 2π/60 (``--speed-rpm 600`` -> 20π rad/s; ``--max-rpm 9600`` -> 320π rad/s),
   Hz -> rad/s is 2π (``--reference-hz 50`` -> 100π rad/s), and back for what is printed;
 * the onset ratio is onset / operating speed (5400 / 4800 = 1.125);
-* the unstable mode's whirl direction is the one at the top speed (the last of the sweep);
+* the unstable mode's whirl direction is the result's ``onset_whirl`` (where the mode is first
+  unstable: tests/test_stability_onset_bookkeeping_reference.py), not a label of its own;
 * a sweep stable to 9600 rev/min passes the onset check: the requirement is (1 + margin) x 4800
   rev/min with the design's margin, below 9600 for any margin under 100 %;
 * the thermal table puts each number under its header, the temperature in °C as given.
@@ -67,6 +68,7 @@ def stand_ins(monkeypatch: pytest.MonkeyPatch) -> dict:
             onset_speed=seen.get("onset"),
             unstable_mode=None if seen.get("onset") is None else 0,
             whirl=whirl,
+            onset_whirl=None if seen.get("onset") is None else "forward",
             stability_margin=np.array([0.02, -0.01]),
         )
 
@@ -98,7 +100,7 @@ def test_stability_converts_speeds_and_reports_the_onset(stand_ins: dict) -> Non
     assert data["analysed_to_rpm"] == pytest.approx(9600.0, rel=1e-14)
     design = data["shafts"]["design"]
     assert design["onset_speed_rpm"] == pytest.approx(5400.0, rel=1e-14)
-    assert design["unstable_mode_whirl"] == "forward"  # at the top speed, not at rest
+    assert design["unstable_mode_whirl"] == "forward"  # the onset whirl, not the label at rest
     text = runner.invoke(app, args)
     assert text.exit_code == 0, text.output
     row = next(line for line in text.stdout.splitlines() if line.startswith("│ design "))

@@ -58,6 +58,7 @@ def analyses(monkeypatch: pytest.MonkeyPatch) -> dict:
         return SimpleNamespace(
             onset_speed=None,
             unstable_mode=None,
+            onset_whirl=None,
             whirl=np.full((len(speeds), 1), "forward", dtype=object),
             stability_margin=np.array([0.03, -0.02, 0.01]),
         )

@@ -103,3 +103,23 @@ def test_the_onset_is_described_by_the_whirl_at_the_first_unstable_speed():
     forward): the mode that turns unstable whirls as at 30. An onset on a sample, 30, reads it."""
     assert _result().onset_description() == "mode 1, forward whirl"
     assert _result(onset_speed=30.0).onset_description() == "mode 1, forward whirl"
+
+
+def test_the_onset_whirl_is_the_label_where_the_mode_is_first_unstable():
+    """Whirl labels that differ at rest, below the onset, where the mode is first unstable and at
+    the top speed (backward, backward, forward, backward at 10, 20, 30, 40): with the onset at 23,
+    nearer the stable sample 20, the label is the one at 30, the first speed at or above the onset
+    (the speed of ``onset_shape``), not the nearest sample's, the first's or the last's. This one
+    label is what the report, the verdict's location and results.json give (the property's
+    docstring). Stable, or at a divergence (no tracked mode), there is none."""
+    speeds = np.array([10.0, 20.0, 30.0, 40.0])
+    eig = np.array([[_zeta_root(z)] for z in (0.02, 0.01, -0.01, -0.02)])
+    whirl = np.array([["backward"], ["backward"], ["forward"], ["backward"]])
+    fields = {"speeds": speeds, "eigenvalues": eig, "whirl": whirl, "onset_speed": 23.0}
+    result = _result(**fields)
+    assert result.onset_whirl == "forward"
+    assert result.onset_description() == "mode 1, forward whirl"
+    assert _result(**{**fields, "onset_speed": 30.0}).onset_whirl == "forward"  # on a sample: that one
+    assert _result(**{**fields, "onset_speed": None, "unstable_mode": None}).onset_whirl is None
+    diverging = _result(**{**fields, "unstable_mode": None, "onset_kind": "divergence"})
+    assert diverging.onset_whirl is None

@@ -130,6 +130,7 @@ def test_gather_whirl_numbers_modes_from_one_and_reads_the_top_speed():
         unstable_mode=1,
         onset_kind="whirl",
         whirl=np.array([["backward", "forward"]] * 4),
+        onset_whirl="forward",  # mode 2's label at every speed
         eigenvalues=np.array([[-1 + 30j, -1 + 80j]] * 3 + [[-1 + 30j, 2 + 90j]]),
         damping_model="viscous",
         divergence=None,

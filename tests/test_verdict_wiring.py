@@ -85,6 +85,7 @@ def _stability(onset: float) -> NS:
         onset_kind="whirl",
         divergence=None,
         whirl=np.full((4, 1), "forward"),
+        onset_whirl="forward",
         eigenvalues=np.full((4, 1), 0.1 + 250.0j),
         damping_model="rotating",
     )

@@ -40,6 +40,7 @@ def stable_sweep(monkeypatch: pytest.MonkeyPatch) -> None:
         return SimpleNamespace(
             onset_speed=None,
             unstable_mode=None,
+            onset_whirl=None,
             whirl=np.array([["forward"]] * len(speeds), dtype=object),
             stability_margin=np.array([0.03, 0.02]),
         )

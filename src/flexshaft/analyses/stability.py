@@ -197,9 +197,19 @@ class StabilityResult(EigenvalueCurves, ResultMixin):
             return None
         if self.onset_kind == "divergence" or self.unstable_mode is None:
             return "divergence (real root)"
+        return f"mode {self.unstable_mode + 1}, {self.onset_whirl} whirl"
+
+    @property
+    def onset_whirl(self) -> str | None:
+        """Whirl of the mode that turns unstable ("forward", "backward", ...) at the first
+        analysed speed at or above the onset, where it is first unstable (the speed of
+        ``onset_shape``); None when stable or at a divergence. The one label the report, the
+        verdict and results.json give."""
+        if self.onset_speed is None or self.onset_kind == "divergence" or self.unstable_mode is None:
+            return None
         k = self.at_speed(self.onset_speed)
         k = min(k + 1, self.speeds.size - 1) if self.speeds[k] < self.onset_speed else k
-        return f"mode {self.unstable_mode + 1}, {self.whirl[k, self.unstable_mode]} whirl"
+        return str(self.whirl[k, self.unstable_mode])
 
     def plot_log_decrement(self, ax=None, *, label: str = "this design", **kwargs):
         """Log decrement of every tracked mode against speed [rpm], the onset marked. Keywords

@@ -237,9 +237,7 @@ def stability(
         onset_check = whirl_onset_check(result.onset_speed, float(speeds[-1]), model.speed, margin)
         shafts[label] = {
             "onset_speed_rpm": None if result.onset_speed is None else rad_s_to_rpm(result.onset_speed),
-            "unstable_mode_whirl": None
-            if result.unstable_mode is None
-            else str(result.whirl[-1, result.unstable_mode]),
+            "unstable_mode_whirl": result.onset_whirl,
             "min_damping_ratio": float(result.stability_margin.min()),
             "onset_check": onset_check.status,
         }

@@ -192,7 +192,7 @@ def _stability_dict(a: Assessment, thesis: ThesisStudies | None) -> dict:
         "damping_model": st.damping_model,
         "onset_speed_rpm": rpm_or_none(st.onset_speed),
         "analysed_to_rpm": float(rad_s_to_rpm(st.speeds[-1])),
-        "unstable_mode_whirl": None if st.unstable_mode is None else str(st.whirl[-1, st.unstable_mode]),
+        "unstable_mode_whirl": st.onset_whirl,
         "thesis_shafts": {
             label: {m: rpm_or_none(r.onset_speed) for m, r in models.items()} for label, models in comparison.items()
         },

@@ -222,7 +222,7 @@ def _whirl(p: PointAnalyses) -> dict:
             location = {"mode": "divergence (real root)", "detail": f"s = {root:.4g} 1/s, {st.damping_model} model"}
         else:
             location = {
-                "mode": f"{m + 1} ({st.whirl[k, m]})",
+                "mode": f"{m + 1} ({st.onset_whirl})",
                 "frequency": float(abs(st.eigenvalues[k, m].imag)),
                 "detail": f"{st.damping_model} internal-damping model",
             }
