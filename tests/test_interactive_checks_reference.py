@@ -74,7 +74,8 @@ def test_actuator_panels_at_the_excursion_checks_point_each_peak_at_its_speed(mo
     )
     hot = NS(analyses=NS(spinup=hot_spin), evidence=NS(actuators=[ev]))
     a.point = {"nominal": nominal, "hot": hot}.__getitem__
-    a.verdict = NS(checks=[NS(key="actuator_orbit", location={"point": "hot"})])
+    orbit_check = NS(key="actuator_orbit", location={"point": "hot"})
+    a.verdict = NS(checks=[orbit_check], check={"actuator_orbit": orbit_check}.__getitem__)
     figure = actuator_figure(a)
     top, bottom = [t for t in figure["data"] if t["name"] == "amb_1: static + spin-up"]
     assert top["y"] == pytest.approx([0.1] * 3, rel=1e-6) and bottom["y"] == pytest.approx([10.0] * 3, rel=1e-6)

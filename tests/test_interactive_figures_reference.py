@@ -24,6 +24,11 @@ OMEGA = 4800.0 * RPM  # operating speed 4800 rpm = 502.6548 rad/s
 SPEEDS = np.array([1000.0, 3000.0, 6000.0]) * RPM  # 1000, 3000, 6000 rpm
 
 
+def _no_check(key: str):
+    """Verdict.check of a verdict without checks."""
+    raise KeyError(key)
+
+
 def _assessment() -> SimpleNamespace:
     actuator = SimpleNamespace(name="amb_1", link=SimpleNamespace(x_shaft=1.0))
     # the actuator sits at shaft node 2 (its index among the actuators is 0)
@@ -55,7 +60,7 @@ def _assessment() -> SimpleNamespace:
         operating_speed=OMEGA,
         governing_point="nominal",
         point=lambda name: point,
-        verdict=SimpleNamespace(checks=[]),
+        verdict=SimpleNamespace(checks=[], check=_no_check),
         # the speed range 0.9 to 1.1 of the operating speed: 4320 to 5280 rpm
         design=SimpleNamespace(
             operating=SimpleNamespace(speed_limits=(0.9 * OMEGA, 1.1 * OMEGA)), requirements=requirements

@@ -32,20 +32,13 @@ from flexshaft.plot.output import render_figures, start_figures
 from flexshaft.report.html import Section, Table, write_report
 from flexshaft.report.inputs import inputs_section, report_title
 from flexshaft.report.results_json import json_ready, results_json
-from flexshaft.report.run_sections import (
-    Figures,
-    check_point,
-    imbalance_section,
-    loops_section,
-    stability_section,
-    thermal_section,
-)
+from flexshaft.report.run_sections import Figures, imbalance_section, loops_section, stability_section, thermal_section
 from flexshaft.report.studies_section import studies_section_and_jobs
 from flexshaft.report.verdict import separation_readings, verdict_section
 from flexshaft.thesis.design_studies import save_study_data
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import m_to_mm, rad_s_to_rpm, rpm_to_hz
-from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.assess import Assessment, check_point
 
 __all__ = ["RunReportPlan", "plan_run_report", "write_run_report"]
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from flexshaft.report.verdict import separation_readings, verdict_rows
 from flexshaft.units import m_to_mm, rad_s_to_hz, rad_s_to_rpm, rpm_to_hz
-from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.assess import Assessment, check_point
 from flexshaft.verdict.gather import actuator_limits
 from flexshaft.verdict.result import normalised_margin
 
@@ -347,8 +347,7 @@ def actuator_figure(a: Assessment) -> dict | None:
     if not model.actuators:
         return None
     # the envelope point where the excursion check governs: its spin-up and evidence
-    check = next((c for c in a.verdict.checks if c.key == "actuator_orbit"), None)
-    point = a.point(str(check.location.get("point", a.governing_point)) if check is not None else a.governing_point)
+    point = a.point(check_point(a, "actuator_orbit"))
     spin = point.analyses.spinup
     rpm = rad_s_to_rpm(spin.speeds)
     evidence = {e.name: e for e in point.evidence.actuators}

@@ -22,19 +22,11 @@ from flexshaft.report.html import FigureRef, Section, Table
 from flexshaft.report.results_json import rpm_or_none
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import format_quantity, kelvin_to_celsius, m_to_mm, rad_s_to_rpm
-from flexshaft.verdict.assess import Assessment
+from flexshaft.verdict.assess import Assessment, check_point
 from flexshaft.verdict.gather import WHIRL_DAMPING_SHAFT_SHARE, actuator_limits, judged_whirl_modes
 from flexshaft.verdict.text import limit_text, location_text
 
-__all__ = [
-    "Figures",
-    "check_point",
-    "imbalance_section",
-    "loops_section",
-    "plot_result",
-    "stability_section",
-    "thermal_section",
-]
+__all__ = ["Figures", "imbalance_section", "loops_section", "plot_result", "stability_section", "thermal_section"]
 
 
 def plot_result(result, kind: str | None = None, **kwargs):
@@ -328,14 +320,6 @@ def _judged_modes(a: Assessment) -> np.ndarray | None:
     return judged
 
 
-def check_point(a: Assessment, key: str) -> str:
-    """The envelope point where check ``key`` governs (the governing point when it has none)."""
-    try:
-        return str(a.verdict.check(key).location.get("point", a.governing_point))
-    except KeyError:
-        return a.governing_point
-
-
 def _where_governs(a: Assessment, key: str, what: str) -> tuple[Any, str]:
     """The analyses of the point where check ``key`` governs (the assessment's own for a design
     of one point) and a caption clause naming the point (empty for one point): ``what`` is the
@@ -356,7 +340,7 @@ def _governing_sentence(a: Assessment, key: str) -> str:
         c = a.verdict.check(key)
     except KeyError:
         return ""
-    point = c.location.get("point", a.governing_point)
+    point = check_point(a, key)
     if point == a.governing_point or c.value is None:
         return ""
     where = location_text({k: v for k, v in c.location.items() if k != "point"})

@@ -48,7 +48,15 @@ from flexshaft.verdict.gather import gather_evidence
 from flexshaft.verdict.operating_point import PointAnalyses, add_campbell, add_report_detail, analyse_point
 from flexshaft.verdict.result import Verdict
 
-__all__ = ["Assessment", "PointAssessment", "assess", "assess_point", "combine_points", "envelope_problems"]
+__all__ = [
+    "Assessment",
+    "PointAssessment",
+    "assess",
+    "assess_point",
+    "check_point",
+    "combine_points",
+    "envelope_problems",
+]
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -126,6 +134,16 @@ def _judged(name: str, analyses: PointAnalyses) -> PointAssessment:
     return PointAssessment(
         name=name, analyses=analyses, evidence=evidence, verdict=evaluate(evidence, analyses.design.requirements)
     )
+
+
+def check_point(a: Assessment, key: str) -> str:
+    """The name of the operating point where check ``key`` governs: its location's ``"point"``
+    (the governing point when the check names none or the verdict has no such check). What a
+    report section shows for one check is drawn there."""
+    try:
+        return str(a.verdict.check(key).location.get("point", a.governing_point))
+    except KeyError:
+        return a.governing_point
 
 
 @single_blas_thread
