@@ -7,7 +7,7 @@ each verdict's whirl-onset requirement (key ``whirl_onset``, kind speed), and th
 ``whirl_damping``, kind ratio): the module docstring lists "whirl onset and the smallest log
 decrement" as two of the quantities a designer weighs. Each design's verdict is made by hand
 with an onset actually found (not a lower bound at the scan's top) at 600 rad/s (design A) and
-450 rad/s (design B), and log decrements 0.12 and 0.30: dimensionless numbers four orders of
+450 rad/s (design B), and log decrements 0.12 and 0.30: dimensionless numbers three orders of
 magnitude from the speeds, so a metric reading the other requirement cannot pass. The values
 are copied, not computed, so the comparison is exact (== on the hand floats).
 

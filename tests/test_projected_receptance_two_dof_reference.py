@@ -23,10 +23,10 @@ stand-in of the solver's documented interface (term_weights rows [1, −ω², i�
 project_pairs give Uᴴ T_k W of the terms K, M, C).
 
 Tolerance 1e-11 relative: the basis is two well-separated responses (QR well conditioned) and
-the 2×2 projected solve loses κ(Z) ≲ 1e2 of the 1e-16 working precision at these probes (none
-within 20 % of a natural frequency, damping ratios of a few per cent); 1e-11 leaves a
-thousandfold margin for BLAS kernels, while a wrong sensing row (x₁/f₁ in place of x₂/f₁)
-changes P_c by tens of per cent or more.
+the 2×2 projected solve loses κ(Z) ≲ 1e2 of the 1e-16 working precision at these probes (the
+closest, 120 rad/s, is 15 % below √20000 ≈ 141.4 rad/s; damping ratios of a few per cent);
+1e-11 leaves a thousandfold margin for BLAS kernels, while a wrong sensing row (x₁/f₁ in place
+of x₂/f₁) changes P_c by tens of per cent or more.
 """
 
 from __future__ import annotations

@@ -2,8 +2,8 @@
 
 * docs/limits.md, section 1: "a layup at most 2000" characters (and the parser "at most 1000
   plies"). The rule holds for every layup of the file, so also for a ``[[shaft.segments]]``
-  zone's own layup (docs/segmented-driveline.md: a segment "may override the tube of
-  ``[shaft]``", layup included). A 2000-character layup of 1000 plies,
+  zone's own layup (docs/segmented-driveline.md's example segment: "any of outer_diameter,
+  wall_thickness, material, layup may change"). A 2000-character layup of 1000 plies,
   ``"10" + "/0" * 999`` (2 + 2·999 = 2000 characters, 1 + 999 = 1000 plies, counted here), is
   accepted by a segment; ``"-10" + "/0" * 999`` (2001 characters, still 1000 plies, so only
   the length can refuse it) is refused as too long at the segment's ``layup``.

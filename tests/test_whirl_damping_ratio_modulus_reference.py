@@ -3,8 +3,10 @@
 A root s = σ + iω_d of a damped single-degree-of-freedom mode is s = −ζω_n + iω_n√(1 − ζ²), so
 |s| = ω_n and ζ = −σ/|s| (Inman, *Engineering Vibration*, the underdamped root); −σ/ω_d is
 instead ζ/√(1 − ζ²) (derived here), which reaches 0.99 already at ζ = 0.70.
-:func:`~flexshaft.verdict.operating_point.whirl_modes` keeps the lateral roots with ζ below
-:data:`~flexshaft.verdict.operating_point.OVERDAMPED_RATIO` (0.99), so:
+docs/requirements.md (the `whirl_damping` check) counts "at least `modes` of them, 10 at every
+resolution: the torsional and axial modes and the real or overdamped roots of the controllers'
+states, ζ ≥ 0.99, do not take their places", so
+:func:`~flexshaft.verdict.operating_point.whirl_modes` keeps the lateral roots with ζ < 0.99:
 
 * a lateral root with ζ = 0.8 (−σ/ω_d = 0.8/0.6 = 1.33) is a whirl mode;
 * a real root s = −0.5 rad/s (a slow controller state: ζ = 1, while −σ over a zero damped

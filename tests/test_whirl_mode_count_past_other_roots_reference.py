@@ -10,8 +10,10 @@ torsional and the first axial mode of the tube (measured 5018 and 8130 rad/s), w
 whirl modes. Asked for 6 lateral modes at rest, the lowest six whirl modes are the k = 2 pair,
 the damped symmetric pair near 5077 rad/s and the k = 4 pair; the first solve (6 + 1 modes)
 holds only five of them, since the torsional and axial roots take two places, so the count must
-be made over the whirl modes (docstring: "until ``n_lateral`` of them are lateral vibration
-modes"), not over every root solved.
+be made over the whirl modes, not over every root solved: docs/requirements.md (the
+`whirl_damping` check) holds "at least `modes` of them, 10 at every resolution: the torsional
+and axial modes and the real or overdamped roots of the controllers' states, ζ ≥ 0.99, do not
+take their places".
 
 Tolerance 3 %: rotary inertia lowers ω_k by about ½ (kπ r_g/L)² (Rayleigh's correction, r_g =
 √(I/A) = 16 mm): 0.5 % for k = 2 and 2.0 % for k = 4 (measured 0.5 % and 1.9 %); the damped
