@@ -1,8 +1,8 @@
 """The damping ratio that sorts whirl modes from overdamped roots is −σ/|s|, not −σ/ω_d.
 
 A root s = σ + iω_d of a damped single-degree-of-freedom mode is s = −ζω_n + iω_n√(1 − ζ²), so
-|s| = ω_n and ζ = −σ/|s| (Inman, *Engineering Vibration*, the underdamped root); −σ/ω_d is
-instead ζ/√(1 − ζ²) (derived here), which reaches 0.99 already at ζ = 0.70.
+|s| = ω_n and ζ = −σ/|s| (the roots of s² + 2ζω_n s + ω_n² = 0 for ζ < 1); −σ/ω_d is
+instead ζ/√(1 − ζ²) (both derived here), which reaches 0.99 already at ζ = 0.70.
 docs/requirements.md (the `whirl_damping` check) counts "at least `modes` of them, 10 at every
 resolution: the torsional and axial modes and the real or overdamped roots of the controllers'
 states, ζ ≥ 0.99, do not take their places", so
