@@ -30,7 +30,8 @@ References (derived here or quoted):
 * **The forced-response study compares two walls.** docs/studies.md lists the datasets of
   ``DesignStudies``: "`forced_response` (2 walls × speed)". Two walls whatever the
   wall-thickness grid: the grid here has three walls, so a forced response run on the grid
-  has three.
+  has three. The two are the thesis's: figure 3.5, "Maximum shaft response with 1mm and 4mm
+  wall" (the thesis text, /work/shared/seed, its list of figures and page 51).
 * **A metal shaft still has its wall study.** docs/studies.md: ``wall_thickness_study`` "gives
   NaN safety factors for a non-laminated shaft" (its natural frequency and spin-up peak apply
   to any shaft), and a study is None only when it "does not apply to the design" (the
@@ -132,6 +133,7 @@ def test_forced_response_compares_two_walls(coarse, few):
     ds = _run(_task(tasks, "forced_response"))["forced_response"]
     assert len(FEW["walls"]) != 2  # the grid's wall count differs from the documented 2
     assert ds.sizes["wall_thickness"] == 2
+    assert list(ds["wall_thickness"].values) == pytest.approx([1e-3, 4e-3], rel=1e-12)  # thesis fig. 3.5
     assert ds.sizes["speed"] == FEW["forced_speeds"]
 
 
