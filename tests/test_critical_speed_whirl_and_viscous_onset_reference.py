@@ -15,12 +15,15 @@ References (read for this test, or derived here):
   critical speed lies BELOW it. The same holds for any whirl ratio 1/h > 0 (the gyroscopic
   moment keeps the sign of the whirl direction), so a backward whirl speed is below the forward
   one of the same mode (Nelson & McVaugh's pairs, labelled "k backward", "k forward").
-* Viscous internal-damping threshold, derived here: with the rotating damping C_i = β K and no
-  damping in the fixed frame, the fixed-frame equations in complex coordinates read
-  M q'' + Ω G q' + β K (q' − iΩ q) + K q = 0. A root on the imaginary axis, q = x e^{iωt}, needs
-  the damping term iβ(ω − Ω) K x to vanish (it is the only non-Hermitian part; x^H K x > 0), so
+* Viscous internal-damping threshold, derived here: with the rotating damping C_i = β K_s
+  (shaft elements only; MP,BETD on material 1, the beams' material, the bearings being
+  material 2) and no damping in the fixed frame, the fixed-frame equations in complex
+  coordinates read M q'' + Ω G q' + β K_s (q' − iΩ q) + K q = 0 (K = K_s + the bearings').
+  A root on the imaginary axis, q = x e^{iωt}, needs the damping term iβ(ω − Ω) K_s x to vanish
+  (it is the only non-Hermitian part; x^H K_s x > 0, the shaft bends in these modes), so
   ω = Ω and K x = Ω² (M − iG) x: the onset of instability is exactly the first forward
-  synchronous critical speed (docs/validation.md: "Ω = ω (1 + c_e/c_i)" with c_e = 0). A
+  synchronous critical speed (docs/validation.md, "Where flexshaft's models differ from the
+  sources' theories": "Jeffcott rotor, Ω = ω_n (1 + c_e/c_i)", here with c_e = 0). A
   hysteretic model has no such exact threshold (docs/validation.md, "The hysteretic whirl onset
   depends on the speed grid").
 
@@ -54,7 +57,7 @@ def _rest_lateral_rpm(case_id: str, pairs: int) -> np.ndarray:
 def test_the_zorzi_nelson_critical_speeds_are_forward_whirl():
     """VM261 lists FORWARD critical speeds, so the case's values must lie above the rest
     frequencies (gyroscopic stiffening, docstring). The splitting is 0.065 % and 0.42 % here; the
-    margin asked, 1e-4, is a million times the eigen-solvers' round-off (1e-12 on 20 DOFs)."""
+    margin asked, 1e-4, is 10⁸ times the eigen-solvers' round-off (1e-12 on 20 DOFs)."""
     case = case_by_id("zorzi-nelson-1976-critical")
     assert case.labels == ("1 forward", "2 forward")
     computed = np.asarray(run_case(case).computed)

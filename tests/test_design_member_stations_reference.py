@@ -1,14 +1,18 @@
 """Each station of a design is judged against its own member, and each bearing is found by its name.
 
-References: documented rules of the design file and the verdict:
+References: documented rules of the design file and the verdict, and a physical argument:
 
-* docs/model.md: "Bearing: relative displacement ... between a shaft point and the boom" -- two
-  stations on two members; the bearing model's own field docs: ``x`` is the "shaft station of
-  the bearing [m]; on the shaft", ``x_boom`` the "boom station the bearing is mounted on [m];
-  defaults to x". So ``x`` is judged against the shaft [x_start, x_end] and ``x_boom`` against
-  the tailboom [0, length]: a bearing off the shaft is refused even when its boom station lies
-  in the shaft's range, and one on the shaft with a boom station beyond x_end (but on a longer
-  boom) is accepted;
+* docs/model.md ("Elements"): a bearing is a "relative displacement over (u, v, w, β, γ)
+  between a shaft point and the boom attachment point at height h, interpolated with the
+  element shape functions (eq. 2.34)" -- two points on two members. Physically a shaft point
+  exists only on the shaft and a boom attachment point only on the boom, and each displacement
+  is interpolated in an element of its own member, so ``x`` is judged against the shaft
+  [x_start, x_end] and ``x_boom`` against the tailboom [0, length]: a bearing off the shaft is
+  refused even when its boom station lies in the shaft's range, and one on the shaft with a
+  boom station beyond x_end (but on a longer boom) is accepted. The bearing model's attribute
+  docs (the docstring of flexshaft.design.bearings' pydantic model: code, not a hand-written
+  doc) say the same: ``x`` "Shaft station of the bearing [m]; on the shaft.", ``x_boom`` "Boom
+  station the bearing is mounted on [m]; defaults to ``x``.";
 * a point load ``on = "shaft"`` acts at shaft station ``x``, which must be on the shaft, whatever
   the tailboom's length;
 * docs/requirements.md, actuator checks: "active bearings: ``gap``, the radial clearance of the

@@ -1,9 +1,11 @@
 """The passive every-root check reports its last basis whatever its estimate.
 
-Rule (flexshaft.analyses.root_stability, ``_passive_bases`` and ``_passive_roots``): the bases
-are tried in order until one's estimated error of the roots below the spin is within the
-tolerance; "the last basis's estimate is reported whatever it is" (docs/model.md, *The
-estimate*: the result reports what was reached). The last basis is never left at a failing
+Rule (docs/model.md, "Accuracy of the reduced eigenvalues": when the largest estimate exceeds
+the tolerance the basis size doubles, up to a bound, and "the result reports what was
+reached"). The code's docstring (code, not a hand-written doc: ``_passive_bases`` in
+flexshaft.analyses.root_stability) states it for this check: the bases are tried in order
+until one's estimated error of the roots below the spin is within the tolerance; "the last
+basis's estimate is reported whatever it is". The last basis is never left at a failing
 speed: every speed is solved on it and the check returns.
 
 The natural case needs a model with more free DOFs than 4·max(4n, 60) = 240 (else the last
