@@ -11,10 +11,11 @@ Q_w = −iU, imbalance_vector(model)) the disk's amplitudes are
 The lateral response lags the vertical one by a quarter turn (the −i of the rotating load) and
 its damping is c_w = 6 c_v, so its amplitude and, by about 90°, its phase differ from the
 vertical ones: a plot asked for the lateral direction that drew the vertical displacement
-fails both. The documented reading (plot_bode's docstring: "direction "v" (vertical), "w"
-(lateral) or "both""; bode_figure's: amplitude in mm, phase in degrees relative to the
-excitation) gives the amplitude panel 1000 |A_w| [mm] and the phase panel arg A_w [°] up to
-whole turns (the figure unwraps and shifts by multiples of 360°).
+fails both. Which displacement is lateral: docs/model.md, "y is vertical (up) and z lateral.
+Displacements u, v, w along x, y, z", so direction "w" is the lateral displacement. The
+reference is the closed form above: the amplitude panel must be 1000 |A_w| [mm] and the phase
+panel arg A_w [°] up to whole turns (the figure unwraps and shifts by multiples of 360°; the
+units mm and degrees are bode_figure's code docstring).
 
 Tolerances: the tube's mass, 3.5e-6 of the disk's (tests/rotors.py), is the model's only
 departure from the closed form, at speeds a factor 1.4 and more from the resonance: 1e-3 on the

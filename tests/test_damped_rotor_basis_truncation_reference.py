@@ -16,13 +16,16 @@ round-off, 1e4 below the plain basis's truncation error).
 
 * docs/model.md: "A ``basis_size`` given by the caller is used as it is (the plain modal basis
   of earlier versions)": ``basis_size`` = the number of free DOFs is the whole model, exact.
-* :func:`~flexshaft.analyses.modal.default_basis_size` documents a plain basis whose
-  truncation error is ≲ 1e-5: the error of the exact mode's components on the dropped modes,
-  falling as the square of the highest kept frequency. On this heavily damped rotor (ζ = 0.34,
+* :func:`~flexshaft.analyses.modal.default_basis_size`'s code docstring (no hand-written doc
+  states it) gives a plain basis whose "truncation error ≲ 1e-5 on the baseline": the error
+  of the exact mode's components on the dropped modes, falling as the square of the highest
+  kept frequency. On this heavily damped rotor (ζ = 0.34,
   one damper coupling every mode) the lowest pair errs by 7e-6 on the default basis; a basis
   of 4 or 8 modes errs by 5e-2 and 2e-3. Asserted below 1e-4 for one and two wanted modes.
-* :meth:`~flexshaft.analyses.modal.Modes.nearest` returns the modes nearest a frequency "by
-  frequency": in increasing damped frequency, not by distance.
+* The reference for the order is the API docstring (code) of
+  :meth:`~flexshaft.analyses.modal.Modes.nearest`, which no hand-written doc restates: the
+  indices of the modes nearest a frequency, "by frequency", i.e. in increasing damped
+  frequency, not by distance.
 * The table's title gives the spin speed in rpm: Ω [rad/s] · 30/π.
 """
 

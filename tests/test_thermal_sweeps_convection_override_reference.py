@@ -2,10 +2,13 @@
 profile of :func:`flexshaft.thermal.study.thermal_results`'s ``profiles.by_wall`` closes the
 shaft's control-volume energy balance with the shaft convection asked for.
 
-docs/thermal.md: ``thermal_results(design, model, loss_model=None, convection=None, ...)``,
-``convection`` overriding ``[thermal] shaft_convection`` (CLI ``--convection
-becker|kendoush``); the profiles are the thermal-design sweeps of that result, so a wall-sweep
-profile must be the shaft with wall t under the same options as the rest of the result. The
+docs/thermal.md: "CLI: `flexshaft thermal [DESIGN] [--loss-model thesis|rotating] [--convection
+becker|kendoush] [--self-heating] [--sweeps] [--json]`; the two overrides default to the
+design's choices", and ``thermal_results`` "returns a `ThermalResults` (boom and shaft results,
+the self-heating equilibrium, the sweeps' profiles)". The code's signature,
+``thermal_results(design, model, loss_model=None, convection=None, ...)``, carries the same
+override; the profiles are the thermal-design sweeps of that result, so a wall-sweep profile
+must be the shaft with wall t under the same options as the rest of the result. The
 wall sweep keeps D_o and the shaft air temperature, so the correlation's h is the design's.
 
 References, derived here (as tests/test_thermal_results_overrides_reference.py and

@@ -2,9 +2,10 @@
 
 References, documented rules quoted from hand-written docs:
 
-* docs/requirements.md, "The operating envelope": a check "is not evaluated when it could be
-  evaluated nowhere", and a design passes unless a check fails (docs/optimizer.md: checks a
-  driveline cannot have "are 'not evaluated' in the verdict of such a driveline, not failed").
+* docs/requirements.md: "The overall verdict passes when no check fails", and in "The
+  operating envelope" a check "is not evaluated when it could be evaluated nowhere";
+  docs/optimizer.md, of the checks a driveline cannot have: "(they are "not evaluated" in the
+  verdict of such a driveline, not failed)".
   So a design with one failing check is FAIL, and one whose checks pass but one not evaluated is
   PASS, in every place that states the verdict (here the data set's ``verdict`` attribute).
 * README.md, "Output": the verdict line names the failing checks, "`verdict: FAIL — 2 of 13 checks
