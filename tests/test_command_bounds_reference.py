@@ -2,7 +2,7 @@
 
 * A run-up records its output samples at t = 0, Δt, 2Δt, ... up to the end of the run, so a
   run of duration D holds ceil(D/Δt) + 1 samples (fence posts), with Δt = 2π/(8 Ω_max) (8 samples
-  per radian of the fastest content: at 4800 rev/min, Δt = 60/(8 × 4800) s = 1/640 s). At most
+  per period of the fastest content: at 4800 rev/min, Δt = 60/(8 × 4800) s = 1/640 s). At most
   200,000 samples are allowed (docs/limits.md: the run-up "refuses, before integrating, more
   than 200,000 output samples"):
   D = 199,998.5 Δt gives exactly 200,000 samples and runs, D = 199,999.5 Δt gives 200,001 and

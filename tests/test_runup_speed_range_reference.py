@@ -8,7 +8,7 @@ References (derived here, by hand, and the documented rules quoted):
   covers the same speeds as the run-up between them), not up to the design's operating speed;
 * --stop-rpm defaults to the operating speed (its help: "End speed [rpm]; default the operating
   speed"): a run without it ends, and reports its end, at the operating speed;
-* the output-sample bound is taken at the run's top speed (the --duration help: "8 per radian at
+* the output-sample bound is taken at the run's top speed (the --duration help: "8 per revolution at
   the top speed: 312 s at 4800 rpm"; docs/limits.md: at most 200,000 samples, "at most 312.5 s
   at 4800 rpm"). Derived: 8 samples per period of the fastest content, 4800 rpm = 80 rev/s, so
   a step of 1/640 s and (200,000 − 1)/640 = 312.498 s; a run-down from 4800 rpm reaches that

@@ -168,7 +168,7 @@ def check_spinup_map(design: Any, n_gains: int, n_speeds: int) -> None:
 
 def check_runup(model: Any, duration: float, dwell: float, top: float) -> None:
     """``flexshaft runup``: the output samples of the run (at most
-    :data:`flexshaft.analyses.transient.MAX_OUTPUTS`, 8 per radian of the fastest envelope
+    :data:`flexshaft.analyses.transient.MAX_OUTPUTS`, 8 per period of the fastest envelope
     content at the largest speed ``top`` [rad/s]) and the envelope states kept at each."""
     from flexshaft.analyses.transient import MAX_OUTPUTS, default_basis_size, default_output_step
     from flexshaft.units import rad_s_to_rpm
@@ -179,7 +179,7 @@ def check_runup(model: Any, duration: float, dwell: float, top: float) -> None:
         longest = (MAX_OUTPUTS - 1) * step
         fail(
             f"--duration {duration:g} s + --dwell {dwell:g} s up to {rad_s_to_rpm(top):.6g} rpm would give "
-            f"{samples:,} output samples (8 per radian of the fastest envelope content); at most "
+            f"{samples:,} output samples (8 per period of the fastest envelope content); at most "
             f"{MAX_OUTPUTS:,}: a run of at most {longest:.4g} s at this speed"
         )
     basis = default_basis_size(model, top)

@@ -37,7 +37,7 @@ def runup(
         typer.Option(
             "--duration",
             help="Run-up time from --start-rpm to --stop-rpm [s], at most 3600; with --dwell at most 200,000 "
-            "output samples (8 per radian at the top speed: 312 s at 4800 rpm).",
+            "output samples (8 per revolution at the top speed: 312 s at 4800 rpm).",
         ),
     ] = 10.0,
     start_rpm: Annotated[float, typer.Option("--start-rpm", help="Start speed [rpm].")] = 0.0,
