@@ -70,6 +70,8 @@ def test_key_numbers_table_notes_under_their_own_design():
     1.5 × Ω_op" (why A's value is a lower bound) belongs beside "> 6000 rpm", not beside B."""
     table = compare._metrics_table(_comparison([_ONSET]))
     assert list(table.columns) == ["quantity", "A", "B", "note (A)", "note (B)"]
+    # the values' display ("> " before a lower bound) is format_metric's docstring (code); the
+    # reference here is each note in its own design's column
     assert table.rows == [["whirl onset", "> 6000 rpm", "5400 rpm", "none up to 1.5 × Ω_op", "forward whirl, mode 2"]]
 
 

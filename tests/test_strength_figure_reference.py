@@ -6,7 +6,8 @@ read back from their matplotlib artists. References, by hand:
 * Tsai-Wu failure is R = 1 (the safety factor R scales the stresses to the failure surface,
   F(R sigma) = 1); the figure draws that line (labelled "failure (R = 1)"), so the y range must
   contain 1 whatever the factors are: on the logarithmic axis too, which the figure picks when
-  the factors span more than 50:1 (here 2 to 400, 200:1);
+  the factors span more than 50:1 (``safety_factor_figure``'s docstring, code; here 2 to 400,
+  200:1, and the axis is checked to be logarithmic);
 * the load-share chart labels each bar with its load: the bar at tick "torque" has the torque's
   share as its width, and so on (shares 0.5, 0.375, 0.25, -0.125 summing to 1, exact binary
   fractions, so widths and the "+50.0%" style labels are exact).
@@ -58,5 +59,5 @@ def test_each_load_share_bar_sits_at_its_own_name():
     for name, share in shares.items():
         assert width_at[tick_of[name]] == share, name
     texts = {t.get_text() for t in ax.texts}
-    assert texts == {"+50.0%", "+37.5%", "+25.0%", "-12.5%"}
+    assert texts == {"+50.0%", "+37.5%", "+25.0%", "-12.5%"}  # the labels' format is the code's own
     plt.close(fig)

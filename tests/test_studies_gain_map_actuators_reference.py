@@ -1,12 +1,14 @@
 """The design studies' gain maps of the actuators (report/studies_section.py) with two magnetic
 bearings: each cell shows the largest peak over the actuators.
 
-Reference (documented rule, by hand): thesis figures 3.15 and 3.16 and their captions are the
-*maximum* shaft displacement at the actuators and the *maximum* actuator force over the gains;
-analyses/spinup.py documents ``actuator_displacement_peak`` and ``actuator_force_peak`` as the
-largest value at *each* actuator, shape (n_kp, n_kd, n_act), and the figures' labels read "max
-actuator displacement [mm]" / "max actuator force [N]": the value of a cell is the larger of
-the two actuators' (picked by hand below). 1 m = 1000 mm (the displacement map's scale).
+Reference (the API contract in the code, by hand): thesis figures 3.15 and 3.16 are the
+"Maximum shaft displacement at the actuator location vs. control gains" and the "Maximum
+actuator force vs. control gains" (their captions; the thesis has one actuator per figure, so
+it says nothing of several); with several actuators ``SpinupMap.plot_actuator_displacement``'s
+docstring (code) shows the "largest over them", and analyses/spinup.py's docstrings give
+``actuator_displacement_peak`` and ``actuator_force_peak`` as the largest value at *each*
+actuator, shape (n_kp, n_kd, n_act): the value of a cell is the larger of the two actuators'
+(picked by hand below). 1 m = 1000 mm (the displacement map's scale).
 Figures are only recorded as jobs (never drawn). CPU about 0.5 s, nearly all xarray's first use.
 """
 
