@@ -50,3 +50,27 @@ def test_designs_equal_to_their_precision_are_recorded_once(method, budget):
     assert 2 <= walls_mm.size <= 4  # the pigeonhole bound; more than one design met (seed 1)
     front_mm = np.round(result.pareto["wall"].values * 1e3, 9)
     np.testing.assert_array_equal(front_mm, np.sort(walls_mm))  # the trade-off: every design, once
+
+
+def test_random_samples_cover_the_bounds():
+    """docs/optimizer.md, Algorithm: "`method="random"` (API) samples the bounds uniformly". The
+    wall in [1, 4] mm (4 significant digits, so a sample just below 4 mm may read 4.000 mm), 40
+    samples: every recorded wall lies in [1, 4] mm and each third of the range, [1, 2], [2, 3]
+    and [3, 4] mm, holds one. Derived here: a third is empty with probability (2/3)^40, any of
+    the three at most 3·(2/3)^40 ≈ 2.7e-7 (union bound); the seed is fixed anyway."""
+    pytest.importorskip("xarray")
+    from flexshaft.optimize import optimize
+
+    problem = DesignProblem(
+        (DesignVariable("shaft.wall_thickness", 0.001, 0.004, name="wall", units="m"),),
+        objectives=("shaft_mass", "safety_factor"),
+        constraints=(),
+        evaluate=mass_and_safety_factor,
+        outputs=(("shaft_mass", "kg", "1000 w"), ("safety_factor", "1", "1000 w")),
+        name="random wall",
+    )
+    result = optimize(problem, 40, None, seed=1, method="random")
+    walls_mm = result.evaluations["wall"].values * 1e3
+    assert np.all((walls_mm >= 1.0) & (walls_mm <= 4.0))
+    for low in (1.0, 2.0, 3.0):
+        assert np.any((walls_mm >= low) & (walls_mm <= low + 1.0)), f"no sample in [{low}, {low + 1}] mm"

@@ -1,21 +1,24 @@
 """Which Pareto design each written design file holds, and its re-verification, by hand.
 
-References (documented rules, quoted):
+References (quoted: the rules of docs/optimizer.md, hand-written, and two docstrings, each
+labelled "docstring, API contract in the code"):
 
-* ``OptimizationResult.write_designs``: "Write Pareto designs as design files ``pareto_NN.toml``
-  (all of them, or ``max_designs`` spread evenly along the front, its ends included)"; "the
-  Pareto dataset gets their names (``file``)". Five designs, three allowed: the evenly spread
-  positions 0, (5 − 1)/2 = 2 and 4 (exact, no rounding), written as pareto_01, _02, _03; the
-  other two rows name no file.
+* ``OptimizationResult.write_designs`` (docstring, API contract in the code; docs/optimizer.md
+  says only "spread along it, ends included", quoted below): "Write Pareto designs as design
+  files ``pareto_NN.toml`` (all of them, or ``max_designs`` spread evenly along the front, its
+  ends included)"; "the Pareto dataset gets their names (``file``)". Five designs, three
+  allowed: the evenly spread positions 0, (5 − 1)/2 = 2 and 4 (exact, no rounding), written
+  as pareto_01, _02, _03; the other two rows name no file.
 * docs/optimizer.md, the run folder: "designs/pareto_NN.toml  design files of the front (at most
   --designs, spread along it, ends included)", and "run the same command again on the folder":
   after a rerun on the same folder that writes two designs, the folder holds those two files
   and no file of the earlier, longer front.
-* ``OptimizationResult.verify``: "the Pareto dataset gets ``verified`` (1 pass, 0 fail, −1 not
-  written)"; docs/optimizer.md: pareto.nc holds "the feasible non-dominated designs (+ file,
-  verified)". The full run itself (``flexshaft run``'s assessment, tens of seconds a design) is
-  replaced here by a stand-in that returns a chosen verdict per file, so the test checks only
-  that each verdict lands on the design whose file it is.
+* ``OptimizationResult.verify`` (docstring, API contract in the code): "the Pareto dataset gets
+  ``verified`` (1 pass, 0 fail, −1 not written)"; docs/optimizer.md: pareto.nc holds "the
+  feasible non-dominated designs (+ file, verified)". The full run itself (``flexshaft run``'s
+  assessment, tens of seconds a design) is replaced here by a stand-in that returns a chosen
+  verdict per file, so the test checks only that each verdict lands on the design whose file
+  it is.
 
 Each design is told apart by its wall thickness (a design path the file keeps exactly: the
 writer prints floats with their shortest round-trip repr, so equality is exact). No physics
