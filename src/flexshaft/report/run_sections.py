@@ -340,7 +340,7 @@ def _governing_sentence(a: Assessment, key: str) -> str:
         c = a.verdict.check(key)
     except KeyError:
         return ""
-    point = check_point(a, key)
+    point = c.location.get("point", a.governing_point)  # check_point's rule, on the check in hand
     if point == a.governing_point or c.value is None:
         return ""
     where = location_text({k: v for k, v in c.location.items() if k != "point"})
