@@ -27,25 +27,14 @@ design (a few ms); the actuator-limit case builds one coarse model (well under 1
 
 from __future__ import annotations
 
+from test_schema_stations_reference import _problems, _refused_at
+
 from flexshaft.assembly import build_model
-from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.design import baseline_design, with_overrides
 from flexshaft.verdict.gather import actuator_limits
 
 #: A tailboom longer than the 8.05 m shaft: stations in (8.05, 10] m are on the boom only.
 LONG_BOOM = {"tailboom.length": 10.0}
-
-
-def _problems(overrides: dict) -> list[str]:
-    """The refusal's lines, or [] when the edited baseline validates."""
-    try:
-        with_overrides(baseline_design(), overrides)
-    except DesignError as exc:
-        return str(exc).strip().splitlines()
-    return []
-
-
-def _refused_at(overrides: dict, path: str) -> bool:
-    return any(line.startswith(f"{path}:") for line in _problems(overrides))
 
 
 def test_bearing_shaft_station_is_checked_on_the_shaft_not_at_its_boom_station() -> None:
