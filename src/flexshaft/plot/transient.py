@@ -167,7 +167,7 @@ def _exceedance(ax, values, label, scale=1.0):
     v = np.sort(np.asarray(values, dtype=float)[np.isfinite(values)]) * scale
     if v.size:
         p = 1.0 - np.arange(v.size) / v.size  # P(X ≥ v_k), ≥ 1/N
-        ax.step(v, p, where="post", label=label)
+        ax.step(v, p, where="pre", label=label)  # on (v_{k-1}, v_k]: P(X ≥ x) = p_k
 
 
 @styled
