@@ -19,7 +19,12 @@ import scipy.io
 import flexshaft.netcdf as nc
 from flexshaft.analyses.labelled import LabelledArrays
 
-pytestmark = pytest.mark.skipif(nc._netcdf4_available(), reason="netCDF4 installed: xarray writes the file")
+
+@pytest.fixture(autouse=True)
+def _netcdf3_writer(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The package's own netCDF3 writer, also where netCDF4 is installed (xarray would write)."""
+    monkeypatch.setattr(nc, "_netcdf4_available", lambda: False)
+
 
 USER = b"the user's own notes, not a netCDF file\n"
 

@@ -2,7 +2,7 @@
 
 Hand-built grids (no analysis); reference derived here: the map's cell (K_p,i, K_d,j) is
 centred at (log10 K_p,i, log10 K_d,j) for K_d,j > 0, and at y = 1/2 on the strip under the
-map for K_d,j = 0 (the module's documented layout: log axes, cells centred on the grid values,
+map for K_d,j = 0 (plot/gain_maps.py's module docstring, code: log axes, cells centred on the grid values,
 the zero-K_d row a strip of its own). So the text drawn at that centre must be the onset given
 for (i, j): "onset\\n<n> rpm" with n the onset rounded to whole rpm, "stable" where it is NaN.
 
