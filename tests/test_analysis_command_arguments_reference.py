@@ -9,18 +9,18 @@ the options, not numbers the code produced:
   passed is 0 rev/min = 0 rad/s exactly (0 × 2π/60 = 0 has no rounding), not the operating speed
   4800 rev/min of the default;
 * ``stability --compare-thesis`` adds "the thesis's aluminium, (45/-45)s and (45/-45/0/0)s
-  shafts" (the option's help): each row's analysis runs on a model built from its own shaft
-  (aluminium: material ``al6061_t6``; the FMC rows: their layup), and each row's onset speed is
-  the one its own analysis found;
+  shafts" (the option's help text, the CLI's code contract; README names the flag): each row's
+  analysis runs on a model built from its own shaft (aluminium: material ``al6061_t6``; the FMC
+  rows: their layup), and each row's onset speed is the one its own analysis found;
 * ``thermal --self-heating`` iterates the self-heating equilibrium and ``--sweeps`` adds the wall
-  and convection sweeps (docs/thermal.md's CLI line and the options' help): each flag reaches its
+  and convection sweeps (docs/thermal.md's CLI line lists the flags; their meanings are the
+  options' help texts, the CLI's code contract): each flag reaches its
   own argument of ``thermal_summary``, the other stays off;
 * ``flexshaft check`` "reports all three lists [model guards, thermal guards, envelope points],
   so that a design it accepts runs" (docs/limits.md section 2): a schema-valid design the model
   guards refuse (the Jeffcott rotor of tests/rotors.py with a nearly massless, unsupported tube,
   a free member whose modal basis the preflight refuses, tests/test_api_guards.py) is a user
-  error, exit 2 (README: "2 a user error (bad design file ...)"), with --json ``ok: false`` and
-  the problem at ``shaft.material``.
+  error, exit 2 (README: "2 a user error (bad design file ...)"), with --json ``ok: false``.
 
 No model is built or solved except the check's preflight of the 8-element Jeffcott rotor: about
 0.3 s in all.
@@ -144,6 +144,5 @@ def test_check_refuses_what_the_analyses_refuse(tmp_path) -> None:
     assert result.exit_code == 2, result.output
     data = json.loads(result.stdout)
     assert data["ok"] is False
-    assert [p["path"] for p in data["problems"]][:1] == ["shaft.material"]
     text = runner.invoke(app, ["check", str(path)])
     assert text.exit_code == 2 and "ok:" not in text.stdout

@@ -4,9 +4,11 @@ optimised or assessed).
 
 References: docs/optimizer.md — "Two fidelities (`--fidelity`), the presets ... `verdict`
 (default) ... `screening`"; the run folder "(`--out` ...; a folder of other files is refused
-without `--force`)"; ``--reference``: "Design marked on the figure: embedded name or file" (the
-option's help). The reference file is written here: the embedded tuned design with its wall
-changed by hand from 3.75 mm to 4.2 mm (a value no embedded design has), so the design the
+without `--force`)"; the references: "the Pareto-front figure, base and references marked", and
+in the API ``references={"tuned": tuned_design()}`` (a name to a design); the CLI's
+``--reference`` takes an "embedded name or file" (the option's help text, the CLI's code
+contract). The reference file is written here: the embedded tuned design with its wall changed
+by hand from 3.75 mm to 4.2 mm (a value no embedded design has), so the design the
 search receives under the file's name must carry 4.2 mm (exact: the decimal read from the
 file, no arithmetic). CPU: a design load and the command's checks (< 1 s).
 """

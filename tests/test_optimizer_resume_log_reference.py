@@ -4,9 +4,11 @@ and a stored evaluation is only reused by the same evaluation.
 References: the documented contract of the run folder (docs/optimizer.md, "Parallel, cached,
 resumable": "A design's key is the SHA-256 of the evaluation (function, outputs, fidelity,
 flexshaft version) and of the design itself (all fields but its name), so a design met again
-... a resumed run — is read, not computed"; and "An interrupted run ... resumes with no
-evaluation repeated"), and :class:`flexshaft.optimize.store.EvaluationCache`: a line that does
-not parse (a run killed while writing it) is skipped with a warning and evaluated again.
+... a resumed run — is read, not computed"; and, under "Verification": "An interrupted run ...
+resumes with no evaluation repeated ...; a damaged record is skipped with a warning and
+recomputed"), and :class:`flexshaft.optimize.store.EvaluationCache`'s docstring (code): "A line
+that does not parse (not UTF-8, not JSON: a damaged or overwritten file) or whose checksum
+``sum`` does not match (a run killed while writing it) is skipped with a warning".
 Consequences derived here: a log whose last line was torn holds exactly one damaged record
 however many times it is resumed and extended; a candidate evaluated at the ``screening``
 fidelity is computed again (one new evaluation) at ``verdict``, and read (none) at

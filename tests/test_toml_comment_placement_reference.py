@@ -1,9 +1,11 @@
 """Comments of a design file placed by hand on known keys: a key under a table header, and a
 standalone comment line at column 0 right under a key.
 
-Reference: the documented rules of :mod:`flexshaft.optimize.toml_comments` ("a comment after a
-key's value ... belongs to that key ..., and so do the indented comment lines right under it";
-"comment lines that stand alone belong to the next key or table header") and TOML v1.0.0
+Reference: docs/optimizer.md, the design files keep "every note at the key or table it annotates
+(... the indented continuation lines of a long note too)"; the rules of
+:mod:`flexshaft.optimize.toml_comments`' module docstring, the code's contract ("a comment after
+a key's value ... belongs to that key ..., and so do the indented comment lines right under it";
+"comment lines that stand alone belong to the next key or table header"); and TOML v1.0.0
 ("Table": keys under a ``[table]`` header belong to that table until the next header), so
 ``wall_thickness`` under ``[shaft]`` is the path ``("shaft", "wall_thickness")``. The texts are
 written here; each expected placement is read off them by hand. Text only (CPU: ms).
@@ -30,6 +32,7 @@ def test_a_key_under_a_table_carries_its_own_comments():
     ``("shaft", "wall_thickness")``, not at the top-level ``wall_thickness`` (which keeps its
     own inline note only)."""
     keys = read_comments(TEXT).keys
+    assert ("shaft", "wall_thickness") in keys
     shaft_wall = keys[("shaft", "wall_thickness")]
     assert shaft_wall.before == ["the tube wall"]
     assert shaft_wall.inline == ["m, 8 plies (assumed)"]
