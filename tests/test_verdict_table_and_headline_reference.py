@@ -22,27 +22,17 @@ formatted strings, exact.
 
 from __future__ import annotations
 
-import math
+import dataclasses
+
+from test_verdict_text_reference import _speed_check
 
 from flexshaft.verdict.result import Check, Verdict
 from flexshaft.verdict.text import location_text, verdict_headline, verdict_rows
 
-RPM = 2.0 * math.pi / 60.0  # rad/s per rpm
-
 
 def _onset(value_rpm: float, limit_rpm: float, lower_bound: bool = False, key: str = "whirl_onset") -> Check:
-    value, limit = value_rpm * RPM, limit_rpm * RPM
-    return Check(
-        key=key,
-        title=key.replace("_", " "),
-        kind="speed",
-        sense="at least",
-        status="pass" if value >= limit else "fail",
-        value=value,
-        limit=limit,
-        margin=value - limit,
-        lower_bound=lower_bound,
-    )
+    """The sibling test's speed check, a lower bound when ``lower_bound``."""
+    return dataclasses.replace(_speed_check(key, value_rpm, limit_rpm), lower_bound=lower_bound)
 
 
 def _skipped(key: str) -> Check:
