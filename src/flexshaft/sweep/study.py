@@ -298,6 +298,7 @@ class Study:
         """
         design_vars = [v for v in self.variables if v.is_design]
         self.design_at({})  # the fixed overrides alone
+        setter = dict.fromkeys(self.fixed, "the fixed overrides")  # who sets each design path
         for v in design_vars:
             for value in v.values:
                 try:
@@ -308,6 +309,7 @@ class Study:
                     raise SweepError(
                         f"variable {v.name!r}: overrides({value!r}) must return a mapping of path to value"
                     )
+                _claim_paths(setter, overrides, f"variable {v.name!r}")
                 self.design_at({v.name: value})
         n_combos = int(np.prod([len(v.values) for v in design_vars], dtype=np.int64)) if design_vars else 1
         if 1 < n_combos <= _VALIDATE_ALL_LIMIT and len(design_vars) > 1:
@@ -329,6 +331,22 @@ class Study:
     def fingerprint(self) -> str:
         text = json.dumps(self.spec(), sort_keys=True, default=repr)
         return hashlib.sha256(text.encode()).hexdigest()
+
+
+def _claim_paths(setter: dict[str, str], overrides: Mapping[str, Any], who: str) -> None:
+    """Record that ``who`` sets ``overrides``' design paths; refuse a path set twice.
+
+    Overrides are applied fixed first, then the variables in order, so a path set twice takes
+    the last value: a fixed value would be shown in the results but never used, a variable
+    would be a grid axis that changes nothing.
+    """
+    for path in overrides:
+        other = setter.setdefault(path, who)
+        if other != who:
+            raise SweepError(
+                f"design path {path!r} is set by both {other} and {who}: the last would silently "
+                "override the other at every point; set each path in one place"
+            )
 
 
 def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise") -> np.ndarray:
