@@ -86,3 +86,18 @@ def test_blocking_checks_counted_by_hand():
     assert (strength["rejected"], strength["alone"], strength["not_evaluated"]) == (2, 1, 0)
     assert (strength["best_margin"], strength["best_evaluation"]) == (0.9, 5)
     assert (invalid["rejected"], invalid["best_evaluation"]) == (1, -1) and math.isnan(invalid["best_margin"])
+
+
+def test_an_infinite_margin_is_an_evaluated_pass():
+    """A check "passed with nothing to measure" (docs/requirements.md, "The checks") has the
+    normalised margin +inf: docs/magnetic-bearings.md's loop that "never crosses −180° (no gain
+    margin limits it)". It is evaluated and passes: it rejects nothing, is not counted "not
+    evaluated" (NaN only) and is the best margin. Hand count over e0 +inf, e1 NaN, e2 0.2:
+    rejects 1 (e1, alone), not evaluated 1, best +inf at e0."""
+    problem = _problem([("mass", "min")], ["margin_gain"])
+    evaluations = xr.Dataset(
+        {"margin_gain": ("evaluation", [math.inf, math.nan, 0.2]), "error": ("evaluation", ["", "", ""])}
+    )
+    (row,) = OptimizationResult(problem, evaluations=evaluations, pareto=None).blocking_checks()
+    assert (row["rejected"], row["alone"], row["not_evaluated"]) == (1, 1, 1)
+    assert row["best_margin"] == math.inf and row["best_evaluation"] == 0

@@ -15,12 +15,15 @@ import json
 import math
 from enum import Enum
 from pathlib import Path
-from typing import NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn
 
 import typer
 
 from flexshaft.cli.common import dask_client, fail, guarded, plain, print_json
 from flexshaft.cli.options import JOBS_HELP, MAX_JOBS, JsonOption
+
+if TYPE_CHECKING:
+    from flexshaft.optimize.variables import DesignVariable
 
 
 class Fidelity(str, Enum):
@@ -169,7 +172,9 @@ def optimize(
     ignore_check: list[str] | None = typer.Option(
         None, "--ignore-check", help="Verdict check not used as a constraint (default: all)."
     ),
-    set_value: list[str] | None = typer.Option(None, "--set", help="Fixed override PATH=VALUE on every candidate."),
+    set_value: list[str] | None = typer.Option(
+        None, "--set", help="Fixed override PATH=VALUE on every candidate; the default search leaves out what it holds."
+    ),
     fidelity: Fidelity = typer.Option(
         Fidelity.verdict, "--fidelity", help="verdict (the run's resolution) or screening (coarser, for ranking)."
     ),
@@ -225,7 +230,7 @@ def optimize(
         if var:
             variables, template = tuple(parse_variable(s) for s in var), layup
         else:
-            variables, template = default_variables(base, layup)
+            variables, template = _search_around(default_variables(base, layup), fixed, layup)
         problem = DesignProblem(
             variables,
             base=base,
@@ -305,6 +310,18 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client
     if failed:
         typer.echo(f"re-verification with the full run FAILS for: {', '.join(failed)}", err=True)
         raise typer.Exit(code=NO_DESIGN_PASSES)
+
+
+def _search_around(
+    default: tuple[tuple[DesignVariable, ...], str | None], fixed: dict[str, Any], layup: str | None
+) -> tuple[tuple[DesignVariable, ...], str | None]:
+    """The default search without what ``--set`` holds: a variable any of whose paths is set,
+    and the ply-angle variables with their template when ``--set`` gives ``shaft.layup`` (and
+    ``--layup`` does not)."""
+    variables, template = default
+    if "shaft.layup" in fixed and layup is None:
+        variables, template = tuple(v for v in variables if v.placeholder is None), None
+    return tuple(v for v in variables if not set(v.paths) & set(fixed)), template
 
 
 def _suffixed(name: str, units: str) -> str:

@@ -167,6 +167,12 @@ class DesignProblem:
         set_field("layup", layup)
         set_field("ply_thickness", ply_thickness)
         set_field("fixed", dict(fixed or {}))
+        searched = sorted(set(paths) & set(self.fixed))
+        if searched:  # overrides() applies fixed first: every candidate would take the variable's value
+            raise OptimizeError(
+                f"{searched[0]} is both fixed and a variable's path, and the variable would win in every "
+                "candidate: fix it or search it, not both"
+            )
         set_field("evaluate", evaluate)
         set_field("name", name)
         if fidelity not in FIDELITIES:

@@ -177,15 +177,19 @@ class OptimizationResult:
         rows: list[dict[str, Any]] = []
         for k, name in enumerate(constraints):
             column = margins[:, k]
-            finite = np.isfinite(column)
-            best = int(np.flatnonzero(valid)[np.flatnonzero(finite)[np.argmax(column[finite])]]) if finite.any() else -1
+            evaluated = ~np.isnan(column)  # +inf: a pass with nothing to measure (no phase crossover)
+            best = (
+                int(np.flatnonzero(valid)[np.flatnonzero(evaluated)[np.argmax(column[evaluated])]])
+                if evaluated.any()
+                else -1
+            )
             rows.append(
                 {
                     "check": name.removeprefix("margin_"),
                     "rejected": int(fails[:, k].sum()),
                     "alone": int((fails[:, k] & (fails.sum(axis=1) == 1)).sum()),
-                    "not_evaluated": int((~finite).sum()),
-                    "best_margin": float(column[finite].max()) if finite.any() else float("nan"),
+                    "not_evaluated": int((~evaluated).sum()),
+                    "best_margin": float(column[evaluated].max()) if evaluated.any() else float("nan"),
                     "best_evaluation": best,
                 }
             )

@@ -1,0 +1,57 @@
+"""A field fixed with ``--set`` stays fixed in every candidate of the optimizer.
+
+docs/optimizer.md: "`--set PATH=VALUE` fixes a field on every candidate, and the default search
+then leaves out the variable that would set it (`--set shaft.layup=...` leaves out the ply
+angles). With `--var`, a path both set and searched is refused: the variable would win in every
+candidate." A candidate's overrides apply the fixed ones first, then the variables, so before
+this rule the default search's wall-thickness variable silently overrode ``--set
+shaft.wall_thickness``.
+
+No candidate is evaluated: the default search of the embedded tuned design, its variables'
+paths and the problem's overrides are read directly (a few ms).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from flexshaft.cli.optimize import _search_around
+from flexshaft.design import tuned_design
+from flexshaft.optimize import DesignProblem, DesignVariable, OptimizeError, default_variables
+
+
+def _paths(variables):
+    return {p for v in variables for p in v.paths}
+
+
+def test_the_default_search_leaves_out_a_set_field_and_holds_it_in_every_candidate():
+    base = tuned_design()
+    default = default_variables(base, None)
+    assert "shaft.wall_thickness" in _paths(default[0])  # the default search has the wall
+    fixed = {"shaft.wall_thickness": 0.004}
+    variables, template = _search_around(default, fixed, None)
+    assert _paths(variables) == _paths(default[0]) - {"shaft.wall_thickness"}
+    assert template == default[1]  # the ply angles are still searched
+    problem = DesignProblem(variables, base=base, layup=template, fixed=fixed)
+    for x in (problem.bounds[0], problem.bounds[1]):  # both corners of the search space
+        assert problem.overrides(problem.values(x))["shaft.wall_thickness"] == 0.004
+
+
+def test_a_set_layup_leaves_out_the_ply_angles_and_their_template():
+    base = tuned_design()
+    default = default_variables(base, None)
+    fixed = {"shaft.layup": "(45/-45/45/-45/0/0)s"}
+    variables, template = _search_around(default, fixed, None)
+    assert template is None and all(v.placeholder is None for v in variables)
+    assert _paths(variables) == {p for v in default[0] if v.placeholder is None for p in v.paths}
+    problem = DesignProblem(variables, base=base, layup=template, fixed=fixed)
+    assert problem.overrides(problem.values(problem.bounds[0]))["shaft.layup"] == fixed["shaft.layup"]
+
+
+def test_a_path_both_fixed_and_searched_is_refused():
+    with pytest.raises(OptimizeError, match=r"shaft\.wall_thickness is both fixed and a variable's path"):
+        DesignProblem(
+            (DesignVariable("shaft.wall_thickness", 0.002, 0.003),),
+            base=tuned_design(),
+            fixed={"shaft.wall_thickness": 0.004},
+        )
