@@ -3,9 +3,9 @@
 docs/magnetic-bearings.md: "`A(s)`: the amplifier (current loop) as a first-order lag of
 bandwidth `ω_a`", the feedback law is "`G(s) = k_i A(s) C(s)`", the table gives
 `amplifier_bandwidth` in Hz with "none (ideal)" as default, and the spin-up maps "keep each
-bearing's magnet (`k_i`, `k_s`), amplifier and sensor position". Its key table also gives `ki` [N/A] a default of 1. So,
-derived here, the feedback at the synchronous s = iΩ multiplies the controller values C(iΩ)
-[A/m] of a bearing with current gain k_i and bandwidth f_a by
+bearing's magnet (`k_i`, `k_s`), amplifier and sensor position"; its key table gives `ki`
+[N/A] a default of 1. So, derived here, the feedback at the synchronous s = iΩ multiplies the
+controller values C(iΩ) [A/m] of a bearing with current gain k_i and bandwidth f_a by
 
     k_i A(iΩ) = k_i / (1 + iΩ / (2π f_a)),
 
@@ -14,8 +14,8 @@ given) as they are: a design mixing the two must still lag (and scale) the one t
 
 Model: the Jeffcott rotor of tests/rotors.py (4 elements) with two active bearings, one with the
 defaults k_i = 1 N/A and an ideal amplifier at x = 0.25 and one with k_i = 100 N/A and a 50 Hz
-amplifier at x = 0.75; speeds 0.3, 0.6 and 1.4 ω_n, where
-Ω/ω_a is 0.3 to 3 (lags of 17° to 72°, far from 1). The expected values are one complex division
+amplifier at x = 0.75; speeds 0.3, 0.6 and 1.4 ω_n (ω_n = 302 rad/s), where Ω/ω_a is 0.29 to
+1.35 (lags of 16° to 53°, none lost in rounding). The expected values are one complex division
 each (relative rounding 1e-16), so rtol 1e-12 leaves four orders for the product's own
 arithmetic. CPU: a few milliseconds.
 """
