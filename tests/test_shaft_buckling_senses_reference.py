@@ -34,6 +34,7 @@ the positive sense takes the smaller transverse shear modulus, G₂₃ < G₁₃
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import pytest
 
@@ -137,3 +138,18 @@ def test_the_safety_factor_takes_the_weaker_sense_whichever_way_the_plies_lean(p
         weaker = min(tube["critical_torque_positive_Nm"], tube["critical_torque_negative_Nm"])
         assert tube["safety_factor"] == pytest.approx(weaker / torque, rel=1e-12)
     assert minus["safety_factor"] == pytest.approx(plus["safety_factor"], rel=1e-9)
+
+
+def test_the_printed_summary_names_the_weaker_senses_mode(pair):
+    """The summary prints T_cr = min(T₊, T₋) and the mode that governs it, the weaker sense's.
+    The [−45] tube's weaker sense is the negative one (the mirror of [+45]); its modes are
+    relabelled by hand, the positive sense "global helical" and the negative "shear crimping",
+    so the summary must name shear crimping at the negative sense's torque."""
+    _, minus_model, _, minus = pair
+    found = shaft_buckling(minus_model)
+    relabelled = replace(
+        found, result=replace(found.result, governing_positive="global helical", governing_negative="shear crimping")
+    )
+    weaker = minus["critical_torque_negative_Nm"]
+    assert weaker < minus["critical_torque_positive_Nm"]
+    assert f"T_cr {weaker:.4g} N m (shear crimping)" in repr(relabelled)

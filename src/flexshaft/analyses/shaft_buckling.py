@@ -40,8 +40,8 @@ class ShaftBuckling:
     def __repr__(self) -> str:
         r = self.result
         return (
-            f"ShaftBuckling({r.theory} shell: T_cr {min(r.torque_positive, r.torque_negative):.4g} N m "
-            f"({r.governing_positive}), T {self.torque:.4g} N m, safety factor {self.safety_factor:.3g})"
+            f"ShaftBuckling({r.theory} shell: T_cr {r.critical_torque:.4g} N m "
+            f"({r.governing}), T {self.torque:.4g} N m, safety factor {self.safety_factor:.3g})"
         )
 
     def to_dict(self) -> dict:
