@@ -24,9 +24,18 @@ rotating_mass's parts (tubes and disks). The w components are −i times the v c
 (Q_w = −i F). Sums of nine nodal values of size 1e-3: rel 1e-12 on the resultant, abs 1e-12 m
 on the centroid (the first element's midpoint, 0.0625 m, is 0.44 m away).
 
-One 8-element model is built: a few ms.
+The Monte-Carlo run-up's per-bay loads (per_bay_imbalance_loads) follow the same rule: with no
+bay the one bay is the whole shaft (its docstring, quoted above), and bay b's unbalance U_b at
+angle ψ_b sits at x = a_b + position_b (b_b − a_b) with Q_v = U_b e^{iψ_b}, Q_w = −i Q_v (its
+docstring). For the Jeffcott shaft (a = 0, b = 1 m) a position of 0.25 puts it at x = 0.25 m,
+away from every element midpoint (the first element's, 0.0625 m, is where a first-element bay
+would put a mid-bay load; its quarter point 0.03125 m). Same sums, same tolerances as above
+(|U| = 2e-3 kg m).
 
-Written for the mutation h57b-loads-no-bay-imbalance-first-element of scripts/mutations.toml.
+One 8-element model is built per test: a few ms.
+
+Written for the mutations h57b-loads-no-bay-imbalance-first-element and
+h82a-loads-per-bay-no-bay-first-element of scripts/mutations.toml.
 """
 
 from __future__ import annotations
@@ -38,7 +47,7 @@ import numpy as np
 import pytest
 
 from flexshaft.assembly import build_model
-from flexshaft.assembly.loads import imbalance_bays, imbalance_loads
+from flexshaft.assembly.loads import imbalance_bays, imbalance_loads, per_bay_imbalance_loads
 from flexshaft.design import design_from_dict
 from flexshaft.validation.runner import design_text
 
@@ -59,4 +68,22 @@ def test_a_shaft_without_a_bay_carries_its_imbalance_at_mid_shaft():
     assert abs(force.imag) <= 1e-15
     centroid = ((x * v).sum() + gamma.sum()) / force
     assert abs(centroid - 0.5) <= 1e-12
+    np.testing.assert_allclose(w, -1j * v, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("position", [0.5, 0.25])
+def test_the_run_up_unbalance_of_a_shaft_without_a_bay_spans_the_whole_shaft(position):
+    model = build_model(design_from_dict(tomllib.loads(design_text("jeffcott_internal_damping.toml"))))
+    assert imbalance_bays(model) == []
+    U, psi = 2.0e-3, 0.7
+    Q = per_bay_imbalance_loads(model, U, angle=psi, position=position)
+    dm = model.dofs
+    nodes = np.arange(dm.n_shaft_nodes)
+    x = dm.shaft_x
+    v, w, gamma = (Q[dm.shaft(nodes, f)] for f in ("v", "w", "gamma"))
+    force = v.sum()
+    expected = U * np.exp(1j * psi)
+    assert abs(force - expected) <= 1e-12 * U
+    centroid = ((x * v).sum() + gamma.sum()) / force
+    assert abs(centroid - position * 1.0) <= 1e-12
     np.testing.assert_allclose(w, -1j * v, rtol=0, atol=1e-15)
