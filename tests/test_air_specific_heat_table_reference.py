@@ -2,9 +2,10 @@
 
 Incropera & DeWitt, *Fundamentals of Heat and Mass Transfer*, Table A.4 (air at atmospheric
 pressure) lists c_p = 1.006, 1.007, 1.009 and 1.014 kJ/(kg K) at 250, 300, 350 and 400 K.
-:func:`~flexshaft.thermal.air.air_properties` documents c_p as the linear interpolation of these
-rows, so at a row it must return the row's value and half-way between two rows their mean
-(derived here: 1008 J/(kg K) at 325 K, 1006.5 J/(kg K) at 275 K, 1011.5 J/(kg K) at 375 K).
+docs/thermal.md ("Air", line 103) takes c_p from Incropera Table A.4, so at a row c_p must be
+the row's value. API contract (module docstring of flexshaft.thermal.air: c_p is the linear
+interpolation of these rows): half-way between two rows it is their mean (derived here:
+1008 J/(kg K) at 325 K, 1006.5 J/(kg K) at 275 K, 1011.5 J/(kg K) at 375 K).
 
 The values are a few additions of numbers near 1e3, exact to a few ulps: rel = 1e-12 leaves
 four orders of magnitude of room and still sees a 1 J/(kg K) slip (1e-3 relative) by a factor

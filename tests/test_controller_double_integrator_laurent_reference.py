@@ -13,8 +13,11 @@ Derived reference.
   d0 is deliberately not 1, and n0 ≠ 0 with P(−d0/d1) ≠ 0, so no root cancels.
 * A bearing with current gain k_i and magnet stiffness k_s carries ``k_i C(s) − k_s``
   (docs/magnetic-bearings.md: ``G(s) − k_s`` with ``G = k_i A(s) C(s)``; no amplifier lag
-  here). The constant term of its Laurent series, k_i c2 − k_s, is what ``Model.Kp`` puts on
-  the magnet's lateral DOFs when positive.
+  here). The constant term of its Laurent series, k_i c2 − k_s, is the bearing's proportional
+  stiffness, and docs/magnetic-bearings.md ("Modal basis with negative stiffness", lines
+  109-111) puts its positive part k_a in the modal basis ("`k_a` the positive part of each
+  bearing's proportional stiffness (`k_i K_p − k_s` of a PD or PID law ...), never negative"):
+  ``Model.Kp`` holds that k_a on the magnet's lateral DOFs.
 
 Tolerances: the gains are a handful of floating-point operations on the given coefficients; the
 three terms of c2 (1.6e6, −3.2e4, 3.2e2) do not cancel, so relative rounding stays within a few
@@ -45,6 +48,7 @@ def _magnet_model(law: str, extra: str = ""):
 
 
 def test_the_proportional_gain_of_a_pii_law_is_kp():
+    """PII law kp + ki/s + kii/s²: the Laurent constant term and the basis stiffness are kp."""
     kp, ki, kii = 1.2e6, 3.0e7, 4.0e9
     law = Controller((kp, ki, kii), (1.0, 0.0, 0.0))
     assert law.integrates
@@ -53,11 +57,13 @@ def test_the_proportional_gain_of_a_pii_law_is_kp():
 
 
 def test_the_proportional_gain_of_a_double_integrator_is_the_laurent_constant_term():
+    """P(s)/(s² Q(s)): the s⁰ coefficient is c2 = n2/d0 − n1 d1/d0² + n0 d1²/d0³."""
     law = Controller((N3, N2, N1, N0), (D1, D0, 0.0, 0.0))
     assert abs(law.proportional_gain - C2) <= 1e-12 * C2
 
 
 def test_the_basis_stiffness_of_a_double_integrating_bearing_is_ki_c2_minus_ks():
+    """Model.Kp on the magnet's v and w DOFs is k_a = k_i c2 − k_s (positive here)."""
     model = _magnet_model(
         f"controller = {{ numerator = [{N3}, {N2}, {N1}, {N0}], denominator = [{D1}, {D0}, 0.0, 0.0] }}",
         f"ki = {KI}\nks = {KS}\n",

@@ -5,10 +5,11 @@ References:
 * percent: 1 % = 0.01 (ISO 80000-1:2009, the percent sign as the number 0.01), so a fraction
   f displays as 100 f %; a separation of 0.25 is 25.0 %, of 0.032 is 3.2 %. A difference of
   two fractions is a margin in percentage points, 100 Δf pts.
-* :func:`flexshaft.units.format_quantity` documents "a value (or a signed margin)": a margin
-  carries its sign, '+' when positive, so a table cell of a margin never reads like a value;
-  a value carries none. The units are the documented ones (speeds in rpm = 60 Ω/(2π), lengths
-  in mm, forces in N, angles in degrees, gains in dB, ratios plain).
+* API contract (docstring of :func:`flexshaft.units.format_quantity`; no docs page states it):
+  "a value (or a signed margin)": a margin carries its sign, '+' when positive, so a table cell
+  of a margin never reads like a value; a value carries none. The display units are the ones
+  that docstring lists (speeds in rpm = 60 Ω/(2π), lengths in mm, forces in N, angles in
+  degrees, gains in dB, ratios plain).
 
 Exact strings: every number here is exactly representable to the printed digits after one
 multiplication (100 × 0.25, 60/(2π) × 2π·80 = 4800 to far below the 0.5 rpm rounding), so the
