@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 from types import SimpleNamespace
 
 import numpy as np
@@ -25,7 +26,7 @@ from flexshaft.design import loads_design, with_overrides
 from flexshaft.report.results_json import _spinup_peak, results_json, rpm_or_none
 from flexshaft.resolution import Resolution
 from flexshaft.verdict.assess import assess
-from flexshaft.verdict.result import Check, Verdict
+from flexshaft.verdict.result import Check, Finding, Verdict
 
 RPM_PER_RAD_S = 60.0 / (2.0 * math.pi)
 #: The design's layup (55/-55/0/0)s, ply by ply from the inside, expanded by hand.
@@ -204,3 +205,38 @@ def test_spin_up_peak_without_a_limit_is_the_largest_orbit_up_to_the_operating_s
     peak = _spinup_peak(a)
     assert peak["max_shaft_orbit_spin_up_m"] == pytest.approx(4e-5, rel=1e-12)
     assert peak["speed_of_max_rpm"] == pytest.approx(3000.0, rel=1e-12)
+
+
+def test_the_spin_up_peak_is_the_governing_points_not_the_checks_worst():
+    """results.json's numbers are those of the governing point (docs/requirements.md: "The
+    assessment's own analyses (the report's figures, `results.json`'s numbers) are those of the
+    governing point"), and the report states the check's own worst value beside them when it
+    governs elsewhere. Hand-made findings: 0.4881 mm at 262.15 rad/s at cold_day (governing)
+    and 0.4982 mm at 260.35 rad/s at hot_soak_start, the check's worst; the peak must read
+    cold_day's, 262.15 · 60/(2π) = 2503.3 rpm. A single point's finding names no point and is
+    read as the governing point's."""
+
+    def finding(value, speed, **point):
+        return Finding(value, 5e-3, 5e-3 - value, location={**point, "station": 0.0, "speed": speed})
+
+    cold = finding(4.881e-4, 262.15, point="cold_day")
+    hot = finding(4.982e-4, 260.35, point="hot_soak_start")
+    worst = Check(
+        "spinup_deflection",
+        "spin-up shaft orbit",
+        "length",
+        "at most",
+        "pass",
+        4.982e-4,
+        5e-3,
+        5e-3 - 4.982e-4,
+        location=dict(hot.location),
+        findings=(cold, hot),
+    )
+    a = SimpleNamespace(verdict=Verdict((worst,)), governing_point="cold_day")
+    peak = _spinup_peak(a)
+    assert peak["max_shaft_orbit_spin_up_m"] == pytest.approx(4.881e-4, rel=1e-12)
+    assert peak["speed_of_max_rpm"] == pytest.approx(262.15 * 60.0 / (2.0 * math.pi), rel=1e-12)
+    single = replace(worst, findings=(finding(3.0e-4, 250.0),), location={"station": 0.0, "speed": 250.0})
+    one = _spinup_peak(SimpleNamespace(verdict=Verdict((single,)), governing_point="nominal"))
+    assert one["max_shaft_orbit_spin_up_m"] == pytest.approx(3.0e-4, rel=1e-12)

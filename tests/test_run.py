@@ -104,15 +104,16 @@ def test_run_writes_report_figures_and_numbers(baseline_run):
         assert check["status"] != "not evaluated", check["key"]
         failed = [f for f in check["findings"] if not f["passed"]]
         assert all(check["key"] == "whirl_damping" and "boom)" in f["location"]["mode"] for f in failed), check
-    # one spin-up peak: results.json and the terminal state the verdict's (to the highest operating
-    # speed, refined, at its worst point), and the whole scan's largest (to 1.3 x, the governing
-    # point's scan) apart; at the governing point the scan's cannot be smaller
+    # one spin-up peak: results.json and the terminal state the verdict's finding at the governing
+    # point, whose analyses they show (to the highest operating speed, refined; docs/requirements.md:
+    # results.json's numbers are the governing point's), and the whole scan's largest (to 1.3 x,
+    # that point's scan) apart; at the governing point the scan's cannot be smaller
     spinup = next(c for c in verdict["checks"] if c["key"] == "spinup_deflection")
-    assert data["imbalance"]["max_shaft_orbit_spin_up_m"] == spinup["value"]
-    highest = tuned_design().operating.speed_range[1]  # the quick start's design: its 1.05
-    assert data["imbalance"]["speed_of_max_rpm"] <= data["summary"]["operating_speed_rpm"] * highest * (1 + 1e-9)
     governing = data["envelope"]["governing_point"]
     (there,) = [f for f in spinup["findings"] if f["location"]["point"] == governing]
+    assert data["imbalance"]["max_shaft_orbit_spin_up_m"] == there["value"]
+    highest = tuned_design().operating.speed_range[1]  # the quick start's design: its 1.05
+    assert data["imbalance"]["speed_of_max_rpm"] <= data["summary"]["operating_speed_rpm"] * highest * (1 + 1e-9)
     assert data["imbalance"]["max_shaft_orbit_scan_m"] >= 0.99 * there["value"]  # the refined peak may exceed a sample
     # the every-root check of the tuned design's ideal PD bearings (passive): every root stable at
     # the three speeds, its basis within the accuracy it was chosen for (its estimate against the

@@ -114,14 +114,24 @@ def results_json(a: Assessment, thesis: ThesisStudies | None = None) -> dict:
 
 
 def _spinup_peak(a: Assessment) -> dict:
-    """Peak shaft orbit of the spin-up to the operating speed and its speed: the verdict's
-    ``spinup_deflection`` check (refined between the sampled speeds) when it was evaluated,
-    else the largest sampled value up to the operating speed."""
+    """Peak shaft orbit of the spin-up to the operating speed and its speed, at the governing
+    point whose analyses results.json holds: the verdict's ``spinup_deflection`` finding there
+    (refined between the sampled speeds) when it was evaluated, else the largest sampled value
+    up to the operating speed. With an envelope the check's own value is its worst point's,
+    which may be another point (its findings name theirs; a single point's name none)."""
     check = next((c for c in a.verdict.checks if c.key == "spinup_deflection"), None)
-    if check is not None and check.value is not None and "speed" in check.location:
+    here = [
+        f
+        for f in (check.findings if check is not None else ())
+        if f.value is not None
+        and "speed" in f.location
+        and f.location.get("point", a.governing_point) == a.governing_point
+    ]
+    if here:
+        peak = max(here, key=lambda f: float(f.value))
         return {
-            "max_shaft_orbit_spin_up_m": float(check.value),
-            "speed_of_max_rpm": rad_s_to_rpm(float(check.location["speed"])),
+            "max_shaft_orbit_spin_up_m": float(peak.value),
+            "speed_of_max_rpm": rad_s_to_rpm(float(peak.location["speed"])),
         }
     spinup = a.spinup
     up = spinup.up_to(a.model.speed)
