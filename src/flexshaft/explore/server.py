@@ -31,7 +31,6 @@ from typing import Any
 
 from starlette.applications import Starlette
 from starlette.middleware import Middleware
-from starlette.middleware.trustedhost import TrustedHostMiddleware
 from starlette.requests import Request
 from starlette.responses import FileResponse, HTMLResponse, JSONResponse, Response
 from starlette.routing import Route
@@ -350,8 +349,37 @@ async def run_file(request: Request) -> Response:
     return FileResponse(path)
 
 
+def _host_name(header: str) -> str:
+    """The host of a ``Host`` header without its port: ``[::1]:8000`` -> ``::1``."""
+    if header.startswith("["):
+        return header[1 : header.find("]")] if "]" in header else header
+    return header.rsplit(":", 1)[0] if header.count(":") == 1 else header
+
+
+class OwnHost:
+    """Answer only requests addressed to this server (a DNS-rebinding guard): a ``Host`` among
+    ``hosts``, or the very address the connection arrived on (the ASGI scope's ``server``), by
+    which a browser on the network reaches a server listening on every interface (0.0.0.0). A
+    page of another site that rebinds its own name to this machine sends that name, refused."""
+
+    def __init__(self, app: Any, hosts: list[str]) -> None:
+        self.app = app
+        self.hosts = {_host_name(h) for h in hosts}
+
+    async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
+        if scope["type"] in ("http", "websocket"):
+            headers = dict(scope.get("headers") or [])
+            name = _host_name(headers.get(b"host", b"").decode("latin-1"))
+            local = (scope.get("server") or (None,))[0]
+            if name not in self.hosts and name != local:
+                await Response("Invalid host header", status_code=400)(scope, receive, send)
+                return
+        await self.app(scope, receive, send)
+
+
 def build_app(explorer: Explorer, hosts: list[str]) -> Starlette:
-    """The Starlette application of ``explorer``, answering requests for ``hosts`` only."""
+    """The Starlette application of ``explorer``, answering requests for ``hosts`` (or the
+    address a connection arrived on) only (:class:`OwnHost`)."""
     app = Starlette(
         routes=[
             Route("/", index),
@@ -367,7 +395,7 @@ def build_app(explorer: Explorer, hosts: list[str]) -> Starlette:
             Route("/api/run/{job}", run_status),
             Route("/runs/{job}/{path:path}", run_file),
         ],
-        middleware=[Middleware(TrustedHostMiddleware, allowed_hosts=hosts)],
+        middleware=[Middleware(OwnHost, hosts=hosts)],
     )
     app.state.explorer = explorer
     return app
