@@ -16,10 +16,11 @@ loops whose crossovers are solved by hand.
   crossover. The gain margin's frequency is that of the crossover where it is set (LoopMargins
   docstring), the hidden one above ω_r, not the 2000 Hz one (the refinement finds the hidden
   pair after the grid's crossover; the margins must travel with their frequencies).
-* **A crossover outside the window.** A phase crossover whose gain margin lies outside the
-  2 dB window of the smallest and whose grid interval turns the phase by under 30° is
-  "interpolated on the grid elsewhere" (LoopMargins.phase_crossovers; docs/magnetic-bearings.md:
-  which crossovers are refined is decided on the grid's interpolated values): the zero of Im L
+* **A crossover outside the window.** API contract (code docstrings, not docs/*.md):
+  LoopMargins.phase_crossovers "…interpolated on the grid elsewhere" and the module
+  docstring's refinement rule (within MARGIN_WINDOW_DB of the smallest, or a bracket turning
+  > 30°). So a phase crossover whose gain margin lies outside the 2 dB window of the smallest
+  and whose grid interval turns the phase by under 30° is reported at the zero of Im L
   linearly interpolated between the two grid points. The delay loop L(ω) = A(ω) e^{−iωτ},
   τ = 1 s, A = 0.5 (π/ω)² real and positive, has Im L = −A sin ω = 0 at ω = nπ and Re L < 0 at
   odd n: ω = π (|L| = 0.5, 20 log₁₀ 2 = 6.021 dB, refined) and 3π (|L| = 1/18,
@@ -31,7 +32,7 @@ loops whose crossovers are solved by hand.
   interpolated frequency from the refined one.
 
 Tolerances: refined crossovers to 1e-8 ω (Illinois), so frequencies and margins to 1e-7; the
-interpolated zero is a ratio of two O(0.1) values of Im L, exact to a few ulp (1e-12); the
+interpolated zero is a ratio of two O(0.01) values of Im L (−1.00e-2 and 4.11e-3), exact to a few ulp (1e-12); the
 ramp's crossover only to 1 % (its small resonance term is not solved here). CPU: milliseconds.
 """
 

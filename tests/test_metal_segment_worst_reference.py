@@ -6,9 +6,15 @@ A pinned aluminium tube of two segments, a = [0, 0.7] m and b = [0.7, 2] m (rigi
 moment M(x) = P x/2 rises linearly up to mid-span. Segment a's largest moment is at its far end,
 M = 0.7 P/2, and segment b's at mid-span, M = P L/4. On the spinning tube the static bending is
 fully reversed, σ_a = M c/I, the torque gives the steady shear τ_m = T c/J (J = 2I) and the spin
-the hoop stress ρ Ω² r_m² (r_m the mid-wall radius). DE-Goodman (Shigley eq. 7-7) then gives
-n_f = 1/(σ_a/S_e + sqrt(σ_θ² + 3τ_m²)/S_ut) and first-cycle von Mises yield (Shigley eq. 7-16)
-n_y = S_y/sqrt(σ_a² + σ_a σ_θ + σ_θ² + 3τ_m²).
+the hoop stress ρ Ω² r_m² (r_m the mid-wall radius). The criteria are those of
+docs/segmented-driveline.md (Budynas & Nisbett, Shigley 10th ed. §7-4, eqs. 7-7, 7-15, 7-16,
+extended there with the hoop stress): DE-Goodman gives
+n_f = 1/(σ_a/S_e + sqrt(σ_θ² + 3τ_m²)/S_ut) and the first-cycle von Mises yield
+n_y = S_y/sqrt(σ_a² + σ_a σ_θ + σ_θ² + 3τ_m²). The sign of the σ_a σ_θ term: the von Mises
+stress of the axial σ_x and the hoop σ_θ is sqrt(σ_x² − σ_x σ_θ + σ_θ² + 3τ²); the fully
+reversed bending puts σ_x = +σ_a on one fibre and −σ_a on the opposite one, and the compressive
+fibre σ_x = −σ_a against the tensile hoop stress σ_θ > 0 is the worse, giving + σ_a σ_θ (the
+doc's "worse sign ... taken with the hoop stress", its (σ_m + σ_a)σ_θ with σ_m = 0).
 """
 
 from __future__ import annotations
