@@ -1,0 +1,79 @@
+"""A critical-speed search that found no resonance peak passes the separation check; one that
+could not be made leaves it not evaluated.
+
+References (documented rules, docs/requirements.md):
+
+* "The checks": every check has a status `pass`, `fail` or `not evaluated`; `normalised_margin`
+  is null where it is not finite: "passed with nothing to measure, or not evaluated";
+* "A requirement that cannot be evaluated says why instead of passing": not evaluated is for a
+  missing result, not for a result with no instance in it;
+* the `separation` row: each lateral critical speed of the unbalance response against its API 684
+  margin. With no critical up to the top of the search, no critical speed lies near the operating
+  speed range: nothing fails, the check passes with no finding.
+
+The point's analyses are stand-ins written by hand (as in
+tests/test_gather_range_and_buckling_reference.py): Ω_op = 4800 rpm, the search reached
+8000 rpm and found no peak (an empty tuple), or no search was possible (None, with its note).
+"""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace as NS
+
+import numpy as np
+import pytest
+
+from flexshaft.design.loads import Operating
+from flexshaft.design.requirements import Requirements
+from flexshaft.verdict import gather
+from flexshaft.verdict.checks import evaluate
+
+RPM = 2.0 * math.pi / 60.0  # [rad/s] per rpm
+OPERATING_POINT = Operating(speed_rpm=4800.0, power=0.0)
+NO_SEARCH = "the model has no imbalance: no unbalance response"
+
+
+def _point(criticals) -> NS:
+    """A point whose only result is the critical-speed search (every other check not evaluated)."""
+    return NS(
+        strength_static=None,
+        strength_total=None,
+        metal_strength=None,
+        coupling_misalignment=None,
+        buckling=None,
+        criticals=NS(criticals=criticals, search_top=8000.0 * RPM, note=NO_SEARCH),
+        thermal=None,
+        design=NS(thermal=NS(allowable_temperature_c=100.0), operating=OPERATING_POINT),
+        spinup=NS(speeds=np.array([0.0]), shaft_peak=np.zeros(1), up_to=lambda speed: np.array([], int)),
+        torsional_separation=None,
+        torsional_modes=None,
+        bearing_loops=None,
+        operating_speed=OPERATING_POINT.speed_rad_s,
+        model=NS(actuators=[]),
+    )
+
+
+def _separation(monkeypatch, criticals):
+    monkeypatch.setattr(gather, "_whirl", lambda p: {})  # no stability result: not judged here
+    evidence = gather.gather_evidence(_point(criticals))
+    return evidence, evaluate(evidence, Requirements()).check("separation")
+
+
+def test_a_search_without_a_peak_passes_with_nothing_to_measure(monkeypatch):
+    """No critical up to 8000 rpm: the evidence holds the empty search and its top, and the
+    check passes with no finding and no margin (nothing to measure), saying how far it looked."""
+    evidence, check = _separation(monkeypatch, ())
+    assert evidence.critical_speeds == ()
+    assert evidence.critical_search_max_speed == pytest.approx(8000.0 * RPM, rel=1e-15)
+    assert check.status == "pass"
+    assert check.findings == () and check.margin is None
+    assert "8000 rpm" in check.note
+
+
+def test_no_search_leaves_the_check_not_evaluated_with_its_reason(monkeypatch):
+    """No unbalance response at all: not evaluated, the reason from the analysis's note."""
+    evidence, check = _separation(monkeypatch, None)
+    assert evidence.critical_speeds is None
+    assert check.status == "not evaluated"
+    assert check.note == NO_SEARCH
