@@ -72,3 +72,12 @@ def test_a_server_on_every_interface_answers_the_address_a_browser_reached():
     assert _status(hosts, "192.168.1.10:8000", "192.168.1.10") == 204
     assert _status(hosts, "attacker.example:8000", "192.168.1.10") == 400
     assert _status(hosts, "192.168.1.11:8000", "192.168.1.10") == 400  # not the address reached
+
+
+def test_an_ipv4_browser_of_a_server_listening_on_every_ipv6_and_ipv4_interface():
+    """With --host :: (dual stack), an IPv4 connection arrives on the IPv4-mapped address
+    ::ffff:192.168.1.10 (RFC 4291 §2.5.5.2) while the browser sends Host: 192.168.1.10."""
+    hosts = [*LOOPBACK, "::"]
+    assert _status(hosts, "192.168.1.10:8000", "::ffff:192.168.1.10") == 204
+    assert _status(hosts, "[fe80::1]:8000", "fe80::1") == 204
+    assert _status(hosts, "attacker.example:8000", "::ffff:192.168.1.10") == 400

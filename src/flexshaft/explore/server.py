@@ -21,6 +21,7 @@ from __future__ import annotations
 import asyncio
 import dataclasses
 import hashlib
+import ipaddress
 import itertools
 import json
 import math
@@ -356,6 +357,19 @@ def _host_name(header: str) -> str:
     return header.rsplit(":", 1)[0] if header.count(":") == 1 else header
 
 
+def _arrival_names(scope: Any) -> set[str]:
+    """The address a connection arrived on, as a browser names it: an IPv4 client of a server
+    listening on ``::`` arrives on ``::ffff:a.b.c.d`` and sends ``a.b.c.d``."""
+    local = (scope.get("server") or (None,))[0]
+    if not isinstance(local, str):
+        return set()
+    try:
+        mapped = getattr(ipaddress.ip_address(local), "ipv4_mapped", None)
+    except ValueError:  # a Unix socket's path, not an address
+        return {local}
+    return {local} if mapped is None else {local, str(mapped)}
+
+
 class OwnHost:
     """Answer only requests addressed to this server (a DNS-rebinding guard): a ``Host`` among
     ``hosts``, or the very address the connection arrived on (the ASGI scope's ``server``), by
@@ -370,8 +384,7 @@ class OwnHost:
         if scope["type"] in ("http", "websocket"):
             headers = dict(scope.get("headers") or [])
             name = _host_name(headers.get(b"host", b"").decode("latin-1"))
-            local = (scope.get("server") or (None,))[0]
-            if name not in self.hosts and name != local:
+            if name not in self.hosts and name not in _arrival_names(scope):
                 await Response("Invalid host header", status_code=400)(scope, receive, send)
                 return
         await self.app(scope, receive, send)
