@@ -55,3 +55,26 @@ def test_a_path_both_fixed_and_searched_is_refused():
             base=tuned_design(),
             fixed={"shaft.wall_thickness": 0.004},
         )
+
+
+def test_a_shared_gain_stays_searched_at_the_bearing_not_set():
+    """The tuned design's two active bearings share one K_p variable (docs/optimizer.md: "one
+    variable shared by every active bearing when their gains are equal"); --set of the first's
+    K_p holds that one and leaves the second's searched, under the same name and bounds."""
+    base = tuned_design()
+    default = default_variables(base, None)
+    (shared,) = [v for v in default[0] if set(v.paths) == {"bearings[1].kp", "bearings[2].kp"}]
+    variables, _ = _search_around(default, {"bearings[1].kp": 1e6}, None)
+    (kept,) = [v for v in variables if v.name == shared.name]
+    assert kept.paths == ("bearings[2].kp",)
+    assert (kept.lower, kept.upper, kept.log) == (shared.lower, shared.upper, shared.log)
+
+
+def test_a_field_fixed_as_written_another_way_is_refused():
+    """``shaft."wall_thickness"`` is ``shaft.wall_thickness`` (with_overrides' quoted-key grammar)."""
+    with pytest.raises(OptimizeError, match="both fixed"):
+        DesignProblem(
+            (DesignVariable("shaft.wall_thickness", 0.002, 0.003),),
+            base=tuned_design(),
+            fixed={'shaft."wall_thickness"': 0.004},
+        )

@@ -83,8 +83,8 @@ def test_an_overrides_function_reaching_a_fixed_path_is_refused(tmp_path):
 
 def test_paths_set_once_still_run_and_give_the_values_set():
     """Disjoint paths are accepted and each point's design carries its own value: the wall read
-    back equals the value set (x 1e3 for mm; exact in IEEE arithmetic for these binary
-    fractions times 1000 within 1 ulp, hence the 1e-12 relative tolerance)."""
+    back equals the value set. Doubling is exact in binary, so (2w)·1e3 and 2e3·w are each one
+    rounding of the same exact product 2000w: equal to 1 ulp, inside the 1e-12 tolerance."""
     study = Study(
         "once",
         [Variable("wall", WALLS, overrides=functools.partial(wall_overrides, scale=2.0))],
@@ -97,3 +97,33 @@ def test_paths_set_once_still_run_and_give_the_values_set():
         design = study.design_at({"wall": wall})
         assert design.shaft.wall_thickness * 1e3 == pytest.approx(2e3 * wall, rel=1e-12)
         assert design.loads.eccentricity == 0.0
+
+
+def test_one_field_written_two_ways_or_inside_its_table_is_one_path(tmp_path):
+    """with_overrides reads ``shaft."wall_thickness"`` as ``shaft.wall_thickness`` (a quoted key,
+    its docstring's grammar) and a value for the table ``shaft`` replaces every key in it, so
+    either collides with the wall set elsewhere."""
+    alias = Study(
+        "alias",
+        [Variable(path="shaft.wall_thickness", values=WALLS)],
+        ["wall_mm"],
+        counted_wall_mm,
+        fixed={'shaft."wall_thickness"': 0.004},
+    )
+    assert "shaft.wall_thickness" in _refused(alias, tmp_path)
+    table = Study(
+        "table",
+        [Variable("shaft", WALLS, overrides=whole_shaft)],
+        ["wall_mm"],
+        counted_wall_mm,
+        fixed={"shaft.wall_thickness": 0.0045},
+    )
+    assert "'shaft'" in _refused(table, tmp_path / "table")
+
+
+def whole_shaft(value):
+    """A user mapping that replaces the whole [shaft] table of the baseline with a new wall."""
+    from flexshaft.design import baseline_design
+
+    shaft = baseline_design().model_dump(mode="python")["shaft"]
+    return {"shaft": {**shaft, "wall_thickness": value}}

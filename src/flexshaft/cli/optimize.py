@@ -315,13 +315,27 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client
 def _search_around(
     default: tuple[tuple[DesignVariable, ...], str | None], fixed: dict[str, Any], layup: str | None
 ) -> tuple[tuple[DesignVariable, ...], str | None]:
-    """The default search without what ``--set`` holds: a variable any of whose paths is set,
-    and the ply-angle variables with their template when ``--set`` gives ``shaft.layup`` (and
+    """The default search without what ``--set`` holds: the paths it sets (however written, or
+    a table holding them; a gain shared by several bearings stays searched at the others), and
+    the ply-angle variables with their template when ``--set`` gives the shaft's layup (and
     ``--layup`` does not)."""
+    from flexshaft.design.io import paths_overlap
+    from flexshaft.optimize.variables import DesignVariable
+
+    def held(path: str) -> bool:
+        return any(paths_overlap(path, f) for f in fixed)
+
     variables, template = default
-    if "shaft.layup" in fixed and layup is None:
+    if held("shaft.layup") and layup is None:
         variables, template = tuple(v for v in variables if v.placeholder is None), None
-    return tuple(v for v in variables if not set(v.paths) & set(fixed)), template
+    kept = []
+    for v in variables:
+        rest = [p for p in v.paths if not held(p)]
+        if len(rest) == len(v.paths):
+            kept.append(v)
+        elif rest:
+            kept.append(DesignVariable(rest, v.lower, v.upper, v.integer, v.log, v.name, v.units, v.significant_digits))
+    return tuple(kept), template
 
 
 def _suffixed(name: str, units: str) -> str:

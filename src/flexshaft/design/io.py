@@ -42,6 +42,7 @@ __all__ = [
     "embedded_text",
     "load_design",
     "loads_design",
+    "paths_overlap",
     "tuned_design",
     "value_at_path",
     "with_overrides",
@@ -298,6 +299,18 @@ def _parse_path(path: str) -> list[str | int] | None:
             expect_key = False
         position = match.end()
     return None if expect_key or not parts else parts
+
+
+def paths_overlap(first: str, second: str) -> bool:
+    """Whether two override paths of :func:`with_overrides` reach the same value: the same field
+    however written (``shaft."wall_thickness"``, ``bearings[01]``) or a table and a key inside it.
+    Applied one after the other, the second replaces what the first set. A malformed path
+    overlaps nothing (:func:`with_overrides` reports it)."""
+    a, b = _parse_path(first), _parse_path(second)
+    if a is None or b is None:
+        return False
+    n = min(len(a), len(b))
+    return a[:n] == b[:n]
 
 
 def value_at_path(data: Any, path: str | Sequence[str | int], missing: Any = None) -> Any:

@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 
 from flexshaft import __version__
 from flexshaft.design import Design, DesignError, baseline_design, embedded_text, with_overrides
-from flexshaft.design.io import value_at_path
+from flexshaft.design.io import paths_overlap, value_at_path
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
 from flexshaft.optimize.variables import (
@@ -162,15 +162,25 @@ class DesignProblem:
         if len(set(names)) != len(names):
             raise OptimizeError(f"variable names must be unique, got {names}")
         paths = [p for v in resolved for p in v.paths]
-        if len(set(paths)) != len(paths):
+        shared = [
+            (p, q)
+            for i, v in enumerate(resolved)
+            for w in resolved[i + 1 :]
+            for p in v.paths
+            for q in w.paths
+            if paths_overlap(p, q)
+        ]
+        if len(set(paths)) != len(paths) or shared:
             raise OptimizeError(f"a design path may belong to one variable only, got {paths}")
         set_field("layup", layup)
         set_field("ply_thickness", ply_thickness)
         set_field("fixed", dict(fixed or {}))
-        searched = sorted(set(paths) & set(self.fixed))
+        searched = [(p, f) for p in paths for f in self.fixed if paths_overlap(p, f)]
         if searched:  # overrides() applies fixed first: every candidate would take the variable's value
+            path, fixed_path = searched[0]
+            same = "" if path == fixed_path else f" (fixed as {fixed_path})"
             raise OptimizeError(
-                f"{searched[0]} is both fixed and a variable's path, and the variable would win in every "
+                f"{path} is both fixed{same} and a variable's path, and the variable would win in every "
                 "candidate: fix it or search it, not both"
             )
         set_field("evaluate", evaluate)

@@ -24,6 +24,7 @@ import numpy as np
 
 from flexshaft.assembly import build_model
 from flexshaft.design import DesignError, baseline_design, with_overrides
+from flexshaft.design.io import paths_overlap
 from flexshaft.parallel.point_label import at_point
 from flexshaft.parallel.threads import one_blas_thread
 
@@ -334,19 +335,22 @@ class Study:
 
 
 def _claim_paths(setter: dict[str, str], overrides: Mapping[str, Any], who: str) -> None:
-    """Record that ``who`` sets ``overrides``' design paths; refuse a path set twice.
+    """Record that ``who`` sets ``overrides``' design paths; refuse a path another sets too
+    (:func:`~flexshaft.design.io.paths_overlap`: however written, or a table and one of its keys).
 
     Overrides are applied fixed first, then the variables in order, so a path set twice takes
     the last value: a fixed value would be shown in the results but never used, a variable
     would be a grid axis that changes nothing.
     """
     for path in overrides:
-        other = setter.setdefault(path, who)
-        if other != who:
-            raise SweepError(
-                f"design path {path!r} is set by both {other} and {who}: the last would silently "
-                "override the other at every point; set each path in one place"
-            )
+        for known, other in setter.items():
+            if other != who and paths_overlap(path, known):
+                same = "" if path == known else f" (as {known!r})"
+                raise SweepError(
+                    f"design path {path!r}{same} is set by both {other} and {who}: the last would "
+                    "silently override the other at every point; set each path in one place"
+                )
+        setter.setdefault(path, who)
 
 
 def evaluate_chunk(study: Study, start: int, stop: int, on_error: str = "raise") -> np.ndarray:
