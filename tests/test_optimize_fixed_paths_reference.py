@@ -78,3 +78,25 @@ def test_a_field_fixed_as_written_another_way_is_refused():
             base=tuned_design(),
             fixed={'shaft."wall_thickness"': 0.004},
         )
+
+
+def test_a_ply_thickness_holds_the_wall_out_of_the_default_search():
+    """docs/optimizer.md: "With `--ply-thickness-mm` the wall thickness follows the ply count
+    (plies × ply thickness; the default search then leaves its wall variable out)", rather than
+    refusing the run as if the user had set the wall too (it did before). The
+    tuned design's default template (a/−a/a/−a/b/−b)s has 12 plies: a 0.25 mm ply gives a 3 mm
+    wall in every candidate. Through the command, the problem is built and the run is refused
+    only by its documented budget bound (docs/limits.md), before any folder is written."""
+    from typer.testing import CliRunner
+
+    from flexshaft.cli import app
+
+    base = tuned_design()
+    default = default_variables(base, None)
+    variables, template = _search_around(default, ["shaft.wall_thickness"], None)
+    problem = DesignProblem(variables, base=base, layup=template, ply_thickness=0.25e-3)
+    for x in (problem.bounds[0], problem.bounds[1]):
+        assert problem.overrides(problem.values(x))["shaft.wall_thickness"] == pytest.approx(12 * 0.25e-3, rel=1e-12)
+    result = CliRunner().invoke(app, ["optimize", "--ply-thickness-mm", "0.25", "-n", "100000000"])
+    assert result.exit_code == 2
+    assert "--budget" in result.output and "ply_thickness" not in result.output

@@ -13,9 +13,10 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Iterable
 from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 import typer
 
@@ -230,7 +231,8 @@ def optimize(
         if var:
             variables, template = tuple(parse_variable(s) for s in var), layup
         else:
-            variables, template = _search_around(default_variables(base, layup), fixed, layup)
+            held = [*fixed, *(["shaft.wall_thickness"] if ply_thickness_mm is not None else [])]
+            variables, template = _search_around(default_variables(base, layup), held, layup)
         problem = DesignProblem(
             variables,
             base=base,
@@ -313,14 +315,17 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client
 
 
 def _search_around(
-    default: tuple[tuple[DesignVariable, ...], str | None], fixed: dict[str, Any], layup: str | None
+    default: tuple[tuple[DesignVariable, ...], str | None], held_paths: Iterable[str], layup: str | None
 ) -> tuple[tuple[DesignVariable, ...], str | None]:
-    """The default search without what ``--set`` holds: the paths it sets (however written, or
-    a table holding them; a gain shared by several bearings stays searched at the others), and
-    the ply-angle variables with their template when ``--set`` gives the shaft's layup (and
-    ``--layup`` does not)."""
+    """The default search without what is held: the paths ``--set`` gives (however written, or
+    a table holding them; a gain shared by several bearings stays searched at the others) and
+    the wall with ``--ply-thickness-mm`` (it follows the ply count), and the ply-angle
+    variables with their template when ``--set`` gives the shaft's layup (and ``--layup`` does
+    not)."""
     from flexshaft.design.io import paths_overlap
     from flexshaft.optimize.variables import DesignVariable
+
+    fixed = list(held_paths)
 
     def held(path: str) -> bool:
         return any(paths_overlap(path, f) for f in fixed)

@@ -86,7 +86,7 @@ def results_json(a: Assessment, thesis: ThesisStudies | None = None) -> dict:
                 for c in (a.campbell.critical_speeds if a.campbell is not None else ())
             ],
             "imbalance": {
-                # the spin-up proper (to the operating speed, peaks refined): the verdict's number
+                # the spin-up proper (to the operating speed, peaks refined): the verdict's finding here
                 **_spinup_peak(a),
                 "max_shaft_orbit_scan_m": float(peaks.max()),
                 "speed_of_max_scan_rpm": float(rad_s_to_rpm(spinup.speeds[np.argmax(peaks)])),
