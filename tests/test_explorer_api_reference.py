@@ -13,9 +13,15 @@ costs milliseconds. References, all rules written by hand:
   answered 'superseded' without being computed";
 * HTTP semantics (RFC 9110 §15.5): a request refused for its content is a client error, a
   4xx status, never 200 OK; a file that is not served is 404 Not Found;
-* the server's module docstring: ``GET /runs/<id>/<file>`` serves the run's report (its folder,
-  nothing outside it);
-* :class:`flexshaft.explore.workers.Sessions`: "the oldest forgotten beyond MAX_SESSIONS".
+* API contract (docstring of flexshaft.explore.server; no docs page states it):
+  ``GET /runs/<id>/<file>``: "its report", the full run's; derived here: a route serving one
+  run's report must not serve files outside its folder (path traversal, CWE-22);
+* API contract (docstring of flexshaft.explore.workers.Sessions; no docs page states it): "The
+  open pages by id (the oldest forgotten beyond :data:`MAX_SESSIONS`)";
+* API contract (set_relay's and full_run's docstrings; no docs page states them): the relay
+  queue takes ``put((job, label, seconds))``, and full_run "returns the verdict and the page's
+  path" (read here as the page's file name in the run folder, the ``<file>`` of
+  ``GET /runs/<id>/<file>``, with the verdict's pass/fail and each check's status).
 """
 
 from __future__ import annotations
@@ -162,7 +168,8 @@ def test_a_loaded_file_is_the_base_of_the_next_requests(app, tuned):
     """docs/explorer.md: *Open a design file* loads a file as the new base. A file differing from
     the command's design in its name and the first actuator's K_p (3e5 N/m, the command's
     5e5): a sweep on the new base assesses points of that design, and its export writes it back
-    (loaded again, the same name and K_p, with the sweep's own K_p left out)."""
+    (loaded again, the same name and K_p: the export with no overrides is the loaded
+    design)."""
     text = embedded_text("tuned")
     text = text.replace(f'name = "{tuned.name}"', 'name = "Loaded base"', 1)
     text = re.sub(r"(?m)^kp = 5\.0e5", "kp = 3.0e5", text, count=1)
@@ -202,13 +209,17 @@ def test_a_refused_value_is_a_client_error_naming_the_field(app):
 
 def test_a_runs_files_are_served_from_its_folder_only(app, tmp_path):
     """A finished run serves the files of its folder (200, their bytes); a link inside the
-    folder to a file outside it, and a path climbing out with ``..``, are 404 Not Found."""
+    folder to a file outside it, and a path climbing out with ``..``, are 404 Not Found
+    (derived here: no path traversal, CWE-22; RFC 9110's 404 for a file not served)."""
     folder = tmp_path / "runs" / "run-001"
     folder.mkdir(parents=True)
     (folder / "report.html").write_text("<p>report</p>", encoding="utf-8")
     secret = tmp_path / "secret.txt"
     secret.write_text("outside the run", encoding="utf-8")
-    (folder / "link.txt").symlink_to(secret)
+    try:
+        (folder / "link.txt").symlink_to(secret)
+    except OSError:  # Windows without the symlink privilege
+        pytest.skip("symbolic links cannot be created here")
     app.workers.jobs["001"] = Job("001", str(folder), state="done")
 
     answer = app.client.get("/runs/001/report.html")
@@ -254,7 +265,8 @@ def test_a_stale_request_waiting_behind_a_newer_one_is_superseded():
 
 
 def test_the_oldest_page_is_forgotten_not_the_newest():
-    """Sessions: the oldest page forgotten beyond MAX_SESSIONS. After MAX_SESSIONS pages, one more
+    """API contract (docstring of flexshaft.explore.workers.Sessions; no docs page states it):
+    the oldest page forgotten beyond MAX_SESSIONS. After MAX_SESSIONS pages, one more
     page keeps its session (the same one on its next request, with its latest request number),
     and the first page, the oldest, gets a fresh one."""
     sessions = Sessions(None)
@@ -270,8 +282,10 @@ def test_the_oldest_page_is_forgotten_not_the_newest():
 def test_a_full_run_is_flexshaft_runs_pipeline_with_the_studies_asked(tmp_path, monkeypatch, tuned):
     """docs/explorer.md: the full run goes through ``run_pipeline`` with ``--studies`` as
     ``flexshaft run``'s. A stand-in pipeline records its arguments and returns a verdict of two
-    checks; the run relays each stage to the server's queue under the run's id and returns the
-    page's file name, the verdict and each check's status."""
+    checks: the studies it receives are the ones asked (the documented rule). API contract
+    (set_relay's and full_run's docstrings; no docs page states it): the run relays each stage
+    to the server's queue as (run id, label, seconds) and returns the page's file name, the
+    verdict and each check's status."""
     seen = {}
     sent = []
 
@@ -291,6 +305,6 @@ def test_a_full_run_is_flexshaft_runs_pipeline_with_the_studies_asked(tmp_path, 
         result = fullrun.full_run("007", tuned, None, "x.toml", str(tmp_path), studies)
         assert seen["studies"] == Studies(studies)
         assert seen["design"] is tuned and seen["folder"] == Path(tmp_path) and seen["source"] == "x.toml"
-        assert [m[:2] for m in sent] == [("007", "modes")]
-        assert result["page"] == "interactive.html" and result["passed"] is False
-        assert result["status"] == {"orbit": "pass", "whirl": "fail"}
+        assert [m[:2] for m in sent] == [("007", "modes")]  # API contract (set_relay's docstring)
+        assert result["page"] == "interactive.html" and result["passed"] is False  # API contract (full_run's)
+        assert result["status"] == {"orbit": "pass", "whirl": "fail"}  # API contract (full_run's)

@@ -1,12 +1,15 @@
 """The report page numbers its tables and figures across the report, not per section.
 
-Reference: the documented rule of :func:`flexshaft.report.render_report` ("Report body,
-numbered in order; tables and figures are numbered across the report"), worked by hand for a
+Reference: API contract (render_report's docstring; no docs page states it): "Report body,
+numbered in order; tables and figures are numbered across the report", worked by hand for a
 stand-in body: sections 1-4 holding 2, 0, 1 and 1 tables are Tables 1, 2 | - | 3 | 4, and the
 one figure of section 3 is Figure 1. The figure is a PNG built here byte by byte (IHDR width and
 height at bytes 16-24, pHYs in pixels per metre), so its shown size is also checked against the
-module's stated rule: pixels × 96 / dpi with dpi = ppm × 0.0254 (240 px at 3780 px/m ≈ 96.01 dpi
-→ 240 × 96 / 96.012 = 239.97 → 240 CSS px; 120 px → 120). Integers and text only: no tolerance.
+published units: the PNG specification (version 1.2, §4.2.4.2 pHYs: pixels per unit, unit
+specifier byte 1 = the metre; "one inch is equal to exactly 0.0254 meters", so dpi = ppm ×
+0.0254) and CSS Values and Units Level 3 (§5.2, 1 in = 96 px), so a figure is shown pixels ×
+96 / dpi CSS px wide (240 px at 3780 px/m ≈ 96.01 dpi → 240 × 96 / 96.012 = 239.97 → 240 CSS px;
+120 px → 120). Integers and text only: no tolerance.
 """
 
 from __future__ import annotations

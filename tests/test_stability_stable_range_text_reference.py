@@ -1,10 +1,11 @@
 """A stability panel without an onset states the speed range it is stable over.
 
-Hand-built curves (no model). Reference, the figure functions' documented meaning of a missing
-onset (flexshaft.plot.stability.log_decrement_figure: "None: stable over the range"): the range
-is the analysed speeds, so the panel must say it is stable up to the HIGHEST analysed speed.
-The grid here starts at 1500 rpm (not at rest) and ends at 7500 rpm, so a figure reading the
-wrong end of the sweep would print 1500. A panel with an onset says nothing about being stable.
+Hand-built curves (no model). Reference, API contract (log_decrement_figure's docstring,
+flexshaft.plot.stability; no docs page states it), the meaning of a missing onset: "None:
+stable over the range". The range is the analysed speeds, so the panel must say it is stable
+up to the HIGHEST analysed speed. The grid here starts at 1500 rpm (not at rest) and ends at
+7500 rpm, so a figure reading the wrong end of the sweep would print 1500. A panel with an onset
+says nothing about being stable.
 
 The speed is printed with ``:.0f`` from a copied grid value: the text comparison is exact.
 Agg, nothing written.
