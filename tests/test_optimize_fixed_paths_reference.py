@@ -100,3 +100,25 @@ def test_a_ply_thickness_holds_the_wall_out_of_the_default_search():
     result = CliRunner().invoke(app, ["optimize", "--ply-thickness-mm", "0.25", "-n", "100000000"])
     assert result.exit_code == 2
     assert "--budget" in result.output and "ply_thickness" not in result.output
+
+
+def test_a_key_searched_inside_a_table_fixed_whole_refines_it():
+    """overrides() applies the fixed ones first: a variable on tailboom.length after a fixed
+    [tailboom] table refines it (its other keys stay), so the problem is accepted and every
+    candidate carries the fixed wall with its own length."""
+    base = tuned_design()
+    boom = base.model_dump(mode="python")["tailboom"]
+    fixed = {"tailboom": {**boom, "wall_thickness": 1.25 * boom["wall_thickness"]}}
+    problem = DesignProblem((DesignVariable("tailboom.length", 8.0, 9.0),), base=base, fixed=fixed)
+    out = problem.overrides(problem.values(problem.bounds[1]))
+    assert out["tailboom.length"] == 9.0 and out["tailboom"]["wall_thickness"] == fixed["tailboom"]["wall_thickness"]
+
+
+def test_the_default_search_leaves_out_a_field_set_in_another_spelling_or_its_table():
+    """``--set 'shaft."wall_thickness"=…'`` is the wall (with_overrides' quoted-key grammar), and
+    a --set of the whole [shaft] table holds its wall too: either way the default search leaves
+    the wall variable out (docs/optimizer.md: "leaves out what it holds")."""
+    default = default_variables(tuned_design(), None)
+    for held in ('shaft."wall_thickness"', "shaft"):
+        variables, _ = _search_around(default, [held], None)
+        assert "shaft.wall_thickness" not in _paths(variables)

@@ -127,3 +127,20 @@ def whole_shaft(value):
 
     shaft = baseline_design().model_dump(mode="python")["shaft"]
     return {"shaft": {**shaft, "wall_thickness": value}}
+
+
+def test_a_key_refining_a_table_fixed_before_it_runs():
+    """Overrides apply fixed first, then the variables: a variable on a key of a table fixed whole
+    refines that table (its other keys stay as fixed), which with_overrides' own advice
+    ("override the whole table instead") makes a normal study. Each point carries its own
+    length and the fixed table's other keys."""
+    from flexshaft.design import baseline_design
+
+    boom = baseline_design().model_dump(mode="python")["tailboom"]
+    fixed = {"tailboom": {**boom, "wall_thickness": 1.25 * boom["wall_thickness"]}}
+    study = Study("refine", [Variable(path="tailboom.length", values=[8.5, 9.0])], ["wall_mm"], wall_mm, fixed=fixed)
+    study.validate()
+    for length in (8.5, 9.0):
+        design = study.design_at({"tailboom.length": length})
+        assert design.tailboom.length == length
+        assert design.tailboom.wall_thickness == fixed["tailboom"]["wall_thickness"]

@@ -42,6 +42,7 @@ __all__ = [
     "embedded_text",
     "load_design",
     "loads_design",
+    "path_replaces",
     "paths_overlap",
     "tuned_design",
     "value_at_path",
@@ -311,6 +312,14 @@ def paths_overlap(first: str, second: str) -> bool:
         return False
     n = min(len(a), len(b))
     return a[:n] == b[:n]
+
+
+def path_replaces(later: str, earlier: str) -> bool:
+    """Whether override path ``later``, applied after ``earlier``, replaces the value ``earlier``
+    set: the same field however written, or a table holding it. A key inside a table set
+    earlier refines that table (its other keys stay), which is not a replacement."""
+    a, b = _parse_path(later), _parse_path(earlier)
+    return a is not None and b is not None and len(a) <= len(b) and b[: len(a)] == a
 
 
 def value_at_path(data: Any, path: str | Sequence[str | int], missing: Any = None) -> Any:

@@ -27,7 +27,7 @@ from numpy.typing import ArrayLike
 
 from flexshaft import __version__
 from flexshaft.design import Design, DesignError, baseline_design, embedded_text, with_overrides
-from flexshaft.design.io import paths_overlap, value_at_path
+from flexshaft.design.io import path_replaces, paths_overlap, value_at_path
 from flexshaft.design.layup import parse_layup
 from flexshaft.optimize.evaluate import CHECK_KEYS, FIDELITIES, applicable_checks, design_outputs, metric_outputs
 from flexshaft.optimize.variables import (
@@ -175,12 +175,12 @@ class DesignProblem:
         set_field("layup", layup)
         set_field("ply_thickness", ply_thickness)
         set_field("fixed", dict(fixed or {}))
-        searched = [(p, f) for p in paths for f in self.fixed if paths_overlap(p, f)]
+        searched = [(p, f) for p in paths for f in self.fixed if path_replaces(p, f)]
         if searched:  # overrides() applies fixed first: every candidate would take the variable's value
             path, fixed_path = searched[0]
-            same = "" if path == fixed_path else f" (fixed as {fixed_path})"
+            same = "" if path == fixed_path else f" (over the fixed {fixed_path})"
             raise OptimizeError(
-                f"{path} is both fixed{same} and a variable's path, and the variable would win in every "
+                f"{path} is both fixed and a variable's path{same}, and the variable would win in every "
                 "candidate: fix it or search it, not both"
             )
         set_field("evaluate", evaluate)

@@ -24,7 +24,7 @@ import numpy as np
 
 from flexshaft.assembly import build_model
 from flexshaft.design import DesignError, baseline_design, with_overrides
-from flexshaft.design.io import paths_overlap
+from flexshaft.design.io import path_replaces
 from flexshaft.parallel.point_label import at_point
 from flexshaft.parallel.threads import one_blas_thread
 
@@ -335,8 +335,9 @@ class Study:
 
 
 def _claim_paths(setter: dict[str, str], overrides: Mapping[str, Any], who: str) -> None:
-    """Record that ``who`` sets ``overrides``' design paths; refuse a path another sets too
-    (:func:`~flexshaft.design.io.paths_overlap`: however written, or a table and one of its keys).
+    """Record that ``who`` sets ``overrides``' design paths; refuse one that replaces what
+    another set before (:func:`~flexshaft.design.io.path_replaces`: the same field however
+    written, or a table holding it; a key inside a table set before refines it).
 
     Overrides are applied fixed first, then the variables in order, so a path set twice takes
     the last value: a fixed value would be shown in the results but never used, a variable
@@ -344,8 +345,8 @@ def _claim_paths(setter: dict[str, str], overrides: Mapping[str, Any], who: str)
     """
     for path in overrides:
         for known, other in setter.items():
-            if other != who and paths_overlap(path, known):
-                same = "" if path == known else f" (as {known!r})"
+            if other != who and path_replaces(path, known):
+                same = "" if path == known else f" (over {known!r})"
                 raise SweepError(
                     f"design path {path!r}{same} is set by both {other} and {who}: the last would "
                     "silently override the other at every point; set each path in one place"
