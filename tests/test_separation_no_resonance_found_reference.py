@@ -1,15 +1,21 @@
 """A critical-speed search that found no resonance peak passes the separation check; one that
 could not be made leaves it not evaluated.
 
-References (documented rules, docs/requirements.md):
+References (documented rules, docs/requirements.md, quoted):
 
 * "The checks": every check has a status `pass`, `fail` or `not evaluated`; `normalised_margin`
   is null where it is not finite: "passed with nothing to measure, or not evaluated";
-* "A requirement that cannot be evaluated says why instead of passing": not evaluated is for a
-  missing result, not for a result with no instance in it;
-* the `separation` row: each lateral critical speed of the unbalance response against its API 684
-  margin. With no critical up to the top of the search, no critical speed lies near the operating
-  speed range: nothing fails, the check passes with no finding.
+* "How flexshaft computes AF", step 1: "130 % is beyond the largest margin API can ask above the
+  maximum continuous speed (26 %), so a peak above the scan needs no margin". Here the search
+  reached 8000 rpm, 8000/4800 = 1.67 times the operating speed, beyond 1.26: a critical above it
+  needs no margin, and there is none below it, so nothing fails and the check passes with no
+  finding and no margin;
+* "A requirement that cannot be evaluated says why instead of passing": the no-search case says
+  why, in the analysis's note.
+
+Read here, not quoted: `not evaluated` is for a missing result (no search), not for a result
+with no instance in it (a search that found no peak); the `separation` row judges each lateral
+critical speed found, so an empty search has nothing to judge.
 
 The point's analyses are stand-ins written by hand (as in
 tests/test_gather_range_and_buckling_reference.py): Ω_op = 4800 rpm, the search reached
@@ -31,7 +37,12 @@ from flexshaft.verdict.checks import evaluate
 
 RPM = 2.0 * math.pi / 60.0  # [rad/s] per rpm
 OPERATING_POINT = Operating(speed_rpm=4800.0, power=0.0)
-NO_SEARCH = "the model has no imbalance: no unbalance response"
+# the form of scan_critical_speeds' note when the scan's solve is singular (its exception text after
+# the colon, here written by hand in the banded solver's words)
+NO_SEARCH = (
+    "the unbalance response could not be scanned: dynamic stiffness is singular at ω = 502.655 rad/s, "
+    "Ω = 502.655 rad/s (an undamped resonance); add damping or move the frequency"
+)
 
 
 def _point(criticals) -> NS:
@@ -72,7 +83,9 @@ def test_a_search_without_a_peak_passes_with_nothing_to_measure(monkeypatch):
 
 
 def test_no_search_leaves_the_check_not_evaluated_with_its_reason(monkeypatch):
-    """No unbalance response at all: not evaluated, the reason from the analysis's note."""
+    """No search (the unbalance response could not be scanned, the note's form in
+    flexshaft.analyses.criticals.scan_critical_speeds): not evaluated, the reason from the
+    analysis's note."""
     evidence, check = _separation(monkeypatch, None)
     assert evidence.critical_speeds is None
     assert check.status == "not evaluated"
