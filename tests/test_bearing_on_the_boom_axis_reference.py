@@ -2,9 +2,11 @@
 
 A bearing's ``offset`` is the height h of the shaft axis above the boom's neutral axis at the
 mount (docs/model.md: the bearing joins the shaft to the attachment point at height h); the
-design schema allows h = 0 (a clearance from 0 m) and only an omitted ``offset`` falls back to the
-boom's vertical semi-axis plus ``shaft_clearance``. Kinematics, derived here: twisting the boom
-alone by a uniform θ moves a point at height h by r × p = (θ, 0, 0) × (0, h, 0) = (0, 0, θ h),
+design schema allows h = 0 (docs/limits.md:34: a bearing ``offset`` is a ``Clearance``, 0 to
+10 m) and only an omitted ``offset`` falls back to the boom's vertical semi-axis plus
+``shaft_clearance``. Kinematics, derived here and matching the documented attachment
+kinematics w = w_b + hθ_b (docs/model.md:52): twisting the boom alone by a uniform θ moves a
+point at height h by (θ, 0, 0) × (0, h, 0) = (0, 0, θ h),
 so with h = 0 a boom twist does not move the attachment point at all, while a boom translation
 v = 1 moves it by 1 (the bearing's rows give shaft minus attachment: relative v = −1). The
 companion bearing without ``offset`` on the same circular boom (radius R, clearance 0.05 m)

@@ -12,6 +12,10 @@ single [0] ply of wall thickness t (cos α = 1, sin α = 0):
 
     A55 = t G13*,  A44 = t G23*,  A45 = 0,
 
+read as [0, 0] = A55, [1, 1] = A44, [0, 1] = A45: that order is the API contract of
+:func:`flexshaft.laminate.transverse_shear_stiffness` (its Returns: "[[A55, A45], [A45, A44]]",
+src/flexshaft/laminate.py:331-335), not an assumption of this test.
+
 with the complex moduli of the correspondence principle, G13* = G13 (1 + iη_G) and
 G23* = G23 (1 + iη_T) (the loss factors of G_LT and E_T, as
 :meth:`flexshaft.laminate.Lamina.from_loss_factors` documents).
@@ -20,6 +24,8 @@ Tolerance 1e-12 relative: each entry is one product of decimal inputs times cos�
 roundings, nothing ill-conditioned); A45 = (G13 − G23) cos 0 sin 0 is exactly 0.
 
 Written for the mutation h85b-lamina-shear-correction-one-refused of scripts/mutations.toml.
+That mutation is caught by the documented acceptance of k = 1 itself: the refusal raises while
+the design (or the Lamina) is built, before any stiffness assertion runs.
 """
 
 from __future__ import annotations
