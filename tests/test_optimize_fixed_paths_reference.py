@@ -1,10 +1,13 @@
 """A field fixed with ``--set`` stays fixed in every candidate of the optimizer.
 
-docs/optimizer.md: "`--set PATH=VALUE` fixes a field on every candidate, and the default search
-then leaves out the variable that would set it (`--set shaft.layup=...` leaves out the ply
-angles). With `--var`, a path both set and searched is refused: the variable would win in every
-candidate." A candidate's overrides apply the fixed ones first, then the variables, so before
-this rule the default search's wall-thickness variable silently overrode ``--set
+docs/optimizer.md: "`--set PATH=VALUE` fixes a field on every candidate, and the default
+search then leaves out what it holds (`--set shaft.layup=...` leaves out the ply angles; a
+gain shared by both active bearings stays searched at the bearing not set). With `--var`, a
+path both set and searched is refused, however it is written or when the searched one is a
+table holding the set one: the variable would win in every candidate (a key searched inside a
+table set whole refines it)." A candidate's overrides apply the fixed ones first, then the
+variables, then a layup template's layup (and its wall with a ply thickness), so before this
+rule the default search's wall-thickness variable silently overrode ``--set
 shaft.wall_thickness``.
 
 No candidate is evaluated: the default search of the embedded tuned design, its variables'
@@ -16,7 +19,7 @@ from __future__ import annotations
 import pytest
 
 from flexshaft.cli.optimize import _search_around
-from flexshaft.design import tuned_design
+from flexshaft.design import tuned_design, with_overrides
 from flexshaft.optimize import DesignProblem, DesignVariable, OptimizeError, default_variables
 
 
@@ -110,8 +113,9 @@ def test_a_key_searched_inside_a_table_fixed_whole_refines_it():
     boom = base.model_dump(mode="python")["tailboom"]
     fixed = {"tailboom": {**boom, "wall_thickness": 1.25 * boom["wall_thickness"]}}
     problem = DesignProblem((DesignVariable("tailboom.length", 8.0, 9.0),), base=base, fixed=fixed)
-    out = problem.overrides(problem.values(problem.bounds[1]))
-    assert out["tailboom.length"] == 9.0 and out["tailboom"]["wall_thickness"] == fixed["tailboom"]["wall_thickness"]
+    candidate = with_overrides(base, problem.overrides(problem.values(problem.bounds[1])))
+    assert candidate.tailboom.length == 9.0
+    assert candidate.tailboom.wall_thickness == fixed["tailboom"]["wall_thickness"]
 
 
 def test_the_default_search_leaves_out_a_field_set_in_another_spelling_or_its_table():
@@ -122,3 +126,26 @@ def test_the_default_search_leaves_out_a_field_set_in_another_spelling_or_its_ta
     for held in ('shaft."wall_thickness"', "shaft"):
         variables, _ = _search_around(default, [held], None)
         assert "shaft.wall_thickness" not in _paths(variables)
+
+
+def test_a_path_the_layup_template_writes_is_refused_however_written():
+    """The template's layup, and with a ply thickness its wall, are written after the fixed
+    ones and the variables: a fixed ``shaft."layup"`` or a searched ``shaft."wall_thickness"``
+    (with_overrides' quoted-key grammar) would be set for nothing, as their plain spellings are
+    (docs/optimizer.md: a path both set and searched is refused, "however it is written"). A
+    fixed [shaft] table is refined by the template, not replaced: accepted."""
+    base = tuned_design()
+    angle = (DesignVariable("layup.a", 30.0, 60.0),)
+    with pytest.raises(OptimizeError, match="layup"):
+        DesignProblem(angle, base=base, layup="({a}/{-a})s", fixed={'shaft."layup"': "(0/90)s"})
+    with pytest.raises(OptimizeError, match="wall thickness follows the ply count"):
+        DesignProblem(
+            (*angle, DesignVariable('shaft."wall_thickness"', 0.002, 0.003)),
+            base=base,
+            layup="({a}/{-a})s",
+            ply_thickness=0.25e-3,
+        )
+    shaft = base.model_dump(mode="python")["shaft"]
+    problem = DesignProblem(angle, base=base, layup="({a}/{-a})s", fixed={"shaft": shaft})
+    candidate = with_overrides(base, problem.overrides(problem.values(problem.bounds[0])))
+    assert candidate.shaft.layup == "(30/-30)s"

@@ -305,11 +305,12 @@ class DesignProblem:
                 raise OptimizeError(
                     f"layup template {self.layup!r}: {{{m.group(2)}}} is a ply count, its variable must be integer"
                 )
-        if "shaft.layup" in self.fixed or any("shaft.layup" in v.paths for v in self.variables):
+        # the template's layup (and wall) are written last: a path it would replace, however
+        # written, would be set for nothing (a [shaft] table is refined, not replaced)
+        given = [*self.fixed, *(p for v in self.variables for p in v.paths)]
+        if any(path_replaces("shaft.layup", p) for p in given):
             raise OptimizeError("give the layup either as a template or through shaft.layup, not both")
-        if self.ply_thickness is not None and (
-            "shaft.wall_thickness" in self.fixed or any("shaft.wall_thickness" in v.paths for v in self.variables)
-        ):
+        if self.ply_thickness is not None and any(path_replaces("shaft.wall_thickness", p) for p in given):
             raise OptimizeError(
                 "with ply_thickness the wall thickness follows the ply count; do not set shaft.wall_thickness too"
             )
