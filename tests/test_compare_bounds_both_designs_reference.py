@@ -1,8 +1,9 @@
 """`flexshaft compare` bounds both designs before it makes its folder.
 
-Reference (docs/limits.md, "Command bounds": "`run`, `compare` and `study all`: the design's
-own bound (section 5) for their assessments"; "`run` and `compare` refuse those before making
-their folder"; README "Exit codes": 2 a user error). The design-size bound of the second
+Reference (docs/limits.md, section 7 "The work of a command": "Each estimates its work from both
+before it computes or writes anything ... and refuses, exit 2"; "`run`, `compare` and `study
+all`: the design's own bound (section 5) for their assessments"; README "Exit codes": 2 a user
+error). The design-size bound of the second
 design (B, the embedded current driveline) is made to refuse (a DesignError, as
 check_problem_size raises above 2 GiB or 4 h) while the first passes: compare must exit 2
 without making its output folder and without comparing anything; the bound must have been asked

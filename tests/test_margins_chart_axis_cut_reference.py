@@ -1,6 +1,6 @@
 """The margins chart cuts long bars at its axis range and keeps a +inf bar inside the axes.
 
-References (margins_figure's documented contract, flexshaft.plot.verdict):
+References (API contract: the docstring of margins_figure, flexshaft.plot.verdict; no docs page states it):
 
 * ``limits`` is the "axis range [-]; longer bars are cut with an arrow": with the default
   limits (-2, 3) a margin of -500 % is drawn as a bar of exactly -200 % (np.clip of a finite

@@ -1,19 +1,22 @@
 """The bounds of a study sweep and of optimize's verification runs, counted by hand.
 
-References (docs/limits.md, section "Command bounds"; flexshaft.cli.bounds docstrings):
+References (docs/limits.md, section 7 "The work of a command"; flexshaft.cli.bounds docstrings):
 
 * A ``study`` sweep keeps its finished work and resumes: it is refused "above 4 hours per
   worker". Its points are shared among the workers, each point one model of the design, so with
   a stand-in model of t = 10 s a point, P points on w workers take P t / w: 2,000 points are
   20,000 s (5.6 h, refused) on one worker and 5,000 s (1.4 h, accepted) on four.
 * ``optimize --verify`` runs in one go the full runs of the design files it writes, "at most
-  ``--designs``" and at most one per evaluation (check_verification's docstring): count =
+  ``--designs``" (docs/limits.md) and at most one per evaluation (API contract, check_verification's
+  docstring; no docs page states it): count =
   min(designs, budget), time count × t / w against the 10-minute one-go limit. With t = 10 s:
   --designs 3 of a budget of 100,000 is 30 s on one worker; --designs 10 of a budget of 4 is
   40 s; 3 designs on 2 workers 15 s.
 
 Stand-in model sizes, no analysis (< 0.1 s). The times are products and quotients of small
 integers and 10.0: exact in binary floating point up to one rounding, compared with rel=1e-12.
+The limits asked are docs/limits.md's numbers, 4 hours (4 * 3600.0 s) and 10 minutes (600.0 s),
+not the module's constants.
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ from types import SimpleNamespace
 import pytest
 
 from flexshaft.cli import bounds
-from flexshaft.cli.bounds import MAX_RESUMABLE_SECONDS, MAX_SECONDS, check_sweep, check_verification
+from flexshaft.cli.bounds import MAX_SECONDS, check_sweep, check_verification
 from flexshaft.cli.common import UserError
 
 POINT = SimpleNamespace(time_seconds=10.0, memory_bytes=1.0, free_dofs=100, shaft_nodes=2)
@@ -39,7 +42,7 @@ def test_a_sweep_is_bounded_per_worker(monkeypatch) -> None:
     monkeypatch.setattr(bounds, "_refuse_if_large", lambda what, s, m, change, limit, per: asked.append((s, limit)))
     check_sweep(None, "study two-angle", 100, 4)
     assert asked[0][0] == pytest.approx(100 * 10.0 / 4, rel=1e-12)
-    assert asked[0][1] == MAX_RESUMABLE_SECONDS
+    assert asked[0][1] == 4 * 3600.0  # docs/limits.md: 4 hours per worker
 
 
 @pytest.mark.parametrize(
@@ -59,4 +62,4 @@ def test_verification_counts_at_most_designs_and_at_most_the_budget(
     monkeypatch.setattr(bounds, "_refuse_if_large", record)
     check_verification(None, designs, budget, workers)
     assert asked[0][0] == pytest.approx(seconds, rel=1e-12)
-    assert asked[0][1] == MAX_SECONDS
+    assert asked[0][1] == 600.0  # docs/limits.md: 10 minutes
