@@ -1,11 +1,12 @@
 """The drawing phase of a complex mode shape (plot/shapes.py, ``mode_shapes_figure``).
 
-Reference, from the docstring ("scaled so that its largest orbit radius is 1 and its largest
-component is real") and derived here: the shape v = 0.5 i sin(πx), w = sin(πx) on x in
-[0, 1] has its largest component w(½) = 1 (real already) and its largest orbit radius
-√(1 + 0.25) = √1.25 at x = ½. Drawn at that phase, the w curve is sin(πx)/√1.25 and the v curve
-Re(0.5 i sin(πx))/√1.25 = 0 (v is a quarter period behind: a circular-ish whirl caught at the
-instant w peaks).
+Reference: API contract (the docstring of ``mode_shapes_figure``, "scaled so that its largest
+orbit radius is 1 and its largest component is real"; no docs page states it) and derived
+here: the shape v = 0.5 i sin(πx), w = sin(πx) on x in [0, 1] has its largest component
+w(½) = 1 (real already) and its largest |(v, w)| = √(|v|² + |w|²) = √1.25 at x = ½ (the
+plot's "orbit radius"; the ellipse's major semi-axis is 1 here). Drawn at that phase, the w
+curve is sin(πx)/√1.25 and the v curve Re(0.5 i sin(πx))/√1.25 = 0 (v is a quarter period
+ahead: 0.5 i = 0.5 e^{iπ/2}; the whirl caught at the instant w peaks).
 
 Agg, no file; CPU milliseconds.
 """

@@ -3,12 +3,15 @@
 References, derived here:
 
 * v = a cos φ, w = b sin φ is the complex pair (v, w) = (a, −i b), since Re(−i b e^{iφ}) =
-  b sin φ. With w horizontal and v vertical (the docstring of ``orbit_figure``), the key phasor
+  b sin φ. With w horizontal and v vertical (API contract: the docstring of ``orbit_figure``,
+  "Lateral w is horizontal, vertical v up"), the key phasor
   φ = 0 is the point (w, v) = (0, a): the dot sits there, on the ellipse, for any a ≠ b.
 * The whirl runs the way φ grows: the tangent (dw/dφ, dv/dφ) = (b cos φ, −a sin φ). The
   arrow from the point at φ_j to the one at φ_{j+1} must point along it (positive dot
   product); for a, b > 0 it starts at the top moving to +w, clockwise in this view, which is
-  forward whirl of a shaft spinning about +x looking aft (the docstring).
+  forward whirl of a shaft spinning about +x looking aft (API contract: the same docstring;
+  independently, docs/model.md writes the orbit r = v + i w and the imbalance load turns +v
+  toward +w, so forward whirl is clockwise with w to the right and v up).
 * The share of the gap an orbit uses is its major semi-axis over the radial clearance, a
   length ratio that does not depend on the unit the panel draws in: a circular orbit of
   radius 20 μm in a 0.25 mm gap uses 100 · 0.020 / 0.25 = 8 %.
