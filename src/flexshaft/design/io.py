@@ -303,15 +303,11 @@ def _parse_path(path: str) -> list[str | int] | None:
 
 
 def paths_overlap(first: str, second: str) -> bool:
-    """Whether two override paths of :func:`with_overrides` reach the same value: the same field
-    however written (``shaft."wall_thickness"``, ``bearings[01]``) or a table and a key inside it.
-    Applied one after the other, the second replaces what the first set. A malformed path
-    overlaps nothing (:func:`with_overrides` reports it)."""
-    a, b = _parse_path(first), _parse_path(second)
-    if a is None or b is None:
-        return False
-    n = min(len(a), len(b))
-    return a[:n] == b[:n]
+    """Whether two override paths of :func:`with_overrides` reach the same value, in either
+    order: the same field however written (``shaft."wall_thickness"``, ``bearings[01]``) or a
+    table and a key inside it (:func:`path_replaces` says which replaces which). A malformed
+    path overlaps nothing (:func:`with_overrides` reports it)."""
+    return path_replaces(first, second) or path_replaces(second, first)
 
 
 def path_replaces(later: str, earlier: str) -> bool:

@@ -224,7 +224,8 @@ class Study:
     base : Design, optional
         Design every point starts from (default: the embedded thesis baseline).
     fixed : mapping, optional
-        Overrides applied to ``base`` at every point.
+        Overrides applied to ``base`` at every point, before the variables'; a path a variable
+        would replace (:func:`~flexshaft.design.io.path_replaces`) is refused by :meth:`validate`.
     """
 
     name: str
