@@ -32,54 +32,16 @@ from __future__ import annotations
 
 import pytest
 
+# the sibling test's one-ply tube (its constants and design text), with k = 1 for its k = 0.6
+from test_lamina_shear_correction_reference import DESIGN as CORRECTED  # noqa: E402
+from test_lamina_shear_correction_reference import E_L, E_T, ETA_G, ETA_T, G_13, G_23, G_LT, K_SHEAR, NU_LT, WALL
+
 from flexshaft.assembly import build_model
 from flexshaft.design import loads_design
 from flexshaft.laminate import Lamina, transverse_shear_stiffness
 
-E_L, E_T, G_LT, NU_LT = 120e9, 8e9, 4e9, 0.3
-ETA_L, ETA_T, ETA_G = 0.01, 0.04, 0.07
-G_13, G_23 = 5e9, 3e9
-WALL = 0.002
-
-DESIGN = f"""
-name = "one-ply tube without shear correction"
-[materials.ply]
-kind = "lamina"
-density = 1500.0
-E_L = {E_L}
-E_T = {E_T}
-G_LT = {G_LT}
-nu_LT = {NU_LT}
-loss_E_L = {ETA_L}
-loss_E_T = {ETA_T}
-loss_G_LT = {ETA_G}
-X_t = 1e9
-X_c = 8e8
-Y_t = 4e7
-Y_c = 1e8
-S = 5e7
-G_13 = {G_13}
-G_23 = {G_23}
-shear_correction = 1.0
-[shaft]
-x_start = 0.0
-x_end = 1.0
-outer_diameter = 0.06
-wall_thickness = {WALL}
-material = "ply"
-layup = "0"
-fixed_start = ["u", "v", "w", "theta"]
-[[bearings]]
-name = "aft"
-kind = "contact"
-x = 1.0
-stiffness = {{ v = 1e7, w = 1e7 }}
-[operating]
-speed_rpm = 1000.0
-power = 0.0
-[mesh]
-shaft_elements = 4
-"""
+DESIGN = CORRECTED.replace(f"shear_correction = {K_SHEAR}", "shear_correction = 1.0")
+assert DESIGN != CORRECTED  # the one line replaced
 
 
 def test_a_design_with_unit_shear_correction_builds_and_shears_uncorrected():
