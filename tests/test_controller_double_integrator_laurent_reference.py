@@ -27,24 +27,16 @@ ulps: 1e-12 relative. CPU: one 4-element build, milliseconds.
 from __future__ import annotations
 
 import numpy as np
-from rotors import jeffcott_text
+from test_controller_laurent_gain_and_relative_degree_reference import (
+    _magnet_model,  # the same magnet on the same rotor
+)
 
-from flexshaft.assembly import build_model
 from flexshaft.assembly.controller import Controller
-from flexshaft.design import loads_design
 
 N3, N2, N1, N0 = 3.0, 8.0e6, 4.0e8, 1.0e10  # numerator, highest power first
 D1, D0 = 2.0e-3, 5.0  # denominator s² (D1 s + D0)
 C2 = N2 / D0 - N1 * D1 / D0**2 + N0 * D1**2 / D0**3  # 1.56832e6 N/m
 KI, KS = 2.0, 1.0e5  # [N/A], [N/m]
-
-
-def _magnet_model(law: str, extra: str = ""):
-    text = jeffcott_text(0.0, 0.0, elements=4)
-    head, tail = text.split("[[bearings]]")
-    tail = tail[tail.index("[[disks]]") :]
-    magnet = f'[[bearings]]\nname = "m"\nx = 0.25\nkind = "active"\n{law}\n{extra}'
-    return build_model(loads_design(head + magnet + tail))
 
 
 def test_the_proportional_gain_of_a_pii_law_is_kp():
