@@ -1,15 +1,16 @@
 """Reference: the Campbell diagram of a rotor holds its modes up to at least 1/rev.
 
-Every spinning rotor is excited once per revolution (its residual imbalance: the synchronous
-whirl of the unbalance response, Den Hartog's rotating-unbalance problem), so the Campbell
-diagram's ceiling is at least its top speed × 1 even for a model with no design (no rotor, no
-torsional excitation lines: :func:`flexshaft.verdict.point_tasks.campbell_ceiling`, "at least
-1/rev"). The model: the Jeffcott rotor of tests/rotors.py without a design, Ω_op = ω_n/1.1 and a
-two-speed diagram to scan_top × Ω_op = 1.3 Ω_op = 1.18 ω_n. Its modes at rest: the disk's
-bending pair at ω_n = √(48EI/(mL³)) (both planes), the next at 12.8 ω_n (the reduced basis's value,
-far above any threshold here). Below 1.1 × 1.18 ω_n =
-1.30 ω_n lies the pair: 2 + 2 = 4 modes with campbell_modes = 2. The ceiling is a product of two
-floats: 1e-12 relative.
+Every spinning rotor is excited once per revolution by its residual imbalance (the synchronous
+whirl of the unbalance response), so the Campbell diagram's ceiling is at least its top speed
+× 1 even for a model with no design (no rotor, no torsional excitation lines): the API contract
+of :func:`flexshaft.verdict.point_tasks.campbell_ceiling`'s docstring, "at least 1/rev" (no
+docs page states the ceiling rule). The model: the Jeffcott rotor of tests/rotors.py without a
+design, Ω_op = ω_n/1.1 and a two-speed diagram to scan_top × Ω_op = 1.3 Ω_op = 1.18 ω_n. Its
+modes at rest: the disk's bending pair at ω_n = √(48EI/(mL³)) (both planes); the tube's own
+modes are orders of magnitude higher (its mass is 3.5e-6 of the disk's). Below 1.1 × 1.18 ω_n =
+1.30 ω_n lies the pair: 2 + 2 = 4 modes with campbell_modes = 2 (the API contract of
+:func:`~flexshaft.verdict.point_tasks.campbell_mode_count`: every mode at rest below 1.1 × the
+ceiling, plus two). The ceiling is a product of two floats: 1e-12 relative.
 """
 
 from __future__ import annotations

@@ -7,7 +7,11 @@ Reference (hand-written, docs/model.md, "Every member's loss is hysteretic"): wi
     σ = sgn(ω − Ω),  σ_B = sgn(ω + Ω),
 
 and with the ``"thesis"`` model ``L(ω) = i sgn(ω)(F + K_lat)``. The weights of (F, K_lat,
-K_lat S) are therefore read off by hand at chosen points. The fixed-frame weight is checked
+K_lat S) are therefore read off by hand at chosen points, with sgn(0) = 0 as docs/model.md's
+"Synchronous forward whirl (imbalance) is not damped by the shaft at all" requires of the
+forward part. The reverse-spin point Ω = −ω lies outside the product's speeds (≥ 0,
+docs/limits.md §6): public API only; the product path of these weights is the static point
+ω = Ω = 0. The fixed-frame weight is checked
 as energy too: a single hysteretic spring k(1 + iη) driven at x = X cos ωt dissipates
 π η k X² per cycle (derived here: the loss force −η k X sin ωt times dx = −X ω sin ωt dt
 integrated over a period gives η k X² ω · π/ω), so a loss force ``w η k x`` dissipates
@@ -83,3 +87,4 @@ def test_fixed_frame_loss_dissipates_pi_eta_k_x2_on_either_whirl_side(sigma: flo
     force = np.real(w.fixed * eta * k * amplitude * np.exp(1j * omega * t))
     dissipated = float(np.sum(force * x_dot) * (2 * np.pi / omega) / 64)
     assert dissipated == pytest.approx(np.pi * eta * k * amplitude**2, rel=1e-12)
+    assert abs(w.fixed - 1j) <= EXACT  # and no storage part: the weight is i itself
