@@ -12,12 +12,12 @@ the magnet's −k_s added)
 At rest (Ω = 0) the net stiffness k_net = k + 2(K_p − k_s) < 0 gives a real root
 s = (−c + √(c² − 4m k_net))/(2m) > 0: an aperiodic instability (Earnshaw's theorem for the
 uncontrolled magnet), which the stability analysis counts as an onset at the first divergent
-speed (docs of :mod:`flexshaft.analyses.stability`: "the first divergent speed counts as an
-onset ..., never silently dropped"). On a grid starting at 0 rad/s the map's onset must be
+speed (docs/magnetic-bearings.md: the stability analysis "counts the first divergent speed as
+the onset"). On a grid starting at 0 rad/s the map's onset must be
 0 rad/s exactly (the grid's first speed, no interpolation), where a stable point reads NaN.
 With K_p above k_s − k/2 the same rotor is stable at rest and whirls from
 Ω = ω(1 + 2K_d/c_i), ω² = k_net/m (the internal-damping threshold; tolerance 2e-5 as in the
-reference file above: the tube's mass, 7e-6 of the disk's, is left out).
+reference file above: the tube's mass, 3.5e-6 of the disk's, is left out).
 """
 
 from __future__ import annotations
