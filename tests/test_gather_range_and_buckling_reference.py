@@ -43,20 +43,26 @@ def _point() -> NS:
         LateralCritical(3000.0 * RPM, 5.19, {"station": 1.0}),
         LateralCritical(6000.0 * RPM, 5.19, {"station": 2.0}),
     )
+    return criticals_only_point(criticals, OPERATING_POINT)
+
+
+def criticals_only_point(criticals, operating: Operating, note: str = "") -> NS:
+    """A stand-in point whose only result is a critical-speed search to 8000 rpm with these
+    ``criticals`` and ``note`` at ``operating`` (every other check not evaluated)."""
     return NS(
         strength_static=None,
         strength_total=None,
         metal_strength=None,
         coupling_misalignment=None,
         buckling=None,
-        criticals=NS(criticals=criticals, search_top=8000.0 * RPM, note=""),
+        criticals=NS(criticals=criticals, search_top=8000.0 * RPM, note=note),
         thermal=None,
-        design=NS(thermal=NS(allowable_temperature_c=100.0), operating=OPERATING_POINT),
+        design=NS(thermal=NS(allowable_temperature_c=100.0), operating=operating),
         spinup=NS(speeds=np.array([0.0]), shaft_peak=np.zeros(1), up_to=lambda speed: np.array([], int)),
         torsional_separation=None,
         torsional_modes=None,
         bearing_loops=None,
-        operating_speed=OPERATING_POINT.speed_rad_s,
+        operating_speed=operating.speed_rad_s,
         model=NS(actuators=[]),
     )
 

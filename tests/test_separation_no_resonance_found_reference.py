@@ -24,18 +24,16 @@ tests/test_gather_range_and_buckling_reference.py): Ω_op = 4800 rpm, the search
 
 from __future__ import annotations
 
-import math
 from types import SimpleNamespace as NS
 
-import numpy as np
 import pytest
+from test_gather_range_and_buckling_reference import RPM, criticals_only_point
 
 from flexshaft.design.loads import Operating
 from flexshaft.design.requirements import Requirements
 from flexshaft.verdict import gather
 from flexshaft.verdict.checks import evaluate
 
-RPM = 2.0 * math.pi / 60.0  # [rad/s] per rpm
 OPERATING_POINT = Operating(speed_rpm=4800.0, power=0.0)
 # the form of scan_critical_speeds' note when the scan's solve is singular (its exception text after
 # the colon, here written by hand in the banded solver's words)
@@ -47,22 +45,7 @@ NO_SEARCH = (
 
 def _point(criticals) -> NS:
     """A point whose only result is the critical-speed search (every other check not evaluated)."""
-    return NS(
-        strength_static=None,
-        strength_total=None,
-        metal_strength=None,
-        coupling_misalignment=None,
-        buckling=None,
-        criticals=NS(criticals=criticals, search_top=8000.0 * RPM, note=NO_SEARCH),
-        thermal=None,
-        design=NS(thermal=NS(allowable_temperature_c=100.0), operating=OPERATING_POINT),
-        spinup=NS(speeds=np.array([0.0]), shaft_peak=np.zeros(1), up_to=lambda speed: np.array([], int)),
-        torsional_separation=None,
-        torsional_modes=None,
-        bearing_loops=None,
-        operating_speed=OPERATING_POINT.speed_rad_s,
-        model=NS(actuators=[]),
-    )
+    return criticals_only_point(criticals, OPERATING_POINT, NO_SEARCH)
 
 
 def _separation(monkeypatch, criticals):
