@@ -149,3 +149,29 @@ def test_a_path_the_layup_template_writes_is_refused_however_written():
     problem = DesignProblem(angle, base=base, layup="({a}/{-a})s", fixed={"shaft": shaft})
     candidate = with_overrides(base, problem.overrides(problem.values(problem.bounds[0])))
     assert candidate.shaft.layup == "(30/-30)s"
+
+
+def test_a_set_neighbour_bounds_the_searched_station():
+    """docs/optimizer.md: "each active bearing's station within ±1 m of its own, ≥ 0.3 m from
+    its neighbours", where the design is the one every candidate starts from: the base with
+    the ``--set`` fields. The tuned design's forward hanger stands at 0.7 m and amb_1 at
+    3.21 m (bounds [2.21, 4.21] m: ±1 m); ``--set bearings[0].x=2.5`` moves the hanger, so
+    amb_1 may come no closer than 2.5 + 0.3 = 2.8 m. Before, the bounds were those of the base
+    design, and candidates put amb_1 0.2 m from the set hanger or on it."""
+    from flexshaft.cli.optimize import _default_search
+
+    variables, _ = _default_search(tuned_design(), {"bearings[0].x": 2.5}, None, False)
+    (station,) = [v for v in variables if v.paths == ("bearings[1].x",)]
+    assert (station.lower, station.upper) == pytest.approx((2.8, 4.21), abs=1e-12)
+    assert "bearings[0].x" not in _paths(variables)  # the hanger is passive: never searched
+
+
+def test_a_set_station_beyond_its_neighbour_bounds_it_from_the_other_side():
+    """The same rule with amb_2 (5.63 m) set to 4.0 m: amb_1 (3.21 m) may reach up to
+    4.0 − 0.3 = 3.7 m, not the base's 4.21 m, and it may not pass the set bearing."""
+    from flexshaft.cli.optimize import _default_search
+
+    variables, _ = _default_search(tuned_design(), {"bearings[2].x": 4.0}, None, False)
+    (station,) = [v for v in variables if v.paths == ("bearings[1].x",)]
+    assert (station.lower, station.upper) == pytest.approx((2.21, 3.7), abs=1e-12)
+    assert "bearings[2].x" not in _paths(variables)

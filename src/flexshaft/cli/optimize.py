@@ -194,7 +194,7 @@ def optimize(
     from flexshaft.cli.output import default_output_folder, marker_source, prepare_output_folder
     from flexshaft.cli.tables import design_heading, design_source
     from flexshaft.design import DEFAULT_DESIGN, EMBEDDED_DESIGNS, DesignError, with_overrides
-    from flexshaft.optimize import DesignProblem, OptimizeError, default_variables
+    from flexshaft.optimize import DesignProblem, OptimizeError
     from flexshaft.optimize.evaluate import CHECK_KEYS, applicable_checks
     from flexshaft.optimize.variables import DEFAULT_OBJECTIVES
     from flexshaft.sweep import SweepError
@@ -231,8 +231,7 @@ def optimize(
         if var:
             variables, template = tuple(parse_variable(s) for s in var), layup
         else:
-            held = [*fixed, *(["shaft.wall_thickness"] if ply_thickness_mm is not None else [])]
-            variables, template = _search_around(default_variables(base, layup), held, layup)
+            variables, template = _default_search(base, fixed, layup, ply_thickness_mm is not None)
         problem = DesignProblem(
             variables,
             base=base,
@@ -312,6 +311,20 @@ def _report(result, out: Path, max_designs: int, verify: bool, jobs: int, client
     if failed:
         typer.echo(f"re-verification with the full run FAILS for: {', '.join(failed)}", err=True)
         raise typer.Exit(code=NO_DESIGN_PASSES)
+
+
+def _default_search(
+    base, fixed: dict, layup: str | None, ply_thickness: bool
+) -> tuple[tuple[DesignVariable, ...], str | None]:
+    """The default search around the design every candidate starts from: the base with the
+    ``--set`` fields (a set neighbour bounds a bearing's station, a set gain widens the range),
+    without what they hold (and the wall with ``--ply-thickness-mm``)."""
+    from flexshaft.design import with_overrides
+    from flexshaft.optimize import default_variables
+
+    start = with_overrides(base, fixed) if fixed else base
+    held = [*fixed, *(["shaft.wall_thickness"] if ply_thickness else [])]
+    return _search_around(default_variables(start, layup), held, layup)
 
 
 def _search_around(
