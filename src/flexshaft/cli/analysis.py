@@ -196,8 +196,8 @@ def stability(
 
     from flexshaft.design.schema import MAX_SPEED_RPM
 
-    check_finite("--max-rpm", max_rpm, 1e-9, MAX_SPEED_RPM)
-    check_finite("--reference-hz", reference_hz, 1e-9)
+    check_finite("--max-rpm", max_rpm, maximum=MAX_SPEED_RPM, positive=True)
+    check_finite("--reference-hz", reference_hz, positive=True)
     loaded = load_design_argument(design)
     from flexshaft.cli.bounds import check_stability
 

@@ -341,13 +341,21 @@ def is_guarded(func: Callable[..., Any]) -> bool:
 
 
 def check_finite(
-    option: str, value: float | None, minimum: float | None = None, maximum: float | None = None
+    option: str,
+    value: float | None,
+    minimum: float | None = None,
+    maximum: float | None = None,
+    *,
+    positive: bool = False,
 ) -> float | None:
-    """``value`` if it is None or finite and within [minimum, maximum]; else a user error."""
+    """``value`` if it is None or finite, within [minimum, maximum] and, with ``positive``,
+    above zero; else a user error."""
     if value is None:
         return None
     if not math.isfinite(value):
         fail(f"{option}: must be a finite number (got {value})")
+    if positive and not value > 0.0:
+        fail(f"{option}: must be positive (got {value:g})")
     if minimum is not None and value < minimum:
         fail(f"{option}: must be >= {minimum:g} (got {value:g})")
     if maximum is not None and value > maximum:
@@ -371,7 +379,7 @@ def actuator_gap(gap: float | None, gap_mm: float | None) -> float | None:
     if gap_mm is not None:
         check_finite("--gap-mm", gap_mm, 1e-6, m_to_mm(LARGEST_GAP))
         return mm_to_m(gap_mm)
-    check_finite("--gap", gap, 1e-9)
+    check_finite("--gap", gap, positive=True)
     if gap is not None and gap > LARGEST_GAP:
         fail(
             f"--gap: the actuator gap in metres, at most {LARGEST_GAP:g} m, the largest auxiliary-bearing "

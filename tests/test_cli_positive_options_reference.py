@@ -1,0 +1,39 @@
+"""Options that take a positive quantity refuse zero and negatives as "must be positive".
+
+README: exit code 2 is "a user error"; the guide's standard: a bad argument "gets a message naming
+the field, the value and what is allowed, before any computation". An option that must be above
+zero (``stability --max-rpm``: the top of a speed sweep; ``--reference-hz``: the speed of a
+reference frequency; ``--gap``: an actuator gap) used to be checked as ``>= 1e-09`` and the
+message said so ("must be >= 1e-09 (got 0)"), a bound the user never chose. The references are
+the rule itself: zero and negatives refused, the smallest positive double accepted.
+
+No analysis runs: the checks come before any model is built (milliseconds).
+"""
+
+from __future__ import annotations
+
+import pytest
+from typer.testing import CliRunner
+
+from flexshaft.cli import app
+from flexshaft.cli.common import UserError, check_finite
+
+runner = CliRunner()
+
+
+@pytest.mark.parametrize("bad", [0.0, -0.0, -1.0])
+def test_a_positive_option_refuses_zero_and_negatives_saying_positive(bad):
+    with pytest.raises(UserError, match=r"^--max-rpm: must be positive \(got -?[01]\)$"):
+        check_finite("--max-rpm", bad, positive=True)
+
+
+def test_a_positive_option_accepts_the_smallest_positive_number():
+    assert check_finite("--gap", 5e-324, positive=True) == 5e-324  # just above the open bound
+
+
+@pytest.mark.parametrize(("option", "value"), [("--max-rpm", "0"), ("--reference-hz", "-1")])
+def test_stability_refuses_a_non_positive_sweep_bound_with_exit_2(option, value):
+    result = runner.invoke(app, ["stability", option, value])
+    assert result.exit_code == 2
+    assert f"{option}: must be positive (got {value})" in result.output
+    assert "1e-09" not in result.output
