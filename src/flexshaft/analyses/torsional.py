@@ -151,7 +151,8 @@ class TorsionalModes:
 
     @property
     def damping_ratios(self) -> np.ndarray:
-        """ζ = −Re(s)/|s| [-] (0 for a rigid-body twist)."""
+        """ζ = −Re(s)/|s| [-] (0 for a rigid-body twist; 1 for an overdamped mode, whose
+        eigenvalue is a real root)."""
         magnitude = np.abs(self.eigenvalues)
         return np.where(magnitude > 0, -self.eigenvalues.real / np.where(magnitude > 0, magnitude, 1.0), 0.0)
 
@@ -179,12 +180,17 @@ def torsional_modes(model: Model, n_modes: int | None = None) -> TorsionalModes:
 
 
 def _damped_roots(system: TorsionalSystem) -> np.ndarray:
-    """Roots of ``det(s² M + s C + K + i K'') = 0`` with Im s > 0 (first-order companion form)."""
+    """Roots of ``det(s² M + s C + K + i K'') = 0`` with Im s > 0 (first-order companion form),
+    and without loss (a real system) also the real roots: an overdamped mode has two, and a real
+    eigen-solution gives them with Im s = 0 exactly, where a complex one scatters them by
+    round-off to either side of the axis."""
     n = system.dofs.size
     Minv = la.inv(system.M)
-    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ (system.K + 1j * system.K_loss), -Minv @ system.C]])
+    lossy = bool(np.any(system.K_loss))
+    K = system.K + 1j * system.K_loss if lossy else system.K
+    A = np.block([[np.zeros((n, n)), np.eye(n)], [-Minv @ K, -Minv @ system.C]])
     s = np.asarray(la.eigvals(A), dtype=complex)
-    return s[s.imag > 0]
+    return s[s.imag > 0] if lossy else s[s.imag >= 0]
 
 
 # ------------------------------------------------------------------------------------------------
