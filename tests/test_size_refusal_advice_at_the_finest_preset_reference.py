@@ -1,0 +1,52 @@
+"""What a problem-size refusal tells a user of the finest resolution preset (flexshaft.assembly.size).
+
+Reference: a consistency rule derived here from the documented presets and the refusal's own
+advice. docs/architecture.md:68 lists the resolution presets up to ``FINE`` ("twice the report's
+density, to check convergence"); docs/limits.md, section 5, says that ``check_problem_size``
+refuses a design above its caps "with the numbers and what to change". The resolution advice a
+refusal can give reads "use coarser grids (the presets fs.SCREENING to fs.FINE)": it is the
+advice for a custom resolution whose grids are finer than ``FINE``'s. A design assessed at
+``FINE`` itself already uses a preset of that range, so telling it to coarsen its grids *to*
+that range would be self-contradictory: its refusal must name what else to change (on a small
+design without imbalance cases or controller states, the mesh ``mesh.shaft_elements``), not
+``resolution``. One spin-up speed more than ``FINE``'s (1,302 instead of 1,301) is finer than
+``FINE`` and must be named ``resolution``.
+
+The design is the validation's Jeffcott rotor (``validation/designs/jeffcott_internal_damping.toml``,
+8 shaft elements, 54 DOFs); ``hard_time`` is lowered to 1 ms so that any estimate (seconds)
+is over it. No model is built; each check takes milliseconds.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tomllib
+
+import pytest
+
+from flexshaft.assembly.size import check_problem_size
+from flexshaft.design import DesignError, design_from_dict
+from flexshaft.resolution import FINE
+from flexshaft.validation.runner import design_text
+
+JEFFCOTT = design_from_dict(tomllib.loads(design_text("jeffcott_internal_damping.toml")))
+
+
+def refused_paths(resolution) -> set[str]:
+    """Field paths of the refusal of the Jeffcott assessment at ``resolution`` over a 1 ms time cap."""
+    with pytest.raises(DesignError) as refusal:
+        check_problem_size(JEFFCOTT, "assess", resolution, hard_time=1e-3)
+    return {problem.path for problem in refusal.value.problems}
+
+
+def test_a_refusal_at_the_fine_preset_names_the_mesh_not_the_resolution():
+    """At exactly FINE's grids the refusal names the mesh and not the resolution."""
+    paths = refused_paths(FINE)
+    assert "mesh.shaft_elements" in paths
+    assert "resolution" not in paths
+
+
+def test_a_refusal_finer_than_fine_names_the_resolution():
+    """One spin-up speed more than FINE's is a custom, finer grid: the refusal names ``resolution``."""
+    finer = dataclasses.replace(FINE, name="finer", spinup_speeds=FINE.spinup_speeds + 1)
+    assert "resolution" in refused_paths(finer)
