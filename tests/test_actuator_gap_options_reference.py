@@ -59,9 +59,11 @@ def test_study_all_hands_the_gap_in_metres(tmp_path, handed, args, metres):
         (["--gap", "0.5"], ["--gap", "0.1 m", "got 0.5", "--gap-mm"]),  # 0.5 mm typed as metres
         (["--gap-mm", "150"], ["--gap-mm", "<= 100", "got 150"]),
         (["--gap", "0.0005", "--gap-mm", "0.5"], ["--gap and --gap-mm", "once"]),
-        (["--gap-mm", "0"], ["--gap-mm", ">= 1e-06"]),
+        (["--gap-mm", "0"], ["--gap-mm", "must be positive", "got 0"]),
+        (["--gap-mm", "5e-324"], ["--gap-mm", "must be positive", "0 m"]),  # 5e-327 m rounds to 0
+        (["--gap", "0"], ["--gap", "must be positive", "got 0"]),
     ],
-    ids=["mm typed as m", "over 100 mm", "both", "zero"],
+    ids=["mm typed as m", "over 100 mm", "both", "zero", "a subnormal millimetre count", "zero metres"],
 )
 def test_a_gap_out_of_range_is_refused_before_any_study(tmp_path, handed, args, words):
     result = _study_all(tmp_path, *args)

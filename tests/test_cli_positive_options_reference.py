@@ -1,7 +1,7 @@
 """Options that take a positive quantity refuse zero and negatives as "must be positive".
 
-README: exit code 2 is "a user error"; the guide's standard: a bad argument "gets a message naming
-the field, the value and what is allowed, before any computation". An option that must be above
+README: exit code 2 is "a user error", and "Bad input is refused before any computation with a
+message naming the field, the value and what is allowed". An option that must be above
 zero (``stability --max-rpm``: the top of a speed sweep; ``--reference-hz``: the speed of a
 reference frequency; ``--gap``: an actuator gap) used to be checked as ``>= 1e-09`` and the
 message said so ("must be >= 1e-09 (got 0)"), a bound the user never chose. The references are
@@ -37,3 +37,14 @@ def test_stability_refuses_a_non_positive_sweep_bound_with_exit_2(option, value)
     assert result.exit_code == 2
     assert f"{option}: must be positive (got {value})" in result.output
     assert "1e-09" not in result.output
+
+
+@pytest.mark.parametrize("value", ["1e-300", "0.000999"])
+def test_stability_refuses_a_reference_frequency_below_its_floor(value):
+    """docs/limits.md: "`flexshaft stability --reference-hz` takes at least 0.001 Hz" (the
+    viscous model's damping η K/ω_ref grows as 1/ω_ref; 1e-200 Hz ended in an internal error,
+    exit 4, in the eigen-solver). Refused with exit 2 before the design is loaded."""
+    result = runner.invoke(app, ["stability", "--damping-model", "viscous", "--reference-hz", value])
+    assert result.exit_code == 2
+    message = " ".join(result.output.split())
+    assert "--reference-hz: at least 0.001 Hz" in message and f"(got {float(value):g})" in message

@@ -2,7 +2,10 @@
 
 docs/optimizer.md: "`--set PATH=VALUE` fixes a field on every candidate, and the default
 search then leaves out what it holds (`--set shaft.layup=...` leaves out the ply angles; a
-gain shared by both active bearings stays searched at the bearing not set). With `--var`, a
+gain shared by both active bearings stays searched at the bearing not set, as its own
+variable `amb_2_kp` when the set gain differs) and takes its bounds from the design with the
+set fields (a bearing set elsewhere bounds its neighbour's station; a set gain widens the
+other bearing's range to it). With `--var`, a
 path both set and searched is refused, however it is written or when the searched one is a
 table holding the set one: the variable would win in every candidate (a key searched inside a
 table set whole refines it)." A candidate's overrides apply the fixed ones first, then the
@@ -62,15 +65,22 @@ def test_a_path_both_fixed_and_searched_is_refused():
 
 def test_a_shared_gain_stays_searched_at_the_bearing_not_set():
     """The tuned design's two active bearings share one K_p variable (docs/optimizer.md: "one
-    variable shared by every active bearing when their gains are equal"); --set of the first's
-    K_p holds that one and leaves the second's searched, under the same name and bounds."""
-    base = tuned_design()
-    default = default_variables(base, None)
+    variable shared by every active bearing when their gains are equal, else one a bearing
+    (`amb_1_kp`, `amb_2_kp`)"); --set of the first's K_p holds that one and leaves the second's
+    searched. The search is built on the design with the set field, whose gains now differ: the
+    second's is its own variable ``amb_2_kp``, its range "widened to the design's own gains"
+    (1e5-1e7 N/m holds 1e6; a set 5e7 widens the top to 5e7)."""
+    from flexshaft.cli.optimize import _default_search
+
+    default = default_variables(tuned_design(), None)
     (shared,) = [v for v in default[0] if set(v.paths) == {"bearings[1].kp", "bearings[2].kp"}]
-    variables, _ = _search_around(default, {"bearings[1].kp": 1e6}, None)
-    (kept,) = [v for v in variables if v.name == shared.name]
-    assert kept.paths == ("bearings[2].kp",)
-    assert (kept.lower, kept.upper, kept.log) == (shared.lower, shared.upper, shared.log)
+    assert (shared.lower, shared.upper, shared.log) == (1e5, 1e7, True)
+    for set_gain, top in ((1e6, 1e7), (5e7, 5e7)):
+        variables, _ = _default_search(tuned_design(), {"bearings[1].kp": set_gain}, None, False)
+        (kept,) = [v for v in variables if "bearings[2].kp" in v.paths]
+        assert kept.paths == ("bearings[2].kp",) and kept.name == "amb_2_kp"
+        assert (kept.lower, kept.upper, kept.log) == (1e5, top, True)
+        assert "bearings[1].kp" not in _paths(variables)
 
 
 def test_a_field_fixed_as_written_another_way_is_refused():

@@ -16,6 +16,7 @@ import typer
 from flexshaft.cli.common import (
     check_finite,
     design_fingerprint,
+    fail,
     guarded,
     load_design_argument,
     plain,
@@ -34,6 +35,11 @@ from flexshaft.cli.options import (
 from flexshaft.cli.progress import StageProgress
 
 __all__ = ["baseline", "check", "modes", "stability", "thermal"]
+
+#: Lowest ``stability --reference-hz`` [Hz]: the viscous model's damping η K/ω_ref grows as
+#: 1/ω_ref, and far below any natural frequency it overflows the eigen-solution (1e-200 Hz ended
+#: in an internal error); 1e-3 Hz runs on the embedded designs.
+LOWEST_REFERENCE_HZ = 1e-3
 
 # The rest of the package is imported inside the functions that need it: the design schema
 # (pydantic, about 0.2 s), the analyses (scipy), the report and figures (matplotlib) and
@@ -198,13 +204,17 @@ def stability(
 
     check_finite("--max-rpm", max_rpm, maximum=MAX_SPEED_RPM, positive=True)
     check_finite("--reference-hz", reference_hz, positive=True)
+    if reference_hz is not None and reference_hz < LOWEST_REFERENCE_HZ:
+        fail(
+            f"--reference-hz: at least {LOWEST_REFERENCE_HZ:g} Hz: the viscous model's damping η K/ω_ref grows as "
+            f"1/ω_ref and overflows the eigen-solution far below any natural frequency (got {reference_hz:g})"
+        )
     loaded = load_design_argument(design)
     from flexshaft.cli.bounds import check_stability
 
     check_stability(loaded.design, n_speeds, n_modes, 4 if compare_thesis else 1)  # before computing
     from flexshaft.analyses.stability import stability as stability_analysis
     from flexshaft.assembly import build_model
-    from flexshaft.cli.common import fail
     from flexshaft.design import DesignError
     from flexshaft.resolution import REPORT
     from flexshaft.units import hz_to_rpm, rad_s_to_rpm, rpm_to_rad_s

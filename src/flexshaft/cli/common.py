@@ -377,8 +377,11 @@ def actuator_gap(gap: float | None, gap_mm: float | None) -> float | None:
     if gap is not None and gap_mm is not None:
         fail(f"--gap and --gap-mm: give the actuator gap once (got --gap {gap:g} m and --gap-mm {gap_mm:g} mm)")
     if gap_mm is not None:
-        check_finite("--gap-mm", gap_mm, 1e-6, m_to_mm(LARGEST_GAP))
-        return mm_to_m(gap_mm)
+        check_finite("--gap-mm", gap_mm, maximum=m_to_mm(LARGEST_GAP), positive=True)
+        metres = mm_to_m(gap_mm)
+        if not metres > 0.0:  # a subnormal count of millimetres is no gap in metres
+            fail(f"--gap-mm: must be positive (got {gap_mm:g}, 0 m)")
+        return metres
     check_finite("--gap", gap, positive=True)
     if gap is not None and gap > LARGEST_GAP:
         fail(
