@@ -135,7 +135,10 @@ class TorsionalModes:
     natural_frequencies : ndarray
         Undamped natural frequencies [Hz] (0 for a free rigid-body twist).
     eigenvalues : ndarray
-        Damped eigenvalues s = −ζω_n + iω_d [rad/s] (hysteretic loss and viscous damping).
+        Damped eigenvalues s = −ζω_n + iω_d [rad/s] (hysteretic loss and viscous damping): each
+        undamped mode's nearest root not taken by a lower mode. An overdamped mode has a real
+        root (without loss the one nearest iω_n of those left; with loss its fast root, the
+        one with Im s > 0); a rigid-body twist has 0.
     shapes : ndarray
         Undamped mode shapes on the full DOF vector (ndof, n_modes) [rad], mass-normalised.
     """
@@ -166,12 +169,17 @@ def torsional_modes(model: Model, n_modes: int | None = None) -> TorsionalModes:
     s = _damped_roots(system)
     matched = np.empty(n, dtype=complex)
     free = np.ones(s.size, dtype=bool)
+    origin = np.sqrt(_RIGID * w2.max())  # a rigid twist's root: 0 to round-off
     for k in range(n):  # each undamped mode takes the nearest damped root not yet taken
-        if omega[k] == 0.0:
+        if omega[k] == 0.0:  # a rigid-body twist takes the root at the origin, if one is left
+            near = np.flatnonzero(free & (np.abs(s) <= origin))
+            if near.size:
+                free[near[np.argmin(np.abs(s[near]))]] = False
             matched[k] = 0.0
             continue
         distance = np.where(free, np.abs(s - 1j * omega[k]), np.inf)
         j = int(np.argmin(distance))
+        assert np.isfinite(distance[j]), "fewer damped roots than modes"  # n roots at least (_damped_roots)
         matched[k], free[j] = s[j], False
     shapes = np.zeros((model.dofs.size, n))
     shapes[system.dofs] = phi[:, :n]
