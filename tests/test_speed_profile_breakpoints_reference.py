@@ -29,3 +29,15 @@ def test_the_largest_speed_of_a_run_down_and_of_a_rise_and_fall():
     the table (0, 0) → (1, 250) → (3, 40) at its breakpoint t = 1 s (read off the tables)."""
     assert SpeedProfile.constant_acceleration(300.0, 100.0, 50.0).max_speed == 300.0
     assert SpeedProfile.table([0.0, 1.0, 3.0], [0.0, 250.0, 40.0]).max_speed == 250.0
+
+
+def test_a_dwell_below_the_ramps_round_off_adds_no_breakpoint():
+    """``runup --dwell 1e-300 --duration 1`` ended in an internal error (exit 4): the table
+    [0, 1, 1 + 1e-300] is [0, 1, 1] in floating point, which the table refuses as not
+    increasing. Such a dwell adds no time (1 + 1e-300 == 1 exactly), so the profile is the
+    ramp alone, 0 -> 100 rad/s in 1 s; a dwell of 0.5 s still adds its breakpoint (1.5 s)."""
+    for dwell in (1e-300, 5e-324):
+        p = SpeedProfile.constant_acceleration(0.0, 100.0, 100.0, dwell=dwell)
+        assert p.duration == 1.0 and list(p.times) == [0.0, 1.0]
+    p = SpeedProfile.constant_acceleration(0.0, 100.0, 100.0, dwell=0.5)
+    assert list(p.times) == [0.0, 1.0, 1.5] and list(p.speeds) == [0.0, 100.0, 100.0]

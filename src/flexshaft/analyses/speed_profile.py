@@ -60,7 +60,7 @@ class SpeedProfile:
         if ramp <= 0:
             raise ValueError(f"start and stop speeds are equal ({start!r} rad/s): nothing to ramp")
         times, speeds = [0.0, ramp], [start, stop]
-        if dwell > 0:
+        if ramp + dwell > ramp:  # a dwell below the ramp's round-off (1e-300 s) adds no time
             times.append(ramp + dwell)
             speeds.append(stop)
         return cls.table(times, speeds)
