@@ -3,34 +3,42 @@ Jeffcott rotor of tests/rotors.py (a disk at midspan of a uniform tube on rigid 
 damping: the disk does not tilt in the first mode, so both whirls stay at ω_n = √(k/m) at
 every speed and cross the 1× line ω = Ω at Ω = ω_n).
 
-* **Speeds strictly increasing** (:func:`flexshaft.analyses.campbell.campbell`: "Ω [rad/s],
-  increasing"). The tracking numbers the modes at the first speed and continues each curve
-  from the earlier speeds (:func:`~flexshaft.analyses.continuation.predicted_start`
-  extrapolates over the speed steps): a decreasing list would number the modes at its highest
-  speed, and a repeated speed is a step of zero width (the extrapolation divides by it). Both
-  are refused as input (:class:`~flexshaft.analyses.guards.RefusedInputError`) before any
-  solve; the increasing list of the same speeds is accepted.
-* **The reported tolerance** (:class:`~flexshaft.analyses.campbell.Campbell` docstring:
-  ``tolerance`` "The accuracy the basis was chosen for (None: a basis size given by the
-  caller)"; docs/model.md: "A ``basis_size`` given by the caller is used as it is"): an
-  explicit ``basis_size`` reports no tolerance, neither on the result nor as the dataset's
-  ``eigenvalue_tolerance`` attribute; the default basis reports the tolerance asked for.
+* **Speeds strictly increasing** (API contract: :func:`flexshaft.analyses.campbell.campbell`
+  docstring, ``speeds``: "Ω [rad/s], increasing"). The tracking numbers the modes at the first
+  speed and continues each curve from the earlier speeds
+  (:func:`~flexshaft.analyses.continuation.predicted_start` extrapolates over the speed
+  steps): a decreasing list would number the modes at its highest speed, and a repeated speed
+  is a step of zero width (the extrapolation divides by it). Both are refused as input
+  (:class:`~flexshaft.analyses.guards.RefusedInputError`) before any solve; the increasing
+  list of the same speeds is accepted.
+* **The reported tolerance** (API contract: ``Campbell.tolerance`` docstring,
+  :class:`~flexshaft.analyses.campbell.Campbell`: "The accuracy the basis was chosen for
+  (None: a basis size given by the caller)"; docs/model.md: "A ``basis_size`` given by the
+  caller is used as it is"): an explicit ``basis_size`` reports no tolerance, neither on the
+  result nor as the dataset's ``eigenvalue_tolerance`` attribute; the default basis reports
+  the tolerance asked for.
 * **The repr's top speed in rpm**: the sweep to 1.5 ω_n rad/s ends at 1.5 ω_n · 60/2π rpm
   (4328 rpm for ω_n = 302.14 rad/s), printed to the rpm ("to {top:.0f} rpm").
-* **The notebook's critical-speed table numbers modes as the mode table above it** (README.md,
-  Output: "Modes are numbered from 1 (the Python API counts from 0)"): each crossing at
-  Ω = ω_n (2885 rpm, closed form above) names a mode number of the summary table whose whirl
-  is the crossing's. Which of the degenerate pair is numbered 1 is not asserted (the
-  eigen-solver's order of a degenerate pair), only that the two tables agree.
+* **The notebook's critical-speed table numbers modes as the mode table above it** (API
+  contract: ``Campbell.to_dataframe`` docstring, the critical speeds' "tracked mode (numbered
+  from 1)", and ``Campbell.mode_summary`` docstring, "numbered from 1 as the modes at the
+  first speed"; README.md, Output, as supporting text: "Modes are numbered from 1 (the Python
+  API counts from 0)"): each crossing at Ω = ω_n (2885 rpm, closed form above) names a mode
+  number of the summary table whose whirl is the crossing's. Which of the degenerate pair is
+  numbered 1 is not asserted (the eigen-solver's order of a degenerate pair), only that the
+  two tables agree.
 
-Tolerances: the crossing speed to 1e-6 relative (the tube's own mass, density 1e-2, moves
-ω_n by ~1e-8 relative; the table prints whole rpm, so the value is compared to ±1 rpm);
+Tolerances: the crossing speed to ±1 rpm, 3.5e-4 relative at 2885 rpm (the table prints whole
+rpm). The closed form neglects the tube's own mass (tests/rotors.py: density 0.1 kg/m³, the
+tube 3.5e-6 of the disk mass), which lowers ω_n by about ½ · (17/35) · 3.5e-6 ≈ 9e-7 relative
+(Rayleigh: 17/35 of a pinned-pinned beam's mass moves with its midspan), far inside ±1 rpm;
 the rest are exact (a refusal, None, an integer printed by the repr).
 
 Written for the mutations h88a-campbell-speeds-order-unchecked,
 h88a-campbell-tolerance-with-explicit-basis, h88a-campbell-repr-top-speed-rad-s and
-h88a-campbell-html-critical-mode-zero-based of scripts/mutations.toml. CPU: four 3-speed
-sweeps of a 2-mode Jeffcott rotor, about 0.1 s.
+h88a-campbell-html-critical-mode-zero-based of scripts/mutations.toml. CPU: 3 tests (4
+cases), 3- and 4-speed sweeps of a 2-mode Jeffcott rotor, about 0.1 s, plus the xarray import
+of the first ``to_dataset`` call (about 0.4 s of CPU, once per session).
 """
 
 from __future__ import annotations

@@ -21,10 +21,11 @@ of 3 or 5 on the real part) and ``k_i K_d s = 6e4i N/m``. The entries are sums a
 a few exact binary numbers with 0/1 rows (no LAPACK), so the relative tolerance 1e-12 only
 covers the rounding of ``s K_d``; a lost ``k_s`` moves the real part by 200 %.
 
-``current_gain``: the docstring's ``k_i [N/A]`` converts current to force; a bearing with
-``k_i = 0`` makes no force for any current (a dead bearing, its law silently zero), so the
-Actuator must refuse ``k_i <= 0`` (the design's magnet checks refuse it too, "k_i in (0, 1e6]
-N/A", :func:`flexshaft.assembly.checks.check_magnet`), while the default magnet stiffness
+``current_gain`` (API contract: the Actuator's own check, "a finite number > 0 N/A", and
+:func:`flexshaft.assembly.checks.check_magnet`'s docstring, "k_i in (0, 1e6] N/A", near line
+174 of src/flexshaft/assembly/checks.py): the docstring's ``k_i [N/A]`` converts current to
+force, and a bearing with ``k_i = 0`` makes no force for any current (a dead bearing, its law
+silently zero), so the Actuator must refuse ``k_i <= 0``, while the default magnet stiffness
 ``k_s = 0`` is allowed.
 """
 

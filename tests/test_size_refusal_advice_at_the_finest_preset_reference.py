@@ -1,16 +1,17 @@
 """What a problem-size refusal tells a user of the finest resolution preset (flexshaft.assembly.size).
 
-Reference: a consistency rule derived here from the documented presets and the refusal's own
-advice. docs/architecture.md:68 lists the resolution presets up to ``FINE`` ("twice the report's
-density, to check convergence"); docs/limits.md, section 5, says that ``check_problem_size``
-refuses a design above its caps "with the numbers and what to change". The resolution advice a
-refusal can give reads "use coarser grids (the presets fs.SCREENING to fs.FINE)": it is the
-advice for a custom resolution whose grids are finer than ``FINE``'s. A design assessed at
-``FINE`` itself already uses a preset of that range, so telling it to coarsen its grids *to*
-that range would be self-contradictory: its refusal must name what else to change (on a small
-design without imbalance cases or controller states, the mesh ``mesh.shaft_elements``), not
-``resolution``. One spin-up speed more than ``FINE``'s (1,302 instead of 1,301) is finer than
-``FINE`` and must be named ``resolution``.
+Reference (API contract: the code's own rule). ``_finer_than_fine``'s docstring
+(src/flexshaft/assembly/size.py, near line 399): "(``"resolution"``, advice) when a grid of
+``resolution`` is finer than :data:`FINE`'s: a refusal then names the resolution", and the
+advice it gives (near line 407): "use coarser grids (the presets fs.SCREENING to fs.FINE)". So a
+design assessed at ``FINE`` itself uses a preset of that range and no grid finer than
+``FINE``'s: its refusal must name what else to change (on a small design without imbalance
+cases or controller states, the mesh ``mesh.shaft_elements``), not ``resolution``; telling it
+to coarsen its grids *to* that range would contradict the advice's own words. One spin-up speed
+more than ``FINE``'s (1,302 instead of 1,301) is finer than ``FINE`` and must be named
+``resolution``. Context only: docs/architecture.md lists the resolution presets up to ``FINE``
+("twice the report's density, to check convergence"), and docs/limits.md, section 5, says that
+``check_problem_size`` refuses a design above its caps "with the numbers and what to change".
 
 The design is the validation's Jeffcott rotor (``validation/designs/jeffcott_internal_damping.toml``,
 8 shaft elements, 54 DOFs); ``hard_time`` is lowered to 1 ms so that any estimate (seconds)

@@ -16,20 +16,32 @@ own measure is that of one plane (tests/test_resonance_sensitivity_reference.py)
 
     κ_j(Ω) = Ω |−2mΩ + ic| / |k_j − mΩ² + icΩ|,   ≈ 1/ζ_j at Ω = ω_j = √(k_j/m).
 
-At ω_v the v case gives κ = 1/ζ_v = 3.3e4 (above 1e4) and the w case only 6.5 (the w plane is
-far from its critical there); at ω_w the other way round (4.0e4 against 4.5). So each resonant
-speed must be solved in full although one of the two cases hardly responds there; a measure taken
-from the quieter case (or a mean) would leave ω_v to the reduced model. ω_v is not one of the 13
-initial snapshots (ω_w is), and the scan is accepted without a greedy round (the planes' shapes
-do not change with speed beyond the tube's 3.5e-6 mass ratio, tolerance 1e-6), so only the κ_ω
-rule can put ω_v among the full solves. The closed-form κ values are a margin of 3 above the
-threshold and three decades of the threshold below in the quiet case, so the tube's 3.5e-6
-cannot move either across it.
+At ω_v the v case gives κ = 1/ζ_v = 3.3e4 (above 1e4) and the w case only 4.5 (the w plane is
+far from its critical there: 2k/k_s = 2/0.44 = 4.55); at ω_w the other way round (4.0e4
+against 6.5 for the v case: 2(k + k_s)/k_s = 6.55). So each resonant speed must be solved in
+full although one of the two cases hardly responds there; a measure taken from the quieter case
+(or a mean) would leave ω_v to the reduced model. ω_v is not one of the 13 initial snapshots
+(ω_w is; the snapshot rule of src/flexshaft/analyses/sweep_projection.py, step 1 of its module
+docstring and the first full solve of ``_greedy``, near line 382: 13 speeds evenly spread over
+the scan's indices, the ends included), and the scan is accepted without a greedy round (the
+planes' shapes do not change with speed beyond the tube's 3.5e-6 mass ratio, tolerance 1e-6),
+so only the κ_ω rule can put ω_v among the full solves. The closed-form κ values are a margin
+of 3 above the threshold and three decades of the threshold below in the quiet case, so the
+tube's 3.5e-6 cannot move either across it.
+
+What is asserted of the κ_ω rule is the documented flag :attr:`SweepResult.full
+<flexshaft.analyses.sweep_projection.SweepResult>` ("The speeds solved in full") at both
+criticals, and only that: the snapshots span both plane shapes, so a sweep that leaves ω_v to
+the reduced model gives the same values (measured: within 7e-10 of the dense solve either
+way), and at ζ = 3e-5 neither sweep raises a ResonanceWarning.
 
 The values are checked too, against a dense LAPACK solve of the full
 ``(K − Ω²M + iΩ(ΩG + C)) q = Ω² Q₁`` (at these resonances the tube's mass, amplified by 1/ζ, moves
-the closed form itself by ~3e-2), within 1e-7 of each case's peak as tests/test_spinup_projection.py
-holds the sweep to the all-full one. CPU: ~10 ms for the sweep, ~50 ms for the dense check.
+the closed form itself by ~3e-2), within the requested tolerance 1e-6 of each case's peak (the
+:func:`~flexshaft.analyses.sweep_projection.imbalance_sweep` docstring: "Largest estimated
+error of the checked outputs, relative to each one's peak over the scan"; measured 3.5e-10 and
+6.8e-10, the reduced model on a basis spanning both planes being exact up to round-off).
+CPU: ~10 ms for the sweep, ~50 ms for the dense check.
 """
 
 from __future__ import annotations
@@ -72,10 +84,12 @@ def test_a_critical_excited_by_one_load_case_only_is_solved_in_full():
 
     sweep = imbalance_sweep(model, speeds, Q, tolerance=1e-6)
 
+    # the sweep's initial snapshots: src/flexshaft/analyses/sweep_projection.py, _greedy's first
+    # solve_full (near line 382), _INITIAL_SNAPSHOTS = 13 indices evenly spread, ends included
     initial = np.unique(np.linspace(0, speeds.size - 1, 13).round().astype(int))
     assert at[0] not in initial  # only the κ_ω rule can solve ω_v in full
     assert sweep.rounds == 0 and sweep.basis_size > 0
-    assert sweep.full[at].all()
+    assert sweep.full[at].all()  # the catch of the κ_ω rule: the values agree either way
 
     free = model.dofs.free
     M, K, G, C = (restrict(A.tocsr(), free).toarray() for A in (model.M, model.K, model.G, model.C))
@@ -84,4 +98,4 @@ def test_a_critical_excited_by_one_load_case_only_is_solved_in_full():
         direct = np.column_stack(
             [la.solve(K - s * s * M + 1j * s * (s * G + C), s * s * Q[free, case]) for s in speeds]
         )
-        assert np.abs(q[:, case, :] - direct).max() <= 1e-7 * np.abs(direct).max()
+        assert np.abs(q[:, case, :] - direct).max() <= 1e-6 * np.abs(direct).max()  # the tolerance asked for
