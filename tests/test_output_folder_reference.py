@@ -124,6 +124,23 @@ def test_a_users_file_at_out_is_refused(tmp_path: Path, capsys) -> None:
     assert _run(empty, MINE, str(tmp_path / "my.toml"), writes=["results.json"]) == 0  # an empty folder is fine
 
 
+def test_a_link_at_out_is_refused_saying_what_it_points_to(tmp_path: Path, capsys) -> None:
+    """A symbolic link to the user's file at ``--out`` is refused and the file kept (README: "The
+    folder is checked before anything is computed: a file, ... is refused (exit 2)"; "no write
+    can land outside the folder"); the message says the link points to a file (it used to say
+    "a missing target" for a link to an existing file), and a dangling link is a link to a
+    missing target, whose target is not created."""
+    target = tmp_path / "notes.txt"
+    target.write_text("keep")
+    link, dangling = tmp_path / "link", tmp_path / "dangling"
+    link.symlink_to(target)
+    dangling.symlink_to(tmp_path / "nowhere")
+    assert _run(link, MINE, str(tmp_path / "my.toml")) == USER_ERROR
+    assert "symbolic link to a file, not a folder" in capsys.readouterr().err and target.read_text() == "keep"
+    assert _run(dangling, MINE, str(tmp_path / "my.toml")) == USER_ERROR
+    assert "symbolic link to a missing target" in capsys.readouterr().err and not (tmp_path / "nowhere").exists()
+
+
 def test_a_folder_of_another_command_is_refused(files: dict, capsys) -> None:
     out = files["out"]
     out.mkdir()

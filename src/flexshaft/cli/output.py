@@ -175,7 +175,8 @@ def prepare_output_folder(
     previous: list[str] = []  # entries an earlier run of flexshaft wrote
     replace: list[str] = []  # ... of which the results of an earlier version of the design
     if folder.is_symlink() and not folder.is_dir():
-        fail(f"{option}: {folder} is a symbolic link to a missing target; give a folder path")
+        target = "a file, not a folder" if folder.exists() else "a missing target"
+        fail(f"{option}: {folder} is a symbolic link to {target}; give a folder path")
     if folder.exists() and not folder.is_dir():
         fail(f"{option}: {folder} is a file, not a folder; give a folder path (it is created if missing)")
     if folder.is_dir():
