@@ -48,3 +48,21 @@ def test_stability_refuses_a_reference_frequency_below_its_floor(value):
     assert result.exit_code == 2
     message = " ".join(result.output.split())
     assert "--reference-hz: at least 0.001 Hz" in message and f"(got {float(value):g})" in message
+
+
+def test_the_stability_api_holds_the_same_floor():
+    """docs/limits.md: the floor holds in the Python API as well: ``stability(..., "viscous",
+    reference_frequency)`` refuses ω_ref below 2π·0.001 rad/s with a RefusedInputError naming
+    the argument (at 1e-300 rad/s LAPACK's eigen-solver failed with "illegal value", an error
+    that named nothing). The tests' Jeffcott rotor (tests/rotors.py), one speed: milliseconds."""
+    import math
+
+    from rotors import jeffcott
+
+    from flexshaft.analyses.guards import RefusedInputError
+    from flexshaft.analyses.stability import stability
+
+    model = jeffcott(0.01, 10.0)
+    for omega_ref in (1e-300, 2 * math.pi * 0.000999):
+        with pytest.raises(RefusedInputError, match=r"^reference_frequency must be >= 0\.00628319 rad/s"):
+            stability(model, [100.0], 2, "viscous", omega_ref)

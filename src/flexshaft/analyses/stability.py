@@ -74,7 +74,14 @@ from flexshaft.analyses.eigen_error import (
     tracked_to_accuracy,
     with_error_estimate,
 )
-from flexshaft.analyses.guards import check_count, check_finite_array, check_model, check_speed, require_finite
+from flexshaft.analyses.guards import (
+    RefusedInputError,
+    check_count,
+    check_finite_array,
+    check_model,
+    check_speed,
+    require_finite,
+)
 from flexshaft.analyses.loss import viscous_equivalent
 from flexshaft.analyses.results import ResultMixin, html_table
 from flexshaft.assembly.model import Model
@@ -83,11 +90,25 @@ from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.stability import log_decrement_figure, real_parts_figure
 from flexshaft.units import rad_s_to_rpm
 
-__all__ = ["DampingModel", "STABILITY_TOLERANCE", "StabilityResult", "rotation_generator", "stability", "onset_speed"]
+__all__ = [
+    "DampingModel",
+    "LOWEST_REFERENCE_FREQUENCY",
+    "STABILITY_TOLERANCE",
+    "StabilityResult",
+    "rotation_generator",
+    "stability",
+    "onset_speed",
+]
 
 DampingModel = Literal["hysteretic", "viscous"]
 #: A mode is unstable when its damping ratio ζ = −Re(s)/|s| is below −STABILITY_TOLERANCE.
 STABILITY_TOLERANCE = 1e-9
+
+#: Lowest reference frequency ω_ref of the viscous model [rad/s] (0.001 Hz): its damping
+#: η K/ω_ref grows as 1/ω_ref, and far below any natural frequency it overflows the
+#: eigen-solution (1e-300 rad/s ended in LAPACK's "illegal value"); 0.001 Hz runs on the
+#: embedded designs. ``flexshaft stability --reference-hz`` holds the same floor in Hz.
+LOWEST_REFERENCE_FREQUENCY = 2.0 * np.pi * 1e-3
 
 
 def rotation_generator(model: Model):
@@ -320,6 +341,12 @@ def stability(
         raise ValueError(f"damping_model must be 'hysteretic' or 'viscous', got {damping_model!r}")
     if reference_frequency is not None:
         reference_frequency = check_speed(reference_frequency, "reference_frequency", positive=True)
+        if reference_frequency < LOWEST_REFERENCE_FREQUENCY:
+            raise RefusedInputError(
+                f"reference_frequency must be >= {LOWEST_REFERENCE_FREQUENCY:.6g} rad/s (0.001 Hz): the viscous "
+                f"model's damping η K/ω_ref grows as 1/ω_ref and overflows far below any natural frequency "
+                f"(got {reference_frequency!r})"
+            )
     if basis_size is not None:
         basis_size = check_count(basis_size, "basis_size")
     tolerance = check_tolerance(tolerance)
