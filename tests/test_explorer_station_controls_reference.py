@@ -1,13 +1,15 @@
-"""Which bearings the explorer offers to move: the hangers and the active bearings, never a
-damper or the gearbox's bearing.
+"""Which bearings the explorer offers to move: the hangers, the dampers and the active
+bearings, never the gearbox's bearing.
 
 References: docs/explorer.md, "Controls for the variables that move a verdict: ... each active
-bearing's station [m], K_p [N/m] and K_d [N s/m], each hanger's station [m]"; the bearing roles
-as the packaged current-driveline design file states them ("role = "hanger" (a shaft support),
-"damper" (spring and viscous damper) or "gearbox" (the bearing of a gearbox that ends the
-driveline)"), read here from the file itself with ``tomllib``, not through the schema. The
-bearing indices and names below are the file's, counted by hand: hanger_1 to hanger_4 are
-bearings 0 to 3, damper_3 is 4, gearbox_input is 5.
+bearing's station [m], K_p [N/m] and K_d [N s/m], each hanger's and each damper's station [m]
+(a gearbox's bearing stays with its gearbox)"; the bearing roles as the packaged
+current-driveline design file states them ("role = "hanger" (a shaft support), "damper" (spring
+and viscous damper) or "gearbox" (the bearing of a gearbox that ends the driveline)"), read here
+from the file itself with ``tomllib``, not through the schema. The bearing indices and names
+below are the file's, counted by hand: hanger_1 to hanger_4 are bearings 0 to 3, damper_3 is 4,
+gearbox_input is 5. (The damper had no control before: the file places it at the antinode of
+the tube's first bending mode, a station an engineer moves.)
 """
 
 from __future__ import annotations
@@ -28,10 +30,10 @@ def _station_keys(design) -> set[str]:
     return {c.key for c in design_controls(design) if c.key.startswith("bearings[") and c.key.endswith("].x")}
 
 
-def test_the_current_driveline_offers_its_four_hangers_only() -> None:
+def test_the_current_driveline_offers_its_hangers_and_damper_not_its_gearbox() -> None:
     """current_driveline.toml: six contact bearings, four with role "hanger" (indices 0-3), a
-    damper (4) and the gearbox input (5). The page offers the four hangers' stations, each
-    labelled with its hanger's name, and refuses a station key of the damper or the gearbox as
+    damper (4) and the gearbox input (5). The page offers the four hangers' and the damper's
+    stations, each labelled with its bearing's name, and refuses the gearbox's station key as
     no such control."""
     text = resources.files("flexshaft.design").joinpath("current_driveline.toml").read_text(encoding="utf-8")
     bearings = tomllib.loads(text)["bearings"]
@@ -39,21 +41,23 @@ def test_the_current_driveline_offers_its_four_hangers_only() -> None:
     assert hangers == [0, 1, 2, 3]  # the file as read by hand
     assert [bearings[i]["role"] for i in (4, 5)] == ["damper", "gearbox"]
     design = loads_design(text, source="current_driveline.toml")
-    assert _station_keys(design) == {f"bearings[{i}].x" for i in hangers}
-    labels = {c.key: c.label for c in design_controls(design)}
-    for i in hangers:
-        assert labels[f"bearings[{i}].x"] == f"{bearings[i]['name']} station x"
-    for i in (4, 5):
-        with pytest.raises(DesignError, match="no such control"):
-            control_overrides(design, {f"bearings[{i}].x": bearings[i]["x"] + 0.1})
+    assert _station_keys(design) == {f"bearings[{i}].x" for i in (*hangers, 4)}
+    controls = {c.key: c for c in design_controls(design)}
+    for i in (*hangers, 4):
+        assert controls[f"bearings[{i}].x"].label == f"{bearings[i]['name']} station x"
+    moved = control_overrides(design, {"bearings[4].x": bearings[4]["x"] + 0.1})
+    assert moved["bearings[4].x"] == pytest.approx(bearings[4]["x"] + 0.1, rel=1e-12)  # metres, as the file
+    with pytest.raises(DesignError, match="no such control"):
+        control_overrides(design, {"bearings[5].x": bearings[5]["x"] + 0.1})
 
 
-@pytest.mark.parametrize("role", ["damper", "gearbox"])
-def test_a_support_given_another_role_loses_its_station_control(role) -> None:
+@pytest.mark.parametrize(("role", "kept"), [("damper", True), ("gearbox", False)])
+def test_a_support_given_another_role_keeps_or_loses_its_station_control(role, kept) -> None:
     """The tuned design: hanger_forward (0) and hanger_aft (3) are hangers, amb_1 (1) and
-    amb_2 (2) active. Giving hanger_aft the role ``role`` removes its station control and
-    nothing else: the stations left are bearings 0, 1 and 2."""
+    amb_2 (2) active. Giving hanger_aft the role ``damper`` keeps its station control; the role
+    ``gearbox`` removes it and nothing else."""
     tuned = tuned_design()
     assert _station_keys(tuned) == {"bearings[0].x", "bearings[1].x", "bearings[2].x", "bearings[3].x"}
     design = with_overrides(tuned, {"bearings[3].role": role})
-    assert _station_keys(design) == {"bearings[0].x", "bearings[1].x", "bearings[2].x"}
+    expected = {"bearings[0].x", "bearings[1].x", "bearings[2].x"} | ({"bearings[3].x"} if kept else set())
+    assert _station_keys(design) == expected

@@ -2,7 +2,7 @@
 
 :func:`design_controls` lists, for a design, the variables that move a driveline's verdict: the
 layup's ply-angle pairs, the wall thickness and outer diameter, each active bearing's station and
-gains (K_p, K_d), each hanger's station, the balance grade and the operating speed. Each
+gains (K_p, K_d), each hanger's and damper's station, the balance grade and the operating speed. Each
 :class:`Control` writes one or more design paths (:func:`control_overrides`); its bounds are the
 schema's (``minimum``/``maximum`` of the design's JSON Schema,
 :func:`flexshaft.design.reference.design_json_schema`), converted to the display unit. Every
@@ -304,9 +304,10 @@ def design_controls(design: Design) -> list[Control]:
                 controls.append(
                     _bounded(f"{path}.kd", "K_d", group, b, "kd", f"{path}.kd", b.kd, unit="N s/m", step=10)
                 )
-        elif getattr(b, "role", "hanger") == "hanger":
+        elif getattr(b, "role", "hanger") in ("hanger", "damper"):  # a gearbox's bearing stays with its gearbox
+            group = "hangers" if getattr(b, "role", "hanger") == "hanger" else "dampers"
             controls.append(
-                _bounded(f"{path}.x", f"{b.name} station x", "hangers", b, "x", f"{path}.x", b.x, unit="m", step=0.05)
+                _bounded(f"{path}.x", f"{b.name} station x", group, b, "x", f"{path}.x", b.x, unit="m", step=0.05)
             )
     operating = design.operating
     if operating.speed_rpm is not None:
