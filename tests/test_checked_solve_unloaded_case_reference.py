@@ -4,8 +4,10 @@ Reference (closed form, derived here): a regular matrix maps only the zero vecto
 the solution of ``A x = 0`` is ``x = 0`` exactly, and LU forward/back substitution of a zero
 right-hand side gives exact zeros (every operation is a product with or a sum of zeros), as does
 every refinement correction (the residual ``0 − A·0`` is zero). The relative correction
-``|dx|/|x|`` of that column is then 0/0; the function's contract (its docstring) is a solution
-for every regular matrix, so the column must come back as zeros, not as a refusal.
+``|dx|/|x|`` of that column is then 0/0. API contract (docstring of
+:func:`~flexshaft.analyses.refinement.checked_solve`): "Solution of ``A x = b`` (columns), or
+None when ``A`` is singular to working precision." The chain is regular, so the column must
+come back as zeros, not as a refusal.
 
 The matrix is the spring chain of tests/test_checked_solve_singular_reference.py held at its
 first mass (springs k = 1/3, 1/7, 1/11, κ ≈ 28): a unit pull −1 at the free end carries the force

@@ -52,8 +52,10 @@ def _result() -> MonteCarloResult:
 
 
 def _bound_marker(panel) -> tuple[float, float]:
-    (mark,) = [ln for ln in panel.get_lines() if ln.get_marker() == "v"]
-    return float(mark.get_xdata()[0]), float(mark.get_ydata()[0])
+    """(limit, bound) of the panel's one ▼, the 95 % upper bound drawn at the limit."""
+    marks = [ln for ln in panel.get_lines() if ln.get_marker() == "v"]
+    assert len(marks) == 1, "no ▼ (95 % upper bound) at the limit"
+    return float(marks[0].get_xdata()[0]), float(marks[0].get_ydata()[0])
 
 
 def test_each_limit_carries_its_exact_upper_bound():

@@ -25,11 +25,13 @@ References (closed forms; docs/transient.md "Monte-Carlo imbalance"):
 
 Numbers: steel tube D = 50 mm, wall 5 mm, L = 2 m: EI = 3.80e4 N m², ρA = 5.55 kg/m,
 ω₁ = (π/L)² √(EI/ρA) = 204 rad/s; operating speed 100 rpm = 10.5 rad/s, so
-(Ω/ω₁)² = 2.6e-3. Other deviations from the closed form: Timoshenko shear and rotary inertia,
-(r_g/L)²(1 + E/κG) ≈ 2e-4 with r_g = 16 mm; the bearings' compliance 1e-11 m/N against the
-tube's 4e-6 m/N at mid-span; the gyroscopic coupling at 10 rad/s, below the amplification term;
-the complex64 storage of the unit responses, 6e-8. Tolerance 1 % relative: four times the
-largest of them (measured 0.26 %, the dynamic amplification). A sampler that solved its unit
+(Ω/ω₁)² = 2.6e-3. The elements are Euler–Bernoulli (docs/model.md: shear off by default), and
+their rotary inertia does not enter the statics. Other deviations from the closed form: the
+bearings' compliance 1e-11 m/N against the tube's 4e-6 m/N at mid-span (measured 1.2e-6 to
+1.1e-5 of the peak, against the same tube on stiffer bearings); the gyroscopic coupling at
+10 rad/s, below the amplification term; the complex64 storage of the unit responses, 6e-8.
+Tolerance 1 % relative: four times the largest of them, the dynamic amplification
+(Ω/ω₁)² = 2.6e-3 (measured 0.26 %). A sampler that solved its unit
 responses at mid-bay whatever position was drawn is off by the ratio of the two static
 deflections (seed 0: a draw at 0.04 of the bay deflects the tube 8.0 times less than the same
 unbalance at mid-bay, one at 0.80 1.7 times less); an eccentricity written in another unit than

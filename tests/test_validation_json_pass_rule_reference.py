@@ -1,20 +1,22 @@
 """The JSON report of ``flexshaft validate`` states each case's pass rule in the case's own terms.
 
-References (the documented rule, and counts worked by hand):
+References (an API contract, a documented rule, and counts worked by hand):
 
-* The pass rule, :class:`flexshaft.validation.case_types.Case` ("tolerance: largest accepted
-  relative difference |flexshaft/published − 1| of every value") and docs/validation.md ("The
-  command exits 0 when every case lies within its tolerance"): a case passes iff
-  |d| <= tolerance for each of its values, d = computed/published − 1, both fractions. The JSON
-  report carries d (``relative_difference``) and the tolerance side by side, so a reader of the
-  JSON must be able to apply that rule to them and get the report's own verdict. Worked here:
-  published 100, computed 100.5 → d = 5e-3; at a tolerance of 1e-3 the case fails (5e-3 > 1e-3),
-  at 1e-2 it passes. A tolerance given in per cent (0.1 for 1e-3) would let the failing case
-  pass the rule read from the JSON (5e-3 <= 0.1).
-* The number of sources behind a run (:attr:`ValidationReport.sources`: "the keys of the sources
-  the cases cite"): three cases citing "iso21940", "cengel", "iso21940" cite two sources, not the
-  eleven flexshaft knows; a ``flexshaft validate --case ...`` run on a subset must not claim the
-  whole bibliography.
+* The pass rule. API contract (docstring of :class:`flexshaft.validation.case_types.Case`,
+  ``tolerance``: "Largest accepted relative difference |flexshaft/published − 1| of every
+  value.") and the documented rule (docs/validation.md: "The command exits 0 when every case
+  lies within its tolerance"): a case passes iff |d| <= tolerance for each of its values,
+  d = computed/published − 1, both fractions. The JSON report carries d
+  (``relative_difference``) and the tolerance side by side, so a reader of the JSON must be able
+  to apply that rule to them and get the report's own verdict. Worked here: published 100,
+  computed 100.5 → d = 5e-3; at a tolerance of 1e-3 the case fails (5e-3 > 1e-3), at 1e-2 it
+  passes. A tolerance given in per cent (0.1 for 1e-3) would let the failing case pass the rule
+  read from the JSON (5e-3 <= 0.1).
+* The number of sources behind a run. API contract (docstring of
+  :attr:`flexshaft.validation.runner.ValidationReport.sources`: "The keys of the sources the
+  cases cite, in order of first use."): three cases citing "iso21940", "cengel", "iso21940"
+  cite two sources, not the eleven flexshaft knows; a ``flexshaft validate --case ...`` run on a
+  subset must not claim the whole bibliography.
 
 The values are set by hand through a stand-in quantity (no design is built): milliseconds.
 The differences are compared at 1e-12 relative: 100.5/100 − 1 is exact to a few ulps.
