@@ -61,8 +61,13 @@ def test_the_stability_api_holds_the_same_floor():
 
     from flexshaft.analyses.guards import RefusedInputError
     from flexshaft.analyses.stability import stability
+    from flexshaft.units import hz_to_rpm, rpm_to_rad_s
 
     model = jeffcott(0.01, 10.0)
     for omega_ref in (1e-300, 2 * math.pi * 0.000999):
         with pytest.raises(RefusedInputError, match=r"^reference_frequency must be >= 0\.00628319 rad/s"):
             stability(model, [100.0], 2, "viscous", omega_ref)
+    # the floor itself is taken, however 0.001 Hz is converted: the command's way (through rpm,
+    # 0.006283185307179586 rad/s) and 2π·0.001 (0.006283185307179587) differ in the last digit
+    for omega_ref in (rpm_to_rad_s(hz_to_rpm(0.001)), 2 * math.pi * 0.001):
+        assert stability(model, [100.0], 2, "viscous", omega_ref).speeds.size == 1

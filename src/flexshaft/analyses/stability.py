@@ -88,7 +88,7 @@ from flexshaft.assembly.model import Model
 from flexshaft.assembly.model import rotation_generator as _rotation_generator
 from flexshaft.parallel.threads import single_blas_thread
 from flexshaft.plot.stability import log_decrement_figure, real_parts_figure
-from flexshaft.units import rad_s_to_rpm
+from flexshaft.units import hz_to_rpm, rad_s_to_rpm, rpm_to_rad_s
 
 __all__ = [
     "DampingModel",
@@ -107,8 +107,9 @@ STABILITY_TOLERANCE = 1e-9
 #: Lowest reference frequency ω_ref of the viscous model [rad/s] (0.001 Hz): its damping
 #: η K/ω_ref grows as 1/ω_ref, and far below any natural frequency it overflows the
 #: eigen-solution (1e-300 rad/s ended in LAPACK's "illegal value"); 0.001 Hz runs on the
-#: embedded designs. ``flexshaft stability --reference-hz`` holds the same floor in Hz.
-LOWEST_REFERENCE_FREQUENCY = 2.0 * np.pi * 1e-3
+#: embedded designs. ``flexshaft stability --reference-hz`` holds the same floor in Hz, converted
+#: the way the command converts its value (0.001 Hz through rpm), so 0.001 Hz itself is taken.
+LOWEST_REFERENCE_FREQUENCY = rpm_to_rad_s(hz_to_rpm(1e-3))
 
 
 def rotation_generator(model: Model):
