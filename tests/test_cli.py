@@ -120,8 +120,8 @@ def test_modes_json_on_a_small_design(files: dict[str, Path]) -> None:
     ("value", "message"),
     [
         ("nan", "--speed-rpm: must be a finite number (got nan)"),
-        ("-1", "--speed-rpm: must be >= 0 (got -1)"),
-        ("1e308", "--speed-rpm: must be <= 1e+06 (got 1e+308)"),  # overflowed Ω G to nan before
+        ("-1", "--speed-rpm: must be >= 0 rpm (got -1)"),
+        ("1e308", "--speed-rpm: must be <= 1e+06 rpm (got 1e+308)"),  # overflowed Ω G to nan before
     ],
 )
 def test_modes_refuses_a_bad_speed_before_computing(files: dict[str, Path], value: str, message: str) -> None:

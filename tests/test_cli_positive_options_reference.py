@@ -71,3 +71,23 @@ def test_the_stability_api_holds_the_same_floor():
     # 0.006283185307179586 rad/s) and 2π·0.001 (0.006283185307179587) differ in the last digit
     for omega_ref in (rpm_to_rad_s(hz_to_rpm(0.001)), 2 * math.pi * 0.001):
         assert stability(model, [100.0], 2, "viscous", omega_ref).speeds.size == 1
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["runup", "--duration", "0"], "--duration: must be >= 0.001 s (got 0)"),
+        (["runup", "--dwell", "4000"], "--dwell: must be <= 3600 s (got 4000)"),
+        (["montecarlo", "--grade", "0"], "--grade: must be >= 0.001 mm/s (got 0)"),
+        (["montecarlo", "--force-limit", "0"], "--force-limit: must be >= 1e-06 N (got 0)"),
+        (["modes", "--speed-rpm", "-3"], "--speed-rpm: must be >= 0 rpm (got -3)"),
+    ],
+    ids=["duration", "dwell", "grade", "force limit", "speed"],
+)
+def test_a_bound_is_given_in_the_options_unit(args, words):
+    """What is allowed comes with its unit, the one each option's help names (the help texts
+    are the API contract: "[s]", "Balance quality grade G [mm/s]", "[N]", "[rpm]"): "must be >=
+    0.001" alone left the user to guess seconds or minutes. Refused before any computation."""
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    assert words in " ".join(result.output.split())

@@ -129,7 +129,7 @@ def modes(
     (numbered from 1)."""
     from flexshaft.design.schema import MAX_SPEED_RPM
 
-    check_finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM)
+    check_finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM, unit="rpm")
     loaded = load_design_argument(design)
     from flexshaft.cli.bounds import check_modes
 
@@ -202,7 +202,7 @@ def stability(
 
     from flexshaft.design.schema import MAX_SPEED_RPM
 
-    check_finite("--max-rpm", max_rpm, maximum=MAX_SPEED_RPM, positive=True)
+    check_finite("--max-rpm", max_rpm, maximum=MAX_SPEED_RPM, positive=True, unit="rpm")
     check_finite("--reference-hz", reference_hz, positive=True)
     if reference_hz is not None and reference_hz < LOWEST_REFERENCE_HZ:
         fail(

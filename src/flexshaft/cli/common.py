@@ -347,19 +347,21 @@ def check_finite(
     maximum: float | None = None,
     *,
     positive: bool = False,
+    unit: str = "",
 ) -> float | None:
     """``value`` if it is None or finite, within [minimum, maximum] and, with ``positive``,
-    above zero; else a user error."""
+    above zero; else a user error, its bound in ``unit`` (the option's, e.g. ``"rpm"``)."""
     if value is None:
         return None
     if not math.isfinite(value):
         fail(f"{option}: must be a finite number (got {value})")
     if positive and not value > 0.0:
         fail(f"{option}: must be positive (got {value:g})")
+    in_unit = f" {unit}" if unit else ""
     if minimum is not None and value < minimum:
-        fail(f"{option}: must be >= {minimum:g} (got {value:g})")
+        fail(f"{option}: must be >= {minimum:g}{in_unit} (got {value:g})")
     if maximum is not None and value > maximum:
-        fail(f"{option}: must be <= {maximum:g} (got {value:g})")
+        fail(f"{option}: must be <= {maximum:g}{in_unit} (got {value:g})")
     return value
 
 
@@ -377,7 +379,7 @@ def actuator_gap(gap: float | None, gap_mm: float | None) -> float | None:
     if gap is not None and gap_mm is not None:
         fail(f"--gap and --gap-mm: give the actuator gap once (got --gap {gap:g} m and --gap-mm {gap_mm:g} mm)")
     if gap_mm is not None:
-        check_finite("--gap-mm", gap_mm, maximum=m_to_mm(LARGEST_GAP), positive=True)
+        check_finite("--gap-mm", gap_mm, maximum=m_to_mm(LARGEST_GAP), positive=True, unit="mm")
         metres = mm_to_m(gap_mm)
         if not metres > 0.0:  # a subnormal count of millimetres is no gap in metres
             fail(f"--gap-mm: must be positive (got {gap_mm:g}, 0 m)")

@@ -65,10 +65,10 @@ def runup(
     from flexshaft.design.schema import MAX_SPEED_RPM
     from flexshaft.units import rad_s_to_rpm, rpm_to_rad_s
 
-    check_finite("--duration", duration, 1e-3, 3600.0)
-    check_finite("--start-rpm", start_rpm, 0.0, MAX_SPEED_RPM)
-    check_finite("--stop-rpm", stop_rpm, 0.0, MAX_SPEED_RPM)
-    check_finite("--dwell", dwell, 0.0, 3600.0)
+    check_finite("--duration", duration, 1e-3, 3600.0, unit="s")
+    check_finite("--start-rpm", start_rpm, 0.0, MAX_SPEED_RPM, unit="rpm")
+    check_finite("--stop-rpm", stop_rpm, 0.0, MAX_SPEED_RPM, unit="rpm")
+    check_finite("--dwell", dwell, 0.0, 3600.0, unit="s")
     loaded = load_design_argument(design)
     from flexshaft.analyses.transient import run_up, steady_state_envelope
     from flexshaft.assembly import build_model
@@ -216,9 +216,9 @@ def montecarlo(
 
     import numpy as np
 
-    check_finite("--grade", grade, 1e-3, 4000.0)
+    check_finite("--grade", grade, 1e-3, 4000.0, unit="mm/s")
     gap = actuator_gap(None, gap_mm)
-    check_finite("--force-limit", force_limit, 1e-6, 1e9)
+    check_finite("--force-limit", force_limit, 1e-6, 1e9, unit="N")
     loaded = load_design_argument(design)
     client = dask_client(dask)  # checked and connected before anything is prepared
     from flexshaft.cli.bounds import check_montecarlo, workers_of
