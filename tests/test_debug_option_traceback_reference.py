@@ -5,12 +5,13 @@ References:
 * README.md: "flexshaft --debug COMMAND ...            # show the traceback of an error", and
   the exit code 4 of "internal error (a bug: please report it with the output of
   `flexshaft --debug ...`)".
-* The global option's declaration (a code contract): ``--debug``, help "Show the traceback of an
+* The global option's declaration (API contract): ``--debug``, help "Show the traceback of an
   error.", environment variable ``FLEXSHAFT_DEBUG``.
 
 The internal error is a stand-in bug (a ``RuntimeError`` raised by the ``explore`` command's
-first step, the optional-package check) run through the real application, so the option goes
-through the app's callback to the error boundary. No analysis runs: about 0.02 s of CPU.
+optional-package check, its second step, after the ``--out`` check) run through the real
+application, so the option goes through the app's callback to the error boundary. No analysis
+runs: about 0.02 s of CPU.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ References:
   and a free port) |" and "| `--workers N` | worker processes (default: the CPUs, 2 to 4) |";
   and "It listens on this machine only; `--host 0.0.0.0` (or any address that is not a loopback)
   makes it reachable from the network".
-* The options' help texts (a code contract): ``--port`` "Port; 0 picks a free one.",
+* The options' help texts (API contract): ``--port`` "Port; 0 picks a free one.",
   ``--workers`` "Worker processes (default: CPUs, 2 to 4)." -- so the default handed on is
   ``None`` (the server picks 2 to 4 from the CPUs) and ``--workers 3`` hands on 3.
 

@@ -1,6 +1,6 @@
 """The forked worker pool: as many workers as asked, and queued work cancelled on Ctrl-C.
 
-References (the docstrings of :mod:`flexshaft.parallel.pool`, a code contract):
+References (the docstrings of :mod:`flexshaft.parallel.pool`, API contract):
 
 * :func:`~flexshaft.parallel.pool.worker_pool`: "A pool of ``processes`` forked workers, started
   now" and "queued work is cancelled when an exception (Ctrl-C included) ends it";
@@ -10,12 +10,14 @@ Hand-built tasks whose outcome is known without the code under test:
 
 * two tasks that each wait at a two-party barrier can only both return when two workers run at
   once; with one worker the first waits alone and the barrier times out (``BrokenBarrierError``);
-* twelve tasks that each sleep 0.5 s and then leave a file, submitted to two workers, then a
-  ``KeyboardInterrupt`` at once: the workers are ended with the queued work, so fewer than
-  twelve files exist when the block has been left (none, unless this process stalled for more
-  than 0.5 s between submitting and interrupting); a pool that waits for its queued work runs
-  all twelve (12 x 0.5 / 2 = 3 s). The files, not ``Future.cancelled()``: CPython cancels the
-  pending futures in the executor's manager thread, racing with the workers' deaths.
+* tasks that each leave a "start" file, sleep 5 s and then leave an "end" file, four submitted
+  to two workers; once both workers have started one (their start files, waited for with a
+  20 s bound) a ``KeyboardInterrupt``: the workers are killed when the block is left, so no
+  "end" file exists then. A pool that is only shut down lets the started tasks run on: the
+  parent's ``join(timeout=5)`` of each worker waits for them, and they leave their "end" files
+  (started before the joins, they end within them). The files, not ``Future.cancelled()``:
+  CPython cancels the pending futures in the executor's manager thread, racing with the
+  workers' deaths.
 
 Two pools of two forked workers; about 0.1 s of CPU in this process.
 """
@@ -42,9 +44,11 @@ def _meet() -> int:
     return os.getpid()
 
 
-def _nap_then_mark(path: str) -> None:
-    time.sleep(0.5)
-    with open(path, "w"):
+def _mark_nap_mark(folder: str, k: int) -> None:
+    with open(os.path.join(folder, f"start-{k}"), "w"):
+        pass
+    time.sleep(5.0)
+    with open(os.path.join(folder, f"end-{k}"), "w"):
         pass
 
 
@@ -64,8 +68,12 @@ def test_two_processes_run_two_tasks_at_once():
 def test_interrupt_ends_the_queued_work(tmp_path):
     with pytest.raises(KeyboardInterrupt), worker_pool(2) as pool:
         assert pool is not None
-        for k in range(12):
-            pool.submit(_nap_then_mark, str(tmp_path / f"task-{k}"))
-        raise KeyboardInterrupt  # as Ctrl-C in the parent
-    # the workers are ended (killed and joined) when the block is left: no task finishes later
-    assert len(list(tmp_path.iterdir())) < 12
+        for k in range(4):
+            pool.submit(_mark_nap_mark, str(tmp_path), k)
+        deadline = time.monotonic() + 20  # generous: a loaded 2-core machine still forks within it
+        while len(list(tmp_path.glob("start-*"))) < 2:
+            assert time.monotonic() < deadline, "the two workers did not start a task within 20 s"
+            time.sleep(0.01)
+        raise KeyboardInterrupt  # as Ctrl-C in the parent, both workers 5 s from their "end" files
+    # the workers are killed (and joined) when the block is left: no started task has finished
+    assert sorted(p.name for p in tmp_path.glob("end-*")) == []
