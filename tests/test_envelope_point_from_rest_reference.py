@@ -1,17 +1,19 @@
 """Envelope points of a design whose own operating point is at rest (0 rev/min, 0 W).
 
-The rules, from flexshaft/design/points.py's module docstring (:func:`design_at_point`):
-"``[operating]``: the point's ``speed_rpm`` (the main-rotor speed scales with it: the two are
-geared; at rest it is dropped) and ``power`` when given" and "with no change it equals the
-input"; docs/thermal.md's table of the point keys (hand-written): "`speed_rpm`, `power` | the
-operating point; omitted: `[operating]` (the main-rotor speed scales with the shaft's)".
+The rules (API contract: the points.py module docstring; no docs page covers a design at rest),
+from flexshaft/design/points.py's module docstring (:func:`design_at_point`): "``[operating]``:
+the point's ``speed_rpm`` (the main-rotor speed scales with it: the two are geared; at rest it
+is dropped) and ``power`` when given" and "with no change it equals the input"; docs/thermal.md's
+table of the point keys (hand-written): "`speed_rpm`, `power` | the operating point; omitted:
+`[operating]` (the main-rotor speed scales with the shaft's)".
 
 A design at rest gives no gear ratio to scale the main rotor by (its shaft turns at 0 rev/min),
 so the reference is what the rules fix without one:
 
 * **A point at the design's own speed and power** (0 rev/min, 0 W) changes nothing: the design
   at the point equals the input, its main-rotor speed of 289 rev/min included (the baseline's
-  main rotor, kept as given).
+  main rotor, kept as given). "At rest it is dropped" applies to a running design whose point is
+  at rest; here the point changes nothing, so the no-change rule governs.
 * **A point at a running speed** of 4800 rev/min is a valid design at that speed: Ω = 4800 ·
   2π/60 = 502.65 rad/s (rpm to rad/s by hand) at 0 W (the power is not given: the design's 0 W),
   hence zero torque.
@@ -44,6 +46,8 @@ def at_rest():
 
 
 def test_a_point_at_the_designs_own_rest_changes_nothing():
+    # "at rest it is dropped" is for a running design's point at rest; this point changes
+    # nothing, so "with no change it equals the input" governs (main rotor kept)
     design = at_rest()
     at_point = design_at_point(design, EnvelopePoint(name="parked", speed_rpm=0.0, power=0.0), NO_CHANGE)
     assert at_point.operating.main_rotor_speed_rpm == 289.0

@@ -4,7 +4,8 @@ docs/limits.md, section 1 (hand-written): "| `Current`, `CoilTurns`, `PoleArea` 
 | above 0, up to 10 kA, 1e5 turns, 10 m² |". A magnet of zero turns has no ampere-turns: for the
 differential pair (F = μ₀N²A cos α/4 [(i₀ + i)²/(g₀ − x)² − (i₀ − i)²/(g₀ + x)²], linearised)
 its gains k_i = μ₀N²A cos α i₀/g₀² and k_s = k_i i₀/g₀ are both 0, a bearing that cannot pull.
-The schema refuses it at ``coil_turns``.
+The schema refuses it at ``coil_turns`` with a DesignError naming the field; were the schema to
+let it pass, the model build would fail later with a bare ValueError from elements/magnetic.py.
 
 The smallest whole coils are built with those closed forms (derived here from the force law
 above, α = 22.5° the default pole angle): A = 1e-2 m², i₀ = 1 A, g₀ = 1 mm give for N = 1
