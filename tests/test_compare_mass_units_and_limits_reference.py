@@ -1,5 +1,6 @@
-"""The comparison's masses stay in kilograms from the inventory to the report, and the verdict
-table lists two different limits in the designs' column order (comparison.py, report/compare.py).
+"""The comparison's masses stay in kilograms from the inventory to the report, its part counts are
+the parts counted by hand, and the verdict table lists two different limits in the designs'
+column order and marks a lower-bound value (comparison.py, report/compare.py).
 
 References (derived here, by hand):
 
@@ -15,6 +16,11 @@ References (derived here, by hand):
 * the verdict table's columns run design A then design B ("A value" … "B status", "where
   (A / B)"), so two different limits read "A's / B's": a spin-up peak limit of 5 mm for A and
   2 mm for B reads "5 mm / 2 mm".
+* counts, derived here: four couplings join five tubes; the gearbox bearing is not counted
+  ("Gearbox bearings that end the driveline are common to both and not counted", the report's
+  parts section); A 5 + 4 + 4 + 1 + 0 = 14 parts, B 1 + 0 + 2 + 0 + 2 = 5.
+* docs/requirements.md, whirl_onset: "with no onset up to the highest speed analysed, that speed
+  as a lower bound", written "> 7200 rpm" as in docs/segmented-driveline.md's comparison table.
 
 The runs are stand-ins (no analysis): CPU under 0.01 s a test (0.2 s for the first dataset,
 xarray's lazy imports). Masses are sums of a few numbers of
@@ -160,3 +166,40 @@ def test_verdict_table_two_limits_in_column_order():
     assert row[1] == "5 mm / 2 mm"
     assert row[2:4] == ["1 mm", "+4 mm"]
     assert row[5:7] == ["0.5 mm", "+1.5 mm"]
+
+
+def test_part_counts_by_hand():
+    """Counts by hand: A has five tubes (four couplings join five), 4 couplings, 4 hangers,
+    1 damper, no actuator (the gearbox bearing not counted): 14 parts; B one tube, 2 hangers,
+    2 actuators: 5 parts. Counts are dimensionless (unit "1")."""
+    found = {m.key: m for m in _comparison().metrics()}
+    expected = {"segments": (5, 1), "couplings": (4, 0), "hangers": (4, 2), "dampers": (1, 0), "actuators": (0, 2)}
+    for kind in PART_KINDS:
+        assert found[f"count_{kind}"].unit == "1", kind
+        assert found[f"count_{kind}"].values == expected[kind], kind
+    assert found["count_total"].values == (14, 5)
+
+
+def test_verdict_table_marks_a_lower_bound_value():
+    """docs/requirements.md, whirl_onset: "with no onset up to the highest speed analysed, that
+    speed as a lower bound". A: stable to the top of its scan, 7200 rpm, against a 5760 rpm
+    limit: value "> 7200 rpm", margin "> +1440 rpm"; B's onset found at 6000 rpm: no mark."""
+    rpm = 2.0 * math.pi / 60.0
+
+    def onset(value, lower_bound):
+        return Check(
+            key="whirl_onset",
+            title="whirl onset speed",
+            kind="speed",
+            sense="at least",
+            status="pass",
+            value=value * rpm,
+            limit=5760.0 * rpm,
+            margin=(value - 5760.0) * rpm,
+            lower_bound=lower_bound,
+        )
+
+    (table,) = report._verdict_section(_comparison(([onset(7200.0, True)], [onset(6000.0, False)]))).tables
+    (row,) = table.rows
+    assert row[2:4] == ["> 7200 rpm", "> +1440 rpm"]
+    assert row[5:7] == ["6000 rpm", "+240 rpm"]
