@@ -1,7 +1,7 @@
 """Roots above the spin that are stable without the loss: reported at their loss-free value.
 
 The rule (docs/requirements.md, *The stability checks*): the every-root check solves "every root
-of the closed-loop first-order system ... with the hysteretic loss where it can move a root
+of the closed-loop first-order system" "... and the hysteretic loss where it can move a root
 across the axis"; above the spin the loss only damps (the module docstring of
 flexshaft.analyses.root_stability, step 3: "A root above the spin that is stable without the
 loss is stable with it"), so such a root is reported loss-free (``RootStability.roots``: "loss-free
