@@ -9,7 +9,8 @@ References (docs/optimizer.md and the :meth:`DesignProblem.base_values` docstrin
   not the base design's own value:
 
   - an integer variable (``:int`` rounds) on a field whose base value is not a whole number
-    (the Table 3.1 baseline's forward magnet at x = 3.21 m) can only take 3 or 4 m: the base
+    (the Table 3.1 baseline's forward magnet at x = 3.21 m) takes only whole metres (2 ... 5 m on
+    [2, 5] m) and 3.21 m is none of them: the base
     design is not a point of the search, so nothing is seeded (None), never 3 m;
   - one variable shared by several paths (``bearings[1].kp,bearings[2].kp``: both actuators'
     gain) sets them all to one value: a base whose two gains differ (1e6 and 2e6 N/m) is not a

@@ -50,9 +50,11 @@ def _result() -> OptimizationResult:
 )
 def test_each_axis_takes_its_objectives_sense(x, y, x_words, y_words, drawstyle):
     figure = _result().plot(x=x, y=y)
-    ax = figure.axes[0]
-    assert ax.get_xlabel().endswith(f"({x_words})")
-    assert ax.get_ylabel().endswith(f"({y_words})")
-    (line,) = [ln for ln in ax.get_lines() if ln.get_label().startswith("Pareto front")]
-    assert line.get_drawstyle() == drawstyle
-    plt.close("all")
+    try:
+        ax = figure.axes[0]
+        assert ax.get_xlabel().endswith(f"({x_words})")
+        assert ax.get_ylabel().endswith(f"({y_words})")
+        (line,) = [ln for ln in ax.get_lines() if ln.get_label().startswith("Pareto front")]
+        assert line.get_drawstyle() == drawstyle
+    finally:
+        plt.close("all")
