@@ -304,10 +304,9 @@ def design_controls(design: Design) -> list[Control]:
                 controls.append(
                     _bounded(f"{path}.kd", "K_d", group, b, "kd", f"{path}.kd", b.kd, unit="N s/m", step=10)
                 )
-        elif getattr(b, "role", "hanger") in ("hanger", "damper"):  # a gearbox's bearing stays with its gearbox
-            group = "hangers" if getattr(b, "role", "hanger") == "hanger" else "dampers"
+        elif (role := getattr(b, "role", "hanger")) in ("hanger", "damper"):  # a gearbox's bearing stays
             controls.append(
-                _bounded(f"{path}.x", f"{b.name} station x", group, b, "x", f"{path}.x", b.x, unit="m", step=0.05)
+                _bounded(f"{path}.x", f"{b.name} station x", f"{role}s", b, "x", f"{path}.x", b.x, unit="m", step=0.05)
             )
     operating = design.operating
     if operating.speed_rpm is not None:
