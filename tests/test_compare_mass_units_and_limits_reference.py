@@ -2,29 +2,37 @@
 the parts counted by hand, and the verdict table lists two different limits in the designs'
 column order and marks a lower-bound value (comparison.py, report/compare.py).
 
-References (derived here, by hand):
+References (derived here, by hand, and docs/segmented-driveline.md's hand-written tables):
 
-* tube mass m = ρ π (D_o² − D_i²)/4 · L. Design A, an aluminium driveline: ρ = 2700 kg/m³,
-  D_o = 0.1016 m, wall 1.651 mm (D_i = 0.098298 m), L = 8.05 m: m = 11.2677 kg, plus four 1.0 kg
-  couplings, four 1.4 kg hangers and a 1.2 kg damper (a 5 kg gearbox bearing is common to both
-  drivelines and not counted, as the parts section of the report says): total 22.0677 kg.
-  Design B, a one-piece tube of 15.31 kg (given) on two 1.4 kg hangers and two 7 kg actuators:
-  32.11 kg. docs/architecture.md: results are "a frozen dataclass in SI units" with
-  ".to_dataset() (xarray, units in the attributes)": the mass of a kind is in kg, and the
-  report, which "converts SI to engineering units" (its module docstring), writes kilograms
-  with two decimals: "22.07 kg".
+* tube mass m = ρ π (D_o² − D_i²)/4 · L. Design A, the embedded aluminium driveline "current"
+  (docs/segmented-driveline.md: "five 6061-T6 tubes, D_o 101.6 mm (4 in), wall 1.651 mm
+  (0.065 in)", stations 0 to 8.05 m): ρ = 2700 kg/m³, D_i = 0.098298 m, L = 8.05 m:
+  m = 11.2677 kg (the comparison table's "11.27 kg"), checked against the product's model of
+  that design; the stand-in run below takes it as its tube mass. Plus four 1.0 kg couplings,
+  four 1.4 kg hangers and a 1.2 kg damper (the table's "4.00 / 5.60 / 1.20 kg"); design A's
+  5 kg gearbox bearing (role gearbox) is not counted (the table places the
+  "intermediate-gearbox input bearing (role `gearbox`) at 8.05 m" and counts four hangers):
+  total 22.0677 kg. Design B, a one-piece tube of 15.31 kg (given, the table's "15.31 kg") on
+  two 1.4 kg hangers and two 7 kg actuators ("14.00 kg (2 × 7 kg, assumed)"): 32.11 kg.
+  docs/architecture.md: results are "a frozen dataclass in SI units" with ".to_dataset()
+  (xarray, units in the attributes)": the mass of a kind is in kg; the comparison table writes
+  kilograms with two decimals ("4.00 / 5.60 / 1.20 kg", "15.31 kg", "14.00 kg"), so the report
+  writes "22.07 kg".
 * the verdict table's columns run design A then design B ("A value" … "B status", "where
   (A / B)"), so two different limits read "A's / B's": a spin-up peak limit of 5 mm for A and
   2 mm for B reads "5 mm / 2 mm".
-* counts, derived here: four couplings join five tubes; the gearbox bearing is not counted
-  ("Gearbox bearings that end the driveline are common to both and not counted", the report's
-  parts section); A 5 + 4 + 4 + 1 + 0 = 14 parts, B 1 + 0 + 2 + 0 + 2 = 5.
+* counts, derived here: four couplings join five tubes; the gearbox bearing is not counted.
+  docs/segmented-driveline.md's comparison table, "**parts** (tubes, couplings, hangers,
+  dampers, actuators)": current "**14** (5, 4, 4, 1, 0)", tuned "**5** (1, 0, 2, 0, 2)"; by
+  hand A 5 + 4 + 4 + 1 + 0 = 14 parts, B 1 + 0 + 2 + 0 + 2 = 5.
 * docs/requirements.md, whirl_onset: "with no onset up to the highest speed analysed, that speed
-  as a lower bound", written "> 7200 rpm" as in docs/segmented-driveline.md's comparison table.
+  as a lower bound", written "> 7200 rpm" as in docs/segmented-driveline.md's comparison table;
+  its margin carries the mark too (docs/thesis-reproduction.md's verdict table: "> 7200 rpm |
+  ≥ 5520 rpm | > +1680 rpm"), so against a 5760 rpm limit "> +1440 rpm".
 
-The runs are stand-ins (no analysis): CPU under 0.01 s a test (0.2 s for the first dataset,
-xarray's lazy imports). Masses are sums of a few numbers of
-order 10 (error ~1e-15 relative), so 1e-12 relative holds on any machine.
+The runs are stand-ins (no analysis): CPU under 0.01 s a test (under 1 s for the first dataset,
+the xarray import); the one product model (the tube mass) builds in about 0.25 s. Masses are sums
+of a few numbers of order 10 (error ~1e-15 relative), so 1e-12 relative holds on any machine.
 """
 
 from __future__ import annotations
@@ -34,7 +42,9 @@ from types import SimpleNamespace as NS
 
 import pytest
 
+from flexshaft.assembly import build_model
 from flexshaft.comparison import PART_KINDS, Comparison, driveline_inventory
+from flexshaft.design import embedded_design
 from flexshaft.report import compare as report
 from flexshaft.verdict.result import Check
 
@@ -90,8 +100,11 @@ def _comparison(checks=((), ())):
 
 
 def test_tube_mass_by_hand():
-    """ρ π (D_o² − D_i²)/4 L = 2700 · π/4 · (0.1016² − 0.098298²) · 8.05 = 11.2677 kg."""
+    """ρ π (D_o² − D_i²)/4 L = 2700 · π/4 · (0.1016² − 0.098298²) · 8.05 = 11.2677 kg, and the
+    product's model of the embedded "current" design has that tube mass (docs/segmented-driveline.md:
+    "11.27 kg"). The model sums five tubes' element masses, a few ulp each: 1e-12 relative."""
     assert TUBE_A == pytest.approx(11.2677, abs=1e-4)
+    assert build_model(embedded_design("current")).shaft_mass == pytest.approx(TUBE_A, rel=1e-12)
 
 
 def test_compared_masses_are_kilograms_of_each_kind():
@@ -113,7 +126,8 @@ def test_compared_masses_are_kilograms_of_each_kind():
 
 
 def test_dataset_gives_every_mass_metric_in_kg():
-    """The dataset's metric_units (units in the attributes): kg for every mass metric."""
+    """The dataset's metric_units (units in the attributes): kg for every mass metric. The first
+    dataset of a run costs under 1 s (the xarray import)."""
     ds = _comparison().to_dataset()
     units = dict(zip(ds["metric"].values.tolist(), ds["metric_units"].values.tolist()))
     for kind in (*PART_KINDS, "total"):
@@ -129,14 +143,16 @@ def test_results_json_gives_every_mass_metric_in_kg():
 
 
 def test_summary_key_numbers_write_kilograms():
-    """Driveline total 22.0677 kg → "22.07 kg" (A), 32.11 kg → "32.11 kg" (B)."""
+    """Driveline total 22.0677 kg → "22.07 kg" (A), 32.11 kg → "32.11 kg" (B): kilograms, two
+    decimals, as docs/segmented-driveline.md's comparison table writes each kind's mass."""
     table = report._summary_section(_comparison()).tables[0]
     (row,) = [r for r in table.rows if r[0] == "mass: driveline total"]
     assert row[1:3] == ["22.07 kg", "32.11 kg"]
 
 
 def test_format_metric_kilograms():
-    """A mass in kg is written in kg, two decimals (15.31 kg, 0.5 kg)."""
+    """A mass in kg is written in kg, two decimals, as docs/segmented-driveline.md's comparison
+    table writes them ("15.31 kg", "4.00 / 5.60 / 1.20 kg"): 15.31 kg, 0.5 kg → "0.50 kg"."""
     assert report.format_metric("mass_segments", "kg", 15.31) == "15.31 kg"
     assert report.format_metric("mass_hangers", "kg", 0.5) == "0.50 kg"
 

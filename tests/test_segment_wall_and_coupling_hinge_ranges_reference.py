@@ -9,10 +9,12 @@
   ``wall_thickness``. The accepted zone resolves to a tube whose stations tile the shaft (hand
   sum: 4.0 m + 4.05 m = the baseline's 8.05 m) and whose bore is D_i = D_o − 2 t
   = 0.1016 − 2 × 0.0005 = 0.1006 m, with the ``[shaft]`` diameter, material and layup inherited.
-* docs/segmented-driveline.md: a coupling's stiffnesses are "each a number or ``"rigid"``", and
-  only the torsional one must be "> 0" ("it carries the torque"; the example file:
-  ``torsional_stiffness = 1.0e5  # N m/rad (> 0); or "rigid"`` beside
-  ``angular_stiffness = 2300.0   # N m/rad, each bending plane; or "rigid"``). The coupling
+* docs/segmented-driveline.md, its example ``[[couplings]]``: each stiffness line ends with
+  ``; or "rigid"``, and only the torsional one carries "(> 0)":
+  ``angular_stiffness = 2300.0   # N m/rad, each bending plane; or "rigid"`` beside
+  ``torsional_stiffness = 1.0e5  # N m/rad (> 0); or "rigid"``. (API contract, supporting text:
+  the ``Coupling`` docstring in design/segments.py says "each a number or ``"rigid"``" and
+  "``torsional_stiffness`` [N m/rad] (> 0: it carries the torque)".) The coupling
   element's energy ½ k_ang (Δβ² + Δγ²) is well defined at k_ang = 0: an ideal hinge (a universal
   joint, or a disc pack far softer than the tubes). A hinge of zero angular stiffness is
   therefore accepted, alone and in a design, and a zero torsional stiffness is still refused.
