@@ -1,7 +1,8 @@
 """Reference: which modes Modes.plot_shapes draws by default, and the log decrement its panel
 titles print.
 
-The documented rule (its docstring): without ``modes`` it draws "the ``n`` modes nearest the
+API contract (the Modes.plot_shapes docstring; README's figure list says the same: "mode shapes
+of the modes nearest the spin frequency"): without ``modes`` it draws "the ``n`` modes nearest the
 spin frequency" (``near_rpm`` instead of the result's speed), the lowest ``n`` only at rest; each
 panel's title ends in "δ = …", the logarithmic decrement δ = 2πζ/√(1 − ζ²).
 

@@ -1,9 +1,10 @@
 """Reference: static_response on a mask of free DOFs (``within``) refuses a load outside it and
 solves the loaded block exactly.
 
-The documented rule (its docstring): the solve on ``within`` is exact "when they are whole
-blocks the stiffness does not couple to the rest and the loads are zero outside them"; a load
-outside is refused (it would otherwise be dropped, its deflection silently zero).
+API contract (the static_response docstring): the solve on ``within`` is exact "when they are
+whole blocks the stiffness does not couple to the rest and the loads are zero outside them"; a
+load outside is refused by the guard's own contract (its message: "within must hold every loaded
+DOF"; it would otherwise be dropped, its deflection silently zero).
 
 The rotor is the Jeffcott rotor of tests/rotors.py at rest, no loss: its lateral DOFs are not
 coupled to its axial ones (linear beam elements, no spin), so the mask "every free DOF but the
@@ -54,5 +55,5 @@ def test_a_load_outside_the_mask_is_refused_not_dropped(setup):
     loads = np.zeros(model.dofs.size)
     loads[v] = F
     loads[free_axial[-1]] = F
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="within must hold every loaded DOF"):
         static_response(model, loads, 0.0, within=within)
