@@ -74,3 +74,27 @@ def test_nesting_continued_over_many_lines_counts_like_one_line() -> None:
     assert text_problems(text(30)) == []
     # The same nesting written on one line is refused as well (the layout does not matter).
     assert text_problems(text(40).replace("\n", " ", 40)) != []
+
+
+@pytest.mark.parametrize(
+    ("value", "expected"),
+    [
+        ("0.0", "shaft.wall_thickness: must be > 0 (got 0.0); allowed: [1e-05, 1] m (see docs/limits.md)"),
+        ("5e-324", "shaft.wall_thickness: must be >= 1e-05 (got 5e-324); allowed: [1e-05, 1] m (see docs/limits.md)"),
+    ],
+    ids=["zero", "below the floor"],
+)
+def test_a_zero_wall_is_refused_as_not_positive_first(value, expected):
+    """docs/limits.md's examples and rule: "A zero where the quantity must be positive (a wall, a
+    length, a density) is refused first as "must be > 0", whatever the lower end of its range";
+    a positive value below the floor names the floor. The lines are the page's own examples."""
+    from flexshaft.design import DesignError, loads_design
+
+    text = embedded_text("tuned")
+    start = text.index("\n[shaft]")
+    line_start = text.index("\nwall_thickness = ", start) + 1
+    line_end = text.index("\n", line_start)
+    bad = text[:line_start] + f"wall_thickness = {value}" + text[line_end:]
+    with pytest.raises(DesignError) as refused:
+        loads_design(bad)
+    assert expected in str(refused.value).splitlines()
