@@ -84,10 +84,13 @@ def test_nesting_continued_over_many_lines_counts_like_one_line() -> None:
     ],
     ids=["zero", "below the floor"],
 )
-def test_a_zero_wall_is_refused_as_not_positive_first(value, expected):
-    """docs/limits.md's examples and rule: "A zero where the quantity must be positive (a wall, a
-    length, a density) is refused first as "must be > 0", whatever the lower end of its range";
-    a positive value below the floor names the floor. The lines are the page's own examples."""
+def test_a_zero_wall_is_refused_as_not_positive_first(value: str, expected: str) -> None:
+    """docs/limits.md's examples and rule: "A zero (or a negative value) for a number of the design
+    file that must be positive (a wall, `tailboom.length`, a density) is refused first as "must be
+    > 0", whatever the lower end of its range"; a positive value below the floor names the floor.
+    The lines are the page's own examples. The sentence was written (by the lead, after hunt h93a)
+    to state what the code already did, so this test guards the message, which is the product
+    here, against that documented wording."""
     from flexshaft.design import DesignError, loads_design
 
     text = embedded_text("tuned")
