@@ -335,8 +335,9 @@ def _search_around(
     the wall with ``--ply-thickness-mm`` (it follows the ply count), and the ply-angle
     variables with their template when ``--set`` gives the shaft's layup (and ``--layup`` does
     not)."""
+    import dataclasses
+
     from flexshaft.design.io import paths_overlap
-    from flexshaft.optimize.variables import DesignVariable
 
     fixed = list(held_paths)
 
@@ -352,7 +353,7 @@ def _search_around(
         if len(rest) == len(v.paths):
             kept.append(v)
         elif rest:
-            kept.append(DesignVariable(rest, v.lower, v.upper, v.integer, v.log, v.name, v.units, v.significant_digits))
+            kept.append(dataclasses.replace(v, path=tuple(rest)))  # the shared variable at the paths not held
     return tuple(kept), template
 
 
