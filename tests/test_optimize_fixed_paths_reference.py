@@ -185,3 +185,19 @@ def test_a_set_station_beyond_its_neighbour_bounds_it_from_the_other_side():
     (station,) = [v for v in variables if v.paths == ("bearings[1].x",)]
     assert (station.lower, station.upper) == pytest.approx((2.21, 3.7), abs=1e-12)
     assert "bearings[2].x" not in _paths(variables)
+
+
+def test_a_gain_set_to_the_shared_value_keeps_the_shared_variable_at_the_other_bearing():
+    """--set of the first bearing's K_p to the value both share (the tuned design's 5e5 N/m): the
+    design with the set field still has equal gains, so the K_p stays one variable ("one variable
+    shared by every active bearing when their gains are equal", docs/optimizer.md), searched
+    at the bearing not set ("a gain shared by both active bearings stays searched at the bearing
+    not set"), under its shared name and bounds."""
+    from flexshaft.cli.optimize import _default_search
+
+    (shared,) = [v for v in default_variables(tuned_design(), None)[0] if v.name == "kp"]
+    variables, _ = _default_search(tuned_design(), {"bearings[1].kp": 5e5}, None, False)
+    (kept,) = [v for v in variables if "bearings[2].kp" in v.paths]
+    assert kept.paths == ("bearings[2].kp",) and kept.name == "kp"
+    assert (kept.lower, kept.upper, kept.log) == (shared.lower, shared.upper, shared.log)
+    assert "bearings[1].kp" not in _paths(variables)
