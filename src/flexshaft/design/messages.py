@@ -212,9 +212,24 @@ def problems_from_validation(error: ValidationError, data: Any) -> list[Problem]
         if item["type"] == PROBLEMS_ERROR_TYPE:
             for sub, message in item["ctx"]["problems"]:
                 problems.append(Problem(_locate(loc + tuple(sub)).path or "design", message))
+        elif _short_only_by_invalid_items(item):
+            continue
         else:
             problems.append(_translate(item, loc, data))
     return problems
+
+
+def _short_only_by_invalid_items(item: Any) -> bool:
+    """Whether a list reported too short has enough items, only some of them invalid.
+
+    pydantic counts the items that validated (``bearings: must have at least 1 items (got 0)``
+    for a single bearing with a bad field); the items' own problems say what is wrong.
+    """
+    value = item.get("input")
+    minimum = item.get("ctx", {}).get("min_length")
+    if item["type"] != "too_short" or not isinstance(value, (list, tuple)) or minimum is None:
+        return False
+    return len(value) >= minimum
 
 
 def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
@@ -298,7 +313,8 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
             return Problem(path, f"must have exactly {len(args)} values (got {_got(value)})")
         bound = ctx.get("min_length") if kind == "too_short" else ctx.get("max_length")
         word = "at least" if kind == "too_short" else "at most"
-        return Problem(path, f"must have {word} {bound} items (got {ctx.get('actual_length', '?')})")
+        actual = len(value) if isinstance(value, (list, tuple)) else ctx.get("actual_length", "?")
+        return Problem(path, f"must have {word} {bound} items (got {actual})")
     if kind in ("dict_type", "model_type", "model_attributes_type", "mapping_type"):
         return Problem(path, f"must be a table (got {_got(value)})")
     return Problem(path, f"{item['msg']} (got {_got(value)})")
