@@ -1,11 +1,11 @@
 """A coupling station near a shaft end, against the mesh's merge tolerance and a hand sum of mass.
 
-The segmented mesh keeps every coupling station exactly and moves any other station closer to it
-than the merge tolerance onto it (docs/segmented-driveline.md, "The model": the tolerance is 5 %
-of an element). A shaft end is such a station: a coupling within the tolerance of an end would
-swallow the end station, and the shaft would be meshed short of its end (or the joint's far node
-would carry no element). build_model refuses it instead, naming ``mesh.shaft_elements``, as it
-refuses two boundaries or couplings closer than the tolerance.
+Rule (docs/segmented-driveline.md, "The model"): "two boundaries or couplings closer than the
+tolerance, or a coupling closer than that to a shaft end, are refused (raise `shaft_elements`):
+the shaft is always meshed to both its ends" (the tolerance: 5 % of an element). Each case below
+is checked on physics as well: whatever happens to a coupling near an end, a model that is built
+spans the whole shaft, so its axial rigid-body mass is the hand sum (a shaft meshed short of its
+end, which a coupling swallowing the end station would give, misses it).
 
 Reference numbers (derived here): a 2 m tube in 40 elements has 0.05 m elements, so the tolerance
 is 0.05 × 0.05 = 2.5 mm. A coupling 2 mm from either end (0.8 tolerance) is refused; one 4 mm
@@ -13,7 +13,7 @@ from the aft end (1.6 tolerances) is accepted, and then the model still spans [0
 axial rigid-body mass rᵀ M r (r = 1 on every node's u) is the hand sum ρ A L + m_hub with
 A = π (D_o² − D_i²)/4. The Hermite and linear shape functions reproduce a rigid translation
 exactly, so the sum holds to rounding (about 40 element blocks of ~1e-16 relative each):
-1e-12 relative is asserted; a shaft 4 mm short would miss it by 2e-3.
+1e-12 relative is asserted; a shaft a few mm short misses it by about 1e-3 (2 mm: 8.0e-4).
 """
 
 from __future__ import annotations
@@ -65,6 +65,19 @@ def _design(x_coupling: float) -> dict:
     }
 
 
+def _axial_mass(model) -> float:
+    """rᵀ M r with r = 1 on every shaft node's u (the axial rigid-body mass)."""
+    dm = model.dofs
+    r = np.zeros(model.M.shape[0])
+    r[[dm.shaft(node, "u") for node in range(dm.n_shaft_nodes)]] = 1.0
+    return float(r @ (model.M @ r))
+
+
+def _hand_mass() -> float:
+    area = math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4
+    return RHO * area * LENGTH + HUB
+
+
 @pytest.mark.parametrize("x_coupling", [0.8 * TOL, LENGTH - 0.8 * TOL])
 def test_a_coupling_within_the_tolerance_of_a_shaft_end_is_refused(x_coupling):
     """0.8 tolerance from the fore or the aft end: refused, naming the mesh field and the station."""
@@ -73,6 +86,19 @@ def test_a_coupling_within_the_tolerance_of_a_shaft_end_is_refused(x_coupling):
         build_model(design)
     text = str(info.value)
     assert "mesh.shaft_elements" in text and f"x = {x_coupling:.6g} m" in text, text
+
+
+@pytest.mark.parametrize("x_coupling", [0.8 * TOL, LENGTH - 0.8 * TOL])
+def test_no_model_is_built_short_of_the_shaft_ends(x_coupling):
+    """The physics half of the rule ("the shaft is always meshed to both its ends"): a model built
+    from a coupling 0.8 tolerance from an end, if any, spans [0, L] and carries the whole tube's
+    mass plus the hub's (module docstring's hand sum)."""
+    try:
+        model = build_model(design_from_dict(_design(x_coupling)))
+    except DesignError:
+        return
+    assert (model.dofs.shaft_x[0], model.dofs.shaft_x[-1]) == (0.0, LENGTH)
+    assert _axial_mass(model) == pytest.approx(_hand_mass(), rel=1e-12)
 
 
 def test_a_coupling_just_outside_the_tolerance_keeps_the_whole_shaft():
@@ -84,8 +110,4 @@ def test_a_coupling_just_outside_the_tolerance_keeps_the_whole_shaft():
     assert dm.shaft_x[0] == 0.0 and dm.shaft_x[-1] == LENGTH
     (j,) = dm.shaft_joints
     assert dm.shaft_x[j] == dm.shaft_x[j + 1] == x_coupling
-    r = np.zeros(model.M.shape[0])
-    r[[dm.shaft(node, "u") for node in range(dm.n_shaft_nodes)]] = 1.0
-    area = math.pi * (D_O**2 - (D_O - 2 * WALL) ** 2) / 4
-    expected = RHO * area * LENGTH + HUB
-    assert float(r @ (model.M @ r)) == pytest.approx(expected, rel=1e-12)
+    assert _axial_mass(model) == pytest.approx(_hand_mass(), rel=1e-12)
