@@ -3,8 +3,11 @@
 Reference, derived here (tests/test_overhung_disk_whirl.py's overhung rotor): a rigid disk
 (m, I_d, I_p) at the tip of a massless cantilever of tip stiffness EI/L³ [[12, −6L], [−6L, 4L²]]
 on (deflection, slope), a dashpot c at the disk in both lateral directions; the tip's axial and
-torsional freedoms are held (`fixed_end = ["u", "theta"]`) so that every mode is lateral and
-damped. In the complex coordinates r = v ± i w (ψ the matching slope) the free motion e^{λt}
+torsional freedoms are held (`fixed_end = ["u", "theta"]`), so the four lowest modes are the
+disk's lateral ones, damped by the dashpot. The tube's own modes (its mass 1e-6 of the disk's) lie
+far above them and are nearly undamped (their decay rates -1e-5 1/s and less; with the default
+basis the run's largest growth rate is their round-off, ~1e-9 1/s): `basis_size=4` keeps them out.
+In the complex coordinates r = v ± i w (ψ the matching slope) the free motion e^{λt}
 at speed Ω solves
 
     (m λ² + c λ + k11)(I_d λ² ∓ i I_p Ω λ + k22) − k12² = 0,
