@@ -15,23 +15,35 @@ not the mode.
    On a concave decreasing ζ the chord's zero always lies on the stable side, so plain regula
    falsi moves only the stable end and keeps the unstable end: its estimate crawls toward W
    linearly and ends 2.5e-6 W short after 80 trials (computed in the test by the same arithmetic).
-   The Illinois step halves the stale unstable end's ζ and reaches W to the refinement's
-   documented 1e-7 of the speed within its 80 trials. Asserted to 1e-7 relative: the bracket
-   closes to 1e-7 b, b ≤ 2W.
+   The Illinois step halves the stale unstable end's ζ and reaches W within its 80 trials.
+   The refinement's stop (bracket width b − a ≤ 1e-7 b, or a trial with ζ = 0 exactly) bounds
+   the error only by 1e-7 b ≤ 2e-7 W; the error measured is exactly 0 (the returned onset is
+   W itself, plain and with OPENBLAS_CORETYPE=Prescott: scalar arithmetic, no BLAS). Asserted
+   to the documented "converged to 1e-7 of the speed", 1e-7 relative: the measured 0 leaves the
+   whole of it as margin, and the mutant without the halving (2.5e-6 W short) is 25 times
+   outside.
 
 2. The trial root's seed. The mode's root runs on a straight line from s_a = −3 + 100i at 0 to
    s_b = 6 + 150i at 2W (|s_b| ≠ |s_a|), s₁(Ω) = s_a + (Ω/2W)(s_b − s_a), with a second mode
    s₂ = s₁ + 0.02i of another shape just above it (a near-degenerate pair). Re s₁ crosses zero
-   at Ω* = 2W · 3/(3 + 6) = 200 rad/s, where ζ = −Re s/|s| does. The documented seed, the end
-   roots interpolated at the trial speed's place in the bracket [0, 2W] they belong to, is s₁
-   itself (the path is straight), so every trial is the mode and the refinement reaches Ω* to
-   its 1e-7 of the speed (asserted 1e-7: the bracket closes to 1e-7 of the speed). A seed
+   at Ω* = 2W · 3/(3 + 6) = 200 rad/s, where ζ = −Re s/|s| does. The product's seed
+   (interpolation on the original bracket: the end roots interpolated at the trial speed's
+   place in the bracket [0, 2W] they belong to) is s₁ itself (the path is straight), so every
+   trial is the mode and the refinement reaches Ω*: the error measured is exactly 0 again
+   (returned 200 rad/s), asserted to the documented 1e-7 of the speed as in 1. A seed
    interpolated at the trial's place in the current, shrunk bracket misses s₁ by up to tens of
    rad/s, far beyond the 0.01 rad/s half-gap bounding s₁'s Newton basin: the trial is the other
    mode. Following the mode down from 2W in sub-steps misses it too: its smallest sub-step,
    1/1024 of the bracket (0.59 rad/s), moves s₁ by 0.59 · |s_b − s_a|/600 = 0.05 rad/s, beyond
    the half-gap; so the result falls back to an estimate away from Ω* (the grid interpolation
    of ζ, the documented last resort, lies at 257 rad/s).
+
+Scope: both cases are synthetic root paths (Newton replaced, no model). No real model was shown
+where the current-bracket seed (h95a-stab-refine-guess-current-bracket) moves the onset: the
+real Jeffcott rotor gives bit-identical onsets with it; and the Illinois mutant
+(h95a-stab-illinois-upper-end-kept) moves hysteretic onsets by only 1e-8 to 3.6e-8 relative,
+inside the documented 1e-7 (review r111's measurements). These tests pin the refinement's
+stated algorithm, not a physics effect seen on a model.
 """
 
 from __future__ import annotations
