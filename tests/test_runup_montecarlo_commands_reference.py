@@ -45,6 +45,7 @@ def runup_seen(monkeypatch, no_files):
         actuator_displacement=np.array([[1.0e-4, 2.0e-4]]),
         actuator_force=np.array([[35.0, 20.0]]),
         max_growth_rate=-1.0,
+        unstable=False,
         basis_size=8,
         internal_damping="hysteretic",
         to_dataset=lambda: None,

@@ -52,6 +52,7 @@ def seen(monkeypatch):
         actuator_displacement=np.array([[1.0e-4, 2.0e-4], [4.0e-4, 3.0e-4]]),
         actuator_force=np.array([[35.0, 20.0], [10.0, 70.0]]),
         max_growth_rate=-1.0,
+        unstable=False,
         basis_size=8,
         internal_damping="hysteretic",
         to_dataset=lambda: None,

@@ -49,8 +49,9 @@ from math import factorial
 import numpy as np
 import scipy.linalg as la
 
-from flexshaft.analyses.eigen import ReducedModel
+from flexshaft.analyses.eigen import DIVERGENCE_TOLERANCE, ReducedModel
 from flexshaft.analyses.guards import RefusedInputError, UnstableResponseError
+from flexshaft.analyses.stability import STABILITY_TOLERANCE
 from flexshaft.assembly.model import Model
 
 __all__ = [
@@ -60,6 +61,7 @@ __all__ = [
     "REFRESH_SPEED_FRACTION",
     "EnvelopeRun",
     "EnvelopeSystem",
+    "growing_whirl",
     "integrate_envelope",
     "phi_functions",
 ]
@@ -225,6 +227,24 @@ class _Basis:
         return self.Vinv @ Zhat
 
 
+def growing_whirl(lam: np.ndarray, speed: float) -> bool:
+    """Whether the envelope eigenvalues λ at the reference speed Ω hold a free whirl that grows.
+
+    An envelope eigenvalue is λ = s − iΩ (the frame rotation, :meth:`EnvelopeSystem.matrix`), so
+    the mode's s = λ + iΩ. It grows when ζ = −Re s/|s| is below
+    −:data:`~flexshaft.analyses.stability.STABILITY_TOLERANCE`, the rule of the whirl-stability
+    analysis: an undamped mode's real part is round-off (±1e-9 1/s on a
+    conservative tube), not an instability. A root near s = 0 (|s| below
+    :data:`~flexshaft.analyses.eigen.DIVERGENCE_TOLERANCE` × the largest |s|, a rigid-body mode)
+    grows only beyond that bound, as the eigen-analyses count a divergence.
+    """
+    s = np.asarray(lam) + 1j * speed
+    size = np.abs(s)
+    floor = DIVERGENCE_TOLERANCE * float(size.max(initial=0.0))
+    grows = s.real > STABILITY_TOLERANCE * size
+    return bool(np.any(grows & ((size > floor) | (s.real > floor))))
+
+
 def _quantise(h: float) -> float:
     """Round a step down to the grid 2^(k/8) s, so that the ETD coefficients are reused."""
     return float(2.0 ** (np.floor(8 * np.log2(h)) / 8))
@@ -241,6 +261,7 @@ class EnvelopeRun:
     refreshes: int
     max_condition: float
     max_growth_rate: float
+    growing: bool = False  # a reference basis held a growing free whirl (:func:`growing_whirl`)
 
 
 def integrate_envelope(
@@ -340,6 +361,7 @@ def integrate_envelope(
 
     basis = _Basis(system, speed(0.0))
     refreshes, max_condition, growth = 1, basis.condition, float(basis.lam.real.max())
+    growing = growing_whirl(basis.lam, basis.speed)
     exponent, growth_limit = 0.0, float(np.log(MAX_GROWTH))  # ∫ max(0, growth rate) dt so far
     w = basis.to_modal(S * z)
     with warnings.catch_warnings():  # a scale for the error only: an ill-conditioned solve is good enough
@@ -358,6 +380,7 @@ def integrate_envelope(
                 refreshes += 1
                 max_condition = max(max_condition, basis.condition)
                 growth = max(growth, float(basis.lam.real.max()))
+                growing = growing or growing_whirl(basis.lam, basis.speed)
             h = min(h, stop - t)
             N_start = drift_and_load(basis, w[:, None], np.array([t]), until)[:, 0]
             big, half = etd(basis, w, t, np.array([h, 0.5 * h]), N_start, until).T
@@ -409,4 +432,4 @@ def integrate_envelope(
     while k_out < outputs.size:  # round-off at the very end
         states[:, k_out] = (basis.V @ w) / S
         k_out += 1
-    return EnvelopeRun(outputs, states, steps, rejected, refreshes, max_condition, growth)
+    return EnvelopeRun(outputs, states, steps, rejected, refreshes, max_condition, growth, growing)

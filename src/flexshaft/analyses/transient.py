@@ -161,8 +161,12 @@ class TransientResult:
         Accepted and rejected steps, eigenbasis refreshes of the integration.
     max_growth_rate : float
         Largest real part of the system's eigenvalues at the reference speeds of the run
-        [1/s]; positive means a whirl instability inside the run's speed range (the response
-        there grows whatever the imbalance; compare :func:`flexshaft.analyses.stability`).
+        [1/s]: negative, the slowest decay; round-off (about ±1e-9 1/s) when a mode is
+        undamped.
+    unstable : bool
+        A free whirl grows inside the run's speed range (the response there grows whatever
+        the imbalance): a mode's damping ratio below −STABILITY_TOLERANCE, the rule of
+        :func:`flexshaft.analyses.stability` (:func:`flexshaft.analyses.envelope.growing_whirl`).
     """
 
     time: np.ndarray
@@ -182,6 +186,7 @@ class TransientResult:
     rejected: int
     refreshes: int
     max_growth_rate: float
+    unstable: bool
     basis: np.ndarray = field(repr=False)
     residual: np.ndarray | None = field(repr=False)
     force_scale: np.ndarray = field(repr=False)
@@ -473,6 +478,7 @@ def transient_response(
         rejected=run.rejected,
         refreshes=run.refreshes,
         max_growth_rate=run.max_growth_rate,
+        unstable=run.growing,
         basis=red.Phi,
         residual=residual,
         force_scale=force_scale,

@@ -121,6 +121,7 @@ def runup(
             n: float(np.max(result.actuator_force[k])) for k, n in enumerate(result.actuator_names)
         },
         "max_growth_rate_per_s": result.max_growth_rate,
+        "unstable": result.unstable,
         "basis_size": result.basis_size,
         "internal_damping": result.internal_damping,
     }
@@ -155,7 +156,7 @@ def runup(
                 rows,
             )
         )
-    if result.max_growth_rate > 0:
+    if result.unstable:
         print_line(
             console,
             f"free whirl grows at up to {sig(result.max_growth_rate)} 1/s inside the run's speed range: unstable there",
