@@ -1,0 +1,74 @@
+"""A metal that gives only some of its strengths is not strength-checked (documented rule), and
+its tube is still checked for buckling (closed form derived here).
+
+Documented rule: :class:`~flexshaft.design.materials.Isotropic` makes each of ``yield_strength``,
+``ultimate_strength`` and ``fatigue_strength`` optional; the DE-Goodman line needs S_e and S_ut
+and the first-cycle yield check S_y (Shigley eqs. 7-7, 7-16), so with one of them missing
+neither safety factor exists. :func:`~flexshaft.analyses.metal_strength.metal_strength`
+documents: "Empty (``evaluated`` False) when no isotropic segment gives its strengths", and its
+note names the segment whose material "gives no yield_strength, ultimate_strength and
+fatigue_strength". A material giving S_y and S_ut but no S_e (a common case: the endurance limit
+of the part is not known yet) must therefore give an empty result with that note, not a failed
+analysis; the same holds for every single strength left out.
+
+The buckling record does not need the strengths: its critical torque is the tube's, checked
+against Timoshenko & Gere (1961) sec. 11.12's long-tube τ_cr = E/(3√2 (1 − ν²)^{3/4}) (t/r)^{3/2}
+times the torque arm 2π r² t (r = (D_o − t)/2 the mid-surface; as quoted in
+tests/test_metal_buckling_without_strengths_reference.py, which measured +6.5 % for this tube of
+r/t = 12, the O(t/r) thickness correction): within 10 %. Its torque is P/Ω by hand (1e-12: one
+division).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from flexshaft.analyses.metal_strength import metal_strength
+from flexshaft.assembly import build_model
+from flexshaft.design import design_from_dict
+
+E, G, RHO = 70.0e9, 26.0e9, 2700.0
+L, D_O, WALL, RPM, POWER = 2.0, 0.05, 0.002, 3000.0, 12e3
+ALL = {"yield_strength": 276e6, "ultimate_strength": 310e6, "fatigue_strength": 100e6}
+
+
+def _tube(strengths: dict):
+    data = {
+        "name": "metal tube",
+        "materials": {"al": {"kind": "isotropic", "E": E, "G": G, "density": RHO, **strengths}},
+        "shaft": {
+            "x_start": 0.0,
+            "x_end": L,
+            "outer_diameter": D_O,
+            "wall_thickness": WALL,
+            "material": "al",
+            "fixed_start": ["u", "v", "w", "theta"],
+            "fixed_end": ["v", "w"],
+        },
+        "bearings": [{"name": "far", "kind": "contact", "x": L, "stiffness": {"u": 0.0}}],
+        "operating": {"speed_rpm": RPM, "power": POWER},
+        "loads": {"eccentricity": 0.0},
+        "mesh": {"shaft_elements": 4},
+    }
+    return build_model(design_from_dict(data))
+
+
+@pytest.mark.parametrize("missing", sorted(ALL))
+def test_one_missing_strength_leaves_the_segment_unchecked(missing):
+    given = {k: v for k, v in ALL.items() if k != missing}
+    model = _tube(given)
+    static = np.zeros(model.dofs.size)
+    result = metal_strength(model, static)
+    assert not result.evaluated
+    assert result.x.size == 0
+    (note,) = result.notes
+    assert "gives no yield_strength, ultimate_strength and fatigue_strength" in note
+    (b,) = result.buckling
+    torque = POWER / (RPM * 2 * math.pi / 60)
+    assert b.torque == pytest.approx(torque, rel=1e-12)
+    r, nu = (D_O - WALL) / 2, E / (2 * G) - 1
+    tau_long = E / (3 * math.sqrt(2) * (1 - nu**2) ** 0.75) * (WALL / r) ** 1.5
+    assert b.critical_torque == pytest.approx(2 * math.pi * r**2 * WALL * tau_long, rel=0.10)
