@@ -1,10 +1,10 @@
 """A root is seeded only where the projected orbit has a maximum of its own (hunt h45a).
 
 :func:`flexshaft.analyses.criticals._hidden_resonances` samples the projected orbit at
-Re Ω_k + |Im Ω_k| (0, ±0.5, ±1, ±2) and seeds the root only when some interior sample is above
-both its neighbours (a taller neighbour may set the window's edge; "no maximum of its own there"
-otherwise): a root the imbalance does not excite shows only the
-flank of a neighbour's resonance.
+Re Ω_k + |Im Ω_k| (−2 … 2, an eighth apart) and seeds the root only when some interior sample
+is above both its neighbours (a taller neighbour may set the window's edge; "no maximum of its
+own there" otherwise): a root the imbalance does not excite shows only the flank of a
+neighbour's resonance.
 
 Reference (closed form): the damped Jeffcott rotor of tests/test_hidden_seed_half_width_reference.py
 (ζ = 0.002, dashpot at the disk, forward imbalance). Its projected problem is the
@@ -14,7 +14,7 @@ that of Ω_p − Ω). A root placed (by substituting the root finder) 3 half-wid
 resonance samples Ω ∈ ω_n + ζω_n (−5 … −1), all below Ω_p: the samples rise monotonically to the
 grid's right end, no interior maximum of its own, not seeded; the mirror root 3 half-widths above
 falls monotonically from the left end, not seeded either. The true root (the control) is seeded.
-The samples differ by ≥ 8 % between neighbours (|q| ∝ 1/|Ω − Ω̃| near resonance), so the
+The samples differ by ≥ 2 % between neighbours (|q| ∝ 1/|Ω − Ω̃| near resonance), so the
 comparisons are far from round-off. CPU: a few 3-column projections, milliseconds.
 """
 

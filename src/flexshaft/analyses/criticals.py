@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import scipy.optimize
 
 from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.campbell import Campbell
@@ -61,8 +62,16 @@ _SEED_SPEEDS = 64
 #: shows as a local maximum of the samples (the refinement then resolves it).
 _SHOWN_SAMPLES = 4.0
 #: Where the projected orbit is evaluated around a root, in |Im Ω| from Re Ω (its half-power
-#: points at ±1): a maximum of its own lies inside.
-_AROUND_ROOT = np.array([-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0])
+#: points at ±1), an eighth of it apart: a maximum of its own lies inside, and one on a taller
+#: neighbour's rising flank, whose dip after it is a few tenths of |Im Ω| wide (0.3-0.5 |Im Ω|
+#: for two Jeffcott resonances 1.5-2 |Im Ω| apart), still shows as a sample above its
+#: neighbours (half-|Im Ω| steps stepped over it: hunt h94b).
+_AROUND_ROOT = np.linspace(-2.0, 2.0, 33)
+#: Where a seed's refinement starts around its maximum, in powers of two near |Im Ω| (the
+#: lattice of :func:`_seed_samples`): across the band, and an eighth to either side so that the
+#: samples hold the maximum the projected orbit showed, however shallow its dip beside a taller
+#: neighbour (the scan's samples on that neighbour's flank can be above the maximum itself).
+_SEED_STEPS = np.array([-4.0, -2.0, -1.0, -0.125, 0.0, 0.125, 1.0, 2.0, 4.0])
 
 
 @dataclass(frozen=True)
@@ -206,12 +215,15 @@ def _same_peak(a: LateralCritical, b: LateralCritical) -> bool:
 def _envelope_peak(model: Model, loads: np.ndarray, critical: LateralCritical) -> bool:
     """A seeded peak, refined on one node's orbit, is a maximum of the envelope too (the largest
     orbit over the shaft's nodes and the load cases, which defines a critical speed): full
-    solves a quarter of its bandwidth to either side are not above it there. A root the
-    imbalance barely excites can make a bump at a node where the envelope, set by another
-    node, only rises. An undamped peak (its response singular) is kept."""
+    solves a 20th of its bandwidth to either side (the refinement's resolution, far beyond its
+    vertex's error) are not above it there. A root the imbalance barely excites can make a
+    bump at a node where the envelope, set by another node, only rises. A maximum on a taller
+    neighbour's rising flank falls only a few tenths of its half-bandwidth after it before the
+    neighbour's flank rises above it (a quarter of the bandwidth reached there: hunt h94b). An
+    undamped peak (its response singular) is kept."""
     if not np.isfinite(critical.amplification_factor):
         return True
-    step = max(_bandwidth(critical) / 4.0, 1e-9 * critical.speed)
+    step = max(_bandwidth(critical) / 20.0, 1e-9 * critical.speed)
     speeds = critical.speed + np.array([-step, 0.0, step])
     try:
         envelope = _shaft_orbits(model, imbalance_response(model, speeds, loads)).max(axis=(0, 1))
@@ -228,8 +240,9 @@ def _near_sample(critical: LateralCritical, spacing: float) -> float:
 
 @dataclass(frozen=True)
 class _Seed:
-    """Where to look for a peak the scan stepped over (:func:`_hidden_resonances`): the root's
-    real part and |Im| [rad/s], the node and load case, the unresolved peak it may replace."""
+    """Where to look for a peak the scan stepped over (:func:`_hidden_resonances`): the speed of
+    the projected orbit's maximum near the root and the root's |Im| [rad/s], the node and load
+    case, the unresolved peak it may replace."""
 
     speed: float
     width: float
@@ -239,15 +252,17 @@ class _Seed:
 
 
 def _seed_samples(seed: _Seed) -> np.ndarray:
-    """Speeds [rad/s] across a seed root's half-power band, Re Ω ± (1, 2, 4) |Im Ω| and Re Ω
-    itself: the refinement starts from a bandwidth it can measure (one sample at the vertex
-    gives the half-power interpolation nothing between it and the scan's far samples, and an
-    estimate orders of magnitude too small). They lie on a lattice: |Im Ω| rounded to a power
-    of two, Re Ω to a 64th of that, so that two bases whose roots agree to round-off (the scan's
-    reduced basis, the span of its full responses) start the same refinement."""
+    """Speeds [rad/s] across a seed root's half-power band, its maximum ± (1, 2, 4) |Im Ω|, the
+    maximum itself and ± |Im Ω|/8 (:data:`_SEED_STEPS`): the refinement starts from a bandwidth
+    it can measure (one sample at the vertex gives the half-power interpolation nothing between
+    it and the scan's far samples, and an estimate orders of magnitude too small) and from a
+    sample above its neighbours at the maximum (which :func:`resolve_peak` follows). They lie
+    on a lattice: |Im Ω| rounded to a power of two, the speed to a 64th of that, so that two
+    bases whose roots agree to round-off (the scan's reduced basis, the span of its full
+    responses) start the same refinement."""
     step = 2.0 ** np.round(np.log2(max(seed.width, 1e-9 * seed.speed)))
     centre = np.round(seed.speed / (step / 64.0)) * (step / 64.0)
-    return centre + np.array([-4.0, -2.0, -1.0, 0.0, 1.0, 2.0, 4.0]) * step
+    return centre + _SEED_STEPS * step
 
 
 def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | None) -> list[_Seed]:
@@ -256,14 +271,16 @@ def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | 
     reduced basis, else on its responses) that no peak ``found`` holds (none within its
     half-power band Re Ω_k ± |Im Ω_k|), whose band is narrower than :data:`_SHOWN_SAMPLES`
     scan intervals, and around which the projected model's orbit (the largest over the shaft's
-    nodes and the load cases, at Re Ω_k ± (0.5, 1, 2) |Im Ω_k|) has a maximum of its own (a
-    sample above its neighbours, though a taller neighbour may set the window's edge). That
+    nodes and the load cases, at Re Ω_k + (−2 … 2) |Im Ω_k|, :data:`_AROUND_ROOT`) has a maximum
+    of its own (a sample above its neighbours, though a taller neighbour may set the window's
+    edge or peak inside it; the maximum nearest Re Ω_k is the root's). That
     is a peak narrower than the samples' spacing (it falls between two of them), or one whose
     broader neighbour swamps it on the samples (two bumps sampled as one); a root the imbalance
     does not excite shows no such maximum. A peak found but left unresolved whose nearest root
     is this one is the same resonance, its refinement stalled: the seed ``replaces`` it when it
-    refines to a larger peak. The seed's speed, node and case: the projected model's largest
-    orbit there."""
+    refines to a larger peak. The seed's speed: that maximum of the projected model's orbit,
+    located between the samples either side of it (:func:`_window_maximum`); its node and
+    case: the largest orbit there."""
     if span is None or speeds.size < 2:
         return []
     solver = solver_for(model)
@@ -310,16 +327,38 @@ def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | 
         level = orbit.max(axis=(0, 1))
         if not np.all(np.isfinite(level)):
             continue
-        # its own maximum: the largest sample above its neighbours, even where a taller resonance
-        # nearby sets the window's edge (that one has its root; docs/requirements.md: each local
-        # maximum of the envelope is a critical speed)
+        # its own maximum: a sample above its neighbours, even where a taller resonance nearby
+        # sets the window's edge or peaks inside it (that one has its root: the maximum nearest
+        # Re Ω is this root's; docs/requirements.md: each local maximum of the envelope is a
+        # critical speed)
         own = np.flatnonzero((level[1:-1] > level[:-2]) & (level[1:-1] >= level[2:])) + 1
         if own.size == 0:  # no maximum of its own there
             continue
-        k = int(own[np.argmax(level[own])])
-        node, case = np.unravel_index(int(np.argmax(orbit[:, :, k])), orbit.shape[:2])
-        out.append(_Seed(float(grid[k]), width, int(node), int(case), replaces))
+        k = int(own[np.argmin(np.abs(grid[own] - speed))])
+        at = _window_maximum(lambda x: orbits_at(np.array([x]))[:, :, 0], grid[k - 1 : k + 2], width)
+        peak = orbits_at(np.array([at]))[:, :, 0]
+        node, case = np.unravel_index(int(np.argmax(peak)), peak.shape)
+        out.append(_Seed(at, width, int(node), int(case), replaces))
     return out
+
+
+def _window_maximum(orbit: Callable[[float], np.ndarray], bracket: np.ndarray, width: float) -> float:
+    """The speed [rad/s] of the largest orbit (over nodes and cases) between ``bracket``'s ends,
+    a sample above them in its middle: a bounded scalar search to 1e-4 of ``width``,
+    the middle sample when the search ends lower (a maximum beside a taller neighbour's flank
+    can lie a few tenths of |Im Ω| from Re Ω, which the refinement must start from)."""
+    try:
+        found = scipy.optimize.minimize_scalar(
+            lambda x: -float(orbit(x).max()),
+            bounds=(float(bracket[0]), float(bracket[2])),
+            method="bounded",
+            options={"xatol": 1e-4 * width},
+        )
+    except np.linalg.LinAlgError:  # the projected problem singular there (an undamped root)
+        return float(bracket[1])
+    if not (found.success and -found.fun >= float(orbit(float(bracket[1])).max())):
+        return float(bracket[1])
+    return float(found.x)
 
 
 def _seed_span(model: Model, loads, start: PeakBasis | None, basis, responses) -> PeakBasis | None:
