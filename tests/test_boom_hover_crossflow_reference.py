@@ -9,7 +9,8 @@ References, typed here independently of flexshaft.thermal.tailboom:
 * Churchill & Bernstein (1977), as printed by the htcie correlation docs
   (alinbobolea.github.io/docs/htcie/correlations/external.html) and boardflare's Nu_cyl_CB:
   Nu_D = 0.3 + 0.62 Re^½ Pr^⅓ / [1 + (0.4/Pr)^⅔]^¼ · [1 + (Re/282000)^⅝]^⅘
-  (their worked value Nu(6071, 0.7) = 40.6371 is checked below);
+  (boardflare's worked value, boardflare.com/tools/engineering/heat-transfer/conv-external/Nu_cyl_CB,
+  Nu(6071, 0.7) = 40.6371, is checked below);
 * skin balance (thesis eq. 2.55) α_s G s = εσ(T⁴ − T_sky⁴) + h (T − T_amb), h = Nu k / D.
 
 The dynamic viscosity, conductivity and Prandtl number come from
@@ -69,7 +70,9 @@ def test_hover_reynolds_is_downwash_diameter_over_kinematic_viscosity(pressure):
 def test_tailboom_temperatures_forward_the_chosen_correlation():
     """With method="churchill_bernstein", the hover Nusselt number is Churchill-Bernstein's at
     the hand Re_D and the film Pr, and the hover skin closes eq. 2.55 with that h; the parked
-    skin (free convection) does not depend on the forced-convection choice."""
+    skin does not depend on the forced-convection choice, by the documented rule
+    (docs/thermal.md): `boom_convection` is the "hover correlation: Hilpert (thesis eq. 2.57) or
+    `"churchill_bernstein"`", while "Parked: free convection, Churchill–Chu (eq. 2.59)"."""
     env, D = ThermalEnvironment(), 0.45
     both = tailboom_temperatures(D, env, "churchill_bernstein")
     hover = both["hover"]

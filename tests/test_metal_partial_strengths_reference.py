@@ -6,10 +6,11 @@ Documented rule: :class:`~flexshaft.design.materials.Isotropic` makes each of ``
 and the first-cycle yield check S_y (Shigley eqs. 7-7, 7-16), so with one of them missing
 neither safety factor exists. :func:`~flexshaft.analyses.metal_strength.metal_strength`
 documents: "Empty (``evaluated`` False) when no isotropic segment gives its strengths", and its
-note names the segment whose material "gives no yield_strength, ultimate_strength and
-fatigue_strength". A material giving S_y and S_ut but no S_e (a common case: the endurance limit
-of the part is not known yet) must therefore give an empty result with that note, not a failed
-analysis; the same holds for every single strength left out.
+note names the segment and the strength its material leaves out ("(missing: fatigue_strength)";
+review r115: the note used to read "gives no yield_strength, ultimate_strength and
+fatigue_strength" when only one was missing, as if none were given). A material giving S_y
+and S_ut but no S_e (a common case: the endurance limit of the part is not known yet) must
+therefore give an empty result with that note, not a failed analysis; the same holds for every single strength left out.
 
 The buckling record does not need the strengths: its critical torque is the tube's, checked
 against Timoshenko & Gere (1961) sec. 11.12's long-tube τ_cr = E/(3√2 (1 − ν²)^{3/4}) (t/r)^{3/2}
@@ -65,7 +66,7 @@ def test_one_missing_strength_leaves_the_segment_unchecked(missing):
     assert not result.evaluated
     assert result.x.size == 0
     (note,) = result.notes
-    assert "gives no yield_strength, ultimate_strength and fatigue_strength" in note
+    assert f"(missing: {missing})" in note
     (b,) = result.buckling
     torque = POWER / (RPM * 2 * math.pi / 60)
     assert b.torque == pytest.approx(torque, rel=1e-12)

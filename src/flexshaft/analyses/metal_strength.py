@@ -245,11 +245,13 @@ def metal_strength(
         if material.kind != "isotropic":
             continue
         isotropic.append(index)
-        given = [getattr(material, f) for f in ("yield_strength", "ultimate_strength", "fatigue_strength")]
+        names = ("yield_strength", "ultimate_strength", "fatigue_strength")
+        given = [getattr(material, f) for f in names]
         if any(v is None for v in given):
+            missing = ", ".join(f for f, v in zip(names, given) if v is None)
             notes.append(
-                f"segment {seg.name}: material {seg.material} gives no yield_strength, "
-                "ultimate_strength and fatigue_strength"
+                f"segment {seg.name}: material {seg.material} does not give all of yield_strength, "
+                f"ultimate_strength and fatigue_strength (missing: {missing}); its strength is not checked"
             )
             continue
         strengths[index] = given
