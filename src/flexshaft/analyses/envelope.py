@@ -233,8 +233,8 @@ def growing_whirl(lam: np.ndarray, speed: float) -> bool:
     An envelope eigenvalue is λ = s − iΩ (the frame rotation, :meth:`EnvelopeSystem.matrix`), so
     the mode's s = λ + iΩ. It grows when ζ = −Re s/|s| is below
     −:data:`~flexshaft.analyses.stability.STABILITY_TOLERANCE`, the rule of the whirl-stability
-    analysis: an undamped mode's real part is round-off (±1e-9 1/s on a
-    conservative tube), not an instability. A root near s = 0 (|s| below
+    analysis: an undamped mode's real part is round-off (±1e-9 1/s on a conservative tube),
+    not an instability. A root near s = 0 (|s| below
     :data:`~flexshaft.analyses.eigen.DIVERGENCE_TOLERANCE` × the largest |s|, a rigid-body mode)
     grows only beyond that bound, as the eigen-analyses count a divergence.
     """
@@ -261,7 +261,7 @@ class EnvelopeRun:
     refreshes: int
     max_condition: float
     max_growth_rate: float
-    growing: bool = False  # a reference basis held a growing free whirl (:func:`growing_whirl`)
+    growing: bool  # a reference basis held a growing free whirl (:func:`growing_whirl`)
 
 
 def integrate_envelope(
