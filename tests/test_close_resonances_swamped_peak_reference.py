@@ -49,9 +49,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import scipy.optimize
-from rotors import K_SHAFT, M_DISK, WN
-from test_close_resonances_any_sampling_reference import ECCENTRICITY, _damping, _model
+from rotors import WN
+from test_close_resonances_any_sampling_reference import _closed_form_maxima, _model
 
 from flexshaft.analyses.criticals import lateral_critical_speeds
 
@@ -69,35 +68,12 @@ CASES = [
 ]
 
 
-def _closed_form_maxima(separation: float, zeta_v: float, zeta_w: float) -> np.ndarray:
-    """The local maxima [rad/s] of the closed-form orbit (module docstring) within ±10 % of ω_n."""
-    k_v, c_v, c_w = _damping(separation, zeta_v, zeta_w)
-
-    def orbit(speed):
-        force = M_DISK * ECCENTRICITY * speed**2
-        a = force / (K_SHAFT + k_v - M_DISK * speed**2 + 1j * c_v * speed)
-        b = -1j * force / (K_SHAFT - M_DISK * speed**2 + 1j * c_w * speed)
-        return np.sqrt((abs(a) ** 2 + abs(b) ** 2 + abs(a * a + b * b)) / 2)
-
-    grid = np.linspace(0.9 * WN, 1.1 * WN, 200001)  # 1e-6 ω_n apart, 1/1000 of the v band at ζ_v = 5e-4
-    level = orbit(grid)
-    bracketed = np.flatnonzero((level[1:-1] > level[:-2]) & (level[1:-1] > level[2:])) + 1
-    return np.array(
-        [
-            scipy.optimize.minimize_scalar(
-                lambda s: -orbit(s), bounds=(grid[i - 1], grid[i + 1]), method="bounded", options={"xatol": 1e-9 * WN}
-            ).x
-            for i in bracketed
-        ]
-    )
-
-
 @pytest.mark.parametrize(("separation", "zeta_v", "zeta_w", "n_points", "maxima"), CASES)
 def test_every_closed_form_maximum_is_a_critical_speed(separation, zeta_v, zeta_w, n_points, maxima):
     """As many criticals between 0.9 and 1.1 ω_n as the closed form has maxima there (two, or
     one at the shoulder control), each within a 20th of its own resonance's bandwidth: the
     w maximum's (near ω_n) and the v one's (near (1 + s) ω_n)."""
-    expected = _closed_form_maxima(separation, zeta_v, zeta_w)
+    expected = _closed_form_maxima(separation, zeta_v, zeta_w, span=0.1)
     assert expected.size == maxima
     model = _model(separation, zeta_v, zeta_w)
     found = np.array(

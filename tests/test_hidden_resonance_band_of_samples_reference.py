@@ -40,42 +40,18 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import scipy.optimize
-from rotors import K_SHAFT, M_DISK, WN
-from test_close_resonances_any_sampling_reference import ECCENTRICITY, _damping, _model
+from rotors import WN
+from test_close_resonances_any_sampling_reference import _closed_form_maxima, _model
 
 from flexshaft.analyses.criticals import lateral_critical_speeds
 
 SEPARATION, ZETA_V, ZETA_W = 0.012, 0.001, 0.006
 
 
-def _closed_form_maxima() -> np.ndarray:
-    """The local maxima [rad/s] of the closed-form orbit (module docstring) within ±5 % of ω_n."""
-    k_v, c_v, c_w = _damping(SEPARATION, ZETA_V, ZETA_W)
-
-    def orbit(speed):
-        force = M_DISK * ECCENTRICITY * speed**2
-        a = force / (K_SHAFT + k_v - M_DISK * speed**2 + 1j * c_v * speed)
-        b = -1j * force / (K_SHAFT - M_DISK * speed**2 + 1j * c_w * speed)
-        return np.sqrt((abs(a) ** 2 + abs(b) ** 2 + abs(a * a + b * b)) / 2)
-
-    grid = np.linspace(0.95 * WN, 1.05 * WN, 100001)  # 1e-6 ω_n apart, 1/2000 of the v band
-    level = orbit(grid)
-    bracketed = np.flatnonzero((level[1:-1] > level[:-2]) & (level[1:-1] > level[2:])) + 1
-    return np.array(
-        [
-            scipy.optimize.minimize_scalar(
-                lambda s: -orbit(s), bounds=(grid[i - 1], grid[i + 1]), method="bounded", options={"xatol": 1e-9 * WN}
-            ).x
-            for i in bracketed
-        ]
-    )
-
-
 @pytest.mark.parametrize("n_points", [313, 417])
 def test_swamped_resonance_a_few_intervals_wide_is_a_critical_speed(n_points):
     """Both closed-form maxima are critical speeds, each to a 20th of its own bandwidth."""
-    expected = _closed_form_maxima()
+    expected = _closed_form_maxima(SEPARATION, ZETA_V, ZETA_W, span=0.05)
     assert expected.size == 2
     model = _model(SEPARATION, ZETA_V, ZETA_W)
     found = sorted(
