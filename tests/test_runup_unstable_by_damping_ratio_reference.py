@@ -12,7 +12,8 @@ References, derived here:
 * the rule itself on hand-made envelope eigenvalues λ = s − iΩ (the frame rotation of the
   run's complex envelopes): s = 1e-12 + 1000i (ζ = −1e-15) does not grow, s = 1e-3 + 1000i
   (ζ = −1e-6) does; a rigid-body root s = 1e-10 beside a mode of |s| = 1e4 is round-off (below
-  the eigen-analyses' divergence bound 1e-6 × 1e4 = 0.01 1/s), s = 0.5 is a divergence;
+  the eigen-analyses' divergence bound 1e-6 × the largest basis frequency 1e4 = 0.01 1/s),
+  s = 0.5 is a divergence, also beside a controller's fast pole (the bound is the structure's);
 * a conservative Jeffcott rotor (no loss, no damper): every root on the imaginary axis, so no
   run of it is unstable, whatever the sign of its round-off;
 * the Jeffcott rotor with a rotating-frame loss η = 0.02 and no external damping
@@ -37,18 +38,21 @@ ETA = 0.02
 
 
 @pytest.mark.parametrize(
-    ("roots", "grows"),
+    ("roots", "scale", "grows"),
     [
-        ([-1.0 + 1000j, 1e-12 + 1000j], False),
-        ([-1.0 + 1000j, 1e-3 + 1000j], True),
-        ([1e-10 + 0j, -1.0 + 1e4j], False),
-        ([0.5 + 0j, -1.0 + 1e4j], True),
+        ([-1.0 + 1000j, 1e-12 + 1000j], 1e3, False),
+        ([-1.0 + 1000j, 1e-3 + 1000j], 1e3, True),
+        ([1e-10 + 0j, -1.0 + 1e4j], 1e4, False),
+        ([0.5 + 0j, -1.0 + 1e4j], 1e4, True),
+        ([0.5 + 0j, -1.0 + 1e4j, -6.3e6 + 0j], 1e4, True),
     ],
 )
-def test_the_damping_ratio_rule_on_hand_made_roots(roots, grows):
+def test_the_damping_ratio_rule_on_hand_made_roots(roots, scale, grows):
+    """``scale``: the largest basis frequency [rad/s]; the last case adds a 1 MHz amplifier's
+    pole, which must not raise the divergence bound over the real root 0.5 1/s (review r116)."""
     speed = 300.0
     lam = np.array(roots) - 1j * speed  # the envelope eigenvalues of these modes
-    assert growing_whirl(lam, speed) is grows
+    assert growing_whirl(lam, speed, scale) is grows
 
 
 def _held(model, speed: float, duration: float = 1.0):

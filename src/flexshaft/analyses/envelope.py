@@ -227,22 +227,23 @@ class _Basis:
         return self.Vinv @ Zhat
 
 
-def growing_whirl(lam: np.ndarray, speed: float) -> bool:
+def growing_whirl(lam: np.ndarray, speed: float, scale: float) -> bool:
     """Whether the envelope eigenvalues λ at the reference speed Ω hold a free whirl that grows.
 
     An envelope eigenvalue is λ = s − iΩ (the frame rotation, :meth:`EnvelopeSystem.matrix`), so
     the mode's s = λ + iΩ. It grows when ζ = −Re s/|s| is below
     −:data:`~flexshaft.analyses.stability.STABILITY_TOLERANCE`, the rule of the whirl-stability
     analysis: an undamped mode's real part is round-off (±1e-9 1/s on a conservative tube),
-    not an instability. A root near s = 0 (|s| below
-    :data:`~flexshaft.analyses.eigen.DIVERGENCE_TOLERANCE` × the largest |s|, a rigid-body mode)
-    grows only beyond that bound, as the eigen-analyses count a divergence.
+    not an instability. A root near s = 0 (|s| at most
+    :data:`~flexshaft.analyses.eigen.DIVERGENCE_TOLERANCE` × ``scale``, the largest basis
+    frequency [rad/s], at least 1: a rigid-body mode's round-off) does not count, as the eigen
+    analyses count a divergence. The scale is the structure's, not the spectrum's: a fast
+    controller pole (an amplifier's 1 MHz) must not raise the bound over a real divergence.
     """
     s = np.asarray(lam) + 1j * speed
     size = np.abs(s)
-    floor = DIVERGENCE_TOLERANCE * float(size.max(initial=0.0))
-    grows = s.real > STABILITY_TOLERANCE * size
-    return bool(np.any(grows & ((size > floor) | (s.real > floor))))
+    floor = DIVERGENCE_TOLERANCE * max(scale, 1.0)
+    return bool(np.any((s.real > STABILITY_TOLERANCE * size) & (size > floor)))
 
 
 def _quantise(h: float) -> float:
@@ -361,7 +362,7 @@ def integrate_envelope(
 
     basis = _Basis(system, speed(0.0))
     refreshes, max_condition, growth = 1, basis.condition, float(basis.lam.real.max())
-    growing = growing_whirl(basis.lam, basis.speed)
+    growing = growing_whirl(basis.lam, basis.speed, float(system.omega.max()))
     exponent, growth_limit = 0.0, float(np.log(MAX_GROWTH))  # ∫ max(0, growth rate) dt so far
     w = basis.to_modal(S * z)
     with warnings.catch_warnings():  # a scale for the error only: an ill-conditioned solve is good enough
@@ -380,7 +381,7 @@ def integrate_envelope(
                 refreshes += 1
                 max_condition = max(max_condition, basis.condition)
                 growth = max(growth, float(basis.lam.real.max()))
-                growing = growing or growing_whirl(basis.lam, basis.speed)
+                growing = growing or growing_whirl(basis.lam, basis.speed, float(system.omega.max()))
             h = min(h, stop - t)
             N_start = drift_and_load(basis, w[:, None], np.array([t]), until)[:, 0]
             big, half = etd(basis, w, t, np.array([h, 0.5 * h]), N_start, until).T

@@ -161,12 +161,13 @@ class TransientResult:
         Accepted and rejected steps, eigenbasis refreshes of the integration.
     max_growth_rate : float
         Largest real part of the system's eigenvalues at the reference speeds of the run
-        [1/s]: negative, the slowest decay; round-off (about ±1e-9 1/s) when a mode is
-        undamped.
+        [1/s]: the fastest growth of an unstable run, the slowest decay of a stable one;
+        round-off (about ±1e-9 1/s) when a mode is undamped.
     unstable : bool
         A free whirl grows inside the run's speed range (the response there grows whatever
         the imbalance): a mode's damping ratio below −STABILITY_TOLERANCE, the rule of
-        :func:`flexshaft.analyses.stability` (:func:`flexshaft.analyses.envelope.growing_whirl`).
+        :func:`flexshaft.analyses.stability`, a real root only above DIVERGENCE_TOLERANCE × the
+        largest basis frequency (:func:`flexshaft.analyses.envelope.growing_whirl`).
     """
 
     time: np.ndarray

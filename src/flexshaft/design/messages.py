@@ -313,7 +313,7 @@ def _translate(item: Any, loc: tuple[Any, ...], data: Any) -> Problem:
             return Problem(path, f"must have exactly {len(args)} values (got {_got(value)})")
         bound = ctx.get("min_length") if kind == "too_short" else ctx.get("max_length")
         word = "at least" if kind == "too_short" else "at most"
-        actual = len(value) if isinstance(value, (list, tuple)) else ctx.get("actual_length", "?")
+        actual = len(value) if isinstance(value, (list, tuple, dict)) else ctx.get("actual_length", "?")
         return Problem(path, f"must have {word} {bound} items (got {actual})")
     if kind in ("dict_type", "model_type", "model_attributes_type", "mapping_type"):
         return Problem(path, f"must be a table (got {_got(value)})")
