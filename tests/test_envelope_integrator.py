@@ -37,6 +37,7 @@ def test_a_free_state_turns_with_the_integral_of_a_quadratic_speed():
     system = SimpleNamespace(
         n=1,
         scale=np.ones(1),
+        frequency=1.0,
         b=np.zeros(1, complex),
         matrix=lambda speed: np.array([[1j * (w0 - speed)]]),
         drift=lambda speeds, reference, Z: np.zeros_like(Z),
@@ -67,6 +68,7 @@ def test_the_steps_are_fourth_order_on_a_drifting_forced_mode():
     system = SimpleNamespace(
         n=1,
         scale=np.ones(1),
+        frequency=1.0,
         b=np.ones(1, complex),
         matrix=lambda speed: np.array([[a + kappa * speed]]),
         drift=lambda speeds, reference, Z: kappa * (np.asarray(speeds) - reference) * Z,

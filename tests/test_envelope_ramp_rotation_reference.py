@@ -44,6 +44,7 @@ def _end_state(h: float, beta: float) -> complex:
     system = SimpleNamespace(
         n=1,
         scale=np.ones(1),
+        frequency=1.0,
         b=np.ones(1, complex),
         matrix=lambda speed: np.array([[A - 1j * speed]]),  # the mode and the frame rotation −iΩ
         drift=lambda speeds, reference, Z: np.zeros_like(Z),  # no gyroscopic or loss drift

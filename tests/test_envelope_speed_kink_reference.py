@@ -31,6 +31,7 @@ def _free_mode(w0: float) -> SimpleNamespace:
     return SimpleNamespace(
         n=1,
         scale=np.ones(1),
+        frequency=1.0,
         b=np.zeros(1, complex),
         matrix=lambda speed: np.array([[1j * (w0 - speed)]]),
         drift=lambda speeds, reference, Z: np.zeros_like(Z),

@@ -43,6 +43,7 @@ def _system():
     return SimpleNamespace(
         n=2,
         scale=np.array([W0, 1.0]),
+        frequency=W0,
         b=b,
         matrix=matrix,
         drift=lambda speeds, reference, Z: np.zeros_like(Z),

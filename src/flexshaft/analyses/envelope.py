@@ -127,6 +127,7 @@ class EnvelopeSystem:
             raise NotImplementedError("the reduced model's state matrix is not affine in the speed")
         omega = np.sqrt(np.clip(red.w2, 0.0, None))
         self.omega = np.maximum(omega, max(1e-6 * omega.max(), 1e-3))
+        self.frequency = float(self.omega.max())  # the largest basis frequency [rad/s]
         d0 = 1.0 / np.sqrt(self.omega)
         rotating = model.internal_damping != "thesis"
         fixed = red.F if rotating else red.F + red.L
@@ -362,7 +363,7 @@ def integrate_envelope(
 
     basis = _Basis(system, speed(0.0))
     refreshes, max_condition, growth = 1, basis.condition, float(basis.lam.real.max())
-    growing = growing_whirl(basis.lam, basis.speed, float(system.omega.max()))
+    growing = growing_whirl(basis.lam, basis.speed, system.frequency)
     exponent, growth_limit = 0.0, float(np.log(MAX_GROWTH))  # ∫ max(0, growth rate) dt so far
     w = basis.to_modal(S * z)
     with warnings.catch_warnings():  # a scale for the error only: an ill-conditioned solve is good enough
@@ -381,7 +382,7 @@ def integrate_envelope(
                 refreshes += 1
                 max_condition = max(max_condition, basis.condition)
                 growth = max(growth, float(basis.lam.real.max()))
-                growing = growing or growing_whirl(basis.lam, basis.speed, float(system.omega.max()))
+                growing = growing or growing_whirl(basis.lam, basis.speed, system.frequency)
             h = min(h, stop - t)
             N_start = drift_and_load(basis, w[:, None], np.array([t]), until)[:, 0]
             big, half = etd(basis, w, t, np.array([h, 0.5 * h]), N_start, until).T
