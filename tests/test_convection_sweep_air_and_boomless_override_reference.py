@@ -18,13 +18,18 @@ References (documented rules and the correlations typed by hand):
   the correlation entry's label carries Kendoush's h, Nu_D = 0.6366 (Re_ω Pr)^{1/2} (typed as
   :mod:`flexshaft.thermal.correlations` states it; a wiring check of the override, not of the
   correlation), rounded to whole W/(m² K); Becker's h is 1.8 times it on this shaft (checked),
-  a different label. The correlation entry and the design's own wall entry are the shaft of the
-  summary itself (same heat, same h, same air), so their peak rises equal the summary's
-  ``peak_rise_K`` of the asked loss model.
+  a different label. The correlation entry and the design's own wall entry are the design's
+  shaft at Kendoush's h, the ``h = 20 W/m²K`` entry the same shaft at h = 20. With the local
+  heat balance q' = h π D ΔT (derived here; the shaft's axial conduction is small on this
+  design) the peak rise scales as 1/h at the same heat, so either entry over the h = 20 entry
+  is 20 / h_Kendoush; under Becker's h it would be 20 / 146.7 = 0.136 instead of 0.251.
 
 Tolerances: the correlation is one formula on the same air properties (rel 1e-12, round-off of
-a few powers); the peak rises come from the same tridiagonal solve on the same inputs, equal to
-round-off (rel 1e-9, far above it and far below the 80 vs 144 W/(m² K) difference).
+a few powers). The 1/h scaling leaves out the axial conduction, which spreads the heat and
+lowers the peak less where h is larger: measured, rise(h = 5) / rise(h = 20) = 3.9948 against
+4 (0.13 %) and the correlation entry's ratio 0.25128 against 20 / h_Kendoush = 0.25120
+(0.03 %); rel 1e-2 is several times that correction and far below the 80 vs 147 W/(m² K)
+difference (46 %).
 
 Written for the mutations h99e-convection-sweep-air-ambient and
 h99e-summary-sweeps-no-boom-options of scripts/mutations.toml.
@@ -94,8 +99,8 @@ def test_a_boomless_designs_sweeps_follow_the_convection_override():
     shown = re.search(r"h = (\d+) W", label)
     assert shown is not None and int(shown.group(1)) == round(h_kendoush)
 
-    peak = out["shaft_thesis_loss_model"]["peak_rise_K"]
-    assert peak > 0.0
-    assert by_h[label] == pytest.approx(peak, rel=1e-9)
+    assert out["shaft_thesis_loss_model"]["peak_rise_K"] > 0.0
+    at_20 = by_h["h = 20 W/m²K"]
+    assert by_h[label] / at_20 == pytest.approx(20.0 / h_kendoush, rel=1e-2)
     wall = f"wall {design.shaft.wall_thickness * 1e3:.1f} mm"
-    assert out["peak_rise_K_by_wall"][wall] == pytest.approx(peak, rel=1e-9)
+    assert out["peak_rise_K_by_wall"][wall] / at_20 == pytest.approx(20.0 / h_kendoush, rel=1e-2)
