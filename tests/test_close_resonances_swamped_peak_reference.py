@@ -25,6 +25,13 @@ only a shoulder (the orbit's slope there falls to 1.7 % of its value per ζ_w ω
 positive): one maximum, one critical speed (its w root is seeded and its window shows only the
 v maximum, which refines to the v peak already found).
 
+A merged peak (s = 0.035, ζ_v = 0.02, ζ_w = 0.03: one maximum, at 1.0329317 ω_n, AF about 17)
+whose w root lies 0.033 ω_n from it, outside the found peak's band, is seeded; the window shows
+only the merged maximum, and the seed's refinement lands 4-6e-5 of the speed from the scan's
+(40-60 times the 1e-6 of an exact repeat, 2 % of a 20th of the bandwidth): one resonance, one
+critical (review r117: this is where a refinement that found a peak already found is told
+apart from a new one, by a 20th of its bandwidth).
+
 Before the fix (hunt h94b; on the scans of 188-586 points to 1.56 ω_n the w root's |Im Ω| is
 1.2-3.1 scan intervals, under the 4 below which it is seeded,
 :func:`~flexshaft.analyses.criticals._hidden_resonances`), only the v
@@ -65,6 +72,9 @@ CASES = [
     (0.02, 0.002, 0.01, 188, 2),
     (0.015, 0.002, 0.0085, 235, 1),
     (0.015, 0.002, 0.0085, 313, 1),
+    (0.035, 0.02, 0.03, 50, 1),
+    (0.035, 0.02, 0.03, 56, 1),
+    (0.035, 0.02, 0.03, 60, 1),
 ]
 
 

@@ -4,7 +4,8 @@ A [+45] carbon/epoxy tube (0.2 m long, 101.6 mm, 3 mm) whose ply is given a soft
 shear modulus G₁₃ = 0.2 GPa in the fibre-thickness plane buckles in two different ways in
 the two senses of the torque. The shear-crimping limit of :mod:`flexshaft.buckling` (derived
 here from its documented A-matrix closed form, as in tests/test_buckling_weaker_sense_reference.py):
-for plies at +45°, A44 = A55 = k t (G₁₃ + G₂₃)/2, A45 = k t (G₁₃ − G₂₃)/2, so
+for plies at +45° (the standard rotation Q̄44, Q̄55 = G₁₃ cos²θ + G₂₃ sin²θ and its mirror,
+Q̄45 = (G₁₃ − G₂₃) cos θ sin θ), A44 = A55 = k t (G₁₃ + G₂₃)/2, A45 = k t (G₁₃ − G₂₃)/2, so
 T = 2πR²(√(A44 A55) ∓ A45) gives T₊ = 2πR² k t G₂₃ and T₋ = 2πR² k t G₁₃, with
 R = (D − t)/2 = 49.3 mm the mid-surface radius, k = 5/6 the lamina's default shear
 correction and G₂₃ = E_T/3 = 2.667 GPa the default (ν₂₃ = 0.5,
@@ -16,7 +17,8 @@ correction and G₂₃ = E_T/3 = 2.667 GPa the default (ν₂₃ = 0.5,
   limit, n → ∞).
 * Positive sense: the critical torque is far below its crimping limit T₊ (under a tenth of it,
   where a shorter-wave shear mode would sit near T₊) with a small wave number, the long-wave
-  helix: "global helical".
+  helix: "global helical". These two bounds are qualitative (chosen, not derived: the code
+  gives 0.071 T₊ and n = 4); the negative sense alone carries the catch.
 
 So a report that gives one sense the other's governing mode fails one of the two. Tolerance
 1e-9 on T₋: a few products and one square-root difference of the closed form (about 1e-15

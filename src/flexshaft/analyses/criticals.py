@@ -64,7 +64,7 @@ _SHOWN_SAMPLES = 4.0
 #: Where the projected orbit is evaluated around a root, in |Im Ω| from Re Ω (its half-power
 #: points at ±1), an eighth of it apart: a maximum of its own lies inside, and one on a taller
 #: neighbour's rising flank, whose dip after it is a few tenths of |Im Ω| wide (0.3-0.5 |Im Ω|
-#: for two Jeffcott resonances 1.5-2 |Im Ω| apart), still shows as a sample above its
+#: for two Jeffcott resonances 1.8-2 |Im Ω| apart), still shows as a sample above its
 #: neighbours (half-|Im Ω| steps stepped over it: hunt h94b).
 _AROUND_ROOT = np.linspace(-2.0, 2.0, 33)
 #: Where a seed's refinement starts around its maximum, in powers of two near |Im Ω| (the
@@ -258,7 +258,7 @@ def _seed_samples(seed: _Seed) -> np.ndarray:
     it and the scan's far samples, and an estimate orders of magnitude too small) and from a
     sample above its neighbours at the maximum (which :func:`resolve_peak` follows). They lie
     on a lattice: |Im Ω| rounded to a power of two, the speed to a 64th of that, so that two
-    bases whose roots agree to round-off (the scan's reduced basis, the span of its full
+    bases whose maxima agree to ~1e-7 of |Im Ω| (the scan's reduced basis, the span of its full
     responses) start the same refinement."""
     step = 2.0 ** np.round(np.log2(max(seed.width, 1e-9 * seed.speed)))
     centre = np.round(seed.speed / (step / 64.0)) * (step / 64.0)
