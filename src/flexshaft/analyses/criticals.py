@@ -24,7 +24,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-import scipy.optimize
 
 from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.campbell import Campbell
@@ -347,6 +346,8 @@ def _window_maximum(orbit: Callable[[float], np.ndarray], bracket: np.ndarray, w
     a sample above them in its middle: a bounded scalar search to 1e-4 of ``width``,
     the middle sample when the search ends lower (a maximum beside a taller neighbour's flank
     can lie a few tenths of |Im Ω| from Re Ω, which the refinement must start from)."""
+    import scipy.optimize  # here: a run without a seed never pays its import (tests/test_import.py)
+
     try:
         found = scipy.optimize.minimize_scalar(
             lambda x: -float(orbit(x).max()),
