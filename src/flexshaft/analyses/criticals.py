@@ -27,6 +27,7 @@ import numpy as np
 
 from flexshaft.analyses.banded import SingularSystemError, solver_for
 from flexshaft.analyses.campbell import Campbell
+from flexshaft.analyses.local_projection import golden_maximum
 from flexshaft.analyses.modal import modes
 from flexshaft.analyses.peak_projection import PeakBasis, ProjectedOrbit
 from flexshaft.analyses.response import imbalance_response, orbit_amplitude
@@ -343,23 +344,24 @@ def _hidden_resonances(model, loads, speeds, envelope, found, span: PeakBasis | 
 
 def _window_maximum(orbit: Callable[[float], np.ndarray], bracket: np.ndarray, width: float) -> float:
     """The speed [rad/s] of the largest orbit (over nodes and cases) between ``bracket``'s ends,
-    a sample above them in its middle: a bounded scalar search to 1e-4 of ``width``,
-    the middle sample when the search ends lower (a maximum beside a taller neighbour's flank
-    can lie a few tenths of |Im Ω| from Re Ω, which the refinement must start from)."""
-    import scipy.optimize  # here: a run without a seed never pays its import (tests/test_import.py)
-
+    a sample above them in its middle: the loop margins' golden-section search
+    (:func:`~flexshaft.analyses.local_projection.golden_maximum`, on log Ω) to 1e-4 of
+    ``width``, the middle sample when the search ends lower (a maximum beside a taller
+    neighbour's flank can lie a few tenths of |Im Ω| from Re Ω, which the refinement must start
+    from) or the bracket reaches Ω ≤ 0."""
+    middle = float(bracket[1])
+    if not bracket[0] > 0.0:
+        return middle
+    search = golden_maximum(lambda value: value.real, np.log(bracket[0]), np.log(bracket[2]), 1e-4 * width / middle)
     try:
-        found = scipy.optimize.minimize_scalar(
-            lambda x: -float(orbit(x).max()),
-            bounds=(float(bracket[0]), float(bracket[2])),
-            method="bounded",
-            options={"xatol": 1e-4 * width},
-        )
+        speed = next(search)
+        while True:
+            speed = search.send(complex(orbit(speed).max()))
+    except StopIteration as stop:
+        log_speed, level = stop.value
     except np.linalg.LinAlgError:  # the projected problem singular there (an undamped root)
-        return float(bracket[1])
-    if not (found.success and -found.fun >= float(orbit(float(bracket[1])).max())):
-        return float(bracket[1])
-    return float(found.x)
+        return middle
+    return float(np.exp(log_speed)) if level >= float(orbit(middle).max()) else middle
 
 
 def _seed_span(model: Model, loads, start: PeakBasis | None, basis, responses) -> PeakBasis | None:
