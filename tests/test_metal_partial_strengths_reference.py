@@ -26,35 +26,13 @@ import math
 
 import numpy as np
 import pytest
+from test_metal_buckling_without_strengths_reference import D_O, POWER, RPM, STRENGTHS, WALL, E, G, _tube
 
 from flexshaft.analyses.metal_strength import metal_strength
-from flexshaft.assembly import build_model
-from flexshaft.design import design_from_dict
 
-E, G, RHO = 70.0e9, 26.0e9, 2700.0
-L, D_O, WALL, RPM, POWER = 2.0, 0.05, 0.002, 3000.0, 12e3
-ALL = {"yield_strength": 276e6, "ultimate_strength": 310e6, "fatigue_strength": 100e6}
-
-
-def _tube(strengths: dict):
-    data = {
-        "name": "metal tube",
-        "materials": {"al": {"kind": "isotropic", "E": E, "G": G, "density": RHO, **strengths}},
-        "shaft": {
-            "x_start": 0.0,
-            "x_end": L,
-            "outer_diameter": D_O,
-            "wall_thickness": WALL,
-            "material": "al",
-            "fixed_start": ["u", "v", "w", "theta"],
-            "fixed_end": ["v", "w"],
-        },
-        "bearings": [{"name": "far", "kind": "contact", "x": L, "stiffness": {"u": 0.0}}],
-        "operating": {"speed_rpm": RPM, "power": POWER},
-        "loads": {"eccentricity": 0.0},
-        "mesh": {"shaft_elements": 4},
-    }
-    return build_model(design_from_dict(data))
+# The tube of tests/test_metal_buckling_without_strengths_reference.py (same material, mesh and
+# operating point), with its strengths given one by one here.
+ALL = STRENGTHS
 
 
 @pytest.mark.parametrize("missing", sorted(ALL))

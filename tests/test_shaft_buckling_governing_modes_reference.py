@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from test_shaft_buckling_senses_reference import TUBE as SENSES_TUBE
 
 from flexshaft.analyses.shaft_buckling import shaft_buckling
 from flexshaft.assembly import build_model
@@ -37,41 +38,13 @@ from flexshaft.design import loads_design
 
 L, D, WALL, G13, G23 = 0.2, 0.1016, 0.003, 0.2e9, 8.0e9 / 3
 
-TUBE = f"""
-name = "soft-core one-ply tube"
-[materials.ply]
-kind = "lamina"
-density = 1600.0
-E_L = 120.0e9
-E_T = 8.0e9
-G_LT = 4.0e9
-G_13 = {G13}
-nu_LT = 0.3
-X_t = 2000.0e6
-X_c = 1000.0e6
-Y_t = 40.0e6
-Y_c = 140.0e6
-S = 60.0e6
-[shaft]
-x_start = 0.0
-x_end = {L}
-outer_diameter = {D}
-wall_thickness = {WALL}
-material = "ply"
-layup = "45"
-fixed_start = ["u", "v", "w", "theta"]
-fixed_end = ["v", "w"]
-[[bearings]]
-name = "stop"
-kind = "contact"
-x = {L}
-stiffness = {{}}
-[operating]
-speed_rpm = 4000.0
-power = 150e3
-[mesh]
-shaft_elements = 4
-"""
+#: tests/test_shaft_buckling_senses_reference.py's one-ply tube (same L, D, wall), its ply at +45°
+#: and given the soft G₁₃.
+TUBE = (
+    SENSES_TUBE.replace('name = "one-ply tube"', 'name = "soft-core one-ply tube"')
+    .replace('layup = "ANGLE"', 'layup = "45"')
+    .replace("G_LT = 4.0e9\n", f"G_LT = 4.0e9\nG_13 = {G13}\n")
+)
 
 
 @pytest.fixture(scope="module")
