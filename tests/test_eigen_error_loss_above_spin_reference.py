@@ -30,45 +30,22 @@ in) is the residual of another problem: its correction misses the full root by 1
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
-import scipy.linalg as la
-from test_eigen_accuracy import SHAFT, _dense, _full_root
+from test_eigen_error_rotating_loss_reference import ETA, full_roots, lossy_tube
 
-import flexshaft
-from flexshaft.analyses.campbell import track_modes
-from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.eigen_error import eigenvalue_corrections
-from flexshaft.design import loads_design
 
-ETA = 0.2
 SPEED = 300.0  # rad/s
 
 
 def test_correction_of_roots_above_the_spin_with_the_rotating_loss():
-    text = SHAFT.replace("shaft_elements = 30", "shaft_elements = 8")
-    model = flexshaft.build_model(
-        loads_design(text.replace("density = 7810.0", f"density = 7810.0\nloss_factor = {ETA}"))
-    )
-    assert model.internal_damping == "rotating"
-    matrices = (model.M, model.G, model.C, model.K, model.loss_fixed, model.loss_lateral, model.loss_circulatory)
-    dense = np.stack([_dense(model, A) for A in matrices])
-    omega = np.sqrt(la.eigh(_dense(model, model.K), _dense(model, model.M), eigvals_only=True))
-    omega_c = omega[8]  # the complement's lowest undamped frequency (8-mode basis)
-    red = reduce(model, 8)
-    tracked = track_modes(model, red, np.array([SPEED]), 4)
+    model, dense, omega_c, red, tracked = lossy_tube(SPEED)
     s, Y = tracked.eigenvalues[0], tracked.states[0]
     assert np.all(s.imag > SPEED)  # every root above the spin
     whirl = tracked.whirl[0]
     assert sorted(whirl) == ["backward", "backward", "forward", "forward"]  # each mode's two whirls
     delta = eigenvalue_corrections(red, SPEED, s, Y)
-    X = red.Phi @ Y
-    full = np.empty(s.size, complex)
-    with warnings.catch_warnings():  # T(s) is singular at the root by design: inverse iteration
-        warnings.simplefilter("ignore", la.LinAlgWarning)
-        for m in range(s.size):
-            full[m] = _full_root(model, dense, s[m], X[:, m] / np.linalg.norm(X[:, m]), SPEED)
+    full = full_roots(model, dense, red, s, Y, SPEED)
     for m in range(s.size):
         true = full[m] - s[m]
         assert abs(true) > 1e-5 * abs(s[m])

@@ -40,7 +40,11 @@ ETA = 0.2
 SPEED = 2500.0  # rad/s
 
 
-def test_correction_of_roots_below_the_spin_with_the_rotating_loss():
+def lossy_tube(speed: float):
+    """The 8-element steel tube of tests/test_eigen_accuracy.py with the rotating loss η = ETA:
+    the model, its dense matrices (M, G, C, K and the three loss parts), the complement's lowest
+    undamped frequency over an 8-mode basis, that basis, and its four lowest roots tracked at
+    ``speed``."""
     text = SHAFT.replace("shaft_elements = 30", "shaft_elements = 8")
     model = flexshaft.build_model(
         loads_design(text.replace("density = 7810.0", f"density = 7810.0\nloss_factor = {ETA}"))
@@ -51,17 +55,27 @@ def test_correction_of_roots_below_the_spin_with_the_rotating_loss():
     omega = np.sqrt(la.eigh(_dense(model, model.K), _dense(model, model.M), eigvals_only=True))
     omega_c = omega[8]  # the complement's lowest undamped frequency (8-mode basis)
     red = reduce(model, 8)
-    tracked = track_modes(model, red, np.array([SPEED]), 4)
-    s, Y = tracked.eigenvalues[0], tracked.states[0]
-    assert np.all(s.imag < SPEED)  # every root below the spin
-    assert np.sum(s.real > 0) == 2  # the two forward whirls: unstable
-    delta = eigenvalue_corrections(red, SPEED, s, Y)
+    return model, dense, omega_c, red, track_modes(model, red, np.array([speed]), 4)
+
+
+def full_roots(model, dense, red, s, Y, speed: float) -> np.ndarray:
+    """Each reduced root s polished on the full model by inverse iteration from its own vector."""
     X = red.Phi @ Y
     full = np.empty(s.size, complex)
     with warnings.catch_warnings():  # T(s) is singular at the root by design: inverse iteration
         warnings.simplefilter("ignore", la.LinAlgWarning)
         for m in range(s.size):
-            full[m] = _full_root(model, dense, s[m], X[:, m] / np.linalg.norm(X[:, m]), SPEED)
+            full[m] = _full_root(model, dense, s[m], X[:, m] / np.linalg.norm(X[:, m]), speed)
+    return full
+
+
+def test_correction_of_roots_below_the_spin_with_the_rotating_loss():
+    model, dense, omega_c, red, tracked = lossy_tube(SPEED)
+    s, Y = tracked.eigenvalues[0], tracked.states[0]
+    assert np.all(s.imag < SPEED)  # every root below the spin
+    assert np.sum(s.real > 0) == 2  # the two forward whirls: unstable
+    delta = eigenvalue_corrections(red, SPEED, s, Y)
+    full = full_roots(model, dense, red, s, Y, SPEED)
     for m in range(s.size):
         true = full[m] - s[m]
         assert abs(true) > 1e-4 * abs(s[m])
