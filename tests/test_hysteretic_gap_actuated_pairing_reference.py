@@ -43,8 +43,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from rotors import jeffcott_text
-from scipy.optimize import brentq
-from test_stability import ABOVE, BELOW, pencil_roots
+from test_hysteretic_gap_pairing_reference import gap, on_line_root
 
 from flexshaft.analyses.eigen import reduce
 from flexshaft.analyses.hysteretic_roots import branches, consistent_values, damped_modes, mac_bounds
@@ -72,25 +71,11 @@ def _reduced():
 
 def test_an_actuated_mode_in_a_gap_keeps_its_eigenvalue_on_the_line():
     red = _reduced()
-    speed = 2479.0
-    above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
-    p = above[np.argmin(np.abs(above - 1j * speed))]
-    q = below[np.argmin(np.abs(below - p))]
-    for _ in range(6):  # the speed between the two branch frequencies, which move with it
-        speed = 0.5 * (p.imag + q.imag)
-        above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
-        p, q = above[np.argmin(np.abs(above - p))], below[np.argmin(np.abs(below - q))]
-    assert p.imag < speed < q.imag and q.imag - p.imag > 1e-7 * speed  # a gap, far wider than the band
+    speed, p, q = gap(red)
     # the channel adds to T(s): no overlap bound, every candidate's vector must be solved
     lower = branches(red, speed)[0]
     assert mac_bounds(red, speed, lower.weights, np.array([q]), np.eye(red.size)[:, :1]) is None
-
-    def blended(mu):  # the root of (1 − μ) T₋ + μ T₊ followed from s₋ (μ = 0) towards s₊ (μ = 1)
-        roots = pencil_roots(red, speed, tuple((1 - mu) * b + mu * a for a, b in zip(ABOVE, BELOW)))
-        return roots[np.argmin(np.abs(roots - (q + mu * (p - q))))]
-
-    mu = brentq(lambda m: blended(m).imag - speed, 0.0, 1.0, xtol=1e-15, rtol=1e-15)
-    reference = blended(mu)
+    reference = on_line_root(red, speed, p, q)
     tol = 1e-7 * abs(reference) + 40 * 1e-9 * speed
     for name, s in (
         ("consistent_values", consistent_values(red, speed)),

@@ -59,8 +59,9 @@ def _reduced():
     return reduce(build_model(loads_design(text)), 8)
 
 
-def test_a_circular_whirl_in_a_gap_has_its_one_eigenvalue_on_the_line():
-    red = _reduced()
+def gap(red) -> tuple[float, complex, complex]:
+    """The speed between the branch roots p (of T₊, below the spin) and q (of T₋, above it) of
+    the whirl near 2479 rad/s, and those roots, found by bisecting on their frequencies."""
     speed = 2479.0
     above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
     p = above[np.argmin(np.abs(above - 1j * speed))]
@@ -70,13 +71,24 @@ def test_a_circular_whirl_in_a_gap_has_its_one_eigenvalue_on_the_line():
         above, below = pencil_roots(red, speed, ABOVE), pencil_roots(red, speed, BELOW)
         p, q = above[np.argmin(np.abs(above - p))], below[np.argmin(np.abs(below - q))]
     assert p.imag < speed < q.imag and q.imag - p.imag > 1e-7 * speed  # a gap, far wider than the band
+    return speed, p, q
 
-    def blended(mu):  # the root of (1 − μ) T₋ + μ T₊ followed from s₋ (μ = 0) towards s₊ (μ = 1)
+
+def on_line_root(red, speed: float, p: complex, q: complex) -> complex:
+    """The root on the spin line: that of (1 − μ) T₋ + μ T₊ whose Im s = Ω, followed from q
+    (μ = 0) towards p (μ = 1), μ by brentq."""
+
+    def blended(mu):
         roots = pencil_roots(red, speed, tuple((1 - mu) * b + mu * a for a, b in zip(ABOVE, BELOW)))
         return roots[np.argmin(np.abs(roots - (q + mu * (p - q))))]
 
-    mu = brentq(lambda m: blended(m).imag - speed, 0.0, 1.0, xtol=1e-15, rtol=1e-15)
-    reference = blended(mu)
+    return blended(brentq(lambda m: blended(m).imag - speed, 0.0, 1.0, xtol=1e-15, rtol=1e-15))
+
+
+def test_a_circular_whirl_in_a_gap_has_its_one_eigenvalue_on_the_line():
+    red = _reduced()
+    speed, p, q = gap(red)
+    reference = on_line_root(red, speed, p, q)
     tol = 1e-7 * abs(reference) + 40 * 1e-9 * speed
     for name, s in (
         ("consistent_roots", consistent_roots(red, speed)[0]),
