@@ -1,4 +1,5 @@
-"""A labelled plain array selected twice, and a selection method other than nearest.
+"""A labelled plain array selected twice, a selection method other than nearest, and a
+selection by a coordinate that is not a dimension.
 
 References: xarray itself, which the module stands for (flexshaft/analyses/labelled.py:
 ``LabelledArray.sel`` gives "The values at the coordinate values nearest those given, the
@@ -45,3 +46,15 @@ def test_method_none_is_refused_not_nearest():
         arrays["peak"].sel(alpha=54.0, method=None)
     with pytest.raises(ValueError, match="only 'nearest'"):
         arrays.sel(alpha=54.0, method=None)
+
+
+def test_a_non_dimension_coordinate_is_selected_as_xarray_or_refused():
+    data, coords, attrs = _spec()
+    arrays, ds = LabelledArrays(data, coords, attrs), xr.Dataset(data, coords=coords, attrs=attrs)
+    want = ds.sel(kp=2e6, method="nearest")
+    assert want.sizes.get("case", 1) == 1  # xarray's reference: one case, not both
+    try:
+        got = arrays.sel(kp=2e6)
+    except KeyError:
+        return  # refused: the plain arrays select on dimensions only
+    assert got.to_dataset().identical(want)
