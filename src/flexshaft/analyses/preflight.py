@@ -27,8 +27,9 @@ def model_guards(design: Any) -> list:
     command starts from, each refused error becoming a problem naming the fields that set it:
     the modal basis and the 4 lowest modes at the operating speed (``modes``, ``campbell``,
     ``stability``, ``runup``), the static deflection under the design's loads and torque
-    (strength, bearing loads, thermal) and the imbalance response at the operating speed
-    (spin-up, thermal). About 0.2 s on the baseline.
+    (strength, bearing loads, thermal), the imbalance load cases (``loads.imbalance_placement``:
+    ``"worst"`` beyond its bays) and the imbalance response at the operating speed (spin-up,
+    thermal). About 0.2 s on the baseline.
     """
     import warnings
 
@@ -45,6 +46,7 @@ def model_guards(design: Any) -> list:
             model = build_model(design)
     except DesignError as error:
         return list(error.problems)
+    loads: list = []  # the imbalance load cases, once built
     checks = (
         (
             "shaft.material",
@@ -62,9 +64,14 @@ def model_guards(design: Any) -> list:
             lambda: static_response(model, external_static_load(model) + torque_load(model)),
         ),
         (
+            "loads.imbalance_placement",
+            "the imbalance load cases (spin-up, thermal, bearing loads)",
+            lambda: loads.append(imbalance_loads(model)),
+        ),
+        (
             "operating.speed_rpm",
             "the imbalance response at the operating speed (spin-up, thermal, bearing loads)",
-            lambda: imbalance_response(model, [model.speed], imbalance_loads(model)),
+            lambda: imbalance_response(model, [model.speed], loads[0]),
         ),
     )
     problems = []
@@ -75,6 +82,6 @@ def model_guards(design: Any) -> list:
                 run()
         except ValueError as error:  # SingularSystemError and NonFiniteResultError are ValueErrors
             problems.append(Problem(path, f"{what} is refused: {error}"))
-            if path == "shaft.material":
-                break  # the modes need the basis
+            if path in ("shaft.material", "loads.imbalance_placement"):
+                break  # the modes need the basis, the response its load cases
     return problems

@@ -271,7 +271,7 @@ def problem_size(
     span = design.shaft.x_end - design.shaft.x_start
     bays = len(bearing_bays([b.x for b in design.bearings], merge_tolerance(span, design.mesh.shaft_elements))) or 1
     worst = design.loads.imbalance_placement == "worst"
-    cases = 2 ** (min(bays, MAX_WORST_BAYS + 1) - 1) if worst else 1
+    cases = 2 ** (bays - 1) if worst else 1
     nb = min(RUN_BASIS, free)
     dense = free <= SPARSE_BASIS_ABOVE or nb >= free // 2
     half_band = 24 if boom_x.size else 12
@@ -417,8 +417,13 @@ def check_problem_size(
     hard_time: float = HARD_TIME_SECONDS,
     soft_time: float = SOFT_TIME_SECONDS,
     stacklevel: int = 2,
+    source: str = "<problem size>",
 ) -> ProblemSize:
     """:func:`problem_size`, refused above the hard caps and warned about above the soft ones.
+
+    A refused ``"worst"`` placement is not also counted against the caps: the memory and time
+    are those of the design with one load case (what ``"mid_bay"`` or ``"distributed"`` runs), so
+    a refusal names only what would still be too large once the placement is changed.
 
     Raises
     ------
@@ -426,7 +431,7 @@ def check_problem_size(
         When the ``"worst"`` placement has more than :data:`MAX_WORST_BAYS` bays (``assess``,
         ``run``), or
         an estimate exceeds ``hard_memory`` [bytes] or ``hard_time`` [s]; the message gives the
-        numbers and the fields to change.
+        numbers and the fields to change; ``source`` names the design (its file) in the error.
 
     Warns
     -----
@@ -445,6 +450,8 @@ def check_problem_size(
                 f'{2 ** (MAX_WORST_BAYS - 1)} cases, or "mid_bay" / "distributed")',
             )
         )
+        one_case = design.loads.model_copy(update={"imbalance_placement": "mid_bay"})
+        size = problem_size(design.model_copy(update={"loads": one_case}), analysis, resolution)
     over = []
     if size.memory_bytes > hard_memory:
         over.append(
@@ -469,7 +476,7 @@ def check_problem_size(
                 )
             )
     if problems:
-        raise DesignError(problems, "<problem size>")
+        raise DesignError(problems, source)
     notes = []
     if size.memory_bytes > soft_memory:
         notes.append(f"needs about {_gigabytes(size.memory_bytes)} (mostly {size.largest_memory})")

@@ -82,7 +82,7 @@ def check(design: DesignArgument = None, as_json: JsonOption = False) -> None:
         loaded = load_design_argument(design)
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ProblemSizeWarning)
-            check_problem_size(loaded.design, "run")  # refuses what a run would refuse
+            check_problem_size(loaded.design, "run", source=loaded.source)  # refuses what a run would refuse
         refused_by_analyses(loaded)  # and what the analyses refuse: a design `check` calls ok runs
     except DesignError as exc:
         if as_json:

@@ -98,7 +98,7 @@ def compare(
     from flexshaft.resolution import REPORT
 
     for each in loaded:  # both assessments bounded before the folder is touched
-        check_problem_size(each.design, "assess", REPORT)
+        check_problem_size(each.design, "assess", REPORT, source=each.source)
         refuse_envelope_points(each.design, each.source)
     sources = [marker_source(path, default) for path, default in zip((design_a, design_b), DEFAULTS)]
     folder = prepare_output_folder(

@@ -112,7 +112,7 @@ def run(
     from flexshaft.resolution import REPORT
 
     # refuses what cannot finish before the folder is touched: the assessment and the thesis studies
-    check_problem_size(loaded.design, "run" if studies is not Studies.none else "assess", REPORT)
+    check_problem_size(loaded.design, "run" if studies is not Studies.none else "assess", REPORT, source=loaded.source)
     refuse_envelope_points(loaded.design, loaded.source)
     folder = prepare_output_folder(
         default_output_folder(design, "results") if out is None else out,
@@ -180,7 +180,7 @@ def run_pipeline(
     # the thesis studies are spin-ups and whirl maps up to the operating speed: none at rest
     with_studies = studies is not Studies.none and loaded.design.operating.speed_rad_s > 0
     # refuses what cannot finish, warns when large: the assessment and the thesis studies
-    check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT)
+    check_problem_size(loaded.design, "run" if with_studies else "assess", REPORT, source=loaded.source)
     # No xarray in this process: the studies' results travel as plain arrays
     # (flexshaft.analyses.labelled) and their .nc files are written from them
     # (flexshaft.netcdf.write_labelled_netcdf; xarray only when netCDF4 is installed).

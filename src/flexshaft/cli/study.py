@@ -490,7 +490,11 @@ def all_studies(
 ) -> None:
     """Every chapter-3 study: figures, netCDF data, design_studies.json and a report.html."""
     gap = actuator_gap(gap, gap_mm)
-    loaded, folder = _prepare(design, out, "all", force, "studies", check=_check_studies)
+    from flexshaft.cli.tables import design_source
+
+    loaded, folder = _prepare(
+        design, out, "all", force, "studies", check=lambda d: _check_studies(d, design_source(design))
+    )
     from flexshaft.cli.progress import StageProgress
     from flexshaft.parallel.pool import worker_pool
     from flexshaft.report.html import write_report
@@ -513,14 +517,15 @@ def all_studies(
     _print_headline(data, page, loaded.source)
 
 
-def _check_studies(design) -> None:
-    """``study all`` runs the thesis studies of ``flexshaft run`` (and its assessment's grids)."""
+def _check_studies(design, source: str) -> None:
+    """``study all`` runs the thesis studies of ``flexshaft run`` (and its assessment's grids);
+    a refusal names ``source``, the design file."""
     from flexshaft.assembly.size import check_problem_size
     from flexshaft.cli.common import fail
 
     if not design.operating.speed_rad_s > 0:
         fail("study all: the thesis studies need an operating speed > 0 (operating.speed_rpm or speed is 0)")
-    check_problem_size(design, "run")
+    check_problem_size(design, "run", source=source)
 
 
 def _print_headline(data: dict, page: Path, source: str) -> None:
