@@ -3,8 +3,8 @@
 Reference: docs/limits.md, "The `"worst"` imbalance placement enumerates all 2^(bays−1) sign
 patterns of the bay forces; it is limited to 10 bays (512 load cases ...). Beyond 10 bays use
 `"mid_bay"` or `"distributed"`." The field that sets the count is ``loads.imbalance_placement``
-(with the bearings' stations), not the operating speed. Every design message names its file
-(the CLI's "invalid design <file>:" line).
+(with the bearings' stations), not the operating speed; and "Every refusal of a design file names
+the file" (docs/limits.md, the same paragraph).
 
 On the validation's Jeffcott rotor (tests/test_size_estimate_hand_count_reference.py's
 ``bearings_at``: n bearings at distinct stations bound n − 1 bays), 13 bearings give 12 bays:
@@ -14,7 +14,8 @@ On the validation's Jeffcott rotor (tests/test_size_estimate_hand_count_referenc
 * the size estimate capped the count at 2^10 = 1024 ("enumerates 2^(bays-1) = 1,024 load cases
   over 12 bays", a false power of two) and added a memory refusal for cases that never run;
 * ``flexshaft check`` / ``run`` / ``compare`` / ``study all`` said "invalid design <problem size>:"
-  instead of the file.
+  instead of the file; ``optimize`` refused the budget's memory instead (review r122), and
+  ``runup`` and ``thermal`` ended in an internal error (exit 4), ``runup`` after making its folder.
 
 Nothing is solved here but the Jeffcott rotor's preflight (a few ms).
 """
@@ -31,6 +32,8 @@ from test_size_estimate_hand_count_reference import bearings_at, size
 from typer.testing import CliRunner
 
 from flexshaft.analyses.preflight import model_guards
+from flexshaft.assembly import build_model
+from flexshaft.assembly.loads import imbalance_loads
 from flexshaft.assembly.size import MAX_WORST_BAYS, check_problem_size
 from flexshaft.cli import app
 from flexshaft.design import DesignError, design_from_dict
@@ -89,3 +92,45 @@ def test_check_names_the_design_file(tmp_path: Path):
     data = json.loads(as_json.stdout)
     assert data["source"] == str(path)
     assert [p["path"] for p in data["problems"]] == ["loads.imbalance_placement"]
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["run", "--out", "{out}"],
+        ["compare", "--out", "{out}"],
+        ["study", "all", "--out", "{out}"],
+        ["optimize", "--budget", "4", "--pop-size", "4", "--jobs", "1", "--out", "{out}"],
+        ["runup", "--out", "{out}"],
+        ["thermal"],
+    ],
+    ids=lambda c: " ".join(c[:2]) if c[0] == "study" else c[0],
+)
+def test_every_command_refuses_it_before_computing_naming_the_file(tmp_path: Path, command):
+    """Each command that solves the imbalance response refuses the design as a user error (exit
+    2), naming the file and the field, and makes no output folder."""
+    path = write_design_file(design_from_dict(bearings_at(STATIONS)), tmp_path / "twelve_bays.toml")
+    out = tmp_path / "out"
+    args = [a.replace("{out}", str(out)) for a in command]
+    where = 2 if command[0] == "study" else 1  # the design is the command's first argument
+    result = CliRunner().invoke(app, [*args[:where], str(path), *args[where:]])
+    assert result.exit_code == 2, result.output
+    assert f"invalid design {path}:" in result.output, result.output
+    assert "loads.imbalance_placement" in result.output and not out.exists()
+
+
+def test_the_load_cases_refused_by_the_model_name_the_placement():
+    """``imbalance_loads`` of the design's placement: a design error at the field; the same
+    count asked for by argument (``placement="worst"`` on a "mid_bay" design) is the argument's
+    ValueError, not the design's."""
+    model = build_model(design_from_dict(bearings_at(STATIONS)))
+    with pytest.raises(DesignError) as refused:
+        imbalance_loads(model)
+    assert [p.path for p in refused.value.problems] == ["loads.imbalance_placement"]
+    data = bearings_at(STATIONS)
+    data["loads"]["imbalance_placement"] = "mid_bay"
+    mid_bay = build_model(design_from_dict(data))
+    assert imbalance_loads(mid_bay).shape[1] == 1
+    with pytest.raises(ValueError, match=r"2\^11") as by_argument:
+        imbalance_loads(mid_bay, placement="worst")
+    assert not isinstance(by_argument.value, DesignError)

@@ -4,7 +4,7 @@ The schema bounds each number on its own; :func:`model_guards` gathers what the 
 after it has accepted a design: the checks of :func:`~flexshaft.assembly.build_model` (problem
 size, support and actuator stiffness, magnet gains, the controller law) and the solves every
 command starts from (the modal basis and the lowest modes at the operating speed, the static
-deflection, the imbalance response at the operating speed), each as a
+deflection, the imbalance load cases and the response at the operating speed), each as a
 :class:`~flexshaft.design.Problem` naming the fields. ``flexshaft check`` is to report them
 with the thermal ones (:func:`flexshaft.thermal.preflight.thermal_guards`), so that a design it
 accepts runs (issue 27: ``coil_turns = 1e5`` and 26 more designs passed ``check`` and were then
@@ -74,12 +74,15 @@ def model_guards(design: Any) -> list:
             lambda: imbalance_response(model, [model.speed], loads[0]),
         ),
     )
-    problems = []
+    problems: list[Problem] = []
     for path, what, run in checks:
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 run()
+        except DesignError as error:  # the design's own refusal (the "worst" placement's bays)
+            problems.extend(error.problems)
+            break  # the response needs the load cases
         except ValueError as error:  # SingularSystemError and NonFiniteResultError are ValueErrors
             problems.append(Problem(path, f"{what} is refused: {error}"))
             if path in ("shaft.material", "loads.imbalance_placement"):

@@ -22,6 +22,7 @@ from flexshaft.assembly.balance import design_eccentricity, imbalance_bays, rota
 from flexshaft.assembly.dofs import BOOM_FIELDS, SHAFT_FIELDS, Component
 from flexshaft.assembly.model import Model
 from flexshaft.assembly.size import MAX_WORST_BAYS
+from flexshaft.design import DesignError, Problem
 from flexshaft.elements.boom import BOOM_COLUMNS
 from flexshaft.elements.inertia import end_mass_kinematics
 from flexshaft.elements.shape import beam_shape, gauss_points
@@ -224,9 +225,12 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     ------
     ValueError
         For an unknown placement, a non-finite or negative eccentricity, or ``"worst"`` with
-        more than :data:`MAX_WORST_BAYS` bays (2^(bays−1) load cases).
+        more than :data:`MAX_WORST_BAYS` bays (2^(bays−1) load cases): a
+        :class:`~flexshaft.design.DesignError` naming ``loads.imbalance_placement`` when the
+        placement is the design's (a user error every command reports as such).
     """
     loads = model.design.loads if model.design is not None else None
+    designed = placement is None and loads is not None
     placement = placement or (loads.imbalance_placement if loads else "mid_bay")
     if placement not in IMBALANCE_PLACEMENTS:
         raise ValueError(f"placement must be one of {', '.join(map(repr, IMBALANCE_PLACEMENTS))} (got {placement!r})")
@@ -239,11 +243,14 @@ def imbalance_loads(model: Model, placement: str | None = None, eccentricity: fl
     if not bays:
         bays = [(model.dofs.shaft_x[0], model.dofs.shaft_x[-1])]
     if placement == "worst" and len(bays) > MAX_WORST_BAYS:
-        raise ValueError(
+        message = (
             f'placement "worst" enumerates 2^(bays-1) load cases: {len(bays)} bays give '
             f"2^{len(bays) - 1} (allowed: at most {MAX_WORST_BAYS} bays, or placement "
             '"mid_bay" / "distributed")'
         )
+        if designed:
+            raise DesignError([Problem("loads.imbalance_placement", message)])
+        raise ValueError(message)
     share = ecc * rotating_mass(model) / len(bays)
     rotating = np.array([0.0, 1.0, -1j])  # (x, y, z) complex direction
     if placement == "distributed":

@@ -21,6 +21,7 @@ from flexshaft.cli.common import (
     load_design_argument,
     plain,
     print_json,
+    refuse_imbalance_cases,
     refused_by_analyses,
 )
 from flexshaft.cli.options import (
@@ -331,6 +332,7 @@ def thermal(
 ) -> None:
     """Tailboom skin temperatures (hover, parked), shaft temperature rise and self-heating margin."""
     loaded = load_design_argument(design)
+    refuse_imbalance_cases(loaded)  # the shaft's heat needs the imbalance response
     from flexshaft.assembly import build_model
     from flexshaft.thermal.study import thermal_summary
 

@@ -227,18 +227,21 @@ def check_sweep(design: Any, command: str, points: int, workers: int) -> None:
     )
 
 
-def check_optimize(design: Any, budget: int, fidelity: str, workers: int) -> None:
+def check_optimize(design: Any, budget: int, fidelity: str, workers: int, source: str = "<problem size>") -> None:
     """``flexshaft optimize``: ``budget`` assessments at the ``fidelity`` resolution (resumable:
-    per worker)."""
+    per worker). The base design's own refusals come first (the ``"worst"`` placement beyond
+    its bays: :func:`flexshaft.assembly.size.check_problem_size`), naming ``source``."""
+    import math
     import warnings
 
-    from flexshaft.assembly.size import ProblemSizeWarning, problem_size
+    from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
     from flexshaft.resolution import SCREENING, VERDICT
 
     resolution = {"screening": SCREENING, "verdict": VERDICT}[fidelity]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ProblemSizeWarning)
-        size = problem_size(design, "assess", resolution)
+        inf = math.inf  # the budget's caps below
+        size = check_problem_size(design, "assess", resolution, hard_memory=inf, hard_time=inf, source=source)
     _refuse_if_large(
         f"--budget {budget:,} evaluations at the {fidelity} fidelity (about {_duration(size.time_seconds)} each)",
         budget * size.time_seconds / max(workers, 1),

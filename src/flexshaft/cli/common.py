@@ -513,6 +513,23 @@ def refused_by_analyses(loaded: LoadedDesign) -> None:
         raise DesignError(problems, loaded.source)
 
 
+def refuse_imbalance_cases(loaded: LoadedDesign) -> None:
+    """Raise the :class:`~flexshaft.design.DesignError` of a ``"worst"`` imbalance placement
+    beyond its bays (2^(bays−1) load cases, docs/limits.md), naming ``loaded``'s file, before a
+    command that solves the imbalance response (``runup``, ``thermal``) computes or makes its
+    folder (:func:`flexshaft.assembly.size.check_problem_size`'s rule, its caps lifted)."""
+    import math
+    import warnings
+
+    from flexshaft.assembly.size import ProblemSizeWarning, check_problem_size
+    from flexshaft.resolution import SCREENING
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ProblemSizeWarning)
+        inf = math.inf  # the caps lifted: only the placement's rule decides
+        check_problem_size(loaded.design, "assess", SCREENING, hard_memory=inf, hard_time=inf, source=loaded.source)
+
+
 def refuse_envelope_points(design: Any, source: str) -> None:
     """Raise the :class:`~flexshaft.design.DesignError` of the envelope points the verdict would
     refuse (:func:`flexshaft.verdict.assess.envelope_problems`, a few ms a point), before a

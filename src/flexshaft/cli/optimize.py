@@ -247,7 +247,7 @@ def optimize(
         from flexshaft.cli.bounds import check_optimize, check_verification, workers_of
         from flexshaft.optimize.nsga import optimize as run_optimization
 
-        check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client))
+        check_optimize(base, budget, Fidelity(fidelity).value, workers_of(jobs, client), source)
         if verify:
             check_verification(base, designs, budget, workers_of(jobs, client))
         name = str(design) if embedded and design is not None else DEFAULT_DESIGN
