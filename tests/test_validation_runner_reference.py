@@ -138,13 +138,42 @@ def test_the_json_worst_difference_is_the_largest_in_magnitude(computes):
         ("-", "published", "flexshaft"),
         ("Hz", "published_Hz", "flexshaft_Hz"),
         ("g mm", "published_g_mm", "flexshaft_g_mm"),
+        ("rpm", "published_rpm", "flexshaft_rpm"),
+        ("rad/s", "published_rad_per_s", "flexshaft_rad_per_s"),
+        ("N/m", "published_N_per_m", "flexshaft_N_per_m"),
     ],
 )
 def test_the_json_value_keys_carry_the_unit_and_none_without_one(computes, unit, published_key, flexshaft_key):
     """The JSON keys name their unit as every command's do (docs/optimizer.md: "the unit in each
     key: driveline_mass_kg, kp_N_per_m"); a dimensionless value (a Nusselt number, unit "-") has
-    no unit to name: "published" and "flexshaft", not "published_" with a dangling underscore."""
+    no unit to name: "published" and "flexshaft", not "published_" with a dangling underscore.
+    A case in rev/min keys its values ``_rpm`` (README.md, ``--json``: "the unit in each key
+    (`frequency_Hz`, `wall_thickness_m`, `sigma1_Pa`, `kp_N_per_m`), except rotational speeds in
+    rpm (`_rpm`)"; docs/validation.md: "values in each case's unit, in the key"), one in rad/s
+    ``_rad_per_s`` and one in N/m ``_N_per_m`` by the same ``_per_`` spelling as ``kp_N_per_m``.
+    The key's unit is the unit of the number under it: 1 SI value of 100π rad/s shown in rpm is
+    3000 under ``published_rpm`` and ``flexshaft_rpm`` (1 rev/min = 2π/60 rad/s)."""
     computes([1.0])
     (case,) = runner.report_json(ValidationReport((run_case(synthetic((1.0,), unit=unit)),), 0.0))["cases"]
     (value,) = case["values"]
     assert set(value) == {"label", published_key, flexshaft_key, "relative_difference"}
+
+
+def test_the_json_rpm_keys_hold_rev_per_min(computes):
+    """100π rad/s computed for a case in rpm published as 3000: both numbers sit under ``_rpm``
+    keys (README.md's ``--json`` rule quoted above) and are 3000, to round-off (rel 1e-14)."""
+    computes([100.0 * math.pi])
+    report = ValidationReport((run_case(synthetic((3000.0,), unit="rpm", tolerance=1e-12)),), 0.0)
+    (case,) = runner.report_json(report)["cases"]
+    (value,) = case["values"]
+    assert value["published_rpm"] == 3000.0
+    assert value["flexshaft_rpm"] == pytest.approx(3000.0, rel=1e-14)
+
+
+def test_an_unknown_case_id_is_an_error_not_an_empty_pass():
+    """run_validation runs "the cases called case_ids", each found by case_by_id ("The case called
+    case_id (ValueError listing the ids otherwise)"): a misspelt id must raise, not leave a report
+    of zero cases whose verdict "every case within its tolerance" holds vacuously. The Python API
+    has no --case check in front of it (the CLI's). No case is computed: the error comes first."""
+    with pytest.raises(ValueError, match="no validation case 'no-such-case'"):
+        runner.run_validation(["no-such-case"])
