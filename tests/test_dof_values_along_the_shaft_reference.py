@@ -19,7 +19,21 @@ midspan deflection; asserted to 1e-9 (the free stiffness matrix's condition numb
 so round-off, at most about 1e-10, stays below it). v and w are loaded differently (P and P/2) so that
 each plane is read from its own DOFs.
 
-CPU: one 8-element build and one static solve, well under 0.1 s. Written for
+A second reference reads the last node where it matters: the simply supported beam's last
+node has zero deflection, so a read that drops it is seen there only through the array's length.
+The same tube clamped at the start (v, w and both slopes fixed, besides u and θ) and free at the
+end, a static force P at the tip (the last node), deflects (Euler-Bernoulli, integrating
+E I v'''' = 0 with v = v' = 0 at the clamp and v'' = 0, E I v''' = −P at the free end)
+
+    v(x) = P x² (3 L − x) / (6 E I),
+
+increasing along the shaft to its largest, P L³/(3 E I), at the last node. The design's
+``shear_deformation`` defaults to false (flexshaft.design.components), so the elements are
+Euler-Bernoulli and again exact at the nodes: measured 5.2e-13 of P L³/(3 E I) (round-off),
+asserted to the same 1e-9; the last value read must be P L³/(3 E I) and the largest, and the
+read must hold one value per station (a read one node short fails on the tip's value first).
+
+CPU: two 8-element builds and two static solves, well under 0.1 s each. Written for
 h101e-dofs-values-last-node-dropped of scripts/mutations.toml.
 """
 
@@ -28,14 +42,20 @@ from __future__ import annotations
 import numpy as np
 
 # the simply supported tube and its assembled model
-from rotors import DI, DO, E, L, jeffcott
+from rotors import DI, DO, E, L, jeffcott, jeffcott_text
 
 from flexshaft.analyses import static_response
+from flexshaft.assembly import build_model
+from flexshaft.design import loads_design
 
 #: Midspan force [N] (any value: the problem is linear).
 P = 1.0e3
 #: Relative accuracy of the nodal deflections (round-off, measured 1.9e-14).
 RTOL = 1e-9
+
+
+#: E I of the tube [N m²].
+EI = E * np.pi * (DO**4 - DI**4) / 64
 
 
 def _simply_supported(x: np.ndarray, force: float) -> np.ndarray:
@@ -57,3 +77,34 @@ def test_the_deflection_is_read_at_every_station_of_the_shaft():
         values = dm.values(q, "shaft", field)
         assert values.shape == dm.shaft_x.shape
         np.testing.assert_allclose(values, _simply_supported(dm.shaft_x, force), rtol=0, atol=RTOL * scale)
+
+
+def _cantilever_model():
+    """The same tube clamped at x = 0 (v, w, β, γ fixed besides u, θ) and free at x = L."""
+    text = jeffcott_text(0.0, 0.0).replace(
+        'fixed_start = ["u", "v", "w", "theta"]', 'fixed_start = ["u", "v", "w", "theta", "beta", "gamma"]'
+    )
+    text = text.replace('fixed_end = ["v", "w"]', "fixed_end = []")
+    return build_model(loads_design(text))
+
+
+def test_a_cantilevers_tip_deflection_is_read_at_the_last_node():
+    model = _cantilever_model()
+    dm = model.dofs
+    tip = dm.node_at("shaft", L)
+    loads = np.zeros(dm.size)
+    loads[dm.shaft(tip, "v")] = P
+    loads[dm.shaft(tip, "w")] = P / 2
+    q = static_response(model, loads, speed=0.0)
+    x = dm.shaft_x
+    assert x[-1] == L
+    for field, force in (("v", P), ("w", P / 2)):
+        values = dm.values(q, "shaft", field)
+        tip_deflection = force * L**3 / (3 * EI)
+        exact = force * x**2 * (3 * L - x) / (6 * EI)
+        # the values station by station (a shorter read is compared on the stations it has)
+        np.testing.assert_allclose(values[: x.size], exact[: values.size], rtol=0, atol=RTOL * tip_deflection)
+        # the last value read is the tip's, P L³/(3 E I), and it is the largest
+        assert abs(values[-1] - tip_deflection) <= RTOL * tip_deflection
+        assert values.max() == values[-1]
+        assert values.size == x.size

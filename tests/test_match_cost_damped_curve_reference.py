@@ -1,12 +1,16 @@
 """The match cost's frequency distance is relative to a damped curve's frequency Im s (hunt h101f).
 
-Reference (documented rules, worked by hand; no number produced by the code):
+Reference (rules quoted from the product's docstring and docs/model.md, worked by hand; no
+number produced by the code):
 
-* The match cost (flexshaft.analyses.screened_match's docstring, used by
-  flexshaft.analyses.campbell's tracking): "1 − MAC of the shapes plus a tenth of the relative
-  frequency distance", relative "to the curve's frequency"; docs/model.md: "A mode s (frequency
-  ω = Im s > 0)" and "Modes are numbered by damped frequency Im s". So the distance term of a
-  curve s = −σ + iω to a root at iω' is 0.1 |ω' − ω| / ω, not over |s| = √(σ² + ω²).
+* The 0.1 weight and the distance "relative to the curve's frequency" are the product
+  docstring's rule, not a hand-written doc's: flexshaft/analyses/screened_match.py, module
+  docstring, "1 − MAC of the shapes plus a tenth of the relative frequency distance", and
+  match_cost's docstring, "a tenth of the frequency distance relative to the curve's
+  frequency" (the cost flexshaft.analyses.campbell's tracking uses). docs/model.md gives only
+  what that frequency is, ω = Im s: "A mode s (frequency ω = Im s > 0)" and "Modes are
+  numbered by damped frequency Im s". So the distance term of a curve s = −σ + iω to a root at
+  iω' is 0.1 |ω' − ω| / ω, not over |s| = √(σ² + ω²).
 * A well damped curve s = −30 + 40i rad/s (ζ = 0.6, |s| = 50): a root of the same shape
   (MAC 1) at 48i costs 0.1 · 8/40 = 0.02 (0.016 over |s|); a root at 40i whose shape has
   MAC 0.982 (cos² θ of unit vectors at θ) costs 0.018. The curve's cheapest root is the

@@ -23,7 +23,7 @@ Measured (relative error of the worst of the four roots):
 
 * dampers — tests/test_eigen_accuracy.py's steel tube (bearings 1e7 N/m, dampers 1e3 N s/m),
   8 elements (52 free DOFs), Ω = 2500 rad/s, ``reduce(model, 8, enrich=4)``: 1.2e-10 with
-  every correction; 2.3e-8 without the dampers' (19 times the bar);
+  every correction; 2.3e-8 without the dampers' (23 times the 1e-9 bar);
 * boom — tests/boomed_rotor.py's 2 m shaft over its 2 m boom, contact bearings at 0.7 m
   (1e7, 2e7 N/m) and 1.55 m (1e7 N/m), 5 shaft and 3 boom elements (49 free DOFs), Ω = 314
   rad/s, ``reduce(model, 12, enrich=6)``: 1.8e-10 with every correction; 5.6e-6 to 2.6e-5

@@ -1,15 +1,22 @@
 """The Campbell grids of the report and fine presets as documented (hunt h101f).
 
-References (documented rules, quoted from hand-written docs; no number produced by the code):
+References (documented values and rules, quoted from hand-written docs or the product's
+docstring; no number produced by the code):
 
-* docs/examples.md: "`--quick` uses 60 spin-up speeds and 12 Campbell speeds instead of 651 and
-  60": the report's Campbell diagram (``REPORT``, ``flexshaft run``) has 60 speeds, from rest to
-  the top of the scan (1.3 Ω_op, docs/architecture.md: the spin-up range "2 % to 130 % of the
-  operating speed", the Campbell diagram's range in flexshaft.resolution's docstring).
-* docs/architecture.md: ``FINE`` is "twice the report's density, to check convergence". Over the
-  same range, twice the density of 60 speeds (59 intervals) is 118 or 119 intervals: the fine
-  spacing is the report's over 118/59 = 2 to 119/59 = 2.017; the test allows 2 ± 2 % (the
-  integer count, not round-off). A fine grid at the report's count would be 1 time as dense.
+* A documented configuration value, not a rule: docs/examples.md describes what
+  examples/thesis_baseline.py passes, "`--quick` uses 60 spin-up speeds and 12 Campbell speeds
+  instead of 651 and 60", so without ``--quick`` (``REPORT``, as ``flexshaft run``) the
+  Campbell diagram has 60 speeds. Its
+  ends are the product's docstring (flexshaft.resolution, ``Resolution.campbell_speeds``:
+  "Speeds of the Campbell diagram, rest to ``scan_top`` × Ω_op"), the top the scan's 1.3 Ω_op
+  (docs/architecture.md: the spin-up range "2 % to 130 % of the operating speed").
+* A rule: docs/architecture.md: ``FINE`` is "twice the report's density, to check
+  convergence". Over the same range, twice the density of 60 speeds (59 intervals) is 118 or
+  119 intervals: the fine spacing is the report's over 118/59 = 2 to 119/59 = 2.017; the test
+  allows 2 ± 2 % (the integer count, not round-off). A fine grid at the report's count would be
+  1 time as dense. This rule alone also catches h101f-resolution-report-campbell-30 (the report
+  at 30 speeds, 29 intervals, under a fine grid of 120: spacing ratio 119/29 = 4.10, measured
+  by review r121), besides the count of 60 above.
 
 No analysis; microseconds.
 """
