@@ -39,8 +39,10 @@ def test_a_check_is_shown_at_its_own_worst_point():
         "cold", onset_speed=0.9 * OP, onset_location={"mode": "1"}, safety_factor=3.0, safety_factor_location={}
     )
     hot = _point("hot", safety_factor=2.0, safety_factor_location={"station": 2.0})
-    points = [cold, hot]
-    assessment = SimpleNamespace(verdict=envelope_verdict(points), governing_point=governing_point(points))
+    points = [hot, cold]  # the governing point is not the first: "first" and "governing" differ
+    assessment = SimpleNamespace(
+        verdict=envelope_verdict(points), governing_point=governing_point(points), points=points
+    )
     # the premises: a failing check at "cold" governs; Tsai-Wu passes at both, worst at "hot"
     assert assessment.governing_point == "cold"
     assert cold.verdict.check("whirl_onset").status == "fail"
@@ -48,6 +50,7 @@ def test_a_check_is_shown_at_its_own_worst_point():
     assert check_point(assessment, "tsai_wu") == "hot"
     assert check_point(assessment, "whirl_onset") == "cold"
     # a check evaluated nowhere names no point, and a check the verdict lacks: the governing one
+    # ("cold", the second point), not the first point ("hot")
     assert assessment.verdict.check("buckling").status == "not evaluated"
     assert check_point(assessment, "buckling") == "cold"
     assert "loop_sensitivity" not in [c.key for c in assessment.verdict.checks]

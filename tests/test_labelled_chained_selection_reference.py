@@ -10,6 +10,9 @@ selected dimensions dropped (xarray's ``sel(..., method="nearest")``; no other m
   as xarray's (``ds["amplitude"].sel(speed=x).sel(station=y)``, one axis at a time).
 * "no other method": ``method=None`` (xarray's exact match, which raises KeyError for a value
   that is not on the axis) must be refused, not treated as nearest.
+* A coordinate that is not a dimension (``kp`` over the ``case`` dimension): xarray selects the
+  one case at that kp; the plain arrays may refuse it ("no dimension ... among ...",
+  flexshaft/analyses/labelled.py), a loud refusal rather than every case returned unselected.
 
 The values compared are picked from the same random array by both libraries: exact equality.
 """
@@ -49,6 +52,11 @@ def test_method_none_is_refused_not_nearest():
 
 
 def test_a_non_dimension_coordinate_is_selected_as_xarray_or_refused():
+    """xarray 2026.9 selects the one case at kp=2e6 (kp a coordinate over the case dimension).
+    The plain arrays select on dimensions only and refuse other indexers with KeyError "no
+    dimension ... among ..." (flexshaft/analyses/labelled.py, ``LabelledArrays.sel``). That is
+    acceptable: a loud refusal, not a wrong answer. What is not: answering with anything but
+    xarray's single case (e.g. every case, unselected)."""
     data, coords, attrs = _spec()
     arrays, ds = LabelledArrays(data, coords, attrs), xr.Dataset(data, coords=coords, attrs=attrs)
     want = ds.sel(kp=2e6, method="nearest")

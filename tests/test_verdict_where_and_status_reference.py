@@ -8,7 +8,7 @@ References, documented rules quoted from hand-written docs and module docstrings
   here, at the edge" and prints a station as ``x = ... m``. A station at 1.25 m reads
   ``x = 1.25 m``.
 * docs/requirements.md, "The checks": every check has "a status (`pass`, `fail` or
-  `not evaluated`)"; "A requirement that cannot be evaluated says why instead of passing. The
+  `not evaluated`)"; "A requirement that cannot be evaluated says why instead of passing"; "The
   overall verdict passes when no check fails". A check not evaluated is shown as such in the
   table's status column, neither PASS nor FAIL.
 * src/flexshaft/verdict/text.py, ``verdict_headline``: "The verdict in one line: ``FAIL — 2 of 9
