@@ -15,7 +15,9 @@ On the validation's Jeffcott rotor (tests/test_size_estimate_hand_count_referenc
   over 12 bays", a false power of two) and added a memory refusal for cases that never run;
 * ``flexshaft check`` / ``run`` / ``compare`` / ``study all`` said "invalid design <problem size>:"
   instead of the file; ``optimize`` refused the budget's memory instead (review r122), and
-  ``runup`` and ``thermal`` ended in an internal error (exit 4), ``runup`` after making its folder.
+  ``runup`` and ``thermal`` ended in an internal error (exit 4), ``runup`` after making its folder;
+  ``study wall`` / ``gain`` / ``spinup-map`` refused from inside a sweep point without the file,
+  after making their folder, and the explorer's server answered 500 (review r124).
 
 Nothing is solved here but the Jeffcott rotor's preflight (a few ms).
 """
@@ -103,6 +105,9 @@ def test_check_names_the_design_file(tmp_path: Path):
         ["optimize", "--budget", "4", "--pop-size", "4", "--jobs", "1", "--out", "{out}"],
         ["runup", "--out", "{out}"],
         ["thermal"],
+        ["study", "wall", "--jobs", "1", "--out", "{out}"],
+        ["study", "gain", "--jobs", "1", "--out", "{out}"],
+        ["study", "spinup-map", "--out", "{out}"],
     ],
     ids=lambda c: " ".join(c[:2]) if c[0] == "study" else c[0],
 )
@@ -134,3 +139,40 @@ def test_the_load_cases_refused_by_the_model_name_the_placement():
     with pytest.raises(ValueError, match=r"2\^11") as by_argument:
         imbalance_loads(mid_bay, placement="worst")
     assert not isinstance(by_argument.value, DesignError)
+
+
+class _InlineWorkers:
+    """The explorer's worker pool run in the test process (the server's interface)."""
+
+    processes = 1
+
+    def __init__(self) -> None:
+        self.jobs: dict = {}
+
+    async def run(self, function, *args):
+        return function(*args)
+
+    def start_job(self, job, function, *args) -> None:
+        self.jobs[job.id] = job
+
+
+def test_the_explorer_refuses_it_as_a_client_error_naming_the_field(tmp_path: Path):
+    """The explorer's update and sweep answer a refused design with a 4xx naming the field
+    (RFC 9110: a refusal is a client error, not a server error), as for a schema refusal
+    (tests/test_explorer_api_reference.py)."""
+    from test_explorer_api_reference import HOST, Client
+
+    from flexshaft.cli.common import LoadedDesign
+    from flexshaft.design import load_design
+    from flexshaft.explore.server import Explorer, build_app
+
+    path = write_design_file(design_from_dict(bearings_at(STATIONS)), tmp_path / "twelve_bays.toml")
+    loaded = LoadedDesign(load_design(path), path.read_text(), str(path))
+    client = Client(build_app(Explorer(loaded, _InlineWorkers(), out=tmp_path / "runs"), [HOST]))
+    for route, body in (
+        ("/api/update", {"seq": 1, "session": "s"}),
+        ("/api/sweep", {"control": "operating.speed_rpm", "values": [900, 1000]}),
+    ):
+        answer = client.post(route, json=body)
+        assert 400 <= answer.status_code < 500, (route, answer.status_code)
+        assert [p["path"] for p in answer.json()["problems"]] == ["loads.imbalance_placement"], route

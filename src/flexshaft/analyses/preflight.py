@@ -82,7 +82,8 @@ def model_guards(design: Any) -> list:
                 run()
         except DesignError as error:  # the design's own refusal (the "worst" placement's bays)
             problems.extend(error.problems)
-            break  # the response needs the load cases
+            if path == "loads.imbalance_placement":
+                break  # the response needs the load cases
         except ValueError as error:  # SingularSystemError and NonFiniteResultError are ValueErrors
             problems.append(Problem(path, f"{what} is refused: {error}"))
             if path in ("shaft.material", "loads.imbalance_placement"):

@@ -14,7 +14,15 @@ from typing import Annotated
 
 import typer
 
-from flexshaft.cli.common import LoadedDesign, actuator_gap, dask_client, guarded, load_design_argument, print_json
+from flexshaft.cli.common import (
+    LoadedDesign,
+    actuator_gap,
+    dask_client,
+    guarded,
+    load_design_argument,
+    print_json,
+    refuse_imbalance_cases,
+)
 from flexshaft.cli.options import DaskOption, DesignArgument, ForceOption, JobsOption, JsonOption, Resolution
 from flexshaft.cli.output import default_output_folder, into_run_folder, marker_source, prepare_output_folder
 
@@ -67,6 +75,7 @@ def _prepare(
     from flexshaft.design import DEFAULT_DESIGN
 
     loaded = load_design_argument(design)
+    refuse_imbalance_cases(loaded)  # a "worst" placement beyond its bays, naming the file
     loaded = dataclasses.replace(loaded, source=heading_source(design))
     if points is not None:
         from flexshaft.cli.bounds import check_sweep, workers_of

@@ -220,7 +220,10 @@ async def update(request: Request) -> Response:
     seq = body.get("seq", 0)
     seq = int(seq) if isinstance(seq, (int, float)) and math.isfinite(seq) else 0
     session = explorer.sessions.get(str(body.get("session", "")))
-    outcome = await session.update(seq, lambda: update_on(explorer.workers, design))
+    try:  # what the assessment refuses of a schema-valid design (its size, a "worst" placement's bays)
+        outcome = await session.update(seq, lambda: update_on(explorer.workers, design))
+    except DesignError as exc:
+        return _refused(exc)
     if outcome is None:
         return JSONResponse({"seq": seq, "superseded": True})
     payload, waited = outcome
@@ -244,7 +247,10 @@ async def sweep(request: Request) -> Response:
     except DesignError as exc:
         return _refused(exc)
     start = time.perf_counter()
-    results = await asyncio.gather(*(explorer.workers.run(sweep_point, base.design, p) for p in points))
+    try:
+        results = await asyncio.gather(*(explorer.workers.run(sweep_point, base.design, p) for p in points))
+    except DesignError as exc:
+        return _refused(exc)
     return JSONResponse({"control": key, "values": values, "points": results, "seconds": time.perf_counter() - start})
 
 
