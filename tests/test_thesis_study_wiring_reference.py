@@ -25,7 +25,8 @@ References:
   basis built at K_d = 0, is checked on a real model with a design K_d of 500 N s/m in
   tests/test_gain_stability_map_reference.py);
 * the wall task of :mod:`flexshaft.thesis.design_studies` names a best wall at either end of
-  the range studied (its note: "the safety factor is monotonic there");
+  the range studied (its note: "the safety factor is monotonic there"), the wall in the note's
+  parenthesis in the unit its label names, mm (1 mm → "(1 mm)", 4 mm → "(4 mm)");
 * study 5 (:mod:`flexshaft.thesis.buckling_sweep`) refuses a shaft that is not one laminated
   tube (its docstring: the laminated-shell model's domain): a metal one, and a laminated one
   in two segments;
@@ -35,6 +36,7 @@ References:
 
 from __future__ import annotations
 
+import re
 from types import SimpleNamespace
 
 import numpy as np
@@ -160,6 +162,8 @@ def test_best_wall_at_either_end_is_noted(monkeypatch, best):
     out = design_studies._wall_task(None, walls, {}, True)
     assert out["best_wall"] == walls[best] and out["best_wall_safety_factor"] == 4.0
     assert "end of the range" in out["notes"][0]
+    m = re.search(r"\(([0-9.eE+-]+) mm\)", out["notes"][0])
+    assert m and float(m[1]) == pytest.approx(walls[best] * 1e3)  # the note's label is mm
 
 
 def test_buckling_sweep_refuses_a_metal_or_a_segmented_shaft():

@@ -9,8 +9,12 @@ References:
   T_crimp = 2πR²(√(A44 A55) ∓ A45), A44, A55, A45 = k Σ Q_s t_ply, with, for a ply at θ,
   Q44 = G23 cos²θ + G13 sin²θ, Q55 = G13 cos²θ + G23 sin²θ, Q45 = (G13 − G23) cosθ sinθ, the
   defaults G13 = G_LT, G23 = E_T/(2(1 + 0.5)) = E_T/3 and k the lamina's shear correction
-  (docs/model.md), R = (D_o − t)/2 the mid-surface radius. Computed here by hand from the
-  design's lamina. The critical torque is the lowest of crimping and the global helices, so it
+  (docs/model.md), R = (D_o − t)/2 the mid-surface radius. Closed form: for very short buckles
+  the wall's rotations cannot follow, so γ_xz = w_x, γ_yz = w_y; the wall is stable while
+  A55 a² + 2A45 ab + A44 b² − 2N ab > 0 for all (a, b) = (w_x, w_y) (N the shear flow T/(2πR²)), and the first
+  real root, at (N − A45)² = A44 A55, gives T = 2πR²(√(A44 A55) ∓ A45) (docs/model.md's formula,
+  ~lines 304-306, with its G_23 default E_T/(2(1+ν_23)) = E_T/3, ~line 301). Computed here by
+  hand from the design's lamina. The critical torque is the lowest of crimping and the global helices, so it
   never exceeds T_crimp; on the baseline (55/−55/0/0)s wall (3 mm, D_o 101.6 mm) docs/model.md
   states that crimping governs (2511 N m, against 7298 N m for the classical shell, which has no
   crimping): the study's torque there is T_crimp (balanced plies: A45 = 0, both senses equal).
@@ -64,6 +68,7 @@ def test_buckling_study_is_the_shear_deformable_shell_with_its_crimping_limit():
     crimp = np.array([_crimping_torque(design, w) for w in walls])
     assert np.all(critical <= crimp * (1.0 + 1e-9))
     np.testing.assert_allclose(critical[1], crimp[1], rtol=1e-9)  # crimping governs at 3 mm (docs/model.md)
+    assert round(crimp[1]) == 2511  # docs/model.md: "the wall crimps at 2511 N m" (baseline)
 
 
 def test_two_angle_map_axes_are_in_degrees():
