@@ -2,9 +2,10 @@
 :func:`flexshaft.netcdf.write_labelled_netcdf` (the spin-up surfaces' ``kp`` and ``kd`` over
 ``case``, flexshaft.thesis.spinup_maps).
 
-Reference: the CF conventions (section 5, "Coordinate Systems"): a data variable names its
-auxiliary coordinate variables in its ``coordinates`` attribute, a blank-separated list of
-their names (wording recalled, not re-read for this test: "assumed"); xarray, an independent
+Reference: the CF conventions, section 5 "Coordinate Systems": "The value of the
+``coordinates`` attribute is a blank separated list of the names of auxiliary coordinate
+variables. There is no restriction on the order in which the auxiliary coordinate variables
+appear" (read by review r127 in cf-conventions' ch05.adoc; hence the sorted comparison); xarray, an independent
 writer, joins them with one blank (``" ".join``) and attaches each named variable as a
 coordinate when it reads the file. Every value below is a chosen input, so the comparisons are
 exact (no tolerance).
