@@ -9,7 +9,7 @@ montecarlo/steady.py):
 * ``Exceedance.describe``: ``"no samples"`` when there is none;
 * ``MonteCarloResult._count_exceeding`` counts "of the samples with a finite value at every
   judged bearing", so a study whose every sample is non-finite at a judged bearing (a NaN from
-  a failed solve) counts 0 of 0 — the JSON of ``flexshaft transient --montecarlo`` then writes
+  a failed solve) counts 0 of 0 — the JSON of ``flexshaft montecarlo --json`` then writes
   that count's ``to_dict()``.
 
 Four hand-made samples at one bearing, every excursion NaN. No arithmetic: NaN is checked as

@@ -176,11 +176,11 @@ def log_decrement_figure(
             a.axhline(required, color="tab:green", ls=(0, (6, 3)), lw=1.2, label=f"required δ ≥ {required:g}")
         mark_operating(a, operating_rpm, label=k == 0)
         _mark_onset(a, onsets.get(name), (onset_text or {}).get(name), speeds.max(), k == 0)
-        if high > top:
+        if high > top + pad:  # a curve runs off the panel's top, not only into its margin
             a.text(
                 0.01,
                 0.97,
-                f"curves above δ = {top:.2g} cut",
+                f"curves above δ = {top + pad:.3g} cut",
                 transform=a.transAxes,
                 ha="left",
                 va="top",
