@@ -150,7 +150,8 @@ def test_the_json_value_keys_carry_the_unit_and_none_without_one(computes, unit,
     A case in rev/min keys its values ``_rpm`` (README.md, ``--json``: "the unit in each key
     (`frequency_Hz`, `wall_thickness_m`, `sigma1_Pa`, `kp_N_per_m`), except rotational speeds in
     rpm (`_rpm`)"; docs/validation.md: "values in each case's unit, in the key"), one in rad/s
-    ``_rad_per_s`` and one in N/m ``_N_per_m`` by the same ``_per_`` spelling as ``kp_N_per_m``.
+    ``_rad_per_s`` and one in N/m ``_N_per_m`` by the same ``_per_`` spelling as ``kp_N_per_m``
+    (assumed by analogy: no doc names a rad/s key; the N/m one is the docs' ``kp_N_per_m``).
     The key's unit is the unit of the number under it: 1 SI value of 100π rad/s shown in rpm is
     3000 under ``published_rpm`` and ``flexshaft_rpm`` (1 rev/min = 2π/60 rad/s)."""
     computes([1.0])
