@@ -16,8 +16,8 @@ curves (no model):
   requirement δ ≥ 0.5 that makes the view taller than every curve (δ = 0.2): no note.
 
 Exact comparisons (the inputs and the limits are plain floats; the note's δ, the axis' top
-since review r126, is printed to three significant figures and compared with inequalities to half
-a unit in the third figure). Agg, nothing written.
+since review r126, is printed to three significant figures and compared with the axis' top to half a unit
+in the third figure, 5e-3 of a mantissa 1.00). Agg, nothing written.
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ def test_a_curve_above_the_view_is_declared_cut():
     assert delta.max() > high  # the reference: the δ = 2 curve leaves the view
     assert len(notes) == 1, notes
     named = float(re.search(r"δ = ([-0-9.e+]+) cut", notes[0]).group(1))
-    assert named <= high * (1 + 5e-3) and named < delta.max()  # printed to three significant figures
+    assert named == pytest.approx(high, rel=5e-3) and named < delta.max()  # the axis' top, three figures
 
 
 def test_no_note_when_every_curve_is_in_view():
@@ -67,4 +67,4 @@ def test_the_note_is_written_exactly_when_a_curve_leaves_the_view(damped, requir
     assert (len(notes) == 1) == bool(delta.max() > high), (damped, required, high, notes)
     if notes:
         named = float(re.search(r"δ = ([-0-9.e+]+) cut", notes[0]).group(1))
-        assert named <= high * (1 + 5e-3) and named < delta.max()  # three significant figures
+        assert named == pytest.approx(high, rel=5e-3) and named < delta.max()  # the axis' top, three figures

@@ -176,3 +176,15 @@ def test_the_explorer_refuses_it_as_a_client_error_naming_the_field(tmp_path: Pa
         answer = client.post(route, json=body)
         assert 400 <= answer.status_code < 500, (route, answer.status_code)
         assert [p["path"] for p in answer.json()["problems"]] == ["loads.imbalance_placement"], route
+
+
+def test_a_sweep_point_refused_alone_keeps_the_others():
+    """A sweep whose base has 10 bays (accepted) and one point at 11 (refused): that point alone
+    reports the refusal (explore.compute.sweep_point), so the other points' results are kept;
+    checked on the refused point alone, refused before anything is computed."""
+    from flexshaft.explore.compute import sweep_point
+
+    ten_bays = [k / 10 for k in range(11)] + [1.0]  # the twelfth on the eleventh's station: merged
+    base = design_from_dict(bearings_at(ten_bays))
+    refused = sweep_point(base, {"bearings[11].x": 0.95})  # 0.95 m splits the last bay: 11 bays
+    assert "loads.imbalance_placement" in refused["error"] and "2^10" in refused["error"]

@@ -142,13 +142,14 @@ async def update_on(workers: _Workers, design: Design) -> dict[str, Any]:
 
 def sweep_point(base: Design, overrides: dict[str, Any]) -> dict[str, Any]:
     """One point of a sweep: the normalised margin of every check (NaN → None where not
-    evaluated or not applicable) and the shaft mass, or the schema's message when the design is
-    invalid there."""
+    evaluated or not applicable) and the shaft mass, or the message when the design is invalid
+    or refused there (the schema's, or what the assessment refuses: a size, a "worst"
+    placement's bays), so that one refused point leaves the others' results."""
     try:
         design = with_overrides(base, overrides)
+        a = assess(design, SWEEP)
     except DesignError as exc:
         return {"error": str(exc)}
-    a = assess(design, SWEEP)
     metrics = assessment_metrics(a)
     return {
         "titles": {c.key: c.title for c in a.verdict.checks},

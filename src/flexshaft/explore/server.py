@@ -36,7 +36,7 @@ from starlette.requests import Request
 from starlette.responses import FileResponse, HTMLResponse, JSONResponse, Response
 from starlette.routing import Route
 
-from flexshaft.cli.common import LoadedDesign, UserError
+from flexshaft.cli.common import LoadedDesign, UserError, refuse_imbalance_cases
 from flexshaft.cli.output import prepare_output_folder
 from flexshaft.design import Design, DesignError, loads_design, with_overrides
 from flexshaft.explore.compute import EXPLORE, sweep_point, update_on
@@ -244,13 +244,11 @@ async def sweep(request: Request) -> Response:
         if not isinstance(values, list) or not 2 <= len(values) <= MAX_SWEEP_POINTS:
             raise DesignError([_problem("values", f"give 2 to {MAX_SWEEP_POINTS} values to sweep")])
         points = [{**overrides, **control_overrides(design, {key: v})} for v in values]
+        refuse_imbalance_cases(LoadedDesign(design, None, "<request>"))  # refused at every point
     except DesignError as exc:
         return _refused(exc)
     start = time.perf_counter()
-    try:
-        results = await asyncio.gather(*(explorer.workers.run(sweep_point, base.design, p) for p in points))
-    except DesignError as exc:
-        return _refused(exc)
+    results = await asyncio.gather(*(explorer.workers.run(sweep_point, base.design, p) for p in points))
     return JSONResponse({"control": key, "values": values, "points": results, "seconds": time.perf_counter() - start})
 
 
