@@ -516,8 +516,9 @@ def refused_by_analyses(loaded: LoadedDesign) -> None:
 def refuse_imbalance_cases(loaded: LoadedDesign) -> None:
     """Raise the :class:`~flexshaft.design.DesignError` of a ``"worst"`` imbalance placement
     beyond its bays (2^(bays−1) load cases, docs/limits.md), naming ``loaded``'s file, before a
-    command that solves the imbalance response (``runup``, ``thermal``, the studies) computes or
-    makes its folder (:func:`flexshaft.assembly.size.check_problem_size`'s rule, its caps lifted)."""
+    command that solves the imbalance response (``runup``, ``thermal``; every study, as
+    ``flexshaft check`` refuses the design) computes or makes its folder
+    (:func:`flexshaft.assembly.size.check_problem_size`'s rule, its caps lifted)."""
     import math
     import warnings
 
