@@ -65,3 +65,24 @@ def test_force_into_another_commands_folder_keeps_its_results(tmp_path: Path, ca
     assert (out / "results.nc").read_text() == "a study's results"
     assert (out / "notes.txt").read_text() == "mine"
     assert _names(out) == sorted([MARKER, "notes.txt", "results.json", "results.nc"])
+
+
+def test_a_rerun_after_force_keeps_the_other_commands_results(tmp_path: Path) -> None:
+    """Then the edited design's rerun (no ``--force``: the same file, the same command) removes
+    "the files the earlier run wrote" (README) — the run's ``results.json`` — and not the study's
+    ``results.nc``, which the run did not write (found by hunt h104a: the marker had taken the
+    study's entries as the run's own, and the rerun deleted them)."""
+    from test_output_folder_reference import EDITED
+
+    out = tmp_path / "my-study-wall"
+    out.mkdir()
+    (out / "results.nc").write_text("a study's results")
+    marker = {"written_by": "flexshaft", "command": "study wall", "design": TWIN.name, "entries": ["results.nc"]}
+    marker.update(design_fingerprint="0" * 64, design_source=str(tmp_path / "other.toml"), complete=True)
+    (out / MARKER).write_text(json.dumps(marker), encoding="utf-8")
+    mine = str(tmp_path / "my.toml")
+    assert _run(out, MINE, mine, force=True, writes=["results.json", "report.html"]) == 0
+    assert "results.nc" not in _marker(out)["entries"]
+    assert _run(out, EDITED, mine, writes=["results.json"]) == 0
+    assert (out / "results.nc").read_text() == "a study's results"
+    assert _names(out) == sorted([MARKER, "results.json", "results.nc"])  # the run's report.html removed

@@ -174,6 +174,7 @@ def prepare_output_folder(
     fingerprint = design_fingerprint(design)
     previous: list[str] = []  # entries an earlier run of flexshaft wrote
     replace: list[str] = []  # ... of which the results of an earlier version of the design
+    same_command = False  # whether that run was this command's (else its entries stay its own)
     if folder.is_symlink() and not folder.is_dir():
         target = "a file, not a folder" if folder.exists() else "a missing target"
         fail(f"{option}: {folder} is a symbolic link to {target}; give a folder path")
@@ -233,7 +234,8 @@ def prepare_output_folder(
         except OSError as exc:
             fail(f"{option}: cannot create the folder {folder} ({exc.strerror}); choose another folder")
     _check_writable(folder, option)
-    ours = [n for n in previous if n not in replace]
+    # another command's entries (kept by --force) are not this command's to remove on a rerun
+    ours = [n for n in previous if n not in replace] if same_command else []
     foreign = set(_entries(folder, option)) - set(ours) - {MARKER}
     data = {
         "written_by": "flexshaft",
