@@ -237,10 +237,10 @@ def test_broken_manifest_without_chunks_warns_and_starts(tmp_path, reference):
     assert len(messages) == 1 and "manifest.json cannot be trusted" in messages[0]
 
 
-def test_clean_resume_is_silent_and_keeps_nan_of_failed_points(tmp_path):
-    """on_error='nan' chunks are reused as stored: their NaN are results, not damage."""
-    study = Study(
-        "failing",
+def failing_study(name: str = "failing", **options) -> Study:
+    """The 3 x 4 study whose point (kp = 3e6 N/m, speed = 30 rad/s) raises (``fail``)."""
+    return Study(
+        name,
         [
             Variable(path="bearings[1].kp", name="kp", values=KP, units="N/m"),
             Variable("speed", SPEED, units="rad/s"),
@@ -248,7 +248,13 @@ def test_clean_resume_is_silent_and_keeps_nan_of_failed_points(tmp_path):
         ],
         [Output("stiffness_speed"), Output("wall_mm", "mm")],
         analytic,
+        **options,
     )
+
+
+def test_clean_resume_is_silent_and_keeps_nan_of_failed_points(tmp_path):
+    """on_error='nan' chunks are reused as stored: their NaN are results, not damage."""
+    study = failing_study()
     first = run_sweep(study, tmp_path / "run", chunk_size=CHUNK, progress=False, on_error="nan")
     failed = np.isnan(first["stiffness_speed"].values[..., 0])
     assert failed.sum() == 1 and failed[2, 3]

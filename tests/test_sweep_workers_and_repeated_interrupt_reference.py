@@ -26,24 +26,14 @@ import pytest
 
 xr = pytest.importorskip("xarray")
 
-from flexshaft.sweep import Output, Study, Variable, finished_chunks, run_sweep
+from flexshaft.sweep import finished_chunks, run_sweep
 from tests.test_sweep_chunks_reference import CALLS, STOP_AT
 from tests.test_sweep_chunks_reference import _study as two_by_three
-from tests.test_sweep_integrity import CHUNK, KP, SPEED, _closed_form, analytic
+from tests.test_sweep_integrity import CHUNK, _closed_form, failing_study
 
 
 def test_workers_turn_a_failing_point_into_nan():
-    study = Study(
-        "failing with workers",
-        [
-            Variable(path="bearings[1].kp", name="kp", values=KP, units="N/m"),
-            Variable("speed", SPEED, units="rad/s"),
-            Variable("fail", [True]),
-        ],
-        [Output("stiffness_speed"), Output("wall_mm", "mm")],
-        analytic,
-        fixed={"shaft.wall_thickness": 0.003},
-    )
+    study = failing_study("failing with workers", fixed={"shaft.wall_thickness": 0.003})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the failing point's own warning is not the subject here
         ds = run_sweep(study, jobs=2, chunk_size=CHUNK, progress=False, on_error="nan")
