@@ -155,6 +155,19 @@ def test_baseline_report_renders_with_every_figure(baseline_run, tmp_path):
     assert image_load_title(chromium, out / "report.html", tmp_path) == f"IMAGES-OK:{n_figures}"
 
 
+def test_no_report_figure_is_cut_at_its_edge(baseline_run):
+    """Every figure of the README's run, the studies' included: no ink in a file's outermost
+    pixels (tests/test_figure_canvas_edge_reference.py: a glyph cut by the canvas' edge leaves
+    some there). Before, the tuned design's thermal sweeps lost part of their axis label."""
+    from test_figure_canvas_edge_reference import edge_ink
+
+    out, _ = baseline_run
+    files = sorted(out.glob("*.png"))
+    assert len(files) >= 20
+    cut = {f.name: ink for f in files if any((ink := edge_ink(f.read_bytes())).values())}
+    assert cut == {}
+
+
 def test_stability_command_compares_the_thesis_shafts():
     result = CliRunner().invoke(app, ["stability", "--compare-thesis", "--n-speeds", "25", "--json"])
     assert result.exit_code == 0, result.output

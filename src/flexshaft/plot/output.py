@@ -23,7 +23,9 @@ from flexshaft.parallel.pool import worker_pool
 if TYPE_CHECKING:
     from concurrent.futures import Executor
 
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
+    from matplotlib.transforms import Bbox
 
 __all__ = [
     "FIGURE_MODULES",
@@ -55,7 +57,7 @@ def _check_stem(stem: str) -> None:
         raise ValueError(f"stem: expected a plain file name without folders, got {stem!r}")
 
 
-def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> None:
+def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> Bbox | None:
     """Draw ``fig`` at ``dpi`` and write it as a PNG to ``file`` (a path or a binary file object).
 
     Through matplotlib's public API: the Agg canvas draws (``canvas.draw``) and its pixels
@@ -69,12 +71,20 @@ def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> None:
     restored afterwards. The ``savefig.*`` settings of matplotlib (``savefig.facecolor``,
     ``savefig.transparent``, ``savefig.bbox``) do not apply on the canvas path: the figure is
     written as it is drawn.
+
+    Nothing drawn is cut at the canvas' edge: the margins of :func:`flexshaft.plot.style.new_figure`
+    are fixed, and a long tick label (``0.00175``) can push an axis label past them. When the
+    drawn canvas has ink in its outermost row or column of pixels (a cheap test on the pixels
+    just drawn), the figure's drawn extent is measured (``get_tightbbox``) and, where it passes
+    the canvas, the PNG is written by ``savefig`` over the canvas grown to hold it (the panels
+    keep their size and place; the file is that much larger). Returns that grown box [in], or
+    None when the canvas holds everything (:func:`save_figure` writes the SVG over the same box).
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     if type(fig.canvas) is not FigureCanvasAgg:
         fig.savefig(file, dpi=dpi, format="png", pil_kwargs={"compress_level": PNG_COMPRESSION})
-        return
+        return None
     from matplotlib.colors import to_rgba
     from PIL import Image
 
@@ -83,11 +93,37 @@ def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> None:
     fig.dpi = dpi
     try:
         fig.canvas.draw()
-        size = fig.canvas.get_width_height(physical=True)
-        image = Image.frombuffer("RGBA", size, fig.canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+        grown = _grown_canvas(fig, fig.canvas)
+        if grown is None:
+            size = fig.canvas.get_width_height(physical=True)
+            image = Image.frombuffer("RGBA", size, fig.canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
     finally:
         fig.dpi = own_dpi
+    if grown is not None:
+        fig.savefig(file, dpi=dpi, format="png", bbox_inches=grown, pil_kwargs={"compress_level": PNG_COMPRESSION})
+        return grown
     (image.convert("RGB") if opaque else image).save(file, format="png", compress_level=PNG_COMPRESSION, dpi=(dpi, dpi))
+    return None
+
+
+def _grown_canvas(fig: Figure, canvas: FigureCanvasAgg) -> Bbox | None:
+    """The figure's box grown to hold what its last draw put past the canvas' edge [in], padded
+    by 2 px; None when nothing did. Only a canvas with ink in its outermost pixels is measured
+    (``get_tightbbox`` costs about a quarter of a draw)."""
+    import numpy as np
+    from matplotlib.colors import to_rgba
+    from matplotlib.transforms import Bbox
+
+    pixels = np.asarray(canvas.buffer_rgba())
+    face = np.round(255 * np.asarray(to_rgba(fig.patch.get_facecolor()))) if fig.patch.get_visible() else np.zeros(4)
+    edges = np.concatenate([pixels[0], pixels[-1], pixels[:, 0], pixels[:, -1]]).astype(int)
+    if np.all(np.abs(edges - face) <= 8):
+        return None
+    page = fig.bbox_inches
+    drawn = fig.get_tightbbox(canvas.get_renderer())
+    if drawn is None or (drawn.x0 >= page.x0 and drawn.y0 >= page.y0 and drawn.x1 <= page.x1 and drawn.y1 <= page.y1):
+        return None
+    return Bbox.union([page, drawn]).padded(2.0 / fig.dpi)
 
 
 def save_figure(
@@ -122,11 +158,11 @@ def save_figure(
     # each file through a temporary name and a rename (flexshaft.files.writing): a symbolic link
     # at the name is replaced, never written through, and a full disk leaves no half file
     with writing(paths["png"]) as tmp:
-        write_png(fig, tmp, dpi)
+        grown = write_png(fig, tmp, dpi)
     if svg:
         paths["svg"] = out / f"{stem}.svg"
         with writing(paths["svg"]) as tmp:
-            fig.savefig(tmp, format="svg", metadata={"Date": None})
+            fig.savefig(tmp, format="svg", metadata={"Date": None}, bbox_inches=grown)
     if "matplotlib.pyplot" in sys.modules:  # only pyplot keeps a reference to figures
         sys.modules["matplotlib.pyplot"].close(fig)
     return paths

@@ -1,0 +1,74 @@
+"""Nothing a figure draws is cut at the edge of its file.
+
+The margins of :func:`flexshaft.plot.style.new_figure` are fixed in inches; a long tick label
+pushes the axis label outwards, and on the tuned design the thermal sweeps' rise of 1.7e-3 K
+(tick labels ``0.00175``) put the label "T − T_air [K]" 4 px past the left edge of
+shaft_temperature_sweeps.png (and the bearing orbits' "v (vertical) [μm]" 1 px).
+
+Reference: the PNG's own pixels. The figures' face is white; a glyph or line cut by the canvas'
+edge leaves ink in the file's outermost column or row, and a figure whose outermost pixels
+are all the face colour lost nothing at its edge. The threshold (a channel 8 levels from the
+face, of 255) is above PNG rounding (exact) and far below anti-aliased text's partial coverage
+at the edge of a cut glyph (tens of levels).
+"""
+
+from __future__ import annotations
+
+import io
+import re
+
+import numpy as np
+from PIL import Image
+
+from flexshaft.plot.output import PNG_DPI, save_figure, write_png
+from flexshaft.plot.thermal import temperature_profiles_figure
+
+
+def edge_ink(png: bytes | Image.Image) -> dict[str, int]:
+    """Pixels of each outermost row/column that differ from white by more than 8 levels."""
+    image = png if isinstance(png, Image.Image) else Image.open(io.BytesIO(png))
+    a = np.asarray(image.convert("RGB")).astype(int)
+    edges = {"left": a[:, 0], "right": a[:, -1], "top": a[0], "bottom": a[-1]}
+    return {side: int(np.any(np.abs(v - 255) > 8, axis=1).sum()) for side, v in edges.items()}
+
+
+def _profiles(scale: float):
+    x = np.linspace(0.0, 8.05, 33)
+    rise = scale * np.sin(np.pi * x / 8.05)
+    return temperature_profiles_figure(x, {"wall 5.0 mm": rise}, {"h = 5 W/m²K": 25.0 * rise})
+
+
+def test_a_label_pushed_past_the_margin_is_written_whole():
+    """The tuned design's thermal sweeps (peak rise 1.7e-3 K, tick labels of seven characters):
+    the file has no ink at any edge, and it is wider than the nominal 11 in x 120 dpi = 1320 px
+    by the label's overflow (about 4 px) and the 2 px pad; nothing is cut at any edge."""
+    buffer = io.BytesIO()
+    grown = write_png(_profiles(1.7e-3), buffer)
+    image = Image.open(io.BytesIO(buffer.getvalue()))
+    assert edge_ink(image) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
+    assert grown is not None and grown.x0 < 0.0
+    assert image.size[0] > round(11.0 * PNG_DPI)
+
+
+def test_a_figure_inside_its_margins_keeps_its_size():
+    """Rises of order 1 K (tick labels ``1.50``) fit the margins: the file is the figure's
+    nominal 11 x 4.2 in at 120 dpi = 1320 x 504 px, exactly, with no ink at its edges."""
+    buffer = io.BytesIO()
+    assert write_png(_profiles(1.7), buffer) is None
+    image = Image.open(io.BytesIO(buffer.getvalue()))
+    assert image.size == (round(11.0 * PNG_DPI), round(4.2 * PNG_DPI))
+    assert edge_ink(image) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
+
+
+def test_the_svg_is_grown_with_the_png(tmp_path):
+    """``save_figure``'s SVG covers the same grown box: its width exceeds the nominal
+    11 in x 72 pt/in = 792 pt (the figure that fits keeps 792 pt)."""
+    widths = []
+    for scale in (1.7e-3, 1.7):
+        paths = save_figure(_profiles(scale), tmp_path, f"profiles_{scale:g}")
+        match = re.search(r'<svg[^>]*\swidth="([0-9.]+)pt"', paths["svg"].read_text(encoding="utf-8"))
+        assert match is not None
+        widths.append(float(match.group(1)))
+        assert edge_ink(paths["png"].read_bytes()) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
+    assert widths[0] > 792.0
+    assert widths[1] == 792.0
