@@ -26,8 +26,8 @@ import tomllib
 import pytest
 
 from flexshaft.assembly.size import check_problem_size
-from flexshaft.design import DesignError, design_from_dict
-from flexshaft.resolution import FINE
+from flexshaft.design import DesignError, baseline_design, design_from_dict
+from flexshaft.resolution import FINE, SCREENING
 from flexshaft.validation.runner import design_text
 
 JEFFCOTT = design_from_dict(tomllib.loads(design_text("jeffcott_internal_damping.toml")))
@@ -51,3 +51,24 @@ def test_a_refusal_finer_than_fine_names_the_resolution():
     """One spin-up speed more than FINE's is a custom, finer grid: the refusal names ``resolution``."""
     finer = dataclasses.replace(FINE, name="finer", spinup_speeds=FINE.spinup_speeds + 1)
     assert "resolution" in refused_paths(finer)
+
+
+def mesh_advice(design) -> str:
+    """The refusal's advice at ``mesh.shaft_elements`` for ``design`` assessed at SCREENING over a 1 ms cap."""
+    with pytest.raises(DesignError) as refusal:
+        check_problem_size(design, "assess", SCREENING, hard_time=1e-3)
+    (message,) = [p.message for p in refusal.value.problems if p.path == "mesh.shaft_elements"]
+    return message
+
+
+def test_the_mesh_advice_counts_boom_elements_only_with_a_tailboom():
+    """``mesh.boom_elements`` is the "Approximate number of tailboom elements" (the ``Mesh``
+    docstring, src/flexshaft/design/schema.py): a design without a ``[tailboom]`` has none, and
+    the advice for the Jeffcott rotor (no tailboom, 8 shaft elements, default boom_elements 24)
+    must not tell its user that 24 boom elements make its DOFs. The baseline, with its
+    tailboom, is told both counts (36 and 24)."""
+    assert JEFFCOTT.tailboom is None and JEFFCOTT.mesh.boom_elements == 24
+    jeffcott = mesh_advice(JEFFCOTT)
+    assert jeffcott.startswith("8 shaft elements (no tailboom) give ")
+    assert "boom elements" not in jeffcott
+    assert mesh_advice(baseline_design()).startswith("36 shaft and 24 boom elements give ")

@@ -384,11 +384,16 @@ def _what_to_change(size: ProblemSize, design) -> list[tuple[str, str]]:
             )
         )
     if size.dofs > SOFT_DOFS or advice == []:
+        # mesh.boom_elements meshes the tailboom only: without one it adds no DOF (design_mesh)
+        meshed = (
+            f"{design.mesh.shaft_elements} shaft and {design.mesh.boom_elements} boom elements"
+            if size.boom_nodes
+            else f"{design.mesh.shaft_elements} shaft elements (no tailboom)"
+        )
         advice.append(
             (
                 "mesh.shaft_elements",
-                f"{design.mesh.shaft_elements} shaft and {design.mesh.boom_elements} "
-                f"boom elements give {size.dofs:,} DOFs: use fewer (36 and 24 converge "
+                f"{meshed} give {size.dofs:,} DOFs: use fewer (36 and 24 converge "
                 "the baseline's lowest frequencies within 3e-8)",
             )
         )
