@@ -7,10 +7,13 @@ Hand-built arrays (no analysis), read back from the matplotlib artists. Referenc
   "sigma2", "tau12"), drawn as marker shapes", and docs/studies.md: "`dominant_stress` (0 σ1,
   1 σ2, 2 τ12)": the markers labelled "σ1 dominates" sit exactly at the angles whose dominant
   stress is "sigma1", and so on for σ2 and τ12;
-* ``two_angle_figure`` draws α on the abscissa ("α [deg]") and β on the ordinate ("β [deg]"):
-  the thesis laminate (α, β) = ``thesis_best`` is marked at x = α, y = β;
-* ``gain_map_figure``'s docstring: ``other`` points are (K_p, K_d), e.g. ``{"design": (1e7,
-  0)}``: a ring's legend names its K_p in N/m and its K_d in N s/m, each with its own value.
+* ``two_angle_figure`` draws α on the abscissa ("α [deg]") and β on the ordinate ("β [deg]")
+  and names the laminate "(α/−α/β/−β)s" (its docstring does not order ``thesis_best``; these
+  labels do): the thesis laminate (α, β) = ``thesis_best`` is marked at x = α, y = β;
+* ``gain_map_figure``'s docstring (src/flexshaft/plot/gain_maps.py): "best : (kp, kd), optional
+  / Marked with a star at its gains. ``other``: more labelled points, each a ring larger than
+  the star, e.g. ``{"design": (1e7, 0)}``": a ring's point is (K_p, K_d) as the star's, and
+  its legend names its K_p in N/m and its K_d in N s/m, each with its own value.
 
 Positions are the given values (exact); labels are compared as strings. Agg, no file.
 """
