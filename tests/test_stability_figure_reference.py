@@ -55,6 +55,29 @@ def test_stability_map_operating_line_at_the_operating_speed():
     np.testing.assert_allclose(bound.get_ydata(), [7200.0, 7200.0], rtol=REL)
 
 
+def test_series_stable_at_the_same_gain_each_keep_a_visible_ring():
+    """Three gain series all stable at K_d = 300 N s/m share the point (300, max_rpm). Rings of
+    one size and centre drawn in turn leave only the last one's colour visible (the report's
+    map showed K_p = 5e5 there and hid 1.67e4 and 1e5). Geometry: a later ring of strictly
+    smaller diameter lies inside the earlier ones, so each series' ring shows its colour. The
+    open markers at max_rpm are one per series, in the series' colour, each smaller than the
+    one drawn before it."""
+    kd = np.array([0.0, 300.0])
+    series = {
+        "K_p = 1.67e+04 N/m": [1280.0, np.nan],
+        "K_p = 1e+05 N/m": [np.nan, np.nan],
+        "K_p = 5e+05 N/m": [2400.0, np.nan],
+    }
+    ax = stability_map_figure(kd, series, max_rpm=7200.0).axes[0]
+    named = {str(ln.get_label()): ln for ln in ax.get_lines() if str(ln.get_label()) in series}
+    rings = [ln for ln in ax.get_lines() if ln.get_marker() == "o" and ln.get_markerfacecolor() == "none"]
+    at_300 = [ln for ln in rings if 300.0 in ln.get_xdata()]
+    assert [ln.get_color() for ln in at_300] == [named[name].get_color() for name in series]
+    np.testing.assert_allclose([ln.get_ydata()[list(ln.get_xdata()).index(300.0)] for ln in at_300], 7200.0, rtol=REL)
+    sizes = [ln.get_markersize() for ln in at_300]
+    assert all(a > b for a, b in zip(sizes, sizes[1:])), sizes
+
+
 def test_modes_the_requirement_does_not_judge_are_grey():
     """Three tracked modes, the first not judged by the δ requirement (a boom mode, say): drawn in
     the grey of NOT_JUDGED_COLOR with a legend entry, the judged two in the colour cycle; a

@@ -246,16 +246,28 @@ def stability_map_figure(
     ax=None,
 ):
     """Onset speed of whirl instability against the actuators' derivative gain K_d [N s/m];
-    NaN onsets (stable over the analysed range) are drawn at ``max_rpm`` with open markers."""
+    NaN onsets (stable over the analysed range) are drawn at ``max_rpm`` with open markers.
+
+    Each series' markers are 3 pt smaller than the one before it: series stable at the same
+    K_d share a point at ``max_rpm``, and equal rings there would leave only the last drawn
+    visible; nested, each shows its colour."""
     kd = vector("kd", kd)
     own = ax is None
     fig, axes = new_figure(1, 1, (8.0, 4.6), ax=ax, bottom=1.25)
     ax = axes[0, 0]
-    for name, values in onset_rpm.items():
+    for i, (name, values) in enumerate(onset_rpm.items()):
         v = vector(f"onset_rpm[{name!r}]", values, kd.size)
-        (line,) = ax.plot(kd, v, "o-", label=name)
+        size = 5.0 + 3.0 * (len(onset_rpm) - 1 - i)
+        (line,) = ax.plot(kd, v, "o-", label=name, markersize=size)
         if max_rpm is not None and np.any(np.isnan(v)):
-            ax.plot(kd[np.isnan(v)], np.full(np.isnan(v).sum(), max_rpm), "o", mfc="none", color=line.get_color())
+            ax.plot(
+                kd[np.isnan(v)],
+                np.full(np.isnan(v).sum(), max_rpm),
+                "o",
+                mfc="none",
+                color=line.get_color(),
+                markersize=size,
+            )
     if operating_rpm is not None:
         ax.axhline(operating_rpm, color="tab:red", ls="-.", label=f"operating speed {operating_rpm:.0f} rpm")
     if max_rpm is not None:
