@@ -5,11 +5,12 @@ pushes the axis label outwards, and on the tuned design the thermal sweeps' rise
 (tick labels ``0.00175``) put the label "T − T_air [K]" 4 px past the left edge of
 shaft_temperature_sweeps.png (and the bearing orbits' "v (vertical) [μm]" 1 px).
 
-Reference: the PNG's own pixels. The figures' face is white; a glyph or line cut by the canvas'
-edge leaves ink in the file's outermost column or row, and a figure whose outermost pixels
-are all the face colour lost nothing at its edge. The threshold (a channel 8 levels from the
-face, of 255) is above PNG rounding (exact) and far below anti-aliased text's partial coverage
-at the edge of a cut glyph (tens of levels).
+References: the label's own box as matplotlib lays it out (``get_window_extent`` at the files'
+120 dpi): the file must hold it; and the PNG's pixels: the figures' face is white, a glyph or
+line cut by the canvas' edge leaves ink in the file's outermost column or row. The threshold
+(a channel 8 levels from the face, of 255) is above PNG rounding (exact) and far below a cut
+glyph's core (255 levels). The pixels alone miss a label pushed wholly past the edge: the
+label's box catches it.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ import io
 import re
 
 import numpy as np
+import pytest
 from PIL import Image
 
 from flexshaft.plot.output import PNG_DPI, save_figure, write_png
@@ -38,16 +40,35 @@ def _profiles(scale: float):
     return temperature_profiles_figure(x, {"wall 5.0 mm": rise}, {"h = 5 W/m²K": 25.0 * rise})
 
 
-def test_a_label_pushed_past_the_margin_is_written_whole():
-    """The tuned design's thermal sweeps (peak rise 1.7e-3 K, tick labels of seven characters):
-    the file has no ink at any edge, and it is wider than the nominal 11 in x 120 dpi = 1320 px
-    by the label's overflow (about 4 px) and the 2 px pad; nothing is cut at any edge."""
+def label_overflow_px(fig) -> tuple[float, float]:
+    """(left, right) edges [px] of the first panel's y label, laid out by matplotlib at the
+    files' resolution: a negative left edge is that much past the canvas."""
+    fig.dpi = PNG_DPI
+    fig.canvas.draw()
+    box = fig.axes[0].yaxis.label.get_window_extent(fig.canvas.get_renderer())
+    return box.x0, box.x1
+
+
+@pytest.mark.parametrize("scale", [1.7e-3, -1.7e-3], ids=["cut", "wholly-outside"])
+def test_a_label_pushed_past_the_margin_is_written_whole(scale):
+    """The tuned design's thermal sweeps (peak rise 1.7e-3 K, tick labels of seven characters)
+    push the y label about 4 px past the left edge; a negative rise (tick labels of eight) about
+    18 px, wholly past it, where no ink reaches the edge to show the loss. References: the
+    label's own box as matplotlib lays it out (``get_window_extent``), and the file's pixels.
+    The file is wider than the nominal 11 in x 120 dpi = 1320 px by at least the label's
+    overflow, and has no ink at any edge."""
+    left, right = label_overflow_px(_profiles(scale))
+    assert left < 0.0
+    if scale < 0:
+        assert right < 0.0  # wholly outside: the unfixed file has no ink at its edge
     buffer = io.BytesIO()
-    grown = write_png(_profiles(1.7e-3), buffer)
+    grown = write_png(_profiles(scale), buffer)
     image = Image.open(io.BytesIO(buffer.getvalue()))
     assert edge_ink(image) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
     assert grown is not None and grown.x0 < 0.0
-    assert image.size[0] > round(11.0 * PNG_DPI)
+    assert image.size[0] >= round(11.0 * PNG_DPI) - left
+    assert image.size[1] == round(4.2 * PNG_DPI)  # nothing passed the top or the bottom: no growth there
+    assert image.mode == "RGB"  # an opaque figure, written as RGB as when it fits
 
 
 def test_a_figure_inside_its_margins_keeps_its_size():

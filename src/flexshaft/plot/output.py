@@ -9,6 +9,7 @@ itself. PNG is always written; SVG only on request (it costs about as much as th
 from __future__ import annotations
 
 import gc
+import io
 import sys
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -74,11 +75,13 @@ def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> Bbox | None:
 
     Nothing drawn is cut at the canvas' edge: the margins of :func:`flexshaft.plot.style.new_figure`
     are fixed, and a long tick label (``0.00175``) can push an axis label past them. When the
-    drawn canvas has ink in its outermost row or column of pixels (a cheap test on the pixels
-    just drawn), the figure's drawn extent is measured (``get_tightbbox``) and, where it passes
-    the canvas, the PNG is written by ``savefig`` over the canvas grown to hold it (the panels
-    keep their size and place; the file is that much larger). Returns that grown box [in], or
-    None when the canvas holds everything (:func:`save_figure` writes the SVG over the same box).
+    drawn canvas has ink in its outermost row or column of pixels, or an axis label, title or
+    legend passes its edge (cheap tests on what was just drawn), the figure's drawn extent is
+    measured (``get_tightbbox``) and, where it passes the canvas, ``savefig`` draws the canvas
+    grown to hold it (the panels keep their size and place; the file is that much larger;
+    ``savefig.*`` settings kept out) and Pillow writes it as above. Returns that grown box
+    [in], or None when the canvas holds everything (:func:`save_figure` writes the SVG over the
+    same box).
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
@@ -100,30 +103,68 @@ def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> Bbox | None:
     finally:
         fig.dpi = own_dpi
     if grown is not None:
-        fig.savefig(file, dpi=dpi, format="png", bbox_inches=grown, pil_kwargs={"compress_level": PNG_COMPRESSION})
-        return grown
+        # savefig draws the grown box; matplotlib's savefig.* settings kept out as on the canvas path
+        drawn = io.BytesIO()
+        fig.savefig(
+            drawn, dpi=dpi, format="png", bbox_inches=grown, facecolor="auto", edgecolor="auto", transparent=False
+        )
+        image = Image.open(drawn)
     (image.convert("RGB") if opaque else image).save(file, format="png", compress_level=PNG_COMPRESSION, dpi=(dpi, dpi))
-    return None
+    return grown
 
 
 def _grown_canvas(fig: Figure, canvas: FigureCanvasAgg) -> Bbox | None:
-    """The figure's box grown to hold what its last draw put past the canvas' edge [in], padded
-    by 2 px; None when nothing did. Only a canvas with ink in its outermost pixels is measured
-    (``get_tightbbox`` costs about a quarter of a draw)."""
+    """The figure's box grown to hold what its last draw put past the canvas' edge [in], by
+    that overflow plus 2 px on each side that overflows; None when nothing did.
+
+    Measured (``get_tightbbox``, about a third of a draw) only when a cut is likely: ink in the
+    canvas' outermost pixels (a glyph or line crossing the edge), or an axis label, axes title,
+    legend or figure text whose box passes the edge (one pushed wholly past it leaves no ink).
+    """
     import numpy as np
     from matplotlib.colors import to_rgba
     from matplotlib.transforms import Bbox
 
+    renderer = canvas.get_renderer()
     pixels = np.asarray(canvas.buffer_rgba())
-    face = np.round(255 * np.asarray(to_rgba(fig.patch.get_facecolor()))) if fig.patch.get_visible() else np.zeros(4)
+    # Agg clears to transparent white: what an invisible face leaves
+    face = (
+        np.round(255 * np.asarray(to_rgba(fig.patch.get_facecolor())))
+        if fig.patch.get_visible()
+        else (255, 255, 255, 0)
+    )
     edges = np.concatenate([pixels[0], pixels[-1], pixels[:, 0], pixels[:, -1]]).astype(int)
-    if np.all(np.abs(edges - face) <= 8):
+    if np.all(np.abs(edges - np.asarray(face)) <= 8) and not _outermost_past_edge(fig, renderer):
         return None
     page = fig.bbox_inches
-    drawn = fig.get_tightbbox(canvas.get_renderer())
+    drawn = fig.get_tightbbox(renderer)
     if drawn is None or (drawn.x0 >= page.x0 and drawn.y0 >= page.y0 and drawn.x1 <= page.x1 and drawn.y1 <= page.y1):
         return None
-    return Bbox.union([page, drawn]).padded(2.0 / fig.dpi)
+    pad = 2.0 / fig.dpi
+    return Bbox.from_extents(
+        drawn.x0 - pad if drawn.x0 < page.x0 else page.x0,
+        drawn.y0 - pad if drawn.y0 < page.y0 else page.y0,
+        drawn.x1 + pad if drawn.x1 > page.x1 else page.x1,
+        drawn.y1 + pad if drawn.y1 > page.y1 else page.y1,
+    )
+
+
+def _outermost_past_edge(fig: Figure, renderer: Any) -> bool:
+    """Whether an axis label, axes title, legend or figure text of ``fig`` (as last drawn) has
+    a box passing the canvas' edge: the artists the fixed margins may push wholly outside."""
+    outer: list[Any] = [*fig.texts, *fig.legends]
+    for ax in fig.axes:
+        outer += [ax.xaxis.label, ax.yaxis.label, ax.title]
+        if ax.get_legend() is not None:
+            outer.append(ax.get_legend())
+    page = fig.bbox
+    for artist in outer:
+        if not artist.get_visible() or (hasattr(artist, "get_text") and not artist.get_text()):
+            continue
+        box = artist.get_window_extent(renderer)
+        if box.x0 < page.x0 or box.y0 < page.y0 or box.x1 > page.x1 or box.y1 > page.y1:
+            return True
+    return False
 
 
 def save_figure(
