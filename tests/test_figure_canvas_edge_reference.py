@@ -93,3 +93,28 @@ def test_the_svg_is_grown_with_the_png(tmp_path):
         assert edge_ink(paths["png"].read_bytes()) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
     assert widths[0] > 792.0
     assert widths[1] == 792.0
+
+
+def test_an_axes_text_wholly_past_the_edge_is_kept():
+    """An annotation placed at figure fraction x = 1.2 (wholly right of the canvas: no ink
+    reaches the edge) is found and the canvas grown to hold it; its own box (matplotlib's
+    layout) lies inside the file's width, and the grown side ends on a whole pixel."""
+    from flexshaft.plot.style import new_figure
+
+    fig, axes = new_figure(1, 1, (4.0, 3.0))
+    note = axes[0, 0].text(1.2, 0.5, "far note", transform=fig.transFigure)
+    fig.dpi = PNG_DPI
+    fig.canvas.draw()
+    box = note.get_window_extent(fig.canvas.get_renderer())
+    assert box.x0 > 4.0 * PNG_DPI  # wholly outside
+    buffer = io.BytesIO()
+    grown = write_png(fig, buffer)
+    image = Image.open(io.BytesIO(buffer.getvalue()))
+    assert image.size[0] >= box.x1
+    assert edge_ink(image) == {"left": 0, "right": 0, "top": 0, "bottom": 0}
+    # the grown side ends on a whole pixel, 2 px or more past the text: Agg truncates a
+    # fractional canvas, which cut the last pixel of the Jeffcott rotor's Campbell legend
+    # (6.32 px past its canvas, review r133)
+    assert grown is not None
+    right_px = grown.x1 * PNG_DPI
+    assert abs(right_px - round(right_px)) < 1e-9 and right_px >= box.x1 + 2.0

@@ -61,7 +61,7 @@ def test_series_stable_at_the_same_gain_each_keep_a_visible_ring():
     map showed K_p = 5e5 there and hid 1.67e4 and 1e5). Geometry: a later ring of strictly
     smaller diameter lies inside the earlier ones, so each series' ring shows its colour. The
     open markers at max_rpm are one per series, in the series' colour, each smaller than the
-    one drawn before it."""
+    one drawn before it by at least two strokes (rings of 1 pt strokes)."""
     kd = np.array([0.0, 300.0])
     series = {
         "K_p = 1.67e+04 N/m": [1280.0, np.nan],
@@ -74,8 +74,10 @@ def test_series_stable_at_the_same_gain_each_keep_a_visible_ring():
     at_300 = [ln for ln in rings if 300.0 in ln.get_xdata()]
     assert [ln.get_color() for ln in at_300] == [named[name].get_color() for name in series]
     np.testing.assert_allclose([ln.get_ydata()[list(ln.get_xdata()).index(300.0)] for ln in at_300], 7200.0, rtol=REL)
-    sizes = [ln.get_markersize() for ln in at_300]
-    assert all(a > b for a, b in zip(sizes, sizes[1:])), sizes
+    # a ring inside another shows when their radii differ by at least the outer ring's stroke
+    # (markersize is a diameter [pt], markeredgewidth a stroke width [pt]): strokes do not overlap
+    for outer, inner in zip(at_300, at_300[1:]):
+        assert (outer.get_markersize() - inner.get_markersize()) / 2 >= outer.get_markeredgewidth()
 
 
 def test_modes_the_requirement_does_not_judge_are_grey():

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import gc
 import io
+import math
 import sys
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -49,6 +50,8 @@ PNG_DPI = 120
 #: level 1 14.1 ms and 100 kB a figure, 2 14.3 ms 99 kB, 3 14.6 ms 97 kB, 4 18.0 ms 91 kB,
 #: 6 (Pillow's default) 20.3 ms 90 kB.
 PNG_COMPRESSION = 1
+#: Pixels added beyond what a figure draws past its canvas' edge when the canvas is grown (:func:`write_png`).
+PAD_PX = 2
 #: What a process that draws figures imports once (a worker of :func:`flexshaft.parallel.pool.worker_pool`).
 FIGURE_MODULES = ("matplotlib.figure", "matplotlib.backends.backend_agg", "flexshaft.plot.driveline")
 
@@ -115,7 +118,8 @@ def write_png(fig: Figure, file: Any, dpi: float = PNG_DPI) -> Bbox | None:
 
 def _grown_canvas(fig: Figure, canvas: FigureCanvasAgg) -> Bbox | None:
     """The figure's box grown to hold what its last draw put past the canvas' edge [in], by
-    that overflow plus 2 px on each side that overflows; None when nothing did.
+    that overflow plus :data:`PAD_PX`, in whole pixels, on each side that overflows; None when
+    nothing did.
 
     Measured (``get_tightbbox``, about a third of a draw) only when a cut is likely: ink in the
     canvas' outermost pixels (a glyph or line crossing the edge), or an axis label, axes title,
@@ -140,21 +144,25 @@ def _grown_canvas(fig: Figure, canvas: FigureCanvasAgg) -> Bbox | None:
     drawn = fig.get_tightbbox(renderer)
     if drawn is None or (drawn.x0 >= page.x0 and drawn.y0 >= page.y0 and drawn.x1 <= page.x1 and drawn.y1 <= page.y1):
         return None
-    pad = 2.0 / fig.dpi
+    # whole pixels, rounded outwards: a fractional edge is truncated by Agg, and an extent leaves
+    # out half a frame's stroke (a legend past the edge by 6.32 px kept 1 px of it cut)
+    dpi = fig.dpi
     return Bbox.from_extents(
-        drawn.x0 - pad if drawn.x0 < page.x0 else page.x0,
-        drawn.y0 - pad if drawn.y0 < page.y0 else page.y0,
-        drawn.x1 + pad if drawn.x1 > page.x1 else page.x1,
-        drawn.y1 + pad if drawn.y1 > page.y1 else page.y1,
+        math.floor(drawn.x0 * dpi - PAD_PX) / dpi if drawn.x0 < page.x0 else page.x0,
+        math.floor(drawn.y0 * dpi - PAD_PX) / dpi if drawn.y0 < page.y0 else page.y0,
+        math.ceil(drawn.x1 * dpi + PAD_PX) / dpi if drawn.x1 > page.x1 else page.x1,
+        math.ceil(drawn.y1 * dpi + PAD_PX) / dpi if drawn.y1 > page.y1 else page.y1,
     )
 
 
 def _outermost_past_edge(fig: Figure, renderer: Any) -> bool:
-    """Whether an axis label, axes title, legend or figure text of ``fig`` (as last drawn) has
-    a box passing the canvas' edge: the artists the fixed margins may push wholly outside."""
+    """Whether an axis label, an axes' title or text, a legend or a figure text of ``fig`` (as
+    last drawn) has a box passing the canvas' edge: what may lie wholly outside it."""
+    from matplotlib.text import Text
+
     outer: list[Any] = [*fig.texts, *fig.legends]
-    for ax in fig.axes:
-        outer += [ax.xaxis.label, ax.yaxis.label, ax.title]
+    for ax in fig.axes:  # its titles (centre, left, right), texts and annotations are its Text children
+        outer += [ax.xaxis.label, ax.yaxis.label, *(c for c in ax.get_children() if isinstance(c, Text))]
         if ax.get_legend() is not None:
             outer.append(ax.get_legend())
     page = fig.bbox
@@ -203,7 +211,16 @@ def save_figure(
     if svg:
         paths["svg"] = out / f"{stem}.svg"
         with writing(paths["svg"]) as tmp:
-            fig.savefig(tmp, format="svg", metadata={"Date": None}, bbox_inches=grown)
+            fig.savefig(
+                tmp,
+                format="svg",
+                metadata={"Date": None},
+                # the PNG's box and colours, whatever matplotlib's savefig.* settings say
+                bbox_inches=grown if grown is not None else fig.bbox_inches,
+                facecolor="auto",
+                edgecolor="auto",
+                transparent=False,
+            )
     if "matplotlib.pyplot" in sys.modules:  # only pyplot keeps a reference to figures
         sys.modules["matplotlib.pyplot"].close(fig)
     return paths
