@@ -11,6 +11,7 @@ CPU about 0.01 s.
 
 from __future__ import annotations
 
+from pathlib import Path
 from types import SimpleNamespace as NS
 
 import numpy as np
@@ -31,12 +32,31 @@ def test_bearings_table_shaft_then_boom_station_and_the_total_mass(monkeypatch, 
         NS(name="hanger", kind="passive", x_shaft=1.2, x_boom=1.25, offset=0.08),
         NS(name="gearbox", kind="passive", x_shaft=3.9, x_boom=None, offset=0.0),
     ]
+    a.model.dofs.n_boom_nodes = 2  # a hanger on the boom: the model has one
+    a.model.dofs.boom_x = np.zeros(2)
     summary = _section(_plan(monkeypatch, a, tmp_path), "Design summary")
     key, bearings = summary.tables
     assert list(bearings.columns) == ["name", "kind", "x shaft [m]", "x boom [m]", "offset h [m]"]
     assert bearings.rows == [["hanger", "passive", 1.2, 1.25, 0.08], ["gearbox", "passive", 3.9, "ground", 0.0]]
     rows = {row[0]: row[1] for row in key.rows}
     assert rows["shaft mass [kg]"] == 9.0 and rows["total mass (shaft, boom, end mass) [kg]"] == 60.0
+
+
+def test_without_a_tailboom_no_boom_is_named_in_the_mass_or_the_deflection(monkeypatch, tmp_path):
+    """A model without boom nodes (no ``[tailboom]``: bearings on ground) has no boom nor end
+    mass in its total, and its static deflection is the shaft's alone: the key numbers and the
+    figure's caption must not name a tailboom (the Jeffcott rotor's report did)."""
+    a = _assessment()
+    assert a.model.dofs.n_boom_nodes == 0
+    plan = _plan(monkeypatch, a, tmp_path)
+    key = _section(plan, "Design summary").tables[0]
+    rows = {row[0]: row[1] for row in key.rows}
+    assert rows["total mass (no tailboom) [kg]"] == 60.0
+    assert not any("boom" in str(name) for name in rows if name != "total mass (no tailboom) [kg]")
+    figures = [f for section in plan.sections for f in section.figures]
+    assert [f.caption for f in figures if Path(f.path_png).name == "static_deflection.png"] == [
+        "Static deflection of the shaft"
+    ]
 
 
 def test_natural_frequency_table_hz_then_rpm(monkeypatch, tmp_path):

@@ -72,3 +72,14 @@ def test_the_mesh_advice_counts_boom_elements_only_with_a_tailboom():
     assert jeffcott.startswith("8 shaft elements (no tailboom) give ")
     assert "boom elements" not in jeffcott
     assert mesh_advice(baseline_design()).startswith("36 shaft and 24 boom elements give ")
+
+
+def test_the_size_summary_counts_boom_nodes_only_with_a_tailboom():
+    """The size summary (what a size warning prints) of the Jeffcott rotor: 8 shaft elements,
+    9 nodes, no tailboom, says so instead of counting "0 boom nodes"; the baseline (tailboom)
+    gives both counts."""
+    from flexshaft.assembly.size import problem_size
+
+    assert "(9 shaft nodes, no tailboom)" in problem_size(JEFFCOTT, "assess", SCREENING).summary()
+    baseline = problem_size(baseline_design(), "assess", SCREENING)
+    assert f"shaft and {baseline.boom_nodes:,} boom nodes)" in baseline.summary() and baseline.boom_nodes > 0

@@ -223,8 +223,13 @@ class ProblemSize:
 
     def summary(self) -> str:
         """One line: the counts and the estimates."""
+        nodes = (
+            f"{self.shaft_nodes:,} shaft and {self.boom_nodes:,} boom nodes"
+            if self.boom_nodes
+            else f"{self.shaft_nodes:,} shaft nodes, no tailboom"
+        )
         return (
-            f"{self.dofs:,} DOFs ({self.shaft_nodes:,} shaft and {self.boom_nodes:,} boom nodes), "
+            f"{self.dofs:,} DOFs ({nodes}), "
             f"{self.bearings} bearings ({self.actuators} active, {self.controller_states} controller states), "
             f"{self.disks} disks, {self.load_cases:,} imbalance load case(s): about "
             f"{_gigabytes(self.memory_bytes)} and {_duration(self.time_seconds)} for {self.analysis!r}"

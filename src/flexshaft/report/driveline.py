@@ -127,7 +127,13 @@ def plan_run_report(
                     ["quantity", "value"],
                     [
                         ["shaft mass [kg]", s["shaft_mass_kg"]],
-                        ["total mass (shaft, boom, end mass) [kg]", s["total_mass_kg"]],
+                        [
+                            # the model's rigid-body mass: no boom nor end mass without a tailboom
+                            "total mass (shaft, boom, end mass) [kg]"
+                            if dm.n_boom_nodes
+                            else "total mass (no tailboom) [kg]",
+                            s["total_mass_kg"],
+                        ],
                         [
                             f"E* storage{where} [GPa] / loss factor",
                             f"{s['shaft_E_storage_Pa'] / 1e9:.3f} / {s['shaft_E_loss_factor']:.4f}",
@@ -238,7 +244,7 @@ def plan_run_report(
     st = data["static"]
     deflection = figs.add(
         "static_deflection",
-        "Static deflection of shaft and tailboom",
+        "Static deflection of shaft and tailboom" if dm.n_boom_nodes else "Static deflection of the shaft",
         deflected_shape_figure,
         dm.shaft_x,
         dm.values(qs, "shaft", "v"),
