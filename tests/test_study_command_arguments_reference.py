@@ -12,7 +12,8 @@ References (rules written in the product's hand-written text, quoted in each tes
   "The ply-angle studies vary the layup of a laminated shaft, the buckling study its wall in
   the laminated-shell model (one laminated tube): refused before the output folder is made".
 * src/flexshaft/cli/study.py, module docstring: "Every command writes its ``--out`` folder
-  (default ``flexshaft-study-NAME``): ``results.nc`` ...".
+  (default ``flexshaft-study-NAME``): ``results.nc`` ..." and "The JSON's ``results_file`` is
+  the path of the folder's ``results.nc`` when the sweep wrote it, null otherwise."
 
 No sweep runs: each command's work is replaced by a recorder (or refused before it), so each
 test costs the CLI's parsing and the design's loading only.
@@ -107,7 +108,8 @@ def test_default_folder_is_flexshaft_study_name(monkeypatch, tmp_path: Path):
 @pytest.mark.parametrize("written", [True, False])
 def test_json_names_the_results_file_only_when_written(monkeypatch, tmp_path: Path, no_files, written):  # noqa: F811
     """--json's results_file: the path of OUT/results.nc when the sweep wrote it, null when it
-    did not (module docstring: every command writes ``results.nc``; the JSON points to it)."""
+    did not (cli/study.py's module docstring: "The JSON's ``results_file`` is the path of the
+    folder's ``results.nc`` when the sweep wrote it, null otherwise.")."""
     ds = _walls(
         [2.0e-3, 3.0e-3],
         safety_factor=[1.2, 2.5],

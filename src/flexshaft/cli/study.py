@@ -4,6 +4,8 @@ Mounted in :mod:`flexshaft.cli` as ``flexshaft study``. Every command writes its
 folder (default ``flexshaft-study-NAME``): ``results.nc`` (netCDF, units in attributes), the
 sweep's chunks (re-run on the same folder to resume) and its figures; it prints a table in
 engineering units (mm, MPa, rpm) or, with ``--json``, the data in SI with unit-suffixed keys.
+The JSON's ``results_file`` is the path of the folder's ``results.nc`` when the sweep wrote it,
+null otherwise.
 """
 
 from __future__ import annotations
