@@ -20,16 +20,7 @@ few milliseconds each, no model built.
 from __future__ import annotations
 
 from tests.test_schema_stations_reference import _problems, _refused_at
-
-
-def _coupling(name: str, x: float) -> dict:
-    return {
-        "name": name,
-        "x": x,
-        "angular_stiffness": "rigid",
-        "axial_stiffness": "rigid",
-        "torsional_stiffness": "rigid",
-    }
+from tests.test_segments import rigid_coupling as _coupling
 
 
 def _disk(x: float) -> dict:
