@@ -7,10 +7,14 @@ The application is called in-process through the ASGI client of
 stand-in that records the designs it would assess, so each test costs milliseconds. References,
 all rules written by hand:
 
-* RFC 9110 §8.3.1: a media type may carry parameters (``application/json; charset=utf-8``),
-  which do not change the type; the server's docstring: "the API takes JSON only";
+* RFC 8259 §11, the application/json registration (quoted verbatim from the RFC Editor's errata
+  page for RFC 8259, https://rfc-editor.org/errata/rfc8259, Errata ID 5853): "Note: No
+  "charset" parameter is defined for this registration. Adding one really has no effect on
+  compliant recipients."; RFC 9110 §8.3.1 only for the grammar ``media-type = type "/" subtype
+  *( OWS ";" OWS parameter )``, behind splitting the header at ';'; the server's docstring:
+  "the API takes JSON only";
 * docs/explorer.md: "a request still waiting when a newer one of the same page arrives is
-  answered 'superseded' without being computed" (so the page's latest request is not);
+  answered "superseded" without being computed" (so the page's latest request is not);
 * docs/explorer.md: "A sweep of any control over a range", on the design of the page (its
   edits): "Every change is validated by the same schema as a design file";
 * docs/explorer.md: "each `a/-a` pair of the stacking notation is one control, rewritten in
@@ -57,9 +61,11 @@ def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
 
 
 def test_json_with_a_charset_parameter_is_json(app):
-    """RFC 9110 §8.3.1: ``application/json; charset=utf-8`` is the media type application/json
-    with a parameter. The same update body, sent with and without the parameter, is answered 200
-    both times with the same computed design; ``text/plain`` is refused (4xx)."""
+    """``application/json; charset=utf-8`` is the media type application/json with a parameter
+    (RFC 9110 §8.3.1's grammar ``type "/" subtype *( OWS ";" OWS parameter )``), and RFC 8259
+    §11: "Adding one really has no effect on compliant recipients." The same update body, sent
+    with and without the parameter, is answered 200 both times with the same computed
+    design; ``text/plain`` is refused (4xx)."""
     body = b'{"overrides": {"shaft.wall_thickness": 0.003}, "seq": 1, "session": "a"}'
     for n, media in enumerate(("application/json", "application/json; charset=utf-8")):
         answer = app.client.request("POST", "/api/update", body.replace(b'"a"', b'"%d"' % n), media)

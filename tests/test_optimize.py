@@ -111,6 +111,7 @@ def test_layup_template_ply_count_and_base_values():
     # the default search reads the Table 3.1 design back: (55/-55/0/0)s, K_p 1e7, K_d 0
     variables, template = default_variables(baseline_design())
     base = DesignProblem(variables, layup=template).base_values()
+    assert base is not None
     assert base["ply_angle_a"] == 55.0 and base["ply_angle_b"] == 0.0 and base["kp"] == 1e7 and base["kd"] == 0.0
     assert base["amb_1_x"] == 3.21 and base["wall_thickness"] == 0.003
 

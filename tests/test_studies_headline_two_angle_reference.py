@@ -1,8 +1,8 @@
 """The headline row of study 2 in the run report's "design studies" section names the best
 laminate in the order the study's result holds it.
 
-Reference: DesignStudies.best_two_angle is documented as "(alpha, beta) deg"
-(thesis/design_studies.py), and the row's own label reads "(α/−α/β/−β)s": α in the outer pair,
+Reference: DesignStudies.best_two_angle is documented by the field's comment as "(alpha, beta)
+deg" (thesis/design_studies.py:140), and the row's own label reads "(α/−α/β/−β)s": α in the outer pair,
 β in the inner one. docs/studies.md's headline table writes the best of the 15° grid as
 "best (55/−55/30/−30)s, R = 49.7", so the stand-in best pair (55, 30) with R = 49.7 must read
 55/−55 before 30/−30. Hand-built stand-in studies (tests/test_studies_section_reference.py's
