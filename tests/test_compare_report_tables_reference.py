@@ -138,8 +138,9 @@ def _metal(buckling):
 
 def test_metal_tube_table_yield_and_buckling_per_tube(monkeypatch, tmp_path):
     """Each tube's row: its fatigue n_f with its σ_a, σ_m, τ_m in MPa (Pa / 1e6, by hand: 40, 10,
-    5 for tube_1), its own yield n_y (12 and 15, not the fatigue 6.8 and 9.1) and its own buckling
-    T_cr/T (5.96 and 7.5; the buckling list is stored tube_2 first, so matching by tube counts)."""
+    5 for tube_1; 30, 20, 6 for tube_2), its own yield n_y (12 and 15, not the fatigue 6.8 and
+    9.1) and its own buckling T_cr/T (5.96 and 7.5; the buckling list is stored tube_2 first, so
+    matching by tube counts)."""
     _stub_figures(monkeypatch)
     buckling = [NS(segment="tube_2", safety_factor=7.5), NS(segment="tube_1", safety_factor=5.96)]
     runs = tuple(
@@ -150,17 +151,20 @@ def test_metal_tube_table_yield_and_buckling_per_tube(monkeypatch, tmp_path):
     assert table.caption.startswith("A:")  # B has no metal tube: no table for it
     assert _column(table, "segment") == ["tube_1", "tube_2"]
     assert _column(table, "fatigue n_f") == [6.8, 9.1]
-    assert _column(table, "σ_a [MPa]") == pytest.approx([40.0, 30.0], rel=1e-15)
+    # One division each (Pa / 1e6): at most an ulp; measured error 0, so rel 1e-12 is ample.
+    assert _column(table, "σ_a [MPa]") == pytest.approx([40.0, 30.0], rel=1e-12)
+    assert _column(table, "σ_m [MPa]") == pytest.approx([10.0, 20.0], rel=1e-12)
+    assert _column(table, "τ_m [MPa]") == pytest.approx([5.0, 6.0], rel=1e-12)
     assert _column(table, "yield n_y") == [12.0, 15.0]
     assert _column(table, "buckling T_cr/T") == [5.96, 7.5]
 
 
 def test_coupling_table_moment_is_k_alpha_and_torque_its_own(monkeypatch, tmp_path):
-    """A coupling of angular stiffness k = 1200 N m/rad at a static angle α = 0.01 rad carries
-    k α = 12 N m (by hand), in the 'moment k α' column; the torque it transmits (150 N m) is in
-    the 'torque' column; the static angle reads 0.01 × 180/π ° (0.573°)."""
+    """The stand-in's static moment, 12 N m (distinct from the 150 N m torque), is in the
+    'moment k α' column and the torque it transmits in the 'torque' column: the columns are
+    checked, not the product's k α (the stand-in hands the moment over). The static angle
+    0.01 rad reads 0.01 × 180/π ° (0.573°)."""
     _stub_figures(monkeypatch)
-    k, alpha = 1200.0, 0.01
 
     def run(cm):
         x = np.array([0.0, 1.0, 2.0])
@@ -170,14 +174,16 @@ def test_coupling_table_moment_is_k_alpha_and_torque_its_own(monkeypatch, tmp_pa
     cm = NS(
         names=["coupling_1"],
         stations=[1.0],
-        static_angle=[alpha],
+        static_angle=[0.01],
         dynamic_angle=[0.002],
         allowable_angle=np.array([math.radians(0.5)]),
-        static_moment=[k * alpha],
+        static_moment=[12.0],
         axial_force=[30.0],
         torque=[150.0],
     )
     (table,) = compare._deflection_section(_comparison([], runs=(run(cm), run(None))), tmp_path).tables
+    # The moment is passed through; the angle is one multiplication and one division (a few ulp
+    # at most): rel 1e-12 is ample, measured error 0.
     assert _column(table, "moment k α [N m]") == pytest.approx([12.0], rel=1e-12)
     assert _column(table, "torque [N m]") == [150.0]
     assert _column(table, "axial force [N]") == [30.0]

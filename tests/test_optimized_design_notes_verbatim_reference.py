@@ -17,16 +17,23 @@ References (hand-written docs and the modules' docstrings, quoted):
   (bounds must be integers)"; the command reads ``PATH=LOWER:UPPER:int`` into one, so
   ``layup.n=1:3.5:int`` is refused, not searched over 1..3.
 
-The texts are written here; every expected line is read off them by hand. Text only, no
-analysis (CPU: a few ms per test).
+* docs/optimizer.md, ``--json``: "SI values, the unit in each key: `driveline_mass_kg`,
+  `kp_N_per_m`"; a dimensionless output (unit ``1``) has no unit to add.
+
+The texts are written here; every expected line is read off them by hand. No analysis: the
+four text tests take a few ms of CPU each; the ``--json`` one, through the public command with
+the search replaced by a stand-in, about 1.1 s of CPU alone (measured), mostly the command's
+first imports and xarray's first Dataset.
 """
 
 from __future__ import annotations
 
 import importlib
+import json
 
 import pytest
 
+from flexshaft.cli import app
 from flexshaft.design import loads_design, with_overrides
 from flexshaft.optimize.files import design_toml
 from flexshaft.optimize.toml_comments import read_comments
@@ -97,27 +104,38 @@ def test_an_integer_variable_with_a_fractional_bound_is_refused():
     assert (plies.lower, plies.upper, plies.integer) == (1, 3, True)
 
 
-def test_json_keys_carry_a_unit_only_where_there_is_one():
+def test_json_keys_carry_a_unit_only_where_there_is_one(monkeypatch, tmp_path):
     """docs/optimizer.md: ``--json`` gives "SI values, the unit in each key: `driveline_mass_kg`,
-    `kp_N_per_m`". The ZDT1 problem's outputs are all dimensionless (unit ``1``): no unit, so
-    each key is the output's name alone. A stand-in result (one reference, no Pareto design)
-    is handed to the command's JSON writer; values are passed through (exact)."""
-    import types
-
+    `kp_N_per_m`". Through the public command on SMALL as rotor.toml: the driveline mass (kg)
+    is keyed ``driveline_mass_kg``, the smallest margin (a fraction, unit ``1``: no unit) is
+    keyed ``min_margin`` alone. The search is replaced by a stand-in (the sibling's
+    ``_Result``, no Pareto design) that keeps the real problem the command builds and hands
+    back one base reference; its values are passed through (exact)."""
     import xarray as xr
 
-    from flexshaft.optimize.reference import zdt1_problem
+    import flexshaft.optimize.nsga as nsga
+    import flexshaft.plot.driveline as driveline
+    from tests.test_optimize_command_reference import _Result, runner
 
-    command = importlib.import_module("flexshaft.cli.optimize")
-    values = {"f1": 0.5, "f2": 2.0, "margin_lower": 0.4, "margin_probe": 1.0, "min_margin": 0.4}
-    result = types.SimpleNamespace(
-        problem=zdt1_problem(),
-        evaluations=xr.Dataset({"feasible": ("evaluation", [True])}),
-        pareto=xr.Dataset(),
-        references={"base": {"feasible": True, "limiting_check": "lower", **values}},
-        n_computed=1,
-        elapsed=0.0,
-        blocking_checks=list,
-    )
-    data = command._json_result(result, {}, [], [])
-    assert data["references"]["base"]["outputs"] == values
+    values = {"driveline_mass": 12.5, "min_margin": 0.4}
+
+    class Stand(_Result):
+        def __init__(self, problem) -> None:
+            super().__init__(spinup_deflection=0.0)
+            self.problem = problem
+            self.evaluations = xr.Dataset({"feasible": ("evaluation", [True])})
+            self.pareto = xr.Dataset()
+            self.references = {"base": {"feasible": True, "limiting_check": "lower", **values}}
+
+        def blocking_checks(self) -> list:
+            return []
+
+    monkeypatch.setattr(nsga, "optimize", lambda problem, budget, out, **kwargs: Stand(problem))
+    monkeypatch.setattr(driveline, "save_figure", lambda figure, out, name: {"png": out / f"{name}.png"})
+    design = tmp_path / "rotor.toml"
+    design.write_text(SMALL, encoding="utf-8")
+    args = ["optimize", str(design), "--budget", "2", "--var", "bearings[1].kd=100:400"]
+    result = runner.invoke(app, [*args, "--out", str(tmp_path / "o"), "--json", "--no-verify"])
+    assert result.exit_code in (0, 3), result.output  # 3: no Pareto design passed
+    data = json.loads(result.stdout)
+    assert data["references"]["base"]["outputs"] == {"driveline_mass_kg": 12.5, "min_margin": 0.4}
