@@ -7,8 +7,12 @@ References (rules written in the hand-written docs, quoted in each test, and val
   unit in each key (...), except rotational speeds in rpm (``_rpm``)": ``start_rpm`` of
   ``--start-rpm 1000`` is 1000 (not its 1000 · 2π/60 = 104.7 rad/s).
 * ``montecarlo --force-limit``'s help: "default each one's own force capacity (as the verdict ...)":
-  without the option the JSON's ``force_limit_N`` is the limit the study counted against (the
-  stand-in study's 1500 N), not null; likewise ``gap_m`` (2.5e-4 m).
+  without the option the JSON's ``force_limit_N`` is the limit the study counted against, not
+  null; likewise ``gap_m``. What the study reports as these is written in its docstrings
+  (src/flexshaft/montecarlo/steady.py, ``MonteCarlo.gap``: "The smallest gap of the active
+  bearings [m]", ``MonteCarlo.force_limit``: "The smallest force capacity of the active bearings
+  [N]"): the stand-in study's bearings hold gaps 5e-4 and 2.5e-4 m and capacities 1500 and
+  2000 N, so 2.5e-4 m and 1500 N.
 
 The run-up and Monte-Carlo analyses are stand-ins (the sibling file's fixtures, imported), so no
 analysis runs; exact comparisons (the values pass through at most one rpm → rad/s → rpm round
@@ -41,12 +45,12 @@ def test_runup_json_start_rpm_is_in_rpm(tmp_path, runup_seen) -> None:  # noqa: 
 def test_montecarlo_json_reports_the_limits_counted_against(tmp_path, monkeypatch, no_files) -> None:  # noqa: F811
     def run(design, samples, **kw):
         assert kw["gap"] is None and kw["force_limit"] is None  # no option: each bearing's own
-        return SimpleNamespace(
+        return SimpleNamespace(  # gap and force_limit: the smallest of the bearings' (docstring)
             gap=2.5e-4,
             force_limit=1500.0,
             limits={
                 "amb_1": SimpleNamespace(gap=5e-4, force_capacity=1500.0),
-                "amb_2": SimpleNamespace(gap=2.5e-4, force_capacity=1500.0),
+                "amb_2": SimpleNamespace(gap=2.5e-4, force_capacity=2000.0),
             },
             dataset={"shaft_peak": SimpleNamespace(values=np.arange(1.0, 101.0) * 1e-5)},
             plot=lambda: None,
