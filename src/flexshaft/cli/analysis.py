@@ -332,7 +332,7 @@ def thermal(
 ) -> None:
     """Tailboom skin temperatures (hover, parked), shaft temperature rise and self-heating margin."""
     loaded = load_design_argument(design)
-    refuse_imbalance_cases(loaded)  # the shaft's heat needs the imbalance response
+    refuse_imbalance_cases(loaded.design, loaded.source)  # the shaft's heat needs the imbalance response
     from flexshaft.assembly import build_model
     from flexshaft.thermal.study import thermal_summary
 

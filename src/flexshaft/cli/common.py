@@ -513,9 +513,9 @@ def refused_by_analyses(loaded: LoadedDesign) -> None:
         raise DesignError(problems, loaded.source)
 
 
-def refuse_imbalance_cases(loaded: LoadedDesign) -> None:
+def refuse_imbalance_cases(design: Any, source: str) -> None:
     """Raise the :class:`~flexshaft.design.DesignError` of a ``"worst"`` imbalance placement
-    beyond its bays (2^(bays−1) load cases, docs/limits.md), naming ``loaded``'s file, before a
+    beyond its bays (2^(bays−1) load cases, docs/limits.md), naming ``source`` (the file), before a
     command that solves the imbalance response (``runup``, ``thermal``; every study, as
     ``flexshaft check`` refuses the design) computes or makes its folder
     (:func:`flexshaft.assembly.size.check_problem_size`'s rule, its caps lifted)."""
@@ -528,7 +528,7 @@ def refuse_imbalance_cases(loaded: LoadedDesign) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ProblemSizeWarning)
         inf = math.inf  # the caps lifted: only the placement's rule decides
-        check_problem_size(loaded.design, "assess", SCREENING, hard_memory=inf, hard_time=inf, source=loaded.source)
+        check_problem_size(design, "assess", SCREENING, hard_memory=inf, hard_time=inf, source=source)
 
 
 def refuse_envelope_points(design: Any, source: str) -> None:

@@ -77,7 +77,7 @@ def _prepare(
     from flexshaft.design import DEFAULT_DESIGN
 
     loaded = load_design_argument(design)
-    refuse_imbalance_cases(loaded)  # a "worst" placement beyond its bays, naming the file
+    refuse_imbalance_cases(loaded.design, loaded.source)  # a "worst" placement beyond its bays, naming the file
     loaded = dataclasses.replace(loaded, source=heading_source(design))
     if points is not None:
         from flexshaft.cli.bounds import check_sweep, workers_of

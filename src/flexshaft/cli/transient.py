@@ -71,7 +71,7 @@ def runup(
     check_finite("--stop-rpm", stop_rpm, 0.0, MAX_SPEED_RPM, unit="rpm")
     check_finite("--dwell", dwell, 0.0, 3600.0, unit="s")
     loaded = load_design_argument(design)
-    refuse_imbalance_cases(loaded)  # before the model is built
+    refuse_imbalance_cases(loaded.design, loaded.source)  # before the model is built
     from flexshaft.analyses.transient import run_up, steady_state_envelope
     from flexshaft.assembly import build_model
     from flexshaft.cli.bounds import check_runup

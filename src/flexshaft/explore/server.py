@@ -244,7 +244,7 @@ async def sweep(request: Request) -> Response:
         if not isinstance(values, list) or not 2 <= len(values) <= MAX_SWEEP_POINTS:
             raise DesignError([_problem("values", f"give 2 to {MAX_SWEEP_POINTS} values to sweep")])
         points = [{**overrides, **control_overrides(design, {key: v})} for v in values]
-        refuse_imbalance_cases(LoadedDesign(design, None, "<request>"))  # refused at every point
+        refuse_imbalance_cases(design, "<request>")  # refused at every point
     except DesignError as exc:
         return _refused(exc)
     start = time.perf_counter()
