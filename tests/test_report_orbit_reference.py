@@ -1,4 +1,5 @@
-"""The report's orbit and onset cells (report/run_sections.py) against independent references.
+"""The report's orbit and onset cells (report/run_sections.py; the orbit cell is
+plot/response.py's ``orbit_amplitude_mm``, the orbit figure's too) against independent references.
 
 Orbit: a harmonic whirl v(t) = Re(V e^{iωt}), w(t) = Re(W e^{iωt}) traces an ellipse whose
 major semi-axis is the largest radius √(v² + w²) over a period; the reference samples the period
@@ -13,7 +14,8 @@ import math
 import numpy as np
 import pytest
 
-from flexshaft.report.run_sections import _onset_text, _orbit_mm
+from flexshaft.plot.response import orbit_amplitude_mm
+from flexshaft.report.run_sections import _onset_text
 
 
 def _sampled_major_mm(v: complex, w: complex) -> float:
@@ -31,7 +33,7 @@ def _sampled_major_mm(v: complex, w: complex) -> float:
     ],
 )
 def test_orbit_major_semi_axis_in_mm(v, w):
-    assert _orbit_mm((v, w)) == pytest.approx(_sampled_major_mm(v, w), rel=1e-6)
+    assert orbit_amplitude_mm(v, w) == pytest.approx(_sampled_major_mm(v, w), rel=1e-6)
 
 
 def test_onset_and_stable_top_in_rpm():

@@ -31,7 +31,7 @@ def _table(section, caption_start: str):
 # ------------------------------------------------------------------ imbalance response
 
 
-def _imbalance(tmp_path):
+def _imbalance(tmp_path, figs=None):
     model = NS(actuators=[], dofs=None, design=NS(loads=NS(imbalance_placement="distributed")), speed=_rad_s(6000))
     spinup = NS(
         speeds=np.array([_rad_s(1000), _rad_s(6000)]),
@@ -48,6 +48,7 @@ def _imbalance(tmp_path):
             imbalance_lateral_amplitude=12.0,
             orbit=(1.0e-4, -1.0e-4j),  # a circle of radius 0.1 mm
             gap=5.0e-4,  # 0.5 mm
+            static_position=(-3.0e-4, 4.0e-4),  # (v, w): 0.5 mm from the centre (a 3-4-5 triangle)
         )
     }
     a = NS(points=(), model=model, spinup=spinup, bearing_reactions=reactions, evidence=NS(operating_range=None))
@@ -62,7 +63,7 @@ def _imbalance(tmp_path):
             "speed_of_max_scan_rpm": 7000.0,
         }
     }
-    return imbalance_section(a, Figures(tmp_path), data, 6000.0)
+    return imbalance_section(a, figs or Figures(tmp_path), data, 6000.0)
 
 
 def test_actuator_table_in_mm_and_newtons(tmp_path):
@@ -74,18 +75,34 @@ def test_actuator_table_in_mm_and_newtons(tmp_path):
 
 
 def test_bearing_table_columns(tmp_path):
-    """Static lateral 300 N, axial 40 N, imbalance 12 N, a circular orbit of 0.1 mm, a gap of 0.5 mm."""
+    """Static lateral 300 N, axial 40 N, imbalance 12 N, a static offset (v, w) = (−0.3, 0.4) mm
+    of length 0.5 mm (3-4-5), a circular orbit of 0.1 mm, a gap of 0.5 mm."""
     table = _table(_imbalance(tmp_path), "Bearing loads")
     assert list(table.columns)[3:] == [
         "static lateral [N]",
         "static axial [N]",
         "imbalance force amplitude [N]",
+        "static offset [mm]",
         "relative orbit [mm]",
         "gap [mm]",
     ]
-    ((name, kind, x, lateral, axial, imbalance, orbit, gap),) = table.rows
+    ((name, kind, x, lateral, axial, imbalance, offset, orbit, gap),) = table.rows
     assert (name, kind, x, lateral, axial, imbalance) == ("fwd", "ball", 0.25, 300.0, 40.0, 12.0)
+    assert offset == pytest.approx(0.5, rel=1e-12)
     assert orbit == pytest.approx(0.1, rel=1e-12) and gap == pytest.approx(0.5, rel=1e-12)
+
+
+def test_bearing_orbits_drawn_about_each_static_position(tmp_path):
+    """The orbit figure's job gets each bearing's orbit, gap and static position under the same
+    label, "fwd (x = 0.25 m)" (x to 2 decimals), so the figure draws static offset + orbit, the
+    sum the actuator-excursion check judges."""
+    figs = Figures(tmp_path)
+    _imbalance(tmp_path, figs)
+    (job,) = [j for j in figs.jobs if j.stem == "bearing_orbits"]
+    label = "fwd (x = 0.25 m)"
+    orbits, gaps = job.args
+    assert orbits == {label: (1.0e-4, -1.0e-4j)} and gaps == {label: 5.0e-4}
+    assert job.kwargs["centres"] == {label: (-3.0e-4, 4.0e-4)}
 
 
 def test_imbalance_sentence_in_mm(tmp_path):
@@ -212,6 +229,27 @@ def _shaft():
     )
 
 
+def _unread(key):
+    raise KeyError(key)
+
+
+#: A point whose temperature check read nothing (no thermal result of its own): the section's
+#: temperature figure then draws the rise and heat alone (tests/test_temperature_check_figure_reference.py
+#: covers the check's own panel).
+UNREAD_POINT = NS(name="operating point", analyses=NS(thermal=None, conditions=None), evidence=NS(max_temperature=None))
+
+
+def one_point(**fields):
+    """A stand-in assessment of one operating point without a temperature check."""
+    return NS(
+        points=(UNREAD_POINT,),
+        governing_point=UNREAD_POINT.name,
+        point=lambda name: UNREAD_POINT,
+        verdict=NS(check=_unread),
+        **fields,
+    )
+
+
 def _thermal(shaft: dict, sh):
     env = NS(ambient_temperature=303.15)
     return NS(environment=env, shaft=shaft, tailboom={}, self_heating=sh, profiles=None, loss_model="rotating")
@@ -221,7 +259,7 @@ def test_self_heating_table_in_celsius_and_watts(tmp_path):
     """Air 313.15 K = 40 °C, h 25, vibration heat 1 + 2 = 3 W, static 0.5 + 1 = 1.5 W, rise 6.85 K;
     ambient 303.15 K = 30.0 °C."""
     sh = NS(status="converged", iterations=4, margin=12.5, max_temperature=353.15)
-    section = thermal_section(NS(points=(), thermal=_thermal({"rotating": _shaft()}, sh)), Figures(tmp_path))
+    section = thermal_section(one_point(thermal=_thermal({"rotating": _shaft()}, sh)), Figures(tmp_path))
     table = _table(section, "Shaft self-heating")
     assert list(table.columns) == [
         "loss model",

@@ -175,6 +175,19 @@ def test_bearing_loads_each_under_its_key(run):
     assert any(r.static_lateral != r.static_axial for r in a.bearing_reactions.values())
 
 
+def test_bearing_static_offset_is_the_actuator_checks_static_part(run):
+    """``static_offset_m`` of an active bearing is the static part of the actuator-excursion
+    check (its evidence, gathered from the static displacement through the magnet's rows: an
+    independent path); it is not zero (a PD bearing sags by its share of the weight over its
+    stiffness). Tolerance 1e-12: the same norm of the same doubles."""
+    a, data = run
+    evidence = {e.name: e for e in a.evidence.actuators}
+    assert evidence
+    for name, e in evidence.items():
+        assert data["bearings"][name]["static_offset_m"] == pytest.approx(e.static_offset, rel=1e-12)
+        assert e.static_offset > 0.0
+
+
 def test_stability_top_speed_and_every_root_speeds_in_rpm(run):
     """``analysed_to_rpm``: the stability analysis's highest speed (its last) × 60/(2π);
     ``every_root.speeds_rpm``: each speed of the every-root check × 60/(2π). Pinned also from

@@ -30,7 +30,7 @@ from types import SimpleNamespace as NS
 
 import numpy as np
 import pytest
-from test_report_sections_tables_reference import _rad_s, _result, _thermal
+from test_report_sections_tables_reference import UNREAD_POINT, _rad_s, _result, _thermal, one_point
 
 from flexshaft.report.run_sections import Figures, stability_section, thermal_section
 
@@ -56,7 +56,7 @@ def test_shaft_temperature_figure_rise_above_air_and_heat_per_metre_at_midpoints
     figs = Figures(tmp_path)
     thermal = _thermal({"rotating": _uneven_shaft()}, _self_heating())
     assert thermal.environment.ambient_temperature != 313.15  # the premise: ambient is not the air
-    thermal_section(NS(points=(), thermal=thermal), figs)
+    thermal_section(one_point(thermal=thermal), figs)
     (job,) = [j for j in figs.jobs if j.stem == "shaft_temperature"]
     x, rise, xe, heat = job.args
     np.testing.assert_array_equal(x, [0.0, 0.5, 2.0])
@@ -85,6 +85,7 @@ def test_thermal_section_states_the_temperature_checks_value_where_it_governs(tm
     a = NS(
         points=("cold_day", "hot_soak_start"),
         governing_point="cold_day",
+        point=lambda name: UNREAD_POINT,
         verdict=NS(check=by_key),
         thermal=_thermal({"rotating": _uneven_shaft()}, _self_heating()),
     )

@@ -125,6 +125,10 @@ class BearingReaction:
         The imbalance speed Ω [rad/s].
     gap : float or None
         Radial clearance of the auxiliary (backup) bearing from the design [m].
+    static_motion : ndarray, shape (5,), or None
+        Relative displacement (shaft minus support) under the static loads [m, rad]: where the
+        imbalance orbit is centred (a magnetic bearing without integral action sags by its
+        share of the weight over its stiffness).
     """
 
     name: str
@@ -135,6 +139,7 @@ class BearingReaction:
     imbalance_motion: np.ndarray
     speed: float
     gap: float | None = None
+    static_motion: np.ndarray | None = None
 
     @property
     def static_lateral(self) -> float:
@@ -150,6 +155,14 @@ class BearingReaction:
     def imbalance_lateral_amplitude(self) -> float:
         """Largest lateral force over the cycle and the load cases [N]."""
         return float(np.max(orbit_amplitude(self.imbalance_force[1], self.imbalance_force[2])))
+
+    @property
+    def static_position(self) -> tuple[float, float]:
+        """Relative (v, w) static displacement [m], the centre of the orbit ((0, 0) when not
+        given)."""
+        if self.static_motion is None:
+            return 0.0, 0.0
+        return float(self.static_motion[1]), float(self.static_motion[2])
 
     @property
     def worst_case(self) -> int:
@@ -217,6 +230,7 @@ def bearing_reactions(
             link.rows @ q_dyn,
             speed,
             gaps.get(link.name),
+            np.real(link.rows @ q_static),
         )
         for link in model.bearings
     }

@@ -25,6 +25,10 @@ __all__ = ["loop_sensitivity_figure"]
 _ZONE_COLORS = ("tab:green", "yellowgreen", "orange", "tab:red")
 
 
+#: A light box behind a note that sits over the curves.
+_NOTE_BOX = {"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": 0.85}
+
+
 @styled
 def loop_sensitivity_figure(
     loops: Mapping[str, tuple[ArrayLike, ArrayLike]],
@@ -91,6 +95,7 @@ def loop_sensitivity_figure(
                     textcoords="offset points",
                     fontsize=8,
                     color=color,
+                    bbox=_NOTE_BOX,  # legible over the curves it sits on
                 )
             highest = max(highest, float(peak))
         if phase_margins and label in phase_margins:
@@ -104,6 +109,7 @@ def loop_sensitivity_figure(
                     textcoords="offset points",
                     fontsize=8,
                     color=color,
+                    bbox=_NOTE_BOX,  # legible over the curves it sits on
                 )
     ceiling = 1.15 * max(highest, required_peak or 0.0, *(zone_limits[-1:] or [0.0]))
     edges = [0.0, *zone_limits, ceiling]

@@ -113,6 +113,7 @@ def orbit_figure(
     orbits: Mapping[str, tuple[complex, complex]],
     gaps: Mapping[str, float] | float | None = None,
     *,
+    centres: Mapping[str, tuple[float, float]] | None = None,
     title: str = "Orbits",
     ax=None,
 ) -> Figure:
@@ -130,8 +131,13 @@ def orbit_figure(
         (v, w) amplitude of each point [m], e.g. the shaft relative to its bearing.
     gaps : mapping of str to float, or float, optional
         Radial clearance of the auxiliary (backup) bearing at each point [m] (a float for
-        all), drawn as a circle; when the orbit is much smaller, the panel shows the orbit and
-        states the fraction of the gap it uses.
+        all), drawn as a circle about the bearing's centre; when the orbit is much smaller,
+        the panel shows the orbit and states the fraction of the gap it uses.
+    centres : mapping of str to (float, float), optional
+        Static (v, w) position of each orbit's centre relative to the bearing [m] (the shaft's
+        static offset: a magnetic bearing's sag under its share of the weight); the orbit is
+        drawn about it, and the fraction of the gap is that of static offset + orbit (the
+        actuator excursion the verdict checks). Default: orbits about the bearing's centre.
     title : str
         Figure title (when the figure is made here).
     ax : sequence of matplotlib Axes, optional
@@ -169,14 +175,20 @@ def orbit_figure(
                 f"orbits[{name!r}]: expected a (v, w) pair of complex amplitudes [m], got {pair!r}"
             ) from None
         gap = gaps.get(name) if isinstance(gaps, Mapping) else gaps
+        cv, cw = (0.0, 0.0) if centres is None or name not in centres else (float(c) for c in centres[name])
         radius_mm = float(orbit_amplitude_mm(v, w))
+        offset_mm = float(np.hypot(cv, cw)) * MM_PER_M
+        reach_mm = offset_mm + radius_mm  # the farthest the shaft can be from the bearing's centre
         gap_mm = None if gap is None else gap * MM_PER_M
-        shows_gap = gap_mm is not None and gap_mm <= 4.0 * max(radius_mm, 1e-300)
-        extent_mm = max(radius_mm, gap_mm if gap_mm is not None and shows_gap else 0.0) or 1e-6
+        shows_gap = gap_mm is not None and gap_mm <= 4.0 * max(reach_mm, 1e-300)
+        extent_mm = max(reach_mm, gap_mm if gap_mm is not None and shows_gap else 0.0) or 1e-6
         unit, scale = ("μm", 1e3) if extent_mm < 0.1 else ("mm", 1.0)  # plain tick labels, no offset text
         ov, ow = orbit_ellipse(v * MM_PER_M * scale, w * MM_PER_M * scale)
+        ov, ow = ov + cv * MM_PER_M * scale, ow + cw * MM_PER_M * scale
         a.plot(ow, ov, color="C0", lw=1.6)
         a.plot(ow[0], ov[0], "o", color="C0", ms=5)
+        if offset_mm > 0.0:  # the static offset: from the bearing's centre to the orbit's
+            a.plot([0.0, cw * MM_PER_M * scale], [0.0, cv * MM_PER_M * scale], color="0.35", ls=":", lw=1.0)
         j = len(ov) // 8
         a.annotate(
             "",
@@ -185,8 +197,10 @@ def orbit_figure(
             arrowprops={"arrowstyle": "-|>", "color": "C0", "lw": 1.2, "mutation_scale": 12},
         )
         note = f"max {radius_mm * scale:.3g} {unit}"
+        if offset_mm > 0.0:
+            note = f"static {offset_mm * scale:.3g} {unit} + orbit {radius_mm * scale:.3g} {unit}"
         if gap_mm is not None:
-            note += f"\n{100 * radius_mm / gap_mm:.3g} % of gap {gap_mm:.3g} mm"
+            note += f"\n{100 * reach_mm / gap_mm:.3g} % of gap {gap_mm:.3g} mm"
             if shows_gap:
                 circle = orbit_ellipse(gap_mm * scale, -1j * gap_mm * scale)
                 a.plot(circle[1], circle[0], color="tab:red", ls="--", lw=1.1)

@@ -22,8 +22,9 @@ __all__ = ["json_ready", "results_json", "rpm_or_none"]
 
 
 def _bearing_dict(a: Assessment) -> dict | None:
-    """Static lateral and axial force and the imbalance force amplitude at the operating speed
-    (from the assessment's bearing reactions)."""
+    """Static lateral and axial force, the static offset (shaft from the bearing's centre) and
+    the imbalance force amplitude at the operating speed (from the assessment's bearing
+    reactions)."""
     reactions = a.bearing_reactions
     if not reactions:
         return None
@@ -31,6 +32,7 @@ def _bearing_dict(a: Assessment) -> dict | None:
         name: {
             "static_lateral_N": r.static_lateral,
             "static_axial_N": r.static_axial,
+            "static_offset_m": float(np.hypot(*r.static_position)),
             "imbalance_lateral_amplitude_N": r.imbalance_lateral_amplitude,
         }
         for name, r in reactions.items()

@@ -7,6 +7,7 @@ Each returns a :class:`~flexshaft.report.html.Section` and adds its figures' job
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -16,8 +17,9 @@ from flexshaft.analyses.loop_margins import ISO_14839_ZONE_LIMITS
 from flexshaft.plot.driveline import actuator_figure, bode_figure, imbalance_response_figure, orbit_figure
 from flexshaft.plot.loops import loop_sensitivity_figure
 from flexshaft.plot.output import FigureJob
+from flexshaft.plot.response import orbit_amplitude_mm
 from flexshaft.plot.stability import log_decrement_figure, stability_map_figure
-from flexshaft.plot.thermal import shaft_temperature_figure, temperature_profiles_figure
+from flexshaft.plot.thermal import shaft_temperature_check_figure, shaft_temperature_figure, temperature_profiles_figure
 from flexshaft.report.html import FigureRef, Section, Table
 from flexshaft.report.results_json import rpm_or_none
 from flexshaft.thesis.report_studies import ThesisStudies
@@ -117,12 +119,15 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
         figures.append(
             figs.add(
                 "bearing_orbits",
-                f"Shaft orbits relative to each bearing at {op_rpm:.0f} rpm (worst load "
-                "case; dashed: auxiliary-bearing gap; viewed along +x, forward whirl "
-                "clockwise)",
+                f"Shaft orbits relative to each bearing at {op_rpm:.0f} rpm"
+                + (f" at the governing point {a.governing_point}" if len(a.points) > 1 else "")
+                + " (worst load case), each about the shaft's static position in the bearing (dotted: the "
+                "static offset); dashed: auxiliary-bearing gap, its share static offset + orbit; viewed along "
+                "+x, forward whirl clockwise",
                 orbit_figure,
                 orbits,
                 orbit_gaps,
+                centres={f"{name} (x = {r.x_shaft:.2f} m)": r.static_position for name, r in reactions.items()},
                 title=f"Orbits at the bearings, {op_rpm:.0f} rpm",
             )
         )
@@ -186,6 +191,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                     "static lateral [N]",
                     "static axial [N]",
                     "imbalance force amplitude [N]",
+                    "static offset [mm]",
                     "relative orbit [mm]",
                     "gap [mm]",
                 ],
@@ -197,7 +203,8 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                         r.static_lateral,
                         r.static_axial,
                         r.imbalance_lateral_amplitude,
-                        _orbit_mm(r.orbit),
+                        m_to_mm(float(np.hypot(*r.static_position))),
+                        orbit_amplitude_mm(*r.orbit),
                         None if r.gap is None else m_to_mm(r.gap),
                     ]
                     for n, r in reactions.items()
@@ -350,10 +357,23 @@ def _governing_sentence(a: Assessment, key: str) -> str:
     )
 
 
-def _orbit_mm(pair) -> float:
-    """Major semi-axis of the orbit of a (v, w) amplitude pair [m], in mm."""
-    v, w = pair
-    return float(m_to_mm(np.sqrt(0.5 * (abs(v) ** 2 + abs(w) ** 2 + abs(v * v + w * w)))))
+def _temperature_checked(a: Assessment) -> tuple[str, dict[str, Any]] | None:
+    """The point where the temperature check governs and what that check reads there: the
+    self-heating equilibrium along the shaft, the checked value, the allowable and the point's
+    material temperature (keyword arguments of the figure); None when the check read nothing."""
+    name = check_point(a, "temperature")
+    shown = a.point(name)
+    th, evidence, conditions = shown.analyses.thermal, shown.evidence, shown.analyses.conditions
+    if th is None or evidence.max_temperature is None:
+        return None
+    temperature = th.shaft_temperature
+    return name, {
+        "temperature": (temperature.x, temperature.temperature),
+        "checked": evidence.max_temperature,
+        "allowable": evidence.allowable_temperature,
+        "material_temperature": None if conditions is None else conditions.material_temperature,
+        "point": name if len(a.points) > 1 else "",
+    }
 
 
 def _onset_text(speed: float | None, top: float) -> str:
@@ -537,17 +557,20 @@ def thermal_section(a: Assessment, figs: Figures) -> Section:
             f"Self-heating{at} with temperature-dependent matrix properties: {sh.status} after "
             f"{sh.iterations} iterations; margin to the allowable temperature {sh.margin:.1f} K.{verdict}"
         )
-    figures = [
-        figs.add(
-            "shaft_temperature",
-            f"Shaft temperature rise and heat generation along the shaft{at}",
-            shaft_temperature_figure,
-            x,
-            rise,
-            xe,
-            heat,
+    # the temperature check's own reading on top, at the point where it governs
+    checked = _temperature_checked(a)
+    function: Callable[..., Any] = shaft_temperature_figure
+    kwargs: dict[str, Any] = {}
+    caption = f"Shaft temperature rise and heat generation along the shaft{at}"
+    if checked is not None:
+        where = f" at {checked[0]}, where the temperature check governs" if len(a.points) > 1 else ""
+        function, kwargs = shaft_temperature_check_figure, checked[1]
+        caption = (
+            f"Shaft temperature{where}: the self-heating equilibrium along the shaft, the point's material temperature "
+            f"and the value the check reads against the allowable (dashed); below, the rise above the air and the heat "
+            f"generated under both loss models{at}"
         )
-    ]
+    figures = [figs.add("shaft_temperature", caption, function, x, rise, xe, heat, **kwargs)]
     prof = th.profiles
     if prof:
         figures.append(
