@@ -125,10 +125,12 @@ def test_the_figure_keeps_feasibility_and_sends_no_nan(tmp_path):
     assert json.loads(text)["evaluations"]["x"][3] is None
 
 
-@pytest.mark.parametrize("index", [2, -1, "0", None])
+@pytest.mark.parametrize("index", [2, -1, "0", None, True, False, 1.0])
 def test_an_index_off_the_front_is_refused(tmp_path, index):
     """The front has two points: 0 and 1 are the only indices (a JSON string, null, a negative
-    index or 2 is named in the refusal, never read from the end of the list)."""
+    index or 2 is named in the refusal, never read from the end of the list; JSON's true and
+    false, which Python's bool makes the integers 1 and 0, and a number 1.0 are no index
+    either: a hand-made request {"index": true} loaded point 1, review h107c)."""
     from flexshaft.design import DesignError
 
     _run_folder(tmp_path / "run")

@@ -103,7 +103,7 @@ def front_design(front: Front, index: object) -> tuple[Design, dict[str, Any]]:
         For an index off the front, or overrides the schema refuses.
     """
     points = front.data["pareto"]["overrides"]
-    if not isinstance(index, int) or not 0 <= index < len(points):
+    if type(index) is not int or not 0 <= index < len(points):  # bool is an int subclass: JSON's true is no index
         raise _problem(front.folder, f"no Pareto point {index!r} (the front has {len(points)})")
     overrides = dict(points[index])
     return with_overrides(front.base, overrides), overrides
