@@ -169,7 +169,7 @@ def _stability(tmp_path):
         stability=_result(None, speeds),
         modes_at_speed=None,  # no modes at the operating speed: no curve greyed out
         model=NS(speed=_rad_s(4800)),
-        design=NS(requirements=NS(required_log_decrement=0.1)),
+        design=NS(requirements=NS(required_log_decrement=0.1, min_onset_margin=0.15), bearings=[]),
         roots=NS(
             coverage=lambda: "every root",
             speeds=np.array([_rad_s(1000), _rad_s(6000)]),

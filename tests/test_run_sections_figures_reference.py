@@ -94,14 +94,28 @@ def test_thermal_section_states_the_temperature_checks_value_where_it_governs(tm
     assert "The Shaft temperature check governs at hot_soak_start: 85.0 °C (required ≤ 100.0 °C)." in text
 
 
-def test_gain_map_figure_onsets_and_top_speed_in_rpm(tmp_path):
+PD = NS(kind="active", kp=2e5, kd=15.0, controller=None)
+
+
+@pytest.mark.parametrize(
+    ("active", "expected"),
+    [
+        ((PD, PD), (15.0, None)),  # both K_p 2e5, K_d 15: the design's point, stable (None: at the map's top)
+        ((PD, NS(kind="active", kp=2e5, kd=30.0, controller=None)), None),  # two K_d: no one point
+        ((PD, NS(kind="active", kp=2e5, kd=15.0, controller=object())), None),  # a controller: no (K_p, K_d)
+    ],
+    ids=["same-gains", "two-kd", "controller"],
+)
+def test_gain_map_figure_onsets_and_top_speed_in_rpm(tmp_path, active, expected):
     speeds = np.array([_rad_s(1000), _rad_s(3000), _rad_s(6000)])
     a = NS(
         points=(),
         stability=_result(None, speeds),
         modes_at_speed=None,
         model=NS(speed=_rad_s(4800)),
-        design=NS(requirements=NS(required_log_decrement=0.1)),
+        design=NS(
+            requirements=NS(required_log_decrement=0.1, min_onset_margin=0.15), bearings=[NS(kind="contact"), *active]
+        ),
         roots=NS(
             coverage=lambda: "every root",
             speeds=speeds[:1],
@@ -124,3 +138,12 @@ def test_gain_map_figure_onsets_and_top_speed_in_rpm(tmp_path):
     np.testing.assert_array_equal(kd, [10.0, 20.0])
     assert list(onset.values()) == [pytest.approx(4000.0, rel=1e-12), pytest.approx(5000.0, rel=1e-12)]
     assert op_rpm == 4800.0 and top_rpm == pytest.approx(9000.0, rel=1e-12)
+    # the whirl-onset check's requirement, (1 + min_onset_margin) × the operating speed
+    # (docs/requirements.md), 1.15 × 4800 = 5520 rpm; the design's own gains at its onset
+    # when every active bearing has the same PD gains
+    assert job.kwargs["required_rpm"] == pytest.approx(5520.0, rel=1e-12)
+    if expected is None:
+        assert job.kwargs["design"] is None
+    else:
+        kd_design, onset_design, label = job.kwargs["design"]
+        assert (kd_design, onset_design) == expected and "K_p = 2e+05 N/m" in label

@@ -7,7 +7,8 @@ Hand-built curves (no model); references derived here:
 * the onset speed [rpm] is marked at (n_onset, δ = 0) on an axis in rpm;
 * δ < 0 is unstable (a free vibration grows by e^{−δ} per cycle): the red band covers only
   δ ≤ 0;
-* the onset map's operating-speed line sits at the operating speed [rpm].
+* the onset map's operating-speed line sits at the operating speed [rpm]; its required onset
+  at (1 + min_onset_margin) × that speed (docs/requirements.md).
 
 Compared to rel 1e-12 (no discretisation). Agg, no file.
 """
@@ -53,6 +54,27 @@ def test_stability_map_operating_line_at_the_operating_speed():
     np.testing.assert_allclose(op.get_ydata(), [4800.0, 4800.0], rtol=REL)
     (bound,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("stable to")]
     np.testing.assert_allclose(bound.get_ydata(), [7200.0, 7200.0], rtol=REL)
+
+
+def test_stability_map_required_onset_and_the_design_star():
+    """The whirl-onset check requires (1 + margin) × Ω_op: 1.15 × 4800 = 5520 rpm, drawn dashed
+    at 5520. The design's own gains: a design stable to the top speed is an open star at
+    (K_d, max_rpm); one with an onset a filled star at (K_d, onset)."""
+    kd = np.array([0.0, 100.0, 200.0])
+    for onset, y, face in ((None, 7200.0, "none"), (6100.0, 6100.0, "gold")):
+        ax = stability_map_figure(
+            kd,
+            {"shaft": [3000.0, 5000.0, np.nan]},
+            operating_rpm=4800.0,
+            max_rpm=7200.0,
+            required_rpm=1.15 * 4800.0,
+            design=(150.0, onset, "this design"),
+        ).axes[0]
+        (required,) = [ln for ln in ax.get_lines() if str(ln.get_label()).startswith("required onset")]
+        np.testing.assert_allclose(required.get_ydata(), [5520.0, 5520.0], rtol=REL)
+        (star,) = [ln for ln in ax.get_lines() if ln.get_label() == "this design"]
+        assert star.get_marker() == "*" and star.get_markerfacecolor() == face
+        np.testing.assert_allclose([star.get_xdata()[0], star.get_ydata()[0]], [150.0, y], rtol=REL)
 
 
 def test_series_stable_at_the_same_gain_each_keep_a_visible_ring():

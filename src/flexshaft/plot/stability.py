@@ -243,10 +243,16 @@ def stability_map_figure(
     operating_rpm: float | None = None,
     max_rpm: float | None = None,
     *,
+    required_rpm: float | None = None,
+    design: tuple[float, float | None, str] | None = None,
     ax=None,
 ):
     """Onset speed of whirl instability against the actuators' derivative gain K_d [N s/m];
     NaN onsets (stable over the analysed range) are drawn at ``max_rpm`` with open markers.
+
+    ``required_rpm``: the onset the whirl-onset requirement asks for (dashed). ``design``:
+    (K_d, onset [rpm] or None when stable to ``max_rpm``, label) of the design itself, a star
+    (open when stable).
 
     Each series' markers are 3 pt smaller than the one before it: series stable at the same
     K_d share a point at ``max_rpm``, and equal rings there would leave only the last drawn
@@ -270,8 +276,25 @@ def stability_map_figure(
             )
     if operating_rpm is not None:
         ax.axhline(operating_rpm, color="tab:red", ls="-.", label=f"operating speed {operating_rpm:.0f} rpm")
+    if required_rpm is not None:
+        ax.axhline(required_rpm, color="k", ls="--", lw=1.2, label=f"required onset ≥ {required_rpm:.0f} rpm")
     if max_rpm is not None:
         ax.axhline(max_rpm, color="0.5", ls=":", label=f"stable to ≥ {max_rpm:.0f} rpm (open markers)")
+    if design is not None:
+        kd_design, onset_design, label = design
+        stable = onset_design is None
+        if not stable or max_rpm is not None:
+            ax.plot(
+                [kd_design],
+                [max_rpm if stable else onset_design],
+                "*",
+                ms=15,
+                mec="k",
+                mfc="none" if stable else "gold",
+                mew=1.3,
+                zorder=5,
+                label=label,
+            )
     ax.set_xlabel("derivative gain K_d [N s/m]")
     ax.set_ylabel("onset speed [rpm]")
     ax.set_title("Whirl-instability onset")

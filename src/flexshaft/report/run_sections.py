@@ -455,16 +455,25 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
     )
     if gain_map is not None:
         g = gain_map
-        onset = {f"K_p = {kp:.3g} N/m": rad_s_to_rpm(g.onset_speed[i]) for i, kp in enumerate(g.kp)}
+        by_kp = {f"K_p = {kp:.3g} N/m": rad_s_to_rpm(g.onset_speed[i]) for i, kp in enumerate(g.kp)}
+        active = [b for b in a.design.bearings if b.kind == "active"]
+        gains = {(b.kp, b.kd or 0.0) for b in active if b.controller is None}
+        design = None
+        if len(gains) == 1 and len(active) == sum(b.controller is None for b in active):
+            ((kp, kd),) = gains  # one pair of PD gains on every active bearing: the design's own point
+            design = (kd, rpm_or_none(onset.stability.onset_speed), f"this design (K_p = {kp:.3g} N/m)")
         figures.append(
             figs.add(
                 "stability_map",
-                "Onset speed against the actuator gains",
+                "Onset speed against the actuator gains; dashed: the onset the whirl-onset check requires; "
+                f"star: the design's own gains and its onset{onset_at}",
                 stability_map_figure,
                 g.kd,
-                onset,
+                by_kp,
                 op_rpm,
                 rad_s_to_rpm(g.max_speed),
+                required_rpm=(1.0 + a.design.requirements.min_onset_margin) * op_rpm,
+                design=design,
             )
         )
         tables.append(
