@@ -81,7 +81,7 @@ def test_speeds_of_the_analyses_are_the_governing_points(monkeypatch, tmp_path):
     a = _assessment(points=("cold_day", "hot_day"))
     a.model.speed = _rad_s(6600.0)
     a.modes_at_speed = AT_SPEED
-    a.evidence = NS(critical_speeds=(), operating_speed=_rad_s(6600.0), operating_range=None)
+    a.evidence = NS(critical_speeds=(), operating_speed=_rad_s(6600.0), operating_range=None, torsional_modes=())
     plan = _plan(monkeypatch, a, tmp_path)
     (at_speed,) = _modes_section(plan).tables[:1]
     assert at_speed.caption == "Natural frequencies at 6600 rpm"

@@ -88,7 +88,7 @@ def _assessment(points=("operating point",), point_power=150e3):
         campbell=NS(critical_speeds=criticals),
         modes_at_rest=None,
         modes_at_speed=None,
-        evidence=NS(critical_speeds=(), operating_speed=_rad_s(6000.0), operating_range=None),
+        evidence=NS(critical_speeds=(), operating_speed=_rad_s(6000.0), operating_range=None, torsional_modes=()),
         points=judged,
         point=lambda name: next(p for p in judged if p.name == name),
         governing_point=points[-1],

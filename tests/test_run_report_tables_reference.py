@@ -89,6 +89,7 @@ def test_campbell_job_gets_main_rotor_lines_in_hz_and_criticals_in_rpm(monkeypat
         ],
         operating_speed=_rad_s(6000.0),
         operating_range=(_rad_s(5700.0), _rad_s(6300.0)),
+        torsional_modes=(),
     )
     excitations = [
         NS(name="main rotor 1/rev", source="main_rotor", order=1, ratio=0.05),

@@ -6,7 +6,7 @@ matplotlib is imported lazily (through :func:`flexshaft.plot.style.styled`).
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -78,6 +78,7 @@ def campbell_figure(
     response_criticals: Sequence[tuple[float, float]] = (),
     separation: Sequence[tuple[float, float, float, float]] = (),
     speed_range_rpm: tuple[float, float] | None = None,
+    torsional: Sequence[tuple[float, float, float, float, str]] = (),
     ax=None,
 ) -> Figure:
     """Campbell diagram: tracked natural frequencies against spin speed.
@@ -129,6 +130,13 @@ def campbell_figure(
     speed_range_rpm : (float, float), optional
         The operating speed range (lowest, highest) [rpm], shaded (the separation margins are
         measured from its ends).
+    torsional : sequence of (float, float, float, float, str), optional
+        The torsional separation check's reading of each torsional mode: (natural frequency
+        [Hz], the order k of its nearest excitation f_e = k·Ω/60 [Hz], its margin, the required
+        margin r, the excitation's name). The margin |f_n − f_e|/f_e falls below r while the
+        excitation lies in (f_n/(1 + r), f_n/(1 − r)), i.e. at the speeds
+        60·f_n/(k(1 ± r)) [rpm]: drawn as a brown bar on f_n between them (the check fails
+        where the operating speed range meets it), the crossing f_e = f_n marked and labelled.
     ax : matplotlib Axes, optional
         Draw into this axes (its figure is returned).
 
@@ -199,7 +207,7 @@ def campbell_figure(
     ax.set_xlim(span[0], span[1])
     ax.set_ylim(0.0, top)
 
-    handles = []
+    handles: list[Any] = []  # artists, or a tuple of artists sharing one legend entry
     present = [name for name in ("forward", "backward", "planar") if name in labels]
     for name in present:
         handles.append(
@@ -350,6 +358,12 @@ def campbell_figure(
             bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8},
             zorder=6,
         )
+    torsional_bar = _torsional_separation(ax, torsional, span[1])
+    lateral_bar = [h for h in handles if h.get_label() == "required separation (API 684)"]
+    if torsional_bar and lateral_bar:  # one legend entry of both bars (a 20th entry widens the legend)
+        handles[handles.index(lateral_bar[0])] = (lateral_bar[0], *torsional_bar)
+    else:
+        handles += torsional_bar
     mark_operating(ax, operating_rpm, speed_range_rpm=speed_range_rpm)
     if speed_range_rpm is not None and speed_range_rpm[0] < speed_range_rpm[1]:
         handles.append(ax.patches[-1])
@@ -359,10 +373,16 @@ def campbell_figure(
     ax.set_xlabel("spin speed Ω [rpm]")
     ax.set_ylabel("natural frequency [Hz]")
     ax.set_title("Campbell diagram" + (" (colour: log decrement δ, red = unstable)" if delta is not None else ""))
+    from matplotlib.legend_handler import HandlerTuple
+
+    texts = [
+        "required separation (API 684; torsional)" if isinstance(h, tuple) else str(h.get_label()) for h in handles
+    ]
+    style = {"handler_map": {tuple: HandlerTuple(ndivide=None, pad=0.3)}}
     if own:  # a band below the axes: the legend hides no curve
-        fig.legend(handles=handles, loc="lower center", ncols=4, bbox_to_anchor=(0.5, 0.005), fontsize=8)
+        fig.legend(handles, texts, loc="lower center", ncols=4, bbox_to_anchor=(0.5, 0.005), fontsize=8, **style)
     else:
-        ax.legend(handles=handles, loc="best", fontsize=7.5)
+        ax.legend(handles, texts, loc="best", fontsize=7.5, **style)
     return fig
 
 
@@ -389,6 +409,38 @@ def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray) -> list:
         )
         handle = [bar]
     return handle
+
+
+def _torsional_separation(ax, torsional, right: float) -> list:
+    """Each torsional mode's band of speeds where its nearest excitation comes within the
+    required margin (``torsional`` of :func:`campbell_figure`), a brown bar on its frequency,
+    and the excitation's crossing of the mode (◇); returns the legend handle (the crowded
+    low-frequency corner has no room for a label per mode: the caller states the margins)."""
+    handle = None
+    for f_n, order, _margin, required, name in torsional:
+        if not (np.isfinite(f_n) and f_n > 0 and np.isfinite(order) and order > 0):
+            raise ValueError(f"torsional: {name!r} needs a frequency > 0 Hz and an order > 0, got {f_n!r}, {order!r}")
+        low = RPM_PER_HZ * f_n / (order * (1.0 + required))
+        high = RPM_PER_HZ * f_n / (order * (1.0 - required)) if required < 1.0 else np.inf
+        if low >= right:  # beyond the speeds drawn (the bar would only grow the canvas)
+            continue
+        (handle,) = ax.plot(
+            [low, min(high, right)],
+            [f_n, f_n],
+            color="tab:brown",
+            lw=3.0,
+            alpha=0.55,
+            marker="|",
+            ms=9,
+            solid_capstyle="butt",
+            zorder=1.5,
+        )
+        if RPM_PER_HZ * f_n / order <= right:
+            ax.plot(RPM_PER_HZ * f_n / order, f_n, "D", mfc="none", mec="tab:brown", mew=1.3, ms=7, zorder=5)
+    if handle is None:
+        return []
+    handle.set_label("required torsional separation")
+    return [handle]
 
 
 def _label_rays(ax, labels: list[tuple[str, float, float, str]]) -> None:

@@ -162,6 +162,11 @@ def plan_run_report(
     judged_off = a.design.requirements.separation == "off"  # the check not evaluated: no bars
     low, high = a.evidence.operating_range or (a.evidence.operating_speed,) * 2
     speed_range_rpm = (rad_s_to_rpm(low), rad_s_to_rpm(high)) if low < high else None
+    torsional = (
+        torsional_readings(a.evidence, a.design.requirements.min_torsional_separation)
+        if a.evidence.torsional_modes
+        else []
+    )
     if camp is not None:
         campbell_figure.append(
             figs.result(
@@ -184,6 +189,14 @@ def plan_run_report(
                 )
                 + ("; brown: the tail rotor's 1/rev and N/rev (torsional separation)" if tail_rotor else "")
                 + (
+                    "; brown bars: the speeds where each torsional mode's nearest excitation (◇: where it "
+                    "crosses the mode) comes within the required torsional separation ("
+                    + ", ".join(f"{name} {m:.1%}, needs {r:.1%}" for _, _, m, r, name in torsional)
+                    + ")"
+                    if torsional
+                    else ""
+                )
+                + (
                     "; purple: the main rotor's 1/rev to N/rev (geared to the shaft; the boom modes' forcing "
                     "and the torsional separation's)"
                     if main_rotor
@@ -198,6 +211,7 @@ def plan_run_report(
                 response_criticals=[(rad_s_to_rpm(c.speed), c.amplification_factor) for c in verdict_criticals],
                 separation=() if judged_off else separation_readings(a.evidence, verdict_criticals),
                 speed_range_rpm=speed_range_rpm,
+                torsional=torsional,
             )
         )
     sections.append(
@@ -368,6 +382,20 @@ def plan_run_report(
     if data["notes"]:
         sections.append(Section("Notes", paragraphs=list(data["notes"])))
     return RunReportPlan(sections, figs.jobs, data, f"flexshaft report: {report_title(a.design)}", a.design.name)
+
+
+def torsional_readings(evidence, required: float) -> list[tuple[float, float, float, float, str]]:
+    """The torsional separation check's reading of each torsional mode for the Campbell diagram:
+    (natural frequency [Hz], the order of its nearest excitation on the shaft speed, its margin,
+    the required margin, "mode × excitation"). The excitation's band spans the operating speed
+    range, so its order is the band's top over the range's top speed."""
+    modes = evidence.torsional_modes or ()
+    low, high = evidence.operating_range or (evidence.operating_speed,) * 2
+    return [
+        (m.frequency / (2.0 * math.pi), m.band[1] / high, m.margin, required, f"{m.label} × {m.excitation}")
+        for m in modes
+        if high > 0
+    ]
 
 
 def main_rotor_lines(model) -> dict[str, float]:
