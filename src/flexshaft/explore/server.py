@@ -139,9 +139,19 @@ def _refused(exc: DesignError, status: int = 422) -> JSONResponse:
 async def _json(request: Request) -> dict:
     if request.headers.get("content-type", "").split(";")[0].strip() != "application/json":
         raise DesignError([_problem("<request>", "the API takes JSON (Content-Type: application/json)")])
-    body = await request.body()
-    if len(body) > MAX_UPLOAD * 2:
-        raise DesignError([_problem("<request>", "request too large")])
+    # bounded before it is held: a declared length over the limit is refused unread, and a body
+    # without one is read only up to the limit
+    limit = MAX_UPLOAD * 2
+    declared = request.headers.get("content-length", "")
+    if declared.isdigit() and int(declared) > limit:
+        raise DesignError([_problem("<request>", f"request too large (at most {limit} bytes)")])
+    chunks, size = [], 0
+    async for chunk in request.stream():
+        size += len(chunk)
+        if size > limit:
+            raise DesignError([_problem("<request>", f"request too large (at most {limit} bytes)")])
+        chunks.append(chunk)
+    body = b"".join(chunks)
     try:
         data = json.loads(body)
     except ValueError:
