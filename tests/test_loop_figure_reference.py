@@ -113,3 +113,23 @@ def test_the_report_section_reads_the_checks_point_and_the_requirements(tmp_path
     }
     cold_only = NS(**{**vars(a), "verdict": NS(check=lambda key: NS(location={"point": "cold"}))})
     assert run_sections.loops_section(cold_only, run_sections.Figures(Path(tmp_path))) is None  # no loops there
+
+
+@pytest.mark.parametrize("f_peak", [2.0, 90.0])
+def test_the_notes_stay_inside_their_axes(f_peak):
+    """A peak and a crossover near the low or the high end of the frequency axis: each note's
+    drawn box lies inside its axes (audit a2: a peak near the top frequency wrote its note past
+    the axes, over the zone labels)."""
+    f = np.array([1.0, 10.0, 100.0])
+    fig = loop_sensitivity_figure(
+        {"a (v)": (f, np.array([0.5, 1.0, 2.0]))},
+        peaks={"a (v)": (f_peak, 2.0)},
+        phase_margins={"a (v)": (f_peak, 40.0)},
+        zone_limits=(3.0, 4.0, 5.0),
+    )
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes[:2]:
+        (note,) = [t for t in ax.texts if t.get_text().startswith(("|S|max", "phase margin"))]
+        box, frame = note.get_window_extent(renderer), ax.get_window_extent(renderer)
+        assert frame.x0 <= box.x0 and box.x1 <= frame.x1, (note.get_text(), box, frame)

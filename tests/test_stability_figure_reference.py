@@ -123,3 +123,26 @@ def test_modes_the_requirement_does_not_judge_are_grey():
     assert "not judged by the δ requirement" in legend
     with pytest.raises(ValueError, match=r"judged\['d'\]: expected 3 entries"):
         log_decrement_figure(speeds, {"d": delta}, judged={"d": [True, False]})
+
+
+def test_the_legend_band_leaves_the_x_label_visible():
+    """Seven legend entries (a greyed mode, the requirement, the operating speed, an onset and
+    three whirl styles): the band below the axes holds two rows; in three the legend covered
+    the x label (audit a2, the Jeffcott rotor's report). Measured on the drawn boxes."""
+    speeds = np.linspace(0.0, 6000.0, 7)
+    delta = np.column_stack([0.09 - 1e-4 * np.maximum(speeds - 2885.0, 0.0), 0.062 + 0 * speeds, 0.09 + 0 * speeds])
+    name = "this design"
+    fig = log_decrement_figure(
+        speeds,
+        {name: delta},
+        {name: 2885.0},
+        4000.0,
+        whirl={name: np.array([["forward", "backward", "planar"]] * speeds.size)},
+        required=0.1,
+        judged={name: [True, False, True]},
+    )
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    (legend,) = fig.legends
+    assert len(legend.get_texts()) == 7
+    assert legend.get_window_extent(renderer).y1 <= fig.axes[0].xaxis.label.get_window_extent(renderer).y0

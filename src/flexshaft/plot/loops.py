@@ -29,6 +29,13 @@ _ZONE_COLORS = ("tab:green", "yellowgreen", "orange", "tab:red")
 _NOTE_BOX = {"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": 0.85}
 
 
+def _right_half(frequencies: np.ndarray, at: float) -> bool:
+    """Whether ``at`` lies in the right half of the loop's logarithmic frequency axis: its note
+    then runs to the left, inside the axes (audit a2: a peak near the top frequency wrote its
+    note past the axes, over the zone labels)."""
+    return bool(np.log(at) > 0.5 * (np.log(frequencies.min()) + np.log(frequencies.max())))
+
+
 @styled
 def loop_sensitivity_figure(
     loops: Mapping[str, tuple[ArrayLike, ArrayLike]],
@@ -91,8 +98,9 @@ def loop_sensitivity_figure(
                 top.annotate(
                     f"|S|max {peak:.3g} at {f_peak:.4g} Hz ({label})",
                     (f_peak, peak),
-                    xytext=(8, 8),
+                    xytext=(-8 if _right_half(f, f_peak) else 8, 8),
                     textcoords="offset points",
+                    ha="right" if _right_half(f, f_peak) else "left",
                     fontsize=8,
                     color=color,
                     bbox=_NOTE_BOX,  # legible over the curves it sits on
@@ -105,8 +113,9 @@ def loop_sensitivity_figure(
                 bottom.annotate(
                     f"phase margin {margin:.3g}° at {f_cross:.4g} Hz ({label})",
                     (f_cross, margin - 180.0),
-                    xytext=(8, 10),
+                    xytext=(-8 if _right_half(f, f_cross) else 8, 10),
                     textcoords="offset points",
+                    ha="right" if _right_half(f, f_cross) else "left",
                     fontsize=8,
                     color=color,
                     bbox=_NOTE_BOX,  # legible over the curves it sits on

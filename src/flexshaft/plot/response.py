@@ -178,6 +178,9 @@ def orbit_figure(
         cv, cw = (0.0, 0.0) if centres is None or name not in centres else (float(c) for c in centres[name])
         radius_mm = float(orbit_amplitude_mm(v, w))
         offset_mm = float(np.hypot(cv, cw)) * MM_PER_M
+        if offset_mm <= 1e-6 * max(radius_mm, 0.0 if gap is None else gap * MM_PER_M):
+            # round-off of a held position (an integrating bearing's 6e-13 μm, audit a2): none
+            cv, cw, offset_mm = 0.0, 0.0, 0.0
         reach_mm = offset_mm + radius_mm  # the farthest the shaft can be from the bearing's centre
         gap_mm = None if gap is None else gap * MM_PER_M
         shows_gap = gap_mm is not None and gap_mm <= 4.0 * max(reach_mm, 1e-300)

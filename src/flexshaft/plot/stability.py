@@ -199,7 +199,9 @@ def log_decrement_figure(
             for w in ("forward", "backward", "planar")
             if whirl is not None
         ]
-        fig.legend(handles=handles, loc="lower center", ncols=3, fontsize=7.5, bbox_to_anchor=(0.5, 0.0))
+        # two rows at most: the band below the axes holds two (a third covered the x label, audit a2)
+        ncols = max(3, -(-len(handles) // 2))
+        fig.legend(handles=handles, loc="lower center", ncols=ncols, fontsize=7.5, bbox_to_anchor=(0.5, 0.0))
     elif handles:
         axes[0, 0].legend(loc="best", fontsize=7.5)
     return fig

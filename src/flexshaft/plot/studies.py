@@ -229,11 +229,25 @@ def forced_response_figure(
     speeds = vector("speeds_rpm", speeds_rpm)
     fig, axes = new_figure(1, 1, (8.0, 4.5), ax=ax)
     ax = axes[0, 0]
+    drawn = False
     for label, values in responses.items():
         amp = vector(f"responses[{label!r}]", values, speeds.size) * MM_PER_M
         ax.plot(speeds, np.where(amp > 0, amp, np.nan), label=label)
+        drawn |= bool(np.any(amp > 0))
     mark_operating(ax, operating_rpm)
-    log_scale(ax)
+    if drawn:
+        log_scale(ax)
+    else:  # no imbalance given: every orbit is 0, nothing to draw on a logarithmic axis
+        ax.set_ylim(0.0, 1.0)
+        ax.text(
+            0.5,
+            0.5,
+            "no imbalance response: every orbit is 0 (no imbalance given)",
+            transform=ax.transAxes,
+            ha="center",
+            va="center",
+            color="0.35",
+        )
     ax.set_xlim(speeds.min(), speeds.max())
     ax.set_xlabel("spin speed Ω [rpm]")
     ax.set_ylabel("max shaft orbit [mm]")

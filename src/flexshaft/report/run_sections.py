@@ -434,7 +434,8 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
         )
     )
     tables = []
-    rows = [["this design" + onset_at, _onset_text(onset.stability.onset_speed, onset.stability.speeds[-1]), "—"]]
+    own = _onset_text(onset.stability.onset_speed, onset.stability.speeds[-1])  # under its own damping model
+    rows = [["this design" + onset_at, *((own, "—") if onset.stability.damping_model == "viscous" else ("—", own))]]
     rows += [
         [label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]
         for label, m in comparison.items()
