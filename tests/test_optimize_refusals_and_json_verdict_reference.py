@@ -145,3 +145,26 @@ def test_a_read_only_file_system_is_a_user_error(monkeypatch: pytest.MonkeyPatch
     assert result.exit_code == 2, result.output
     assert f"error: cannot write or read /mounted-ro/out: {os.strerror(errno.EROFS)}" in result.stderr
     assert "internal error" not in result.stderr
+
+
+@pytest.mark.parametrize(("name", "label"), [("my.toml", "base (my)"), ("my.design", "base (my.design)")])
+def test_the_base_is_labelled_by_its_file_name_without_toml(monkeypatch, tmp_path: Path, name, label) -> None:
+    """docs/optimizer.md: "The base is labelled `base (NAME)` ...: NAME is the design file's
+    name without its `.toml` (`base (my)` for `my.toml`)"; another suffix is part of the name.
+    The search is a stand-in recording the label it is handed (nothing is computed)."""
+    import flexshaft.optimize.nsga as nsga
+    from flexshaft.design import embedded_text
+
+    labels: list = []
+
+    def stand_in(problem, budget, out, **kwargs):
+        labels.append(kwargs["base_label"])
+        raise typer.Exit(9)
+
+    monkeypatch.setattr(nsga, "optimize", stand_in)
+    design = tmp_path / name
+    design.write_text(embedded_text("tuned"), encoding="utf-8")
+    args = ["optimize", str(design), "--budget", "4", "--out", str(tmp_path / "o")]
+    args += ["--var", "shaft.wall_thickness=0.0015:0.004"]
+    result = runner.invoke(app, args)
+    assert labels == [label], result.output
