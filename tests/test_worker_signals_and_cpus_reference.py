@@ -7,8 +7,8 @@ References:
   the parent (which ends the pool), SIGTERM gets its default action (not the parent's handler,
   inherited by fork)", and the module docstring: "it ignores Ctrl-C (the parent handles it and
   ends the pool at once)".
-* POSIX signal(7): the default action of SIGTERM is to terminate the process; a process that
-  ignores SIGINT is not interrupted by it.
+* signal(7), Linux man-pages (assumed): the default action of SIGTERM is to terminate the
+  process; a process that ignores SIGINT is not interrupted by it.
 
 Hand-built tasks whose outcome follows from those rules alone:
 
@@ -78,15 +78,20 @@ def test_a_worker_dies_of_sigterm_although_the_parent_ignores_it():
 def test_the_cpus_counted_are_those_this_process_may_run_on():
     """:func:`~flexshaft.parallel.pool.available_cpus` (API contract, verbatim): "CPUs this
     process may run on (its affinity mask where the system has one)", and
-    :func:`flexshaft.cli.bounds.workers_of`: "``--jobs`` up to this machine's CPUs". Pinned to
-    one CPU (sched_setaffinity(2): the calling thread may then run on that CPU only) while the
+    :func:`flexshaft.cli.bounds.workers_of`: "``--jobs`` up to the CPUs this process may run
+    on". Pinned to one CPU (sched_setaffinity(2): the calling thread may then run on that CPU only) while the
     machine has at least two, the count is 1 and ``--jobs 4`` gets one worker."""
     from flexshaft.cli.bounds import workers_of
     from flexshaft.parallel.pool import available_cpus
 
     mask = os.sched_getaffinity(0)
+    if len(mask) < 2:
+        pytest.skip("this process may run on one CPU only: no narrower affinity to set")
     try:
         os.sched_setaffinity(0, {min(mask)})
+    except OSError as exc:  # a sandbox that refuses it (review r137)
+        pytest.skip(f"the CPU affinity cannot be set here: {exc}")
+    try:
         assert (available_cpus(), workers_of(4, None)) == (1, 1)
     finally:
         os.sched_setaffinity(0, mask)

@@ -276,8 +276,8 @@ def check_verification(design: Any, designs: int, budget: int, workers: int) -> 
 
 
 def workers_of(jobs: int, client: Any) -> int:
-    """Workers of a command: ``--jobs`` up to this machine's CPUs (more processes than CPUs
-    do not shorten the run), or the threads of the Dask cluster."""
+    """Workers of a command: ``--jobs`` up to the CPUs this process may run on (more processes
+    than CPUs do not shorten the run), or the threads of the Dask cluster."""
     if client is None:
         from flexshaft.parallel.pool import available_cpus
 
