@@ -122,8 +122,9 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                 f"Shaft orbits relative to each bearing at {op_rpm:.0f} rpm"
                 + (f" at the governing point {a.governing_point}" if len(a.points) > 1 else "")
                 + " (worst load case), each about the shaft's static position in the bearing (dotted: the "
-                "static offset); dashed: auxiliary-bearing gap, its share static offset + orbit; viewed along "
-                "+x, forward whirl clockwise",
+                "static offset); dashed: auxiliary-bearing gap, and the share of it static offset + orbit take "
+                "at this speed (the actuator-excursion check adds the static offset to the spin-up's peak orbit: "
+                "the actuator figure); viewed along +x, forward whirl clockwise",
                 orbit_figure,
                 orbits,
                 orbit_gaps,
