@@ -386,6 +386,10 @@ def campbell_figure(
     return fig
 
 
+#: A required-separation bar: end ticks, square ends, beneath the modes' points (a bar is no mode).
+_BAR: dict[str, Any] = {"marker": "|", "ms": 9, "solid_capstyle": "butt", "zorder": 1.5}
+
+
 def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray) -> list:
     """The required separation of each verdict critical as a bar on its frequency (f = N_c/60)
     from the speed its margin is measured from to the nearest speed it may have (``separation``
@@ -401,11 +405,8 @@ def _required_separation(ax, critical_rpm: np.ndarray, sep: np.ndarray) -> list:
             color="0.15",
             lw=2.2,
             alpha=0.45,
-            marker="|",
-            ms=9,
-            solid_capstyle="butt",
-            zorder=1.5,
             label="required separation (API 684)",
+            **_BAR,
         )
         handle = [bar]
     return handle
@@ -424,17 +425,7 @@ def _torsional_separation(ax, torsional, right: float) -> list:
         high = RPM_PER_HZ * f_n / (order * (1.0 - required)) if required < 1.0 else np.inf
         if low >= right:  # beyond the speeds drawn (the bar would only grow the canvas)
             continue
-        (handle,) = ax.plot(
-            [low, min(high, right)],
-            [f_n, f_n],
-            color="tab:brown",
-            lw=3.0,
-            alpha=0.55,
-            marker="|",
-            ms=9,
-            solid_capstyle="butt",
-            zorder=1.5,
-        )
+        (handle,) = ax.plot([low, min(high, right)], [f_n, f_n], color="tab:brown", lw=3.0, alpha=0.55, **_BAR)
         if RPM_PER_HZ * f_n / order <= right:
             ax.plot(RPM_PER_HZ * f_n / order, f_n, "D", mfc="none", mec="tab:brown", mew=1.3, ms=7, zorder=5)
     if handle is None:

@@ -89,22 +89,14 @@ def shaft_temperature_check_figure(
     shaft_temperature_figure(x_nodes, rise, x_elements, heat_per_length, ax=[axes[1, 0], axes[2, 0]])
     top = axes[0, 0]
     top.plot(xt, celsius, color="k", lw=1.5, label="self-heating equilibrium")
-    if material_temperature is not None:
-        top.axhline(
-            kelvin_to_celsius(material_temperature),
-            color="tab:purple",
-            ls="-.",
-            lw=1.2,
-            label=f"material temperature of the point {kelvin_to_celsius(material_temperature):.1f} °C",
-        )
-    if allowable is not None:
-        top.axhline(
-            kelvin_to_celsius(allowable),
-            color="tab:red",
-            ls="--",
-            lw=1.2,
-            label=f"allowable {kelvin_to_celsius(allowable):.1f} °C",
-        )
+    for value, color, ls, name in (
+        (material_temperature, "tab:purple", "-.", "material temperature of the point"),
+        (allowable, "tab:red", "--", "allowable"),
+    ):
+        if value is not None:
+            top.axhline(
+                kelvin_to_celsius(value), color=color, ls=ls, lw=1.2, label=f"{name} {kelvin_to_celsius(value):.1f} °C"
+            )
     top.text(
         0.01,
         0.04,
