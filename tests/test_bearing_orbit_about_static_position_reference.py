@@ -28,21 +28,25 @@ from flexshaft.analyses.response import static_response
 from flexshaft.plot.response import orbit_figure
 
 
-def _static_position(bearing: str, pv: float, pw: float):
+def _reaction(bearing: str, pv: float, pw: float):
     model = model_with(bearing)
     v, w = disk(model)
     load = np.zeros(model.dofs.size)
     load[v], load[w] = pv, pw
     q_static = static_response(model, load, speed=0.0)
-    r = bearing_reactions(model, q_static, np.zeros(model.dofs.size, complex), speed=0.0, loads=load)["b"]
-    return r.static_position
+    return bearing_reactions(model, q_static, np.zeros(model.dofs.size, complex), speed=0.0, loads=load)["b"]
+
+
+def _static_position(bearing: str, pv: float, pw: float):
+    return _reaction(bearing, pv, pw).static_position
 
 
 @pytest.mark.parametrize(("bearing", "stiffness"), [(CONTACT, KB), (ACTIVE, KI * KP - KS)], ids=["contact", "pd"])
 def test_static_position_is_the_load_over_the_parallel_stiffness(bearing, stiffness):
-    position = _static_position(bearing, -300.0, 400.0)
+    r = _reaction(bearing, -300.0, 400.0)
     k = K_SHAFT + stiffness
-    assert position == pytest.approx((-300.0 / k, 400.0 / k), rel=1e-9)
+    assert r.static_position == pytest.approx((-300.0 / k, 400.0 / k), rel=1e-9)
+    assert r.static_offset == pytest.approx(500.0 / k, rel=1e-9)  # |(−300, 400)| = 500 N (3-4-5)
 
 
 def test_an_integrating_bearing_holds_the_shaft_at_its_centre():

@@ -48,7 +48,8 @@ def _imbalance(tmp_path, figs=None):
             imbalance_lateral_amplitude=12.0,
             orbit=(1.0e-4, -1.0e-4j),  # a circle of radius 0.1 mm
             gap=5.0e-4,  # 0.5 mm
-            static_position=(-3.0e-4, 4.0e-4),  # (v, w): 0.5 mm from the centre (a 3-4-5 triangle)
+            static_position=(-3.0e-4, 4.0e-4),  # (v, w) [m]
+            static_offset=5.0e-4,  # its distance from the centre, 0.5 mm (a 3-4-5 triangle)
         )
     }
     a = NS(points=(), model=model, spinup=spinup, bearing_reactions=reactions, evidence=NS(operating_range=None))

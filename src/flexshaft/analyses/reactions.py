@@ -165,6 +165,11 @@ class BearingReaction:
         return float(self.static_motion[1]), float(self.static_motion[2])
 
     @property
+    def static_offset(self) -> float:
+        """Distance of the static position from the bearing's centre [m]."""
+        return float(np.hypot(*self.static_position))
+
+    @property
     def worst_case(self) -> int:
         """Load case of the largest relative orbit."""
         return int(np.argmax(orbit_amplitude(self.imbalance_motion[1], self.imbalance_motion[2])))

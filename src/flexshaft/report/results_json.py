@@ -32,7 +32,7 @@ def _bearing_dict(a: Assessment) -> dict | None:
         name: {
             "static_lateral_N": r.static_lateral,
             "static_axial_N": r.static_axial,
-            "static_offset_m": float(np.hypot(*r.static_position)),
+            "static_offset_m": r.static_offset,
             "imbalance_lateral_amplitude_N": r.imbalance_lateral_amplitude,
         }
         for name, r in reactions.items()

@@ -204,7 +204,7 @@ def imbalance_section(a: Assessment, figs: Figures, data: dict, op_rpm: float) -
                         r.static_lateral,
                         r.static_axial,
                         r.imbalance_lateral_amplitude,
-                        m_to_mm(float(np.hypot(*r.static_position))),
+                        m_to_mm(r.static_offset),
                         orbit_amplitude_mm(*r.orbit),
                         None if r.gap is None else m_to_mm(r.gap),
                     ]
