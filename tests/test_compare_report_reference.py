@@ -115,9 +115,14 @@ def test_metal_tube_table_alternating_then_mean_stress_in_mpa(monkeypatch, tmp_p
         worst=lambda kind, segment: fatigue if kind == "fatigue" else {"safety_factor": 3.2},
         buckling=[NS(segment="segment 1", safety_factor=6.5)],
     )
-    run = NS(strength_total=None, metal_strength=metal, model=NS(design=NS(requirements=NS(min_safety_factor=1.5))))
+    run = NS(
+        strength_total=None,
+        metal_strength=metal,
+        points=(),
+        model=NS(design=NS(requirements=NS(min_safety_factor=1.5))),
+    )
     section = compare._strength_section(
-        NS(labels=("A", "B"), runs=(run, NS(strength_total=None, metal_strength=None))), tmp_path
+        NS(labels=("A", "B"), runs=(run, NS(strength_total=None, metal_strength=None, points=()))), tmp_path
     )
     (table,) = section.tables
     assert list(table.columns)[3:6] == ["σ_a [MPa]", "σ_m [MPa]", "τ_m [MPa]"]
@@ -144,6 +149,7 @@ def test_each_design_hands_its_own_limits_and_speed_to_the_overlays(monkeypatch,
             campbell=NS(speeds=np.zeros(1), frequencies=np.zeros((1, 1)), whirl=[["forward"]]),
             spinup=NS(speeds=np.zeros(1), shaft_peak=np.zeros(1)),
             strength_total=NS(x_along=np.array([0.0, 1.0]), along_shaft=np.array([3.0, 4.0])),
+            points=(),  # one operating point: the assessment's own strength
             metal_strength=None,
         )
 

@@ -144,7 +144,12 @@ def test_metal_tube_table_yield_and_buckling_per_tube(monkeypatch, tmp_path):
     _stub_figures(monkeypatch)
     buckling = [NS(segment="tube_2", safety_factor=7.5), NS(segment="tube_1", safety_factor=5.96)]
     runs = tuple(
-        NS(strength_total=None, metal_strength=metal, model=NS(design=NS(requirements=NS(min_safety_factor=1.5))))
+        NS(
+            strength_total=None,
+            metal_strength=metal,
+            points=(),
+            model=NS(design=NS(requirements=NS(min_safety_factor=1.5))),
+        )
         for metal in (_metal(buckling), None)
     )
     (table,) = compare._strength_section(_comparison([], runs=runs), tmp_path).tables

@@ -28,6 +28,7 @@ from flexshaft.report.html import FigureRef, Section, Table, write_report
 from flexshaft.report.results_json import json_ready
 from flexshaft.report.verdict import location_text
 from flexshaft.units import format_quantity, rad_s_to_rpm
+from flexshaft.verdict.assess import check_point
 
 __all__ = ["comparison_json", "format_metric", "write_compare_report"]
 
@@ -291,14 +292,23 @@ def _dynamics_section(comparison, folder: Path) -> Section:
 
 
 def _strength_curve(run):
-    if run.strength_total is not None:
-        r = run.strength_total
-        return np.asarray(r.x_along, float).ravel(), np.asarray(r.along_shaft, float).ravel(), "Tsai-Wu (plies)"
-    metal = run.metal_strength
-    if metal is not None and metal.evaluated:
+    """The strength safety factor along the shaft at the point where its check governs (the
+    verdict's value: the tuned design's Tsai-Wu 1.68 at hot_day, not the governing cold_day's
+    5.24, audit a1), the point named for a design of several."""
+    key = "tsai_wu" if run.strength_total is not None else "metal_strength"
+    name = check_point(run, key) if len(run.points) > 1 else ""
+    shown = run.point(name).analyses if name else run  # one point: the assessment's own analyses
+    if key == "tsai_wu":
+        r = shown.strength_total
+        x, sf = np.asarray(r.x_along, float).ravel(), np.asarray(r.along_shaft, float).ravel()
+        criterion = "Tsai-Wu (plies)"
+    else:
+        metal = shown.metal_strength
+        if metal is None or not metal.evaluated:
+            return None
         x, sf = metal.along_shaft()
-        return x, sf, "metal: min(yield, fatigue)"
-    return None
+        criterion = "metal: min(yield, fatigue)"
+    return x, sf, criterion + (f" at {name}" if name else "")
 
 
 def _strength_section(comparison, folder: Path) -> Section:
