@@ -164,10 +164,15 @@ def _result(onset_rpm, speeds, damping_model="hysteretic"):
     )
 
 
+def _unread(key):
+    raise KeyError(key)
+
+
 def _stability(tmp_path):
     speeds = np.array([_rad_s(1000), _rad_s(3000), _rad_s(6000)])
     a = NS(
         points=(),  # one operating point: the sections show the assessment's own analyses
+        verdict=NS(check=_unread),  # no whirl-onset check: the tracked modes' onset alone
         stability=_result(None, speeds),
         modes_at_speed=None,  # no modes at the operating speed: no curve greyed out
         model=NS(speed=_rad_s(4800)),
@@ -245,10 +250,6 @@ def _shaft():
     )
 
 
-def _unread(key):
-    raise KeyError(key)
-
-
 #: A point whose temperature check read nothing (no thermal result of its own): the section's
 #: temperature figure then draws the rise and heat alone (tests/test_temperature_check_figure_reference.py
 #: covers the check's own panel).
@@ -297,3 +298,25 @@ def test_self_heating_alone_peak_in_celsius(tmp_path):
     section = thermal_section(NS(points=(), thermal=_thermal({}, sh)), Figures(tmp_path))
     (text,) = section.paragraphs
     assert "peak 80.0 °C" in text and "margin to the allowable temperature 12.5 K" in text
+
+
+def test_the_every_root_checks_lower_onset_beside_the_tracked_modes():
+    """docs/requirements.md (`whirl_onset`): the check's value is the lowest onset of the tracked
+    modes "or the lowest of rest, the operating speed and (1 + margin) × it where any root of
+    the closed loop is unstable". An unstable untracked root at rest (0 rpm) beside tracked modes
+    stable to the top: the onset cell adds "; every root: 0 (untracked root)" (audit a2: the
+    table said "stable to 7200" beside a verdict failing at rest). A tracked onset at or below
+    the check's value, or a check reading a tracked mode, adds nothing."""
+    from flexshaft.report.verdict import every_root_onset
+
+    def verdict(value, mode):
+        check = NS(value=value, location={"mode": mode})
+        return NS(check=lambda key: check if key == "whirl_onset" else _unread(key))
+
+    assert every_root_onset(verdict(0.0, "untracked root"), None) == "; every root: 0 (untracked root)"
+    assert every_root_onset(verdict(_rad_s(3000), "divergence (real root)"), _rad_s(5000)) == (
+        "; every root: 3000 (divergence (real root))"
+    )
+    assert every_root_onset(verdict(_rad_s(3000), "untracked root"), _rad_s(3000)) == ""
+    assert every_root_onset(verdict(_rad_s(3000), "1 (forward)"), None) == ""
+    assert every_root_onset(NS(check=_unread), None) == ""

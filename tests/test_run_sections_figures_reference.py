@@ -30,7 +30,7 @@ from types import SimpleNamespace as NS
 
 import numpy as np
 import pytest
-from test_report_sections_tables_reference import UNREAD_POINT, _rad_s, _result, _thermal, one_point
+from test_report_sections_tables_reference import UNREAD_POINT, _rad_s, _result, _thermal, _unread, one_point
 
 from flexshaft.report.run_sections import Figures, stability_section, thermal_section
 
@@ -110,6 +110,7 @@ def test_gain_map_figure_onsets_and_top_speed_in_rpm(tmp_path, active, expected)
     speeds = np.array([_rad_s(1000), _rad_s(3000), _rad_s(6000)])
     a = NS(
         points=(),
+        verdict=NS(check=_unread),
         stability=_result(None, speeds),
         modes_at_speed=None,
         model=NS(speed=_rad_s(4800)),

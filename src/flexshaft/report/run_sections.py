@@ -22,6 +22,7 @@ from flexshaft.plot.stability import log_decrement_figure, stability_map_figure
 from flexshaft.plot.thermal import shaft_temperature_check_figure, shaft_temperature_figure, temperature_profiles_figure
 from flexshaft.report.html import FigureRef, Section, Table
 from flexshaft.report.results_json import rpm_or_none
+from flexshaft.report.verdict import every_root_onset
 from flexshaft.thesis.report_studies import ThesisStudies
 from flexshaft.units import format_quantity, kelvin_to_celsius, m_to_mm, rad_s_to_rpm
 from flexshaft.verdict.assess import Assessment, check_point
@@ -359,9 +360,8 @@ def _governing_sentence(a: Assessment, key: str) -> str:
 
 
 def _temperature_checked(a: Assessment) -> tuple[str, dict[str, Any]] | None:
-    """The point where the temperature check governs and what that check reads there: the
-    self-heating equilibrium along the shaft, the checked value, the allowable and the point's
-    material temperature (keyword arguments of the figure); None when the check read nothing."""
+    """Where the temperature check governs and what it reads there (the self-heating equilibrium,
+    the value, the allowable, the material temperature: the figure's keywords); None: nothing."""
     name = check_point(a, "temperature")
     shown = a.point(name)
     th, evidence, conditions = shown.analyses.thermal, shown.evidence, shown.analyses.conditions
@@ -435,7 +435,8 @@ def stability_section(a: Assessment, thesis: ThesisStudies | None, figs: Figures
         )
     )
     tables = []
-    own = _onset_text(onset.stability.onset_speed, onset.stability.speeds[-1])  # under its own damping model
+    own = _onset_text(onset.stability.onset_speed, onset.stability.speeds[-1])
+    own += every_root_onset(a.verdict, onset.stability.onset_speed)  # the verdict's lower one, if any
     rows = [["this design" + onset_at, *((own, "—") if onset.stability.damping_model == "viscous" else ("—", own))]]
     rows += [
         [label, _onset_text(m["viscous"].onset_speed, top), _onset_text(m["hysteretic"].onset_speed, top)]

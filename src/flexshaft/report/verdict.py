@@ -21,6 +21,7 @@ __all__ = [
     "ENVELOPE_COLUMNS",
     "VERDICT_COLUMNS",
     "envelope_line",
+    "every_root_onset",
     "envelope_rows",
     "format_quantity",
     "governing_text",
@@ -79,3 +80,20 @@ def separation_readings(evidence, criticals) -> list[tuple[float, float, float, 
         bound = reference * (1.0 - sep.required_margin if sep.position == "below" else 1.0 + sep.required_margin)
         out.append((rad_s_to_rpm(reference), rad_s_to_rpm(bound), sep.margin, sep.required_margin))
     return out
+
+
+def every_root_onset(verdict, tracked: float | None) -> str:
+    """ "; every root: N rpm (kind)" when the whirl-onset check reads an unstable root of the
+    closed loop below the tracked modes' onset ``tracked`` [rad/s] (docs/requirements.md: the
+    lowest of rest, the operating speed and (1 + margin) × it where any root is unstable), else
+    empty: the onset table's "stable to 7200" stood beside a verdict failing at rest (audit a2)."""
+    try:
+        c = verdict.check("whirl_onset")
+    except KeyError:
+        return ""
+    kind = c.location.get("mode")
+    if c.value is None or kind not in ("untracked root", "divergence (real root)"):
+        return ""
+    if tracked is not None and c.value >= tracked:
+        return ""
+    return f"; every root: {rad_s_to_rpm(c.value):.0f} ({kind})"
