@@ -30,7 +30,7 @@ import pytest
 from typer.testing import CliRunner
 
 from flexshaft.cli import app
-from tests.test_runup_montecarlo_commands_reference import RUNUP, no_files, runup_seen  # noqa: F401
+from tests.test_runup_montecarlo_commands_reference import RUNUP, montecarlo_result, no_files, runup_seen  # noqa: F401
 
 
 def test_runup_json_start_rpm_is_in_rpm(tmp_path, runup_seen) -> None:  # noqa: F811
@@ -45,19 +45,14 @@ def test_runup_json_start_rpm_is_in_rpm(tmp_path, runup_seen) -> None:  # noqa: 
 def test_montecarlo_json_reports_the_limits_counted_against(tmp_path, monkeypatch, no_files) -> None:  # noqa: F811
     def run(design, samples, **kw):
         assert kw["gap"] is None and kw["force_limit"] is None  # no option: each bearing's own
-        return SimpleNamespace(  # gap and force_limit: the smallest of the bearings' (docstring)
-            gap=2.5e-4,
-            force_limit=1500.0,
+        return montecarlo_result(  # gap and force_limit: the smallest of the bearings' (docstring)
+            2.5e-4,
+            1500.0,
+            np.arange(1.0, 101.0) * 1e-5,
             limits={
                 "amb_1": SimpleNamespace(gap=5e-4, force_capacity=1500.0),
                 "amb_2": SimpleNamespace(gap=2.5e-4, force_capacity=2000.0),
             },
-            dataset={"shaft_peak": SimpleNamespace(values=np.arange(1.0, 101.0) * 1e-5)},
-            plot=lambda: None,
-            gap_exceedance=None,
-            force_exceedance=None,
-            gap_events=None,
-            force_events=None,
         )
 
     monkeypatch.setattr("flexshaft.cli.bounds.check_montecarlo", lambda *a: None)

@@ -33,18 +33,21 @@ from __future__ import annotations
 import json
 import re
 import shlex
-import types
 
 import pytest
 
-from flexshaft.cli.common import LoadedDesign
 from flexshaft.design import embedded_text
 
 pytest.importorskip("starlette")
 
-from flexshaft.explore.server import MAX_UPLOAD, Explorer, build_app
+from flexshaft.explore.server import MAX_UPLOAD
 from tests.test_explorer_api_reference import HOST, Client, tuned  # noqa: F401 (fixture)
-from tests.test_explorer_request_reference import RecordingWorkers
+from tests.test_explorer_request_reference import recording_app
+
+
+@pytest.fixture()
+def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
+    return recording_app(tuned, tmp_path)
 
 
 def _refused(answer, path: str) -> list[str]:
@@ -53,13 +56,6 @@ def _refused(answer, path: str) -> list[str]:
     problems = answer.json()["problems"]
     assert [p["path"] for p in problems] == [path]
     return [p["message"] for p in problems]
-
-
-@pytest.fixture()
-def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
-    workers = RecordingWorkers()
-    explorer = Explorer(LoadedDesign(tuned, embedded_text("tuned"), "tuned"), workers, out=tmp_path / "runs")
-    return types.SimpleNamespace(client=Client(build_app(explorer, [HOST])), workers=workers)
 
 
 def test_an_upload_over_the_byte_limit_is_refused_before_it_is_parsed(app):

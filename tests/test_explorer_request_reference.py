@@ -53,11 +53,16 @@ class RecordingWorkers(StandInWorkers):
         return {"overrides": args[-1]}
 
 
-@pytest.fixture()
-def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
+def recording_app(tuned, tmp_path):  # noqa: F811 (the imported fixture's name)
+    """The explorer on the tuned design with a recording worker pool: its client and workers."""
     workers = RecordingWorkers()
     explorer = Explorer(LoadedDesign(tuned, embedded_text("tuned"), "tuned"), workers, out=tmp_path / "runs")
     return types.SimpleNamespace(client=Client(build_app(explorer, [HOST])), workers=workers)
+
+
+@pytest.fixture()
+def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
+    return recording_app(tuned, tmp_path)
 
 
 def test_json_with_a_charset_parameter_is_json(app):

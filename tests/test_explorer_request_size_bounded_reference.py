@@ -23,24 +23,24 @@ import math
 
 import pytest
 
-from flexshaft.cli.common import LoadedDesign
-from flexshaft.design import embedded_text
-from flexshaft.explore.server import MAX_UPLOAD, Explorer, build_app
+from flexshaft.explore.server import MAX_UPLOAD
 from tests.test_explorer_api_reference import HOST, tuned  # noqa: F401 (fixture)
-from tests.test_explorer_request_reference import RecordingWorkers
+from tests.test_explorer_request_reference import recording_app
 
 LIMIT = 2 * MAX_UPLOAD
 CHUNK = 65536
 
 
-@pytest.fixture
+@pytest.fixture()
 def app(tuned, tmp_path):  # noqa: F811 (the imported fixture)
-    explorer = Explorer(LoadedDesign(tuned, embedded_text("tuned"), "tuned"), RecordingWorkers(), out=tmp_path / "runs")
-    return build_app(explorer, [HOST])
+    """The explorer on a recording worker pool (nothing computed)."""
+    return recording_app(tuned, tmp_path)
 
 
-def _post(app, chunks: list[bytes], content_length: int | None):
-    """POST /api/update with ``chunks`` as the body; returns (status, answer, chunks taken)."""
+def _post(explorer, chunks: list[bytes], content_length: int | None):
+    """POST /api/update with ``chunks`` as the body to the fixture's app; returns (status,
+    answer, chunks taken)."""
+    app = explorer.client.app
     headers = [(b"host", HOST.encode()), (b"content-type", b"application/json")]
     if content_length is not None:
         headers.append((b"content-length", str(content_length).encode()))

@@ -66,15 +66,17 @@ def test_shaft_temperature_figure_rise_above_air_and_heat_per_metre_at_midpoints
     np.testing.assert_allclose(heat["rotating loss model"], [4.0, 2.0], rtol=1e-12)
 
 
-def test_thermal_section_states_the_temperature_checks_value_where_it_governs(tmp_path):
+def temperature_verdict(value: float, margin: float, point: str = "hot_soak_start"):
+    """A stand-in verdict whose only check is the temperature's, ``value`` [K] against a 373.15 K
+    allowable with ``margin`` [K], governing at ``point``."""
     check = NS(
         title="Shaft temperature",
         kind="temperature",
         sense="at most",
-        value=358.15,
+        value=value,
         limit=373.15,
-        margin=15.0,
-        location={"point": "hot_soak_start"},
+        margin=margin,
+        location={"point": point},
     )
 
     def by_key(key):
@@ -82,11 +84,15 @@ def test_thermal_section_states_the_temperature_checks_value_where_it_governs(tm
             raise KeyError(key)
         return check
 
+    return NS(check=by_key)
+
+
+def test_thermal_section_states_the_temperature_checks_value_where_it_governs(tmp_path):
     a = NS(
         points=("cold_day", "hot_soak_start"),
         governing_point="cold_day",
         point=lambda name: UNREAD_POINT,
-        verdict=NS(check=by_key),
+        verdict=temperature_verdict(358.15, 15.0),
         thermal=_thermal({"rotating": _uneven_shaft()}, _self_heating()),
     )
     text = " ".join(thermal_section(a, Figures(tmp_path)).paragraphs)

@@ -101,6 +101,22 @@ def test_runup_table_puts_the_orbit_in_mm_and_the_force_in_n(tmp_path, runup_see
     assert any("peak shaft orbit 0.3 mm at 2400 rpm, x = 1.5 m" in ln and "0.5 mm" in ln for ln in lines)
 
 
+def montecarlo_result(gap, force_limit, orbit, **fields):
+    """A stand-in Monte-Carlo result: its limits, the shaft's peak orbit of each sample [m], no
+    exceedance counted, no figure."""
+    return SimpleNamespace(
+        gap=gap,
+        force_limit=force_limit,
+        dataset={"shaft_peak": SimpleNamespace(values=orbit)},
+        plot=lambda: None,
+        gap_exceedance=None,
+        force_exceedance=None,
+        gap_events=None,
+        force_events=None,
+        **fields,
+    )
+
+
 def _cells(line: str) -> list[str]:
     return [c.strip() for c in line.replace("┃", "│").split("│") if c.strip()]
 
@@ -111,16 +127,7 @@ def test_montecarlo_passes_the_gap_in_metres_and_reports_the_99th_percentile(tmp
 
     def run(design, samples, **kw):
         seen.update(kw)
-        return SimpleNamespace(
-            gap=kw["gap"],
-            force_limit=kw["force_limit"],
-            dataset={"shaft_peak": SimpleNamespace(values=orbit)},
-            plot=lambda: None,
-            gap_exceedance=None,
-            force_exceedance=None,
-            gap_events=None,
-            force_events=None,
-        )
+        return montecarlo_result(kw["gap"], kw["force_limit"], orbit)
 
     monkeypatch.setattr("flexshaft.cli.bounds.check_montecarlo", lambda *a: None)
     # the study's module itself stood in for: importing flexshaft.montecarlo imports scipy.stats

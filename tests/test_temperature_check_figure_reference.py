@@ -20,6 +20,7 @@ from types import SimpleNamespace as NS
 import numpy as np
 import pytest
 from test_report_sections_tables_reference import _shaft, _thermal
+from test_run_sections_figures_reference import temperature_verdict
 
 from flexshaft.plot.thermal import shaft_temperature_check_figure
 from flexshaft.report.run_sections import Figures, thermal_section
@@ -85,27 +86,12 @@ def test_section_hands_the_figure_the_point_where_the_check_governs(tmp_path):
     equilibrium, value and material temperature, not cold_day's."""
     cold = _point("cold_day", T - 30.0, 300.15, 250.0)
     hot = _point("hot_soak_start", T, 361.95, 361.95)
-    check = NS(
-        title="Shaft temperature",
-        kind="temperature",
-        sense="at most",
-        value=361.95,
-        limit=373.15,
-        margin=11.2,
-        location={"point": "hot_soak_start"},
-    )
-
-    def by_key(key):
-        if key != "temperature":
-            raise KeyError(key)
-        return check
-
     points = {p.name: p for p in (cold, hot)}
     a = NS(
         points=(cold, hot),
         governing_point="cold_day",
         point=points.__getitem__,
-        verdict=NS(check=by_key),
+        verdict=temperature_verdict(361.95, 11.2),
         thermal=_thermal({"rotating": _shaft()}, None),
     )
     figs = Figures(tmp_path)
